@@ -1,0 +1,87 @@
+#include "app/CommandLine.h"
+
+#include <charconv>
+
+namespace dw {
+
+CommandLine::CommandLine(int argc, char** argv, int first) {
+    for (int i = first; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a.rfind("--", 0) == 0 && a.size() > 2) {
+            Arg arg;
+            const auto eq = a.find('=');
+            if (eq != std::string::npos) {
+                arg.name = a.substr(0, eq);
+                arg.value = a.substr(eq + 1);
+            } else {
+                arg.name = a;
+                // Takes the next word as its value unless that is another flag.
+                if (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) arg.value = argv[++i];
+            }
+            args_.push_back(arg);
+        } else {
+            positional_.push_back(a);
+        }
+    }
+}
+
+std::optional<std::string> CommandLine::value(const std::string& flag) {
+    std::optional<std::string> v;
+    for (auto& a : args_)
+        if (a.name == flag) {
+            if (!a.value) throw UsageError(flag + " needs a value");
+            v = a.value;
+            a.used = true;
+        }
+    return v;
+}
+
+std::vector<std::string> CommandLine::values(const std::string& flag) {
+    std::vector<std::string> v;
+    for (auto& a : args_)
+        if (a.name == flag) {
+            if (!a.value) throw UsageError(flag + " needs a value");
+            v.push_back(*a.value);
+            a.used = true;
+        }
+    return v;
+}
+
+bool CommandLine::flag(const std::string& flag) {
+    bool seen = false;
+    for (auto& a : args_)
+        if (a.name == flag) {
+            // A bare flag may have swallowed a positional word: give it back.
+            if (a.value) {
+                positional_.push_back(*a.value);
+                a.value.reset();
+            }
+            a.used = true;
+            seen = true;
+        }
+    return seen;
+}
+
+void CommandLine::finish(const std::string& command) const {
+    for (const auto& a : args_)
+        if (!a.used) throw UsageError("'" + command + "' does not take " + a.name);
+}
+
+int CommandLine::parseInt(const std::string& flag, const std::string& text, int min, int max) {
+    int v = 0;
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || p != text.data() + text.size())
+        throw UsageError(flag + " expects a whole number, got '" + text + "'");
+    if (v < min || v > max)
+        throw UsageError(flag + " must be between " + std::to_string(min) + " and " + std::to_string(max));
+    return v;
+}
+
+std::pair<int, int> CommandLine::parseSize(const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
+    return {parseInt("--size width", text.substr(0, x), 1, 16384),
+            parseInt("--size height", text.substr(x + 1), 1, 16384)};
+}
+
+}  // namespace dw

@@ -1,0 +1,42 @@
+#pragma once
+// A small argument reader for the subcommands: --flag value, --flag=value,
+// repeated flags, and positional words. Usage errors throw UsageError.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+class UsageError : public Error {
+public:
+    using Error::Error;
+};
+
+class CommandLine {
+public:
+    CommandLine(int argc, char** argv, int first);
+    // Declares a flag that takes a value; returns the last one given.
+    std::optional<std::string> value(const std::string& flag);
+    std::vector<std::string> values(const std::string& flag);
+    bool flag(const std::string& flag);
+    std::vector<std::string> positional() const { return positional_; }
+    // Throws UsageError for anything not consumed by value()/values()/flag().
+    void finish(const std::string& command) const;
+
+    static int parseInt(const std::string& flag, const std::string& text, int min, int max);
+    // "1280x720" -> (1280, 720)
+    static std::pair<int, int> parseSize(const std::string& text);
+
+private:
+    struct Arg {
+        std::string name;
+        std::optional<std::string> value;
+        bool used = false;
+    };
+    std::vector<Arg> args_;
+    std::vector<std::string> positional_;
+};
+
+}  // namespace dw

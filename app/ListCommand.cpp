@@ -1,0 +1,48 @@
+// deferred-workbench list scenes|buffers|knobs|passes: needs no GL context.
+#include <cstdio>
+#include <iostream>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "renderer/KnobRegistry.h"
+#include "renderer/Pipeline.h"
+#include "renderer/scene/BuiltinScenes.h"
+
+namespace dw {
+
+int runListCommand(int argc, char** argv) {
+    CommandLine cl(argc, argv, 2);
+    cl.finish("list");
+    const auto words = cl.positional();
+    const std::string what = words.empty() ? "" : words[0];
+    KnobRegistry knobs;
+    Pipeline pipeline(knobs);
+    if (what == "scenes") {
+        for (const auto& s : builtinScenes()) std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
+    } else if (what == "buffers") {
+        for (const auto& o : pipeline.outputs().all())
+            std::printf("%-24s %-10s %-14s %s\n", o.decl.name.c_str(), toString(o.decl.kind), o.pass.c_str(),
+                        o.decl.description.c_str());
+    } else if (what == "knobs") {
+        for (size_t i = 0; i < knobs.size(); ++i) {
+            const KnobSpec& s = knobs.spec(static_cast<int>(i));
+            const std::string def = knobs.format(static_cast<int>(i));
+            std::printf("%-28s %-10s %-32s %s%s%s\n", s.name.c_str(), def.c_str(), knobs.formatRange(static_cast<int>(i)).c_str(),
+                        s.unit.empty() ? "" : ("[" + s.unit + "] ").c_str(), s.tradeoff ? "(speed/quality) " : "",
+                        s.description.c_str());
+        }
+    } else if (what == "passes") {
+        for (const auto& p : pipeline.passes()) {
+            std::printf("%s\n", p->name());
+            const PassIO io = p->inputs(knobs);
+            for (const auto& in : io.inputs) std::printf("  reads  %s\n", in.c_str());
+            for (const auto& in : io.optionalInputs) std::printf("  reads  %s (when produced)\n", in.c_str());
+            for (const auto& o : p->outputs()) std::printf("  writes %s\n", o.name.c_str());
+        }
+    } else {
+        throw UsageError("usage: deferred-workbench list scenes|buffers|knobs|passes");
+    }
+    return 0;
+}
+
+}  // namespace dw

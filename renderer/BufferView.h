@@ -1,0 +1,51 @@
+#pragma once
+// Turns any named output into a displayable RGBA8 image, on the GPU: the
+// inspector and viewport show these, and `render --buffer X --out x.png`
+// writes them. Reading needs no per-pass code: the output's kind picks the
+// default mapping (depth linearised, normals as colours, counts as a heat map,
+// HDR tone-mapped); every choice can be overridden.
+#include <glm/glm.hpp>
+#include <string>
+
+#include "renderer/OutputRegistry.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+
+namespace dw {
+
+struct BufferViewSettings {
+    enum class Mapping { Auto = -1, Direct = 0, LinearDepth = 1, Normal = 2, Heatmap = 3, Tonemap = 4 };
+    enum class Channel { RGB = 0, R = 1, G = 2, B = 3, A = 4 };
+    Mapping mapping = Mapping::Auto;
+    Channel channel = Channel::RGB;
+    int autoRange = -1;  // -1: by kind, 0: manual range, 1: automatic min/max
+    float rangeMin = 0.0f, rangeMax = 1.0f;
+    float exposure = 0.0f;  // EV, tone-mapped view
+    float nearPlane = 0.1f, farPlane = 100.0f;  // for linear depth
+};
+
+class BufferView {
+public:
+    void setup(gl::ShaderLibrary& shaders);
+    // Renders `output` with `settings` into an RGBA8 texture of the output's size.
+    const gl::Texture& render(const PublishedOutput& output, const BufferViewSettings& settings);
+    // The mapping actually used for an output kind under `settings`.
+    static BufferViewSettings::Mapping resolveMapping(OutputKind kind, const BufferViewSettings& s);
+    static bool resolveAutoRange(OutputKind kind, const BufferViewSettings& s);
+    // Per-channel range found by the last auto-range render (reads back 32 bytes).
+    std::pair<glm::vec4, glm::vec4> lastAutoRange() const;
+    const gl::Texture& texture() const { return target_; }
+
+private:
+    gl::ShaderLibrary::Handle view_, minmaxFirst_, minmaxNext_;
+    gl::FullscreenTriangle triangle_;
+    gl::Buffer params_, ping_, pong_;
+    const gl::Buffer* result_ = nullptr;
+    gl::Texture target_;
+    gl::Framebuffer fbo_;
+};
+
+}  // namespace dw

@@ -1,0 +1,46 @@
+#pragma once
+// What a pass sees while it executes one frame.
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "renderer/OutputRegistry.h"
+
+namespace dw {
+
+class GpuScene;
+class KnobRegistry;
+struct Scene;
+namespace gl {
+class ShaderLibrary;
+}
+
+// std140 mirror of CameraBlock in shaders/common/camera.glsl.
+struct CameraUniforms {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 viewProjection{1.0f};
+    glm::mat4 inverseProjection{1.0f};
+    glm::mat4 inverseView{1.0f};
+    glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
+    glm::vec4 clip{0.0f};      // near, far, tan(fovY/2), aspect
+};
+
+struct FrameContext {
+    const Scene& scene;
+    const GpuScene& gpu;
+    const KnobRegistry& knobs;
+    OutputRegistry& outputs;
+    gl::ShaderLibrary& shaders;
+    CameraUniforms camera;
+    int width = 0;
+    int height = 0;
+    std::uint64_t frameIndex = 0;
+
+    // Whether an (optional) input was written earlier this frame.
+    bool produced(const std::string& name) const {
+        const PublishedOutput* o = outputs.find(name);
+        return o && o->producedThisFrame && o->texture;
+    }
+};
+
+}  // namespace dw

@@ -1,0 +1,168 @@
+#include "renderer/GpuScene.h"
+
+#include <algorithm>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace {
+
+// std430 mirror of `Material` in shaders/common/material.glsl.
+struct MaterialGpu {
+    glm::vec4 baseColor;
+    glm::vec4 specular;          // rgb specular colour / dielectric F0, a Blinn-Phong exponent
+    glm::vec4 emissive;          // rgb emissive, a normal-map scale
+    glm::vec4 params;            // metallic, roughness, glossiness, alpha cutoff
+    glm::ivec4 textures;         // 1 where the material has: base colour, normal, specular/MR, emissive
+    glm::ivec4 flags;            // model, alpha mode, double sided, unused
+};
+static_assert(sizeof(MaterialGpu) == 96, "std430 layout");
+
+gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a, bool srgb) {
+    gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, 1, 1);
+    const std::uint8_t px[4] = {r, g, b, a};
+    t.upload(0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    t.setWrap(GL_REPEAT);
+    return t;
+}
+
+}  // namespace
+
+int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
+    if (image < 0) return -1;
+    auto key = std::make_pair(image, srgb);
+    auto it = textureIndex_.find(key);
+    if (it != textureIndex_.end()) return it->second;
+    const Image& img = scene.images[image];
+    const int levels = gl::Texture::fullMipCount(img.width, img.height);
+    gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, levels);
+    t.upload(0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    t.generateMipmaps();
+    t.setWrap(GL_REPEAT);
+    if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") || epoxy_gl_version() >= 46)
+        glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    textureBytes_ += static_cast<std::size_t>(img.width) * img.height * 4 * 4 / 3;
+    textures_.push_back(std::move(t));
+    const int idx = static_cast<int>(textures_.size() - 1);
+    textureIndex_[key] = idx;
+    return idx;
+}
+
+void GpuScene::upload(const Scene& scene) {
+    white_ = solidTexture(255, 255, 255, 255, false);
+    flatNormal_ = solidTexture(128, 128, 255, 255, false);
+
+    std::vector<Vertex> verts;
+    std::vector<std::uint32_t> idx;
+    struct Range {
+        std::size_t firstIndex;
+        GLsizei count;
+        GLint baseVertex;
+    };
+    std::vector<Range> ranges;
+    for (const Mesh& m : scene.meshes) {
+        ranges.push_back({idx.size(), static_cast<GLsizei>(m.indices.size()), static_cast<GLint>(verts.size())});
+        verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
+        idx.insert(idx.end(), m.indices.begin(), m.indices.end());
+    }
+    vertices_ = gl::Buffer::fromVector(verts, false, "scene vertices");
+    indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
+    vao_ = gl::VertexArray::create();
+    vao_.setVertexBuffer(0, vertices_, 0, sizeof(Vertex));
+    vao_.setIndexBuffer(indices_);
+    vao_.setAttribute(0, 0, 3, offsetof(Vertex, position));
+    vao_.setAttribute(1, 0, 3, offsetof(Vertex, normal));
+    vao_.setAttribute(2, 0, 4, offsetof(Vertex, tangent));
+    vao_.setAttribute(3, 0, 2, offsetof(Vertex, uv));
+
+    std::vector<MaterialGpu> mats;
+    for (const Material& m : scene.materials) {
+        MaterialTextures t;
+        t.baseColor = textureFor(scene, m.baseColorTexture, true);
+        t.normal = textureFor(scene, m.normalTexture, false);
+        t.specular = textureFor(scene, m.model == MaterialModel::MetallicRoughness ? m.metallicRoughnessTexture : m.specularTexture,
+                                m.model == MaterialModel::SpecularGlossiness);
+        t.emissive = textureFor(scene, m.emissiveTexture, true);
+        materialTextures_.push_back(t);
+        MaterialGpu g{};
+        g.baseColor = m.baseColor;
+        g.specular = glm::vec4(m.specularColor, m.specularExponent);
+        g.emissive = glm::vec4(m.emissive, m.normalScale);
+        g.params = glm::vec4(m.metallic, m.roughness, m.glossiness, m.alphaCutoff);
+        g.textures = glm::ivec4(t.baseColor >= 0, t.normal >= 0, t.specular >= 0, t.emissive >= 0);
+        g.flags = glm::ivec4(static_cast<int>(m.model), static_cast<int>(m.alphaMode), m.doubleSided ? 1 : 0, 0);
+        mats.push_back(g);
+    }
+    if (mats.empty()) mats.push_back(MaterialGpu{});
+    materials_ = gl::Buffer::fromVector(mats, false, "materials");
+
+    for (const MeshInstance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[inst.mesh];
+        Draw d;
+        d.mesh = inst.mesh;
+        d.material = mesh.material;
+        d.model = inst.transform;
+        d.indexCount = ranges[inst.mesh].count;
+        d.indexOffsetBytes = ranges[inst.mesh].firstIndex * sizeof(std::uint32_t);
+        d.baseVertex = ranges[inst.mesh].baseVertex;
+        d.alphaMode = scene.materials[mesh.material].alphaMode;
+        d.doubleSided = scene.materials[mesh.material].doubleSided;
+        draws_.push_back(d);
+    }
+    // Group by material to save texture binds.
+    std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
+}
+
+void GpuScene::bindMaterialTextures(int material) const {
+    const MaterialTextures& t = materialTextures_[material];
+    auto id = [&](int tex, const gl::Texture& fallback) { return tex >= 0 ? textures_[tex].id() : fallback.id(); };
+    const GLuint ids[4] = {id(t.baseColor, white_), id(t.normal, flatNormal_), id(t.specular, white_), id(t.emissive, white_)};
+    glBindTextures(0, 4, ids);
+}
+
+static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
+    if (f == GpuScene::Filter::All) return true;
+    const bool blend = d.alphaMode == AlphaMode::Blend;
+    return f == GpuScene::Filter::Blend ? blend : !blend;
+}
+
+void GpuScene::draw(const gl::Program& program, Filter filter, bool bindTextures) const {
+    if (draws_.empty()) return;
+    vao_.bind();
+    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
+    int boundMaterial = -1;
+    bool cullOn = true;
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    for (const Draw& d : draws_) {
+        if (!passes(d, filter)) continue;
+        if (d.doubleSided == cullOn) {
+            cullOn = !d.doubleSided;
+            if (cullOn) glEnable(GL_CULL_FACE);
+            else glDisable(GL_CULL_FACE);
+        }
+        if (bindTextures && d.material != boundMaterial) {
+            bindMaterialTextures(d.material);
+            boundMaterial = d.material;
+        }
+        program.set(0, d.model);
+        program.set(1, d.material);
+        glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
+    }
+    glEnable(GL_CULL_FACE);
+}
+
+void GpuScene::drawDepthOnly(const gl::Program& program, Filter filter) const {
+    if (draws_.empty()) return;
+    vao_.bind();
+    for (const Draw& d : draws_) {
+        if (!passes(d, filter)) continue;
+        program.set(0, d.model);
+        glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
+    }
+}
+
+}  // namespace dw

@@ -1,0 +1,69 @@
+#pragma once
+// The scene's GPU copy: one vertex and one index buffer for all meshes, one
+// texture per (image, colour space) the materials use, a material SSBO and the
+// draw list. Passes draw through drawOpaque(); they never touch raw GL names.
+#include <glm/glm.hpp>
+#include <map>
+#include <vector>
+
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Program.h"
+#include "renderer/gl/Texture.h"
+#include "renderer/gl/VertexArray.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+// Binding points shared with the GLSL in shaders/common/bindings.glsl.
+namespace binding {
+constexpr GLuint kCameraUbo = 0;
+constexpr GLuint kMaterialSsbo = 1;
+constexpr GLuint kLightSsbo = 2;
+constexpr GLuint kPassUbo = 3;
+}  // namespace binding
+
+class GpuScene {
+public:
+    struct Draw {
+        int mesh = 0;
+        int material = 0;
+        glm::mat4 model{1.0f};
+        GLsizei indexCount = 0;
+        std::size_t indexOffsetBytes = 0;
+        GLint baseVertex = 0;
+        AlphaMode alphaMode = AlphaMode::Opaque;
+        bool doubleSided = false;
+    };
+    enum class Filter { Opaque, Blend, All };
+
+    // Call on a fresh GpuScene.
+    void upload(const Scene& scene);
+    bool empty() const { return draws_.empty(); }
+    const std::vector<Draw>& draws() const { return draws_; }
+
+    // Binds VAO, material SSBO and per-draw textures, then issues one draw per
+    // instance that passes `filter`. Locations 0 and 1 of `program` receive the
+    // model matrix and material index.
+    void draw(const gl::Program& program, Filter filter, bool bindTextures = true) const;
+    // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
+    void drawDepthOnly(const gl::Program& program, Filter filter) const;
+    std::size_t textureBytes() const { return textureBytes_; }
+
+private:
+    int textureFor(const Scene& scene, int image, bool srgb);
+    void bindMaterialTextures(int material) const;
+
+    gl::Buffer vertices_, indices_, materials_;
+    gl::VertexArray vao_;
+    std::vector<gl::Texture> textures_;
+    std::map<std::pair<int, bool>, int> textureIndex_;
+    struct MaterialTextures {
+        int baseColor = -1, normal = -1, specular = -1, emissive = -1;
+    };
+    std::vector<MaterialTextures> materialTextures_;
+    gl::Texture white_, flatNormal_;
+    std::vector<Draw> draws_;
+    std::size_t textureBytes_ = 0;
+};
+
+}  // namespace dw

@@ -1,0 +1,164 @@
+#include "renderer/ImageIO.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+void FloatImage::flipVertically() {
+    const size_t row = static_cast<size_t>(width) * channels;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(pixels.begin() + y * row, pixels.begin() + (y + 1) * row,
+                         pixels.begin() + (height - 1 - y) * row);
+}
+
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+Image toRgba8(std::unique_ptr<OIIO::ImageInput> in, const std::string& name) {
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        throw FileError(name, "image has no pixels");
+    if (static_cast<long long>(spec.width) * spec.height > (1LL << 28))
+        throw FileError(name, "image is too large (" + std::to_string(spec.width) + "x" +
+                                  std::to_string(spec.height) + ")");
+    std::vector<std::uint8_t> raw(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
+        throw FileError(name, "cannot decode image: " + in->geterror());
+    Image img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.source = name;
+    img.rgba.resize(static_cast<size_t>(img.width) * img.height * 4);
+    const int c = spec.nchannels;
+    for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p) {
+        const std::uint8_t* s = &raw[p * c];
+        std::uint8_t* d = &img.rgba[p * 4];
+        if (c == 1 || c == 2) {
+            d[0] = d[1] = d[2] = s[0];
+            d[3] = c == 2 ? s[1] : 255;
+        } else {
+            d[0] = s[0];
+            d[1] = s[1];
+            d[2] = s[2];
+            d[3] = c >= 4 ? s[3] : 255;
+        }
+    }
+    return img;
+}
+
+}  // namespace
+
+Image loadImage8(const std::string& path) {
+    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
+    return toRgba8(std::move(in), path);
+}
+
+Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& nameHint,
+                   const std::string& mimeType) {
+    std::string ext = ".png";
+    if (mimeType == "image/jpeg") ext = ".jpg";
+    else if (mimeType == "image/webp") ext = ".webp";
+    else if (mimeType == "image/ktx2") ext = ".ktx2";
+    else if (mimeType.empty() && size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8) ext = ".jpg";
+    OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes), size);
+    // OIIO 2.4 ignores the proxy argument when a config spec is passed too.
+    auto in = OIIO::ImageInput::open("memory" + ext, nullptr, &reader);
+    if (!in) throw FileError(nameHint, "cannot decode embedded image: " + OIIO::geterror());
+    return toRgba8(std::move(in), nameHint);
+}
+
+FloatImage loadImageFloat(const std::string& path) {
+    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    FloatImage img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.channels = spec.nchannels;
+    img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+        throw FileError(path, "cannot decode image: " + in->geterror());
+    return img;
+}
+
+bool isFloatFormat(const std::string& path) {
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
+}
+
+void writeImage(const std::string& path, const FloatImage& image,
+                const std::vector<std::string>& channelNames) {
+    const bool asFloat = isFloatFormat(path);
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    if (ext.empty()) throw FileError(path, "output needs an extension (.png or .exr)");
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw FileError(path, "no image writer for '" + ext + "' files");
+    int channels = image.channels;
+    // 8-bit formats take 1, 3 or 4 channels; pad a 2-channel buffer with zero blue.
+    const bool pad = !asFloat && channels == 2;
+    if (pad) channels = 3;
+    OIIO::ImageSpec spec(image.width, image.height, channels,
+                         asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!channelNames.empty() && static_cast<int>(channelNames.size()) == image.channels && !pad)
+        spec.channelnames = channelNames;
+    if (!out->open(path, spec)) throw FileError(path, "cannot open for writing: " + out->geterror());
+    bool ok;
+    if (asFloat) {
+        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+    } else {
+        std::vector<std::uint8_t> bytes(static_cast<size_t>(image.width) * image.height * channels);
+        for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p)
+            for (int c = 0; c < channels; ++c) {
+                const float v = c < image.channels ? image.pixels[p * image.channels + c] : 0.0f;
+                const float clamped = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+                bytes[p * channels + c] = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+            }
+        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    }
+    if (!ok || !out->close()) throw FileError(path, "cannot write image: " + out->geterror());
+}
+
+ImageDifference compareImages(const FloatImage& a, const FloatImage& b, float failThreshold) {
+    if (a.width != b.width || a.height != b.height)
+        throw Error("cannot compare images of different sizes (" + std::to_string(a.width) + "x" +
+                    std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                    std::to_string(b.height) + ")");
+    const int channels = std::min(a.channels, b.channels);
+    auto toBuf = [channels](const FloatImage& img) {
+        OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, img.channels, OIIO::TypeDesc::FLOAT),
+                           const_cast<float*>(img.pixels.data()));
+        return OIIO::ImageBufAlgo::channels(buf, channels, {});
+    };
+    const OIIO::ImageBuf A = toBuf(a), B = toBuf(b);
+    const auto r = OIIO::ImageBufAlgo::compare(A, B, failThreshold, failThreshold);
+    ImageDifference d;
+    d.meanError = r.meanerror;
+    d.rmsError = r.rms_error;
+    d.psnr = r.PSNR;
+    d.maxError = r.maxerror;
+    d.maxX = r.maxx;
+    d.maxY = r.maxy;
+    d.maxChannel = r.maxc;
+    d.failCount = static_cast<long long>(r.nfail);
+    d.pixelCount = static_cast<long long>(a.width) * a.height;
+    return d;
+}
+
+}  // namespace dw

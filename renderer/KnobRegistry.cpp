@@ -1,0 +1,210 @@
+#include "renderer/KnobRegistry.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace {
+
+// Edit distance, to suggest the knob a user probably meant.
+size_t distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::string trimmed(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t");
+    const auto e = s.find_last_not_of(" \t");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+std::string formatNumber(double v) {
+    std::ostringstream ss;
+    ss.precision(6);
+    ss << v;
+    return ss.str();
+}
+
+}  // namespace
+
+int KnobRegistry::add(KnobSpec spec) {
+    if (find(spec.name)) throw Error("knob '" + spec.name + "' is declared twice");
+    specs_.push_back(std::move(spec));
+    values_.push_back(specs_.back().defaultValue);
+    return static_cast<int>(specs_.size() - 1);
+}
+
+BoolKnob KnobRegistry::addBool(std::string name, bool def, std::string pass, std::string description) {
+    KnobSpec s;
+    s.name = std::move(name);
+    s.type = KnobType::Bool;
+    s.defaultValue = def ? 1.0 : 0.0;
+    s.maxValue = 1.0;
+    s.pass = std::move(pass);
+    s.description = std::move(description);
+    return {add(std::move(s))};
+}
+
+IntKnob KnobRegistry::addInt(std::string name, int def, int min, int max, std::string pass,
+                             std::string description, std::string unit, bool tradeoff) {
+    KnobSpec s;
+    s.name = std::move(name);
+    s.type = KnobType::Int;
+    s.defaultValue = def;
+    s.minValue = min;
+    s.maxValue = max;
+    s.pass = std::move(pass);
+    s.description = std::move(description);
+    s.unit = std::move(unit);
+    s.tradeoff = tradeoff;
+    return {add(std::move(s))};
+}
+
+FloatKnob KnobRegistry::addFloat(std::string name, double def, double min, double max, std::string pass,
+                                 std::string description, std::string unit, bool tradeoff, bool logarithmic) {
+    KnobSpec s;
+    s.name = std::move(name);
+    s.type = KnobType::Float;
+    s.defaultValue = def;
+    s.minValue = min;
+    s.maxValue = max;
+    s.pass = std::move(pass);
+    s.description = std::move(description);
+    s.unit = std::move(unit);
+    s.tradeoff = tradeoff;
+    s.logarithmic = logarithmic;
+    return {add(std::move(s))};
+}
+
+EnumKnob KnobRegistry::addEnum(std::string name, std::vector<std::string> choices, int def, std::string pass,
+                               std::string description, bool tradeoff) {
+    KnobSpec s;
+    s.name = std::move(name);
+    s.type = KnobType::Enum;
+    s.defaultValue = def;
+    s.minValue = 0;
+    s.maxValue = static_cast<double>(choices.size()) - 1;
+    s.choices = std::move(choices);
+    s.pass = std::move(pass);
+    s.description = std::move(description);
+    s.tradeoff = tradeoff;
+    return {add(std::move(s))};
+}
+
+std::optional<int> KnobRegistry::find(const std::string& name) const {
+    for (size_t i = 0; i < specs_.size(); ++i)
+        if (specs_[i].name == name) return static_cast<int>(i);
+    return std::nullopt;
+}
+
+void KnobRegistry::set(int id, double v) {
+    const KnobSpec& s = specs_[id];
+    if (!std::isfinite(v)) v = s.defaultValue;
+    if (s.type != KnobType::Float) v = std::round(v);
+    v = std::clamp(v, s.minValue, s.maxValue);
+    if (values_[id] != v) {
+        values_[id] = v;
+        ++generation_;
+    }
+}
+
+void KnobRegistry::resetAll() {
+    for (size_t i = 0; i < specs_.size(); ++i) reset(static_cast<int>(i));
+}
+
+void KnobRegistry::setFromString(const std::string& name, const std::string& rawText) {
+    const auto id = find(name);
+    if (!id) {
+        std::string best;
+        size_t bestD = 1000;
+        for (const auto& s : specs_) {
+            const size_t d = distance(name, s.name);
+            if (d < bestD) {
+                bestD = d;
+                best = s.name;
+            }
+        }
+        throw Error("unknown knob '" + name + "'" + (bestD <= 4 ? " (did you mean '" + best + "'?)" : "") +
+                    "; 'deferred-workbench list knobs' lists them");
+    }
+    const KnobSpec& s = specs_[*id];
+    const std::string text = trimmed(rawText);
+    double v = 0.0;
+    switch (s.type) {
+        case KnobType::Bool:
+            if (text == "true" || text == "1" || text == "on" || text == "yes") v = 1.0;
+            else if (text == "false" || text == "0" || text == "off" || text == "no") v = 0.0;
+            else throw Error("knob '" + name + "' is a bool: expected true or false, got '" + text + "'");
+            break;
+        case KnobType::Enum: {
+            const auto it = std::find(s.choices.begin(), s.choices.end(), text);
+            if (it == s.choices.end()) {
+                std::string list;
+                for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
+                throw Error("knob '" + name + "' takes one of: " + list + "; got '" + text + "'");
+            }
+            v = static_cast<double>(it - s.choices.begin());
+            break;
+        }
+        case KnobType::Int:
+        case KnobType::Float: {
+            const char* first = text.data();
+            const char* last = text.data() + text.size();
+            auto [ptr, ec] = std::from_chars(first, last, v);
+            if (ec != std::errc() || ptr != last || !std::isfinite(v))
+                throw Error("knob '" + name + "' expects a number, got '" + text + "'");
+            if (s.type == KnobType::Int && v != std::floor(v))
+                throw Error("knob '" + name + "' expects a whole number, got '" + text + "'");
+            if (v < s.minValue || v > s.maxValue)
+                throw Error("knob '" + name + "' = " + text + " is out of range " + formatRange(*id));
+            break;
+        }
+    }
+    set(*id, v);
+}
+
+void KnobRegistry::applyAssignment(const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw Error("--set expects name=value, got '" + assignment + "'");
+    setFromString(trimmed(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+std::string KnobRegistry::format(int id) const {
+    const KnobSpec& s = specs_[id];
+    const double v = values_[id];
+    switch (s.type) {
+        case KnobType::Bool: return v != 0.0 ? "true" : "false";
+        case KnobType::Enum: return s.choices[static_cast<size_t>(v)];
+        case KnobType::Int: return std::to_string(static_cast<long long>(v));
+        case KnobType::Float: return formatNumber(v);
+    }
+    return {};
+}
+
+std::string KnobRegistry::formatRange(int id) const {
+    const KnobSpec& s = specs_[id];
+    switch (s.type) {
+        case KnobType::Bool: return "true|false";
+        case KnobType::Enum: {
+            std::string list;
+            for (const auto& c : s.choices) list += (list.empty() ? "" : "|") + c;
+            return list;
+        }
+        default: return "[" + formatNumber(s.minValue) + ", " + formatNumber(s.maxValue) + "]";
+    }
+}
+
+}  // namespace dw

@@ -1,0 +1,79 @@
+#pragma once
+// The one declaration of every tunable parameter (DESIGN.md, "One knob
+// registry"): name, type, default, range, unit, the pass that reads it and
+// whether it trades speed for quality. The ImGui widget, the preset field, the
+// CLI override (--set name=value) and the tradeoff sweep axis all come from it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dw {
+
+enum class KnobType { Bool, Int, Float, Enum };
+
+struct KnobSpec {
+    std::string name;         // "lighting.threshold": <pass>.<parameter>
+    KnobType type = KnobType::Float;
+    double defaultValue = 0.0;
+    double minValue = 0.0;
+    double maxValue = 1.0;
+    std::vector<std::string> choices;  // Enum: the value is an index into this
+    std::string unit;         // shown after the value ("px", "deg", "EV", ...)
+    std::string pass;         // the pass that reads it
+    std::string description;  // one sentence, shown as a tooltip and by `list knobs`
+    bool tradeoff = false;    // trades speed for quality (a tradeoff sweep axis)
+    bool logarithmic = false; // slider and sweep on a log scale
+};
+
+struct BoolKnob { int id = -1; };
+struct IntKnob { int id = -1; };
+struct FloatKnob { int id = -1; };
+struct EnumKnob { int id = -1; };
+
+class KnobRegistry {
+public:
+    BoolKnob addBool(std::string name, bool def, std::string pass, std::string description);
+    IntKnob addInt(std::string name, int def, int min, int max, std::string pass, std::string description,
+                   std::string unit = {}, bool tradeoff = false);
+    FloatKnob addFloat(std::string name, double def, double min, double max, std::string pass,
+                       std::string description, std::string unit = {}, bool tradeoff = false,
+                       bool logarithmic = false);
+    EnumKnob addEnum(std::string name, std::vector<std::string> choices, int def, std::string pass,
+                     std::string description, bool tradeoff = false);
+
+    bool get(BoolKnob k) const { return values_[k.id] != 0.0; }
+    int get(IntKnob k) const { return static_cast<int>(values_[k.id]); }
+    float get(FloatKnob k) const { return static_cast<float>(values_[k.id]); }
+    int get(EnumKnob k) const { return static_cast<int>(values_[k.id]); }
+    std::string choice(EnumKnob k) const { return specs_[k.id].choices[get(k)]; }
+
+    size_t size() const { return specs_.size(); }
+    const KnobSpec& spec(int id) const { return specs_[id]; }
+    const std::vector<KnobSpec>& specs() const { return specs_; }
+    std::optional<int> find(const std::string& name) const;
+    double value(int id) const { return values_[id]; }
+    bool isDefault(int id) const { return values_[id] == specs_[id].defaultValue; }
+
+    // Sets a value, clamped to the range and rounded for integer types.
+    void set(int id, double v);
+    void reset(int id) { set(id, specs_[id].defaultValue); }
+    void resetAll();
+    // Parses "true", "16", "0.02", "reinhard" by the knob's type. Throws
+    // dw::Error naming the knob and the accepted values; never clamps silently.
+    void setFromString(const std::string& name, const std::string& text);
+    // "name=value", as --set takes it.
+    void applyAssignment(const std::string& assignment);
+    std::string format(int id) const;
+    std::string formatRange(int id) const;
+    // Bumped on every change, so views can cache derived state.
+    std::uint64_t generation() const { return generation_; }
+
+private:
+    int add(KnobSpec spec);
+    std::vector<KnobSpec> specs_;
+    std::vector<double> values_;
+    std::uint64_t generation_ = 0;
+};
+
+}  // namespace dw

@@ -1,0 +1,42 @@
+#pragma once
+// Light extents and the meshes that bound them (seed 001 section 2.2, seed 000
+// section 3.2.1). The radius is where I_max * att(d) falls to the threshold
+// (seed 001 eq. 1); the volume meshes circumscribe (never inscribe) the lit
+// region, so the stencil test cannot cut off lit pixels.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "renderer/scene/Light.h"
+
+namespace dw {
+
+// Distance at which maxIntensity / (c + l d + q d^2) == threshold. Stable for
+// q = 0 (linear only) and tiny q; 0 when the light never exceeds the threshold;
+// +infinity when the attenuation never falls (constant only).
+double solveLightRadius(const Attenuation& att, double maxIntensity, double threshold);
+
+enum class VolumeShape { Culled, Sphere, Cone, FullScreen };
+
+struct LightVolume {
+    VolumeShape shape = VolumeShape::Culled;
+    double radius = 0.0;
+    glm::mat4 transform{1.0f};  // unit volume mesh -> world
+};
+
+// Spot lights get a cone while it is smaller than the sphere (tan^2(cutoff) < 4).
+LightVolume computeLightVolume(const Light& light, double threshold);
+
+struct VolumeMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<std::uint32_t> indices;
+    // Whether p is inside (or on) the closed convex mesh under `transform`.
+    bool contains(const glm::mat4& transform, const glm::vec3& p, float epsilon = 1e-4f) const;
+};
+
+// Icosphere whose faces lie outside the unit sphere (inradius 1).
+const VolumeMesh& unitSphereVolume();
+// Apex at the origin, axis +Z, height 1, enclosing the circular cone of base radius 1.
+const VolumeMesh& unitConeVolume();
+
+}  // namespace dw

@@ -1,0 +1,56 @@
+#pragma once
+// Named outputs (DESIGN.md, "Named outputs"): every pass publishes what it
+// writes under a name ("gbuffer.normal", "lbuffer", ...). The inspector, the
+// CLI's --buffer and the pixel probe read this list; none needs per-pass code.
+#include <string>
+#include <vector>
+
+namespace dw {
+
+namespace gl {
+class Texture;
+}
+
+// How a buffer's values are to be read; drives the default display mapping.
+enum class OutputKind {
+    Color,     // display-ready colour (8-bit, sRGB-encoded)
+    HdrColor,  // linear radiance, unbounded
+    Depth,     // window-space depth in [0, 1]
+    NormalKL,  // view-space normal, Kircher-Lawrance encoded in 2 SNORM channels
+    Vector,    // signed vector data (decoded normals, positions)
+    Scalar,    // one value per pixel (AO, luminance statistics)
+    Count,     // small integer counts (light overlap, A-buffer samples)
+};
+const char* toString(OutputKind kind);
+
+struct OutputDecl {
+    std::string name;
+    OutputKind kind = OutputKind::Color;
+    std::string description;
+};
+
+struct PublishedOutput {
+    OutputDecl decl;
+    std::string pass;
+    const gl::Texture* texture = nullptr;  // null until the pass has allocated it
+    int level = 0;
+    int channels = 4;
+    bool producedThisFrame = false;
+};
+
+class OutputRegistry {
+public:
+    void declare(const std::string& pass, const OutputDecl& decl);
+    void bind(const std::string& name, const gl::Texture* texture, int channels, int level = 0);
+    void markFrameStart();
+    void markProduced(const std::string& pass);
+    const PublishedOutput* find(const std::string& name) const;
+    const std::vector<PublishedOutput>& all() const { return outputs_; }
+    std::vector<std::string> names() const;
+
+private:
+    PublishedOutput* findMutable(const std::string& name);
+    std::vector<PublishedOutput> outputs_;
+};
+
+}  // namespace dw

@@ -1,0 +1,137 @@
+#include "renderer/PassTimer.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+TimingStats computeStats(std::vector<float> v) {
+    TimingStats s;
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    s.count = static_cast<int>(v.size());
+    s.min = v.front();
+    s.max = v.back();
+    const size_t n = v.size();
+    s.median = n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
+    s.mean = static_cast<float>(std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(n));
+    return s;
+}
+
+gl::TimestampQuery PassTimer::acquire() {
+    if (pool_.empty()) return gl::TimestampQuery::create();
+    gl::TimestampQuery q = std::move(pool_.back());
+    pool_.pop_back();
+    return q;
+}
+
+void PassTimer::beginFrame(std::uint64_t frame) {
+    if (inFrame_) throw Error("PassTimer::beginFrame called twice");
+    collect(false);
+    current_ = PendingFrame{};
+    current_.frame = frame;
+    inFrame_ = true;
+    frameStart_ = std::chrono::steady_clock::now();
+    Span whole;
+    whole.name = kFrameSeries;
+    whole.begin = acquire();
+    whole.begin.record();
+    current_.spans.push_back(std::move(whole));
+}
+
+void PassTimer::beginPass(const std::string& name) {
+    if (!inFrame_ || inPass_) throw Error("PassTimer::beginPass outside a frame or inside a pass");
+    Span s;
+    s.name = name;
+    s.begin = acquire();
+    s.begin.record();
+    current_.spans.push_back(std::move(s));
+    inPass_ = true;
+    passStart_ = std::chrono::steady_clock::now();
+}
+
+void PassTimer::endPass() {
+    if (!inPass_) throw Error("PassTimer::endPass without beginPass");
+    Span& s = current_.spans.back();
+    s.end = acquire();
+    s.end.record();
+    s.cpuMs = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - passStart_).count();
+    inPass_ = false;
+}
+
+void PassTimer::endFrame() {
+    if (!inFrame_) throw Error("PassTimer::endFrame without beginFrame");
+    Span& whole = current_.spans.front();
+    whole.end = acquire();
+    whole.end.record();
+    whole.cpuMs = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - frameStart_).count();
+    pending_.push_back(std::move(current_));
+    inFrame_ = false;
+}
+
+PassTimer::Series& PassTimer::seriesFor(const std::string& name) {
+    for (auto& s : series_)
+        if (s.name == name) return s;
+    series_.push_back(Series{name, {}});
+    return series_.back();
+}
+
+void PassTimer::harvest(PendingFrame& f) {
+    for (auto& span : f.spans) {
+        const std::uint64_t t0 = span.begin.result(), t1 = span.end.result();
+        TimingSample sample;
+        sample.frame = f.frame;
+        sample.gpuMs = t1 > t0 ? static_cast<float>(static_cast<double>(t1 - t0) * 1e-6) : 0.0f;
+        sample.cpuMs = span.cpuMs;
+        Series& s = seriesFor(span.name);
+        s.samples.push_back(sample);
+        if (s.samples.size() > kHistory) s.samples.pop_front();
+        pool_.push_back(std::move(span.begin));
+        pool_.push_back(std::move(span.end));
+    }
+}
+
+void PassTimer::collect(bool wait) {
+    while (!pending_.empty()) {
+        PendingFrame& f = pending_.front();
+        if (!wait) {
+            bool ready = true;
+            for (const auto& s : f.spans) ready = ready && s.begin.available() && s.end.available();
+            if (!ready) break;
+        }
+        harvest(f);
+        pending_.pop_front();
+    }
+}
+
+const PassTimer::Series* PassTimer::find(const std::string& name) const {
+    for (const auto& s : series_)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+namespace {
+template <typename F>
+TimingStats statsOf(const PassTimer::Series* s, size_t window, F field) {
+    if (!s) return {};
+    std::vector<float> v;
+    const size_t n = s->samples.size();
+    const size_t start = window == 0 || window >= n ? 0 : n - window;
+    for (size_t i = start; i < n; ++i) v.push_back(field(s->samples[i]));
+    return computeStats(std::move(v));
+}
+}  // namespace
+
+TimingStats PassTimer::gpuStats(const std::string& name, size_t window) const {
+    return statsOf(find(name), window, [](const TimingSample& t) { return t.gpuMs; });
+}
+
+TimingStats PassTimer::cpuStats(const std::string& name, size_t window) const {
+    return statsOf(find(name), window, [](const TimingSample& t) { return t.cpuMs; });
+}
+
+void PassTimer::clearHistory() { series_.clear(); }
+
+}  // namespace dw

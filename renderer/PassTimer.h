@@ -1,0 +1,78 @@
+#pragma once
+// Per-pass GPU time from glQueryCounter(GL_TIMESTAMP) pairs, plus the CPU time
+// spent issuing each pass. Results are harvested frames later, when
+// GL_QUERY_RESULT_AVAILABLE says so, so the CPU never waits on the GPU (bgfx's
+// TimerQueryGL and Magnum's FrameProfilerGL do the same); a short history per
+// pass feeds the timer graphs and the medians `render --timings` prints.
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "renderer/gl/TimestampQuery.h"
+
+namespace dw {
+
+struct TimingSample {
+    std::uint64_t frame = 0;
+    float gpuMs = 0.0f;
+    float cpuMs = 0.0f;
+};
+
+struct TimingStats {
+    int count = 0;
+    float median = 0, mean = 0, min = 0, max = 0;
+};
+TimingStats computeStats(std::vector<float> values);
+
+class PassTimer {
+public:
+    static constexpr size_t kHistory = 600;  // samples kept per series
+    static constexpr const char* kFrameSeries = "frame";
+
+    struct Series {
+        std::string name;
+        std::deque<TimingSample> samples;
+    };
+
+    void beginFrame(std::uint64_t frame);
+    void beginPass(const std::string& name);
+    void endPass();
+    void endFrame();
+    // Moves finished frames into the history. With wait=true blocks until all
+    // outstanding frames are done (the CLI's last step; never in a frame loop).
+    void collect(bool wait = false);
+
+    const std::vector<Series>& series() const { return series_; }
+    const Series* find(const std::string& name) const;
+    // Over the newest `window` samples of a series (all, if 0).
+    TimingStats gpuStats(const std::string& name, size_t window = 0) const;
+    TimingStats cpuStats(const std::string& name, size_t window = 0) const;
+    size_t pendingFrames() const { return pending_.size(); }
+    void clearHistory();
+
+private:
+    struct Span {
+        std::string name;
+        gl::TimestampQuery begin, end;
+        float cpuMs = 0.0f;
+    };
+    struct PendingFrame {
+        std::uint64_t frame = 0;
+        std::vector<Span> spans;
+    };
+    gl::TimestampQuery acquire();
+    Series& seriesFor(const std::string& name);
+    void harvest(PendingFrame& f);
+
+    std::vector<gl::TimestampQuery> pool_;
+    std::deque<PendingFrame> pending_;
+    PendingFrame current_;
+    bool inFrame_ = false;
+    bool inPass_ = false;
+    std::chrono::steady_clock::time_point passStart_, frameStart_;
+    std::vector<Series> series_;
+};
+
+}  // namespace dw

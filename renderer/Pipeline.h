@@ -1,0 +1,88 @@
+#pragma once
+// Builds each frame from the knobs and the scene (DESIGN.md, "Model only what
+// the scene requires"): passes run in the order of seed 002 section 6; a pass
+// runs only if something this frame consumes one of its outputs (the final
+// image, or a buffer being inspected) and it is not switched off or without
+// work. Every pass is timed; the report says which ran and why others did not.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/FrameContext.h"
+#include "renderer/GpuScene.h"
+#include "renderer/KnobRegistry.h"
+#include "renderer/OutputRegistry.h"
+#include "renderer/PassTimer.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+
+namespace dw {
+
+namespace gl {
+class ShaderLibrary;
+}
+
+struct PassRecord {
+    std::string name;
+    bool ran = false;
+    std::string reason;  // why it did not run
+    std::string stats;   // the pass's own line about what it did
+};
+
+struct FrameReport {
+    std::uint64_t frameIndex = 0;
+    std::vector<PassRecord> passes;
+    const PassRecord* find(const std::string& name) const;
+};
+
+struct FrameRequest {
+    std::vector<std::string> outputs{"final"};
+};
+
+class Pipeline {
+public:
+    // Declares every pass's knobs and outputs; needs no GL context.
+    explicit Pipeline(KnobRegistry& knobs);
+    ~Pipeline();
+
+    // The rest need a current GL 4.5 context.
+    void setup(gl::ShaderLibrary& shaders);
+    void setScene(const Scene& scene);  // uploads; `scene` must outlive its use here
+    void resize(int width, int height);
+    // Renders one frame. Throws dw::Error if a requested output is unknown or
+    // could not be produced (the message says why).
+    FrameReport render(const Camera& camera, const FrameRequest& request = {});
+
+    const OutputRegistry& outputs() const { return outputs_; }
+    PassTimer& timer() { return timer_; }
+    const std::vector<std::unique_ptr<RenderPass>>& passes() const { return passes_; }
+    RenderPass* findPass(const std::string& name) const;
+    template <typename T>
+    T* pass() const {
+        for (const auto& p : passes_)
+            if (auto* t = dynamic_cast<T*>(p.get())) return t;
+        return nullptr;
+    }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const CameraUniforms& lastCamera() const { return camera_; }
+    const GpuScene& gpuScene() const { return gpu_; }
+    static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
+    // Plans without executing: which passes would run for `request`.
+    std::vector<PassRecord> plan(const FrameRequest& request) const;
+
+private:
+    KnobRegistry& knobs_;
+    std::vector<std::unique_ptr<RenderPass>> passes_;
+    OutputRegistry outputs_;
+    PassTimer timer_;
+    GpuScene gpu_;
+    gl::Buffer cameraUbo_;
+    gl::ShaderLibrary* shaders_ = nullptr;
+    const Scene* scene_ = nullptr;
+    CameraUniforms camera_;
+    int width_ = 0, height_ = 0;
+    std::uint64_t frame_ = 0;
+};
+
+}  // namespace dw

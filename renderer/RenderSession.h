@@ -1,0 +1,54 @@
+#pragma once
+// What one rendering session holds, wired together: shader library, knobs,
+// pipeline, scene and camera. The CLI, the GUI and the tests each build one;
+// the session only composes the parts, each of which does its own job.
+#include <memory>
+#include <string>
+
+#include "renderer/BufferView.h"
+#include "renderer/ImageIO.h"
+#include "renderer/KnobRegistry.h"
+#include "renderer/Pipeline.h"
+#include "renderer/gl/DebugOutput.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+class RenderSession {
+public:
+    // Needs a current GL 4.5 context; throws GlUnsupportedError otherwise.
+    explicit RenderSession(const std::filesystem::path& shaderRoot = gl::ShaderLibrary::locateRoot());
+
+    // Loads a built-in scene, scene JSON or glTF; the camera becomes the scene's.
+    void loadScene(const std::string& spec);
+    void setScene(Scene scene);
+    void resize(int width, int height) { pipeline_.resize(width, height); }
+    FrameReport render(const FrameRequest& request = {}) { return pipeline_.render(camera_, request); }
+
+    // A named output as raw floats (for .exr) or as the buffer view shows it (.png).
+    FloatImage readRaw(const std::string& output) const;
+    FloatImage readDisplay(const std::string& output, BufferViewSettings settings = {});
+    // Renders (if needed) and writes `output` to `path`; .exr raw, .png display.
+    void writeOutput(const std::string& output, const std::string& path);
+
+    KnobRegistry& knobs() { return knobs_; }
+    Pipeline& pipeline() { return pipeline_; }
+    gl::ShaderLibrary& shaders() { return shaders_; }
+    BufferView& bufferView() { return view_; }
+    const Scene& scene() const { return *scene_; }
+    Scene& mutableScene() { return *scene_; }
+    Camera& camera() { return camera_; }
+    const gl::GlInfo& glInfo() const { return info_; }
+
+private:
+    gl::GlInfo info_;
+    gl::ShaderLibrary shaders_;
+    KnobRegistry knobs_;
+    Pipeline pipeline_;
+    BufferView view_;
+    std::unique_ptr<Scene> scene_;
+    Camera camera_;
+};
+
+}  // namespace dw

@@ -1,0 +1,31 @@
+#include "renderer/gl/FullscreenTriangle.h"
+
+namespace dw::gl {
+
+void FullscreenTriangle::draw() const {
+    if (!vao_.id()) vao_ = VertexArray::create();
+    vao_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void resetPipelineState(int width, int height) {
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_SAMPLE_MASK);
+    glDisable(GL_MULTISAMPLE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glDepthFunc(GL_LESS);
+    glFrontFace(GL_CCW);
+    glViewport(0, 0, width, height);
+}
+
+}  // namespace dw::gl

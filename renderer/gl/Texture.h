@@ -1,0 +1,54 @@
+#pragma once
+// Immutable-storage OpenGL texture (2D, 2D multisample, cube map) with
+// direct-state-access helpers for upload, sampling state and read-back.
+#include <cstdint>
+#include <vector>
+
+#include "renderer/gl/GlObject.h"
+
+namespace dw::gl {
+
+class Texture {
+public:
+    Texture() = default;
+    static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
+    static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
+    static Texture createCube(GLenum internalFormat, int size, int levels = 1);
+    // Number of mip levels of a full chain down to 1x1.
+    static int fullMipCount(int width, int height);
+
+    GLuint id() const { return name_.id(); }
+    explicit operator bool() const { return static_cast<bool>(name_); }
+    GLenum target() const { return target_; }
+    GLenum internalFormat() const { return format_; }
+    int width(int level = 0) const;
+    int height(int level = 0) const;
+    int levels() const { return levels_; }
+    int samples() const { return samples_; }
+    bool isDepth() const;
+    bool hasStencil() const;
+    bool isSrgb() const { return format_ == GL_SRGB8_ALPHA8 || format_ == GL_SRGB8; }
+
+    void setFilter(GLenum minFilter, GLenum magFilter);
+    void setWrap(GLenum wrap);
+    void setBorderColor(float r, float g, float b, float a);
+    // Depth textures: sample depth (not stencil) and optionally compare for shadows.
+    void setDepthCompare(bool enabled);
+    void setLabel(const char* label);
+    void upload(int level, int width, int height, GLenum format, GLenum type, const void* data);
+    void uploadCubeFace(int face, int level, int size, GLenum format, GLenum type, const void* data);
+    void generateMipmaps();
+    void bind(GLuint unit) const;
+
+    // Reads a level back to CPU memory (rows bottom-up, as GL stores them).
+    std::vector<float> readFloats(int level, GLenum format, int channels) const;
+    std::vector<std::uint8_t> readBytes(int level, GLenum format, int channels) const;
+
+private:
+    GlObject<TextureTraits> name_;
+    GLenum target_ = GL_TEXTURE_2D;
+    GLenum format_ = 0;
+    int width_ = 0, height_ = 0, levels_ = 0, samples_ = 0;
+};
+
+}  // namespace dw::gl

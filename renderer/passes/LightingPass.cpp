@@ -1,0 +1,266 @@
+#include "renderer/passes/LightingPass.h"
+
+#include <array>
+#include <cmath>
+
+#include "renderer/Error.h"
+#include "renderer/GpuScene.h"
+#include "renderer/LightVolume.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+namespace {
+
+// std430 mirror of `Light` in shaders/common/lighting.glsl.
+struct LightGpu {
+    glm::mat4 volume{1.0f};
+    glm::vec4 positionRadius{0.0f};
+    glm::vec4 directionCutoff{0.0f};
+    glm::vec4 intensityExponent{0.0f};
+    glm::vec4 attenuation{0.0f};
+};
+static_assert(sizeof(LightGpu) == 128, "std430 layout");
+
+struct LightingParamsGpu {
+    glm::ivec4 modes{0};
+    glm::vec4 values{0.0f};
+};
+
+// Frustum planes (Gribb & Hartmann) from a view-projection matrix, normalised.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
+    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    std::array<glm::vec4, 6> p = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                  row(3) - row(1), row(3) + row(2), row(3) - row(2)};
+    for (auto& plane : p) plane /= glm::length(glm::vec3(plane));
+    return p;
+}
+
+bool sphereOutside(const std::array<glm::vec4, 6>& planes, const glm::vec3& c, float r) {
+    for (const auto& p : planes)
+        if (glm::dot(glm::vec3(p), c) + p.w < -r) return true;
+    return false;
+}
+
+}  // namespace
+
+void LightingPass::VolumeGeometry::create(const VolumeMesh& mesh) {
+    vertices = gl::Buffer::fromVector(mesh.positions, false, "light volume vertices");
+    indices = gl::Buffer::fromVector(mesh.indices, false, "light volume indices");
+    vao = gl::VertexArray::create();
+    vao.setVertexBuffer(0, vertices, 0, sizeof(glm::vec3));
+    vao.setIndexBuffer(indices);
+    vao.setAttribute(0, 0, 3, 0);
+    indexCount = static_cast<GLsizei>(mesh.indices.size());
+}
+
+void LightingPass::VolumeGeometry::draw() const {
+    vao.bind();
+    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+LightingPass::LightingPass(KnobRegistry& knobs) {
+    strategy_ = knobs.addEnum("lighting.strategy", {"stencil_volumes", "volumes", "fullscreen"}, StencilVolumes, "lighting",
+                              "how point and spot lights find their pixels: stencil-tested light volumes (seed 001), "
+                              "volumes without stencil, or every light over every pixel (brute force)");
+    stencilCount_ = knobs.addEnum("lighting.stencil_count", {"depth_fail", "depth_pass"}, DepthFail, "lighting",
+                                  "stencil counting of the volume test: depth_fail (correct with the camera inside a "
+                                  "volume) or depth_pass (seed 001's table as written; loses lights around the camera)");
+    threshold_ = knobs.addFloat("lighting.threshold", 1.0 / 255.0, 1e-5, 0.25, "lighting",
+                                "intensity at which a light's volume ends: I_max * att(r) = threshold (seed 001 eq. 1); "
+                                "larger means smaller volumes, less work, and light cut off sooner",
+                                "", true, true);
+    attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, 0, "lighting",
+                                 "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
+                                 "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");
+    windowExponent_ = knobs.addFloat("lighting.window_exponent", 20.0, 2.0, 64.0, "lighting",
+                                     "k in the windowed attenuation 1 - (d/r)^k (seed 000 uses 20)");
+    ambientSpecular_ = knobs.addBool("lighting.ambient_specular", true, "lighting",
+                                     "ambient reflectance = diffuse + specular colour, so metals (no diffuse) still "
+                                     "reflect ambient light; off: the seed's k_a = diffuse colour");
+    frustumCull_ = knobs.addBool("lighting.frustum_cull", true, "lighting",
+                                 "skip light volumes entirely outside the view frustum (volume strategies)");
+}
+
+std::vector<OutputDecl> LightingPass::outputs() const {
+    return {{"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended"}};
+}
+
+PassIO LightingPass::inputs(const KnobRegistry&) const {
+    return {{"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"}, {"ssao.blurred"}};
+}
+
+void LightingPass::setup(gl::ShaderLibrary& shaders) {
+    ambientProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/ambient.frag"});
+    fullscreenLightProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/light.frag"});
+    volumeLightProgram_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag"});
+    stencilProgram_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/stencil.frag"});
+    sphere_.create(unitSphereVolume());
+    cone_.create(unitConeVolume());
+    params_ = gl::Buffer::create(sizeof(LightingParamsGpu), nullptr, true, "lighting params");
+    white_ = gl::Texture::create2D(GL_R8, 1, 1);
+    const std::uint8_t one = 255;
+    white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
+}
+
+void LightingPass::resize(int width, int height, OutputRegistry& outputs) {
+    lbuffer_ = gl::Texture::create2D(GL_RGBA16F, width, height);
+    lbuffer_.setFilter(GL_NEAREST, GL_NEAREST);
+    depthStencil_ = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
+    fbo_ = gl::Framebuffer::create("lbuffer");
+    fbo_.attachColor(0, lbuffer_);
+    fbo_.attachDepth(depthStencil_);
+    fbo_.setDrawBuffers({0});
+    fbo_.checkComplete("L-buffer");
+    outputs.bind("lbuffer", &lbuffer_, 4);
+}
+
+void LightingPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    const auto strategy = static_cast<Strategy>(k.get(strategy_));
+    const double threshold = k.get(threshold_);
+    const glm::mat4& view = ctx.camera.view;
+    const auto planes = frustumPlanes(ctx.camera.viewProjection);
+    const bool cull = k.get(frustumCull_) && strategy != FullScreen;
+
+    // Build the light table and sort lights into how each is drawn.
+    std::vector<LightGpu> table;
+    std::vector<int> directional, fullscreen, spheres, cones;
+    counts_ = {};
+    for (const Light& l : ctx.scene.lights) {
+        if (!l.enabled) continue;
+        const LightVolume v = computeLightVolume(l, threshold);
+        if (v.shape == VolumeShape::Culled) {
+            ++counts_.belowThreshold;
+            continue;
+        }
+        LightGpu g;
+        g.volume = v.transform;
+        const glm::vec3 dirView = glm::normalize(glm::vec3(view * glm::vec4(l.direction, 0.0f)));
+        g.positionRadius = glm::vec4(glm::vec3(view * glm::vec4(l.position, 1.0f)),
+                                     std::isfinite(v.radius) ? static_cast<float>(v.radius) : 0.0f);
+        g.directionCutoff = glm::vec4(dirView, std::cos(glm::radians(l.cutoffDegrees)));
+        g.intensityExponent = glm::vec4(l.intensity, l.exponent);
+        const int type = l.type == LightType::Directional ? 0 : (l.type == LightType::Point ? 1 : 2);
+        g.attenuation = glm::vec4(l.attenuation.constant, l.attenuation.linear, l.attenuation.quadratic, static_cast<float>(type));
+        const int index = static_cast<int>(table.size());
+        if (l.type == LightType::Directional) {
+            directional.push_back(index);
+        } else if (v.shape == VolumeShape::FullScreen || strategy == FullScreen) {
+            fullscreen.push_back(index);
+        } else {
+            if (cull && sphereOutside(planes, l.position, static_cast<float>(v.radius))) {
+                ++counts_.frustumCulled;
+                continue;
+            }
+            (v.shape == VolumeShape::Cone ? cones : spheres).push_back(index);
+        }
+        table.push_back(g);
+    }
+    counts_.directional = static_cast<int>(directional.size());
+    counts_.fullscreen = static_cast<int>(fullscreen.size());
+    counts_.volumes = static_cast<int>(spheres.size() + cones.size());
+    if (table.empty()) table.push_back(LightGpu{});
+    lights_.ensureSize(table.size() * sizeof(LightGpu), "lights");
+    lights_.update(0, table.size() * sizeof(LightGpu), table.data());
+    lights_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+
+    const bool occlusion = ctx.produced("ssao.blurred");
+    LightingParamsGpu params;
+    params.modes = glm::ivec4(k.get(attenuation_), occlusion ? 1 : 0, k.get(ambientSpecular_) ? 1 : 0, 0);
+    params.values = glm::vec4(k.get(windowExponent_), 0, 0, 0);
+    params_.update(0, sizeof(params), &params);
+    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+
+    // The L-buffer gets its own copy of the G-buffer depth: the stencil routing
+    // writes stencil there while the shader samples gbuffer.depth.
+    const gl::Texture* gdepth = ctx.outputs.find("gbuffer.depth")->texture;
+    glCopyImageSubData(gdepth->id(), GL_TEXTURE_2D, 0, 0, 0, 0, depthStencil_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       ctx.width, ctx.height, 1);
+
+    const char* inputNames[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"};
+    for (GLuint unit = 0; unit < 5; ++unit) ctx.outputs.find(inputNames[unit])->texture->bind(unit);
+    if (occlusion) ctx.outputs.find("ssao.blurred")->texture->bind(5);
+    else white_.bind(5);
+
+    fbo_.bind();
+    // Ambient + emission + background: the first write, no blending.
+    ambientProgram_->use();
+    ambientProgram_->set(0, ctx.scene.ambient);
+    ambientProgram_->set(1, ctx.scene.background);
+    triangle_.draw();
+
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+
+    fullscreenLightProgram_->use();
+    for (int i : directional) {
+        fullscreenLightProgram_->set(0, i);
+        triangle_.draw();
+    }
+    for (int i : fullscreen) {
+        fullscreenLightProgram_->set(0, i);
+        triangle_.draw();
+    }
+
+    if (!spheres.empty() || !cones.empty()) {
+        // Volumes may cross the near and far planes: clamp depth instead of clipping.
+        glEnable(GL_DEPTH_CLAMP);
+        auto drawVolume = [&](int i, const VolumeGeometry& geo, const gl::Program& program) {
+            program.set(0, i);
+            geo.draw();
+        };
+        auto forEachVolume = [&](auto&& fn) {
+            for (int i : spheres) fn(i, sphere_);
+            for (int i : cones) fn(i, cone_);
+        };
+        if (strategy == Volumes) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            volumeLightProgram_->use();
+            forEachVolume([&](int i, const VolumeGeometry& g) { drawVolume(i, g, *volumeLightProgram_); });
+        } else {
+            const bool depthFail = k.get(stencilCount_) == DepthFail;
+            glEnable(GL_STENCIL_TEST);
+            glStencilMask(0xFF);
+            forEachVolume([&](int i, const VolumeGeometry& g) {
+                // 1. Mark pixels whose surface lies inside the volume.
+                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                glDisable(GL_BLEND);
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glDepthMask(GL_FALSE);
+                glDisable(GL_CULL_FACE);
+                glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                if (depthFail) {
+                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+                } else {
+                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+                }
+                stencilProgram_->use();
+                drawVolume(i, g, *stencilProgram_);
+                // 2. Shade the marked pixels through the back faces, zeroing the
+                //    stencil on the way so the next light starts clean.
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                glEnable(GL_BLEND);
+                glDisable(GL_DEPTH_TEST);
+                glEnable(GL_CULL_FACE);
+                glCullFace(GL_FRONT);
+                glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+                volumeLightProgram_->use();
+                drawVolume(i, g, *volumeLightProgram_);
+            });
+        }
+    }
+    const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.frustumCulled + counts_.belowThreshold;
+    stats_ = std::to_string(total) + " lights: " + std::to_string(counts_.directional) + " directional, " +
+             std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) + " full-screen, " +
+             std::to_string(counts_.frustumCulled) + " outside the frustum, " + std::to_string(counts_.belowThreshold) +
+             " below threshold";
+}
+
+}  // namespace dw

@@ -1,0 +1,70 @@
+#pragma once
+// Lighting into the HDR L-buffer (seed 000 sections 3.2 and 5.2.1; seed 002
+// step 4). Reads the G-buffer (and ssao.blurred when it ran); writes lbuffer
+// (RGBA16F) by additive blending: the ambient term and emission, each
+// directional light as a full-screen pass, and point/spot lights by the chosen
+// strategy:
+//  stencil_volumes  sphere/cone volumes with the two-pass stencil test of
+//                   seed 001 section 2.2 (counted on depth fail by default,
+//                   which stays right with the camera inside a volume)
+//  volumes          the volumes' back faces only, no stencil
+//  fullscreen       every light over every pixel (the brute-force reference)
+// All three run the same fragment shader with the in-volume test, so their
+// images agree up to rounding (seed 000 section 6.1).
+#include <vector>
+
+#include "renderer/KnobRegistry.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+#include "renderer/gl/VertexArray.h"
+
+namespace dw {
+
+class LightingPass : public RenderPass {
+public:
+    enum Strategy { StencilVolumes = 0, Volumes = 1, FullScreen = 2 };
+    enum StencilCount { DepthFail = 0, DepthPass = 1 };
+
+    explicit LightingPass(KnobRegistry& knobs);
+    const char* name() const override { return "lighting"; }
+    std::vector<OutputDecl> outputs() const override;
+    PassIO inputs(const KnobRegistry& knobs) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void resize(int width, int height, OutputRegistry& outputs) override;
+    void execute(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+    struct Counts {
+        int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0;
+    };
+    const Counts& lastCounts() const { return counts_; }
+
+private:
+    struct VolumeGeometry {
+        gl::Buffer vertices, indices;
+        gl::VertexArray vao;
+        GLsizei indexCount = 0;
+        void create(const struct VolumeMesh& mesh);
+        void draw() const;
+    };
+
+    FloatKnob threshold_;
+    EnumKnob strategy_, stencilCount_, attenuation_;
+    FloatKnob windowExponent_;
+    BoolKnob frustumCull_, ambientSpecular_;
+
+    gl::ShaderLibrary::Handle ambientProgram_, fullscreenLightProgram_, volumeLightProgram_, stencilProgram_;
+    gl::FullscreenTriangle triangle_;
+    VolumeGeometry sphere_, cone_;
+    gl::Buffer lights_, params_;
+    gl::Texture lbuffer_, depthStencil_, white_;
+    gl::Framebuffer fbo_;
+    Counts counts_;
+    std::string stats_;
+};
+
+}  // namespace dw

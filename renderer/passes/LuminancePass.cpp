@@ -1,0 +1,79 @@
+#include "renderer/passes/LuminancePass.h"
+
+#include <glm/glm.hpp>
+
+namespace dw {
+
+LuminancePass::LuminancePass(KnobRegistry& knobs) {
+    delta_ = knobs.addFloat("luminance.log_delta", 1e-4, 1e-8, 1.0, "luminance",
+                            "delta in the log-average exp(mean(log(delta + L))) (seed 000 eq. 4.2), keeping black "
+                            "pixels from sending the average to zero",
+                            "", false, true);
+    background_ = knobs.addEnum("luminance.background", {"include", "exclude"}, 0, "luminance",
+                                "whether background pixels (no geometry) count in the statistics; the seed counts "
+                                "every pixel, which lets a black background darken the log-average");
+}
+
+PassIO LuminancePass::inputs(const KnobRegistry& knobs) const {
+    PassIO io{{"lbuffer"}, {}};
+    if (knobs.get(background_) == 1) io.inputs.push_back("gbuffer.depth");
+    return io;
+}
+
+void LuminancePass::setup(gl::ShaderLibrary& shaders) {
+    first_ = shaders.get({.compute = "tonemap/luminance_reduce.comp", .defines = {"FIRST_PASS"}});
+    next_ = shaders.get({.compute = "tonemap/luminance_reduce.comp"});
+    finalize_ = shaders.get({.compute = "tonemap/luminance_reduce.comp", .defines = {"FINALIZE"}});
+    stats_ = gl::Texture::create2D(GL_RGBA32F, 1, 1);
+    stats_.setFilter(GL_NEAREST, GL_NEAREST);
+}
+
+void LuminancePass::resize(int width, int height, OutputRegistry& outputs) {
+    const size_t tiles = static_cast<size_t>((width + 15) / 16) * ((height + 15) / 16);
+    ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
+    pong_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials B");
+    outputs.bind("luminance.stats", &stats_, 4);
+}
+
+void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Texture* depthMask) {
+    const int w = hdr.width(), h = hdr.height();
+    const size_t tiles = static_cast<size_t>((w + 15) / 16) * ((h + 15) / 16);
+    if (ping_.size() < tiles * sizeof(glm::vec4)) {
+        ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
+        pong_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials B");
+    }
+    hdr.bind(0);
+    if (depthMask) depthMask->bind(1);
+    first_->use();
+    first_->set(1, delta);
+    first_->set(2, depthMask ? 1 : 0);
+    ping_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+    glDispatchCompute(static_cast<GLuint>((w + 15) / 16), static_cast<GLuint>((h + 15) / 16), 1);
+    size_t count = tiles;
+    const gl::Buffer* in = &ping_;
+    const gl::Buffer* out = &pong_;
+    next_->use();
+    while (count > 1) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        const size_t groups = (count + 255) / 256;
+        in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+        out->bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+        next_->set(0, static_cast<int>(count));
+        glDispatchCompute(static_cast<GLuint>(groups), 1, 1);
+        count = groups;
+        std::swap(in, out);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    finalize_->use();
+    glBindImageTexture(0, stats_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void LuminancePass::execute(FrameContext& ctx) {
+    const gl::Texture* mask = ctx.knobs.get(background_) == 1 ? ctx.outputs.find("gbuffer.depth")->texture : nullptr;
+    reduce(*ctx.outputs.find("lbuffer")->texture, ctx.knobs.get(delta_), mask);
+}
+
+}  // namespace dw

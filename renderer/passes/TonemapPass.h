@@ -1,0 +1,38 @@
+#pragma once
+// Tone mapping (seed 000 sections 4.2 and 5.3; seed 002 step 9): reads lbuffer
+// and, for Reinhard, luminance.stats; writes final (RGBA8, sRGB-encoded).
+#include "renderer/KnobRegistry.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+
+namespace dw {
+
+class TonemapPass : public RenderPass {
+public:
+    enum Operator { Simple = 0, Reinhard = 1 };
+    explicit TonemapPass(KnobRegistry& knobs);
+    const char* name() const override { return "tonemap"; }
+    std::vector<OutputDecl> outputs() const override {
+        return {{"final", OutputKind::Color, "tone-mapped display image (RGBA8, sRGB-encoded)"}};
+    }
+    PassIO inputs(const KnobRegistry& knobs) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void resize(int width, int height, OutputRegistry& outputs) override;
+    void execute(FrameContext& ctx) override;
+
+private:
+    EnumKnob operator_;
+    FloatKnob key_, white_, exposure_;
+    BoolKnob autoWhite_, srgb_;
+    gl::ShaderLibrary::Handle program_;
+    gl::FullscreenTriangle triangle_;
+    gl::Buffer params_;
+    gl::Texture final_;
+    gl::Framebuffer fbo_;
+};
+
+}  // namespace dw

@@ -1,0 +1,51 @@
+#include "renderer/reference/ShadingReference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dw::reference {
+
+double attenuation(const Attenuation& a, double d, double radius, AttenuationModel model, double windowExponent) {
+    if (radius > 0.0 && d > radius) return 0.0;
+    double att = 1.0 / std::max(a.constant + a.linear * d + a.quadratic * d * d, 1e-6);
+    if (model == AttenuationModel::Windowed && radius > 0.0) att *= 1.0 - std::pow(d / radius, windowExponent);
+    return att;
+}
+
+glm::dvec3 shadeLight(const Light& light, const glm::dvec3& lightPosition, const glm::dvec3& lightDirection,
+                      double radius, const SurfacePoint& s, AttenuationModel model, double windowExponent) {
+    glm::dvec3 L;
+    double scale = 1.0;
+    if (light.type == LightType::Directional) {
+        L = -glm::normalize(lightDirection);
+    } else {
+        const glm::dvec3 toLight = lightPosition - s.position;
+        const double d = glm::length(toLight);
+        L = toLight / std::max(d, 1e-12);
+        scale = attenuation(light.attenuation, d, radius, model, windowExponent);
+        if (light.type == LightType::Spot) {
+            const double cosTheta = glm::dot(-L, glm::normalize(lightDirection));
+            const double cosCutoff = std::cos(light.cutoffDegrees * 3.14159265358979323846 / 180.0);
+            scale *= cosTheta >= cosCutoff ? std::pow(std::max(cosTheta, 0.0), static_cast<double>(light.exponent)) : 0.0;
+        }
+    }
+    const double nDotL = glm::dot(s.normal, L);
+    if (scale <= 0.0 || nDotL <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 V = glm::normalize(-s.position);
+    const glm::dvec3 H = glm::normalize(L + V);
+    const double spec = std::pow(std::max(glm::dot(s.normal, H), 0.0), s.exponent);
+    return glm::dvec3(light.intensity) * scale * (s.diffuse * nDotL + s.specular * spec);
+}
+
+glm::dvec2 encodeNormalKL(const glm::dvec3& n) {
+    const glm::dvec3 m(n.x, n.y, n.z + 1.0);
+    const double len = glm::length(m);
+    return len > 1e-15 ? glm::dvec2(m) / len : glm::dvec2(1.0, 0.0);
+}
+
+glm::dvec3 decodeNormalKL(const glm::dvec2& e) {
+    const double z = std::sqrt(std::max(1.0 - glm::dot(e, e), 0.0));
+    return {2.0 * z * e.x, 2.0 * z * e.y, 2.0 * z * z - 1.0};
+}
+
+}  // namespace dw::reference

@@ -1,0 +1,356 @@
+#include "renderer/scene/BuiltinScenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/Error.h"
+#include "renderer/scene/ShapeBuilder.h"
+
+namespace dw {
+
+namespace {
+
+// ---- deterministic procedural textures (no files, no RNG state)
+std::uint32_t hash(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+float noise01(int x, int y, std::uint32_t seed) {
+    return static_cast<float>(hash(static_cast<std::uint32_t>(x) * 73856093U ^ static_cast<std::uint32_t>(y) * 19349663U ^ seed) & 0xffff) / 65535.0f;
+}
+
+// Height field of rectangular blocks separated by mortar; `rowOffset` staggers rows (bricks).
+float blockHeight(int x, int y, int size, int blocksX, int blocksY, float mortar, bool stagger) {
+    const float fy = static_cast<float>(y) / size * blocksY;
+    const int row = static_cast<int>(fy);
+    float fx = static_cast<float>(x) / size * blocksX + (stagger && (row % 2) ? 0.5f : 0.0f);
+    const float ux = fx - std::floor(fx), uy = fy - std::floor(fy);
+    const float d = std::min(std::min(ux, 1.0f - ux) * (static_cast<float>(size) / blocksX),
+                             std::min(uy, 1.0f - uy) * (static_cast<float>(size) / blocksY));
+    return std::clamp(d / mortar, 0.0f, 1.0f);
+}
+
+struct BlockTexture {
+    Image albedo;
+    Image normal;
+};
+
+BlockTexture blockTexture(const std::string& name, int size, int blocksX, int blocksY, bool stagger,
+                          glm::vec3 colorA, glm::vec3 colorB, glm::vec3 mortarColor, std::uint32_t seed) {
+    BlockTexture t;
+    t.albedo = Image{size, size, std::vector<std::uint8_t>(size * size * 4), "builtin:" + name};
+    t.normal = Image{size, size, std::vector<std::uint8_t>(size * size * 4), "builtin:" + name + "-normal"};
+    std::vector<float> h(size * size);
+    const float mortar = 3.0f;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float hb = blockHeight(x, y, size, blocksX, blocksY, mortar, stagger);
+            const float fy = static_cast<float>(y) / size * blocksY;
+            const int row = static_cast<int>(fy);
+            const int col = static_cast<int>(static_cast<float>(x) / size * blocksX + (stagger && (row % 2) ? 0.5f : 0.0f));
+            const float blockTone = noise01(col, row, seed);
+            const float grain = noise01(x, y, seed * 7 + 1) * 0.12f;
+            glm::vec3 c = glm::mix(colorA, colorB, blockTone) * (0.94f + grain);
+            c = glm::mix(mortarColor, c, hb);
+            h[y * size + x] = hb * 0.8f + grain * 0.3f;
+            std::uint8_t* p = &t.albedo.rgba[(y * size + x) * 4];
+            for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::clamp(c[k], 0.0f, 1.0f) * 255.0f + 0.5f);
+            p[3] = 255;
+        }
+    // Tangent-space normals from the height field (image rows top-down; +v is up).
+    const float strength = 2.0f;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            auto H = [&](int xx, int yy) { return h[((yy + size) % size) * size + (xx + size) % size]; };
+            const float dx = (H(x + 1, y) - H(x - 1, y)) * 0.5f * strength;
+            const float dy = (H(x, y - 1) - H(x, y + 1)) * 0.5f * strength;
+            const glm::vec3 n = glm::normalize(glm::vec3(-dx, -dy, 1.0f));
+            std::uint8_t* p = &t.normal.rgba[(y * size + x) * 4];
+            for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>((n[k] * 0.5f + 0.5f) * 255.0f + 0.5f);
+            p[3] = 255;
+        }
+    return t;
+}
+
+glm::vec3 hueColor(float h) {
+    const glm::vec3 k(0.0f, 2.0f / 3.0f, 1.0f / 3.0f);
+    glm::vec3 c;
+    for (int i = 0; i < 3; ++i) c[i] = std::clamp(std::fabs(std::fmod(h + k[i], 1.0f) * 6.0f - 3.0f) - 1.0f, 0.0f, 1.0f);
+    return c;
+}
+
+class Builder {
+public:
+    explicit Builder(Scene& s) : s_(s) {}
+    int material(const std::string& name, glm::vec3 diffuse, glm::vec3 specular, float exponent,
+                 int albedoTex = -1, int normalTex = -1, glm::vec3 emissive = glm::vec3(0.0f)) {
+        Material m;
+        m.name = name;
+        m.baseColor = glm::vec4(diffuse, 1.0f);
+        m.specularColor = specular;
+        m.specularExponent = exponent;
+        m.baseColorTexture = albedoTex;
+        m.normalTexture = normalTex;
+        m.emissive = emissive;
+        return s_.addMaterial(m);
+    }
+    int mesh(Mesh m, int material) {
+        m.material = material;
+        return s_.addMesh(std::move(m));
+    }
+    void place(int mesh, const glm::vec3& pos, float yawDegrees = 0.0f, glm::vec3 scale = glm::vec3(1.0f)) {
+        glm::mat4 t = glm::translate(glm::mat4(1.0f), pos);
+        t = glm::rotate(t, glm::radians(yawDegrees), glm::vec3(0, 1, 0));
+        s_.instances.push_back({mesh, glm::scale(t, scale)});
+    }
+    Light& light(LightType type, const std::string& name, glm::vec3 pos, glm::vec3 dir, glm::vec3 intensity,
+                 Attenuation att = {}, float cutoff = 45.0f, float exponent = 0.0f) {
+        Light l;
+        l.type = type;
+        l.name = name;
+        l.position = pos;
+        l.direction = glm::normalize(dir);
+        l.intensity = intensity;
+        l.attenuation = att;
+        l.cutoffDegrees = cutoff;
+        l.exponent = exponent;
+        s_.lights.push_back(l);
+        return s_.lights.back();
+    }
+
+private:
+    Scene& s_;
+};
+
+Scene courtyard() {
+    Scene s;
+    s.name = "default";
+    s.ambient = glm::vec3(0.035f, 0.04f, 0.05f);
+    s.background = glm::vec3(0.10f, 0.12f, 0.20f);
+    Builder b(s);
+    BlockTexture tiles = blockTexture("tiles", 256, 4, 4, false, {0.55f, 0.52f, 0.47f}, {0.70f, 0.66f, 0.58f}, {0.25f, 0.24f, 0.22f}, 11);
+    BlockTexture bricks = blockTexture("bricks", 256, 4, 8, true, {0.50f, 0.22f, 0.15f}, {0.65f, 0.33f, 0.22f}, {0.55f, 0.52f, 0.48f}, 23);
+    const int tilesA = s.addImage(std::move(tiles.albedo)), tilesN = s.addImage(std::move(tiles.normal));
+    const int bricksA = s.addImage(std::move(bricks.albedo)), bricksN = s.addImage(std::move(bricks.normal));
+    const int floorMat = b.material("flagstones", glm::vec3(1.0f), glm::vec3(0.15f), 40.0f, tilesA, tilesN);
+    const int wallMat = b.material("brick", glm::vec3(1.0f), glm::vec3(0.05f), 12.0f, bricksA, bricksN);
+    const int stoneMat = b.material("marble", {0.82f, 0.80f, 0.76f}, glm::vec3(0.5f), 90.0f);
+    const int bronzeMat = b.material("bronze", {0.25f, 0.16f, 0.08f}, {0.9f, 0.65f, 0.35f}, 200.0f);
+    const int woodMat = b.material("crate", {0.45f, 0.30f, 0.16f}, glm::vec3(0.08f), 16.0f, bricksA);
+    const int waterMat = b.material("basin", {0.15f, 0.22f, 0.25f}, glm::vec3(0.9f), 400.0f);
+
+    const float W = 32.0f, D = 24.0f, H = 5.0f;
+    b.place(b.mesh(shapes::plane(W + 8, D + 8, 0.5f), floorMat), {0, 0, 0});
+    const int wallX = b.mesh(shapes::box({W, H, 0.6f}, 0.5f), wallMat);
+    const int wallZ = b.mesh(shapes::box({0.6f, H, D}, 0.5f), wallMat);
+    b.place(wallX, {0, H / 2, -D / 2});
+    b.place(wallZ, {-W / 2, H / 2, 0});
+    b.place(wallZ, {W / 2, H / 2, 0});
+    // Two colonnades with architraves.
+    const int column = b.mesh(shapes::cylinder(0.35f, 3.6f, 24), stoneMat);
+    const int capital = b.mesh(shapes::box({1.0f, 0.3f, 1.0f}), stoneMat);
+    const int plinth = b.mesh(shapes::box({0.9f, 0.2f, 0.9f}), stoneMat);
+    const int beam = b.mesh(shapes::box({22.5f, 0.5f, 1.0f}), stoneMat);
+    for (float z : {-5.0f, 5.0f}) {
+        for (int i = 0; i < 6; ++i) {
+            const float x = -11.25f + i * 4.5f;
+            b.place(plinth, {x, 0.1f, z});
+            b.place(column, {x, 0.2f, z});
+            b.place(capital, {x, 3.95f, z});
+        }
+        b.place(beam, {0, 4.35f, z});
+    }
+    // Fountain with a bronze sphere.
+    b.place(b.mesh(shapes::cylinder(2.2f, 0.5f, 48), stoneMat), {0, 0, 0});
+    b.place(b.mesh(shapes::cylinder(1.9f, 0.52f, 48), waterMat), {0, 0, 0});
+    b.place(b.mesh(shapes::cylinder(0.25f, 1.4f, 16), stoneMat), {0, 0.5f, 0});
+    b.place(b.mesh(shapes::sphere(0.6f, 48, 24), bronzeMat), {0, 2.5f, 0});
+    const int crate = b.mesh(shapes::box(glm::vec3(1.0f)), woodMat);
+    const glm::vec4 crates[] = {{-13.5f, 0.5f, -9.5f, 10}, {-12.2f, 0.5f, -9.8f, 35}, {-12.9f, 1.5f, -9.6f, 20},
+                                {13.2f, 0.5f, 9.0f, 5}, {9.5f, 0.5f, -9.5f, 60}};
+    for (const auto& c : crates) b.place(crate, glm::vec3(c), c.w);
+
+    // Low warm sun and a cool sky fill.
+    Light& sun = b.light(LightType::Directional, "sun", {}, {-0.55f, -0.45f, -0.7f}, {0.9f, 0.62f, 0.38f});
+    sun.castShadows = true;
+    b.light(LightType::Directional, "sky fill", {}, {0.3f, -1.0f, 0.4f}, {0.05f, 0.07f, 0.12f});
+    // 36 coloured point lights: lanterns along both colonnades and a ring round the fountain.
+    int n = 0;
+    for (float z : {-3.2f, 3.2f, -7.0f, 7.0f})
+        for (int i = 0; i < 6; ++i) {
+            const float x = -11.25f + i * 4.5f + (z < 0 ? 0.8f : -0.8f);
+            const glm::vec3 c = hueColor(std::fmod(n * 0.137f + 0.05f, 1.0f));
+            b.light(LightType::Point, "lantern" + std::to_string(n), {x, 0.6f + 0.3f * (n % 3), z}, {0, -1, 0},
+                    c * 1.6f, {1.0f, 0.7f, 1.8f});
+            ++n;
+        }
+    for (int i = 0; i < 12; ++i) {
+        const float a = i / 12.0f * glm::two_pi<float>();
+        const glm::vec3 c = hueColor(i / 12.0f);
+        b.light(LightType::Point, "fountain" + std::to_string(i), {std::cos(a) * 2.7f, 0.35f, std::sin(a) * 2.7f},
+                {0, -1, 0}, c * 1.2f, {1.0f, 1.2f, 3.0f});
+    }
+    // 8 wall-mounted spot lights aimed at the columns and the fountain.
+    for (int i = 0; i < 8; ++i) {
+        const float x = -12.0f + i * (24.0f / 7.0f);
+        const glm::vec3 pos(x, 4.6f, -D / 2 + 0.6f);
+        const glm::vec3 target(x * 0.6f, 0.0f, (i % 2) ? -5.0f : 0.0f);
+        const glm::vec3 c = glm::mix(glm::vec3(1.0f, 0.85f, 0.6f), hueColor(i / 8.0f), 0.35f);
+        b.light(LightType::Spot, "spot" + std::to_string(i), pos, target - pos, c * 6.0f, {1.0f, 0.35f, 0.25f}, 24.0f, 6.0f);
+    }
+    s.camera.position = {-14.0f, 7.5f, 16.0f};
+    s.camera.target = {0.5f, 1.2f, -1.0f};
+    s.camera.fovYDegrees = 55.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 120.0f;
+    return s;
+}
+
+Scene street() {
+    Scene s;
+    s.name = "street";
+    // A night scene: a low key value (Reinhard 2002 suggests 0.045-0.09 for low-key images).
+    s.settings = {{"tonemap.key", "0.05"}};
+    s.ambient = glm::vec3(0.006f, 0.007f, 0.01f);
+    s.background = glm::vec3(0.002f, 0.003f, 0.008f);
+    Builder b(s);
+    BlockTexture paving = blockTexture("paving", 256, 8, 8, true, {0.42f, 0.41f, 0.40f}, {0.52f, 0.50f, 0.48f}, {0.2f, 0.2f, 0.2f}, 5);
+    BlockTexture facade = blockTexture("facade", 256, 2, 6, true, {0.55f, 0.50f, 0.42f}, {0.62f, 0.58f, 0.50f}, {0.4f, 0.4f, 0.38f}, 9);
+    const int pavingA = s.addImage(std::move(paving.albedo)), pavingN = s.addImage(std::move(paving.normal));
+    const int facadeA = s.addImage(std::move(facade.albedo)), facadeN = s.addImage(std::move(facade.normal));
+    const int asphalt = b.material("asphalt", {0.13f, 0.13f, 0.135f}, glm::vec3(0.08f), 30.0f);
+    const int paint = b.material("lane paint", {0.8f, 0.78f, 0.7f}, glm::vec3(0.1f), 20.0f);
+    const int pavingMat = b.material("paving", glm::vec3(1.0f), glm::vec3(0.06f), 20.0f, pavingA, pavingN);
+    const int facadeMat = b.material("facade", glm::vec3(1.0f), glm::vec3(0.04f), 10.0f, facadeA, facadeN);
+    const int steel = b.material("lamp steel", {0.12f, 0.13f, 0.14f}, glm::vec3(0.6f), 120.0f);
+    const int bulb = b.material("bulb", {1.0f, 0.9f, 0.7f}, glm::vec3(0.0f), 1.0f, -1, -1, {6.0f, 4.8f, 3.0f});
+    const int carPaint[3] = {b.material("car red", {0.45f, 0.03f, 0.03f}, glm::vec3(0.7f), 250.0f),
+                             b.material("car blue", {0.03f, 0.08f, 0.35f}, glm::vec3(0.7f), 250.0f),
+                             b.material("car white", {0.75f, 0.75f, 0.72f}, glm::vec3(0.7f), 250.0f)};
+
+    const float L = 140.0f;
+    b.place(b.mesh(shapes::plane(8.0f, L, 1.0f), asphalt), {0, 0, 0});
+    const int dash = b.mesh(shapes::plane(0.15f, 3.0f), paint);
+    for (float z = -L / 2 + 3; z < L / 2; z += 6.0f) b.place(dash, {0, 0.005f, z});
+    const int walk = b.mesh(shapes::box({3.0f, 0.15f, L}, 0.5f), pavingMat);
+    b.place(walk, {-5.5f, 0.075f, 0});
+    b.place(walk, {5.5f, 0.075f, 0});
+    const int building = b.mesh(shapes::box({6.0f, 12.0f, 14.0f}, 0.25f), facadeMat);
+    for (float z = -L / 2 + 8; z < L / 2; z += 15.0f) {
+        b.place(building, {-10.0f, 6.0f, z});
+        b.place(building, {10.0f, 6.0f, z + 7.0f}, 0.0f, {1.0f, 0.8f, 1.0f});
+    }
+    // Street lamps: pole, arm, emissive bulb, and a spot light pointing down.
+    const int pole = b.mesh(shapes::cylinder(0.09f, 6.0f, 12), steel);
+    const int arm = b.mesh(shapes::box({1.4f, 0.1f, 0.1f}), steel);
+    const int head = b.mesh(shapes::box({0.5f, 0.12f, 0.3f}), steel);
+    const int glow = b.mesh(shapes::box({0.4f, 0.04f, 0.22f}), bulb);
+    int n = 0;
+    for (float z = -L / 2 + 6; z < L / 2 - 4; z += 12.0f) {
+        for (int side : {-1, 1}) {
+            const float zz = z + (side > 0 ? 6.0f : 0.0f);
+            const float xPole = side * 4.4f;
+            const float xLamp = side * 3.4f;
+            b.place(pole, {xPole, 0.15f, zz});
+            b.place(arm, {side * 3.8f, 6.1f, zz});
+            b.place(head, {xLamp, 6.05f, zz});
+            b.place(glow, {xLamp, 5.97f, zz});
+            b.light(LightType::Spot, "lamp" + std::to_string(n++), {xLamp, 5.9f, zz}, {-side * 0.15f, -1.0f, 0.0f},
+                    glm::vec3(1.0f, 0.82f, 0.55f) * 16.0f, {1.0f, 0.22f, 0.2f}, 42.0f, 6.0f);
+        }
+    }
+    // Parked cars as simple boxes.
+    const int body = b.mesh(shapes::box({1.8f, 0.75f, 4.2f}), carPaint[0]);
+    const int body2 = b.mesh(shapes::box({1.8f, 0.75f, 4.2f}), carPaint[1]);
+    const int body3 = b.mesh(shapes::box({1.8f, 0.75f, 4.2f}), carPaint[2]);
+    const int cabin = b.mesh(shapes::box({1.6f, 0.6f, 2.2f}), steel);
+    const glm::vec3 cars[] = {{-2.6f, 0, -30}, {2.6f, 0, -12}, {-2.6f, 0, 8}, {2.6f, 0, 21}, {-2.6f, 0, 40}};
+    for (int i = 0; i < 5; ++i) {
+        b.place(i % 3 == 0 ? body : (i % 3 == 1 ? body2 : body3), cars[i] + glm::vec3(0, 0.55f, 0));
+        b.place(cabin, cars[i] + glm::vec3(0, 1.2f, -0.3f));
+    }
+    b.light(LightType::Directional, "moon", {}, {0.4f, -1.0f, 0.3f}, {0.015f, 0.02f, 0.035f});
+    s.camera.position = {1.5f, 3.2f, 48.0f};
+    s.camera.target = {0.0f, 1.5f, 0.0f};
+    s.camera.fovYDegrees = 50.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 200.0f;
+    return s;
+}
+
+Scene spheres() {
+    Scene s;
+    s.name = "spheres";
+    s.ambient = glm::vec3(0.06f);
+    s.background = glm::vec3(0.18f, 0.2f, 0.24f);
+    Builder b(s);
+    BlockTexture checker = blockTexture("checker", 128, 8, 8, false, {0.35f, 0.35f, 0.35f}, {0.6f, 0.6f, 0.6f}, {0.3f, 0.3f, 0.3f}, 3);
+    const int checkerA = s.addImage(std::move(checker.albedo));
+    const int floorMat = b.material("floor", glm::vec3(1.0f), glm::vec3(0.05f), 10.0f, checkerA);
+    b.place(b.mesh(shapes::plane(20.0f, 14.0f, 0.5f), floorMat), {0, -0.75f, 0});
+    // Rows: specular colour family; columns: Blinn-Phong exponent 4 .. 1024.
+    struct Row {
+        const char* name;
+        glm::vec3 diffuse, specular;
+    };
+    const Row rows[] = {{"plastic", {0.6f, 0.08f, 0.06f}, glm::vec3(0.04f)},
+                        {"glossy", {0.08f, 0.25f, 0.6f}, glm::vec3(0.25f)},
+                        {"gold", {0.05f, 0.035f, 0.01f}, {1.0f, 0.78f, 0.34f}},
+                        {"copper", {0.05f, 0.03f, 0.02f}, {0.95f, 0.64f, 0.54f}}};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 9; ++c) {
+            const float exponent = std::pow(2.0f, 2.0f + c);
+            const int mat = b.material(std::string(rows[r].name) + " n=" + std::to_string(static_cast<int>(exponent)),
+                                       rows[r].diffuse, rows[r].specular, exponent);
+            b.place(b.mesh(shapes::sphere(0.62f, 48, 24), mat), {-6.4f + c * 1.6f, 0.0f, -2.4f + r * 1.6f});
+        }
+    b.light(LightType::Directional, "key", {}, {-0.3f, -0.8f, -0.6f}, glm::vec3(1.1f, 1.05f, 1.0f));
+    b.light(LightType::Point, "warm", {-4.0f, 1.6f, 3.5f}, {0, -1, 0}, {2.0f, 1.2f, 0.5f}, {1.0f, 0.3f, 0.4f});
+    b.light(LightType::Point, "cool", {4.0f, 1.6f, 3.5f}, {0, -1, 0}, {0.5f, 1.0f, 2.0f}, {1.0f, 0.3f, 0.4f});
+    b.light(LightType::Spot, "spot", {0.0f, 5.0f, 2.0f}, {0.0f, -1.0f, -0.6f}, glm::vec3(3.0f), {1.0f, 0.1f, 0.05f}, 20.0f, 10.0f);
+    s.camera.position = {0.0f, 5.0f, 10.5f};
+    s.camera.target = {0.0f, -0.4f, 0.0f};
+    s.camera.fovYDegrees = 50.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 60.0f;
+    return s;
+}
+
+}  // namespace
+
+const std::vector<BuiltinSceneInfo>& builtinScenes() {
+    static const std::vector<BuiltinSceneInfo> scenes = {
+        {"default", "courtyard at dusk: columns, fountain, a sun, 36 coloured point lights, 8 spot lights"},
+        {"street", "night road lit by 30 spot-light street lamps (the CMSC 23700 motivating case)"},
+        {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents"},
+    };
+    return scenes;
+}
+
+bool isBuiltinScene(const std::string& name) {
+    for (const auto& s : builtinScenes())
+        if (s.name == name) return true;
+    return false;
+}
+
+Scene makeBuiltinScene(const std::string& name) {
+    Scene s;
+    if (name == "default") s = courtyard();
+    else if (name == "street") s = street();
+    else if (name == "spheres") s = spheres();
+    else {
+        std::string names;
+        for (const auto& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;
+        throw Error("unknown built-in scene '" + name + "' (built-in scenes: " + names + ")");
+    }
+    s.source = "builtin:" + name;
+    return s;
+}
+
+}  // namespace dw

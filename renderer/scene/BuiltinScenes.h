@@ -1,0 +1,23 @@
+#pragma once
+// Scenes the product carries in code, needing no files: "default" (a courtyard
+// at dusk with columns, a sun and dozens of coloured point and spot lights),
+// "street" (a night road lit by a long row of spot-light street lamps, the
+// CMSC 23700 assignment's motivating case) and "spheres" (a material grid).
+#include <string>
+#include <vector>
+
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+struct BuiltinSceneInfo {
+    std::string name;
+    std::string description;
+};
+
+const std::vector<BuiltinSceneInfo>& builtinScenes();
+bool isBuiltinScene(const std::string& name);
+// Throws dw::Error for an unknown name.
+Scene makeBuiltinScene(const std::string& name);
+
+}  // namespace dw

@@ -1,0 +1,40 @@
+#include "renderer/scene/Camera.h"
+
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/scene/Light.h"
+#include "renderer/scene/Mesh.h"
+
+namespace dw {
+
+const char* toString(LightType type) {
+    switch (type) {
+        case LightType::Directional: return "directional";
+        case LightType::Point: return "point";
+        case LightType::Spot: return "spot";
+    }
+    return "?";
+}
+
+glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+    return glm::perspective(glm::radians(fovYDegrees), aspect, nearPlane, farPlane);
+}
+
+Camera Camera::framing(const Bounds& bounds, float fovYDegrees) {
+    Camera c;
+    c.fovYDegrees = fovYDegrees;
+    const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+    const float radius = std::max(bounds.radius(), 1e-3f);
+    const float distance = radius / std::sin(glm::radians(fovYDegrees) * 0.5f) * 1.1f;
+    const glm::vec3 dir = glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
+    c.target = center;
+    c.position = center + dir * distance;
+    c.nearPlane = std::max(distance - radius * 1.5f, distance * 0.01f);
+    c.farPlane = distance + radius * 3.0f;
+    return c;
+}
+
+}  // namespace dw

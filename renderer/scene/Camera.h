@@ -1,0 +1,23 @@
+#pragma once
+// Perspective look-at camera, as the scene files describe it.
+#include <glm/glm.hpp>
+
+namespace dw {
+
+struct Bounds;
+
+struct Camera {
+    glm::vec3 position{0.0f, 2.0f, 8.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDegrees = 60.0f;
+    float nearPlane = 0.1f;
+    float farPlane = 200.0f;
+
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+    // Places the camera to see `bounds` from the front-right, above.
+    static Camera framing(const Bounds& bounds, float fovYDegrees = 50.0f);
+};
+
+}  // namespace dw

@@ -1,0 +1,690 @@
+#include "renderer/scene/GltfLoader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cstring>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <map>
+#include <new>
+#include <nlohmann/json.hpp>
+
+#include "renderer/Error.h"
+#include "renderer/ImageIO.h"
+#include "renderer/scene/TangentGenerator.h"
+
+namespace dw {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Anything larger is treated as a corrupt count rather than allocated.
+constexpr size_t kMaxElements = size_t(1) << 27;
+
+class Importer {
+public:
+    Importer(std::string path, Scene& scene) : path_(std::move(path)), scene_(scene) {}
+
+    [[noreturn]] void fail(const std::string& what) const { throw FileError(path_, what); }
+
+    // Reads the glTF JSON (the first chunk of a .glb) with nlohmann to report
+    // malformed JSON by line and column, and unsupported required extensions
+    // before tinygltf misreads them (e.g. Draco-compressed accessors).
+    void precheck() const {
+        std::ifstream in(path_, std::ios::binary);
+        if (!in) fail("cannot open file");
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (text.size() >= 20 && text.compare(0, 4, "glTF") == 0) {
+            std::uint32_t chunkLength = 0, chunkType = 0;
+            std::memcpy(&chunkLength, text.data() + 12, 4);
+            std::memcpy(&chunkType, text.data() + 16, 4);
+            if (chunkType != 0x4E4F534Au || 20ull + chunkLength > text.size())
+                fail("malformed GLB: the first chunk is not a complete JSON chunk");
+            text = text.substr(20, chunkLength);
+        }
+        nlohmann::json j;
+        try {
+            j = nlohmann::json::parse(text);
+        } catch (const nlohmann::json::parse_error& e) {
+            size_t line = 1, col = 1;
+            for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+                if (text[i] == '\n') {
+                    ++line;
+                    col = 1;
+                } else {
+                    ++col;
+                }
+            }
+            fail("malformed JSON at line " + std::to_string(line) + ", column " + std::to_string(col));
+        }
+        if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
+        if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
+            for (const auto& e : j["extensionsRequired"])
+                if (e.is_string() && !isSupportedExtension(e.get<std::string>()))
+                    fail("requires glTF extension " + e.get<std::string>() + ", which the workbench does not support");
+        }
+        if (j.contains("asset") && j["asset"].is_object() && j["asset"].contains("version") &&
+            j["asset"]["version"].is_string() && j["asset"]["version"].get<std::string>().rfind("2.", 0) != 0)
+            fail("glTF version " + j["asset"]["version"].get<std::string>() + " is not supported (2.x only)");
+    }
+
+    static bool isSupportedExtension(const std::string& ext) {
+        static const char* supported[] = {"KHR_lights_punctual", "KHR_materials_pbrSpecularGlossiness",
+                                          "KHR_materials_specular", "KHR_materials_emissive_strength"};
+        return std::find(std::begin(supported), std::end(supported), ext) != std::end(supported);
+    }
+
+    void load() {
+        if (!fs::exists(path_)) fail("file not found");
+        precheck();
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(&Importer::decodeImageCallback, this);
+        std::string err, warn;
+        bool ok = false;
+        const bool binary = isBinary();
+        try {
+            ok = binary ? loader.LoadBinaryFromFile(&model_, &err, &warn, path_)
+                        : loader.LoadASCIIFromFile(&model_, &err, &warn, path_);
+        } catch (const std::bad_alloc&) {
+            fail("malformed glTF: the parser ran out of memory (a corrupt length or count)");
+        } catch (const FileError&) {
+            throw;
+        } catch (const std::exception& e) {
+            fail(std::string("malformed glTF: ") + e.what());
+        }
+        if (!imageError_.empty()) fail(imageError_);
+        if (!ok) fail("not a valid glTF 2.0 file: " + firstLines(err.empty() ? warn : err));
+    }
+
+    GltfImport import(const glm::mat4& root, bool lightsAndCamera) {
+        load();
+        validate();
+        importImages();
+        importMaterials();
+        importMeshes();
+        GltfImport result;
+        walkScene(root, lightsAndCamera, result);
+        return result;
+    }
+
+private:
+    bool isBinary() const {
+        std::string ext = fs::path(path_).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+        if (ext == ".glb") return true;
+        if (ext == ".gltf") return false;
+        FILE* f = std::fopen(path_.c_str(), "rb");
+        char magic[4] = {};
+        if (f) {
+            (void)!std::fread(magic, 1, 4, f);
+            std::fclose(f);
+        }
+        return std::string(magic, 4) == "glTF";
+    }
+
+    static std::string firstLines(const std::string& s) {
+        std::string out = s;
+        while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+        std::replace(out.begin(), out.end(), '\n', ';');
+        if (out.size() > 400) out = out.substr(0, 400) + "...";
+        return out.empty() ? "unknown error" : out;
+    }
+
+    static bool decodeImageCallback(tinygltf::Image* image, const int index, std::string* err,
+                                    std::string* /*warn*/, int, int, const unsigned char* bytes,
+                                    int size, void* user) {
+        auto* self = static_cast<Importer*>(user);
+        const std::string name = image->uri.empty() ? "image[" + std::to_string(index) + "]"
+                                                    : "image[" + std::to_string(index) + "] '" + image->uri + "'";
+        try {
+            Image decoded = decodeImage8(bytes, static_cast<size_t>(std::max(size, 0)), name, image->mimeType);
+            image->width = decoded.width;
+            image->height = decoded.height;
+            image->component = 4;
+            image->bits = 8;
+            image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+            image->image = std::move(decoded.rgba);
+            return true;
+        } catch (const std::exception& e) {
+            // FileError's text already starts with the image name.
+            self->imageError_ = std::string("cannot decode ") + e.what();
+            if (err) *err += self->imageError_;
+            return false;
+        }
+    }
+
+    // ---- structural validation: everything later code indexes is checked here.
+    template <typename T>
+    void checkIndex(int index, const std::vector<T>& v, const std::string& what, bool optional = true) const {
+        if (index < 0 && optional) return;
+        if (index < 0 || static_cast<size_t>(index) >= v.size())
+            fail(what + " refers to index " + std::to_string(index) + " but there are only " +
+                 std::to_string(v.size()));
+    }
+
+    void validate() const {
+        for (const auto& ext : model_.extensionsRequired)
+            if (!isSupportedExtension(ext)) fail("requires glTF extension " + ext + ", which the workbench does not support");
+        for (size_t i = 0; i < model_.buffers.size(); ++i) {
+            if (model_.buffers[i].data.empty())
+                fail("buffer[" + std::to_string(i) + "] has no data (missing .bin file?)");
+        }
+        for (size_t i = 0; i < model_.bufferViews.size(); ++i) {
+            const auto& bv = model_.bufferViews[i];
+            const std::string what = "bufferView[" + std::to_string(i) + "]";
+            checkIndex(bv.buffer, model_.buffers, what + ".buffer", false);
+            const size_t size = model_.buffers[bv.buffer].data.size();
+            if (bv.byteOffset > size || bv.byteLength > size - bv.byteOffset)
+                fail(what + " (offset " + std::to_string(bv.byteOffset) + ", length " +
+                     std::to_string(bv.byteLength) + ") runs past the end of buffer[" +
+                     std::to_string(bv.buffer) + "] (" + std::to_string(size) + " bytes)");
+        }
+        for (size_t i = 0; i < model_.accessors.size(); ++i) validateAccessor(static_cast<int>(i));
+        for (size_t m = 0; m < model_.meshes.size(); ++m) {
+            for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+                const auto& prim = model_.meshes[m].primitives[p];
+                const std::string what = "mesh[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+                for (const auto& [name, acc] : prim.attributes)
+                    checkIndex(acc, model_.accessors, what + ".attributes." + name, false);
+                checkIndex(prim.indices, model_.accessors, what + ".indices");
+                checkIndex(prim.material, model_.materials, what + ".material");
+            }
+        }
+        for (size_t i = 0; i < model_.textures.size(); ++i)
+            checkIndex(model_.textures[i].source, model_.images, "texture[" + std::to_string(i) + "].source");
+        for (size_t i = 0; i < model_.materials.size(); ++i) {
+            const auto& m = model_.materials[i];
+            const std::string what = "material[" + std::to_string(i) + "]";
+            checkIndex(m.pbrMetallicRoughness.baseColorTexture.index, model_.textures, what + ".baseColorTexture");
+            checkIndex(m.pbrMetallicRoughness.metallicRoughnessTexture.index, model_.textures,
+                       what + ".metallicRoughnessTexture");
+            checkIndex(m.normalTexture.index, model_.textures, what + ".normalTexture");
+            checkIndex(m.emissiveTexture.index, model_.textures, what + ".emissiveTexture");
+        }
+        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+            const auto& n = model_.nodes[i];
+            const std::string what = "node[" + std::to_string(i) + "]";
+            checkIndex(n.mesh, model_.meshes, what + ".mesh");
+            checkIndex(n.camera, model_.cameras, what + ".camera");
+            for (int c : n.children) checkIndex(c, model_.nodes, what + ".children", false);
+            auto finite = [&](const std::vector<double>& v, size_t want, const char* field) {
+                if (!v.empty() && v.size() != want)
+                    fail(what + "." + field + " has " + std::to_string(v.size()) + " values, expected " +
+                         std::to_string(want));
+                for (double d : v)
+                    if (!std::isfinite(d)) fail(what + "." + field + " has a non-finite value");
+            };
+            finite(n.matrix, 16, "matrix");
+            finite(n.translation, 3, "translation");
+            finite(n.rotation, 4, "rotation");
+            finite(n.scale, 3, "scale");
+        }
+        for (size_t s = 0; s < model_.scenes.size(); ++s)
+            for (int n : model_.scenes[s].nodes)
+                checkIndex(n, model_.nodes, "scene[" + std::to_string(s) + "].nodes", false);
+        checkNodeGraph();
+    }
+
+    void validateAccessor(int index) const {
+        const auto& a = model_.accessors[index];
+        const std::string what = "accessor[" + std::to_string(index) + "]";
+        const int compSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+        const int comps = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+        if (compSize <= 0) fail(what + " has an invalid componentType " + std::to_string(a.componentType));
+        if (comps <= 0) fail(what + " has an invalid type " + std::to_string(a.type));
+        if (a.count > kMaxElements) fail(what + ".count " + std::to_string(a.count) + " is implausibly large");
+        const size_t elem = static_cast<size_t>(compSize) * comps;
+        if (a.bufferView >= 0) {
+            checkIndex(a.bufferView, model_.bufferViews, what + ".bufferView", false);
+            const auto& bv = model_.bufferViews[a.bufferView];
+            const int stride = a.ByteStride(bv);
+            if (stride <= 0) fail(what + " has an invalid byteStride in bufferView[" + std::to_string(a.bufferView) + "]");
+            if (a.count > 0) {
+                const size_t need = a.byteOffset + static_cast<size_t>(stride) * (a.count - 1) + elem;
+                if (need > bv.byteLength)
+                    fail(what + " reads " + std::to_string(need) + " bytes but bufferView[" +
+                         std::to_string(a.bufferView) + "] has only " + std::to_string(bv.byteLength));
+            }
+        }
+        if (a.sparse.isSparse) {
+            const std::string sw = what + ".sparse";
+            if (a.sparse.count < 0 || static_cast<size_t>(a.sparse.count) > a.count)
+                fail(sw + ".count is out of range");
+            checkIndex(a.sparse.indices.bufferView, model_.bufferViews, sw + ".indices.bufferView", false);
+            checkIndex(a.sparse.values.bufferView, model_.bufferViews, sw + ".values.bufferView", false);
+            const int isz = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.sparse.indices.componentType));
+            if (isz <= 0) fail(sw + ".indices has an invalid componentType");
+            const auto& ibv = model_.bufferViews[a.sparse.indices.bufferView];
+            const auto& vbv = model_.bufferViews[a.sparse.values.bufferView];
+            if (a.sparse.indices.byteOffset < 0 ||
+                static_cast<size_t>(a.sparse.indices.byteOffset) + static_cast<size_t>(isz) * a.sparse.count > ibv.byteLength)
+                fail(sw + ".indices run past their bufferView");
+            if (a.sparse.values.byteOffset < 0 ||
+                static_cast<size_t>(a.sparse.values.byteOffset) + elem * a.sparse.count > vbv.byteLength)
+                fail(sw + ".values run past their bufferView");
+        }
+    }
+
+    void checkNodeGraph() const {
+        // Every node has at most one parent and the graph has no cycle.
+        std::vector<int> parent(model_.nodes.size(), -1);
+        for (size_t i = 0; i < model_.nodes.size(); ++i)
+            for (int c : model_.nodes[i].children) {
+                if (c == static_cast<int>(i)) fail("node[" + std::to_string(i) + "] lists itself as a child");
+                if (parent[c] >= 0)
+                    fail("node[" + std::to_string(c) + "] has two parents (node[" + std::to_string(parent[c]) +
+                         "] and node[" + std::to_string(i) + "])");
+                parent[c] = static_cast<int>(i);
+            }
+        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+            size_t steps = 0;
+            for (int p = parent[i]; p >= 0; p = parent[p])
+                if (++steps > model_.nodes.size()) fail("node hierarchy has a cycle through node[" + std::to_string(i) + "]");
+        }
+    }
+
+    // ---- accessor reading, with normalisation and sparse substitution
+    std::vector<double> readAccessor(int index, int wantComponents, const std::string& what) const {
+        const auto& a = model_.accessors[index];
+        const int comps = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+        if (comps != wantComponents)
+            fail(what + " (accessor[" + std::to_string(index) + "]) has " + std::to_string(comps) +
+                 " components, expected " + std::to_string(wantComponents));
+        std::vector<double> out(a.count * comps, 0.0);
+        auto readElement = [&](const unsigned char* p, double* dst) {
+            for (int c = 0; c < comps; ++c) dst[c] = readComponent(p, c, a.componentType, a.normalized);
+        };
+        if (a.bufferView >= 0) {
+            const auto& bv = model_.bufferViews[a.bufferView];
+            const unsigned char* base = model_.buffers[bv.buffer].data.data() + bv.byteOffset + a.byteOffset;
+            const int stride = a.ByteStride(bv);
+            for (size_t i = 0; i < a.count; ++i) readElement(base + i * stride, &out[i * comps]);
+        }
+        if (a.sparse.isSparse) {
+            const auto& ibv = model_.bufferViews[a.sparse.indices.bufferView];
+            const auto& vbv = model_.bufferViews[a.sparse.values.bufferView];
+            const unsigned char* ip = model_.buffers[ibv.buffer].data.data() + ibv.byteOffset + a.sparse.indices.byteOffset;
+            const unsigned char* vp = model_.buffers[vbv.buffer].data.data() + vbv.byteOffset + a.sparse.values.byteOffset;
+            const int isz = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.sparse.indices.componentType));
+            const int esz = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType)) * comps;
+            for (int s = 0; s < a.sparse.count; ++s) {
+                const auto target = static_cast<size_t>(readComponent(ip + s * isz, 0, a.sparse.indices.componentType, false));
+                if (target >= a.count) fail(what + ": sparse index " + std::to_string(target) + " out of range");
+                readElement(vp + static_cast<size_t>(s) * esz, &out[target * comps]);
+            }
+        }
+        for (double d : out)
+            if (!std::isfinite(d))
+                fail(what + " (accessor[" + std::to_string(index) + "]) contains non-finite values");
+        return out;
+    }
+
+    static double readComponent(const unsigned char* p, int c, int type, bool normalized) {
+        switch (type) {
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p + 4 * c, 4); return v; }
+            case TINYGLTF_COMPONENT_TYPE_DOUBLE: { double v; std::memcpy(&v, p + 8 * c, 8); return v; }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: { const double v = p[c]; return normalized ? v / 255.0 : v; }
+            case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                const double v = static_cast<int8_t>(p[c]);
+                return normalized ? std::max(v / 127.0, -1.0) : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                uint16_t v; std::memcpy(&v, p + 2 * c, 2);
+                return normalized ? v / 65535.0 : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                int16_t v; std::memcpy(&v, p + 2 * c, 2);
+                return normalized ? std::max(v / 32767.0, -1.0) : v;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * c, 4); return v; }
+            case TINYGLTF_COMPONENT_TYPE_INT: { int32_t v; std::memcpy(&v, p + 4 * c, 4); return v; }
+            default: return 0.0;
+        }
+    }
+
+    // ---- images, materials, meshes
+    void importImages() {
+        imageBase_ = static_cast<int>(scene_.images.size());
+        for (size_t i = 0; i < model_.images.size(); ++i) {
+            auto& img = model_.images[i];
+            if (img.image.empty() || img.width <= 0 || img.height <= 0) {
+                if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) {
+                    const fs::path full = fs::path(path_).parent_path() / img.uri;
+                    fail("missing texture: image[" + std::to_string(i) + "] '" + img.uri + "' (looked for " +
+                         full.string() + ")");
+                }
+                fail("image[" + std::to_string(i) + "] has no decodable data");
+            }
+            if (img.image.size() < static_cast<size_t>(img.width) * img.height * 4)
+                fail("image[" + std::to_string(i) + "] has fewer pixels than its size says");
+            Image out;
+            out.width = img.width;
+            out.height = img.height;
+            out.rgba = std::move(img.image);
+            out.source = path_ + "#" + (img.uri.empty() ? "image" + std::to_string(i) : img.uri);
+            scene_.addImage(std::move(out));
+        }
+    }
+
+    int imageOfTexture(int textureIndex) const {
+        if (textureIndex < 0) return -1;
+        const int src = model_.textures[textureIndex].source;
+        return src < 0 ? -1 : imageBase_ + src;
+    }
+
+    static glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
+        return v.size() >= 3 ? glm::vec3(v[0], v[1], v[2]) : fallback;
+    }
+
+    void importMaterials() {
+        materialBase_ = static_cast<int>(scene_.materials.size());
+        for (const auto& m : model_.materials) {
+            Material out;
+            out.name = m.name;
+            out.model = MaterialModel::MetallicRoughness;
+            const auto& pbr = m.pbrMetallicRoughness;
+            if (pbr.baseColorFactor.size() == 4)
+                out.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                          pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+            else
+                out.baseColor = glm::vec4(1.0f);
+            out.baseColorTexture = imageOfTexture(pbr.baseColorTexture.index);
+            out.metallic = static_cast<float>(pbr.metallicFactor);
+            out.roughness = static_cast<float>(pbr.roughnessFactor);
+            out.metallicRoughnessTexture = imageOfTexture(pbr.metallicRoughnessTexture.index);
+            out.specularColor = glm::vec3(0.04f);
+            out.normalTexture = imageOfTexture(m.normalTexture.index);
+            out.normalScale = static_cast<float>(m.normalTexture.scale);
+            out.emissive = vec3Of(m.emissiveFactor, glm::vec3(0.0f));
+            out.emissiveTexture = imageOfTexture(m.emissiveTexture.index);
+            out.alphaMode = m.alphaMode == "MASK"    ? AlphaMode::Mask
+                            : m.alphaMode == "BLEND" ? AlphaMode::Blend
+                                                     : AlphaMode::Opaque;
+            out.alphaCutoff = static_cast<float>(m.alphaCutoff);
+            out.doubleSided = m.doubleSided;
+            applyMaterialExtensions(m, out);
+            scene_.addMaterial(std::move(out));
+        }
+    }
+
+    static double number(const tinygltf::Value& obj, const char* key, double fallback) {
+        if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsNumber()) return fallback;
+        return obj.Get(key).GetNumberAsDouble();
+    }
+    static glm::vec4 vector(const tinygltf::Value& obj, const char* key, glm::vec4 fallback, int n) {
+        if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsArray()) return fallback;
+        const auto& a = obj.Get(key);
+        glm::vec4 v = fallback;
+        for (int i = 0; i < n && i < static_cast<int>(a.ArrayLen()); ++i)
+            if (a.Get(i).IsNumber()) v[i] = static_cast<float>(a.Get(i).GetNumberAsDouble());
+        return v;
+    }
+    int textureOf(const tinygltf::Value& obj, const char* key) const {
+        if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsObject()) return -1;
+        const auto& t = obj.Get(key);
+        if (!t.Has("index") || !t.Get("index").IsNumber()) return -1;
+        const int idx = t.Get("index").GetNumberAsInt();
+        checkIndex(idx, model_.textures, std::string("material extension texture ") + key);
+        return imageOfTexture(idx);
+    }
+
+    void applyMaterialExtensions(const tinygltf::Material& m, Material& out) const {
+        auto it = m.extensions.find("KHR_materials_pbrSpecularGlossiness");
+        if (it != m.extensions.end()) {
+            const auto& e = it->second;
+            out.model = MaterialModel::SpecularGlossiness;
+            out.baseColor = vector(e, "diffuseFactor", glm::vec4(1.0f), 4);
+            out.baseColorTexture = textureOf(e, "diffuseTexture");
+            out.specularColor = glm::vec3(vector(e, "specularFactor", glm::vec4(1.0f), 3));
+            out.glossiness = static_cast<float>(number(e, "glossinessFactor", 1.0));
+            out.specularTexture = textureOf(e, "specularGlossinessTexture");
+        }
+        it = m.extensions.find("KHR_materials_specular");
+        if (it != m.extensions.end() && out.model == MaterialModel::MetallicRoughness) {
+            // Dielectric F0 = min(0.04 * specularColorFactor, 1) * specularFactor.
+            const auto& e = it->second;
+            const float factor = static_cast<float>(number(e, "specularFactor", 1.0));
+            const glm::vec3 color(vector(e, "specularColorFactor", glm::vec4(1.0f), 3));
+            out.specularColor = glm::min(glm::vec3(0.04f) * color, glm::vec3(1.0f)) * factor;
+        }
+        it = m.extensions.find("KHR_materials_emissive_strength");
+        if (it != m.extensions.end()) out.emissive *= static_cast<float>(number(it->second, "emissiveStrength", 1.0));
+    }
+
+    void importMeshes() {
+        meshMap_.assign(model_.meshes.size(), {});
+        for (size_t mi = 0; mi < model_.meshes.size(); ++mi) {
+            const auto& mesh = model_.meshes[mi];
+            for (size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
+                const auto& prim = mesh.primitives[pi];
+                const std::string what = "mesh[" + std::to_string(mi) + "] '" + mesh.name + "' primitive " + std::to_string(pi);
+                Mesh out;
+                if (!buildPrimitive(prim, what, out)) continue;
+                out.name = mesh.name.empty() ? "mesh" + std::to_string(mi) : mesh.name;
+                if (prim.material >= 0) {
+                    out.material = materialBase_ + prim.material;
+                } else {
+                    out.material = defaultMaterial();
+                }
+                meshMap_[mi].push_back(scene_.addMesh(std::move(out)));
+            }
+        }
+    }
+
+    int defaultMaterial() {
+        if (defaultMaterial_ < 0) {
+            Material m;
+            m.name = "glTF default";
+            m.model = MaterialModel::MetallicRoughness;
+            m.baseColor = glm::vec4(1.0f);
+            defaultMaterial_ = scene_.addMaterial(m);
+        }
+        return defaultMaterial_;
+    }
+
+    bool buildPrimitive(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
+        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+            scene_.warnings.push_back(path_ + ": " + what + " is points or lines; skipped");
+            return false;
+        }
+        auto attr = [&](const char* name) {
+            auto it = prim.attributes.find(name);
+            return it == prim.attributes.end() ? -1 : it->second;
+        };
+        const int posAcc = attr("POSITION");
+        if (posAcc < 0) fail(what + " has no POSITION attribute");
+        const auto pos = readAccessor(posAcc, 3, what + " POSITION");
+        const size_t n = pos.size() / 3;
+        out.vertices.resize(n);
+        for (size_t i = 0; i < n; ++i) out.vertices[i].position = glm::vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
+        auto sameCount = [&](int acc, const char* name) {
+            if (model_.accessors[acc].count != n)
+                fail(what + " " + name + " has " + std::to_string(model_.accessors[acc].count) +
+                     " elements but POSITION has " + std::to_string(n));
+        };
+        const int nrmAcc = attr("NORMAL"), tanAcc = attr("TANGENT"), uvAcc = attr("TEXCOORD_0");
+        if (uvAcc >= 0) {
+            sameCount(uvAcc, "TEXCOORD_0");
+            const auto uv = readAccessor(uvAcc, 2, what + " TEXCOORD_0");
+            for (size_t i = 0; i < n; ++i) out.vertices[i].uv = glm::vec2(uv[2 * i], uv[2 * i + 1]);
+        }
+        // Indices, converted to a triangle list.
+        std::vector<uint32_t> idx;
+        if (prim.indices >= 0) {
+            const auto& a = model_.accessors[prim.indices];
+            if (a.type != TINYGLTF_TYPE_SCALAR ||
+                (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                 a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                 a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+                fail(what + " indices (accessor[" + std::to_string(prim.indices) + "]) are not unsigned scalars");
+            const auto raw = readAccessor(prim.indices, 1, what + " indices");
+            idx.reserve(raw.size());
+            for (double d : raw) {
+                if (d >= static_cast<double>(n))
+                    fail(what + " index " + std::to_string(static_cast<long long>(d)) + " is out of range (" +
+                         std::to_string(n) + " vertices)");
+                idx.push_back(static_cast<uint32_t>(d));
+            }
+        } else {
+            idx.resize(n);
+            for (size_t i = 0; i < n; ++i) idx[i] = static_cast<uint32_t>(i);
+        }
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            idx.resize(idx.size() - idx.size() % 3);
+            out.indices = std::move(idx);
+        } else {
+            for (size_t i = 2; i < idx.size(); ++i) {
+                if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+                    if (i % 2 == 0) out.indices.insert(out.indices.end(), {idx[i - 2], idx[i - 1], idx[i]});
+                    else out.indices.insert(out.indices.end(), {idx[i - 1], idx[i - 2], idx[i]});
+                } else {
+                    out.indices.insert(out.indices.end(), {idx[0], idx[i - 1], idx[i]});
+                }
+            }
+        }
+        if (out.indices.empty()) {
+            scene_.warnings.push_back(path_ + ": " + what + " has no triangles; skipped");
+            return false;
+        }
+        if (nrmAcc >= 0) {
+            sameCount(nrmAcc, "NORMAL");
+            const auto nrm = readAccessor(nrmAcc, 3, what + " NORMAL");
+            for (size_t i = 0; i < n; ++i) {
+                glm::vec3 v(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                const float len = glm::length(v);
+                out.vertices[i].normal = len > 1e-12f ? v / len : glm::vec3(0, 1, 0);
+            }
+        } else {
+            generateNormals(out);
+        }
+        bool haveTangents = false;
+        if (tanAcc >= 0) {
+            sameCount(tanAcc, "TANGENT");
+            const auto t = readAccessor(tanAcc, 4, what + " TANGENT");
+            for (size_t i = 0; i < n; ++i)
+                out.vertices[i].tangent = glm::vec4(t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3] < 0 ? -1.0 : 1.0);
+            haveTangents = true;
+        }
+        if (!haveTangents) generateTangents(out);
+        out.computeBounds();
+        return true;
+    }
+
+    // ---- node hierarchy
+    static glm::mat4 localTransform(const tinygltf::Node& n) {
+        if (n.matrix.size() == 16) {
+            glm::dmat4 m = glm::make_mat4(n.matrix.data());
+            return glm::mat4(m);
+        }
+        glm::mat4 t(1.0f);
+        if (n.translation.size() == 3) t = glm::translate(t, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+        if (n.rotation.size() == 4) {
+            const glm::quat q(static_cast<float>(n.rotation[3]), static_cast<float>(n.rotation[0]),
+                              static_cast<float>(n.rotation[1]), static_cast<float>(n.rotation[2]));
+            t *= glm::mat4_cast(glm::normalize(q));
+        }
+        if (n.scale.size() == 3) t = glm::scale(t, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+        return t;
+    }
+
+    void walkScene(const glm::mat4& root, bool lightsAndCamera, GltfImport& result) {
+        std::vector<int> roots;
+        if (!model_.scenes.empty()) {
+            const int s = model_.defaultScene >= 0 && model_.defaultScene < static_cast<int>(model_.scenes.size())
+                              ? model_.defaultScene : 0;
+            roots = model_.scenes[s].nodes;
+        } else {
+            std::vector<bool> isChild(model_.nodes.size(), false);
+            for (const auto& n : model_.nodes)
+                for (int c : n.children) isChild[c] = true;
+            for (size_t i = 0; i < model_.nodes.size(); ++i)
+                if (!isChild[i]) roots.push_back(static_cast<int>(i));
+        }
+        std::function<void(int, const glm::mat4&)> visit = [&](int ni, const glm::mat4& parent) {
+            const auto& node = model_.nodes[ni];
+            const glm::mat4 world = parent * localTransform(node);
+            if (node.mesh >= 0) {
+                for (int m : meshMap_[node.mesh]) {
+                    scene_.instances.push_back({m, world});
+                    result.bounds.add(scene_.meshes[m].bounds.transformed(world));
+                }
+            }
+            if (lightsAndCamera) {
+                importNodeLight(node, world, result);
+                if (node.camera >= 0 && !result.hasCamera) importCamera(model_.cameras[node.camera], world, result);
+            }
+            for (int c : node.children) visit(c, world);
+        };
+        for (int r : roots) visit(r, root);
+    }
+
+    void importNodeLight(const tinygltf::Node& node, const glm::mat4& world, GltfImport& result) {
+        auto it = node.extensions.find("KHR_lights_punctual");
+        if (it == node.extensions.end() || !it->second.Has("light")) return;
+        const int li = it->second.Get("light").GetNumberAsInt();
+        checkIndex(li, model_.lights, "node KHR_lights_punctual.light", false);
+        const auto& l = model_.lights[li];
+        Light out;
+        out.name = l.name.empty() ? "light" + std::to_string(li) : l.name;
+        const glm::vec3 color = l.color.size() >= 3 ? glm::vec3(l.color[0], l.color[1], l.color[2]) : glm::vec3(1.0f);
+        out.intensity = color * static_cast<float>(l.intensity);
+        out.position = glm::vec3(world[3]);
+        out.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+        // glTF punctual lights fall off as 1/d^2 (candela units are kept as they are).
+        out.attenuation = {0.0f, 0.0f, 1.0f};
+        if (l.type == "directional") {
+            out.type = LightType::Directional;
+        } else if (l.type == "spot") {
+            out.type = LightType::Spot;
+            const double outer = l.spot.outerConeAngle > 0 ? l.spot.outerConeAngle : glm::pi<double>() / 4.0;
+            const double inner = std::clamp(l.spot.innerConeAngle, 0.0, outer);
+            out.cutoffDegrees = static_cast<float>(glm::degrees(outer));
+            // Half intensity halfway between the inner and outer cone angles.
+            const double mid = std::cos(0.5 * (inner + outer));
+            out.exponent = mid < 0.999999 ? static_cast<float>(std::log(0.5) / std::log(mid)) : 0.0f;
+        } else {
+            out.type = LightType::Point;
+        }
+        scene_.lights.push_back(out);
+        ++result.lightCount;
+    }
+
+    void importCamera(const tinygltf::Camera& cam, const glm::mat4& world, GltfImport& result) {
+        if (cam.type != "perspective") return;
+        Camera c;
+        c.position = glm::vec3(world[3]);
+        c.target = c.position + glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+        c.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+        c.fovYDegrees = static_cast<float>(glm::degrees(cam.perspective.yfov));
+        c.nearPlane = static_cast<float>(cam.perspective.znear > 0 ? cam.perspective.znear : 0.05);
+        c.farPlane = static_cast<float>(cam.perspective.zfar > c.nearPlane ? cam.perspective.zfar : 1000.0);
+        scene_.camera = c;
+        result.hasCamera = true;
+    }
+
+    std::string path_;
+    Scene& scene_;
+    tinygltf::Model model_;
+    std::string imageError_;
+    int imageBase_ = 0, materialBase_ = 0, defaultMaterial_ = -1;
+    std::vector<std::vector<int>> meshMap_;
+};
+
+}  // namespace
+
+GltfImport importGltf(const std::string& path, Scene& scene, const glm::mat4& rootTransform,
+                      bool importLightsAndCamera) {
+    Importer importer(path, scene);
+    return importer.import(rootTransform, importLightsAndCamera);
+}
+
+}  // namespace dw

@@ -1,0 +1,46 @@
+#pragma once
+// One drawable primitive: indexed triangles with a single material.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace dw {
+
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w = bitangent sign
+    glm::vec2 uv{0.0f};
+};
+static_assert(sizeof(Vertex) == 48, "Vertex layout is mirrored by the geometry VAO");
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    bool empty() const { return min.x > max.x; }
+    void add(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void add(const Bounds& b) {
+        if (!b.empty()) {
+            add(b.min);
+            add(b.max);
+        }
+    }
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    float radius() const { return empty() ? 0.0f : glm::length(max - min) * 0.5f; }
+    Bounds transformed(const glm::mat4& m) const;
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    int material = 0;
+    Bounds bounds;
+    void computeBounds();
+};
+
+}  // namespace dw

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the workbench needs, and nothing else.
+# Idempotent and non-interactive: packages already present are not touched, and
+# apt is not called at all when nothing is missing.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  g++ cmake ninja-build pkg-config
+  # libraries (DESIGN.md: Debian packages only, nothing vendored)
+  libimgui-dev libstb-dev libglfw3-dev libglm-dev libtinygltf-dev
+  libopenimageio-dev libepoxy-dev nlohmann-json3-dev
+  # headless OpenGL through EGL (Mesa llvmpipe where there is no GPU)
+  libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libgl-dev
+  # tests
+  libgtest-dev xvfb xauth
+)
+if [[ "${1:-}" == "--tests" ]]; then
+  # Real glTF files, valid and broken, for the loader tests (they skip without it).
+  packages+=(assimp-testmodels)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  if command -v sudo >/dev/null; then sudo=(sudo); else
+    echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

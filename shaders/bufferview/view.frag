@@ -1,0 +1,66 @@
+#version 450 core
+// Maps any named output to a displayable RGBA8 image: channel selection,
+// manual or automatic range, linear depth, normals as colours, a heat map for
+// counts, and a simple tone map for HDR buffers.
+#include "source.glsl"
+#include "../common/color.glsl"
+
+struct Range { vec4 lo; vec4 hi; };
+layout(std430, binding = 4) readonly buffer AutoRange { Range autoRange[]; };
+
+out vec4 outColor;
+
+// Polynomial fit of the Turbo colour map (Mikhailov 2019).
+vec3 turbo(float t) {
+    t = clamp(t, 0.0, 1.0);
+    const vec4 kr = vec4(0.13572138, 4.61539260, -42.66032258, 132.13108234);
+    const vec4 kg = vec4(0.09140261, 2.19418839, 4.84296658, -14.18503333);
+    const vec4 kb = vec4(0.10667330, 12.64194608, -60.58204836, 110.36276771);
+    const vec2 kr2 = vec2(-152.94239396, 59.28637943);
+    const vec2 kg2 = vec2(4.27729857, 2.82956604);
+    const vec2 kb2 = vec2(-89.90310912, 27.34824973);
+    vec4 v4 = vec4(1.0, t, t * t, t * t * t);
+    vec2 v2 = v4.zw * v4.z;
+    return vec3(dot(v4, kr) + dot(v2, kr2), dot(v4, kg) + dot(v2, kg2), dot(v4, kb) + dot(v2, kb2));
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 v;
+    if (!fetchMapped(px, v)) {
+        // Background depth and non-finite values: a dark checker, not a colour.
+        bool odd = ((px.x / 8 + px.y / 8) & 1) == 1;
+        outColor = vec4(vec3(odd ? 0.10 : 0.16), 1.0);
+        if (any(isnan(texelFetch(uSource, px, view.modes.w)))) outColor = vec4(1.0, 0.0, 1.0, 1.0);
+        return;
+    }
+    v = selectChannel(v);
+    int mapping = view.modes.x;
+    vec4 lo = vec4(view.range.x), hi = vec4(view.range.y);
+    if (view.modes.z != 0) {
+        lo = autoRange[0].lo;
+        hi = autoRange[0].hi;
+        if (view.modes.y == 0 && mapping != MAP_HEATMAP) {
+            // One range for all colour channels keeps hues honest.
+            float l = min(min(lo.r, lo.g), lo.b), h = max(max(hi.r, hi.g), hi.b);
+            lo = vec4(l);
+            hi = vec4(h);
+        }
+        if (mapping == MAP_HEATMAP) lo = vec4(min(lo.r, 0.0));
+    }
+    vec4 span = max(hi - lo, vec4(1e-20));
+    vec3 c;
+    if (mapping == MAP_NORMAL) {
+        c = view.modes.y == 0 ? v.xyz * 0.5 + 0.5 : vec3(v.x * 0.5 + 0.5);
+    } else if (mapping == MAP_HEATMAP) {
+        c = turbo((v.r - lo.r) / span.r);
+    } else if (mapping == MAP_TONEMAP) {
+        vec3 x = max(v.rgb, 0.0) * exp2(view.extra.x);
+        c = linearToSrgb(x / (1.0 + x));
+    } else {
+        c = clamp((v.rgb - lo.rgb) / span.rgb, 0.0, 1.0);
+        // Linear colour stored in sRGB textures (albedo, specular) displays encoded.
+        if (view.flags.z != 0 && view.modes.y == 0) c = linearToSrgb(c);
+    }
+    outColor = vec4(c, 1.0);
+}

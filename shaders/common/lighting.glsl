@@ -1,0 +1,61 @@
+// Light table and the shading equation: Blinn-Phong (seed 000, eqs. 2.1-2.3)
+// with the attenuation 1/(c + l d + q d^2) (eq. 2.2, seed 001 eq. 1), the
+// spot factor (cos theta)^e inside the cutoff (seed 001, section 3.3), and
+// Ferko's windowed attenuation (seed 000, eq. 3.5) as an option.
+#include "bindings.glsl"
+
+#define LIGHT_DIRECTIONAL 0
+#define LIGHT_POINT 1
+#define LIGHT_SPOT 2
+
+#define ATTENUATION_CLASSIC 0
+#define ATTENUATION_WINDOWED 1
+
+struct Light {
+    mat4 volume;            // unit volume mesh -> world
+    vec4 positionRadius;    // view-space position, radius (0 = unbounded)
+    vec4 directionCutoff;   // view-space direction the light points to, cos(cutoff)
+    vec4 intensityExponent; // rgb intensity, spot exponent
+    vec4 attenuation;       // constant, linear, quadratic, type
+};
+
+layout(std430, binding = LIGHT_SSBO) readonly buffer LightTable {
+    Light lights[];
+};
+
+// Distance attenuation; 0 outside the light's radius (the in-volume test of
+// seed 000 section 3.2.1, so every lighting strategy shades the same region).
+float attenuate(Light light, float d, int mode, float windowExponent) {
+    float radius = light.positionRadius.w;
+    if (radius > 0.0 && d > radius) return 0.0;
+    vec3 k = light.attenuation.xyz;
+    float att = 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
+    if (mode == ATTENUATION_WINDOWED && radius > 0.0) att *= 1.0 - pow(d / radius, windowExponent);
+    return att;
+}
+
+// Radiance reflected towards the eye by one light at view-space point P.
+vec3 shadeLight(Light light, vec3 P, vec3 N, vec3 diffuse, vec3 specular, float exponent,
+                int attenuationMode, float windowExponent) {
+    int type = int(light.attenuation.w + 0.5);
+    vec3 L;
+    float scale = 1.0;
+    if (type == LIGHT_DIRECTIONAL) {
+        L = -light.directionCutoff.xyz;
+    } else {
+        vec3 toLight = light.positionRadius.xyz - P;
+        float d = length(toLight);
+        L = toLight / max(d, 1e-6);
+        scale = attenuate(light, d, attenuationMode, windowExponent);
+        if (type == LIGHT_SPOT) {
+            float cosTheta = dot(-L, light.directionCutoff.xyz);
+            scale *= cosTheta >= light.directionCutoff.w ? pow(max(cosTheta, 0.0), light.intensityExponent.w) : 0.0;
+        }
+    }
+    float nDotL = dot(N, L);
+    if (scale <= 0.0 || nDotL <= 0.0) return vec3(0.0);
+    vec3 V = normalize(-P);
+    vec3 H = normalize(L + V);
+    float spec = pow(max(dot(N, H), 0.0), exponent);
+    return light.intensityExponent.rgb * scale * (diffuse * nDotL + specular * spec);
+}

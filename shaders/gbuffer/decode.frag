@@ -1,0 +1,24 @@
+#version 450 core
+// Decoded G-buffer views, computed only when something asks for them:
+// the view-space normal (KL-decoded) and the view-space position
+// reconstructed from depth. Background pixels are (0, 0, 0, 0); surfaces have w = 1.
+#include "../common/camera.glsl"
+#include "../common/gbuffer.glsl"
+
+layout(binding = 0) uniform sampler2D uNormal;
+layout(binding = 1) uniform sampler2D uDepth;
+
+layout(location = 0) out vec4 outNormal;
+layout(location = 1) out vec4 outPosition;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(uDepth, px, 0).r;
+    if (depth >= 1.0) {
+        outNormal = vec4(0.0);
+        outPosition = vec4(0.0);
+        return;
+    }
+    outNormal = vec4(decodeNormalKL(texelFetch(uNormal, px, 0).xy), 1.0);
+    outPosition = vec4(viewPositionAtPixel(px, depth), 1.0);
+}

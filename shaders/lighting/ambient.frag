@@ -1,0 +1,25 @@
+#version 450 core
+// First write of the L-buffer: the background where no geometry is, else the
+// ambient term k_a i_a (seed 000 eq. 2.1; k_a = diffuse, plus specular when
+// lighting.ambient_specular is on) scaled by the ambient-occlusion
+// accessibility when there is one, plus emitted radiance.
+#include "gbuffer_read.glsl"
+#include "params.glsl"
+
+layout(location = 0) uniform vec3 uAmbient;
+layout(location = 1) uniform vec3 uBackground;
+
+out vec4 outColor;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    Surface s = readSurface(px);
+    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
+        outColor = vec4(uBackground, 1.0);
+        return;
+    }
+    float access = lightingParams.modes.y != 0 ? texelFetch(uOcclusion, px, 0).r : 1.0;
+    vec3 emitted = texelFetch(uEmissive, px, 0).rgb;
+    vec3 reflectance = s.diffuse + (lightingParams.modes.z != 0 ? s.specular : vec3(0.0));
+    outColor = vec4(uAmbient * reflectance * access + emitted, 1.0);
+}

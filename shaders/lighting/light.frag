@@ -1,0 +1,19 @@
+#version 450 core
+// One light's contribution, added to the L-buffer (seed 000 section 5.2.1).
+// Shared by every lighting strategy, so their images differ only by rounding.
+#include "gbuffer_read.glsl"
+#include "params.glsl"
+#include "../common/lighting.glsl"
+
+layout(location = 0) uniform int uLight;
+
+out vec4 outColor;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    Surface s = readSurface(px);
+    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) discard;
+    vec3 c = shadeLight(lights[uLight], s.position, s.normal, s.diffuse, s.specular, s.exponent,
+                        lightingParams.modes.x, lightingParams.values.x);
+    outColor = vec4(c, 0.0);
+}

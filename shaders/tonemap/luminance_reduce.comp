@@ -1,0 +1,65 @@
+#version 450 core
+// GPU reduction of the L-buffer's luminance (seed 000 section 5.3.1): the
+// first pass turns each pixel into (log(delta + L), L, L, 1) and sums per
+// 16x16 tile; later passes sum 256 partials at a time; the last writes
+// luminance.stats = (exp(mean log), max, mean, finite pixel count).
+// Non-finite pixels are left out and do not poison the statistics; so are
+// background pixels when luminance.background = exclude.
+#include "../common/color.glsl"
+
+layout(std430, binding = 4) readonly buffer ReduceIn { vec4 inData[]; };
+layout(std430, binding = 5) writeonly buffer ReduceOut { vec4 outData[]; };
+
+layout(location = 0) uniform int uCount;
+layout(location = 1) uniform float uDelta;
+layout(location = 2) uniform int uSkipBackground;
+
+vec4 combine(vec4 a, vec4 b) { return vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w); }
+
+#if defined(FINALIZE)
+layout(local_size_x = 1) in;
+layout(rgba32f, binding = 0) uniform writeonly image2D uStats;
+void main() {
+    vec4 s = inData[0];
+    float n = max(s.w, 1.0);
+    imageStore(uStats, ivec2(0), vec4(exp(s.x / n), s.y, s.z / n, s.w));
+}
+#else
+#if defined(FIRST_PASS)
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(binding = 0) uniform sampler2D uHdr;
+layout(binding = 1) uniform sampler2D uDepth;
+#else
+layout(local_size_x = 256) in;
+#endif
+shared vec4 partial[256];
+
+void main() {
+    uint lid = gl_LocalInvocationIndex;
+    vec4 v = vec4(0.0);
+#if defined(FIRST_PASS)
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = textureSize(uHdr, 0);
+    if (px.x < size.x && px.y < size.y) {
+        vec3 c = texelFetch(uHdr, px, 0).rgb;
+        bool background = uSkipBackground != 0 && texelFetch(uDepth, px, 0).r >= 1.0;
+        if (isFiniteVec(c) && !background) {
+            float L = max(luminance(c), 0.0);
+            v = vec4(log(uDelta + L), L, L, 1.0);
+        }
+    }
+    uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+#else
+    uint i = gl_GlobalInvocationID.x;
+    if (i < uint(uCount)) v = inData[i];
+    uint group = gl_WorkGroupID.x;
+#endif
+    partial[lid] = v;
+    barrier();
+    for (uint s = 128u; s > 0u; s >>= 1u) {
+        if (lid < s) partial[lid] = combine(partial[lid], partial[lid + s]);
+        barrier();
+    }
+    if (lid == 0u) outData[group] = partial[0];
+}
+#endif
