@@ -1,0 +1,149 @@
+// The binary as a user runs it: exit codes, one-line errors naming the file,
+// and the files it writes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "renderer/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int code = -1;
+    std::string out, err;
+};
+
+Result run(const std::string& args) {
+    const fs::path errFile = test::tempDir() / "stderr.txt";
+    const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();
+    Result r;
+    FILE* p = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+    return r;
+}
+
+int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+}
+
+fs::path writeText(const std::string& name, const std::string& text) {
+    const fs::path p = test::tempDir() / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p;
+}
+
+}  // namespace
+
+TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
+    const Result scenes = run("list scenes");
+    EXPECT_EQ(scenes.code, 0);
+    for (const char* s : {"default", "street", "spheres"}) EXPECT_NE(scenes.out.find(s), std::string::npos);
+    const Result buffers = run("list buffers");
+    for (const char* b : {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.depth", "lbuffer",
+                          "luminance.stats", "final"})
+        EXPECT_NE(buffers.out.find(b), std::string::npos) << b;
+    const Result knobs = run("list knobs");
+    EXPECT_NE(knobs.out.find("lighting.threshold"), std::string::npos);
+    EXPECT_NE(knobs.out.find("tonemap.key"), std::string::npos);
+    EXPECT_EQ(run("list passes").code, 0);
+    EXPECT_EQ(run("list widgets").code, 2);
+}
+
+TEST(Cli, RendersPngOfTheRequestedSize) {
+    const fs::path out = test::tempDir() / "frame.png";
+    const Result r = run("render --scene spheres --size 96x54 --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote"), std::string::npos);
+    const FloatImage img = loadImageFloat(out.string());
+    EXPECT_EQ(img.width, 96);
+    EXPECT_EQ(img.height, 54);
+}
+
+TEST(Cli, WritesRawBuffersToExr) {
+    const fs::path out = test::tempDir() / "depth.exr";
+    ASSERT_EQ(run("render --scene default --size 64x36 --buffer gbuffer.depth --out " + out.string()).code, 0);
+    const FloatImage depth = loadImageFloat(out.string());
+    EXPECT_EQ(depth.channels, 1);
+    const auto s = test::stats(depth, 0);
+    EXPECT_GT(s.min, 0.0);
+    EXPECT_LE(s.max, 1.0);
+    const fs::path normal = test::tempDir() / "normal.exr";
+    ASSERT_EQ(run("render --scene default --size 64x36 --buffer gbuffer.normal --out " + normal.string()).code, 0);
+    EXPECT_EQ(loadImageFloat(normal.string()).channels, 2);
+    const fs::path hdr = test::tempDir() / "l.exr";
+    ASSERT_EQ(run("render --scene default --size 64x36 --buffer lbuffer --set lighting.threshold=0.02 --out " + hdr.string()).code, 0);
+    EXPECT_GT(test::stats(loadImageFloat(hdr.string()), 0).max, 0.0);
+}
+
+TEST(Cli, TimingsListEveryPassThatRan) {
+    const Result r = run("render --scene default --size 64x36 --frames 3 --timings --out " +
+                         (test::tempDir() / "t.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* p : {"geometry", "lighting", "luminance", "tonemap", "frame (total)"})
+        EXPECT_NE(r.out.find(p), std::string::npos) << p;
+    EXPECT_NE(r.out.find("skipped: nothing this frame consumes"), std::string::npos);
+}
+
+TEST(Cli, MalformedSceneJsonIsOneLineNamingTheFile) {
+    const fs::path bad = writeText("bad.json", "{\n  \"lights\": [ {\"pos\": [0, 1, 0],, } ]\n}\n");
+    const Result r = run("render --scene " + bad.string() + " --out x.png");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(bad.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("line 2"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BrokenGltfAndMissingTextureAreOneLineErrors) {
+    const fs::path gltf = writeText("broken.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12, "uri": "gone.bin"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": 1, "type": "VEC3"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 12}], "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})");
+    const Result r = run("render --scene " + gltf.string() + " --out x.png");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(gltf.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("gone.bin"), std::string::npos) << r.err;
+
+    const fs::path tex = writeText("textured.json", R"({"materials": {"m": {"diffuse-map": "textures/brick.png"}},
+        "objects": [{"shape": "box", "material": "m"}]})");
+    const Result t = run("render --scene " + tex.string() + " --out x.png");
+    EXPECT_EQ(t.code, 1);
+    EXPECT_EQ(lines(t.err), 1) << t.err;
+    EXPECT_NE(t.err.find(tex.string()), std::string::npos) << t.err;
+    EXPECT_NE(t.err.find("missing texture 'textures/brick.png'"), std::string::npos) << t.err;
+}
+
+TEST(Cli, BadArgumentsExitWithUsageOrError) {
+    EXPECT_EQ(run("render --scene default --size big --out x.png").code, 2);
+    EXPECT_EQ(run("render --scene default").code, 2);
+    EXPECT_EQ(run("frobnicate").code, 2);
+    const Result knob = run("render --scene default --set lighting.treshold=0.1 --out x.png");
+    EXPECT_EQ(knob.code, 1);
+    EXPECT_NE(knob.err.find("did you mean 'lighting.threshold'"), std::string::npos) << knob.err;
+    const Result range = run("render --scene default --set tonemap.key=7 --out x.png");
+    EXPECT_EQ(range.code, 1);
+    EXPECT_NE(range.err.find("out of range"), std::string::npos) << range.err;
+    const Result buffer = run("render --scene default --size 32x32 --buffer gbuffer.nope --out x.png");
+    EXPECT_EQ(buffer.code, 1);
+    EXPECT_NE(buffer.err.find("unknown buffer 'gbuffer.nope'"), std::string::npos) << buffer.err;
+    const Result scene = run("render --scene nowhere.glb --out x.png");
+    EXPECT_EQ(scene.code, 1);
+    EXPECT_NE(scene.err.find("nowhere.glb"), std::string::npos) << scene.err;
+    const Result out = run("render --scene default --size 32x32 --out " + (test::tempDir() / "x.unknownext").string());
+    EXPECT_EQ(out.code, 1);
+}

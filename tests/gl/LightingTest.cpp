@@ -1,0 +1,192 @@
+// The L-buffer: the stencil-routed light volumes give the same image as
+// evaluating every light over every pixel (seed 000 section 6.1: identical up
+// to rounding), and both match the CPU double-precision shading equation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/LightVolume.h"
+#include "renderer/passes/LightingPass.h"
+#include "renderer/reference/ShadingReference.h"
+#include "renderer/scene/BuiltinScenes.h"
+#include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+constexpr int W = 160, H = 90;
+
+FloatImage lbufferWith(RenderSession& s, const std::string& strategy, const std::string& count = "depth_fail") {
+    s.knobs().setFromString("lighting.strategy", strategy);
+    s.knobs().setFromString("lighting.stencil_count", count);
+    s.render({{"lbuffer"}});
+    return s.readRaw("lbuffer");
+}
+
+// |a - b| relative to the larger value, for RGBA16F sums added in different orders.
+double worstRelative(const FloatImage& a, const FloatImage& b, int* wx = nullptr, int* wy = nullptr) {
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const double va = a.at(x, y, c), vb = b.at(x, y, c);
+                const double d = std::fabs(va - vb) / (std::max(std::fabs(va), std::fabs(vb)) + 1e-3);
+                if (d > worst) {
+                    worst = d;
+                    if (wx) *wx = x;
+                    if (wy) *wy = y;
+                }
+            }
+    return worst;
+}
+
+// A small scene with many overlapping point and spot lights on boxes and a floor.
+Scene boxesScene() {
+    Scene s = test::planeScene(30.0f);
+    Material m;
+    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    m.specularColor = glm::vec3(0.4f);
+    m.specularExponent = 40.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 5; ++i) s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-6.0f + i * 3.0f, 1.0f, -2.0f + (i % 2) * 3.0f})});
+    for (int i = 0; i < 12; ++i) {
+        const float a = static_cast<float>(i) * 0.52f;
+        test::addPointLight(s, {std::cos(a) * 5.0f, 0.4f + 0.3f * (i % 3), std::sin(a) * 4.0f},
+                            glm::vec3(0.5f + 0.1f * (i % 4), 0.8f, 1.2f - 0.1f * (i % 5)), {1.0f, 0.5f, 2.0f});
+    }
+    for (int i = 0; i < 4; ++i)
+        test::addSpotLight(s, {-4.5f + i * 3.0f, 4.0f, 3.0f}, {0.1f * i, -1.0f, -0.5f}, 20.0f + 8.0f * i, 4.0f,
+                           glm::vec3(4.0f, 3.0f, 2.0f), {1.0f, 0.2f, 0.3f});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+    sun.intensity = glm::vec3(0.3f);
+    s.lights.push_back(sun);
+    s.ambient = glm::vec3(0.02f);
+    return s;
+}
+
+}  // namespace
+
+TEST(Lighting, StencilVolumesEqualBruteForceOnTheDefaultScene) {
+    auto session = test::makeSession(W, H);
+    session->loadScene("default");
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    const FloatImage brute = lbufferWith(*session, "fullscreen");
+    EXPECT_EQ(lighting->lastCounts().volumes, 0);
+    EXPECT_GT(lighting->lastCounts().fullscreen, 30);
+    const FloatImage stencil = lbufferWith(*session, "stencil_volumes");
+    const FloatImage volumes = lbufferWith(*session, "volumes");
+    int x = 0, y = 0;
+    const double dStencil = worstRelative(stencil, brute, &x, &y);
+    std::printf("stencil vs brute force: worst relative difference %.2g at (%d, %d)\n", dStencil, x, y);
+    EXPECT_LT(dStencil, 5e-3) << "at " << x << "," << y;
+    EXPECT_LT(worstRelative(volumes, brute), 5e-3);
+    // The light volumes did the work instead of full-screen passes.
+    EXPECT_GT(lighting->lastCounts().volumes, 10);
+}
+
+TEST(Lighting, StencilVolumesEqualBruteForceWithTheCameraInsideVolumes) {
+    auto session = test::makeSession(W, H);
+    session->setScene(boxesScene());
+    // Stand among the lights: the camera is inside several spheres and cones.
+    session->camera().position = {0.0f, 1.0f, 3.5f};
+    session->camera().target = {0.0f, 0.5f, -2.0f};
+    const FloatImage brute = lbufferWith(*session, "fullscreen");
+    const FloatImage depthFail = lbufferWith(*session, "stencil_volumes", "depth_fail");
+    EXPECT_LT(worstRelative(depthFail, brute), 5e-3);
+    // Seed 001's depth-pass count loses the lights around the camera.
+    const FloatImage depthPass = lbufferWith(*session, "stencil_volumes", "depth_pass");
+    EXPECT_GT(worstRelative(depthPass, brute), 0.1);
+}
+
+TEST(Lighting, LBufferMatchesTheCpuShadingEquation) {
+    auto session = test::makeSession(W, H);
+    Scene s = boxesScene();
+    s.ambient = glm::vec3(0.0f);
+    const std::vector<Light> lights = s.lights;
+    session->setScene(std::move(s));
+    for (const char* attenuation : {"classic", "windowed"}) {
+        session->knobs().setFromString("lighting.attenuation", attenuation);
+        session->render({{"lbuffer", "gbuffer.view_position", "gbuffer.view_normal"}});
+        const FloatImage L = session->readRaw("lbuffer");
+        const FloatImage P = session->readRaw("gbuffer.view_position");
+        const FloatImage N = session->readRaw("gbuffer.view_normal");
+        const FloatImage albedo = session->readRaw("gbuffer.albedo");
+        const FloatImage spec = session->readRaw("gbuffer.specular");
+        const glm::dmat4 view = glm::dmat4(session->camera().view());
+        const double threshold = session->knobs().value(*session->knobs().find("lighting.threshold"));
+        const auto model = std::string(attenuation) == "windowed" ? reference::AttenuationModel::Windowed
+                                                                  : reference::AttenuationModel::Classic;
+        double worst = 0.0;
+        int checked = 0;
+        for (int y = 0; y < H; y += 3)
+            for (int x = 0; x < W; x += 3) {
+                if (P.at(x, y, 3) == 0.0f) continue;
+                reference::SurfacePoint sp;
+                sp.position = {P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)};
+                sp.normal = glm::normalize(glm::dvec3(N.at(x, y, 0), N.at(x, y, 1), N.at(x, y, 2)));
+                sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
+                sp.specular = {spec.at(x, y, 0), spec.at(x, y, 1), spec.at(x, y, 2)};
+                sp.exponent = std::exp2(spec.at(x, y, 3) * 11.0);
+                glm::dvec3 expected(0.0);
+                for (const Light& l : lights) {
+                    const LightVolume v = computeLightVolume(l, threshold);
+                    if (v.shape == VolumeShape::Culled) continue;
+                    const glm::dvec3 lp = glm::dvec3(view * glm::dvec4(glm::dvec3(l.position), 1.0));
+                    const glm::dvec3 ld = glm::dvec3(view * glm::dvec4(glm::dvec3(l.direction), 0.0));
+                    expected += reference::shadeLight(l, lp, ld, std::isfinite(v.radius) ? v.radius : 0.0, sp, model, 20.0);
+                }
+                for (int c = 0; c < 3; ++c) {
+                    const double got = L.at(x, y, c);
+                    worst = std::max(worst, std::fabs(got - expected[c]) / (std::fabs(expected[c]) + 0.01));
+                }
+                ++checked;
+            }
+        std::printf("L-buffer vs CPU reference (%s): worst relative error %.3g over %d pixels\n", attenuation, worst, checked);
+        EXPECT_GT(checked, 300);
+        EXPECT_LT(worst, 1e-2) << attenuation;
+    }
+}
+
+TEST(Lighting, LightStopsAtItsRadiusAndTheWindowFadesItToZero) {
+    auto session = test::makeSession(W, H);
+    Scene s = test::planeScene(60.0f);
+    s.camera.position = {0.0f, 30.0f, 0.01f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.camera.fovYDegrees = 70.0f;
+    // High enough that N.L is about 0.7 where the sphere meets the floor.
+    test::addPointLight(s, {0.0f, 15.0f, 0.0f}, glm::vec3(1.0f), {1.0f, 0.0f, 0.1f});
+    session->setScene(std::move(s));
+    session->knobs().setFromString("lighting.threshold", "0.02");
+    const double r = solveLightRadius({1.0f, 0.0f, 0.1f}, 1.0, 0.02);
+    for (const char* attenuation : {"classic", "windowed"}) {
+        session->knobs().setFromString("lighting.attenuation", attenuation);
+        session->render({{"lbuffer", "gbuffer.view_position"}});
+        const FloatImage L = session->readRaw("lbuffer");
+        const FloatImage P = session->readRaw("gbuffer.view_position");
+        const glm::dvec3 lightView = glm::dvec3(glm::dmat4(session->camera().view()) * glm::dvec4(0.0, 15.0, 0.0, 1.0));
+        double maxOutside = 0.0, maxNearEdge = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const double d = glm::length(glm::dvec3(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)) - lightView);
+                if (d > r * 1.001) maxOutside = std::max(maxOutside, static_cast<double>(L.at(x, y, 0)));
+                if (d > r * 0.97 && d < r) maxNearEdge = std::max(maxNearEdge, static_cast<double>(L.at(x, y, 0)));
+            }
+        EXPECT_EQ(maxOutside, 0.0) << attenuation;
+        if (std::string(attenuation) == "classic") {
+            // Just inside the radius the contribution is about the threshold times N.L.
+            EXPECT_GT(maxNearEdge, 0.02 * 0.5);
+            EXPECT_LT(maxNearEdge, 0.02 * 1.1);
+        } else {
+            // Ferko's window (1 - (d/r)^20) has taken most of it away by then.
+            EXPECT_LT(maxNearEdge, 0.02 * 0.5);
+        }
+    }
+}

@@ -1,0 +1,130 @@
+#include "tests/support/TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+
+#include "app/HeadlessGlContext.h"
+#include "renderer/scene/ShapeBuilder.h"
+
+namespace dw::test {
+
+namespace {
+std::unique_ptr<HeadlessGlContext>& context() {
+    static std::unique_ptr<HeadlessGlContext> c;
+    return c;
+}
+}  // namespace
+
+void initGl() {
+    if (!context()) context() = HeadlessGlContext::create();
+}
+
+std::unique_ptr<RenderSession> makeSession(int width, int height) {
+    initGl();
+    auto s = std::make_unique<RenderSession>();
+    s->resize(width, height);
+    return s;
+}
+
+Scene planeScene(float size) {
+    Scene s;
+    s.name = "test plane";
+    s.source = "test:plane";
+    s.ambient = glm::vec3(0.0f);
+    s.background = glm::vec3(0.0f);
+    Material m;
+    m.name = "matte";
+    m.baseColor = glm::vec4(1.0f);
+    m.specularColor = glm::vec3(0.0f);
+    m.specularExponent = 1.0f;
+    const int mat = s.addMaterial(m);
+    Mesh plane = shapes::plane(size, size);
+    plane.material = mat;
+    s.instances.push_back({s.addMesh(std::move(plane)), glm::mat4(1.0f)});
+    s.camera.position = {0.0f, 6.0f, 10.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.camera.fovYDegrees = 60.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 100.0f;
+    return s;
+}
+
+Light& addPointLight(Scene& s, glm::vec3 pos, glm::vec3 intensity, Attenuation att) {
+    Light l;
+    l.name = "point" + std::to_string(s.lights.size());
+    l.type = LightType::Point;
+    l.position = pos;
+    l.intensity = intensity;
+    l.attenuation = att;
+    s.lights.push_back(l);
+    return s.lights.back();
+}
+
+Light& addSpotLight(Scene& s, glm::vec3 pos, glm::vec3 dir, float cutoff, float exponent, glm::vec3 intensity,
+                    Attenuation att) {
+    Light l;
+    l.name = "spot" + std::to_string(s.lights.size());
+    l.type = LightType::Spot;
+    l.position = pos;
+    l.direction = glm::normalize(dir);
+    l.cutoffDegrees = cutoff;
+    l.exponent = exponent;
+    l.intensity = intensity;
+    l.attenuation = att;
+    s.lights.push_back(l);
+    return s.lights.back();
+}
+
+std::filesystem::path dataDir() { return DW_TEST_DATA_DIR; }
+std::filesystem::path goldenDir() { return DW_TEST_GOLDEN_DIR; }
+std::filesystem::path scenesDir() { return DW_TEST_SCENES_DIR; }
+
+std::filesystem::path tempDir() {
+    static const std::filesystem::path dir = [] {
+        auto d = std::filesystem::temp_directory_path() / ("dw-tests-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+ChannelStats stats(const FloatImage& img, int channel) {
+    ChannelStats s;
+    s.min = 1e300;
+    s.max = -1e300;
+    double sum = 0;
+    long long n = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const double v = img.at(x, y, channel);
+            if (!std::isfinite(v)) {
+                ++s.nonFinite;
+                continue;
+            }
+            sum += v;
+            s.min = std::min(s.min, v);
+            s.max = std::max(s.max, v);
+            ++n;
+        }
+    s.mean = n ? sum / static_cast<double>(n) : 0.0;
+    return s;
+}
+
+double maxAbsDifference(const FloatImage& a, const FloatImage& b, int channels, int* worstX, int* worstY) {
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                const double d = std::fabs(static_cast<double>(a.at(x, y, c)) - b.at(x, y, c));
+                if (d > worst || std::isnan(d)) {
+                    worst = std::isnan(d) ? 1e30 : d;
+                    if (worstX) *worstX = x;
+                    if (worstY) *worstY = y;
+                }
+            }
+    return worst;
+}
+
+}  // namespace dw::test

@@ -1,0 +1,38 @@
+#pragma once
+// Shared helpers for the test binaries: the headless GL context, small scenes
+// built in code, image statistics, and paths to test data.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "renderer/ImageIO.h"
+#include "renderer/RenderSession.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw::test {
+
+// Creates the process-wide headless context (gl/main.cpp calls this once).
+void initGl();
+// A session with the project's shaders, at `width` x `height`.
+std::unique_ptr<RenderSession> makeSession(int width, int height);
+
+// A large matte plane at y = 0 seen from above and in front, no lights.
+Scene planeScene(float size = 40.0f);
+// Adds a light and returns it for further edits.
+Light& addPointLight(Scene& s, glm::vec3 pos, glm::vec3 intensity, Attenuation att);
+Light& addSpotLight(Scene& s, glm::vec3 pos, glm::vec3 dir, float cutoff, float exponent, glm::vec3 intensity,
+                    Attenuation att);
+
+std::filesystem::path dataDir();       // ../shared/data (may not exist)
+std::filesystem::path goldenDir();
+std::filesystem::path scenesDir();
+std::filesystem::path tempDir();       // a fresh directory per test binary run
+
+struct ChannelStats {
+    double mean = 0, max = 0, min = 0;
+    long long nonFinite = 0;
+};
+ChannelStats stats(const FloatImage& img, int channel);
+double maxAbsDifference(const FloatImage& a, const FloatImage& b, int channels, int* worstX = nullptr, int* worstY = nullptr);
+
+}  // namespace dw::test

@@ -1,0 +1,86 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "renderer/Error.h"
+#include "renderer/KnobRegistry.h"
+#include "renderer/Pipeline.h"
+
+using namespace dw;
+
+TEST(KnobRegistry, EveryPipelineKnobIsDeclaredOnceWithPassAndDescription) {
+    KnobRegistry knobs;
+    Pipeline pipeline(knobs);  // declares every pass's knobs; needs no GL
+    ASSERT_GT(knobs.size(), 5u);
+    std::set<std::string> names;
+    for (const auto& s : knobs.specs()) {
+        EXPECT_TRUE(names.insert(s.name).second) << s.name;
+        EXPECT_FALSE(s.pass.empty()) << s.name;
+        EXPECT_FALSE(s.description.empty()) << s.name;
+        EXPECT_EQ(s.name.rfind(s.pass + ".", 0), 0u) << s.name << " should start with its pass";
+        EXPECT_GE(s.defaultValue, s.minValue) << s.name;
+        EXPECT_LE(s.defaultValue, s.maxValue) << s.name;
+        if (s.type == KnobType::Enum) {
+            EXPECT_EQ(s.maxValue, static_cast<double>(s.choices.size() - 1));
+        }
+    }
+    EXPECT_TRUE(knobs.find("lighting.threshold"));
+    EXPECT_TRUE(knobs.find("tonemap.operator"));
+}
+
+TEST(KnobRegistry, ParsesEachTypeAndRejectsBadValuesWithoutChangingThem) {
+    KnobRegistry k;
+    const FloatKnob f = k.addFloat("p.f", 0.5, 0.0, 1.0, "p", "a float");
+    const IntKnob i = k.addInt("p.i", 8, 1, 64, "p", "an int");
+    const BoolKnob b = k.addBool("p.b", false, "p", "a bool");
+    const EnumKnob e = k.addEnum("p.e", {"one", "two", "three"}, 0, "p", "an enum");
+
+    k.setFromString("p.f", "0.25");
+    EXPECT_FLOAT_EQ(k.get(f), 0.25f);
+    k.applyAssignment("p.i=16");
+    EXPECT_EQ(k.get(i), 16);
+    k.setFromString("p.b", "on");
+    EXPECT_TRUE(k.get(b));
+    k.setFromString("p.e", "three");
+    EXPECT_EQ(k.get(e), 2);
+    EXPECT_EQ(k.choice(e), "three");
+
+    auto message = [&](const std::string& assignment) {
+        try {
+            k.applyAssignment(assignment);
+        } catch (const Error& ex) {
+            return std::string(ex.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message("p.f=2").find("out of range [0, 1]"), std::string::npos);
+    EXPECT_NE(message("p.i=2.5").find("whole number"), std::string::npos);
+    EXPECT_NE(message("p.i=abc").find("expects a number"), std::string::npos);
+    EXPECT_NE(message("p.b=maybe").find("true or false"), std::string::npos);
+    EXPECT_NE(message("p.e=four").find("one, two, three"), std::string::npos);
+    EXPECT_NE(message("p.x=1").find("unknown knob 'p.x'"), std::string::npos);
+    EXPECT_NE(message("p.ff=1").find("did you mean 'p.f'"), std::string::npos);
+    EXPECT_NE(message("nonsense").find("name=value"), std::string::npos);
+    // Failed assignments left the values alone.
+    EXPECT_FLOAT_EQ(k.get(f), 0.25f);
+    EXPECT_EQ(k.get(i), 16);
+    EXPECT_EQ(k.get(e), 2);
+}
+
+TEST(KnobRegistry, SetClampsRoundsAndCountsChanges) {
+    KnobRegistry k;
+    const IntKnob i = k.addInt("p.i", 8, 1, 64, "p", "an int");
+    const auto g0 = k.generation();
+    k.set(i.id, 100.0);
+    EXPECT_EQ(k.get(i), 64);
+    k.set(i.id, 3.6);
+    EXPECT_EQ(k.get(i), 4);
+    EXPECT_GT(k.generation(), g0);
+    const auto g1 = k.generation();
+    k.set(i.id, 4.0);  // unchanged value: no new generation
+    EXPECT_EQ(k.generation(), g1);
+    k.resetAll();
+    EXPECT_EQ(k.get(i), 8);
+    EXPECT_TRUE(k.isDefault(i.id));
+    EXPECT_THROW(k.addInt("p.i", 1, 0, 2, "p", "dup"), Error);
+}
