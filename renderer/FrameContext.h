@@ -2,6 +2,8 @@
 // What a pass sees while it executes one frame.
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <set>
+#include <string>
 
 #include "renderer/OutputRegistry.h"
 
@@ -35,6 +37,11 @@ struct FrameContext {
     int width = 0;
     int height = 0;
     std::uint64_t frameIndex = 0;
+    // Every output something consumes this frame (the request and pass inputs).
+    std::set<std::string> wanted;
+
+    // Whether an output is consumed this frame; passes skip optional work otherwise.
+    bool wants(const std::string& name) const { return wanted.count(name) != 0; }
 
     // Whether an (optional) input was written earlier this frame.
     bool produced(const std::string& name) const {

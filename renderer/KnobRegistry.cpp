@@ -182,9 +182,8 @@ void KnobRegistry::applyAssignment(const std::string& assignment) {
     setFromString(trimmed(assignment.substr(0, eq)), assignment.substr(eq + 1));
 }
 
-std::string KnobRegistry::format(int id) const {
+std::string KnobRegistry::formatValue(int id, double v) const {
     const KnobSpec& s = specs_[id];
-    const double v = values_[id];
     switch (s.type) {
         case KnobType::Bool: return v != 0.0 ? "true" : "false";
         case KnobType::Enum: return s.choices[static_cast<size_t>(v)];

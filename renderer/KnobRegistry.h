@@ -64,7 +64,8 @@ public:
     void setFromString(const std::string& name, const std::string& text);
     // "name=value", as --set takes it.
     void applyAssignment(const std::string& assignment);
-    std::string format(int id) const;
+    std::string format(int id) const { return formatValue(id, values_[id]); }
+    std::string formatValue(int id, double value) const;
     std::string formatRange(int id) const;
     // Bumped on every change, so views can cache derived state.
     std::uint64_t generation() const { return generation_; }

@@ -47,6 +47,22 @@ FloatImage readRgba8(const gl::Texture& texture) {
     return img;
 }
 
+FloatImage readWindowFramebuffer(int width, int height) {
+    FloatImage img;
+    img.width = width;
+    img.height = height;
+    img.channels = 3;
+    std::vector<std::uint8_t> bytes(static_cast<size_t>(width) * height * 3);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
+    img.pixels.resize(bytes.size());
+    for (size_t i = 0; i < bytes.size(); ++i) img.pixels[i] = bytes[i] / 255.0f;
+    img.flipVertically();
+    return img;
+}
+
 std::vector<std::string> rawChannelNames(const PublishedOutput& output) {
     if (output.texture && output.texture->isDepth()) return {"Z"};
     switch (output.channels) {

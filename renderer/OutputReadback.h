@@ -14,6 +14,8 @@ class Texture;
 FloatImage readOutputRaw(const PublishedOutput& output);
 // An RGBA8 texture (e.g. a buffer view) as floats in [0, 1], top-down.
 FloatImage readRgba8(const gl::Texture& texture);
+// The bound window's back buffer (after UI drawing, before the swap), as RGB.
+FloatImage readWindowFramebuffer(int width, int height);
 // EXR channel names for an output's raw read-back.
 std::vector<std::string> rawChannelNames(const PublishedOutput& output);
 

@@ -37,6 +37,11 @@ void OutputRegistry::markFrameStart() {
     for (auto& o : outputs_) o.producedThisFrame = false;
 }
 
+void OutputRegistry::markProduced(const std::string& pass, const std::set<std::string>& wanted) {
+    for (auto& o : outputs_)
+        if (o.pass == pass && wanted.count(o.decl.name)) o.producedThisFrame = true;
+}
+
 void OutputRegistry::markProduced(const std::string& pass) {
     for (auto& o : outputs_)
         if (o.pass == pass) o.producedThisFrame = true;

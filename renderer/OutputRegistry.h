@@ -2,6 +2,7 @@
 // Named outputs (DESIGN.md, "Named outputs"): every pass publishes what it
 // writes under a name ("gbuffer.normal", "lbuffer", ...). The inspector, the
 // CLI's --buffer and the pixel probe read this list; none needs per-pass code.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,10 @@ public:
     void declare(const std::string& pass, const OutputDecl& decl);
     void bind(const std::string& name, const gl::Texture* texture, int channels, int level = 0);
     void markFrameStart();
-    void markProduced(const std::string& pass);
+    // Marks the pass's outputs in `wanted` as written this frame (a pass skips
+    // optional outputs nothing asked for, so those keep older contents).
+    void markProduced(const std::string& pass, const std::set<std::string>& wanted);
+    void markProduced(const std::string& pass);  // all of the pass's outputs
     const PublishedOutput* find(const std::string& name) const;
     const std::vector<PublishedOutput>& all() const { return outputs_; }
     std::vector<std::string> names() const;

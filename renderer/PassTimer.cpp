@@ -1,7 +1,9 @@
 #include "renderer/PassTimer.h"
 
 #include <algorithm>
+#include <fstream>
 #include <numeric>
+#include <sstream>
 
 #include "renderer/Error.h"
 
@@ -85,9 +87,11 @@ void PassTimer::harvest(PendingFrame& f) {
         sample.frame = f.frame;
         sample.gpuMs = t1 > t0 ? static_cast<float>(static_cast<double>(t1 - t0) * 1e-6) : 0.0f;
         sample.cpuMs = span.cpuMs;
-        Series& s = seriesFor(span.name);
-        s.samples.push_back(sample);
-        if (s.samples.size() > kHistory) s.samples.pop_front();
+        if (!paused_) {
+            Series& s = seriesFor(span.name);
+            s.samples.push_back(sample);
+            if (s.samples.size() > kHistory) s.samples.pop_front();
+        }
         pool_.push_back(std::move(span.begin));
         pool_.push_back(std::move(span.end));
     }
@@ -133,5 +137,22 @@ TimingStats PassTimer::cpuStats(const std::string& name, size_t window) const {
 }
 
 void PassTimer::clearHistory() { series_.clear(); }
+
+std::string PassTimer::csv() const {
+    std::ostringstream out;
+    out << "frame,series,gpu_ms,cpu_ms\n";
+    out.setf(std::ios::fixed);
+    out.precision(4);
+    for (const auto& s : series_)
+        for (const auto& t : s.samples) out << t.frame << "," << s.name << "," << t.gpuMs << "," << t.cpuMs << "\n";
+    return out.str();
+}
+
+void PassTimer::writeCsv(const std::string& path) const {
+    std::ofstream f(path, std::ios::trunc);
+    if (!f) throw FileError(path, "cannot write the timing CSV");
+    f << csv();
+    if (!f) throw FileError(path, "writing the timing CSV failed");
+}
 
 }  // namespace dw

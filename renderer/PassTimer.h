@@ -51,6 +51,14 @@ public:
     TimingStats cpuStats(const std::string& name, size_t window = 0) const;
     size_t pendingFrames() const { return pending_.size(); }
     void clearHistory();
+    // While paused, finished frames are still harvested but not recorded, so
+    // the history on screen holds still.
+    void setPaused(bool paused) { paused_ = paused; }
+    bool paused() const { return paused_; }
+    // The recorded history as CSV: frame, series, gpu_ms, cpu_ms.
+    std::string csv() const;
+    // Writes csv() to `path`; throws FileError.
+    void writeCsv(const std::string& path) const;
 
 private:
     struct Span {
@@ -71,6 +79,7 @@ private:
     PendingFrame current_;
     bool inFrame_ = false;
     bool inPass_ = false;
+    bool paused_ = false;
     std::chrono::steady_clock::time_point passStart_, frameStart_;
     std::vector<Series> series_;
 };

@@ -78,7 +78,7 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     return u;
 }
 
-std::vector<PassRecord> Pipeline::plan(const FrameRequest& request) const {
+std::vector<PassRecord> Pipeline::plan(const FrameRequest& request, std::set<std::string>* wantedOutputs) const {
     for (const auto& name : request.outputs)
         if (!outputs_.find(name))
             throw Error("unknown buffer '" + name + "'; 'deferred-workbench list buffers' lists them");
@@ -126,6 +126,7 @@ std::vector<PassRecord> Pipeline::plan(const FrameRequest& request) const {
         records[i].ran = true;
         for (const auto& o : passes_[i]->outputs()) produced.insert(o.name);
     }
+    if (wantedOutputs) *wantedOutputs = needed;
     return records;
 }
 
@@ -134,7 +135,8 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
     FrameReport report;
     report.frameIndex = frame_;
-    report.passes = plan(request);
+    std::set<std::string> wanted;
+    report.passes = plan(request, &wanted);
     for (const auto& name : request.outputs) {
         const PublishedOutput* o = outputs_.find(name);
         for (const auto& r : report.passes)
@@ -146,7 +148,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
     cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
     outputs_.markFrameStart();
-    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_};
+    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, std::move(wanted)};
 
     timer_.beginFrame(frame_);
     for (size_t i = 0; i < passes_.size(); ++i) {
@@ -159,7 +161,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
         p.execute(ctx);
         timer_.endPass();
         glPopDebugGroup();
-        outputs_.markProduced(p.name());
+        outputs_.markProduced(p.name(), ctx.wanted);
         report.passes[i].stats = p.stats();
     }
     timer_.endFrame();

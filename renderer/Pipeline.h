@@ -5,6 +5,7 @@
 // image, or a buffer being inspected) and it is not switched off or without
 // work. Every pass is timed; the report says which ran and why others did not.
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -68,8 +69,9 @@ public:
     const CameraUniforms& lastCamera() const { return camera_; }
     const GpuScene& gpuScene() const { return gpu_; }
     static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
-    // Plans without executing: which passes would run for `request`.
-    std::vector<PassRecord> plan(const FrameRequest& request) const;
+    // Plans without executing: which passes would run for `request`, and
+    // (optionally) every output that something consumes.
+    std::vector<PassRecord> plan(const FrameRequest& request, std::set<std::string>* wanted = nullptr) const;
 
 private:
     KnobRegistry& knobs_;

@@ -44,21 +44,6 @@ bool sphereOutside(const std::array<glm::vec4, 6>& planes, const glm::vec3& c, f
 
 }  // namespace
 
-void LightingPass::VolumeGeometry::create(const VolumeMesh& mesh) {
-    vertices = gl::Buffer::fromVector(mesh.positions, false, "light volume vertices");
-    indices = gl::Buffer::fromVector(mesh.indices, false, "light volume indices");
-    vao = gl::VertexArray::create();
-    vao.setVertexBuffer(0, vertices, 0, sizeof(glm::vec3));
-    vao.setIndexBuffer(indices);
-    vao.setAttribute(0, 0, 3, 0);
-    indexCount = static_cast<GLsizei>(mesh.indices.size());
-}
-
-void LightingPass::VolumeGeometry::draw() const {
-    vao.bind();
-    glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-}
-
 LightingPass::LightingPass(KnobRegistry& knobs) {
     strategy_ = knobs.addEnum("lighting.strategy", {"stencil_volumes", "volumes", "fullscreen"}, StencilVolumes, "lighting",
                               "how point and spot lights find their pixels: stencil-tested light volumes (seed 001), "
@@ -83,7 +68,9 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
 }
 
 std::vector<OutputDecl> LightingPass::outputs() const {
-    return {{"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended"}};
+    return {{"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended"},
+            {"lighting.overlap", OutputKind::Count,
+             "light-shader invocations per pixel: how many light volumes passed the stencil test (R32F)"}};
 }
 
 PassIO LightingPass::inputs(const KnobRegistry&) const {
@@ -92,8 +79,10 @@ PassIO LightingPass::inputs(const KnobRegistry&) const {
 
 void LightingPass::setup(gl::ShaderLibrary& shaders) {
     ambientProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/ambient.frag"});
-    fullscreenLightProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/light.frag"});
-    volumeLightProgram_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag"});
+    shade_.fullscreen = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/light.frag"});
+    shade_.volume = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag"});
+    shadeCounting_.fullscreen = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP"}});
+    shadeCounting_.volume = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP"}});
     stencilProgram_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/stencil.frag"});
     sphere_.create(unitSphereVolume());
     cone_.create(unitConeVolume());
@@ -106,13 +95,18 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
 void LightingPass::resize(int width, int height, OutputRegistry& outputs) {
     lbuffer_ = gl::Texture::create2D(GL_RGBA16F, width, height);
     lbuffer_.setFilter(GL_NEAREST, GL_NEAREST);
+    overlap_ = gl::Texture::create2D(GL_R32F, width, height);
+    overlap_.setFilter(GL_NEAREST, GL_NEAREST);
     depthStencil_ = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
     fbo_ = gl::Framebuffer::create("lbuffer");
     fbo_.attachColor(0, lbuffer_);
+    fbo_.attachColor(1, overlap_);
     fbo_.attachDepth(depthStencil_);
-    fbo_.setDrawBuffers({0});
+    fbo_.setDrawBuffers({0, 1});
     fbo_.checkComplete("L-buffer");
+    fbo_.setDrawBuffers({0});
     outputs.bind("lbuffer", &lbuffer_, 4);
+    outputs.bind("lighting.overlap", &overlap_, 1);
 }
 
 void LightingPass::execute(FrameContext& ctx) {
@@ -185,29 +179,38 @@ void LightingPass::execute(FrameContext& ctx) {
 
     fbo_.bind();
     // Ambient + emission + background: the first write, no blending.
+    fbo_.setDrawBuffers({0});
     ambientProgram_->use();
     ambientProgram_->set(0, ctx.scene.ambient);
     ambientProgram_->set(1, ctx.scene.background);
     triangle_.draw();
 
+    const bool counting = ctx.wants("lighting.overlap");
+    if (counting) {
+        fbo_.setDrawBuffers({0, 1});
+        fbo_.clearColor(1, 0, 0, 0, 0);
+    }
+    const gl::Program& fullscreenLight = counting ? *shadeCounting_.fullscreen : *shade_.fullscreen;
+    const gl::Program& volumeLight = counting ? *shadeCounting_.volume : *shade_.volume;
+
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
 
-    fullscreenLightProgram_->use();
+    fullscreenLight.use();
     for (int i : directional) {
-        fullscreenLightProgram_->set(0, i);
+        fullscreenLight.set(0, i);
         triangle_.draw();
     }
     for (int i : fullscreen) {
-        fullscreenLightProgram_->set(0, i);
+        fullscreenLight.set(0, i);
         triangle_.draw();
     }
 
     if (!spheres.empty() || !cones.empty()) {
         // Volumes may cross the near and far planes: clamp depth instead of clipping.
         glEnable(GL_DEPTH_CLAMP);
-        auto drawVolume = [&](int i, const VolumeGeometry& geo, const gl::Program& program) {
+        auto drawVolume = [&](int i, const LightVolumeGeometry& geo, const gl::Program& program) {
             program.set(0, i);
             geo.draw();
         };
@@ -218,13 +221,13 @@ void LightingPass::execute(FrameContext& ctx) {
         if (strategy == Volumes) {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
-            volumeLightProgram_->use();
-            forEachVolume([&](int i, const VolumeGeometry& g) { drawVolume(i, g, *volumeLightProgram_); });
+            volumeLight.use();
+            forEachVolume([&](int i, const LightVolumeGeometry& g) { drawVolume(i, g, volumeLight); });
         } else {
             const bool depthFail = k.get(stencilCount_) == DepthFail;
             glEnable(GL_STENCIL_TEST);
             glStencilMask(0xFF);
-            forEachVolume([&](int i, const VolumeGeometry& g) {
+            forEachVolume([&](int i, const LightVolumeGeometry& g) {
                 // 1. Mark pixels whose surface lies inside the volume.
                 glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
                 glDisable(GL_BLEND);
@@ -251,11 +254,12 @@ void LightingPass::execute(FrameContext& ctx) {
                 glCullFace(GL_FRONT);
                 glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
                 glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
-                volumeLightProgram_->use();
-                drawVolume(i, g, *volumeLightProgram_);
+                volumeLight.use();
+                drawVolume(i, g, volumeLight);
             });
         }
     }
+    fbo_.setDrawBuffers({0});
     const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.frustumCulled + counts_.belowThreshold;
     stats_ = std::to_string(total) + " lights: " + std::to_string(counts_.directional) + " directional, " +
              std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) + " full-screen, " +

@@ -10,17 +10,19 @@
 //  volumes          the volumes' back faces only, no stencil
 //  fullscreen       every light over every pixel (the brute-force reference)
 // All three run the same fragment shader with the in-volume test, so their
-// images agree up to rounding (seed 000 section 6.1).
+// images agree up to rounding (seed 000 section 6.1). When asked for, it also
+// writes lighting.overlap: light-shader invocations per pixel, i.e. how many
+// volumes passed the stencil test there (the cost map of the strategy).
 #include <vector>
 
 #include "renderer/KnobRegistry.h"
+#include "renderer/LightVolumeGeometry.h"
 #include "renderer/RenderPass.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
-#include "renderer/gl/VertexArray.h"
 
 namespace dw {
 
@@ -44,24 +46,21 @@ public:
     const Counts& lastCounts() const { return counts_; }
 
 private:
-    struct VolumeGeometry {
-        gl::Buffer vertices, indices;
-        gl::VertexArray vao;
-        GLsizei indexCount = 0;
-        void create(const struct VolumeMesh& mesh);
-        void draw() const;
-    };
 
     FloatKnob threshold_;
     EnumKnob strategy_, stencilCount_, attenuation_;
     FloatKnob windowExponent_;
     BoolKnob frustumCull_, ambientSpecular_;
 
-    gl::ShaderLibrary::Handle ambientProgram_, fullscreenLightProgram_, volumeLightProgram_, stencilProgram_;
+    struct LightPrograms {
+        gl::ShaderLibrary::Handle fullscreen, volume;
+    };
+    gl::ShaderLibrary::Handle ambientProgram_, stencilProgram_;
+    LightPrograms shade_, shadeCounting_;
     gl::FullscreenTriangle triangle_;
-    VolumeGeometry sphere_, cone_;
+    LightVolumeGeometry sphere_, cone_;
     gl::Buffer lights_, params_;
-    gl::Texture lbuffer_, depthStencil_, white_;
+    gl::Texture lbuffer_, overlap_, depthStencil_, white_;
     gl::Framebuffer fbo_;
     Counts counts_;
     std::string stats_;

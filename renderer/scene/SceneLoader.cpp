@@ -36,6 +36,8 @@ void addDefaultLightRig(Scene& scene) {
 
 Scene loadScene(const std::string& spec) {
     if (isBuiltinScene(spec)) return makeBuiltinScene(spec);
+    // Scene::source of a built-in scene reads "builtin:<name>".
+    if (spec.rfind("builtin:", 0) == 0 && isBuiltinScene(spec.substr(8))) return makeBuiltinScene(spec.substr(8));
     std::string ext = fs::path(spec).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext == ".json") return loadSceneJson(spec);

@@ -7,12 +7,22 @@
 
 layout(location = 0) uniform int uLight;
 
-out vec4 outColor;
+layout(location = 0) out vec4 outColor;
+#ifdef COUNT_OVERLAP
+// One per invocation, added up by the blend: the per-pixel cost of the strategy.
+layout(location = 1) out float outOverlap;
+#endif
 
 void main() {
+#ifdef COUNT_OVERLAP
+    outOverlap = 1.0;
+#endif
     ivec2 px = ivec2(gl_FragCoord.xy);
     Surface s = readSurface(px);
-    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) discard;
+    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
+        outColor = vec4(0.0);  // not discarded, so the invocation is still counted
+        return;
+    }
     vec3 c = shadeLight(lights[uLight], s.position, s.normal, s.diffuse, s.specular, s.exponent,
                         lightingParams.modes.x, lightingParams.values.x);
     outColor = vec4(c, 0.0);
