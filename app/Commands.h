@@ -4,5 +4,6 @@ namespace dw {
 
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
+int runGuiCommand(int argc, char** argv);
 
 }  // namespace dw

@@ -1,4 +1,4 @@
-// deferred-workbench: the GUI (default) and the headless subcommands.
+// deferred-workbench: the workbench window (default) and the headless subcommands.
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -13,7 +13,8 @@ namespace {
 void printUsage() {
     std::printf(
         "Deferred Workbench: a workbench for real-time deferred shading.\n\n"
-        "usage: deferred-workbench render --scene S --out FILE [...]  render a buffer to .png/.exr\n"
+        "usage: deferred-workbench [gui] [--scene S] [--preset P]     open the workbench window\n"
+        "       deferred-workbench render --scene S --out FILE [...]  render a buffer to .png/.exr\n"
         "       deferred-workbench list scenes|buffers|knobs|passes\n"
         "       deferred-workbench <command> --help\n");
 }
@@ -21,7 +22,7 @@ void printUsage() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string cmd = argc > 1 ? argv[1] : "--help";
+    const std::string cmd = argc > 1 ? argv[1] : "gui";
     try {
         if (cmd == "render") return dw::runRenderCommand(argc, argv);
         if (cmd == "list") return dw::runListCommand(argc, argv);
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
             std::printf("deferred-workbench 0.1.0\n");
             return 0;
         }
+        if (cmd == "gui" || cmd.rfind("--", 0) == 0) return dw::runGuiCommand(argc, argv);
         throw dw::UsageError("unknown command '" + cmd + "'");
     } catch (const dw::UsageError& e) {
         std::fprintf(stderr, "deferred-workbench: %s\n", e.what());

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and renders the built-in "default" scene
-# headless to out/default.png. Extra arguments go to `render` (e.g. --scene street).
+# Installs what is missing, builds, and opens the workbench on the built-in
+# "default" scene. Extra arguments go to the workbench (e.g. --scene street).
+# Without a display it renders the scene headless and says where the image is.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup-deps.sh"
 "$root/scripts/build.sh"
 bin=${DW_BUILD_DIR:-$root/build}/deferred-workbench
-mkdir -p "$root/out"
-exec "$bin" render --scene default --size 1280x720 --out "$root/out/default.png" "$@"
+if [[ -z "${DISPLAY:-}" && -z "${WAYLAND_DISPLAY:-}" ]]; then
+  mkdir -p "$root/out"
+  echo "run: no display, so no window; rendering the default scene headless instead"
+  exec "$bin" render --scene default --size 1280x720 --out "$root/out/default.png" "$@"
+fi
+exec "$bin" gui --scene default "$@"

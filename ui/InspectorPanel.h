@@ -1,0 +1,25 @@
+#pragma once
+// Pass inspector: the passes of this frame, ran or skipped (and why), their
+// GPU time and outputs. Any output can be shown in the viewport or the side
+// view, with channel, range, depth linearisation, normal colours, heat map and
+// exposure controls. Built from the pipeline's output registry, with no
+// per-pass code.
+#include "renderer/RenderSession.h"
+#include "ui/UiState.h"
+
+namespace dw::ui {
+
+struct InspectorPanel {
+    std::vector<std::string> listed;  // the outputs the last draw listed, in order
+    void draw(const char* title, bool* open, UiState& state, RenderSession& session);
+};
+
+// The side view: a second output beside the viewport.
+struct SideViewPanel {
+    void draw(const char* title, bool* open, UiState& state, RenderSession& session);
+};
+
+// Editor for how an output is displayed; returns true on change.
+bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<glm::vec4, glm::vec4>* autoRange);
+
+}  // namespace dw::ui

@@ -1,0 +1,151 @@
+#include "ui/LightsPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/LightVolume.h"
+#include "ui/Widgets.h"
+
+namespace dw::ui {
+
+namespace {
+
+Light newLight(LightType type, const Scene& scene, const Camera& cam, size_t index) {
+    Light l;
+    l.type = type;
+    l.name = std::string(toString(type)) + " " + std::to_string(index);
+    const glm::vec3 forward = glm::normalize(cam.target - cam.position);
+    l.position = cam.target + glm::vec3(0.0f, std::max(scene.bounds().radius() * 0.1f, 0.5f), 0.0f);
+    l.direction = type == LightType::Directional ? glm::normalize(forward + glm::vec3(0, -1, 0)) : glm::vec3(0, -1, 0);
+    l.intensity = glm::vec3(1.0f, 0.95f, 0.85f);
+    l.attenuation = {1.0f, 0.3f, 0.5f};
+    l.cutoffDegrees = 30.0f;
+    l.exponent = 4.0f;
+    return l;
+}
+
+}  // namespace
+
+void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    if (!ImGui::Begin(title, open)) {
+        ImGui::End();
+        return;
+    }
+    Scene& scene = session.mutableScene();
+    KnobRegistry& knobs = session.knobs();
+    const double threshold = knobs.value(*knobs.find("lighting.threshold"));
+    if (state.selectedLight >= static_cast<int>(scene.lights.size())) state.selectedLight = -1;
+
+    bool animate = state.animator.running();
+    if (ImGui::Checkbox("animate", &animate)) {
+        if (animate) state.animator.start(scene);
+        else state.animator.stop(scene);
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    ImGui::DragFloat("radius", &state.animator.radius, 0.01f, 0.0f, 100.0f, "%.2f");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60);
+    ImGui::DragFloat("speed", &state.animator.speed, 0.01f, 0.0f, 20.0f, "%.2f");
+    if (ImGui::Button("+ point")) scene.lights.push_back(newLight(LightType::Point, scene, session.camera(), scene.lights.size()));
+    ImGui::SameLine();
+    if (ImGui::Button("+ spot")) scene.lights.push_back(newLight(LightType::Spot, scene, session.camera(), scene.lights.size()));
+    ImGui::SameLine();
+    if (ImGui::Button("+ directional"))
+        scene.lights.push_back(newLight(LightType::Directional, scene, session.camera(), scene.lights.size()));
+    ImGui::SameLine();
+    if (ImGui::Button("all on"))
+        for (auto& l : scene.lights) l.enabled = true;
+    ImGui::SameLine();
+    if (ImGui::Button("all off"))
+        for (auto& l : scene.lights) l.enabled = false;
+
+    const float listHeight = std::max(ImGui::GetContentRegionAvail().y * 0.45f, 80.0f);
+    if (ImGui::BeginTable("lights", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
+                          ImVec2(0, listHeight))) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed, 24.0f);
+        ImGui::TableSetupColumn("name");
+        ImGui::TableSetupColumn("type", ImGuiTableColumnFlags_WidthFixed, 70.0f);
+        ImGui::TableSetupColumn("radius", ImGuiTableColumnFlags_WidthFixed, 60.0f);
+        ImGui::TableHeadersRow();
+        for (size_t i = 0; i < scene.lights.size(); ++i) {
+            Light& l = scene.lights[i];
+            ImGui::PushID(static_cast<int>(i));
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Checkbox("##on", &l.enabled);
+            ImGui::TableNextColumn();
+            const glm::vec4 c = ViewportOverlay::lightColor(l.intensity, false);
+            ImGui::ColorButton("##c", ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
+            ImGui::SameLine();
+            if (ImGui::Selectable(l.name.c_str(), state.selectedLight == static_cast<int>(i), ImGuiSelectableFlags_SpanAllColumns))
+                state.selectedLight = state.selectedLight == static_cast<int>(i) ? -1 : static_cast<int>(i);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(toString(l.type));
+            ImGui::TableNextColumn();
+            const LightVolume v = computeLightVolume(l, threshold);
+            if (v.shape == VolumeShape::Culled) ImGui::TextDisabled(l.enabled ? "none" : "off");
+            else if (!std::isfinite(v.radius)) ImGui::TextDisabled("all");
+            else ImGui::Text("%.2f", v.radius);
+            ImGui::PopID();
+        }
+        ImGui::EndTable();
+    }
+    state.viewport.overlay.selectedLight = state.selectedLight;
+
+    if (state.selectedLight >= 0) {
+        Light& l = scene.lights[static_cast<size_t>(state.selectedLight)];
+        ImGui::Separator();
+        char name[128];
+        std::snprintf(name, sizeof(name), "%s", l.name.c_str());
+        if (ImGui::InputText("name", name, sizeof(name))) l.name = name;
+        int type = static_cast<int>(l.type);
+        if (ImGui::Combo("type", &type, "directional\0point\0spot\0")) l.type = static_cast<LightType>(type);
+        ImGui::Checkbox("enabled", &l.enabled);
+        ImGui::SameLine();
+        ImGui::Checkbox("casts shadows", &l.castShadows);
+        if (l.type != LightType::Directional) {
+            ImGui::BeginDisabled(state.animator.running());
+            ImGui::DragFloat3("position", &l.position.x, 0.05f);
+            ImGui::EndDisabled();
+            if (state.animator.running()) helpMarker("Stop the animation to move lights by hand.");
+        }
+        if (l.type != LightType::Point) {
+            if (ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f)) {
+                if (glm::length(l.direction) < 1e-4f) l.direction = glm::vec3(0, -1, 0);
+                l.direction = glm::normalize(l.direction);
+            }
+        }
+        // Colour and strength separately: an HDR intensity is colour x scalar.
+        float strength = std::max({l.intensity.r, l.intensity.g, l.intensity.b});
+        glm::vec3 color = strength > 0.0f ? l.intensity / strength : glm::vec3(1.0f);
+        bool changed = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
+        changed |= ImGui::DragFloat("intensity", &strength, 0.02f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_Logarithmic);
+        if (changed) l.intensity = color * strength;
+        if (l.type != LightType::Directional) {
+            ImGui::TextDisabled("attenuation 1 / (c + l d + q d^2)");
+            ImGui::DragFloat("constant", &l.attenuation.constant, 0.01f, 0.0f, 100.0f, "%.4f");
+            ImGui::DragFloat("linear", &l.attenuation.linear, 0.005f, 0.0f, 100.0f, "%.4f");
+            ImGui::DragFloat("quadratic", &l.attenuation.quadratic, 0.005f, 0.0f, 100.0f, "%.4f");
+            if (l.attenuation.constant + l.attenuation.linear + l.attenuation.quadratic <= 0.0f) l.attenuation.constant = 1.0f;
+        }
+        if (l.type == LightType::Spot) {
+            ImGui::SliderFloat("cutoff (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
+            ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.2f");
+        }
+        const LightVolume v = computeLightVolume(l, threshold);
+        const char* shape = v.shape == VolumeShape::Cone ? "cone" : v.shape == VolumeShape::Sphere ? "sphere"
+                            : v.shape == VolumeShape::FullScreen ? "full-screen" : "none (below threshold)";
+        ImGui::TextDisabled("volume: %s, radius %.3f at threshold %.5g", shape, v.radius, threshold);
+        if (ImGui::Button("remove light")) {
+            scene.lights.erase(scene.lights.begin() + state.selectedLight);
+            state.selectedLight = -1;
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace dw::ui

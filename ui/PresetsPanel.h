@@ -1,0 +1,21 @@
+#pragma once
+// Presets: the built-in ones and the JSON files in the presets folder; load
+// (scene, camera and knobs; unknown or invalid keys are listed, the rest
+// applied) and save (atomically; a failed save keeps the old file).
+#include "renderer/Preset.h"
+#include "renderer/RenderSession.h"
+#include "ui/UiState.h"
+
+namespace dw::ui {
+
+struct PresetsPanel {
+    char saveName[128] = "my-preset";
+    void draw(const char* title, bool* open, UiState& state, RenderSession& session);
+};
+
+// Applies a preset to the session; errors and ignored keys go to the log.
+// Returns false (and changes nothing) when the preset's scene cannot be opened.
+bool applyPreset(UiState& state, RenderSession& session, const Preset& preset);
+bool loadPresetFile(UiState& state, RenderSession& session, const std::string& path);
+
+}  // namespace dw::ui

@@ -1,0 +1,88 @@
+#include "ui/ScenePanel.h"
+
+#include <imgui.h>
+
+#include <filesystem>
+
+#include "renderer/Error.h"
+#include "renderer/scene/BuiltinScenes.h"
+#include "ui/Widgets.h"
+
+namespace dw::ui {
+
+namespace fs = std::filesystem;
+
+bool openScene(UiState& state, RenderSession& session, const std::string& spec) {
+    try {
+        if (state.animator.running()) state.animator.stop(session.mutableScene());
+        session.loadScene(spec);
+        state.selectedLight = -1;
+        state.probe.pinned = false;
+        state.log.info("opened scene " + session.scene().name + " (" + spec + ")", state.time);
+        for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, state.time);
+        return true;
+    } catch (const std::exception& e) {
+        state.log.error(std::string("cannot open scene: ") + e.what(), state.time);
+        return false;
+    }
+}
+
+void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    if (!ImGui::Begin(title, open)) {
+        ImGui::End();
+        return;
+    }
+    Scene& scene = session.mutableScene();
+    ImGui::Text("%s", scene.name.c_str());
+    ImGui::TextDisabled("%s", scene.source.c_str());
+    char facts[160];
+    std::snprintf(facts, sizeof(facts), "%zu triangles, %zu draws, %zu lights, %zu materials, %zu textures",
+                  scene.triangleCount(), scene.instances.size(), scene.lights.size(), scene.materials.size(), scene.images.size());
+    wrappedColored(kDimColor, facts);
+    if (ImGui::CollapsingHeader("open", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const auto& b : builtinScenes()) {
+            if (ImGui::Button(b.name.c_str())) openScene(state, session, b.name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.description.c_str());
+            ImGui::SameLine();
+        }
+        ImGui::NewLine();
+        std::error_code ec;
+        if (!state.scenesDir.empty() && fs::is_directory(state.scenesDir, ec)) {
+            for (const auto& e : fs::directory_iterator(state.scenesDir, ec)) {
+                if (e.path().extension() != ".json") continue;
+                if (ImGui::SmallButton(e.path().filename().c_str())) openScene(state, session, e.path().string());
+                ImGui::SameLine();
+            }
+            ImGui::NewLine();
+        }
+        ImGui::SetNextItemWidth(-60);
+        const bool enter = ImGui::InputTextWithHint("##path", ".json / .gltf / .glb path", path, sizeof(path),
+                                                    ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::SameLine();
+        if ((ImGui::Button("open") || enter) && path[0]) openScene(state, session, path);
+    }
+    if (ImGui::CollapsingHeader("global terms", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::ColorEdit3("ambient", &scene.ambient.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+        ImGui::ColorEdit3("background", &scene.background.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    }
+    if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+        Camera& c = session.camera();
+        int mode = state.viewport.camera == CameraMode::Orbit ? 0 : 1;
+        if (ImGui::RadioButton("orbit", &mode, 0)) state.viewport.camera = CameraMode::Orbit;
+        ImGui::SameLine();
+        if (ImGui::RadioButton("fly (hold right button)", &mode, 1)) state.viewport.camera = CameraMode::Fly;
+        ImGui::DragFloat3("eye", &c.position.x, 0.05f);
+        ImGui::DragFloat3("look-at", &c.target.x, 0.05f);
+        ImGui::SliderFloat("fov (deg)", &c.fovYDegrees, 10.0f, 120.0f, "%.1f");
+        ImGui::DragFloatRange2("near / far", &c.nearPlane, &c.farPlane, 0.05f, 0.001f, 1e5f, "%.3f", "%.1f",
+                               ImGuiSliderFlags_Logarithmic);
+        c.nearPlane = std::max(c.nearPlane, 1e-4f);
+        c.farPlane = std::max(c.farPlane, c.nearPlane * 1.01f);
+        if (ImGui::Button("reset to the scene's camera")) c = scene.camera;
+        ImGui::SameLine();
+        if (ImGui::Button("frame everything")) c = Camera::framing(scene.bounds());
+    }
+    ImGui::End();
+}
+
+}  // namespace dw::ui

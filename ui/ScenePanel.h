@@ -1,0 +1,18 @@
+#pragma once
+// Scene: what is loaded, opening another (built-in, example or any path; a
+// failure keeps the current scene and says why), ambient and background, and
+// the camera.
+#include "renderer/RenderSession.h"
+#include "ui/UiState.h"
+
+namespace dw::ui {
+
+struct ScenePanel {
+    char path[512] = {};
+    void draw(const char* title, bool* open, UiState& state, RenderSession& session);
+};
+
+// Loads a scene into the session; on failure logs the error and keeps the old one.
+bool openScene(UiState& state, RenderSession& session, const std::string& spec);
+
+}  // namespace dw::ui

@@ -1,0 +1,119 @@
+#pragma once
+// Everything the panels share: which panels are open, what the viewport and
+// the side view show, the light selection, the probe, the message log, and
+// requests for the app's frame loop. No GL here; panels only show textures the
+// renderer already owns.
+#include <cstdint>
+#include <deque>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "renderer/BufferView.h"
+#include "renderer/PixelProbe.h"
+#include "renderer/Pipeline.h"
+#include "renderer/ViewportOverlay.h"
+#include "renderer/scene/LightAnimator.h"
+
+namespace dw::ui {
+
+enum class DisplayMode { Deferred, Textured, Wireframe };
+enum class CameraMode { Orbit, Fly };
+
+struct PanelFlags {
+    bool viewport = true;
+    bool inspector = true;
+    bool probe = true;
+    bool lights = true;
+    bool scene = true;
+    bool timings = true;
+    bool knobs = true;
+    bool presets = false;
+    bool messages = false;
+    bool sideView = false;
+    bool keys = false;
+};
+
+struct Message {
+    double time = 0.0;
+    bool error = false;
+    std::string text;
+};
+
+class MessageLog {
+public:
+    void info(const std::string& text, double time);
+    void error(const std::string& text, double time);
+    const std::deque<Message>& all() const { return messages_; }
+    // The newest error not yet dismissed, shown as a banner over the viewport.
+    const Message* banner() const { return bannerIndex_ >= 0 ? &messages_[static_cast<size_t>(bannerIndex_)] : nullptr; }
+    void dismissBanner() { bannerIndex_ = -1; }
+
+private:
+    std::deque<Message> messages_;
+    long bannerIndex_ = -1;
+};
+
+// A texture the renderer produced for the UI to show this frame.
+struct ShownImage {
+    unsigned texture = 0;
+    int width = 0, height = 0;
+    std::string unavailable;  // why there is no image (e.g. the pass did not run)
+};
+
+struct ViewportView {
+    std::string output = "final";
+    BufferViewSettings settings;
+    DisplayMode mode = DisplayMode::Deferred;
+    OverlaySettings overlay;
+    CameraMode camera = CameraMode::Orbit;
+};
+
+struct SideView {
+    std::string output = "gbuffer.normal";
+    BufferViewSettings settings;
+};
+
+struct ProbeState {
+    bool hovering = false;    // the cursor is over the viewport image this frame
+    bool pinned = false;      // a click fixed the probe to a pixel
+    glm::ivec2 pixel{0, 0};   // in render pixels, rows top-down
+    ProbeResult result;
+    // Where the pixel sits in the viewport image, for the magnifier.
+    glm::vec2 uv{0.0f};
+};
+
+struct UiState {
+    PanelFlags panels;
+    ViewportView viewport;
+    SideView side;
+    ProbeState probe;
+    MessageLog log;
+    LightAnimator animator;
+    int selectedLight = -1;
+    std::string presetsDir;
+    std::string scenesDir;
+    bool resetLayout = true;
+
+    // Filled by the app each frame for the panels to read.
+    FrameReport report;
+    ShownImage viewportImage, sideImage;
+    glm::ivec2 renderSize{0, 0};   // what the pipeline renders at
+    glm::ivec2 wantedSize{0, 0};   // what the viewport panel has room for
+    std::deque<float> cpuFrameMs;  // app frame time, newest last
+    std::uint64_t frame = 0;
+    double time = 0.0;
+
+    // Keys pressed since the last frame (GLFW key, modifier bits), in order.
+    // Dear ImGui 1.86 has no input queue: a tap shorter than a frame (common
+    // at llvmpipe frame rates) never shows as down, so shortcuts read these.
+    std::vector<std::pair<int, int>> keyPresses;
+
+    // Requests the app carries out after the UI is drawn.
+    bool requestScreenshot = false;
+    bool requestReloadShaders = false;
+    bool requestQuit = false;
+    std::string requestTimingsCsv;
+};
+
+}  // namespace dw::ui

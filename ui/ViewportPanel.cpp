@@ -1,0 +1,217 @@
+#include "ui/ViewportPanel.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
+
+#include "renderer/scene/CameraController.h"
+#include "ui/Widgets.h"
+
+namespace dw::ui {
+
+namespace {
+
+const char* modeName(DisplayMode m) {
+    switch (m) {
+        case DisplayMode::Deferred: return "deferred";
+        case DisplayMode::Textured: return "textured (forward)";
+        case DisplayMode::Wireframe: return "wireframe (forward)";
+    }
+    return "";
+}
+
+void toggleAnimation(UiState& state, RenderSession& session) {
+    if (state.animator.running()) state.animator.stop(session.mutableScene());
+    else state.animator.start(session.scene());
+}
+
+}  // namespace
+
+void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    const bool visible = ImGui::Begin(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    if (!visible) {
+        ImGui::End();
+        return;
+    }
+    ViewportView& v = state.viewport;
+    // Toolbar.
+    ImGui::SetNextItemWidth(150);
+    if (ImGui::BeginCombo("##mode", modeName(v.mode))) {
+        for (DisplayMode m : {DisplayMode::Deferred, DisplayMode::Textured, DisplayMode::Wireframe})
+            if (ImGui::Selectable(modeName(m), v.mode == m)) v.mode = m;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    ImGui::BeginDisabled(v.mode != DisplayMode::Deferred);
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::BeginCombo("##output", v.output.c_str())) {
+        for (const auto& o : session.pipeline().outputs().all())
+            if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == v.output)) v.output = o.decl.name;
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Checkbox("volumes", &v.overlay.lightVolumes);
+    ImGui::SameLine();
+    ImGui::Checkbox("selected only", &v.overlay.onlySelected);
+    ImGui::SameLine();
+    ImGui::Checkbox("axes", &v.overlay.axes);
+    ImGui::SameLine();
+    bool animate = state.animator.running();
+    if (ImGui::Checkbox("animate lights", &animate)) toggleAnimation(state, session);
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s camera | %dx%d", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
+                        state.renderSize.y);
+
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    state.wantedSize = glm::ivec2(std::max(16, static_cast<int>(avail.x)), std::max(16, static_cast<int>(avail.y)));
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##viewport", ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+    const bool hovered = ImGui::IsItemHovered();
+    const bool active = ImGui::IsItemActive();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ShownImage& img = state.viewportImage;
+    ImVec2 imgMin = origin, imgSize(0, 0);
+    if (img.texture && img.width > 0 && img.height > 0) {
+        // Fit, keeping the aspect ratio (the render size follows the panel a frame later).
+        const float scale = std::min(avail.x / img.width, avail.y / img.height);
+        imgSize = ImVec2(img.width * scale, img.height * scale);
+        imgMin = ImVec2(origin.x + (avail.x - imgSize.x) * 0.5f, origin.y + (avail.y - imgSize.y) * 0.5f);
+        dl->AddImage(textureId(img.texture), imgMin, ImVec2(imgMin.x + imgSize.x, imgMin.y + imgSize.y), ImVec2(0, 1), ImVec2(1, 0));
+    } else {
+        dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(30, 30, 34, 255));
+        const std::string why = img.unavailable.empty() ? "no image" : img.unavailable;
+        dl->AddText(ImVec2(origin.x + 12, origin.y + 12), IM_COL32(255, 140, 120, 255), why.c_str());
+    }
+
+    // Camera from the mouse.
+    ImGuiIO& io = ImGui::GetIO();
+    Camera& cam = session.camera();
+    if (active) {
+        const ImVec2 d = io.MouseDelta;
+        dragDistance += std::fabs(d.x) + std::fabs(d.y);
+        if (v.camera == CameraMode::Orbit) {
+            if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
+                camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
+            else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+                camera::orbit(cam, -d.x * 0.006f, d.y * 0.006f);
+        } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+            camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
+        }
+    } else {
+        dragDistance = 0.0f;
+    }
+    if (hovered && io.MouseWheel != 0.0f) {
+        if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
+        else camera::fly(cam, glm::vec3(0, 0, io.MouseWheel * std::max(camera::distance(cam), 1.0f) * 0.1f));
+    }
+
+    // Probe: hover reads the pixel under the cursor, a click (not a drag) pins it.
+    state.probe.hovering = false;
+    if (hovered && imgSize.x > 0 && state.renderSize.x > 0) {
+        const float u = (io.MousePos.x - imgMin.x) / imgSize.x, w = (io.MousePos.y - imgMin.y) / imgSize.y;
+        if (u >= 0 && u < 1 && w >= 0 && w < 1) {
+            const glm::ivec2 px(static_cast<int>(u * state.renderSize.x), static_cast<int>(w * state.renderSize.y));
+            if (!state.probe.pinned) {
+                state.probe.pixel = px;
+                state.probe.uv = glm::vec2(u, w);
+            }
+            state.probe.hovering = true;
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && dragDistance < 3.0f) {
+                state.probe.pinned = true;
+                state.probe.pixel = px;
+                state.probe.uv = glm::vec2(u, w);
+            }
+        }
+    }
+    if (state.probe.pinned && imgSize.x > 0) {
+        const ImVec2 p(imgMin.x + state.probe.uv.x * imgSize.x, imgMin.y + state.probe.uv.y * imgSize.y);
+        dl->AddCircle(p, 6.0f, IM_COL32(255, 255, 0, 255), 12, 1.5f);
+    }
+
+    // The newest error, over the image, until dismissed.
+    if (const Message* m = state.log.banner()) {
+        ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+        ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.05f, 0.05f, 0.92f));
+        const float width = std::max(avail.x - 16, 50.0f);
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float textHeight = ImGui::CalcTextSize(m->text.c_str(), nullptr, false, width - 2 * style.WindowPadding.x).y;
+        const float height = std::min(textHeight + ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4,
+                                      std::max(avail.y - 16, 40.0f));
+        ImGui::BeginChild("##banner", ImVec2(width, height), true);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(m->text.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::SmallButton("dismiss")) state.log.dismissBanner();
+        ImGui::EndChild();
+        ImGui::PopStyleColor();
+    }
+    ImGui::End();
+}
+
+void handleShortcuts(UiState& state, RenderSession& session, float dt) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return;
+    auto pressed = [&](int key, int mods = 0) {
+        for (const auto& [k, m] : state.keyPresses)
+            if (k == key && (m & mods) == mods) return true;
+        return false;
+    };
+    Camera& cam = session.camera();
+    ViewportView& v = state.viewport;
+    const bool flying = v.camera == CameraMode::Fly && ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    // Held keys move with the frame time; a tap shorter than a frame moves one step.
+    auto amount = [&](int key, float perSecond, float step) {
+        if (ImGui::IsKeyDown(key)) return perSecond * dt;
+        return pressed(key) ? step : 0.0f;
+    };
+    const float step = glm::radians(5.0f);
+    camera::orbit(cam, amount(GLFW_KEY_RIGHT, 1.5f, step) - amount(GLFW_KEY_LEFT, 1.5f, step),
+                  amount(GLFW_KEY_UP, 1.5f, step) - amount(GLFW_KEY_DOWN, 1.5f, step));
+    const float in = amount(GLFW_KEY_EQUAL, 1.0f, 0.15f) + amount(GLFW_KEY_KP_ADD, 1.0f, 0.15f);
+    const float out = amount(GLFW_KEY_MINUS, 1.0f, 0.15f) + amount(GLFW_KEY_KP_SUBTRACT, 1.0f, 0.15f);
+    if (in > 0.0f || out > 0.0f) camera::zoom(cam, std::pow(2.0f, out - in));
+    if (flying) {
+        const float speed = std::max(camera::distance(cam), 2.0f) * dt * (io.KeyShift ? 3.0f : 1.0f);
+        glm::vec3 move(0.0f);
+        if (ImGui::IsKeyDown(GLFW_KEY_W)) move.z += speed;
+        if (ImGui::IsKeyDown(GLFW_KEY_S)) move.z -= speed;
+        if (ImGui::IsKeyDown(GLFW_KEY_D)) move.x += speed;
+        if (ImGui::IsKeyDown(GLFW_KEY_A)) move.x -= speed;
+        if (ImGui::IsKeyDown(GLFW_KEY_E)) move.y += speed;
+        if (ImGui::IsKeyDown(GLFW_KEY_Q)) move.y -= speed;
+        camera::fly(cam, move);
+        return;  // WASD belong to flying while the right button is held
+    }
+    if (pressed(GLFW_KEY_A)) v.overlay.axes = !v.overlay.axes;
+    if (pressed(GLFW_KEY_D)) v.mode = DisplayMode::Deferred;
+    if (pressed(GLFW_KEY_T)) v.mode = DisplayMode::Textured;
+    if (pressed(GLFW_KEY_W)) v.mode = DisplayMode::Wireframe;
+    if (pressed(GLFW_KEY_V)) v.overlay.lightVolumes = !v.overlay.lightVolumes;
+    if (pressed(GLFW_KEY_F)) v.camera = v.camera == CameraMode::Orbit ? CameraMode::Fly : CameraMode::Orbit;
+    if (pressed(GLFW_KEY_L)) toggleAnimation(state, session);
+    if (pressed(GLFW_KEY_F5)) state.requestReloadShaders = true;
+    if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
+    if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
+    if (pressed(GLFW_KEY_Q, GLFW_MOD_CONTROL)) state.requestQuit = true;
+}
+
+const char* shortcutHelp() {
+    return "Camera (orbit): arrows rotate, + / - zoom, left drag rotates, middle or shift+left drag pans, wheel zooms\n"
+           "Camera (fly):   hold the right button: mouse looks, W A S D move, Q E down/up, shift faster; wheel moves\n"
+           "f     orbit / fly camera\n"
+           "d     deferred shading          t  textured (forward)        w  wireframe (forward)\n"
+           "a     world axes                 v  light-volume wireframes   l  animate lights\n"
+           "click pin the pixel probe        Esc unpin\n"
+           "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
+           "F12   screenshot of the window to PNG\n"
+           "Ctrl+Q quit";
+}
+
+}  // namespace dw::ui

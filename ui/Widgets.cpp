@@ -1,0 +1,29 @@
+#include "ui/Widgets.h"
+
+namespace dw::ui {
+
+const ImVec4 kErrorColor(1.0f, 0.42f, 0.38f, 1.0f);
+const ImVec4 kDimColor(0.6f, 0.6f, 0.62f, 1.0f);
+const ImVec4 kOkColor(0.55f, 0.85f, 0.55f, 1.0f);
+
+void image(unsigned texture, ImVec2 size) { ImGui::Image(textureId(texture), size, ImVec2(0, 1), ImVec2(1, 0)); }
+
+void helpMarker(const std::string& text) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+        ImGui::TextUnformatted(text.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+void wrappedColored(const ImVec4& color, const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+}  // namespace dw::ui
