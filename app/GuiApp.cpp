@@ -166,7 +166,7 @@ public:
             state.viewportImage.unavailable = viewportWhy;
         } else {
             const PublishedOutput* o = pipeline.outputs().find(state.viewport.output);
-            if (o->decl.name == "final") {
+            if (isDisplayReady(*o)) {
                 base = o->texture;
             } else {
                 BufferViewSettings s = state.viewport.settings;
@@ -193,7 +193,7 @@ public:
                 BufferViewSettings s = state.side.settings;
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
-                const gl::Texture& t = o->decl.name == "final" ? *o->texture : sideView_.render(*o, s);
+                const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
                 state.sideImage = {t.id(), t.width(), t.height(), {}};
             }
         }

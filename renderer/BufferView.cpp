@@ -47,15 +47,15 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     if (!target_ || target_.width() != w || target_.height() != h) {
         target_ = gl::Texture::create2D(GL_RGBA8, w, h);
         target_.setFilter(GL_NEAREST, GL_NEAREST);
-        fbo_ = gl::Framebuffer::create("buffer view");
-        fbo_.attachColor(0, target_);
-        fbo_.setDrawBuffers({0});
-        fbo_.checkComplete("buffer view");
+        fbo_ = gl::Framebuffer::forColor(target_, "buffer view");
     }
     const auto mapping = resolveMapping(output.decl.kind, s);
+    // One-channel buffers (AO, counts, depth) show grey rather than red.
+    const BufferViewSettings::Channel channel =
+        output.channels == 1 && s.channel == BufferViewSettings::Channel::RGB ? BufferViewSettings::Channel::R : s.channel;
     const bool autoRange = resolveAutoRange(output.decl.kind, s);
     ParamsGpu p;
-    p.modes = glm::ivec4(static_cast<int>(mapping), static_cast<int>(s.channel), autoRange ? 1 : 0, output.level);
+    p.modes = glm::ivec4(static_cast<int>(mapping), static_cast<int>(channel), autoRange ? 1 : 0, output.level);
     p.flags = glm::ivec4(output.decl.kind == OutputKind::NormalKL, output.decl.kind == OutputKind::Depth,
                          src.isSrgb() ? 1 : 0, 0);
     p.range = glm::vec4(s.rangeMin, s.rangeMax, s.nearPlane, s.farPlane);

@@ -1,4 +1,7 @@
-// The presets that ship with the workbench, in knob values.
+// The presets that ship with the workbench, in knob values: the quality
+// levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4, and
+// light-volume thresholds. Render size is not a knob (it follows the window,
+// or render --size), so the seed's resolutions are only named in descriptions.
 #include "renderer/Preset.h"
 
 namespace dw {
@@ -6,17 +9,39 @@ namespace dw {
 const std::vector<Preset>& builtinPresets() {
     static const std::vector<Preset> presets = [] {
         std::vector<Preset> v;
-        auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> knobs) {
+        auto add = [&](std::string name, std::string description, std::vector<std::pair<std::string, std::string>> knobs) {
             Preset p;
             p.name = std::move(name);
+            p.description = std::move(description);
             p.knobs = std::move(knobs);
             v.push_back(std::move(p));
         };
-        // Light-volume cost against accuracy: the threshold at which volumes end.
-        add("lights: exact (threshold 1/1024)", {{"lighting.threshold", "0.0009765625"}});
-        add("lights: 8-bit (threshold 1/255)", {{"lighting.threshold", "0.00392156862745098"}});
-        add("lights: coarse (threshold 5/256, seed 003)", {{"lighting.threshold", "0.01953125"}});
-        add("lights: brute force", {{"lighting.strategy", "fullscreen"}});
+        // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
+        add("Low", "seed 002: 800x600, SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, one 512^2 sun shadow map",
+            {{"ssao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+             {"ssao_blur.width", "21"}, {"shadows.map_size", "512"}});
+        add("Medium", "seed 002: 1280x720, SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, a 1024^2 shadow map",
+            {{"ssao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+             {"ssao_blur.width", "61"}, {"shadows.map_size", "1024"}});
+        add("High", "seed 002: 1920x1080, full-size SSAO with 16 samples and a 61-wide bilateral blur, a 2048^2 shadow map",
+            {{"ssao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+             {"ssao_blur.width", "61"}, {"shadows.map_size", "2048"}});
+        // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width.
+        const char* ssao[5][4] = {{"quarter", "8", "1", "10"}, {"quarter", "16", "1", "15"}, {"half", "16", "1", "20"},
+                                  {"half", "32", "1", "20"}, {"full", "32", "1", "30"}};
+        for (int i = 0; i < 5; ++i)
+            add("SSAO" + std::to_string(i + 1),
+                std::string("seed 000 table 6.4: ") + ssao[i][0] + " resolution, " + ssao[i][1] + " samples, radius " +
+                    ssao[i][2] + ", blur width " + ssao[i][3],
+                {{"ssao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
+                 {"ssao.radius", ssao[i][2]}, {"ssao_blur.mode", "bilateral"}, {"ssao_blur.width", ssao[i][3]}});
+        // Light-volume cost against accuracy: where volumes end.
+        add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
+            {{"lighting.threshold", "0.0009765625"}});
+        add("lights: 8-bit (threshold 1/255)", "seed 001: light volumes end at 1/255, one step of an 8-bit display",
+            {{"lighting.threshold", "0.00392156862745098"}});
+        add("lights: coarse (threshold 5/256)", "seed 003: light volumes end at 5/256", {{"lighting.threshold", "0.01953125"}});
+        add("lights: brute force", "every light over every pixel", {{"lighting.strategy", "fullscreen"}});
         return v;
     }();
     return presets;

@@ -11,6 +11,7 @@ namespace dw {
 
 class GpuScene;
 class KnobRegistry;
+class PassTimer;
 struct Scene;
 namespace gl {
 class ShaderLibrary;
@@ -39,6 +40,8 @@ struct FrameContext {
     std::uint64_t frameIndex = 0;
     // Every output something consumes this frame (the request and pass inputs).
     std::set<std::string> wanted;
+    // For sub-spans inside a pass (beginSubSpan/endSubSpan); may be null.
+    PassTimer* timer = nullptr;
 
     // Whether an output is consumed this frame; passes skip optional work otherwise.
     bool wants(const std::string& name) const { return wanted.count(name) != 0; }

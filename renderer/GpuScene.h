@@ -48,6 +48,8 @@ public:
     // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
     void drawDepthOnly(const gl::Program& program, Filter filter) const;
     std::size_t textureBytes() const { return textureBytes_; }
+    // The sky's environment map (equirectangular 2D or cube), or null.
+    const gl::Texture* environment() const { return environment_ ? &environment_ : nullptr; }
 
 private:
     int textureFor(const Scene& scene, int image, bool srgb);
@@ -61,7 +63,7 @@ private:
         int baseColor = -1, normal = -1, specular = -1, emissive = -1;
     };
     std::vector<MaterialTextures> materialTextures_;
-    gl::Texture white_, flatNormal_;
+    gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;
     std::size_t textureBytes_ = 0;
 };

@@ -7,6 +7,10 @@
 
 namespace dw {
 
+bool isDisplayReady(const PublishedOutput& output) {
+    return output.decl.kind == OutputKind::Color && output.texture && output.texture->internalFormat() == GL_RGBA8;
+}
+
 FloatImage readOutputRaw(const PublishedOutput& output) {
     if (!output.texture) throw Error("buffer '" + output.decl.name + "' has not been allocated");
     const gl::Texture& t = *output.texture;

@@ -10,6 +10,9 @@ namespace gl {
 class Texture;
 }
 
+// An 8-bit colour output that already holds display values (the tone-mapped
+// image and what follows it), shown and saved as it is.
+bool isDisplayReady(const PublishedOutput& output);
 // Raw values: depth as 1 channel, KL normals as 2, colour as 3 or 4.
 FloatImage readOutputRaw(const PublishedOutput& output);
 // An RGBA8 texture (e.g. a buffer view) as floats in [0, 1], top-down.

@@ -33,6 +33,17 @@ void OutputRegistry::bind(const std::string& name, const gl::Texture* texture, i
     o->level = level;
 }
 
+void OutputRegistry::bindAlias(const std::string& alias, const std::string& target) {
+    PublishedOutput* a = findMutable(alias);
+    const PublishedOutput* t = find(target);
+    if (!a || !t) throw Error("binding unknown alias '" + alias + "' to '" + target + "'");
+    a->texture = t->texture;
+    a->channels = t->channels;
+    a->level = t->level;
+    a->pass = t->pass;
+    a->producedThisFrame = t->producedThisFrame;
+}
+
 void OutputRegistry::markFrameStart() {
     for (auto& o : outputs_) o.producedThisFrame = false;
 }

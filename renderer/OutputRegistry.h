@@ -43,6 +43,8 @@ class OutputRegistry {
 public:
     void declare(const std::string& pass, const OutputDecl& decl);
     void bind(const std::string& name, const gl::Texture* texture, int channels, int level = 0);
+    // Makes `alias` show `target` this frame (texture, pass, produced state).
+    void bindAlias(const std::string& alias, const std::string& target);
     void markFrameStart();
     // Marks the pass's outputs in `wanted` as written this frame (a pass skips
     // optional outputs nothing asked for, so those keep older contents).

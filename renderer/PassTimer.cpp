@@ -51,12 +51,34 @@ void PassTimer::beginPass(const std::string& name) {
     s.begin.record();
     current_.spans.push_back(std::move(s));
     inPass_ = true;
+    passName_ = name;
+    passIndex_ = current_.spans.size() - 1;
     passStart_ = std::chrono::steady_clock::now();
 }
 
-void PassTimer::endPass() {
-    if (!inPass_) throw Error("PassTimer::endPass without beginPass");
+void PassTimer::beginSubSpan(const std::string& name) {
+    if (!inPass_ || inSubSpan_) throw Error("PassTimer::beginSubSpan outside a pass or inside a sub-span");
+    Span s;
+    s.name = passName_ + "/" + name;
+    s.begin = acquire();
+    s.begin.record();
+    current_.spans.push_back(std::move(s));
+    inSubSpan_ = true;
+    subStart_ = std::chrono::steady_clock::now();
+}
+
+void PassTimer::endSubSpan() {
+    if (!inSubSpan_) throw Error("PassTimer::endSubSpan without beginSubSpan");
     Span& s = current_.spans.back();
+    s.end = acquire();
+    s.end.record();
+    s.cpuMs = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - subStart_).count();
+    inSubSpan_ = false;
+}
+
+void PassTimer::endPass() {
+    if (!inPass_ || inSubSpan_) throw Error("PassTimer::endPass without beginPass, or inside a sub-span");
+    Span& s = current_.spans[passIndex_];
     s.end = acquire();
     s.end.record();
     s.cpuMs = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - passStart_).count();
@@ -73,6 +95,15 @@ void PassTimer::endFrame() {
     inFrame_ = false;
 }
 
+void PassTimer::abortFrame() {
+    for (auto& s : current_.spans) {
+        if (s.begin) pool_.push_back(std::move(s.begin));
+        if (s.end) pool_.push_back(std::move(s.end));
+    }
+    current_ = PendingFrame{};
+    inFrame_ = inPass_ = inSubSpan_ = false;
+}
+
 PassTimer::Series& PassTimer::seriesFor(const std::string& name) {
     for (auto& s : series_)
         if (s.name == name) return s;
@@ -81,19 +112,26 @@ PassTimer::Series& PassTimer::seriesFor(const std::string& name) {
 }
 
 void PassTimer::harvest(PendingFrame& f) {
+    // Spans with the same name in one frame (sub-spans) are added up.
+    std::vector<std::pair<std::string, TimingSample>> sums;
     for (auto& span : f.spans) {
         const std::uint64_t t0 = span.begin.result(), t1 = span.end.result();
-        TimingSample sample;
-        sample.frame = f.frame;
-        sample.gpuMs = t1 > t0 ? static_cast<float>(static_cast<double>(t1 - t0) * 1e-6) : 0.0f;
-        sample.cpuMs = span.cpuMs;
-        if (!paused_) {
-            Series& s = seriesFor(span.name);
-            s.samples.push_back(sample);
-            if (s.samples.size() > kHistory) s.samples.pop_front();
+        const float gpu = t1 > t0 ? static_cast<float>(static_cast<double>(t1 - t0) * 1e-6) : 0.0f;
+        auto it = std::find_if(sums.begin(), sums.end(), [&](const auto& p) { return p.first == span.name; });
+        if (it == sums.end()) {
+            sums.push_back({span.name, TimingSample{f.frame, gpu, span.cpuMs}});
+        } else {
+            it->second.gpuMs += gpu;
+            it->second.cpuMs += span.cpuMs;
         }
         pool_.push_back(std::move(span.begin));
         pool_.push_back(std::move(span.end));
+    }
+    if (paused_) return;
+    for (const auto& [name, sample] : sums) {
+        Series& s = seriesFor(name);
+        s.samples.push_back(sample);
+        if (s.samples.size() > kHistory) s.samples.pop_front();
     }
 }
 

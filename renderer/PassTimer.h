@@ -39,7 +39,13 @@ public:
     void beginFrame(std::uint64_t frame);
     void beginPass(const std::string& name);
     void endPass();
+    // A part of the current pass with its own series "<pass>/<name>"; spans of
+    // the same name in one frame are added up (e.g. every shadow map).
+    void beginSubSpan(const std::string& name);
+    void endSubSpan();
     void endFrame();
+    // Drops the frame in progress (a pass threw); its queries go back to the pool.
+    void abortFrame();
     // Moves finished frames into the history. With wait=true blocks until all
     // outstanding frames are done (the CLI's last step; never in a frame loop).
     void collect(bool wait = false);
@@ -79,7 +85,11 @@ private:
     PendingFrame current_;
     bool inFrame_ = false;
     bool inPass_ = false;
+    bool inSubSpan_ = false;
     bool paused_ = false;
+    std::string passName_;
+    size_t passIndex_ = 0;
+    std::chrono::steady_clock::time_point subStart_;
     std::chrono::steady_clock::time_point passStart_, frameStart_;
     std::vector<Series> series_;
 };

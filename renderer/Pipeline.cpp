@@ -2,16 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <set>
 
 #include "renderer/Error.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
+#include "renderer/passes/BloomPass.h"
+#include "renderer/passes/DofPass.h"
+#include "renderer/passes/FxaaPass.h"
 #include "renderer/passes/GBufferDecodePass.h"
 #include "renderer/passes/GeometryPass.h"
 #include "renderer/passes/LightingPass.h"
 #include "renderer/passes/LuminancePass.h"
+#include "renderer/passes/SkyboxPass.h"
+#include "renderer/passes/SsaoBlurPass.h"
+#include "renderer/passes/SsaoPass.h"
 #include "renderer/passes/TonemapPass.h"
 #include "renderer/scene/Scene.h"
 
@@ -24,15 +31,34 @@ const PassRecord* FrameReport::find(const std::string& name) const {
 }
 
 Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
-    // Seed 002 section 6: G-buffer, (SSAO), (transparency), L-buffer,
-    // luminance statistics, (bloom), tone mapping.
+    // Seed 002 section 6: G-buffer, SSAO, (transparency), L-buffer (the sky
+    // and the shadow maps feed it), luminance statistics, bloom, tone mapping;
+    // then depth of field and FXAA on the tone-mapped image.
     passes_.push_back(std::make_unique<GeometryPass>(knobs));
     passes_.push_back(std::make_unique<GBufferDecodePass>(knobs));
+    passes_.push_back(std::make_unique<SsaoPass>(knobs));
+    passes_.push_back(std::make_unique<SsaoBlurPass>(knobs));
+    passes_.push_back(std::make_unique<SkyboxPass>(knobs));
     passes_.push_back(std::make_unique<LightingPass>(knobs));
     passes_.push_back(std::make_unique<LuminancePass>(knobs));
+    passes_.push_back(std::make_unique<BloomPass>(knobs));
     passes_.push_back(std::make_unique<TonemapPass>(knobs));
+    passes_.push_back(std::make_unique<DofPass>(knobs));
+    passes_.push_back(std::make_unique<FxaaPass>(knobs));
     for (const auto& p : passes_)
         for (const auto& o : p->outputs()) outputs_.declare(p->name(), o);
+    outputs_.declare("tonemap", {kFinalOutput, OutputKind::Color,
+                                 "the display image: fxaa.result, dof.result or tonemap.result, whichever post pass ran last"});
+}
+
+std::string Pipeline::resolveFinal() const {
+    for (const char* candidate : kFinalChain) {
+        const PublishedOutput* o = outputs_.find(candidate);
+        if (!o) continue;
+        const RenderPass* p = findPass(o->pass);
+        if (p && (!scene_ || p->skipReason(knobs_, *scene_).empty())) return candidate;
+    }
+    return kFinalChain[std::size(kFinalChain) - 1];
 }
 
 Pipeline::~Pipeline() = default;
@@ -83,21 +109,23 @@ std::vector<PassRecord> Pipeline::plan(const FrameRequest& request, std::set<std
         if (!outputs_.find(name))
             throw Error("unknown buffer '" + name + "'; 'deferred-workbench list buffers' lists them");
     std::vector<PassRecord> records(passes_.size());
-    std::set<std::string> needed(request.outputs.begin(), request.outputs.end());
+    std::set<std::string> needed;
+    for (const auto& name : request.outputs) needed.insert(name == kFinalOutput ? resolveFinal() : name);
     // Backwards: a pass is wanted if something later (or the request) consumes it.
     std::vector<bool> wanted(passes_.size(), false);
     for (size_t i = passes_.size(); i-- > 0;) {
         const RenderPass& p = *passes_[i];
         records[i].name = p.name();
+        // A pass that is switched off says so, whether or not anything wants it.
+        const std::string skip = scene_ ? p.skipReason(knobs_, *scene_) : std::string();
+        if (!skip.empty()) {
+            records[i].reason = skip;
+            continue;
+        }
         bool consumed = false;
         for (const auto& o : p.outputs()) consumed = consumed || needed.count(o.name);
         if (!consumed) {
             records[i].reason = "nothing this frame consumes its outputs";
-            continue;
-        }
-        const std::string skip = scene_ ? p.skipReason(knobs_, *scene_) : std::string();
-        if (!skip.empty()) {
-            records[i].reason = skip;
             continue;
         }
         wanted[i] = true;
@@ -137,7 +165,9 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     report.frameIndex = frame_;
     std::set<std::string> wanted;
     report.passes = plan(request, &wanted);
-    for (const auto& name : request.outputs) {
+    const std::string finalName = resolveFinal();
+    for (const auto& requested : request.outputs) {
+        const std::string name = requested == kFinalOutput ? finalName : requested;
         const PublishedOutput* o = outputs_.find(name);
         for (const auto& r : report.passes)
             if (r.name == o->pass && !r.ran)
@@ -148,23 +178,38 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
     cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
     outputs_.markFrameStart();
-    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, std::move(wanted)};
+    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, std::move(wanted), &timer_};
 
     timer_.beginFrame(frame_);
-    for (size_t i = 0; i < passes_.size(); ++i) {
-        if (!report.passes[i].ran) continue;
-        RenderPass& p = *passes_[i];
+    try {
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            if (!report.passes[i].ran) continue;
+            RenderPass& p = *passes_[i];
+            gl::resetPipelineState(width_, height_);
+            cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+            glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
+            timer_.beginPass(p.name());
+            try {
+                p.execute(ctx);
+            } catch (...) {
+                glPopDebugGroup();
+                throw;
+            }
+            timer_.endPass();
+            glPopDebugGroup();
+            outputs_.markProduced(p.name(), ctx.wanted);
+            report.passes[i].stats = p.stats();
+        }
+    } catch (...) {
+        // A failed frame leaves nothing half-recorded for the next one.
+        timer_.abortFrame();
         gl::resetPipelineState(width_, height_);
-        cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
-        glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
-        timer_.beginPass(p.name());
-        p.execute(ctx);
-        timer_.endPass();
-        glPopDebugGroup();
-        outputs_.markProduced(p.name(), ctx.wanted);
-        report.passes[i].stats = p.stats();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        ++frame_;
+        throw;
     }
     timer_.endFrame();
+    outputs_.bindAlias(kFinalOutput, finalName);
     gl::resetPipelineState(width_, height_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;

@@ -40,6 +40,11 @@ struct FrameRequest {
     std::vector<std::string> outputs{"final"};
 };
 
+// "final" names the display image: the result of the last post-process pass
+// that is switched on this frame, in this order of preference.
+inline constexpr const char* kFinalOutput = "final";
+inline constexpr const char* kFinalChain[] = {"fxaa.result", "dof.result", "tonemap.result"};
+
 class Pipeline {
 public:
     // Declares every pass's knobs and outputs; needs no GL context.
@@ -69,6 +74,8 @@ public:
     const CameraUniforms& lastCamera() const { return camera_; }
     const GpuScene& gpuScene() const { return gpu_; }
     static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
+    // The output "final" stands for under the current knobs.
+    std::string resolveFinal() const;
     // Plans without executing: which passes would run for `request`, and
     // (optionally) every output that something consumes.
     std::vector<PassRecord> plan(const FrameRequest& request, std::set<std::string>* wanted = nullptr) const;

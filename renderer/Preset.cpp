@@ -51,6 +51,7 @@ std::string Preset::toJson() const {
     j["format"] = kFormat;
     j["version"] = 1;
     j["name"] = name;
+    if (!description.empty()) j["description"] = description;
     if (!scene.empty()) j["scene"] = scene;
     if (camera) {
         j["camera"] = {{"pos", vec3(camera->position)}, {"look-at", vec3(camera->target)}, {"up", vec3(camera->up)},
@@ -84,6 +85,7 @@ Preset Preset::fromJson(const std::string& text, const std::string& source) {
         throw FileError(source, "not a preset: \"format\" is " + j["format"].dump());
     Preset p;
     p.name = j.value("name", fs::path(source).stem().string());
+    if (j.contains("description") && j["description"].is_string()) p.description = j["description"].get<std::string>();
     if (j.contains("scene")) {
         if (!j["scene"].is_string()) throw FileError(source, "\"scene\" must be a string");
         p.scene = j["scene"].get<std::string>();

@@ -15,6 +15,7 @@ namespace dw {
 
 struct Preset {
     std::string name;
+    std::string description;
     std::string scene;  // scene spec (built-in name or path); empty: any scene
     std::optional<Camera> camera;
     std::vector<std::pair<std::string, std::string>> knobs;  // name -> value text, in order

@@ -42,10 +42,7 @@ FloatImage RenderSession::readRaw(const std::string& output) const {
 FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSettings settings) {
     const PublishedOutput* o = pipeline_.outputs().find(output);
     if (!o) throw Error("unknown buffer '" + output + "'");
-    if (o->decl.name == "final") {
-        FloatImage img = readOutputRaw(*o);
-        return img;
-    }
+    if (isDisplayReady(*o)) return readOutputRaw(*o);
     settings.nearPlane = camera_.nearPlane;
     settings.farPlane = camera_.farPlane;
     return readRgba8(view_.render(*o, settings));

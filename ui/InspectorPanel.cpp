@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "renderer/OutputReadback.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -128,7 +129,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
     if (shown && state.viewport.mode == DisplayMode::Deferred) {
         ImGui::Text("viewport: %s", shown->decl.name.c_str());
         ImGui::TextDisabled("%s", shown->decl.description.c_str());
-        if (shown->decl.name != "final") {
+        if (!isDisplayReady(*shown)) {
             std::pair<glm::vec4, glm::vec4> range;
             const bool haveRange = BufferView::resolveAutoRange(shown->decl.kind, state.viewport.settings) && state.viewportImage.texture;
             if (haveRange) range = session.bufferView().lastAutoRange();

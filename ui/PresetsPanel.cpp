@@ -45,7 +45,7 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     for (const auto& p : builtinPresets()) {
         if (ImGui::Selectable(p.name.c_str())) applyPreset(state, session, p);
         if (ImGui::IsItemHovered()) {
-            std::string tip;
+            std::string tip = p.description.empty() ? "" : p.description + "\n\n";
             for (const auto& [k, v] : p.knobs) tip += k + " = " + v + "\n";
             ImGui::SetTooltip("%s", tip.c_str());
         }

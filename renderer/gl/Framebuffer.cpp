@@ -17,6 +17,14 @@ Framebuffer Framebuffer::create(const char* label) {
     return fb;
 }
 
+Framebuffer Framebuffer::forColor(const Texture& texture, const char* label, int level) {
+    Framebuffer fb = create(label);
+    fb.attachColor(0, texture, level);
+    fb.setDrawBuffers({0});
+    fb.checkComplete(label);
+    return fb;
+}
+
 void Framebuffer::attachColor(int index, const Texture& texture, int level) {
     glNamedFramebufferTexture(id(), GL_COLOR_ATTACHMENT0 + index, texture.id(), level);
 }

@@ -14,6 +14,9 @@ class Framebuffer {
 public:
     Framebuffer() = default;
     static Framebuffer create(const char* label = nullptr);
+    // The common case: one colour target (a level of `texture`) as draw
+    // buffer 0, checked complete (throws naming `label`).
+    static Framebuffer forColor(const Texture& texture, const char* label, int level = 0);
 
     GLuint id() const { return name_.id(); }
     explicit operator bool() const { return static_cast<bool>(name_); }

@@ -73,6 +73,20 @@ Texture Texture::createCube(GLenum internalFormat, int size, int levels) {
     return t;
 }
 
+Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int layers) {
+    Texture t;
+    t.name_ = GlObject<TextureTraits>(createName(target));
+    t.target_ = target;
+    t.format_ = internalFormat;
+    t.width_ = t.height_ = std::max(size, 1);
+    t.levels_ = 1;
+    t.layers_ = std::max(layers, 1);
+    glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 int Texture::width(int level) const { return std::max(width_ >> level, 1); }
 int Texture::height(int level) const { return std::max(height_ >> level, 1); }
 
@@ -94,7 +108,7 @@ bool Texture::hasStencil() const {
     return format_ == GL_DEPTH24_STENCIL8 || format_ == GL_DEPTH32F_STENCIL8;
 }
 
-void Texture::setFilter(GLenum minFilter, GLenum magFilter) {
+void Texture::setFilter(GLenum minFilter, GLenum magFilter) const {
     if (target_ == GL_TEXTURE_2D_MULTISAMPLE) return;
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));

@@ -14,6 +14,9 @@ public:
     static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
     static Texture create2DMultisample(GLenum internalFormat, int width, int height, int samples);
     static Texture createCube(GLenum internalFormat, int size, int levels = 1);
+    // GL_TEXTURE_2D_ARRAY (layers) or GL_TEXTURE_CUBE_MAP_ARRAY (layers = 6 x cubes).
+    static Texture createArray(GLenum target, GLenum internalFormat, int size, int layers);
+    int layers() const { return layers_; }
     // Number of mip levels of a full chain down to 1x1.
     static int fullMipCount(int width, int height);
 
@@ -29,7 +32,8 @@ public:
     bool hasStencil() const;
     bool isSrgb() const { return format_ == GL_SRGB8_ALPHA8 || format_ == GL_SRGB8; }
 
-    void setFilter(GLenum minFilter, GLenum magFilter);
+    // Sampling state; const because it does not change the texture's contents.
+    void setFilter(GLenum minFilter, GLenum magFilter) const;
     void setWrap(GLenum wrap);
     void setBorderColor(float r, float g, float b, float a);
     // Depth textures: sample depth (not stencil) and optionally compare for shadows.
@@ -48,7 +52,7 @@ private:
     GlObject<TextureTraits> name_;
     GLenum target_ = GL_TEXTURE_2D;
     GLenum format_ = 0;
-    int width_ = 0, height_ = 0, levels_ = 0, samples_ = 0;
+    int width_ = 0, height_ = 0, levels_ = 0, samples_ = 0, layers_ = 1;
 };
 
 }  // namespace dw::gl

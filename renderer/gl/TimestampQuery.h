@@ -13,6 +13,7 @@ public:
     static TimestampQuery create();
 
     GLuint id() const { return name_.id(); }
+    explicit operator bool() const { return static_cast<bool>(name_); }
     void record() const;
     // Non-blocking: true when the result can be read without waiting.
     bool available() const;

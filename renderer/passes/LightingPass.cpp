@@ -1,11 +1,13 @@
 #include "renderer/passes/LightingPass.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "renderer/Error.h"
 #include "renderer/GpuScene.h"
 #include "renderer/LightVolume.h"
+#include "renderer/PassTimer.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -19,8 +21,11 @@ struct LightGpu {
     glm::vec4 directionCutoff{0.0f};
     glm::vec4 intensityExponent{0.0f};
     glm::vec4 attenuation{0.0f};
+    glm::mat4 shadowMatrix{1.0f};
+    glm::vec4 shadowParams{0.0f};
+    glm::vec4 shadowRange{0.0f};
 };
-static_assert(sizeof(LightGpu) == 128, "std430 layout");
+static_assert(sizeof(LightGpu) == 224, "std430 layout");
 
 struct LightingParamsGpu {
     glm::ivec4 modes{0};
@@ -44,7 +49,7 @@ bool sphereOutside(const std::array<glm::vec4, 6>& planes, const glm::vec3& c, f
 
 }  // namespace
 
-LightingPass::LightingPass(KnobRegistry& knobs) {
+LightingPass::LightingPass(KnobRegistry& knobs) : shadows_(knobs) {
     strategy_ = knobs.addEnum("lighting.strategy", {"stencil_volumes", "volumes", "fullscreen"}, StencilVolumes, "lighting",
                               "how point and spot lights find their pixels: stencil-tested light volumes (seed 001), "
                               "volumes without stencil, or every light over every pixel (brute force)");
@@ -68,13 +73,19 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
 }
 
 std::vector<OutputDecl> LightingPass::outputs() const {
-    return {{"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended"},
-            {"lighting.overlap", OutputKind::Count,
-             "light-shader invocations per pixel: how many light volumes passed the stencil test (R32F)"}};
+    std::vector<OutputDecl> out = {
+        {"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended"},
+        {"lighting.overlap", OutputKind::Count,
+         "light-shader invocations per pixel: how many light volumes passed the stencil test (R32F)"}};
+    for (int i = 0; i < kPublishedShadowMaps; ++i)
+        out.push_back({"shadow.map" + std::to_string(i), OutputKind::Scalar,
+                       "depth in the shadow map of shadow-casting light " + std::to_string(i) +
+                           " (2D; a cube map as a 3x2 grid of faces; paraboloids side by side)"});
+    return out;
 }
 
 PassIO LightingPass::inputs(const KnobRegistry&) const {
-    return {{"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"}, {"ssao.blurred"}};
+    return {{"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"}, {"ssao.blurred", "sky"}};
 }
 
 void LightingPass::setup(gl::ShaderLibrary& shaders) {
@@ -87,6 +98,7 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
     sphere_.create(unitSphereVolume());
     cone_.create(unitConeVolume());
     params_ = gl::Buffer::create(sizeof(LightingParamsGpu), nullptr, true, "lighting params");
+    shadows_.setup(shaders);
     white_ = gl::Texture::create2D(GL_R8, 1, 1);
     const std::uint8_t one = 255;
     white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
@@ -109,6 +121,75 @@ void LightingPass::resize(int width, int height, OutputRegistry& outputs) {
     outputs.bind("lighting.overlap", &overlap_, 1);
 }
 
+void LightingPass::shade(FrameContext& ctx, int light, Method method, const LightVolumeGeometry* geometry,
+                         bool depthFail, bool counting) {
+    // Every light sets the state it needs: a shadow map may have been drawn just before.
+    gl::resetPipelineState(ctx.width, ctx.height);
+    fbo_.bind();
+    if (counting) fbo_.setDrawBuffers({0, 1});
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    const gl::Program& fullscreen = counting ? *shadeCounting_.fullscreen : *shade_.fullscreen;
+    const gl::Program& volume = counting ? *shadeCounting_.volume : *shade_.volume;
+    if (method == Method::FullScreen) {
+        fullscreen.use();
+        fullscreen.set(0, light);
+        triangle_.draw();
+        return;
+    }
+    // Volumes may cross the near and far planes: clamp depth instead of clipping.
+    glEnable(GL_DEPTH_CLAMP);
+    if (method == Method::Volume) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+        volume.use();
+        volume.set(0, light);
+        geometry->draw();
+        return;
+    }
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    // 1. Mark pixels whose surface lies inside the volume.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    if (depthFail) {
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    } else {
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    }
+    stencilProgram_->use();
+    stencilProgram_->set(0, light);
+    geometry->draw();
+    // 2. Shade the marked pixels through the back faces, zeroing the stencil
+    //    on the way so the next light starts clean.
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+    volume.use();
+    volume.set(0, light);
+    geometry->draw();
+}
+
+void LightingPass::publishShadowMap(FrameContext& ctx, int shadowIndex, ShadowMaps::Kind kind, int slot) {
+    if (shadowIndex >= kPublishedShadowMaps) return;
+    const std::string name = "shadow.map" + std::to_string(shadowIndex);
+    if (!ctx.wants(name)) return;
+    shadows_.drawView(kind, slot, shadowViews_[shadowIndex], shadowViewFbos_[shadowIndex]);
+    ctx.outputs.bind(name, &shadowViews_[shadowIndex], 1);
+}
+
 void LightingPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const auto strategy = static_cast<Strategy>(k.get(strategy_));
@@ -116,11 +197,21 @@ void LightingPass::execute(FrameContext& ctx) {
     const glm::mat4& view = ctx.camera.view;
     const auto planes = frustumPlanes(ctx.camera.viewProjection);
     const bool cull = k.get(frustumCull_) && strategy != FullScreen;
+    const bool shadowsOn = shadows_.enabled(k);
+    const bool reuse = shadows_.reuse(k);
 
-    // Build the light table and sort lights into how each is drawn.
+    // The light table, and how each light is drawn, in the order they are shaded.
+    struct Item {
+        int index;
+        Method method;
+        const LightVolumeGeometry* geometry;
+        const Light* light;
+        double radius;
+    };
     std::vector<LightGpu> table;
-    std::vector<int> directional, fullscreen, spheres, cones;
+    std::vector<Item> items;
     counts_ = {};
+    int perKind[3] = {0, 0, 0};
     for (const Light& l : ctx.scene.lights) {
         if (!l.enabled) continue;
         const LightVolume v = computeLightVolume(l, threshold);
@@ -138,30 +229,62 @@ void LightingPass::execute(FrameContext& ctx) {
         const int type = l.type == LightType::Directional ? 0 : (l.type == LightType::Point ? 1 : 2);
         g.attenuation = glm::vec4(l.attenuation.constant, l.attenuation.linear, l.attenuation.quadratic, static_cast<float>(type));
         const int index = static_cast<int>(table.size());
+        Item item{index, Method::FullScreen, nullptr, &l, v.radius};
         if (l.type == LightType::Directional) {
-            directional.push_back(index);
+            ++counts_.directional;
         } else if (v.shape == VolumeShape::FullScreen || strategy == FullScreen) {
-            fullscreen.push_back(index);
+            ++counts_.fullscreen;
         } else {
             if (cull && sphereOutside(planes, l.position, static_cast<float>(v.radius))) {
                 ++counts_.frustumCulled;
                 continue;
             }
-            (v.shape == VolumeShape::Cone ? cones : spheres).push_back(index);
+            item.method = strategy == Volumes ? Method::Volume : Method::StencilVolume;
+            item.geometry = v.shape == VolumeShape::Cone ? &cone_ : &sphere_;
+            ++counts_.volumes;
         }
+        if (shadowsOn && l.castShadows) ++perKind[shadows_.kindOf(l, k)];
         table.push_back(g);
+        items.push_back(item);
     }
-    counts_.directional = static_cast<int>(directional.size());
-    counts_.fullscreen = static_cast<int>(fullscreen.size());
-    counts_.volumes = static_cast<int>(spheres.size() + cones.size());
+    // Directional first, then full-screen, then spheres and cones (fewer state changes).
+    std::stable_sort(items.begin(), items.end(), [this](const Item& a, const Item& b) {
+        auto rank = [this](const Item& i) {
+            if (i.light->type == LightType::Directional) return 0;
+            if (i.method == Method::FullScreen) return 1;
+            return i.geometry == &sphere_ ? 2 : 3;
+        };
+        return rank(a) < rank(b);
+    });
     if (table.empty()) table.push_back(LightGpu{});
     lights_.ensureSize(table.size() * sizeof(LightGpu), "lights");
+
+    // Shadow maps: reused light by light (flip-flop), or all rendered first.
+    shadows_.beginFrame(ctx, perKind);
+    int nextSlot[3] = {0, 0, 0};
+    int shadowIndex = 0;
+    auto renderShadow = [&](const Item& item) {
+        const ShadowMaps::Kind kind = shadows_.kindOf(*item.light, k);
+        const int slot = reuse ? 0 : nextSlot[kind]++;
+        if (ctx.timer) ctx.timer->beginSubSpan("shadow maps");
+        const ShadowLookup s = shadows_.render(ctx, *item.light, item.radius, slot);
+        publishShadowMap(ctx, shadowIndex++, kind, slot);
+        if (ctx.timer) ctx.timer->endSubSpan();
+        LightGpu& g = table[item.index];
+        g.shadowMatrix = s.matrix;
+        g.shadowParams = s.params;
+        g.shadowRange = s.range;
+    };
+    if (shadowsOn && !reuse)
+        for (const Item& item : items)
+            if (item.light->castShadows) renderShadow(item);
     lights_.update(0, table.size() * sizeof(LightGpu), table.data());
     lights_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
 
     const bool occlusion = ctx.produced("ssao.blurred");
+    const bool sky = ctx.produced("sky");
     LightingParamsGpu params;
-    params.modes = glm::ivec4(k.get(attenuation_), occlusion ? 1 : 0, k.get(ambientSpecular_) ? 1 : 0, 0);
+    params.modes = glm::ivec4(k.get(attenuation_), occlusion ? 1 : 0, k.get(ambientSpecular_) ? 1 : 0, sky ? 1 : 0);
     params.values = glm::vec4(k.get(windowExponent_), 0, 0, 0);
     params_.update(0, sizeof(params), &params);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
@@ -173,10 +296,18 @@ void LightingPass::execute(FrameContext& ctx) {
                        ctx.width, ctx.height, 1);
 
     const char* inputNames[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"};
-    for (GLuint unit = 0; unit < 5; ++unit) ctx.outputs.find(inputNames[unit])->texture->bind(unit);
-    if (occlusion) ctx.outputs.find("ssao.blurred")->texture->bind(5);
-    else white_.bind(5);
+    auto bindInputs = [&] {
+        for (GLuint unit = 0; unit < 5; ++unit) ctx.outputs.find(inputNames[unit])->texture->bind(unit);
+        if (occlusion) ctx.outputs.find("ssao.blurred")->texture->bind(5);
+        else white_.bind(5);
+        if (sky) ctx.outputs.find("sky")->texture->bind(9);
+        shadows_.bind();
+        lights_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    };
+    bindInputs();
 
+    gl::resetPipelineState(ctx.width, ctx.height);
     fbo_.bind();
     // Ambient + emission + background: the first write, no blending.
     fbo_.setDrawBuffers({0});
@@ -190,81 +321,36 @@ void LightingPass::execute(FrameContext& ctx) {
         fbo_.setDrawBuffers({0, 1});
         fbo_.clearColor(1, 0, 0, 0, 0);
     }
-    const gl::Program& fullscreenLight = counting ? *shadeCounting_.fullscreen : *shade_.fullscreen;
-    const gl::Program& volumeLight = counting ? *shadeCounting_.volume : *shade_.volume;
-
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
-
-    fullscreenLight.use();
-    for (int i : directional) {
-        fullscreenLight.set(0, i);
-        triangle_.draw();
-    }
-    for (int i : fullscreen) {
-        fullscreenLight.set(0, i);
-        triangle_.draw();
-    }
-
-    if (!spheres.empty() || !cones.empty()) {
-        // Volumes may cross the near and far planes: clamp depth instead of clipping.
-        glEnable(GL_DEPTH_CLAMP);
-        auto drawVolume = [&](int i, const LightVolumeGeometry& geo, const gl::Program& program) {
-            program.set(0, i);
-            geo.draw();
-        };
-        auto forEachVolume = [&](auto&& fn) {
-            for (int i : spheres) fn(i, sphere_);
-            for (int i : cones) fn(i, cone_);
-        };
-        if (strategy == Volumes) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_FRONT);
-            volumeLight.use();
-            forEachVolume([&](int i, const LightVolumeGeometry& g) { drawVolume(i, g, volumeLight); });
-        } else {
-            const bool depthFail = k.get(stencilCount_) == DepthFail;
-            glEnable(GL_STENCIL_TEST);
-            glStencilMask(0xFF);
-            forEachVolume([&](int i, const LightVolumeGeometry& g) {
-                // 1. Mark pixels whose surface lies inside the volume.
-                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                glDisable(GL_BLEND);
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LESS);
-                glDepthMask(GL_FALSE);
-                glDisable(GL_CULL_FACE);
-                glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                if (depthFail) {
-                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-                } else {
-                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-                }
-                stencilProgram_->use();
-                drawVolume(i, g, *stencilProgram_);
-                // 2. Shade the marked pixels through the back faces, zeroing the
-                //    stencil on the way so the next light starts clean.
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                glEnable(GL_BLEND);
-                glDisable(GL_DEPTH_TEST);
-                glEnable(GL_CULL_FACE);
-                glCullFace(GL_FRONT);
-                glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
-                volumeLight.use();
-                drawVolume(i, g, volumeLight);
-            });
+    const bool depthFail = k.get(stencilCount_) == DepthFail;
+    for (const Item& item : items) {
+        if (shadowsOn && reuse && item.light->castShadows) {
+            renderShadow(item);
+            const LightGpu& g = table[item.index];
+            lights_.update(item.index * sizeof(LightGpu), sizeof(LightGpu), &g);
+            bindInputs();
         }
+        shade(ctx, item.index, item.method, item.geometry, depthFail, counting);
     }
     fbo_.setDrawBuffers({0});
+    counts_.shadowed = shadows_.mapsRendered();
+    for (int i = counts_.shadowed; i < kPublishedShadowMaps; ++i)
+        if (ctx.wants("shadow.map" + std::to_string(i)))
+            throw Error("shadow.map" + std::to_string(i) + " is not produced: " + std::to_string(counts_.shadowed) +
+                        " shadow map(s) this frame (lights need \"shadow\": true, and shadows.enabled)");
     const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.frustumCulled + counts_.belowThreshold;
     stats_ = std::to_string(total) + " lights: " + std::to_string(counts_.directional) + " directional, " +
              std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) + " full-screen, " +
              std::to_string(counts_.frustumCulled) + " outside the frustum, " + std::to_string(counts_.belowThreshold) +
              " below threshold";
+    if (counts_.shadowed > 0) {
+        auto mib = [](std::size_t b) {
+            char buf[32];
+            std::snprintf(buf, sizeof(buf), "%.1f MiB", static_cast<double>(b) / (1024.0 * 1024.0));
+            return std::string(buf);
+        };
+        stats_ += "; " + std::to_string(counts_.shadowed) + " shadow maps, " + (reuse ? "one reused" : "kept") + ": " +
+                  mib(shadows_.bytesInUse()) + " (one per light: " + mib(shadows_.bytesKeepingAll()) + ")";
+    }
 }
 
 }  // namespace dw

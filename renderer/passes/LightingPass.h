@@ -1,6 +1,6 @@
 #pragma once
 // Lighting into the HDR L-buffer (seed 000 sections 3.2 and 5.2.1; seed 002
-// step 4). Reads the G-buffer (and ssao.blurred when it ran); writes lbuffer
+// step 4). Reads the G-buffer (and ssao.blurred and sky when they ran); writes lbuffer
 // (RGBA16F) by additive blending: the ambient term and emission, each
 // directional light as a full-screen pass, and point/spot lights by the chosen
 // strategy:
@@ -13,10 +13,13 @@
 // images agree up to rounding (seed 000 section 6.1). When asked for, it also
 // writes lighting.overlap: light-shader invocations per pixel, i.e. how many
 // volumes passed the stencil test there (the cost map of the strategy).
+// Lights with the shadow flag get a shadow map (renderer/ShadowMaps.h); the
+// first four are published as shadow.map0..3 when asked for.
 #include <vector>
 
 #include "renderer/KnobRegistry.h"
 #include "renderer/LightVolumeGeometry.h"
+#include "renderer/ShadowMaps.h"
 #include "renderer/RenderPass.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
@@ -40,12 +43,17 @@ public:
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
+    static constexpr int kPublishedShadowMaps = 4;
     struct Counts {
-        int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0;
+        int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
     };
     const Counts& lastCounts() const { return counts_; }
 
 private:
+    enum class Method { FullScreen, Volume, StencilVolume };
+    void shade(FrameContext& ctx, int light, Method method, const LightVolumeGeometry* geometry, bool depthFail,
+               bool counting);
+    void publishShadowMap(FrameContext& ctx, int shadowIndex, ShadowMaps::Kind kind, int slot);
 
     FloatKnob threshold_;
     EnumKnob strategy_, stencilCount_, attenuation_;
@@ -62,6 +70,9 @@ private:
     gl::Buffer lights_, params_;
     gl::Texture lbuffer_, overlap_, depthStencil_, white_;
     gl::Framebuffer fbo_;
+    ShadowMaps shadows_;
+    gl::Texture shadowViews_[kPublishedShadowMaps];
+    gl::Framebuffer shadowViewFbos_[kPublishedShadowMaps];
     Counts counts_;
     std::string stats_;
 };

@@ -9,14 +9,15 @@ namespace dw {
 namespace {
 struct TonemapParamsGpu {
     glm::ivec4 modes{0};
+    glm::ivec4 more{0};
     glm::vec4 values{0.0f};
 };
 }  // namespace
 
 TonemapPass::TonemapPass(KnobRegistry& knobs) {
-    operator_ = knobs.addEnum("tonemap.operator", {"simple", "reinhard"}, Reinhard, "tonemap",
-                              "simple L/(1+L) (seed 000 eq. 4.1) or Reinhard's global operator with log-average "
-                              "luminance and L_white (eqs. 4.3, 4.4)");
+    operator_ = knobs.addEnum("tonemap.operator", {"simple", "reinhard", "aces", "neutral", "clamp"}, Reinhard, "tonemap",
+                              "simple L/(1+L) (seed 000 eq. 4.1); Reinhard's global operator with log-average "
+                              "luminance and L_white (eqs. 4.3, 4.4); ACES (Hill's fit); Khronos PBR Neutral; clamp");
     key_ = knobs.addFloat("tonemap.key", 0.18, 0.01, 2.0, "tonemap",
                           "Reinhard key value a: the luminance the log-average maps to (eq. 4.3)");
     autoWhite_ = knobs.addBool("tonemap.auto_white", true, "tonemap",
@@ -26,12 +27,21 @@ TonemapPass::TonemapPass(KnobRegistry& knobs) {
     exposure_ = knobs.addFloat("tonemap.exposure", 0.0, -10.0, 10.0, "tonemap",
                                "exposure applied to the L-buffer before the operator", "EV");
     srgb_ = knobs.addBool("tonemap.srgb", true, "tonemap", "encode the output with the sRGB transfer curve");
+    autoExposure_ = knobs.addBool("tonemap.auto_exposure", false, "tonemap",
+                                  "scale by key / log-average for the simple, ACES, neutral and clamp operators too "
+                                  "(Reinhard always does)");
+    nanGuard_ = knobs.addBool("tonemap.nan_guard", true, "tonemap",
+                              "replace NaN with 0 and infinity with 65504 before tone mapping (and in the bloom input)");
+    bloomEnabled_ = BoolKnob{*knobs.find("bloom.enabled")};
+    bloomIntensity_ = FloatKnob{*knobs.find("bloom.intensity")};
+    bloomComposite_ = EnumKnob{*knobs.find("bloom.composite")};
 }
 
 PassIO TonemapPass::inputs(const KnobRegistry& knobs) const {
     PassIO io;
     io.inputs = {"lbuffer"};
-    if (knobs.get(operator_) == Reinhard) io.inputs.push_back("luminance.stats");
+    if (knobs.get(operator_) == Reinhard || knobs.get(autoExposure_)) io.inputs.push_back("luminance.stats");
+    io.optionalInputs = {"bloom.result"};
     return io;
 }
 
@@ -42,22 +52,22 @@ void TonemapPass::setup(gl::ShaderLibrary& shaders) {
 
 void TonemapPass::resize(int width, int height, OutputRegistry& outputs) {
     final_ = gl::Texture::create2D(GL_RGBA8, width, height);
-    fbo_ = gl::Framebuffer::create("final");
-    fbo_.attachColor(0, final_);
-    fbo_.setDrawBuffers({0});
-    fbo_.checkComplete("final image");
-    outputs.bind("final", &final_, 4);
+    fbo_ = gl::Framebuffer::forColor(final_, "final image");
+    outputs.bind("tonemap.result", &final_, 4);
 }
 
 void TonemapPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     TonemapParamsGpu p;
-    p.modes = glm::ivec4(k.get(operator_), k.get(autoWhite_) ? 1 : 0, k.get(srgb_) ? 1 : 0, 0);
-    p.values = glm::vec4(k.get(key_), k.get(white_), k.get(exposure_), 0.0f);
+    const bool bloom = ctx.produced("bloom.result");
+    p.modes = glm::ivec4(k.get(operator_), k.get(autoWhite_) ? 1 : 0, k.get(srgb_) ? 1 : 0, k.get(nanGuard_) ? 1 : 0);
+    p.more = glm::ivec4(bloom ? 1 + k.get(bloomComposite_) : 0, k.get(autoExposure_) ? 1 : 0, 0, 0);
+    p.values = glm::vec4(k.get(key_), k.get(white_), k.get(exposure_), k.get(bloomIntensity_));
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
     ctx.outputs.find("lbuffer")->texture->bind(0);
     if (ctx.produced("luminance.stats")) ctx.outputs.find("luminance.stats")->texture->bind(1);
+    if (bloom) ctx.outputs.find("bloom.result")->texture->bind(2);
     fbo_.bind();
     program_->use();
     triangle_.draw();

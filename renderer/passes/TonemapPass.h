@@ -1,6 +1,7 @@
 #pragma once
-// Tone mapping (seed 000 sections 4.2 and 5.3; seed 002 step 9): reads lbuffer
-// and, for Reinhard, luminance.stats; writes final (RGBA8, sRGB-encoded).
+// Tone mapping (seed 000 sections 4.2 and 5.3; seed 002 steps 9 and 10):
+// reads lbuffer, luminance.stats when an operator needs it, and bloom.result
+// when bloom ran; writes tonemap.result (RGBA8, sRGB-encoded).
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
 #include "renderer/gl/Buffer.h"
@@ -13,11 +14,11 @@ namespace dw {
 
 class TonemapPass : public RenderPass {
 public:
-    enum Operator { Simple = 0, Reinhard = 1 };
+    enum Operator { Simple = 0, Reinhard = 1, Aces = 2, Neutral = 3, Clamp = 4 };
     explicit TonemapPass(KnobRegistry& knobs);
     const char* name() const override { return "tonemap"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"final", OutputKind::Color, "tone-mapped display image (RGBA8, sRGB-encoded)"}};
+        return {{"tonemap.result", OutputKind::Color, "tone-mapped image (RGBA8, sRGB-encoded)"}};
     }
     PassIO inputs(const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
@@ -25,9 +26,9 @@ public:
     void execute(FrameContext& ctx) override;
 
 private:
-    EnumKnob operator_;
-    FloatKnob key_, white_, exposure_;
-    BoolKnob autoWhite_, srgb_;
+    EnumKnob operator_, bloomComposite_;
+    FloatKnob key_, white_, exposure_, bloomIntensity_;
+    BoolKnob autoWhite_, srgb_, nanGuard_, autoExposure_, bloomEnabled_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;

@@ -133,6 +133,11 @@ Scene courtyard() {
     s.name = "default";
     s.ambient = glm::vec3(0.035f, 0.04f, 0.05f);
     s.background = glm::vec3(0.10f, 0.12f, 0.20f);
+    s.sky.kind = Sky::Kind::Procedural;  // dusk, the sun low in the west
+    s.sky.zenith = {0.06f, 0.09f, 0.22f};
+    s.sky.horizon = {0.62f, 0.42f, 0.32f};
+    s.sky.ground = {0.06f, 0.05f, 0.05f};
+    s.sky.sunSizeDegrees = 2.0f;
     Builder b(s);
     BlockTexture tiles = blockTexture("tiles", 256, 4, 4, false, {0.55f, 0.52f, 0.47f}, {0.70f, 0.66f, 0.58f}, {0.25f, 0.24f, 0.22f}, 11);
     BlockTexture bricks = blockTexture("bricks", 256, 4, 8, true, {0.50f, 0.22f, 0.15f}, {0.65f, 0.33f, 0.22f}, {0.55f, 0.52f, 0.48f}, 23);
@@ -202,7 +207,8 @@ Scene courtyard() {
         const glm::vec3 pos(x, 4.6f, -D / 2 + 0.6f);
         const glm::vec3 target(x * 0.6f, 0.0f, (i % 2) ? -5.0f : 0.0f);
         const glm::vec3 c = glm::mix(glm::vec3(1.0f, 0.85f, 0.6f), hueColor(i / 8.0f), 0.35f);
-        b.light(LightType::Spot, "spot" + std::to_string(i), pos, target - pos, c * 6.0f, {1.0f, 0.35f, 0.25f}, 24.0f, 6.0f);
+        Light& spot = b.light(LightType::Spot, "spot" + std::to_string(i), pos, target - pos, c * 6.0f, {1.0f, 0.35f, 0.25f}, 24.0f, 6.0f);
+        spot.castShadows = i == 2 || i == 5;
     }
     s.camera.position = {-14.0f, 7.5f, 16.0f};
     s.camera.target = {0.5f, 1.2f, -1.0f};
@@ -219,6 +225,11 @@ Scene street() {
     s.settings = {{"tonemap.key", "0.05"}};
     s.ambient = glm::vec3(0.006f, 0.007f, 0.01f);
     s.background = glm::vec3(0.002f, 0.003f, 0.008f);
+    s.sky.kind = Sky::Kind::Procedural;  // night: a faint glow at the horizon, the moon
+    s.sky.zenith = {0.001f, 0.0015f, 0.005f};
+    s.sky.horizon = {0.012f, 0.012f, 0.018f};
+    s.sky.ground = {0.002f, 0.002f, 0.002f};
+    s.sky.sunSizeDegrees = 1.0f;
     Builder b(s);
     BlockTexture paving = blockTexture("paving", 256, 8, 8, true, {0.42f, 0.41f, 0.40f}, {0.52f, 0.50f, 0.48f}, {0.2f, 0.2f, 0.2f}, 5);
     BlockTexture facade = blockTexture("facade", 256, 2, 6, true, {0.55f, 0.50f, 0.42f}, {0.62f, 0.58f, 0.50f}, {0.4f, 0.4f, 0.38f}, 9);
@@ -261,8 +272,10 @@ Scene street() {
             b.place(arm, {side * 3.8f, 6.1f, zz});
             b.place(head, {xLamp, 6.05f, zz});
             b.place(glow, {xLamp, 5.97f, zz});
-            b.light(LightType::Spot, "lamp" + std::to_string(n++), {xLamp, 5.9f, zz}, {-side * 0.15f, -1.0f, 0.0f},
-                    glm::vec3(1.0f, 0.82f, 0.55f) * 16.0f, {1.0f, 0.22f, 0.2f}, 42.0f, 6.0f);
+            Light& lamp = b.light(LightType::Spot, "lamp" + std::to_string(n++), {xLamp, 5.9f, zz},
+                                  {-side * 0.15f, -1.0f, 0.0f}, glm::vec3(1.0f, 0.82f, 0.55f) * 16.0f, {1.0f, 0.22f, 0.2f},
+                                  42.0f, 6.0f);
+            lamp.castShadows = zz > 12.0f;  // the lamps near the camera
         }
     }
     // Parked cars as simple boxes.
@@ -310,10 +323,12 @@ Scene spheres() {
                                        rows[r].diffuse, rows[r].specular, exponent);
             b.place(b.mesh(shapes::sphere(0.62f, 48, 24), mat), {-6.4f + c * 1.6f, 0.0f, -2.4f + r * 1.6f});
         }
-    b.light(LightType::Directional, "key", {}, {-0.3f, -0.8f, -0.6f}, glm::vec3(1.1f, 1.05f, 1.0f));
-    b.light(LightType::Point, "warm", {-4.0f, 1.6f, 3.5f}, {0, -1, 0}, {2.0f, 1.2f, 0.5f}, {1.0f, 0.3f, 0.4f});
+    // One shadow caster of each kind: directional, point (cube map) and spot.
+    b.light(LightType::Directional, "key", {}, {0.7f, -0.7f, 0.25f}, glm::vec3(1.1f, 1.05f, 1.0f)).castShadows = true;
+    b.light(LightType::Point, "warm", {-4.0f, 1.6f, 3.5f}, {0, -1, 0}, {2.0f, 1.2f, 0.5f}, {1.0f, 0.3f, 0.4f}).castShadows = true;
     b.light(LightType::Point, "cool", {4.0f, 1.6f, 3.5f}, {0, -1, 0}, {0.5f, 1.0f, 2.0f}, {1.0f, 0.3f, 0.4f});
-    b.light(LightType::Spot, "spot", {0.0f, 5.0f, 2.0f}, {0.0f, -1.0f, -0.6f}, glm::vec3(3.0f), {1.0f, 0.1f, 0.05f}, 20.0f, 10.0f);
+    b.light(LightType::Spot, "spot", {0.0f, 5.0f, 2.0f}, {0.0f, -1.0f, -0.6f}, glm::vec3(3.0f), {1.0f, 0.1f, 0.05f}, 20.0f, 10.0f)
+        .castShadows = true;
     s.camera.position = {0.0f, 5.0f, 10.5f};
     s.camera.target = {0.0f, -0.4f, 0.0f};
     s.camera.fovYDegrees = 50.0f;
@@ -327,8 +342,8 @@ Scene spheres() {
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
     static const std::vector<BuiltinSceneInfo> scenes = {
         {"default", "courtyard at dusk: columns, fountain, a sun, 36 coloured point lights, 8 spot lights"},
-        {"street", "night road lit by 30 spot-light street lamps (the CMSC 23700 motivating case)"},
-        {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents"},
+        {"street", "night road lit by 22 spot-light street lamps (the 9 nearest the camera cast shadows) and a moon (the CMSC 23700 motivating case)"},
+        {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents, a shadowing key light, a point and a spot light"},
     };
     return scenes;
 }

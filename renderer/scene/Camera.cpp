@@ -23,6 +23,16 @@ glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fovYDegrees), aspect, nearPlane, farPlane);
 }
 
+void Camera::fitClipPlanes(const Bounds& bounds) {
+    if (bounds.empty()) return;
+    const float r = std::max(bounds.radius(), 1e-3f);
+    const float d = glm::length(bounds.center() - position);
+    farPlane = d + r * 1.05f;
+    // Inside the bounds the nearest surface may be close: a small fixed fraction.
+    nearPlane = d > r ? std::max(d - r, farPlane * 1e-4f) : std::max(r * 1e-3f, farPlane * 1e-5f);
+    nearPlane = std::min(nearPlane, farPlane * 0.5f);
+}
+
 Camera Camera::framing(const Bounds& bounds, float fovYDegrees) {
     Camera c;
     c.fovYDegrees = fovYDegrees;

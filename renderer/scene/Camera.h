@@ -18,6 +18,8 @@ struct Camera {
     glm::mat4 projection(float aspect) const;
     // Places the camera to see `bounds` from the front-right, above.
     static Camera framing(const Bounds& bounds, float fovYDegrees = 50.0f);
+    // Near and far planes that hold `bounds` as seen from the current position.
+    void fitClipPlanes(const Bounds& bounds);
 };
 
 }  // namespace dw

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/ImageIO.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/Image.h"
 #include "renderer/scene/Light.h"
@@ -12,6 +13,25 @@
 #include "renderer/scene/Mesh.h"
 
 namespace dw {
+
+// What covers the pixels no geometry covers (seed 004 "Skybox").
+struct Sky {
+    enum class Kind { Color, Procedural, Environment };
+    Kind kind = Kind::Color;  // Color: Scene::background
+    // Procedural: a gradient from the horizon to the zenith (and to the ground
+    // below the horizon), with a sun disc towards the first directional light.
+    glm::vec3 zenith{0.12f, 0.22f, 0.48f};
+    glm::vec3 horizon{0.62f, 0.66f, 0.72f};
+    glm::vec3 ground{0.12f, 0.11f, 0.10f};
+    float sunSizeDegrees = 1.5f;
+    // Environment: an equirectangular (lat-long) image, or a cube map from six
+    // images in GL face order +X -X +Y -Y +Z -Z. HDR/EXR or any OIIO format.
+    std::string environmentSource;
+    FloatImage equirect;
+    std::vector<FloatImage> cubeFaces;
+    float intensity = 1.0f;
+    float rotationDegrees = 0.0f;  // about +Y
+};
 
 struct MeshInstance {
     int mesh = 0;
@@ -23,7 +43,8 @@ struct Scene {
     std::string source;  // file path, or "builtin:<name>"
     Camera camera;
     glm::vec3 ambient{0.05f};
-    glm::vec3 background{0.0f};  // HDR colour of pixels no geometry covers
+    glm::vec3 background{0.0f};  // HDR colour of pixels no geometry covers (Sky::Kind::Color)
+    Sky sky;
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Image> images;

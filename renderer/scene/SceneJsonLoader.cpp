@@ -117,7 +117,7 @@ public:
 
     void parse(const json& root) {
         r_.requireObject(root, "");
-        r_.checkKeys(root, "", {"name", "camera", "ambient", "background", "lighting", "lights", "materials", "objects", "description", "settings"});
+        r_.checkKeys(root, "", {"name", "camera", "ambient", "background", "sky", "lighting", "lights", "materials", "objects", "description", "settings"});
         scene_.name = r_.string(root, "name", "", fs::path(r_.file()).stem().string());
         scene_.ambient = r_.vec3(root, "ambient", "", glm::vec3(0.05f));
         scene_.background = r_.vec3(root, "background", "", glm::vec3(0.0f));
@@ -130,6 +130,7 @@ public:
             for (size_t i = 0; i < objs.size(); ++i) parseObject(objs[i], "objects[" + std::to_string(i) + "]");
         }
         if (root.contains("settings")) parseSettings(root["settings"]);
+        if (root.contains("sky")) parseSky(root["sky"]);
         if (root.contains("camera")) {
             parseCamera(root["camera"]);
         } else {
@@ -138,6 +139,57 @@ public:
     }
 
 private:
+    void parseSky(const json& j) {
+        r_.requireObject(j, "sky");
+        r_.checkKeys(j, "sky", {"type", "zenith", "horizon", "ground", "sun-size", "file", "files", "intensity", "rotation"});
+        Sky& sky = scene_.sky;
+        const std::string type = r_.string(j, "type", "sky", "procedural");
+        sky.intensity = r_.number(j, "intensity", "sky", 1.0f);
+        if (sky.intensity < 0.0f) r_.fail("sky.intensity", "must not be negative");
+        sky.rotationDegrees = r_.number(j, "rotation", "sky", 0.0f);
+        auto image = [&](const std::string& rel, const std::string& where) {
+            const std::string full = r_.resolve(rel).string();
+            if (!fs::exists(full)) r_.fail(where, "environment image '" + rel + "' not found (looked for " + full + ")");
+            try {
+                FloatImage img = loadImageFloat(full);
+                if (img.channels < 3) r_.fail(where, "environment image '" + rel + "' needs 3 or 4 channels");
+                return img;
+            } catch (const FileError& e) {
+                r_.fail(where, std::string("cannot load environment image: ") + e.what());
+            }
+        };
+        if (type == "color") {
+            sky.kind = Sky::Kind::Color;
+        } else if (type == "procedural") {
+            sky.kind = Sky::Kind::Procedural;
+            sky.zenith = r_.vec3(j, "zenith", "sky", sky.zenith);
+            sky.horizon = r_.vec3(j, "horizon", "sky", sky.horizon);
+            sky.ground = r_.vec3(j, "ground", "sky", sky.ground);
+            sky.sunSizeDegrees = r_.number(j, "sun-size", "sky", sky.sunSizeDegrees);
+        } else if (type == "environment") {
+            sky.kind = Sky::Kind::Environment;
+            const std::string rel = r_.string(j, "file", "sky", "");
+            if (rel.empty()) r_.fail("sky", "an environment sky needs \"file\" (an equirectangular image)");
+            sky.equirect = image(rel, "sky.file");
+            sky.environmentSource = r_.resolve(rel).string();
+        } else if (type == "cubemap") {
+            sky.kind = Sky::Kind::Environment;
+            if (!j.contains("files") || !j["files"].is_array() || j["files"].size() != 6)
+                r_.fail("sky.files", "a cube map needs 6 image files (+X -X +Y -Y +Z -Z)");
+            for (size_t i = 0; i < 6; ++i) {
+                const std::string where = "sky.files[" + std::to_string(i) + "]";
+                if (!j["files"][i].is_string()) r_.fail(where, "expected a file name");
+                sky.cubeFaces.push_back(image(j["files"][i].get<std::string>(), where));
+                const FloatImage& f = sky.cubeFaces.back();
+                if (f.width != f.height || f.width != sky.cubeFaces[0].width)
+                    r_.fail(where, "cube faces must be square and all the same size");
+            }
+            sky.environmentSource = r_.resolve(j["files"][0].get<std::string>()).string();
+        } else {
+            r_.fail("sky.type", "expected \"color\", \"procedural\", \"environment\" or \"cubemap\", got \"" + type + "\"");
+        }
+    }
+
     // Knob values are checked against the registry when the scene is applied.
     void parseSettings(const json& j) {
         r_.requireObject(j, "settings");
@@ -161,6 +213,7 @@ private:
         c.up = r_.vec3(j, "up", "camera", glm::vec3(0, 1, 0));
         c.fovYDegrees = r_.positive(j, "fov", "camera", 60.0f);
         if (c.fovYDegrees >= 179.0f) r_.fail("camera.fov", "must be less than 179 degrees");
+        c.fitClipPlanes(scene_.bounds());
         c.nearPlane = r_.positive(j, "near", "camera", c.nearPlane);
         c.farPlane = r_.positive(j, "far", "camera", c.farPlane);
         if (c.farPlane <= c.nearPlane) r_.fail("camera.far", "must be greater than camera.near");

@@ -32,6 +32,7 @@ void addDefaultLightRig(Scene& scene) {
     scene.lights.push_back(fill);
     scene.ambient = glm::vec3(0.12f);
     scene.background = glm::vec3(0.05f, 0.055f, 0.065f);
+    scene.sky.kind = Sky::Kind::Procedural;
 }
 
 Scene loadScene(const std::string& spec) {

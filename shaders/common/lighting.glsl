@@ -17,6 +17,9 @@ struct Light {
     vec4 directionCutoff;   // view-space direction the light points to, cos(cutoff)
     vec4 intensityExponent; // rgb intensity, spot exponent
     vec4 attenuation;       // constant, linear, quadratic, type
+    mat4 shadowMatrix;      // view space -> the shadow map's space
+    vec4 shadowParams;      // mode, PCF radius, texel size, layer
+    vec4 shadowRange;       // near, far (cube and paraboloid maps)
 };
 
 layout(std430, binding = LIGHT_SSBO) readonly buffer LightTable {

@@ -1,5 +1,6 @@
 #version 450 core
-// First write of the L-buffer: the background where no geometry is, else the
+// First write of the L-buffer: the sky (or the background colour) where no
+// geometry is, else the
 // ambient term k_a i_a (seed 000 eq. 2.1; k_a = diffuse, plus specular when
 // lighting.ambient_specular is on) scaled by the ambient-occlusion
 // accessibility when there is one, plus emitted radiance.
@@ -8,6 +9,7 @@
 
 layout(location = 0) uniform vec3 uAmbient;
 layout(location = 1) uniform vec3 uBackground;
+layout(binding = 9) uniform sampler2D uSky;  // when lightingParams.modes.w != 0
 
 out vec4 outColor;
 
@@ -15,7 +17,7 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     Surface s = readSurface(px);
     if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
-        outColor = vec4(uBackground, 1.0);
+        outColor = vec4(lightingParams.modes.w != 0 ? texelFetch(uSky, px, 0).rgb : uBackground, 1.0);
         return;
     }
     float access = lightingParams.modes.y != 0 ? texelFetch(uOcclusion, px, 0).r : 1.0;

@@ -1,45 +1,105 @@
 #version 450 core
 // Tone mapping of the L-buffer to the displayable image (seed 000 sections
-// 4.2 and 5.3; seed 002 step 9). Operators act on luminance and rescale RGB,
-// which keeps chromaticity (the seed converts to XYZ and maps Y):
-//   simple:   L_d = L / (1 + L)                                   (eq. 4.1)
+// 4.2 and 5.3; seed 002 step 9), with the bloom composited as the seed does
+// it (step 10: on top of the tone-mapped image, blended by its luminance) or
+// added in HDR before the operator.
+//   simple:   L_d = L / (1 + L) on luminance                      (eq. 4.1)
 //   reinhard: L = a / lum_log * L_w;
-//             L_d = L (1 + L / L_white^2) / (1 + L)               (eqs. 4.3, 4.4)
-// with lum_log and max(L_w) from the GPU reduction in luminance.stats.
+//             L_d = L (1 + L / L_white^2) / (1 + L) on luminance  (eqs. 4.3, 4.4)
+//   aces:     Hill's fit of the ACES RRT + ODT, per channel
+//   neutral:  Khronos PBR Neutral, per channel
+//   clamp:    exposure only
+// Luminance operators rescale RGB by L_d / L_w, which keeps chromaticity
+// (the seed maps Y in XYZ). A guard replaces NaN and infinity first.
 #include "../common/color.glsl"
 #include "../common/bindings.glsl"
 
 #define OP_SIMPLE 0
 #define OP_REINHARD 1
+#define OP_ACES 2
+#define OP_NEUTRAL 3
+#define OP_CLAMP 4
 
 layout(binding = 0) uniform sampler2D uHdr;
 layout(binding = 1) uniform sampler2D uStats;
+layout(binding = 2) uniform sampler2D uBloom;
 
 layout(std140, binding = PASS_UBO) uniform TonemapParams {
-    ivec4 modes;   // x operator, y auto white, z sRGB output
-    vec4 values;   // x key a, y manual L_white, z exposure (EV)
+    ivec4 modes;   // x operator, y auto white, z sRGB output, w NaN guard
+    ivec4 more;    // x bloom (0 none, 1 LDR by luminance, 2 HDR add), y auto exposure for the other operators
+    vec4 values;   // x key a, y manual L_white, z exposure (EV), w bloom intensity
 } params;
 
 in vec2 vUv;
 out vec4 outColor;
 
+vec3 guard(vec3 c) {
+    if (params.modes.w == 0) return c;
+    // NaN -> 0, +inf -> the largest half float, -inf and negatives -> 0.
+    vec3 g = mix(c, vec3(0.0), isnan(c));
+    return clamp(g, 0.0, 65504.0);
+}
+
+vec3 acesFitted(vec3 c) {
+    const mat3 inputMat = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566, 0.83777);
+    const mat3 outputMat = mat3(1.60475, -0.10208, -0.00327, -0.53108, 1.10813, -0.07276, -0.07367, -0.00605, 1.07602);
+    vec3 v = inputMat * c;
+    vec3 a = v * (v + 0.0245786) - 0.000090537;
+    vec3 b = v * (0.983729 * v + 0.4329510) + 0.238081;
+    return clamp(outputMat * (a / b), 0.0, 1.0);
+}
+
+vec3 pbrNeutral(vec3 color) {
+    const float startCompression = 0.8 - 0.04;
+    const float desaturation = 0.15;
+    float x = min(color.r, min(color.g, color.b));
+    float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+    color -= offset;
+    float peak = max(color.r, max(color.g, color.b));
+    if (peak < startCompression) return color;
+    const float d = 1.0 - startCompression;
+    float newPeak = 1.0 - d * d / (peak + d - startCompression);
+    color *= newPeak / peak;
+    float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+    return mix(color, vec3(newPeak), g);
+}
+
 void main() {
-    vec3 hdr = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;
-    if (!isFiniteVec(hdr)) hdr = vec3(0.0);
-    hdr = max(hdr, vec3(0.0)) * exp2(params.values.z);
-    float Lw = luminance(hdr);
-    float Ld;
-    if (params.modes.x == OP_REINHARD) {
-        vec4 stats = texelFetch(uStats, ivec2(0), 0);
-        float scale = params.values.x / max(stats.x, 1e-9);
-        float L = scale * Lw;
-        float white = params.modes.y != 0 ? scale * stats.y * exp2(params.values.z) : params.values.y;
-        white = max(white, 1e-6);
-        Ld = L * (1.0 + L / (white * white)) / (1.0 + L);
+    vec3 hdr = guard(texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb);
+    vec3 bloom = params.more.x != 0 ? guard(texture(uBloom, vUv).rgb) : vec3(0.0);
+    vec4 stats = texelFetch(uStats, ivec2(0), 0);
+    int op = params.modes.x;
+    // Exposure, and for the key-based operators the log-average normalisation.
+    float scale = exp2(params.values.z);
+    if (op == OP_REINHARD || params.more.y != 0) scale *= params.values.x / max(stats.x, 1e-9);
+    hdr *= scale;
+    bloom *= scale;
+    if (params.more.x == 2) hdr += params.values.w * bloom;
+    vec3 rgb;
+    if (op == OP_ACES) {
+        rgb = acesFitted(hdr);
+    } else if (op == OP_NEUTRAL) {
+        rgb = clamp(pbrNeutral(hdr), 0.0, 1.0);
+    } else if (op == OP_CLAMP) {
+        rgb = clamp(hdr, 0.0, 1.0);
     } else {
-        Ld = Lw / (1.0 + Lw);
+        float L = luminance(hdr);
+        float Ld;
+        if (op == OP_REINHARD) {
+            float white = params.modes.y != 0 ? scale * stats.y : params.values.y;
+            white = max(white, 1e-6);
+            Ld = L * (1.0 + L / (white * white)) / (1.0 + L);
+        } else {
+            Ld = L / (1.0 + L);
+        }
+        rgb = L > 0.0 ? clamp(hdr * (Ld / L), 0.0, 1.0) : vec3(0.0);
     }
-    vec3 rgb = Lw > 0.0 ? hdr * (Ld / Lw) : vec3(0.0);
-    rgb = clamp(rgb, 0.0, 1.0);
+    if (params.more.x == 1) {
+        // Seed 002 step 10 / seed 004: the bloom, compressed like the image,
+        // blended on top with alpha = its luminance.
+        vec3 b = bloom / (1.0 + bloom);
+        float a = clamp(luminance(b), 0.0, 1.0);
+        rgb = clamp(rgb + params.values.w * a * b, 0.0, 1.0);
+    }
     outColor = vec4(params.modes.z != 0 ? linearToSrgb(rgb) : rgb, 1.0);
 }

@@ -18,11 +18,17 @@ std::vector<std::string> ran(const FrameReport& r) {
 
 TEST(Pipeline, TheFinalImageRunsTheSeedOrderAndSkipsTheDecoder) {
     auto s = test::makeSession(96, 54);
-    s->loadScene("spheres");
+    s->loadScene("default");
     const FrameReport r = s->render();
-    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "lighting", "luminance", "tonemap"}));
+    // Seed 002 section 6 with the sky before the L-buffer and FXAA last.
+    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "ssao", "ssao_blur", "skybox", "lighting", "luminance", "bloom",
+                                                "tonemap", "fxaa"}));
     EXPECT_EQ(r.find("gbuffer_decode")->reason, "nothing this frame consumes its outputs");
+    EXPECT_EQ(r.find("dof")->reason, "switched off (dof.enabled = false)");
     EXPECT_NE(r.find("lighting")->stats.find("lights"), std::string::npos);
+    // "final" is the last post pass's result, and is listed under it.
+    EXPECT_EQ(s->pipeline().outputs().find("final")->texture, s->pipeline().outputs().find("fxaa.result")->texture);
+    EXPECT_EQ(s->pipeline().outputs().find("final")->pass, "fxaa");
 }
 
 TEST(Pipeline, InspectingAGBufferRunsOnlyTheGeometryPass) {
@@ -36,6 +42,7 @@ TEST(Pipeline, TheSimpleToneMapperNeedsNoLuminancePass) {
     auto s = test::makeSession(96, 54);
     s->loadScene("spheres");
     s->knobs().setFromString("tonemap.operator", "simple");
+    s->knobs().setFromString("bloom.enabled", "false");  // bloom's threshold needs the statistics too
     const FrameReport r = s->render();
     EXPECT_FALSE(r.find("luminance")->ran);
     EXPECT_EQ(r.find("luminance")->reason, "nothing this frame consumes its outputs");
@@ -76,16 +83,19 @@ TEST(Pipeline, EveryPassThatRanIsTimed) {
 
 TEST(Pipeline, ResizeRecreatesEverySizeDependentBuffer) {
     auto s = test::makeSession(64, 36);
-    s->loadScene("spheres");
+    s->loadScene("default");
     s->render();
     s->resize(80, 50);
     s->render({{"final", "gbuffer.view_normal"}});
-    for (const auto& o : s->pipeline().outputs().all()) {
-        if (o.decl.name == "luminance.stats") continue;
-        ASSERT_NE(o.texture, nullptr) << o.decl.name;
-        EXPECT_EQ(o.texture->width(), 80) << o.decl.name;
-        EXPECT_EQ(o.texture->height(), 50) << o.decl.name;
+    for (const char* name : {"gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_normal", "ssao.blurred", "sky",
+                             "lbuffer", "tonemap.result", "fxaa.result", "final"}) {
+        const PublishedOutput* o = s->pipeline().outputs().find(name);
+        ASSERT_NE(o->texture, nullptr) << name;
+        EXPECT_EQ(o->texture->width(), 80) << name;
+        EXPECT_EQ(o->texture->height(), 50) << name;
     }
+    EXPECT_EQ(s->pipeline().outputs().find("ssao.raw")->texture->width(), 40);  // half resolution by default
+    EXPECT_EQ(s->pipeline().outputs().find("bloom.bright")->texture->width(), 40);
     EXPECT_EQ(s->readRaw("final").width, 80);
 }
 

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "renderer/GpuScene.h"
+#include "renderer/passes/BloomPass.h"
 #include "renderer/passes/TonemapPass.h"
 #include "tests/support/TestSupport.h"
 
@@ -21,12 +22,12 @@ double lum(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * 
 // Runs TonemapPass alone on given HDR pixels and luminance statistics.
 class TonemapHarness {
 public:
-    explicit TonemapHarness(std::vector<glm::vec4> hdr) : hdr_(std::move(hdr)), pass_(knobs_) {
+    explicit TonemapHarness(std::vector<glm::vec4> hdr) : hdr_(std::move(hdr)), bloom_(knobs_), pass_(knobs_) {
         test::initGl();
         shaders_ = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::locateRoot());
         outputs_.declare("lighting", {"lbuffer", OutputKind::HdrColor, ""});
         outputs_.declare("luminance", {"luminance.stats", OutputKind::Scalar, ""});
-        outputs_.declare("tonemap", {"final", OutputKind::Color, ""});
+        outputs_.declare("tonemap", {"tonemap.result", OutputKind::Color, ""});
         const int w = static_cast<int>(hdr_.size());
         input_ = gl::Texture::create2D(GL_RGBA32F, w, 1);
         input_.upload(0, w, 1, GL_RGBA, GL_FLOAT, hdr_.data());
@@ -47,7 +48,7 @@ public:
         FrameContext ctx{scene, gpu, knobs_, outputs_, *shaders_, {}, w, 1, 0};
         gl::resetPipelineState(w, 1);
         pass_.execute(ctx);
-        const auto bytes = outputs_.find("final")->texture->readBytes(0, GL_RGBA, 4);
+        const auto bytes = outputs_.find("tonemap.result")->texture->readBytes(0, GL_RGBA, 4);
         std::vector<glm::dvec3> out;
         for (int i = 0; i < w; ++i) out.emplace_back(bytes[4 * i] / 255.0, bytes[4 * i + 1] / 255.0, bytes[4 * i + 2] / 255.0);
         return out;
@@ -58,6 +59,7 @@ public:
 private:
     std::vector<glm::vec4> hdr_;
     KnobRegistry knobs_;
+    BloomPass bloom_;  // declares the bloom knobs the tone mapper reads
     TonemapPass pass_;
     std::unique_ptr<gl::ShaderLibrary> shaders_;
     OutputRegistry outputs_;
@@ -123,4 +125,71 @@ TEST(Tonemap, ReinhardWithManualWhiteAndKey) {
     h.knobs().setFromString("tonemap.white", "10000");
     expectClose(h.run({static_cast<float>(logAvg), 50.0f, 1, 100}),
                 expected(kInputs, 0.0, [&](double Lw) { return scale * Lw / (1.0 + scale * Lw); }), "reinhard white=inf");
+}
+
+namespace {
+
+// Reference formulas, in double precision.
+glm::dvec3 acesFitted(glm::dvec3 c) {
+    const double in[3][3] = {{0.59719, 0.35458, 0.04823}, {0.07600, 0.90834, 0.01566}, {0.02840, 0.13383, 0.83777}};
+    const double out[3][3] = {{1.60475, -0.53108, -0.07367}, {-0.10208, 1.10813, -0.00605}, {-0.00327, -0.07276, 1.07602}};
+    glm::dvec3 v(0.0), w(0.0);
+    for (int r = 0; r < 3; ++r) v[r] = in[r][0] * c.r + in[r][1] * c.g + in[r][2] * c.b;
+    for (int i = 0; i < 3; ++i) v[i] = (v[i] * (v[i] + 0.0245786) - 0.000090537) / (v[i] * (0.983729 * v[i] + 0.4329510) + 0.238081);
+    for (int r = 0; r < 3; ++r) w[r] = out[r][0] * v.r + out[r][1] * v.g + out[r][2] * v.b;
+    return glm::clamp(w, 0.0, 1.0);
+}
+
+glm::dvec3 pbrNeutral(glm::dvec3 c) {
+    const double start = 0.8 - 0.04, desaturation = 0.15;
+    const double x = std::min(c.r, std::min(c.g, c.b));
+    const double offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+    c -= offset;
+    const double peak = std::max(c.r, std::max(c.g, c.b));
+    if (peak < start) return glm::clamp(c, 0.0, 1.0);
+    const double d = 1.0 - start;
+    const double newPeak = 1.0 - d * d / (peak + d - start);
+    c *= newPeak / peak;
+    const double g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+    return glm::clamp(glm::mix(c, glm::dvec3(newPeak), g), 0.0, 1.0);
+}
+
+std::vector<glm::dvec3> perChannel(const std::vector<glm::vec4>& in, double exposure, glm::dvec3 (*op)(glm::dvec3)) {
+    std::vector<glm::dvec3> out;
+    for (const auto& p : in) {
+        const glm::dvec3 c = op(glm::dvec3(p) * std::exp2(exposure));
+        out.emplace_back(srgb(c.r), srgb(c.g), srgb(c.b));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Tonemap, AcesNeutralAndClampMatchTheirFormulas) {
+    TonemapHarness h(kInputs);
+    h.knobs().setFromString("tonemap.operator", "aces");
+    expectClose(h.run({1, 1, 1, 1}), perChannel(kInputs, 0.0, acesFitted), "aces");
+    h.knobs().setFromString("tonemap.exposure", "-1");
+    expectClose(h.run({1, 1, 1, 1}), perChannel(kInputs, -1.0, acesFitted), "aces -1 EV");
+    h.knobs().setFromString("tonemap.operator", "neutral");
+    expectClose(h.run({1, 1, 1, 1}), perChannel(kInputs, -1.0, pbrNeutral), "neutral -1 EV");
+    h.knobs().setFromString("tonemap.operator", "clamp");
+    expectClose(h.run({1, 1, 1, 1}), perChannel(kInputs, -1.0, [](glm::dvec3 c) { return glm::clamp(c, 0.0, 1.0); }), "clamp");
+    // Auto exposure scales by key / log-average for these operators too.
+    h.knobs().setFromString("tonemap.exposure", "0");
+    h.knobs().setFromString("tonemap.auto_exposure", "true");
+    h.knobs().setFromString("tonemap.operator", "aces");
+    expectClose(h.run({0.5f, 1, 1, 1}), perChannel(kInputs, std::log2(0.18 / 0.5), acesFitted), "aces auto exposure");
+}
+
+TEST(Tonemap, TheGuardTurnsNanAndInfinityIntoFiniteValues) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    TonemapHarness h({{nan, 0.5f, 0.5f, 1}, {inf, 0.0f, 0.0f, 1}, {-inf, 0.2f, 0.2f, 1}, {0.5f, 0.5f, 0.5f, 1}});
+    h.knobs().setFromString("tonemap.operator", "clamp");
+    const auto out = h.run({1, 1, 1, 1});
+    EXPECT_NEAR(out[0].r, 0.0, 1e-6);   // NaN -> 0
+    EXPECT_NEAR(out[0].g, srgb(0.5), 1.0 / 255.0);
+    EXPECT_NEAR(out[1].r, 1.0, 1e-6);   // +inf -> the largest half, clamped to white
+    EXPECT_NEAR(out[2].r, 0.0, 1e-6);   // -inf -> 0
+    EXPECT_NEAR(out[3].r, srgb(0.5), 1.0 / 255.0);
 }

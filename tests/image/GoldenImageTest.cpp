@@ -18,11 +18,13 @@ struct Golden {
     std::string name;
     std::string scene;
     std::string buffer;
+    std::vector<std::string> sets = {};
 };
 
 void checkGolden(const Golden& g) {
     auto session = test::makeSession(192, 108);
     session->loadScene(g.scene);
+    for (const auto& a : g.sets) session->knobs().applyAssignment(a);
     session->render({{g.buffer}});
     const FloatImage got = session->readDisplay(g.buffer);
     const fs::path golden = test::goldenDir() / (g.name + ".png");
@@ -57,7 +59,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Golden{"spheres", "spheres", "final"},
                       Golden{"spotlights", std::string(DW_TEST_SCENES_DIR) + "/spotlights.json", "final"},
                       Golden{"default-normals", "default", "gbuffer.normal"},
-                      Golden{"default-depth", "default", "gbuffer.depth"}),
+                      Golden{"default-depth", "default", "gbuffer.depth"},
+                      Golden{"default-ssao", "default", "ssao.blurred"},
+                      Golden{"default-overlap", "default", "lighting.overlap"},
+                      Golden{"spheres-cube-shadow-map", "spheres", "shadow.map1", {"shadows.map_size=128"}},
+                      Golden{"street-bloom", "street", "bloom.result"}),
     [](const ::testing::TestParamInfo<Golden>& param) {
         std::string n = param.param.name;
         for (char& c : n)

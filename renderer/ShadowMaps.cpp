@@ -1,0 +1,223 @@
+#include "renderer/ShadowMaps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/GpuScene.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+namespace {
+
+// [-1, 1] clip space to [0, 1] texture space (the seed's matrix B).
+const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+glm::vec3 anyUp(const glm::vec3& dir) { return std::fabs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0); }
+
+struct Face {
+    glm::vec3 dir, up;
+};
+// GL's cube face order and orientation (+X, -X, +Y, -Y, +Z, -Z).
+const Face kFaces[6] = {{{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+                        {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}}};
+
+}  // namespace
+
+ShadowMaps::ShadowMaps(KnobRegistry& knobs) {
+    enabled_ = knobs.addBool("shadows.enabled", true, "shadows", "shadow maps for lights whose 'shadow' flag is set");
+    size_ = knobs.addInt("shadows.map_size", 1024, 64, 4096, "shadows",
+                         "shadow map width and height (seed 002: 512 low, 1024 medium, 2048 high)", "px", true);
+    pcf_ = knobs.addInt("shadows.pcf_radius", 1, 0, 3, "shadows",
+                        "percentage-closer filtering over (2r + 1)^2 comparison taps", "texels", true);
+    biasConstant_ = knobs.addFloat("shadows.bias_constant", 1.0, 0.0, 16.0, "shadows",
+                                   "constant bias: the receiver moves this many shadow-map texels towards the light",
+                                   "texels");
+    biasSlope_ = knobs.addFloat("shadows.bias_slope", 2.5, 0.0, 32.0, "shadows",
+                                "slope-scaled bias: depth offset in proportion to the surface's depth slope in the map "
+                                "(glPolygonOffset factor)");
+    pointMethod_ = knobs.addEnum("shadows.point_method", {"cube", "dual_paraboloid"}, 0, "shadows",
+                                 "point lights: a cube map (6 renders) or two paraboloids (2 renders; Brabec 2002)", true);
+    reuse_ = knobs.addBool("shadows.reuse_map", true, "shadows",
+                           "render each light's map just before shading it, reusing one map (seed 002 3.3); off: "
+                           "keep one map per light, rendered before the lights are shaded");
+    distance_ = knobs.addFloat("shadows.distance", 0.0, 0.0, 1e5, "shadows",
+                               "how far from the camera a directional light's map reaches (0: the far plane)", "units");
+}
+
+void ShadowMaps::setup(gl::ShaderLibrary& shaders) {
+    depth_ = shaders.get({.vertex = "shadow/depth.vert", .fragment = "shadow/depth.frag"});
+    paraboloid_ = shaders.get({.vertex = "shadow/paraboloid.vert", .fragment = "shadow/depth.frag"});
+    view_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "shadow/view.frag"});
+    fbo_ = gl::Framebuffer::create("shadow map");
+    fbo_.setNoColorBuffers();
+    for (int k = 0; k < 3; ++k) ensure(static_cast<Kind>(k), 1, 1);
+}
+
+ShadowMaps::Kind ShadowMaps::kindOf(const Light& light, const KnobRegistry& knobs) const {
+    if (light.type != LightType::Point) return Map2D;
+    return knobs.get(pointMethod_) == 0 ? Cube : Paraboloid;
+}
+
+void ShadowMaps::ensure(Kind kind, int layers, int size) {
+    if (maps_[kind] && layers_[kind] >= layers && maps_[kind].width() == size) return;
+    const GLenum target = kind == Cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY;
+    const int depth = kind == Cube ? 6 * layers : (kind == Paraboloid ? 2 * layers : layers);
+    maps_[kind] = gl::Texture::createArray(target, GL_DEPTH_COMPONENT32F, size, depth);
+    maps_[kind].setFilter(GL_LINEAR, GL_LINEAR);
+    maps_[kind].setDepthCompare(true);
+    maps_[kind].setWrap(GL_CLAMP_TO_BORDER);
+    maps_[kind].setBorderColor(1, 1, 1, 1);
+    layers_[kind] = layers;
+}
+
+void ShadowMaps::beginFrame(const FrameContext& ctx, const int counts[3]) {
+    const int size = ctx.knobs.get(size_);
+    mapSize_ = size;
+    const bool reuse = ctx.knobs.get(reuse_);
+    bytesInUse_ = bytesKeepingAll_ = 0;
+    rendered_ = 0;
+    const std::size_t texel = 4;  // DEPTH_COMPONENT32F
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t perMap = static_cast<std::size_t>(size) * size * texel * (k == Cube ? 6 : (k == Paraboloid ? 2 : 1));
+        bytesKeepingAll_ += perMap * counts[k];
+        const int layers = counts[k] == 0 ? 0 : (reuse ? 1 : counts[k]);
+        bytesInUse_ += perMap * layers;
+        if (layers > 0) ensure(static_cast<Kind>(k), layers, size);
+    }
+}
+
+ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, double radius, int slot) {
+    const KnobRegistry& k = ctx.knobs;
+    const Kind kind = kindOf(light, k);
+    const int size = mapSize_;
+    ShadowLookup out;
+    out.params = glm::vec4(static_cast<float>(kind == Map2D ? 1 : (kind == Cube ? 2 : 3)), static_cast<float>(k.get(pcf_)),
+                           1.0f / static_cast<float>(size), static_cast<float>(slot));
+    const glm::mat4 inverseView = ctx.camera.inverseView;
+    const Bounds bounds = ctx.scene.bounds();
+    const float sceneRadius = std::max(bounds.radius(), 1e-3f);
+    const float far = std::isfinite(radius) && radius > 0 ? static_cast<float>(radius)
+                                                          : glm::length(light.position - bounds.center()) + sceneRadius;
+    const float near = std::max(far * 1e-3f, 0.02f);
+
+    gl::resetPipelineState(size, size);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(k.get(biasSlope_), 0.0f);
+    const float biasTexels = k.get(biasConstant_);
+    fbo_.bind();
+    auto target = [&](int layer) {
+        fbo_.attachDepthLayer(maps_[kind], 0, layer);
+        fbo_.clearDepth(1.0f);
+    };
+
+    if (kind == Map2D) {
+        glm::mat4 viewProj;
+        if (light.type == LightType::Directional) {
+            // Fit an orthographic box around the part of the view frustum in
+            // reach, extended towards the light over the whole scene.
+            const float nearC = ctx.camera.clip.x;
+            const float farC = k.get(distance_) > 0.0f ? std::min(k.get(distance_), ctx.camera.clip.y) : ctx.camera.clip.y;
+            const glm::vec3 dir = glm::normalize(light.direction);
+            const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+            const glm::mat4 lightView = glm::lookAt(center - dir * sceneRadius * 2.0f, center, anyUp(dir));
+            glm::vec3 lo(1e30f), hi(-1e30f);
+            const float t = ctx.camera.clip.z, a = ctx.camera.clip.w;
+            for (float z : {nearC, farC})
+                for (float sx : {-1.0f, 1.0f})
+                    for (float sy : {-1.0f, 1.0f}) {
+                        const glm::vec4 pv(sx * z * t * a, sy * z * t, -z, 1.0f);
+                        const glm::vec3 pl(lightView * inverseView * pv);
+                        lo = glm::min(lo, pl);
+                        hi = glm::max(hi, pl);
+                    }
+            if (!bounds.empty()) {
+                const Bounds lb = bounds.transformed(lightView);
+                // Only as wide as the scene, and deep enough for every caster.
+                lo = glm::vec3(glm::max(glm::vec2(lo), glm::vec2(lb.min)), std::min(lo.z, lb.min.z));
+                hi = glm::vec3(glm::min(glm::vec2(hi), glm::vec2(lb.max)), std::max(hi.z, lb.max.z));
+                hi = glm::max(hi, lo + glm::vec3(1e-3f));
+            }
+            // Snap to texels so the map does not shimmer as the camera moves.
+            const glm::vec2 texel = (glm::vec2(hi) - glm::vec2(lo)) / static_cast<float>(size);
+            lo = glm::vec3(glm::floor(glm::vec2(lo) / texel) * texel, lo.z);
+            hi = glm::vec3(glm::ceil(glm::vec2(hi) / texel) * texel, hi.z);
+            viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f) * lightView;
+            out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
+        } else {
+            const float fov = std::min(2.0f * light.cutoffDegrees + 2.0f, 170.0f);
+            const glm::vec3 dir = glm::normalize(light.direction);
+            viewProj = glm::perspective(glm::radians(fov), 1.0f, near, far) *
+                       glm::lookAt(light.position, light.position + dir, anyUp(dir));
+            out.range.w = biasTexels * 2.0f * std::tan(glm::radians(fov * 0.5f)) / static_cast<float>(size);
+        }
+        target(slot);
+        depth_->use();
+        depth_->set(2, viewProj);
+        ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
+        out.matrix = kBias * viewProj * inverseView;
+    } else if (kind == Cube) {
+        const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+        depth_->use();
+        for (int f = 0; f < 6; ++f) {
+            target(6 * slot + f);
+            depth_->set(2, proj * glm::lookAt(light.position, light.position + kFaces[f].dir, kFaces[f].up));
+            ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
+        }
+        // World-aligned offset from the light, which is how cube maps are indexed.
+        out.matrix = glm::translate(glm::mat4(1.0f), -light.position) * inverseView;
+        out.range = glm::vec4(near, far, 0.0f, biasTexels * 2.0f / static_cast<float>(size));
+    } else {
+        const glm::vec3 axis = glm::normalize(light.direction);
+        const glm::mat4 lightView = glm::lookAt(light.position, light.position - axis, anyUp(axis));
+        glEnable(GL_CLIP_DISTANCE0);
+        paraboloid_->use();
+        paraboloid_->set(2, lightView);
+        for (int h = 0; h < 2; ++h) {
+            target(2 * slot + h);
+            paraboloid_->set(3, glm::vec3(near, far, h == 0 ? 1.0f : -1.0f));
+            ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::All);
+        }
+        glDisable(GL_CLIP_DISTANCE0);
+        out.matrix = lightView * inverseView;
+        // A paraboloid texel spans at most about 4 / size radians (at its rim).
+        out.range = glm::vec4(near, far, 0.0f, biasTexels * 4.0f / static_cast<float>(size));
+    }
+    ++rendered_;
+    return out;
+}
+
+void ShadowMaps::bind() const {
+    maps_[Map2D].bind(6);
+    maps_[Cube].bind(7);
+    maps_[Paraboloid].bind(8);
+}
+
+void ShadowMaps::drawView(Kind kind, int slot, gl::Texture& target, gl::Framebuffer& fbo) {
+    const int s = mapSize_;
+    const int w = kind == Cube ? 3 * s : (kind == Paraboloid ? 2 * s : s);
+    const int h = kind == Cube ? 2 * s : s;
+    if (!target || target.width() != w || target.height() != h) {
+        target = gl::Texture::create2D(GL_R32F, w, h);
+        target.setFilter(GL_NEAREST, GL_NEAREST);
+        fbo = gl::Framebuffer::forColor(target, "shadow map view");
+    }
+    // Plain depth reads (no comparison) for the view.
+    for (const gl::Texture* t : {&maps_[Map2D], &maps_[Cube], &maps_[Paraboloid]})
+        glTextureParameteri(t->id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    gl::resetPipelineState(w, h);
+    fbo.bind();
+    (kind == Cube ? maps_[Map2D] : maps_[kind]).bind(0);
+    maps_[Cube].bind(1);
+    view_->use();
+    view_->set(0, glm::ivec2(kind == Map2D ? 1 : (kind == Cube ? 2 : 3), slot));
+    view_->set(1, glm::vec2(static_cast<float>(w), static_cast<float>(h)));
+    triangle_.draw();
+    for (const gl::Texture* t : {&maps_[Map2D], &maps_[Cube], &maps_[Paraboloid]})
+        glTextureParameteri(t->id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+}
+
+}  // namespace dw

@@ -1,0 +1,71 @@
+#pragma once
+// Shadow maps for the lighting pass (seed 000 sections 4.4 and 5.5, seed 002
+// section 3.3): directional lights get an orthographic map fitted to what the
+// camera sees, spot lights a perspective map matching the cutoff, point lights
+// a cube map (or two paraboloids). Maps live in texture arrays; by default one
+// layer per kind is reused light after light ("flip-flop", seed 002 3.3),
+// or every shadowed light keeps its own layer. Bias is slope-scaled and
+// constant polygon offset; filtering is PCF.
+#include <glm/glm.hpp>
+#include <string>
+
+#include "renderer/FrameContext.h"
+#include "renderer/KnobRegistry.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+#include "renderer/scene/Light.h"
+
+namespace dw {
+
+class GpuScene;
+struct Scene;
+
+// What the light shader needs to sample a light's map (part of the light table).
+struct ShadowLookup {
+    glm::mat4 matrix{1.0f};
+    glm::vec4 params{0.0f};  // mode (0 none, 1 2D, 2 cube, 3 paraboloid), PCF radius, texel size, layer
+    glm::vec4 range{0.0f};   // near, far; constant bias: fixed distance, distance per unit from the light
+};
+
+class ShadowMaps {
+public:
+    enum Kind { Map2D = 0, Cube = 1, Paraboloid = 2 };
+
+    explicit ShadowMaps(KnobRegistry& knobs);
+    void setup(gl::ShaderLibrary& shaders);
+
+    bool enabled(const KnobRegistry& knobs) const { return knobs.get(enabled_); }
+    bool reuse(const KnobRegistry& knobs) const { return knobs.get(reuse_); }
+    // Allocates layers for this frame: `counts` shadowed lights of each kind.
+    void beginFrame(const FrameContext& ctx, const int counts[3]);
+    // Renders `light`'s map into `slot` of its kind and says how to sample it.
+    ShadowLookup render(const FrameContext& ctx, const Light& light, double radius, int slot);
+    void bind() const;
+    Kind kindOf(const Light& light, const KnobRegistry& knobs) const;
+    // Renders a map into an R32F image for inspection (the shadow.mapN outputs).
+    void drawView(Kind kind, int slot, gl::Texture& target, gl::Framebuffer& fbo);
+
+    // Bytes the maps in use take, and what keeping one map per light would take.
+    std::size_t bytesInUse() const { return bytesInUse_; }
+    std::size_t bytesKeepingAll() const { return bytesKeepingAll_; }
+    int mapsRendered() const { return rendered_; }
+
+private:
+    void ensure(Kind kind, int layers, int size);
+    BoolKnob enabled_, reuse_;
+    IntKnob size_, pcf_;
+    FloatKnob biasConstant_, biasSlope_, distance_;
+    EnumKnob pointMethod_;
+    gl::ShaderLibrary::Handle depth_, paraboloid_, view_;
+    gl::FullscreenTriangle triangle_;
+    gl::Texture maps_[3];
+    int layers_[3] = {0, 0, 0};
+    int mapSize_ = 0;
+    gl::Framebuffer fbo_;
+    std::size_t bytesInUse_ = 0, bytesKeepingAll_ = 0;
+    int rendered_ = 0;
+};
+
+}  // namespace dw

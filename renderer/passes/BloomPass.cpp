@@ -1,0 +1,155 @@
+#include "renderer/passes/BloomPass.h"
+
+#include <algorithm>
+#include <glm/glm.hpp>
+
+#include "renderer/GpuScene.h"
+#include "renderer/gl/FullscreenTriangle.h"
+
+namespace dw {
+
+namespace {
+struct BloomParamsGpu {
+    glm::ivec4 modes{0};
+    glm::vec4 values{0.0f};
+};
+}  // namespace
+
+BloomPass::BloomPass(KnobRegistry& knobs) {
+    enabled_ = knobs.addBool("bloom.enabled", true, "bloom", "bloom around pixels brighter than the threshold");
+    method_ = knobs.addEnum("bloom.method", {"mip_sum", "dual_filter"}, MipSum, "bloom",
+                            "Ferko's average of mip levels (seed 000 5.4) or Jimenez 2014's dual-filter chain", true);
+    threshold_ = knobs.addFloat("bloom.threshold", 2.0, 0.0, 1e5, "bloom",
+                                "luminance subtracted before blurring, as a multiple of the log-average (seed 002: 1)",
+                                "x avg", false, true);
+    intensity_ = knobs.addFloat("bloom.intensity", 0.6, 0.0, 8.0, "bloom", "strength of the composited bloom");
+    levels_ = knobs.addInt("bloom.levels", 5, 1, kMaxLevels, "bloom", "mip levels blurred and summed (wider bloom)", "",
+                           true);
+    composite_ = knobs.addEnum("bloom.composite", {"ldr_luminance_alpha", "hdr_add"}, 0, "bloom",
+                               "on the tone-mapped image with alpha = its luminance (seed 002 step 10, seed 004), "
+                               "or added to the HDR image before tone mapping");
+}
+
+std::vector<OutputDecl> BloomPass::outputs() const {
+    std::vector<OutputDecl> out = {{"bloom.bright", OutputKind::HdrColor, "thresholded L-buffer at half resolution"},
+                                   {"bloom.result", OutputKind::HdrColor, "the bloom the tone mapper adds (half resolution)"}};
+    for (int i = 1; i <= kMaxLevels; ++i)
+        out.push_back({"bloom.mip" + std::to_string(i), OutputKind::HdrColor,
+                       "bloom level " + std::to_string(i) + " (mip_sum: a mip of bloom.bright; dual_filter: the downsample chain)"});
+    return out;
+}
+
+std::string BloomPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
+    if (!knobs.get(enabled_)) return "switched off (bloom.enabled = false)";
+    return {};
+}
+
+void BloomPass::makeTarget(Target& t, int w, int h, int levels, const char* label) {
+    t.texture = gl::Texture::create2D(GL_RGBA16F, std::max(w, 1), std::max(h, 1), levels);
+    t.texture.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+    t.fbo = gl::Framebuffer::forColor(t.texture, label);
+}
+
+void BloomPass::setup(gl::ShaderLibrary& shaders) {
+    bright_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/bright.frag"});
+    mipsum_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/mipsum.frag"});
+    down_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/down.frag"});
+    up_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/up.frag"});
+    scale_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/scale.frag"});
+    params_ = gl::Buffer::create(sizeof(BloomParamsGpu), nullptr, true, "bloom params");
+}
+
+void BloomPass::resize(int width, int height, OutputRegistry& outputs) {
+    outputs_ = &outputs;
+    const int w = std::max(width / 2, 1), h = std::max(height / 2, 1);
+    makeTarget(bright_target_, w, h, std::min(kMaxLevels + 1, gl::Texture::fullMipCount(w, h)), "bloom bright");
+    makeTarget(result_, w, h, 1, "bloom result");
+    brightLevels_.clear();
+    for (int l = 0; l < bright_target_.texture.levels(); ++l)
+        brightLevels_.push_back(gl::Framebuffer::forColor(bright_target_.texture, "bloom bright level", l));
+    for (int l = 0; l <= kMaxLevels; ++l) {
+        makeTarget(down_chain_[l], w >> l, h >> l, 1, "bloom down");
+        makeTarget(up_chain_[l], w >> l, h >> l, 1, "bloom up");
+    }
+    outputs.bind("bloom.bright", &bright_target_.texture, 4);
+    outputs.bind("bloom.result", &result_.texture, 4);
+    for (int i = 1; i <= kMaxLevels; ++i)
+        outputs.bind("bloom.mip" + std::to_string(i), &bright_target_.texture, 4, std::min(i, bright_target_.texture.levels() - 1));
+}
+
+void BloomPass::drawInto(const gl::Framebuffer& fbo, int w, int h) {
+    glViewport(0, 0, w, h);
+    fbo.bind();
+    triangle_.draw();
+}
+
+void BloomPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    // Declared by the tone mapper, which is built after this pass.
+    if (nanGuard_.id < 0) nanGuard_ = BoolKnob{*k.find("tonemap.nan_guard")};
+    const gl::Texture& hdr = *ctx.outputs.find("lbuffer")->texture;
+    const int w = bright_target_.texture.width(), h = bright_target_.texture.height();
+    const int levels = std::min(k.get(levels_), bright_target_.texture.levels() - 1);
+    const auto method = static_cast<Method>(k.get(method_));
+    auto params = [&](glm::vec4 values) {
+        BloomParamsGpu p;
+        p.modes = glm::ivec4(k.get(nanGuard_) ? 1 : 0, levels, 0, 0);
+        p.values = values;
+        params_.update(0, sizeof(p), &p);
+        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    };
+    // 1. Threshold into level 0 of the bright chain.
+    params(glm::vec4(k.get(threshold_), 1.0f / hdr.width(), 1.0f / hdr.height(), 0.0f));
+    hdr.bind(0);
+    ctx.outputs.find("luminance.stats")->texture->bind(1);
+    bright_->use();
+    drawInto(brightLevels_[0], w, h);
+
+    if (method == MipSum) {
+        bright_target_.texture.generateMipmaps();
+        params(glm::vec4(0.0f, 0.0f, 1.0f / w, 1.0f / h));
+        bright_target_.texture.bind(0);
+        mipsum_->use();
+        drawInto(result_.fbo, w, h);
+        for (int i = 1; i <= kMaxLevels; ++i)
+            outputs_->bind("bloom.mip" + std::to_string(i), &bright_target_.texture, 4,
+                           std::min(i, bright_target_.texture.levels() - 1));
+    } else {
+        // 2. Downsample chain: level 0 is the bright image itself.
+        down_->use();
+        const gl::Texture* source = &bright_target_.texture;
+        for (int l = 1; l <= levels; ++l) {
+            const gl::Texture& dst = down_chain_[l].texture;
+            params(glm::vec4(1.0f / source->width(), 1.0f / source->height(), 1.0f / dst.width(), 1.0f / dst.height()));
+            glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 0);
+            source->bind(0);
+            drawInto(down_chain_[l].fbo, dst.width(), dst.height());
+            glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 1000);
+            source = &dst;
+        }
+        // 3. Upsample: each level = tent(coarser) + its own downsampled image.
+        up_->use();
+        const gl::Texture* coarse = &down_chain_[levels].texture;
+        for (int l = levels - 1; l >= 0; --l) {
+            const gl::Texture& same = l == 0 ? bright_target_.texture : down_chain_[l].texture;
+            const gl::Texture& dst = up_chain_[l].texture;
+            params(glm::vec4(1.0f / coarse->width(), 1.0f / coarse->height(), 1.0f / dst.width(), 1.0f / dst.height()));
+            coarse->bind(0);
+            glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 0);
+            same.bind(1);
+            drawInto(up_chain_[l].fbo, dst.width(), dst.height());
+            glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 1000);
+            coarse = &dst;
+        }
+        params(glm::vec4(0.0f));
+        up_chain_[0].texture.bind(0);
+        scale_->use();
+        drawInto(result_.fbo, w, h);
+        for (int i = 1; i <= kMaxLevels; ++i)
+            outputs_->bind("bloom.mip" + std::to_string(i), &down_chain_[std::min(i, kMaxLevels)].texture, 4, 0);
+    }
+    stats_ = std::string(method == MipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +
+             std::to_string(w) + "x" + std::to_string(h);
+}
+
+}  // namespace dw

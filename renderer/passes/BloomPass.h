@@ -1,0 +1,56 @@
+#pragma once
+// Bloom (seed 000 sections 4.3 and 5.4, seed 002 section 3.2, steps 7-8):
+// the L-buffer at half resolution with a threshold relative to the average
+// luminance subtracted, then either Ferko's average of its mip levels or the
+// dual-filter mip chain of Jimenez 2014 (13-tap down, tent up). Reads lbuffer
+// and luminance.stats; writes bloom.bright, bloom.mip1..6 and bloom.result,
+// which the tone mapper composites.
+#include <vector>
+
+#include "renderer/KnobRegistry.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+
+namespace dw {
+
+class BloomPass : public RenderPass {
+public:
+    enum Method { MipSum = 0, DualFilter = 1 };
+    static constexpr int kMaxLevels = 6;
+    explicit BloomPass(KnobRegistry& knobs);
+    const char* name() const override { return "bloom"; }
+    std::vector<OutputDecl> outputs() const override;
+    PassIO inputs(const KnobRegistry&) const override { return {{"lbuffer", "luminance.stats"}, {}}; }
+    std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void resize(int width, int height, OutputRegistry& outputs) override;
+    void execute(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+private:
+    struct Target {
+        gl::Texture texture;
+        gl::Framebuffer fbo;
+    };
+    void makeTarget(Target& t, int w, int h, int levels, const char* label);
+    void drawInto(const gl::Framebuffer& fbo, int w, int h);
+    BoolKnob enabled_, nanGuard_;
+    EnumKnob method_;
+    FloatKnob threshold_, intensity_;
+    IntKnob levels_;
+    EnumKnob composite_;
+    gl::ShaderLibrary::Handle bright_, mipsum_, down_, up_, scale_;
+    gl::FullscreenTriangle triangle_;
+    gl::Buffer params_;
+    Target bright_target_, result_;
+    std::vector<gl::Framebuffer> brightLevels_;
+    Target down_chain_[kMaxLevels + 1], up_chain_[kMaxLevels + 1];
+    OutputRegistry* outputs_ = nullptr;
+    std::string stats_;
+};
+
+}  // namespace dw

@@ -1,0 +1,66 @@
+#include "renderer/passes/DofPass.h"
+
+#include <glm/glm.hpp>
+
+#include "renderer/GpuScene.h"
+
+namespace dw {
+
+namespace {
+struct DofParamsGpu {
+    glm::ivec4 modes{0};
+    glm::vec4 values{0.0f};
+};
+}  // namespace
+
+DofPass::DofPass(KnobRegistry& knobs) {
+    enabled_ = knobs.addBool("dof.enabled", false, "dof", "depth of field on the tone-mapped image");
+    focus_ = knobs.addFloat("dof.focus_distance", 10.0, 0.01, 10000.0, "dof", "distance in focus, along the view axis",
+                            "units", false, true);
+    range_ = knobs.addFloat("dof.focus_range", 4.0, 0.0, 10000.0, "dof",
+                            "depth band around the focus that stays sharp; the blur reaches its maximum one band further",
+                            "units", false, true);
+    radius_ = knobs.addFloat("dof.max_radius", 6.0, 0.0, 32.0, "dof", "largest blur radius", "px", true);
+    samples_ = knobs.addInt("dof.samples", 24, 4, 128, "dof", "gather samples per pixel", "", true);
+    near_ = knobs.addBool("dof.near_blur", true, "dof", "blur what is nearer than the focus");
+    far_ = knobs.addBool("dof.far_blur", true, "dof", "blur what is farther than the focus");
+}
+
+std::string DofPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
+    if (!knobs.get(enabled_)) return "switched off (dof.enabled = false)";
+    return {};
+}
+
+void DofPass::setup(gl::ShaderLibrary& shaders) {
+    program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "post/dof.frag"});
+    params_ = gl::Buffer::create(sizeof(DofParamsGpu), nullptr, true, "dof params");
+}
+
+void DofPass::resize(int width, int height, OutputRegistry& outputs) {
+    result_ = gl::Texture::create2D(GL_RGBA8, width, height);
+    coc_ = gl::Texture::create2D(GL_R16F, width, height);
+    for (gl::Texture* t : {&result_, &coc_}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    resultFbo_ = gl::Framebuffer::forColor(result_, "depth of field");
+    cocFbo_ = gl::Framebuffer::forColor(coc_, "circle of confusion");
+    outputs.bind("dof.result", &result_, 4);
+    outputs.bind("dof.coc", &coc_, 1);
+}
+
+void DofPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    ctx.outputs.find("tonemap.result")->texture->bind(0);
+    ctx.outputs.find("gbuffer.depth")->texture->bind(1);
+    program_->use();
+    for (int cocOnly : {0, 1}) {
+        if (cocOnly && !ctx.wants("dof.coc")) continue;
+        DofParamsGpu p;
+        p.modes = glm::ivec4(k.get(near_) ? 1 : 0, k.get(far_) ? 1 : 0, k.get(samples_), cocOnly);
+        p.values = glm::vec4(k.get(focus_), k.get(range_), k.get(radius_), 0.0f);
+        params_.update(0, sizeof(p), &p);
+        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+        (cocOnly ? cocFbo_ : resultFbo_).bind();
+        triangle_.draw();
+    }
+}
+
+}  // namespace dw

@@ -1,0 +1,46 @@
+#pragma once
+// Skybox (seed 004 "Skybox"): the sky's radiance where the G-buffer holds no
+// geometry (seed 000 section 5.2's pixel type). Reads gbuffer.depth and the
+// scene's sky; writes sky (RGBA16F), which the lighting pass puts into the
+// L-buffer's background pixels. The sky is a procedural gradient with a sun,
+// an equirectangular HDR/EXR image or a cube map (through OpenImageIO).
+#include "renderer/KnobRegistry.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+
+namespace dw {
+
+struct Sky;
+
+class SkyboxPass : public RenderPass {
+public:
+    enum Mode { FromScene = 0, Color = 1, Procedural = 2, Environment = 3 };
+    explicit SkyboxPass(KnobRegistry& knobs);
+    const char* name() const override { return "skybox"; }
+    std::vector<OutputDecl> outputs() const override {
+        return {{"sky", OutputKind::HdrColor, "sky radiance where no geometry is, 0 elsewhere (RGBA16F)"}};
+    }
+    PassIO inputs(const KnobRegistry&) const override { return {{"gbuffer.depth"}, {}}; }
+    std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void resize(int width, int height, OutputRegistry& outputs) override;
+    void execute(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+private:
+    int resolvedKind(const KnobRegistry& knobs, const Scene& scene) const;
+    EnumKnob mode_;
+    FloatKnob intensity_, rotation_;
+    gl::ShaderLibrary::Handle program_;
+    gl::FullscreenTriangle triangle_;
+    gl::Buffer params_;
+    gl::Texture sky_, dummy2D_, dummyCube_;
+    gl::Framebuffer fbo_;
+    std::string stats_;
+};
+
+}  // namespace dw

@@ -1,0 +1,96 @@
+#include "renderer/passes/SsaoBlurPass.h"
+
+#include <algorithm>
+#include <glm/glm.hpp>
+
+#include "renderer/GpuScene.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+namespace {
+struct BlurParamsGpu {
+    glm::ivec4 modes{0};
+    glm::vec4 values{0.0f};
+};
+}  // namespace
+
+SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
+    ssaoEnabled_ = BoolKnob{*knobs.find("ssao.enabled")};
+    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, Bilateral, "ssao_blur",
+                          "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
+    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
+                          "kernel width in AO pixels (seed 002 uses up to 61); taps = 2 x (width / 2) + 1", "px", true);
+    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ssao_blur",
+                            "delta in the weight 1 / (delta + |d_center - d_current|) (eq. 4.7), in scene units of depth",
+                            "units", false, true);
+}
+
+std::string SsaoBlurPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
+    if (!knobs.get(ssaoEnabled_)) return "switched off (ssao.enabled = false)";
+    if (scene.ambient == glm::vec3(0.0f)) return "the scene has no ambient light (AO only scales the ambient term)";
+    return {};
+}
+
+void SsaoBlurPass::setup(gl::ShaderLibrary& shaders) {
+    blur_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/blur.frag"});
+    upsample_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/upsample.frag"});
+    params_ = gl::Buffer::create(sizeof(BlurParamsGpu), nullptr, true, "ssao blur params");
+}
+
+void SsaoBlurPass::resize(int width, int height, OutputRegistry& outputs) {
+    full_ = gl::Texture::create2D(GL_R16F, width, height);
+    full_.setFilter(GL_NEAREST, GL_NEAREST);
+    fullFbo_ = gl::Framebuffer::forColor(full_, "SSAO blurred");
+    outputs.bind("ssao.blurred", &full_, 1);
+}
+
+void SsaoBlurPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    const gl::Texture& raw = *ctx.outputs.find("ssao.raw")->texture;
+    const gl::Texture& depth = *ctx.outputs.find("gbuffer.depth")->texture;
+    const int w = raw.width(), h = raw.height();
+    const auto mode = static_cast<Mode>(k.get(mode_));
+    const int radius = k.get(width_) / 2;
+    const float delta = k.get(delta_);
+    const gl::Texture* source = &raw;
+    if (mode != Off && radius > 0) {
+        for (int i = 0; i < 2; ++i)
+            if (!temp_[i] || temp_[i].width() != w || temp_[i].height() != h) {
+                temp_[i] = gl::Texture::create2D(GL_R16F, w, h);
+                temp_[i].setFilter(GL_NEAREST, GL_NEAREST);
+                tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "SSAO blur");
+            }
+        glViewport(0, 0, w, h);
+        depth.bind(1);
+        blur_->use();
+        for (int pass = 0; pass < 2; ++pass) {
+            BlurParamsGpu p;
+            p.modes = glm::ivec4(mode == Bilateral ? 1 : 0, radius, w, h);
+            p.values = glm::vec4(delta, std::max(radius / 2.0f, 0.5f), pass == 0 ? 1.0f : 0.0f, pass == 0 ? 0.0f : 1.0f);
+            params_.update(0, sizeof(p), &p);
+            params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+            source->bind(0);
+            tempFbo_[pass].bind();
+            triangle_.draw();
+            source = &temp_[pass];
+        }
+    }
+    // To full resolution; depth-aware when the AO ran smaller and blurring is bilateral.
+    BlurParamsGpu p;
+    p.modes = glm::ivec4(mode == Bilateral ? 1 : 0, 0, w, h);
+    p.values = glm::vec4(delta, 0.0f, 0.0f, 0.0f);
+    params_.update(0, sizeof(p), &p);
+    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    source->bind(0);
+    depth.bind(1);
+    glViewport(0, 0, ctx.width, ctx.height);
+    fullFbo_.bind();
+    upsample_->use();
+    triangle_.draw();
+    static const char* names[] = {"bilateral", "gaussian", "no"};
+    stats_ = std::string(names[mode]) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
+             (w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "");
+}
+
+}  // namespace dw

@@ -1,0 +1,46 @@
+#pragma once
+// Blur of the AO buffer (seed 000 section 4.6.3 eq. 4.7, seed 002 section
+// 5.2): separable cross-bilateral (gaussian x 1/(delta + |depth difference|))
+// or plain gaussian for comparison, then depth-aware upsampling to full
+// resolution when the AO ran smaller. Reads ssao.raw and gbuffer.depth;
+// writes ssao.blurred (full resolution), which the lighting pass multiplies
+// into the ambient term.
+#include "renderer/KnobRegistry.h"
+#include "renderer/RenderPass.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Texture.h"
+
+namespace dw {
+
+class SsaoBlurPass : public RenderPass {
+public:
+    enum Mode { Bilateral = 0, Gaussian = 1, Off = 2 };
+    explicit SsaoBlurPass(KnobRegistry& knobs);
+    const char* name() const override { return "ssao_blur"; }
+    std::vector<OutputDecl> outputs() const override {
+        return {{"ssao.blurred", OutputKind::Scalar, "blurred ambient accessibility at full resolution (R16F)"}};
+    }
+    PassIO inputs(const KnobRegistry&) const override { return {{"ssao.raw", "gbuffer.depth"}, {}}; }
+    std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void resize(int width, int height, OutputRegistry& outputs) override;
+    void execute(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+private:
+    BoolKnob ssaoEnabled_;
+    EnumKnob mode_;
+    IntKnob width_;
+    FloatKnob delta_;
+    gl::ShaderLibrary::Handle blur_, upsample_;
+    gl::FullscreenTriangle triangle_;
+    gl::Buffer params_;
+    gl::Texture temp_[2], full_;
+    gl::Framebuffer tempFbo_[2], fullFbo_;
+    std::string stats_;
+};
+
+}  // namespace dw

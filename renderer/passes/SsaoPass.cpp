@@ -1,0 +1,122 @@
+#include "renderer/passes/SsaoPass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/GpuScene.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+namespace {
+
+struct SsaoParamsGpu {
+    glm::vec4 kernel[64];
+    glm::ivec4 counts;
+    glm::vec4 values;
+};
+
+// Deterministic uniform numbers in [0, 1) (a 32-bit hash of the index).
+float hash01(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return static_cast<float>(x & 0xffffff) / 16777216.0f;
+}
+
+}  // namespace
+
+SsaoPass::SsaoPass(KnobRegistry& knobs) {
+    enabled_ = knobs.addBool("ssao.enabled", true, "ssao", "screen-space ambient occlusion on the ambient term");
+    samples_ = knobs.addInt("ssao.samples", 16, 4, 64, "ssao", "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)",
+                            "", true);
+    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao", "radius of the sampling hemisphere in scene units",
+                             "units", false, true);
+    intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
+    bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ssao",
+                           "depth tolerance before a sample counts as occluded, as a fraction of the radius");
+    rangeCheck_ = knobs.addBool("ssao.range_check", true, "ssao",
+                                "fade occluders much nearer the camera than the point (depth discontinuities)");
+    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, Half, "ssao",
+                                "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
+}
+
+std::string SsaoPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
+    if (!knobs.get(enabled_)) return "switched off (ssao.enabled = false)";
+    if (scene.ambient == glm::vec3(0.0f)) return "the scene has no ambient light (AO only scales the ambient term)";
+    return {};
+}
+
+glm::ivec2 SsaoPass::aoSize(const KnobRegistry& knobs, int width, int height) {
+    const auto r = knobs.find("ssao.resolution");
+    const int shift = r ? static_cast<int>(knobs.value(*r)) : 0;
+    return {std::max(width >> shift, 1), std::max(height >> shift, 1)};
+}
+
+std::vector<glm::vec4> SsaoPass::kernel(int n) {
+    std::vector<glm::vec4> k;
+    for (int i = 0; i < n; ++i) {
+        // A uniform direction, then a length that puts more samples near the
+        // centre (nearby occluders matter most).
+        const float z = 2.0f * hash01(static_cast<std::uint32_t>(3 * i + 1)) - 1.0f;
+        const float phi = 6.28318531f * hash01(static_cast<std::uint32_t>(3 * i + 2));
+        const float s = std::sqrt(std::max(1.0f - z * z, 0.0f));
+        const float t = (static_cast<float>(i) + 0.5f) / static_cast<float>(n);
+        const float len = 0.1f + 0.9f * t * t;
+        k.emplace_back(glm::vec3(s * std::cos(phi), s * std::sin(phi), z) * len, 0.0f);
+    }
+    return k;
+}
+
+void SsaoPass::setup(gl::ShaderLibrary& shaders) {
+    program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/ssao.frag"});
+    params_ = gl::Buffer::create(sizeof(SsaoParamsGpu), nullptr, true, "ssao params");
+    std::vector<glm::vec4> noise;
+    for (std::uint32_t i = 0; i < 16; ++i) {
+        const float z = 2.0f * hash01(1000 + 2 * i) - 1.0f;
+        const float phi = 6.28318531f * hash01(1001 + 2 * i);
+        const float s = std::sqrt(std::max(1.0f - z * z, 0.0f));
+        noise.emplace_back(s * std::cos(phi), s * std::sin(phi), z, 0.0f);
+    }
+    noise_ = gl::Texture::create2D(GL_RGBA16F, 4, 4);
+    noise_.upload(0, 4, 4, GL_RGBA, GL_FLOAT, noise.data());
+    noise_.setFilter(GL_NEAREST, GL_NEAREST);
+}
+
+void SsaoPass::allocate(int width, int height) {
+    ao_ = gl::Texture::create2D(GL_R16F, width, height);
+    ao_.setFilter(GL_NEAREST, GL_NEAREST);
+    fbo_ = gl::Framebuffer::forColor(ao_, "SSAO");
+    outputs_->bind("ssao.raw", &ao_, 1);
+}
+
+void SsaoPass::resize(int width, int height, OutputRegistry& outputs) {
+    outputs_ = &outputs;
+    allocate(width, height);
+}
+
+void SsaoPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    const glm::ivec2 size = aoSize(k, ctx.width, ctx.height);
+    if (ao_.width() != size.x || ao_.height() != size.y) allocate(size.x, size.y);
+    SsaoParamsGpu p{};
+    const int n = k.get(samples_);
+    const auto kern = kernel(n);
+    std::copy(kern.begin(), kern.end(), p.kernel);
+    p.counts = glm::ivec4(n, k.get(rangeCheck_) ? 1 : 0, size.x, size.y);
+    p.values = glm::vec4(k.get(radius_), k.get(intensity_), k.get(bias_), 0.0f);
+    params_.update(0, sizeof(p), &p);
+    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    ctx.outputs.find("gbuffer.depth")->texture->bind(0);
+    ctx.outputs.find("gbuffer.normal")->texture->bind(1);
+    noise_.bind(2);
+    glViewport(0, 0, size.x, size.y);
+    fbo_.bind();
+    program_->use();
+    triangle_.draw();
+    stats_ = std::to_string(n) + " samples at " + std::to_string(size.x) + "x" + std::to_string(size.y);
+}
+
+}  // namespace dw

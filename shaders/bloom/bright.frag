@@ -1,0 +1,28 @@
+#version 450 core
+// Bloom threshold (seed 000 section 5.4, seed 002 section 3.2, step 7): the
+// L-buffer at half resolution (2x2 box), with the threshold, a multiple of the
+// image's average luminance, subtracted from each pixel's luminance.
+#include "../common/color.glsl"
+#include "../common/bindings.glsl"
+
+layout(binding = 0) uniform sampler2D uHdr;
+layout(binding = 1) uniform sampler2D uStats;
+layout(std140, binding = PASS_UBO) uniform BloomParams {
+    ivec4 modes;   // x NaN guard, y levels
+    vec4 values;   // x threshold (times the log-average), yz texel of the source
+} bloom;
+
+out vec4 outColor;
+
+vec3 guarded(vec3 c) {
+    if (bloom.modes.x == 0) return c;
+    return isFiniteVec(c) ? max(c, vec3(0.0)) : vec3(0.0);
+}
+
+void main() {
+    vec2 uv = gl_FragCoord.xy * 2.0 * bloom.values.yz;  // the centre of the 2x2 block
+    vec3 c = guarded(texture(uHdr, uv).rgb);
+    float L = luminance(c);
+    float t = bloom.values.x * texelFetch(uStats, ivec2(0), 0).x;
+    outColor = vec4(L > t ? c * (L - t) / L : vec3(0.0), 1.0);
+}

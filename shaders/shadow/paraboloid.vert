@@ -1,0 +1,18 @@
+#version 450 core
+// Dual paraboloid shadow map (Brabec et al. 2002, seed 000 section 4.4.1):
+// each hemisphere around a point light in one pass. The mapping is done per
+// vertex, so large triangles bend wrongly: the known cost of the method.
+layout(location = 0) in vec3 aPosition;
+layout(location = 0) uniform mat4 uModel;
+layout(location = 2) uniform mat4 uLightView;   // world -> light frame (+Z: front hemisphere)
+layout(location = 3) uniform vec3 uParams;      // near, far, hemisphere sign (+1 front, -1 back)
+out gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[1]; };
+void main() {
+    vec3 v = (uLightView * uModel * vec4(aPosition, 1.0)).xyz;
+    v.z *= uParams.z;
+    float len = length(v);
+    vec3 n = v / max(len, 1e-6);
+    gl_ClipDistance[0] = n.z;  // drop what lies behind this hemisphere
+    float depth = (len - uParams.x) / (uParams.y - uParams.x);
+    gl_Position = vec4(n.xy / (1.0 + n.z), depth * 2.0 - 1.0, 1.0);
+}

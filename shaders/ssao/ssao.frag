@@ -1,0 +1,65 @@
+#version 450 core
+// Screen-space ambient occlusion (seed 000 sections 4.6.3 and 5.6, seed 002
+// section 5.1): reconstruct the view-space position from depth, offset it by
+// kernel vectors reflected about a per-pixel random vector and flipped into
+// the normal's hemisphere, project each point back, and count it occluded when
+// the depth buffer holds a surface in front of it, weighted by the falloff
+// 1 / (1 + d^2) (eq. 4.6) and a range check against depth discontinuities.
+// Runs at the AO resolution; reads the full-resolution G-buffer (its depth
+// with linear filtering, see below).
+#include "../common/camera.glsl"
+#include "../common/gbuffer.glsl"
+
+layout(binding = 0) uniform sampler2D uDepth;
+layout(binding = 1) uniform sampler2D uNormal;
+layout(binding = 2) uniform sampler2D uNoise;   // 4x4 random unit vectors, repeated
+
+layout(std140, binding = PASS_UBO) uniform SsaoParams {
+    vec4 kernel[64];   // points in the unit ball
+    ivec4 counts;      // x samples, y range check, z AO width, w AO height
+    vec4 values;       // x radius, y intensity, z bias (fraction of the radius)
+} ssao;
+
+out float outOcclusion;
+
+void main() {
+    // The full-resolution pixel this AO pixel stands for (its centre).
+    vec2 uv = (gl_FragCoord.xy) / vec2(ssao.counts.zw);
+    ivec2 px = ivec2(uv * camera.viewport.xy);
+    float depth = texelFetch(uDepth, px, 0).r;
+    if (depth >= 1.0) {
+        outOcclusion = 1.0;
+        return;
+    }
+    vec3 P = viewPositionAtPixel(px, depth);
+    vec3 N = decodeNormalKL(texelFetch(uNormal, px, 0).xy);
+    vec3 r = normalize(texelFetch(uNoise, ivec2(gl_FragCoord.xy) & 3, 0).xyz);
+    float radius = ssao.values.x;
+    float bias = ssao.values.z * radius;
+    int n = ssao.counts.x;
+    float occlusion = 0.0;
+    for (int i = 0; i < n; ++i) {
+        vec3 s = reflect(ssao.kernel[i].xyz, r);
+        if (dot(s, N) < 0.0) s = -s;  // into the hemisphere above the surface
+        vec3 Q = P + s * radius;
+        vec4 clip = camera.projection * vec4(Q, 1.0);
+        vec2 quv = clip.xy / clip.w * 0.5 + 0.5;
+        if (any(lessThan(quv, vec2(0.0))) || any(greaterThanEqual(quv, vec2(1.0)))) continue;
+        // Depth is affine across a plane in window space, so the bilinearly
+        // filtered depth at Q's exact projection is the surface on Q's ray;
+        // the nearest pixel centre would make flat surfaces occlude themselves.
+        float sceneDepth = texture(uDepth, quv).r;
+        if (sceneDepth >= 1.0) continue;
+        vec3 S = viewPositionFromDepth(quv, sceneDepth);
+        if (S.z < Q.z + bias) continue;  // the stored surface is behind the sample: not occluded
+        float d = length(S - P);
+        float weight = 1.0 / (1.0 + d * d);
+        if (ssao.counts.y != 0) {
+            // A surface far in front of P (another object) does not occlude it.
+            float gap = abs(P.z - S.z);
+            weight *= gap <= radius ? 1.0 : radius / gap;
+        }
+        occlusion += weight;
+    }
+    outOcclusion = clamp(1.0 - ssao.values.y * occlusion / float(max(n, 1)), 0.0, 1.0);
+}

@@ -1,0 +1,333 @@
+// The tunable effects of the pipeline (issue: SSAO, shadows, bloom, sky, DoF,
+// FXAA): each does what its seed section says, and switching one off removes
+// its pass.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/passes/LightingPass.h"
+#include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+constexpr int W = 160, H = 90;
+
+// Pixel (x right, y down) where a world point lands.
+glm::ivec2 project(RenderSession& s, const glm::vec3& p) {
+    const glm::vec4 c = s.pipeline().lastCamera().viewProjection * glm::vec4(p, 1.0f);
+    const glm::vec2 ndc = glm::vec2(c) / c.w;
+    return {static_cast<int>((ndc.x * 0.5f + 0.5f) * W), static_cast<int>((0.5f - ndc.y * 0.5f) * H)};
+}
+
+float red(const FloatImage& img, glm::ivec2 px) { return img.at(px.x, px.y, 0); }
+
+// A floor, and a small box hovering over the origin.
+Scene occluderScene() {
+    Scene s = test::planeScene(40.0f);
+    Mesh box = shapes::box({1.2f, 0.2f, 1.2f});
+    box.material = 0;
+    s.instances.push_back({s.addMesh(std::move(box)), glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f})});
+    s.camera.position = {0.0f, 9.0f, 7.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    return s;
+}
+
+std::vector<std::string> ran(const FrameReport& r) {
+    std::vector<std::string> names;
+    for (const auto& p : r.passes)
+        if (p.ran) names.push_back(p.name);
+    return names;
+}
+bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+}  // namespace
+
+TEST(Shadows, APointUnderTheOccluderIsShadowedAndOneBesideItIsNotForEveryLightType) {
+    struct Case {
+        const char* name;
+        LightType type;
+        const char* pointMethod;
+    };
+    for (const Case c : {Case{"directional", LightType::Directional, "cube"}, Case{"spot", LightType::Spot, "cube"},
+                         Case{"point (cube)", LightType::Point, "cube"},
+                         Case{"point (dual paraboloid)", LightType::Point, "dual_paraboloid"}}) {
+        for (const char* reuse : {"true", "false"}) {
+            auto s = test::makeSession(W, H);
+            Scene scene = occluderScene();
+            Light l;
+            l.type = c.type;
+            l.position = {0.0f, 4.0f, 0.0f};
+            l.direction = {0.0f, -1.0f, 0.0f};
+            l.cutoffDegrees = 50.0f;
+            l.intensity = glm::vec3(1.0f);
+            l.attenuation = {1.0f, 0.0f, 0.02f};
+            l.castShadows = true;
+            scene.lights.push_back(l);
+            s->setScene(std::move(scene));
+            s->knobs().setFromString("shadows.point_method", c.pointMethod);
+            s->knobs().setFromString("shadows.reuse_map", reuse);
+            s->render({{"lbuffer"}});
+            const FloatImage L = s->readRaw("lbuffer");
+            const float under = red(L, project(*s, {0.0f, 0.0f, 0.0f}));
+            const float beside = red(L, project(*s, {2.6f, 0.0f, 0.0f}));
+            EXPECT_GT(beside, 0.2f) << c.name;
+            EXPECT_LT(under, beside * 0.05f) << c.name << " reuse " << reuse;
+            EXPECT_EQ(s->pipeline().pass<LightingPass>()->lastCounts().shadowed, 1) << c.name;
+        }
+    }
+}
+
+class ShadowAcne : public ::testing::TestWithParam<glm::vec3> {};
+
+// At a grazing angle the slope-scaled offset matters; straight down (no
+// slope) only the constant bias can cover the depth reconstruction error.
+TEST_P(ShadowAcne, BiasRemovesAcneOnAnUnoccludedPlane) {
+    auto s = test::makeSession(W, H);
+    Scene scene = test::planeScene(40.0f);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(GetParam());
+    sun.intensity = glm::vec3(1.0f);
+    sun.castShadows = true;
+    scene.lights.push_back(sun);
+    s->setScene(std::move(scene));
+    s->knobs().setFromString("shadows.pcf_radius", "0");
+    s->knobs().setFromString("shadows.enabled", "false");
+    s->render({{"lbuffer"}});
+    const FloatImage lit = s->readRaw("lbuffer");
+    s->knobs().setFromString("shadows.enabled", "true");
+    auto acne = [&](const char* constant, const char* slope) {
+        s->knobs().setFromString("shadows.bias_constant", constant);
+        s->knobs().setFromString("shadows.bias_slope", slope);
+        s->render({{"lbuffer"}});
+        const FloatImage L = s->readRaw("lbuffer");
+        int dark = 0, n = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (lit.at(x, y, 0) <= 0.0f) continue;
+                ++n;
+                if (L.at(x, y, 0) < 0.97f * lit.at(x, y, 0)) ++dark;
+            }
+        return static_cast<double>(dark) / std::max(n, 1);
+    };
+    const double without = acne("0", "0");
+    const double with = acne("1", "2.5");  // the defaults
+    std::printf("shadow acne on an unoccluded plane: %.1f%% of pixels without bias, %.2f%% with\n", 100 * without, 100 * with);
+    EXPECT_GT(without, 0.05);
+    EXPECT_LT(with, 0.005);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shadows, ShadowAcne,
+                         ::testing::Values(glm::vec3(1.0f, -0.18f, 0.3f),  // about 80 degrees from the normal
+                                           glm::vec3(0.0f, -1.0f, 0.0f)));
+
+TEST(Shadows, ReusingOneMapGivesTheSameImageWithLessMemory) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("street");
+    s->knobs().setFromString("shadows.reuse_map", "true");
+    s->render({{"lbuffer"}});
+    const FloatImage reused = s->readRaw("lbuffer");
+    const std::string statsReused = s->render({{"lbuffer"}}).find("lighting")->stats;
+    s->knobs().setFromString("shadows.reuse_map", "false");
+    s->render({{"lbuffer"}});
+    const FloatImage kept = s->readRaw("lbuffer");
+    EXPECT_EQ(test::maxAbsDifference(reused, kept, 3), 0.0);
+    EXPECT_NE(statsReused.find("one reused: 4.0 MiB (one per light: 36.0 MiB)"), std::string::npos) << statsReused;
+}
+
+TEST(Bloom, AddsEnergyOnlyAroundPixelsAboveTheThreshold) {
+    auto s = test::makeSession(W, H);
+    Scene scene = test::planeScene(40.0f);
+    scene.ambient = glm::vec3(0.1f);
+    Material glow;
+    glow.baseColor = glm::vec4(1.0f);
+    glow.emissive = glm::vec3(200.0f, 150.0f, 80.0f);
+    const int mat = scene.addMaterial(glow);
+    Mesh bulb = shapes::box(glm::vec3(0.3f));
+    bulb.material = mat;
+    scene.instances.push_back({scene.addMesh(std::move(bulb)), glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f})});
+    s->setScene(std::move(scene));
+    s->knobs().setFromString("fxaa.enabled", "false");
+    // The threshold is relative to the average luminance: without the black
+    // background in the average, the floor stays below it and only the bulb blooms.
+    s->knobs().setFromString("luminance.background", "exclude");
+    for (const char* method : {"mip_sum", "dual_filter"}) {
+        for (const char* composite : {"ldr_luminance_alpha", "hdr_add"}) {
+            s->knobs().setFromString("bloom.method", method);
+            s->knobs().setFromString("bloom.composite", composite);
+            s->knobs().setFromString("bloom.levels", "2");
+            s->knobs().setFromString("bloom.enabled", "false");
+            s->render();
+            const FloatImage off = s->readRaw("final");
+            s->knobs().setFromString("bloom.enabled", "true");
+            s->render();
+            const FloatImage on = s->readRaw("final");
+            const glm::ivec2 c = project(*s, {0.0f, 0.5f, 0.0f});
+            double brightest = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const double d = on.at(x, y, ch) - off.at(x, y, ch);
+                        EXPECT_GE(d, -1.5 / 255.0) << method << " removed energy at " << x << "," << y;
+                        const double dist = std::hypot(x - c.x, y - c.y);
+                        // Two levels of half resolution: even the dual filter's 13-tap
+                        // downsamples and tents reach under 40 pixels.
+                        if (dist > 40) {
+                            EXPECT_LE(std::fabs(d), 1.5 / 255.0) << method << " far from the light at " << x << "," << y;
+                        }
+                        if (dist < 12) brightest = std::max(brightest, d);
+                    }
+            EXPECT_GT(brightest, 0.05) << method << " " << composite;
+        }
+    }
+    // Nothing above a threshold of 10^4 times the average: no bloom at all.
+    s->knobs().setFromString("bloom.threshold", "10000");
+    s->render({{"bloom.result"}});
+    EXPECT_EQ(test::stats(s->readRaw("bloom.result"), 0).max, 0.0);
+}
+
+TEST(NanGuard, NanAndInfinityInTheSkyPoisonTheBloomOnlyWithoutTheGuard) {
+    auto s = test::makeSession(W, H);
+    Scene scene = test::planeScene(20.0f);
+    scene.sky.kind = Sky::Kind::Environment;
+    scene.sky.equirect = FloatImage{64, 32, 3, std::vector<float>(64 * 32 * 3, 0.5f)};
+    // A few NaN and infinite texels, as in OpenEXR's BrightRingsNanInf test image.
+    for (int y = 0; y < 16; y += 3)
+        for (int x = 0; x < 64; x += 5) {
+            scene.sky.equirect.at(x, y, 1) = std::numeric_limits<float>::quiet_NaN();
+            scene.sky.equirect.at((x + 2) % 64, y, 0) = std::numeric_limits<float>::infinity();
+        }
+    scene.camera.position = {0.0f, 2.0f, 8.0f};
+    scene.camera.target = {0.0f, 2.5f, 0.0f};
+    s->setScene(std::move(scene));
+    s->knobs().setFromString("tonemap.nan_guard", "false");
+    s->render({{"final", "bloom.result"}});
+    EXPECT_GT(test::stats(s->readRaw("bloom.result"), 1).nonFinite, 50);
+    s->knobs().setFromString("tonemap.nan_guard", "true");
+    s->render({{"final", "bloom.result"}});
+    EXPECT_EQ(test::stats(s->readRaw("bloom.result"), 1).nonFinite, 0);
+    // The statistics skip non-finite pixels either way.
+    EXPECT_GT(s->readRaw("luminance.stats").at(0, 0, 0), 0.0f);
+}
+
+TEST(Sky, FillsOnlyThePixelsWithoutGeometry) {
+    auto s = test::makeSession(W, H);
+    Scene scene = test::planeScene(10.0f);
+    scene.background = glm::vec3(0.25f, 0.0f, 0.0f);
+    scene.sky.kind = Sky::Kind::Procedural;
+    scene.lights.push_back([] {
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+        return sun;
+    }());
+    s->setScene(std::move(scene));
+    s->knobs().setFromString("skybox.mode", "color");
+    const FrameReport colorReport = s->render({{"lbuffer", "gbuffer.depth"}});
+    EXPECT_FALSE(colorReport.find("skybox")->ran);
+    EXPECT_NE(colorReport.find("skybox")->reason.find("background colour"), std::string::npos);
+    const FloatImage flat = s->readRaw("lbuffer");
+    const FloatImage depth = s->readRaw("gbuffer.depth");
+    s->knobs().setFromString("skybox.mode", "procedural");
+    EXPECT_TRUE(s->render({{"lbuffer"}}).find("skybox")->ran);
+    const FloatImage sky = s->readRaw("lbuffer");
+    int background = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            if (depth.at(x, y, 0) < 1.0f) {
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(sky.at(x, y, c), flat.at(x, y, c)) << x << "," << y;
+            } else {
+                ++background;
+                EXPECT_FLOAT_EQ(flat.at(x, y, 0), 0.25f);
+                EXPECT_GT(sky.at(x, y, 2), sky.at(x, y, 0) * 0.5f);  // a blue-ish sky, not the red background
+            }
+        }
+    EXPECT_GT(background, W * H / 10);
+    s->knobs().setFromString("skybox.mode", "environment");
+    EXPECT_NE(s->render().find("skybox")->reason.find("no environment map"), std::string::npos);
+}
+
+TEST(DepthOfField, SharpInFocusAndBlurredAwayFromIt) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("spheres");
+    s->knobs().setFromString("fxaa.enabled", "false");
+    s->knobs().setFromString("dof.enabled", "true");
+    s->knobs().setFromString("dof.focus_distance", "10");
+    s->knobs().setFromString("dof.focus_range", "1000");
+    s->render({{"final", "tonemap.result"}});
+    EXPECT_EQ(test::maxAbsDifference(s->readRaw("dof.result"), s->readRaw("tonemap.result"), 3), 0.0);
+    s->knobs().setFromString("dof.focus_distance", "1");
+    s->knobs().setFromString("dof.focus_range", "0.5");
+    s->render({{"final", "tonemap.result", "dof.coc"}});
+    const FloatImage sharp = s->readRaw("tonemap.result"), blurred = s->readRaw("dof.result");
+    auto detail = [](const FloatImage& img) {
+        double sum = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 1; x < W; ++x) sum += std::fabs(img.at(x, y, 1) - img.at(x - 1, y, 1));
+        return sum;
+    };
+    EXPECT_LT(detail(blurred), detail(sharp) * 0.7);
+    EXPECT_GT(test::stats(s->readRaw("dof.coc"), 0).max, 3.0);  // everything is behind the focus
+}
+
+TEST(Fxaa, ChangesOnlyPixelsOnEdges) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("spheres");
+    s->render({{"final", "tonemap.result"}});
+    const FloatImage in = s->readRaw("tonemap.result"), out = s->readRaw("final");
+    int changed = 0;
+    for (int y = 1; y < H - 1; ++y)
+        for (int x = 1; x < W - 1; ++x) {
+            if (std::fabs(in.at(x, y, 1) - out.at(x, y, 1)) < 1e-6f) continue;
+            ++changed;
+            double lo = 1, hi = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const double l = 0.299 * in.at(x + dx, y + dy, 0) + 0.587 * in.at(x + dx, y + dy, 1) + 0.114 * in.at(x + dx, y + dy, 2);
+                    lo = std::min(lo, l);
+                    hi = std::max(hi, l);
+                }
+            EXPECT_GT(hi - lo, 0.0312 - 1e-3) << "FXAA changed a flat pixel at " << x << "," << y;
+        }
+    EXPECT_GT(changed, 50);
+    EXPECT_LT(changed, W * H / 3);
+}
+
+TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {
+    auto s = test::makeSession(96, 54);
+    s->loadScene("default");
+    const auto all = ran(s->render());
+    for (const char* p : {"geometry", "ssao", "ssao_blur", "skybox", "lighting", "luminance", "bloom", "tonemap", "fxaa"})
+        EXPECT_TRUE(has(all, p)) << p;
+    EXPECT_FALSE(has(all, "dof"));
+    struct Toggle {
+        const char* knob;
+        const char* value;
+        std::vector<const char*> gone;
+    };
+    for (const Toggle& t : {Toggle{"ssao.enabled", "false", {"ssao", "ssao_blur"}}, Toggle{"bloom.enabled", "false", {"bloom"}},
+                            Toggle{"fxaa.enabled", "false", {"fxaa"}}, Toggle{"skybox.mode", "color", {"skybox"}}}) {
+        KnobRegistry saved = s->knobs();
+        s->knobs().setFromString(t.knob, t.value);
+        const FrameReport r = s->render();
+        for (const char* p : t.gone) {
+            EXPECT_FALSE(r.find(p)->ran) << t.knob;
+            EXPECT_FALSE(r.find(p)->reason.empty()) << t.knob;
+        }
+        s->knobs() = saved;
+    }
+    s->knobs().setFromString("dof.enabled", "true");
+    EXPECT_TRUE(has(ran(s->render()), "dof"));
+    EXPECT_EQ(s->pipeline().resolveFinal(), "fxaa.result");
+    s->knobs().setFromString("fxaa.enabled", "false");
+    EXPECT_EQ(s->pipeline().resolveFinal(), "dof.result");
+    // Shadows are part of lighting: switched off, no map is rendered and no time is spent on them.
+    s->knobs().setFromString("shadows.enabled", "false");
+    s->render();
+    EXPECT_EQ(s->pipeline().pass<LightingPass>()->lastCounts().shadowed, 0);
+    EXPECT_EQ(s->render().find("lighting")->stats.find("shadow maps"), std::string::npos);
+}
