@@ -1,4 +1,4 @@
-// deferred-workbench list scenes|buffers|knobs|passes: needs no GL context.
+// deferred-workbench list scenes|buffers|knobs|passes|presets: needs no GL context.
 #include <cstdio>
 #include <iostream>
 
@@ -6,6 +6,7 @@
 #include "app/Commands.h"
 #include "renderer/KnobRegistry.h"
 #include "renderer/Pipeline.h"
+#include "renderer/Preset.h"
 #include "renderer/scene/BuiltinScenes.h"
 
 namespace dw {
@@ -39,8 +40,15 @@ int runListCommand(int argc, char** argv) {
             for (const auto& in : io.optionalInputs) std::printf("  reads  %s (when produced)\n", in.c_str());
             for (const auto& o : p->outputs()) std::printf("  writes %s\n", o.name.c_str());
         }
+    } else if (what == "presets") {
+        for (const auto& p : builtinPresets()) {
+            std::printf("%-14s %s\n", p.name.c_str(), p.description.c_str());
+            std::string line;
+            for (const auto& [k, v] : p.knobs) line += (line.empty() ? "" : " ") + k + "=" + v;
+            std::printf("%-14s %s\n", "", line.c_str());
+        }
     } else {
-        throw UsageError("usage: deferred-workbench list scenes|buffers|knobs|passes");
+        throw UsageError("usage: deferred-workbench list scenes|buffers|knobs|passes|presets");
     }
     return 0;
 }

@@ -1,11 +1,15 @@
 // deferred-workbench render: one scene, one buffer, one image file.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
+#include "renderer/Error.h"
+#include "renderer/Preset.h"
 #include "renderer/RenderSession.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -26,6 +30,15 @@ void printTimings(Pipeline& pipeline, const FrameReport& last, int frames) {
         const TimingStats g = timer.gpuStats(rec.name, static_cast<size_t>(frames));
         const TimingStats c = timer.cpuStats(rec.name, static_cast<size_t>(frames));
         std::printf("%-16s %14.3f %14.3f %14.3f %14.3f  %d\n", rec.name.c_str(), g.median, g.min, g.max, c.median, g.count);
+        // Parts of the pass with their own spans (e.g. lighting/shadow maps).
+        for (const auto& series : timer.series()) {
+            if (series.name.rfind(rec.name + "/", 0) != 0) continue;
+            const TimingStats sg = timer.gpuStats(series.name, static_cast<size_t>(frames));
+            const TimingStats sc = timer.cpuStats(series.name, static_cast<size_t>(frames));
+            std::printf("  %-14s %14.3f %14.3f %14.3f %14.3f  %d\n", series.name.substr(rec.name.size() + 1).c_str(), sg.median,
+                        sg.min, sg.max, sc.median, sg.count);
+        }
+        if (!rec.stats.empty()) std::printf("  (%s)\n", rec.stats.c_str());
     }
     const TimingStats g = timer.gpuStats(PassTimer::kFrameSeries, static_cast<size_t>(frames));
     const TimingStats c = timer.cpuStats(PassTimer::kFrameSeries, static_cast<size_t>(frames));
@@ -38,15 +51,19 @@ int runRenderCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
-                     "                                 [--set knob=value]... [--frames N] [--timings] --out FILE\n"
+                     "                                 [--preset NAME|FILE] [--set knob=value]... [--frames N] [--timings]\n"
+                     "                                 --out FILE\n"
                      "  --scene    built-in scene (default), a scene .json, or a .gltf/.glb file\n"
+                     "  --preset   a built-in preset (list presets) or a preset .json; its knobs apply after\n"
+                     "             the scene's settings and before --set; its scene is used without --scene\n"
                      "  --buffer   any named output (list buffers); default: final\n"
                      "  --out      .png writes the displayed (8-bit) view; .exr the raw float values\n"
                      "  --frames   frames to render (timings are medians over them); default 1\n"
                      "  --timings  print per-pass GPU and CPU milliseconds\n";
         return 0;
     }
-    const std::string scene = cl.value("--scene").value_or("default");
+    const auto sceneArg = cl.value("--scene");
+    const auto presetArg = cl.value("--preset");
     const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
     const std::string buffer = cl.value("--buffer").value_or("final");
     const auto out = cl.value("--out");
@@ -58,13 +75,35 @@ int runRenderCommand(int argc, char** argv) {
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
 
-    // Bad input fails before any GL work: check --set against the knob
-    // declarations, then load the scene (CPU only).
+    // Bad input fails before any GL work: the preset (every key must be
+    // valid: a script should not silently run something else), --set against
+    // the knob declarations, then the scene (CPU only).
+    std::optional<Preset> preset;
+    if (presetArg) {
+        if (const Preset* builtin = findBuiltinPreset(*presetArg)) {
+            preset = *builtin;
+        } else if (!std::filesystem::exists(*presetArg)) {
+            std::string names;
+            for (const auto& b : builtinPresets()) names += (names.empty() ? "" : ", ") + b.name;
+            throw Error("--preset '" + *presetArg + "' is neither a built-in preset (" + names + ") nor an existing file");
+        } else {
+            preset = Preset::load(*presetArg);
+        }
+        KnobRegistry knobs;
+        Pipeline declarations(knobs);
+        const Preset::ApplyReport r = preset->applyKnobs(knobs);
+        if (!r.ignored.empty()) {
+            std::string all;
+            for (const auto& i : r.ignored) all += (all.empty() ? "" : " | ") + i;
+            throw FileError(*presetArg, all);
+        }
+    }
     {
         KnobRegistry knobs;
         Pipeline declarations(knobs);
         for (const auto& s : sets) knobs.applyAssignment(s);
     }
+    const std::string scene = sceneArg ? *sceneArg : (preset && !preset->scene.empty() ? preset->scene : "default");
     Scene loaded = loadScene(scene);
 
     auto context = HeadlessGlContext::create();
@@ -72,8 +111,15 @@ int runRenderCommand(int argc, char** argv) {
     if (verbose)
         std::fprintf(stderr, "GL: %s | %s (%s)\n", session.glInfo().renderer.c_str(), session.glInfo().version.c_str(),
                      context->platform().c_str());
-    // Knob values: defaults, then the scene's own settings, then --set.
+    // Knob values: defaults, then the scene's own settings, then the preset, then --set.
     session.setScene(std::move(loaded));
+    if (preset) {
+        preset->applyKnobs(session.knobs());
+        // The preset's camera belongs to its scene.
+        const std::string& src = session.scene().source;
+        if (preset->camera && (preset->scene.empty() || preset->scene == src || "builtin:" + preset->scene == src))
+            session.camera() = *preset->camera;
+    }
     for (const auto& s : sets) session.knobs().applyAssignment(s);
     for (const auto& w2 : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w2.c_str());
     session.resize(w, h);

@@ -15,7 +15,7 @@ void printUsage() {
         "Deferred Workbench: a workbench for real-time deferred shading.\n\n"
         "usage: deferred-workbench [gui] [--scene S] [--preset P]     open the workbench window\n"
         "       deferred-workbench render --scene S --out FILE [...]  render a buffer to .png/.exr\n"
-        "       deferred-workbench list scenes|buffers|knobs|passes\n"
+        "       deferred-workbench list scenes|buffers|knobs|passes|presets\n"
         "       deferred-workbench <command> --help\n");
 }
 

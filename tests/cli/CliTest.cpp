@@ -61,7 +61,12 @@ TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
     const Result knobs = run("list knobs");
     EXPECT_NE(knobs.out.find("lighting.threshold"), std::string::npos);
     EXPECT_NE(knobs.out.find("tonemap.key"), std::string::npos);
-    EXPECT_EQ(run("list passes").code, 0);
+    const Result passes = run("list passes");
+    EXPECT_EQ(passes.code, 0);
+    EXPECT_NE(passes.out.find("reads  ssao.blurred (when produced)"), std::string::npos) << passes.out;
+    const Result presets = run("list presets");
+    EXPECT_EQ(presets.code, 0);
+    for (const char* p : {"Low", "Medium", "High", "SSAO1", "SSAO5"}) EXPECT_NE(presets.out.find(p), std::string::npos) << p;
     EXPECT_EQ(run("list widgets").code, 2);
 }
 
@@ -98,6 +103,78 @@ TEST(Cli, TimingsListEveryPassThatRan) {
     for (const char* p : {"geometry", "lighting", "luminance", "tonemap", "frame (total)"})
         EXPECT_NE(r.out.find(p), std::string::npos) << p;
     EXPECT_NE(r.out.find("skipped: nothing this frame consumes"), std::string::npos);
+    // The effect passes, each with its own line, and the shadow maps as a
+    // span inside lighting.
+    for (const char* p : {"\nssao ", "\nssao_blur ", "\nskybox ", "\nbloom ", "\nfxaa ", "\n  shadow maps "})
+        EXPECT_NE(r.out.find(p), std::string::npos) << p << r.out;
+    EXPECT_NE(r.out.find("skipped: switched off (dof.enabled = false)"), std::string::npos) << r.out;
+    const Result dof = run("render --scene default --size 64x36 --set dof.enabled=true --set ssao.enabled=false --timings --out " +
+                           (test::tempDir() / "t.png").string());
+    ASSERT_EQ(dof.code, 0) << dof.err;
+    EXPECT_NE(dof.out.find("\ndof "), std::string::npos) << dof.out;
+    EXPECT_NE(dof.out.find("skipped: switched off (ssao.enabled = false)"), std::string::npos) << dof.out;
+}
+
+TEST(Cli, WritesEffectBuffers) {
+    const fs::path ao = test::tempDir() / "ao.exr";
+    ASSERT_EQ(run("render --scene default --size 64x36 --buffer ssao.blurred --out " + ao.string()).code, 0);
+    const FloatImage aoImg = loadImageFloat(ao.string());
+    EXPECT_EQ(aoImg.width, 64);
+    const auto aoStats = test::stats(aoImg, 0);
+    EXPECT_GE(aoStats.min, 0.0);
+    EXPECT_LT(aoStats.min, 0.9);  // the courtyard has creases
+    EXPECT_LE(aoStats.max, 1.0 + 1e-3);
+
+    const fs::path shadow = test::tempDir() / "shadow.exr";
+    ASSERT_EQ(run("render --scene default --size 64x36 --set shadows.map_size=128 --buffer shadow.map0 --out " +
+                  shadow.string()).code, 0);
+    const auto sh = test::stats(loadImageFloat(shadow.string()), 0);
+    EXPECT_GE(sh.min, 0.0);
+    EXPECT_LE(sh.max, 1.0);
+    EXPECT_GT(sh.max - sh.min, 0.05);  // geometry in the map, not a cleared buffer
+
+    const fs::path mip = test::tempDir() / "mip.exr";
+    ASSERT_EQ(run("render --scene street --size 128x72 --buffer bloom.mip2 --out " + mip.string()).code, 0);
+    const FloatImage mipImg = loadImageFloat(mip.string());
+    EXPECT_LT(mipImg.width, 64);
+    EXPECT_GT(test::stats(mipImg, 0).max, 0.0);  // street lamps are above the threshold
+
+    const fs::path png = test::tempDir() / "bloom.png";
+    EXPECT_EQ(run("render --scene street --size 128x72 --buffer bloom.result --out " + png.string()).code, 0);
+    EXPECT_TRUE(fs::exists(png));
+}
+
+TEST(Cli, PresetsApplyBeforeSetAndBadOnesAreOneLineErrors) {
+    const Result builtin = run("render --scene spheres --size 64x36 --preset SSAO1 --timings --out " +
+                               (test::tempDir() / "p.png").string());
+    ASSERT_EQ(builtin.code, 0) << builtin.err;
+    EXPECT_NE(builtin.out.find("8 samples at 16x9"), std::string::npos) << builtin.out;  // quarter resolution
+    // --set wins over the preset.
+    const Result over = run("render --scene spheres --size 64x36 --preset SSAO1 --set ssao.resolution=full --timings --out " +
+                            (test::tempDir() / "p.png").string());
+    ASSERT_EQ(over.code, 0) << over.err;
+    EXPECT_NE(over.out.find("8 samples at 64x36"), std::string::npos) << over.out;
+    // A preset file names its scene; without --scene that scene is rendered.
+    const fs::path file = writeText("street-preset.json", R"({"name": "dim street", "scene": "street",
+        "knobs": {"bloom.enabled": "false", "tonemap.exposure": "-1"}})");
+    const Result fromFile = run("render --size 64x36 --preset " + file.string() + " --timings --out " +
+                                (test::tempDir() / "p.png").string());
+    ASSERT_EQ(fromFile.code, 0) << fromFile.err;
+    EXPECT_NE(fromFile.out.find("scene street"), std::string::npos) << fromFile.out;
+    EXPECT_NE(fromFile.out.find("skipped: switched off (bloom.enabled = false)"), std::string::npos) << fromFile.out;
+
+    const fs::path bad = writeText("bad-preset.json", R"({"name": "typo", "knobs": {"ssao.sampels": "8"}})");
+    const Result r = run("render --size 32x32 --preset " + bad.string() + " --out x.png");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(bad.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("ssao.sampels"), std::string::npos) << r.err;
+    const fs::path broken = writeText("broken-preset.json", "{\"knobs\": [1, 2");
+    const Result b = run("render --size 32x32 --preset " + broken.string() + " --out x.png");
+    EXPECT_EQ(b.code, 1);
+    EXPECT_EQ(lines(b.err), 1) << b.err;
+    EXPECT_NE(b.err.find(broken.string()), std::string::npos) << b.err;
+    EXPECT_EQ(run("render --size 32x32 --preset NoSuchPreset --out x.png").code, 1);
 }
 
 TEST(Cli, MalformedSceneJsonIsOneLineNamingTheFile) {
