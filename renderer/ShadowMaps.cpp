@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/GpuScene.h"
@@ -57,7 +58,11 @@ void ShadowMaps::setup(gl::ShaderLibrary& shaders) {
 }
 
 ShadowMaps::Kind ShadowMaps::kindOf(const Light& light, const KnobRegistry& knobs) const {
-    if (light.type != LightType::Point) return Map2D;
+    // A spot light wider than kWideSpotDegrees would need a perspective map of
+    // nearly 180 degrees (texels stretched without bound at its rim), so it
+    // is shadowed like a point light.
+    if (light.type == LightType::Directional) return Map2D;
+    if (light.type == LightType::Spot && light.cutoffDegrees <= kWideSpotDegrees) return Map2D;
     return knobs.get(pointMethod_) == 0 ? Cube : Paraboloid;
 }
 
@@ -99,9 +104,23 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     const glm::mat4 inverseView = ctx.camera.inverseView;
     const Bounds bounds = ctx.scene.bounds();
     const float sceneRadius = std::max(bounds.radius(), 1e-3f);
-    const float far = std::isfinite(radius) && radius > 0 ? static_cast<float>(radius)
-                                                          : glm::length(light.position - bounds.center()) + sceneRadius;
-    const float near = std::max(far * 1e-3f, 0.02f);
+    // The depth range: out to the light's radius, but no further than the
+    // farthest corner of the scene (a bright light's radius can be far larger
+    // than the scene, and the near plane scales with the far one). No
+    // absolute floor, so a scene at any scale keeps its shadows.
+    float far = std::isfinite(radius) && radius > 0 ? static_cast<float>(radius) : std::numeric_limits<float>::max();
+    if (!bounds.empty()) {
+        float farthest = 0.0f;
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner((c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
+                                   (c & 4) ? bounds.max.z : bounds.min.z);
+            farthest = std::max(farthest, glm::length(corner - light.position));
+        }
+        far = std::min(far, farthest * 1.01f);
+    }
+    if (!std::isfinite(far) || far > 1e30f) far = glm::length(light.position) + sceneRadius;
+    far = std::max(far, sceneRadius * 1e-3f);
+    const float near = far * 1e-3f;
 
     gl::resetPipelineState(size, size);
     glEnable(GL_DEPTH_TEST);
@@ -118,37 +137,56 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         glm::mat4 viewProj;
         if (light.type == LightType::Directional) {
             // Fit an orthographic box around the part of the view frustum in
-            // reach, extended towards the light over the whole scene.
+            // reach, extended towards the light over the whole scene. Across
+            // the light, the box is a constant size while the camera moves (so
+            // snapping it to whole texels stops the edges shimmering): per
+            // axis either the scene's extent, or the diameter of a sphere
+            // around the frustum slice, whichever is smaller.
             const float nearC = ctx.camera.clip.x;
             const float farC = k.get(distance_) > 0.0f ? std::min(k.get(distance_), ctx.camera.clip.y) : ctx.camera.clip.y;
             const glm::vec3 dir = glm::normalize(light.direction);
             const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
             const glm::mat4 lightView = glm::lookAt(center - dir * sceneRadius * 2.0f, center, anyUp(dir));
-            glm::vec3 lo(1e30f), hi(-1e30f);
             const float t = ctx.camera.clip.z, a = ctx.camera.clip.w;
+            const float zMid = 0.5f * (nearC + farC);
+            float sphereR = 0.0f;
+            glm::vec3 lo(1e30f), hi(-1e30f);
             for (float z : {nearC, farC})
                 for (float sx : {-1.0f, 1.0f})
                     for (float sy : {-1.0f, 1.0f}) {
                         const glm::vec4 pv(sx * z * t * a, sy * z * t, -z, 1.0f);
+                        sphereR = std::max(sphereR, glm::length(glm::vec3(pv) - glm::vec3(0.0f, 0.0f, -zMid)));
                         const glm::vec3 pl(lightView * inverseView * pv);
                         lo = glm::min(lo, pl);
                         hi = glm::max(hi, pl);
                     }
+            const glm::vec3 sphereC(lightView * inverseView * glm::vec4(0.0f, 0.0f, -zMid, 1.0f));
+            float extent = 2.0f * sphereR;
+            glm::vec2 lo2 = glm::vec2(sphereC) - sphereR, hi2 = glm::vec2(sphereC) + sphereR;
             if (!bounds.empty()) {
                 const Bounds lb = bounds.transformed(lightView);
-                // Only as wide as the scene, and deep enough for every caster.
-                lo = glm::vec3(glm::max(glm::vec2(lo), glm::vec2(lb.min)), std::min(lo.z, lb.min.z));
-                hi = glm::vec3(glm::min(glm::vec2(hi), glm::vec2(lb.max)), std::max(hi.z, lb.max.z));
-                hi = glm::max(hi, lo + glm::vec3(1e-3f));
+                const float sceneExtent = std::max(lb.max.x - lb.min.x, lb.max.y - lb.min.y);
+                if (sceneExtent <= extent) {
+                    // The whole scene, in a square box centred on it.
+                    extent = std::max(sceneExtent, 1e-3f);
+                    const glm::vec2 c = 0.5f * (glm::vec2(lb.min) + glm::vec2(lb.max));
+                    lo2 = c - 0.5f * extent;
+                    hi2 = c + 0.5f * extent;
+                }
+                // Deep enough for every caster between the light and the view.
+                lo.z = std::min(lo.z, lb.min.z);
+                hi.z = std::max(hi.z, lb.max.z);
             }
-            // Snap to texels so the map does not shimmer as the camera moves.
-            const glm::vec2 texel = (glm::vec2(hi) - glm::vec2(lo)) / static_cast<float>(size);
-            lo = glm::vec3(glm::floor(glm::vec2(lo) / texel) * texel, lo.z);
-            hi = glm::vec3(glm::ceil(glm::vec2(hi) / texel) * texel, hi.z);
+            // Snap the box to whole texels of its (constant) size.
+            const float texel = extent / static_cast<float>(size);
+            lo2 = glm::floor(lo2 / texel) * texel;
+            hi2 = lo2 + extent + texel;  // one texel of slack for the snap
+            lo = glm::vec3(lo2, lo.z);
+            hi = glm::vec3(hi2, hi.z);
             viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f) * lightView;
             out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
         } else {
-            const float fov = std::min(2.0f * light.cutoffDegrees + 2.0f, 170.0f);
+            const float fov = 2.0f * light.cutoffDegrees + 2.0f;  // <= 2 * kWideSpotDegrees + 2
             const glm::vec3 dir = glm::normalize(light.direction);
             viewProj = glm::perspective(glm::radians(fov), 1.0f, near, far) *
                        glm::lookAt(light.position, light.position + dir, anyUp(dir));

@@ -32,6 +32,8 @@ struct ShadowLookup {
 class ShadowMaps {
 public:
     enum Kind { Map2D = 0, Cube = 1, Paraboloid = 2 };
+    // Spot lights wider than this get a point light's map (cube or paraboloids).
+    static constexpr float kWideSpotDegrees = 60.0f;
 
     explicit ShadowMaps(KnobRegistry& knobs);
     void setup(gl::ShaderLibrary& shaders);

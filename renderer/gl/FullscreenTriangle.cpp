@@ -1,5 +1,7 @@
 #include "renderer/gl/FullscreenTriangle.h"
 
+#include "renderer/gl/Sampler.h"
+
 namespace dw::gl {
 
 void FullscreenTriangle::draw() const {
@@ -19,6 +21,7 @@ void resetPipelineState(int width, int height) {
     glDisable(GL_MULTISAMPLE);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // filtering (and PCF) across cube faces
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
@@ -26,6 +29,7 @@ void resetPipelineState(int width, int height) {
     glDepthFunc(GL_LESS);
     glFrontFace(GL_CCW);
     glViewport(0, 0, width, height);
+    glBindSamplers(0, Sampler::kResetUnits, nullptr);  // textures' own sampling state
 }
 
 }  // namespace dw::gl

@@ -54,6 +54,9 @@ struct ProgramTraits {
 struct ShaderTraits {
     static void destroy(GLuint id) { glDeleteShader(id); }
 };
+struct SamplerTraits {
+    static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
 struct QueryTraits {
     static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <glm/glm.hpp>
 
+#include "renderer/Error.h"
 #include "renderer/GpuScene.h"
 #include "renderer/gl/FullscreenTriangle.h"
 
@@ -86,7 +87,11 @@ void BloomPass::drawInto(const gl::Framebuffer& fbo, int w, int h) {
 void BloomPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     // Declared by the tone mapper, which is built after this pass.
-    if (nanGuard_.id < 0) nanGuard_ = BoolKnob{*k.find("tonemap.nan_guard")};
+    if (nanGuard_.id < 0) {
+        const std::optional<int> id = k.find("tonemap.nan_guard");
+        if (!id) throw Error("the bloom pass needs the tone mapper's knob tonemap.nan_guard");
+        nanGuard_ = BoolKnob{*id};
+    }
     const gl::Texture& hdr = *ctx.outputs.find("lbuffer")->texture;
     const int w = bright_target_.texture.width(), h = bright_target_.texture.height();
     const int levels = std::min(k.get(levels_), bright_target_.texture.levels() - 1);
@@ -142,11 +147,15 @@ void BloomPass::execute(FrameContext& ctx) {
             coarse = &dst;
         }
         params(glm::vec4(0.0f));
-        up_chain_[0].texture.bind(0);
+        // With no coarser level (a tiny image) the bright image is the bloom.
+        (levels > 0 ? up_chain_[0].texture : bright_target_.texture).bind(0);
         scale_->use();
         drawInto(result_.fbo, w, h);
-        for (int i = 1; i <= kMaxLevels; ++i)
-            outputs_->bind("bloom.mip" + std::to_string(i), &down_chain_[std::min(i, kMaxLevels)].texture, 4, 0);
+        for (int i = 1; i <= kMaxLevels; ++i) {
+            // Levels beyond bloom.levels were not drawn this frame: show them black, not stale.
+            if (i > levels) down_chain_[i].fbo.clearColor(0, 0.0f, 0.0f, 0.0f, 1.0f);
+            outputs_->bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
+        }
     }
     stats_ = std::string(method == MipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +
              std::to_string(w) + "x" + std::to_string(h);

@@ -2,6 +2,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/Error.h"
 #include "renderer/GpuScene.h"
 
 namespace dw {
@@ -24,6 +25,11 @@ DofPass::DofPass(KnobRegistry& knobs) {
     samples_ = knobs.addInt("dof.samples", 24, 4, 128, "dof", "gather samples per pixel", "", true);
     near_ = knobs.addBool("dof.near_blur", true, "dof", "blur what is nearer than the focus");
     far_ = knobs.addBool("dof.far_blur", true, "dof", "blur what is farther than the focus");
+    // Declared by the tone mapper, which comes first: whether its output is
+    // sRGB-encoded, so the blur averages linear values.
+    const std::optional<int> srgb = knobs.find("tonemap.srgb");
+    if (!srgb) throw Error("the depth-of-field pass needs the tone mapper's knob tonemap.srgb");
+    srgb_ = BoolKnob{*srgb};
 }
 
 std::string DofPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
@@ -55,7 +61,7 @@ void DofPass::execute(FrameContext& ctx) {
         if (cocOnly && !ctx.wants("dof.coc")) continue;
         DofParamsGpu p;
         p.modes = glm::ivec4(k.get(near_) ? 1 : 0, k.get(far_) ? 1 : 0, k.get(samples_), cocOnly);
-        p.values = glm::vec4(k.get(focus_), k.get(range_), k.get(radius_), 0.0f);
+        p.values = glm::vec4(k.get(focus_), k.get(range_), k.get(radius_), k.get(srgb_) ? 1.0f : 0.0f);
         params_.update(0, sizeof(p), &p);
         params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
         (cocOnly ? cocFbo_ : resultFbo_).bind();

@@ -27,7 +27,7 @@ public:
     void execute(FrameContext& ctx) override;
 
 private:
-    BoolKnob enabled_, near_, far_;
+    BoolKnob enabled_, near_, far_, srgb_;
     FloatKnob focus_, range_, radius_;
     IntKnob samples_;
     gl::ShaderLibrary::Handle program_;

@@ -27,6 +27,7 @@ std::string FxaaPass::skipReason(const KnobRegistry& knobs, const Scene&) const 
 
 void FxaaPass::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "post/fxaa.frag"});
+    linear_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "fxaa linear");
 }
 
 void FxaaPass::resize(int width, int height, OutputRegistry& outputs) {
@@ -38,9 +39,10 @@ void FxaaPass::resize(int width, int height, OutputRegistry& outputs) {
 void FxaaPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const gl::Texture& input = *ctx.outputs.find(k.get(dofEnabled_) ? "dof.result" : "tonemap.result")->texture;
-    // Bilinear reads between pixels are part of the method.
-    input.setFilter(GL_LINEAR, GL_LINEAR);
+    // Bilinear reads between pixels are part of the method; the sampler keeps
+    // the shared image itself nearest for everyone else.
     input.bind(0);
+    linear_.bind(0);
     program_->use();
     program_->set(0, glm::vec4(k.get(threshold_), k.get(thresholdMin_), k.get(subpixel_), 0.0f));
     static const int steps[] = {4, 8, 12};

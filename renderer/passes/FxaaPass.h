@@ -5,6 +5,7 @@
 #include "renderer/RenderPass.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
 
@@ -31,6 +32,7 @@ private:
     gl::FullscreenTriangle triangle_;
     gl::Texture result_;
     gl::Framebuffer fbo_;
+    gl::Sampler linear_;
 };
 
 }  // namespace dw

@@ -27,9 +27,9 @@ void GeometryPass::resize(int width, int height, OutputRegistry& outputs) {
     specular_ = gl::Texture::create2D(GL_SRGB8_ALPHA8, width, height);
     emissive_ = gl::Texture::create2D(GL_R11F_G11F_B10F, width, height);
     depth_ = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
-    for (gl::Texture* t : {&albedo_, &normal_, &specular_, &emissive_}) t->setFilter(GL_NEAREST, GL_NEAREST);
-    // SSAO samples depth between pixel centres; every other reader uses texelFetch.
-    depth_.setFilter(GL_LINEAR, GL_LINEAR);
+    // Nearest: a G-buffer value between pixels means nothing. (SSAO reads
+    // depth between pixel centres through its own linear sampler.)
+    for (gl::Texture* t : {&albedo_, &normal_, &specular_, &emissive_, &depth_}) t->setFilter(GL_NEAREST, GL_NEAREST);
     fbo_ = gl::Framebuffer::create("gbuffer");
     fbo_.attachColor(0, albedo_);
     fbo_.attachColor(1, normal_);

@@ -48,6 +48,9 @@ public:
         int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
     };
     const Counts& lastCounts() const { return counts_; }
+    // Shadow-map memory of the last frame, and what one map per light would take.
+    std::size_t shadowBytesInUse() const { return shadows_.bytesInUse(); }
+    std::size_t shadowBytesKeepingAll() const { return shadows_.bytesKeepingAll(); }
 
 private:
     enum class Method { FullScreen, Volume, StencilVolume };

@@ -71,6 +71,7 @@ std::vector<glm::vec4> SsaoPass::kernel(int n) {
 }
 
 void SsaoPass::setup(gl::ShaderLibrary& shaders) {
+    linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "ssao linear depth");
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/ssao.frag"});
     params_ = gl::Buffer::create(sizeof(SsaoParamsGpu), nullptr, true, "ssao params");
     std::vector<glm::vec4> noise;
@@ -110,6 +111,7 @@ void SsaoPass::execute(FrameContext& ctx) {
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
     ctx.outputs.find("gbuffer.depth")->texture->bind(0);
+    linearDepth_.bind(0);
     ctx.outputs.find("gbuffer.normal")->texture->bind(1);
     noise_.bind(2);
     glViewport(0, 0, size.x, size.y);

@@ -10,6 +10,7 @@
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
 
@@ -45,6 +46,7 @@ private:
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
     gl::Texture noise_, ao_;
+    gl::Sampler linearDepth_;  // depth between pixel centres (see ssao.frag)
     gl::Framebuffer fbo_;
     OutputRegistry* outputs_ = nullptr;
     std::string stats_;

@@ -27,10 +27,11 @@ void Camera::fitClipPlanes(const Bounds& bounds) {
     if (bounds.empty()) return;
     const float r = std::max(bounds.radius(), 1e-3f);
     const float d = glm::length(bounds.center() - position);
-    farPlane = d + r * 1.05f;
-    // Inside the bounds the nearest surface may be close: a small fixed fraction.
-    nearPlane = d > r ? std::max(d - r, farPlane * 1e-4f) : std::max(r * 1e-3f, farPlane * 1e-5f);
-    nearPlane = std::min(nearPlane, farPlane * 0.5f);
+    // Room to orbit out to about twice the distance, and to move in close:
+    // a near plane at a fixed fraction of the far one (1e-3 keeps the 32-bit
+    // float depth precise enough for position reconstruction).
+    farPlane = d + r * 3.0f;
+    nearPlane = farPlane * 1e-3f;
 }
 
 Camera Camera::framing(const Bounds& bounds, float fovYDegrees) {

@@ -214,8 +214,13 @@ private:
         c.fovYDegrees = r_.positive(j, "fov", "camera", 60.0f);
         if (c.fovYDegrees >= 179.0f) r_.fail("camera.fov", "must be less than 179 degrees");
         c.fitClipPlanes(scene_.bounds());
+        // A plane the file sets wins; the other one is fitted so that the
+        // pair stays ordered. Only two planes the file sets can conflict.
+        const bool hasNear = j.contains("near"), hasFar = j.contains("far");
         c.nearPlane = r_.positive(j, "near", "camera", c.nearPlane);
         c.farPlane = r_.positive(j, "far", "camera", c.farPlane);
+        if (hasFar && !hasNear) c.nearPlane = std::min(c.nearPlane, c.farPlane * 1e-3f);
+        if (hasNear && !hasFar) c.farPlane = std::max(c.farPlane, c.nearPlane * 10.0f);
         if (c.farPlane <= c.nearPlane) r_.fail("camera.far", "must be greater than camera.near");
         if (glm::length(c.target - c.position) < 1e-6f) r_.fail("camera.look-at", "must differ from camera.pos");
         scene_.camera = c;

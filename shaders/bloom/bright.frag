@@ -1,7 +1,8 @@
 #version 450 core
 // Bloom threshold (seed 000 section 5.4, seed 002 section 3.2, step 7): the
-// L-buffer at half resolution (2x2 box), with the threshold, a multiple of the
-// image's average luminance, subtracted from each pixel's luminance.
+// L-buffer at half resolution (the mean of each 2x2 block, so a one-pixel
+// highlight is not dropped or flickering), with the threshold, a multiple of
+// the image's average luminance, subtracted from each pixel's luminance.
 #include "../common/color.glsl"
 #include "../common/bindings.glsl"
 
@@ -20,8 +21,12 @@ vec3 guarded(vec3 c) {
 }
 
 void main() {
-    vec2 uv = gl_FragCoord.xy * 2.0 * bloom.values.yz;  // the centre of the 2x2 block
-    vec3 c = guarded(texture(uHdr, uv).rgb);
+    ivec2 size = textureSize(uHdr, 0);
+    ivec2 p = ivec2(gl_FragCoord.xy) * 2;
+    vec3 c = vec3(0.0);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) c += guarded(texelFetch(uHdr, min(p + ivec2(i, j), size - 1), 0).rgb);
+    c *= 0.25;
     float L = luminance(c);
     float t = bloom.values.x * texelFetch(uStats, ivec2(0), 0).x;
     outColor = vec4(L > t ? c * (L - t) / L : vec3(0.0), 1.0);

@@ -15,5 +15,7 @@ void main() {
     vec2 uv = gl_FragCoord.xy * bloom.values.zw;
     vec3 sum = vec3(0.0);
     for (int level = 1; level <= bloom.modes.y; ++level) sum += textureLod(uBright, uv, float(level)).rgb;
+    // An image so small that the bright image has no coarser level.
+    if (bloom.modes.y == 0) sum = textureLod(uBright, uv, 0.0).rgb;
     outColor = vec4(sum / float(max(bloom.modes.y, 1)), 1.0);
 }

@@ -7,14 +7,17 @@
 // reaches the centre (near-field objects spread over what is behind them) or,
 // for samples farther than the centre, when the centre's blur reaches it (so
 // sharp foreground does not smear into a blurred background).
+// The image is the tone mapper's 8-bit output; with values.w set it is
+// sRGB-encoded, and the gather averages linear light, then re-encodes.
 #include "../common/camera.glsl"
+#include "../common/color.glsl"
 
 layout(binding = 0) uniform sampler2D uImage;
 layout(binding = 1) uniform sampler2D uDepth;
 
 layout(std140, binding = PASS_UBO) uniform DofParams {
     ivec4 modes;   // x near blur, y far blur, z samples, w write the CoC only
-    vec4 values;   // x focus distance, y focus range, z max radius (px)
+    vec4 values;   // x focus distance, y focus range, z max radius (px), w input is sRGB-encoded
 } dof;
 
 layout(location = 0) out vec4 outColor;
@@ -43,7 +46,9 @@ void main() {
         outColor = vec4(cc, 0.0, 0.0, 1.0);
         return;
     }
+    bool srgb = dof.values.w != 0.0;
     vec3 center = texelFetch(uImage, px, 0).rgb;
+    if (srgb) center = srgbToLinear(center);
     int n = dof.modes.z;
     float maxR = dof.values.z;
     vec3 sum = center;
@@ -57,8 +62,10 @@ void main() {
         float cq = coc(zq);
         float reach = zq < zc ? abs(cq) : min(abs(cq), abs(cc));
         float w = clamp(reach - r + 1.0, 0.0, 1.0);
-        sum += texelFetch(uImage, q, 0).rgb * w;
+        vec3 c = texelFetch(uImage, q, 0).rgb;
+        sum += (srgb ? srgbToLinear(c) : c) * w;
         weights += w;
     }
-    outColor = vec4(sum / weights, 1.0);
+    vec3 result = sum / weights;
+    outColor = vec4(srgb ? linearToSrgb(result) : result, 1.0);
 }

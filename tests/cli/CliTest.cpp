@@ -140,8 +140,10 @@ TEST(Cli, WritesEffectBuffers) {
     EXPECT_GT(test::stats(mipImg, 0).max, 0.0);  // street lamps are above the threshold
 
     const fs::path png = test::tempDir() / "bloom.png";
-    EXPECT_EQ(run("render --scene street --size 128x72 --buffer bloom.result --out " + png.string()).code, 0);
-    EXPECT_TRUE(fs::exists(png));
+    ASSERT_EQ(run("render --scene street --size 128x72 --buffer bloom.result --out " + png.string()).code, 0);
+    const FloatImage bloomPng = loadImageFloat(png.string());
+    EXPECT_EQ(bloomPng.width, 64);  // half size
+    EXPECT_GT(test::stats(bloomPng, 0).max, 0.2);  // the lamps' glow, tone-mapped for display
 }
 
 TEST(Cli, PresetsApplyBeforeSetAndBadOnesAreOneLineErrors) {

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/passes/LightingPass.h"
+#include "renderer/reference/LuminanceReference.h"
 #include "renderer/scene/ShapeBuilder.h"
 #include "tests/support/TestSupport.h"
 
@@ -81,6 +82,96 @@ TEST(Shadows, APointUnderTheOccluderIsShadowedAndOneBesideItIsNotForEveryLightTy
     }
 }
 
+// An occluder off every axis: a map drawn or read mirrored or rotated (a
+// cube face's orientation, a paraboloid's handedness, a flipped light matrix)
+// puts the shadow in one of the mirror positions instead.
+TEST(Shadows, AnOffAxisOccludersShadowLandsWhereTheLightProjectsIt) {
+    struct Case {
+        const char* name;
+        LightType type;
+        const char* pointMethod;
+        float cutoff;
+        const char* distance = "0";  // directional: 0 fits the scene; 14 a sphere around the near frustum
+    };
+    const glm::vec3 lightPos(0.0f, 4.0f, 0.0f), box(1.5f, 1.0f, -1.0f);
+    const glm::vec3 sunDir = glm::normalize(glm::vec3(0.5f, -1.0f, 0.3f));
+    for (const Case c : {Case{"directional", LightType::Directional, "cube", 0.0f},
+                         Case{"directional (frustum slice)", LightType::Directional, "cube", 0.0f, "14"},
+                         Case{"spot", LightType::Spot, "cube", 50.0f},
+                         Case{"wide spot (cube)", LightType::Spot, "cube", 75.0f},
+                         Case{"point (cube)", LightType::Point, "cube", 0.0f},
+                         Case{"point (dual paraboloid)", LightType::Point, "dual_paraboloid", 0.0f}}) {
+        auto s = test::makeSession(W, H);
+        Scene scene = test::planeScene(40.0f);
+        Mesh m = shapes::box({0.6f, 0.2f, 0.6f});
+        m.material = 0;
+        scene.instances.push_back({scene.addMesh(std::move(m)), glm::translate(glm::mat4(1.0f), box)});
+        scene.camera.position = {0.0f, 9.0f, 7.0f};
+        scene.camera.target = {0.0f, 0.0f, 0.0f};
+        Light l;
+        l.type = c.type;
+        l.position = lightPos;
+        l.direction = c.type == LightType::Directional ? sunDir : glm::vec3(0.0f, -1.0f, 0.0f);
+        l.cutoffDegrees = c.cutoff > 0.0f ? c.cutoff : 45.0f;
+        l.intensity = glm::vec3(1.0f);
+        l.attenuation = {1.0f, 0.0f, 0.02f};
+        l.castShadows = true;
+        scene.lights.push_back(l);
+        s->setScene(std::move(scene));
+        s->knobs().setFromString("shadows.point_method", c.pointMethod);
+        s->knobs().setFromString("shadows.distance", c.distance);
+        s->render({{"lbuffer"}});
+        const FloatImage L = s->readRaw("lbuffer");
+        // Where the box's centre falls on the floor, seen from the light.
+        glm::vec3 shadow;
+        if (c.type == LightType::Directional) shadow = box + sunDir * (box.y / -sunDir.y);
+        else shadow = lightPos + (box - lightPos) * (lightPos.y / (lightPos.y - box.y));
+        shadow.y = 0.0f;
+        const float at = red(L, project(*s, shadow));
+        for (const glm::vec3 mirror : {glm::vec3(-shadow.x, 0, shadow.z), glm::vec3(shadow.x, 0, -shadow.z),
+                                       glm::vec3(-shadow.x, 0, -shadow.z), glm::vec3(shadow.z, 0, shadow.x)}) {
+            const float lit = red(L, project(*s, mirror));
+            EXPECT_GT(lit, 0.1f) << c.name << " at mirror (" << mirror.x << ", " << mirror.z << ")";
+            EXPECT_LT(at, lit * 0.05f) << c.name << ": shadow expected at (" << shadow.x << ", " << shadow.z << ")";
+        }
+    }
+}
+
+// The shadow map's depth range follows the scene, not only the light's
+// radius: a very bright light (radius in the thousands) and a scene at a
+// hundredth of the scale both keep the shadow of a caster close to the light.
+TEST(Shadows, CastersCloseToBrightLightsAndInTinyScenesStillShadow) {
+    for (const float scale : {1.0f, 0.01f}) {
+        for (const char* method : {"cube", "dual_paraboloid"}) {
+            auto s = test::makeSession(W, H);
+            Scene scene = test::planeScene(40.0f * scale);
+            Mesh m = shapes::box(glm::vec3(1.2f, 0.2f, 1.2f) * scale);
+            m.material = 0;
+            scene.instances.push_back({scene.addMesh(std::move(m)), glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 0) * scale)});
+            scene.camera.position = glm::vec3(0.0f, 9.0f, 7.0f) * scale;
+            scene.camera.target = glm::vec3(0.0f);
+            scene.camera.nearPlane = 0.05f * scale;
+            scene.camera.farPlane = 100.0f * scale;
+            Light l;
+            l.type = LightType::Point;
+            l.position = glm::vec3(0.0f, 1.5f, 0.0f) * scale;  // 0.4 above the box's top
+            l.direction = {0.0f, -1.0f, 0.0f};
+            l.intensity = glm::vec3(20000.0f);
+            l.attenuation = {1.0f, 0.0f, 1.0f / (scale * scale)};
+            l.castShadows = true;
+            scene.lights.push_back(l);
+            s->setScene(std::move(scene));
+            s->knobs().setFromString("shadows.point_method", method);
+            s->render({{"lbuffer"}});
+            const FloatImage L = s->readRaw("lbuffer");
+            const float under = red(L, project(*s, glm::vec3(0.0f)));
+            const float beside = red(L, project(*s, glm::vec3(3.0f, 0.0f, 0.0f) * scale));
+            EXPECT_GT(beside, 1.0f) << method << " scale " << scale;
+            EXPECT_LT(under, beside * 0.05f) << method << " scale " << scale;
+        }
+    }
+}
+
 class ShadowAcne : public ::testing::TestWithParam<glm::vec3> {};
 
 // At a grazing angle the slope-scaled offset matters; straight down (no
@@ -131,12 +222,20 @@ TEST(Shadows, ReusingOneMapGivesTheSameImageWithLessMemory) {
     s->knobs().setFromString("shadows.reuse_map", "true");
     s->render({{"lbuffer"}});
     const FloatImage reused = s->readRaw("lbuffer");
-    const std::string statsReused = s->render({{"lbuffer"}}).find("lighting")->stats;
+    const LightingPass& lighting = *s->pipeline().pass<LightingPass>();
+    const std::size_t inUseReused = lighting.shadowBytesInUse(), keepingAll = lighting.shadowBytesKeepingAll();
     s->knobs().setFromString("shadows.reuse_map", "false");
     s->render({{"lbuffer"}});
     const FloatImage kept = s->readRaw("lbuffer");
     EXPECT_EQ(test::maxAbsDifference(reused, kept, 3), 0.0);
-    EXPECT_NE(statsReused.find("one reused: 4.0 MiB (one per light: 36.0 MiB)"), std::string::npos) << statsReused;
+    // The street's 9 shadowed lamps: one 1024^2 32-bit map in use instead of
+    // one per light.
+    const std::size_t map = 1024u * 1024u * 4u;
+    const int shadowed = lighting.lastCounts().shadowed;
+    EXPECT_EQ(shadowed, 9);
+    EXPECT_EQ(inUseReused, map);
+    EXPECT_EQ(keepingAll, map * static_cast<std::size_t>(shadowed));
+    EXPECT_EQ(lighting.shadowBytesInUse(), keepingAll);  // what keeping them all costs
 }
 
 TEST(Bloom, AddsEnergyOnlyAroundPixelsAboveTheThreshold) {
@@ -188,6 +287,56 @@ TEST(Bloom, AddsEnergyOnlyAroundPixelsAboveTheThreshold) {
     s->knobs().setFromString("bloom.threshold", "10000");
     s->render({{"bloom.result"}});
     EXPECT_EQ(test::stats(s->readRaw("bloom.result"), 0).max, 0.0);
+}
+
+// The threshold pass averages each 2x2 block of the L-buffer before
+// thresholding: a one-pixel highlight is neither dropped nor picked up by
+// one block in four (which would flicker as the camera moves).
+TEST(Bloom, BrightImageIsTheThresholded2x2MeanOfTheLBuffer) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("street");
+    s->knobs().setFromString("bloom.threshold", "1");
+    s->render({{"bloom.bright", "lbuffer", "luminance.stats"}});
+    const FloatImage L = s->readRaw("lbuffer");
+    const FloatImage bright = s->readRaw("bloom.bright");
+    const FloatImage stats = s->readRaw("luminance.stats");
+    ASSERT_EQ(bright.width, W / 2);
+    const double t = 1.0 * stats.at(0, 0, 0);
+    int above = 0;
+    double worst = 0.0;
+    for (int y = 0; y < bright.height; ++y)
+        for (int x = 0; x < bright.width; ++x) {
+            glm::dvec3 c(0.0);
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i)
+                    for (int ch = 0; ch < 3; ++ch) c[ch] += 0.25 * L.at(2 * x + i, 2 * y + j, ch);
+            const double lum = reference::luminance(c.r, c.g, c.b);
+            const glm::dvec3 want = lum > t ? c * ((lum - t) / lum) : glm::dvec3(0.0);
+            above += lum > t;
+            for (int ch = 0; ch < 3; ++ch) {
+                const double err = std::fabs(bright.at(x, y, ch) - want[ch]) / std::max(1.0, std::fabs(want[ch]));
+                worst = std::max(worst, err);
+            }
+        }
+    EXPECT_GT(above, 5);  // the lamps
+    EXPECT_LT(worst, 2e-3) << "half-float storage allows about 1e-3";
+}
+
+// An image so small that the half-size bright image has no coarser level
+// still blooms (from the bright image itself), with both methods.
+TEST(Bloom, ATinyImageStillBlooms) {
+    for (const char* method : {"mip_sum", "dual_filter"}) {
+        auto s = test::makeSession(3, 3);
+        Scene scene = test::planeScene(40.0f);
+        scene.materials[0].emissive = glm::vec3(50.0f);
+        scene.camera.position = {0.0f, 5.0f, 0.01f};
+        scene.camera.target = {0.0f, 0.0f, 0.0f};
+        s->setScene(std::move(scene));
+        s->knobs().setFromString("bloom.method", method);
+        s->knobs().setFromString("bloom.threshold", "0");
+        s->render({{"bloom.result"}});
+        EXPECT_GT(test::stats(s->readRaw("bloom.result"), 0).min, 1.0) << method;
+    }
 }
 
 TEST(NanGuard, NanAndInfinityInTheSkyPoisonTheBloomOnlyWithoutTheGuard) {
@@ -295,6 +444,52 @@ TEST(Fxaa, ChangesOnlyPixelsOnEdges) {
         }
     EXPECT_GT(changed, 50);
     EXPECT_LT(changed, W * H / 3);
+}
+
+// FXAA against the answer it approximates: the same frame rendered at 4x4
+// the size and box-filtered down. On the pixels along edges it must come
+// closer to that than the aliased image does, at every quality.
+TEST(Fxaa, MovesEdgePixelsTowardsASupersampledReference) {
+    auto frame = [](int w, int h, const char* fxaa, const char* quality) {
+        auto s = test::makeSession(w, h);
+        s->loadScene("spheres");
+        for (const char* k : {"ssao.enabled=false", "bloom.enabled=false", "tonemap.operator=clamp", "tonemap.exposure=-1"})
+            s->knobs().applyAssignment(k);
+        s->knobs().setFromString("fxaa.enabled", fxaa);
+        s->knobs().setFromString("fxaa.quality", quality);
+        s->render();
+        return s->readRaw("final");
+    };
+    const FloatImage big = frame(4 * W, 4 * H, "false", "medium");
+    FloatImage ref{W, H, 3, std::vector<float>(W * H * 3, 0.0f)};
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                float sum = 0.0f;
+                for (int j = 0; j < 4; ++j)
+                    for (int i = 0; i < 4; ++i) sum += big.at(4 * x + i, 4 * y + j, ch);
+                ref.at(x, y, ch) = sum / 16.0f;
+            }
+    const FloatImage aliased = frame(W, H, "false", "medium");
+    // Edge pixels: where the aliased image is far from the reference.
+    auto error = [&](const FloatImage& img) {
+        double e = 0.0;
+        int n = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (std::fabs(aliased.at(x, y, 1) - ref.at(x, y, 1)) < 0.1f) continue;
+                ++n;
+                for (int ch = 0; ch < 3; ++ch) e += std::fabs(img.at(x, y, ch) - ref.at(x, y, ch));
+            }
+        return std::make_pair(e / std::max(n, 1), n);
+    };
+    const auto [aliasedError, edges] = error(aliased);
+    ASSERT_GT(edges, 30);
+    for (const char* q : {"low", "medium", "high"}) {
+        const double e = error(frame(W, H, "true", q)).first;
+        std::printf("FXAA %s: mean error on %d edge pixels %.4f (aliased %.4f)\n", q, edges, e, aliasedError);
+        EXPECT_LT(e, 0.8 * aliasedError) << q;
+    }
 }
 
 TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {

@@ -21,6 +21,9 @@ struct Golden {
     std::vector<std::string> sets = {};
 };
 
+// How gtest names a failing case.
+void PrintTo(const Golden& g, std::ostream* os) { *os << g.name << " (" << g.scene << ", " << g.buffer << ")"; }
+
 void checkGolden(const Golden& g) {
     auto session = test::makeSession(192, 108);
     session->loadScene(g.scene);

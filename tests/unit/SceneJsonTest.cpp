@@ -167,3 +167,26 @@ TEST(BuiltinScenes, HaveWhatTheIssueAsksFor) {
         }
     }
 }
+
+TEST(SceneJson, OneClipPlaneFitsTheOtherAndOnlyTwoCanConflict) {
+    const std::string objects = R"("objects": [{"shape": "box", "size": [40, 1, 40]}])";
+    const std::string path = (test::tempDir() / "clip.json").string();
+    // Only far: a near plane below it, whatever the scene's size.
+    const Scene farOnly = parseSceneJson(R"({"camera": {"pos": [0, 5, 30], "far": 0.5}, )" + objects + "}", path);
+    EXPECT_FLOAT_EQ(farOnly.camera.farPlane, 0.5f);
+    EXPECT_GT(farOnly.camera.nearPlane, 0.0f);
+    EXPECT_LT(farOnly.camera.nearPlane, 0.5f);
+    // Only near: a far plane beyond it.
+    const Scene nearOnly = parseSceneJson(R"({"camera": {"pos": [0, 5, 30], "near": 500}, )" + objects + "}", path);
+    EXPECT_FLOAT_EQ(nearOnly.camera.nearPlane, 500.0f);
+    EXPECT_GT(nearOnly.camera.farPlane, 500.0f);
+    // Neither: the fitted planes leave room to orbit out to twice the distance.
+    const Scene fitted = parseSceneJson(R"({"camera": {"pos": [0, 5, 30]}, )" + objects + "}", path);
+    const float r = fitted.bounds().radius();
+    const float d = glm::length(fitted.bounds().center() - fitted.camera.position);
+    EXPECT_GE(fitted.camera.farPlane, 2.0f * d + r);
+    EXPECT_LE(fitted.camera.nearPlane, 0.01f * d);  // and to move in close
+    // Both, out of order: the error names them.
+    EXPECT_NE(errorOf(R"({"camera": {"pos": [0, 5, 30], "near": 5, "far": 1}})").find("camera.far: must be greater than camera.near"),
+              std::string::npos);
+}
