@@ -50,6 +50,8 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
 }
 
 void GpuScene::upload(const Scene& scene) {
+    bounds_ = scene.bounds();
+    triangles_ = scene.triangleCount();
     white_ = solidTexture(255, 255, 255, 255, false);
     flatNormal_ = solidTexture(128, 128, 255, 255, false);
 

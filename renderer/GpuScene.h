@@ -40,6 +40,10 @@ public:
     void upload(const Scene& scene);
     bool empty() const { return draws_.empty(); }
     const std::vector<Draw>& draws() const { return draws_; }
+    // Of the uploaded geometry, which does not change until the next upload
+    // (the workbench edits lights, not meshes): computed once, read per frame.
+    const Bounds& bounds() const { return bounds_; }
+    std::size_t triangleCount() const { return triangles_; }
 
     // Binds VAO, material SSBO and per-draw textures, then issues one draw per
     // instance that passes `filter`. Locations 0 and 1 of `program` receive the
@@ -65,6 +69,8 @@ private:
     std::vector<MaterialTextures> materialTextures_;
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;
+    Bounds bounds_;
+    std::size_t triangles_ = 0;
     std::size_t textureBytes_ = 0;
 };
 

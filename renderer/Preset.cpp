@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "renderer/Error.h"
+#include "renderer/TextFile.h"
 
 namespace dw {
 
@@ -109,11 +110,7 @@ Preset Preset::fromJson(const std::string& text, const std::string& source) {
 }
 
 Preset Preset::load(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path, fs::exists(path) ? "cannot read preset" : "preset not found");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return fromJson(ss.str(), path);
+    return fromJson(readWholeFile(path, "preset not found", "cannot read preset"), path);
 }
 
 void Preset::save(const std::string& path) const {

@@ -102,7 +102,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     out.params = glm::vec4(static_cast<float>(kind == Map2D ? 1 : (kind == Cube ? 2 : 3)), static_cast<float>(k.get(pcf_)),
                            1.0f / static_cast<float>(size), static_cast<float>(slot));
     const glm::mat4 inverseView = ctx.camera.inverseView;
-    const Bounds bounds = ctx.scene.bounds();
+    const Bounds& bounds = ctx.gpu.bounds();
     const float sceneRadius = std::max(bounds.radius(), 1e-3f);
     // The depth range: out to the light's radius, but no further than the
     // farthest corner of the scene (a bright light's radius can be far larger

@@ -67,6 +67,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_CLAMP);
     const glm::mat4& vp = camera.viewProjection;
+    const float sceneRadius = scene.bounds().radius();  // sizes the light markers and axes
 
     // Two passes: lines hidden by geometry faint, visible ones solid.
     for (int pass = 0; pass < (occlusion ? 2 : 1); ++pass) {
@@ -89,7 +90,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
             }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
             // A small cross at every point and spot light.
-            const float size = std::max(scene.bounds().radius() * 0.01f, 0.02f);
+            const float size = std::max(sceneRadius * 0.01f, 0.02f);
             for (size_t i = 0; i < scene.lights.size(); ++i) {
                 const Light& l = scene.lights[i];
                 const bool selected = static_cast<int>(i) == s.selectedLight;
@@ -108,7 +109,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
             }
         }
         if (s.axes) {
-            const float len = std::max(scene.bounds().radius() * 0.25f, 1.0f);
+            const float len = std::max(sceneRadius * 0.25f, 1.0f);
             const glm::vec3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
             for (int a = 0; a < 3; ++a) drawLines({glm::vec3(0.0f), axis[a] * len}, vp, glm::vec4(axis[a] * 0.9f + 0.1f, alpha));
         }

@@ -5,6 +5,8 @@
 #include <regex>
 #include <sstream>
 
+#include "renderer/TextFile.h"
+
 namespace dw::gl {
 
 namespace fs = std::filesystem;
@@ -12,11 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path.string(), "cannot open shader file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    return readWholeFile(path.string(), "cannot open shader file", "cannot open shader file");
 }
 
 struct Assembler {

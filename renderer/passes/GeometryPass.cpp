@@ -60,7 +60,7 @@ void GeometryPass::execute(FrameContext& ctx) {
     program_->use();
     // Blended materials are drawn as opaque until a transparency pass exists.
     ctx.gpu.draw(*program_, GpuScene::Filter::All);
-    stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.scene.triangleCount()) + " triangles";
+    stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
 }
 
 }  // namespace dw

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
 #include "renderer/Error.h"
 #include "renderer/GpuScene.h"
@@ -84,8 +85,14 @@ std::vector<OutputDecl> LightingPass::outputs() const {
     return out;
 }
 
+namespace {
+// Texture units 0-4 of the lighting shaders, in this order.
+const char* const kGBufferInputs[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
+                                      "gbuffer.depth"};
+}  // namespace
+
 PassIO LightingPass::inputs(const KnobRegistry&) const {
-    return {{"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"}, {"ssao.blurred", "sky"}};
+    return {{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ssao.blurred", "sky"}};
 }
 
 void LightingPass::setup(gl::ShaderLibrary& shaders) {
@@ -295,12 +302,15 @@ void LightingPass::execute(FrameContext& ctx) {
     glCopyImageSubData(gdepth->id(), GL_TEXTURE_2D, 0, 0, 0, 0, depthStencil_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        ctx.width, ctx.height, 1);
 
-    const char* inputNames[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.depth"};
+    // Looked up once: with reused shadow maps the inputs are re-bound after every map.
+    const gl::Texture* inputTextures[std::size(kGBufferInputs)];
+    for (std::size_t i = 0; i < std::size(kGBufferInputs); ++i) inputTextures[i] = ctx.outputs.find(kGBufferInputs[i])->texture;
+    const gl::Texture* occlusionTexture = occlusion ? ctx.outputs.find("ssao.blurred")->texture : &white_;
+    const gl::Texture* skyTexture = sky ? ctx.outputs.find("sky")->texture : nullptr;
     auto bindInputs = [&] {
-        for (GLuint unit = 0; unit < 5; ++unit) ctx.outputs.find(inputNames[unit])->texture->bind(unit);
-        if (occlusion) ctx.outputs.find("ssao.blurred")->texture->bind(5);
-        else white_.bind(5);
-        if (sky) ctx.outputs.find("sky")->texture->bind(9);
+        for (std::size_t unit = 0; unit < std::size(kGBufferInputs); ++unit) inputTextures[unit]->bind(static_cast<GLuint>(unit));
+        occlusionTexture->bind(5);
+        if (skyTexture) skyTexture->bind(9);
         shadows_.bind();
         lights_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
         params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);

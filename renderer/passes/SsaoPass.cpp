@@ -49,9 +49,8 @@ std::string SsaoPass::skipReason(const KnobRegistry& knobs, const Scene& scene) 
     return {};
 }
 
-glm::ivec2 SsaoPass::aoSize(const KnobRegistry& knobs, int width, int height) {
-    const auto r = knobs.find("ssao.resolution");
-    const int shift = r ? static_cast<int>(knobs.value(*r)) : 0;
+glm::ivec2 SsaoPass::aoSize(const KnobRegistry& knobs, int width, int height) const {
+    const int shift = knobs.get(resolution_);  // full, half, quarter: 0, 1, 2
     return {std::max(width >> shift, 1), std::max(height >> shift, 1)};
 }
 
@@ -104,8 +103,8 @@ void SsaoPass::execute(FrameContext& ctx) {
     if (ao_.width() != size.x || ao_.height() != size.y) allocate(size.x, size.y);
     SsaoParamsGpu p{};
     const int n = k.get(samples_);
-    const auto kern = kernel(n);
-    std::copy(kern.begin(), kern.end(), p.kernel);
+    if (static_cast<int>(kernel_.size()) != n) kernel_ = kernel(n);
+    std::copy(kernel_.begin(), kernel_.end(), p.kernel);
     p.counts = glm::ivec4(n, k.get(rangeCheck_) ? 1 : 0, size.x, size.y);
     p.values = glm::vec4(k.get(radius_), k.get(intensity_), k.get(bias_), 0.0f);
     params_.update(0, sizeof(p), &p);

@@ -32,7 +32,7 @@ public:
     std::string stats() const override { return stats_; }
 
     // The AO resolution for a full resolution under `knobs`.
-    static glm::ivec2 aoSize(const KnobRegistry& knobs, int width, int height);
+    glm::ivec2 aoSize(const KnobRegistry& knobs, int width, int height) const;
     // Kernel of `n` points in the unit ball, denser near the centre (deterministic).
     static std::vector<glm::vec4> kernel(int n);
 
@@ -47,6 +47,7 @@ private:
     gl::Buffer params_;
     gl::Texture noise_, ao_;
     gl::Sampler linearDepth_;  // depth between pixel centres (see ssao.frag)
+    std::vector<glm::vec4> kernel_;  // kernel(ssao.samples), rebuilt when the count changes
     gl::Framebuffer fbo_;
     OutputRegistry* outputs_ = nullptr;
     std::string stats_;

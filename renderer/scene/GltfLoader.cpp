@@ -15,9 +15,11 @@
 #include <map>
 #include <new>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "renderer/Error.h"
 #include "renderer/ImageIO.h"
+#include "renderer/TextFile.h"
 #include "renderer/scene/TangentGenerator.h"
 
 namespace dw {
@@ -38,15 +40,14 @@ public:
     // Reads the glTF JSON (the first chunk of a .glb) with nlohmann to report
     // malformed JSON by line and column, and unsupported required extensions
     // before tinygltf misreads them (e.g. Draco-compressed accessors).
-    void precheck() const {
-        std::ifstream in(path_, std::ios::binary);
-        if (!in) fail("cannot open file");
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (text.size() >= 20 && text.compare(0, 4, "glTF") == 0) {
+    // `bytes` is the whole file; tinygltf parses the same bytes afterwards.
+    void precheck(const std::string& bytes) const {
+        std::string_view text = bytes;
+        if (bytes.size() >= 20 && isGlb(bytes)) {
             std::uint32_t chunkLength = 0, chunkType = 0;
-            std::memcpy(&chunkLength, text.data() + 12, 4);
-            std::memcpy(&chunkType, text.data() + 16, 4);
-            if (chunkType != 0x4E4F534Au || 20ull + chunkLength > text.size())
+            std::memcpy(&chunkLength, bytes.data() + 12, 4);
+            std::memcpy(&chunkType, bytes.data() + 16, 4);
+            if (chunkType != 0x4E4F534Au || 20ull + chunkLength > bytes.size())
                 fail("malformed GLB: the first chunk is not a complete JSON chunk");
             text = text.substr(20, chunkLength);
         }
@@ -54,16 +55,7 @@ public:
         try {
             j = nlohmann::json::parse(text);
         } catch (const nlohmann::json::parse_error& e) {
-            size_t line = 1, col = 1;
-            for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-                if (text[i] == '\n') {
-                    ++line;
-                    col = 1;
-                } else {
-                    ++col;
-                }
-            }
-            fail("malformed JSON at line " + std::to_string(line) + ", column " + std::to_string(col));
+            fail("malformed JSON at " + textPosition(text, e.byte));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
@@ -83,16 +75,22 @@ public:
     }
 
     void load() {
-        if (!fs::exists(path_)) fail("file not found");
-        precheck();
+        const std::string bytes = readWholeFile(path_, "file not found", "cannot open file");
+        precheck(bytes);
         tinygltf::TinyGLTF loader;
         loader.SetImageLoader(&Importer::decodeImageCallback, this);
         std::string err, warn;
         bool ok = false;
-        const bool binary = isBinary();
+        // What tinygltf's *FromFile functions do after reading the file: parse
+        // from memory with the file's folder as the base for relative URIs.
+        const std::size_t slash = path_.find_last_of("/\\");
+        const std::string baseDir = slash == std::string::npos ? std::string() : path_.substr(0, slash);
+        const auto length = static_cast<unsigned int>(bytes.size());
         try {
-            ok = binary ? loader.LoadBinaryFromFile(&model_, &err, &warn, path_)
-                        : loader.LoadASCIIFromFile(&model_, &err, &warn, path_);
+            ok = isBinary(bytes)
+                     ? loader.LoadBinaryFromMemory(&model_, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                   length, baseDir)
+                     : loader.LoadASCIIFromString(&model_, &err, &warn, bytes.data(), length, baseDir);
         } catch (const std::bad_alloc&) {
             fail("malformed glTF: the parser ran out of memory (a corrupt length or count)");
         } catch (const FileError&) {
@@ -116,18 +114,15 @@ public:
     }
 
 private:
-    bool isBinary() const {
+    static bool isGlb(const std::string& bytes) { return bytes.compare(0, 4, "glTF") == 0; }
+
+    // By extension; by the GLB magic when the extension says neither.
+    bool isBinary(const std::string& bytes) const {
         std::string ext = fs::path(path_).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
         if (ext == ".glb") return true;
         if (ext == ".gltf") return false;
-        FILE* f = std::fopen(path_.c_str(), "rb");
-        char magic[4] = {};
-        if (f) {
-            (void)!std::fread(magic, 1, 4, f);
-            std::fclose(f);
-        }
-        return std::string(magic, 4) == "glTF";
+        return isGlb(bytes);
     }
 
     static std::string firstLines(const std::string& s) {

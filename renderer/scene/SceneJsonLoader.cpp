@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "renderer/Error.h"
+#include "renderer/TextFile.h"
 #include "renderer/ImageIO.h"
 #include "renderer/scene/GltfLoader.h"
 #include "renderer/scene/ShapeBuilder.h"
@@ -414,21 +415,10 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
-        // Turn the byte offset into line:column.
-        size_t line = 1, col = 1;
-        for (size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-            if (text[i] == '\n') {
-                ++line;
-                col = 1;
-            } else {
-                ++col;
-            }
-        }
         std::string msg = e.what();
         const auto pos = msg.find("parse error");
         if (pos != std::string::npos) msg = msg.substr(pos);
-        throw FileError(path, "line " + std::to_string(line) + ", column " + std::to_string(col) +
-                                  ": malformed JSON (" + msg + ")");
+        throw FileError(path, textPosition(text, e.byte) + ": malformed JSON (" + msg + ")");
     }
     Scene scene;
     scene.source = path;
@@ -438,11 +428,7 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
 }
 
 Scene loadSceneJson(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path, fs::exists(path) ? "cannot read scene file" : "scene file not found");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return parseSceneJson(ss.str(), path);
+    return parseSceneJson(readWholeFile(path, "scene file not found", "cannot read scene file"), path);
 }
 
 }  // namespace dw
