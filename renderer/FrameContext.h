@@ -15,6 +15,8 @@ class PassTimer;
 struct Scene;
 namespace gl {
 class ShaderLibrary;
+class Texture;
+class Buffer;
 }
 
 // std140 mirror of CameraBlock in shaders/common/camera.glsl.
@@ -46,11 +48,21 @@ struct FrameContext {
     // Whether an output is consumed this frame; passes skip optional work otherwise.
     bool wants(const std::string& name) const { return wanted.count(name) != 0; }
 
+    // A Post pass's input image this frame (what kCurrentImage stands for).
+    std::string image;
+
     // Whether an (optional) input was written earlier this frame.
     bool produced(const std::string& name) const {
         const PublishedOutput* o = outputs.find(name);
-        return o && o->producedThisFrame && o->texture;
+        return o && o->producedThisFrame && o->allocated();
     }
+    // An output's texture or buffer; throws dw::Error if it is not allocated
+    // (a pass reading what it did not declare, or a resource of the wrong kind).
+    const PublishedOutput& output(const std::string& name) const;
+    const gl::Texture& texture(const std::string& name) const;
+    const gl::Buffer& buffer(const std::string& name) const;
+    // The current image of the post chain.
+    const gl::Texture& currentImage() const { return texture(image); }
 };
 
 }  // namespace dw

@@ -46,6 +46,16 @@ int KnobRegistry::add(KnobSpec spec) {
     return static_cast<int>(specs_.size() - 1);
 }
 
+int KnobRegistry::require(const std::string& name, KnobType type) const {
+    static const char* names[] = {"bool", "int", "float", "enum"};
+    const std::optional<int> id = find(name);
+    if (!id) throw Error("knob '" + name + "' is read by a pass but declared by none");
+    if (specs_[*id].type != type)
+        throw Error("knob '" + name + "' is a " + names[static_cast<int>(specs_[*id].type)] + ", read as a " +
+                    names[static_cast<int>(type)]);
+    return *id;
+}
+
 BoolKnob KnobRegistry::addBool(std::string name, bool def, std::string pass, std::string description) {
     KnobSpec s;
     s.name = std::move(name);

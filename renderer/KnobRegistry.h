@@ -42,6 +42,13 @@ public:
     EnumKnob addEnum(std::string name, std::vector<std::string> choices, int def, std::string pass,
                      std::string description, bool tradeoff = false);
 
+    // Another pass's knob, by name, checked once (RenderPass::connect): throws
+    // dw::Error if it is not declared or is of another type.
+    BoolKnob requireBool(const std::string& name) const { return {require(name, KnobType::Bool)}; }
+    IntKnob requireInt(const std::string& name) const { return {require(name, KnobType::Int)}; }
+    FloatKnob requireFloat(const std::string& name) const { return {require(name, KnobType::Float)}; }
+    EnumKnob requireEnum(const std::string& name) const { return {require(name, KnobType::Enum)}; }
+
     bool get(BoolKnob k) const { return values_[k.id] != 0.0; }
     int get(IntKnob k) const { return static_cast<int>(values_[k.id]); }
     float get(FloatKnob k) const { return static_cast<float>(values_[k.id]); }
@@ -72,6 +79,7 @@ public:
 
 private:
     int add(KnobSpec spec);
+    int require(const std::string& name, KnobType type) const;
     std::vector<KnobSpec> specs_;
     std::vector<double> values_;
     std::uint64_t generation_ = 0;

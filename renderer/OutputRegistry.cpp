@@ -1,6 +1,9 @@
 #include "renderer/OutputRegistry.h"
 
+#include <algorithm>
+
 #include "renderer/Error.h"
+#include "renderer/gl/Texture.h"
 
 namespace dw {
 
@@ -28,9 +31,43 @@ void OutputRegistry::declare(const std::string& pass, const OutputDecl& decl) {
 void OutputRegistry::bind(const std::string& name, const gl::Texture* texture, int channels, int level) {
     PublishedOutput* o = findMutable(name);
     if (!o) throw Error("binding undeclared output '" + name + "'");
+    if (texture && texture != o->texture) {
+        // An imported texture: describe it from what GL has, so views treat it like a managed one.
+        ResourceDesc d;
+        switch (texture->target()) {
+            case GL_TEXTURE_2D_MULTISAMPLE: d.kind = ResourceKind::Texture2DMultisample; break;
+            case GL_TEXTURE_2D_ARRAY: d.kind = ResourceKind::Texture2DArray; break;
+            case GL_TEXTURE_CUBE_MAP: d.kind = ResourceKind::TextureCube; break;
+            case GL_TEXTURE_CUBE_MAP_ARRAY: d.kind = ResourceKind::TextureCubeArray; break;
+            case GL_TEXTURE_3D: d.kind = ResourceKind::Texture3D; break;
+            default: d.kind = ResourceKind::Texture2D; break;
+        }
+        d.format = texture->internalFormat();
+        d.size = SizeMode::Fixed;
+        d.width = texture->width();
+        d.height = texture->height();
+        d.layers = texture->layers();
+        d.samples = std::max(texture->samples(), 1);
+        d.levels = texture->levels();
+        o->desc = d;
+        o->serial = ++importSerial_;
+    }
+    o->buffer = nullptr;
     o->texture = texture;
     o->channels = channels;
     o->level = level;
+}
+
+void OutputRegistry::bindResource(const std::string& name, const gl::Texture* texture, const gl::Buffer* buffer,
+                                  const ResourceDesc& desc, std::uint64_t serial) {
+    PublishedOutput* o = findMutable(name);
+    if (!o) throw Error("binding undeclared output '" + name + "'");
+    o->texture = texture;
+    o->buffer = buffer;
+    o->desc = desc;
+    o->serial = serial;
+    o->channels = o->decl.channels;
+    o->level = std::min(o->decl.level, std::max(desc.levels - 1, 0));
 }
 
 void OutputRegistry::bindAlias(const std::string& alias, const std::string& target) {
@@ -38,6 +75,9 @@ void OutputRegistry::bindAlias(const std::string& alias, const std::string& targ
     const PublishedOutput* t = find(target);
     if (!a || !t) throw Error("binding unknown alias '" + alias + "' to '" + target + "'");
     a->texture = t->texture;
+    a->buffer = t->buffer;
+    a->desc = t->desc;
+    a->serial = t->serial;
     a->channels = t->channels;
     a->level = t->level;
     a->pass = t->pass;

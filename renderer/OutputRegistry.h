@@ -2,14 +2,18 @@
 // Named outputs (DESIGN.md, "Named outputs"): every pass publishes what it
 // writes under a name ("gbuffer.normal", "lbuffer", ...). The inspector, the
 // CLI's --buffer and the pixel probe read this list; none needs per-pass code.
+#include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "renderer/graph/ResourceDesc.h"
 
 namespace dw {
 
 namespace gl {
 class Texture;
+class Buffer;
 }
 
 // How a buffer's values are to be read; drives the default display mapping.
@@ -28,21 +32,35 @@ struct OutputDecl {
     std::string name;
     OutputKind kind = OutputKind::Color;
     std::string description;
+    // Managed outputs are allocated by the pipeline from this (ResourceDesc.h);
+    // the default, imported(), leaves the texture to the pass.
+    ResourceDesc resource{};
+    int channels = 4;        // channels that hold data (a view shows 1 as grey)
+    bool onDemand = false;   // written (and allocated) only when something asks for it
+    std::string viewOf;      // a mip level of another output of the same pass...
+    int level = 0;           // ...this one
 };
 
 struct PublishedOutput {
     OutputDecl decl;
     std::string pass;
-    const gl::Texture* texture = nullptr;  // null until the pass has allocated it
+    const gl::Texture* texture = nullptr;  // null until allocated (or for a buffer)
+    const gl::Buffer* buffer = nullptr;    // a buffer resource
+    ResourceDesc desc{};                   // as allocated this frame (size resolved)
+    std::uint64_t serial = 0;              // changes with every (re)allocation
     int level = 0;
     int channels = 4;
     bool producedThisFrame = false;
+    bool allocated() const { return texture != nullptr || buffer != nullptr; }
 };
 
 class OutputRegistry {
 public:
     void declare(const std::string& pass, const OutputDecl& decl);
     void bind(const std::string& name, const gl::Texture* texture, int channels, int level = 0);
+    // A managed resource allocated by the pipeline (texture or buffer), or its release (both null).
+    void bindResource(const std::string& name, const gl::Texture* texture, const gl::Buffer* buffer,
+                      const ResourceDesc& desc, std::uint64_t serial);
     // Makes `alias` show `target` this frame (texture, pass, produced state).
     void bindAlias(const std::string& alias, const std::string& target);
     void markFrameStart();
@@ -57,6 +75,7 @@ public:
 private:
     PublishedOutput* findMutable(const std::string& name);
     std::vector<PublishedOutput> outputs_;
+    std::uint64_t importSerial_ = 1ull << 62;  // imported textures count apart from the pool's serials
 };
 
 }  // namespace dw

@@ -2,24 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <map>
 #include <set>
 
 #include "renderer/Error.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
-#include "renderer/passes/BloomPass.h"
-#include "renderer/passes/DofPass.h"
-#include "renderer/passes/FxaaPass.h"
-#include "renderer/passes/GBufferDecodePass.h"
-#include "renderer/passes/GeometryPass.h"
-#include "renderer/passes/LightingPass.h"
-#include "renderer/passes/LuminancePass.h"
-#include "renderer/passes/SkyboxPass.h"
-#include "renderer/passes/SsaoBlurPass.h"
-#include "renderer/passes/SsaoPass.h"
-#include "renderer/passes/TonemapPass.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -31,37 +20,38 @@ const PassRecord* FrameReport::find(const std::string& name) const {
 }
 
 Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
-    // Seed 002 section 6: G-buffer, SSAO, (transparency), L-buffer (the sky
-    // and the shadow maps feed it), luminance statistics, bloom, tone mapping;
-    // then depth of field and FXAA on the tone-mapped image.
-    passes_.push_back(std::make_unique<GeometryPass>(knobs));
-    passes_.push_back(std::make_unique<GBufferDecodePass>(knobs));
-    passes_.push_back(std::make_unique<SsaoPass>(knobs));
-    passes_.push_back(std::make_unique<SsaoBlurPass>(knobs));
-    passes_.push_back(std::make_unique<SkyboxPass>(knobs));
-    passes_.push_back(std::make_unique<LightingPass>(knobs));
-    passes_.push_back(std::make_unique<LuminancePass>(knobs));
-    passes_.push_back(std::make_unique<BloomPass>(knobs));
-    passes_.push_back(std::make_unique<TonemapPass>(knobs));
-    passes_.push_back(std::make_unique<DofPass>(knobs));
-    passes_.push_back(std::make_unique<FxaaPass>(knobs));
-    for (const auto& p : passes_)
-        for (const auto& o : p->outputs()) outputs_.declare(p->name(), o);
-    outputs_.declare("tonemap", {kFinalOutput, OutputKind::Color,
-                                 "the display image: fxaa.result, dof.result or tonemap.result, whichever post pass ran last"});
-}
-
-std::string Pipeline::resolveFinal() const {
-    for (const char* candidate : kFinalChain) {
-        const PublishedOutput* o = outputs_.find(candidate);
-        if (!o) continue;
-        const RenderPass* p = findPass(o->pass);
-        if (p && (!scene_ || p->skipReason(knobs_, *scene_).empty())) return candidate;
+    // Built-in passes first, then any registered from outside; within a stage
+    // in registration order (seed 002 section 6 for the built-in ones).
+    std::vector<PassEntry> entries = builtinPasses();
+    for (const auto& e : PassCatalog::extra().entries()) entries.push_back(e);
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const PassEntry& a, const PassEntry& b) { return a.stage < b.stage; });
+    for (const auto& e : entries) {
+        passes_.push_back(e.make(knobs));
+        stages_.push_back(e.stage);
     }
-    return kFinalChain[std::size(kFinalChain) - 1];
+    for (const auto& p : passes_) p->connect(knobs);
+    std::set<std::string> names;
+    for (const auto& p : passes_) {
+        if (!names.insert(p->name()).second) throw Error(std::string("two passes are named '") + p->name() + "'");
+        for (const auto& o : p->outputs()) outputs_.declare(p->name(), o);
+    }
+    if (std::count(stages_.begin(), stages_.end(), PassStage::Tonemap) != 1)
+        throw Error("the pipeline needs exactly one pass of stage Tonemap (the head of the post chain)");
+    for (size_t i = 0; i < passes_.size(); ++i)
+        if ((stages_[i] == PassStage::Tonemap || stages_[i] == PassStage::Post) && passes_[i]->outputs().empty())
+            throw Error(std::string("post pass '") + passes_[i]->name() + "' declares no output image");
+    outputs_.declare("pipeline", {kFinalOutput, OutputKind::Color,
+                                  "the display image: the end of the post chain (tonemap.result, then each post pass that ran)"});
 }
 
 Pipeline::~Pipeline() = default;
+
+PassStage Pipeline::stageOf(const RenderPass& pass) const {
+    for (size_t i = 0; i < passes_.size(); ++i)
+        if (passes_[i].get() == &pass) return stages_[i];
+    throw Error(std::string("pass '") + pass.name() + "' is not in this pipeline");
+}
 
 RenderPass* Pipeline::findPass(const std::string& name) const {
     for (const auto& p : passes_)
@@ -88,6 +78,7 @@ void Pipeline::resize(int width, int height) {
     if (width == width_ && height == height_) return;
     width_ = width;
     height_ = height;
+    // Managed outputs follow the size at the next frame; imported ones now.
     for (auto& p : passes_) p->resize(width, height, outputs_);
 }
 
@@ -104,58 +95,172 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     return u;
 }
 
-std::vector<PassRecord> Pipeline::plan(const FrameRequest& request, std::set<std::string>* wantedOutputs) const {
+std::string Pipeline::resolveFinal() const { return makePlan({{}}).finalName; }
+
+PassIO Pipeline::resolvedInputs(size_t i, const Plan& plan) const {
+    PassIO io = passes_[i]->inputs(knobs_);
+    for (auto* list : {&io.inputs, &io.optionalInputs, &io.modifies})
+        for (auto& name : *list)
+            if (name == kCurrentImage) name = plan.image[i];
+    return io;
+}
+
+std::vector<size_t> Pipeline::orderPasses(const std::vector<PassIO>& io) const {
+    // Kahn's algorithm over the read / write / modify edges; among the passes
+    // that are free to go, the one registered first (stage, then registration).
+    const size_t n = passes_.size();
+    std::map<std::string, size_t> producer;
+    for (size_t i = 0; i < n; ++i)
+        for (const auto& o : passes_[i]->outputs()) producer[o.name] = i;
+    std::vector<std::set<size_t>> next(n);
+    auto edge = [&](size_t from, size_t to) {
+        if (from != to) next[from].insert(to);
+    };
+    for (size_t i = 0; i < n; ++i) {
+        for (const auto* list : {&io[i].inputs, &io[i].optionalInputs, &io[i].modifies})
+            for (const auto& name : *list)
+                if (auto p = producer.find(name); p != producer.end()) edge(p->second, i);
+        // A pass that adds into a resource runs before everyone else who reads it.
+        for (const auto& name : io[i].modifies)
+            for (size_t j = 0; j < n; ++j) {
+                const auto& r = io[j];
+                const bool reads = std::count(r.inputs.begin(), r.inputs.end(), name) ||
+                                   std::count(r.optionalInputs.begin(), r.optionalInputs.end(), name);
+                const bool modifies = std::count(r.modifies.begin(), r.modifies.end(), name);
+                if (reads && !modifies) edge(i, j);
+            }
+    }
+    std::vector<int> incoming(n, 0);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j : next[i]) ++incoming[j];
+    std::set<size_t> ready;
+    for (size_t i = 0; i < n; ++i)
+        if (incoming[i] == 0) ready.insert(i);
+    std::vector<size_t> order;
+    while (!ready.empty()) {
+        const size_t i = *ready.begin();
+        ready.erase(ready.begin());
+        order.push_back(i);
+        for (size_t j : next[i])
+            if (--incoming[j] == 0) ready.insert(j);
+    }
+    if (order.size() != n) {
+        std::string cycle;
+        for (size_t i = 0; i < n; ++i)
+            if (incoming[i] > 0) cycle += (cycle.empty() ? "" : ", ") + std::string(passes_[i]->name());
+        throw Error("the passes' inputs and outputs form a cycle among: " + cycle);
+    }
+    return order;
+}
+
+Pipeline::Plan Pipeline::makePlan(const FrameRequest& request) const {
     for (const auto& name : request.outputs)
         if (!outputs_.find(name))
             throw Error("unknown buffer '" + name + "'; 'deferred-workbench list buffers' lists them");
-    std::vector<PassRecord> records(passes_.size());
+    const size_t n = passes_.size();
+    Plan plan;
+    plan.records.resize(n);
+    plan.image.resize(n);
+    // The post chain: the tone mapper's image, then every Post pass that is
+    // switched on takes the image so far and makes the next.
+    std::vector<std::string> skip(n);
+    for (size_t i = 0; i < n; ++i) {
+        plan.records[i].name = passes_[i]->name();
+        skip[i] = scene_ ? passes_[i]->skipReason(knobs_, *scene_) : std::string();
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (stages_[i] == PassStage::Tonemap) plan.finalName = passes_[i]->outputs().front().name;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (stages_[i] != PassStage::Post) continue;
+        plan.image[i] = plan.finalName;
+        if (skip[i].empty()) plan.finalName = passes_[i]->outputs().front().name;
+    }
+    std::vector<PassIO> io(n);
+    for (size_t i = 0; i < n; ++i) io[i] = resolvedInputs(i, plan);
+    plan.order = orderPasses(io);
+
     std::set<std::string> needed;
-    for (const auto& name : request.outputs) needed.insert(name == kFinalOutput ? resolveFinal() : name);
-    // Backwards: a pass is wanted if something later (or the request) consumes it.
-    std::vector<bool> wanted(passes_.size(), false);
-    for (size_t i = passes_.size(); i-- > 0;) {
-        const RenderPass& p = *passes_[i];
-        records[i].name = p.name();
+    for (const auto& name : request.outputs) needed.insert(name == kFinalOutput ? plan.finalName : name);
+    // Backwards: a pass is wanted if something later (or the request)
+    // consumes what it writes or adds into.
+    std::vector<bool> wanted(n, false);
+    for (auto it = plan.order.rbegin(); it != plan.order.rend(); ++it) {
+        const size_t i = *it;
         // A pass that is switched off says so, whether or not anything wants it.
-        const std::string skip = scene_ ? p.skipReason(knobs_, *scene_) : std::string();
-        if (!skip.empty()) {
-            records[i].reason = skip;
+        if (!skip[i].empty()) {
+            plan.records[i].reason = skip[i];
             continue;
         }
         bool consumed = false;
-        for (const auto& o : p.outputs()) consumed = consumed || needed.count(o.name);
+        for (const auto& o : passes_[i]->outputs()) consumed = consumed || needed.count(o.name);
+        for (const auto& m : io[i].modifies) consumed = consumed || needed.count(m);
         if (!consumed) {
-            records[i].reason = "nothing this frame consumes its outputs";
+            plan.records[i].reason = "nothing this frame consumes its outputs";
             continue;
         }
         wanted[i] = true;
-        const PassIO io = p.inputs(knobs_);
-        needed.insert(io.inputs.begin(), io.inputs.end());
-        needed.insert(io.optionalInputs.begin(), io.optionalInputs.end());
+        needed.insert(io[i].inputs.begin(), io[i].inputs.end());
+        needed.insert(io[i].optionalInputs.begin(), io[i].optionalInputs.end());
+        needed.insert(io[i].modifies.begin(), io[i].modifies.end());
     }
-    // Forwards: a wanted pass runs if its required inputs were produced.
+    // Forwards: a wanted pass runs if what it needs was produced.
     std::set<std::string> produced;
-    for (size_t i = 0; i < passes_.size(); ++i) {
+    for (const size_t i : plan.order) {
         if (!wanted[i]) continue;
-        const PassIO io = passes_[i]->inputs(knobs_);
         std::string missing;
-        for (const auto& in : io.inputs)
-            if (!produced.count(in)) missing = in;
+        for (const auto* list : {&io[i].inputs, &io[i].modifies})
+            for (const auto& in : *list)
+                if (!produced.count(in)) missing = in;
         if (!missing.empty()) {
             const PublishedOutput* src = outputs_.find(missing);
             std::string why = "needs " + missing;
-            if (src) {
-                for (const auto& r : records)
+            if (src)
+                for (const auto& r : plan.records)
                     if (r.name == src->pass && !r.reason.empty()) why += ", but " + r.name + " did not run (" + r.reason + ")";
-            }
-            records[i].reason = why;
+            plan.records[i].reason = why;
             continue;
         }
-        records[i].ran = true;
+        plan.records[i].ran = true;
         for (const auto& o : passes_[i]->outputs()) produced.insert(o.name);
     }
-    if (wantedOutputs) *wantedOutputs = needed;
+    plan.wanted = std::move(needed);
+    return plan;
+}
+
+std::vector<PassRecord> Pipeline::plan(const FrameRequest& request, std::set<std::string>* wantedOutputs) const {
+    Plan p = makePlan(request);
+    std::vector<PassRecord> records;
+    for (size_t i : p.order) records.push_back(p.records[i]);
+    if (wantedOutputs) *wantedOutputs = p.wanted;
     return records;
+}
+
+std::vector<PassInfo> Pipeline::passList() const {
+    Plan p = makePlan({{}});
+    std::vector<PassInfo> list;
+    for (size_t i : p.order) {
+        const PassIO io = resolvedInputs(i, p);
+        list.push_back({passes_[i]->name(), stages_[i], io.inputs, io.optionalInputs, io.modifies, passes_[i]->outputs()});
+    }
+    return list;
+}
+
+void Pipeline::allocateResources(const Plan& plan) {
+    // Managed outputs exist while their writer runs (and, for on-demand ones,
+    // something asks for them); everything else is freed.
+    for (size_t i = 0; i < passes_.size(); ++i) {
+        const RenderPass& p = *passes_[i];
+        if (plan.records[i].ran) {
+            pool_.acquireOutputs(p, knobs_, width_, height_, outputs_, &plan.wanted);
+            continue;
+        }
+        for (const auto& o : p.outputs()) {
+            if (!o.resource.managed() && o.viewOf.empty()) continue;
+            pool_.release(o.name);
+            outputs_.bindResource(o.name, nullptr, nullptr, {}, 0);
+        }
+    }
 }
 
 FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) {
@@ -163,11 +268,10 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
     FrameReport report;
     report.frameIndex = frame_;
-    std::set<std::string> wanted;
-    report.passes = plan(request, &wanted);
-    const std::string finalName = resolveFinal();
+    Plan plan = makePlan(request);
+    for (size_t i : plan.order) report.passes.push_back(plan.records[i]);
     for (const auto& requested : request.outputs) {
-        const std::string name = requested == kFinalOutput ? finalName : requested;
+        const std::string name = requested == kFinalOutput ? plan.finalName : requested;
         const PublishedOutput* o = outputs_.find(name);
         for (const auto& r : report.passes)
             if (r.name == o->pass && !r.ran)
@@ -177,14 +281,18 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     camera_ = cameraUniforms(camera, width_, height_);
     cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
     cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+    allocateResources(plan);
     outputs_.markFrameStart();
-    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, std::move(wanted), &timer_};
+    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, plan.wanted, &timer_};
 
     timer_.beginFrame(frame_);
     try {
-        for (size_t i = 0; i < passes_.size(); ++i) {
-            if (!report.passes[i].ran) continue;
+        size_t slot = 0;
+        for (size_t i : plan.order) {
+            const size_t reportIndex = slot++;
+            if (!plan.records[i].ran) continue;
             RenderPass& p = *passes_[i];
+            ctx.image = plan.image[i];
             gl::resetPipelineState(width_, height_);
             cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
             glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
@@ -198,7 +306,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             timer_.endPass();
             glPopDebugGroup();
             outputs_.markProduced(p.name(), ctx.wanted);
-            report.passes[i].stats = p.stats();
+            report.passes[reportIndex].stats = p.stats();
         }
     } catch (...) {
         // A failed frame leaves nothing half-recorded for the next one.
@@ -209,7 +317,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
         throw;
     }
     timer_.endFrame();
-    outputs_.bindAlias(kFinalOutput, finalName);
+    outputs_.bindAlias(kFinalOutput, plan.finalName);
     gl::resetPipelineState(width_, height_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;

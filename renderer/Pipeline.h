@@ -16,6 +16,8 @@
 #include "renderer/PassTimer.h"
 #include "renderer/RenderPass.h"
 #include "renderer/gl/Buffer.h"
+#include "renderer/graph/PassCatalog.h"
+#include "renderer/graph/ResourcePool.h"
 
 namespace dw {
 
@@ -40,10 +42,17 @@ struct FrameRequest {
     std::vector<std::string> outputs{"final"};
 };
 
-// "final" names the display image: the result of the last post-process pass
-// that is switched on this frame, in this order of preference.
+// "final" names the display image: the end of the post chain this frame (the
+// tone mapper's result, then each Post pass that runs, in order).
 inline constexpr const char* kFinalOutput = "final";
-inline constexpr const char* kFinalChain[] = {"fxaa.result", "dof.result", "tonemap.result"};
+
+// One line of `list passes`: a pass in pipeline order with what it reads and writes.
+struct PassInfo {
+    std::string name;
+    PassStage stage = PassStage::Screen;
+    std::vector<std::string> reads, optionalReads, modifies;
+    std::vector<OutputDecl> writes;
+};
 
 class Pipeline {
 public:
@@ -76,13 +85,33 @@ public:
     static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
     // The output "final" stands for under the current knobs.
     std::string resolveFinal() const;
-    // Plans without executing: which passes would run for `request`, and
-    // (optionally) every output that something consumes.
+    // Plans without executing: which passes would run for `request`, in the
+    // order they would run, and (optionally) every output that something consumes.
     std::vector<PassRecord> plan(const FrameRequest& request, std::set<std::string>* wanted = nullptr) const;
+    // Every pass in pipeline order under the current knobs (`list passes`).
+    std::vector<PassInfo> passList() const;
+    PassStage stageOf(const RenderPass& pass) const;
+    // The managed resources allocated now (after the last frame): an output
+    // whose writer did not run, or that nothing asked for, has none.
+    std::vector<ResourceRecord> resources() const { return pool_.list(); }
 
 private:
+    struct Plan {
+        std::vector<size_t> order;          // pass indices in execution order
+        std::vector<PassRecord> records;    // by pass index
+        std::vector<std::string> image;     // by pass index: what kCurrentImage is for it
+        std::set<std::string> wanted;
+        std::string finalName;
+    };
+    Plan makePlan(const FrameRequest& request) const;
+    PassIO resolvedInputs(size_t pass, const Plan& plan) const;
+    std::vector<size_t> orderPasses(const std::vector<PassIO>& io) const;
+    void allocateResources(const Plan& plan);
+
     KnobRegistry& knobs_;
     std::vector<std::unique_ptr<RenderPass>> passes_;
+    std::vector<PassStage> stages_;
+    ResourcePool pool_;
     OutputRegistry outputs_;
     PassTimer timer_;
     GpuScene gpu_;

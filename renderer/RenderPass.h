@@ -1,8 +1,9 @@
 #pragma once
 // One pass of the pipeline (Falcor's RenderPass, Filament's frame-graph pass):
-// it declares its knobs and named inputs/outputs, says when it cannot run, owns
-// its GL resources, and executes. The Pipeline, not the pass, decides whether
-// it runs, times it, and resets GL state around it.
+// it declares its knobs and its named inputs and outputs, says when it cannot
+// run, owns its programs, and executes. The Pipeline, not the pass, decides
+// whether and in which order it runs (from the read / write / modify edges),
+// allocates its managed outputs, times it, and resets GL state around it.
 #include <string>
 #include <vector>
 
@@ -14,9 +15,20 @@ namespace dw {
 class KnobRegistry;
 class GpuScene;
 
+// Where a pass stands in seed 002 section 6's order. Edges order the passes;
+// the stage breaks ties and defines the post chain: passes of stage Post take
+// the current display image (kCurrentImage) and produce the next one.
+enum class PassStage { GBuffer, Screen, Lights, Lighting, Hdr, Tonemap, Post };
+const char* toString(PassStage stage);
+
+// In a Post pass's inputs: "the image the chain has so far" (the tone mapper's
+// result, or the output of the post pass before this one).
+inline constexpr const char* kCurrentImage = "@image";
+
 struct PassIO {
     std::vector<std::string> inputs;          // must have been produced this frame
     std::vector<std::string> optionalInputs;  // used when produced
+    std::vector<std::string> modifies;        // read and added into (another pass's output)
 };
 
 class RenderPass {
@@ -28,6 +40,15 @@ public:
     // Inputs may depend on the knobs (e.g. the tone mapper reads luminance
     // statistics only for operators that need them).
     virtual PassIO inputs(const KnobRegistry& knobs) const = 0;
+    // A managed output's descriptor under the current knobs (SSAO's size
+    // follows ssao.resolution); by default the declared one.
+    virtual ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+        (void)knobs;
+        return output.resource;
+    }
+    // After every pass has declared its knobs: resolve other passes' knobs
+    // (KnobRegistry::require*), which throws if one is missing.
+    virtual void connect(const KnobRegistry& knobs) { (void)knobs; }
     // Non-empty when the pass cannot or should not run: switched off, or the
     // scene has nothing for it. Shown in the inspector as the skip reason.
     virtual std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const {
@@ -37,8 +58,13 @@ public:
     }
     // Creates programs and size-independent GL objects. Called once with a context.
     virtual void setup(gl::ShaderLibrary& shaders) = 0;
-    // (Re)creates size-dependent targets and binds them in `outputs`.
-    virtual void resize(int width, int height, OutputRegistry& outputs) = 0;
+    // Only for imported outputs (ResourceDesc format 0): (re)creates them and
+    // binds them in `outputs`. Managed outputs need nothing here.
+    virtual void resize(int width, int height, OutputRegistry& outputs) {
+        (void)width;
+        (void)height;
+        (void)outputs;
+    }
     virtual void execute(FrameContext& ctx) = 0;
     // A line for the inspector about the last execution ("36 lights: 30 volumes, 6 culled").
     virtual std::string stats() const { return {}; }

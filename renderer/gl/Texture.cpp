@@ -87,6 +87,37 @@ Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int
     return t;
 }
 
+Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers, int levels) {
+    Texture t;
+    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_2D_ARRAY));
+    t.target_ = GL_TEXTURE_2D_ARRAY;
+    t.format_ = internalFormat;
+    t.width_ = std::max(width, 1);
+    t.height_ = std::max(height, 1);
+    t.levels_ = std::max(levels, 1);
+    t.layers_ = std::max(layers, 1);
+    glTextureStorage3D(t.id(), t.levels_, internalFormat, t.width_, t.height_, t.layers_);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    if (t.hasStencil()) glTextureParameteri(t.id(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    return t;
+}
+
+Texture Texture::create3D(GLenum internalFormat, int width, int height, int depth) {
+    Texture t;
+    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_3D));
+    t.target_ = GL_TEXTURE_3D;
+    t.format_ = internalFormat;
+    t.width_ = std::max(width, 1);
+    t.height_ = std::max(height, 1);
+    t.levels_ = 1;
+    t.layers_ = std::max(depth, 1);
+    glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
+    t.setFilter(GL_NEAREST, GL_NEAREST);
+    t.setWrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 int Texture::width(int level) const { return std::max(width_ >> level, 1); }
 int Texture::height(int level) const { return std::max(height_ >> level, 1); }
 
@@ -146,7 +177,7 @@ void Texture::uploadCubeFace(int face, int level, int size, GLenum format, GLenu
     glTextureSubImage3D(id(), level, 0, 0, face, size, size, 1, format, type, data);
 }
 
-void Texture::generateMipmaps() { glGenerateTextureMipmap(id()); }
+void Texture::generateMipmaps() const { glGenerateTextureMipmap(id()); }
 
 void Texture::bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
 

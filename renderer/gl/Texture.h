@@ -16,6 +16,8 @@ public:
     static Texture createCube(GLenum internalFormat, int size, int levels = 1);
     // GL_TEXTURE_2D_ARRAY (layers) or GL_TEXTURE_CUBE_MAP_ARRAY (layers = 6 x cubes).
     static Texture createArray(GLenum target, GLenum internalFormat, int size, int layers);
+    static Texture create2DArray(GLenum internalFormat, int width, int height, int layers, int levels = 1);
+    static Texture create3D(GLenum internalFormat, int width, int height, int depth);
     int layers() const { return layers_; }
     // Number of mip levels of a full chain down to 1x1.
     static int fullMipCount(int width, int height);
@@ -41,7 +43,7 @@ public:
     void setLabel(const char* label);
     void upload(int level, int width, int height, GLenum format, GLenum type, const void* data);
     void uploadCubeFace(int face, int level, int size, GLenum format, GLenum type, const void* data);
-    void generateMipmaps();
+    void generateMipmaps() const;
     void bind(GLuint unit) const;
 
     // Reads a level back to CPU memory (rows bottom-up, as GL stores them).

@@ -32,8 +32,11 @@ BloomPass::BloomPass(KnobRegistry& knobs) {
 }
 
 std::vector<OutputDecl> BloomPass::outputs() const {
-    std::vector<OutputDecl> out = {{"bloom.bright", OutputKind::HdrColor, "thresholded L-buffer at half resolution"},
-                                   {"bloom.result", OutputKind::HdrColor, "the bloom the tone mapper adds (half resolution)"}};
+    ResourceDesc bright = texture2D(GL_RGBA16F, 1, 0);  // half size, mip chain
+    bright.maxLevels = kMaxLevels + 1;
+    std::vector<OutputDecl> out = {
+        {"bloom.bright", OutputKind::HdrColor, "thresholded L-buffer at half resolution", bright},
+        {"bloom.result", OutputKind::HdrColor, "the bloom the tone mapper adds (half resolution)", texture2D(GL_RGBA16F, 1)}};
     for (int i = 1; i <= kMaxLevels; ++i)
         out.push_back({"bloom.mip" + std::to_string(i), OutputKind::HdrColor,
                        "bloom level " + std::to_string(i) + " (mip_sum: a mip of bloom.bright; dual_filter: the downsample chain)"});
@@ -52,7 +55,7 @@ void BloomPass::makeTarget(Target& t, int w, int h, int levels, const char* labe
 }
 
 void BloomPass::setup(gl::ShaderLibrary& shaders) {
-    bright_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/bright.frag"});
+    brightProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/bright.frag"});
     mipsum_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/mipsum.frag"});
     down_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/down.frag"});
     up_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/up.frag"});
@@ -61,21 +64,15 @@ void BloomPass::setup(gl::ShaderLibrary& shaders) {
 }
 
 void BloomPass::resize(int width, int height, OutputRegistry& outputs) {
-    outputs_ = &outputs;
+    // The dual filter's chains are the pass's own; bloom.bright and
+    // bloom.result are allocated by the pipeline. bloom.mipN are bound to
+    // whichever chain the method used, each frame.
+    (void)outputs;
     const int w = std::max(width / 2, 1), h = std::max(height / 2, 1);
-    makeTarget(bright_target_, w, h, std::min(kMaxLevels + 1, gl::Texture::fullMipCount(w, h)), "bloom bright");
-    makeTarget(result_, w, h, 1, "bloom result");
-    brightLevels_.clear();
-    for (int l = 0; l < bright_target_.texture.levels(); ++l)
-        brightLevels_.push_back(gl::Framebuffer::forColor(bright_target_.texture, "bloom bright level", l));
     for (int l = 0; l <= kMaxLevels; ++l) {
         makeTarget(down_chain_[l], w >> l, h >> l, 1, "bloom down");
         makeTarget(up_chain_[l], w >> l, h >> l, 1, "bloom up");
     }
-    outputs.bind("bloom.bright", &bright_target_.texture, 4);
-    outputs.bind("bloom.result", &result_.texture, 4);
-    for (int i = 1; i <= kMaxLevels; ++i)
-        outputs.bind("bloom.mip" + std::to_string(i), &bright_target_.texture, 4, std::min(i, bright_target_.texture.levels() - 1));
 }
 
 void BloomPass::drawInto(const gl::Framebuffer& fbo, int w, int h) {
@@ -86,15 +83,17 @@ void BloomPass::drawInto(const gl::Framebuffer& fbo, int w, int h) {
 
 void BloomPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    // Declared by the tone mapper, which is built after this pass.
-    if (nanGuard_.id < 0) {
-        const std::optional<int> id = k.find("tonemap.nan_guard");
-        if (!id) throw Error("the bloom pass needs the tone mapper's knob tonemap.nan_guard");
-        nanGuard_ = BoolKnob{*id};
-    }
-    const gl::Texture& hdr = *ctx.outputs.find("lbuffer")->texture;
-    const int w = bright_target_.texture.width(), h = bright_target_.texture.height();
-    const int levels = std::min(k.get(levels_), bright_target_.texture.levels() - 1);
+    const gl::Texture& hdr = ctx.texture("lbuffer");
+    const gl::Texture& brightTexture = ctx.texture("bloom.bright");
+    const gl::Texture& resultTexture = ctx.texture("bloom.result");
+    // Bilinear between texels and mips is part of the method (and the tone
+    // mapper upsamples the half-size result).
+    brightTexture.setFilter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    resultTexture.setFilter(GL_LINEAR, GL_LINEAR);
+    const gl::Framebuffer& brightFbo = bright_.get(ctx, {"bloom.bright"}, {}, "bloom bright");
+    const gl::Framebuffer& resultFbo = result_.get(ctx, {"bloom.result"}, {}, "bloom result");
+    const int w = brightTexture.width(), h = brightTexture.height();
+    const int levels = std::min(k.get(levels_), brightTexture.levels() - 1);
     const auto method = static_cast<Method>(k.get(method_));
     auto params = [&](glm::vec4 values) {
         BloomParamsGpu p;
@@ -106,23 +105,22 @@ void BloomPass::execute(FrameContext& ctx) {
     // 1. Threshold into level 0 of the bright chain.
     params(glm::vec4(k.get(threshold_), 1.0f / hdr.width(), 1.0f / hdr.height(), 0.0f));
     hdr.bind(0);
-    ctx.outputs.find("luminance.stats")->texture->bind(1);
-    bright_->use();
-    drawInto(brightLevels_[0], w, h);
+    ctx.texture("luminance.stats").bind(1);
+    brightProgram_->use();
+    drawInto(brightFbo, w, h);
 
     if (method == MipSum) {
-        bright_target_.texture.generateMipmaps();
+        brightTexture.generateMipmaps();
         params(glm::vec4(0.0f, 0.0f, 1.0f / w, 1.0f / h));
-        bright_target_.texture.bind(0);
+        brightTexture.bind(0);
         mipsum_->use();
-        drawInto(result_.fbo, w, h);
+        drawInto(resultFbo, w, h);
         for (int i = 1; i <= kMaxLevels; ++i)
-            outputs_->bind("bloom.mip" + std::to_string(i), &bright_target_.texture, 4,
-                           std::min(i, bright_target_.texture.levels() - 1));
+            ctx.outputs.bind("bloom.mip" + std::to_string(i), &brightTexture, 4, std::min(i, brightTexture.levels() - 1));
     } else {
         // 2. Downsample chain: level 0 is the bright image itself.
         down_->use();
-        const gl::Texture* source = &bright_target_.texture;
+        const gl::Texture* source = &brightTexture;
         for (int l = 1; l <= levels; ++l) {
             const gl::Texture& dst = down_chain_[l].texture;
             params(glm::vec4(1.0f / source->width(), 1.0f / source->height(), 1.0f / dst.width(), 1.0f / dst.height()));
@@ -136,7 +134,7 @@ void BloomPass::execute(FrameContext& ctx) {
         up_->use();
         const gl::Texture* coarse = &down_chain_[levels].texture;
         for (int l = levels - 1; l >= 0; --l) {
-            const gl::Texture& same = l == 0 ? bright_target_.texture : down_chain_[l].texture;
+            const gl::Texture& same = l == 0 ? brightTexture : down_chain_[l].texture;
             const gl::Texture& dst = up_chain_[l].texture;
             params(glm::vec4(1.0f / coarse->width(), 1.0f / coarse->height(), 1.0f / dst.width(), 1.0f / dst.height()));
             coarse->bind(0);
@@ -148,13 +146,13 @@ void BloomPass::execute(FrameContext& ctx) {
         }
         params(glm::vec4(0.0f));
         // With no coarser level (a tiny image) the bright image is the bloom.
-        (levels > 0 ? up_chain_[0].texture : bright_target_.texture).bind(0);
+        (levels > 0 ? up_chain_[0].texture : brightTexture).bind(0);
         scale_->use();
-        drawInto(result_.fbo, w, h);
+        drawInto(resultFbo, w, h);
         for (int i = 1; i <= kMaxLevels; ++i) {
             // Levels beyond bloom.levels were not drawn this frame: show them black, not stale.
             if (i > levels) down_chain_[i].fbo.clearColor(0, 0.0f, 0.0f, 0.0f, 1.0f);
-            outputs_->bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
+            ctx.outputs.bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
         }
     }
     stats_ = std::string(method == MipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +

@@ -9,6 +9,7 @@
 
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -26,6 +27,7 @@ public:
     std::vector<OutputDecl> outputs() const override;
     PassIO inputs(const KnobRegistry&) const override { return {{"lbuffer", "luminance.stats"}, {}}; }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    void connect(const KnobRegistry& knobs) override { nanGuard_ = knobs.requireBool("tonemap.nan_guard"); }
     void setup(gl::ShaderLibrary& shaders) override;
     void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
@@ -43,13 +45,11 @@ private:
     FloatKnob threshold_, intensity_;
     IntKnob levels_;
     EnumKnob composite_;
-    gl::ShaderLibrary::Handle bright_, mipsum_, down_, up_, scale_;
+    gl::ShaderLibrary::Handle brightProgram_, mipsum_, down_, up_, scale_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    Target bright_target_, result_;
-    std::vector<gl::Framebuffer> brightLevels_;
+    TargetFramebuffer bright_, result_;
     Target down_chain_[kMaxLevels + 1], up_chain_[kMaxLevels + 1];
-    OutputRegistry* outputs_ = nullptr;
     std::string stats_;
 };
 

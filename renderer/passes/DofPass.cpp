@@ -42,20 +42,10 @@ void DofPass::setup(gl::ShaderLibrary& shaders) {
     params_ = gl::Buffer::create(sizeof(DofParamsGpu), nullptr, true, "dof params");
 }
 
-void DofPass::resize(int width, int height, OutputRegistry& outputs) {
-    result_ = gl::Texture::create2D(GL_RGBA8, width, height);
-    coc_ = gl::Texture::create2D(GL_R16F, width, height);
-    for (gl::Texture* t : {&result_, &coc_}) t->setFilter(GL_NEAREST, GL_NEAREST);
-    resultFbo_ = gl::Framebuffer::forColor(result_, "depth of field");
-    cocFbo_ = gl::Framebuffer::forColor(coc_, "circle of confusion");
-    outputs.bind("dof.result", &result_, 4);
-    outputs.bind("dof.coc", &coc_, 1);
-}
-
 void DofPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    ctx.outputs.find("tonemap.result")->texture->bind(0);
-    ctx.outputs.find("gbuffer.depth")->texture->bind(1);
+    ctx.currentImage().bind(0);
+    ctx.texture("gbuffer.depth").bind(1);
     program_->use();
     for (int cocOnly : {0, 1}) {
         if (cocOnly && !ctx.wants("dof.coc")) continue;
@@ -64,7 +54,8 @@ void DofPass::execute(FrameContext& ctx) {
         p.values = glm::vec4(k.get(focus_), k.get(range_), k.get(radius_), k.get(srgb_) ? 1.0f : 0.0f);
         params_.update(0, sizeof(p), &p);
         params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
-        (cocOnly ? cocFbo_ : resultFbo_).bind();
+        if (cocOnly) coc_.get(ctx, {"dof.coc"}, {}, "circle of confusion").bind();
+        else result_.get(ctx, {"dof.result"}, {}, "depth of field").bind();
         triangle_.draw();
     }
 }

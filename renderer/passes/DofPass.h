@@ -1,9 +1,11 @@
 #pragma once
 // Depth of field (seed 004): blur from view depth around a focus distance,
-// near and far. Reads tonemap.result and gbuffer.depth; writes dof.result
+// near and far. Reads the post chain's current image (the tone-mapped one unless a
+// post pass comes before) and gbuffer.depth; writes dof.result
 // (RGBA8) and dof.coc (signed circle of confusion in pixels, when asked for).
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -17,13 +19,14 @@ public:
     explicit DofPass(KnobRegistry& knobs);
     const char* name() const override { return "dof"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"dof.result", OutputKind::Color, "the tone-mapped image with depth of field (RGBA8)"},
-                {"dof.coc", OutputKind::Scalar, "signed circle of confusion in pixels (negative: nearer than the focus)"}};
+        return {{"dof.result", OutputKind::Color, "the image with depth of field (RGBA8)", texture2D(GL_RGBA8)},
+                {"dof.coc", OutputKind::Scalar, "signed circle of confusion in pixels (negative: nearer than the focus)",
+                 texture2D(GL_R16F), 1, true}};
     }
-    PassIO inputs(const KnobRegistry&) const override { return {{"tonemap.result", "gbuffer.depth"}, {}}; }
+    PassIO inputs(const KnobRegistry&) const override { return {{kCurrentImage, "gbuffer.depth"}, {}}; }
+    void connect(const KnobRegistry& knobs) override { srgb_ = knobs.requireBool("tonemap.srgb"); }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
 
 private:
@@ -33,8 +36,7 @@ private:
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    gl::Texture result_, coc_;
-    gl::Framebuffer resultFbo_, cocFbo_;
+    TargetFramebuffer result_, coc_;
 };
 
 }  // namespace dw

@@ -5,7 +5,6 @@
 namespace dw {
 
 FxaaPass::FxaaPass(KnobRegistry& knobs) {
-    dofEnabled_ = BoolKnob{*knobs.find("dof.enabled")};
     enabled_ = knobs.addBool("fxaa.enabled", true, "fxaa", "fast approximate anti-aliasing of the final image");
     quality_ = knobs.addEnum("fxaa.quality", {"low", "medium", "high"}, 1, "fxaa",
                              "how far the search along an edge goes (4, 8 or 12 steps)", true);
@@ -14,10 +13,6 @@ FxaaPass::FxaaPass(KnobRegistry& knobs) {
     thresholdMin_ = knobs.addFloat("fxaa.edge_threshold_min", 0.0312, 0.0, 0.2, "fxaa",
                                    "absolute contrast below which dark areas are left alone");
     subpixel_ = knobs.addFloat("fxaa.subpixel", 0.75, 0.0, 1.0, "fxaa", "how much single-pixel features are softened");
-}
-
-PassIO FxaaPass::inputs(const KnobRegistry& knobs) const {
-    return {{knobs.get(dofEnabled_) ? "dof.result" : "tonemap.result"}, {}};
 }
 
 std::string FxaaPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
@@ -30,15 +25,9 @@ void FxaaPass::setup(gl::ShaderLibrary& shaders) {
     linear_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "fxaa linear");
 }
 
-void FxaaPass::resize(int width, int height, OutputRegistry& outputs) {
-    result_ = gl::Texture::create2D(GL_RGBA8, width, height);
-    fbo_ = gl::Framebuffer::forColor(result_, "FXAA");
-    outputs.bind("fxaa.result", &result_, 4);
-}
-
 void FxaaPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    const gl::Texture& input = *ctx.outputs.find(k.get(dofEnabled_) ? "dof.result" : "tonemap.result")->texture;
+    const gl::Texture& input = ctx.currentImage();
     // Bilinear reads between pixels are part of the method; the sampler keeps
     // the shared image itself nearest for everyone else.
     input.bind(0);
@@ -47,7 +36,7 @@ void FxaaPass::execute(FrameContext& ctx) {
     program_->set(0, glm::vec4(k.get(threshold_), k.get(thresholdMin_), k.get(subpixel_), 0.0f));
     static const int steps[] = {4, 8, 12};
     program_->set(1, steps[k.get(quality_)]);
-    fbo_.bind();
+    target_.get(ctx, {"fxaa.result"}, {}, "FXAA").bind();
     triangle_.draw();
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// FXAA (seed 000 section 3.3) on the tone-mapped image: reads dof.result when
-// depth of field is on, else tonemap.result; writes fxaa.result (RGBA8).
+// FXAA (seed 000 section 3.3) on the display image: reads the post chain's
+// current image (after depth of field when that is on); writes fxaa.result (RGBA8).
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/Sampler.h"
@@ -16,22 +17,20 @@ public:
     explicit FxaaPass(KnobRegistry& knobs);
     const char* name() const override { return "fxaa"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"fxaa.result", OutputKind::Color, "the anti-aliased image (RGBA8)"}};
+        return {{"fxaa.result", OutputKind::Color, "the anti-aliased image (RGBA8)", texture2D(GL_RGBA8)}};
     }
-    PassIO inputs(const KnobRegistry& knobs) const override;
+    PassIO inputs(const KnobRegistry&) const override { return {{kCurrentImage}, {}}; }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
 
 private:
-    BoolKnob enabled_, dofEnabled_;
+    BoolKnob enabled_;
     EnumKnob quality_;
     FloatKnob threshold_, thresholdMin_, subpixel_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
-    gl::Texture result_;
-    gl::Framebuffer fbo_;
+    TargetFramebuffer target_;
     gl::Sampler linear_;
 };
 

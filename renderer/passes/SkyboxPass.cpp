@@ -50,13 +50,6 @@ void SkyboxPass::setup(gl::ShaderLibrary& shaders) {
     dummyCube_ = gl::Texture::createCube(GL_RGBA16F, 1);
 }
 
-void SkyboxPass::resize(int width, int height, OutputRegistry& outputs) {
-    sky_ = gl::Texture::create2D(GL_RGBA16F, width, height);
-    sky_.setFilter(GL_NEAREST, GL_NEAREST);
-    fbo_ = gl::Framebuffer::forColor(sky_, "sky");
-    outputs.bind("sky", &sky_, 4);
-}
-
 void SkyboxPass::execute(FrameContext& ctx) {
     const Sky& s = ctx.scene.sky;
     const int kind = resolvedKind(ctx.knobs, ctx.scene);
@@ -74,11 +67,11 @@ void SkyboxPass::execute(FrameContext& ctx) {
         }
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
-    ctx.outputs.find("gbuffer.depth")->texture->bind(0);
+    ctx.texture("gbuffer.depth").bind(0);
     const gl::Texture* env = ctx.gpu.environment();
     (kind == kEquirect && env ? *env : dummy2D_).bind(1);
     (kind == kCube && env ? *env : dummyCube_).bind(2);
-    fbo_.bind();
+    target_.get(ctx, {"sky"}, {}, "sky").bind();
     program_->use();
     triangle_.draw();
     static const char* names[] = {"colour", "procedural", "equirectangular environment", "cube map environment"};

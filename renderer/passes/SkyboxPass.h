@@ -6,6 +6,7 @@
 // an equirectangular HDR/EXR image or a cube map (through OpenImageIO).
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -22,12 +23,11 @@ public:
     explicit SkyboxPass(KnobRegistry& knobs);
     const char* name() const override { return "skybox"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"sky", OutputKind::HdrColor, "sky radiance where no geometry is, 0 elsewhere (RGBA16F)"}};
+        return {{"sky", OutputKind::HdrColor, "sky radiance where no geometry is, 0 elsewhere (RGBA16F)", texture2D(GL_RGBA16F)}};
     }
     PassIO inputs(const KnobRegistry&) const override { return {{"gbuffer.depth"}, {}}; }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
@@ -38,8 +38,8 @@ private:
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    gl::Texture sky_, dummy2D_, dummyCube_;
-    gl::Framebuffer fbo_;
+    gl::Texture dummy2D_, dummyCube_;
+    TargetFramebuffer target_;
     std::string stats_;
 };
 

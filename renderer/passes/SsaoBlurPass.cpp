@@ -16,7 +16,6 @@ struct BlurParamsGpu {
 }  // namespace
 
 SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
-    ssaoEnabled_ = BoolKnob{*knobs.find("ssao.enabled")};
     mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, Bilateral, "ssao_blur",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
     width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
@@ -38,17 +37,10 @@ void SsaoBlurPass::setup(gl::ShaderLibrary& shaders) {
     params_ = gl::Buffer::create(sizeof(BlurParamsGpu), nullptr, true, "ssao blur params");
 }
 
-void SsaoBlurPass::resize(int width, int height, OutputRegistry& outputs) {
-    full_ = gl::Texture::create2D(GL_R16F, width, height);
-    full_.setFilter(GL_NEAREST, GL_NEAREST);
-    fullFbo_ = gl::Framebuffer::forColor(full_, "SSAO blurred");
-    outputs.bind("ssao.blurred", &full_, 1);
-}
-
 void SsaoBlurPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    const gl::Texture& raw = *ctx.outputs.find("ssao.raw")->texture;
-    const gl::Texture& depth = *ctx.outputs.find("gbuffer.depth")->texture;
+    const gl::Texture& raw = ctx.texture("ssao.raw");
+    const gl::Texture& depth = ctx.texture("gbuffer.depth");
     const int w = raw.width(), h = raw.height();
     const auto mode = static_cast<Mode>(k.get(mode_));
     const int radius = k.get(width_) / 2;
@@ -85,7 +77,7 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
     source->bind(0);
     depth.bind(1);
     glViewport(0, 0, ctx.width, ctx.height);
-    fullFbo_.bind();
+    full_.get(ctx, {"ssao.blurred"}, {}, "SSAO blurred").bind();
     upsample_->use();
     triangle_.draw();
     static const char* names[] = {"bilateral", "gaussian", "no"};

@@ -7,6 +7,7 @@
 // into the ambient term.
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -21,12 +22,13 @@ public:
     explicit SsaoBlurPass(KnobRegistry& knobs);
     const char* name() const override { return "ssao_blur"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"ssao.blurred", OutputKind::Scalar, "blurred ambient accessibility at full resolution (R16F)"}};
+        return {{"ssao.blurred", OutputKind::Scalar, "blurred ambient accessibility at full resolution (R16F)",
+                 texture2D(GL_R16F), 1}};
     }
+    void connect(const KnobRegistry& knobs) override { ssaoEnabled_ = knobs.requireBool("ssao.enabled"); }
     PassIO inputs(const KnobRegistry&) const override { return {{"ssao.raw", "gbuffer.depth"}, {}}; }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
@@ -38,8 +40,9 @@ private:
     gl::ShaderLibrary::Handle blur_, upsample_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    gl::Texture temp_[2], full_;
-    gl::Framebuffer tempFbo_[2], fullFbo_;
+    gl::Texture temp_[2];
+    gl::Framebuffer tempFbo_[2];
+    TargetFramebuffer full_;
     std::string stats_;
 };
 

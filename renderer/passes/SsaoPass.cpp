@@ -69,6 +69,12 @@ std::vector<glm::vec4> SsaoPass::kernel(int n) {
     return k;
 }
 
+ResourceDesc SsaoPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    d.shift = knobs.get(resolution_);  // full, half, quarter: 0, 1, 2
+    return d;
+}
+
 void SsaoPass::setup(gl::ShaderLibrary& shaders) {
     linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "ssao linear depth");
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/ssao.frag"});
@@ -85,22 +91,9 @@ void SsaoPass::setup(gl::ShaderLibrary& shaders) {
     noise_.setFilter(GL_NEAREST, GL_NEAREST);
 }
 
-void SsaoPass::allocate(int width, int height) {
-    ao_ = gl::Texture::create2D(GL_R16F, width, height);
-    ao_.setFilter(GL_NEAREST, GL_NEAREST);
-    fbo_ = gl::Framebuffer::forColor(ao_, "SSAO");
-    outputs_->bind("ssao.raw", &ao_, 1);
-}
-
-void SsaoPass::resize(int width, int height, OutputRegistry& outputs) {
-    outputs_ = &outputs;
-    allocate(width, height);
-}
-
 void SsaoPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const glm::ivec2 size = aoSize(k, ctx.width, ctx.height);
-    if (ao_.width() != size.x || ao_.height() != size.y) allocate(size.x, size.y);
     SsaoParamsGpu p{};
     const int n = k.get(samples_);
     if (static_cast<int>(kernel_.size()) != n) kernel_ = kernel(n);
@@ -109,12 +102,12 @@ void SsaoPass::execute(FrameContext& ctx) {
     p.values = glm::vec4(k.get(radius_), k.get(intensity_), k.get(bias_), 0.0f);
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
-    ctx.outputs.find("gbuffer.depth")->texture->bind(0);
+    ctx.texture("gbuffer.depth").bind(0);
     linearDepth_.bind(0);
-    ctx.outputs.find("gbuffer.normal")->texture->bind(1);
+    ctx.texture("gbuffer.normal").bind(1);
     noise_.bind(2);
     glViewport(0, 0, size.x, size.y);
-    fbo_.bind();
+    target_.get(ctx, {"ssao.raw"}, {}, "SSAO").bind();
     program_->use();
     triangle_.draw();
     stats_ = std::to_string(n) + " samples at " + std::to_string(size.x) + "x" + std::to_string(size.y);

@@ -7,6 +7,7 @@
 
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -22,12 +23,13 @@ public:
     explicit SsaoPass(KnobRegistry& knobs);
     const char* name() const override { return "ssao"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"ssao.raw", OutputKind::Scalar, "ambient accessibility before blurring, 1 = open (R16F, at the AO resolution)"}};
+        return {{"ssao.raw", OutputKind::Scalar, "ambient accessibility before blurring, 1 = open (R16F, at the AO resolution)",
+                 texture2D(GL_R16F), 1}};
     }
+    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
     PassIO inputs(const KnobRegistry&) const override { return {{"gbuffer.depth", "gbuffer.normal"}, {}}; }
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
@@ -37,7 +39,6 @@ public:
     static std::vector<glm::vec4> kernel(int n);
 
 private:
-    void allocate(int width, int height);
     BoolKnob enabled_, rangeCheck_;
     IntKnob samples_;
     FloatKnob radius_, intensity_, bias_;
@@ -45,11 +46,10 @@ private:
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    gl::Texture noise_, ao_;
+    gl::Texture noise_;
     gl::Sampler linearDepth_;  // depth between pixel centres (see ssao.frag)
     std::vector<glm::vec4> kernel_;  // kernel(ssao.samples), rebuilt when the count changes
-    gl::Framebuffer fbo_;
-    OutputRegistry* outputs_ = nullptr;
+    TargetFramebuffer target_;
     std::string stats_;
 };
 

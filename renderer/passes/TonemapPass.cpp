@@ -32,9 +32,11 @@ TonemapPass::TonemapPass(KnobRegistry& knobs) {
                                   "(Reinhard always does)");
     nanGuard_ = knobs.addBool("tonemap.nan_guard", true, "tonemap",
                               "replace NaN with 0 and infinity with 65504 before tone mapping (and in the bloom input)");
-    bloomEnabled_ = BoolKnob{*knobs.find("bloom.enabled")};
-    bloomIntensity_ = FloatKnob{*knobs.find("bloom.intensity")};
-    bloomComposite_ = EnumKnob{*knobs.find("bloom.composite")};
+}
+
+void TonemapPass::connect(const KnobRegistry& knobs) {
+    bloomIntensity_ = knobs.requireFloat("bloom.intensity");
+    bloomComposite_ = knobs.requireEnum("bloom.composite");
 }
 
 PassIO TonemapPass::inputs(const KnobRegistry& knobs) const {
@@ -50,12 +52,6 @@ void TonemapPass::setup(gl::ShaderLibrary& shaders) {
     params_ = gl::Buffer::create(sizeof(TonemapParamsGpu), nullptr, true, "tonemap params");
 }
 
-void TonemapPass::resize(int width, int height, OutputRegistry& outputs) {
-    final_ = gl::Texture::create2D(GL_RGBA8, width, height);
-    fbo_ = gl::Framebuffer::forColor(final_, "final image");
-    outputs.bind("tonemap.result", &final_, 4);
-}
-
 void TonemapPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     TonemapParamsGpu p;
@@ -65,10 +61,10 @@ void TonemapPass::execute(FrameContext& ctx) {
     p.values = glm::vec4(k.get(key_), k.get(white_), k.get(exposure_), k.get(bloomIntensity_));
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
-    ctx.outputs.find("lbuffer")->texture->bind(0);
-    if (ctx.produced("luminance.stats")) ctx.outputs.find("luminance.stats")->texture->bind(1);
-    if (bloom) ctx.outputs.find("bloom.result")->texture->bind(2);
-    fbo_.bind();
+    ctx.texture("lbuffer").bind(0);
+    if (ctx.produced("luminance.stats")) ctx.texture("luminance.stats").bind(1);
+    if (bloom) ctx.texture("bloom.result").bind(2);
+    target_.get(ctx, {"tonemap.result"}, {}, "tone-mapped image").bind();
     program_->use();
     triangle_.draw();
 }

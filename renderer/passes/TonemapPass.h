@@ -4,6 +4,7 @@
 // when bloom ran; writes tonemap.result (RGBA8, sRGB-encoded).
 #include "renderer/KnobRegistry.h"
 #include "renderer/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -18,22 +19,21 @@ public:
     explicit TonemapPass(KnobRegistry& knobs);
     const char* name() const override { return "tonemap"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"tonemap.result", OutputKind::Color, "tone-mapped image (RGBA8, sRGB-encoded)"}};
+        return {{"tonemap.result", OutputKind::Color, "tone-mapped image (RGBA8, sRGB-encoded)", texture2D(GL_RGBA8)}};
     }
+    void connect(const KnobRegistry& knobs) override;
     PassIO inputs(const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
-    void resize(int width, int height, OutputRegistry& outputs) override;
     void execute(FrameContext& ctx) override;
 
 private:
     EnumKnob operator_, bloomComposite_;
     FloatKnob key_, white_, exposure_, bloomIntensity_;
-    BoolKnob autoWhite_, srgb_, nanGuard_, autoExposure_, bloomEnabled_;
+    BoolKnob autoWhite_, srgb_, nanGuard_, autoExposure_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_;
-    gl::Texture final_;
-    gl::Framebuffer fbo_;
+    TargetFramebuffer target_;
 };
 
 }  // namespace dw

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/GpuScene.h"
+#include "renderer/graph/ResourcePool.h"
 #include "renderer/OutputReadback.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/passes/SsaoBlurPass.h"
@@ -104,7 +105,9 @@ FloatImage blurStep(const std::string& mode, int aoDivisor) {
     outputs.declare("geometry", {"gbuffer.depth", OutputKind::Depth, ""});
     for (const auto& o : pass.outputs()) outputs.declare(pass.name(), o);
     pass.setup(shaders);
-    pass.resize(W, H, outputs);
+    pass.connect(knobs);
+    ResourcePool pool;
+    pool.acquireOutputs(pass, knobs, W, H, outputs);
 
     Camera cam;
     cam.nearPlane = 0.1f;

@@ -6,6 +6,7 @@
 
 #include "renderer/GpuScene.h"
 #include "renderer/passes/BloomPass.h"
+#include "renderer/graph/ResourcePool.h"
 #include "renderer/passes/TonemapPass.h"
 #include "tests/support/TestSupport.h"
 
@@ -34,8 +35,9 @@ public:
         stats_ = gl::Texture::create2D(GL_RGBA32F, 1, 1);
         outputs_.bind("lbuffer", &input_, 4);
         outputs_.bind("luminance.stats", &stats_, 4);
+        pass_.connect(knobs_);
         pass_.setup(*shaders_);
-        pass_.resize(w, 1, outputs_);
+        pool_.acquireOutputs(pass_, knobs_, w, 1, outputs_);
     }
     std::vector<glm::dvec3> run(glm::vec4 stats) {
         stats_.upload(0, 1, 1, GL_RGBA, GL_FLOAT, &stats);
@@ -63,6 +65,7 @@ private:
     TonemapPass pass_;
     std::unique_ptr<gl::ShaderLibrary> shaders_;
     OutputRegistry outputs_;
+    ResourcePool pool_;
     gl::Texture input_, stats_;
 };
 

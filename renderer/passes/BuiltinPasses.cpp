@@ -1,0 +1,43 @@
+// The built-in passes, one line each, in seed 002 section 6's order within
+// each stage: G-buffer, SSAO, (transparency), L-buffer (the sky and the
+// shadow maps feed it), luminance statistics, bloom, tone mapping; then the
+// post chain (depth of field, FXAA) on the tone-mapped image.
+#include "renderer/graph/PassCatalog.h"
+#include "renderer/passes/BloomPass.h"
+#include "renderer/passes/DofPass.h"
+#include "renderer/passes/FxaaPass.h"
+#include "renderer/passes/GBufferDecodePass.h"
+#include "renderer/passes/GeometryPass.h"
+#include "renderer/passes/LightingPass.h"
+#include "renderer/passes/LuminancePass.h"
+#include "renderer/passes/SkyboxPass.h"
+#include "renderer/passes/SsaoBlurPass.h"
+#include "renderer/passes/SsaoPass.h"
+#include "renderer/passes/TonemapPass.h"
+
+namespace dw {
+
+namespace {
+template <typename T>
+PassEntry entry(PassStage stage) {
+    return {stage, [](KnobRegistry& knobs) { return std::make_unique<T>(knobs); }};
+}
+}  // namespace
+
+std::vector<PassEntry> builtinPasses() {
+    return {
+        entry<GeometryPass>(PassStage::GBuffer),
+        entry<GBufferDecodePass>(PassStage::GBuffer),
+        entry<SsaoPass>(PassStage::Screen),
+        entry<SsaoBlurPass>(PassStage::Screen),
+        entry<SkyboxPass>(PassStage::Screen),
+        entry<LightingPass>(PassStage::Lighting),
+        entry<LuminancePass>(PassStage::Hdr),
+        entry<BloomPass>(PassStage::Hdr),
+        entry<TonemapPass>(PassStage::Tonemap),
+        entry<DofPass>(PassStage::Post),
+        entry<FxaaPass>(PassStage::Post),
+    };
+}
+
+}  // namespace dw
