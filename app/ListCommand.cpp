@@ -33,12 +33,15 @@ int runListCommand(int argc, char** argv) {
                         s.description.c_str());
         }
     } else if (what == "passes") {
-        for (const auto& p : pipeline.passes()) {
-            std::printf("%s\n", p->name());
-            const PassIO io = p->inputs(knobs);
-            for (const auto& in : io.inputs) std::printf("  reads  %s\n", in.c_str());
-            for (const auto& in : io.optionalInputs) std::printf("  reads  %s (when produced)\n", in.c_str());
-            for (const auto& o : p->outputs()) std::printf("  writes %s\n", o.name.c_str());
+        // In pipeline order under the default knobs; the post chain's image resolved.
+        for (const PassInfo& p : pipeline.passList()) {
+            std::printf("%s  [%s]\n", p.name.c_str(), toString(p.stage));
+            for (const auto& in : p.reads) std::printf("  reads    %s\n", in.c_str());
+            for (const auto& in : p.optionalReads) std::printf("  reads    %s (when produced)\n", in.c_str());
+            for (const auto& in : p.modifies) std::printf("  modifies %s\n", in.c_str());
+            for (const auto& o : p.writes)
+                std::printf("  writes   %s%s%s\n", o.name.c_str(), o.resource.managed() ? "" : " (pass-owned)",
+                            o.onDemand ? " (on demand)" : "");
         }
     } else if (what == "presets") {
         for (const auto& p : builtinPresets()) {
