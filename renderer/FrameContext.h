@@ -11,6 +11,8 @@ namespace dw {
 
 class GpuScene;
 class KnobRegistry;
+class ShadowService;
+struct LightTable;
 class PassTimer;
 struct Scene;
 namespace gl {
@@ -50,6 +52,11 @@ struct FrameContext {
 
     // A Post pass's input image this frame (what kCurrentImage stands for).
     std::string image;
+    // Frame data that is not an image or a buffer (Filament's blackboard),
+    // set by the pass that makes it and null when that pass did not run:
+    // the light table's CPU side (lights pass) and the shadow maps (shadows pass).
+    LightTable* lightTable = nullptr;
+    ShadowService* shadows = nullptr;
 
     // Whether an (optional) input was written earlier this frame.
     bool produced(const std::string& name) const {

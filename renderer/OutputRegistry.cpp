@@ -70,6 +70,21 @@ void OutputRegistry::bindResource(const std::string& name, const gl::Texture* te
     o->level = std::min(o->decl.level, std::max(desc.levels - 1, 0));
 }
 
+void OutputRegistry::bindBuffer(const std::string& name, const gl::Buffer* buffer, std::size_t stride, std::size_t count) {
+    PublishedOutput* o = findMutable(name);
+    if (!o) throw Error("binding undeclared output '" + name + "'");
+    if (buffer != o->buffer || o->desc.bytes != stride * count) o->serial = ++importSerial_;
+    o->texture = nullptr;
+    o->buffer = buffer;
+    o->desc = ResourceDesc{};
+    o->desc.kind = ResourceKind::Buffer;
+    o->desc.size = SizeMode::Fixed;
+    o->desc.stride = stride;
+    o->desc.bytes = stride * count;
+    o->channels = o->decl.channels;
+    o->level = 0;
+}
+
 void OutputRegistry::bindAlias(const std::string& alias, const std::string& target) {
     PublishedOutput* a = findMutable(alias);
     const PublishedOutput* t = find(target);

@@ -63,6 +63,8 @@ public:
                       const ResourceDesc& desc, std::uint64_t serial);
     // Makes `alias` show `target` this frame (texture, pass, produced state).
     void bindAlias(const std::string& alias, const std::string& target);
+    // A buffer the pass owns (sized by the scene, say): `count` elements of `stride` bytes.
+    void bindBuffer(const std::string& name, const gl::Buffer* buffer, std::size_t stride, std::size_t count);
     void markFrameStart();
     // Marks the pass's outputs in `wanted` as written this frame (a pass skips
     // optional outputs nothing asked for, so those keep older contents).

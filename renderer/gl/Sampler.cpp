@@ -17,6 +17,15 @@ Sampler Sampler::create(GLenum minFilter, GLenum magFilter, GLenum wrap, const c
     return s;
 }
 
+Sampler Sampler::createDepthCompare(const char* label) {
+    Sampler s = create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_BORDER, label);
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glSamplerParameterfv(s.id(), GL_TEXTURE_BORDER_COLOR, border);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(s.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    return s;
+}
+
 void Sampler::bind(int unit) const { glBindSampler(static_cast<GLuint>(unit), id()); }
 void Sampler::unbind(int unit) { glBindSampler(static_cast<GLuint>(unit), 0); }
 

@@ -11,6 +11,10 @@ class Sampler {
 public:
     Sampler() = default;
     static Sampler create(GLenum minFilter, GLenum magFilter, GLenum wrap, const char* label = nullptr);
+    // Depth comparison (sampler*Shadow), bilinear over the comparisons, and
+    // outside the map the border depth 1 (lit): how shadow maps are read, so
+    // the maps themselves stay plain depth textures anyone can view.
+    static Sampler createDepthCompare(const char* label = nullptr);
 
     GLuint id() const { return name_.id(); }
     explicit operator bool() const { return static_cast<bool>(name_); }

@@ -5,7 +5,7 @@
 
 namespace dw {
 
-const gl::Framebuffer& TargetFramebuffer::get(const FrameContext& ctx, std::initializer_list<std::string> colors,
+gl::Framebuffer& TargetFramebuffer::get(const FrameContext& ctx, std::initializer_list<std::string> colors,
                                               const std::string& depth, const char* label) {
     std::vector<std::uint64_t> key;
     for (const auto& c : colors) key.push_back(ctx.output(c).serial);

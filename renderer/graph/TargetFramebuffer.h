@@ -17,7 +17,7 @@ class TargetFramebuffer {
 public:
     // Colour attachments 0..n-1 from `colors` (output names, each at its
     // declared level), an optional depth(-stencil) output; all draw buffers on.
-    const gl::Framebuffer& get(const FrameContext& ctx, std::initializer_list<std::string> colors,
+    gl::Framebuffer& get(const FrameContext& ctx, std::initializer_list<std::string> colors,
                                const std::string& depth = {}, const char* label = "pass target");
 
 private:

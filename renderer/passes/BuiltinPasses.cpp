@@ -8,7 +8,9 @@
 #include "renderer/passes/FxaaPass.h"
 #include "renderer/passes/GBufferDecodePass.h"
 #include "renderer/passes/GeometryPass.h"
+#include "renderer/passes/LightTablePass.h"
 #include "renderer/passes/LightingPass.h"
+#include "renderer/passes/ShadowPass.h"
 #include "renderer/passes/LuminancePass.h"
 #include "renderer/passes/SkyboxPass.h"
 #include "renderer/passes/SsaoBlurPass.h"
@@ -31,6 +33,8 @@ std::vector<PassEntry> builtinPasses() {
         entry<SsaoPass>(PassStage::Screen),
         entry<SsaoBlurPass>(PassStage::Screen),
         entry<SkyboxPass>(PassStage::Screen),
+        entry<LightTablePass>(PassStage::Lights),
+        entry<ShadowPass>(PassStage::Lights),
         entry<LightingPass>(PassStage::Lighting),
         entry<LuminancePass>(PassStage::Hdr),
         entry<BloomPass>(PassStage::Hdr),

@@ -63,7 +63,8 @@ TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
     EXPECT_NE(knobs.out.find("tonemap.key"), std::string::npos);
     const Result passes = run("list passes");
     EXPECT_EQ(passes.code, 0);
-    EXPECT_NE(passes.out.find("reads  ssao.blurred (when produced)"), std::string::npos) << passes.out;
+    EXPECT_NE(passes.out.find("reads    ssao.blurred (when produced)"), std::string::npos) << passes.out;
+    EXPECT_NE(passes.out.find("shadows  [lights]\n  modifies lights.table"), std::string::npos) << passes.out;
     const Result presets = run("list presets");
     EXPECT_EQ(presets.code, 0);
     for (const char* p : {"Low", "Medium", "High", "SSAO1", "SSAO5"}) EXPECT_NE(presets.out.find(p), std::string::npos) << p;

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/passes/LightingPass.h"
+#include "renderer/passes/ShadowPass.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/scene/ShapeBuilder.h"
 #include "tests/support/TestSupport.h"
@@ -223,7 +224,8 @@ TEST(Shadows, ReusingOneMapGivesTheSameImageWithLessMemory) {
     s->render({{"lbuffer"}});
     const FloatImage reused = s->readRaw("lbuffer");
     const LightingPass& lighting = *s->pipeline().pass<LightingPass>();
-    const std::size_t inUseReused = lighting.shadowBytesInUse(), keepingAll = lighting.shadowBytesKeepingAll();
+    const ShadowPass& shadows = *s->pipeline().pass<ShadowPass>();
+    const std::size_t inUseReused = shadows.bytesInUse(), keepingAll = shadows.bytesKeepingAll();
     s->knobs().setFromString("shadows.reuse_map", "false");
     s->render({{"lbuffer"}});
     const FloatImage kept = s->readRaw("lbuffer");
@@ -235,7 +237,8 @@ TEST(Shadows, ReusingOneMapGivesTheSameImageWithLessMemory) {
     EXPECT_EQ(shadowed, 9);
     EXPECT_EQ(inUseReused, map);
     EXPECT_EQ(keepingAll, map * static_cast<std::size_t>(shadowed));
-    EXPECT_EQ(lighting.shadowBytesInUse(), keepingAll);  // what keeping them all costs
+    EXPECT_EQ(shadows.bytesInUse(), keepingAll);  // what keeping them all costs
+    EXPECT_EQ(shadows.mapsRendered(), shadowed);
 }
 
 TEST(Bloom, AddsEnergyOnlyAroundPixelsAboveTheThreshold) {

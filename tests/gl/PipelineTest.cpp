@@ -20,8 +20,8 @@ TEST(Pipeline, TheFinalImageRunsTheSeedOrderAndSkipsTheDecoder) {
     auto s = test::makeSession(96, 54);
     s->loadScene("default");
     const FrameReport r = s->render();
-    // Seed 002 section 6 with the sky before the L-buffer and FXAA last.
-    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "ssao", "ssao_blur", "skybox", "lighting", "luminance", "bloom",
+    // Seed 002 section 6 with the sky, the light table and the shadow maps before the L-buffer and FXAA last.
+    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "ssao", "ssao_blur", "skybox", "lights", "shadows", "lighting", "luminance", "bloom",
                                                 "tonemap", "fxaa"}));
     EXPECT_EQ(r.find("gbuffer_decode")->reason, "nothing this frame consumes its outputs");
     EXPECT_EQ(r.find("dof")->reason, "switched off (dof.enabled = false)");

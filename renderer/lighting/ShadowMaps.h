@@ -1,11 +1,12 @@
 #pragma once
-// Shadow maps for the lighting pass (seed 000 sections 4.4 and 5.5, seed 002
-// section 3.3): directional lights get an orthographic map fitted to what the
-// camera sees, spot lights a perspective map matching the cutoff, point lights
-// a cube map (or two paraboloids). Maps live in texture arrays; by default one
-// layer per kind is reused light after light ("flip-flop", seed 002 3.3),
-// or every shadowed light keeps its own layer. Bias is slope-scaled and
-// constant polygon offset; filtering is PCF.
+// Shadow maps (seed 000 sections 4.4 and 5.5, seed 002 section 3.3), owned by
+// the shadow pass: directional lights get an orthographic map fitted to what
+// the camera sees, spot lights a perspective map matching the cutoff, point
+// lights a cube map (or two paraboloids). Maps live in texture arrays (2D,
+// cube, paraboloid pairs); by default one layer per kind is reused light after
+// light ("flip-flop", seed 002 3.3), or every shadowed light keeps its own
+// layer. Bias is slope-scaled and constant polygon offset; filtering is PCF
+// through comparison samplers, so the arrays stay plain depth textures.
 #include <glm/glm.hpp>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "renderer/KnobRegistry.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/scene/Light.h"
@@ -40,14 +42,16 @@ public:
 
     bool enabled(const KnobRegistry& knobs) const { return knobs.get(enabled_); }
     bool reuse(const KnobRegistry& knobs) const { return knobs.get(reuse_); }
-    // Allocates layers for this frame: `counts` shadowed lights of each kind.
-    void beginFrame(const FrameContext& ctx, const int counts[3]);
+    // Allocates layers for this frame: `counts` shadowed lights of each kind,
+    // one layer per kind when `reuse`, else one per light.
+    void beginFrame(const FrameContext& ctx, const int counts[3], bool reuse);
     // Renders `light`'s map into `slot` of its kind and says how to sample it.
     ShadowLookup render(const FrameContext& ctx, const Light& light, double radius, int slot);
+    // The maps at units 6 (2D), 7 (cube), 8 (paraboloid) with comparison samplers.
     void bind() const;
     Kind kindOf(const Light& light, const KnobRegistry& knobs) const;
-    // Renders a map into an R32F image for inspection (the shadow.mapN outputs).
-    void drawView(Kind kind, int slot, gl::Texture& target, gl::Framebuffer& fbo);
+    // The depth array of a kind (layers: 1 per 2D map, 6 per cube, 2 per paraboloid pair).
+    const gl::Texture& maps(Kind kind) const { return maps_[kind]; }
 
     // Bytes the maps in use take, and what keeping one map per light would take.
     std::size_t bytesInUse() const { return bytesInUse_; }
@@ -60,9 +64,9 @@ private:
     IntKnob size_, pcf_;
     FloatKnob biasConstant_, biasSlope_, distance_;
     EnumKnob pointMethod_;
-    gl::ShaderLibrary::Handle depth_, paraboloid_, view_;
-    gl::FullscreenTriangle triangle_;
+    gl::ShaderLibrary::Handle depth_, paraboloid_;
     gl::Texture maps_[3];
+    gl::Sampler compare_;
     int layers_[3] = {0, 0, 0};
     int mapSize_ = 0;
     gl::Framebuffer fbo_;

@@ -1,4 +1,4 @@
-#include "renderer/ShadowMaps.h"
+#include "renderer/lighting/ShadowMaps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,7 @@ ShadowMaps::ShadowMaps(KnobRegistry& knobs) {
 void ShadowMaps::setup(gl::ShaderLibrary& shaders) {
     depth_ = shaders.get({.vertex = "shadow/depth.vert", .fragment = "shadow/depth.frag"});
     paraboloid_ = shaders.get({.vertex = "shadow/paraboloid.vert", .fragment = "shadow/depth.frag"});
-    view_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "shadow/view.frag"});
+    compare_ = gl::Sampler::createDepthCompare("shadow comparison");
     fbo_ = gl::Framebuffer::create("shadow map");
     fbo_.setNoColorBuffers();
     for (int k = 0; k < 3; ++k) ensure(static_cast<Kind>(k), 1, 1);
@@ -67,21 +67,17 @@ ShadowMaps::Kind ShadowMaps::kindOf(const Light& light, const KnobRegistry& knob
 }
 
 void ShadowMaps::ensure(Kind kind, int layers, int size) {
-    if (maps_[kind] && layers_[kind] >= layers && maps_[kind].width() == size) return;
+    if (maps_[kind] && layers_[kind] == layers && maps_[kind].width() == size) return;
     const GLenum target = kind == Cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY;
     const int depth = kind == Cube ? 6 * layers : (kind == Paraboloid ? 2 * layers : layers);
     maps_[kind] = gl::Texture::createArray(target, GL_DEPTH_COMPONENT32F, size, depth);
-    maps_[kind].setFilter(GL_LINEAR, GL_LINEAR);
-    maps_[kind].setDepthCompare(true);
-    maps_[kind].setWrap(GL_CLAMP_TO_BORDER);
-    maps_[kind].setBorderColor(1, 1, 1, 1);
+    maps_[kind].setLabel(kind == Map2D ? "shadow.maps" : (kind == Cube ? "shadow.cubes" : "shadow.paraboloids"));
     layers_[kind] = layers;
 }
 
-void ShadowMaps::beginFrame(const FrameContext& ctx, const int counts[3]) {
+void ShadowMaps::beginFrame(const FrameContext& ctx, const int counts[3], bool reuse) {
     const int size = ctx.knobs.get(size_);
     mapSize_ = size;
-    const bool reuse = ctx.knobs.get(reuse_);
     bytesInUse_ = bytesKeepingAll_ = 0;
     rendered_ = 0;
     const std::size_t texel = 4;  // DEPTH_COMPONENT32F
@@ -232,30 +228,7 @@ void ShadowMaps::bind() const {
     maps_[Map2D].bind(6);
     maps_[Cube].bind(7);
     maps_[Paraboloid].bind(8);
-}
-
-void ShadowMaps::drawView(Kind kind, int slot, gl::Texture& target, gl::Framebuffer& fbo) {
-    const int s = mapSize_;
-    const int w = kind == Cube ? 3 * s : (kind == Paraboloid ? 2 * s : s);
-    const int h = kind == Cube ? 2 * s : s;
-    if (!target || target.width() != w || target.height() != h) {
-        target = gl::Texture::create2D(GL_R32F, w, h);
-        target.setFilter(GL_NEAREST, GL_NEAREST);
-        fbo = gl::Framebuffer::forColor(target, "shadow map view");
-    }
-    // Plain depth reads (no comparison) for the view.
-    for (const gl::Texture* t : {&maps_[Map2D], &maps_[Cube], &maps_[Paraboloid]})
-        glTextureParameteri(t->id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    gl::resetPipelineState(w, h);
-    fbo.bind();
-    (kind == Cube ? maps_[Map2D] : maps_[kind]).bind(0);
-    maps_[Cube].bind(1);
-    view_->use();
-    view_->set(0, glm::ivec2(kind == Map2D ? 1 : (kind == Cube ? 2 : 3), slot));
-    view_->set(1, glm::vec2(static_cast<float>(w), static_cast<float>(h)));
-    triangle_.draw();
-    for (const gl::Texture* t : {&maps_[Map2D], &maps_[Cube], &maps_[Paraboloid]})
-        glTextureParameteri(t->id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    for (int unit : {6, 7, 8}) compare_.bind(unit);
 }
 
 }  // namespace dw

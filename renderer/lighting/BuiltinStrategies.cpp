@@ -1,0 +1,25 @@
+// The built-in lighting strategies, one line each; the first is the default
+// of lighting.strategy.
+#include "renderer/lighting/FullscreenStrategy.h"
+#include "renderer/lighting/LightingStrategy.h"
+#include "renderer/lighting/StencilVolumesStrategy.h"
+#include "renderer/lighting/VolumesStrategy.h"
+
+namespace dw {
+
+namespace {
+template <typename T>
+LightingStrategyFactory make() {
+    return [](KnobRegistry& knobs) { return std::make_unique<T>(knobs); };
+}
+}  // namespace
+
+std::vector<LightingStrategyFactory> builtinLightingStrategies() {
+    return {
+        make<StencilVolumesStrategy>(),
+        make<VolumesStrategy>(),
+        make<FullscreenStrategy>(),
+    };
+}
+
+}  // namespace dw

@@ -1,0 +1,53 @@
+#pragma once
+// The frame's lights, as every lighting strategy and the shadow pass see them
+// (DESIGN.md "Resources and strategies"): one row per enabled light that can
+// reach the threshold, with its volume radius (seed 001 eq. 1) and whether
+// that volume meets the view frustum. The CPU side keeps the row order and the
+// volumes; the GPU side is the std430 SSBO `lights.table` (binding
+// LIGHT_SSBO, shaders/common/lighting.glsl), uploaded once per frame and
+// patched row by row when a reused shadow map is re-rendered for a light.
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "renderer/LightVolume.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/scene/Light.h"
+
+namespace dw {
+
+// std430 mirror of `Light` in shaders/common/lighting.glsl.
+struct LightGpu {
+    glm::mat4 volume{1.0f};            // unit volume mesh -> world
+    glm::vec4 positionRadius{0.0f};    // view-space position, radius (0 = unbounded)
+    glm::vec4 directionCutoff{0.0f};   // view-space direction, cos(cutoff)
+    glm::vec4 intensityExponent{0.0f}; // rgb intensity, spot exponent
+    glm::vec4 attenuation{0.0f};       // constant, linear, quadratic, type (0 dir, 1 point, 2 spot)
+    glm::mat4 shadowMatrix{1.0f};      // view space -> the shadow map's space
+    glm::vec4 shadowParams{0.0f};      // mode (0 none), PCF radius, texel size, layer
+    glm::vec4 shadowRange{0.0f};       // near, far; constant bias (fixed, per unit distance)
+};
+static_assert(sizeof(LightGpu) == 224, "std430 layout of Light in shaders/common/lighting.glsl");
+static_assert(offsetof(LightGpu, positionRadius) == 64 && offsetof(LightGpu, shadowMatrix) == 128 &&
+                  offsetof(LightGpu, shadowRange) == 208,
+              "std430 offsets of Light in shaders/common/lighting.glsl");
+
+struct LightTableEntry {
+    int row = 0;                 // index into rows (and the SSBO)
+    const Light* light = nullptr;
+    LightVolume volume;
+    bool inFrustum = true;       // the volume's bounding sphere meets the view frustum
+    bool shadowed = false;       // gets a shadow map this frame (set by the shadow pass)
+};
+
+struct LightTable {
+    std::vector<LightGpu> rows;
+    std::vector<LightTableEntry> entries;  // one per row, in scene order
+    int belowThreshold = 0;                // enabled lights that never reach the threshold
+    gl::Buffer* buffer = nullptr;          // the SSBO behind lights.table
+
+    // Uploads one row again (after its shadow lookup changed).
+    void uploadRow(int row) const;
+};
+
+}  // namespace dw

@@ -1,0 +1,105 @@
+#pragma once
+// How the lighting pass finds the pixels each bounded (point or spot) light
+// touches (seed 000 section 6.1, seed 001 section 2.2, seed 003 section
+// 2.2.1): one class per strategy, each a value of the knob lighting.strategy.
+// Every strategy shades with the same light shader into the same L-buffer, so
+// their images agree up to rounding; they differ in what they cost. A new
+// strategy is one class and one registration line:
+//     static dw::RegisterLightingStrategy<MyStrategy> registerMine;
+// (built-in ones are listed in BuiltinStrategies.cpp).
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/FrameContext.h"
+#include "renderer/LightVolumeGeometry.h"
+#include "renderer/OutputRegistry.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/lighting/LightTable.h"
+
+namespace dw {
+
+class KnobRegistry;
+
+// What strategies share: the light shader (and its overlap-counting variant)
+// as a full-screen pass and over a volume mesh, the stencil-marking program,
+// and the unit sphere and cone volume meshes (renderer/LightVolume.h).
+class LightShading {
+public:
+    void setup(gl::ShaderLibrary& shaders);
+    const gl::Program& fullscreen(bool counting) const { return counting ? *fullscreenCounting_ : *fullscreen_; }
+    const gl::Program& volume(bool counting) const { return counting ? *volumeCounting_ : *volume_; }
+    const gl::Program& stencil() const { return *stencil_; }
+    const LightVolumeGeometry& geometry(const LightTableEntry& e) const {
+        return e.volume.shape == VolumeShape::Cone ? cone_ : sphere_;
+    }
+    void drawFullscreenTriangle() const { triangle_.draw(); }
+
+private:
+    gl::ShaderLibrary::Handle fullscreen_, volume_, fullscreenCounting_, volumeCounting_, stencil_;
+    LightVolumeGeometry sphere_, cone_;
+    gl::FullscreenTriangle triangle_;
+};
+
+// One frame of a strategy's work.
+struct LightingFrame {
+    FrameContext& ctx;
+    const LightTable& table;
+    // The bounded lights to shade (rows of `table`), spheres before cones.
+    std::vector<const LightTableEntry*> lights;
+    // Also count light-shader invocations per pixel into lighting.overlap
+    // (draw buffer 1); use LightShading's counting programs.
+    bool counting = false;
+    const LightShading& shading;
+    // Call before drawing a light: renders its shadow map when maps are
+    // reused, then leaves GL state reset with the L-buffer target bound,
+    // additive blending on and the lighting inputs bound.
+    std::function<void(const LightTableEntry&)> beginLight;
+};
+
+// What a strategy did, for the pass's statistics line.
+struct StrategyCounts {
+    int volumes = 0;     // lights drawn through a volume mesh
+    int fullscreen = 0;  // lights drawn over the whole screen
+    int culled = 0;      // lights skipped (outside the view frustum)
+};
+
+class LightingStrategy {
+public:
+    virtual ~LightingStrategy() = default;
+    // The knob value (lighting.strategy = name).
+    virtual const char* name() const = 0;
+    // One sentence for `list knobs` and the parameter tooltip.
+    virtual std::string description() const = 0;
+    // Outputs of its own (e.g. per-tile light counts), published by the lighting pass.
+    virtual std::vector<OutputDecl> outputs() const { return {}; }
+    virtual void setup(gl::ShaderLibrary& shaders) { (void)shaders; }
+    virtual StrategyCounts shade(LightingFrame& frame) = 0;
+};
+
+using LightingStrategyFactory = std::function<std::unique_ptr<LightingStrategy>(KnobRegistry&)>;
+
+class LightingStrategyCatalog {
+public:
+    // Strategies registered from outside the library (tests, plug-ins).
+    static LightingStrategyCatalog& extra();
+    void add(LightingStrategyFactory make) { factories_.push_back(std::move(make)); }
+    const std::vector<LightingStrategyFactory>& factories() const { return factories_; }
+
+private:
+    std::vector<LightingStrategyFactory> factories_;
+};
+
+// The built-in strategies, in the order of the knob's choices (BuiltinStrategies.cpp).
+std::vector<LightingStrategyFactory> builtinLightingStrategies();
+
+template <typename T>
+struct RegisterLightingStrategy {
+    RegisterLightingStrategy() {
+        LightingStrategyCatalog::extra().add([](KnobRegistry& knobs) { return std::make_unique<T>(knobs); });
+    }
+};
+
+}  // namespace dw

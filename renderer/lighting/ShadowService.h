@@ -1,0 +1,22 @@
+#pragma once
+// How a lighting strategy gets a light's shadow map at the moment it needs it.
+// With map reuse (seed 002 section 3.3's flip-flop) one layer serves every
+// light, so the map is rendered just before its light is shaded; otherwise
+// every map was rendered up front and this only makes sure it is bound.
+namespace dw {
+
+struct FrameContext;
+struct LightTableEntry;
+
+class ShadowService {
+public:
+    virtual ~ShadowService() = default;
+    // Makes the entry's map current; when that meant rendering it (reuse),
+    // patches the light's row of the light table and returns true: GL state
+    // and texture bindings are then the caller's to restore.
+    virtual bool prepare(FrameContext& ctx, const LightTableEntry& entry) = 0;
+    // Binds the maps with their comparison samplers (units 6, 7, 8).
+    virtual void bind() const = 0;
+};
+
+}  // namespace dw
