@@ -10,6 +10,7 @@
 #include "renderer/gl/Program.h"
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/graph/TargetFramebuffer.h"
+#include "renderer/lighting/LightingStrategy.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -164,4 +165,125 @@ TEST(FrameGraph, KnobsReadAcrossPassesAreCheckedOnce) {
     EXPECT_NO_THROW(knobs.requireBool("a.flag"));
     EXPECT_THROW(knobs.requireFloat("a.flag"), Error);
     EXPECT_THROW(knobs.requireBool("b.missing"), Error);
+}
+
+namespace {
+
+// A lighting strategy that exists only in this test binary: brute force, but
+// it records which light-table rows it was given.
+class RecordingStrategy : public LightingStrategy {
+public:
+    explicit RecordingStrategy(KnobRegistry&) {}
+    const char* name() const override { return "test_recording"; }
+    std::string description() const override { return "test-only: every light full-screen, recording the rows"; }
+    StrategyCounts shade(LightingFrame& f) override {
+        StrategyCounts c;
+        rows().clear();
+        const gl::Program& program = f.shading.fullscreen(f.counting);
+        for (const LightTableEntry* e : f.lights) {
+            rows().push_back(e->row);
+            f.beginLight(*e);
+            program.use();
+            program.set(0, e->row);
+            f.shading.drawFullscreenTriangle();
+            ++c.fullscreen;
+        }
+        return c;
+    }
+    static std::vector<int>& rows() {
+        static std::vector<int> r;
+        return r;
+    }
+};
+
+// The one line that adds it.
+const RegisterLightingStrategy<RecordingStrategy> registerRecording;
+
+}  // namespace
+
+TEST(FrameGraph, ARegisteredLightingStrategyIsAChoiceAndShadesTheSameImage) {
+    auto s = test::makeSession(64, 36);
+    s->loadScene("default");
+    const auto id = s->knobs().find("lighting.strategy");
+    ASSERT_TRUE(id);
+    const auto& choices = s->knobs().spec(*id).choices;
+    EXPECT_NE(std::find(choices.begin(), choices.end(), "test_recording"), choices.end());
+    EXPECT_EQ(choices.front(), "stencil_volumes");  // the built-in default stays first
+
+    s->knobs().setFromString("lighting.strategy", "fullscreen");
+    s->render({{"lbuffer"}});
+    const FloatImage brute = s->readRaw("lbuffer");
+    s->knobs().setFromString("lighting.strategy", "test_recording");
+    const FrameReport r = s->render({{"lbuffer"}});
+    EXPECT_NE(r.find("lighting")->stats.find("test_recording"), std::string::npos);
+    const FloatImage recorded = s->readRaw("lbuffer");
+    EXPECT_EQ(test::maxAbsDifference(brute, recorded, 3), 0.0);
+    // It was handed every bounded light of the table: the default scene's 36 point and 8 spot lights.
+    EXPECT_EQ(RecordingStrategy::rows().size(), 44u);
+}
+
+namespace {
+
+// A test-only pass that adds a constant into another pass's target, as
+// transparency compositing adds into the L-buffer. Registered at the earliest
+// stage on purpose: the modify edge, not the stage, must place it after the
+// lighting pass and before everything that reads the L-buffer.
+class AddIntoLBufferPass : public RenderPass {
+public:
+    explicit AddIntoLBufferPass(KnobRegistry& knobs) {
+        enabled_ = knobs.addBool("add_glow.enabled", false, "add_glow", "test-only: add 0.25 into the L-buffer");
+    }
+    const char* name() const override { return "add_glow"; }
+    std::vector<OutputDecl> outputs() const override { return {}; }
+    PassIO inputs(const KnobRegistry&) const override { return {{}, {}, {"lbuffer"}}; }
+    std::string skipReason(const KnobRegistry& knobs, const Scene&) const override {
+        return knobs.get(enabled_) ? std::string() : "switched off";
+    }
+    void setup(gl::ShaderLibrary& shaders) override {
+        const char* frag = "#version 450 core\nout vec4 outColor;\nvoid main() { outColor = vec4(0.25, 0.25, 0.25, 0.0); }\n";
+        program_ = gl::Program::link(
+            {{GL_VERTEX_SHADER, gl::ShaderSource::load(shaders.root(), "fullscreen.vert", {})},
+             {GL_FRAGMENT_SHADER, gl::ShaderSource::fromString(shaders.root(), "add.frag", frag, {})}});
+    }
+    void execute(FrameContext& ctx) override {
+        target_.get(ctx, {"lbuffer"}, {}, "add glow").bind();
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);  // adds into what the lighting pass wrote
+        program_.use();
+        triangle_.draw();
+    }
+
+private:
+    BoolKnob enabled_;
+    gl::Program program_;
+    TargetFramebuffer target_;
+    gl::FullscreenTriangle triangle_;
+};
+
+const RegisterPass<AddIntoLBufferPass> registerAddGlow(PassStage::GBuffer);
+
+}  // namespace
+
+TEST(FrameGraph, APassThatModifiesAnotherPassesTargetRunsBetweenItsWriterAndItsReaders) {
+    auto s = test::makeSession(48, 27);
+    s->loadScene("spheres");
+    s->render({{"lbuffer"}});
+    const FloatImage before = s->readRaw("lbuffer");
+    s->knobs().setFromString("add_glow.enabled", "true");
+    const FrameReport r = s->render({{"final", "lbuffer"}});
+    std::vector<std::string> order;
+    for (const auto& p : r.passes)
+        if (p.ran) order.push_back(p.name);
+    const auto at = [&](const char* n) { return std::find(order.begin(), order.end(), n) - order.begin(); };
+    EXPECT_GT(at("add_glow"), at("lighting"));
+    EXPECT_LT(at("add_glow"), at("luminance"));
+    EXPECT_LT(at("add_glow"), at("tonemap"));
+    const FloatImage after = s->readRaw("lbuffer");
+    double worst = 0.0;
+    for (int y = 0; y < before.height; ++y)
+        for (int x = 0; x < before.width; ++x)
+            worst = std::max(worst, std::abs(after.at(x, y, 0) - before.at(x, y, 0) - 0.25) / (1.0 + before.at(x, y, 0)));
+    EXPECT_LT(worst, 2e-3);  // RGBA16F rounding
+    // Nothing reads the L-buffer when only the G-buffer is asked for: the modifier does not run either.
+    EXPECT_FALSE(s->render({{"gbuffer.depth"}}).find("add_glow")->ran);
 }
