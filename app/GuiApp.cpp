@@ -12,10 +12,10 @@
 #include <filesystem>
 
 #include "renderer/Error.h"
-#include "renderer/ForwardPreview.h"
-#include "renderer/OutputReadback.h"
+#include "renderer/inspect/ForwardPreview.h"
+#include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
-#include "renderer/ViewportOverlay.h"
+#include "renderer/inspect/ViewportOverlay.h"
 #include "ui/PresetsPanel.h"
 #include "ui/WorkbenchUi.h"
 

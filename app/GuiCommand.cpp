@@ -5,8 +5,8 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GuiApp.h"
-#include "renderer/KnobRegistry.h"
-#include "renderer/Pipeline.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/Pipeline.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {

@@ -4,9 +4,9 @@
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "renderer/KnobRegistry.h"
-#include "renderer/Pipeline.h"
-#include "renderer/Preset.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/Pipeline.h"
+#include "renderer/knobs/Preset.h"
 #include "renderer/scene/BuiltinScenes.h"
 
 namespace dw {

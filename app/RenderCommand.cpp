@@ -9,7 +9,7 @@
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
-#include "renderer/Preset.h"
+#include "renderer/knobs/Preset.h"
 #include "renderer/RenderSession.h"
 #include "renderer/scene/SceneLoader.h"
 

@@ -1,7 +1,7 @@
 #include "renderer/RenderSession.h"
 
 #include "renderer/Error.h"
-#include "renderer/OutputReadback.h"
+#include "renderer/inspect/OutputReadback.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {

@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "renderer/BufferView.h"
-#include "renderer/ImageIO.h"
-#include "renderer/KnobRegistry.h"
-#include "renderer/Pipeline.h"
+#include "renderer/inspect/BufferView.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/Pipeline.h"
 #include "renderer/gl/DebugOutput.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/scene/Scene.h"

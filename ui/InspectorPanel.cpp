@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "renderer/OutputReadback.h"
+#include "renderer/inspect/OutputReadback.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {

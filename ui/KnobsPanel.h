@@ -2,7 +2,7 @@
 // Parameter panel generated from the knob registry: one group per pass, one
 // widget per knob by its type, a reset per knob and per group. No knob is
 // written here by name.
-#include "renderer/KnobRegistry.h"
+#include "renderer/knobs/KnobRegistry.h"
 
 namespace dw::ui {
 

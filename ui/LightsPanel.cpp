@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {

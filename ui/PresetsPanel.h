@@ -2,7 +2,7 @@
 // Presets: the built-in ones and the JSON files in the presets folder; load
 // (scene, camera and knobs; unknown or invalid keys are listed, the rest
 // applied) and save (atomically; a failed save keeps the old file).
-#include "renderer/Preset.h"
+#include "renderer/knobs/Preset.h"
 #include "renderer/RenderSession.h"
 #include "ui/UiState.h"
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "renderer/BufferView.h"
-#include "renderer/PixelProbe.h"
-#include "renderer/Pipeline.h"
-#include "renderer/ViewportOverlay.h"
+#include "renderer/inspect/BufferView.h"
+#include "renderer/inspect/PixelProbe.h"
+#include "renderer/graph/Pipeline.h"
+#include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
 
 namespace dw::ui {

@@ -5,7 +5,7 @@
 #include <regex>
 #include <sstream>
 
-#include "renderer/TextFile.h"
+#include "renderer/io/TextFile.h"
 
 namespace dw::gl {
 

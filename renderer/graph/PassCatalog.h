@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "renderer/RenderPass.h"
+#include "renderer/graph/RenderPass.h"
 
 namespace dw {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "renderer/Error.h"
-#include "renderer/OutputRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/graph/OutputRegistry.h"
+#include "renderer/graph/RenderPass.h"
 
 namespace dw {
 

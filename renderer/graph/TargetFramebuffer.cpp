@@ -1,6 +1,6 @@
 #include "renderer/graph/TargetFramebuffer.h"
 
-#include "renderer/FrameContext.h"
+#include "renderer/graph/FrameContext.h"
 #include "renderer/gl/Texture.h"
 
 namespace dw {

@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/scene/Light.h"
 

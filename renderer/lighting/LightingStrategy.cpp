@@ -1,6 +1,6 @@
 #include "renderer/lighting/LightingStrategy.h"
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 
 namespace dw {
 

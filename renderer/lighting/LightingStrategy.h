@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/FrameContext.h"
-#include "renderer/LightVolumeGeometry.h"
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/FrameContext.h"
+#include "renderer/lighting/LightVolumeGeometry.h"
+#include "renderer/graph/OutputRegistry.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/lighting/LightTable.h"

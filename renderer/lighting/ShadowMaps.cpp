@@ -5,7 +5,7 @@
 #include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/scene/Scene.h"
 

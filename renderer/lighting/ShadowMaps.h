@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 #include <string>
 
-#include "renderer/FrameContext.h"
-#include "renderer/KnobRegistry.h"
+#include "renderer/graph/FrameContext.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/Sampler.h"

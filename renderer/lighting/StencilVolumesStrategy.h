@@ -5,7 +5,7 @@
 // so no clear is needed between lights. Counting on depth fail (the default)
 // stays right with the camera inside a volume; depth pass is the seed's table
 // as written. Needs the L-buffer's depth-stencil (lbuffer.depth) bound.
-#include "renderer/KnobRegistry.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/lighting/LightingStrategy.h"
 
 namespace dw {

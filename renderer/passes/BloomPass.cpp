@@ -4,7 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/Error.h"
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/gl/FullscreenTriangle.h"
 
 namespace dw {

@@ -7,8 +7,8 @@
 // which the tone mapper composites.
 #include <vector>
 
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"

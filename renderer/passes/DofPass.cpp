@@ -3,7 +3,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/Error.h"
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 
 namespace dw {
 

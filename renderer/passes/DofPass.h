@@ -3,8 +3,8 @@
 // near and far. Reads the post chain's current image (the tone-mapped one unless a
 // post pass comes before) and gbuffer.depth; writes dof.result
 // (RGBA8) and dof.coc (signed circle of confusion in pixels, when asked for).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"

@@ -1,8 +1,8 @@
 #pragma once
 // FXAA (seed 000 section 3.3) on the display image: reads the post chain's
 // current image (after depth of field when that is on); writes fxaa.result (RGBA8).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"

@@ -3,7 +3,7 @@
 // gbuffer.normal and gbuffer.depth; writes gbuffer.view_normal (decoded,
 // seed 000 eqs. 3.2-3.3) and gbuffer.view_position (reconstructed from depth,
 // seed 000 section 3.1). Culled unless something asks for these outputs.
-#include "renderer/RenderPass.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"

@@ -1,6 +1,6 @@
 #include "renderer/passes/GeometryPass.h"
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {

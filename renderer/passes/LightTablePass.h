@@ -5,8 +5,8 @@
 // position and direction, and whether its volume meets the view frustum.
 // Reads the scene; writes lights.table (an SSBO of LightGpu rows, binding
 // LIGHT_SSBO) and hands the CPU side to later passes (FrameContext::lightTable).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/lighting/LightTable.h"
 
 namespace dw {

@@ -4,7 +4,7 @@
 #include <iterator>
 
 #include "renderer/Error.h"
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/ShadowService.h"
 #include "renderer/scene/Scene.h"

@@ -14,8 +14,8 @@
 #include <memory>
 #include <vector>
 
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"

@@ -3,8 +3,8 @@
 // log-average luminance exp(mean(log(delta + L))) and max luminance (L_white)
 // by GPU reduction, never read back by the CPU. Reads lbuffer; writes
 // luminance.stats (1x1 RGBA32F: log-average, max, mean, finite pixel count).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "renderer/PassTimer.h"
+#include "renderer/graph/PassTimer.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/scene/Scene.h"
 

@@ -8,8 +8,8 @@
 // (seed 002's flip-flop) it renders nothing up front: the lighting pass asks
 // for each map just before shading its light, and one layer serves all; when
 // a shadow output is asked for, every map is kept so all can be seen.
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/lighting/ShadowMaps.h"
 #include "renderer/lighting/ShadowService.h"
 

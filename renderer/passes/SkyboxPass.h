@@ -4,8 +4,8 @@
 // scene's sky; writes sky (RGBA16F), which the lighting pass puts into the
 // L-buffer's background pixels. The sky is a procedural gradient with a sun,
 // an equirectangular HDR/EXR image or a cube map (through OpenImageIO).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"

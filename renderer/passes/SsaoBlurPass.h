@@ -5,8 +5,8 @@
 // resolution when the AO ran smaller. Reads ssao.raw and gbuffer.depth;
 // writes ssao.blurred (full resolution), which the lighting pass multiplies
 // into the ambient term.
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {

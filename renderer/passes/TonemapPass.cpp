@@ -2,7 +2,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 
 namespace dw {
 

@@ -2,8 +2,8 @@
 // Tone mapping (seed 000 sections 4.2 and 5.3; seed 002 steps 9 and 10):
 // reads lbuffer, luminance.stats when an operator needs it, and bloom.result
 // when bloom ran; writes tonemap.result (RGBA8, sRGB-encoded).
-#include "renderer/KnobRegistry.h"
-#include "renderer/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"

@@ -1,7 +1,7 @@
 #pragma once
 // Log-average and max luminance of an HDR image in double precision (seed 000
 // eq. 4.2), the ground truth for the GPU reduction in LuminancePass.
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 
 namespace dw::reference {
 

@@ -18,8 +18,8 @@
 #include <string_view>
 
 #include "renderer/Error.h"
-#include "renderer/ImageIO.h"
-#include "renderer/TextFile.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/scene/TangentGenerator.h"
 
 namespace dw {

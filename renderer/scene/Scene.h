@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/Image.h"
 #include "renderer/scene/Light.h"

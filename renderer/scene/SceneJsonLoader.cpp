@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "renderer/Error.h"
-#include "renderer/TextFile.h"
-#include "renderer/ImageIO.h"
+#include "renderer/io/TextFile.h"
+#include "renderer/io/ImageIO.h"
 #include "renderer/scene/GltfLoader.h"
 #include "renderer/scene/ShapeBuilder.h"
 

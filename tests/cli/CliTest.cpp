@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/passes/LightingPass.h"
 #include "renderer/reference/ShadingReference.h"
 #include "renderer/scene/BuiltinScenes.h"

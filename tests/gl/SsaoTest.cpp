@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/graph/ResourcePool.h"
-#include "renderer/OutputReadback.h"
+#include "renderer/inspect/OutputReadback.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/passes/SsaoBlurPass.h"
 #include "renderer/scene/ShapeBuilder.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/passes/BloomPass.h"
 #include "renderer/graph/ResourcePool.h"
 #include "renderer/passes/TonemapPass.h"

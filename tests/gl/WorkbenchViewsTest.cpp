@@ -2,10 +2,10 @@
 // light-overlap cost map, the volume wireframe overlay and the forward modes.
 #include <gtest/gtest.h>
 
-#include "renderer/ForwardPreview.h"
-#include "renderer/OutputReadback.h"
-#include "renderer/PixelProbe.h"
-#include "renderer/ViewportOverlay.h"
+#include "renderer/inspect/ForwardPreview.h"
+#include "renderer/inspect/OutputReadback.h"
+#include "renderer/inspect/PixelProbe.h"
+#include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/passes/LightingPass.h"
 #include "tests/support/TestSupport.h"
 

@@ -12,7 +12,7 @@
 #include <set>
 #include <sstream>
 
-#include "renderer/Preset.h"
+#include "renderer/knobs/Preset.h"
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
 #include "ui/WorkbenchUi.h"

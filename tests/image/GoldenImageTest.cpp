@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 #include "renderer/RenderSession.h"
 #include "renderer/scene/Scene.h"
 

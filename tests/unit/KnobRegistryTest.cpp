@@ -3,8 +3,8 @@
 #include <set>
 
 #include "renderer/Error.h"
-#include "renderer/KnobRegistry.h"
-#include "renderer/Pipeline.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/Pipeline.h"
 
 using namespace dw;
 

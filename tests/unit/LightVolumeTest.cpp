@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 
 using namespace dw;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "renderer/PassTimer.h"
+#include "renderer/graph/PassTimer.h"
 
 using namespace dw;
 

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "renderer/Error.h"
-#include "renderer/Pipeline.h"
-#include "renderer/Preset.h"
+#include "renderer/graph/Pipeline.h"
+#include "renderer/knobs/Preset.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;

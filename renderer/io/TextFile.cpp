@@ -1,4 +1,4 @@
-#include "renderer/TextFile.h"
+#include "renderer/io/TextFile.h"
 
 #include <filesystem>
 #include <fstream>

@@ -1,9 +1,9 @@
-#include "renderer/ViewportOverlay.h"
+#include "renderer/inspect/ViewportOverlay.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/scene/Scene.h"
 

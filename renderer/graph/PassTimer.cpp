@@ -1,4 +1,4 @@
-#include "renderer/PassTimer.h"
+#include "renderer/graph/PassTimer.h"
 
 #include <algorithm>
 #include <fstream>

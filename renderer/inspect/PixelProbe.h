@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
 

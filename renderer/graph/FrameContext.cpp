@@ -1,4 +1,4 @@
-#include "renderer/FrameContext.h"
+#include "renderer/graph/FrameContext.h"
 
 #include "renderer/Error.h"
 

@@ -1,4 +1,4 @@
-#include "renderer/Preset.h"
+#include "renderer/knobs/Preset.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "renderer/Error.h"
-#include "renderer/TextFile.h"
+#include "renderer/io/TextFile.h"
 
 namespace dw {
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "renderer/FrameContext.h"
-#include "renderer/GpuScene.h"
-#include "renderer/KnobRegistry.h"
-#include "renderer/OutputRegistry.h"
-#include "renderer/PassTimer.h"
-#include "renderer/RenderPass.h"
+#include "renderer/graph/FrameContext.h"
+#include "renderer/scene/GpuScene.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/graph/OutputRegistry.h"
+#include "renderer/graph/PassTimer.h"
+#include "renderer/graph/RenderPass.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/graph/ResourcePool.h"

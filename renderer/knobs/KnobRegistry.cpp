@@ -1,4 +1,4 @@
-#include "renderer/KnobRegistry.h"
+#include "renderer/knobs/KnobRegistry.h"
 
 #include <algorithm>
 #include <charconv>

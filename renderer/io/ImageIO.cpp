@@ -1,4 +1,4 @@
-#include "renderer/ImageIO.h"
+#include "renderer/io/ImageIO.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>

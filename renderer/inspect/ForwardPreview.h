@@ -2,7 +2,7 @@
 // The viewer's non-deferred modes (seed 001 section 3.4: 't' textured, 'w'
 // wireframe): the scene drawn forward into an RGBA8 image, for orientation and
 // for comparing against the deferred result. Not part of the pipeline.
-#include "renderer/FrameContext.h"
+#include "renderer/graph/FrameContext.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"

@@ -1,8 +1,8 @@
 #pragma once
 // Reads a named output back to CPU memory as raw float values (top-down rows),
 // or as the display image the buffer view makes of it.
-#include "renderer/ImageIO.h"
-#include "renderer/OutputRegistry.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
 

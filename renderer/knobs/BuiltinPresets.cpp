@@ -2,7 +2,7 @@
 // levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4, and
 // light-volume thresholds. Render size is not a knob (it follows the window,
 // or render --size), so the seed's resolutions are only named in descriptions.
-#include "renderer/Preset.h"
+#include "renderer/knobs/Preset.h"
 
 namespace dw {
 

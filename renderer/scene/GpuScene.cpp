@@ -1,4 +1,4 @@
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 
 #include <algorithm>
 

@@ -6,8 +6,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "renderer/FrameContext.h"
-#include "renderer/LightVolumeGeometry.h"
+#include "renderer/graph/FrameContext.h"
+#include "renderer/lighting/LightVolumeGeometry.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/ShaderLibrary.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/KnobRegistry.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/scene/Camera.h"
 
 namespace dw {

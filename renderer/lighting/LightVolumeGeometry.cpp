@@ -1,6 +1,6 @@
-#include "renderer/LightVolumeGeometry.h"
+#include "renderer/lighting/LightVolumeGeometry.h"
 
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 
 namespace dw {
 

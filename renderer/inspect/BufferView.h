@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 #include <string>
 
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/OutputRegistry.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"

@@ -1,6 +1,6 @@
-#include "renderer/ForwardPreview.h"
+#include "renderer/inspect/ForwardPreview.h"
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 #include "renderer/gl/FullscreenTriangle.h"
 
 namespace dw {

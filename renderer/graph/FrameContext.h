@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
 

@@ -1,8 +1,8 @@
-#include "renderer/PixelProbe.h"
+#include "renderer/inspect/PixelProbe.h"
 
 #include <cmath>
 
-#include "renderer/Pipeline.h"
+#include "renderer/graph/Pipeline.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/reference/ShadingReference.h"
 

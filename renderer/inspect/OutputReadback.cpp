@@ -1,4 +1,4 @@
-#include "renderer/OutputReadback.h"
+#include "renderer/inspect/OutputReadback.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "renderer/LightVolume.h"
+#include "renderer/lighting/LightVolume.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "renderer/BufferView.h"
+#include "renderer/inspect/BufferView.h"
 
-#include "renderer/GpuScene.h"
+#include "renderer/scene/GpuScene.h"
 
 namespace dw {
 

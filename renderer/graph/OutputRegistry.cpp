@@ -1,4 +1,4 @@
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/OutputRegistry.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "renderer/Pipeline.h"
+#include "renderer/graph/Pipeline.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/FrameContext.h"
-#include "renderer/OutputRegistry.h"
+#include "renderer/graph/FrameContext.h"
+#include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
 
