@@ -109,6 +109,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     // Sources written by shader stores (buffers, images) are complete before they are read.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::resetPipelineState(w, h);
+    if (sourceKind != SourceArray && sourceKind != Source3D) sourceView_.reset();
     if (sourceKind == SourceBuffer) {
         output.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     } else if (sourceKind == SourceArray || sourceKind == Source3D) {
