@@ -33,10 +33,10 @@ void RenderSession::setScene(Scene scene) {
     for (const auto& [name, value] : scene_->settings) knobs_.setFromString(name, value);
 }
 
-FloatImage RenderSession::readRaw(const std::string& output) const {
+FloatImage RenderSession::readRaw(const std::string& output, ViewSelection selection) const {
     const PublishedOutput* o = pipeline_.outputs().find(output);
     if (!o) throw Error("unknown buffer '" + output + "'");
-    return readOutputRaw(*o);
+    return readOutputRaw(*o, selection);
 }
 
 FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSettings settings) {
@@ -48,11 +48,11 @@ FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSetti
     return readRgba8(view_.render(*o, settings));
 }
 
-void RenderSession::writeOutput(const std::string& output, const std::string& path) {
+void RenderSession::writeOutput(const std::string& output, const std::string& path, const BufferViewSettings& settings) {
     const PublishedOutput* o = pipeline_.outputs().find(output);
     if (!o) throw Error("unknown buffer '" + output + "'");
-    if (isFloatFormat(path)) writeImage(path, readRaw(output), rawChannelNames(*o));
-    else writeImage(path, readDisplay(output));
+    if (isFloatFormat(path)) writeImage(path, readRaw(output, settings.selection()), rawChannelNames(*o));
+    else writeImage(path, readDisplay(output, settings));
 }
 
 }  // namespace dw

@@ -26,11 +26,13 @@ public:
     void resize(int width, int height) { pipeline_.resize(width, height); }
     FrameReport render(const FrameRequest& request = {}) { return pipeline_.render(camera_, request); }
 
-    // A named output as raw floats (for .exr) or as the buffer view shows it (.png).
-    FloatImage readRaw(const std::string& output) const;
+    // A named output as raw floats (for .exr) or as the buffer view shows it
+    // (.png); any kind, laid out as the buffer view lays it out (the layer and
+    // sample of `selection` / `settings`: by default every layer, resolved).
+    FloatImage readRaw(const std::string& output, ViewSelection selection = {}) const;
     FloatImage readDisplay(const std::string& output, BufferViewSettings settings = {});
-    // Renders (if needed) and writes `output` to `path`; .exr raw, .png display.
-    void writeOutput(const std::string& output, const std::string& path);
+    // Writes `output` as rendered by the last frame to `path`; .exr raw, .png display.
+    void writeOutput(const std::string& output, const std::string& path, const BufferViewSettings& settings = {});
 
     KnobRegistry& knobs() { return knobs_; }
     Pipeline& pipeline() { return pipeline_; }

@@ -9,10 +9,23 @@
 
 namespace dw::ui {
 
-bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<glm::vec4, glm::vec4>* autoRange) {
+bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<glm::vec4, glm::vec4>* autoRange,
+                        const PublishedOutput* output) {
     bool changed = false;
     using M = BufferViewSettings::Mapping;
     using C = BufferViewSettings::Channel;
+    // Which layer (cube) of a layered output and which sample of a multisample one; -1 at the left end.
+    if (const int layers = output ? selectableLayers(*output) : 0; layers > 0) {
+        s.layer = std::min(s.layer, layers - 1);
+        ImGui::SetNextItemWidth(160);
+        const char* what = resourceKind(*output) == ResourceKind::TextureCubeArray ? "cube" : "layer";
+        changed |= ImGui::SliderInt(what, &s.layer, -1, layers - 1, s.layer < 0 ? "all" : "%d");
+    }
+    if (const int samples = output ? sampleCount(*output) : 1; samples > 1) {
+        s.sample = std::min(s.sample, samples - 1);
+        ImGui::SetNextItemWidth(160);
+        changed |= ImGui::SliderInt("sample", &s.sample, -1, samples - 1, s.sample < 0 ? "resolved" : "%d");
+    }
     const char* channels[] = {"RGB", "R", "G", "B", "A"};
     for (int c = 0; c < 5; ++c) {
         if (c) ImGui::SameLine();
@@ -115,8 +128,11 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                     state.panels.sideView = true;
                 }
                 ImGui::TableNextColumn();
-                if (o.texture)
+                if (o.texture && resourceKind(o) == ResourceKind::Texture2D)
                     ImGui::TextDisabled("%s  %dx%d%s", toString(o.decl.kind), o.texture->width(o.level), o.texture->height(o.level),
+                                        o.producedThisFrame ? "" : "  (not this frame)");
+                else if (o.allocated())
+                    ImGui::TextDisabled("%s  %s%s", toString(o.decl.kind), describe(o.desc, o.desc.width, o.desc.height).c_str(),
                                         o.producedThisFrame ? "" : "  (not this frame)");
                 ImGui::PopID();
             }
@@ -133,7 +149,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
             std::pair<glm::vec4, glm::vec4> range;
             const bool haveRange = BufferView::resolveAutoRange(shown->decl.kind, state.viewport.settings) && state.viewportImage.texture;
             if (haveRange) range = session.bufferView().lastAutoRange();
-            viewSettingsEditor(state.viewport.settings, shown->decl.kind, haveRange ? &range : nullptr);
+            viewSettingsEditor(state.viewport.settings, shown->decl.kind, haveRange ? &range : nullptr, shown);
         }
         if (ImGui::SmallButton("show final image")) state.viewport.output = "final";
     }
@@ -152,7 +168,7 @@ void SideViewPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::EndCombo();
     }
     if (const PublishedOutput* o = session.pipeline().outputs().find(state.side.output))
-        viewSettingsEditor(state.side.settings, o->decl.kind, nullptr);
+        viewSettingsEditor(state.side.settings, o->decl.kind, nullptr, o);
     const ShownImage& img = state.sideImage;
     if (img.texture) {
         const ImVec2 avail = ImGui::GetContentRegionAvail();

@@ -1,5 +1,6 @@
 #include "renderer/inspect/BufferView.h"
 
+#include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
 
 namespace dw {
@@ -10,17 +11,39 @@ struct ParamsGpu {
     glm::ivec4 flags{0};
     glm::vec4 range{0.0f};
     glm::vec4 extra{0.0f};
+    glm::ivec4 cell{0};    // x, y cell (layer, face) size; z first layer (cube); w sample (-1: mean)
+    glm::ivec4 grid{0};    // x, y image size; z grid columns; w cells
+    glm::ivec4 source{0};  // x samples; y buffer words per element step; z buffer words are unsigned
 };
+
+enum SourceKind { Source2D = 0, SourceMultisample = 1, SourceArray = 2, Source3D = 3, SourceBuffer = 4 };
+const char* const kSourceDefines[] = {nullptr, "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"};
+const char* const kTypeDefines[] = {nullptr, "SOURCE_UINT", "SOURCE_INT"};
 struct RangeGpu {
     glm::vec4 lo, hi;
 };
 }  // namespace
 
 void BufferView::setup(gl::ShaderLibrary& shaders) {
-    view_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag"});
-    minmaxFirst_ = shaders.get({.compute = "bufferview/minmax.comp", .defines = {"FIRST_PASS"}});
+    shaders_ = &shaders;
+    for (auto& kind : programs_)
+        for (auto& p : kind) p = {};
+    programs(Source2D, 0);  // the common case now, so its errors show at start-up
     minmaxNext_ = shaders.get({.compute = "bufferview/minmax.comp"});
     params_ = gl::Buffer::create(sizeof(ParamsGpu), nullptr, true, "buffer view params");
+}
+
+const BufferView::Programs& BufferView::programs(int sourceKind, int valueType) {
+    Programs& p = programs_[sourceKind][valueType];
+    if (!p.view) {
+        std::vector<std::string> defines;
+        if (kSourceDefines[sourceKind]) defines.push_back(kSourceDefines[sourceKind]);
+        if (kTypeDefines[valueType]) defines.push_back(kTypeDefines[valueType]);
+        p.view = shaders_->get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag", .defines = defines});
+        defines.insert(defines.begin(), "FIRST_PASS");
+        p.minmaxFirst = shaders_->get({.compute = "bufferview/minmax.comp", .defines = defines});
+    }
+    return p;
 }
 
 BufferViewSettings::Mapping BufferView::resolveMapping(OutputKind kind, const BufferViewSettings& s) {
@@ -42,37 +65,74 @@ bool BufferView::resolveAutoRange(OutputKind kind, const BufferViewSettings& s) 
 }
 
 const gl::Texture& BufferView::render(const PublishedOutput& output, const BufferViewSettings& s) {
-    const gl::Texture& src = *output.texture;
-    const int w = src.width(output.level), h = src.height(output.level);
+    if (!output.allocated()) throw Error("buffer '" + output.decl.name + "' has not been allocated");
+    const ImageLayout layout = imageLayout(output, s.selection());
+    const ResourceKind kind = resourceKind(output);
+    const int w = layout.width, h = layout.height;
     if (!target_ || target_.width() != w || target_.height() != h) {
         target_ = gl::Texture::create2D(GL_RGBA8, w, h);
         target_.setFilter(GL_NEAREST, GL_NEAREST);
         fbo_ = gl::Framebuffer::forColor(target_, "buffer view");
     }
+    const gl::Texture* src = output.texture;
+    int sourceKind = Source2D;
+    switch (kind) {
+        case ResourceKind::Texture2D: break;
+        case ResourceKind::Texture2DMultisample: sourceKind = SourceMultisample; break;
+        case ResourceKind::Texture2DArray:
+        case ResourceKind::TextureCube:
+        case ResourceKind::TextureCubeArray: sourceKind = SourceArray; break;
+        case ResourceKind::Texture3D: sourceKind = Source3D; break;
+        case ResourceKind::Buffer: sourceKind = SourceBuffer; break;
+    }
+    const int valueType = !src ? 0 : isUnsignedIntegerFormat(src->internalFormat()) ? 1 : isSignedIntegerFormat(src->internalFormat()) ? 2 : 0;
+    const Programs& programs = this->programs(sourceKind, valueType);
     const auto mapping = resolveMapping(output.decl.kind, s);
-    // One-channel buffers (AO, counts, depth) show grey rather than red.
+    // One-channel buffers (AO, counts, depth) show grey rather than red; so do buffer resources (one word a pixel).
+    const int channels = kind == ResourceKind::Buffer ? 1 : output.channels;
     const BufferViewSettings::Channel channel =
-        output.channels == 1 && s.channel == BufferViewSettings::Channel::RGB ? BufferViewSettings::Channel::R : s.channel;
+        channels == 1 && s.channel == BufferViewSettings::Channel::RGB ? BufferViewSettings::Channel::R : s.channel;
     const bool autoRange = resolveAutoRange(output.decl.kind, s);
     ParamsGpu p;
     p.modes = glm::ivec4(static_cast<int>(mapping), static_cast<int>(channel), autoRange ? 1 : 0, output.level);
     p.flags = glm::ivec4(output.decl.kind == OutputKind::NormalKL, output.decl.kind == OutputKind::Depth,
-                         src.isSrgb() ? 1 : 0, 0);
+                         src && src->isSrgb() ? 1 : 0, static_cast<int>(layout.arrangement));
     p.range = glm::vec4(s.rangeMin, s.rangeMax, s.nearPlane, s.farPlane);
     p.extra = glm::vec4(s.exposure, 0, 0, 0);
+    p.cell = glm::ivec4(layout.cellWidth, layout.cellHeight, layout.first, layout.sample);
+    p.grid = glm::ivec4(w, h, layout.columns, layout.cells);
+    p.source = glm::ivec4(layout.samples, layout.wordStep, layout.uintWords ? 1 : 0, 0);
     params_.update(0, sizeof(p), &p);
     params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
 
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "buffer view");
+    // Sources written by shader stores (buffers, images) are complete before they are read.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::resetPipelineState(w, h);
-    src.bind(0);
+    if (sourceKind != SourceArray && sourceKind != Source3D) sourceView_.reset();
+    if (sourceKind == SourceBuffer) {
+        output.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+    } else if (sourceKind == SourceArray || sourceKind == Source3D) {
+        // A view of all layers and levels: its own sampling state (no depth
+        // compare, depth of a depth-stencil format), and cubes read as 2D arrays of faces.
+        GLuint id = 0;
+        glGenTextures(1, &id);
+        const GLenum target = sourceKind == Source3D ? GL_TEXTURE_3D : GL_TEXTURE_2D_ARRAY;
+        const int layers = sourceKind == Source3D ? 1 : kind == ResourceKind::TextureCube ? 6 : src->layers();
+        glTextureView(id, target, src->id(), src->internalFormat(), 0, static_cast<GLuint>(src->levels()), 0,
+                      static_cast<GLuint>(layers));
+        sourceView_ = gl::GlObject<gl::TextureTraits>(id);
+        glBindTextureUnit(0, id);
+    } else {
+        src->bind(0);
+    }
     if (autoRange) {
         const size_t tiles = static_cast<size_t>((w + 15) / 16) * ((h + 15) / 16);
         if (ping_.size() < tiles * sizeof(RangeGpu)) {
             ping_ = gl::Buffer::create(tiles * sizeof(RangeGpu), nullptr, false, "view range A");
             pong_ = gl::Buffer::create(tiles * sizeof(RangeGpu), nullptr, false, "view range B");
         }
-        minmaxFirst_->use();
+        programs.minmaxFirst->use();
         ping_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
         glDispatchCompute(static_cast<GLuint>((w + 15) / 16), static_cast<GLuint>((h + 15) / 16), 1);
         const gl::Buffer* in = &ping_;
@@ -96,7 +156,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
         result_ = nullptr;
     }
     fbo_.bind();
-    view_->use();
+    programs.view->use();
     triangle_.draw();
     glPopDebugGroup();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -3,10 +3,15 @@
 // inspector and viewport show these, and `render --buffer X --out x.png`
 // writes them. Reading needs no per-pass code: the output's kind picks the
 // default mapping (depth linearised, normals as colours, counts as a heat map,
-// HDR tone-mapped); every choice can be overridden.
+// HDR tone-mapped); every choice can be overridden. Every resource kind is
+// shown, laid out as ImageLayout (OutputReadback.h) describes: a multisample
+// texture resolved or per sample, an array or 3D texture as a grid of layers
+// or one layer, a cube as an unfolded cross, a per-pixel buffer as an image
+// and any other buffer as a table of its words.
 #include <glm/glm.hpp>
 #include <string>
 
+#include "renderer/inspect/OutputReadback.h"
 #include "renderer/graph/OutputRegistry.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
@@ -25,12 +30,17 @@ struct BufferViewSettings {
     float rangeMin = 0.0f, rangeMax = 1.0f;
     float exposure = 0.0f;  // EV, tone-mapped view
     float nearPlane = 0.1f, farPlane = 100.0f;  // for linear depth
+    int layer = -1;   // arrays, 3D: one layer (slice); cube arrays: one cube; -1: all, in a grid
+    int sample = -1;  // multisample: one sample; -1: resolved (the mean of the samples)
+    ViewSelection selection() const { return {layer, sample}; }
 };
 
 class BufferView {
 public:
     void setup(gl::ShaderLibrary& shaders);
-    // Renders `output` with `settings` into an RGBA8 texture of the output's size.
+    // Renders `output` with `settings` into an RGBA8 texture of the output's
+    // size, or of its grid, cross or table (imageLayout). Throws dw::Error if
+    // the output is not allocated.
     const gl::Texture& render(const PublishedOutput& output, const BufferViewSettings& settings);
     // The mapping actually used for an output kind under `settings`.
     static BufferViewSettings::Mapping resolveMapping(OutputKind kind, const BufferViewSettings& s);
@@ -40,7 +50,17 @@ public:
     const gl::Texture& texture() const { return target_; }
 
 private:
-    gl::ShaderLibrary::Handle view_, minmaxFirst_, minmaxNext_;
+    struct Programs {
+        gl::ShaderLibrary::Handle view, minmaxFirst;
+    };
+    // One program pair per source kind (2D, multisample, array, 3D, buffer)
+    // and value type (float, unsigned, signed), compiled when first needed.
+    static constexpr int kSourceKinds = 5, kValueTypes = 3;
+    const Programs& programs(int sourceKind, int valueType);
+    gl::ShaderLibrary* shaders_ = nullptr;
+    Programs programs_[kSourceKinds][kValueTypes];
+    gl::ShaderLibrary::Handle minmaxNext_;
+    gl::GlObject<gl::TextureTraits> sourceView_;  // layered sources: a view without compare mode (cubes as 2D arrays)
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_, ping_, pong_;
     const gl::Buffer* result_ = nullptr;

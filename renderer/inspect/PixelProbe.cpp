@@ -1,7 +1,10 @@
 #include "renderer/inspect/PixelProbe.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
+#include "renderer/inspect/OutputReadback.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/reference/ShadingReference.h"
@@ -14,12 +17,22 @@ float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 
 
 glm::vec4 readTexel(const gl::Texture& t, int level, int x, int yGl, int channels) {
     float v[4] = {0, 0, 0, 0};
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    const bool uintFormat = isUnsignedIntegerFormat(t.internalFormat());
+    if (uintFormat || isSignedIntegerFormat(t.internalFormat())) {
+        // Integer textures read back only as integers.
+        const GLenum format = channels == 1 ? GL_RED_INTEGER : channels == 2 ? GL_RG_INTEGER : channels == 3 ? GL_RGB_INTEGER : GL_RGBA_INTEGER;
+        std::uint32_t u[4] = {0, 0, 0, 0};
+        glGetTextureSubImage(t.id(), level, x, yGl, 0, 1, 1, 1, format, uintFormat ? GL_UNSIGNED_INT : GL_INT, sizeof(u), u);
+        for (int c = 0; c < 4; ++c)
+            v[c] = uintFormat ? static_cast<float>(u[c]) : static_cast<float>(static_cast<std::int32_t>(u[c]));
+        return glm::vec4(v[0], v[1], v[2], v[3]);
+    }
     const GLenum format = t.isDepth() ? GL_DEPTH_COMPONENT
                           : channels == 1 ? GL_RED
                           : channels == 2 ? GL_RG
                           : channels == 3 ? GL_RGB
                                           : GL_RGBA;
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureSubImage(t.id(), level, x, yGl, 0, 1, 1, 1, format, GL_FLOAT, sizeof(v), v);
     glm::vec4 out(v[0], v[1], v[2], v[3]);
     if (t.isSrgb())
@@ -38,12 +51,47 @@ ProbeResult probePixel(const Pipeline& pipeline, int x, int y) {
     if (!r.inside) return r;
     const int yGl = h - 1 - y;
     for (const auto& o : pipeline.outputs().all()) {
-        if (!o.producedThisFrame || !o.texture) continue;
+        if (!o.producedThisFrame || !o.allocated()) continue;
+        const ResourceKind kind = resourceKind(o);
+        if (kind == ResourceKind::Buffer) {
+            // A per-pixel buffer: the element under the pixel (y counted from
+            // the bottom, as the shaders that write it count). Other buffers
+            // (tables of lights, counters) have no pixel there: skipped.
+            if (!isPerPixelBuffer(o)) continue;
+            const int bw = std::max(o.desc.width, 1), bh = std::max(o.desc.height, 1);
+            const std::size_t stride = std::max<std::size_t>(o.desc.stride, 4);
+            const std::size_t element = static_cast<std::size_t>(std::min(yGl * bh / h, bh - 1)) * bw +
+                                        static_cast<std::size_t>(std::min(x * bw / w, bw - 1));
+            ProbeValue v{o.decl.name, o.decl.kind, 1, glm::vec4(0.0f), {}, {}};
+            if ((element + 1) * stride > o.buffer->size()) continue;
+            v.words.resize(stride / 4);
+            o.buffer->read(element * stride, v.words.size() * 4, v.words.data());
+            v.channels = static_cast<int>(std::min<std::size_t>(v.words.size(), 4));
+            for (int c = 0; c < v.channels; ++c) {
+                if (o.decl.kind == OutputKind::Count) {
+                    v.raw[c] = static_cast<float>(v.words[static_cast<std::size_t>(c)]);
+                } else {
+                    std::memcpy(&v.raw[c], &v.words[static_cast<std::size_t>(c)], 4);
+                }
+            }
+            r.values.push_back(std::move(v));
+            continue;
+        }
+        // Arrays, cubes and 3D textures (shadow maps, environment maps) hold
+        // other views of the scene: no texel of theirs belongs to this pixel.
+        if (kind != ResourceKind::Texture2D && kind != ResourceKind::Texture2DMultisample) continue;
         const int lw = o.texture->width(o.level), lh = o.texture->height(o.level);
         // Outputs at other resolutions (mips, 1x1 statistics) are read at the same relative place.
         const int lx = std::min(x * lw / w, lw - 1), ly = std::min(yGl * lh / h, lh - 1);
-        r.values.push_back({o.decl.name, o.decl.kind, o.texture->isDepth() ? 1 : o.channels,
-                            readTexel(*o.texture, o.level, lx, ly, o.texture->isDepth() ? 1 : o.channels)});
+        const int channels = o.texture->isDepth() ? 1 : o.channels;
+        if (kind == ResourceKind::Texture2DMultisample) {
+            ProbeValue v{o.decl.name, o.decl.kind, channels, glm::vec4(0.0f), readSamples(*o.texture, lx, ly, 1, 1), {}};
+            for (const auto& sample : v.samples) v.raw += sample;
+            v.raw /= static_cast<float>(std::max<std::size_t>(v.samples.size(), 1));
+            r.values.push_back(std::move(v));
+            continue;
+        }
+        r.values.push_back({o.decl.name, o.decl.kind, channels, readTexel(*o.texture, o.level, lx, ly, channels), {}, {}});
     }
     auto value = [&](const char* name) -> const ProbeValue* {
         for (const auto& v : r.values)

@@ -2,7 +2,9 @@
 // Reads every produced output at one pixel, and decodes the G-buffer there:
 // depth, reconstructed view and world position, normal, albedo, specular
 // colour and exponent, emission, L-buffer radiance. New outputs (AO, sample
-// counts) appear in `values` without code here.
+// counts) appear in `values` without code here, whatever their kind: a
+// multisample output with every sample, a per-pixel buffer with its element.
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -17,7 +19,10 @@ struct ProbeValue {
     std::string output;
     OutputKind kind = OutputKind::Color;
     int channels = 4;
-    glm::vec4 raw{0.0f};  // as the shaders see it (sRGB decoded)
+    glm::vec4 raw{0.0f};  // as the shaders see it (sRGB decoded); multisample: the mean of the samples
+    std::vector<glm::vec4> samples;     // multisample outputs: every sample, in order
+    std::vector<std::uint32_t> words;   // per-pixel buffers: the element's 4-byte words; `raw` holds the
+                                        // first four as floats, or as integers for Count outputs
 };
 
 struct SurfaceSample {

@@ -1,7 +1,8 @@
 #version 450 core
 // Maps any named output to a displayable RGBA8 image: channel selection,
 // manual or automatic range, linear depth, normals as colours, a heat map for
-// counts, and a simple tone map for HDR buffers.
+// counts, and a simple tone map for HDR buffers. Layered, multisample and
+// buffer sources are laid out by source.glsl (grid, cross, table).
 #include "source.glsl"
 #include "../common/color.glsl"
 
@@ -26,12 +27,19 @@ vec3 turbo(float t) {
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec4 v;
-    if (!fetchMapped(px, v)) {
+    ivec3 src;
+    if (!viewToSource(px, src)) {
+        // The empty cells of a grid of layers or of a cube cross.
+        outColor = vec4(0.03, 0.03, 0.035, 1.0);
+        return;
+    }
+    vec4 raw = fetchRaw(src);
+    vec4 v = raw;
+    if (!mapFetched(v)) {
         // Background depth and non-finite values: a dark checker, not a colour.
         bool odd = ((px.x / 8 + px.y / 8) & 1) == 1;
         outColor = vec4(vec3(odd ? 0.10 : 0.16), 1.0);
-        if (any(isnan(texelFetch(uSource, px, view.modes.w)))) outColor = vec4(1.0, 0.0, 1.0, 1.0);
+        if (any(isnan(raw))) outColor = vec4(1.0, 0.0, 1.0, 1.0);
         return;
     }
     v = selectChannel(v);

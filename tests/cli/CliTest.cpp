@@ -126,13 +126,26 @@ TEST(Cli, WritesEffectBuffers) {
     EXPECT_LT(aoStats.min, 0.9);  // the courtyard has creases
     EXPECT_LE(aoStats.max, 1.0 + 1e-3);
 
+    // Every shadow-casting light's map (the sun and two spots of the default
+    // scene), kept although maps are reused by default, as a 2x2 grid of layers.
     const fs::path shadow = test::tempDir() / "shadow.exr";
-    ASSERT_EQ(run("render --scene default --size 64x36 --set shadows.map_size=128 --buffer shadow.map0 --out " +
+    ASSERT_EQ(run("render --scene default --size 64x36 --set shadows.map_size=128 --buffer shadow.maps --out " +
                   shadow.string()).code, 0);
-    const auto sh = test::stats(loadImageFloat(shadow.string()), 0);
-    EXPECT_GE(sh.min, 0.0);
-    EXPECT_LE(sh.max, 1.0);
-    EXPECT_GT(sh.max - sh.min, 0.05);  // geometry in the map, not a cleared buffer
+    const FloatImage maps = loadImageFloat(shadow.string());
+    ASSERT_EQ(maps.width, 256);
+    ASSERT_EQ(maps.height, 256);
+    for (int layer = 0; layer < 3; ++layer) {
+        double lo = 1.0, hi = 0.0;
+        for (int y = 0; y < 128; ++y)
+            for (int x = 0; x < 128; ++x) {
+                const float d = maps.at(128 * (layer % 2) + x, 128 * (layer / 2) + y, 0);
+                lo = std::min(lo, static_cast<double>(d));
+                hi = std::max(hi, static_cast<double>(d));
+            }
+        EXPECT_GE(lo, 0.0) << layer;
+        EXPECT_LE(hi, 1.0) << layer;
+        EXPECT_GT(hi - lo, 1e-3) << layer;  // geometry in every map (perspective depth crowds near 1), not a cleared layer
+    }
 
     const fs::path mip = test::tempDir() / "mip.exr";
     ASSERT_EQ(run("render --scene street --size 128x72 --buffer bloom.mip2 --out " + mip.string()).code, 0);

@@ -65,7 +65,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Golden{"default-depth", "default", "gbuffer.depth"},
                       Golden{"default-ssao", "default", "ssao.blurred"},
                       Golden{"default-overlap", "default", "lighting.overlap"},
-                      Golden{"spheres-cube-shadow-map", "spheres", "shadow.map1", {"shadows.map_size=128"}},
+                      Golden{"spheres-cube-shadow-map", "spheres", "shadow.cubes", {"shadows.map_size=128"}},
                       Golden{"street-bloom", "street", "bloom.result"}),
     [](const ::testing::TestParamInfo<Golden>& param) {
         std::string n = param.param.name;
