@@ -226,3 +226,23 @@ TEST(Cli, BadArgumentsExitWithUsageOrError) {
     const Result out = run("render --scene default --size 32x32 --out " + (test::tempDir() / "x.unknownext").string());
     EXPECT_EQ(out.code, 1);
 }
+
+TEST(Cli, UsageComesFromTheCommandTable) {
+    const Result help = run("help");
+    ASSERT_EQ(help.code, 0);
+    for (const char* c : {"deferred-workbench gui ", "deferred-workbench render ", "deferred-workbench list "})
+        EXPECT_NE(help.out.find(c), std::string::npos) << c << help.out;
+    EXPECT_EQ(run("--help").out, help.out);
+    // "help COMMAND" is "COMMAND --help".
+    const Result renderHelp = run("help render");
+    EXPECT_EQ(renderHelp.code, 0);
+    EXPECT_EQ(renderHelp.out, run("render --help").out);
+    EXPECT_EQ(run("list --help").code, 0);
+    // An unknown command: one line naming it, then the usage, on stderr; exit 2.
+    const Result unknown = run("frobnicate");
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_TRUE(unknown.out.empty()) << unknown.out;
+    EXPECT_EQ(unknown.err.rfind("deferred-workbench: unknown command 'frobnicate'\n", 0), 0u) << unknown.err;
+    EXPECT_NE(unknown.err.find("deferred-workbench render "), std::string::npos) << unknown.err;
+    EXPECT_EQ(run("help frobnicate").code, 2);
+}
