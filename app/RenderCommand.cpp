@@ -1,15 +1,12 @@
 // deferred-workbench render: one scene, one buffer, one image file.
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
-#include <optional>
-#include <sstream>
+#include <tuple>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
-#include "renderer/Preset.h"
 #include "renderer/RenderSession.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -52,84 +49,51 @@ int runRenderCommand(int argc, char** argv) {
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE] [--set knob=value]... [--frames N] [--timings]\n"
-                     "                                 --out FILE\n"
-                     "  --scene    built-in scene (default), a scene .json, or a .gltf/.glb file\n"
-                     "  --preset   a built-in preset (list presets) or a preset .json; its knobs apply after\n"
-                     "             the scene's settings and before --set; its scene is used without --scene\n"
-                     "  --buffer   any named output (list buffers); default: final\n"
-                     "  --out      .png writes the displayed (8-bit) view; .exr the raw float values\n"
-                     "  --frames   frames to render (timings are medians over them); default 1\n"
-                     "  --timings  print per-pass GPU and CPU milliseconds\n";
+                     "                                 [--dump-knobs FILE] --out FILE\n"
+                     "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
+                     "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
+                     "               the scene's settings and before --set; its scene is used without --scene\n"
+                     "  --buffer     any named output (list buffers); default: final\n"
+                     "  --out        .png writes the displayed (8-bit) view; .exr the raw float values\n"
+                     "  --frames     frames to render (timings are medians over them); default 1\n"
+                     "  --timings    print per-pass GPU and CPU milliseconds\n"
+                     "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n";
         return 0;
     }
-    const auto sceneArg = cl.value("--scene");
-    const auto presetArg = cl.value("--preset");
-    const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
+    RunConfig run = cl.runConfig();
+    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
+    run.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("1"), 1, 100000);
     const std::string buffer = cl.value("--buffer").value_or("final");
     const auto out = cl.value("--out");
-    const auto sets = cl.values("--set");
-    const int frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("1"), 1, 100000);
+    const auto dumpKnobs = cl.value("--dump-knobs");
     const bool timings = cl.flag("--timings");
     const bool verbose = cl.flag("--verbose");
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
 
-    // Bad input fails before any GL work: the preset (every key must be
-    // valid: a script should not silently run something else), --set against
-    // the knob declarations, then the scene (CPU only).
-    std::optional<Preset> preset;
-    if (presetArg) {
-        if (const Preset* builtin = findBuiltinPreset(*presetArg)) {
-            preset = *builtin;
-        } else if (!std::filesystem::exists(*presetArg)) {
-            std::string names;
-            for (const auto& b : builtinPresets()) names += (names.empty() ? "" : ", ") + b.name;
-            throw Error("--preset '" + *presetArg + "' is neither a built-in preset (" + names + ") nor an existing file");
-        } else {
-            preset = Preset::load(*presetArg);
-        }
-        KnobRegistry knobs;
-        Pipeline declarations(knobs);
-        const Preset::ApplyReport r = preset->applyKnobs(knobs);
-        if (!r.ignored.empty()) {
-            std::string all;
-            for (const auto& i : r.ignored) all += (all.empty() ? "" : " | ") + i;
-            throw FileError(*presetArg, all);
-        }
-    }
-    {
-        KnobRegistry knobs;
-        Pipeline declarations(knobs);
-        for (const auto& s : sets) knobs.applyAssignment(s);
-    }
-    const std::string scene = sceneArg ? *sceneArg : (preset && !preset->scene.empty() ? preset->scene : "default");
-    Scene loaded = loadScene(scene);
+    // Bad input fails before any GL work: the preset and --set against the
+    // knob declarations, then the scene (CPU only).
+    run.validate();
+    Scene loaded = loadScene(run.sceneSpec());
 
     auto context = HeadlessGlContext::create();
     RenderSession session;
     if (verbose)
         std::fprintf(stderr, "GL: %s | %s (%s)\n", session.glInfo().renderer.c_str(), session.glInfo().version.c_str(),
                      context->platform().c_str());
-    // Knob values: defaults, then the scene's own settings, then the preset, then --set.
-    session.setScene(std::move(loaded));
-    if (preset) {
-        preset->applyKnobs(session.knobs());
-        // The preset's camera belongs to its scene.
-        const std::string& src = session.scene().source;
-        if (preset->camera && (preset->scene.empty() || preset->scene == src || "builtin:" + preset->scene == src))
-            session.camera() = *preset->camera;
-    }
-    for (const auto& s : sets) session.knobs().applyAssignment(s);
-    for (const auto& w2 : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w2.c_str());
-    session.resize(w, h);
+    session.setScene(std::move(loaded), run);
+    for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    session.resize(run.width, run.height);
     FrameRequest request;
     request.outputs = {buffer};
     FrameReport report;
-    for (int i = 0; i < frames; ++i) report = session.render(request);
+    for (int i = 0; i < run.frames; ++i) report = session.render(request);
     session.writeOutput(buffer, *out);
-    std::printf("wrote %s (%dx%d, %s, scene %s)\n", out->c_str(), w, h, buffer.c_str(), session.scene().name.c_str());
-    if (timings) printTimings(session.pipeline(), report, frames);
+    std::printf("wrote %s (%dx%d, %s, scene %s)\n", out->c_str(), run.width, run.height, buffer.c_str(),
+                session.scene().name.c_str());
+    if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
+    if (timings) printTimings(session.pipeline(), report, run.frames);
     return 0;
 }
 

@@ -246,3 +246,34 @@ TEST(Cli, UsageComesFromTheCommandTable) {
     EXPECT_NE(unknown.err.find("deferred-workbench render "), std::string::npos) << unknown.err;
     EXPECT_EQ(run("help frobnicate").code, 2);
 }
+
+// The run configuration's order, as render applies it: defaults, the scene's
+// settings, the preset, --set; --scene wins over the preset's scene.
+TEST(Cli, DumpKnobsShowsSceneSettingsThenPresetThenSet) {
+    const fs::path scene = writeText("with-settings.json", R"({"name": "with settings",
+        "settings": {"tonemap.key": 0.1, "bloom.intensity": 0.3}, "objects": [{"shape": "box"}]})");
+    const fs::path preset = writeText("street-look.json", R"({"name": "street look", "scene": "street",
+        "knobs": {"bloom.intensity": 0.9, "ssao.samples": 8}})");
+    const fs::path dump = test::tempDir() / "render-knobs.txt";
+    const Result r = run("render --scene " + scene.string() + " --preset " + preset.string() +
+                         " --set ssao.samples=4 --size 32x18 --out " + (test::tempDir() / "k.png").string() +
+                         " --dump-knobs " + dump.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto k = test::readKnobDump(dump);
+    EXPECT_EQ(k["#scene"], scene.string());        // --scene, not the preset's street
+    EXPECT_EQ(k["tonemap.key"], "0.1");            // the scene's setting
+    EXPECT_EQ(k["bloom.intensity"], "0.9");        // the preset over the scene
+    EXPECT_EQ(k["ssao.samples"], "4");             // --set over the preset
+    EXPECT_EQ(k["ssao.resolution"], "half");       // untouched: the default
+    EXPECT_GT(k.size(), 40u);                      // every knob
+
+    // Without --scene the preset's scene opens, with its own settings.
+    const Result p = run("render --preset " + preset.string() + " --size 32x18 --out " +
+                         (test::tempDir() / "k.png").string() + " --dump-knobs " + dump.string());
+    ASSERT_EQ(p.code, 0) << p.err;
+    k = test::readKnobDump(dump);
+    EXPECT_EQ(k["#scene"], "builtin:street");
+    EXPECT_EQ(k["tonemap.key"], "0.05");  // the street at night is seen with a low key
+    EXPECT_EQ(k["bloom.intensity"], "0.9");
+    EXPECT_EQ(k["ssao.samples"], "8");
+}
