@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "renderer/ImageIO.h"
 #include "tests/support/TestSupport.h"
@@ -237,6 +239,7 @@ TEST(Cli, UsageComesFromTheCommandTable) {
     const Result renderHelp = run("help render");
     EXPECT_EQ(renderHelp.code, 0);
     EXPECT_EQ(renderHelp.out, run("render --help").out);
+    EXPECT_NE(renderHelp.out.find("--warmup"), std::string::npos) << renderHelp.out;
     EXPECT_EQ(run("list --help").code, 0);
     // An unknown command: one line naming it, then the usage, on stderr; exit 2.
     const Result unknown = run("frobnicate");
@@ -276,4 +279,52 @@ TEST(Cli, DumpKnobsShowsSceneSettingsThenPresetThenSet) {
     EXPECT_EQ(k["tonemap.key"], "0.05");  // the street at night is seen with a low key
     EXPECT_EQ(k["bloom.intensity"], "0.9");
     EXPECT_EQ(k["ssao.samples"], "8");
+}
+
+// Warm-up frames are rendered but left out: every pass that ran and the total
+// report exactly the counted frames, in the table and in the JSON.
+TEST(Cli, TimingsCountOnlyTheFramesAfterWarmup) {
+    const fs::path json = test::tempDir() / "timings.json";
+    const fs::path csv = test::tempDir() / "timings.csv";
+    const Result r = run("render --scene default --size 64x36 --frames 3 --warmup 2 --timings --timings-out " + json.string() +
+                         " --out " + (test::tempDir() / "t.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("timings over 3 frame(s) after 2 warm-up frame(s)\n"), std::string::npos) << r.out;
+    // The last column of every timed line (passes, spans, total) is the frame count.
+    std::istringstream lines(r.out.substr(r.out.find("\npass ") + 1));
+    std::string line;
+    std::getline(lines, line);  // the header
+    int timed = 0;
+    while (std::getline(lines, line)) {
+        if (line.find("(skipped: ") != std::string::npos || line.rfind("  (", 0) == 0) continue;
+        EXPECT_EQ(line.substr(line.size() - 3), "  3") << line;
+        ++timed;
+    }
+    EXPECT_GE(timed, 10) << r.out;  // passes, the shadow-map span and the total
+    EXPECT_NE(r.out.find("\nframe (total) "), std::string::npos);
+
+    std::ifstream in(json);
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["frames"], 3);
+    EXPECT_EQ(j["warmup"], 2);
+    EXPECT_EQ(j["total"]["frames"], 3);
+    for (const auto& p : j["passes"]) {
+        if (p["ran"] == true) {
+            EXPECT_EQ(p["frames"], 3) << p["name"];
+        }
+    }
+
+    // The default warm-up with timings is one frame; CSV rows by extension.
+    const Result d = run("render --scene default --size 64x36 --frames 2 --timings-out " + csv.string() + " --out " +
+                         (test::tempDir() / "t.png").string());
+    ASSERT_EQ(d.code, 0) << d.err;
+    EXPECT_EQ(d.out.find("timings over"), std::string::npos) << "no table without --timings";
+    std::ifstream c(csv);
+    std::string header;
+    std::getline(c, header);
+    EXPECT_EQ(header.rfind("series,kind,ran,frames,gpu_median_ms,", 0), 0u) << header;
+    std::string total;
+    while (std::getline(c, line)) total = line;
+    EXPECT_EQ(total.rfind("frame,total,1,2,", 0), 0u) << total;
+    EXPECT_EQ(run("render --scene default --frames 3 --warmup -1 --timings --out x.png").code, 2);
 }
