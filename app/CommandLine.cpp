@@ -62,6 +62,14 @@ bool CommandLine::flag(const std::string& flag) {
     return seen;
 }
 
+RunConfig CommandLine::runConfig() {
+    RunConfig run;
+    run.scene = value("--scene").value_or("");
+    run.setPreset(value("--preset").value_or(""));
+    run.sets = values("--set");
+    return run;
+}
+
 void CommandLine::finish(const std::string& command) const {
     for (const auto& a : args_)
         if (!a.used) throw UsageError("'" + command + "' does not take " + a.name);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "renderer/Error.h"
+#include "renderer/RunConfig.h"
 
 namespace dw {
 
@@ -22,6 +23,10 @@ public:
     std::vector<std::string> values(const std::string& flag);
     bool flag(const std::string& flag);
     std::vector<std::string> positional() const { return positional_; }
+    // The flags of every command that renders: --scene, --preset (read here:
+    // a missing or broken preset throws), --set. Size and frame counts differ
+    // per command; checking against the knobs is RunConfig::validate().
+    RunConfig runConfig();
     // Throws UsageError for anything not consumed by value()/values()/flag().
     void finish(const std::string& command) const;
 

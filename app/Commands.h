@@ -1,9 +1,31 @@
 #pragma once
-// The subcommands of deferred-workbench. Each returns the process exit code.
+// The subcommands of deferred-workbench, as one table: main() dispatches on
+// it and prints the usage from it. A new subcommand is one function (its own
+// <Name>Command.cpp, returning the exit code) and one line in kCommands.
+#include <span>
+
 namespace dw {
 
+int runGuiCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
-int runGuiCommand(int argc, char** argv);
+
+struct Command {
+    const char* name;
+    const char* synopsis;  // the arguments, as the usage line shows them
+    const char* summary;   // one line: what it does
+    // argv[1] is the command's name (or, for the default command, absent or
+    // its first flag); each reads its own flags from the right index.
+    int (*run)(int argc, char** argv);
+};
+
+// The first entry runs when the first argument is a flag or there is none.
+inline constexpr Command kCommands[] = {
+    {"gui", "[--scene S] [--preset P] [--set k=v]...", "open the workbench window (the default)", runGuiCommand},
+    {"render", "--scene S --out FILE [...]", "render one buffer headless to .png/.exr; time the passes", runRenderCommand},
+    {"list", "scenes|buffers|knobs|passes|presets", "the scenes, buffers, knobs, passes or presets there are", runListCommand},
+};
+
+inline std::span<const Command> commands() { return kCommands; }
 
 }  // namespace dw

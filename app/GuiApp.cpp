@@ -16,7 +16,6 @@
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
 #include "renderer/inspect/ViewportOverlay.h"
-#include "ui/PresetsPanel.h"
 #include "ui/WorkbenchUi.h"
 
 namespace dw {
@@ -216,8 +215,8 @@ int runGui(const GuiOptions& options, Scene scene) {
     if ((!display || !*display) && (!wayland || !*wayland))
         throw Error("no display (DISPLAY is not set), so the workbench window cannot open; "
                     "use 'deferred-workbench render --scene S --out image.png' to render headless");
-    const bool scripted = options.frames > 0;
-    Window window(options.width, options.height, !scripted);
+    const bool scripted = options.run.frames > 0;
+    Window window(options.run.width, options.run.height, !scripted);
     // A scripted run (tests, screenshots) neither reads nor writes the saved layout.
     std::string ini;
     if (!scripted) {
@@ -231,16 +230,15 @@ int runGui(const GuiOptions& options, Scene scene) {
         ui::UiState state;
         state.presetsDir = options.presetsDir.empty() ? configDir() + "/presets" : options.presetsDir;
         state.scenesDir = options.scenesDir;
-        session.setScene(std::move(scene));
-        for (const auto& s : options.sets) session.knobs().applyAssignment(s);
-        if (!options.preset.empty()) {
-            if (const Preset* p = findBuiltinPreset(options.preset)) ui::applyPreset(state, session, *p);
-            else ui::loadPresetFile(state, session, options.preset);
-        }
+        // The same rules as render (RunConfig), and again for every scene opened later.
+        state.run = options.run;
+        session.setScene(std::move(scene), state.run);
+        if (const Preset* p = state.run.preset())
+            state.log.info("preset '" + p->name + "': " + std::to_string(p->knobs.size()) + " knobs set", 0.0);
         for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, 0.0);
         state.log.info("GL: " + session.glInfo().renderer + " | " + session.glInfo().version, 0.0);
         // Until the viewport panel reports its size, render at a guess of it.
-        state.wantedSize = {static_cast<int>(options.width * 0.58f), static_cast<int>(options.height * 0.6f)};
+        state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
 
         Frame frame(session);
         ui::WorkbenchUi ui;
@@ -280,7 +278,7 @@ int runGui(const GuiOptions& options, Scene scene) {
             glClear(GL_COLOR_BUFFER_BIT);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-            const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.frames;
+            const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.run.frames;
             if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
                 state.requestScreenshot = false;
                 const std::string path = lastFrame && !options.screenshot.empty()
@@ -300,6 +298,10 @@ int runGui(const GuiOptions& options, Scene scene) {
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             ++state.frame;
             if (lastFrame) break;
+        }
+        if (!options.dumpKnobs.empty()) {
+            session.writeKnobValues(options.dumpKnobs);
+            if (scripted) std::printf("wrote %s\n", options.dumpKnobs.c_str());
         }
     }
     return 0;

@@ -7,21 +7,22 @@
 #include <string>
 #include <vector>
 
+#include "renderer/RunConfig.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
 struct GuiOptions {
-    std::string scene = "default";
-    std::string preset;         // built-in preset name or file
+    // Scene, preset, --set, window size, frames (0: run until closed). Every
+    // scene opened in the window starts from it, as at start-up.
+    RunConfig run;
     std::string presetsDir;     // where presets are listed and saved
     std::string scenesDir;      // example scenes offered in the Scene panel
-    std::vector<std::string> sets;
-    int width = 1600, height = 900;
-    int frames = 0;             // 0: run until closed
     std::string screenshot;     // written after the last frame when frames > 0
+    std::string dumpKnobs;      // knob values written here at exit (RenderSession::writeKnobValues)
 };
 
+// `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).
 // Throws dw::Error when there is no display or no GL 4.5 core window.
 int runGui(const GuiOptions& options, Scene scene);
 

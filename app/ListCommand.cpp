@@ -13,6 +13,15 @@ namespace dw {
 
 int runListCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
+    if (cl.flag("--help")) {
+        std::cout << "usage: deferred-workbench list scenes|buffers|knobs|passes|presets\n"
+                     "  scenes   the built-in scenes\n"
+                     "  buffers  every named output: kind, the pass that writes it, what it holds\n"
+                     "  knobs    every knob: default, range, unit, what it does\n"
+                     "  passes   the passes in order, with what each reads and writes\n"
+                     "  presets  the built-in presets and their knob values\n";
+        return 0;
+    }
     cl.finish("list");
     const auto words = cl.positional();
     const std::string what = words.empty() ? "" : words[0];

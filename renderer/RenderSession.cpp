@@ -1,5 +1,7 @@
 #include "renderer/RenderSession.h"
 
+#include <fstream>
+
 #include "renderer/Error.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/scene/SceneLoader.h"
@@ -13,24 +15,18 @@ RenderSession::RenderSession(const std::filesystem::path& shaderRoot)
     view_.setup(shaders_);
 }
 
-void RenderSession::loadScene(const std::string& spec) { setScene(dw::loadScene(spec)); }
+void RenderSession::loadScene(const std::string& spec, const RunConfig& run) { setScene(dw::loadScene(spec), run); }
 
-void RenderSession::setScene(Scene scene) {
-    // Check the scene's knob settings and upload first: if either throws, the
-    // previous scene and knob values stay in place.
-    KnobRegistry check = knobs_;
-    for (const auto& [name, value] : scene.settings) {
-        try {
-            check.setFromString(name, value);
-        } catch (const Error& e) {
-            throw FileError(scene.source, std::string("settings: ") + e.what());
-        }
-    }
-    auto next = std::make_unique<Scene>(std::move(scene));
-    pipeline_.setScene(*next);
-    scene_ = std::move(next);
-    camera_ = scene_->camera;
-    for (const auto& [name, value] : scene_->settings) knobs_.setFromString(name, value);
+void RenderSession::setScene(Scene scene, const RunConfig& run) {
+    // Work the knob values out on a copy and upload next: if either throws,
+    // the previous scene, knobs and camera stay in place.
+    KnobRegistry next = knobs_;
+    run.applyKnobs(next, scene);
+    auto uploaded = std::make_unique<Scene>(std::move(scene));
+    pipeline_.setScene(*uploaded);
+    scene_ = std::move(uploaded);
+    camera_ = run.camera(*scene_);
+    knobs_.copyValues(next);
 }
 
 FloatImage RenderSession::readRaw(const std::string& output, ViewSelection selection) const {
@@ -46,6 +42,15 @@ FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSetti
     settings.nearPlane = camera_.nearPlane;
     settings.farPlane = camera_.farPlane;
     return readRgba8(view_.render(*o, settings));
+}
+
+void RenderSession::writeKnobValues(const std::string& path) const {
+    std::ofstream out(path, std::ios::trunc);
+    if (!out) throw FileError(path, "cannot write the knob values");
+    out << "# scene " << scene_->source << "\n";
+    for (size_t i = 0; i < knobs_.size(); ++i)
+        out << knobs_.spec(static_cast<int>(i)).name << "=" << knobs_.format(static_cast<int>(i)) << "\n";
+    if (!out.flush()) throw FileError(path, "writing the knob values failed");
 }
 
 void RenderSession::writeOutput(const std::string& output, const std::string& path, const BufferViewSettings& settings) {

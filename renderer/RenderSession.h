@@ -9,6 +9,7 @@
 #include "renderer/io/ImageIO.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/Pipeline.h"
+#include "renderer/RunConfig.h"
 #include "renderer/gl/DebugOutput.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/scene/Scene.h"
@@ -20,9 +21,13 @@ public:
     // Needs a current GL 4.5 context; throws GlUnsupportedError otherwise.
     explicit RenderSession(const std::filesystem::path& shaderRoot = gl::ShaderLibrary::locateRoot());
 
-    // Loads a built-in scene, scene JSON or glTF; the camera becomes the scene's.
-    void loadScene(const std::string& spec);
-    void setScene(Scene scene);
+    // Loads a built-in scene, scene JSON or glTF. Knobs and camera start as
+    // `run` says (RunConfig: defaults, the scene's settings, the preset, --set;
+    // the preset's camera on its own scene): every load starts from the
+    // defaults, so nothing carries over from the scene before. If anything
+    // throws, the previous scene, knobs and camera stay.
+    void loadScene(const std::string& spec, const RunConfig& run = {});
+    void setScene(Scene scene, const RunConfig& run = {});
     void resize(int width, int height) { pipeline_.resize(width, height); }
     FrameReport render(const FrameRequest& request = {}) { return pipeline_.render(camera_, request); }
 
@@ -33,6 +38,9 @@ public:
     FloatImage readDisplay(const std::string& output, BufferViewSettings settings = {});
     // Writes `output` as rendered by the last frame to `path`; .exr raw, .png display.
     void writeOutput(const std::string& output, const std::string& path, const BufferViewSettings& settings = {});
+    // Every knob as "name=value" (what --set takes back), after a "# scene
+    // <source>" line; what --dump-knobs writes. Throws FileError.
+    void writeKnobValues(const std::string& path) const;
 
     KnobRegistry& knobs() { return knobs_; }
     Pipeline& pipeline() { return pipeline_; }

@@ -13,7 +13,9 @@ namespace dw::ui {
 namespace fs = std::filesystem;
 
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset) {
-    if (!preset.scene.empty() && preset.scene != session.scene().source) {
+    // Another scene opens as any scene does (start-up knobs first); this
+    // preset, chosen by hand, then goes over them.
+    if (!preset.scene.empty() && !RunConfig::namesScene(preset.scene, session.scene())) {
         if (!openScene(state, session, preset.scene)) return false;
     }
     if (preset.camera) session.camera() = *preset.camera;

@@ -13,7 +13,9 @@ struct PresetsPanel {
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 
-// Applies a preset to the session; errors and ignored keys go to the log.
+// Applies a preset to the session; errors and ignored keys go to the log. A
+// preset naming another scene opens it first (openScene: knobs reset to the
+// start-up values for that scene), then sets its camera and knobs on top.
 // Returns false (and changes nothing) when the preset's scene cannot be opened.
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset);
 bool loadPresetFile(UiState& state, RenderSession& session, const std::string& path);

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 bool openScene(UiState& state, RenderSession& session, const std::string& spec) {
     try {
         if (state.animator.running()) state.animator.stop(session.mutableScene());
-        session.loadScene(spec);
+        session.loadScene(spec, state.run);
         state.selectedLight = -1;
         state.probe.pinned = false;
         state.log.info("opened scene " + session.scene().name + " (" + spec + ")", state.time);

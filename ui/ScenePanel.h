@@ -12,7 +12,9 @@ struct ScenePanel {
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 
-// Loads a scene into the session; on failure logs the error and keeps the old one.
+// Loads a scene into the session with knobs and camera as at start-up
+// (state.run: defaults, the scene's settings, the start-up preset, --set);
+// on failure logs the error and keeps the old scene and knobs.
 bool openScene(UiState& state, RenderSession& session, const std::string& spec);
 
 }  // namespace dw::ui

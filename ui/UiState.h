@@ -12,6 +12,7 @@
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/graph/Pipeline.h"
+#include "renderer/RunConfig.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
 
@@ -93,6 +94,9 @@ struct UiState {
     int selectedLight = -1;
     std::string presetsDir;
     std::string scenesDir;
+    // The start-up scene, preset and --set: every scene opened starts from
+    // the defaults, its settings, this preset, then these --set values.
+    RunConfig run;
     bool resetLayout = true;
 
     // Filled by the app each frame for the panels to read.

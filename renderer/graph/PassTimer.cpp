@@ -127,12 +127,20 @@ void PassTimer::harvest(PendingFrame& f) {
         pool_.push_back(std::move(span.begin));
         pool_.push_back(std::move(span.end));
     }
+    for (const auto& [name, sample] : sums) addSample(name, sample);
+}
+
+void PassTimer::addSample(const std::string& series, const TimingSample& sample) {
     if (paused_) return;
-    for (const auto& [name, sample] : sums) {
-        Series& s = seriesFor(name);
-        s.samples.push_back(sample);
-        if (s.samples.size() > kHistory) s.samples.pop_front();
-    }
+    Series& s = seriesFor(series);
+    s.samples.push_back(sample);
+    while (s.samples.size() > historyLength_) s.samples.pop_front();
+}
+
+void PassTimer::setHistoryLength(size_t samples) {
+    historyLength_ = std::max<size_t>(samples, 1);
+    for (auto& s : series_)
+        while (s.samples.size() > historyLength_) s.samples.pop_front();
 }
 
 void PassTimer::collect(bool wait) {

@@ -28,7 +28,7 @@ TimingStats computeStats(std::vector<float> values);
 
 class PassTimer {
 public:
-    static constexpr size_t kHistory = 600;  // samples kept per series
+    static constexpr size_t kHistory = 600;  // samples kept per series, unless set otherwise
     static constexpr const char* kFrameSeries = "frame";
 
     struct Series {
@@ -57,6 +57,14 @@ public:
     TimingStats cpuStats(const std::string& name, size_t window = 0) const;
     size_t pendingFrames() const { return pending_.size(); }
     void clearHistory();
+    // Samples kept per series (kHistory by default); a run that reports on
+    // more frames than that (render --frames N) raises it so none drop out.
+    void setHistoryLength(size_t samples);
+    size_t historyLength() const { return historyLength_; }
+    // Records a finished sample of a series, as harvesting does (kept unless
+    // paused, oldest dropped beyond the history length). Timing reports are
+    // tested with synthetic histories made through it, without GL.
+    void addSample(const std::string& series, const TimingSample& sample);
     // While paused, finished frames are still harvested but not recorded, so
     // the history on screen holds still.
     void setPaused(bool paused) { paused_ = paused; }
@@ -87,6 +95,7 @@ private:
     bool inPass_ = false;
     bool inSubSpan_ = false;
     bool paused_ = false;
+    size_t historyLength_ = kHistory;
     std::string passName_;
     size_t passIndex_ = 0;
     std::chrono::steady_clock::time_point subStart_;

@@ -134,6 +134,11 @@ void KnobRegistry::resetAll() {
     for (size_t i = 0; i < specs_.size(); ++i) reset(static_cast<int>(i));
 }
 
+void KnobRegistry::copyValues(const KnobRegistry& other) {
+    if (other.specs_.size() != specs_.size()) throw Error("KnobRegistry::copyValues: different declarations");
+    for (size_t i = 0; i < specs_.size(); ++i) set(static_cast<int>(i), other.values_[i]);
+}
+
 void KnobRegistry::setFromString(const std::string& name, const std::string& rawText) {
     const auto id = find(name);
     if (!id) {

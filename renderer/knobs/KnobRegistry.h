@@ -66,6 +66,9 @@ public:
     void set(int id, double v);
     void reset(int id) { set(id, specs_[id].defaultValue); }
     void resetAll();
+    // Takes every value of `other`, a registry with the same declarations (a
+    // copy worked on elsewhere); generation() moves on only if one changed.
+    void copyValues(const KnobRegistry& other);
     // Parses "true", "16", "0.02", "reinhard" by the knob's type. Throws
     // dw::Error naming the knob and the accepted values; never clamps silently.
     void setFromString(const std::string& name, const std::string& text);

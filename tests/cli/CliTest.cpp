@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "renderer/io/ImageIO.h"
 #include "tests/support/TestSupport.h"
@@ -239,4 +241,104 @@ TEST(Cli, BadArgumentsExitWithUsageOrError) {
     EXPECT_NE(scene.err.find("nowhere.glb"), std::string::npos) << scene.err;
     const Result out = run("render --scene default --size 32x32 --out " + (test::tempDir() / "x.unknownext").string());
     EXPECT_EQ(out.code, 1);
+}
+
+TEST(Cli, UsageComesFromTheCommandTable) {
+    const Result help = run("help");
+    ASSERT_EQ(help.code, 0);
+    for (const char* c : {"deferred-workbench gui ", "deferred-workbench render ", "deferred-workbench list "})
+        EXPECT_NE(help.out.find(c), std::string::npos) << c << help.out;
+    EXPECT_EQ(run("--help").out, help.out);
+    // "help COMMAND" is "COMMAND --help".
+    const Result renderHelp = run("help render");
+    EXPECT_EQ(renderHelp.code, 0);
+    EXPECT_EQ(renderHelp.out, run("render --help").out);
+    EXPECT_NE(renderHelp.out.find("--warmup"), std::string::npos) << renderHelp.out;
+    EXPECT_EQ(run("list --help").code, 0);
+    // An unknown command: one line naming it, then the usage, on stderr; exit 2.
+    const Result unknown = run("frobnicate");
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_TRUE(unknown.out.empty()) << unknown.out;
+    EXPECT_EQ(unknown.err.rfind("deferred-workbench: unknown command 'frobnicate'\n", 0), 0u) << unknown.err;
+    EXPECT_NE(unknown.err.find("deferred-workbench render "), std::string::npos) << unknown.err;
+    EXPECT_EQ(run("help frobnicate").code, 2);
+}
+
+// The run configuration's order, as render applies it: defaults, the scene's
+// settings, the preset, --set; --scene wins over the preset's scene.
+TEST(Cli, DumpKnobsShowsSceneSettingsThenPresetThenSet) {
+    const fs::path scene = writeText("with-settings.json", R"({"name": "with settings",
+        "settings": {"tonemap.key": 0.1, "bloom.intensity": 0.3}, "objects": [{"shape": "box"}]})");
+    const fs::path preset = writeText("street-look.json", R"({"name": "street look", "scene": "street",
+        "knobs": {"bloom.intensity": 0.9, "ssao.samples": 8}})");
+    const fs::path dump = test::tempDir() / "render-knobs.txt";
+    const Result r = run("render --scene " + scene.string() + " --preset " + preset.string() +
+                         " --set ssao.samples=4 --size 32x18 --out " + (test::tempDir() / "k.png").string() +
+                         " --dump-knobs " + dump.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto k = test::readKnobDump(dump);
+    EXPECT_EQ(k["#scene"], scene.string());        // --scene, not the preset's street
+    EXPECT_EQ(k["tonemap.key"], "0.1");            // the scene's setting
+    EXPECT_EQ(k["bloom.intensity"], "0.9");        // the preset over the scene
+    EXPECT_EQ(k["ssao.samples"], "4");             // --set over the preset
+    EXPECT_EQ(k["ssao.resolution"], "half");       // untouched: the default
+    EXPECT_GT(k.size(), 40u);                      // every knob
+
+    // Without --scene the preset's scene opens, with its own settings.
+    const Result p = run("render --preset " + preset.string() + " --size 32x18 --out " +
+                         (test::tempDir() / "k.png").string() + " --dump-knobs " + dump.string());
+    ASSERT_EQ(p.code, 0) << p.err;
+    k = test::readKnobDump(dump);
+    EXPECT_EQ(k["#scene"], "builtin:street");
+    EXPECT_EQ(k["tonemap.key"], "0.05");  // the street at night is seen with a low key
+    EXPECT_EQ(k["bloom.intensity"], "0.9");
+    EXPECT_EQ(k["ssao.samples"], "8");
+}
+
+// Warm-up frames are rendered but left out: every pass that ran and the total
+// report exactly the counted frames, in the table and in the JSON.
+TEST(Cli, TimingsCountOnlyTheFramesAfterWarmup) {
+    const fs::path json = test::tempDir() / "timings.json";
+    const fs::path csv = test::tempDir() / "timings.csv";
+    const Result r = run("render --scene default --size 64x36 --frames 3 --warmup 2 --timings --timings-out " + json.string() +
+                         " --out " + (test::tempDir() / "t.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("timings over 3 frame(s) after 2 warm-up frame(s)\n"), std::string::npos) << r.out;
+    // The last column of every timed line (passes, spans, total) is the frame count.
+    std::istringstream lines(r.out.substr(r.out.find("\npass ") + 1));
+    std::string line;
+    std::getline(lines, line);  // the header
+    int timed = 0;
+    while (std::getline(lines, line)) {
+        if (line.find("(skipped: ") != std::string::npos || line.rfind("  (", 0) == 0) continue;
+        EXPECT_EQ(line.substr(line.size() - 3), "  3") << line;
+        ++timed;
+    }
+    EXPECT_GE(timed, 10) << r.out;  // passes, the shadow-map span and the total
+    EXPECT_NE(r.out.find("\nframe (total) "), std::string::npos);
+
+    std::ifstream in(json);
+    const auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["frames"], 3);
+    EXPECT_EQ(j["warmup"], 2);
+    EXPECT_EQ(j["total"]["frames"], 3);
+    for (const auto& p : j["passes"]) {
+        if (p["ran"] == true) {
+            EXPECT_EQ(p["frames"], 3) << p["name"];
+        }
+    }
+
+    // The default warm-up with timings is one frame; CSV rows by extension.
+    const Result d = run("render --scene default --size 64x36 --frames 2 --timings-out " + csv.string() + " --out " +
+                         (test::tempDir() / "t.png").string());
+    ASSERT_EQ(d.code, 0) << d.err;
+    EXPECT_EQ(d.out.find("timings over"), std::string::npos) << "no table without --timings";
+    std::ifstream c(csv);
+    std::string header;
+    std::getline(c, header);
+    EXPECT_EQ(header.rfind("series,kind,ran,frames,gpu_median_ms,", 0), 0u) << header;
+    std::string total;
+    while (std::getline(c, line)) total = line;
+    EXPECT_EQ(total.rfind("frame,total,1,2,", 0), 0u) << total;
+    EXPECT_EQ(run("render --scene default --frames 3 --warmup -1 --timings --out x.png").code, 2);
 }

@@ -15,6 +15,7 @@
 #include "renderer/knobs/Preset.h"
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
+#include "ui/ScenePanel.h"
 #include "ui/WorkbenchUi.h"
 
 using namespace dw;
@@ -58,6 +59,16 @@ public:
         ImGui::Render();
     }
 };
+
+fs::path writeText(const std::string& name, const std::string& text) {
+    const fs::path p = test::tempDir() / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+double knob(RenderSession& session, const std::string& name) {
+    return session.knobs().value(*session.knobs().find(name));
+}
 
 double regionSpread(const FloatImage& img, int x0, int y0, int x1, int y1) {
     double sum = 0, sq = 0;
@@ -178,4 +189,80 @@ TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
     EXPECT_FALSE(ui::applyPreset(state, *session, elsewhere));
     EXPECT_EQ(session->scene().name, "spheres");
     EXPECT_FLOAT_EQ(static_cast<float>(session->knobs().value(*session->knobs().find("tonemap.key"))), 0.25f);
+}
+
+// The window starts with the same knob values as render for the same
+// --scene, --preset and --set (RunConfig), in the real binary under Xvfb.
+TEST(Gui, StartsWithTheKnobValuesRenderUses) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path scene = writeText("gui-with-settings.json", R"({"name": "with settings",
+        "settings": {"tonemap.key": 0.1, "bloom.intensity": 0.3}, "objects": [{"shape": "box"}]})");
+    const fs::path preset = writeText("gui-street-look.json", R"({"name": "street look", "scene": "street",
+        "knobs": {"bloom.intensity": 0.9, "ssao.samples": 8}})");
+    const std::string args = " --scene " + scene.string() + " --preset " + preset.string() + " --set ssao.samples=4";
+    const fs::path guiDump = test::tempDir() / "gui-knobs.txt";
+    const fs::path renderDump = test::tempDir() / "render-knobs.txt";
+    const Result gui = shell("xvfb-run -a -s '-screen 0 800x600x24' " + std::string(DW_WORKBENCH_BINARY) + args +
+                             " --size 800x600 --frames 2 --dump-knobs " + guiDump.string());
+    ASSERT_EQ(gui.code, 0) << gui.out;
+    const Result render = shell(std::string(DW_WORKBENCH_BINARY) + " render" + args + " --size 32x18 --out " +
+                                (test::tempDir() / "k.png").string() + " --dump-knobs " + renderDump.string());
+    ASSERT_EQ(render.code, 0) << render.out;
+    auto g = test::readKnobDump(guiDump);
+    const auto r = test::readKnobDump(renderDump);
+    EXPECT_GT(g.size(), 40u);
+    EXPECT_EQ(g, r);
+    // And they are the right values: --scene over the preset's scene, then
+    // the scene's setting < the preset < --set.
+    EXPECT_EQ(g["#scene"], scene.string());
+    EXPECT_EQ(g["tonemap.key"], "0.1");
+    EXPECT_EQ(g["bloom.intensity"], "0.9");
+    EXPECT_EQ(g["ssao.samples"], "4");
+    // A bad --set stops the window before it opens, with render's message.
+    const Result bad = shell(std::string(DW_WORKBENCH_BINARY) + " --set ssao.sampels=4 --frames 1");
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_NE(bad.out.find("did you mean 'ssao.samples'"), std::string::npos) << bad.out;
+}
+
+// Opening another scene in the window starts its knobs over: defaults, its
+// own settings, the start-up preset, the start-up --set. Nothing of the
+// previous scene (its settings, hand edits) carries over.
+TEST(Gui, OpeningAnotherSceneResetsTheKnobsAndKeepsStartUpPresetAndSet) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    state.run.setPreset("SSAO1");  // ssao.resolution quarter, samples 8, blur width 10
+    state.run.sets = {"ssao.samples=4"};
+    const fs::path withSettings = writeText("gui-scene-a.json", R"({"name": "A",
+        "settings": {"tonemap.key": 0.1}, "objects": [{"shape": "box"}]})");
+    session->loadScene("default", state.run);
+
+    ASSERT_TRUE(ui::openScene(state, *session, withSettings.string()));
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "tonemap.key")), 0.1f);
+    EXPECT_EQ(knob(*session, "ssao.samples"), 4.0);
+    session->knobs().setFromString("bloom.intensity", "0.05");  // a hand edit in scene A
+
+    ASSERT_TRUE(ui::openScene(state, *session, "spheres"));
+    EXPECT_EQ(session->scene().name, "spheres");
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "tonemap.key")), 0.18f);  // A's setting is gone
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "bloom.intensity")), 0.6f);  // so is the edit
+    EXPECT_EQ(knob(*session, "ssao.samples"), 4.0);                                // --set still applies
+    EXPECT_EQ(session->knobs().choice(EnumKnob{*session->knobs().find("ssao.resolution")}), "quarter");  // the preset too
+    EXPECT_EQ(knob(*session, "ssao_blur.width"), 10.0);
+
+    // A scene that fails to open changes nothing.
+    session->knobs().setFromString("bloom.intensity", "0.05");
+    EXPECT_FALSE(ui::openScene(state, *session, "/nowhere/scene.json"));
+    EXPECT_EQ(session->scene().name, "spheres");
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "bloom.intensity")), 0.05f);
+
+    // A preset chosen in the Presets panel that names another scene opens it
+    // like any scene, then lays its own knobs over.
+    Preset p = Preset::fromJson(R"({"name": "A look", "scene": ")" + withSettings.string() +
+                                    R"(", "knobs": {"ssao.samples": 16, "fxaa.enabled": false}})", "a-look.json");
+    ASSERT_TRUE(ui::applyPreset(state, *session, p));
+    EXPECT_EQ(session->scene().name, "A");
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "tonemap.key")), 0.1f);
+    EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "bloom.intensity")), 0.6f);
+    EXPECT_EQ(knob(*session, "ssao.samples"), 16.0);
+    EXPECT_EQ(knob(*session, "fxaa.enabled"), 0.0);
 }

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "app/HeadlessGlContext.h"
 #include "renderer/scene/ShapeBuilder.h"
@@ -88,6 +89,19 @@ std::filesystem::path tempDir() {
         return d;
     }();
     return dir;
+}
+
+std::map<std::string, std::string> readKnobDump(const std::filesystem::path& path) {
+    std::map<std::string, std::string> values;
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("# scene ", 0) == 0) values["#scene"] = line.substr(8);
+        const auto eq = line.find('=');
+        if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
+        values[line.substr(0, eq)] = line.substr(eq + 1);
+    }
+    return values;
 }
 
 ChannelStats stats(const FloatImage& img, int channel) {

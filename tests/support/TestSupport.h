@@ -2,6 +2,7 @@
 // Shared helpers for the test binaries: the headless GL context, small scenes
 // built in code, image statistics, and paths to test data.
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -27,6 +28,10 @@ std::filesystem::path dataDir();       // ../shared/data (may not exist)
 std::filesystem::path goldenDir();
 std::filesystem::path scenesDir();
 std::filesystem::path tempDir();       // a fresh directory per test binary run
+
+// A --dump-knobs file: knob name -> value text; the "# scene <source>" line
+// as key "#scene". Empty when the file does not exist.
+std::map<std::string, std::string> readKnobDump(const std::filesystem::path& path);
 
 struct ChannelStats {
     double mean = 0, max = 0, min = 0;
