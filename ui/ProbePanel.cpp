@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "ui/Widgets.h"
 
@@ -75,6 +77,23 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
                 case 2: row(v.output.c_str(), "%.6g %.6g", v.raw.x, v.raw.y); break;
                 case 3: row(v.output.c_str(), "%.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z); break;
                 default: row(v.output.c_str(), "%.5g %.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z, v.raw.w); break;
+            }
+            // A multisample output: every sample under the mean above.
+            for (size_t i = 0; i < v.samples.size(); ++i) {
+                const std::string label = "  sample " + std::to_string(i);
+                const glm::vec4& c = v.samples[i];
+                if (v.channels == 1) row(label.c_str(), "%.6g", c.x);
+                else row(label.c_str(), "%.5g %.5g %.5g %.5g", c.x, c.y, c.z, c.w);
+            }
+            // A per-pixel buffer element beyond its first four words.
+            if (v.words.size() > 4) {
+                std::string hex;
+                for (std::uint32_t w : v.words) {
+                    char b[12];
+                    std::snprintf(b, sizeof(b), "%08x ", w);
+                    hex += b;
+                }
+                row("  words", "%s", hex.c_str());
             }
         }
         ImGui::EndTable();
