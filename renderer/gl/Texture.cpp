@@ -152,17 +152,6 @@ void Texture::setWrap(GLenum wrap) {
     glTextureParameteri(id(), GL_TEXTURE_WRAP_R, static_cast<GLint>(wrap));
 }
 
-void Texture::setBorderColor(float r, float g, float b, float a) {
-    const float c[4] = {r, g, b, a};
-    glTextureParameterfv(id(), GL_TEXTURE_BORDER_COLOR, c);
-}
-
-void Texture::setDepthCompare(bool enabled) {
-    glTextureParameteri(id(), GL_TEXTURE_COMPARE_MODE,
-                        enabled ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-    glTextureParameteri(id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-}
-
 void Texture::setLabel(const char* label) { glObjectLabel(GL_TEXTURE, id(), -1, label); }
 
 void Texture::upload(int level, int width, int height, GLenum format, GLenum type,

@@ -37,9 +37,6 @@ public:
     // Sampling state; const because it does not change the texture's contents.
     void setFilter(GLenum minFilter, GLenum magFilter) const;
     void setWrap(GLenum wrap);
-    void setBorderColor(float r, float g, float b, float a);
-    // Depth textures: sample depth (not stencil) and optionally compare for shadows.
-    void setDepthCompare(bool enabled);
     void setLabel(const char* label);
     void upload(int level, int width, int height, GLenum format, GLenum type, const void* data);
     void uploadCubeFace(int face, int level, int size, GLenum format, GLenum type, const void* data);
