@@ -140,6 +140,20 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
         }
         ImGui::EndTable();
     }
+    // What the frame graph allocated for this frame: an output whose pass did
+    // not run, or that nothing asked for, has no memory.
+    const auto resources = session.pipeline().resources();
+    std::size_t bytes = 0;
+    for (const auto& r : resources) bytes += r.bytes;
+    char resHead[96];
+    std::snprintf(resHead, sizeof(resHead), "allocated resources: %zu, %.1f MiB###resources", resources.size(),
+                  static_cast<double>(bytes) / (1024.0 * 1024.0));
+    if (ImGui::CollapsingHeader(resHead)) {
+        for (const auto& r : resources)
+            ImGui::TextDisabled("%-22s %8.1f KiB  %s", r.name.c_str(), static_cast<double>(r.bytes) / 1024.0,
+                                describe(r.desc, r.desc.width, r.desc.height).c_str());
+        wrappedColored(kDimColor, "pass-owned outputs (the light table, shadow arrays, bloom levels) are not counted here");
+    }
     ImGui::Separator();
     const PublishedOutput* shown = outputs.find(state.viewport.output);
     if (shown && state.viewport.mode == DisplayMode::Deferred) {
