@@ -57,7 +57,9 @@ const char* const kBenchUsage =
     "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
     "               knob); default: the first value of the first swept knob (else lights, else size)\n"
     "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
-    "  --shard i/n  run the configurations whose number % n == i; join the CSVs with bench merge\n"
+    "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
+    "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
+    "               the groups whose number % n == i; join the CSVs with bench merge\n"
     "  --csv, --json  the samples (every counted frame, every pass) and the summary with the machine;\n"
     "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
     "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
@@ -325,9 +327,9 @@ int runBenchCommand(int argc, char** argv) {
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);
 
     // Everything that can fail without GL fails here: knobs, values, the scene, the baseline.
-    const BenchGrid grid = o.grid;
+    o.baseline = baselineSpec;
     BenchRunner runner(std::move(o));
-    const BenchBaseline baseline = chooseBaseline(grid, static_cast<int>(runner.scene().lights.size()), baselineSpec);
+    const BenchBaseline baseline = runner.baseline();
     for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     auto context = HeadlessGlContext::create();

@@ -1,5 +1,6 @@
 #include "renderer/bench/BenchGrid.h"
 
+#include <algorithm>
 #include <charconv>
 
 #include "renderer/Error.h"
@@ -54,6 +55,23 @@ std::vector<BenchConfig> BenchGrid::configs(int sceneLights) const {
             }
         }
     return out;
+}
+
+std::vector<int> BenchGrid::groupsAlong(const std::vector<BenchConfig>& configs, const std::string& axis) const {
+    std::vector<std::vector<std::string>> keys;  // group number -> the config's other axis values
+    std::vector<int> groups;
+    for (const auto& c : configs) {
+        std::vector<std::string> key;
+        if (axis != "size") key.push_back(c.size());
+        if (axis != "lights") key.push_back(std::to_string(c.lights));
+        for (size_t k = 0; k < knobAxes.size(); ++k)
+            if (axis != knobAxes[k].knob) key.push_back(c.knobValues[k]);
+        if (axis.empty()) key.push_back(std::to_string(c.index));  // no axis: a group per configuration
+        auto it = std::find(keys.begin(), keys.end(), key);
+        if (it == keys.end()) it = keys.insert(keys.end(), key);
+        groups.push_back(static_cast<int>(it - keys.begin()));
+    }
+    return groups;
 }
 
 size_t BenchGrid::count() const {

@@ -3,8 +3,7 @@
 // the light counts and the values of each swept knob, in one fixed order
 // (size outermost, then lights, then the knob axes as given, the last one
 // fastest), numbered from 0. The number travels with every sample, so shards
-// of the grid (--shard i/n: the configurations whose number % n == i) merge
-// back into the grid they came from. Needs no GL.
+// of the grid (BenchShard) merge back into the grid they came from. Needs no GL.
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,9 +23,12 @@ struct BenchConfig {
     std::string size() const { return std::to_string(width) + "x" + std::to_string(height); }
 };
 
+// A slice of the grid for one process (--shard i/n): the comparison groups
+// (BenchGrid::groupsAlong the baseline's axis) whose number % n == i, so
+// every configuration is run in the same process as the one it is compared with.
 struct BenchShard {
     int index = 0, count = 1;
-    bool takes(int config) const { return config % count == index; }
+    bool takes(int group) const { return group % count == index; }
     bool whole() const { return count == 1; }
     // "i/n" with 0 <= i < n; throws dw::Error otherwise.
     static BenchShard parse(const std::string& text);
@@ -42,6 +44,10 @@ public:
     // `lights` is empty.
     std::vector<BenchConfig> configs(int sceneLights = 0) const;
     size_t count() const;
+    // Comparison groups: configurations that differ only on `axis` ("size",
+    // "lights" or a knob axis; empty: none) share a group. Groups are numbered
+    // in the order they first appear; the result has one number per config.
+    std::vector<int> groupsAlong(const std::vector<BenchConfig>& configs, const std::string& axis) const;
     // "knob=a,b,c" -> an axis (the values are checked against the knob later).
     static BenchKnobAxis parseSweep(const std::string& text);
 };

@@ -80,9 +80,13 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
     if (auto id = start.find("lighting.threshold")) threshold_ = start.value(*id);
     radius_ = o_.lightRadius > 0.0f ? o_.lightRadius : 0.2f * std::max(scene_.bounds().radius(), 1e-3f);
 
+    const int sceneLights = static_cast<int>(scene_.lights.size());
+    baseline_ = chooseBaseline(o_.grid, sceneLights, o_.baseline);
     gridSize_ = o_.grid.count();
-    for (auto& c : o_.grid.configs(static_cast<int>(scene_.lights.size())))
-        if (o_.shard.takes(c.index)) configs_.push_back(std::move(c));
+    std::vector<BenchConfig> all = o_.grid.configs(sceneLights);
+    const std::vector<int> groups = o_.grid.groupsAlong(all, baseline_.axis);
+    for (size_t i = 0; i < all.size(); ++i)
+        if (o_.shard.takes(groups[i])) configs_.push_back(std::move(all[i]));
 }
 
 BenchResults BenchRunner::run(const BenchProgress& progress) {

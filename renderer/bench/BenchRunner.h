@@ -20,6 +20,7 @@
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
+#include "renderer/bench/BenchSummary.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -38,6 +39,7 @@ struct BenchOptions {
     int lppPoses = 4;               // poses the LPP frame is averaged over on a moving camera
     bool lpp = true;
     BenchShard shard;
+    std::string baseline;  // --baseline axis=value; empty: chooseBaseline's rule
 };
 
 using BenchProgress = std::function<void(const std::string&)>;
@@ -50,6 +52,9 @@ public:
 
     const std::vector<BenchConfig>& configs() const { return configs_; }  // this shard's
     size_t gridSize() const { return gridSize_; }
+    // What each ratio divides by, chosen over the whole grid (a shard runs
+    // whole comparison groups along its axis, so it has every baseline it needs).
+    const BenchBaseline& baseline() const { return baseline_; }
     float lightRadius() const { return radius_; }
     const Scene& scene() const { return scene_; }
 
@@ -61,6 +66,7 @@ private:
     Scene scene_;
     std::vector<BenchConfig> configs_;
     size_t gridSize_ = 0;
+    BenchBaseline baseline_;
     float radius_ = 0.0f;
     double threshold_ = 0.0;
 };

@@ -170,6 +170,9 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
                              (dir / ("shard" + std::to_string(i) + ".json")).string());
         ASSERT_EQ(s.code, 0) << s.err;
         EXPECT_EQ(rowsByConfig(readCsv(part)).size(), 4u);
+        // A shard runs whole comparison groups: each configuration's baseline ran beside it.
+        std::ifstream sj(dir / ("shard" + std::to_string(i) + ".json"));
+        for (const auto& c : nlohmann::json::parse(sj)["configs"]) EXPECT_TRUE(c["ratio"].is_number()) << c["config"];
         shardCsvs += " " + part.string();
     }
     const fs::path merged = dir / "merged.csv", mergedJson = dir / "merged.json";

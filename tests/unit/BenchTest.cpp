@@ -58,6 +58,12 @@ TEST(BenchGrid, OrdersSizeThenLightsThenKnobsAndShardsByIndex) {
     EXPECT_EQ(configs[4].size(), "96x54");
     for (size_t i = 0; i < configs.size(); ++i) EXPECT_EQ(configs[i].index, static_cast<int>(i));
 
+    // Comparison groups: the strategies at one size and light count go together.
+    EXPECT_EQ(g.groupsAlong(configs, "lighting.strategy"), (std::vector<int>{0, 0, 1, 1, 2, 2, 3, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, "lights"), (std::vector<int>{0, 1, 0, 1, 2, 3, 2, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, "size"), (std::vector<int>{0, 1, 2, 3, 0, 1, 2, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, ""), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+
     const BenchShard s = BenchShard::parse("1/3");
     EXPECT_TRUE(s.takes(1));
     EXPECT_TRUE(s.takes(4));
