@@ -93,6 +93,9 @@ def main():
     ax.xaxis.set_major_formatter(plain)
     ax.yaxis.set_major_formatter(plain)
     ax.yaxis.set_minor_formatter(plain)
+    values = [v for points in lines.values() for v in points.values() if v > 0]
+    if values and max(values) / min(values) > 10:
+        ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())  # decades are labelled enough
     ax.set_xlabel("lights")
     ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median)")
     ax.set_title(args.title or "frame time against light count")
