@@ -9,6 +9,7 @@ namespace dw {
 int runGuiCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
+int runBenchCommand(int argc, char** argv);
 
 struct Command {
     const char* name;
@@ -23,6 +24,7 @@ struct Command {
 inline constexpr Command kCommands[] = {
     {"gui", "[--scene S] [--preset P] [--set k=v]...", "open the workbench window (the default)", runGuiCommand},
     {"render", "--scene S --out FILE [...]", "render one buffer headless to .png/.exr; time the passes", runRenderCommand},
+    {"bench", "--sweep k=a,b --lights N,.. [...]", "time configurations side by side (bench merge: join shards)", runBenchCommand},
     {"list", "scenes|buffers|knobs|passes|presets", "the scenes, buffers, knobs, passes or presets there are", runListCommand},
 };
 

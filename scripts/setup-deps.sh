@@ -16,8 +16,9 @@ packages=(
   libgtest-dev xvfb xauth
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  # Real glTF files, valid and broken, for the loader tests (they skip without it).
-  packages+=(assimp-testmodels)
+  # Real glTF files, valid and broken, for the loader tests (they skip without it);
+  # matplotlib for bench --plot (scripts/bench_plot.py), which the CLI test draws.
+  packages+=(assimp-testmodels python3-matplotlib)
 fi
 
 missing=()

@@ -6,6 +6,14 @@ namespace dw {
 
 struct Bounds;
 
+// A point of a camera walk-through (the scene JSON's camera.path): where the
+// camera is and what it looks at, `time` seconds into the path.
+struct CameraKeyframe {
+    float time = 0.0f;
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f};
+};
+
 struct Camera {
     glm::vec3 position{0.0f, 2.0f, 8.0f};
     glm::vec3 target{0.0f};

@@ -42,6 +42,8 @@ struct Scene {
     std::string name;
     std::string source;  // file path, or "builtin:<name>"
     Camera camera;
+    // A keyframed walk-through (scene JSON camera.path) for bench --walkthrough; usually empty.
+    std::vector<CameraKeyframe> cameraPath;
     glm::vec3 ambient{0.05f};
     glm::vec3 background{0.0f};  // HDR colour of pixels no geometry covers (Sky::Kind::Color)
     Sky sky;

@@ -207,7 +207,7 @@ private:
 
     void parseCamera(const json& j) {
         r_.requireObject(j, "camera");
-        r_.checkKeys(j, "camera", {"pos", "look-at", "up", "fov", "near", "far", "size"});
+        r_.checkKeys(j, "camera", {"pos", "look-at", "up", "fov", "near", "far", "size", "path"});
         Camera c = Camera::framing(scene_.bounds());
         c.position = r_.vec3(j, "pos", "camera", c.position);
         c.target = r_.vec3(j, "look-at", "camera", c.target);
@@ -225,6 +225,29 @@ private:
         if (c.farPlane <= c.nearPlane) r_.fail("camera.far", "must be greater than camera.near");
         if (glm::length(c.target - c.position) < 1e-6f) r_.fail("camera.look-at", "must differ from camera.pos");
         scene_.camera = c;
+        if (j.contains("path")) parseCameraPath(j["path"]);
+    }
+
+    // A walk-through for `bench --walkthrough`: [{"time", "pos", "look-at"}, ...].
+    void parseCameraPath(const json& j) {
+        if (!j.is_array()) r_.fail("camera.path", std::string("expected an array of keyframes, got ") + typeName(j));
+        if (j.size() < 2) r_.fail("camera.path", "needs at least two keyframes, got " + std::to_string(j.size()));
+        for (size_t i = 0; i < j.size(); ++i) {
+            const std::string where = "camera.path[" + std::to_string(i) + "]";
+            r_.requireObject(j[i], where);
+            r_.checkKeys(j[i], where, {"time", "pos", "look-at"});
+            for (const char* key : {"time", "pos", "look-at"})
+                if (!j[i].contains(key)) r_.fail(where, std::string("a keyframe needs \"") + key + "\"");
+            CameraKeyframe k;
+            k.time = r_.number(j[i]["time"], where + ".time");
+            k.position = r_.vec3(j[i]["pos"], where + ".pos");
+            k.target = r_.vec3(j[i]["look-at"], where + ".look-at");
+            if (!scene_.cameraPath.empty() && !(k.time > scene_.cameraPath.back().time))
+                r_.fail(where + ".time", "must be greater than the keyframe before it (" +
+                                             std::to_string(scene_.cameraPath.back().time) + ")");
+            if (glm::length(k.target - k.position) < 1e-6f) r_.fail(where + ".look-at", "must differ from pos");
+            scene_.cameraPath.push_back(k);
+        }
     }
 
     // The CMSC 23700 layout: {"ambient", "direction", "intensity", "lights": [...]}.

@@ -1,0 +1,358 @@
+// deferred-workbench bench: lighting strategies (or any knob) side by side,
+// against light count and render size, in one process; `bench merge` joins
+// the CSVs of shards. docs/bench.md says how to run it and what each column means.
+#include <spawn.h>
+#include <sys/utsname.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "app/HeadlessGlContext.h"
+#include "renderer/Error.h"
+#include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/BenchSummary.h"
+
+extern char** environ;
+
+namespace dw {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kBenchUsage =
+    "usage: deferred-workbench bench [--scene NAME|FILE] [--preset NAME|FILE] [--set knob=value]...\n"
+    "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
+    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]...\n"
+    "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
+    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--resamples N]\n"
+    "                                [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+    "                                [--quiet]\n"
+    "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
+    "                                [--plot-size WxH] [--baseline axis=value] [--resamples N]\n"
+    "  --size       render sizes (default 640x360); one session per size, all in one process\n"
+    "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
+    "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"
+    "               scene's own lights\n"
+    "  --light-radius  each generated light's volume radius at lighting.threshold (default: a tenth\n"
+    "               of the scene bounds' diagonal)\n"
+    "  --sweep      a knob axis, e.g. lighting.strategy=stencil_volumes,volumes,fullscreen; repeatable\n"
+    "  --frames     counted frames per configuration (default 10); --warmup frames after each switch\n"
+    "               are left out (default 1); --block K counted frames in a row per configuration\n"
+    "               (default 1: A B C A B C ...)\n"
+    "  --orbit N    the camera circles the scene through N poses; --walkthrough follows the scene\n"
+    "               JSON's camera.path; the table averages over them (medians over all frames)\n"
+    "  --lpp-poses  poses the untimed lights-per-pixel frame averages on a moving camera (default 4)\n"
+    "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
+    "               knob); default: the first value of the first swept knob (else lights, else size)\n"
+    "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
+    "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
+    "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
+    "               the groups whose number % n == i; join the CSVs with bench merge\n"
+    "  --csv, --json  the samples (every counted frame, every pass) and the summary with the machine;\n"
+    "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
+    "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
+    "               scripts/bench_plot.py (python3-matplotlib); --plot-size in pixels (default 800x500)\n"
+    "  --quiet      no progress lines on stderr\n";
+
+std::string readCpuModel() {
+    std::ifstream f("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(f, line))
+        if (line.rfind("model name", 0) == 0) {
+            const size_t colon = line.find(':');
+            if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+        }
+    return "unknown";
+}
+
+std::string utcNow() {
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char text[32];
+    std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+// What the run ran on, besides the GL strings the runner reads.
+BenchFields hostFields() {
+    BenchFields f;
+    f.emplace_back("cpu", readCpuModel());
+    f.emplace_back("cpu_threads", std::to_string(std::thread::hardware_concurrency()));
+    char host[256] = {};
+    if (gethostname(host, sizeof(host) - 1) == 0) f.emplace_back("host", host);
+    utsname u{};
+    if (uname(&u) == 0) f.emplace_back("os", std::string(u.sysname) + " " + u.release + " " + u.machine);
+#if defined(__clang__)
+    f.emplace_back("compiler", std::string("clang ") + __clang_version__);
+#elif defined(__GNUC__)
+    f.emplace_back("compiler", std::string("gcc ") + __VERSION__);
+#endif
+#ifdef DW_BUILD_TYPE
+    f.emplace_back("build_type", DW_BUILD_TYPE);
+#endif
+#ifdef DW_GIT_COMMIT
+    f.emplace_back("git_commit_at_configure", DW_GIT_COMMIT);
+#endif
+    f.emplace_back("date", utcNow());
+    return f;
+}
+
+fs::path locatePlotScript() {
+    std::vector<fs::path> candidates;
+    if (const char* env = std::getenv("DW_BENCH_PLOT_SCRIPT")) candidates.emplace_back(env);
+#ifdef DW_SOURCE_SCRIPTS_DIR
+    candidates.push_back(fs::path(DW_SOURCE_SCRIPTS_DIR) / "bench_plot.py");
+#endif
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        candidates.push_back(exe.parent_path() / "bench_plot.py");
+        candidates.push_back(exe.parent_path().parent_path() / "share/deferred-workbench/bench_plot.py");
+    }
+    for (const auto& c : candidates)
+        if (fs::is_regular_file(c, ec)) return c;
+    return {};
+}
+
+// Runs `python script args...`; its exit code, or -1 when it could not start.
+int runPython(const std::string& python, std::vector<std::string> args) {
+    args.insert(args.begin(), python);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::fflush(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid) return -1;
+    if (!WIFEXITED(status)) return -1;
+    return WEXITSTATUS(status) == 127 ? -1 : WEXITSTATUS(status);
+}
+
+// Draws the plot with scripts/bench_plot.py; false (after saying why) when it
+// cannot. Interpreters tried: $DW_PYTHON, Debian's /usr/bin/python3 (where
+// python3-matplotlib installs), then python3 on the PATH (which may be
+// another Python without matplotlib); the script exits 3 when matplotlib is missing.
+bool drawPlot(const std::string& csv, const std::string& png, int width, int height) {
+    const fs::path script = locatePlotScript();
+    if (script.empty()) {
+        std::fprintf(stderr, "bench: cannot find bench_plot.py (set DW_BENCH_PLOT_SCRIPT to scripts/bench_plot.py)\n");
+        return false;
+    }
+    std::vector<std::string> pythons;
+    if (const char* env = std::getenv("DW_PYTHON")) pythons.emplace_back(env);
+    pythons.emplace_back("/usr/bin/python3");
+    pythons.emplace_back("python3");
+    const std::vector<std::string> args = {script.string(), "--csv", csv, "--out", png,
+                                           "--size", std::to_string(width) + "x" + std::to_string(height)};
+    bool anyPython = false;
+    for (const auto& python : pythons) {
+        const int code = runPython(python, args);
+        if (code == 0) return true;
+        if (code == 3 || code == -1) {  // no matplotlib there, or no such interpreter: try the next
+            anyPython = anyPython || code == 3;
+            continue;
+        }
+        std::fprintf(stderr, "bench: the plot script failed (%s, exit %d); the CSV and JSON are written\n",
+                     script.c_str(), code);
+        return false;
+    }
+    std::fprintf(stderr, "bench: %s; the CSV and JSON are written\n",
+                 anyPython ? "no python3 here has matplotlib (Debian: apt-get install python3-matplotlib, or "
+                             "scripts/setup-deps.sh --tests)"
+                           : "cannot run python3 for the plot (Debian: apt-get install python3-matplotlib)");
+    return false;
+}
+
+// The exit code: 1 when --plot was asked for and could not be drawn (the CSV and JSON are written).
+int writePlot(const std::string& csv, const std::string& png, int width, int height) {
+    if (!drawPlot(csv, png, width, height)) return 1;
+    std::printf("wrote %s (%dx%d)\n", png.c_str(), width, height);
+    return 0;
+}
+
+void printTables(const BenchResults& results, const BenchSummary& summary, const std::string& title) {
+    std::printf("## %s\n\n%s\nGPU median ms per pass:\n\n%s\n", title.c_str(), markdownTable(results, summary).c_str(),
+                markdownPassTable(results, summary).c_str());
+}
+
+std::string fieldOr(const BenchFields& f, const std::string& key, const std::string& fallback) {
+    for (const auto& [k, v] : f)
+        if (k == key) return v;
+    return fallback;
+}
+
+std::pair<int, int> plotSize(CommandLine& cl) {
+    return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"));
+}
+
+BenchFields fieldsOf(const nlohmann::json& j) {
+    BenchFields f;
+    if (j.is_object())
+        for (auto it = j.begin(); it != j.end(); ++it)
+            f.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
+    return f;
+}
+
+int runMerge(int argc, char** argv) {
+    CommandLine cl(argc, argv, 3);
+    const auto out = cl.value("--out");
+    const auto json = cl.value("--json");
+    const auto plot = cl.value("--plot");
+    const auto [plotW, plotH] = plotSize(cl);
+    const std::string baselineSpec = cl.value("--baseline").value_or("");
+    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    cl.finish("bench merge");
+    const std::vector<std::string> inputs = cl.positional();
+    if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
+    if (!out) throw UsageError("bench merge needs --out FILE.csv");
+
+    std::vector<BenchResults> parts;
+    BenchFields machine, settings;
+    std::string machineNote;
+    for (const auto& in : inputs) {
+        parts.push_back(BenchResults::readCsv(in));
+        // The machine and settings are in the shard's JSON beside its CSV, when there is one.
+        const fs::path sibling = fs::path(in).replace_extension(".json");
+        std::ifstream f(sibling);
+        if (!f) continue;
+        nlohmann::json j;
+        try {
+            j = nlohmann::json::parse(f);
+        } catch (const nlohmann::json::exception& e) {
+            throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
+        }
+        const BenchFields m = fieldsOf(j.value("machine", nlohmann::json::object()));
+        if (machine.empty()) {
+            machine = m;
+            settings = fieldsOf(j.value("settings", nlohmann::json::object()));
+        } else if (fieldOr(m, "gl_renderer", "") != fieldOr(machine, "gl_renderer", "") ||
+                   fieldOr(m, "cpu", "") != fieldOr(machine, "cpu", "")) {
+            machineNote = "the shards ran on different machines; each shard's JSON names its own";
+        }
+    }
+    BenchResults all = BenchResults::merge(std::move(parts), inputs);
+    all.machine = machine;
+    if (!machineNote.empty()) all.machine.emplace_back("note", machineNote);
+    all.settings.clear();
+    for (const auto& [k, v] : settings)
+        if (k != "shard" && k != "seconds") all.settings.emplace_back(k, v);
+    std::string from;
+    for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
+    all.settings.emplace_back("merged_from", from);
+
+    const BenchSummary summary = summarize(all, chooseBaseline(all, baselineSpec), resamples);
+    all.writeCsv(*out);
+    if (json) writeBenchJson(*json, all, summary);
+    printTables(all, summary,
+                "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
+                    std::to_string(inputs.size()) + " shard(s)");
+    std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
+    return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+}
+
+std::vector<int> parseIntList(const std::string& flag, const std::string& text, int min, int max) {
+    std::vector<int> values;
+    for (const auto& item : splitList(text, flag)) values.push_back(CommandLine::parseInt(flag, item, min, max));
+    return values;
+}
+
+}  // namespace
+
+int runBenchCommand(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
+    CommandLine cl(argc, argv, 2);
+    if (cl.flag("--help")) {
+        std::cout << kBenchUsage;
+        return 0;
+    }
+    BenchOptions o;
+    o.run = cl.runConfig();
+    for (const auto& s : splitList(cl.value("--size").value_or("640x360"), "--size"))
+        o.grid.sizes.push_back(CommandLine::parseSize(s));
+    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, 0, 1000000);
+    for (const auto& s : cl.values("--sweep")) {
+        BenchKnobAxis axis = BenchGrid::parseSweep(s);
+        for (const auto& a : o.grid.knobAxes)
+            if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
+        o.grid.knobAxes.push_back(std::move(axis));
+    }
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), 1, 100000);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647));
+    if (const auto r = cl.value("--light-radius")) {
+        char* end = nullptr;
+        o.lightRadius = std::strtof(r->c_str(), &end);
+        if (end != r->c_str() + r->size() || !(o.lightRadius > 0.0f) || !std::isfinite(o.lightRadius))
+            throw UsageError("--light-radius expects a positive number, got '" + *r + "'");
+    }
+    o.keepSceneLights = cl.flag("--keep-scene-lights");
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
+    o.walkthrough = cl.flag("--walkthrough");
+    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), 1, 1000);
+    o.lpp = !cl.flag("--no-lpp");
+    if (const auto shard = cl.value("--shard")) {
+        try {
+            o.shard = BenchShard::parse(*shard);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }
+    const std::string suffix =
+        o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
+    const std::string csv = cl.value("--csv").value_or("bench" + suffix + ".csv");
+    const std::string json = cl.value("--json").value_or("bench" + suffix + ".json");
+    const auto plot = cl.value("--plot");
+    const auto [plotW, plotH] = plotSize(cl);
+    const std::string baselineSpec = cl.value("--baseline").value_or("");
+    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    const bool quiet = cl.flag("--quiet");
+    cl.finish("bench");
+    if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
+    if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
+        std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);
+
+    // Everything that can fail without GL fails here: knobs, values, the scene, the baseline.
+    o.baseline = baselineSpec;
+    BenchRunner runner(std::move(o));
+    const BenchBaseline baseline = runner.baseline();
+    for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+
+    auto context = HeadlessGlContext::create();
+    BenchResults results = runner.run([&](const std::string& line) {
+        if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
+    });
+    BenchFields machine = results.machine;
+    machine.emplace_back("gl_platform", context->platform());
+    for (auto& f : hostFields()) machine.push_back(std::move(f));
+    results.machine = std::move(machine);
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    results.settings.emplace_back("command", command);
+
+    const BenchSummary summary = summarize(results, baseline, resamples);
+    results.writeCsv(csv);
+    writeBenchJson(json, results, summary);
+    printTables(results, summary,
+                "bench: " + runner.scene().name + ", " + std::to_string(results.configs.size()) + " configuration(s) x " +
+                    fieldOr(results.settings, "frames", "?") + " frame(s) on " +
+                    fieldOr(results.machine, "gl_renderer", "?"));
+    std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
+    return plot ? writePlot(csv, *plot, plotW, plotH) : 0;
+}
+
+}  // namespace dw

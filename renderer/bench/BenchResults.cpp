@@ -1,0 +1,219 @@
+#include "renderer/bench/BenchResults.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace {
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string q = "\"";
+    for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+// One CSV line into fields (RFC 4180 quoting; no newlines inside fields).
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+                fields.back() += '"';
+                ++i;
+            } else if (c == '"') {
+                quoted = false;
+            } else {
+                fields.back() += c;
+            }
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            fields.emplace_back();
+        } else if (c != '\r') {
+            fields.back() += c;
+        }
+    }
+    return fields;
+}
+
+std::string number(double v, const char* format = "%.4f") {
+    if (!std::isfinite(v)) return "";
+    char text[64];
+    std::snprintf(text, sizeof(text), format, v);
+    return text;
+}
+
+const char* const kLeading[] = {"config", "size", "lights"};
+const char* const kTrailing[] = {"lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"};
+
+}  // namespace
+
+const BenchConfigResult* BenchResults::find(int config) const {
+    auto it = std::lower_bound(configs.begin(), configs.end(), config,
+                               [](const BenchConfigResult& c, int i) { return c.config.index < i; });
+    return it != configs.end() && it->config.index == config ? &*it : nullptr;
+}
+
+std::vector<std::string> BenchResults::seriesOf(int config) const {
+    std::vector<std::string> names;
+    for (const auto& s : samples)
+        if (s.config == config && std::find(names.begin(), names.end(), s.series) == names.end()) names.push_back(s.series);
+    return names;
+}
+
+std::string BenchResults::csvHeader(const std::vector<std::string>& knobAxes) {
+    std::string h;
+    for (const char* c : kLeading) h += std::string(h.empty() ? "" : ",") + c;
+    for (const auto& k : knobAxes) h += "," + csvField(k);
+    for (const char* c : kTrailing) h += std::string(",") + c;
+    return h;
+}
+
+std::string BenchResults::csv() const {
+    std::ostringstream out;
+    out << csvHeader(knobAxes) << "\n";
+    for (const auto& s : samples) {
+        const BenchConfigResult* c = find(s.config);
+        if (!c) throw Error("a sample names configuration " + std::to_string(s.config) + ", which the results do not hold");
+        out << c->config.index << "," << c->config.size() << "," << c->config.lights;
+        for (const auto& v : c->config.knobValues) out << "," << csvField(v);
+        out << "," << number(c->lpp) << "," << number(c->lppLit) << "," << s.sample << "," << s.seq << "," << s.frame << ","
+            << csvField(s.series) << "," << number(s.gpuMs) << "," << number(s.cpuMs) << "\n";
+    }
+    return out.str();
+}
+
+BenchResults BenchResults::parseCsv(const std::string& text, const std::string& path) {
+    std::istringstream in(text);
+    std::string line;
+    if (!std::getline(in, line)) throw FileError(path, "empty file (expected the bench CSV header)");
+    const std::vector<std::string> header = splitCsvLine(line);
+    const size_t lead = std::size(kLeading), trail = std::size(kTrailing);
+    bool ok = header.size() >= lead + trail;
+    for (size_t i = 0; ok && i < lead; ++i) ok = header[i] == kLeading[i];
+    for (size_t i = 0; ok && i < trail; ++i) ok = header[header.size() - trail + i] == kTrailing[i];
+    if (!ok) throw FileError(path, "line 1: not a bench samples CSV (expected " + csvHeader({"<knob>..."}) + ")");
+
+    BenchResults r;
+    r.knobAxes.assign(header.begin() + static_cast<std::ptrdiff_t>(lead), header.end() - static_cast<std::ptrdiff_t>(trail));
+    const size_t knobs = r.knobAxes.size();
+    std::map<int, BenchConfigResult> configs;
+    int lineNo = 1;
+    while (std::getline(in, line)) {
+        ++lineNo;
+        if (line.empty() || line == "\r") continue;
+        const std::vector<std::string> f = splitCsvLine(line);
+        auto fail = [&](const std::string& what) -> void {
+            throw FileError(path, "line " + std::to_string(lineNo) + ": " + what);
+        };
+        if (f.size() != header.size())
+            fail("expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
+        auto integer = [&](size_t i) {
+            long long v = 0;
+            auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+            if (ec != std::errc() || p != f[i].data() + f[i].size() || f[i].empty())
+                fail(header[i] + ": expected a whole number, got '" + f[i] + "'");
+            return v;
+        };
+        auto real = [&](size_t i) {
+            if (f[i].empty()) return std::numeric_limits<double>::quiet_NaN();
+            char* end = nullptr;
+            const double v = std::strtod(f[i].c_str(), &end);
+            if (end != f[i].c_str() + f[i].size()) fail(header[i] + ": expected a number, got '" + f[i] + "'");
+            return v;
+        };
+        BenchConfigResult c;
+        c.config.index = static_cast<int>(integer(0));
+        const size_t x = f[1].find('x');
+        int w = 0, h = 0;
+        if (x == std::string::npos || std::from_chars(f[1].data(), f[1].data() + x, w).ec != std::errc() ||
+            std::from_chars(f[1].data() + x + 1, f[1].data() + f[1].size(), h).ec != std::errc())
+            fail("size: expected WIDTHxHEIGHT, got '" + f[1] + "'");
+        c.config.width = w;
+        c.config.height = h;
+        c.config.lights = static_cast<int>(integer(2));
+        for (size_t k = 0; k < knobs; ++k) c.config.knobValues.push_back(f[lead + k]);
+        const size_t t = lead + knobs;
+        c.lpp = real(t);
+        c.lppLit = real(t + 1);
+        auto [it, inserted] = configs.emplace(c.config.index, c);
+        if (!inserted) {
+            const BenchConfig& seen = it->second.config;
+            if (seen.size() != c.config.size() || seen.lights != c.config.lights || seen.knobValues != c.config.knobValues)
+                fail("configuration " + std::to_string(c.config.index) + " differs from its earlier rows");
+        }
+        BenchSample s;
+        s.config = c.config.index;
+        s.sample = static_cast<int>(integer(t + 2));
+        s.seq = integer(t + 3);
+        s.frame = static_cast<std::uint64_t>(integer(t + 4));
+        s.series = f[t + 5];
+        s.gpuMs = real(t + 6);
+        s.cpuMs = real(t + 7);
+        r.samples.push_back(std::move(s));
+    }
+    for (auto& [index, c] : configs) r.configs.push_back(std::move(c));
+    return r;
+}
+
+BenchResults BenchResults::readCsv(const std::string& path) {
+    std::ifstream f(path);
+    if (!f) throw FileError(path, "cannot open the bench CSV");
+    std::stringstream text;
+    text << f.rdbuf();
+    return parseCsv(text.str(), path);
+}
+
+void BenchResults::writeCsv(const std::string& path) const {
+    std::ofstream f(path, std::ios::trunc);
+    if (!f) throw FileError(path, "cannot write the bench CSV");
+    f << csv();
+    if (!f.flush()) throw FileError(path, "writing the bench CSV failed");
+}
+
+BenchResults BenchResults::merge(std::vector<BenchResults> parts, const std::vector<std::string>& names) {
+    if (parts.empty()) throw Error("nothing to merge");
+    BenchResults all;
+    all.knobAxes = parts.front().knobAxes;
+    all.machine = parts.front().machine;
+    all.settings = parts.front().settings;
+    std::map<int, size_t> owner;  // configuration -> the part it came from
+    for (size_t p = 0; p < parts.size(); ++p) {
+        const std::string name = p < names.size() ? names[p] : "part " + std::to_string(p);
+        if (parts[p].knobAxes != all.knobAxes)
+            throw Error(name + " sweeps other knobs than " + (names.empty() ? "the first part" : names.front()) +
+                        " (columns " + csvHeader(parts[p].knobAxes) + ")");
+        for (auto& c : parts[p].configs) {
+            auto [it, inserted] = owner.emplace(c.config.index, p);
+            if (!inserted) {
+                const std::string other = it->second < names.size() ? names[it->second] : "another part";
+                throw Error("configuration " + std::to_string(c.config.index) + " is in both " + other + " and " + name +
+                            " (shards of one grid never share one)");
+            }
+            all.configs.push_back(std::move(c));
+        }
+        for (auto& s : parts[p].samples) all.samples.push_back(std::move(s));
+    }
+    std::sort(all.configs.begin(), all.configs.end(),
+              [](const BenchConfigResult& a, const BenchConfigResult& b) { return a.config.index < b.config.index; });
+    // Within a configuration keep the recorded order of its rows.
+    std::stable_sort(all.samples.begin(), all.samples.end(), [](const BenchSample& a, const BenchSample& b) {
+        return a.config != b.config ? a.config < b.config : a.sample < b.sample;
+    });
+    return all;
+}
+
+}  // namespace dw

@@ -1,0 +1,62 @@
+#pragma once
+// What a `bench` run measured, in the form it is written and read back: the
+// configurations (with their lights per pixel), every counted frame's
+// per-series GPU and CPU milliseconds, the machine and the run's settings.
+// The samples CSV carries everything the summary needs, one row per frame
+// and series:
+//   config,size,lights,<knob>...,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms
+// so `bench merge` can join shards from CSV alone and recompute the table.
+// Needs no GL.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/bench/BenchGrid.h"
+
+namespace dw {
+
+struct BenchSample {
+    int config = 0;             // BenchConfig::index
+    int sample = 0;             // the counted frame's number within its configuration, 0..frames-1
+    long long seq = 0;          // the order it was rendered in across the whole run (for drift)
+    std::uint64_t frame = 0;    // the session's frame index
+    std::string series;         // a pass, a span ("lighting/shadow maps") or "frame" (the whole frame)
+    double gpuMs = 0.0, cpuMs = 0.0;
+};
+
+struct BenchConfigResult {
+    BenchConfig config;
+    // Lights per pixel (seed 000 table 6.1): the mean of lighting.overlap
+    // over all pixels, and over the pixels at least one light reached. NaN
+    // when not measured.
+    double lpp = 0.0, lppLit = 0.0;
+};
+
+using BenchFields = std::vector<std::pair<std::string, std::string>>;  // ordered name -> value
+
+struct BenchResults {
+    std::vector<std::string> knobAxes;        // the knob columns, in order
+    std::vector<BenchConfigResult> configs;   // by index, ascending
+    std::vector<BenchSample> samples;         // by config, then sample, then series in pipeline order
+    BenchFields machine;                      // GL renderer, CPU, compiler, build ...
+    BenchFields settings;                     // scene, frames, warm-up, seed ...
+
+    const BenchConfigResult* find(int config) const;
+    // The series of a configuration's frames in the order they were recorded.
+    std::vector<std::string> seriesOf(int config) const;
+
+    std::string csv() const;
+    static std::string csvHeader(const std::vector<std::string>& knobAxes);
+    // Reads csv() back; throws FileError naming the file and line.
+    static BenchResults parseCsv(const std::string& text, const std::string& path);
+    static BenchResults readCsv(const std::string& path);
+    void writeCsv(const std::string& path) const;
+
+    // Joins shards of one grid: the same knob columns, no configuration in
+    // two parts. Throws Error naming the clash. Machines and settings are the
+    // first part's (bench merge records each shard's own beside them).
+    static BenchResults merge(std::vector<BenchResults> parts, const std::vector<std::string>& names);
+};
+
+}  // namespace dw

@@ -1,0 +1,74 @@
+#pragma once
+// Runs a `bench` grid in one process and one GL context (seed 000 chapter 6's
+// measurements, made repeatable): one RenderSession per render size (so a
+// size change is a switch of framebuffers, not a reallocation), the scene
+// loaded once, and for each light count a list of generated lights kept
+// ready, so a configuration switch is swapping the session's light list (the
+// light table is rebuilt from it every frame; the geometry stays uploaded)
+// and re-applying the knobs in the run configuration's order plus the
+// configuration's own values. Frames are interleaved: round after round,
+// every configuration renders its warm-up frames (left out) and then a block
+// of counted frames, so slow drift of the machine falls on all of them
+// alike. Timings come from PassTimer's timestamps, harvested at the end
+// (collect(true)), never by waiting inside the loop. Lights per pixel come
+// from an extra, untimed frame per configuration that asks for
+// lighting.overlap (the counting variant costs more than plain shading).
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "renderer/RunConfig.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BenchResults.h"
+#include "renderer/bench/BenchSummary.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+struct BenchOptions {
+    RunConfig run;     // scene, preset, --set: every configuration starts from them
+    BenchGrid grid;    // sizes, light counts, knob axes
+    int frames = 10;   // counted frames per configuration
+    int warmup = 1;    // frames left out after each switch to a configuration
+    int block = 1;     // counted frames per configuration in a row
+    std::uint32_t seed = 1;
+    float lightRadius = 0.0f;       // <= 0: a tenth of the scene bounds' diagonal
+    bool keepSceneLights = false;   // generated lights are added to the scene's instead of replacing them
+    int orbit = 0;                  // > 0: the camera orbits through this many poses
+    bool walkthrough = false;       // the camera follows the scene's camera.path
+    int lppPoses = 4;               // poses the LPP frame is averaged over on a moving camera
+    bool lpp = true;
+    BenchShard shard;
+    std::string baseline;  // --baseline axis=value; empty: chooseBaseline's rule
+};
+
+using BenchProgress = std::function<void(const std::string&)>;
+
+class BenchRunner {
+public:
+    // Checks the options and every knob value against the declarations and
+    // loads the scene: everything that can fail without GL fails here.
+    explicit BenchRunner(BenchOptions options);
+
+    const std::vector<BenchConfig>& configs() const { return configs_; }  // this shard's
+    size_t gridSize() const { return gridSize_; }
+    // What each ratio divides by, chosen over the whole grid (a shard runs
+    // whole comparison groups along its axis, so it has every baseline it needs).
+    const BenchBaseline& baseline() const { return baseline_; }
+    float lightRadius() const { return radius_; }
+    const Scene& scene() const { return scene_; }
+
+    // Needs a current GL 4.5 context. `progress` gets a line now and then.
+    BenchResults run(const BenchProgress& progress = {});
+
+private:
+    BenchOptions o_;
+    Scene scene_;
+    std::vector<BenchConfig> configs_;
+    size_t gridSize_ = 0;
+    BenchBaseline baseline_;
+    float radius_ = 0.0f;
+    double threshold_ = 0.0;
+};
+
+}  // namespace dw

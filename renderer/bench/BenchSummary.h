@@ -1,0 +1,68 @@
+#pragma once
+// The numbers a `bench` run reports, made from its samples alone (so a
+// merged set of shards gives the same table as one run): per configuration
+// and per series (each pass, each span, the whole frame) the median, min, max
+// and mean GPU and CPU milliseconds over its counted frames, and the frame
+// time's ratio to the baseline configuration with a bootstrap 95% interval.
+// Shown as Markdown tables and written as JSON with every sample. Needs no GL.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "renderer/bench/BenchResults.h"
+#include "renderer/bench/Bootstrap.h"
+#include "renderer/graph/PassTimer.h"
+
+namespace dw {
+
+struct BenchSeriesStats {
+    std::string series;
+    TimingStats gpu, cpu;
+};
+
+struct BenchSummaryRow {
+    int config = 0;
+    std::vector<BenchSeriesStats> series;  // in recorded order; "frame" last
+    const BenchSeriesStats* find(const std::string& name) const;
+    const BenchSeriesStats* frame() const { return find(PassTimer::kFrameSeries); }
+    int baseline = -1;    // the configuration it is compared with; -1: none in the results
+    RatioInterval ratio;  // frame GPU median / the baseline's
+};
+
+struct BenchBaseline {
+    std::string axis;   // "size", "lights" or a knob; empty: no axis to compare along
+    std::string value;
+};
+
+struct BenchSummary {
+    BenchBaseline baseline;
+    std::vector<BenchSummaryRow> rows;  // one per configuration, in index order
+    std::vector<std::string> passes;    // every pass and span seen, in pipeline order (no "frame")
+    const BenchSummaryRow* find(int config) const;
+};
+
+// `spec` is "axis=value" (--baseline), or empty: the first value of the first
+// knob axis, else of lights, else of size (the first axis with more than one
+// value; "first" = in the lowest-numbered configuration). Throws Error for an
+// axis the results do not have or a value none of its configurations has.
+BenchBaseline chooseBaseline(const BenchResults& results, const std::string& spec);
+// The same rule over a whole grid, before it runs (a shard's results may lack
+// the baseline's configurations; theirs then get no ratio).
+BenchBaseline chooseBaseline(const BenchGrid& grid, int sceneLights, const std::string& spec);
+BenchSummary summarize(const BenchResults& results, const BenchBaseline& baseline, int resamples = 2000,
+                       std::uint64_t seed = 12345);
+
+// The main table (one row per configuration: its axes, LPP, frames, frame
+// GPU median/min/max, CPU median, ratio and 95% CI) and the per-pass table
+// (GPU medians per pass and span).
+std::string markdownTable(const BenchResults& results, const BenchSummary& summary);
+std::string markdownPassTable(const BenchResults& results, const BenchSummary& summary);
+
+// {"tool", "machine", "settings", "axes", "baseline", "configs": [{config,
+// size, width, height, lights, knobs, lpp, lpp_lit, frames, series: {name:
+// {gpu_ms, cpu_ms}}, ratio, ci95, baseline_config, samples: [{sample, seq,
+// frame, gpu_ms: {series: ms}, cpu_ms: {...}}]}]}
+std::string benchJson(const BenchResults& results, const BenchSummary& summary);
+void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary);
+
+}  // namespace dw

@@ -1,0 +1,27 @@
+#pragma once
+// How sure a ratio of two medians is, by the percentile bootstrap (Efron):
+// resample each side's frames with replacement, take the ratio of the
+// resamples' medians, and read the 2.5th and 97.5th percentiles of those
+// ratios. `bench` uses it for "configuration / baseline" frame times. The
+// resampling is seeded, so the same samples always give the same interval.
+#include <cstdint>
+#include <vector>
+
+namespace dw {
+
+struct RatioInterval {
+    double ratio = 0.0;  // median(a) / median(b) of the samples themselves
+    double low = 0.0, high = 0.0;
+    int resamples = 0;
+    bool valid() const { return resamples > 0; }
+};
+
+double median(std::vector<double> values);
+
+// median(a) / median(b) with a (1 - alpha) percentile interval from
+// `resamples` bootstrap draws. Invalid (resamples 0) when a side is empty or
+// b's median is not positive.
+RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::vector<double>& b, int resamples = 2000,
+                                      std::uint64_t seed = 12345, double alpha = 0.05);
+
+}  // namespace dw

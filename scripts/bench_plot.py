@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""Plots a `deferred-workbench bench` samples CSV: median frame GPU ms against
+the light count, one line per configuration of the other axes (strategy,
+size, ...), log-log. `bench --plot FILE.png` runs it; it can be run by hand:
+
+    python3 scripts/bench_plot.py --csv bench.csv --out bench.png [--size 800x500] [--cpu]
+
+Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
+(Debian: apt-get install python3-matplotlib).
+"""
+import argparse
+import csv
+import statistics
+import sys
+
+# Columns that are not configuration axes (docs/bench.md, "The samples CSV").
+SAMPLE_COLUMNS = ["lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"]
+
+
+def read_medians(path, column):
+    """{(axis values except lights): {lights: median}} and the axis names."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader, None)
+        if not header or header[:3] != ["config", "size", "lights"] or header[-len(SAMPLE_COLUMNS):] != SAMPLE_COLUMNS:
+            raise ValueError(f"{path}: not a bench samples CSV (header {header})")
+        axes = header[1:len(header) - len(SAMPLE_COLUMNS)]  # size, lights, knobs...
+        index = {name: i for i, name in enumerate(header)}
+        times = {}  # config -> (axis values, [ms])
+        for row in reader:
+            if not row or row[index["pass"]] != "frame" or row[index[column]] == "":
+                continue
+            config = int(row[0])
+            values = tuple(row[index[a]] for a in axes)
+            times.setdefault(config, (values, []))[1].append(float(row[index[column]]))
+    lights_at = axes.index("lights")
+    others = [a for a in axes if a != "lights"]
+    # Only the axes that vary name the lines.
+    varying = [a for a in others if len({v[axes.index(a)] for v, _ in times.values()}) > 1]
+    lines = {}
+    for config in sorted(times):
+        values, ms = times[config]
+        label = ", ".join(values[axes.index(a)] for a in varying) or "all"
+        lines.setdefault(label, {})[int(values[lights_at])] = statistics.median(ms)
+    return lines, ", ".join(varying)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--csv", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--size", default="800x500", help="WIDTHxHEIGHT in pixels")
+    parser.add_argument("--cpu", action="store_true", help="plot CPU ms instead of GPU ms")
+    parser.add_argument("--title", default="")
+    args = parser.parse_args()
+    try:
+        width, height = (int(v) for v in args.size.lower().split("x"))
+        if width < 50 or height < 50:
+            raise ValueError
+    except ValueError:
+        print(f"bench_plot: --size expects WIDTHxHEIGHT of at least 50x50, got '{args.size}'", file=sys.stderr)
+        return 2
+    column = "cpu_ms" if args.cpu else "gpu_ms"
+    try:
+        lines, legend_title = read_medians(args.csv, column)
+    except (OSError, ValueError, KeyError) as e:
+        print(f"bench_plot: {e}", file=sys.stderr)
+        return 2
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import matplotlib.ticker
+    except ImportError:
+        print("bench_plot: matplotlib is missing (Debian: apt-get install python3-matplotlib)", file=sys.stderr)
+        return 3
+
+    dpi = 100
+    # Text scales with the image, so a small plot stays legible.
+    scale = min(width / 800, height / 500)
+    matplotlib.rcParams["font.size"] = max(5.0, min(11.0, 10.0 * scale))
+    fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi)
+    ax = fig.add_subplot(1, 1, 1)
+    skipped = 0
+    for label, points in lines.items():
+        xs = sorted(n for n in points if n > 0)  # a log axis has no 0
+        skipped += len(points) - len(xs)
+        ax.plot(xs, [points[n] for n in xs], marker="o", label=label,
+                markersize=max(2.0, 6.0 * scale), linewidth=max(0.8, 1.5 * scale))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    ax.xaxis.set_major_formatter(plain)
+    ax.yaxis.set_major_formatter(plain)
+    ax.yaxis.set_minor_formatter(plain)
+    values = [v for points in lines.values() for v in points.values() if v > 0]
+    if values and max(values) / min(values) > 10:
+        ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())  # decades are labelled enough
+    ax.set_xlabel("lights")
+    ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median)")
+    ax.set_title(args.title or "frame time against light count")
+    ax.grid(True, which="both", alpha=0.3)
+    if lines:
+        ax.legend(title=legend_title or None, fontsize="small", title_fontsize="small")
+    fig.tight_layout()
+    # No bbox_inches="tight": the image is exactly the size asked for.
+    fig.savefig(args.out, dpi=dpi, format="png")
+    if skipped:
+        print(f"bench_plot: left out {skipped} point(s) with 0 lights (log axis)", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,242 @@
+// `bench` as a user runs it, end to end in a small grid: every row in the
+// CSV, the JSON and the Markdown table, the plot a PNG of the size asked
+// for, and shards that merge back into the grid. Timings are never asserted.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "renderer/io/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int code = -1;
+    std::string out, err;
+};
+
+Result run(const std::string& args) {
+    const fs::path errFile = test::tempDir() / "bench-stderr.txt";
+    const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();
+    Result r;
+    FILE* p = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+    return r;
+}
+
+std::vector<std::vector<std::string>> readCsv(const fs::path& path) {
+    std::ifstream f(path);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(f, line)) {
+        std::vector<std::string> fields;
+        std::stringstream s(line);
+        std::string field;
+        while (std::getline(s, field, ',')) fields.push_back(field);
+        if (!line.empty() && line.back() == ',') fields.emplace_back();
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+// (size, lights, strategy) -> the (sample, pass) pairs of its rows.
+using Key = std::tuple<std::string, std::string, std::string>;
+std::map<Key, std::set<std::pair<std::string, std::string>>> rowsByConfig(const std::vector<std::vector<std::string>>& csv) {
+    std::map<Key, std::set<std::pair<std::string, std::string>>> out;
+    for (size_t i = 1; i < csv.size(); ++i) {
+        const auto& r = csv[i];
+        out[{r[1], r[2], r[3]}].insert({r[6], r[9]});
+    }
+    return out;
+}
+
+const char* const kSizes[] = {"64x36", "96x54"};
+const char* const kLights[] = {"1", "10"};
+const char* const kStrategies[] = {"stencil_volumes", "fullscreen"};
+
+const std::string kGrid =
+    "bench --scene default --size 64x36,96x54 --lights 1,10 --sweep lighting.strategy=stencil_volumes,fullscreen "
+    "--frames 2 --warmup 1 --resamples 200";
+
+}  // namespace
+
+TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
+    const fs::path dir = test::tempDir() / "bench";
+    fs::create_directories(dir);
+    const fs::path csv = dir / "all.csv", json = dir / "all.json", png = dir / "all.png";
+    const Result r = run(kGrid + " --csv " + csv.string() + " --json " + json.string() + " --plot " + png.string() +
+                         " --plot-size 320x200");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.err.find("bench: done"), std::string::npos) << "progress goes to stderr: " << r.err;
+
+    // CSV: the header, and every configuration with both counted frames of the whole frame and of the lighting pass.
+    const auto rows = readCsv(csv);
+    ASSERT_GT(rows.size(), 1u);
+    EXPECT_EQ(rows[0], (std::vector<std::string>{"config", "size", "lights", "lighting.strategy", "lpp", "lpp_lit", "sample",
+                                                 "seq", "frame", "pass", "gpu_ms", "cpu_ms"}));
+    const auto byConfig = rowsByConfig(rows);
+    EXPECT_EQ(byConfig.size(), 8u);
+    for (const char* size : kSizes)
+        for (const char* lights : kLights)
+            for (const char* strategy : kStrategies) {
+                const auto it = byConfig.find({size, lights, strategy});
+                ASSERT_NE(it, byConfig.end()) << size << " " << lights << " " << strategy;
+                for (const char* sample : {"0", "1"})
+                    for (const char* pass : {"frame", "lighting", "geometry"})
+                        EXPECT_TRUE(it->second.count({sample, pass})) << size << " " << lights << " " << strategy << " "
+                                                                      << sample << " " << pass;
+            }
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size()) << "line " << i + 1;
+        EXPECT_GE(std::stod(rows[i][10]), 0.0) << "gpu_ms, line " << i + 1;
+    }
+
+    // JSON: the machine, every configuration with its samples and lights per pixel.
+    std::ifstream jf(json);
+    const nlohmann::json j = nlohmann::json::parse(jf);
+    EXPECT_FALSE(j["machine"]["gl_renderer"].get<std::string>().empty());
+    EXPECT_FALSE(j["machine"]["cpu"].get<std::string>().empty());
+    EXPECT_EQ(j["baseline"]["axis"], "lighting.strategy");
+    EXPECT_EQ(j["baseline"]["value"], "stencil_volumes");
+    ASSERT_EQ(j["configs"].size(), 8u);
+    std::set<Key> seen;
+    for (const auto& c : j["configs"]) {
+        const std::string strategy = c["knobs"]["lighting.strategy"];
+        seen.insert({c["size"], std::to_string(c["lights"].get<int>()), strategy});
+        EXPECT_EQ(c["frames"], 2);
+        ASSERT_EQ(c["samples"].size(), 2u);
+        EXPECT_TRUE(c["samples"][0]["gpu_ms"].contains("frame"));
+        EXPECT_TRUE(c["samples"][0]["gpu_ms"].contains("lighting"));
+        EXPECT_TRUE(c["series"].contains("lighting"));
+        ASSERT_TRUE(c["lpp"].is_number()) << c.dump();
+        // The full-screen strategy shades every light on every pixel it lights.
+        if (strategy == "fullscreen") {
+            EXPECT_NEAR(c["lpp_lit"].get<double>(), c["lights"].get<double>(), 1e-3) << c["size"];
+        }
+        ASSERT_TRUE(c["ratio"].is_number());
+        ASSERT_TRUE(c["ci95"].is_array());
+        EXPECT_LE(c["ci95"][0].get<double>(), c["ratio"].get<double>());
+        EXPECT_GE(c["ci95"][1].get<double>(), c["ratio"].get<double>());
+    }
+    EXPECT_EQ(seen.size(), 8u);
+    // Light volumes reach fewer pixels than full-screen quads: fewer lights per pixel, same lights.
+    for (const auto& c : j["configs"])
+        if (c["knobs"]["lighting.strategy"] == "stencil_volumes") {
+            const auto& full = j["configs"][c["config"].get<int>() + 1];
+            EXPECT_LE(c["lpp"].get<double>(), full["lpp"].get<double>() + 1e-6) << c["size"] << " " << c["lights"];
+        }
+
+    // The Markdown table: a row per configuration and a CI column.
+    EXPECT_NE(r.out.find("95% CI"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| ratio to lighting.strategy=stencil_volumes |"), std::string::npos) << r.out;
+    for (const char* size : kSizes)
+        for (const char* lights : kLights)
+            for (const char* strategy : kStrategies)
+                EXPECT_NE(r.out.find(std::string("| ") + size + " | " + lights + " | " + strategy + " | "), std::string::npos)
+                    << size << " " << lights << " " << strategy << "\n" << r.out;
+
+    // The plot: a PNG of the size asked for.
+    ASSERT_TRUE(fs::exists(png)) << r.err;
+    std::ifstream pf(png, std::ios::binary);
+    char magic[8] = {};
+    pf.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+    const FloatImage plot = loadImageFloat(png.string());
+    EXPECT_EQ(plot.width, 320);
+    EXPECT_EQ(plot.height, 200);
+
+    // Shards 0/2 and 1/2, merged, have the full grid's rows.
+    std::string shardCsvs;
+    for (int i = 0; i < 2; ++i) {
+        const fs::path part = dir / ("shard" + std::to_string(i) + ".csv");
+        const Result s = run(kGrid + " --quiet --shard " + std::to_string(i) + "/2 --csv " + part.string() + " --json " +
+                             (dir / ("shard" + std::to_string(i) + ".json")).string());
+        ASSERT_EQ(s.code, 0) << s.err;
+        EXPECT_EQ(rowsByConfig(readCsv(part)).size(), 4u);
+        // A shard runs whole comparison groups: each configuration's baseline ran beside it.
+        std::ifstream sj(dir / ("shard" + std::to_string(i) + ".json"));
+        for (const auto& c : nlohmann::json::parse(sj)["configs"]) EXPECT_TRUE(c["ratio"].is_number()) << c["config"];
+        shardCsvs += " " + part.string();
+    }
+    const fs::path merged = dir / "merged.csv", mergedJson = dir / "merged.json";
+    const Result m = run("bench merge" + shardCsvs + " --out " + merged.string() + " --json " + mergedJson.string());
+    ASSERT_EQ(m.code, 0) << m.err;
+    EXPECT_EQ(rowsByConfig(readCsv(merged)), byConfig);
+    const auto mergedRows = readCsv(merged);
+    for (size_t i = 1; i < mergedRows.size(); ++i)
+        ASSERT_EQ(mergedRows[i][0], rows[i][0]) << "merged rows keep the grid's order, line " << i + 1;
+    std::ifstream mj(mergedJson);
+    const nlohmann::json mjson = nlohmann::json::parse(mj);
+    EXPECT_EQ(mjson["configs"].size(), 8u);
+    EXPECT_EQ(mjson["machine"]["gl_renderer"], j["machine"]["gl_renderer"]);
+    EXPECT_NE(m.out.find("95% CI"), std::string::npos);
+
+    // Merging a shard twice is refused, naming the configuration.
+    const Result twice = run("bench merge " + (dir / "shard0.csv").string() + " " + (dir / "shard0.csv").string() +
+                             " --out " + (dir / "twice.csv").string());
+    EXPECT_EQ(twice.code, 1);
+    EXPECT_NE(twice.err.find("configuration 0 is in both"), std::string::npos) << twice.err;
+}
+
+TEST(BenchCli, BadInputFailsBeforeRendering) {
+    const Result knob = run("bench --sweep lighting.nope=a,b --csv /dev/null --json /dev/null");
+    EXPECT_EQ(knob.code, 1);
+    EXPECT_NE(knob.err.find("unknown knob 'lighting.nope'"), std::string::npos) << knob.err;
+    const Result value = run("bench --sweep lighting.strategy=volumes,nope --csv /dev/null --json /dev/null");
+    EXPECT_EQ(value.code, 1);
+    EXPECT_NE(value.err.find("nope"), std::string::npos) << value.err;
+    const Result shard = run("bench --shard 2/2");
+    EXPECT_EQ(shard.code, 2);
+    EXPECT_NE(shard.err.find("--shard expects i/n"), std::string::npos) << shard.err;
+    const Result baseline = run("bench --sweep lighting.strategy=volumes,fullscreen --baseline lighting.strategy=forwardx");
+    EXPECT_EQ(baseline.code, 1);
+    EXPECT_NE(baseline.err.find("--baseline"), std::string::npos) << baseline.err;
+    const Result walk = run("bench --scene default --walkthrough");
+    EXPECT_EQ(walk.code, 1);
+    EXPECT_NE(walk.err.find("camera.path"), std::string::npos) << walk.err;
+    const Result help = run("help bench");
+    EXPECT_EQ(help.code, 0);
+    EXPECT_NE(help.out.find("--shard i/n"), std::string::npos);
+}
+
+TEST(BenchCli, OrbitAndWalkthroughAverageOverTheirPoses) {
+    const fs::path dir = test::tempDir() / "bench-paths";
+    fs::create_directories(dir);
+    const fs::path scene = dir / "walk.json";
+    std::ofstream(scene) << R"({"objects": [{"shape": "plane", "size": [20, 0, 20]}, {"shape": "box", "size": [2, 2, 2], "pos": [0, 1, 0]}],
+        "camera": {"pos": [0, 4, 12], "look-at": [0, 0, 0],
+                   "path": [{"time": 0, "pos": [0, 4, 12], "look-at": [0, 0, 0]},
+                            {"time": 2, "pos": [12, 4, 0], "look-at": [0, 0, 0]}]}})";
+    for (const std::string camera : {"--orbit 2", "--walkthrough"}) {
+        const fs::path csv = dir / "p.csv", json = dir / "p.json";
+        const Result r = run("bench --quiet --scene " + scene.string() + " --size 32x18 --lights 0,5 " + camera +
+                             " --frames 2 --lpp-poses 2 --csv " + csv.string() + " --json " + json.string());
+        ASSERT_EQ(r.code, 0) << camera << ": " << r.err;
+        std::ifstream jf(json);
+        const nlohmann::json j = nlohmann::json::parse(jf);
+        EXPECT_EQ(j["settings"]["camera"].get<std::string>().rfind(camera == "--orbit 2" ? "orbit 2" : "walkthrough", 0), 0u);
+        EXPECT_EQ(j["settings"]["lpp_poses"], "2");
+        EXPECT_EQ(j["baseline"]["axis"], "lights");
+        ASSERT_EQ(j["configs"].size(), 2u);
+        EXPECT_EQ(j["configs"][0]["lpp"], 0.0);  // no lights, no light-shader invocations
+        EXPECT_GT(j["configs"][1]["lpp"].get<double>(), 0.0);
+        for (const auto& c : j["configs"]) EXPECT_EQ(c["samples"].size(), 2u);
+    }
+}

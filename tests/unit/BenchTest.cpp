@@ -1,0 +1,193 @@
+// The parts of `bench` that need no GL: the grid and its shards, the samples
+// CSV and merging, the bootstrap interval, the baseline and the tables.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "renderer/Error.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BenchResults.h"
+#include "renderer/bench/BenchSummary.h"
+#include "renderer/bench/Bootstrap.h"
+
+using namespace dw;
+
+namespace {
+
+BenchGrid smallGrid() {
+    BenchGrid g;
+    g.sizes = {{64, 36}, {96, 54}};
+    g.lights = {1, 10};
+    g.knobAxes = {BenchGrid::parseSweep("lighting.strategy=stencil_volumes,fullscreen")};
+    return g;
+}
+
+// Synthetic results: every configuration's frame takes `scale(config)` ms
+// times noise, with two passes under it.
+BenchResults synthetic(const BenchGrid& grid, int frames, double (*scale)(const BenchConfig&)) {
+    BenchResults r;
+    for (const auto& a : grid.knobAxes) r.knobAxes.push_back(a.knob);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> noise(1.0, 0.03);
+    long long seq = 0;
+    for (const auto& c : grid.configs()) {
+        r.configs.push_back({c, 0.5 * c.lights, 1.5});
+        for (int k = 0; k < frames; ++k) {
+            const double ms = scale(c) * noise(rng);
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "geometry", ms * 0.25, 0.1});
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "lighting", ms * 0.7, 0.2});
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "frame", ms, 0.4});
+            ++seq;
+        }
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST(BenchGrid, OrdersSizeThenLightsThenKnobsAndShardsByIndex) {
+    const BenchGrid g = smallGrid();
+    const auto configs = g.configs();
+    ASSERT_EQ(configs.size(), 8u);
+    EXPECT_EQ(g.count(), 8u);
+    EXPECT_EQ(configs[0].size(), "64x36");
+    EXPECT_EQ(configs[0].lights, 1);
+    EXPECT_EQ(configs[0].knobValues[0], "stencil_volumes");
+    EXPECT_EQ(configs[1].knobValues[0], "fullscreen");
+    EXPECT_EQ(configs[2].lights, 10);
+    EXPECT_EQ(configs[4].size(), "96x54");
+    for (size_t i = 0; i < configs.size(); ++i) EXPECT_EQ(configs[i].index, static_cast<int>(i));
+
+    // Comparison groups: the strategies at one size and light count go together.
+    EXPECT_EQ(g.groupsAlong(configs, "lighting.strategy"), (std::vector<int>{0, 0, 1, 1, 2, 2, 3, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, "lights"), (std::vector<int>{0, 1, 0, 1, 2, 3, 2, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, "size"), (std::vector<int>{0, 1, 2, 3, 0, 1, 2, 3}));
+    EXPECT_EQ(g.groupsAlong(configs, ""), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+
+    const BenchShard s = BenchShard::parse("1/3");
+    EXPECT_TRUE(s.takes(1));
+    EXPECT_TRUE(s.takes(4));
+    EXPECT_FALSE(s.takes(3));
+    for (const char* bad : {"3/3", "1", "-1/2", "a/b", "1/0", "0/"}) EXPECT_THROW(BenchShard::parse(bad), Error) << bad;
+    EXPECT_THROW(BenchGrid::parseSweep("lighting.strategy"), Error);
+    EXPECT_THROW(BenchGrid::parseSweep("k=a,,b"), Error);
+    EXPECT_THROW(BenchGrid::parseSweep("k=a,a"), Error);
+    // No light counts: one column with the scene's own count.
+    BenchGrid plain;
+    plain.sizes = {{8, 8}};
+    EXPECT_EQ(plain.configs(17).at(0).lights, 17);
+}
+
+TEST(Bootstrap, IdenticalDistributionsContainOneTwiceAsSlowGivesTwo) {
+    std::mt19937 rng(11);
+    std::lognormal_distribution<double> ms(std::log(5.0), 0.05);
+    std::vector<double> a(40), b(40), slow(40);
+    for (auto& v : a) v = ms(rng);
+    for (auto& v : b) v = ms(rng);
+    for (auto& v : slow) v = 2.0 * ms(rng);
+    const RatioInterval same = bootstrapRatioOfMedians(a, b, 2000, 1);
+    ASSERT_TRUE(same.valid());
+    EXPECT_LE(same.low, 1.0);
+    EXPECT_GE(same.high, 1.0);
+    EXPECT_LT(same.high - same.low, 0.2);
+    const RatioInterval twice = bootstrapRatioOfMedians(slow, b, 2000, 1);
+    EXPECT_NEAR(twice.ratio, 2.0, 0.1);
+    EXPECT_LE(twice.low, twice.ratio);
+    EXPECT_GE(twice.high, twice.ratio);
+    EXPECT_GT(twice.low, 1.8);
+    EXPECT_LT(twice.high, 2.2);
+    // Seeded: the same call gives the same interval.
+    const RatioInterval again = bootstrapRatioOfMedians(slow, b, 2000, 1);
+    EXPECT_EQ(again.low, twice.low);
+    EXPECT_EQ(again.high, twice.high);
+    EXPECT_FALSE(bootstrapRatioOfMedians({}, b).valid());
+    EXPECT_FALSE(bootstrapRatioOfMedians(a, {0.0, 0.0}).valid());
+    EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0, 10.0}), 2.5);
+}
+
+TEST(BenchResults, CsvRoundTripsAndShardsMergeIntoTheGrid) {
+    const BenchGrid g = smallGrid();
+    const BenchResults all = synthetic(g, 3, [](const BenchConfig& c) { return 1.0 + c.lights; });
+    const std::string csv = all.csv();
+    EXPECT_EQ(csv.substr(0, csv.find('\n')),
+              "config,size,lights,lighting.strategy,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms");
+    const BenchResults back = BenchResults::parseCsv(csv, "all.csv");
+    ASSERT_EQ(back.configs.size(), 8u);
+    ASSERT_EQ(back.samples.size(), all.samples.size());
+    EXPECT_EQ(back.csv(), csv);
+    EXPECT_DOUBLE_EQ(back.configs[2].lpp, 5.0);
+
+    // Shards 0/2 and 1/2 of the same grid merge back to it.
+    BenchResults parts[2];
+    for (int i = 0; i < 2; ++i) {
+        parts[i].knobAxes = all.knobAxes;
+        for (const auto& c : all.configs)
+            if (c.config.index % 2 == i) parts[i].configs.push_back(c);
+        for (const auto& s : all.samples)
+            if (s.config % 2 == i) parts[i].samples.push_back(s);
+    }
+    const BenchResults merged = BenchResults::merge(
+        {BenchResults::parseCsv(parts[1].csv(), "b.csv"), BenchResults::parseCsv(parts[0].csv(), "a.csv")}, {"b.csv", "a.csv"});
+    EXPECT_EQ(merged.csv(), csv);
+    // The same shard twice is a clash, and so are other knob columns.
+    EXPECT_THROW(BenchResults::merge({parts[0], parts[0]}, {"a.csv", "a2.csv"}), Error);
+    BenchResults other = parts[1];
+    other.knobAxes = {"ssao.samples"};
+    EXPECT_THROW(BenchResults::merge({parts[0], other}, {}), Error);
+
+    EXPECT_THROW(BenchResults::parseCsv("a,b\n", "x.csv"), FileError);
+    const std::string broken = csv.substr(0, csv.find('\n') + 1) + "0,64x36,1,volumes,,,zero,0,0,frame,1,1\n";
+    try {
+        BenchResults::parseCsv(broken, "x.csv");
+        FAIL() << "no error";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("x.csv: line 2: sample"), std::string::npos) << e.what();
+    }
+}
+
+TEST(BenchSummary, RatiosAgainstTheFirstValueOfTheFirstSweptKnob) {
+    const BenchGrid g = smallGrid();
+    // fullscreen twice as slow as stencil_volumes, in every size and light count.
+    const BenchResults r = synthetic(g, 25, [](const BenchConfig& c) {
+        return (c.knobValues[0] == "fullscreen" ? 2.0 : 1.0) * (1.0 + c.lights) * (c.width / 64.0);
+    });
+    const BenchBaseline b = chooseBaseline(r, "");
+    EXPECT_EQ(b.axis, "lighting.strategy");
+    EXPECT_EQ(b.value, "stencil_volumes");
+    const BenchBaseline fromGrid = chooseBaseline(g, 0, "");
+    EXPECT_EQ(fromGrid.axis, b.axis);
+    EXPECT_EQ(fromGrid.value, b.value);
+    const BenchSummary s = summarize(r, b, 1000);
+    ASSERT_EQ(s.rows.size(), 8u);
+    for (const auto& row : s.rows) {
+        const bool full = r.find(row.config)->config.knobValues[0] == "fullscreen";
+        EXPECT_EQ(row.baseline, full ? row.config - 1 : row.config);
+        ASSERT_TRUE(row.ratio.valid());
+        EXPECT_NEAR(row.ratio.ratio, full ? 2.0 : 1.0, 0.1);
+        EXPECT_LE(row.ratio.low, row.ratio.ratio);
+        EXPECT_GE(row.ratio.high, row.ratio.ratio);
+        ASSERT_NE(row.frame(), nullptr);
+        EXPECT_EQ(row.frame()->gpu.count, 25);
+        EXPECT_EQ(row.series.back().series, "frame");
+    }
+    EXPECT_EQ(s.passes, (std::vector<std::string>{"geometry", "lighting"}));
+
+    const std::string table = markdownTable(r, s);
+    EXPECT_NE(table.find("| config | size | lights | lighting.strategy | LPP |"), std::string::npos) << table;
+    EXPECT_NE(table.find("95% CI"), std::string::npos);
+    EXPECT_NE(table.find("1 (baseline)"), std::string::npos);
+    int rows = 0;  // table lines that are neither the header nor the rule under it
+    for (size_t p = 0; p < table.size(); p = table.find('\n', p) + 1)
+        rows += table.compare(p, 2, "| ") == 0 && table.compare(p, 5, "| ---") != 0;
+    EXPECT_EQ(rows, 8 + 1);
+    EXPECT_NE(markdownPassTable(r, s).find("| geometry | lighting | frame |"), std::string::npos);
+
+    // --baseline picks another axis; a value the run never had is an error.
+    const BenchBaseline lights = chooseBaseline(r, "lights=10");
+    EXPECT_EQ(lights.axis, "lights");
+    const BenchSummary byLights = summarize(r, lights, 500);
+    EXPECT_NEAR(byLights.find(0)->ratio.ratio, 2.0 / 11.0, 0.02);
+    EXPECT_THROW(chooseBaseline(r, "lights=3"), Error);
+    EXPECT_THROW(chooseBaseline(r, "ssao.samples=8"), Error);
+    EXPECT_THROW(chooseBaseline(r, "lights"), Error);
+}
