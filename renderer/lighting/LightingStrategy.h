@@ -28,7 +28,8 @@ class KnobRegistry;
 // and the unit sphere and cone volume meshes (renderer/LightVolume.h).
 class LightShading {
 public:
-    void setup(gl::ShaderLibrary& shaders);
+    // `defines`: the lighting pass's (lighting.attenuation's choices).
+    void setup(gl::ShaderLibrary& shaders, const std::vector<std::string>& defines);
     const gl::Program& fullscreen(bool counting) const { return counting ? *fullscreenCounting_ : *fullscreen_; }
     const gl::Program& volume(bool counting) const { return counting ? *volumeCounting_ : *volume_; }
     const gl::Program& stencil() const { return *stencil_; }
