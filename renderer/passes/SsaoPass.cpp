@@ -25,8 +25,8 @@ float hash01(std::uint32_t x) {
 
 SsaoPass::SsaoPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("ssao.enabled", true, "ssao", "screen-space ambient occlusion on the ambient term");
-    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao", "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)",
-                            "", true);
+    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao",
+                            "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)", "", true);
     radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao", "radius of the sampling hemisphere in scene units",
                              "units", false, true);
     intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -166,8 +165,6 @@ TEST(ParamBlocks, TheComparisonCatchesABlockMirroredByPosition) {
         static_cast<GLint>(sizeof(gpu::SsaoBlurParams)));  // same size: a size check alone passes
     const auto diff = mismatches(describe<gpu::SsaoBlurParams>(), *layout);
     EXPECT_GE(diff.size(), gpu::SsaoBlurParams::fields().size()) << joined(diff);
-    std::printf("a block mirrored by position, compared with gpu::SsaoBlurParams:%s\n",
-                joined(diff).c_str());
 }
 
 TEST(ParamBlocks, EnumDefinesCarryTheKnobsChoiceIndices) {
