@@ -28,8 +28,7 @@ class KnobRegistry;
 // and the unit sphere and cone volume meshes (renderer/LightVolume.h).
 class LightShading {
 public:
-    // `defines`: the lighting pass's (lighting.attenuation's choices).
-    void setup(gl::ShaderLibrary& shaders, const std::vector<std::string>& defines);
+    void setup(gl::ShaderLibrary& shaders);
     const gl::Program& fullscreen(bool counting) const { return counting ? *fullscreenCounting_ : *fullscreen_; }
     const gl::Program& volume(bool counting) const { return counting ? *volumeCounting_ : *volume_; }
     const gl::Program& stencil() const { return *stencil_; }

@@ -33,7 +33,7 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
     attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, "classic", "lighting",
                                  "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
                                  "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");
-    defines_ = knobs.choiceDefines(attenuation_);
+    windowed_ = knobs.choiceIndex(attenuation_, "windowed");
     windowExponent_ = knobs.addFloat("lighting.window_exponent", 20.0, 2.0, 64.0, "lighting",
                                      "k in the windowed attenuation 1 - (d/r)^k (seed 000 uses 20)");
     ambientSpecular_ = knobs.addBool("lighting.ambient_specular", true, "lighting",
@@ -66,7 +66,7 @@ PassIO LightingPass::inputs(const KnobRegistry&) const {
 
 void LightingPass::setup(gl::ShaderLibrary& shaders) {
     ambientProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/ambient.frag"});
-    shading_.setup(shaders, defines_);
+    shading_.setup(shaders);
     for (auto& s : strategies_) s->setup(shaders);
     params_.create();
     white_ = gl::Texture::create2D(GL_R8, 1, 1);
@@ -83,7 +83,7 @@ void LightingPass::execute(FrameContext& ctx) {
     const bool occlusion = ctx.produced("ssao.blurred");
     const bool sky = ctx.produced("sky");
     gpu::LightingParams params{};
-    params.attenuation = k.get(attenuation_);
+    params.windowed = k.get(attenuation_) == windowed_ ? 1 : 0;
     params.occlusion = occlusion ? 1 : 0;
     params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     params.sky = sky ? 1 : 0;

@@ -47,7 +47,7 @@ public:
 private:
     std::vector<std::unique_ptr<LightingStrategy>> strategies_;
     EnumKnob strategy_, attenuation_;
-    std::vector<std::string> defines_;  // LIGHTING_ATTENUATION_*
+    int windowed_ = 0;  // lighting.attenuation = windowed
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
 

@@ -26,7 +26,7 @@ void main() {
     }
     Light light = lights[uLight];
     vec3 c = shadeLight(light, s.position, s.normal, s.diffuse, s.specular, s.exponent,
-                        lightingParams.attenuation == LIGHTING_ATTENUATION_WINDOWED, lightingParams.windowExponent);
+                        lightingParams.windowed != 0, lightingParams.windowExponent);
     if (light.shadowParams.x > 0.5 && any(greaterThan(c, vec3(0.0)))) {
         bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
         vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;

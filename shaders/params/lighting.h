@@ -1,13 +1,15 @@
-// dw::LightingPass's parameters, shared by shaders/lighting/ambient.frag and
-// shaders/lighting/light.frag; see prelude.h. `attenuation` is
-// lighting.attenuation's choice, compared with LIGHTING_ATTENUATION_*
-// (KnobRegistry::choiceDefines, passed to the light shaders by LightShading).
+// dw::LightingPass's parameters, shared by shaders/lighting/ambient.frag,
+// shaders/lighting/light.frag and any strategy's shader; see prelude.h.
+// The shaders only ask whether lighting.attenuation is "windowed", so the
+// pass looks that choice up by name and sends a flag: the shared lighting
+// code needs no defines, and strategies compile their programs without the
+// pass's help.
 #ifndef DW_PARAMS_LIGHTING_H
 #define DW_PARAMS_LIGHTING_H
 #include "prelude.h"
 
 #define DW_LIGHTING_PARAMS(FIELD, ARRAY)                                                  \
-    FIELD(int, attenuation)      /* lighting.attenuation */                               \
+    FIELD(int, windowed)         /* lighting.attenuation = windowed */                    \
     FIELD(int, occlusion)        /* ssao.blurred ran: scale the ambient term by it */     \
     FIELD(int, ambientSpecular)  /* lighting.ambient_specular */                          \
     FIELD(int, sky)              /* the sky pass ran: its texture is the background */    \
