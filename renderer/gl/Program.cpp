@@ -1,5 +1,6 @@
 #include "renderer/gl/Program.h"
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <string>
 
@@ -68,6 +69,48 @@ Program Program::link(const std::vector<ShaderStage>& stages) {
 }
 
 void Program::use() const { glUseProgram(id()); }
+
+std::vector<std::string> Program::uniformBlockNames() const {
+    GLint count = 0, maxLength = 0;
+    glGetProgramInterfaceiv(id(), GL_UNIFORM_BLOCK, GL_ACTIVE_RESOURCES, &count);
+    glGetProgramInterfaceiv(id(), GL_UNIFORM_BLOCK, GL_MAX_NAME_LENGTH, &maxLength);
+    std::vector<std::string> names;
+    for (GLint i = 0; i < count; ++i) {
+        std::string name(static_cast<size_t>(std::max(maxLength, 1)), '\0');
+        GLsizei length = 0;
+        glGetProgramResourceName(id(), GL_UNIFORM_BLOCK, static_cast<GLuint>(i), maxLength, &length, name.data());
+        name.resize(static_cast<size_t>(length));
+        names.push_back(name);
+    }
+    return names;
+}
+
+std::optional<UniformBlockLayout> Program::uniformBlock(const std::string& blockName) const {
+    const GLuint block = glGetProgramResourceIndex(id(), GL_UNIFORM_BLOCK, blockName.c_str());
+    if (block == GL_INVALID_INDEX) return std::nullopt;
+    UniformBlockLayout layout;
+    const GLenum blockProps[] = {GL_BUFFER_BINDING, GL_BUFFER_DATA_SIZE, GL_NUM_ACTIVE_VARIABLES};
+    GLint values[3] = {};
+    glGetProgramResourceiv(id(), GL_UNIFORM_BLOCK, block, 3, blockProps, 3, nullptr, values);
+    layout.binding = values[0];
+    layout.dataSize = values[1];
+    std::vector<GLint> variables(static_cast<size_t>(values[2]));
+    const GLenum activeVariables = GL_ACTIVE_VARIABLES;
+    if (!variables.empty())
+        glGetProgramResourceiv(id(), GL_UNIFORM_BLOCK, block, 1, &activeVariables, values[2], nullptr, variables.data());
+    const std::string prefix = blockName + ".";
+    for (GLint v : variables) {
+        const GLenum props[] = {GL_NAME_LENGTH, GL_TYPE, GL_OFFSET, GL_ARRAY_SIZE, GL_ARRAY_STRIDE};
+        GLint p[5] = {};
+        glGetProgramResourceiv(id(), GL_UNIFORM, static_cast<GLuint>(v), 5, props, 5, nullptr, p);
+        std::string name(static_cast<size_t>(std::max(p[0], 1)), '\0');
+        glGetProgramResourceName(id(), GL_UNIFORM, static_cast<GLuint>(v), p[0], nullptr, name.data());
+        while (!name.empty() && name.back() == '\0') name.pop_back();
+        if (name.rfind(prefix, 0) == 0) name.erase(0, prefix.size());
+        layout.members.push_back({name, static_cast<GLenum>(p[1]), p[2], p[3], p[4]});
+    }
+    return layout;
+}
 
 void Program::set(GLint l, int v) const { glProgramUniform1i(id(), l, v); }
 void Program::set(GLint l, unsigned v) const { glProgramUniform1ui(id(), l, v); }

@@ -2,12 +2,29 @@
 // A linked GLSL program. Uniforms are set by explicit location
 // (layout(location = N) in the shader), never looked up by string.
 #include <glm/glm.hpp>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "renderer/gl/GlObject.h"
 #include "renderer/gl/ShaderSource.h"
 
 namespace dw::gl {
+
+// A uniform block as the linked program lays it out (program introspection),
+// for checking it against the C++ struct that fills it.
+struct UniformBlockLayout {
+    struct Member {
+        std::string name;       // without the block name: "radius", "kernel[0]"
+        GLenum type = 0;        // GL_FLOAT, GL_INT_VEC2, ...
+        GLint offset = -1;      // bytes from the start of the block
+        GLint arraySize = 1;
+        GLint arrayStride = 0;  // 0 when not an array
+    };
+    GLint binding = -1;
+    GLint dataSize = 0;         // bytes the buffer must hold
+    std::vector<Member> members;
+};
 
 struct ShaderStage {
     GLenum type;  // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
@@ -23,6 +40,12 @@ public:
     GLuint id() const { return name_.id(); }
     explicit operator bool() const { return static_cast<bool>(name_); }
     void use() const;
+
+    // The layout of uniform block `blockName`, or nothing when the program
+    // has no such block.
+    std::optional<UniformBlockLayout> uniformBlock(const std::string& blockName) const;
+    // The names of all its uniform blocks.
+    std::vector<std::string> uniformBlockNames() const;
 
     void set(GLint location, int v) const;
     void set(GLint location, unsigned v) const;

@@ -104,4 +104,10 @@ fs::path ShaderLibrary::locateRoot() {
                 "); set DW_SHADER_DIR to the project's shaders/ folder");
 }
 
+std::vector<const ShaderLibrary::Entry*> ShaderLibrary::programs() const {
+    std::vector<const Entry*> out;
+    for (const auto& [key, entry] : entries_) out.push_back(entry.get());
+    return out;
+}
+
 }  // namespace dw::gl

@@ -51,6 +51,8 @@ public:
     // Errors from the last reload still unresolved.
     std::vector<std::string> pendingErrors() const;
     size_t programCount() const { return entries_.size(); }
+    // Every program compiled so far, in key order (tests inspect their blocks).
+    std::vector<const Entry*> programs() const;
 
     // Finds the shader directory: $DW_SHADER_DIR, the source tree, or next to
     // the executable. Throws dw::Error listing where it looked.

@@ -1,6 +1,7 @@
 #include "renderer/knobs/KnobRegistry.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -111,6 +112,42 @@ EnumKnob KnobRegistry::addEnum(std::string name, std::vector<std::string> choice
     s.description = std::move(description);
     s.tradeoff = tradeoff;
     return {add(std::move(s))};
+}
+
+EnumKnob KnobRegistry::addEnum(std::string name, std::vector<std::string> choices, const std::string& defaultChoice,
+                               std::string pass, std::string description, bool tradeoff) {
+    const auto it = std::find(choices.begin(), choices.end(), defaultChoice);
+    if (it == choices.end()) throw Error("knob '" + name + "': the default '" + defaultChoice + "' is not one of its choices");
+    const int def = static_cast<int>(it - choices.begin());
+    return addEnum(std::move(name), std::move(choices), def, std::move(pass), std::move(description), tradeoff);
+}
+
+int KnobRegistry::choiceIndex(EnumKnob k, const std::string& name) const {
+    const KnobSpec& s = specs_[k.id];
+    const auto it = std::find(s.choices.begin(), s.choices.end(), name);
+    if (it == s.choices.end()) {
+        std::string all;
+        for (const auto& c : s.choices) all += (all.empty() ? "" : ", ") + c;
+        throw Error("knob '" + s.name + "' has no choice '" + name + "' (choices: " + all + ")");
+    }
+    return static_cast<int>(it - s.choices.begin());
+}
+
+std::string KnobRegistry::choiceDefineName(const std::string& knob, const std::string& choice) {
+    std::string out = knob + "_" + choice;
+    for (char& c : out) {
+        const auto u = static_cast<unsigned char>(c);
+        c = std::isalnum(u) ? static_cast<char>(std::toupper(u)) : '_';
+    }
+    return out;
+}
+
+std::vector<std::string> KnobRegistry::choiceDefines(EnumKnob k) const {
+    const KnobSpec& s = specs_[k.id];
+    std::vector<std::string> defines;
+    for (size_t i = 0; i < s.choices.size(); ++i)
+        defines.push_back(choiceDefineName(s.name, s.choices[i]) + "=" + std::to_string(i));
+    return defines;
 }
 
 std::optional<int> KnobRegistry::find(const std::string& name) const {

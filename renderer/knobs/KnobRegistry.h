@@ -41,6 +41,9 @@ public:
                        bool logarithmic = false);
     EnumKnob addEnum(std::string name, std::vector<std::string> choices, int def, std::string pass,
                      std::string description, bool tradeoff = false);
+    // The default by name; throws dw::Error if it is not one of the choices.
+    EnumKnob addEnum(std::string name, std::vector<std::string> choices, const std::string& defaultChoice,
+                     std::string pass, std::string description, bool tradeoff = false);
 
     // Another pass's knob, by name, checked once (RenderPass::connect): throws
     // dw::Error if it is not declared or is of another type.
@@ -54,6 +57,16 @@ public:
     float get(FloatKnob k) const { return static_cast<float>(values_[k.id]); }
     int get(EnumKnob k) const { return static_cast<int>(values_[k.id]); }
     std::string choice(EnumKnob k) const { return specs_[k.id].choices[get(k)]; }
+    // The index of choice `name`, looked up once by a pass that branches on
+    // the value in C++; throws dw::Error naming the choices if there is none.
+    int choiceIndex(EnumKnob k, const std::string& name) const;
+    // The choices as GLSL defines, so shaders compare with names whose values
+    // come from this one declaration: tonemap.operator's choices simple,
+    // reinhard, ... give {"TONEMAP_OPERATOR_SIMPLE=0", "TONEMAP_OPERATOR_REINHARD=1", ...}.
+    std::vector<std::string> choiceDefines(EnumKnob k) const;
+    // "tonemap.operator", "reinhard" -> "TONEMAP_OPERATOR_REINHARD": upper
+    // case, anything but letters and digits becomes '_'.
+    static std::string choiceDefineName(const std::string& knob, const std::string& choice);
 
     size_t size() const { return specs_.size(); }
     const KnobSpec& spec(int id) const { return specs_[id]; }

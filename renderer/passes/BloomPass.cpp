@@ -9,24 +9,18 @@
 
 namespace dw {
 
-namespace {
-struct BloomParamsGpu {
-    glm::ivec4 modes{0};
-    glm::vec4 values{0.0f};
-};
-}  // namespace
-
 BloomPass::BloomPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("bloom.enabled", true, "bloom", "bloom around pixels brighter than the threshold");
-    method_ = knobs.addEnum("bloom.method", {"mip_sum", "dual_filter"}, MipSum, "bloom",
+    method_ = knobs.addEnum("bloom.method", {"mip_sum", "dual_filter"}, "mip_sum", "bloom",
                             "Ferko's average of mip levels (seed 000 5.4) or Jimenez 2014's dual-filter chain", true);
+    mipSum_ = knobs.choiceIndex(method_, "mip_sum");
     threshold_ = knobs.addFloat("bloom.threshold", 2.0, 0.0, 1e5, "bloom",
                                 "luminance subtracted before blurring, as a multiple of the log-average (seed 002: 1)",
                                 "x avg", false, true);
     intensity_ = knobs.addFloat("bloom.intensity", 0.6, 0.0, 8.0, "bloom", "strength of the composited bloom");
     levels_ = knobs.addInt("bloom.levels", 5, 1, kMaxLevels, "bloom", "mip levels blurred and summed (wider bloom)", "",
                            true);
-    composite_ = knobs.addEnum("bloom.composite", {"ldr_luminance_alpha", "hdr_add"}, 0, "bloom",
+    composite_ = knobs.addEnum("bloom.composite", {"ldr_luminance_alpha", "hdr_add"}, "ldr_luminance_alpha", "bloom",
                                "on the tone-mapped image with alpha = its luminance (seed 002 step 10, seed 004), "
                                "or added to the HDR image before tone mapping");
 }
@@ -60,7 +54,7 @@ void BloomPass::setup(gl::ShaderLibrary& shaders) {
     down_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/down.frag"});
     up_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/up.frag"});
     scale_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "bloom/scale.frag"});
-    params_ = gl::Buffer::create(sizeof(BloomParamsGpu), nullptr, true, "bloom params");
+    params_.create();
 }
 
 void BloomPass::resize(int width, int height, OutputRegistry& outputs) {
@@ -94,24 +88,27 @@ void BloomPass::execute(FrameContext& ctx) {
     const gl::Framebuffer& resultFbo = result_.get(ctx, {"bloom.result"}, {}, "bloom result");
     const int w = brightTexture.width(), h = brightTexture.height();
     const int levels = std::min(k.get(levels_), brightTexture.levels() - 1);
-    const auto method = static_cast<Method>(k.get(method_));
-    auto params = [&](glm::vec4 values) {
-        BloomParamsGpu p;
-        p.modes = glm::ivec4(k.get(nanGuard_) ? 1 : 0, levels, 0, 0);
-        p.values = values;
-        params_.update(0, sizeof(p), &p);
-        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    const bool mipSum = k.get(method_) == mipSum_;
+    // Each draw sets what its shader reads; the rest keeps its last value.
+    gpu::BloomParams p{};
+    p.nanGuard = k.get(nanGuard_) ? 1 : 0;
+    p.levels = levels;
+    auto uploadTexels = [&](const gl::Texture* source, const gl::Texture& target) {
+        if (source) p.sourceTexel = glm::vec2(1.0f / source->width(), 1.0f / source->height());
+        p.targetTexel = glm::vec2(1.0f / target.width(), 1.0f / target.height());
+        params_.upload(p, binding::kPassUbo);
     };
     // 1. Threshold into level 0 of the bright chain.
-    params(glm::vec4(k.get(threshold_), 1.0f / hdr.width(), 1.0f / hdr.height(), 0.0f));
+    p.threshold = k.get(threshold_);
+    params_.upload(p, binding::kPassUbo);
     hdr.bind(0);
     ctx.texture("luminance.stats").bind(1);
     brightProgram_->use();
     drawInto(brightFbo, w, h);
 
-    if (method == MipSum) {
+    if (mipSum) {
         brightTexture.generateMipmaps();
-        params(glm::vec4(0.0f, 0.0f, 1.0f / w, 1.0f / h));
+        uploadTexels(nullptr, brightTexture);
         brightTexture.bind(0);
         mipsum_->use();
         drawInto(resultFbo, w, h);
@@ -123,7 +120,7 @@ void BloomPass::execute(FrameContext& ctx) {
         const gl::Texture* source = &brightTexture;
         for (int l = 1; l <= levels; ++l) {
             const gl::Texture& dst = down_chain_[l].texture;
-            params(glm::vec4(1.0f / source->width(), 1.0f / source->height(), 1.0f / dst.width(), 1.0f / dst.height()));
+            uploadTexels(source, dst);
             glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 0);
             source->bind(0);
             drawInto(down_chain_[l].fbo, dst.width(), dst.height());
@@ -136,7 +133,7 @@ void BloomPass::execute(FrameContext& ctx) {
         for (int l = levels - 1; l >= 0; --l) {
             const gl::Texture& same = l == 0 ? brightTexture : down_chain_[l].texture;
             const gl::Texture& dst = up_chain_[l].texture;
-            params(glm::vec4(1.0f / coarse->width(), 1.0f / coarse->height(), 1.0f / dst.width(), 1.0f / dst.height()));
+            uploadTexels(coarse, dst);
             coarse->bind(0);
             glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 0);
             same.bind(1);
@@ -144,7 +141,6 @@ void BloomPass::execute(FrameContext& ctx) {
             glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 1000);
             coarse = &dst;
         }
-        params(glm::vec4(0.0f));
         // With no coarser level (a tiny image) the bright image is the bloom.
         (levels > 0 ? up_chain_[0].texture : brightTexture).bind(0);
         scale_->use();
@@ -155,7 +151,7 @@ void BloomPass::execute(FrameContext& ctx) {
             ctx.outputs.bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
         }
     }
-    stats_ = std::string(method == MipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +
+    stats_ = std::string(mipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +
              std::to_string(w) + "x" + std::to_string(h);
 }
 

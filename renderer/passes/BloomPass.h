@@ -10,17 +10,17 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/bloom.h"
 
 namespace dw {
 
 class BloomPass : public RenderPass {
 public:
-    enum Method { MipSum = 0, DualFilter = 1 };
     static constexpr int kMaxLevels = 6;
     explicit BloomPass(KnobRegistry& knobs);
     const char* name() const override { return "bloom"; }
@@ -42,12 +42,13 @@ private:
     void drawInto(const gl::Framebuffer& fbo, int w, int h);
     BoolKnob enabled_, nanGuard_;
     EnumKnob method_;
+    int mipSum_ = 0;  // bloom.method = mip_sum
     FloatKnob threshold_, intensity_;
     IntKnob levels_;
     EnumKnob composite_;
     gl::ShaderLibrary::Handle brightProgram_, mipsum_, down_, up_, scale_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::BloomParams> params_;
     TargetFramebuffer bright_, result_;
     Target down_chain_[kMaxLevels + 1], up_chain_[kMaxLevels + 1];
     std::string stats_;

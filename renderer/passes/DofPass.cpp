@@ -1,18 +1,9 @@
 #include "renderer/passes/DofPass.h"
 
-#include <glm/glm.hpp>
-
 #include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
 
 namespace dw {
-
-namespace {
-struct DofParamsGpu {
-    glm::ivec4 modes{0};
-    glm::vec4 values{0.0f};
-};
-}  // namespace
 
 DofPass::DofPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("dof.enabled", false, "dof", "depth of field on the tone-mapped image");
@@ -39,7 +30,7 @@ std::string DofPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
 
 void DofPass::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "post/dof.frag"});
-    params_ = gl::Buffer::create(sizeof(DofParamsGpu), nullptr, true, "dof params");
+    params_.create();
 }
 
 void DofPass::execute(FrameContext& ctx) {
@@ -47,13 +38,18 @@ void DofPass::execute(FrameContext& ctx) {
     ctx.currentImage().bind(0);
     ctx.texture("gbuffer.depth").bind(1);
     program_->use();
+    gpu::DofParams p{};
+    p.nearBlur = k.get(near_) ? 1 : 0;
+    p.farBlur = k.get(far_) ? 1 : 0;
+    p.sampleCount = k.get(samples_);
+    p.focusDistance = k.get(focus_);
+    p.focusRange = k.get(range_);
+    p.maxRadius = k.get(radius_);
+    p.srgbInput = k.get(srgb_) ? 1 : 0;
     for (int cocOnly : {0, 1}) {
         if (cocOnly && !ctx.wants("dof.coc")) continue;
-        DofParamsGpu p;
-        p.modes = glm::ivec4(k.get(near_) ? 1 : 0, k.get(far_) ? 1 : 0, k.get(samples_), cocOnly);
-        p.values = glm::vec4(k.get(focus_), k.get(range_), k.get(radius_), k.get(srgb_) ? 1.0f : 0.0f);
-        params_.update(0, sizeof(p), &p);
-        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+        p.cocOnly = cocOnly;
+        params_.upload(p, binding::kPassUbo);
         if (cocOnly) coc_.get(ctx, {"dof.coc"}, {}, "circle of confusion").bind();
         else result_.get(ctx, {"dof.result"}, {}, "depth of field").bind();
         triangle_.draw();

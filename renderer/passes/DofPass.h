@@ -6,11 +6,12 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/dof.h"
 
 namespace dw {
 
@@ -35,7 +36,7 @@ private:
     IntKnob samples_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::DofParams> params_;
     TargetFramebuffer result_, coc_;
 };
 

@@ -1,13 +1,31 @@
 #include "renderer/passes/FxaaPass.h"
 
-#include <glm/glm.hpp>
+#include <iterator>
+
+#include "renderer/scene/GpuScene.h"
 
 namespace dw {
 
+namespace {
+// fxaa.quality's choices with the search steps each stands for, in one place.
+struct Quality {
+    const char* name;
+    int steps;
+};
+constexpr Quality kQualities[] = {{"low", 4}, {"medium", 8}, {"high", 12}};
+}  // namespace
+
 FxaaPass::FxaaPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("fxaa.enabled", true, "fxaa", "fast approximate anti-aliasing of the final image");
-    quality_ = knobs.addEnum("fxaa.quality", {"low", "medium", "high"}, 1, "fxaa",
-                             "how far the search along an edge goes (4, 8 or 12 steps)", true);
+    std::vector<std::string> names;
+    std::string steps;
+    for (const Quality& q : kQualities) {
+        steps += names.empty() ? "" : (names.size() + 1 == std::size(kQualities) ? " or " : ", ");
+        steps += std::to_string(q.steps);
+        names.emplace_back(q.name);
+    }
+    quality_ = knobs.addEnum("fxaa.quality", names, "medium", "fxaa",
+                             "how far the search along an edge goes (" + steps + " steps)", true);
     threshold_ = knobs.addFloat("fxaa.edge_threshold", 0.125, 0.03, 0.5, "fxaa",
                                 "local contrast, relative to the brightest neighbour, that marks an edge", "", true);
     thresholdMin_ = knobs.addFloat("fxaa.edge_threshold_min", 0.0312, 0.0, 0.2, "fxaa",
@@ -23,6 +41,7 @@ std::string FxaaPass::skipReason(const KnobRegistry& knobs, const Scene&) const 
 void FxaaPass::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "post/fxaa.frag"});
     linear_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "fxaa linear");
+    params_.create();
 }
 
 void FxaaPass::execute(FrameContext& ctx) {
@@ -32,10 +51,13 @@ void FxaaPass::execute(FrameContext& ctx) {
     // the shared image itself nearest for everyone else.
     input.bind(0);
     linear_.bind(0);
+    gpu::FxaaParams p{};
+    p.edgeThreshold = k.get(threshold_);
+    p.edgeThresholdMin = k.get(thresholdMin_);
+    p.subpixel = k.get(subpixel_);
+    p.searchSteps = kQualities[k.get(quality_)].steps;
+    params_.upload(p, binding::kPassUbo);
     program_->use();
-    program_->set(0, glm::vec4(k.get(threshold_), k.get(thresholdMin_), k.get(subpixel_), 0.0f));
-    static const int steps[] = {4, 8, 12};
-    program_->set(1, steps[k.get(quality_)]);
     target_.get(ctx, {"fxaa.result"}, {}, "FXAA").bind();
     triangle_.draw();
 }

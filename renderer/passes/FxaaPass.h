@@ -5,10 +5,12 @@
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/fxaa.h"
 
 namespace dw {
 
@@ -32,6 +34,7 @@ private:
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer target_;
     gl::Sampler linear_;
+    gl::ParamBuffer<gpu::FxaaParams> params_;
 };
 
 }  // namespace dw

@@ -13,12 +13,6 @@ namespace dw {
 
 namespace {
 
-// std140 mirror of LightingParams in shaders/lighting/params.glsl.
-struct LightingParamsGpu {
-    glm::ivec4 modes{0};
-    glm::vec4 values{0.0f};
-};
-
 // Texture units 0-4 of the lighting shaders, in this order.
 const char* const kGBufferInputs[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
                                       "gbuffer.depth"};
@@ -36,9 +30,10 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
         description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + strategies_.back()->description();
     }
     strategy_ = knobs.addEnum("lighting.strategy", names, 0, "lighting", description);
-    attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, 0, "lighting",
+    attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, "classic", "lighting",
                                  "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
                                  "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");
+    windowed_ = knobs.choiceIndex(attenuation_, "windowed");
     windowExponent_ = knobs.addFloat("lighting.window_exponent", 20.0, 2.0, 64.0, "lighting",
                                      "k in the windowed attenuation 1 - (d/r)^k (seed 000 uses 20)");
     ambientSpecular_ = knobs.addBool("lighting.ambient_specular", true, "lighting",
@@ -73,7 +68,7 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
     ambientProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/ambient.frag"});
     shading_.setup(shaders);
     for (auto& s : strategies_) s->setup(shaders);
-    params_ = gl::Buffer::create(sizeof(LightingParamsGpu), nullptr, true, "lighting params");
+    params_.create();
     white_ = gl::Texture::create2D(GL_R8, 1, 1);
     const std::uint8_t one = 255;
     white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
@@ -87,10 +82,13 @@ void LightingPass::execute(FrameContext& ctx) {
 
     const bool occlusion = ctx.produced("ssao.blurred");
     const bool sky = ctx.produced("sky");
-    LightingParamsGpu params;
-    params.modes = glm::ivec4(k.get(attenuation_), occlusion ? 1 : 0, k.get(ambientSpecular_) ? 1 : 0, sky ? 1 : 0);
-    params.values = glm::vec4(k.get(windowExponent_), 0, 0, 0);
-    params_.update(0, sizeof(params), &params);
+    gpu::LightingParams params{};
+    params.windowed = k.get(attenuation_) == windowed_ ? 1 : 0;
+    params.occlusion = occlusion ? 1 : 0;
+    params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
+    params.sky = sky ? 1 : 0;
+    params.windowExponent = k.get(windowExponent_);
+    params_.upload(params, binding::kPassUbo);
 
     // The L-buffer gets its own copy of the G-buffer depth: the stencil test
     // writes stencil there while the shader samples gbuffer.depth.
@@ -112,7 +110,7 @@ void LightingPass::execute(FrameContext& ctx) {
         occlusionTexture->bind(5);
         if (skyTexture) skyTexture->bind(9);
         table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
-        params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+        params_.bind(binding::kPassUbo);
     };
     bindInputs();
 

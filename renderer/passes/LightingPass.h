@@ -16,12 +16,13 @@
 
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/lighting/LightingStrategy.h"
+#include "shaders/params/lighting.h"
 
 namespace dw {
 
@@ -46,13 +47,14 @@ public:
 private:
     std::vector<std::unique_ptr<LightingStrategy>> strategies_;
     EnumKnob strategy_, attenuation_;
+    int windowed_ = 0;  // lighting.attenuation = windowed
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
 
     gl::ShaderLibrary::Handle ambientProgram_;
     LightShading shading_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::LightingParams> params_;
     gl::Texture white_;
     TargetFramebuffer target_, countingTarget_;
     Counts counts_;

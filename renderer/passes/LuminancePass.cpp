@@ -2,21 +2,37 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/scene/GpuScene.h"
+
 namespace dw {
+
+namespace {
+// Work groups (first pass: tiles) needed for `count` items of which a group takes `perGroup`.
+GLuint groups(std::size_t count, int perGroup) {
+    const auto n = static_cast<std::size_t>(perGroup);
+    return static_cast<GLuint>((count + n - 1) / n);
+}
+
+std::size_t tileCount(int width, int height) {
+    return static_cast<std::size_t>(groups(static_cast<std::size_t>(width), gpu::LUMINANCE_TILE)) *
+           groups(static_cast<std::size_t>(height), gpu::LUMINANCE_TILE);
+}
+}  // namespace
 
 LuminancePass::LuminancePass(KnobRegistry& knobs) {
     delta_ = knobs.addFloat("luminance.log_delta", 1e-4, 1e-8, 1.0, "luminance",
                             "delta in the log-average exp(mean(log(delta + L))) (seed 000 eq. 4.2), keeping black "
                             "pixels from sending the average to zero",
                             "", false, true);
-    background_ = knobs.addEnum("luminance.background", {"include", "exclude"}, 0, "luminance",
+    background_ = knobs.addEnum("luminance.background", {"include", "exclude"}, "include", "luminance",
                                 "whether background pixels (no geometry) count in the statistics; the seed counts "
                                 "every pixel, which lets a black background darken the log-average");
+    exclude_ = knobs.choiceIndex(background_, "exclude");
 }
 
 PassIO LuminancePass::inputs(const KnobRegistry& knobs) const {
     PassIO io{{"lbuffer"}, {}};
-    if (knobs.get(background_) == 1) io.inputs.push_back("gbuffer.depth");
+    if (knobs.get(background_) == exclude_) io.inputs.push_back("gbuffer.depth");
     return io;
 }
 
@@ -26,10 +42,11 @@ void LuminancePass::setup(gl::ShaderLibrary& shaders) {
     finalize_ = shaders.get({.compute = "tonemap/luminance_reduce.comp", .defines = {"FINALIZE"}});
     stats_ = gl::Texture::create2D(GL_RGBA32F, 1, 1);
     stats_.setFilter(GL_NEAREST, GL_NEAREST);
+    params_.create();
 }
 
 void LuminancePass::resize(int width, int height, OutputRegistry& outputs) {
-    const size_t tiles = static_cast<size_t>((width + 15) / 16) * ((height + 15) / 16);
+    const size_t tiles = tileCount(width, height);
     ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
     pong_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials B");
     outputs.bind("luminance.stats", &stats_, 4);
@@ -37,30 +54,34 @@ void LuminancePass::resize(int width, int height, OutputRegistry& outputs) {
 
 void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Texture* depthMask) {
     const int w = hdr.width(), h = hdr.height();
-    const size_t tiles = static_cast<size_t>((w + 15) / 16) * ((h + 15) / 16);
+    const size_t tiles = tileCount(w, h);
     if (ping_.size() < tiles * sizeof(glm::vec4)) {
         ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
         pong_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials B");
     }
     hdr.bind(0);
     if (depthMask) depthMask->bind(1);
+    gpu::LuminanceParams p{};
+    p.delta = delta;
+    p.skipBackground = depthMask ? 1 : 0;
+    params_.upload(p, binding::kPassUbo);
     first_->use();
-    first_->set(1, delta);
-    first_->set(2, depthMask ? 1 : 0);
     ping_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-    glDispatchCompute(static_cast<GLuint>((w + 15) / 16), static_cast<GLuint>((h + 15) / 16), 1);
+    glDispatchCompute(groups(static_cast<std::size_t>(w), gpu::LUMINANCE_TILE),
+                      groups(static_cast<std::size_t>(h), gpu::LUMINANCE_TILE), 1);
     size_t count = tiles;
     const gl::Buffer* in = &ping_;
     const gl::Buffer* out = &pong_;
     next_->use();
     while (count > 1) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        const size_t groups = (count + 255) / 256;
+        const GLuint n = groups(count, gpu::LUMINANCE_GROUP);
         in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
         out->bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-        next_->set(0, static_cast<int>(count));
-        glDispatchCompute(static_cast<GLuint>(groups), 1, 1);
-        count = groups;
+        p.count = static_cast<int>(count);
+        params_.upload(p, binding::kPassUbo);
+        glDispatchCompute(n, 1, 1);
+        count = n;
         std::swap(in, out);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -72,7 +93,7 @@ void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Textur
 }
 
 void LuminancePass::execute(FrameContext& ctx) {
-    const gl::Texture* mask = ctx.knobs.get(background_) == 1 ? ctx.outputs.find("gbuffer.depth")->texture : nullptr;
+    const gl::Texture* mask = ctx.knobs.get(background_) == exclude_ ? ctx.outputs.find("gbuffer.depth")->texture : nullptr;
     reduce(*ctx.outputs.find("lbuffer")->texture, ctx.knobs.get(delta_), mask);
 }
 

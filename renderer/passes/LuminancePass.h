@@ -6,8 +6,10 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/luminance.h"
 
 namespace dw {
 
@@ -32,8 +34,10 @@ public:
 private:
     FloatKnob delta_;
     EnumKnob background_;
+    int exclude_ = 0;  // luminance.background = exclude
     gl::ShaderLibrary::Handle first_, next_, finalize_;
     gl::Buffer ping_, pong_;
+    gl::ParamBuffer<gpu::LuminanceParams> params_;
     gl::Texture stats_;
 };
 

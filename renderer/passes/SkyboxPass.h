@@ -7,11 +7,12 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/sky.h"
 
 namespace dw {
 
@@ -19,7 +20,6 @@ struct Sky;
 
 class SkyboxPass : public RenderPass {
 public:
-    enum Mode { FromScene = 0, Color = 1, Procedural = 2, Environment = 3 };
     explicit SkyboxPass(KnobRegistry& knobs);
     const char* name() const override { return "skybox"; }
     std::vector<OutputDecl> outputs() const override {
@@ -32,12 +32,14 @@ public:
     std::string stats() const override { return stats_; }
 
 private:
+    // gpu::SKY_KIND_*, or -1 when the sky is an environment map the scene lacks.
     int resolvedKind(const KnobRegistry& knobs, const Scene& scene) const;
     EnumKnob mode_;
+    int modeFromScene_ = 0, modeColor_ = 0, modeProcedural_ = 0;  // skybox.mode's choices the pass branches on
     FloatKnob intensity_, rotation_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::SkyParams> params_;
     gl::Texture dummy2D_, dummyCube_;
     TargetFramebuffer target_;
     std::string stats_;

@@ -8,16 +8,11 @@
 
 namespace dw {
 
-namespace {
-struct BlurParamsGpu {
-    glm::ivec4 modes{0};
-    glm::vec4 values{0.0f};
-};
-}  // namespace
-
 SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
-    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, Bilateral, "ssao_blur",
+    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ssao_blur",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
+    off_ = knobs.choiceIndex(mode_, "off");
+    defines_ = knobs.choiceDefines(mode_);
     width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
                           "kernel width in AO pixels (seed 002 uses up to 61); taps = 2 x (width / 2) + 1", "px", true);
     delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ssao_blur",
@@ -32,9 +27,9 @@ std::string SsaoBlurPass::skipReason(const KnobRegistry& knobs, const Scene& sce
 }
 
 void SsaoBlurPass::setup(gl::ShaderLibrary& shaders) {
-    blur_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/blur.frag"});
-    upsample_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/upsample.frag"});
-    params_ = gl::Buffer::create(sizeof(BlurParamsGpu), nullptr, true, "ssao blur params");
+    blur_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/blur.frag", .defines = defines_});
+    upsample_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/upsample.frag", .defines = defines_});
+    params_.create();
 }
 
 void SsaoBlurPass::execute(FrameContext& ctx) {
@@ -42,11 +37,14 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
     const gl::Texture& raw = ctx.texture("ssao.raw");
     const gl::Texture& depth = ctx.texture("gbuffer.depth");
     const int w = raw.width(), h = raw.height();
-    const auto mode = static_cast<Mode>(k.get(mode_));
+    const int mode = k.get(mode_);
     const int radius = k.get(width_) / 2;
-    const float delta = k.get(delta_);
+    gpu::SsaoBlurParams p{};
+    p.mode = mode;
+    p.aoSize = {w, h};
+    p.delta = k.get(delta_);
     const gl::Texture* source = &raw;
-    if (mode != Off && radius > 0) {
+    if (mode != off_ && radius > 0) {
         for (int i = 0; i < 2; ++i)
             if (!temp_[i] || temp_[i].width() != w || temp_[i].height() != h) {
                 temp_[i] = gl::Texture::create2D(GL_R16F, w, h);
@@ -56,12 +54,11 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
         glViewport(0, 0, w, h);
         depth.bind(1);
         blur_->use();
+        p.radius = radius;
+        p.sigma = std::max(radius / 2.0f, 0.5f);
         for (int pass = 0; pass < 2; ++pass) {
-            BlurParamsGpu p;
-            p.modes = glm::ivec4(mode == Bilateral ? 1 : 0, radius, w, h);
-            p.values = glm::vec4(delta, std::max(radius / 2.0f, 0.5f), pass == 0 ? 1.0f : 0.0f, pass == 0 ? 0.0f : 1.0f);
-            params_.update(0, sizeof(p), &p);
-            params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+            p.direction = pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
+            params_.upload(p, binding::kPassUbo);
             source->bind(0);
             tempFbo_[pass].bind();
             triangle_.draw();
@@ -69,19 +66,14 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
         }
     }
     // To full resolution; depth-aware when the AO ran smaller and blurring is bilateral.
-    BlurParamsGpu p;
-    p.modes = glm::ivec4(mode == Bilateral ? 1 : 0, 0, w, h);
-    p.values = glm::vec4(delta, 0.0f, 0.0f, 0.0f);
-    params_.update(0, sizeof(p), &p);
-    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    params_.upload(p, binding::kPassUbo);
     source->bind(0);
     depth.bind(1);
     glViewport(0, 0, ctx.width, ctx.height);
     full_.get(ctx, {"ssao.blurred"}, {}, "SSAO blurred").bind();
     upsample_->use();
     triangle_.draw();
-    static const char* names[] = {"bilateral", "gaussian", "no"};
-    stats_ = std::string(names[mode]) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
+    stats_ = (mode == off_ ? std::string("no") : k.choice(mode_)) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
              (w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "");
 }
 

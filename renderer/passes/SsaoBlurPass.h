@@ -8,17 +8,17 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/ssao_blur.h"
 
 namespace dw {
 
 class SsaoBlurPass : public RenderPass {
 public:
-    enum Mode { Bilateral = 0, Gaussian = 1, Off = 2 };
     explicit SsaoBlurPass(KnobRegistry& knobs);
     const char* name() const override { return "ssao_blur"; }
     std::vector<OutputDecl> outputs() const override {
@@ -35,11 +35,13 @@ public:
 private:
     BoolKnob ssaoEnabled_;
     EnumKnob mode_;
+    int off_ = 0;                       // ssao_blur.mode = off
+    std::vector<std::string> defines_;  // SSAO_BLUR_MODE_*
     IntKnob width_;
     FloatKnob delta_;
     gl::ShaderLibrary::Handle blur_, upsample_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::SsaoBlurParams> params_;
     gl::Texture temp_[2];
     gl::Framebuffer tempFbo_[2];
     TargetFramebuffer full_;

@@ -5,16 +5,11 @@
 
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
+#include "shaders/params/ssao.h"
 
 namespace dw {
 
 namespace {
-
-struct SsaoParamsGpu {
-    glm::vec4 kernel[64];
-    glm::ivec4 counts;
-    glm::vec4 values;
-};
 
 // Deterministic uniform numbers in [0, 1) (a 32-bit hash of the index).
 float hash01(std::uint32_t x) {
@@ -30,8 +25,8 @@ float hash01(std::uint32_t x) {
 
 SsaoPass::SsaoPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("ssao.enabled", true, "ssao", "screen-space ambient occlusion on the ambient term");
-    samples_ = knobs.addInt("ssao.samples", 16, 4, 64, "ssao", "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)",
-                            "", true);
+    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao",
+                            "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)", "", true);
     radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao", "radius of the sampling hemisphere in scene units",
                              "units", false, true);
     intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
@@ -39,7 +34,8 @@ SsaoPass::SsaoPass(KnobRegistry& knobs) {
                            "depth tolerance before a sample counts as occluded, as a fraction of the radius");
     rangeCheck_ = knobs.addBool("ssao.range_check", true, "ssao",
                                 "fade occluders much nearer the camera than the point (depth discontinuities)");
-    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, Half, "ssao",
+    // In the order of the shift to the AO size: the choice's index is the shift.
+    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ssao",
                                 "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
 }
 
@@ -78,30 +74,34 @@ ResourceDesc SsaoPass::resource(const OutputDecl& output, const KnobRegistry& kn
 void SsaoPass::setup(gl::ShaderLibrary& shaders) {
     linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "ssao linear depth");
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/ssao.frag"});
-    params_ = gl::Buffer::create(sizeof(SsaoParamsGpu), nullptr, true, "ssao params");
+    params_.create();
+    constexpr int n = gpu::SSAO_NOISE_SIZE;
     std::vector<glm::vec4> noise;
-    for (std::uint32_t i = 0; i < 16; ++i) {
+    for (std::uint32_t i = 0; i < n * n; ++i) {
         const float z = 2.0f * hash01(1000 + 2 * i) - 1.0f;
         const float phi = 6.28318531f * hash01(1001 + 2 * i);
         const float s = std::sqrt(std::max(1.0f - z * z, 0.0f));
         noise.emplace_back(s * std::cos(phi), s * std::sin(phi), z, 0.0f);
     }
-    noise_ = gl::Texture::create2D(GL_RGBA16F, 4, 4);
-    noise_.upload(0, 4, 4, GL_RGBA, GL_FLOAT, noise.data());
+    noise_ = gl::Texture::create2D(GL_RGBA16F, n, n);
+    noise_.upload(0, n, n, GL_RGBA, GL_FLOAT, noise.data());
     noise_.setFilter(GL_NEAREST, GL_NEAREST);
 }
 
 void SsaoPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const glm::ivec2 size = aoSize(k, ctx.width, ctx.height);
-    SsaoParamsGpu p{};
+    gpu::SsaoParams p{};
     const int n = k.get(samples_);
     if (static_cast<int>(kernel_.size()) != n) kernel_ = kernel(n);
     std::copy(kernel_.begin(), kernel_.end(), p.kernel);
-    p.counts = glm::ivec4(n, k.get(rangeCheck_) ? 1 : 0, size.x, size.y);
-    p.values = glm::vec4(k.get(radius_), k.get(intensity_), k.get(bias_), 0.0f);
-    params_.update(0, sizeof(p), &p);
-    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    p.sampleCount = n;
+    p.rangeCheck = k.get(rangeCheck_) ? 1 : 0;
+    p.aoSize = size;
+    p.radius = k.get(radius_);
+    p.intensity = k.get(intensity_);
+    p.bias = k.get(bias_);
+    params_.upload(p, binding::kPassUbo);
     ctx.texture("gbuffer.depth").bind(0);
     linearDepth_.bind(0);
     ctx.texture("gbuffer.normal").bind(1);

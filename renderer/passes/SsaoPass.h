@@ -8,18 +8,18 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/ssao.h"
 
 namespace dw {
 
 class SsaoPass : public RenderPass {
 public:
-    enum Resolution { Full = 0, Half = 1, Quarter = 2 };
     explicit SsaoPass(KnobRegistry& knobs);
     const char* name() const override { return "ssao"; }
     std::vector<OutputDecl> outputs() const override {
@@ -45,7 +45,7 @@ private:
     EnumKnob resolution_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::SsaoParams> params_;
     gl::Texture noise_;
     gl::Sampler linearDepth_;  // depth between pixel centres (see ssao.frag)
     std::vector<glm::vec4> kernel_;  // kernel(ssao.samples), rebuilt when the count changes

@@ -1,23 +1,14 @@
 #include "renderer/passes/TonemapPass.h"
 
-#include <glm/glm.hpp>
-
 #include "renderer/scene/GpuScene.h"
 
 namespace dw {
 
-namespace {
-struct TonemapParamsGpu {
-    glm::ivec4 modes{0};
-    glm::ivec4 more{0};
-    glm::vec4 values{0.0f};
-};
-}  // namespace
-
 TonemapPass::TonemapPass(KnobRegistry& knobs) {
-    operator_ = knobs.addEnum("tonemap.operator", {"simple", "reinhard", "aces", "neutral", "clamp"}, Reinhard, "tonemap",
+    operator_ = knobs.addEnum("tonemap.operator", {"simple", "reinhard", "aces", "neutral", "clamp"}, "reinhard", "tonemap",
                               "simple L/(1+L) (seed 000 eq. 4.1); Reinhard's global operator with log-average "
                               "luminance and L_white (eqs. 4.3, 4.4); ACES (Hill's fit); Khronos PBR Neutral; clamp");
+    reinhard_ = knobs.choiceIndex(operator_, "reinhard");
     key_ = knobs.addFloat("tonemap.key", 0.18, 0.01, 2.0, "tonemap",
                           "Reinhard key value a: the luminance the log-average maps to (eq. 4.3)");
     autoWhite_ = knobs.addBool("tonemap.auto_white", true, "tonemap",
@@ -37,30 +28,39 @@ TonemapPass::TonemapPass(KnobRegistry& knobs) {
 void TonemapPass::connect(const KnobRegistry& knobs) {
     bloomIntensity_ = knobs.requireFloat("bloom.intensity");
     bloomComposite_ = knobs.requireEnum("bloom.composite");
+    defines_ = knobs.choiceDefines(operator_);
+    for (const std::string& d : knobs.choiceDefines(bloomComposite_)) defines_.push_back(d);
 }
 
 PassIO TonemapPass::inputs(const KnobRegistry& knobs) const {
     PassIO io;
     io.inputs = {"lbuffer"};
-    if (knobs.get(operator_) == Reinhard || knobs.get(autoExposure_)) io.inputs.push_back("luminance.stats");
+    if (knobs.get(operator_) == reinhard_ || knobs.get(autoExposure_)) io.inputs.push_back("luminance.stats");
     io.optionalInputs = {"bloom.result"};
     return io;
 }
 
 void TonemapPass::setup(gl::ShaderLibrary& shaders) {
-    program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "tonemap/tonemap.frag"});
-    params_ = gl::Buffer::create(sizeof(TonemapParamsGpu), nullptr, true, "tonemap params");
+    program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "tonemap/tonemap.frag", .defines = defines_});
+    params_.create();
 }
 
 void TonemapPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    TonemapParamsGpu p;
     const bool bloom = ctx.produced("bloom.result");
-    p.modes = glm::ivec4(k.get(operator_), k.get(autoWhite_) ? 1 : 0, k.get(srgb_) ? 1 : 0, k.get(nanGuard_) ? 1 : 0);
-    p.more = glm::ivec4(bloom ? 1 + k.get(bloomComposite_) : 0, k.get(autoExposure_) ? 1 : 0, 0, 0);
-    p.values = glm::vec4(k.get(key_), k.get(white_), k.get(exposure_), k.get(bloomIntensity_));
-    params_.update(0, sizeof(p), &p);
-    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    gpu::TonemapParams p{};
+    p.toneOperator = k.get(operator_);
+    p.autoWhite = k.get(autoWhite_) ? 1 : 0;
+    p.srgbOutput = k.get(srgb_) ? 1 : 0;
+    p.nanGuard = k.get(nanGuard_) ? 1 : 0;
+    p.bloom = bloom ? 1 : 0;
+    p.bloomComposite = k.get(bloomComposite_);
+    p.autoExposure = k.get(autoExposure_) ? 1 : 0;
+    p.key = k.get(key_);
+    p.white = k.get(white_);
+    p.exposure = k.get(exposure_);
+    p.bloomIntensity = k.get(bloomIntensity_);
+    params_.upload(p, binding::kPassUbo);
     ctx.texture("lbuffer").bind(0);
     if (ctx.produced("luminance.stats")) ctx.texture("luminance.stats").bind(1);
     if (bloom) ctx.texture("bloom.result").bind(2);

@@ -5,17 +5,17 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
-#include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/tonemap.h"
 
 namespace dw {
 
 class TonemapPass : public RenderPass {
 public:
-    enum Operator { Simple = 0, Reinhard = 1, Aces = 2, Neutral = 3, Clamp = 4 };
     explicit TonemapPass(KnobRegistry& knobs);
     const char* name() const override { return "tonemap"; }
     std::vector<OutputDecl> outputs() const override {
@@ -28,11 +28,13 @@ public:
 
 private:
     EnumKnob operator_, bloomComposite_;
+    int reinhard_ = 0;                  // tonemap.operator = reinhard (needs luminance.stats)
+    std::vector<std::string> defines_;  // TONEMAP_OPERATOR_*, BLOOM_COMPOSITE_*
     FloatKnob key_, white_, exposure_, bloomIntensity_;
     BoolKnob autoWhite_, srgb_, nanGuard_, autoExposure_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_;
+    gl::ParamBuffer<gpu::TonemapParams> params_;
     TargetFramebuffer target_;
 };
 

@@ -4,19 +4,15 @@
 // highlight is not dropped or flickering), with the threshold, a multiple of
 // the image's average luminance, subtracted from each pixel's luminance.
 #include "../common/color.glsl"
-#include "../common/bindings.glsl"
+#include "../params/bloom.h"
 
 layout(binding = 0) uniform sampler2D uHdr;
 layout(binding = 1) uniform sampler2D uStats;
-layout(std140, binding = PASS_UBO) uniform BloomParams {
-    ivec4 modes;   // x NaN guard, y levels
-    vec4 values;   // x threshold (times the log-average), yz texel of the source
-} bloom;
 
 out vec4 outColor;
 
 vec3 guarded(vec3 c) {
-    if (bloom.modes.x == 0) return c;
+    if (bloom.nanGuard == 0) return c;
     return isFiniteVec(c) ? max(c, vec3(0.0)) : vec3(0.0);
 }
 
@@ -28,6 +24,6 @@ void main() {
         for (int i = 0; i < 2; ++i) c += guarded(texelFetch(uHdr, min(p + ivec2(i, j), size - 1), 0).rgb);
     c *= 0.25;
     float L = luminance(c);
-    float t = bloom.values.x * texelFetch(uStats, ivec2(0), 0).x;
+    float t = bloom.threshold * texelFetch(uStats, ivec2(0), 0).x;
     outColor = vec4(L > t ? c * (L - t) / L : vec3(0.0), 1.0);
 }

@@ -2,20 +2,16 @@
 // Dual-filter bloom, upsample (Jimenez 2014): a 3x3 tent of the coarser
 // level added to this level's downsampled image, so each level keeps its own
 // detail and the blur grows level by level.
-#include "../common/bindings.glsl"
+#include "../params/bloom.h"
 
 layout(binding = 0) uniform sampler2D uCoarse;
 layout(binding = 1) uniform sampler2D uSame;
-layout(std140, binding = PASS_UBO) uniform BloomParams {
-    ivec4 modes;
-    vec4 values;   // xy texel of the coarse level, zw texel of the target
-} bloom;
 
 out vec4 outColor;
 
 void main() {
-    vec2 uv = gl_FragCoord.xy * bloom.values.zw;
-    vec2 t = bloom.values.xy;
+    vec2 uv = gl_FragCoord.xy * bloom.targetTexel;
+    vec2 t = bloom.sourceTexel;
     vec3 s = texture(uCoarse, uv + vec2(-t.x, t.y)).rgb + texture(uCoarse, uv + vec2(0, t.y)).rgb * 2.0 +
              texture(uCoarse, uv + vec2(t.x, t.y)).rgb + texture(uCoarse, uv + vec2(-t.x, 0)).rgb * 2.0 +
              texture(uCoarse, uv).rgb * 4.0 + texture(uCoarse, uv + vec2(t.x, 0)).rgb * 2.0 +

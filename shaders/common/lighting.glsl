@@ -8,9 +8,6 @@
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
 
-#define ATTENUATION_CLASSIC 0
-#define ATTENUATION_WINDOWED 1
-
 struct Light {
     mat4 volume;            // unit volume mesh -> world
     vec4 positionRadius;    // view-space position, radius (0 = unbounded)
@@ -28,18 +25,19 @@ layout(std430, binding = LIGHT_SSBO) readonly buffer LightTable {
 
 // Distance attenuation; 0 outside the light's radius (the in-volume test of
 // seed 000 section 3.2.1, so every lighting strategy shades the same region).
-float attenuate(Light light, float d, int mode, float windowExponent) {
+// windowed: Ferko's window 1 - (d/r)^k on top (lighting.attenuation).
+float attenuate(Light light, float d, bool windowed, float windowExponent) {
     float radius = light.positionRadius.w;
     if (radius > 0.0 && d > radius) return 0.0;
     vec3 k = light.attenuation.xyz;
     float att = 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
-    if (mode == ATTENUATION_WINDOWED && radius > 0.0) att *= 1.0 - pow(d / radius, windowExponent);
+    if (windowed && radius > 0.0) att *= 1.0 - pow(d / radius, windowExponent);
     return att;
 }
 
 // Radiance reflected towards the eye by one light at view-space point P.
 vec3 shadeLight(Light light, vec3 P, vec3 N, vec3 diffuse, vec3 specular, float exponent,
-                int attenuationMode, float windowExponent) {
+                bool windowed, float windowExponent) {
     int type = int(light.attenuation.w + 0.5);
     vec3 L;
     float scale = 1.0;
@@ -49,7 +47,7 @@ vec3 shadeLight(Light light, vec3 P, vec3 N, vec3 diffuse, vec3 specular, float 
         vec3 toLight = light.positionRadius.xyz - P;
         float d = length(toLight);
         L = toLight / max(d, 1e-6);
-        scale = attenuate(light, d, attenuationMode, windowExponent);
+        scale = attenuate(light, d, windowed, windowExponent);
         if (type == LIGHT_SPOT) {
             float cosTheta = dot(-L, light.directionCutoff.xyz);
             scale *= cosTheta >= light.directionCutoff.w ? pow(max(cosTheta, 0.0), light.intensityExponent.w) : 0.0;

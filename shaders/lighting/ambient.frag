@@ -5,11 +5,11 @@
 // lighting.ambient_specular is on) scaled by the ambient-occlusion
 // accessibility when there is one, plus emitted radiance.
 #include "gbuffer_read.glsl"
-#include "params.glsl"
+#include "../params/lighting.h"
 
 layout(location = 0) uniform vec3 uAmbient;
 layout(location = 1) uniform vec3 uBackground;
-layout(binding = 9) uniform sampler2D uSky;  // when lightingParams.modes.w != 0
+layout(binding = 9) uniform sampler2D uSky;  // when lightingParams.sky != 0
 
 out vec4 outColor;
 
@@ -17,11 +17,11 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     Surface s = readSurface(px);
     if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
-        outColor = vec4(lightingParams.modes.w != 0 ? texelFetch(uSky, px, 0).rgb : uBackground, 1.0);
+        outColor = vec4(lightingParams.sky != 0 ? texelFetch(uSky, px, 0).rgb : uBackground, 1.0);
         return;
     }
-    float access = lightingParams.modes.y != 0 ? texelFetch(uOcclusion, px, 0).r : 1.0;
+    float access = lightingParams.occlusion != 0 ? texelFetch(uOcclusion, px, 0).r : 1.0;
     vec3 emitted = texelFetch(uEmissive, px, 0).rgb;
-    vec3 reflectance = s.diffuse + (lightingParams.modes.z != 0 ? s.specular : vec3(0.0));
+    vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
     outColor = vec4(uAmbient * reflectance * access + emitted, 1.0);
 }

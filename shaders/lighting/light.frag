@@ -2,7 +2,7 @@
 // One light's contribution, added to the L-buffer (seed 000 section 5.2.1).
 // Shared by every lighting strategy, so their images differ only by rounding.
 #include "gbuffer_read.glsl"
-#include "params.glsl"
+#include "../params/lighting.h"
 #include "../common/lighting.glsl"
 #include "../common/shadow.glsl"
 
@@ -26,7 +26,7 @@ void main() {
     }
     Light light = lights[uLight];
     vec3 c = shadeLight(light, s.position, s.normal, s.diffuse, s.specular, s.exponent,
-                        lightingParams.modes.x, lightingParams.values.x);
+                        lightingParams.windowed != 0, lightingParams.windowExponent);
     if (light.shadowParams.x > 0.5 && any(greaterThan(c, vec3(0.0)))) {
         bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
         vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;

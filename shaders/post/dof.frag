@@ -7,18 +7,14 @@
 // reaches the centre (near-field objects spread over what is behind them) or,
 // for samples farther than the centre, when the centre's blur reaches it (so
 // sharp foreground does not smear into a blurred background).
-// The image is the tone mapper's 8-bit output; with values.w set it is
+// The image is the tone mapper's 8-bit output; with srgbInput set it is
 // sRGB-encoded, and the gather averages linear light, then re-encodes.
 #include "../common/camera.glsl"
 #include "../common/color.glsl"
+#include "../params/dof.h"
 
 layout(binding = 0) uniform sampler2D uImage;
 layout(binding = 1) uniform sampler2D uDepth;
-
-layout(std140, binding = PASS_UBO) uniform DofParams {
-    ivec4 modes;   // x near blur, y far blur, z samples, w write the CoC only
-    vec4 values;   // x focus distance, y focus range, z max radius (px), w input is sRGB-encoded
-} dof;
 
 layout(location = 0) out vec4 outColor;
 
@@ -29,12 +25,12 @@ float linearDepth(ivec2 px) {
 
 // Signed circle of confusion in pixels: negative in front of the focus.
 float coc(float z) {
-    float d = z - dof.values.x;
-    float halfRange = 0.5 * dof.values.y;
-    float t = clamp((abs(d) - halfRange) / max(dof.values.y, 1e-3), 0.0, 1.0);
-    if (d < 0.0 && dof.modes.x == 0) return 0.0;
-    if (d > 0.0 && dof.modes.y == 0) return 0.0;
-    return sign(d) * t * dof.values.z;
+    float d = z - dof.focusDistance;
+    float halfRange = 0.5 * dof.focusRange;
+    float t = clamp((abs(d) - halfRange) / max(dof.focusRange, 1e-3), 0.0, 1.0);
+    if (d < 0.0 && dof.nearBlur == 0) return 0.0;
+    if (d > 0.0 && dof.farBlur == 0) return 0.0;
+    return sign(d) * t * dof.maxRadius;
 }
 
 void main() {
@@ -42,15 +38,15 @@ void main() {
     ivec2 size = textureSize(uImage, 0);
     float zc = linearDepth(px);
     float cc = coc(zc);
-    if (dof.modes.w != 0) {
+    if (dof.cocOnly != 0) {
         outColor = vec4(cc, 0.0, 0.0, 1.0);
         return;
     }
-    bool srgb = dof.values.w != 0.0;
+    bool srgb = dof.srgbInput != 0;
     vec3 center = texelFetch(uImage, px, 0).rgb;
     if (srgb) center = srgbToLinear(center);
-    int n = dof.modes.z;
-    float maxR = dof.values.z;
+    int n = dof.sampleCount;
+    float maxR = dof.maxRadius;
     vec3 sum = center;
     float weights = 1.0;
     const float golden = 2.39996323;

@@ -5,10 +5,9 @@
 // vertically, search along it in both directions for its ends, and shift the
 // sample across the edge in proportion to how far the pixel is from the
 // nearer end; blend in a sub-pixel low-pass for single-pixel features.
-layout(binding = 0) uniform sampler2D uImage;
+#include "../params/fxaa.h"
 
-layout(location = 0) uniform vec4 uParams;   // x edge threshold, y edge threshold min, z subpixel
-layout(location = 1) uniform int uSteps;     // search steps along the edge
+layout(binding = 0) uniform sampler2D uImage;
 
 out vec4 outColor;
 
@@ -25,7 +24,7 @@ void main() {
     float maxL = max(M, max(max(N, S), max(E, W)));
     float minL = min(M, min(min(N, S), min(E, W)));
     float range = maxL - minL;
-    if (range < max(uParams.y, maxL * uParams.x)) {
+    if (range < max(fxaa.edgeThresholdMin, maxL * fxaa.edgeThreshold)) {
         outColor = vec4(rgbM, 1.0);
         return;
     }
@@ -35,7 +34,7 @@ void main() {
     float lowpass = (2.0 * (N + S + E + W) + NW + NE + SW + SE) / 12.0;
     float subpix = clamp(abs(lowpass - M) / range, 0.0, 1.0);
     subpix = smoothstep(0.0, 1.0, subpix);
-    subpix = subpix * subpix * uParams.z;
+    subpix = subpix * subpix * fxaa.subpixel;
     // Horizontal or vertical edge, from the second differences.
     float edgeH = abs(NW + SW - 2.0 * W) + 2.0 * abs(N + S - 2.0 * M) + abs(NE + SE - 2.0 * E);
     float edgeV = abs(NW + NE - 2.0 * N) + 2.0 * abs(W + E - 2.0 * M) + abs(SW + SE - 2.0 * S);
@@ -58,7 +57,7 @@ void main() {
     vec2 uv1 = edgeUv - along, uv2 = edgeUv + along;
     float e1 = lumaAt(uv1) - lumaLocal, e2 = lumaAt(uv2) - lumaLocal;
     bool done1 = abs(e1) >= threshold, done2 = abs(e2) >= threshold;
-    for (int i = 1; i < uSteps && !(done1 && done2); ++i) {
+    for (int i = 1; i < fxaa.searchSteps && !(done1 && done2); ++i) {
         float stride = i < 3 ? 1.0 : (i < 6 ? 2.0 : 4.0);
         if (!done1) {
             uv1 -= along * stride;

@@ -4,35 +4,23 @@
 // or an environment map (equirectangular or cube) rotated about +Y. Covered
 // pixels get 0; the lighting pass writes the sky where the G-buffer is empty.
 #include "../common/camera.glsl"
-
-#define SKY_PROCEDURAL 1
-#define SKY_EQUIRECT 2
-#define SKY_CUBE 3
+#include "../params/sky.h"
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uEquirect;
 layout(binding = 2) uniform samplerCube uCube;
 
-layout(std140, binding = PASS_UBO) uniform SkyParams {
-    ivec4 modes;     // x kind
-    vec4 zenith;     // rgb, w intensity
-    vec4 horizon;    // rgb, w rotation (radians)
-    vec4 ground;     // rgb, w cos(sun radius)
-    vec4 sunDir;     // world direction towards the sun, w 1 if there is a sun
-    vec4 sunColor;   // rgb radiance of the disc
-} sky;
-
 out vec4 outColor;
 
 vec3 procedural(vec3 d) {
     float e = d.y;
-    vec3 c = e >= 0.0 ? mix(sky.horizon.rgb, sky.zenith.rgb, pow(e, 0.45))
-                      : mix(sky.horizon.rgb, sky.ground.rgb, pow(min(-e * 4.0, 1.0), 0.6));
-    if (sky.sunDir.w > 0.5) {
-        float cosA = dot(d, sky.sunDir.xyz);
-        float disc = smoothstep(sky.ground.w - 0.00002, sky.ground.w + 0.00002, cosA);
+    vec3 c = e >= 0.0 ? mix(sky.horizon, sky.zenith, pow(e, 0.45))
+                      : mix(sky.horizon, sky.ground, pow(min(-e * 4.0, 1.0), 0.6));
+    if (sky.hasSun != 0) {
+        float cosA = dot(d, sky.sunDirection);
+        float disc = smoothstep(sky.cosSunRadius - 0.00002, sky.cosSunRadius + 0.00002, cosA);
         float glow = pow(max(cosA, 0.0), 48.0) * 0.02 + pow(max(cosA, 0.0), 6.0) * 0.004;
-        c += sky.sunColor.rgb * (disc + glow);
+        c += sky.sunColor * (disc + glow);
     }
     return c;
 }
@@ -45,17 +33,17 @@ void main() {
     }
     vec3 v = viewPositionAtPixel(px, 1.0);
     vec3 d = normalize(mat3(camera.inverseView) * v);
-    float r = sky.horizon.w;
+    float r = sky.rotation;
     vec3 dr = vec3(cos(r) * d.x + sin(r) * d.z, d.y, -sin(r) * d.x + cos(r) * d.z);
     vec3 c;
-    if (sky.modes.x == SKY_EQUIRECT) {
+    if (sky.kind == SKY_KIND_EQUIRECT) {
         // Row 0 of the image (uploaded top-down) is the zenith.
         vec2 uv = vec2(0.5 + atan(dr.x, -dr.z) / (2.0 * 3.14159265), acos(clamp(dr.y, -1.0, 1.0)) / 3.14159265);
         c = textureLod(uEquirect, uv, 0.0).rgb;
-    } else if (sky.modes.x == SKY_CUBE) {
+    } else if (sky.kind == SKY_KIND_CUBE) {
         c = textureLod(uCube, dr, 0.0).rgb;
     } else {
         c = procedural(d);
     }
-    outColor = vec4(c * sky.zenith.w, 1.0);
+    outColor = vec4(c * sky.intensity, 1.0);
 }

@@ -4,19 +4,15 @@
 // w = 1 / (delta + |d_center - d_current|) on linear depth (eq. 4.7), and
 // renormalised so the weights sum to 1. One direction per draw.
 #include "../common/camera.glsl"
+#include "../params/ssao_blur.h"
 
 layout(binding = 0) uniform sampler2D uAo;
 layout(binding = 1) uniform sampler2D uDepth;
 
-layout(std140, binding = PASS_UBO) uniform BlurParams {
-    ivec4 modes;   // x bilateral, y radius in AO pixels, z/w AO size
-    vec4 values;   // x delta, y sigma, zw direction (1,0) or (0,1)
-} blur;
-
 out float outOcclusion;
 
 float linearDepthAt(ivec2 aoPixel) {
-    vec2 uv = (vec2(aoPixel) + 0.5) / vec2(blur.modes.zw);
+    vec2 uv = (vec2(aoPixel) + 0.5) / vec2(blur.aoSize);
     ivec2 px = ivec2(uv * camera.viewport.xy);
     float d = texelFetch(uDepth, px, 0).r;
     return d >= 1.0 ? 1e30 : -viewPositionAtPixel(px, d).z;
@@ -24,13 +20,13 @@ float linearDepthAt(ivec2 aoPixel) {
 
 void main() {
     ivec2 c = ivec2(gl_FragCoord.xy);
-    ivec2 dir = ivec2(blur.values.zw);
+    ivec2 dir = blur.direction;
     float zc = linearDepthAt(c);
     float sum = 0.0, weights = 0.0;
-    for (int k = -blur.modes.y; k <= blur.modes.y; ++k) {
-        ivec2 p = clamp(c + dir * k, ivec2(0), blur.modes.zw - 1);
-        float w = exp(-0.5 * float(k * k) / (blur.values.y * blur.values.y));
-        if (blur.modes.x != 0) w *= 1.0 / (blur.values.x + abs(zc - linearDepthAt(p)));
+    for (int k = -blur.radius; k <= blur.radius; ++k) {
+        ivec2 p = clamp(c + dir * k, ivec2(0), blur.aoSize - 1);
+        float w = exp(-0.5 * float(k * k) / (blur.sigma * blur.sigma));
+        if (blur.mode == SSAO_BLUR_MODE_BILATERAL) w *= 1.0 / (blur.delta + abs(zc - linearDepthAt(p)));
         sum += w * texelFetch(uAo, p, 0).r;
         weights += w;
     }

@@ -9,22 +9,17 @@
 // with linear filtering, see below).
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
+#include "../params/ssao.h"
 
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uNoise;   // 4x4 random unit vectors, repeated
-
-layout(std140, binding = PASS_UBO) uniform SsaoParams {
-    vec4 kernel[64];   // points in the unit ball
-    ivec4 counts;      // x samples, y range check, z AO width, w AO height
-    vec4 values;       // x radius, y intensity, z bias (fraction of the radius)
-} ssao;
+layout(binding = 2) uniform sampler2D uNoise;   // random unit vectors, SSAO_NOISE_SIZE^2, repeated
 
 out float outOcclusion;
 
 void main() {
     // The full-resolution pixel this AO pixel stands for (its centre).
-    vec2 uv = (gl_FragCoord.xy) / vec2(ssao.counts.zw);
+    vec2 uv = (gl_FragCoord.xy) / vec2(ssao.aoSize);
     ivec2 px = ivec2(uv * camera.viewport.xy);
     float depth = texelFetch(uDepth, px, 0).r;
     if (depth >= 1.0) {
@@ -33,10 +28,10 @@ void main() {
     }
     vec3 P = viewPositionAtPixel(px, depth);
     vec3 N = decodeNormalKL(texelFetch(uNormal, px, 0).xy);
-    vec3 r = normalize(texelFetch(uNoise, ivec2(gl_FragCoord.xy) & 3, 0).xyz);
-    float radius = ssao.values.x;
-    float bias = ssao.values.z * radius;
-    int n = ssao.counts.x;
+    vec3 r = normalize(texelFetch(uNoise, ivec2(gl_FragCoord.xy) & (SSAO_NOISE_SIZE - 1), 0).xyz);
+    float radius = ssao.radius;
+    float bias = ssao.bias * radius;
+    int n = ssao.sampleCount;
     float occlusion = 0.0;
     for (int i = 0; i < n; ++i) {
         vec3 s = reflect(ssao.kernel[i].xyz, r);
@@ -54,12 +49,12 @@ void main() {
         if (S.z < Q.z + bias) continue;  // the stored surface is behind the sample: not occluded
         float d = length(S - P);
         float weight = 1.0 / (1.0 + d * d);
-        if (ssao.counts.y != 0) {
+        if (ssao.rangeCheck != 0) {
             // A surface far in front of P (another object) does not occlude it.
             float gap = abs(P.z - S.z);
             weight *= gap <= radius ? 1.0 : radius / gap;
         }
         occlusion += weight;
     }
-    outOcclusion = clamp(1.0 - ssao.values.y * occlusion / float(max(n, 1)), 0.0, 1.0);
+    outOcclusion = clamp(1.0 - ssao.intensity * occlusion / float(max(n, 1)), 0.0, 1.0);
 }

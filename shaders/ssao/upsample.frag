@@ -3,14 +3,10 @@
 // resolution: the four nearest AO texels, weighted bilinearly and by
 // 1 / (delta + |z_full - z_ao|), so occlusion does not bleed across depth edges.
 #include "../common/camera.glsl"
+#include "../params/ssao_blur.h"
 
 layout(binding = 0) uniform sampler2D uAo;
 layout(binding = 1) uniform sampler2D uDepth;
-
-layout(std140, binding = PASS_UBO) uniform UpsampleParams {
-    ivec4 modes;   // x depth-aware, zw AO size
-    vec4 values;   // x delta
-} up;
 
 out float outOcclusion;
 
@@ -21,7 +17,7 @@ float linearDepth(ivec2 px) {
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec2 aoSize = vec2(up.modes.zw);
+    vec2 aoSize = vec2(blur.aoSize);
     vec2 pos = (vec2(px) + 0.5) / camera.viewport.xy * aoSize - 0.5;
     ivec2 base = ivec2(floor(pos));
     vec2 f = pos - vec2(base);
@@ -29,11 +25,11 @@ void main() {
     float sum = 0.0, weights = 0.0;
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
-            ivec2 q = clamp(base + ivec2(i, j), ivec2(0), up.modes.zw - 1);
+            ivec2 q = clamp(base + ivec2(i, j), ivec2(0), blur.aoSize - 1);
             float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-4;
-            if (up.modes.x != 0) {
+            if (blur.mode == SSAO_BLUR_MODE_BILATERAL) {
                 ivec2 qFull = ivec2((vec2(q) + 0.5) / aoSize * camera.viewport.xy);
-                w *= 1.0 / (up.values.x + abs(z - linearDepth(qFull)));
+                w *= 1.0 / (blur.delta + abs(z - linearDepth(qFull)));
             }
             sum += w * texelFetch(uAo, q, 0).r;
             weights += w;

@@ -1,18 +1,15 @@
 #version 450 core
 // GPU reduction of the L-buffer's luminance (seed 000 section 5.3.1): the
 // first pass turns each pixel into (log(delta + L), L, L, 1) and sums per
-// 16x16 tile; later passes sum 256 partials at a time; the last writes
-// luminance.stats = (exp(mean log), max, mean, finite pixel count).
+// tile of LUMINANCE_TILE^2 pixels; later passes sum LUMINANCE_GROUP partials
+// at a time; the last writes luminance.stats = (exp(mean log), max, mean, finite pixel count).
 // Non-finite pixels are left out and do not poison the statistics; so are
 // background pixels when luminance.background = exclude.
 #include "../common/color.glsl"
+#include "../params/luminance.h"
 
 layout(std430, binding = 4) readonly buffer ReduceIn { vec4 inData[]; };
 layout(std430, binding = 5) writeonly buffer ReduceOut { vec4 outData[]; };
-
-layout(location = 0) uniform int uCount;
-layout(location = 1) uniform float uDelta;
-layout(location = 2) uniform int uSkipBackground;
 
 vec4 combine(vec4 a, vec4 b) { return vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w); }
 
@@ -26,13 +23,13 @@ void main() {
 }
 #else
 #if defined(FIRST_PASS)
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = LUMINANCE_TILE, local_size_y = LUMINANCE_TILE) in;
 layout(binding = 0) uniform sampler2D uHdr;
 layout(binding = 1) uniform sampler2D uDepth;
 #else
-layout(local_size_x = 256) in;
+layout(local_size_x = LUMINANCE_GROUP) in;
 #endif
-shared vec4 partial[256];
+shared vec4 partial[LUMINANCE_GROUP];
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
@@ -42,21 +39,21 @@ void main() {
     ivec2 size = textureSize(uHdr, 0);
     if (px.x < size.x && px.y < size.y) {
         vec3 c = texelFetch(uHdr, px, 0).rgb;
-        bool background = uSkipBackground != 0 && texelFetch(uDepth, px, 0).r >= 1.0;
+        bool background = reduction.skipBackground != 0 && texelFetch(uDepth, px, 0).r >= 1.0;
         if (isFiniteVec(c) && !background) {
             float L = max(luminance(c), 0.0);
-            v = vec4(log(uDelta + L), L, L, 1.0);
+            v = vec4(log(reduction.delta + L), L, L, 1.0);
         }
     }
     uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
 #else
     uint i = gl_GlobalInvocationID.x;
-    if (i < uint(uCount)) v = inData[i];
+    if (i < uint(reduction.count)) v = inData[i];
     uint group = gl_WorkGroupID.x;
 #endif
     partial[lid] = v;
     barrier();
-    for (uint s = 128u; s > 0u; s >>= 1u) {
+    for (uint s = uint(LUMINANCE_GROUP) / 2u; s > 0u; s >>= 1u) {
         if (lid < s) partial[lid] = combine(partial[lid], partial[lid + s]);
         barrier();
     }

@@ -12,29 +12,17 @@
 // Luminance operators rescale RGB by L_d / L_w, which keeps chromaticity
 // (the seed maps Y in XYZ). A guard replaces NaN and infinity first.
 #include "../common/color.glsl"
-#include "../common/bindings.glsl"
-
-#define OP_SIMPLE 0
-#define OP_REINHARD 1
-#define OP_ACES 2
-#define OP_NEUTRAL 3
-#define OP_CLAMP 4
+#include "../params/tonemap.h"
 
 layout(binding = 0) uniform sampler2D uHdr;
 layout(binding = 1) uniform sampler2D uStats;
 layout(binding = 2) uniform sampler2D uBloom;
 
-layout(std140, binding = PASS_UBO) uniform TonemapParams {
-    ivec4 modes;   // x operator, y auto white, z sRGB output, w NaN guard
-    ivec4 more;    // x bloom (0 none, 1 LDR by luminance, 2 HDR add), y auto exposure for the other operators
-    vec4 values;   // x key a, y manual L_white, z exposure (EV), w bloom intensity
-} params;
-
 in vec2 vUv;
 out vec4 outColor;
 
 vec3 guard(vec3 c) {
-    if (params.modes.w == 0) return c;
+    if (tonemap.nanGuard == 0) return c;
     // NaN -> 0, +inf -> the largest half float, -inf and negatives -> 0.
     vec3 g = mix(c, vec3(0.0), isnan(c));
     return clamp(g, 0.0, 65504.0);
@@ -66,27 +54,27 @@ vec3 pbrNeutral(vec3 color) {
 
 void main() {
     vec3 hdr = guard(texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb);
-    vec3 bloom = params.more.x != 0 ? guard(texture(uBloom, vUv).rgb) : vec3(0.0);
+    vec3 bloom = tonemap.bloom != 0 ? guard(texture(uBloom, vUv).rgb) : vec3(0.0);
     vec4 stats = texelFetch(uStats, ivec2(0), 0);
-    int op = params.modes.x;
+    int op = tonemap.toneOperator;
     // Exposure, and for the key-based operators the log-average normalisation.
-    float scale = exp2(params.values.z);
-    if (op == OP_REINHARD || params.more.y != 0) scale *= params.values.x / max(stats.x, 1e-9);
+    float scale = exp2(tonemap.exposure);
+    if (op == TONEMAP_OPERATOR_REINHARD || tonemap.autoExposure != 0) scale *= tonemap.key / max(stats.x, 1e-9);
     hdr *= scale;
     bloom *= scale;
-    if (params.more.x == 2) hdr += params.values.w * bloom;
+    if (tonemap.bloom != 0 && tonemap.bloomComposite == BLOOM_COMPOSITE_HDR_ADD) hdr += tonemap.bloomIntensity * bloom;
     vec3 rgb;
-    if (op == OP_ACES) {
+    if (op == TONEMAP_OPERATOR_ACES) {
         rgb = acesFitted(hdr);
-    } else if (op == OP_NEUTRAL) {
+    } else if (op == TONEMAP_OPERATOR_NEUTRAL) {
         rgb = clamp(pbrNeutral(hdr), 0.0, 1.0);
-    } else if (op == OP_CLAMP) {
+    } else if (op == TONEMAP_OPERATOR_CLAMP) {
         rgb = clamp(hdr, 0.0, 1.0);
     } else {
         float L = luminance(hdr);
         float Ld;
-        if (op == OP_REINHARD) {
-            float white = params.modes.y != 0 ? scale * stats.y : params.values.y;
+        if (op == TONEMAP_OPERATOR_REINHARD) {
+            float white = tonemap.autoWhite != 0 ? scale * stats.y : tonemap.white;
             white = max(white, 1e-6);
             Ld = L * (1.0 + L / (white * white)) / (1.0 + L);
         } else {
@@ -94,12 +82,12 @@ void main() {
         }
         rgb = L > 0.0 ? clamp(hdr * (Ld / L), 0.0, 1.0) : vec3(0.0);
     }
-    if (params.more.x == 1) {
+    if (tonemap.bloom != 0 && tonemap.bloomComposite == BLOOM_COMPOSITE_LDR_LUMINANCE_ALPHA) {
         // Seed 002 step 10 / seed 004: the bloom, compressed like the image,
         // blended on top with alpha = its luminance.
         vec3 b = bloom / (1.0 + bloom);
         float a = clamp(luminance(b), 0.0, 1.0);
-        rgb = clamp(rgb + params.values.w * a * b, 0.0, 1.0);
+        rgb = clamp(rgb + tonemap.bloomIntensity * a * b, 0.0, 1.0);
     }
-    outColor = vec4(params.modes.z != 0 ? linearToSrgb(rgb) : rgb, 1.0);
+    outColor = vec4(tonemap.srgbOutput != 0 ? linearToSrgb(rgb) : rgb, 1.0);
 }

@@ -84,3 +84,33 @@ TEST(KnobRegistry, SetClampsRoundsAndCountsChanges) {
     EXPECT_TRUE(k.isDefault(i.id));
     EXPECT_THROW(k.addInt("p.i", 1, 0, 2, "p", "dup"), Error);
 }
+
+TEST(KnobRegistry, EnumChoicesAreNamedOnceForDefaultsBranchesAndShaderDefines) {
+    KnobRegistry k;
+    const EnumKnob e = k.addEnum("my_pass.blend-mode", {"add", "alpha 2"}, "alpha 2", "my_pass", "an enum");
+    EXPECT_EQ(k.get(e), 1);
+    EXPECT_EQ(k.choiceIndex(e, "add"), 0);
+    EXPECT_EQ(k.choiceIndex(e, "alpha 2"), 1);
+    try {
+        k.choiceIndex(e, "multiply");
+        ADD_FAILURE() << "no error for an unknown choice";
+    } catch (const Error& ex) {
+        EXPECT_NE(std::string(ex.what()).find("add, alpha 2"), std::string::npos) << ex.what();
+    }
+    EXPECT_EQ(k.choiceDefines(e), (std::vector<std::string>{"MY_PASS_BLEND_MODE_ADD=0", "MY_PASS_BLEND_MODE_ALPHA_2=1"}));
+    EXPECT_THROW(k.addEnum("my_pass.other", {"a", "b"}, "c", "my_pass", "bad default"), Error);
+}
+
+TEST(KnobRegistry, EveryPipelineEnumGivesDistinctShaderDefines) {
+    KnobRegistry knobs;
+    Pipeline pipeline(knobs);
+    std::set<std::string> names;
+    for (size_t id = 0; id < knobs.size(); ++id) {
+        if (knobs.spec(static_cast<int>(id)).type != KnobType::Enum) continue;
+        for (const std::string& d : knobs.choiceDefines(EnumKnob{static_cast<int>(id)})) {
+            const std::string name = d.substr(0, d.find('='));
+            EXPECT_TRUE(names.insert(name).second) << name << " would be defined twice";
+        }
+    }
+    EXPECT_TRUE(names.count("TONEMAP_OPERATOR_REINHARD"));
+}

@@ -1,0 +1,23 @@
+// dw::LightingPass's parameters, shared by shaders/lighting/ambient.frag,
+// shaders/lighting/light.frag and any strategy's shader; see prelude.h.
+// The shaders only ask whether lighting.attenuation is "windowed", so the
+// pass looks that choice up by name and sends a flag: the shared lighting
+// code needs no defines, and strategies compile their programs without the
+// pass's help.
+#ifndef DW_PARAMS_LIGHTING_H
+#define DW_PARAMS_LIGHTING_H
+#include "prelude.h"
+
+#define DW_LIGHTING_PARAMS(FIELD, ARRAY)                                                  \
+    FIELD(int, windowed)         /* lighting.attenuation = windowed */                    \
+    FIELD(int, occlusion)        /* ssao.blurred ran: scale the ambient term by it */     \
+    FIELD(int, ambientSpecular)  /* lighting.ambient_specular */                          \
+    FIELD(int, sky)              /* the sky pass ran: its texture is the background */    \
+    FIELD(float, windowExponent) /* k in the windowed attenuation 1 - (d/r)^k */          \
+    FIELD(float, pad0)                                                                    \
+    FIELD(float, pad1)                                                                    \
+    FIELD(float, pad2)
+DW_PARAM_BLOCK(LightingParams, lightingParams, DW_LIGHTING_PARAMS)
+DW_PARAM_SIZE(LightingParams, 32)
+
+#endif
