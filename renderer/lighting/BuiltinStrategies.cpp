@@ -3,6 +3,7 @@
 #include "renderer/lighting/FullscreenStrategy.h"
 #include "renderer/lighting/LightingStrategy.h"
 #include "renderer/lighting/StencilVolumesStrategy.h"
+#include "renderer/lighting/TiledStrategy.h"
 #include "renderer/lighting/VolumesStrategy.h"
 
 namespace dw {
@@ -19,6 +20,7 @@ std::vector<LightingStrategyFactory> builtinLightingStrategies() {
         make<StencilVolumesStrategy>(),
         make<VolumesStrategy>(),
         make<FullscreenStrategy>(),
+        make<TiledStrategy>(),
     };
 }
 
