@@ -1,5 +1,6 @@
 // The built-in lighting strategies, one line each; the first is the default
 // of lighting.strategy.
+#include "renderer/lighting/ClusteredStrategy.h"
 #include "renderer/lighting/FullscreenStrategy.h"
 #include "renderer/lighting/LightingStrategy.h"
 #include "renderer/lighting/StencilVolumesStrategy.h"
@@ -21,6 +22,7 @@ std::vector<LightingStrategyFactory> builtinLightingStrategies() {
         make<VolumesStrategy>(),
         make<FullscreenStrategy>(),
         make<TiledStrategy>(),
+        make<ClusteredStrategy>(),
     };
 }
 

@@ -27,6 +27,7 @@ LightLists LightLists::split(const LightingFrame& frame) {
             l.oneByOne.push_back(e);
             shadowed.push_back(static_cast<std::uint32_t>(e->row));
         } else {
+            if (!l.firstShaded) l.firstShaded = e;
             l.rows.push_back(static_cast<std::uint32_t>(e->row));
         }
     }

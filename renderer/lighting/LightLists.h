@@ -23,6 +23,9 @@ namespace dw {
 // Shader storage bindings of shaders/lighting/tiles.glsl.
 namespace binding {
 constexpr GLuint kLightCandidatesSsbo = 4;
+constexpr GLuint kClusterGridSsbo = 5;
+constexpr GLuint kClusterIndexSsbo = 6;
+constexpr GLuint kClusterRangeSsbo = 7;
 }  // namespace binding
 
 // lighting.tile_size, declared by whichever strategy asks first.
@@ -36,6 +39,9 @@ struct LightLists {
     // order within each part.
     std::vector<std::uint32_t> rows;
     int shaded = 0;
+    // The first of the shaded lights: a fragment pass over the grid calls
+    // frame.beginLight with it to get the L-buffer target (it has no map to render).
+    const LightTableEntry* firstShaded = nullptr;
     // Lights with a shadow map, for shadeOneByOne.
     std::vector<const LightTableEntry*> oneByOne;
     int culled = 0;  // outside the view frustum (LightTableEntry::inFrustum)

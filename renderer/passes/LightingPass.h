@@ -6,13 +6,13 @@
 // unbounded) light as a full-screen pass, then the bounded point and spot
 // lights by the strategy lighting.strategy names (renderer/lighting/
 // LightingStrategy.h: stencil_volumes, volumes, fullscreen, tiled (which adds
-// by image load/store from a compute pass), and any registered).
+// by image load/store from a compute pass), clustered, and any registered).
 // Shadow maps come from the shadow pass (FrameContext::shadows),
 // rendered just before their light when maps are reused. Also writes
 // lbuffer.depth (the G-buffer depth copied, with the stencil the volumes
 // used; forward passes after lighting test against it, seed 003) and, when
 // asked for, lighting.overlap: light-shader invocations per pixel, and the
-// strategies' own outputs (lighting.tile_counts).
+// strategies' own outputs (lighting.tile_counts, lighting.cluster_counts).
 #include <memory>
 #include <vector>
 

@@ -1,5 +1,6 @@
-// Screen tiles as view-space volumes, and the conservative test of a light's
-// bounding sphere against them, for the tiled strategy (seed 003 section 2.2.1).
+// Screen tiles and clusters as view-space volumes, and the conservative test of
+// a light's bounding sphere against them, for the tiled and clustered
+// strategies (seed 003 section 2.2.1; Olsson, Billeter and Assarsson 2012).
 // A volume is the pixels' rectangle [pixelMin, pixelMax] (window coordinates,
 // pixel edges, so every pixel centre inside lies in it) between two view-space
 // depths. A sphere is kept unless it lies wholly outside one of the four side
@@ -9,11 +10,14 @@
 #define TILES_GLSL
 #include "../common/camera.glsl"
 
-// Shader storage bindings of the tiled strategy (mirrored by
+// Shader storage bindings of the tiled and clustered strategies (mirrored by
 // renderer/lighting/LightLists.h).
 #define LIGHT_CANDIDATES_SSBO 4
+#define CLUSTER_GRID_SSBO 5
+#define CLUSTER_INDEX_SSBO 6
+#define CLUSTER_RANGE_SSBO 7
 
-// The lights a tile may take: rows of the light table. The first
+// The lights a tile or cluster may take: rows of the light table. The first
 // `shaded` of them are shaded by the grid, the rest (lights with a shadow map,
 // shaded one at a time) are only counted.
 layout(std430, binding = LIGHT_CANDIDATES_SSBO) readonly buffer LightCandidates {
@@ -72,6 +76,18 @@ bool sphereMeetsVolume(ScreenVolume v, vec3 c, float r) {
         if (dot(v.planes[i].xyz, c) + v.planes[i].w > r) return false;
     vec3 q = clamp(c, v.boxMin, v.boxMax) - c;
     return dot(q, q) <= r * r;
+}
+
+// Clusters: tiles of tileSize pixels times exponential depth slices, slice k
+// spanning distances near * (far/near)^(k/S) .. near * (far/near)^((k+1)/S);
+// slicing = (near, S / log(far/near)). Index = (slice * tilesY + y) * tilesX + x.
+int clusterSlice(float dist, vec2 slicing, int slices) {
+    return clamp(int(floor(log(max(dist, slicing.x) / slicing.x) * slicing.y)), 0, slices - 1);
+}
+
+uint clusterIndex(ivec2 px, float dist, ivec2 tiles, int tileSize, vec2 slicing, int slices) {
+    ivec2 t = px / tileSize;
+    return uint((clusterSlice(dist, slicing, slices) * tiles.y + t.y) * tiles.x + t.x);
 }
 
 #endif
