@@ -1,8 +1,10 @@
 // The built-in lighting strategies, one line each; the first is the default
 // of lighting.strategy.
+#include "renderer/lighting/ClusteredStrategy.h"
 #include "renderer/lighting/FullscreenStrategy.h"
 #include "renderer/lighting/LightingStrategy.h"
 #include "renderer/lighting/StencilVolumesStrategy.h"
+#include "renderer/lighting/TiledStrategy.h"
 #include "renderer/lighting/VolumesStrategy.h"
 
 namespace dw {
@@ -19,6 +21,8 @@ std::vector<LightingStrategyFactory> builtinLightingStrategies() {
         make<StencilVolumesStrategy>(),
         make<VolumesStrategy>(),
         make<FullscreenStrategy>(),
+        make<TiledStrategy>(),
+        make<ClusteredStrategy>(),
     };
 }
 

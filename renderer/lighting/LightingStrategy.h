@@ -64,6 +64,7 @@ struct StrategyCounts {
     int volumes = 0;     // lights drawn through a volume mesh
     int fullscreen = 0;  // lights drawn over the whole screen
     int culled = 0;      // lights skipped (outside the view frustum)
+    int grid = 0;        // lights shaded many at once from tile or cluster lists
 };
 
 class LightingStrategy {
@@ -77,6 +78,10 @@ public:
     virtual std::vector<OutputDecl> outputs() const { return {}; }
     virtual void setup(gl::ShaderLibrary& shaders) { (void)shaders; }
     virtual StrategyCounts shade(LightingFrame& frame) = 0;
+    // In a frame another strategy shades: writes those of this strategy's own
+    // outputs that were asked for (ctx.wants), without shading, so its light
+    // lists can be looked at whichever strategy lights the image.
+    virtual void writeOutputs(LightingFrame& frame) { (void)frame; }
 };
 
 using LightingStrategyFactory = std::function<std::unique_ptr<LightingStrategy>(KnobRegistry&)>;

@@ -12,6 +12,9 @@ public:
     const char* name() const override { return "volumes"; }
     std::string description() const override { return "the volumes' back faces, no stencil test"; }
     StrategyCounts shade(LightingFrame& frame) override;
+    // One light: frame.beginLight, then its volume's back faces (also the
+    // tiled and clustered strategies' path for lights with a shadow map).
+    static void drawVolume(LightingFrame& frame, const LightTableEntry& entry);
 };
 
 }  // namespace dw

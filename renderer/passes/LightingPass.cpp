@@ -51,7 +51,8 @@ std::vector<OutputDecl> LightingPass::outputs() const {
          "the G-buffer depth copied for the L-buffer, with the stencil the light volumes used (DEPTH32F_STENCIL8)",
          texture2D(GL_DEPTH32F_STENCIL8), 1},
         {"lighting.overlap", OutputKind::Count,
-         "light-shader invocations per pixel: how many light volumes passed the stencil test (R32F)", texture2D(GL_R32F), 1,
+         "light-shader invocations per pixel: how many light volumes passed the stencil test, or how many lights "
+         "of its tile or cluster list a pixel evaluated (R32F)", texture2D(GL_R32F), 1,
          true}};
     for (const auto& s : strategies_)
         for (auto& o : s->outputs()) out.push_back(o);
@@ -164,16 +165,21 @@ void LightingPass::execute(FrameContext& ctx) {
         return (a->volume.shape == VolumeShape::Cone) < (b->volume.shape == VolumeShape::Cone);
     });
     const StrategyCounts sc = strategy.shade(frame);
+    for (auto& other : strategies_)
+        if (other.get() != &strategy) other->writeOutputs(frame);  // their lists, when asked for
     counts_.volumes = sc.volumes;
+    counts_.grid = sc.grid;
     counts_.fullscreen += sc.fullscreen;
     counts_.frustumCulled = sc.culled;
     gl::resetPipelineState(ctx.width, ctx.height);
     fbo.bind();
     fbo.setDrawBuffers({0});
 
-    const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.frustumCulled + counts_.belowThreshold;
+    const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.grid + counts_.frustumCulled +
+                      counts_.belowThreshold;
     stats_ = std::string(strategy.name()) + ", " + std::to_string(total) + " lights: " + std::to_string(counts_.directional) +
-             " directional, " + std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) +
+             " directional, " + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
+             std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;

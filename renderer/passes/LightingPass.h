@@ -5,12 +5,14 @@
 // the ambient term, emission and the sky first, then each directional (and
 // unbounded) light as a full-screen pass, then the bounded point and spot
 // lights by the strategy lighting.strategy names (renderer/lighting/
-// LightingStrategy.h: stencil_volumes, volumes, fullscreen, and any
-// registered). Shadow maps come from the shadow pass (FrameContext::shadows),
+// LightingStrategy.h: stencil_volumes, volumes, fullscreen, tiled (which adds
+// by image load/store from a compute pass), clustered, and any registered).
+// Shadow maps come from the shadow pass (FrameContext::shadows),
 // rendered just before their light when maps are reused. Also writes
 // lbuffer.depth (the G-buffer depth copied, with the stencil the volumes
 // used; forward passes after lighting test against it, seed 003) and, when
-// asked for, lighting.overlap: light-shader invocations per pixel.
+// asked for, lighting.overlap: light-shader invocations per pixel, and the
+// strategies' own outputs (lighting.tile_counts, lighting.cluster_counts).
 #include <memory>
 #include <vector>
 
@@ -39,6 +41,7 @@ public:
 
     struct Counts {
         int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
+        int grid = 0;  // shaded from tile or cluster lists (tiled, clustered)
     };
     const Counts& lastCounts() const { return counts_; }
     // The strategies, in the order of lighting.strategy's choices.

@@ -1,10 +1,7 @@
 #version 450 core
 // One light's contribution, added to the L-buffer (seed 000 section 5.2.1).
 // Shared by every lighting strategy, so their images differ only by rounding.
-#include "gbuffer_read.glsl"
-#include "../params/lighting.h"
-#include "../common/lighting.glsl"
-#include "../common/shadow.glsl"
+#include "shade.glsl"
 
 layout(location = 0) uniform int uLight;
 
@@ -24,15 +21,6 @@ void main() {
         outColor = vec4(0.0);  // not discarded, so the invocation is still counted
         return;
     }
-    Light light = lights[uLight];
-    vec3 c = shadeLight(light, s.position, s.normal, s.diffuse, s.specular, s.exponent,
-                        lightingParams.windowed != 0, lightingParams.windowExponent);
-    if (light.shadowParams.x > 0.5 && any(greaterThan(c, vec3(0.0)))) {
-        bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
-        vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;
-        float dist = directional ? 0.0 : length(toLight);
-        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position,
-                              normalize(toLight), dist);
-    }
+    vec3 c = lightRadiance(lights[uLight], s);
     outColor = vec4(c, 0.0);
 }

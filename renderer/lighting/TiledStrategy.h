@@ -1,0 +1,45 @@
+#pragma once
+// Tiled deferred shading (seed 003 section 2.2.1, seed 004 "Moving forward"):
+// a compute pass (shaders/lighting/tiled.comp) with one work group per screen
+// tile of lighting.tile_size pixels. Each group takes the nearest and farthest
+// depth of its tile's surfaces (gbuffer.depth), culls every light's bounding
+// sphere against the tile's frustum between them into a list in shared
+// memory, and adds all of the list's lights into the L-buffer (imageLoad /
+// imageStore on lbuffer, after the ambient pass) with the light shader's
+// lightRadiance (shaders/lighting/shade.glsl), so the image is the volume
+// strategies'. Lights with a shadow map are shaded one at a time (see
+// LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
+// length) when asked for, and adds its per-pixel work into lighting.overlap.
+#include <map>
+
+#include "renderer/gl/Buffer.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/lighting/LightLists.h"
+#include "renderer/lighting/LightingStrategy.h"
+
+namespace dw {
+
+class TiledStrategy : public LightingStrategy {
+public:
+    explicit TiledStrategy(KnobRegistry& knobs);
+    const char* name() const override { return "tiled"; }
+    std::string description() const override {
+        return "a compute pass per screen tile: depth bounds, the lights that meet the tile's frustum, all shaded "
+               "at once (lighting.tile_size)";
+    }
+    std::vector<OutputDecl> outputs() const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    StrategyCounts shade(LightingFrame& frame) override;
+    void writeOutputs(LightingFrame& frame) override;
+
+private:
+    // Culls (and shades, when `shade`) every tile.
+    void dispatch(LightingFrame& frame, const LightLists& lists, bool shade);
+
+    IntKnob tileSize_;
+    gl::ShaderLibrary* shaders_ = nullptr;
+    std::map<int, gl::ShaderLibrary::Handle> programs_;  // per tile size, compiled on first use
+    gl::Buffer candidates_;
+};
+
+}  // namespace dw

@@ -1,0 +1,37 @@
+#version 450 core
+// Clustered shading, step 3 (full screen): every surface pixel finds its
+// cluster and adds the lights of the cluster's list, the same lightRadiance
+// as light.frag, in one blended write.
+#define CLUSTER_GRID_ACCESS readonly
+#define CLUSTER_INDEX_ACCESS readonly
+#define UNSHADOWED 1
+#include "shade.glsl"
+#include "cluster_common.glsl"
+
+layout(location = 2) uniform int uShaded;  // candidates below this index are shaded
+
+layout(location = 0) out vec4 outColor;
+#ifdef COUNT_OVERLAP
+// The lights evaluated at the pixel, added up by the blend (lighting.overlap).
+layout(location = 1) out float outOverlap;
+#endif
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    Surface s = readSurface(px);
+    vec3 sum = vec3(0.0);
+    uint shaded = 0u;
+    if (isSurface(s)) {
+        ClusterCell cell = cells[pixelCluster(px, -s.position.z)];
+        for (uint k = 0u; k < cell.count; ++k) {
+            uint i = clusterLights.index[cell.offset + k];
+            if (int(i) >= uShaded) continue;
+            sum += lightRadiance(lights[candidateRows[i]], s);
+            ++shaded;
+        }
+    }
+    outColor = vec4(sum, 0.0);
+#ifdef COUNT_OVERLAP
+    outOverlap = float(shaded);
+#endif
+}

@@ -1,0 +1,31 @@
+// One bounded or directional light's radiance at a G-buffer surface: the
+// shading equation (common/lighting.glsl) times the light's shadow lookup when
+// it has a map. Every lighting strategy evaluates this one function, the
+// fragment shader once per light (light.frag) and the tiled and clustered
+// shaders in a loop over their light lists, so their images agree to rounding.
+// A shader that never shades a light with a shadow map (the tiled and
+// clustered grids) defines UNSHADOWED first: the shadow lookup is then left
+// out, which on llvmpipe more than halves the loop's cost although the branch
+// would never be taken.
+#include "gbuffer_read.glsl"
+#include "../params/lighting.h"
+#include "../common/lighting.glsl"
+#include "../common/shadow.glsl"
+
+vec3 lightRadiance(Light light, Surface s) {
+    vec3 c = shadeLight(light, s.position, s.normal, s.diffuse, s.specular, s.exponent,
+                        lightingParams.windowed != 0, lightingParams.windowExponent);
+#ifndef UNSHADOWED
+    if (light.shadowParams.x > 0.5 && any(greaterThan(c, vec3(0.0)))) {
+        bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
+        vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;
+        float dist = directional ? 0.0 : length(toLight);
+        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position,
+                              normalize(toLight), dist);
+    }
+#endif
+    return c;
+}
+
+// Whether the pixel holds a surface to light (not background, not cleared depth).
+bool isSurface(Surface s) { return !(s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND); }

@@ -1,0 +1,416 @@
+// The tiled and clustered strategies (seed 003 section 2.2.1; Olsson, Billeter
+// and Assarsson 2012) light the same L-buffer as the volume strategies and the
+// brute-force reference, on the default scene, with the camera inside light
+// volumes, with many small lights straddling tile edges and depth slices, and
+// with shadowed lights (shaded one at a time). Their per-pixel light lists
+// (lighting.tile_counts, lighting.cluster_counts) are conservative: never
+// shorter than the lights that really reach a pixel, empty far from every
+// light, and clusters no longer than tiles.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/lighting/LightVolume.h"
+#include "renderer/passes/LightTablePass.h"
+#include "renderer/passes/LightingPass.h"
+#include "renderer/reference/ShadingReference.h"
+#include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+const char* const kStrategies[] = {"stencil_volumes", "volumes", "fullscreen", "tiled", "clustered"};
+
+FloatImage lbufferWith(RenderSession& s, const std::string& strategy) {
+    s.knobs().setFromString("lighting.strategy", strategy);
+    s.render({{"lbuffer", "gbuffer.view_position"}});
+    return s.readRaw("lbuffer");
+}
+
+bool sumsPerLight(const std::string& strategy) { return strategy != "tiled" && strategy != "clustered"; }
+
+// The spacing of RGBA16F values around v >= 0 (one unit in the last place).
+double ulp16(double v) {
+    return v < std::ldexp(1.0, -14) ? std::ldexp(1.0, -24) : std::ldexp(1.0, static_cast<int>(std::floor(std::log2(v))) - 10);
+}
+
+// Renders with every strategy and checks each against the brute-force
+// reference (every light over every pixel). Strategies that add light by
+// light through the blender (stencil_volumes, volumes, fullscreen) round the
+// RGBA16F sum after every light; tiled and clustered sum a pixel's lights in
+// 32-bit floats and round once. Within each kind the images must agree to
+// 1e-3 relative. Across kinds the blender's roundings are the difference,
+// up to one unit in the last place (of RGBA16F) per light reaching the pixel
+// (on llvmpipe they all go one way: the blended sums come out low, as with
+// rounding towards zero, 1.2% at the default scene's worst pixel). There the
+// bound is (n + 2) ulps, n counted from the light table: every light whose
+// sphere holds the pixel's surface, and every unbounded one.
+void expectStrategiesAgree(RenderSession& s, const std::string& what) {
+    const FloatImage reference = lbufferWith(s, "fullscreen");
+    const FloatImage P = s.readRaw("gbuffer.view_position");
+    const LightTable& table = s.pipeline().pass<LightTablePass>()->table();
+    std::vector<int> reaching(static_cast<std::size_t>(P.width * P.height), 0);
+    for (int y = 0; y < P.height; ++y)
+        for (int x = 0; x < P.width; ++x) {
+            const glm::vec3 p(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2));
+            for (const LightGpu& row : table.rows) {
+                const float r = row.positionRadius.w;
+                reaching[static_cast<std::size_t>(y * P.width + x)] +=
+                    r <= 0.0f || glm::length(p - glm::vec3(row.positionRadius)) <= r * 1.0001f;
+            }
+        }
+    EXPECT_GT(test::stats(reference, 0).max, 0.0) << what;
+    struct Worst {
+        double relative = 0.0, budget = 0.0, single = 0.0;
+        int x = 0, y = 0;
+    };
+    auto compare = [&](const FloatImage& a, const FloatImage& b) {
+        Worst w;
+        for (int y = 0; y < a.height; ++y)
+            for (int x = 0; x < a.width; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const double va = a.at(x, y, c), vb = b.at(x, y, c);
+                    const double big = std::max(std::fabs(va), std::fabs(vb));
+                    const double rel = std::fabs(va - vb) / (big + 1e-3);
+                    const int n = reaching[static_cast<std::size_t>(y * a.width + x)];
+                    if (rel > w.relative) w.relative = rel, w.x = x, w.y = y;
+                    w.budget = std::max(w.budget, std::fabs(va - vb) / ((n + 2) * ulp16(big)));
+                    if (n <= 1) w.single = std::max(w.single, rel);
+                }
+        return w;
+    };
+    FloatImage tiled;
+    for (const char* strategy : kStrategies) {
+        const FloatImage image = lbufferWith(s, strategy);
+        const Worst w = compare(image, reference);
+        std::printf("%s: %s vs fullscreen: worst relative difference %.3g at (%d, %d), %.3g where at most one light "
+                    "reaches; worst |difference| / ((n + 2) ulp) %.3g\n",
+                    what.c_str(), strategy, w.relative, w.x, w.y, w.single, w.budget);
+        if (sumsPerLight(strategy)) {
+            EXPECT_LE(w.relative, 1e-3) << what << ", " << strategy << " at " << w.x << "," << w.y;
+            continue;
+        }
+        EXPECT_LE(w.budget, 1.0) << what << ", " << strategy;
+        // Where at most one light reaches, both kinds round once (or not at all).
+        EXPECT_LE(w.single, 1e-3) << what << ", " << strategy;
+        if (tiled.width == 0) {
+            tiled = image;
+            continue;
+        }
+        const Worst g = compare(image, tiled);
+        std::printf("%s: %s vs tiled: worst relative difference %.3g at (%d, %d)\n", what.c_str(), strategy, g.relative,
+                    g.x, g.y);
+        EXPECT_LE(g.relative, 1e-3) << what << ", " << strategy << " vs tiled at " << g.x << "," << g.y;
+    }
+}
+
+// Boxes on a floor among point and spot lights (LightingTest's scene).
+Scene boxesScene() {
+    Scene s = test::planeScene(30.0f);
+    Material m;
+    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    m.specularColor = glm::vec3(0.4f);
+    m.specularExponent = 40.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 5; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-6.0f + i * 3.0f, 1.0f, -2.0f + (i % 2) * 3.0f})});
+    for (int i = 0; i < 12; ++i) {
+        const float a = static_cast<float>(i) * 0.52f;
+        test::addPointLight(s, {std::cos(a) * 5.0f, 0.4f + 0.3f * (i % 3), std::sin(a) * 4.0f},
+                            glm::vec3(0.5f + 0.1f * (i % 4), 0.8f, 1.2f - 0.1f * (i % 5)), {1.0f, 0.5f, 2.0f});
+    }
+    for (int i = 0; i < 4; ++i)
+        test::addSpotLight(s, {-4.5f + i * 3.0f, 4.0f, 3.0f}, {0.1f * i, -1.0f, -0.5f}, 20.0f + 8.0f * i, 4.0f,
+                           glm::vec3(4.0f, 3.0f, 2.0f), {1.0f, 0.2f, 0.3f});
+    s.ambient = glm::vec3(0.02f);
+    return s;
+}
+
+// 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
+// floor with boxes: their spheres cross tile edges at 96x54 and, at heights
+// from 0.1 to 1.6 over surfaces 3 to 20 units away, several depth slices.
+// The right part of the floor has no light near it. Every 9th light is a spot.
+Scene straddleScene(int shadowed = 0) {
+    Scene s = test::planeScene(40.0f);
+    s.lights.clear();
+    s.camera.position = {0.0f, 7.0f, 11.0f};
+    s.camera.target = {0.0f, 0.0f, -2.0f};
+    Material m;
+    m.baseColor = glm::vec4(0.8f, 0.75f, 0.7f, 1.0f);
+    m.specularColor = glm::vec3(0.3f);
+    m.specularExponent = 24.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 6; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-9.0f + i * 2.3f, 0.75f, -6.0f + (i % 3) * 3.1f})});
+    for (int i = 0; i < 200; ++i) {
+        const int gx = i % 20, gz = i / 20;
+        const float jx = std::fmod(i * 0.618f, 1.0f) - 0.5f, jz = std::fmod(i * 0.414f, 1.0f) - 0.5f;
+        const glm::vec3 pos(-11.0f + gx * 0.65f + jx * 0.5f, 0.1f + 1.5f * std::fmod(i * 0.273f, 1.0f),
+                            -12.0f + gz * 1.7f + jz * 0.8f);
+        const float radius = 1.0f + std::fmod(i * 0.37f, 1.0f);
+        const glm::vec3 colour(0.4f + 0.6f * std::fmod(i * 0.31f, 1.0f), 0.4f + 0.6f * std::fmod(i * 0.57f, 1.0f),
+                               0.4f + 0.6f * std::fmod(i * 0.79f, 1.0f));
+        const float peak = std::max(colour.r, std::max(colour.g, colour.b));
+        // Reaches 1/255 (lighting.threshold's default) at `radius`.
+        const Attenuation att{1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)};
+        Light& l = i % 9 == 4 ? test::addSpotLight(s, pos + glm::vec3(0, 0.5f, 0), {0.2f, -1.0f, 0.1f}, 35.0f, 2.0f,
+                                                   colour, att)
+                              : test::addPointLight(s, pos, colour, att);
+        l.castShadows = i % 67 == 10 && shadowed-- > 0;
+    }
+    s.ambient = glm::vec3(0.01f);
+    return s;
+}
+
+}  // namespace
+
+TEST(TiledLighting, EveryStrategyAgreesOnTheDefaultScene) {
+    auto session = test::makeSession(160, 90);
+    session->loadScene("default");
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    for (const char* reuse : {"true", "false"}) {
+        session->knobs().setFromString("shadows.reuse_map", reuse);
+        expectStrategiesAgree(*session, std::string("default scene, shadows.reuse_map = ") + reuse);
+    }
+    // The shadowed spot lights went one at a time, the rest through the grid.
+    session->knobs().setFromString("lighting.strategy", "tiled");
+    session->render({{"lbuffer"}});
+    const LightingPass::Counts tiled = lighting->lastCounts();
+    int shadowedBounded = 0;
+    for (const LightTableEntry& e : session->pipeline().pass<LightTablePass>()->table().entries)
+        shadowedBounded += e.shadowed && e.light->type != LightType::Directional;
+    session->knobs().setFromString("lighting.strategy", "clustered");
+    session->render({{"lbuffer"}});
+    const LightingPass::Counts clustered = lighting->lastCounts();
+    std::printf("default scene: tiled %d in tiles, %d one at a time, %d outside the frustum; clustered %d in clusters, "
+                "%d one at a time\n",
+                tiled.grid, tiled.volumes, tiled.frustumCulled, clustered.grid, clustered.volumes);
+    EXPECT_GT(tiled.grid, 30);
+    EXPECT_GE(shadowedBounded, 1);
+    EXPECT_EQ(tiled.volumes, shadowedBounded);
+    EXPECT_EQ(clustered.grid, tiled.grid);
+    EXPECT_EQ(clustered.volumes, tiled.volumes);
+}
+
+TEST(TiledLighting, EveryStrategyAgreesWithTheCameraInsideVolumes) {
+    auto session = test::makeSession(160, 90);
+    session->setScene(boxesScene());
+    session->camera().position = {0.0f, 1.0f, 3.5f};
+    session->camera().target = {0.0f, 0.5f, -2.0f};
+    expectStrategiesAgree(*session, "camera inside volumes");
+}
+
+TEST(TiledLighting, EveryStrategyAgreesWithManySmallLightsAcrossTilesAndSlices) {
+    auto session = test::makeSession(96, 54);
+    session->setScene(straddleScene(3));
+    for (const char* tile : {"4", "12", "16", "32"}) {
+        session->knobs().setFromString("lighting.tile_size", tile);
+        for (const char* slices : {"3", "24"}) {
+            session->knobs().setFromString("lighting.cluster_slices", slices);
+            expectStrategiesAgree(*session, std::string("200 lights, tile ") + tile + ", " + slices + " slices");
+        }
+    }
+}
+
+// More lights than one tiled dispatch holds in its shared-memory list (4096):
+// the strategy dispatches again for the rest, adding to the image and the counts.
+TEST(TiledLighting, EveryStrategyAgreesWithMoreLightsThanOneDispatchHolds) {
+    auto session = test::makeSession(64, 36);
+    Scene s = test::planeScene(40.0f);
+    s.camera.position = {0.0f, 9.0f, 9.0f};
+    s.camera.target = {0.0f, 0.0f, -3.0f};
+    for (int i = 0; i < 4500; ++i) {
+        const glm::vec3 pos(-15.0f + (i % 75) * 0.4f, 0.2f + 0.3f * std::fmod(i * 0.618f, 1.0f), -20.0f + (i / 75) * 0.4f);
+        const glm::vec3 colour(0.3f + 0.7f * std::fmod(i * 0.31f, 1.0f), 0.5f, 0.3f + 0.7f * std::fmod(i * 0.79f, 1.0f));
+        const float peak = std::max(colour.r, colour.b), radius = 0.6f;
+        test::addPointLight(s, pos, colour, {1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)});
+    }
+    session->setScene(std::move(s));
+    expectStrategiesAgree(*session, "4500 lights");
+    session->knobs().setFromString("lighting.strategy", "tiled");
+    session->render({{"lbuffer", "lighting.tile_counts", "lighting.cluster_counts"}});
+    const FloatImage tiles = session->readRaw("lighting.tile_counts"), clusters = session->readRaw("lighting.cluster_counts");
+    std::printf("4500 lights: largest tile list %.0f, largest cluster list %.0f\n", test::stats(tiles, 0).max,
+                test::stats(clusters, 0).max);
+    EXPECT_GT(test::stats(tiles, 0).max, 0.0);
+}
+
+TEST(TiledLighting, TileAndClusterCountsAreConservative) {
+    const int W = 96, H = 54;
+    auto session = test::makeSession(W, H);
+    session->setScene(straddleScene());
+    session->knobs().setFromString("lighting.tile_size", "16");
+    for (const char* strategy : {"tiled", "clustered", "stencil_volumes"}) {
+        session->knobs().setFromString("lighting.strategy", strategy);
+        session->render({{"lbuffer", "lighting.tile_counts", "lighting.cluster_counts", "gbuffer.view_position"}});
+        const FloatImage tiles = session->readRaw("lighting.tile_counts");
+        const FloatImage clusters = session->readRaw("lighting.cluster_counts");
+        const FloatImage P = session->readRaw("gbuffer.view_position");
+        const LightTable& table = session->pipeline().pass<LightTablePass>()->table();
+
+        // Lights whose lit region (the sphere of their radius) holds the pixel's surface.
+        auto reaching = [&](int x, int y) {
+            if (P.at(x, y, 3) == 0.0f) return 0;
+            const glm::vec3 p(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2));
+            int n = 0;
+            for (const LightGpu& row : table.rows)
+                n += row.positionRadius.w > 0.0f &&
+                     glm::length(p - glm::vec3(row.positionRadius)) < row.positionRadius.w * 0.9999f;
+            return n;
+        };
+        // Whether any light's sphere can touch tile (tx, ty) (counted from the
+        // bottom left, as GL's window coordinates): its bounding box
+        // projected, a pixel wider, meets the tile's rectangle, or the box
+        // crosses the near plane. When it does not, the sphere lies wholly
+        // beyond one of the planes through the tile's edges, which the shader's
+        // test rejects (with its rounding slack of 1e-4 r).
+        const glm::mat4 proj = session->camera().projection(static_cast<float>(W) / H);
+        auto nearSomeLight = [&](int tx, int ty) {
+            for (const LightGpu& row : table.rows) {
+                const glm::vec3 c(row.positionRadius);
+                const float r = 1.01f * row.positionRadius.w;
+                if (-c.z - r <= session->camera().nearPlane) return true;
+                glm::vec2 lo(1e30f), hi(-1e30f);
+                for (int k = 0; k < 8; ++k) {
+                    const glm::vec4 q = proj * glm::vec4(c + glm::vec3(k & 1 ? r : -r, k & 2 ? r : -r, k & 4 ? r : -r), 1.0f);
+                    const glm::vec2 w = (glm::vec2(q) / q.w * 0.5f + 0.5f) * glm::vec2(W, H);
+                    lo = glm::min(lo, w);
+                    hi = glm::max(hi, w);
+                }
+                if (hi.x + 1 >= tx * 16 && lo.x - 1 <= (tx + 1) * 16 && hi.y + 1 >= ty * 16 && lo.y - 1 <= (ty + 1) * 16)
+                    return true;
+            }
+            return false;
+        };
+
+        long long surface = 0, tileSum = 0, clusterSum = 0, clusterAboveTile = 0, farTiles = 0, lit = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const int t = static_cast<int>(tiles.at(x, y, 0)), c = static_cast<int>(clusters.at(x, y, 0));
+                const int truth = reaching(x, y);
+                lit += truth > 0;
+                EXPECT_GE(t, truth) << strategy << ": tile count at " << x << "," << y;
+                EXPECT_GE(c, truth) << strategy << ": cluster count at " << x << "," << y;
+                // Every pixel of a tile shows the tile's count (read-back rows run top-down, tiles bottom-up).
+                const int gy = H - 1 - y;
+                EXPECT_EQ(t, static_cast<int>(tiles.at(x / 16 * 16, H - 1 - gy / 16 * 16, 0))) << x << "," << y;
+                if (P.at(x, y, 3) == 0.0f) {
+                    EXPECT_EQ(c, 0) << "background " << x << "," << y;
+                    continue;
+                }
+                ++surface;
+                tileSum += t;
+                clusterSum += c;
+                clusterAboveTile += c > t;
+            }
+        for (int ty = 0; ty * 16 < H; ++ty)
+            for (int tx = 0; tx * 16 < W; ++tx) {
+                if (nearSomeLight(tx, ty)) continue;
+                ++farTiles;
+                EXPECT_EQ(tiles.at(tx * 16, H - 1 - ty * 16, 0), 0.0f) << strategy << ": tile " << tx << "," << ty;
+            }
+        const double meanTile = static_cast<double>(tileSum) / surface, meanCluster = static_cast<double>(clusterSum) / surface;
+        std::printf("%s: %lld lit pixels; mean lights per surface pixel: tile %.2f, cluster %.2f; cluster > tile at %lld "
+                    "pixels; %lld tiles far from every light\n",
+                    strategy, lit, meanTile, meanCluster, clusterAboveTile, farTiles);
+        EXPECT_GT(lit, W * H / 4);
+        EXPECT_GE(farTiles, 6);
+        EXPECT_LT(meanCluster, meanTile);
+        EXPECT_EQ(clusterAboveTile, 0);
+    }
+}
+
+TEST(TiledLighting, OverlapCountsTheLightsEachPixelEvaluated) {
+    const int W = 96, H = 54;
+    auto session = test::makeSession(W, H);
+    session->setScene(straddleScene());
+    for (const char* strategy : {"tiled", "clustered"}) {
+        session->knobs().setFromString("lighting.strategy", strategy);
+        session->render({{"lbuffer", "lighting.overlap", "lighting.tile_counts", "lighting.cluster_counts",
+                          "gbuffer.view_position"}});
+        const FloatImage overlap = session->readRaw("lighting.overlap");
+        const FloatImage lists = session->readRaw(std::string(strategy) == "tiled" ? "lighting.tile_counts" : "lighting.cluster_counts");
+        const FloatImage P = session->readRaw("gbuffer.view_position");
+        double sum = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                // No shadowed or directional light here: each surface pixel evaluated its whole list.
+                const float expected = P.at(x, y, 3) == 0.0f ? 0.0f : lists.at(x, y, 0);
+                EXPECT_EQ(overlap.at(x, y, 0), expected) << strategy << " at " << x << "," << y;
+                sum += overlap.at(x, y, 0);
+            }
+        std::printf("%s: mean light evaluations per pixel %.2f (of 200 lights)\n", strategy, sum / (W * H));
+        EXPECT_GT(sum, 0.0);
+    }
+}
+
+
+// Against the shading equation in double precision (renderer/reference): the
+// single rounding of tiled and clustered lands nearer than the blender's
+// rounding after every light.
+TEST(TiledLighting, GridStrategiesMatchTheCpuShadingEquation) {
+    const int W = 160, H = 90;
+    auto session = test::makeSession(W, H);
+    Scene s = boxesScene();
+    s.ambient = glm::vec3(0.0f);
+    const std::vector<Light> lights = s.lights;
+    session->setScene(std::move(s));
+    double worstOf[3] = {0, 0, 0};
+    const char* const strategies[] = {"fullscreen", "tiled", "clustered"};
+    for (int k = 0; k < 3; ++k) {
+        session->knobs().setFromString("lighting.strategy", strategies[k]);
+        session->render({{"lbuffer", "gbuffer.view_position", "gbuffer.view_normal"}});
+        const FloatImage L = session->readRaw("lbuffer");
+        const FloatImage P = session->readRaw("gbuffer.view_position");
+        const FloatImage N = session->readRaw("gbuffer.view_normal");
+        const FloatImage albedo = session->readRaw("gbuffer.albedo");
+        const FloatImage spec = session->readRaw("gbuffer.specular");
+        const glm::dmat4 view = glm::dmat4(session->camera().view());
+        double worst = 0.0, bias = 0.0;
+        int checked = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (P.at(x, y, 3) == 0.0f) continue;
+                reference::SurfacePoint sp;
+                sp.position = {P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)};
+                sp.normal = glm::normalize(glm::dvec3(N.at(x, y, 0), N.at(x, y, 1), N.at(x, y, 2)));
+                sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
+                sp.specular = {spec.at(x, y, 0), spec.at(x, y, 1), spec.at(x, y, 2)};
+                sp.exponent = std::exp2(spec.at(x, y, 3) * 11.0);
+                glm::dvec3 expected(0.0);
+                for (const Light& l : lights) {
+                    const LightVolume v = computeLightVolume(l, 1.0 / 255.0);
+                    if (v.shape == VolumeShape::Culled) continue;
+                    const glm::dvec3 lp = glm::dvec3(view * glm::dvec4(glm::dvec3(l.position), 1.0));
+                    const glm::dvec3 ld = glm::dvec3(view * glm::dvec4(glm::dvec3(l.direction), 0.0));
+                    expected += reference::shadeLight(l, lp, ld, std::isfinite(v.radius) ? v.radius : 0.0, sp,
+                                                      reference::AttenuationModel::Classic, 20.0);
+                }
+                for (int c = 0; c < 3; ++c) {
+                    const double e = (L.at(x, y, c) - expected[c]) / (std::fabs(expected[c]) + 0.01);
+                    worst = std::max(worst, std::fabs(e));
+                    bias += e;
+                }
+                ++checked;
+            }
+        worstOf[k] = worst;
+        std::printf("%s vs the CPU equation: worst relative error %.3g, mean signed %.3g over %d pixels\n", strategies[k],
+                    worst, bias / (3.0 * checked), checked);
+        EXPECT_GT(checked, 5000);
+        // LightingTest holds the blended strategies to 1e-2; the grid's single rounding does better.
+        EXPECT_LT(worst, k == 0 ? 1e-2 : 5e-3) << strategies[k];
+    }
+    EXPECT_LE(worstOf[1], worstOf[0]);
+    EXPECT_LE(worstOf[2], worstOf[0]);
+}
