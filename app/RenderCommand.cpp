@@ -76,7 +76,7 @@ int runRenderCommand(int argc, char** argv) {
         if (i == run.warmup) firstCounted = report.frameIndex;
     }
     session.writeOutput(buffer, *out);
-    std::printf("wrote %s (%dx%d, %s, scene %s)\n", out->c_str(), run.width, run.height, buffer.c_str(),
+    std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
                 session.scene().name.c_str());
     if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
     if (timed) {

@@ -36,6 +36,8 @@ const dw::Command* findCommand(const std::string& name) {
 
 int main(int argc, char** argv) {
     const std::string word = argc > 1 ? argv[1] : "";
+    // Which command a usage error belongs to: its own help is the pointer, not every command's usage.
+    const dw::Command* command = word.empty() || word.rfind("--", 0) == 0 ? &dw::commands().front() : findCommand(word);
     try {
         if (word == "--help" || word == "-h" || word == "help") {
             // "help render" is "render --help".
@@ -59,7 +61,8 @@ int main(int argc, char** argv) {
         throw dw::UsageError("unknown command '" + word + "'");
     } catch (const dw::UsageError& e) {
         std::fprintf(stderr, "deferred-workbench: %s\n", e.what());
-        printUsage(stderr);
+        if (command) std::fprintf(stderr, "(deferred-workbench help %s lists its options)\n", command->name);
+        else printUsage(stderr);
         return 2;
     } catch (const dw::gl::ShaderError& e) {
         std::fprintf(stderr, "deferred-workbench: shader error: %s\n", e.what());

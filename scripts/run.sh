@@ -9,9 +9,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${DW_BUILD_DIR:-$root/build}/deferred-workbench
 if [[ -z "${DISPLAY:-}" && -z "${WAYLAND_DISPLAY:-}" ]]; then
   mkdir -p "$root/out"
-  echo "run: no display, so no window; rendering the default scene headless instead"
+  echo "run: no display, so no window; rendering headless instead, to out/frame.png"
   # No --scene here: the default scene is the default, and a --preset naming
   # its own scene should get it (an explicit --scene would win over it).
-  exec "$bin" render --size 1280x720 --out "$root/out/default.png" "$@"
+  exec "$bin" render --size 1280x720 --out "$root/out/frame.png" "$@"
 fi
 exec "$bin" gui "$@"

@@ -118,6 +118,23 @@ Texture Texture::create3D(GLenum internalFormat, int width, int height, int dept
     return t;
 }
 
+Texture Texture::createView(const Texture& source, GLenum target, int firstLayer, int layers) {
+    GLuint id = 0;
+    glGenTextures(1, &id);  // a view needs a name that has never been bound: not glCreateTextures
+    if (id == 0) throw Error("glGenTextures failed");
+    glTextureView(id, target, source.id(), source.internalFormat(), 0, static_cast<GLuint>(source.levels()),
+                  static_cast<GLuint>(firstLayer), static_cast<GLuint>(layers));
+    Texture t;
+    t.name_ = GlObject<TextureTraits>(id);
+    t.target_ = target;
+    t.format_ = source.format_;
+    t.width_ = source.width_;
+    t.height_ = source.height_;
+    t.levels_ = source.levels_;
+    t.layers_ = layers;
+    return t;
+}
+
 int Texture::width(int level) const { return std::max(width_ >> level, 1); }
 int Texture::height(int level) const { return std::max(height_ >> level, 1); }
 

@@ -18,6 +18,10 @@ public:
     static Texture createArray(GLenum target, GLenum internalFormat, int size, int layers);
     static Texture create2DArray(GLenum internalFormat, int width, int height, int layers, int levels = 1);
     static Texture create3D(GLenum internalFormat, int width, int height, int depth);
+    // A view (glTextureView) of `source`'s levels and layers [firstLayer,
+    // firstLayer + layers) as `target` (e.g. a cube map read as a 2D array of
+    // faces): same storage, sampling state of its own.
+    static Texture createView(const Texture& source, GLenum target, int firstLayer, int layers);
     int layers() const { return layers_; }
     // Number of mip levels of a full chain down to 1x1.
     static int fullMipCount(int width, int height);

@@ -47,6 +47,9 @@ struct FrameContext {
     // For sub-spans inside a pass (beginSubSpan/endSubSpan); may be null.
     PassTimer* timer = nullptr;
 
+    // What the caller asked for this frame ("final" resolved), as opposed to
+    // what passes consume: a pass may do more when its output is looked at.
+    std::set<std::string> requested;
     // Whether an output is consumed this frame; passes skip optional work otherwise.
     bool wants(const std::string& name) const { return wanted.count(name) != 0; }
 

@@ -284,6 +284,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     allocateResources(plan);
     outputs_.markFrameStart();
     FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, plan.wanted, &timer_};
+    for (const auto& r : request.outputs) ctx.requested.insert(r == kFinalOutput ? plan.finalName : r);
 
     timer_.beginFrame(frame_);
     try {

@@ -109,20 +109,16 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     // Sources written by shader stores (buffers, images) are complete before they are read.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::resetPipelineState(w, h);
-    if (sourceKind != SourceArray && sourceKind != Source3D) sourceView_.reset();
+    if (sourceKind != SourceArray && sourceKind != Source3D) sourceView_ = gl::Texture();
     if (sourceKind == SourceBuffer) {
         output.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     } else if (sourceKind == SourceArray || sourceKind == Source3D) {
         // A view of all layers and levels: its own sampling state (no depth
         // compare, depth of a depth-stencil format), and cubes read as 2D arrays of faces.
-        GLuint id = 0;
-        glGenTextures(1, &id);
         const GLenum target = sourceKind == Source3D ? GL_TEXTURE_3D : GL_TEXTURE_2D_ARRAY;
         const int layers = sourceKind == Source3D ? 1 : kind == ResourceKind::TextureCube ? 6 : src->layers();
-        glTextureView(id, target, src->id(), src->internalFormat(), 0, static_cast<GLuint>(src->levels()), 0,
-                      static_cast<GLuint>(layers));
-        sourceView_ = gl::GlObject<gl::TextureTraits>(id);
-        glBindTextureUnit(0, id);
+        sourceView_ = gl::Texture::createView(*src, target, 0, layers);
+        sourceView_.bind(0);
     } else {
         src->bind(0);
     }

@@ -60,7 +60,7 @@ private:
     gl::ShaderLibrary* shaders_ = nullptr;
     Programs programs_[kSourceKinds][kValueTypes];
     gl::ShaderLibrary::Handle minmaxNext_;
-    gl::GlObject<gl::TextureTraits> sourceView_;  // layered sources: a view without compare mode (cubes as 2D arrays)
+    gl::Texture sourceView_;  // layered sources: a view without compare mode (cubes as 2D arrays)
     gl::FullscreenTriangle triangle_;
     gl::Buffer params_, ping_, pong_;
     const gl::Buffer* result_ = nullptr;

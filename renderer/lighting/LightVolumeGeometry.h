@@ -1,5 +1,5 @@
 #pragma once
-// GPU copy of a light-volume mesh (unit sphere or cone, renderer/LightVolume.h),
+// GPU copy of a light-volume mesh (unit sphere or cone, renderer/lighting/LightVolume.h),
 // positions only, shared by the lighting pass and the volume wireframes.
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/VertexArray.h"

@@ -25,7 +25,7 @@ class KnobRegistry;
 
 // What strategies share: the light shader (and its overlap-counting variant)
 // as a full-screen pass and over a volume mesh, the stencil-marking program,
-// and the unit sphere and cone volume meshes (renderer/LightVolume.h).
+// and the unit sphere and cone volume meshes (renderer/lighting/LightVolume.h).
 class LightShading {
 public:
     void setup(gl::ShaderLibrary& shaders);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "renderer/Error.h"
 #include "renderer/graph/PassTimer.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/scene/Scene.h"
@@ -21,12 +22,15 @@ std::string mib(std::size_t b) {
 ShadowPass::ShadowPass(KnobRegistry& knobs) : maps_(knobs) {}
 
 std::vector<OutputDecl> ShadowPass::outputs() const {
-    return {{kMapOutputs[0], OutputKind::Depth,
-             "depth of every directional and spot light's shadow map, a layer each (2D array, DEPTH32F)", imported(), 1},
-            {kMapOutputs[1], OutputKind::Depth,
-             "depth of every point light's (and wide spot's) cube shadow map (cube array, DEPTH32F)", imported(), 1},
-            {kMapOutputs[2], OutputKind::Depth,
-             "depth of the dual-paraboloid maps, front and back layer per light (2D array, DEPTH32F)", imported(), 1}};
+    // Scalar, not Depth: a map's depth is the light's (orthographic for the
+    // sun, perspective for spots), so the camera's linearisation would be wrong;
+    // the view shows the raw window depth with an automatic range.
+    return {{kMapOutputs[0], OutputKind::Scalar,
+             "window depth of every directional and spot light's shadow map, a layer each (2D array, DEPTH32F)", imported(), 1},
+            {kMapOutputs[1], OutputKind::Scalar,
+             "window depth of every point light's (and wide spot's) cube shadow map (cube array, DEPTH32F)", imported(), 1},
+            {kMapOutputs[2], OutputKind::Scalar,
+             "window depth of the dual-paraboloid maps, front and back layer per light (2D array, DEPTH32F)", imported(), 1}};
 }
 
 std::string ShadowPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
@@ -52,8 +56,11 @@ ShadowLookup ShadowPass::render(FrameContext& ctx, const LightTableEntry& entry,
 void ShadowPass::execute(FrameContext& ctx) {
     LightTable& table = *ctx.lightTable;
     const KnobRegistry& k = ctx.knobs;
-    // Asked to show the maps: keep every one, whatever shadows.reuse_map says.
-    const bool shown = ctx.wants(kMapOutputs[0]) || ctx.wants(kMapOutputs[1]) || ctx.wants(kMapOutputs[2]);
+    // Asked to show the maps, or the light table with its lookups: keep every
+    // map, whatever shadows.reuse_map says (reused maps exist one at a time,
+    // and a reused light's lookup is written only just before it is shaded).
+    const bool shown = ctx.wants(kMapOutputs[0]) || ctx.wants(kMapOutputs[1]) || ctx.wants(kMapOutputs[2]) ||
+                       ctx.requested.count("lights.table");
     reuse_ = maps_.reuse(k) && !shown;
     // Maps for the lights that cast shadows and can be seen (a light outside
     // the frustum lights nothing in view).
@@ -62,8 +69,16 @@ void ShadowPass::execute(FrameContext& ctx) {
         e.shadowed = e.light->castShadows && e.inFrustum;
         if (e.shadowed) ++counts[maps_.kindOf(*e.light, k)];
     }
+    static const char* const kWhich[3] = {"directional or spot light (up to 60 degrees)",
+                                          "point light or wider spot with shadows.point_method = cube",
+                                          "point light or wider spot with shadows.point_method = dual_paraboloid"};
+    for (int kind = 0; kind < 3; ++kind)
+        if (counts[kind] == 0 && ctx.wants(kMapOutputs[kind]))
+            throw Error(std::string(kMapOutputs[kind]) + " is empty this frame: no " + kWhich[kind] +
+                        " in view casts shadows");
     maps_.beginFrame(ctx, counts, reuse_);
-    for (int kind = 0; kind < 3; ++kind) ctx.outputs.bind(kMapOutputs[kind], &maps_.maps(static_cast<ShadowMaps::Kind>(kind)), 1);
+    for (int kind = 0; kind < 3; ++kind)
+        ctx.outputs.bind(kMapOutputs[kind], counts[kind] > 0 ? &maps_.maps(static_cast<ShadowMaps::Kind>(kind)) : nullptr, 1);
     if (!reuse_) {
         int slot[3] = {0, 0, 0};
         for (const LightTableEntry& e : table.entries)

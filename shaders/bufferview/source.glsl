@@ -1,6 +1,6 @@
 // Shared by the buffer view and its min/max reduction: maps a pixel of the
 // view image to the output's texel (grid of layers, cube cross, table; the
-// layout is ImageLayout in renderer/OutputReadback.h, mirrored here), fetches
+// layout is ImageLayout in renderer/inspect/OutputReadback.h, mirrored here), fetches
 // it and applies the mapping that precedes range remapping (linear depth,
 // decoded normal), so auto-range sees the values the view shows.
 //

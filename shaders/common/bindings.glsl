@@ -1,4 +1,4 @@
-// Binding points; mirrored by dw::binding in renderer/GpuScene.h.
+// Binding points; mirrored by dw::binding in renderer/scene/GpuScene.h.
 #ifndef BINDINGS_GLSL
 #define BINDINGS_GLSL
 #define CAMERA_UBO 0

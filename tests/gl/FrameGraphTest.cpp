@@ -10,6 +10,7 @@
 #include "renderer/gl/Program.h"
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/graph/TargetFramebuffer.h"
+#include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/LightingStrategy.h"
 #include "tests/support/TestSupport.h"
 
@@ -286,4 +287,28 @@ TEST(FrameGraph, APassThatModifiesAnotherPassesTargetRunsBetweenItsWriterAndItsR
     EXPECT_LT(worst, 2e-3);  // RGBA16F rounding
     // Nothing reads the L-buffer when only the G-buffer is asked for: the modifier does not run either.
     EXPECT_FALSE(s->render({{"gbuffer.depth"}}).find("add_glow")->ran);
+}
+
+TEST(FrameGraph, ShadowArraysHoldEveryMapWhenShownAndRefuseWhenEmpty) {
+    auto s = test::makeSession(64, 36);
+    s->loadScene("default");  // the sun and two spots cast shadows; no point light does
+    s->knobs().setFromString("shadows.map_size", "64");
+    ASSERT_TRUE(s->knobs().get(BoolKnob{*s->knobs().find("shadows.reuse_map")}));
+    s->render({{"shadow.maps"}});
+    EXPECT_EQ(s->pipeline().outputs().find("shadow.maps")->texture->layers(), 3);  // kept, not one reused layer
+    try {
+        s->render({{"shadow.cubes"}});
+        FAIL() << "an empty cube array was shown";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("shadow.cubes is empty"), std::string::npos) << e.what();
+    }
+    // The light table asked for on its own carries every shadow lookup (mode != 0 for the three casters).
+    s->render({{"lights.table"}});
+    const PublishedOutput* table = s->pipeline().outputs().find("lights.table");
+    ASSERT_NE(table->buffer, nullptr);
+    std::vector<LightGpu> rows(table->desc.bytes / sizeof(LightGpu));
+    table->buffer->read(0, rows.size() * sizeof(LightGpu), rows.data());
+    int withMaps = 0;
+    for (const LightGpu& r : rows) withMaps += r.shadowParams.x > 0.5f ? 1 : 0;
+    EXPECT_EQ(withMaps, 3);
 }
