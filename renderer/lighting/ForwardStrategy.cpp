@@ -1,6 +1,7 @@
 #include "renderer/lighting/ForwardStrategy.h"
 
 #include <algorithm>
+#include <array>
 
 #include "renderer/gl/Texture.h"
 #include "renderer/lighting/LightLists.h"
@@ -25,6 +26,30 @@ void forwardDepthState() {
     glDisable(GL_STENCIL_TEST);
 }
 
+// The draws whose world box meets the view frustum (seed 000 listing 2.6's
+// "visible object"): Gribb-Hartmann planes, a box is out when its corner
+// farthest along a plane's normal lies behind it. Culls only what has no
+// pixel in the laid-down depth, so it changes no image.
+std::vector<char> visibleDraws(const GpuScene& gpu, const glm::mat4& viewProjection) {
+    const glm::mat4& m = viewProjection;
+    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                       row(3) - row(1), row(3) + row(2), row(3) - row(2)};
+    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+    std::vector<char> visible;
+    for (const GpuScene::Draw& d : gpu.draws()) {
+        bool in = !d.bounds.empty();
+        for (const glm::vec4& p : planes) {
+            if (!in) break;
+            const glm::vec3 far(p.x >= 0 ? d.bounds.max.x : d.bounds.min.x, p.y >= 0 ? d.bounds.max.y : d.bounds.min.y,
+                                p.z >= 0 ? d.bounds.max.z : d.bounds.min.z);
+            in = glm::dot(glm::vec3(p), far) + p.w >= -1e-3f;  // a little slack: keep, never lose
+        }
+        visible.push_back(in ? 1 : 0);
+    }
+    return visible;
+}
+
 bool meets(const LightTableEntry& e, const Bounds& box) {
     return sphereMeetsBox(e.light->position, static_cast<float>(e.volume.radius), box);
 }
@@ -37,14 +62,17 @@ bool sphereMeetsBox(const glm::vec3& centre, float radius, const Bounds& box) {
     return glm::dot(d, d) <= radius * radius * 1.0001f;
 }
 
-ForwardLightLists ForwardLightLists::build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights) {
+ForwardLightLists ForwardLightLists::build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights,
+                                           const glm::mat4* viewProjection) {
     ForwardLightLists l;
     const auto& draws = gpu.draws();
+    const std::vector<char> visible = viewProjection ? visibleDraws(gpu, *viewProjection) : std::vector<char>(draws.size(), 1);
     l.first.resize(draws.size());
     l.count.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) {
         l.first[i] = static_cast<std::uint32_t>(l.rows.size());
-        for (const LightTableEntry* e : lights)
+        if (visible[i])
+            for (const LightTableEntry* e : lights)
             if (meets(*e, draws[i].bounds)) l.rows.push_back(static_cast<std::uint32_t>(e->row));
         l.count[i] = static_cast<std::uint32_t>(l.rows.size()) - l.first[i];
     }
@@ -73,7 +101,7 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     lastPairs_ = 0;
     if (listed.empty()) return c;
 
-    const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed);
+    const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed, &f.ctx.camera.viewProjection);
     lastPairs_ = lists.rows.size();
     if (lists.rows.empty()) return c;
     indices_.ensureSize(lists.rows.size() * sizeof(std::uint32_t), "forward light indices");
@@ -105,6 +133,7 @@ StrategyCounts ForwardMultipassStrategy::shade(LightingFrame& f) {
     lastPairs_ = 0;
     const gl::Program& program = f.counting ? *countingProgram_ : *program_;
     const auto& draws = f.ctx.gpu.draws();
+    const std::vector<char> visible = visibleDraws(f.ctx.gpu, f.ctx.camera.viewProjection);
     std::vector<std::size_t> touched;
     for (const LightTableEntry* e : f.lights) {
         if (!e->inFrustum) {
@@ -113,7 +142,7 @@ StrategyCounts ForwardMultipassStrategy::shade(LightingFrame& f) {
         }
         touched.clear();
         for (std::size_t i = 0; i < draws.size(); ++i)
-            if (meets(*e, draws[i].bounds)) touched.push_back(i);
+            if (visible[i] && meets(*e, draws[i].bounds)) touched.push_back(i);
         ++c.volumes;
         if (touched.empty()) continue;  // its map is not needed either
         lastPairs_ += touched.size();

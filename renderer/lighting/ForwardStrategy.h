@@ -11,13 +11,14 @@
 //
 // forward: one pass over the scene. For each draw (instance) the CPU keeps
 //   the lights whose bounding sphere (position, volume radius) meets the
-//   draw's world box (GpuScene::Draw::bounds), as a range of a light-index
+//   draw's world box (GpuScene::Draw::bounds), draws outside the view frustum
+//   getting none, as a range of a light-index
 //   SSBO (binding 4); the shader sums those lights in 32-bit floats.
 //   Lights with a shadow map are not in the lists: with shadows.reuse_map a
 //   single map layer serves every light in turn, so they are shaded one at a
 //   time through their volume (LightLists::shadeOneByOne), as tiled does.
-// forward_multipass: for each light, one additive pass over the draws whose
-//   box its sphere meets, shading that one light, shadow lookup included
+// forward_multipass: for each light, one additive pass over the visible draws
+//   whose box its sphere meets, shading that one light, shadow lookup included
 //   (frame.beginLight renders a reused map first).
 #include <cstdint>
 #include <vector>
@@ -37,8 +38,10 @@ bool sphereMeetsBox(const glm::vec3& centre, float radius, const Bounds& box);
 struct ForwardLightLists {
     std::vector<std::uint32_t> rows;                  // light-table rows, draw after draw
     std::vector<std::uint32_t> first, count;          // per GpuScene draw, into `rows`
-    // For each draw, the lights of `lights` whose sphere meets its box.
-    static ForwardLightLists build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights);
+    // For each draw, the lights of `lights` whose sphere meets its box; none
+    // for draws whose box is outside the frustum of `viewProjection` (if given).
+    static ForwardLightLists build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights,
+                                   const glm::mat4* viewProjection = nullptr);
 };
 
 class ForwardStrategy : public LightingStrategy {

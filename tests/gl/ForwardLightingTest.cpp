@@ -249,3 +249,27 @@ TEST(ForwardLighting, SphereBoxTest) {
     EXPECT_TRUE(sphereMeetsBox({2.0f, 2.0f, 2.0f}, 1.74f, b));
     EXPECT_FALSE(sphereMeetsBox({0.0f, 0.0f, 0.0f}, 10.0f, Bounds{}));
 }
+
+// Draws outside the view frustum get no lights (listing 2.6's "visible
+// objects"); the images above show that culling loses nothing on screen.
+TEST(ForwardLighting, ObjectsOutsideTheFrustumGetNoLights) {
+    auto session = test::makeSession(96, 54);
+    session->setScene(manyLightsScene());
+    session->camera().position = {8.0f, 3.0f, 4.0f};  // looking away from the lit boxes
+    session->camera().target = {16.0f, 0.0f, 4.0f};
+    session->knobs().setFromString("lighting.frustum_cull", "false");
+    session->knobs().setFromString("lighting.strategy", "forward");
+    session->render({{"lbuffer"}});
+    std::vector<const LightTableEntry*> lights;
+    for (const LightTableEntry& e : session->pipeline().pass<LightTablePass>()->table().entries)
+        if (e.light->type != LightType::Directional) lights.push_back(&e);
+    const GpuScene& gpu = session->pipeline().gpuScene();
+    const glm::mat4 viewProjection = session->camera().projection(96.0f / 54.0f) * session->camera().view();
+    const ForwardLightLists all = ForwardLightLists::build(gpu, lights);
+    const ForwardLightLists visible = ForwardLightLists::build(gpu, lights, &viewProjection);
+    std::printf("camera looking away: %zu light-object pairs, %zu on visible objects\n", all.rows.size(),
+                visible.rows.size());
+    EXPECT_GT(all.rows.size(), 100u);
+    EXPECT_LT(visible.rows.size(), all.rows.size());
+    EXPECT_GT(visible.rows.size(), 0u);  // the floor, which the camera sees, keeps its lights
+}
