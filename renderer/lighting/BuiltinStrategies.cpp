@@ -1,6 +1,7 @@
 // The built-in lighting strategies, one line each; the first is the default
 // of lighting.strategy.
 #include "renderer/lighting/ClusteredStrategy.h"
+#include "renderer/lighting/ForwardStrategy.h"
 #include "renderer/lighting/FullscreenStrategy.h"
 #include "renderer/lighting/LightingStrategy.h"
 #include "renderer/lighting/StencilVolumesStrategy.h"
@@ -23,6 +24,8 @@ std::vector<LightingStrategyFactory> builtinLightingStrategies() {
         make<FullscreenStrategy>(),
         make<TiledStrategy>(),
         make<ClusteredStrategy>(),
+        make<ForwardStrategy>(),
+        make<ForwardMultipassStrategy>(),
     };
 }
 

@@ -120,6 +120,9 @@ void GpuScene::upload(const Scene& scene) {
         glTextureParameteri(environment_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     }
 
+    std::vector<Bounds> meshBounds(scene.meshes.size());
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        for (const Vertex& v : scene.meshes[m].vertices) meshBounds[m].add(v.position);
     for (const MeshInstance& inst : scene.instances) {
         const Mesh& mesh = scene.meshes[inst.mesh];
         Draw d;
@@ -131,6 +134,13 @@ void GpuScene::upload(const Scene& scene) {
         d.baseVertex = ranges[inst.mesh].baseVertex;
         d.alphaMode = scene.materials[mesh.material].alphaMode;
         d.doubleSided = scene.materials[mesh.material].doubleSided;
+        const Bounds& local = meshBounds[static_cast<std::size_t>(inst.mesh)];
+        if (!local.empty())
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                                  (corner & 4) ? local.max.z : local.min.z);
+                d.bounds.add(glm::vec3(d.model * glm::vec4(p, 1.0f)));
+            }
         draws_.push_back(d);
     }
     // Group by material to save texture binds.
@@ -151,6 +161,14 @@ static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
 }
 
 void GpuScene::draw(const gl::Program& program, Filter filter, bool bindTextures) const {
+    drawImpl(program, filter, bindTextures, nullptr);
+}
+
+void GpuScene::drawEach(const gl::Program& program, Filter filter, const PerDraw& before) const {
+    drawImpl(program, filter, true, &before);
+}
+
+void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const {
     if (draws_.empty()) return;
     vao_.bind();
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
@@ -158,8 +176,10 @@ void GpuScene::draw(const gl::Program& program, Filter filter, bool bindTextures
     bool cullOn = true;
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    for (const Draw& d : draws_) {
+    for (std::size_t i = 0; i < draws_.size(); ++i) {
+        const Draw& d = draws_[i];
         if (!passes(d, filter)) continue;
+        if (before && !(*before)(i, d)) continue;
         if (d.doubleSided == cullOn) {
             cullOn = !d.doubleSided;
             if (cullOn) glEnable(GL_CULL_FACE);

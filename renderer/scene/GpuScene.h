@@ -2,6 +2,7 @@
 // The scene's GPU copy: one vertex and one index buffer for all meshes, one
 // texture per (image, colour space) the materials use, a material SSBO and the
 // draw list. Passes draw through drawOpaque(); they never touch raw GL names.
+#include <functional>
 #include <glm/glm.hpp>
 #include <map>
 #include <vector>
@@ -33,6 +34,7 @@ public:
         GLint baseVertex = 0;
         AlphaMode alphaMode = AlphaMode::Opaque;
         bool doubleSided = false;
+        Bounds bounds;  // world-space box of the instance (its mesh's box under `model`)
     };
     enum class Filter { Opaque, Blend, All };
 
@@ -49,6 +51,11 @@ public:
     // instance that passes `filter`. Locations 0 and 1 of `program` receive the
     // model matrix and material index.
     void draw(const gl::Program& program, Filter filter, bool bindTextures = true) const;
+    // As draw(), but calls `before(index into draws(), draw)` first for each
+    // instance that passes `filter`: it sets the program's per-draw uniforms
+    // and returns false to skip the instance (the forward lighting strategies).
+    using PerDraw = std::function<bool(std::size_t, const Draw&)>;
+    void drawEach(const gl::Program& program, Filter filter, const PerDraw& before) const;
     // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
     void drawDepthOnly(const gl::Program& program, Filter filter) const;
     std::size_t textureBytes() const { return textureBytes_; }
@@ -58,6 +65,7 @@ public:
 private:
     int textureFor(const Scene& scene, int image, bool srgb);
     void bindMaterialTextures(int material) const;
+    void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
 
     gl::Buffer vertices_, indices_, materials_;
     gl::VertexArray vao_;

@@ -1,0 +1,163 @@
+#include "renderer/lighting/ForwardStrategy.h"
+
+#include <algorithm>
+#include <array>
+
+#include "renderer/gl/Texture.h"
+#include "renderer/lighting/LightLists.h"
+#include "renderer/scene/GpuScene.h"
+
+namespace dw {
+
+namespace {
+
+// The lighting inputs the scene's material textures displace (units 0-3,
+// lighting/gbuffer_read.glsl), bound again for whatever runs after.
+void rebindGBuffer(FrameContext& ctx) {
+    const char* const names[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive"};
+    for (GLuint unit = 0; unit < 4; ++unit) ctx.texture(names[unit]).bind(unit);
+}
+
+// After frame.beginLight: test against the laid-down depth, write none.
+void forwardDepthState() {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_STENCIL_TEST);
+}
+
+// The draws whose world box meets the view frustum (seed 000 listing 2.6's
+// "visible object"): Gribb-Hartmann planes, a box is out when its corner
+// farthest along a plane's normal lies behind it. Culls only what has no
+// pixel in the laid-down depth, so it changes no image.
+std::vector<char> visibleDraws(const GpuScene& gpu, const glm::mat4& viewProjection) {
+    const glm::mat4& m = viewProjection;
+    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                       row(3) - row(1), row(3) + row(2), row(3) - row(2)};
+    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+    std::vector<char> visible;
+    for (const GpuScene::Draw& d : gpu.draws()) {
+        bool in = !d.bounds.empty();
+        for (const glm::vec4& p : planes) {
+            if (!in) break;
+            const glm::vec3 far(p.x >= 0 ? d.bounds.max.x : d.bounds.min.x, p.y >= 0 ? d.bounds.max.y : d.bounds.min.y,
+                                p.z >= 0 ? d.bounds.max.z : d.bounds.min.z);
+            in = glm::dot(glm::vec3(p), far) + p.w >= -1e-3f;  // a little slack: keep, never lose
+        }
+        visible.push_back(in ? 1 : 0);
+    }
+    return visible;
+}
+
+bool meets(const LightTableEntry& e, const Bounds& box) {
+    return sphereMeetsBox(e.light->position, static_cast<float>(e.volume.radius), box);
+}
+
+}  // namespace
+
+bool sphereMeetsBox(const glm::vec3& centre, float radius, const Bounds& box) {
+    if (box.empty()) return false;
+    const glm::vec3 d = centre - glm::clamp(centre, box.min, box.max);
+    return glm::dot(d, d) <= radius * radius * 1.0001f;
+}
+
+ForwardLightLists ForwardLightLists::build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights,
+                                           const glm::mat4* viewProjection) {
+    ForwardLightLists l;
+    const auto& draws = gpu.draws();
+    const std::vector<char> visible = viewProjection ? visibleDraws(gpu, *viewProjection) : std::vector<char>(draws.size(), 1);
+    l.first.resize(draws.size());
+    l.count.resize(draws.size());
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        l.first[i] = static_cast<std::uint32_t>(l.rows.size());
+        if (visible[i])
+            for (const LightTableEntry* e : lights)
+            if (meets(*e, draws[i].bounds)) l.rows.push_back(static_cast<std::uint32_t>(e->row));
+        l.count[i] = static_cast<std::uint32_t>(l.rows.size()) - l.first[i];
+    }
+    return l;
+}
+
+void ForwardStrategy::setup(gl::ShaderLibrary& shaders) {
+    program_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag"});
+    countingProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag", .defines = {"COUNT_OVERLAP"}});
+    indices_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "forward light indices");
+}
+
+StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
+    StrategyCounts c;
+    // In the frustum, without a shadow map: the per-draw lists; the rest one at a time.
+    std::vector<const LightTableEntry*> listed;
+    LightLists oneByOne;
+    for (const LightTableEntry* e : f.lights) {
+        if (!e->inFrustum) ++c.culled;
+        else if (f.ctx.shadows && e->shadowed) oneByOne.oneByOne.push_back(e);
+        else listed.push_back(e);
+    }
+    // First, while the G-buffer is still bound to the volume shader's units.
+    c.volumes = oneByOne.shadeOneByOne(f);
+    c.grid = static_cast<int>(listed.size());
+    lastPairs_ = 0;
+    if (listed.empty()) return c;
+
+    const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed, &f.ctx.camera.viewProjection);
+    lastPairs_ = lists.rows.size();
+    if (lists.rows.empty()) return c;
+    indices_.ensureSize(lists.rows.size() * sizeof(std::uint32_t), "forward light indices");
+    indices_.update(0, lists.rows.size() * sizeof(std::uint32_t), lists.rows.data());
+    indices_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+
+    f.beginLight(*listed.front());  // the L-buffer target (no map: not shadowed)
+    forwardDepthState();
+    const gl::Program& program = f.counting ? *countingProgram_ : *program_;
+    program.use();
+    f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
+        if (lists.count[i] == 0) return false;
+        program.set(2, static_cast<int>(lists.first[i]));
+        program.set(3, static_cast<int>(lists.count[i]));
+        return true;
+    });
+    rebindGBuffer(f.ctx);
+    return c;
+}
+
+void ForwardMultipassStrategy::setup(gl::ShaderLibrary& shaders) {
+    program_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag", .defines = {"FORWARD_ONE_LIGHT"}});
+    countingProgram_ = shaders.get(
+        {.vertex = "geometry.vert", .fragment = "lighting/forward.frag", .defines = {"FORWARD_ONE_LIGHT", "COUNT_OVERLAP"}});
+}
+
+StrategyCounts ForwardMultipassStrategy::shade(LightingFrame& f) {
+    StrategyCounts c;
+    lastPairs_ = 0;
+    const gl::Program& program = f.counting ? *countingProgram_ : *program_;
+    const auto& draws = f.ctx.gpu.draws();
+    const std::vector<char> visible = visibleDraws(f.ctx.gpu, f.ctx.camera.viewProjection);
+    std::vector<std::size_t> touched;
+    for (const LightTableEntry* e : f.lights) {
+        if (!e->inFrustum) {
+            ++c.culled;
+            continue;
+        }
+        touched.clear();
+        for (std::size_t i = 0; i < draws.size(); ++i)
+            if (visible[i] && meets(*e, draws[i].bounds)) touched.push_back(i);
+        ++c.volumes;
+        if (touched.empty()) continue;  // its map is not needed either
+        lastPairs_ += touched.size();
+        f.beginLight(*e);  // renders a reused shadow map first
+        forwardDepthState();
+        program.use();
+        program.set(2, e->row);
+        std::size_t next = 0;  // draws come in index order
+        f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
+            while (next < touched.size() && touched[next] < i) ++next;
+            return next < touched.size() && touched[next] == i;
+        });
+    }
+    rebindGBuffer(f.ctx);
+    return c;
+}
+
+}  // namespace dw

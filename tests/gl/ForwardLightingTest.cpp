@@ -1,0 +1,275 @@
+// The forward lighting strategies (forward, forward_multipass; seed 000
+// section 2, listing 2.6) light the same L-buffer as the deferred ones. They
+// shade each fragment's material unquantised where the deferred strategies
+// read it back from the G-buffer (sRGB8 albedo and specular colour, a 16-bit
+// normal, the exponent as log2(n)/11 in 8 bits), so against stencil_volumes
+// they agree only within the G-buffer's quantisation: over lit pixels a mean
+// relative difference under 0.5% and a 99th percentile under 2%. Between
+// themselves they see the same unquantised inputs and the same lightRadiance;
+// they differ in how the sum is rounded (forward sums a draw's lights in
+// 32-bit floats and the blender rounds once; forward_multipass blends light by
+// light into RGBA16F), so they must agree within (n + 2) RGBA16F ulps, n the
+// lights reaching the pixel (TiledLightingTest's budget for the same split).
+// Per-object culling must cull: on the many-lights scene each object's list
+// is a small part of the lights.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+#include "renderer/lighting/ForwardStrategy.h"
+#include "renderer/passes/LightTablePass.h"
+#include "renderer/passes/LightingPass.h"
+#include "renderer/scene/GpuScene.h"
+#include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+FloatImage lbufferWith(RenderSession& s, const std::string& strategy) {
+    s.knobs().setFromString("lighting.strategy", strategy);
+    s.render({{"lbuffer", "gbuffer.view_position"}});
+    return s.readRaw("lbuffer");
+}
+
+double ulp16(double v) {
+    return v < std::ldexp(1.0, -14) ? std::ldexp(1.0, -24) : std::ldexp(1.0, static_cast<int>(std::floor(std::log2(v))) - 10);
+}
+
+// Lit pixels: a surface whose reference radiance is above 0.01 in some channel.
+struct Difference {
+    double mean = 0.0, p99 = 0.0, worst = 0.0;
+    int lit = 0;
+};
+
+Difference relativeDifference(const FloatImage& a, const FloatImage& reference) {
+    std::vector<double> rel;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            double big = 0.0, diff = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                big = std::max(big, static_cast<double>(reference.at(x, y, c)));
+                diff = std::max(diff, std::fabs(static_cast<double>(a.at(x, y, c)) - reference.at(x, y, c)));
+            }
+            if (big > 0.01) rel.push_back(diff / big);
+        }
+    Difference d;
+    d.lit = static_cast<int>(rel.size());
+    if (rel.empty()) return d;
+    for (double r : rel) d.mean += r;
+    d.mean /= static_cast<double>(rel.size());
+    std::sort(rel.begin(), rel.end());
+    d.p99 = rel[std::min(rel.size() - 1, static_cast<std::size_t>(0.99 * static_cast<double>(rel.size())))];
+    d.worst = rel.back();
+    return d;
+}
+
+// Worst |forward - forward_multipass| / ((n + 2) ulp), n the table's lights
+// whose sphere holds the pixel's surface (and every unbounded one).
+double roundingBudget(RenderSession& s, const FloatImage& a, const FloatImage& b) {
+    const FloatImage P = s.readRaw("gbuffer.view_position");
+    const LightTable& table = s.pipeline().pass<LightTablePass>()->table();
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const glm::vec3 p(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2));
+            int n = 0;
+            for (const LightGpu& row : table.rows) {
+                const float r = row.positionRadius.w;
+                n += r <= 0.0f || glm::length(p - glm::vec3(row.positionRadius)) <= r * 1.0001f;
+            }
+            for (int c = 0; c < 3; ++c) {
+                const double va = a.at(x, y, c), vb = b.at(x, y, c);
+                worst = std::max(worst, std::fabs(va - vb) / ((n + 2) * ulp16(std::max(std::fabs(va), std::fabs(vb)))));
+            }
+        }
+    return worst;
+}
+
+// forward and forward_multipass against stencil_volumes (quantisation bound)
+// and against each other (rounding bound, when `exact`: no light is shaded
+// from the G-buffer by one of them only, i.e. no shadowed bounded light).
+void expectForwardAgrees(RenderSession& s, const std::string& what, bool exact) {
+    const FloatImage reference = lbufferWith(s, "stencil_volumes");
+    const FloatImage single = lbufferWith(s, "forward");
+    const FloatImage multi = lbufferWith(s, "forward_multipass");
+    for (const auto& [name, image] : {std::pair<const char*, const FloatImage*>{"forward", &single},
+                                      std::pair<const char*, const FloatImage*>{"forward_multipass", &multi}}) {
+        const Difference d = relativeDifference(*image, reference);
+        std::printf("%s: %s vs stencil_volumes over %d lit pixels: mean relative difference %.4f, 99th percentile "
+                    "%.4f, worst %.4f\n",
+                    what.c_str(), name, d.lit, d.mean, d.p99, d.worst);
+        EXPECT_GT(d.lit, 50) << what;
+        EXPECT_LT(d.mean, 0.005) << what << ", " << name;
+        EXPECT_LT(d.p99, 0.02) << what << ", " << name;
+        EXPECT_LT(d.worst, 0.05) << what << ", " << name;  // no pixel missed by the GL_EQUAL test or the culling
+    }
+    const Difference between = relativeDifference(single, multi);
+    std::printf("%s: forward vs forward_multipass: mean %.3g, 99th percentile %.3g, worst %.3g\n", what.c_str(),
+                between.mean, between.p99, between.worst);
+    if (exact) {
+        const double budget = roundingBudget(s, single, multi);
+        std::printf("%s: forward vs forward_multipass: worst |difference| / ((n + 2) ulp) %.3g\n", what.c_str(), budget);
+        EXPECT_LE(budget, 1.0) << what;
+    } else {
+        EXPECT_LT(between.mean, 0.005) << what;
+        EXPECT_LT(between.p99, 0.02) << what;
+    }
+}
+
+// Boxes on a floor among point and spot lights.
+Scene boxesScene() {
+    Scene s = test::planeScene(30.0f);
+    Material m;
+    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    m.specularColor = glm::vec3(0.4f);
+    m.specularExponent = 40.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 5; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-6.0f + i * 3.0f, 1.0f, -2.0f + (i % 2) * 3.0f})});
+    for (int i = 0; i < 12; ++i) {
+        const float a = static_cast<float>(i) * 0.52f;
+        test::addPointLight(s, {std::cos(a) * 5.0f, 0.4f + 0.3f * (i % 3), std::sin(a) * 4.0f},
+                            glm::vec3(0.5f + 0.1f * (i % 4), 0.8f, 1.2f - 0.1f * (i % 5)), {1.0f, 0.5f, 2.0f});
+    }
+    for (int i = 0; i < 4; ++i)
+        test::addSpotLight(s, {-4.5f + i * 3.0f, 4.0f, 3.0f}, {0.1f * i, -1.0f, -0.5f}, 20.0f + 8.0f * i, 4.0f,
+                           glm::vec3(4.0f, 3.0f, 2.0f), {1.0f, 0.2f, 0.3f});
+    s.ambient = glm::vec3(0.02f);
+    return s;
+}
+
+// 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
+// floor with 6 boxes, many straddling a box's edge; every 9th a spot.
+Scene manyLightsScene() {
+    Scene s = test::planeScene(40.0f);
+    s.lights.clear();
+    s.camera.position = {0.0f, 7.0f, 11.0f};
+    s.camera.target = {0.0f, 0.0f, -2.0f};
+    Material m;
+    m.baseColor = glm::vec4(0.8f, 0.75f, 0.7f, 1.0f);
+    m.specularColor = glm::vec3(0.3f);
+    m.specularExponent = 24.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 6; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-9.0f + i * 2.3f, 0.75f, -6.0f + (i % 3) * 3.1f})});
+    for (int i = 0; i < 200; ++i) {
+        const int gx = i % 20, gz = i / 20;
+        const float jx = std::fmod(i * 0.618f, 1.0f) - 0.5f, jz = std::fmod(i * 0.414f, 1.0f) - 0.5f;
+        const glm::vec3 pos(-11.0f + gx * 0.65f + jx * 0.5f, 0.1f + 1.5f * std::fmod(i * 0.273f, 1.0f),
+                            -12.0f + gz * 1.7f + jz * 0.8f);
+        const float radius = 1.0f + std::fmod(i * 0.37f, 1.0f);
+        const glm::vec3 colour(0.4f + 0.6f * std::fmod(i * 0.31f, 1.0f), 0.4f + 0.6f * std::fmod(i * 0.57f, 1.0f),
+                               0.4f + 0.6f * std::fmod(i * 0.79f, 1.0f));
+        const float peak = std::max(colour.r, std::max(colour.g, colour.b));
+        const Attenuation att{1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)};
+        if (i % 9 == 4)
+            test::addSpotLight(s, pos + glm::vec3(0, 0.5f, 0), {0.2f, -1.0f, 0.1f}, 35.0f, 2.0f, colour, att);
+        else
+            test::addPointLight(s, pos, colour, att);
+    }
+    s.ambient = glm::vec3(0.01f);
+    return s;
+}
+
+template <typename T>
+const T& strategyOf(RenderSession& s) {
+    for (const auto& st : s.pipeline().pass<LightingPass>()->strategies())
+        if (const auto* t = dynamic_cast<const T*>(st.get())) return *t;
+    throw std::runtime_error("strategy not registered");
+}
+
+}  // namespace
+
+TEST(ForwardLighting, AgreesWithStencilVolumesOnTheDefaultScene) {
+    auto session = test::makeSession(160, 90);
+    session->loadScene("default");
+    // Its shadowed spot lights: forward shades them from the G-buffer, multipass unquantised.
+    expectForwardAgrees(*session, "default scene", false);
+    session->knobs().setFromString("shadows.enabled", "false");
+    expectForwardAgrees(*session, "default scene, no shadows", true);
+}
+
+TEST(ForwardLighting, AgreesWithTheCameraInsideVolumes) {
+    auto session = test::makeSession(160, 90);
+    session->setScene(boxesScene());
+    session->camera().position = {0.0f, 1.0f, 3.5f};
+    session->camera().target = {0.0f, 0.5f, -2.0f};
+    expectForwardAgrees(*session, "camera inside volumes", true);
+}
+
+TEST(ForwardLighting, AgreesWithManySmallLightsAndCullsPerObject) {
+    auto session = test::makeSession(96, 54);
+    session->setScene(manyLightsScene());
+    expectForwardAgrees(*session, "200 small lights", true);
+
+    // Per-object culling: the lists hold far fewer pairs than lights x draws,
+    // and no object gets every light.
+    session->knobs().setFromString("lighting.strategy", "forward");
+    session->render({{"lbuffer"}});
+    const LightingPass::Counts counts = session->pipeline().pass<LightingPass>()->lastCounts();
+    const std::size_t draws = session->pipeline().gpuScene().draws().size();
+    const std::size_t pairs = strategyOf<ForwardStrategy>(*session).lastPairs();
+    std::printf("200 small lights: forward shaded %d lights over %zu draws as %zu light-object pairs (of %zu)\n",
+                counts.grid, draws, pairs, static_cast<std::size_t>(counts.grid) * draws);
+    EXPECT_GT(counts.grid, 150);
+    EXPECT_GT(pairs, 0u);
+    EXPECT_LT(pairs, static_cast<std::size_t>(counts.grid) * draws / 2);
+
+    std::vector<const LightTableEntry*> lights;
+    for (const LightTableEntry& e : session->pipeline().pass<LightTablePass>()->table().entries)
+        if (e.light->type != LightType::Directional && e.inFrustum) lights.push_back(&e);
+    const ForwardLightLists lists = ForwardLightLists::build(session->pipeline().gpuScene(), lights);
+    for (std::size_t i = 0; i < draws; ++i) EXPECT_LT(lists.count[i], lights.size()) << "draw " << i;
+
+    session->knobs().setFromString("lighting.strategy", "forward_multipass");
+    session->render({{"lbuffer"}});
+    EXPECT_EQ(strategyOf<ForwardMultipassStrategy>(*session).lastPairs(), pairs);
+}
+
+TEST(ForwardLighting, SphereBoxTest) {
+    Bounds b;
+    b.add(glm::vec3(0.0f));
+    b.add(glm::vec3(1.0f));
+    EXPECT_TRUE(sphereMeetsBox({0.5f, 0.5f, 0.5f}, 0.1f, b));
+    EXPECT_TRUE(sphereMeetsBox({2.0f, 0.5f, 0.5f}, 1.0f, b));
+    EXPECT_FALSE(sphereMeetsBox({2.0f, 0.5f, 0.5f}, 0.99f, b));
+    EXPECT_FALSE(sphereMeetsBox({2.0f, 2.0f, 2.0f}, 1.7f, b));  // corner distance sqrt(3)
+    EXPECT_TRUE(sphereMeetsBox({2.0f, 2.0f, 2.0f}, 1.74f, b));
+    EXPECT_FALSE(sphereMeetsBox({0.0f, 0.0f, 0.0f}, 10.0f, Bounds{}));
+}
+
+// Draws outside the view frustum get no lights (listing 2.6's "visible
+// objects"); the images above show that culling loses nothing on screen.
+TEST(ForwardLighting, ObjectsOutsideTheFrustumGetNoLights) {
+    auto session = test::makeSession(96, 54);
+    session->setScene(manyLightsScene());
+    session->camera().position = {8.0f, 3.0f, 4.0f};  // looking away from the lit boxes
+    session->camera().target = {16.0f, 0.0f, 4.0f};
+    session->knobs().setFromString("lighting.frustum_cull", "false");
+    session->knobs().setFromString("lighting.strategy", "forward");
+    session->render({{"lbuffer"}});
+    std::vector<const LightTableEntry*> lights;
+    for (const LightTableEntry& e : session->pipeline().pass<LightTablePass>()->table().entries)
+        if (e.light->type != LightType::Directional) lights.push_back(&e);
+    const GpuScene& gpu = session->pipeline().gpuScene();
+    const glm::mat4 viewProjection = session->camera().projection(96.0f / 54.0f) * session->camera().view();
+    const ForwardLightLists all = ForwardLightLists::build(gpu, lights);
+    const ForwardLightLists visible = ForwardLightLists::build(gpu, lights, &viewProjection);
+    std::printf("camera looking away: %zu light-object pairs, %zu on visible objects\n", all.rows.size(),
+                visible.rows.size());
+    EXPECT_GT(all.rows.size(), 100u);
+    EXPECT_LT(visible.rows.size(), all.rows.size());
+    EXPECT_GT(visible.rows.size(), 0u);  // the floor, which the camera sees, keeps its lights
+}
