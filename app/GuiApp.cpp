@@ -150,6 +150,7 @@ public:
         };
         if (deferred) tryAdd(state.viewport.output, viewportWhy);
         if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
+        animateFlameParticles(session_.mutableScene(), pipeline.frameIndex());
         state.report = pipeline.render(session_.camera(), request);
 
         // Viewport image: the final image, a buffer view, or a forward mode; then overlays.

@@ -29,6 +29,11 @@ void RenderSession::setScene(Scene scene, const RunConfig& run) {
     knobs_.copyValues(next);
 }
 
+FrameReport RenderSession::render(const FrameRequest& request) {
+    animateFlameParticles(*scene_, pipeline_.frameIndex());
+    return pipeline_.render(camera_, request);
+}
+
 FloatImage RenderSession::readRaw(const std::string& output, ViewSelection selection) const {
     const PublishedOutput* o = pipeline_.outputs().find(output);
     if (!o) throw Error("unknown buffer '" + output + "'");

@@ -29,7 +29,8 @@ public:
     void loadScene(const std::string& spec, const RunConfig& run = {});
     void setScene(Scene scene, const RunConfig& run = {});
     void resize(int width, int height) { pipeline_.resize(width, height); }
-    FrameReport render(const FrameRequest& request = {}) { return pipeline_.render(camera_, request); }
+    // Moves the scene's flame particles (if any) to the frame's index first.
+    FrameReport render(const FrameRequest& request = {});
 
     // A named output as raw floats (for .exr) or as the buffer view shows it
     // (.png); any kind, laid out as the buffer view lays it out (the layer and

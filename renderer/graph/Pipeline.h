@@ -70,6 +70,8 @@ public:
 
     const OutputRegistry& outputs() const { return outputs_; }
     PassTimer& timer() { return timer_; }
+    // The index the next render() gives its frame (FrameReport::frameIndex).
+    std::uint64_t frameIndex() const { return frame_; }
     const std::vector<std::unique_ptr<RenderPass>>& passes() const { return passes_; }
     RenderPass* findPass(const std::string& name) const;
     template <typename T>

@@ -337,6 +337,83 @@ Scene spheres() {
     return s;
 }
 
+// Seed 004's fire: a central fire pit and four braziers in a ring of columns
+// under a night sky; every flame particle is a small point light (300 in all)
+// that rises, sways, fades and respawns frame by frame (FlameParticles).
+Scene fire() {
+    Scene s;
+    s.name = "fire";
+    s.settings = {{"tonemap.key", "0.045"}};
+    s.ambient = glm::vec3(0.002f, 0.0025f, 0.004f);
+    s.background = glm::vec3(0.002f, 0.003f, 0.008f);
+    s.sky.kind = Sky::Kind::Procedural;  // night, as the street scene's
+    s.sky.zenith = {0.0005f, 0.0007f, 0.0025f};
+    s.sky.horizon = {0.004f, 0.004f, 0.007f};
+    s.sky.ground = {0.001f, 0.001f, 0.001f};
+    s.sky.sunSizeDegrees = 1.0f;
+    Builder b(s);
+    BlockTexture paving = blockTexture("fire-paving", 256, 6, 6, true, {0.40f, 0.38f, 0.36f}, {0.52f, 0.49f, 0.45f}, {0.18f, 0.17f, 0.16f}, 41);
+    BlockTexture stones = blockTexture("fire-stones", 256, 3, 6, true, {0.50f, 0.46f, 0.40f}, {0.62f, 0.58f, 0.50f}, {0.30f, 0.28f, 0.26f}, 43);
+    const int pavingA = s.addImage(std::move(paving.albedo)), pavingN = s.addImage(std::move(paving.normal));
+    const int stonesA = s.addImage(std::move(stones.albedo)), stonesN = s.addImage(std::move(stones.normal));
+    const int groundMat = b.material("paving", glm::vec3(1.0f), glm::vec3(0.08f), 24.0f, pavingA, pavingN);
+    const int wallMat = b.material("stone wall", glm::vec3(1.0f), glm::vec3(0.05f), 12.0f, stonesA, stonesN);
+    const int columnMat = b.material("sandstone", {0.72f, 0.64f, 0.52f}, glm::vec3(0.25f), 40.0f);
+    const int iron = b.material("iron", {0.07f, 0.06f, 0.055f}, {0.6f, 0.55f, 0.5f}, 90.0f);
+    const int rimMat = b.material("fire-pit stones", {0.35f, 0.33f, 0.31f}, glm::vec3(0.1f), 20.0f, stonesA, stonesN);
+    const int logMat = b.material("charred wood", {0.10f, 0.06f, 0.04f}, glm::vec3(0.03f), 8.0f, -1, -1, {0.6f, 0.1f, 0.0f});
+    const int emberMat = b.material("embers", {0.2f, 0.05f, 0.02f}, glm::vec3(0.0f), 1.0f, -1, -1, {6.0f, 1.8f, 0.3f});
+
+    b.place(b.mesh(shapes::plane(34.0f, 28.0f, 0.5f), groundMat), {0, 0, 0});
+    const int backWall = b.mesh(shapes::box({28.0f, 4.5f, 0.8f}, 0.5f), wallMat);
+    const int sideWall = b.mesh(shapes::box({0.8f, 3.0f, 18.0f}, 0.5f), wallMat);
+    b.place(backWall, {0, 2.25f, -10.0f});
+    b.place(sideWall, {-14.0f, 1.5f, -1.5f});
+    b.place(sideWall, {14.0f, 1.5f, -1.5f});
+    // A ring of columns round the central pit.
+    const int column = b.mesh(shapes::cylinder(0.32f, 3.4f, 24), columnMat);
+    const int capital = b.mesh(shapes::box({0.9f, 0.25f, 0.9f}), columnMat);
+    const int plinth = b.mesh(shapes::box({0.8f, 0.2f, 0.8f}), columnMat);
+    for (int i = 0; i < 8; ++i) {
+        const float a = (i + 0.5f) / 8.0f * glm::two_pi<float>();
+        const glm::vec3 p(std::cos(a) * 5.0f, 0.0f, std::sin(a) * 5.0f);
+        b.place(plinth, p + glm::vec3(0, 0.1f, 0));
+        b.place(column, p + glm::vec3(0, 0.2f, 0));
+        b.place(capital, p + glm::vec3(0, 3.72f, 0), glm::degrees(a));
+    }
+    // The central pit: a stone rim, a bed of embers and a few logs.
+    b.place(b.mesh(shapes::cylinder(1.25f, 0.35f, 40), rimMat), {0, 0, 0});
+    b.place(b.mesh(shapes::cylinder(1.0f, 0.37f, 40), emberMat), {0, 0, 0});
+    const int log = b.mesh(shapes::box({1.5f, 0.18f, 0.18f}), logMat);
+    for (int i = 0; i < 4; ++i) b.place(log, {0, 0.45f + 0.1f * (i % 2), 0}, i * 45.0f + 10.0f);
+    // Four braziers: a pedestal, an iron bowl and embers.
+    const int pedestal = b.mesh(shapes::cylinder(0.12f, 1.0f, 16), iron);
+    const int foot = b.mesh(shapes::cylinder(0.35f, 0.08f, 24), iron);
+    const int bowl = b.mesh(shapes::cylinder(0.55f, 0.28f, 32), iron);
+    const int coals = b.mesh(shapes::cylinder(0.45f, 0.3f, 32), emberMat);
+    const glm::vec3 braziers[] = {{-8.5f, 0, -5.5f}, {8.5f, 0, -5.5f}, {-8.5f, 0, 4.0f}, {8.5f, 0, 4.0f}};
+    for (const auto& p : braziers) {
+        b.place(foot, p);
+        b.place(pedestal, p + glm::vec3(0, 0.08f, 0));
+        b.place(bowl, p + glm::vec3(0, 1.05f, 0));
+        b.place(coals, p + glm::vec3(0, 1.05f, 0));
+    }
+
+    b.light(LightType::Directional, "moon", {}, {0.35f, -1.0f, -0.45f}, {0.006f, 0.008f, 0.016f});
+    // 100 particles over the pit, 50 over each brazier.
+    s.flames.emitters.push_back({{0.0f, 0.4f, 0.0f}, 0.75f, 2.2f, 2.6f, 100});
+    for (const auto& p : braziers) s.flames.emitters.push_back({p + glm::vec3(0, 1.38f, 0), 0.35f, 1.3f, 1.8f, 50});
+    s.flames.firstLight = s.lights.size();
+    appendFlameLights(s.flames, 0, s.lights);
+
+    s.camera.position = {0.0f, 5.5f, 15.5f};
+    s.camera.target = {0.0f, 1.2f, -1.5f};
+    s.camera.fovYDegrees = 55.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 120.0f;
+    return s;
+}
+
 }  // namespace
 
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
@@ -344,6 +421,7 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
         {"default", "courtyard at dusk: columns, fountain, a sun, 36 coloured point lights, 8 spot lights"},
         {"street", "night road lit by 22 spot-light street lamps (the 9 nearest the camera cast shadows) and a moon (the CMSC 23700 motivating case)"},
         {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents, a shadowing key light, a point and a spot light"},
+        {"fire", "night courtyard with a fire pit and four braziers: 300 flame particles, each a small point light, animated per frame (seed 004)"},
     };
     return scenes;
 }
@@ -359,6 +437,7 @@ Scene makeBuiltinScene(const std::string& name) {
     if (name == "default") s = courtyard();
     else if (name == "street") s = street();
     else if (name == "spheres") s = spheres();
+    else if (name == "fire") s = fire();
     else {
         std::string names;
         for (const auto& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;

@@ -2,7 +2,9 @@
 // Scenes the product carries in code, needing no files: "default" (a courtyard
 // at dusk with columns, a sun and dozens of coloured point and spot lights),
 // "street" (a night road lit by a long row of spot-light street lamps, the
-// CMSC 23700 assignment's motivating case) and "spheres" (a material grid).
+// CMSC 23700 assignment's motivating case), "spheres" (a material grid) and
+// "fire" (seed 004: flame particles that are point lights, hundreds of them,
+// moved every frame by animateFlameParticles).
 #include <string>
 #include <vector>
 

@@ -7,6 +7,7 @@
 
 #include "renderer/io/ImageIO.h"
 #include "renderer/scene/Camera.h"
+#include "renderer/scene/FlameParticles.h"
 #include "renderer/scene/Image.h"
 #include "renderer/scene/Light.h"
 #include "renderer/scene/Material.h"
@@ -52,6 +53,10 @@ struct Scene {
     std::vector<Image> images;
     std::vector<MeshInstance> instances;
     std::vector<Light> lights;
+    // Flame particles that are point lights (the built-in "fire" scene): which
+    // of `lights` they are and how they move; animateFlameParticles() sets them
+    // for a frame index (RenderSession::render and the GUI do, every frame).
+    FlameParticles flames;
     std::vector<std::string> warnings;  // things loaded with a fallback
     // Knob values the scene is meant to be seen with ("tonemap.key" -> "0.05"),
     // applied when it loads, before presets and --set.

@@ -55,7 +55,7 @@ fs::path writeText(const std::string& name, const std::string& text) {
 TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
     const Result scenes = run("list scenes");
     EXPECT_EQ(scenes.code, 0);
-    for (const char* s : {"default", "street", "spheres"}) EXPECT_NE(scenes.out.find(s), std::string::npos);
+    for (const char* s : {"default", "street", "spheres", "fire"}) EXPECT_NE(scenes.out.find(s), std::string::npos);
     const Result buffers = run("list buffers");
     for (const char* b : {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.depth", "lbuffer",
                           "luminance.stats", "final"})
