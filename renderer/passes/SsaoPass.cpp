@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "renderer/scene/GpuScene.h"
+#include "renderer/scene/IntegerHash.h"
 #include "renderer/scene/Scene.h"
 #include "shaders/params/ssao.h"
 
@@ -11,15 +12,7 @@ namespace dw {
 
 namespace {
 
-// Deterministic uniform numbers in [0, 1) (a 32-bit hash of the index).
-float hash01(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return static_cast<float>(x & 0xffffff) / 16777216.0f;
-}
+float hash01(std::uint32_t x) { return hashToUnit(x); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/Error.h"
+#include "renderer/scene/IntegerHash.h"
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw {
@@ -13,14 +14,7 @@ namespace dw {
 namespace {
 
 // ---- deterministic procedural textures (no files, no RNG state)
-std::uint32_t hash(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
+std::uint32_t hash(std::uint32_t x) { return hashU32(x); }
 float noise01(int x, int y, std::uint32_t seed) {
     return static_cast<float>(hash(static_cast<std::uint32_t>(x) * 73856093U ^ static_cast<std::uint32_t>(y) * 19349663U ^ seed) & 0xffff) / 65535.0f;
 }

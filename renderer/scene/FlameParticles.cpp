@@ -5,20 +5,14 @@
 #include <glm/gtc/constants.hpp>
 #include <string>
 
+#include "renderer/scene/IntegerHash.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
 namespace {
 
-std::uint32_t hash(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
+std::uint32_t hash(std::uint32_t x) { return hashU32(x); }
 // A number in [0, 1) from a few integers.
 float rand01(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     return static_cast<float>(hash(a * 0x9e3779b9U ^ hash(b * 0x85ebca6bU ^ hash(c + 0x27d4eb2fU))) >> 8) / 16777216.0f;

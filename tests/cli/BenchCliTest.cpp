@@ -22,24 +22,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int code = -1;
-    std::string out, err;
-};
-
-Result run(const std::string& args) {
-    const fs::path errFile = test::tempDir() / "bench-stderr.txt";
-    const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();
-    Result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(errFile);
-    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-    return r;
-}
+using Result = test::CommandResult;
+Result run(const std::string& args) { return test::runWorkbench(args); }
 
 std::vector<std::vector<std::string>> readCsv(const fs::path& path) {
     std::ifstream f(path);

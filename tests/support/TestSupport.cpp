@@ -1,15 +1,33 @@
 #include "tests/support/TestSupport.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "app/HeadlessGlContext.h"
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw::test {
+
+CommandResult runWorkbench(const std::string& args) {
+    const std::filesystem::path errFile = tempDir() / "stderr.txt";
+    const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();
+    CommandResult r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    while (size_t n = fread(buf.data(), 1, buf.size(), p)) r.out.append(buf.data(), n);
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+    return r;
+}
 
 namespace {
 std::unique_ptr<HeadlessGlContext>& context() {

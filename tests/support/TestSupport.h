@@ -29,6 +29,14 @@ std::filesystem::path goldenDir();
 std::filesystem::path scenesDir();
 std::filesystem::path tempDir();       // a fresh directory per test binary run
 
+// Runs the deferred-workbench binary with `args` (a shell command line's
+// arguments) and returns its exit code, standard output and standard error.
+struct CommandResult {
+    int code = -1;
+    std::string out, err;
+};
+CommandResult runWorkbench(const std::string& args);
+
 // A --dump-knobs file: knob name -> value text; the "# scene <source>" line
 // as key "#scene". Empty when the file does not exist.
 std::map<std::string, std::string> readKnobDump(const std::filesystem::path& path);
