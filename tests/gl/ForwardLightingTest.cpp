@@ -122,31 +122,6 @@ void expectForwardAgrees(RenderSession& s, const std::string& what, bool exact) 
     }
 }
 
-// Boxes on a floor among point and spot lights.
-Scene boxesScene() {
-    Scene s = test::planeScene(30.0f);
-    Material m;
-    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
-    m.specularColor = glm::vec3(0.4f);
-    m.specularExponent = 40.0f;
-    const int mat = s.addMaterial(m);
-    Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
-    box.material = mat;
-    const int mesh = s.addMesh(std::move(box));
-    for (int i = 0; i < 5; ++i)
-        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-6.0f + i * 3.0f, 1.0f, -2.0f + (i % 2) * 3.0f})});
-    for (int i = 0; i < 12; ++i) {
-        const float a = static_cast<float>(i) * 0.52f;
-        test::addPointLight(s, {std::cos(a) * 5.0f, 0.4f + 0.3f * (i % 3), std::sin(a) * 4.0f},
-                            glm::vec3(0.5f + 0.1f * (i % 4), 0.8f, 1.2f - 0.1f * (i % 5)), {1.0f, 0.5f, 2.0f});
-    }
-    for (int i = 0; i < 4; ++i)
-        test::addSpotLight(s, {-4.5f + i * 3.0f, 4.0f, 3.0f}, {0.1f * i, -1.0f, -0.5f}, 20.0f + 8.0f * i, 4.0f,
-                           glm::vec3(4.0f, 3.0f, 2.0f), {1.0f, 0.2f, 0.3f});
-    s.ambient = glm::vec3(0.02f);
-    return s;
-}
-
 // 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
 // floor with 6 boxes, many straddling a box's edge; every 9th a spot.
 Scene manyLightsScene() {
@@ -203,7 +178,7 @@ TEST(ForwardLighting, AgreesWithStencilVolumesOnTheDefaultScene) {
 
 TEST(ForwardLighting, AgreesWithTheCameraInsideVolumes) {
     auto session = test::makeSession(160, 90);
-    session->setScene(boxesScene());
+    session->setScene(test::boxesScene(false));
     session->camera().position = {0.0f, 1.0f, 3.5f};
     session->camera().target = {0.0f, 0.5f, -2.0f};
     expectForwardAgrees(*session, "camera inside volumes", true);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <cstdio>
 #include <fstream>
 
@@ -13,6 +14,37 @@
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw::test {
+
+Scene boxesScene(bool withSun) {
+    Scene s = planeScene(30.0f);
+    Material m;
+    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    m.specularColor = glm::vec3(0.4f);
+    m.specularExponent = 40.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 5; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-6.0f + i * 3.0f, 1.0f, -2.0f + (i % 2) * 3.0f})});
+    for (int i = 0; i < 12; ++i) {
+        const float a = static_cast<float>(i) * 0.52f;
+        addPointLight(s, {std::cos(a) * 5.0f, 0.4f + 0.3f * (i % 3), std::sin(a) * 4.0f},
+                      glm::vec3(0.5f + 0.1f * (i % 4), 0.8f, 1.2f - 0.1f * (i % 5)), {1.0f, 0.5f, 2.0f});
+    }
+    for (int i = 0; i < 4; ++i)
+        addSpotLight(s, {-4.5f + i * 3.0f, 4.0f, 3.0f}, {0.1f * i, -1.0f, -0.5f}, 20.0f + 8.0f * i, 4.0f,
+                     glm::vec3(4.0f, 3.0f, 2.0f), {1.0f, 0.2f, 0.3f});
+    if (withSun) {
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+        sun.intensity = glm::vec3(0.3f);
+        s.lights.push_back(sun);
+    }
+    s.ambient = glm::vec3(0.02f);
+    return s;
+}
 
 CommandResult runWorkbench(const std::string& args) {
     const std::filesystem::path errFile = tempDir() / "stderr.txt";

@@ -24,6 +24,10 @@ Light& addPointLight(Scene& s, glm::vec3 pos, glm::vec3 intensity, Attenuation a
 Light& addSpotLight(Scene& s, glm::vec3 pos, glm::vec3 dir, float cutoff, float exponent, glm::vec3 intensity,
                     Attenuation att);
 
+// Boxes on a floor among 12 overlapping point lights and 4 spots (and a dim
+// sun when `withSun`): the lighting tests' common scene.
+Scene boxesScene(bool withSun);
+
 std::filesystem::path dataDir();       // ../shared/data (may not exist)
 std::filesystem::path goldenDir();
 std::filesystem::path scenesDir();
