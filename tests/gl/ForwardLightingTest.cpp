@@ -122,42 +122,6 @@ void expectForwardAgrees(RenderSession& s, const std::string& what, bool exact) 
     }
 }
 
-// 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
-// floor with 6 boxes, many straddling a box's edge; every 9th a spot.
-Scene manyLightsScene() {
-    Scene s = test::planeScene(40.0f);
-    s.lights.clear();
-    s.camera.position = {0.0f, 7.0f, 11.0f};
-    s.camera.target = {0.0f, 0.0f, -2.0f};
-    Material m;
-    m.baseColor = glm::vec4(0.8f, 0.75f, 0.7f, 1.0f);
-    m.specularColor = glm::vec3(0.3f);
-    m.specularExponent = 24.0f;
-    const int mat = s.addMaterial(m);
-    Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
-    box.material = mat;
-    const int mesh = s.addMesh(std::move(box));
-    for (int i = 0; i < 6; ++i)
-        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-9.0f + i * 2.3f, 0.75f, -6.0f + (i % 3) * 3.1f})});
-    for (int i = 0; i < 200; ++i) {
-        const int gx = i % 20, gz = i / 20;
-        const float jx = std::fmod(i * 0.618f, 1.0f) - 0.5f, jz = std::fmod(i * 0.414f, 1.0f) - 0.5f;
-        const glm::vec3 pos(-11.0f + gx * 0.65f + jx * 0.5f, 0.1f + 1.5f * std::fmod(i * 0.273f, 1.0f),
-                            -12.0f + gz * 1.7f + jz * 0.8f);
-        const float radius = 1.0f + std::fmod(i * 0.37f, 1.0f);
-        const glm::vec3 colour(0.4f + 0.6f * std::fmod(i * 0.31f, 1.0f), 0.4f + 0.6f * std::fmod(i * 0.57f, 1.0f),
-                               0.4f + 0.6f * std::fmod(i * 0.79f, 1.0f));
-        const float peak = std::max(colour.r, std::max(colour.g, colour.b));
-        const Attenuation att{1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)};
-        if (i % 9 == 4)
-            test::addSpotLight(s, pos + glm::vec3(0, 0.5f, 0), {0.2f, -1.0f, 0.1f}, 35.0f, 2.0f, colour, att);
-        else
-            test::addPointLight(s, pos, colour, att);
-    }
-    s.ambient = glm::vec3(0.01f);
-    return s;
-}
-
 template <typename T>
 const T& strategyOf(RenderSession& s) {
     for (const auto& st : s.pipeline().pass<LightingPass>()->strategies())
@@ -186,7 +150,7 @@ TEST(ForwardLighting, AgreesWithTheCameraInsideVolumes) {
 
 TEST(ForwardLighting, AgreesWithManySmallLightsAndCullsPerObject) {
     auto session = test::makeSession(96, 54);
-    session->setScene(manyLightsScene());
+    session->setScene(test::straddleScene(0));
     expectForwardAgrees(*session, "200 small lights", true);
 
     // Per-object culling: the lists hold far fewer pairs than lights x draws,
@@ -229,7 +193,7 @@ TEST(ForwardLighting, SphereBoxTest) {
 // objects"); the images above show that culling loses nothing on screen.
 TEST(ForwardLighting, ObjectsOutsideTheFrustumGetNoLights) {
     auto session = test::makeSession(96, 54);
-    session->setScene(manyLightsScene());
+    session->setScene(test::straddleScene(0));
     session->camera().position = {8.0f, 3.0f, 4.0f};  // looking away from the lit boxes
     session->camera().target = {16.0f, 0.0f, 4.0f};
     session->knobs().setFromString("lighting.frustum_cull", "false");

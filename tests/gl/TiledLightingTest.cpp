@@ -109,45 +109,6 @@ void expectStrategiesAgree(RenderSession& s, const std::string& what) {
     }
 }
 
-// 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
-// floor with boxes: their spheres cross tile edges at 96x54 and, at heights
-// from 0.1 to 1.6 over surfaces 3 to 20 units away, several depth slices.
-// The right part of the floor has no light near it. Every 9th light is a spot.
-Scene straddleScene(int shadowed = 0) {
-    Scene s = test::planeScene(40.0f);
-    s.lights.clear();
-    s.camera.position = {0.0f, 7.0f, 11.0f};
-    s.camera.target = {0.0f, 0.0f, -2.0f};
-    Material m;
-    m.baseColor = glm::vec4(0.8f, 0.75f, 0.7f, 1.0f);
-    m.specularColor = glm::vec3(0.3f);
-    m.specularExponent = 24.0f;
-    const int mat = s.addMaterial(m);
-    Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
-    box.material = mat;
-    const int mesh = s.addMesh(std::move(box));
-    for (int i = 0; i < 6; ++i)
-        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-9.0f + i * 2.3f, 0.75f, -6.0f + (i % 3) * 3.1f})});
-    for (int i = 0; i < 200; ++i) {
-        const int gx = i % 20, gz = i / 20;
-        const float jx = std::fmod(i * 0.618f, 1.0f) - 0.5f, jz = std::fmod(i * 0.414f, 1.0f) - 0.5f;
-        const glm::vec3 pos(-11.0f + gx * 0.65f + jx * 0.5f, 0.1f + 1.5f * std::fmod(i * 0.273f, 1.0f),
-                            -12.0f + gz * 1.7f + jz * 0.8f);
-        const float radius = 1.0f + std::fmod(i * 0.37f, 1.0f);
-        const glm::vec3 colour(0.4f + 0.6f * std::fmod(i * 0.31f, 1.0f), 0.4f + 0.6f * std::fmod(i * 0.57f, 1.0f),
-                               0.4f + 0.6f * std::fmod(i * 0.79f, 1.0f));
-        const float peak = std::max(colour.r, std::max(colour.g, colour.b));
-        // Reaches 1/255 (lighting.threshold's default) at `radius`.
-        const Attenuation att{1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)};
-        Light& l = i % 9 == 4 ? test::addSpotLight(s, pos + glm::vec3(0, 0.5f, 0), {0.2f, -1.0f, 0.1f}, 35.0f, 2.0f,
-                                                   colour, att)
-                              : test::addPointLight(s, pos, colour, att);
-        l.castShadows = i % 67 == 10 && shadowed-- > 0;
-    }
-    s.ambient = glm::vec3(0.01f);
-    return s;
-}
-
 }  // namespace
 
 TEST(TiledLighting, EveryStrategyAgreesOnTheDefaultScene) {
@@ -188,7 +149,7 @@ TEST(TiledLighting, EveryStrategyAgreesWithTheCameraInsideVolumes) {
 
 TEST(TiledLighting, EveryStrategyAgreesWithManySmallLightsAcrossTilesAndSlices) {
     auto session = test::makeSession(96, 54);
-    session->setScene(straddleScene(3));
+    session->setScene(test::straddleScene(3));
     for (const char* tile : {"4", "12", "16", "32"}) {
         session->knobs().setFromString("lighting.tile_size", tile);
         for (const char* slices : {"3", "24"}) {
@@ -224,7 +185,7 @@ TEST(TiledLighting, EveryStrategyAgreesWithMoreLightsThanOneDispatchHolds) {
 TEST(TiledLighting, TileAndClusterCountsAreConservative) {
     const int W = 96, H = 54;
     auto session = test::makeSession(W, H);
-    session->setScene(straddleScene());
+    session->setScene(test::straddleScene(0));
     session->knobs().setFromString("lighting.tile_size", "16");
     for (const char* strategy : {"tiled", "clustered", "stencil_volumes"}) {
         session->knobs().setFromString("lighting.strategy", strategy);
@@ -309,7 +270,7 @@ TEST(TiledLighting, TileAndClusterCountsAreConservative) {
 TEST(TiledLighting, OverlapCountsTheLightsEachPixelEvaluated) {
     const int W = 96, H = 54;
     auto session = test::makeSession(W, H);
-    session->setScene(straddleScene());
+    session->setScene(test::straddleScene(0));
     for (const char* strategy : {"tiled", "clustered"}) {
         session->knobs().setFromString("lighting.strategy", strategy);
         session->render({{"lbuffer", "lighting.overlap", "lighting.tile_counts", "lighting.cluster_counts",

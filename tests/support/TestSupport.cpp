@@ -46,6 +46,44 @@ Scene boxesScene(bool withSun) {
     return s;
 }
 
+// 200 small lights (radius 1 to 2) on a jittered grid over the left part of a
+// floor with boxes: their spheres cross tile edges at 96x54 and, at heights
+// from 0.1 to 1.6 over surfaces 3 to 20 units away, several depth slices.
+// The right part of the floor has no light near it. Every 9th light is a spot.
+Scene straddleScene(int shadowed) {
+    Scene s = planeScene(40.0f);
+    s.lights.clear();
+    s.camera.position = {0.0f, 7.0f, 11.0f};
+    s.camera.target = {0.0f, 0.0f, -2.0f};
+    Material m;
+    m.baseColor = glm::vec4(0.8f, 0.75f, 0.7f, 1.0f);
+    m.specularColor = glm::vec3(0.3f);
+    m.specularExponent = 24.0f;
+    const int mat = s.addMaterial(m);
+    Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
+    box.material = mat;
+    const int mesh = s.addMesh(std::move(box));
+    for (int i = 0; i < 6; ++i)
+        s.instances.push_back({mesh, glm::translate(glm::mat4(1.0f), {-9.0f + i * 2.3f, 0.75f, -6.0f + (i % 3) * 3.1f})});
+    for (int i = 0; i < 200; ++i) {
+        const int gx = i % 20, gz = i / 20;
+        const float jx = std::fmod(i * 0.618f, 1.0f) - 0.5f, jz = std::fmod(i * 0.414f, 1.0f) - 0.5f;
+        const glm::vec3 pos(-11.0f + gx * 0.65f + jx * 0.5f, 0.1f + 1.5f * std::fmod(i * 0.273f, 1.0f),
+                            -12.0f + gz * 1.7f + jz * 0.8f);
+        const float radius = 1.0f + std::fmod(i * 0.37f, 1.0f);
+        const glm::vec3 colour(0.4f + 0.6f * std::fmod(i * 0.31f, 1.0f), 0.4f + 0.6f * std::fmod(i * 0.57f, 1.0f),
+                               0.4f + 0.6f * std::fmod(i * 0.79f, 1.0f));
+        const float peak = std::max(colour.r, std::max(colour.g, colour.b));
+        // Reaches 1/255 (lighting.threshold's default) at `radius`.
+        const Attenuation att{1.0f, 0.0f, (255.0f * peak - 1.0f) / (radius * radius)};
+        Light& l = i % 9 == 4 ? addSpotLight(s, pos + glm::vec3(0, 0.5f, 0), {0.2f, -1.0f, 0.1f}, 35.0f, 2.0f, colour, att)
+                              : addPointLight(s, pos, colour, att);
+        l.castShadows = i % 67 == 10 && shadowed-- > 0;
+    }
+    s.ambient = glm::vec3(0.01f);
+    return s;
+}
+
 CommandResult runWorkbench(const std::string& args) {
     const std::filesystem::path errFile = tempDir() / "stderr.txt";
     const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();

@@ -27,6 +27,10 @@ Light& addSpotLight(Scene& s, glm::vec3 pos, glm::vec3 dir, float cutoff, float 
 // Boxes on a floor among 12 overlapping point lights and 4 spots (and a dim
 // sun when `withSun`): the lighting tests' common scene.
 Scene boxesScene(bool withSun);
+// 200 small lights (radius 1 to 2, every 9th a spot) on a jittered grid over
+// part of a floor with 6 boxes, straddling box edges, screen tiles and depth
+// slices; the first `shadowed` of every 67th cast shadows.
+Scene straddleScene(int shadowed);
 
 std::filesystem::path dataDir();       // ../shared/data (may not exist)
 std::filesystem::path goldenDir();
