@@ -16,6 +16,18 @@ GLuint createName(GLenum target) {
 }
 }  // namespace
 
+Texture Texture::named(GLenum target, GLenum internalFormat, int width, int height, int levels, int layers) {
+    Texture t;
+    t.name_ = GlObject<TextureTraits>(createName(target));
+    t.target_ = target;
+    t.format_ = internalFormat;
+    t.width_ = std::max(width, 1);
+    t.height_ = std::max(height, 1);
+    t.levels_ = std::max(levels, 1);
+    t.layers_ = std::max(layers, 1);
+    return t;
+}
+
 int Texture::fullMipCount(int width, int height) {
     int n = 1;
     int s = std::max(width, height);
@@ -27,13 +39,7 @@ int Texture::fullMipCount(int width, int height) {
 }
 
 Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_2D));
-    t.target_ = GL_TEXTURE_2D;
-    t.format_ = internalFormat;
-    t.width_ = std::max(width, 1);
-    t.height_ = std::max(height, 1);
-    t.levels_ = std::max(levels, 1);
+    Texture t = named(GL_TEXTURE_2D, internalFormat, width, height, levels, 1);
     glTextureStorage2D(t.id(), t.levels_, internalFormat, t.width_, t.height_);
     const bool mips = t.levels_ > 1;
     t.setFilter(mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
@@ -47,25 +53,14 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, int leve
 }
 
 Texture Texture::create2DMultisample(GLenum internalFormat, int width, int height, int samples) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_2D_MULTISAMPLE));
-    t.target_ = GL_TEXTURE_2D_MULTISAMPLE;
-    t.format_ = internalFormat;
-    t.width_ = std::max(width, 1);
-    t.height_ = std::max(height, 1);
-    t.levels_ = 1;
+    Texture t = named(GL_TEXTURE_2D_MULTISAMPLE, internalFormat, width, height, 1, 1);
     t.samples_ = samples;
     glTextureStorage2DMultisample(t.id(), samples, internalFormat, t.width_, t.height_, GL_TRUE);
     return t;
 }
 
 Texture Texture::createCube(GLenum internalFormat, int size, int levels) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_CUBE_MAP));
-    t.target_ = GL_TEXTURE_CUBE_MAP;
-    t.format_ = internalFormat;
-    t.width_ = t.height_ = std::max(size, 1);
-    t.levels_ = std::max(levels, 1);
+    Texture t = named(GL_TEXTURE_CUBE_MAP, internalFormat, size, size, levels, 1);
     glTextureStorage2D(t.id(), t.levels_, internalFormat, t.width_, t.height_);
     t.setFilter(t.levels_ > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     t.setWrap(GL_CLAMP_TO_EDGE);
@@ -74,13 +69,7 @@ Texture Texture::createCube(GLenum internalFormat, int size, int levels) {
 }
 
 Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int layers) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(target));
-    t.target_ = target;
-    t.format_ = internalFormat;
-    t.width_ = t.height_ = std::max(size, 1);
-    t.levels_ = 1;
-    t.layers_ = std::max(layers, 1);
+    Texture t = named(target, internalFormat, size, size, 1, layers);
     glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);
@@ -88,14 +77,7 @@ Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int
 }
 
 Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers, int levels) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_2D_ARRAY));
-    t.target_ = GL_TEXTURE_2D_ARRAY;
-    t.format_ = internalFormat;
-    t.width_ = std::max(width, 1);
-    t.height_ = std::max(height, 1);
-    t.levels_ = std::max(levels, 1);
-    t.layers_ = std::max(layers, 1);
+    Texture t = named(GL_TEXTURE_2D_ARRAY, internalFormat, width, height, levels, layers);
     glTextureStorage3D(t.id(), t.levels_, internalFormat, t.width_, t.height_, t.layers_);
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);
@@ -104,14 +86,7 @@ Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int
 }
 
 Texture Texture::create3D(GLenum internalFormat, int width, int height, int depth) {
-    Texture t;
-    t.name_ = GlObject<TextureTraits>(createName(GL_TEXTURE_3D));
-    t.target_ = GL_TEXTURE_3D;
-    t.format_ = internalFormat;
-    t.width_ = std::max(width, 1);
-    t.height_ = std::max(height, 1);
-    t.levels_ = 1;
-    t.layers_ = std::max(depth, 1);
+    Texture t = named(GL_TEXTURE_3D, internalFormat, width, height, 1, depth);
     glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);

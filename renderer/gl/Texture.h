@@ -52,6 +52,9 @@ public:
     std::vector<std::uint8_t> readBytes(int level, GLenum format, int channels) const;
 
 private:
+    // A new texture name for `target` with its description filled in (sizes
+    // at least 1); the caller allocates the storage.
+    static Texture named(GLenum target, GLenum internalFormat, int width, int height, int levels, int layers);
     GlObject<TextureTraits> name_;
     GLenum target_ = GL_TEXTURE_2D;
     GLenum format_ = 0;
