@@ -17,6 +17,12 @@ Sampler Sampler::create(GLenum minFilter, GLenum magFilter, GLenum wrap, const c
     return s;
 }
 
+Sampler Sampler::create(GLenum minFilter, GLenum magFilter, GLenum wrapS, GLenum wrapT, const char* label) {
+    Sampler s = create(minFilter, magFilter, wrapS, label);
+    glSamplerParameteri(s.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrapT));
+    return s;
+}
+
 Sampler Sampler::createDepthCompare(const char* label) {
     Sampler s = create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_BORDER, label);
     const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};

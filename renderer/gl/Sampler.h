@@ -11,6 +11,8 @@ class Sampler {
 public:
     Sampler() = default;
     static Sampler create(GLenum minFilter, GLenum magFilter, GLenum wrap, const char* label = nullptr);
+    // Different wrap modes along S and T (glTF samplers).
+    static Sampler create(GLenum minFilter, GLenum magFilter, GLenum wrapS, GLenum wrapT, const char* label);
     // Depth comparison (sampler*Shadow), bilinear over the comparisons, and
     // outside the map the border depth 1 (lit): how shadow maps are read, so
     // the maps themselves stay plain depth textures anyone can view.

@@ -1,5 +1,8 @@
 #include "renderer/graph/TargetFramebuffer.h"
 
+#include <string>
+
+#include "renderer/Error.h"
 #include "renderer/graph/FrameContext.h"
 #include "renderer/gl/Texture.h"
 
@@ -23,7 +26,9 @@ gl::Framebuffer& TargetFramebuffer::get(const FrameContext& ctx, std::initialize
         case 1: fbo.setDrawBuffers({0}); break;
         case 2: fbo.setDrawBuffers({0, 1}); break;
         case 3: fbo.setDrawBuffers({0, 1, 2}); break;
-        default: fbo.setDrawBuffers({0, 1, 2, 3}); break;
+        case 4: fbo.setDrawBuffers({0, 1, 2, 3}); break;
+        case 5: fbo.setDrawBuffers({0, 1, 2, 3, 4}); break;  // the G-buffer with gbuffer.occlusion
+        default: throw Error(std::string(label) + ": more than 5 colour targets");
     }
     fbo.checkComplete(label);
     fbo_ = std::move(fbo);

@@ -6,6 +6,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 
 #include "renderer/Error.h"
@@ -60,25 +61,44 @@ Image toRgba8(std::unique_ptr<OIIO::ImageInput> in, const std::string& name) {
     return img;
 }
 
+// Textures are colour and coverage side by side (glTF 2.0 "Images": alpha is
+// straight, not premultiplied). OIIO's readers premultiply by default (PNG,
+// WebP, TIFF), which would darken opaque materials wherever alpha < 1; this
+// configuration asks for the values as stored.
+OIIO::ImageSpec straightAlphaConfig() {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    return config;
+}
+
 }  // namespace
 
 Image loadImage8(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
-    auto in = OIIO::ImageInput::open(path);
+    const OIIO::ImageSpec config = straightAlphaConfig();
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
     return toRgba8(std::move(in), path);
 }
 
 Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& nameHint,
                    const std::string& mimeType) {
+    // The bytes' signature decides (a file's URI may not say, and a data URI's
+    // MIME type may be wrong); the MIME type only when the signature is unknown.
     std::string ext = ".png";
-    if (mimeType == "image/jpeg") ext = ".jpg";
+    if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) ext = ".jpg";
+    else if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0) ext = ".webp";
+    else if (size >= 8 && std::memcmp(bytes, "\x89PNG", 4) == 0) ext = ".png";
+    else if (mimeType == "image/jpeg") ext = ".jpg";
     else if (mimeType == "image/webp") ext = ".webp";
     else if (mimeType == "image/ktx2") ext = ".ktx2";
-    else if (mimeType.empty() && size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8) ext = ".jpg";
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes), size);
-    // OIIO 2.4 ignores the proxy argument when a config spec is passed too.
-    auto in = OIIO::ImageInput::open("memory" + ext, nullptr, &reader);
+    // OIIO 2.4 ignores the proxy argument when a config spec is passed too;
+    // the config's "oiio:ioproxy" attribute carries it instead.
+    OIIO::ImageSpec config = straightAlphaConfig();
+    OIIO::Filesystem::IOProxy* proxy = &reader;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto in = OIIO::ImageInput::open("memory" + ext, &config);
     if (!in) throw FileError(nameHint, "cannot decode embedded image: " + OIIO::geterror());
     return toRgba8(std::move(in), nameHint);
 }

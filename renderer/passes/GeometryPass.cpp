@@ -16,6 +16,8 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
         {"gbuffer.specular", OutputKind::Color, "specular colour (sRGB8); alpha = log2(Blinn-Phong exponent)/11",
          texture2D(GL_SRGB8_ALPHA8), 4},
         {"gbuffer.emissive", OutputKind::HdrColor, "emitted radiance (R11G11B10F)", texture2D(GL_R11F_G11F_B10F), 3},
+        {"gbuffer.occlusion", OutputKind::Scalar,
+         "baked ambient accessibility from the material's occlusion texture, 1 without one (R8)", texture2D(GL_R8), 1},
         {"gbuffer.depth", OutputKind::Depth, "window-space depth (DEPTH32F_STENCIL8)", texture2D(GL_DEPTH32F_STENCIL8), 1},
     };
 }
@@ -28,12 +30,14 @@ void GeometryPass::execute(FrameContext& ctx) {
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
     const gl::Framebuffer& fbo =
-        target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive"}, "gbuffer.depth", "G-buffer");
+        target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.occlusion"},
+                    "gbuffer.depth", "G-buffer");
     fbo.bind();
     fbo.clearColor(0, 0, 0, 0, 0);
     fbo.clearColor(1, 0, 0, 0, 0);
     fbo.clearColor(2, 0, 0, 0, 0);
     fbo.clearColor(3, 0, 0, 0, 0);
+    fbo.clearColor(4, 1, 1, 1, 1);
     fbo.clearDepthStencil(1.0f, 0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -1,7 +1,8 @@
 #pragma once
 // Geometry pass (seed 000 section 5.2, seed 002 pipeline step 1): renders the
 // opaque scene once into the G-buffer. Reads the scene; writes gbuffer.albedo,
-// gbuffer.normal, gbuffer.specular, gbuffer.emissive and gbuffer.depth.
+// gbuffer.normal, gbuffer.specular, gbuffer.emissive, gbuffer.occlusion (the
+// materials' baked ambient occlusion, glTF occlusionTexture) and gbuffer.depth.
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"

@@ -39,6 +39,12 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
     ambientSpecular_ = knobs.addBool("lighting.ambient_specular", true, "lighting",
                                      "ambient reflectance = diffuse + specular colour, so metals (no diffuse) still "
                                      "reflect ambient light; off: the seed's k_a = diffuse colour");
+    ambientOcclusion_ = knobs.addEnum("lighting.ambient_occlusion", {"both", "baked", "ssao"}, "both", "lighting",
+                                      "which ambient occlusion scales the ambient term: the materials' baked occlusion "
+                                      "textures (gbuffer.occlusion), screen-space (ssao.blurred, when ssao.enabled), or "
+                                      "their product");
+    aoBaked_ = knobs.choiceIndex(ambientOcclusion_, "baked");
+    aoSsao_ = knobs.choiceIndex(ambientOcclusion_, "ssao");
 }
 
 LightingPass::~LightingPass() = default;
@@ -62,6 +68,7 @@ std::vector<OutputDecl> LightingPass::outputs() const {
 PassIO LightingPass::inputs(const KnobRegistry&) const {
     PassIO io{{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ssao.blurred", "sky"}};
     io.inputs.push_back("lights.table");
+    io.inputs.push_back("gbuffer.occlusion");
     return io;
 }
 
@@ -85,7 +92,9 @@ void LightingPass::execute(FrameContext& ctx) {
     const bool sky = ctx.produced("sky");
     gpu::LightingParams params{};
     params.windowed = k.get(attenuation_) == windowed_ ? 1 : 0;
-    params.occlusion = occlusion ? 1 : 0;
+    const int aoMode = k.get(ambientOcclusion_);
+    params.occlusion = occlusion && aoMode != aoBaked_ ? 1 : 0;
+    params.bakedOcclusion = aoMode != aoSsao_ ? 1 : 0;
     params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     params.sky = sky ? 1 : 0;
     params.windowExponent = k.get(windowExponent_);
@@ -106,10 +115,12 @@ void LightingPass::execute(FrameContext& ctx) {
     for (std::size_t i = 0; i < std::size(kGBufferInputs); ++i) inputTextures[i] = &ctx.texture(kGBufferInputs[i]);
     const gl::Texture* occlusionTexture = occlusion ? &ctx.texture("ssao.blurred") : &white_;
     const gl::Texture* skyTexture = sky ? &ctx.texture("sky") : nullptr;
+    const gl::Texture& bakedOcclusion = ctx.texture("gbuffer.occlusion");
     auto bindInputs = [&] {
         for (std::size_t unit = 0; unit < std::size(kGBufferInputs); ++unit) inputTextures[unit]->bind(static_cast<GLuint>(unit));
         occlusionTexture->bind(5);
         if (skyTexture) skyTexture->bind(9);
+        bakedOcclusion.bind(11);
         table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
         params_.bind(binding::kPassUbo);
     };

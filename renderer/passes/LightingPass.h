@@ -53,6 +53,8 @@ private:
     int windowed_ = 0;  // lighting.attenuation = windowed
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
+    EnumKnob ambientOcclusion_;  // both, baked, ssao
+    int aoBaked_ = 0, aoSsao_ = 0;
 
     gl::ShaderLibrary::Handle ambientProgram_;
     LightShading shading_;

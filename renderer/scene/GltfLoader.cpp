@@ -20,6 +20,7 @@
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
 #include "renderer/io/TextFile.h"
+#include "renderer/scene/NormalGenerator.h"
 #include "renderer/scene/TangentGenerator.h"
 
 namespace dw {
@@ -31,6 +32,9 @@ namespace {
 // Anything larger is treated as a corrupt count rather than allocated.
 constexpr size_t kMaxElements = size_t(1) << 27;
 
+// glTF sampler wrap modes (the GL enums).
+constexpr int kRepeat = 10497, kClampToEdge = 33071, kMirroredRepeat = 33648;
+
 class Importer {
 public:
     Importer(std::string path, Scene& scene) : path_(std::move(path)), scene_(scene) {}
@@ -40,10 +44,12 @@ public:
     // Reads the glTF JSON (the first chunk of a .glb) with nlohmann to report
     // malformed JSON by line and column, and unsupported required extensions
     // before tinygltf misreads them (e.g. Draco-compressed accessors).
-    // `bytes` is the whole file; tinygltf parses the same bytes afterwards.
-    void precheck(const std::string& bytes) const {
+    // `bytes` is the whole file; returns what tinygltf parses afterwards
+    // (the same bytes, unless hideZeroIndexAccessors rewrote the JSON).
+    std::string precheck(const std::string& bytes) {
         std::string_view text = bytes;
-        if (bytes.size() >= 20 && isGlb(bytes)) {
+        const bool glb = bytes.size() >= 20 && isGlb(bytes);
+        if (glb) {
             std::uint32_t chunkLength = 0, chunkType = 0;
             std::memcpy(&chunkLength, bytes.data() + 12, 4);
             std::memcpy(&chunkType, bytes.data() + 16, 4);
@@ -66,17 +72,68 @@ public:
         if (j.contains("asset") && j["asset"].is_object() && j["asset"].contains("version") &&
             j["asset"]["version"].is_string() && j["asset"]["version"].get<std::string>().rfind("2.", 0) != 0)
             fail("glTF version " + j["asset"]["version"].get<std::string>() + " is not supported (2.x only)");
+        if (!hideZeroIndexAccessors(j)) return bytes;
+        const std::string json = j.dump();
+        if (!glb) return json;
+        // The GLB again, with the rewritten JSON chunk (space-padded to 4 bytes)
+        // and the chunks after it unchanged.
+        std::uint32_t oldLength = 0;
+        std::memcpy(&oldLength, bytes.data() + 12, 4);
+        std::string chunk = json;
+        chunk.resize((chunk.size() + 3) & ~std::size_t(3), ' ');
+        const auto chunkLength = static_cast<std::uint32_t>(chunk.size());
+        std::string out = bytes.substr(0, 12);
+        out.append(reinterpret_cast<const char*>(&chunkLength), 4);
+        out.append(bytes, 16, 4);
+        out += chunk;
+        out.append(bytes, 20 + static_cast<std::size_t>(oldLength), std::string::npos);
+        const auto total = static_cast<std::uint32_t>(out.size());
+        std::memcpy(out.data() + 8, &total, 4);
+        return out;
+    }
+
+    // glTF 2.0 (3.6.2.3): an accessor without bufferView holds zeros (plus its
+    // sparse values). tinygltf 2.7 parses such accessors but refuses a
+    // primitive whose *indices* use one ("invalid bufferView", in its pass that
+    // assigns bufferView targets). So those primitives' "indices" are removed
+    // from the JSON tinygltf sees, remembered, and put back after parsing
+    // (restoreZeroIndexAccessors); readAccessor supplies the zeros.
+    // Returns whether the JSON changed.
+    bool hideZeroIndexAccessors(nlohmann::json& j) {
+        if (!j.contains("meshes") || !j["meshes"].is_array() || !j.contains("accessors") || !j["accessors"].is_array())
+            return false;
+        const auto& accessors = j["accessors"];
+        for (std::size_t m = 0; m < j["meshes"].size(); ++m) {
+            auto& mesh = j["meshes"][m];
+            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+            for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
+                auto& prim = mesh["primitives"][p];
+                if (!prim.is_object() || !prim.contains("indices") || !prim["indices"].is_number_unsigned()) continue;
+                const auto a = prim["indices"].get<std::size_t>();
+                if (a >= accessors.size() || !accessors[a].is_object() || accessors[a].contains("bufferView")) continue;
+                hiddenIndices_.push_back({m, p, static_cast<int>(a)});
+                prim.erase("indices");
+            }
+        }
+        return !hiddenIndices_.empty();
+    }
+
+    void restoreZeroIndexAccessors() {
+        for (const auto& h : hiddenIndices_)
+            if (h.mesh < model_.meshes.size() && h.primitive < model_.meshes[h.mesh].primitives.size())
+                model_.meshes[h.mesh].primitives[h.primitive].indices = h.accessor;
     }
 
     static bool isSupportedExtension(const std::string& ext) {
+        // KHR_mesh_quantization: readAccessor reads every component type, normalised or not.
         static const char* supported[] = {"KHR_lights_punctual", "KHR_materials_pbrSpecularGlossiness",
-                                          "KHR_materials_specular", "KHR_materials_emissive_strength"};
+                                          "KHR_materials_specular", "KHR_materials_emissive_strength",
+                                          "KHR_texture_transform", "KHR_mesh_quantization", "EXT_texture_webp"};
         return std::find(std::begin(supported), std::end(supported), ext) != std::end(supported);
     }
 
     void load() {
-        const std::string bytes = readWholeFile(path_, "file not found", "cannot open file");
-        precheck(bytes);
+        const std::string bytes = precheck(readWholeFile(path_, "file not found", "cannot open file"));
         tinygltf::TinyGLTF loader;
         loader.SetImageLoader(&Importer::decodeImageCallback, this);
         std::string err, warn;
@@ -100,6 +157,7 @@ public:
         }
         if (!imageError_.empty()) fail(imageError_);
         if (!ok) fail("not a valid glTF 2.0 file: " + firstLines(err.empty() ? warn : err));
+        restoreZeroIndexAccessors();
     }
 
     GltfImport import(const glm::mat4& root, bool lightsAndCamera) {
@@ -110,6 +168,7 @@ public:
         importMeshes();
         GltfImport result;
         walkScene(root, lightsAndCamera, result);
+        warnIgnored();
         return result;
     }
 
@@ -193,8 +252,12 @@ private:
                 checkIndex(prim.material, model_.materials, what + ".material");
             }
         }
-        for (size_t i = 0; i < model_.textures.size(); ++i)
+        for (size_t i = 0; i < model_.textures.size(); ++i) {
             checkIndex(model_.textures[i].source, model_.images, "texture[" + std::to_string(i) + "].source");
+            checkIndex(model_.textures[i].sampler, model_.samplers, "texture[" + std::to_string(i) + "].sampler");
+            checkIndex(webpSource(model_.textures[i]), model_.images,
+                       "texture[" + std::to_string(i) + "].extensions.EXT_texture_webp.source");
+        }
         for (size_t i = 0; i < model_.materials.size(); ++i) {
             const auto& m = model_.materials[i];
             const std::string what = "material[" + std::to_string(i) + "]";
@@ -203,6 +266,7 @@ private:
                        what + ".metallicRoughnessTexture");
             checkIndex(m.normalTexture.index, model_.textures, what + ".normalTexture");
             checkIndex(m.emissiveTexture.index, model_.textures, what + ".emissiveTexture");
+            checkIndex(m.occlusionTexture.index, model_.textures, what + ".occlusionTexture");
         }
         for (size_t i = 0; i < model_.nodes.size(); ++i) {
             const auto& n = model_.nodes[i];
@@ -287,7 +351,10 @@ private:
     }
 
     // ---- accessor reading, with normalisation and sparse substitution
-    std::vector<double> readAccessor(int index, int wantComponents, const std::string& what) const {
+    // Non-finite values are an error unless `allowNonFinite` (normals and
+    // tangents, which the caller repairs).
+    std::vector<double> readAccessor(int index, int wantComponents, const std::string& what,
+                                     bool allowNonFinite = false) const {
         const auto& a = model_.accessors[index];
         const int comps = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
         if (comps != wantComponents)
@@ -316,9 +383,10 @@ private:
                 readElement(vp + static_cast<size_t>(s) * esz, &out[target * comps]);
             }
         }
-        for (double d : out)
-            if (!std::isfinite(d))
-                fail(what + " (accessor[" + std::to_string(index) + "]) contains non-finite values");
+        if (!allowNonFinite)
+            for (double d : out)
+                if (!std::isfinite(d))
+                    fail(what + " (accessor[" + std::to_string(index) + "]) contains non-finite values");
         return out;
     }
 
@@ -369,10 +437,53 @@ private:
         }
     }
 
+    // EXT_texture_webp's source, or -1.
+    static int webpSource(const tinygltf::Texture& t) {
+        auto it = t.extensions.find("EXT_texture_webp");
+        if (it == t.extensions.end() || !it->second.Has("source") || !it->second.Get("source").IsNumber()) return -1;
+        return it->second.Get("source").GetNumberAsInt();
+    }
+
+    // The image a texture shows: EXT_texture_webp's when there is one (the
+    // extension's rule: prefer it when supported), else `source`.
     int imageOfTexture(int textureIndex) const {
         if (textureIndex < 0) return -1;
-        const int src = model_.textures[textureIndex].source;
+        const int webp = webpSource(model_.textures[textureIndex]);
+        const int src = webp >= 0 ? webp : model_.textures[textureIndex].source;
         return src < 0 ? -1 : imageBase_ + src;
+    }
+
+    // A textureInfo's UV set, its texture's sampler and KHR_texture_transform.
+    TextureMapping mappingOf(int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions) const {
+        TextureMapping out;
+        out.texCoord = texCoord;
+        if (textureIndex >= 0 && model_.textures[textureIndex].sampler >= 0) {
+            const auto& smp = model_.samplers[model_.textures[textureIndex].sampler];
+            // Values outside the glTF enums fall back to the defaults.
+            auto wrap = [](int w, unsigned fallback) {
+                return w == kRepeat || w == kClampToEdge || w == kMirroredRepeat ? static_cast<unsigned>(w) : fallback;
+            };
+            out.wrapS = wrap(smp.wrapS, out.wrapS);
+            out.wrapT = wrap(smp.wrapT, out.wrapT);
+            if (smp.magFilter == 9728 || smp.magFilter == 9729) out.magFilter = static_cast<unsigned>(smp.magFilter);
+            if (smp.minFilter == 9728 || smp.minFilter == 9729 || (smp.minFilter >= 9984 && smp.minFilter <= 9987))
+                out.minFilter = static_cast<unsigned>(smp.minFilter);
+        }
+        auto it = extensions.find("KHR_texture_transform");
+        if (it != extensions.end()) {
+            const auto& e = it->second;
+            const glm::vec4 offset = vector(e, "offset", glm::vec4(0.0f), 2);
+            const glm::vec4 scale = vector(e, "scale", glm::vec4(1.0f), 2);
+            out.offset = glm::vec2(offset);
+            out.scale = glm::vec2(scale);
+            out.rotation = static_cast<float>(number(e, "rotation", 0.0));
+            if (e.Has("texCoord") && e.Get("texCoord").IsNumber()) out.texCoord = e.Get("texCoord").GetNumberAsInt();
+        }
+        if (out.texCoord != 0 && out.texCoord != 1) {
+            ignoredUvSets_ = true;
+            out.texCoord = 0;
+        }
+        return out;
     }
 
     static glm::vec3 vec3Of(const std::vector<double>& v, glm::vec3 fallback) {
@@ -405,6 +516,19 @@ private:
                                                      : AlphaMode::Opaque;
             out.alphaCutoff = static_cast<float>(m.alphaCutoff);
             out.doubleSided = m.doubleSided;
+            out.occlusionTexture = imageOfTexture(m.occlusionTexture.index);
+            out.occlusionStrength = static_cast<float>(m.occlusionTexture.strength);
+            out.mapping[Material::BaseColorSlot] =
+                mappingOf(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions);
+            out.mapping[Material::NormalSlot] =
+                mappingOf(m.normalTexture.index, m.normalTexture.texCoord, m.normalTexture.extensions);
+            out.mapping[Material::SpecularSlot] = mappingOf(pbr.metallicRoughnessTexture.index,
+                                                            pbr.metallicRoughnessTexture.texCoord,
+                                                            pbr.metallicRoughnessTexture.extensions);
+            out.mapping[Material::EmissiveSlot] =
+                mappingOf(m.emissiveTexture.index, m.emissiveTexture.texCoord, m.emissiveTexture.extensions);
+            out.mapping[Material::OcclusionSlot] =
+                mappingOf(m.occlusionTexture.index, m.occlusionTexture.texCoord, m.occlusionTexture.extensions);
             applyMaterialExtensions(m, out);
             scene_.addMaterial(std::move(out));
         }
@@ -422,12 +546,18 @@ private:
             if (a.Get(i).IsNumber()) v[i] = static_cast<float>(a.Get(i).GetNumberAsDouble());
         return v;
     }
-    int textureOf(const tinygltf::Value& obj, const char* key) const {
+    // A textureInfo inside a material extension: its image, and its sampling into `mapping`.
+    int textureOf(const tinygltf::Value& obj, const char* key, TextureMapping& mapping) const {
         if (!obj.IsObject() || !obj.Has(key) || !obj.Get(key).IsObject()) return -1;
         const auto& t = obj.Get(key);
         if (!t.Has("index") || !t.Get("index").IsNumber()) return -1;
         const int idx = t.Get("index").GetNumberAsInt();
         checkIndex(idx, model_.textures, std::string("material extension texture ") + key);
+        const int texCoord = t.Has("texCoord") && t.Get("texCoord").IsNumber() ? t.Get("texCoord").GetNumberAsInt() : 0;
+        tinygltf::ExtensionMap ext;
+        if (t.Has("extensions") && t.Get("extensions").IsObject() && t.Get("extensions").Has("KHR_texture_transform"))
+            ext["KHR_texture_transform"] = t.Get("extensions").Get("KHR_texture_transform");
+        mapping = mappingOf(idx, texCoord, ext);
         return imageOfTexture(idx);
     }
 
@@ -437,10 +567,10 @@ private:
             const auto& e = it->second;
             out.model = MaterialModel::SpecularGlossiness;
             out.baseColor = vector(e, "diffuseFactor", glm::vec4(1.0f), 4);
-            out.baseColorTexture = textureOf(e, "diffuseTexture");
+            out.baseColorTexture = textureOf(e, "diffuseTexture", out.mapping[Material::BaseColorSlot]);
             out.specularColor = glm::vec3(vector(e, "specularFactor", glm::vec4(1.0f), 3));
             out.glossiness = static_cast<float>(number(e, "glossinessFactor", 1.0));
-            out.specularTexture = textureOf(e, "specularGlossinessTexture");
+            out.specularTexture = textureOf(e, "specularGlossinessTexture", out.mapping[Material::SpecularSlot]);
         }
         it = m.extensions.find("KHR_materials_specular");
         if (it != m.extensions.end() && out.model == MaterialModel::MetallicRoughness) {
@@ -507,10 +637,24 @@ private:
                      " elements but POSITION has " + std::to_string(n));
         };
         const int nrmAcc = attr("NORMAL"), tanAcc = attr("TANGENT"), uvAcc = attr("TEXCOORD_0");
+        const int uv1Acc = attr("TEXCOORD_1"), colorAcc = attr("COLOR_0");
         if (uvAcc >= 0) {
             sameCount(uvAcc, "TEXCOORD_0");
             const auto uv = readAccessor(uvAcc, 2, what + " TEXCOORD_0");
             for (size_t i = 0; i < n; ++i) out.vertices[i].uv = glm::vec2(uv[2 * i], uv[2 * i + 1]);
+        }
+        if (uv1Acc >= 0) {
+            sameCount(uv1Acc, "TEXCOORD_1");
+            const auto uv = readAccessor(uv1Acc, 2, what + " TEXCOORD_1");
+            for (size_t i = 0; i < n; ++i) out.vertices[i].uv1 = glm::vec2(uv[2 * i], uv[2 * i + 1]);
+        }
+        if (colorAcc >= 0) {
+            // VEC3 or VEC4, float or normalised unsigned byte / short (spec 3.7.2.1); alpha 1 for VEC3.
+            sameCount(colorAcc, "COLOR_0");
+            const int comps = model_.accessors[colorAcc].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+            const auto c = readAccessor(colorAcc, comps, what + " COLOR_0");
+            for (size_t i = 0; i < n; ++i)
+                out.vertices[i].color = glm::vec4(c[comps * i], c[comps * i + 1], c[comps * i + 2], comps == 4 ? c[4 * i + 3] : 1.0);
         }
         // Indices, converted to a triangle list.
         std::vector<uint32_t> idx;
@@ -551,23 +695,49 @@ private:
             return false;
         }
         if (nrmAcc >= 0) {
+            // Normals that are not finite or have no length are regenerated
+            // (one warning): real files ship a few, and refusing the file for
+            // them helps nobody; non-finite positions stay an error.
             sameCount(nrmAcc, "NORMAL");
-            const auto nrm = readAccessor(nrmAcc, 3, what + " NORMAL");
+            const auto nrm = readAccessor(nrmAcc, 3, what + " NORMAL", true);
+            std::vector<bool> broken(n, false);
             for (size_t i = 0; i < n; ++i) {
-                glm::vec3 v(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-                const float len = glm::length(v);
-                out.vertices[i].normal = len > 1e-12f ? v / len : glm::vec3(0, 1, 0);
+                const glm::dvec3 v(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                const double len = glm::length(v);
+                if (std::isfinite(len) && len > 1e-12) out.vertices[i].normal = glm::vec3(v / len);
+                else broken[i] = true;
             }
+            const size_t repaired = std::count(broken.begin(), broken.end(), true) > 0 ? repairNormals(out, broken) : 0;
+            if (repaired > 0)
+                scene_.warnings.push_back(path_ + ": " + what + " NORMAL (accessor[" + std::to_string(nrmAcc) + "]) has " +
+                                          std::to_string(repaired) +
+                                          " non-finite or zero-length normals; regenerated from the faces around them");
+            const size_t reversed = orientTrianglesToNormals(out);
+            if (reversed > 0)
+                scene_.warnings.push_back(path_ + ": " + what + " has " + std::to_string(reversed) +
+                                          " triangle(s) wound against their vertex normals; turned around");
         } else {
-            generateNormals(out);
+            generateFlatNormals(out);
         }
         bool haveTangents = false;
         if (tanAcc >= 0) {
             sameCount(tanAcc, "TANGENT");
-            const auto t = readAccessor(tanAcc, 4, what + " TANGENT");
-            for (size_t i = 0; i < n; ++i)
-                out.vertices[i].tangent = glm::vec4(t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3] < 0 ? -1.0 : 1.0);
-            haveTangents = true;
+            const auto t = readAccessor(tanAcc, 4, what + " TANGENT", true);
+            size_t broken = 0;
+            for (size_t i = 0; i < n; ++i) {
+                const glm::dvec4 v(t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3]);
+                const double len = glm::length(glm::dvec3(v));
+                if (!std::isfinite(len) || !std::isfinite(v.w) || len <= 1e-12) ++broken;
+            }
+            if (broken > 0) {
+                scene_.warnings.push_back(path_ + ": " + what + " TANGENT (accessor[" + std::to_string(tanAcc) + "]) has " +
+                                          std::to_string(broken) +
+                                          " non-finite or zero-length tangents; the primitive's tangents are regenerated");
+            } else {
+                for (size_t i = 0; i < n; ++i)
+                    out.vertices[i].tangent = glm::vec4(t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3] < 0 ? -1.0 : 1.0);
+                haveTangents = true;
+            }
         }
         if (!haveTangents) generateTangents(out);
         out.computeBounds();
@@ -666,9 +836,38 @@ private:
         result.hasCamera = true;
     }
 
+    // One warning line naming everything the file uses that the workbench
+    // does not draw, so a user knows why the picture differs from a viewer's.
+    void warnIgnored() {
+        std::vector<std::string> parts;
+        if (!model_.skins.empty()) parts.push_back(std::to_string(model_.skins.size()) + " skin(s)");
+        size_t morphed = 0;
+        for (const auto& m : model_.meshes)
+            for (const auto& p : m.primitives) morphed += p.targets.empty() ? 0 : 1;
+        if (morphed > 0) parts.push_back("morph targets on " + std::to_string(morphed) + " primitive(s)");
+        if (!model_.animations.empty()) parts.push_back(std::to_string(model_.animations.size()) + " animation(s)");
+        size_t blended = 0;
+        for (const auto& m : model_.materials) blended += m.alphaMode == "BLEND" ? 1 : 0;
+        if (blended > 0) parts.push_back("alpha mode BLEND on " + std::to_string(blended) + " material(s), drawn opaque");
+        if (ignoredUvSets_) parts.push_back("texture coordinate sets beyond TEXCOORD_1 (TEXCOORD_0 used)");
+        for (const auto& ext : model_.extensionsUsed)
+            if (!isSupportedExtension(ext)) parts.push_back("extension " + ext);
+        if (parts.empty()) return;
+        std::string line = path_ + ": ignored (not supported by the workbench): ";
+        for (size_t i = 0; i < parts.size(); ++i) line += (i ? ", " : "") + parts[i];
+        scene_.warnings.push_back(line);
+    }
+
+    struct HiddenIndices {
+        std::size_t mesh, primitive;
+        int accessor;
+    };
+
     std::string path_;
     Scene& scene_;
     tinygltf::Model model_;
+    std::vector<HiddenIndices> hiddenIndices_;
+    mutable bool ignoredUvSets_ = false;
     std::string imageError_;
     int imageBase_ = 0, materialBase_ = 0, defaultMaterial_ = -1;
     std::vector<std::vector<int>> meshMap_;

@@ -16,8 +16,11 @@ struct MaterialGpu {
     glm::vec4 params;            // metallic, roughness, glossiness, alpha cutoff
     glm::ivec4 textures;         // 1 where the material has: base colour, normal, specular/MR, emissive
     glm::ivec4 flags;            // model, alpha mode, double sided, unused
+    glm::ivec4 texCoords;        // UV set (0 or 1) of base colour, normal, specular/MR, emissive
+    glm::vec4 occlusion;         // has an occlusion texture, strength, UV set, unused
+    glm::vec4 uvTransform[2 * Material::kSlotCount];  // per texture slot: the two rows of its 2x3 UV transform
 };
-static_assert(sizeof(MaterialGpu) == 96, "std430 layout");
+static_assert(sizeof(MaterialGpu) == 288, "std430 layout");
 
 gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a, bool srgb) {
     gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, 1, 1);
@@ -28,6 +31,19 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::ui
 }
 
 }  // namespace
+
+GLuint GpuScene::samplerFor(const TextureMapping& m) {
+    const SamplerKey key{m.wrapS, m.wrapT, m.minFilter, m.magFilter};
+    auto it = samplerIndex_.find(key);
+    if (it != samplerIndex_.end()) return samplers_[it->second].id();
+    gl::Sampler s = gl::Sampler::create(m.minFilter, m.magFilter, m.wrapS, m.wrapT, "glTF sampler");
+    const bool mipmapped = m.minFilter != GL_NEAREST && m.minFilter != GL_LINEAR;
+    if (mipmapped && (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") || epoxy_gl_version() >= 46))
+        glSamplerParameterf(s.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    samplers_.push_back(std::move(s));
+    samplerIndex_[key] = samplers_.size() - 1;
+    return samplers_.back().id();
+}
 
 int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     if (image < 0) return -1;
@@ -77,6 +93,8 @@ void GpuScene::upload(const Scene& scene) {
     vao_.setAttribute(1, 0, 3, offsetof(Vertex, normal));
     vao_.setAttribute(2, 0, 4, offsetof(Vertex, tangent));
     vao_.setAttribute(3, 0, 2, offsetof(Vertex, uv));
+    vao_.setAttribute(4, 0, 4, offsetof(Vertex, color));
+    vao_.setAttribute(5, 0, 2, offsetof(Vertex, uv1));
 
     std::vector<MaterialGpu> mats;
     for (const Material& m : scene.materials) {
@@ -86,6 +104,8 @@ void GpuScene::upload(const Scene& scene) {
         t.specular = textureFor(scene, m.model == MaterialModel::MetallicRoughness ? m.metallicRoughnessTexture : m.specularTexture,
                                 m.model == MaterialModel::SpecularGlossiness);
         t.emissive = textureFor(scene, m.emissiveTexture, true);
+        t.occlusion = textureFor(scene, m.occlusionTexture, false);
+        for (int slot = 0; slot < Material::kSlotCount; ++slot) t.samplers[slot] = samplerFor(m.mapping[slot]);
         materialTextures_.push_back(t);
         MaterialGpu g{};
         g.baseColor = m.baseColor;
@@ -94,6 +114,13 @@ void GpuScene::upload(const Scene& scene) {
         g.params = glm::vec4(m.metallic, m.roughness, m.glossiness, m.alphaCutoff);
         g.textures = glm::ivec4(t.baseColor >= 0, t.normal >= 0, t.specular >= 0, t.emissive >= 0);
         g.flags = glm::ivec4(static_cast<int>(m.model), static_cast<int>(m.alphaMode), m.doubleSided ? 1 : 0, 0);
+        g.texCoords = glm::ivec4(m.mapping[0].texCoord, m.mapping[1].texCoord, m.mapping[2].texCoord, m.mapping[3].texCoord);
+        g.occlusion = glm::vec4(t.occlusion >= 0 ? 1.0f : 0.0f, m.occlusionStrength,
+                                static_cast<float>(m.mapping[Material::OcclusionSlot].texCoord), 0.0f);
+        for (int slot = 0; slot < Material::kSlotCount; ++slot) {
+            g.uvTransform[2 * slot] = glm::vec4(m.mapping[slot].row(0), 0.0f);
+            g.uvTransform[2 * slot + 1] = glm::vec4(m.mapping[slot].row(1), 0.0f);
+        }
         mats.push_back(g);
     }
     if (mats.empty()) mats.push_back(MaterialGpu{});
@@ -134,6 +161,7 @@ void GpuScene::upload(const Scene& scene) {
         d.baseVertex = ranges[inst.mesh].baseVertex;
         d.alphaMode = scene.materials[mesh.material].alphaMode;
         d.doubleSided = scene.materials[mesh.material].doubleSided;
+        d.mirrored = glm::determinant(glm::mat3(d.model)) < 0.0f;
         const Bounds& local = meshBounds[static_cast<std::size_t>(inst.mesh)];
         if (!local.empty())
             for (int corner = 0; corner < 8; ++corner) {
@@ -152,6 +180,9 @@ void GpuScene::bindMaterialTextures(int material) const {
     auto id = [&](int tex, const gl::Texture& fallback) { return tex >= 0 ? textures_[tex].id() : fallback.id(); };
     const GLuint ids[4] = {id(t.baseColor, white_), id(t.normal, flatNormal_), id(t.specular, white_), id(t.emissive, white_)};
     glBindTextures(0, 4, ids);
+    glBindSamplers(0, 4, t.samplers);
+    glBindTextureUnit(kOcclusionUnit, id(t.occlusion, white_));
+    glBindSampler(kOcclusionUnit, t.samplers[Material::OcclusionSlot]);
 }
 
 static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
@@ -189,12 +220,20 @@ void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindText
             bindMaterialTextures(d.material);
             boundMaterial = d.material;
         }
+        glFrontFace(d.mirrored ? GL_CW : GL_CCW);
         program.set(0, d.model);
         program.set(1, d.material);
         glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
     }
     glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    // The glTF samplers override the textures' own state: unbind them so later
+    // passes sampling through units 0-3 and 10 get their textures' settings.
+    if (bindTextures) {
+        glBindSamplers(0, 4, nullptr);
+        glBindSampler(kOcclusionUnit, 0);
+    }
 }
 
 void GpuScene::drawDepthOnly(const gl::Program& program, Filter filter) const {
@@ -202,10 +241,12 @@ void GpuScene::drawDepthOnly(const gl::Program& program, Filter filter) const {
     vao_.bind();
     for (const Draw& d : draws_) {
         if (!passes(d, filter)) continue;
+        glFrontFace(d.mirrored ? GL_CW : GL_CCW);
         program.set(0, d.model);
         glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
     }
+    glFrontFace(GL_CCW);
 }
 
 }  // namespace dw

@@ -5,10 +5,12 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <map>
+#include <tuple>
 #include <vector>
 
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Program.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/gl/VertexArray.h"
 #include "renderer/scene/Scene.h"
@@ -34,6 +36,10 @@ public:
         GLint baseVertex = 0;
         AlphaMode alphaMode = AlphaMode::Opaque;
         bool doubleSided = false;
+        // The model matrix has a negative determinant (a mirroring scale): its
+        // triangles' winding flips, so front faces are clockwise (glTF 2.0,
+        // "Transformations").
+        bool mirrored = false;
         Bounds bounds;  // world-space box of the instance (its mesh's box under `model`)
     };
     enum class Filter { Opaque, Blend, All };
@@ -50,7 +56,10 @@ public:
     // Binds VAO, material SSBO and per-draw textures, then issues one draw per
     // instance that passes `filter`. Locations 0 and 1 of `program` receive the
     // model matrix and material index.
+    // Material textures go to units 0-3 (base colour, normal, specular / metallic-
+    // roughness, emissive) and kOcclusionUnit, each with its glTF sampler.
     void draw(const gl::Program& program, Filter filter, bool bindTextures = true) const;
+    static constexpr GLuint kOcclusionUnit = 10;
     // As draw(), but calls `before(index into draws(), draw)` first for each
     // instance that passes `filter`: it sets the program's per-draw uniforms
     // and returns false to skip the instance (the forward lighting strategies).
@@ -64,6 +73,8 @@ public:
 
 private:
     int textureFor(const Scene& scene, int image, bool srgb);
+    // One sampler object per distinct glTF sampler (wrap S/T, min/mag filter).
+    GLuint samplerFor(const TextureMapping& mapping);
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
 
@@ -72,8 +83,12 @@ private:
     std::vector<gl::Texture> textures_;
     std::map<std::pair<int, bool>, int> textureIndex_;
     struct MaterialTextures {
-        int baseColor = -1, normal = -1, specular = -1, emissive = -1;
+        int baseColor = -1, normal = -1, specular = -1, emissive = -1, occlusion = -1;
+        GLuint samplers[Material::kSlotCount] = {};  // per slot, units 0-3 and kOcclusionUnit
     };
+    using SamplerKey = std::tuple<unsigned, unsigned, unsigned, unsigned>;
+    std::vector<gl::Sampler> samplers_;
+    std::map<SamplerKey, std::size_t> samplerIndex_;
     std::vector<MaterialTextures> materialTextures_;
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;

@@ -9,6 +9,23 @@
 namespace dw {
 
 enum class AlphaMode { Opaque, Mask, Blend };
+
+// How a material reads one of its textures: the glTF textureInfo's UV set,
+// its sampler (GL enums, glTF 2.0 "Samplers"; defaults: repeat, trilinear)
+// and KHR_texture_transform's offset, rotation (radians) and scale, applied
+// as uv' = T * R * S * uv with the extension's rotation sense.
+struct TextureMapping {
+    int texCoord = 0;               // 0: TEXCOORD_0, 1: TEXCOORD_1
+    unsigned wrapS = 0x2901;        // GL_REPEAT, GL_CLAMP_TO_EDGE or GL_MIRRORED_REPEAT
+    unsigned wrapT = 0x2901;
+    unsigned minFilter = 0x2703;    // GL_LINEAR_MIPMAP_LINEAR
+    unsigned magFilter = 0x2601;    // GL_LINEAR
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;
+    glm::vec2 scale{1.0f};
+    // The 2x3 affine matrix as two rows (u' = row0 . (u, v, 1), v' = row1 . (u, v, 1)).
+    glm::vec3 row(int r) const;
+};
 enum class MaterialModel { BlinnPhong, MetallicRoughness, SpecularGlossiness };
 
 struct Material {
@@ -32,6 +49,14 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
+    // Baked ambient occlusion (glTF occlusionTexture, R channel): ambient
+    // accessibility 1 + strength * (R - 1), written to gbuffer.occlusion.
+    int occlusionTexture = -1;
+    float occlusionStrength = 1.0f;
+    // Sampling of baseColorTexture, normalTexture, specular / metallic-roughness,
+    // emissiveTexture and occlusionTexture, in that order.
+    enum Slot { BaseColorSlot, NormalSlot, SpecularSlot, EmissiveSlot, OcclusionSlot, kSlotCount };
+    TextureMapping mapping[kSlotCount];
 };
 
 }  // namespace dw

@@ -11,9 +11,11 @@ struct Vertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
     glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w = bitangent sign
-    glm::vec2 uv{0.0f};
+    glm::vec2 uv{0.0f};                          // glTF TEXCOORD_0
+    glm::vec4 color{1.0f};                       // glTF COLOR_0 (linear), multiplies the base colour
+    glm::vec2 uv1{0.0f};                         // glTF TEXCOORD_1
 };
-static_assert(sizeof(Vertex) == 48, "Vertex layout is mirrored by the geometry VAO");
+static_assert(sizeof(Vertex) == 72, "Vertex layout is mirrored by the geometry VAO");
 
 struct Bounds {
     glm::vec3 min{1e30f};

@@ -1,58 +1,125 @@
 #include "renderer/scene/TangentGenerator.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <vector>
 
 #include "renderer/scene/Mesh.h"
 
 namespace dw {
 
-void generateTangents(Mesh& mesh) {
-    const size_t n = mesh.vertices.size();
-    std::vector<glm::vec3> tan(n, glm::vec3(0.0f)), bit(n, glm::vec3(0.0f));
-    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const uint32_t i0 = mesh.indices[i], i1 = mesh.indices[i + 1], i2 = mesh.indices[i + 2];
-        const Vertex &v0 = mesh.vertices[i0], &v1 = mesh.vertices[i1], &v2 = mesh.vertices[i2];
-        const glm::vec3 e1 = v1.position - v0.position, e2 = v2.position - v0.position;
-        const glm::vec2 d1 = v1.uv - v0.uv, d2 = v2.uv - v0.uv;
-        const float det = d1.x * d2.y - d2.x * d1.y;
-        if (std::fabs(det) < 1e-12f) continue;
-        const float r = 1.0f / det;
-        const glm::vec3 t = (e1 * d2.y - e2 * d1.y) * r;
-        const glm::vec3 b = (e2 * d1.x - e1 * d2.x) * r;
-        for (uint32_t idx : {i0, i1, i2}) {
-            tan[idx] += t;
-            bit[idx] += b;
-        }
+namespace {
+
+// A corner's identity for averaging: the exact bits of position, normal and
+// uv, plus the orientation of its triangle in UV space.
+using CornerKey = std::array<std::uint32_t, 9>;
+
+CornerKey keyOf(const Vertex& v, int orientation) {
+    CornerKey k{};
+    const float f[8] = {v.position.x, v.position.y, v.position.z, v.normal.x, v.normal.y, v.normal.z, v.uv.x, v.uv.y};
+    for (int i = 0; i < 8; ++i) {
+        // +0 and -0 are the same value.
+        const float x = f[i] == 0.0f ? 0.0f : f[i];
+        std::memcpy(&k[static_cast<size_t>(i)], &x, 4);
     }
-    for (size_t i = 0; i < n; ++i) {
-        Vertex& v = mesh.vertices[i];
-        const glm::vec3 nrm = v.normal;
-        glm::vec3 t = tan[i] - nrm * glm::dot(nrm, tan[i]);
-        if (glm::dot(t, t) < 1e-20f) {
-            // No usable UV gradient: any vector perpendicular to the normal.
-            t = std::fabs(nrm.x) < 0.9f ? glm::cross(nrm, glm::vec3(1, 0, 0)) : glm::cross(nrm, glm::vec3(0, 1, 0));
-        }
-        t = glm::normalize(t);
-        const float w = glm::dot(glm::cross(nrm, t), bit[i]) < 0.0f ? -1.0f : 1.0f;
-        v.tangent = glm::vec4(t, w);
-    }
+    k[8] = orientation > 0 ? 1u : 0u;
+    return k;
 }
 
-void generateNormals(Mesh& mesh) {
-    std::vector<glm::vec3> acc(mesh.vertices.size(), glm::vec3(0.0f));
-    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const uint32_t i0 = mesh.indices[i], i1 = mesh.indices[i + 1], i2 = mesh.indices[i + 2];
-        const glm::vec3 fn = glm::cross(mesh.vertices[i1].position - mesh.vertices[i0].position,
-                                        mesh.vertices[i2].position - mesh.vertices[i0].position);
-        acc[i0] += fn;
-        acc[i1] += fn;
-        acc[i2] += fn;
+float cornerAngle(const glm::vec3& at, const glm::vec3& a, const glm::vec3& b) {
+    const glm::vec3 e1 = a - at, e2 = b - at;
+    const float l1 = glm::length(e1), l2 = glm::length(e2);
+    if (l1 <= 0.0f || l2 <= 0.0f) return 0.0f;
+    return std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
+}
+
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
+    const glm::vec3 t = std::fabs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0)) : glm::cross(n, glm::vec3(0, 1, 0));
+    const float l = glm::length(t);
+    return l > 0.0f ? t / l : glm::vec3(1, 0, 0);
+}
+
+}  // namespace
+
+void generateTangents(Mesh& mesh) {
+    const size_t triangles = mesh.indices.size() / 3;
+    // Per triangle: dP/du and the orientation (sign of the signed UV area; 0 when degenerate).
+    std::vector<glm::vec3> faceTangent(triangles, glm::vec3(0.0f));
+    std::vector<int> orientation(triangles, 0);
+    for (size_t t = 0; t < triangles; ++t) {
+        const Vertex& v0 = mesh.vertices[mesh.indices[3 * t]];
+        const Vertex& v1 = mesh.vertices[mesh.indices[3 * t + 1]];
+        const Vertex& v2 = mesh.vertices[mesh.indices[3 * t + 2]];
+        const glm::vec3 e1 = v1.position - v0.position, e2 = v2.position - v0.position;
+        const glm::vec2 d1 = v1.uv - v0.uv, d2 = v2.uv - v0.uv;
+        const float area = d1.x * d2.y - d2.x * d1.y;
+        if (!(std::fabs(area) > 1e-20f) || !std::isfinite(area)) continue;
+        orientation[t] = area > 0.0f ? 1 : -1;
+        faceTangent[t] = (e1 * d2.y - e2 * d1.y) / area;
     }
-    for (size_t i = 0; i < acc.size(); ++i) {
-        const float len = glm::length(acc[i]);
-        mesh.vertices[i].normal = len > 0.0f ? acc[i] / len : glm::vec3(0, 1, 0);
+
+    // Group the corners; degenerate-UV triangles join a group of either
+    // orientation that already exists at their corner (second pass).
+    std::map<CornerKey, std::uint32_t> groupOf;
+    std::vector<glm::vec3> groupTangent;
+    std::vector<int> groupSign;
+    std::vector<std::uint32_t> cornerGroup(mesh.indices.size(), 0);
+    auto groupFor = [&](const Vertex& v, int orient) {
+        auto [it, inserted] = groupOf.try_emplace(keyOf(v, orient), static_cast<std::uint32_t>(groupTangent.size()));
+        if (inserted) {
+            groupTangent.emplace_back(0.0f);
+            groupSign.push_back(orient);
+        }
+        return it->second;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+        for (size_t t = 0; t < triangles; ++t) {
+            if ((orientation[t] == 0) != (pass == 1)) continue;
+            for (int c = 0; c < 3; ++c) {
+                const size_t corner = 3 * t + static_cast<size_t>(c);
+                const Vertex& v = mesh.vertices[mesh.indices[corner]];
+                if (pass == 0) {
+                    const std::uint32_t g = groupFor(v, orientation[t]);
+                    cornerGroup[corner] = g;
+                    const glm::vec3 p1 = mesh.vertices[mesh.indices[3 * t + (c + 1) % 3]].position;
+                    const glm::vec3 p2 = mesh.vertices[mesh.indices[3 * t + (c + 2) % 3]].position;
+                    const glm::vec3 n = v.normal;
+                    glm::vec3 projected = faceTangent[t] - n * glm::dot(n, faceTangent[t]);
+                    const float len = glm::length(projected);
+                    if (len > 1e-20f && std::isfinite(len))
+                        groupTangent[g] += (projected / len) * cornerAngle(v.position, p1, p2);
+                } else {
+                    auto it = groupOf.find(keyOf(v, 1));
+                    if (it == groupOf.end()) it = groupOf.find(keyOf(v, -1));
+                    cornerGroup[corner] = it != groupOf.end() ? it->second : groupFor(v, 1);
+                }
+            }
+        }
     }
+
+    // One output vertex per (input vertex, group).
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> outIndex;
+    std::vector<Vertex> vertices;
+    vertices.reserve(mesh.vertices.size());
+    std::vector<std::uint32_t> indices(mesh.indices.size());
+    for (size_t corner = 0; corner < triangles * 3; ++corner) {
+        const std::uint32_t src = mesh.indices[corner], g = cornerGroup[corner];
+        auto [it, inserted] = outIndex.try_emplace({src, g}, static_cast<std::uint32_t>(vertices.size()));
+        if (inserted) {
+            Vertex v = mesh.vertices[src];
+            const glm::vec3 sum = groupTangent[g];
+            const float len = glm::length(sum);
+            const glm::vec3 t = len > 1e-20f && std::isfinite(len) ? sum / len : anyPerpendicular(v.normal);
+            v.tangent = glm::vec4(t, groupSign[g] < 0 ? -1.0f : 1.0f);
+            vertices.push_back(v);
+        }
+        indices[corner] = it->second;
+    }
+    mesh.vertices = std::move(vertices);
+    mesh.indices = std::move(indices);
 }
 
 }  // namespace dw

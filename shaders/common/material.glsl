@@ -17,7 +17,32 @@ struct Material {
     vec4 params;     // metallic, roughness, glossiness, alpha cutoff
     ivec4 textures;  // has base colour, normal, specular/MR, emissive
     ivec4 flags;     // model, alpha mode, double sided
+    ivec4 texCoords; // UV set (0, 1) of base colour, normal, specular/MR, emissive
+    vec4 occlusion;  // has occlusion texture, strength, UV set
+    vec4 uvTransform[10];  // per slot (base colour, normal, specular/MR, emissive, occlusion): rows of the 2x3 UV transform
 };
+
+#define SLOT_BASE_COLOR 0
+#define SLOT_NORMAL 1
+#define SLOT_SPECULAR 2
+#define SLOT_EMISSIVE 3
+#define SLOT_OCCLUSION 4
+
+#define MATERIAL_SLOTS 5
+
+// The texture coordinates of every slot: its UV set (texCoords, occlusion.z)
+// through its KHR_texture_transform matrix (identity when the file has none).
+// Evaluated per vertex, so the fragment shader samples interpolated UVs:
+// implicit derivatives come from helper invocations, which need not load
+// buffer memory (llvmpipe masks it), so a transform read from this SSBO in
+// the fragment shader chose wrong mip levels along every triangle edge.
+void materialUvs(Material m, vec2 uv0, vec2 uv1, out vec2 uvs[MATERIAL_SLOTS]) {
+    int sets[MATERIAL_SLOTS] = int[](m.texCoords.x, m.texCoords.y, m.texCoords.z, m.texCoords.w, int(m.occlusion.z));
+    for (int slot = 0; slot < MATERIAL_SLOTS; ++slot) {
+        vec3 uv = vec3(sets[slot] == 1 ? uv1 : uv0, 1.0);
+        uvs[slot] = vec2(dot(m.uvTransform[2 * slot].xyz, uv), dot(m.uvTransform[2 * slot + 1].xyz, uv));
+    }
+}
 
 layout(std430, binding = MATERIAL_SSBO) readonly buffer MaterialTable {
     Material materials[];

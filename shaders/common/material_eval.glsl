@@ -11,6 +11,7 @@ layout(binding = 0) uniform sampler2D uBaseColorMap;
 layout(binding = 1) uniform sampler2D uNormalMap;
 layout(binding = 2) uniform sampler2D uSpecularMap;
 layout(binding = 3) uniform sampler2D uEmissiveMap;
+layout(binding = 10) uniform sampler2D uOcclusionMap;  // GpuScene::kOcclusionUnit
 
 struct MaterialSample {
     vec3 normal;  // view space, normal map applied, facing the viewer on double-sided back faces
@@ -21,9 +22,13 @@ struct MaterialSample {
 };
 
 // False where an alpha-masked material cuts the fragment out (discard it).
-bool evaluateMaterial(Material m, vec3 normal, vec4 tangent, vec2 uv, bool frontFacing, out MaterialSample ms) {
-    vec4 base = m.baseColor;
-    if (m.textures.x != 0) base *= texture(uBaseColorMap, uv);
+// uvs: every texture slot's coordinates (material.glsl's materialUvs, in the
+// vertex shader); color: COLOR_0 (white when absent), which multiplies the
+// base colour (glTF 2.0, "Metallic-Roughness Material").
+bool evaluateMaterial(Material m, vec3 normal, vec4 tangent, vec2 uvs[MATERIAL_SLOTS], vec4 color, bool frontFacing,
+                      out MaterialSample ms) {
+    vec4 base = m.baseColor * color;
+    if (m.textures.x != 0) base *= texture(uBaseColorMap, uvs[SLOT_BASE_COLOR]);
     if (m.flags.y == ALPHA_MASK && base.a < m.params.w) return false;
 
     vec3 N = normalize(normal);
@@ -35,14 +40,14 @@ bool evaluateMaterial(Material m, vec3 normal, vec4 tangent, vec2 uv, bool front
             T /= tl;
             vec3 B = cross(N, T) * (tangent.w < 0.0 ? -1.0 : 1.0);
             if (!frontFacing) B = -B;
-            vec3 t = texture(uNormalMap, uv).xyz * 2.0 - 1.0;
+            vec3 t = texture(uNormalMap, uvs[SLOT_NORMAL]).xyz * 2.0 - 1.0;
             t.xy *= m.emissive.a;
             N = normalize(mat3(T, B, N) * t);
         }
     }
     ms.normal = N;
 
-    vec4 s = m.textures.z != 0 ? texture(uSpecularMap, uv) : vec4(1.0);
+    vec4 s = m.textures.z != 0 ? texture(uSpecularMap, uvs[SLOT_SPECULAR]) : vec4(1.0);
     if (m.flags.x == MODEL_METALLIC_ROUGHNESS) {
         float metallic = clamp(m.params.x * s.b, 0.0, 1.0);
         float roughness = clamp(m.params.y * s.g, 0.0, 1.0);
@@ -59,8 +64,15 @@ bool evaluateMaterial(Material m, vec3 normal, vec4 tangent, vec2 uv, bool front
         ms.exponent = m.specular.a;
     }
     ms.emissive = m.emissive.rgb;
-    if (m.textures.w != 0) ms.emissive *= texture(uEmissiveMap, uv).rgb;
+    if (m.textures.w != 0) ms.emissive *= texture(uEmissiveMap, uvs[SLOT_EMISSIVE]).rgb;
     return true;
+}
+
+// Baked ambient accessibility (glTF occlusionTexture): 1 + strength * (R - 1), 1 without a texture.
+float materialOcclusion(Material m, vec2 uvs[MATERIAL_SLOTS]) {
+    if (m.occlusion.x == 0.0) return 1.0;
+    float r = texture(uOcclusionMap, uvs[SLOT_OCCLUSION]).r;
+    return clamp(1.0 + m.occlusion.y * (r - 1.0), 0.0, 1.0);
 }
 
 #endif

@@ -32,7 +32,8 @@ in VertexData {
     vec3 viewPosition;
     vec3 normal;
     vec4 tangent;
-    vec2 uv;
+    vec2 uvs[MATERIAL_SLOTS];
+    vec4 color;
 } fs;
 
 layout(location = 0) out vec4 outColor;
@@ -42,7 +43,7 @@ layout(location = 1) out float outOverlap;  // lights evaluated here, added up b
 
 void main() {
     MaterialSample ms;
-    if (!evaluateMaterial(materials[uMaterial], fs.normal, fs.tangent, fs.uv, gl_FrontFacing, ms)) discard;
+    if (!evaluateMaterial(materials[uMaterial], fs.normal, fs.tangent, fs.uvs, fs.color, gl_FrontFacing, ms)) discard;
     // The G-buffer's ranges (geometry.frag), not its quantisation.
     Surface s;
     s.depth = gl_FragCoord.z;

@@ -14,7 +14,7 @@
     FIELD(int, ambientSpecular)  /* lighting.ambient_specular */                          \
     FIELD(int, sky)              /* the sky pass ran: its texture is the background */    \
     FIELD(float, windowExponent) /* k in the windowed attenuation 1 - (d/r)^k */          \
-    FIELD(float, pad0)                                                                    \
+    FIELD(int, bakedOcclusion)   /* lighting.ambient_occlusion uses gbuffer.occlusion */  \
     FIELD(float, pad1)                                                                    \
     FIELD(float, pad2)
 DW_PARAM_BLOCK(LightingParams, lightingParams, DW_LIGHTING_PARAMS)

@@ -1,0 +1,78 @@
+#include "renderer/scene/NormalGenerator.h"
+
+#include <cmath>
+
+#include "renderer/scene/Mesh.h"
+
+namespace dw {
+
+namespace {
+
+glm::vec3 faceNormalTimesTwoArea(const Mesh& m, size_t t) {
+    const glm::vec3 p0 = m.vertices[m.indices[3 * t]].position;
+    const glm::vec3 p1 = m.vertices[m.indices[3 * t + 1]].position;
+    const glm::vec3 p2 = m.vertices[m.indices[3 * t + 2]].position;
+    return glm::cross(p1 - p0, p2 - p0);
+}
+
+glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
+    const float len = glm::length(v);
+    return len > 0.0f && std::isfinite(len) ? v / len : fallback;
+}
+
+}  // namespace
+
+void generateFlatNormals(Mesh& mesh) {
+    const size_t triangles = mesh.indices.size() / 3;
+    std::vector<Vertex> vertices;
+    vertices.reserve(triangles * 3);
+    for (size_t t = 0; t < triangles; ++t) {
+        const glm::vec3 n = unitOr(faceNormalTimesTwoArea(mesh, t), glm::vec3(0, 1, 0));
+        for (int c = 0; c < 3; ++c) {
+            Vertex v = mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]];
+            v.normal = n;
+            vertices.push_back(v);
+        }
+    }
+    mesh.vertices = std::move(vertices);
+    mesh.indices.resize(triangles * 3);
+    for (size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = static_cast<std::uint32_t>(i);
+}
+
+std::size_t orientTrianglesToNormals(Mesh& mesh) {
+    const size_t triangles = mesh.indices.size() / 3;
+    std::vector<size_t> against;
+    size_t counted = 0;
+    for (size_t t = 0; t < triangles; ++t) {
+        const glm::vec3 face = faceNormalTimesTwoArea(mesh, t);
+        if (!(glm::dot(face, face) > 0.0f)) continue;
+        ++counted;
+        bool allAgainst = true;
+        for (int c = 0; c < 3 && allAgainst; ++c)
+            allAgainst = glm::dot(face, mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]].normal) < 0.0f;
+        if (allAgainst) against.push_back(t);
+    }
+    if (against.empty() || 2 * against.size() >= counted) return 0;
+    for (size_t t : against) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+    return against.size();
+}
+
+std::size_t repairNormals(Mesh& mesh, const std::vector<bool>& repair) {
+    std::vector<glm::vec3> sum(mesh.vertices.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t < mesh.indices.size() / 3; ++t) {
+        const glm::vec3 fn = faceNormalTimesTwoArea(mesh, t);
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t v = mesh.indices[3 * t + static_cast<size_t>(c)];
+            if (repair[v]) sum[v] += fn;
+        }
+    }
+    std::size_t count = 0;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v)
+        if (repair[v]) {
+            mesh.vertices[v].normal = unitOr(sum[v], glm::vec3(0, 1, 0));
+            ++count;
+        }
+    return count;
+}
+
+}  // namespace dw

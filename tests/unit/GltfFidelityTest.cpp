@@ -1,0 +1,344 @@
+// glTF fidelity (issue 8): flat normals for primitives without NORMAL,
+// MikkTSpace-rule tangents, COLOR_0 / TEXCOORD_1 / samplers / texture
+// transforms imported, broken normals repaired with one warning, ignored
+// features named in one warning, accessors without bufferView loaded.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include <OpenImageIO/imageio.h>
+
+#include "renderer/Error.h"
+#include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/TangentGenerator.h"
+#include "tests/support/GltfBuilder.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+fs::path write(const std::string& name, const json& j) {
+    const fs::path p = test::tempDir() / name;
+    std::ofstream(p) << j.dump(1);
+    return p;
+}
+
+// The eight corners and twelve triangles of /work/shared/cases'
+// no_normals_shared_corners.gltf: a unit cube whose faces share corners.
+const std::vector<float> kCubeCorners = {-0.5f, -0.5f, -0.5f, -0.5f, -0.5f, 0.5f, -0.5f, 0.5f, -0.5f, -0.5f, 0.5f, 0.5f,
+                                         0.5f,  -0.5f, -0.5f, 0.5f,  -0.5f, 0.5f, 0.5f,  0.5f, -0.5f, 0.5f,  0.5f, 0.5f};
+const std::vector<uint16_t> kCubeTriangles = {4, 6, 7, 4, 7, 5, 0, 1, 3, 0, 3, 2, 2, 3, 7, 2, 7, 6,
+                                              0, 4, 5, 0, 5, 1, 1, 5, 7, 1, 7, 3, 0, 2, 6, 0, 6, 4};
+
+}  // namespace
+
+TEST(GltfFidelity, PrimitiveWithoutNormalsGetsOneFlatNormalPerFace) {
+    test::GltfBuilder b;
+    const int pos = b.vec3(kCubeCorners);
+    const int idx = b.indices(kCubeTriangles);
+    Scene s;
+    importGltf(write("flat.gltf", b.finish({{"POSITION", pos}}, idx)).string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const Mesh& m = s.meshes[0];
+    std::set<std::tuple<int, int, int>> distinct;
+    for (size_t t = 0; t < m.indices.size() / 3; ++t) {
+        const glm::vec3 p0 = m.vertices[m.indices[3 * t]].position, p1 = m.vertices[m.indices[3 * t + 1]].position,
+                        p2 = m.vertices[m.indices[3 * t + 2]].position;
+        const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+        // Outward: the face normal points away from the cube's centre.
+        EXPECT_GT(glm::dot(face, (p0 + p1 + p2) / 3.0f), 0.0f);
+        for (int c = 0; c < 3; ++c) {
+            const glm::vec3 n = m.vertices[m.indices[3 * t + c]].normal;
+            EXPECT_NEAR(glm::dot(n, face), 1.0f, 1e-6f) << "triangle " << t << " corner " << c;
+            distinct.insert({static_cast<int>(std::lround(n.x)), static_cast<int>(std::lround(n.y)),
+                             static_cast<int>(std::lround(n.z))});
+        }
+    }
+    EXPECT_EQ(distinct.size(), 6u);  // one normal per face of the cube
+}
+
+TEST(GltfFidelity, NonFiniteNormalsAreRepairedWithOneWarning) {
+    test::GltfBuilder b;
+    const int pos = b.vec3(kCubeCorners);
+    std::vector<float> normals;
+    for (size_t i = 0; i < kCubeCorners.size(); i += 3) {
+        const glm::vec3 n = glm::normalize(glm::vec3(kCubeCorners[i], kCubeCorners[i + 1], kCubeCorners[i + 2]));
+        normals.insert(normals.end(), {n.x, n.y, n.z});
+    }
+    normals[3 * 2 + 1] = std::numeric_limits<float>::quiet_NaN();
+    normals[3 * 5 + 0] = std::numeric_limits<float>::infinity();
+    const int nrm = b.vec3(normals);
+    const int idx = b.indices(kCubeTriangles);
+    Scene s;
+    importGltf(write("nan_normals.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s,
+               glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    for (const Vertex& v : s.meshes[0].vertices) {
+        ASSERT_TRUE(std::isfinite(v.normal.x) && std::isfinite(v.normal.y) && std::isfinite(v.normal.z));
+        EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
+        // Repaired from the faces around the corner: it points out of the cube like the rest.
+        EXPECT_GT(glm::dot(v.normal, v.position), 0.5f);
+        for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(v.tangent[c]));
+    }
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("accessor[1]"), std::string::npos) << s.warnings[0];
+    EXPECT_NE(s.warnings[0].find("has 2 non-finite"), std::string::npos) << s.warnings[0];
+}
+
+TEST(GltfFidelity, NonFiniteTangentsAreRegeneratedWithOneWarning) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const int nrm = b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int uv = b.accessor(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const int tan = b.accessor(std::vector<float>{1, 0, 0, 1, nan, 0, 0, 1, 1, 0, 0, 1}, 5126, "VEC4", 3);
+    Scene s;
+    importGltf(write("nan_tangents.gltf",
+                     b.finish({{"POSITION", pos}, {"NORMAL", nrm}, {"TEXCOORD_0", uv}, {"TANGENT", tan}}, -1))
+                   .string(),
+               s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("TANGENT (accessor[3]) has 1 non-finite"), std::string::npos) << s.warnings[0];
+    for (const Vertex& v : s.meshes[0].vertices) {
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-6f);  // dP/du of this triangle is +X
+        EXPECT_EQ(v.tangent.w, 1.0f);
+    }
+}
+
+TEST(GltfFidelity, AccessorsWithoutBufferViewAreZeros) {
+    // glTF 2.0 3.6.2.3: no bufferView means zeros. The validator's valid mesh
+    // file has such accessors for indices, which tinygltf 2.7 alone refuses.
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    json j = b.finish({{"POSITION", pos}}, 1);
+    j["accessors"].push_back({{"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}});
+    j["accessors"].push_back({{"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+    j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 2}}}, {"indices", 1}});
+    Scene s;
+    importGltf(write("no_buffer_view.gltf", j).string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 2u);
+    for (const Mesh& m : s.meshes) {
+        EXPECT_EQ(m.indices.size(), 6u);
+        for (const Vertex& v : m.vertices) EXPECT_TRUE(std::isfinite(v.normal.x));
+    }
+    for (const Vertex& v : s.meshes[1].vertices) EXPECT_EQ(v.position, glm::vec3(0.0f));
+}
+
+TEST(GltfFidelity, IgnoredFeaturesAreNamedInOneWarningAndUnsupportedRequiredExtensionsAreErrors) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    json j = b.finish({{"POSITION", pos}}, -1);
+    j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", pos}}});
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    j["materials"] = json::array({{{"alphaMode", "BLEND"}}});
+    j["nodes"].push_back(json::object());
+    j["skins"] = json::array({{{"joints", {1}}}});
+    j["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
+    Scene s;
+    importGltf(write("ignored.gltf", j).string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    const std::string& w = s.warnings[0];
+    for (const char* part : {"1 skin", "morph targets on 1 primitive", "BLEND on 1 material", "KHR_materials_clearcoat"})
+        EXPECT_NE(w.find(part), std::string::npos) << part << " missing from: " << w;
+    EXPECT_EQ(w.find("KHR_texture_transform"), std::string::npos) << w;  // supported
+
+    j["extensionsRequired"] = {"KHR_materials_clearcoat"};
+    try {
+        Scene s2;
+        importGltf(write("required.gltf", j).string(), s2, glm::mat4(1.0f), false);
+        ADD_FAILURE() << "an unsupported required extension must be an error";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("requires glTF extension KHR_materials_clearcoat"), std::string::npos);
+    }
+}
+
+TEST(GltfFidelity, VertexColoursSecondUvSetSamplersAndTextureTransformsAreImported) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const int color = b.accessor(std::vector<uint8_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0}, 5121, "VEC3", 3);
+    b.doc["accessors"][color]["normalized"] = true;
+    const int uv1 = b.accessor(std::vector<float>{0.5f, 0.25f, 1, 0, 0, 1}, 5126, "VEC2", 3);
+    json j = b.finish({{"POSITION", pos}, {"COLOR_0", color}, {"TEXCOORD_1", uv1}}, -1);
+    // Any image will do: the test is about how it is mapped.
+    FloatImage texel;
+    texel.width = texel.height = 1;
+    texel.channels = 4;
+    texel.pixels = {1.0f, 1.0f, 1.0f, 1.0f};
+    writeImage((test::tempDir() / "texel.png").string(), texel);
+    j["images"] = json::array({{{"uri", "texel.png"}}});
+    j["samplers"] = json::array({{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9986}}});
+    j["textures"] = json::array({{{"source", 0}, {"sampler", 0}}});
+    j["extensionsUsed"] = {"KHR_texture_transform"};
+    j["materials"] = json::array({{{"pbrMetallicRoughness",
+                                    {{"baseColorTexture",
+                                      {{"index", 0},
+                                       {"texCoord", 1},
+                                       {"extensions",
+                                        {{"KHR_texture_transform",
+                                          {{"offset", {0.5, 0.25}}, {"rotation", 1.5707963}, {"scale", {2, 3}}}}}}}}}},
+                                   {"occlusionTexture", {{"index", 0}, {"strength", 0.5}}}}});
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    Scene s;
+    importGltf(write("mapping.gltf", j).string(), s, glm::mat4(1.0f), false);
+    ASSERT_TRUE(s.warnings.empty()) << s.warnings[0];
+    const Mesh& m = s.meshes[0];
+    ASSERT_EQ(m.vertices.size(), 3u);
+    EXPECT_EQ(m.vertices[0].color, glm::vec4(1, 0, 0, 1));
+    EXPECT_EQ(m.vertices[2].color, glm::vec4(0, 0, 1, 1));
+    EXPECT_EQ(m.vertices[0].uv1, glm::vec2(0.5f, 0.25f));
+    const Material& mat = s.materials[static_cast<size_t>(m.material)];
+    const TextureMapping& base = mat.mapping[Material::BaseColorSlot];
+    EXPECT_EQ(base.texCoord, 1);
+    EXPECT_EQ(base.wrapS, 33071u);
+    EXPECT_EQ(base.wrapT, 33648u);
+    EXPECT_EQ(base.magFilter, 9728u);
+    EXPECT_EQ(base.minFilter, 9986u);
+    // uv (1, 0) -> scale (2, 0) -> rotate by 90 degrees (the extension's sense: (x, y) -> (y, -x))
+    // -> (0, -2) -> offset -> (0.5, -1.75).
+    const glm::vec3 uv(1.0f, 0.0f, 1.0f);
+    EXPECT_NEAR(glm::dot(base.row(0), uv), 0.5f, 1e-5f);
+    EXPECT_NEAR(glm::dot(base.row(1), uv), -1.75f, 1e-5f);
+    EXPECT_EQ(mat.occlusionTexture, mat.baseColorTexture);
+    EXPECT_FLOAT_EQ(mat.occlusionStrength, 0.5f);
+}
+
+// A strip of two quads whose UVs mirror at the shared edge x = 1 (u runs
+// 0..1 then back 1..0), as mirrored normal-mapped models are laid out.
+// `shareSeam`: the seam's two vertices are shared by both quads (as many
+// exporters write them) or duplicated (split seams).
+Mesh mirroredStrip(bool shareSeam) {
+    Mesh m;
+    auto vertex = [](float x, float y, float u, float v) {
+        Vertex out;
+        out.position = {x, y, 0.0f};
+        out.normal = {0.0f, 0.0f, 1.0f};
+        out.uv = {u, v};
+        return out;
+    };
+    m.vertices = {vertex(0, 0, 0, 0), vertex(1, 0, 1, 0), vertex(1, 1, 1, 1), vertex(0, 1, 0, 1),
+                  vertex(2, 0, 0, 0), vertex(2, 1, 0, 1)};
+    std::uint32_t seamBottom = 1, seamTop = 2;
+    if (!shareSeam) {
+        m.vertices.push_back(vertex(1, 0, 1, 0));
+        m.vertices.push_back(vertex(1, 1, 1, 1));
+        seamBottom = 6;
+        seamTop = 7;
+    }
+    m.indices = {0, 1, 2, 0, 2, 3, seamBottom, 4, 5, seamBottom, 5, seamTop};
+    return m;
+}
+
+TEST(GltfFidelity, MirroredUvSeamTangentsEqualSplitSeamsAndNeverAverageAcrossTheSeam) {
+    Mesh shared = mirroredStrip(true), split = mirroredStrip(false);
+    generateTangents(shared);
+    generateTangents(split);
+    ASSERT_EQ(shared.indices.size(), split.indices.size());
+    for (size_t c = 0; c < shared.indices.size(); ++c) {
+        const Vertex& a = shared.vertices[shared.indices[c]];
+        const Vertex& b = split.vertices[split.indices[c]];
+        EXPECT_EQ(a.position, b.position);
+        EXPECT_NEAR(glm::length(glm::vec3(a.tangent) - glm::vec3(b.tangent)), 0.0f, 1e-6f) << "corner " << c;
+        EXPECT_EQ(a.tangent.w, b.tangent.w) << "corner " << c;
+        // Left quad: dP/du = +X, right-handed; right (mirrored) quad: dP/du = -X, w = -1.
+        const bool right = c >= 6;
+        EXPECT_NEAR(a.tangent.x, right ? -1.0f : 1.0f, 1e-6f) << "corner " << c;
+        EXPECT_EQ(a.tangent.w, right ? -1.0f : 1.0f) << "corner " << c;
+    }
+}
+
+TEST(GltfFidelity, TangentsAreNotAveragedAcrossAUvDiscontinuity) {
+    // Two triangles sharing an edge in space; the second's UVs are rotated by
+    // 90 degrees (a UV island boundary): same positions and normals, other UVs.
+    Mesh m;
+    auto vertex = [](float x, float y, float u, float v) {
+        Vertex out;
+        out.position = {x, y, 0.0f};
+        out.normal = {0.0f, 0.0f, 1.0f};
+        out.uv = {u, v};
+        return out;
+    };
+    m.vertices = {vertex(0, 0, 0, 0), vertex(1, 0, 1, 0), vertex(0, 1, 0, 1),
+                  vertex(1, 0, 5, 4), vertex(1, 1, 6, 4), vertex(0, 1, 6, 5)};
+    m.indices = {0, 1, 2, 3, 4, 5};
+    generateTangents(m);
+    for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(m.vertices[m.indices[c]].tangent.x, 1.0f, 1e-6f);
+    // Second triangle: u grows along +Y.
+    for (size_t c = 3; c < 6; ++c) EXPECT_NEAR(m.vertices[m.indices[c]].tangent.y, 1.0f, 1e-6f);
+}
+
+namespace {
+
+// A 4x4 image of one RGBA colour, written by OpenImageIO (its WebP writer may
+// be lossy: the tests compare WebP colours with a margin).
+// The values are stored as given (straight alpha): OIIO's writers otherwise
+// take pixels as premultiplied and divide by alpha.
+void writeSolid(const fs::path& path, glm::vec4 rgba) {
+    std::vector<std::uint8_t> px;
+    for (int i = 0; i < 16; ++i)
+        for (int c = 0; c < 4; ++c) px.push_back(static_cast<std::uint8_t>(std::lround(rgba[c] * 255.0f)));
+    OIIO::ImageSpec spec(4, 4, 4, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec)) << path;
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    ASSERT_TRUE(out->close());
+}
+
+json texturedTriangle(test::GltfBuilder& b) {
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const int uv = b.accessor(std::vector<float>{0, 0, 1, 0, 0, 1}, 5126, "VEC2", 3);
+    json j = b.finish({{"POSITION", pos}, {"TEXCOORD_0", uv}}, -1);
+    j["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    return j;
+}
+
+}  // namespace
+
+// glTF images hold straight alpha; OIIO's default read premultiplies (PNG),
+// which darkened opaque materials where alpha < 1.
+TEST(GltfFidelity, TexturesKeepStraightAlpha) {
+    writeSolid(test::tempDir() / "translucent.png", {1.0f, 0.5f, 0.25f, 0.2f});
+    test::GltfBuilder b;
+    json j = texturedTriangle(b);
+    j["images"] = json::array({{{"uri", "translucent.png"}}});
+    j["textures"] = json::array({{{"source", 0}}});
+    Scene s;
+    importGltf(write("alpha.gltf", j).string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.images.size(), 1u);
+    const auto& px = s.images[0].rgba;
+    EXPECT_EQ(px[0], 255);
+    EXPECT_NEAR(px[1], 128, 1);
+    EXPECT_NEAR(px[2], 64, 1);
+    EXPECT_NEAR(px[3], 51, 1);
+}
+
+// EXT_texture_webp: the WebP image is decoded (OpenImageIO reads WebP) and
+// preferred over the texture's fallback source.
+TEST(GltfFidelity, WebpTexturesDecodeAndArePreferred) {
+    writeSolid(test::tempDir() / "fallback.png", {1.0f, 0.0f, 0.0f, 1.0f});
+    writeSolid(test::tempDir() / "green.webp", {0.0f, 1.0f, 0.0f, 1.0f});
+    test::GltfBuilder b;
+    json j = texturedTriangle(b);
+    j["images"] = json::array({{{"uri", "fallback.png"}}, {{"uri", "green.webp"}}});
+    j["textures"] = json::array({{{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}});
+    j["extensionsUsed"] = {"EXT_texture_webp"};
+    Scene s;
+    importGltf(write("webp.gltf", j).string(), s, glm::mat4(1.0f), false);
+    EXPECT_TRUE(s.warnings.empty());
+    const Material& m = s.materials[static_cast<size_t>(s.meshes[0].material)];
+    ASSERT_GE(m.baseColorTexture, 0);
+    const auto& px = s.images[static_cast<size_t>(m.baseColorTexture)].rgba;
+    EXPECT_LT(px[0], 40);
+    EXPECT_GT(px[1], 215);
+}
