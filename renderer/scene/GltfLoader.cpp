@@ -716,6 +716,10 @@ private:
             if (reversed > 0)
                 scene_.warnings.push_back(path_ + ": " + what + " has " + std::to_string(reversed) +
                                           " triangle(s) wound against their vertex normals; turned around");
+            const size_t corners = splitCornersFacingAway(out);
+            if (corners > 0)
+                scene_.warnings.push_back(path_ + ": " + what + " has " + std::to_string(corners) +
+                                          " triangle corner(s) whose normal points away from the triangle; given the face normal");
         } else {
             generateFlatNormals(out);
         }

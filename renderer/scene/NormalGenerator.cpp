@@ -47,14 +47,32 @@ std::size_t orientTrianglesToNormals(Mesh& mesh) {
         const glm::vec3 face = faceNormalTimesTwoArea(mesh, t);
         if (!(glm::dot(face, face) > 0.0f)) continue;
         ++counted;
-        bool allAgainst = true;
-        for (int c = 0; c < 3 && allAgainst; ++c)
-            allAgainst = glm::dot(face, mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]].normal) < 0.0f;
-        if (allAgainst) against.push_back(t);
+        glm::vec3 vertexNormals(0.0f);
+        for (int c = 0; c < 3; ++c) vertexNormals += mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]].normal;
+        if (glm::dot(face, vertexNormals) < 0.0f) against.push_back(t);
     }
     if (against.empty() || 2 * against.size() >= counted) return 0;
     for (size_t t : against) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
     return against.size();
+}
+
+std::size_t splitCornersFacingAway(Mesh& mesh) {
+    std::size_t split = 0;
+    const size_t triangles = mesh.indices.size() / 3;
+    for (size_t t = 0; t < triangles; ++t) {
+        const glm::vec3 face = faceNormalTimesTwoArea(mesh, t);
+        if (!(glm::dot(face, face) > 0.0f)) continue;
+        for (int c = 0; c < 3; ++c) {
+            std::uint32_t& index = mesh.indices[3 * t + static_cast<size_t>(c)];
+            if (glm::dot(face, mesh.vertices[index].normal) >= 0.0f) continue;
+            Vertex v = mesh.vertices[index];
+            v.normal = glm::normalize(face);
+            index = static_cast<std::uint32_t>(mesh.vertices.size());
+            mesh.vertices.push_back(v);
+            ++split;
+        }
+    }
+    return split;
 }
 
 std::size_t repairNormals(Mesh& mesh, const std::vector<bool>& repair) {

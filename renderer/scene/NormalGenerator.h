@@ -26,10 +26,17 @@ void generateFlatNormals(Mesh& mesh);
 std::size_t repairNormals(Mesh& mesh, const std::vector<bool>& repair);
 
 // Reverses the winding of every triangle whose face normal points against
-// all three of its vertex normals, as long as those are a minority of the
+// the sum of its three vertex normals, as long as those are a minority of the
 // mesh (fewer than half its non-degenerate triangles; a mesh wound against
 // its normals throughout is left as the author wrote it). Returns how many
 // triangles were reversed.
 std::size_t orientTrianglesToNormals(Mesh& mesh);
+
+// Gives every triangle corner whose normal points away from its triangle's
+// face normal (more than 90 degrees: a vertex normal averaged across a crease
+// that folds back, as in scanned meshes) the face normal instead, on a vertex
+// of its own. Otherwise such a triangle, facing the eye, shades as if it faced
+// away: isolated dark specks in gbuffer.normal. Returns how many corners.
+std::size_t splitCornersFacingAway(Mesh& mesh);
 
 }  // namespace dw

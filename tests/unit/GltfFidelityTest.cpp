@@ -342,3 +342,38 @@ TEST(GltfFidelity, WebpTexturesDecodeAndArePreferred) {
     EXPECT_LT(px[0], 40);
     EXPECT_GT(px[1], 215);
 }
+
+// A triangle facing +Z whose corner normals (as a scan's crease averaging
+// leaves them) point to -Z at one corner, and one wound against all three of
+// its normals: the corner gets the face normal, the triangle is turned around.
+TEST(GltfFidelity, CornersFacingAwayAndTrianglesWoundAgainstTheirNormalsAreRepaired) {
+    test::GltfBuilder b;
+    std::vector<float> positions, normals;
+    std::vector<uint16_t> indices;
+    // Ten triangles along X facing +Z with +Z normals, except: triangle 0's
+    // first corner normal is -Z, triangle 1 is wound clockwise (facing -Z).
+    for (int t = 0; t < 10; ++t) {
+        const float x = 2.0f * static_cast<float>(t);
+        positions.insert(positions.end(), {x, 0, 0, x + 1, 0, 0, x, 1, 0});
+        normals.insert(normals.end(), {0, 0, 1, 0, 0, 1, 0, 0, 1});
+        const auto base = static_cast<uint16_t>(3 * t);
+        if (t == 1) indices.insert(indices.end(), {base, static_cast<uint16_t>(base + 2), static_cast<uint16_t>(base + 1)});
+        else indices.insert(indices.end(), {base, static_cast<uint16_t>(base + 1), static_cast<uint16_t>(base + 2)});
+    }
+    normals[2] = -1.0f;
+    const int pos = b.vec3(positions), nrm = b.vec3(normals), idx = b.indices(indices);
+    Scene s;
+    importGltf(write("creases.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s, glm::mat4(1.0f),
+               false);
+    const Mesh& m = s.meshes[0];
+    for (size_t t = 0; t < m.indices.size() / 3; ++t) {
+        const glm::vec3 p0 = m.vertices[m.indices[3 * t]].position, p1 = m.vertices[m.indices[3 * t + 1]].position,
+                        p2 = m.vertices[m.indices[3 * t + 2]].position;
+        const glm::vec3 face = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+        EXPECT_NEAR(face.z, 1.0f, 1e-6f) << "triangle " << t << " faces the way its normals do";
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.vertices[m.indices[3 * t + c]].normal.z, 1.0f, 1e-6f);
+    }
+    ASSERT_EQ(s.warnings.size(), 2u);
+    EXPECT_NE(s.warnings[0].find("1 triangle(s) wound against"), std::string::npos) << s.warnings[0];
+    EXPECT_NE(s.warnings[1].find("1 triangle corner(s)"), std::string::npos) << s.warnings[1];
+}
