@@ -743,7 +743,7 @@ private:
                 haveTangents = true;
             }
         }
-        if (!haveTangents) generateTangents(out);
+        if (!haveTangents) generateTangents(out, UvConvention::GltfVDown);
         out.computeBounds();
         return true;
     }

@@ -44,7 +44,8 @@ glm::vec3 anyPerpendicular(const glm::vec3& n) {
 
 }  // namespace
 
-void generateTangents(Mesh& mesh) {
+void generateTangents(Mesh& mesh, UvConvention convention) {
+    const float handedness = convention == UvConvention::GltfVDown ? -1.0f : 1.0f;
     const size_t triangles = mesh.indices.size() / 3;
     // Per triangle: dP/du and the orientation (sign of the signed UV area; 0 when degenerate).
     std::vector<glm::vec3> faceTangent(triangles, glm::vec3(0.0f));
@@ -113,7 +114,7 @@ void generateTangents(Mesh& mesh) {
             const glm::vec3 sum = groupTangent[g];
             const float len = glm::length(sum);
             const glm::vec3 t = len > 1e-20f && std::isfinite(len) ? sum / len : anyPerpendicular(v.normal);
-            v.tangent = glm::vec4(t, groupSign[g] < 0 ? -1.0f : 1.0f);
+            v.tangent = glm::vec4(t, groupSign[g] < 0 ? -handedness : handedness);
             vertices.push_back(v);
         }
         indices[corner] = it->second;

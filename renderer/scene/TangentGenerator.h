@@ -10,7 +10,11 @@
 //    same UV orientation (the sign of the triangle's signed UV area), so a UV
 //    mirror seam or a UV discontinuity never blends, whether or not the file
 //    shares the vertex across it;
-//  - the bitangent sign (w) is that orientation: B = w * cross(N, T).
+//  - the bitangent sign (w) is that orientation: B = w * cross(N, T) points
+//    along +v (dP/dv) with UvConvention::VUp, or along -v with
+//    UvConvention::GltfVDown: glTF's UV origin is the image's top-left and a
+//    normal map's green channel points up the image, towards -v (glTF 2.0
+//    "Images", normalTexture), so its generated bitangents are -dP/dv.
 // Triangles with zero UV area take the frame of their group, or any tangent
 // perpendicular to the normal when the group has none.
 // Input: triangle-list `mesh` with normals and uv set. Output: the same
@@ -20,6 +24,9 @@ namespace dw {
 
 struct Mesh;
 
-void generateTangents(Mesh& mesh);
+enum class UvConvention { VUp, GltfVDown };
+
+// VUp: the built-in shapes' convention (shapes::, BuiltinScenes' normal maps).
+void generateTangents(Mesh& mesh, UvConvention convention = UvConvention::VUp);
 
 }  // namespace dw

@@ -155,3 +155,26 @@ TEST(GltfModels, DragonNormalsHaveNoIsolatedOutliers) {
     EXPECT_GT(pixels, 20000);
     EXPECT_LT(fraction, 1e-4);
 }
+
+// Generated tangents follow glTF's UV convention: in every pair of
+// NormalTangentTest (real bumps on the left, normal-mapped quads on the
+// right) the normal-mapped bump's view-space normals equal the geometry's,
+// sampled at the same offsets from each bump's centre.
+TEST(GltfModels, NormalTangentTestNormalMapsMatchTheGeometry) {
+    const fs::path file = model("NormalTangentTest");
+    REQUIRE_MODEL(file);
+    auto session = test::makeSession(400, 300);
+    session->loadScene(frontView("normal_tangent", file, {0.0f, 0.0f, 4.5f}).string());
+    session->render({{"gbuffer.view_normal"}});
+    const FloatImage n = session->readRaw("gbuffer.view_normal");
+    double worst = 0.0;
+    for (const glm::ivec2 pair : {glm::ivec2(111, 141), glm::ivec2(185, 214), glm::ivec2(258, 288)})
+        for (const int cy : {76, 113, 150, 186, 223})
+            for (const glm::ivec2 d : {glm::ivec2(-6, 0), glm::ivec2(6, 0), glm::ivec2(0, -6), glm::ivec2(0, 6),
+                                       glm::ivec2(-4, -4), glm::ivec2(4, 4)})
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::fabs(double(n.at(pair.x + d.x, cy + d.y, c)) -
+                                                      n.at(pair.y + d.x, cy + d.y, c)));
+    std::printf("largest normal component difference, geometry vs normal map: %.3f\n", worst);
+    EXPECT_LT(worst, 0.25);
+}

@@ -111,7 +111,8 @@ TEST(GltfFidelity, NonFiniteTangentsAreRegeneratedWithOneWarning) {
     EXPECT_NE(s.warnings[0].find("TANGENT (accessor[3]) has 1 non-finite"), std::string::npos) << s.warnings[0];
     for (const Vertex& v : s.meshes[0].vertices) {
         EXPECT_NEAR(v.tangent.x, 1.0f, 1e-6f);  // dP/du of this triangle is +X
-        EXPECT_EQ(v.tangent.w, 1.0f);
+        // v grows along +Y; glTF's normal-map green points to -v: B = -Y = w * cross(N, T), w = -1.
+        EXPECT_EQ(v.tangent.w, -1.0f);
     }
 }
 
@@ -253,6 +254,20 @@ TEST(GltfFidelity, MirroredUvSeamTangentsEqualSplitSeamsAndNeverAverageAcrossThe
         const bool right = c >= 6;
         EXPECT_NEAR(a.tangent.x, right ? -1.0f : 1.0f, 1e-6f) << "corner " << c;
         EXPECT_EQ(a.tangent.w, right ? -1.0f : 1.0f) << "corner " << c;
+    }
+}
+
+// glTF's UV convention (origin top-left, green up the image) turns the
+// bitangent around: every w is the opposite of the v-up convention's.
+TEST(GltfFidelity, GltfUvConventionFlipsTheBitangentSign) {
+    Mesh vUp = mirroredStrip(true), gltf = mirroredStrip(true);
+    generateTangents(vUp, UvConvention::VUp);
+    generateTangents(gltf, UvConvention::GltfVDown);
+    ASSERT_EQ(vUp.indices.size(), gltf.indices.size());
+    for (size_t c = 0; c < vUp.indices.size(); ++c) {
+        const glm::vec4 a = vUp.vertices[vUp.indices[c]].tangent, b = gltf.vertices[gltf.indices[c]].tangent;
+        EXPECT_EQ(glm::vec3(a), glm::vec3(b));
+        EXPECT_EQ(a.w, -b.w);
     }
 }
 
