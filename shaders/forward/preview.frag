@@ -17,7 +17,7 @@ out vec4 outColor;
 void main() {
     Material m = materials[uMaterial];
     vec4 base = m.baseColor * vColor;
-    if (m.textures.x != 0) base *= vUv;
+    if (m.textures.x != 0) base *= texture(uBaseColorMap, vUv);
     if (m.flags.y == ALPHA_MASK && base.a < m.params.w) discard;
     if (uWireframe != 0) {
         outColor = vec4(linearToSrgb(0.35 + 0.65 * base.rgb), 1.0);

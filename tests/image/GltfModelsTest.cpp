@@ -178,3 +178,20 @@ TEST(GltfModels, NormalTangentTestNormalMapsMatchTheGeometry) {
     std::printf("largest normal component difference, geometry vs normal map: %.3f\n", worst);
     EXPECT_LT(worst, 0.25);
 }
+
+// KHR_texture_transform: the top row's offset tests show the green, blue and
+// cyan "correct" images, never the yellow one shown when the offset is
+// ignored; the UV set of each slot comes through the same path.
+TEST(GltfModels, TextureTransformTestOffsetsApply) {
+    const fs::path file = model("TextureTransformTest");
+    REQUIRE_MODEL(file);
+    const FloatImage a = albedoOf(frontView("texture_transform", file, {0.0f, 0.0f, 4.5f}), 400, 300);
+    const Region topRow{40, 45, 360, 150};
+    auto yellow = [](float r, float g, float b) { return r > 0.4f && g > 0.4f && b < 0.15f; };
+    auto cyan = [](float r, float g, float b) { return g > 0.4f && b > 0.4f && r < 0.15f; };
+    const long long notApplied = countPixels(a, topRow, yellow);
+    const long long correct[3] = {countPixels(a, topRow, green), countPixels(a, topRow, blue), countPixels(a, topRow, cyan)};
+    std::printf("top row: yellow %lld; green %lld, blue %lld, cyan %lld\n", notApplied, correct[0], correct[1], correct[2]);
+    EXPECT_EQ(notApplied, 0);
+    for (long long c : correct) EXPECT_GT(c, 1000);
+}

@@ -135,6 +135,29 @@ TEST(GltfFidelity, AccessorsWithoutBufferViewAreZeros) {
     for (const Vertex& v : s.meshes[1].vertices) EXPECT_EQ(v.position, glm::vec3(0.0f));
 }
 
+// The same in a .glb: the loader rewrites the JSON chunk it hands tinygltf.
+TEST(GltfFidelity, AccessorsWithoutBufferViewLoadFromGlb) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    json j = b.finish({{"POSITION", pos}}, 1);
+    j["accessors"].push_back({{"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}});
+    std::string chunk = j.dump();
+    chunk.resize((chunk.size() + 3) & ~size_t(3), ' ');
+    std::string glb = "glTF";
+    auto u32 = [&](std::uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+    u32(2);
+    u32(static_cast<std::uint32_t>(20 + chunk.size()));
+    u32(static_cast<std::uint32_t>(chunk.size()));
+    u32(0x4E4F534Au);  // "JSON"
+    glb += chunk;
+    const fs::path p = test::tempDir() / "no_buffer_view.glb";
+    std::ofstream(p, std::ios::binary) << glb;
+    Scene s;
+    importGltf(p.string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].indices.size(), 3u);
+}
+
 TEST(GltfFidelity, IgnoredFeaturesAreNamedInOneWarningAndUnsupportedRequiredExtensionsAreErrors) {
     test::GltfBuilder b;
     const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
