@@ -1,5 +1,7 @@
 #include "app/GuiApp.h"
 
+#include <nlohmann/json.hpp>
+
 #include <epoxy/gl.h>
 // epoxy must come before GLFW so GLFW does not pull in the system GL header.
 #include <GLFW/glfw3.h>
@@ -11,12 +13,16 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "app/ScriptedInput.h"
 #include "renderer/Error.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/WorkbenchUi.h"
+
+#include <imgui_internal.h>
 
 namespace dw {
 
@@ -79,11 +85,13 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
 
 class ImGuiLayer {
 public:
-    ImGuiLayer(GLFWwindow* window, const std::string& iniPath) : ini_(iniPath) {
+    explicit ImGuiLayer(GLFWwindow* window) {
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = ini_.empty() ? nullptr : ini_.c_str();
+        // The layout is the project's own (layout.json): panels are placed
+        // every frame, so imgui.ini would hold nothing worth keeping.
+        io.IniFilename = nullptr;
         ImGui::StyleColorsDark();
         ImGuiStyle& style = ImGui::GetStyle();
         style.WindowRounding = 2.0f;
@@ -101,15 +109,65 @@ public:
     }
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
-
-private:
-    std::string ini_;
 };
 
 std::string configDir() {
     if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return std::string(x) + "/deferred-workbench";
     if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.config/deferred-workbench";
     return ".deferred-workbench";
+}
+
+std::string exportDirDefault() {
+    if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x) return std::string(x) + "/deferred-workbench/exports";
+    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.local/share/deferred-workbench/exports";
+    return fs::absolute("deferred-workbench-exports").string();
+}
+
+// layout.json: the splitter weights and which panels are open.
+void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(readWholeFile(path, "not found", "cannot read"));
+        if (!j.is_object()) throw std::runtime_error("expected an object");
+        if (j.contains("layout")) ui.layout().fromJson(j["layout"]);
+        if (j.contains("open") && j["open"].is_object())
+            for (auto it = j["open"].begin(); it != j["open"].end(); ++it)
+                if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, it.key()); f && it.value().is_boolean()) *f = it.value().get<bool>();
+        state.resetLayout = false;
+    } catch (const std::exception& e) {
+        state.log.error(path + ": saved layout not used (" + e.what() + "); the default layout is shown", 0.0);
+    }
+}
+
+void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state) {
+    nlohmann::json open = nlohmann::json::object();
+    for (const auto& name : ui.layout().panels())
+        if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, name)) open[name] = *f;
+    try {
+        writeFileAtomically(path, nlohmann::json{{"layout", ui.layout().toJson()}, {"open", open}}.dump(2) + "\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+    }
+}
+
+// --layout-out: where ImGui drew each panel (its own record, not ours), the
+// window size and the probe, for the tests to check.
+void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh) {
+    nlohmann::json panels = nlohmann::json::array();
+    for (const auto& d : ui.drawnPanels()) {
+        const ImGuiWindow* w = ImGui::FindWindowByName(d.name.c_str());
+        if (!w || !w->WasActive) continue;
+        panels.push_back({{"name", d.name}, {"x", w->Pos.x}, {"y", w->Pos.y}, {"w", w->Size.x}, {"h", w->Size.y}});
+    }
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const nlohmann::json j = {{"display", {display.x, display.y}},
+                              {"framebuffer", {fbw, fbh}},
+                              {"menu_bar_height", ImGui::GetFrameHeight()},
+                              {"panels", panels},
+                              {"probe", {{"pinned", state.probe.pinned}, {"pixel", {state.probe.pixel.x, state.probe.pixel.y}}}},
+                              {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}}};
+    writeFileAtomically(path, j.dump(2) + "\n");
 }
 
 // Everything the frame loop owns besides the UI: the session and the
@@ -217,20 +275,17 @@ int runGui(const GuiOptions& options, Scene scene) {
         throw Error("no display (DISPLAY is not set), so the workbench window cannot open; "
                     "use 'deferred-workbench render --scene S --out image.png' to render headless");
     const bool scripted = options.run.frames > 0;
+    const ScriptedInput script = options.events.empty() ? ScriptedInput() : ScriptedInput::load(options.events);
     Window window(options.run.width, options.run.height, !scripted);
     // A scripted run (tests, screenshots) neither reads nor writes the saved layout.
-    std::string ini;
-    if (!scripted) {
-        std::error_code ec;
-        fs::create_directories(configDir(), ec);
-        if (!ec) ini = configDir() + "/imgui.ini";
-    }
-    ImGuiLayer imgui(window.get(), ini);
+    const std::string layoutPath = scripted ? std::string() : configDir() + "/layout.json";
+    ImGuiLayer imgui(window.get());
     {
         RenderSession session;
         ui::UiState state;
         state.presetsDir = options.presetsDir.empty() ? configDir() + "/presets" : options.presetsDir;
         state.scenesDir = options.scenesDir;
+        state.exportDir = fs::absolute(options.exportDir.empty() ? exportDirDefault() : options.exportDir).string();
         // The same rules as render (RunConfig), and again for every scene opened later.
         state.run = options.run;
         session.setScene(std::move(scene), state.run);
@@ -243,6 +298,9 @@ int runGui(const GuiOptions& options, Scene scene) {
 
         Frame frame(session);
         ui::WorkbenchUi ui;
+        if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
+        std::optional<ImVec2> scriptMouse;
+        bool scriptLeft = false;
         const auto start = std::chrono::steady_clock::now();
         auto last = start;
         while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
@@ -250,24 +308,39 @@ int runGui(const GuiOptions& options, Scene scene) {
             const float dt = std::min(std::chrono::duration<float>(t0 - last).count(), 0.1f);
             last = t0;
             state.time = std::chrono::duration<double>(t0 - start).count();
+            const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
+            if (in.resize) glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
             glfwPollEvents();
             state.keyPresses.swap(pendingKeys());
             pendingKeys().clear();
+            for (int key : in.keys) state.keyPresses.emplace_back(key, 0);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            // Scripted input over what the backend read from the (idle) window.
+            if (in.mouseX && in.mouseY) scriptMouse = ImVec2(*in.mouseX, *in.mouseY);
+            if (in.leftDown) scriptLeft = *in.leftDown;
+            if (scriptMouse) {
+                ImGuiIO& io = ImGui::GetIO();
+                io.MousePos = *scriptMouse;
+                io.MouseDown[ImGuiMouseButton_Left] = scriptLeft;
+                io.MouseWheel += in.wheel;
+            }
             ImGui::NewFrame();
             try {
                 frame.render(state);
+                state.log.succeeded("render");
             } catch (const std::exception& e) {
-                state.log.error(std::string("frame failed: ") + e.what(), state.time);
+                state.log.error(std::string("frame failed: ") + e.what(), state.time, "render");
             }
+            state.cameraPosition = session.camera().position;
             ui.draw(state, session, dt);
 
             if (state.requestReloadShaders) {
                 state.requestReloadShaders = false;
                 const auto errors = session.shaders().reloadChanged();
-                if (errors.empty()) state.log.info("shaders reloaded", state.time);
-                for (const auto& e : errors) state.log.error("shader error (the last good program stays in use):\n" + e, state.time);
+                if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
+                for (const auto& e : errors)
+                    state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");
             }
 
             ImGui::Render();
@@ -282,23 +355,34 @@ int runGui(const GuiOptions& options, Scene scene) {
             const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.run.frames;
             if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
                 state.requestScreenshot = false;
-                const std::string path = lastFrame && !options.screenshot.empty()
-                                             ? options.screenshot
-                                             : "screenshot-" + std::to_string(state.frame) + ".png";
+                const bool scriptedShot = lastFrame && !options.screenshot.empty();
+                std::error_code ec;
+                if (!scriptedShot) fs::create_directories(state.exportDir, ec);
+                const std::string path = scriptedShot ? options.screenshot
+                                                      : state.exportDir + "/screenshot-" + std::to_string(state.frame) + ".png";
                 try {
                     writeImage(path, readWindowFramebuffer(fbw, fbh));
-                    state.log.info("wrote " + path, state.time);
+                    state.log.done("screenshot saved to " + fs::absolute(path).string(), state.time, "screenshot");
                     if (scripted) std::printf("wrote %s (%dx%d)\n", path.c_str(), fbw, fbh);
                 } catch (const std::exception& e) {
-                    state.log.error(e.what(), state.time);
+                    state.log.error(e.what(), state.time, "screenshot");
                     if (scripted) throw;
                 }
             }
             glfwSwapBuffers(window.get());
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
+            if (lastFrame && !options.layoutOut.empty()) {
+                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh);
+                std::printf("wrote %s\n", options.layoutOut.c_str());
+            }
             ++state.frame;
             if (lastFrame) break;
+        }
+        if (!layoutPath.empty()) {
+            std::error_code ec;
+            fs::create_directories(configDir(), ec);
+            saveLayout(layoutPath, ui, state);
         }
         if (!options.dumpKnobs.empty()) {
             session.writeKnobValues(options.dumpKnobs);

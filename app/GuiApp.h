@@ -20,6 +20,9 @@ struct GuiOptions {
     std::string scenesDir;      // example scenes offered in the Scene panel
     std::string screenshot;     // written after the last frame when frames > 0
     std::string dumpKnobs;      // knob values written here at exit (RenderSession::writeKnobValues)
+    std::string events;         // scripted input replayed frame by frame (ScriptedInput), with frames > 0
+    std::string layoutOut;      // with frames > 0: the panels' rectangles and the probe as JSON after the last frame
+    std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
 };
 
 // `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).

@@ -16,14 +16,23 @@ int runGuiCommand(int argc, char** argv) {
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
-                     "                          [--frames N [--screenshot out.png]] [--dump-knobs FILE]\n"
+                     "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
                      "  --presets    folder of preset files (default ~/.config/deferred-workbench/presets)\n"
                      "  --frames     quit after N frames (for scripts and tests)\n"
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
-                     "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n";
+                     "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
+                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key NAME', 'resize W H' (window pixels)\n"
+                     "  --layout-out with --frames: after the last frame, write each open panel's rectangle,\n"
+                     "               the window size and the probe as JSON\n"
+                     "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
+                     "  --export-dir where screenshots and timing CSVs go\n"
+                     "               (default ~/.local/share/deferred-workbench/exports)\n"
+                     "The panel layout and which panels are open are saved at exit in\n"
+                     "~/.config/deferred-workbench/layout.json (not in scripted runs).\n";
         return 0;
     }
     GuiOptions o;
@@ -35,9 +44,14 @@ int runGuiCommand(int argc, char** argv) {
     o.presetsDir = cl.value("--presets").value_or("");
     o.screenshot = cl.value("--screenshot").value_or("");
     o.dumpKnobs = cl.value("--dump-knobs").value_or("");
+    o.events = cl.value("--events").value_or("");
+    o.layoutOut = cl.value("--layout-out").value_or("");
+    o.exportDir = cl.value("--export-dir").value_or("");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");
+    if (!o.events.empty() && o.run.frames == 0) throw UsageError("--events needs --frames N");
+    if (!o.layoutOut.empty() && o.run.frames == 0) throw UsageError("--layout-out needs --frames N");
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;
 #endif

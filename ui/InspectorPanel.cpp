@@ -80,7 +80,7 @@ bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<
 }
 
 void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -171,7 +171,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
 }
 
 void SideViewPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }

@@ -29,7 +29,7 @@ Light newLight(LightType type, const Scene& scene, const Camera& cam, size_t ind
 }  // namespace
 
 void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }

@@ -25,7 +25,7 @@ void row(const char* label, const char* fmt, ...) {
 }  // namespace
 
 void ProbePanel::draw(const char* title, bool* open, UiState& state) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }

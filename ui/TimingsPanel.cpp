@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <unordered_map>
 #include <vector>
 
@@ -19,7 +20,7 @@ unsigned passColor(const std::string& name) {
 }
 
 void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -36,11 +37,16 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     ImGui::InputText("##csv", csvPath, sizeof(csvPath));
     ImGui::SameLine();
     if (ImGui::Button("export CSV")) {
+        // A bare name goes to the export folder, not wherever the app was started.
+        std::filesystem::path path(csvPath);
+        if (path.is_relative() && !state.exportDir.empty()) path = std::filesystem::path(state.exportDir) / path;
         try {
-            timer.writeCsv(csvPath);
-            state.log.info(std::string("wrote ") + csvPath, state.time);
+            std::error_code ec;
+            std::filesystem::create_directories(path.parent_path(), ec);
+            timer.writeCsv(path.string());
+            state.log.done("timings saved to " + std::filesystem::absolute(path).string(), state.time, "export timings");
         } catch (const std::exception& e) {
-            state.log.error(e.what(), state.time);
+            state.log.error(e.what(), state.time, "export timings");
         }
     }
 

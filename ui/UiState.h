@@ -29,8 +29,8 @@ struct PanelFlags {
     bool scene = true;
     bool timings = true;
     bool knobs = true;
-    bool presets = false;
-    bool messages = false;
+    bool presets = true;
+    bool messages = true;
     bool sideView = false;
     bool keys = false;
 };
@@ -39,20 +39,36 @@ struct Message {
     double time = 0.0;
     bool error = false;
     std::string text;
+    std::string action;  // what the user did ("open scene", "save preset", ...); may be empty
 };
 
+// Every message of the session, the error banner over the viewport, and a
+// short toast for things done that leave no other visible trace (a file
+// written). An error names its action; when that action later succeeds
+// (succeeded()), its banner goes away, so a failed scene load does not stay
+// over the scene that loaded after it.
 class MessageLog {
 public:
+    static constexpr double kToastSeconds = 4.0;
+
     void info(const std::string& text, double time);
-    void error(const std::string& text, double time);
+    void error(const std::string& text, double time, const std::string& action = {});
+    // info() that also shows as a toast.
+    void done(const std::string& text, double time, const std::string& action = {});
+    // `action` worked: an error banner it raised is cleared.
+    void succeeded(const std::string& action);
     const std::deque<Message>& all() const { return messages_; }
     // The newest error not yet dismissed, shown as a banner over the viewport.
     const Message* banner() const { return bannerIndex_ >= 0 ? &messages_[static_cast<size_t>(bannerIndex_)] : nullptr; }
     void dismissBanner() { bannerIndex_ = -1; }
+    // The newest toast, while it is younger than kToastSeconds at `now`.
+    const Message* toast(double now) const;
 
 private:
+    void push(Message m);
     std::deque<Message> messages_;
     long bannerIndex_ = -1;
+    long toastIndex_ = -1;
 };
 
 // A texture the renderer produced for the UI to show this frame.
@@ -98,6 +114,12 @@ struct UiState {
     // the defaults, its settings, this preset, then these --set values.
     RunConfig run;
     bool resetLayout = true;
+    // The preset loaded or saved last, and the knob values right after it,
+    // so the Presets panel can say "modified since".
+    std::string activePreset;
+    std::vector<double> activePresetKnobs;
+    // Where screenshots and timing CSVs go (absolute; created when first used).
+    std::string exportDir;
 
     // Filled by the app each frame for the panels to read.
     FrameReport report;
@@ -105,6 +127,7 @@ struct UiState {
     glm::ivec2 renderSize{0, 0};   // what the pipeline renders at
     glm::ivec2 wantedSize{0, 0};   // what the viewport panel has room for
     std::deque<float> cpuFrameMs;  // app frame time, newest last
+    glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;
     double time = 0.0;
 

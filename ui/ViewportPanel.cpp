@@ -32,7 +32,7 @@ void toggleAnimation(UiState& state, RenderSession& session) {
 
 void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-    const bool visible = ImGui::Begin(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    const bool visible = beginPanel(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!visible) {
         ImGui::End();
@@ -95,7 +95,6 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     Camera& cam = session.camera();
     if (active) {
         const ImVec2 d = io.MouseDelta;
-        dragDistance += std::fabs(d.x) + std::fabs(d.y);
         if (v.camera == CameraMode::Orbit) {
             if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
                 camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
@@ -104,8 +103,6 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
             camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
         }
-    } else {
-        dragDistance = 0.0f;
     }
     if (hovered && io.MouseWheel != 0.0f) {
         if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
@@ -123,7 +120,10 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
                 state.probe.uv = glm::vec2(u, w);
             }
             state.probe.hovering = true;
-            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && dragDistance < 3.0f) {
+            // ImGui tracks how far the mouse went while the button was down;
+            // an orbit (a drag past the drag threshold) must not pin the probe.
+            const float still = io.MouseDragThreshold * io.MouseDragThreshold;
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still) {
                 state.probe.pinned = true;
                 state.probe.pixel = px;
                 state.probe.uv = glm::vec2(u, w);

@@ -16,7 +16,10 @@
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ScenePanel.h"
+#include "ui/PanelLayout.h"
 #include "ui/WorkbenchUi.h"
+
+#include <nlohmann/json.hpp>
 
 using namespace dw;
 namespace fs = std::filesystem;
@@ -142,28 +145,151 @@ TEST(Gui, TheInspectorListsEveryBufferOfListBuffers) {
     EXPECT_EQ(listed, cli);
 }
 
-TEST(Gui, EveryPanelDrawsWithEveryPanelOpen) {
+namespace {
+
+// Where ImGui put every open panel: inside the window, below the menu bar, none overlapping.
+void expectPanelsTileTheWindow(const std::vector<std::pair<std::string, ui::PanelRect>>& panels, float w, float h,
+                               float top, const std::string& when) {
+    for (const auto& [name, r] : panels) {
+        EXPECT_GE(r.x, 0.0f) << name << " " << when;
+        EXPECT_GE(r.y, top) << name << " " << when;
+        EXPECT_LE(r.x + r.w, w) << name << " " << when;
+        EXPECT_LE(r.y + r.h, h) << name << " " << when;
+        EXPECT_GE(r.w, 100.0f) << name << " " << when;
+        EXPECT_GE(r.h, 60.0f) << name << " " << when;
+    }
+    for (size_t i = 0; i < panels.size(); ++i)
+        for (size_t j = i + 1; j < panels.size(); ++j) {
+            const ui::PanelRect &a = panels[i].second, &b = panels[j].second;
+            EXPECT_FALSE(a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h)
+                << panels[i].first << " overlaps " << panels[j].first << " " << when;
+        }
+}
+
+// The panels as the scripted mode reports them (--layout-out).
+struct LayoutReport {
+    float width = 0, height = 0, top = 0;
+    std::vector<std::pair<std::string, ui::PanelRect>> panels;
+    bool pinned = false;
+    glm::vec3 camera{0.0f};
+    const ui::PanelRect* find(const std::string& n) const {
+        for (const auto& [name, r] : panels)
+            if (name == n) return &r;
+        return nullptr;
+    }
+};
+
+LayoutReport readLayoutReport(const fs::path& p) {
+    std::ifstream in(p);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    LayoutReport r;
+    r.width = j["display"][0].get<float>();
+    r.height = j["display"][1].get<float>();
+    r.top = j["menu_bar_height"].get<float>();
+    for (const auto& e : j["panels"])
+        r.panels.push_back({e["name"].get<std::string>(), {e["x"].get<float>(), e["y"].get<float>(), e["w"].get<float>(), e["h"].get<float>()}});
+    r.pinned = j["probe"]["pinned"].get<bool>();
+    for (int i = 0; i < 3; ++i) r.camera[i] = j["camera"]["position"][i].get<float>();
+    return r;
+}
+
+// The workbench under Xvfb at `size`, replaying `events` (ScriptedInput).
+LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events) {
+    const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
+    const Result r = shell("xvfb-run -a -s '-screen 0 1700x1000x24' " + std::string(DW_WORKBENCH_BINARY) +
+                           " --scene spheres --set ssao.enabled=false --size " + size + " --frames " + std::to_string(frames) +
+                           " --events " + ev.string() + " --layout-out " + out.string());
+    EXPECT_EQ(r.code, 0) << r.out;
+    return r.code == 0 ? readLayoutReport(out) : LayoutReport{};
+}
+
+std::vector<std::pair<std::string, ui::PanelRect>> expectedLayout(const LayoutReport& r) {
+    std::set<std::string> open;
+    for (const auto& [n, rect] : r.panels) open.insert(n);
+    std::vector<std::pair<std::string, ui::PanelRect>> v;
+    for (const auto& p : ui::PanelLayout().arrange(r.width, r.height, r.top, [&](const std::string& n) { return open.count(n) > 0; }).panels)
+        v.push_back({p.panel, p.rect});
+    return v;
+}
+
+}  // namespace
+
+TEST(Gui, EveryPanelFitsTheWindowWithoutOverlapAt1024x640And1600x900) {
     auto session = test::makeSession(64, 36);
     session->loadScene("street");
-    HeadlessImGui imgui;
-    ui::UiState state;
-    state.panels = {true, true, true, true, true, true, true, true, true, true, true};
-    state.presetsDir = (test::tempDir() / "ui-presets").string();
-    state.selectedLight = 2;
-    ui::WorkbenchUi workbench;
-    for (int i = 0; i < 3; ++i) {
-        state.report = session->render();
-        state.renderSize = {64, 36};
-        state.probe.result = probePixel(session->pipeline(), 30, 20);
-        state.probe.pinned = true;
-        imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
-        ++state.frame;
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}, {1100.0f, 650.0f}}) {
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;
+        state.panels = {true, true, true, true, true, true, true, true, true, true, true};
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        state.selectedLight = 2;
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            state.renderSize = {64, 36};
+            state.probe.result = probePixel(session->pipeline(), 30, 20);
+            state.probe.pinned = true;
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        // ImGui's own record of where each panel went, not the layout's plan.
+        std::vector<std::pair<std::string, ui::PanelRect>> drawn;
+        for (const auto& d : workbench.drawnPanels()) {
+            ImGuiWindow* win = ImGui::FindWindowByName(d.name.c_str());
+            ASSERT_NE(win, nullptr) << d.name;
+            drawn.push_back({d.name, {win->Pos.x, win->Pos.y, win->Size.x, win->Size.y}});
+        }
+        EXPECT_EQ(drawn.size(), 11u);
+        expectPanelsTileTheWindow(drawn, w, h, ImGui::GetFrameHeight(), std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)));
     }
-    EXPECT_GT(ImGui::GetDrawData()->CmdListsCount, 8);
-    // The layout put the viewport where the screenshot test expects it.
-    ImGuiWindow* viewport = ImGui::FindWindowByName("Viewport");
-    ASSERT_NE(viewport, nullptr);
-    EXPECT_NEAR(viewport->Pos.x, 288.0f, 1.0f);
+}
+
+TEST(Gui, UnderXvfbTheLayoutFollowsAResizeDownAndBackAndADragOrbitsWithoutPinningTheProbe) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport small = runScripted("layout-1024", "1024x640", 3, "");
+    EXPECT_EQ(small.width, 1024.0f);
+    EXPECT_EQ(small.panels.size(), 9u);  // the default: all but the side view and the keys
+    expectPanelsTileTheWindow(small.panels, small.width, small.height, small.top, "1024x640");
+
+    // Start at 1600x900, orbit with a drag over the viewport, shrink the
+    // window, grow it back: the layout is the 1600x900 one again.
+    const LayoutReport start = runScripted("layout-1600", "1600x900", 3, "");
+    const LayoutReport back = runScripted("layout-back", "1600x900", 16,
+                                          "1 drag 700 300 820 330 3\n8 resize 1024 640\n11 resize 1600 900\n");
+    EXPECT_EQ(back.width, 1600.0f);
+    EXPECT_EQ(back.height, 900.0f);
+    expectPanelsTileTheWindow(back.panels, back.width, back.height, back.top, "after 1600 -> 1024 -> 1600");
+    const auto want = expectedLayout(back);
+    ASSERT_EQ(back.panels.size(), want.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+        const ui::PanelRect* got = back.find(want[i].first);
+        ASSERT_NE(got, nullptr) << want[i].first;
+        EXPECT_NEAR(got->x, want[i].second.x, 0.5f) << want[i].first;
+        EXPECT_NEAR(got->w, want[i].second.w, 0.5f) << want[i].first;
+        EXPECT_NEAR(got->h, want[i].second.h, 0.5f) << want[i].first;
+    }
+    EXPECT_FALSE(back.pinned) << "a drag to orbit pinned the probe";
+    EXPECT_GT(glm::length(back.camera - start.camera), 0.1f) << "the drag did not orbit the camera";
+}
+
+TEST(Gui, UnderXvfbAClickPinsTheProbeAndDraggingASplitterResizesBothNeighbours) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport before = runScripted("split-before", "1600x900", 2, "");
+    const ui::PanelRect* scene = before.find("Scene");
+    const ui::PanelRect* view = before.find("Viewport");
+    ASSERT_TRUE(scene && view);
+    // The gap between the left column and the viewport, dragged 100 px right; then a click in the viewport.
+    const float gapX = scene->x + scene->w + ui::PanelLayout::kGap * 0.5f;
+    const LayoutReport after = runScripted(
+        "split-after", "1600x900", 14,
+        "1 drag " + std::to_string(gapX) + " 400 " + std::to_string(gapX + 100) + " 400 3\n9 click 800 300\n");
+    expectPanelsTileTheWindow(after.panels, after.width, after.height, after.top, "after a splitter drag");
+    ASSERT_TRUE(after.find("Scene") && after.find("Viewport"));
+    EXPECT_NEAR(after.find("Scene")->w, scene->w + 100.0f, 2.0f);
+    EXPECT_NEAR(after.find("Viewport")->x, view->x + 100.0f, 2.0f);
+    EXPECT_NEAR(after.find("Viewport")->w, view->w - 100.0f, 2.0f);
+    EXPECT_TRUE(after.pinned) << "a click without a drag did not pin the probe";
 }
 
 TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
