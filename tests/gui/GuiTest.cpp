@@ -16,6 +16,7 @@
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ScenePanel.h"
+#include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
 #include "ui/WorkbenchUi.h"
 
@@ -391,4 +392,70 @@ TEST(Gui, OpeningAnotherSceneResetsTheKnobsAndKeepsStartUpPresetAndSet) {
     EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "bloom.intensity")), 0.6f);
     EXPECT_EQ(knob(*session, "ssao.samples"), 16.0);
     EXPECT_EQ(knob(*session, "fxaa.enabled"), 0.0);
+}
+
+// A failed action's banner goes away when that action later succeeds; files
+// written show a toast with their absolute path for a few seconds.
+TEST(Gui, AnErrorBannerClearsWhenItsActionSucceedsAndSavesShowAToast) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    state.time = 10.0;
+    EXPECT_FALSE(ui::openScene(state, *session, "/nowhere/scene.json"));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("/nowhere/scene.json"), std::string::npos);
+    // Another action's success leaves it.
+    state.presetsDir = (test::tempDir() / "toast-presets").string();
+    fs::create_directories(state.presetsDir);
+    const std::string path = state.presetsDir + "/toast.json";
+    ASSERT_TRUE(ui::savePreset(state, *session, path, "toast"));
+    ASSERT_NE(state.log.banner(), nullptr);
+    ASSERT_NE(state.log.toast(state.time + 1.0), nullptr);
+    EXPECT_NE(state.log.toast(state.time + 1.0)->text.find(fs::absolute(path).string()), std::string::npos);
+    EXPECT_EQ(state.log.toast(state.time + ui::MessageLog::kToastSeconds + 1.0), nullptr);
+    EXPECT_EQ(state.activePreset, "toast");
+    EXPECT_FALSE(ui::presetModified(state, *session));
+    session->knobs().setFromString("ssao.samples", "4");
+    EXPECT_TRUE(ui::presetModified(state, *session));
+    // Opening a scene that exists clears the scene error.
+    EXPECT_TRUE(ui::openScene(state, *session, "spheres"));
+    EXPECT_EQ(state.log.banner(), nullptr);
+}
+
+// The timings panel: a knob change is named and costed per pass from the
+// frames before and after it; a scene change starts the statistics over.
+TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("spheres");
+    HeadlessImGui imgui;
+    ui::UiState state;
+    state.renderSize = {64, 36};
+    ui::TimingsPanel panel;
+    bool open = true;
+    auto frame = [&] {
+        state.report = session->render();
+        session->pipeline().timer().collect(true);
+        imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    };
+    for (int i = 0; i < 6; ++i) frame();
+    EXPECT_FALSE(panel.cost.active());
+    session->knobs().setFromString("ssao.samples", "64");
+    for (int i = 0; i < 8; ++i) frame();
+    ASSERT_TRUE(panel.cost.active());
+    EXPECT_EQ(panel.cost.what(), "ssao.samples 16 -> 64");
+    const auto costs = panel.cost.costs(session->pipeline().timer());
+    const auto ssao = std::find_if(costs.begin(), costs.end(), [](const PassChangeCost& c) { return c.pass == "ssao"; });
+    ASSERT_NE(ssao, costs.end());
+    EXPECT_GE(ssao->beforeFrames, 4);
+    EXPECT_GE(ssao->afterFrames, 3);
+    EXPECT_GT(ssao->afterMs, 0.0);
+    // Another scene: the history and the change start over.
+    session->loadScene("default");
+    frame();
+    EXPECT_FALSE(panel.cost.active());
+    const PassTimer::Series* total = session->pipeline().timer().find(PassTimer::kFrameSeries);
+    EXPECT_TRUE(total == nullptr || total->samples.empty()) << "frames of the previous scene are still counted";
+    // Axis ticks: nice linear steps, decades on a log axis.
+    EXPECT_EQ(ui::axisTicks(0.0f, 47.0f, false, 5), (std::vector<float>{0, 10, 20, 30, 40}));
+    EXPECT_EQ(ui::axisTicks(0.05f, 300.0f, true, 6), (std::vector<float>{0.1f, 1.0f, 10.0f, 100.0f}));
 }
