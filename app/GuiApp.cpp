@@ -12,9 +12,13 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <tuple>
 
+#include "app/CommandLine.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
+#include "renderer/gl/Sampler.h"
+#include "renderer/io/ImageHistogram.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
@@ -166,7 +170,8 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"menu_bar_height", ImGui::GetFrameHeight()},
                               {"panels", panels},
                               {"probe", {{"pinned", state.probe.pinned}, {"pixel", {state.probe.pixel.x, state.probe.pixel.y}}}},
-                              {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}}};
+                              {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
+                              {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -178,7 +183,9 @@ public:
         sideView_.setup(session.shaders());
         forward_.setup(session.shaders());
         overlay_.setup(session.shaders());
+        nearest_ = gl::Sampler::create(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "workbench pixel zoom");
     }
+    const gl::Sampler& nearestSampler() const { return nearest_; }
 
     void render(ui::UiState& state) {
         Pipeline& pipeline = session_.pipeline();
@@ -214,7 +221,7 @@ public:
         // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
         const gl::Texture* base = nullptr;
         const gl::Texture* depth = nullptr;
-        state.viewportImage = {};
+        keepHistogram(state.viewportImage);
         if (!deferred) {
             const auto mode = state.viewport.mode == ui::DisplayMode::Textured ? ForwardPreview::Mode::Textured
                                                                               : ForwardPreview::Mode::Wireframe;
@@ -227,11 +234,16 @@ public:
             if (isDisplayReady(*o)) {
                 base = o->texture;
             } else {
-                BufferViewSettings s = state.viewport.settings;
+                BufferViewSettings s = state.viewport.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
                 base = &session_.bufferView().render(*o, s);
+                if (BufferView::resolveAutoRange(o->decl.kind, s)) {
+                    std::tie(state.viewportImage.autoLo, state.viewportImage.autoHi) = session_.bufferView().lastAutoRange();
+                    state.viewportImage.haveAutoRange = true;
+                }
             }
+            histogram(state.viewport, *o, state.viewportImage, state);
             depth = pipeline.outputs().find("gbuffer.depth")->texture;
         }
         if (base) {
@@ -241,18 +253,27 @@ public:
                 s.threshold = static_cast<float>(session_.knobs().value(*session_.knobs().find("lighting.threshold")));
                 base = &overlay_.compose(*base, depth, session_.scene(), pipeline.lastCamera(), s);
             }
-            state.viewportImage = {base->id(), base->width(), base->height(), {}};
+            state.viewportImage.texture = base->id();
+            state.viewportImage.width = base->width();
+            state.viewportImage.height = base->height();
         }
-        state.sideImage = {};
+        keepHistogram(state.sideImage);
         if (state.panels.sideView) {
             if (!sideWhy.empty()) {
                 state.sideImage.unavailable = sideWhy;
             } else if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) {
-                BufferViewSettings s = state.side.settings;
+                BufferViewSettings s = state.side.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
                 const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
-                state.sideImage = {t.id(), t.width(), t.height(), {}};
+                if (!isDisplayReady(*o) && BufferView::resolveAutoRange(o->decl.kind, s)) {
+                    std::tie(state.sideImage.autoLo, state.sideImage.autoHi) = sideView_.lastAutoRange();
+                    state.sideImage.haveAutoRange = true;
+                }
+                state.sideImage.texture = t.id();
+                state.sideImage.width = t.width();
+                state.sideImage.height = t.height();
+                histogram(state.side, *o, state.sideImage, state);
             }
         }
         if (state.probe.hovering || state.probe.pinned)
@@ -260,10 +281,36 @@ public:
     }
 
 private:
+    // A new frame's image, keeping the last histogram (it is recomputed only now and then).
+    static void keepHistogram(ui::ShownImage& img) {
+        ui::ShownImage next;
+        next.histogram = std::move(img.histogram);
+        next.histogramOf = std::move(img.histogramOf);
+        next.histogramFrame = img.histogramFrame;
+        img = std::move(next);
+    }
+    // The raw values of the shown output, binned, when the view asks for it:
+    // a read-back of the whole buffer, so at most every 10 frames for the
+    // same output.
+    void histogram(const ui::ImageView& view, const PublishedOutput& o, ui::ShownImage& img, const ui::UiState& state) {
+        if (!view.histogram) return;
+        const std::string key = o.decl.name + "/" + std::to_string(view.settingsOr().layer) + "/" +
+                                std::to_string(view.settingsOr().sample);
+        if (img.histogramOf == key && state.frame < img.histogramFrame + 10) return;
+        try {
+            img.histogram = computeHistogram(readOutputRaw(o, view.settingsOr().selection()), 128);
+        } catch (const std::exception&) {
+            img.histogram = {};  // outputs that cannot be read back as an image (tables) have none
+        }
+        img.histogramOf = key;
+        img.histogramFrame = state.frame;
+    }
+
     RenderSession& session_;
     BufferView sideView_;
     ForwardPreview forward_;
     ViewportOverlay overlay_;
+    gl::Sampler nearest_;
 };
 
 }  // namespace
@@ -297,10 +344,16 @@ int runGui(const GuiOptions& options, Scene scene) {
         state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
 
         Frame frame(session);
+        state.nearestSampler = &frame.nearestSampler();
+        if (!options.view.empty()) {
+            if (!session.pipeline().outputs().find(options.view))
+                throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
+            state.viewport.output = options.view;
+        }
         ui::WorkbenchUi ui;
         if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
         std::optional<ImVec2> scriptMouse;
-        bool scriptLeft = false;
+        bool scriptLeft = false, scriptCtrl = false;
         const auto start = std::chrono::steady_clock::now();
         auto last = start;
         while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
@@ -319,11 +372,13 @@ int runGui(const GuiOptions& options, Scene scene) {
             // Scripted input over what the backend read from the (idle) window.
             if (in.mouseX && in.mouseY) scriptMouse = ImVec2(*in.mouseX, *in.mouseY);
             if (in.leftDown) scriptLeft = *in.leftDown;
+            if (in.ctrl) scriptCtrl = *in.ctrl;
             if (scriptMouse) {
                 ImGuiIO& io = ImGui::GetIO();
                 io.MousePos = *scriptMouse;
                 io.MouseDown[ImGuiMouseButton_Left] = scriptLeft;
                 io.MouseWheel += in.wheel;
+                io.KeyCtrl = io.KeyCtrl || scriptCtrl;
             }
             ImGui::NewFrame();
             try {

@@ -23,6 +23,7 @@ struct GuiOptions {
     std::string events;         // scripted input replayed frame by frame (ScriptedInput), with frames > 0
     std::string layoutOut;      // with frames > 0: the panels' rectangles and the probe as JSON after the last frame
     std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
+    std::string view;           // the output the viewport shows at start ("final" when empty)
 };
 
 // `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).

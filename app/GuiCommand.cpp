@@ -17,7 +17,7 @@ int runGuiCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
                      "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
-                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
+                     "                          [--view OUTPUT] [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
@@ -25,10 +25,11 @@ int runGuiCommand(int argc, char** argv) {
                      "  --frames     quit after N frames (for scripts and tests)\n"
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
                      "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
-                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key NAME', 'resize W H' (window pixels)\n"
+                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key NAME', 'resize W H', 'ctrl down|up' (window pixels)\n"
                      "  --layout-out with --frames: after the last frame, write each open panel's rectangle,\n"
                      "               the window size and the probe as JSON\n"
                      "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
+                     "  --view NAME  the output the viewport shows at start (see list buffers)\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -47,6 +48,7 @@ int runGuiCommand(int argc, char** argv) {
     o.events = cl.value("--events").value_or("");
     o.layoutOut = cl.value("--layout-out").value_or("");
     o.exportDir = cl.value("--export-dir").value_or("");
+    o.view = cl.value("--view").value_or("");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");

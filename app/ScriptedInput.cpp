@@ -105,8 +105,12 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
             if (!(words >> w >> h) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw bad("resize takes a width and a height from 64 to 16384");
             in.resize = std::make_pair(w, h);
+        } else if (what == "ctrl") {
+            std::string state;
+            if (!(words >> state) || (state != "down" && state != "up")) throw bad("ctrl takes down or up");
+            in.ctrl = state == "down";
         } else {
-            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, resize)");
+            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, resize, ctrl)");
         }
         std::string extra;
         if (words >> extra) throw bad("unexpected '" + extra + "'");
@@ -126,6 +130,7 @@ ScriptedFrameInput ScriptedInput::at(int frame) const {
         out.wheel += e.input.wheel;
         out.keys.insert(out.keys.end(), e.input.keys.begin(), e.input.keys.end());
         if (e.input.resize) out.resize = e.input.resize;
+        if (e.input.ctrl) out.ctrl = e.input.ctrl;
     }
     return out;
 }

@@ -10,6 +10,7 @@
 //   <frame> wheel D               scroll D notches (positive: away from the user)
 //   <frame> key NAME              press a key: a-z, 0-9, F1-F12, Escape, Enter, Space
 //   <frame> resize W H            the window to W x H pixels
+//   <frame> ctrl down|up          hold or release Ctrl (zoom and pan in an image view)
 //
 // Frames count from 0, the first frame the window draws.
 #include <optional>
@@ -24,6 +25,7 @@ struct ScriptedFrameInput {
     float wheel = 0.0f;
     std::vector<int> keys;                // GLFW key codes pressed this frame
     std::optional<std::pair<int, int>> resize;
+    std::optional<bool> ctrl;             // Ctrl held from this frame on
 };
 
 class ScriptedInput {

@@ -1,5 +1,7 @@
 #include "ui/UiState.h"
 
+#include <algorithm>
+
 namespace dw::ui {
 
 namespace {
@@ -36,6 +38,29 @@ const Message* MessageLog::toast(double now) const {
     if (toastIndex_ < 0) return nullptr;
     const Message& m = messages_[static_cast<size_t>(toastIndex_)];
     return now - m.time <= kToastSeconds ? &m : nullptr;
+}
+
+}  // namespace dw::ui
+
+namespace dw::ui {
+
+ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSize, const ImageView& view) {
+    ImagePlacement p;
+    if (imageSize.x <= 0.0f || imageSize.y <= 0.0f) return p;
+    p.fitScale = std::min(boxSize.x / imageSize.x, boxSize.y / imageSize.y);
+    p.size = imageSize * p.fitScale * std::max(view.zoom, 1e-3f);
+    p.min = boxMin + boxSize * 0.5f - view.center * p.size;
+    return p;
+}
+
+void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before) {
+    const glm::vec2 uv = before.uvAt(screen);
+    const float zoom = std::clamp(view.zoom * factor, 0.05f, 256.0f);
+    // The point under the cursor stays: centre moves towards it by the zoom change.
+    const float k = before.size.x > 0.0f ? view.zoom / zoom : 1.0f;
+    view.center = uv + (view.center - uv) * k;
+    view.zoom = zoom;
+    if (zoom <= 1.0f) view.center = glm::vec2(0.5f);
 }
 
 }  // namespace dw::ui

@@ -5,16 +5,22 @@
 // renderer already owns.
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
 #include "renderer/inspect/BufferView.h"
+#include "renderer/io/ImageHistogram.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/RunConfig.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
+
+namespace dw::gl {
+class Sampler;
+}
 
 namespace dw::ui {
 
@@ -76,19 +82,55 @@ struct ShownImage {
     unsigned texture = 0;
     int width = 0, height = 0;
     std::string unavailable;  // why there is no image (e.g. the pass did not run)
+    // The raw values' histogram (when the view asked for one), and the
+    // output and frame it was taken from.
+    ImageHistogram histogram;
+    std::string histogramOf;
+    std::uint64_t histogramFrame = 0;
+    // The automatic range the view used (BufferView::lastAutoRange), per channel.
+    bool haveAutoRange = false;
+    glm::vec4 autoLo{0.0f}, autoHi{0.0f};
 };
 
-struct ViewportView {
-    std::string output = "final";
-    BufferViewSettings settings;
+// One image view (the viewport, the side view), as a texture viewer:
+// display settings remembered per output (R + heat map chosen for the
+// L-buffer does not paint the AO buffer red), zoom and pan, and whether the
+// histogram of the shown buffer is wanted.
+struct ImageView {
+    std::string output;
+    std::map<std::string, BufferViewSettings> settingsByOutput;
+    BufferViewSettings& settings() { return settingsByOutput[output]; }
+    BufferViewSettings settingsOr() const {
+        const auto it = settingsByOutput.find(output);
+        return it == settingsByOutput.end() ? BufferViewSettings{} : it->second;
+    }
+    float zoom = 1.0f;          // 1: the whole image fits the view; 2: twice as large; ...
+    float fitScale = 1.0f;      // screen pixels per image pixel at zoom 1 (set when drawn)
+    glm::vec2 center{0.5f};     // the image point at the view's centre (u right, v down, 0..1)
+    bool histogram = false;
+};
+
+// Where an image of `imageSize` pixels lies on screen when shown in a box at
+// `boxMin` of `boxSize` by `view`'s zoom and pan (it may reach past the box;
+// draw it clipped), and the reverse: the image's (u, v) at a screen point.
+struct ImagePlacement {
+    glm::vec2 min{0.0f}, size{0.0f};
+    float fitScale = 1.0f;  // screen pixels per image pixel at zoom 1
+    glm::vec2 uvAt(glm::vec2 screen) const { return (screen - min) / glm::max(size, glm::vec2(1e-6f)); }
+};
+ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSize, const ImageView& view);
+// Zooms by `factor` keeping the image point under `screen` where it is.
+void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before);
+
+struct ViewportView : ImageView {
+    ViewportView() { output = "final"; }
     DisplayMode mode = DisplayMode::Deferred;
     OverlaySettings overlay;
     CameraMode camera = CameraMode::Orbit;
 };
 
-struct SideView {
-    std::string output = "gbuffer.normal";
-    BufferViewSettings settings;
+struct SideView : ImageView {
+    SideView() { output = "gbuffer.normal"; }
 };
 
 struct ProbeState {
@@ -127,6 +169,9 @@ struct UiState {
     glm::ivec2 renderSize{0, 0};   // what the pipeline renders at
     glm::ivec2 wantedSize{0, 0};   // what the viewport panel has room for
     std::deque<float> cpuFrameMs;  // app frame time, newest last
+    // Nearest-neighbour sampling for images zoomed to pixel level (the app
+    // owns it; the panels bind it around their image draws).
+    const gl::Sampler* nearestSampler = nullptr;
     glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;
     double time = 0.0;

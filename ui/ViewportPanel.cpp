@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "renderer/scene/CameraController.h"
+#include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -67,6 +68,11 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SameLine();
     ImGui::TextDisabled("| %s camera | %dx%d", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
                         state.renderSize.y);
+    // The texture viewer's controls for what is shown, at the top of the view.
+    const PublishedOutput* shownOutput =
+        v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
+    imageViewControls(v, shownOutput, state.viewportImage);
+    imageViewLegend(v, shownOutput, state.viewportImage);
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     state.wantedSize = glm::ivec2(std::max(16, static_cast<int>(avail.x)), std::max(16, static_cast<int>(avail.y)));
@@ -76,24 +82,16 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     const bool hovered = ImGui::IsItemHovered();
     const bool active = ImGui::IsItemActive();
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ShownImage& img = state.viewportImage;
-    ImVec2 imgMin = origin, imgSize(0, 0);
-    if (img.texture && img.width > 0 && img.height > 0) {
-        // Fit, keeping the aspect ratio (the render size follows the panel a frame later).
-        const float scale = std::min(avail.x / img.width, avail.y / img.height);
-        imgSize = ImVec2(img.width * scale, img.height * scale);
-        imgMin = ImVec2(origin.x + (avail.x - imgSize.x) * 0.5f, origin.y + (avail.y - imgSize.y) * 0.5f);
-        dl->AddImage(textureId(img.texture), imgMin, ImVec2(imgMin.x + imgSize.x, imgMin.y + imgSize.y), ImVec2(0, 1), ImVec2(1, 0));
-    } else {
-        dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(30, 30, 34, 255));
-        const std::string why = img.unavailable.empty() ? "no image" : img.unavailable;
-        dl->AddText(ImVec2(origin.x + 12, origin.y + 12), IM_COL32(255, 140, 120, 255), why.c_str());
-    }
+    // The image fits the box, keeping its aspect ratio (the render size
+    // follows the panel a frame later), then zoomed and panned by the view.
+    const ImagePlacement placed = drawImageView(v, state.viewportImage, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
+                                                state.nearestSampler, hovered, active);
+    const ImVec2 imgMin(placed.min.x, placed.min.y), imgSize(placed.size.x, placed.size.y);
 
-    // Camera from the mouse.
+    // Camera from the mouse (Ctrl belongs to the image's zoom and pan).
     ImGuiIO& io = ImGui::GetIO();
     Camera& cam = session.camera();
-    if (active) {
+    if (active && !io.KeyCtrl) {
         const ImVec2 d = io.MouseDelta;
         if (v.camera == CameraMode::Orbit) {
             if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
@@ -104,7 +102,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
             camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
         }
     }
-    if (hovered && io.MouseWheel != 0.0f) {
+    if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
         if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
         else camera::fly(cam, glm::vec3(0, 0, io.MouseWheel * std::max(camera::distance(cam), 1.0f) * 0.1f));
     }
@@ -113,7 +111,9 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     state.probe.hovering = false;
     if (hovered && imgSize.x > 0 && state.renderSize.x > 0) {
         const float u = (io.MousePos.x - imgMin.x) / imgSize.x, w = (io.MousePos.y - imgMin.y) / imgSize.y;
-        if (u >= 0 && u < 1 && w >= 0 && w < 1) {
+        const bool inBox = io.MousePos.x >= origin.x && io.MousePos.y >= origin.y && io.MousePos.x < origin.x + avail.x &&
+                           io.MousePos.y < origin.y + avail.y;
+        if (inBox && u >= 0 && u < 1 && w >= 0 && w < 1) {
             const glm::ivec2 px(static_cast<int>(u * state.renderSize.x), static_cast<int>(w * state.renderSize.y));
             if (!state.probe.pinned) {
                 state.probe.pixel = px;

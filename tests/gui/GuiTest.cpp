@@ -173,6 +173,7 @@ struct LayoutReport {
     std::vector<std::pair<std::string, ui::PanelRect>> panels;
     bool pinned = false;
     glm::vec3 camera{0.0f};
+    float zoom = 1.0f;
     const ui::PanelRect* find(const std::string& n) const {
         for (const auto& [name, r] : panels)
             if (name == n) return &r;
@@ -191,6 +192,7 @@ LayoutReport readLayoutReport(const fs::path& p) {
         r.panels.push_back({e["name"].get<std::string>(), {e["x"].get<float>(), e["y"].get<float>(), e["w"].get<float>(), e["h"].get<float>()}});
     r.pinned = j["probe"]["pinned"].get<bool>();
     for (int i = 0; i < 3; ++i) r.camera[i] = j["camera"]["position"][i].get<float>();
+    r.zoom = j["viewport"]["zoom"].get<float>();
     return r;
 }
 
@@ -274,7 +276,7 @@ TEST(Gui, UnderXvfbTheLayoutFollowsAResizeDownAndBackAndADragOrbitsWithoutPinnin
     EXPECT_GT(glm::length(back.camera - start.camera), 0.1f) << "the drag did not orbit the camera";
 }
 
-TEST(Gui, UnderXvfbAClickPinsTheProbeAndDraggingASplitterResizesBothNeighbours) {
+TEST(Gui, UnderXvfbAClickPinsTheProbeASplitterDragResizesBothNeighboursAndCtrlWheelZoomsTheImage) {
     ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
     const LayoutReport before = runScripted("split-before", "1600x900", 2, "");
     const ui::PanelRect* scene = before.find("Scene");
@@ -283,14 +285,17 @@ TEST(Gui, UnderXvfbAClickPinsTheProbeAndDraggingASplitterResizesBothNeighbours) 
     // The gap between the left column and the viewport, dragged 100 px right; then a click in the viewport.
     const float gapX = scene->x + scene->w + ui::PanelLayout::kGap * 0.5f;
     const LayoutReport after = runScripted(
-        "split-after", "1600x900", 14,
-        "1 drag " + std::to_string(gapX) + " 400 " + std::to_string(gapX + 100) + " 400 3\n9 click 800 300\n");
+        "split-after", "1600x900", 16,
+        "1 drag " + std::to_string(gapX) + " 400 " + std::to_string(gapX + 100) + " 400 3\n9 click 800 300\n"
+        "11 ctrl down\n12 wheel 2\n13 ctrl up\n");
     expectPanelsTileTheWindow(after.panels, after.width, after.height, after.top, "after a splitter drag");
     ASSERT_TRUE(after.find("Scene") && after.find("Viewport"));
     EXPECT_NEAR(after.find("Scene")->w, scene->w + 100.0f, 2.0f);
     EXPECT_NEAR(after.find("Viewport")->x, view->x + 100.0f, 2.0f);
     EXPECT_NEAR(after.find("Viewport")->w, view->w - 100.0f, 2.0f);
     EXPECT_TRUE(after.pinned) << "a click without a drag did not pin the probe";
+    // Ctrl+wheel zooms the image (1.25 a notch), not the camera.
+    EXPECT_NEAR(after.zoom, 1.5625f, 1e-4f);
 }
 
 TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
