@@ -13,12 +13,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <tuple>
+#include <type_traits>
 
 #include "app/CommandLine.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/io/ImageHistogram.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
@@ -171,7 +173,11 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"panels", panels},
                               {"probe", {{"pinned", state.probe.pinned}, {"pixel", {state.probe.pixel.x, state.probe.pixel.y}}}},
                               {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
-                              {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}}};
+                              {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}},
+                              {"render_size", {state.renderSize.x, state.renderSize.y}},
+                              {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
+                              {"frames", state.frame + 1},
+                              {"frames_rendered", state.framesRendered}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -189,11 +195,102 @@ public:
 
     void render(ui::UiState& state) {
         Pipeline& pipeline = session_.pipeline();
-        if (state.wantedSize.x > 0 && state.wantedSize != state.renderSize) {
-            session_.resize(state.wantedSize.x, state.wantedSize.y);
-            state.renderSize = state.wantedSize;
+        // The render size: the viewport panel's, times the resolution scale.
+        if (state.wantedSize.x > 0) {
+            const float scale = state.viewport.scale();
+            const glm::ivec2 target(std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
+                                    std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale))));
+            if (target != state.renderSize) {
+                session_.resize(target.x, target.y);
+                state.renderSize = target;
+            }
         }
         state.animator.update(session_.mutableScene(), state.frame);
+        // Render only when something the images depend on changed, unless
+        // timings are being captured (every frame then).
+        const std::string signature = frameSignature(state);
+        const bool needed = state.timingCapture || state.animator.running() || signature != lastSignature_;
+        if (needed) {
+            lastSignature_ = signature;
+            renderImages(state);
+            ++state.framesRendered;
+            adjustAutoScale(state);
+        }
+        if (state.probe.hovering || state.probe.pinned) {
+            state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
+            probeLights(state);
+        }
+    }
+
+    // The lights whose volumes contain the probed surface point.
+    void probeLights(ui::UiState& state) {
+        ui::ProbeState& p = state.probe;
+        p.lights.clear();
+        p.lightLines.clear();
+        p.directionalLights = 0;
+        if (!p.result.inside || p.result.surface.background) return;
+        const Scene& scene = session_.scene();
+        const double threshold = session_.knobs().value(*session_.knobs().find("lighting.threshold"));
+        const glm::vec3 at = p.result.surface.worldPosition;
+        p.lights = lightsCovering(scene.lights, at, threshold);
+        for (const Light& l : scene.lights) p.directionalLights += l.enabled && l.type == LightType::Directional;
+        for (int i : p.lights) {
+            const Light& l = scene.lights[static_cast<size_t>(i)];
+            char line[200];
+            std::snprintf(line, sizeof(line), "#%d %s (%s), %.3g from it, volume radius %.3g", i, l.name.c_str(), toString(l.type),
+                          static_cast<double>(glm::distance(l.position, at)), computeLightVolume(l, threshold).radius);
+            p.lightLines.push_back(line);
+        }
+    }
+
+private:
+    // Everything a frame's images depend on that the window can change, as bytes.
+    std::string frameSignature(const ui::UiState& state) const {
+        std::string s;
+        auto put = [&s](const auto& v) {
+            static_assert(std::is_arithmetic_v<std::decay_t<decltype(v)>>);
+            s.append(reinterpret_cast<const char*>(&v), sizeof(v));
+        };
+        auto vec = [&](const glm::vec3& v) { put(v.x), put(v.y), put(v.z); };
+        auto text = [&](const std::string& t) { put(t.size()), s.append(t); };
+        auto view = [&](const BufferViewSettings& b) {
+            put(static_cast<int>(b.mapping)), put(static_cast<int>(b.channel)), put(b.autoRange), put(b.rangeMin), put(b.rangeMax);
+            put(b.exposure), put(b.layer), put(b.sample);
+        };
+        const Camera& c = session_.camera();
+        vec(c.position), vec(c.target), vec(c.up), put(c.fovYDegrees), put(c.nearPlane), put(c.farPlane);
+        put(session_.knobs().generation());
+        const Scene& scene = session_.scene();
+        put(reinterpret_cast<std::uintptr_t>(&scene)), text(scene.source), vec(scene.ambient), vec(scene.background);
+        for (const Light& l : scene.lights) {
+            put(static_cast<int>(l.type)), vec(l.position), vec(l.direction), put(l.cutoffDegrees), put(l.exponent);
+            vec(l.intensity), put(l.attenuation.constant), put(l.attenuation.linear), put(l.attenuation.quadratic);
+            put(l.castShadows), put(l.enabled);
+        }
+        text(state.viewport.output), put(static_cast<int>(state.viewport.mode)), view(state.viewport.settingsOr());
+        const OverlaySettings& o = state.viewport.overlay;
+        put(o.lightVolumes), put(static_cast<int>(state.viewport.volumes)), put(o.selectedLight), put(o.axes);
+        if (o.lightVolumes && state.viewport.volumes == ui::VolumeFilter::AtProbe)
+            for (int i : state.probe.lights) put(i);
+        put(state.panels.sideView), text(state.side.output), view(state.side.settingsOr());
+        put(state.renderSize.x), put(state.renderSize.y), put(state.shaderGeneration);
+        return s;
+    }
+
+    // Auto resolution: a step towards the frame-time target every few frames
+    // rendered, from the newest GPU frame times; frozen while timings are captured.
+    void adjustAutoScale(ui::UiState& state) {
+        ui::ViewportView& v = state.viewport;
+        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.framesRendered % 4 != 0) return;
+        const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);
+        if (!total || total->samples.size() < 2) return;
+        std::vector<float> newest;
+        for (auto it = total->samples.rbegin(); it != total->samples.rend() && newest.size() < 3; ++it) newest.push_back(it->gpuMs);
+        v.autoScale = ui::nextAutoScale(v.autoScale, computeStats(newest).median, v.frameTargetMs);
+    }
+
+    void renderImages(ui::UiState& state) {
+        Pipeline& pipeline = session_.pipeline();
 
         // The final image always; the viewed buffers when they can be produced.
         FrameRequest request;
@@ -216,7 +313,13 @@ public:
         if (deferred) tryAdd(state.viewport.output, viewportWhy);
         if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
         animateFlameParticles(session_.mutableScene(), pipeline.frameIndex());
-        state.report = pipeline.render(session_.camera(), request);
+        // The forward preview modes run no deferred pass at all.
+        if (deferred) {
+            state.report = pipeline.render(session_.camera(), request);
+        } else {
+            pipeline.bindCamera(session_.camera());
+            state.report = {};
+        }
 
         // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
         const gl::Texture* base = nullptr;
@@ -250,6 +353,9 @@ public:
             const OverlaySettings& ov = state.viewport.overlay;
             if (ov.lightVolumes || ov.axes) {
                 OverlaySettings s = ov;
+                s.onlySelected = state.viewport.volumes == ui::VolumeFilter::Selected;
+                s.onlySubset = state.viewport.volumes == ui::VolumeFilter::AtProbe;
+                s.subset = state.probe.lights;
                 s.threshold = static_cast<float>(session_.knobs().value(*session_.knobs().find("lighting.threshold")));
                 base = &overlay_.compose(*base, depth, session_.scene(), pipeline.lastCamera(), s);
             }
@@ -276,11 +382,8 @@ public:
                 histogram(state.side, *o, state.sideImage, state);
             }
         }
-        if (state.probe.hovering || state.probe.pinned)
-            state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
     }
 
-private:
     // A new frame's image, keeping the last histogram (it is recomputed only now and then).
     static void keepHistogram(ui::ShownImage& img) {
         ui::ShownImage next;
@@ -311,6 +414,7 @@ private:
     ForwardPreview forward_;
     ViewportOverlay overlay_;
     gl::Sampler nearest_;
+    std::string lastSignature_;
 };
 
 }  // namespace
@@ -350,6 +454,10 @@ int runGui(const GuiOptions& options, Scene scene) {
                 throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
             state.viewport.output = options.view;
         }
+        if (options.resolution == "1/2") state.viewport.resolution = ui::ResolutionScale::Half;
+        if (options.resolution == "1/4") state.viewport.resolution = ui::ResolutionScale::Quarter;
+        if (options.resolution == "auto") state.viewport.resolution = ui::ResolutionScale::Auto;
+        state.timingCapture = options.record;
         ui::WorkbenchUi ui;
         if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
         std::optional<ImVec2> scriptMouse;
@@ -393,6 +501,7 @@ int runGui(const GuiOptions& options, Scene scene) {
             if (state.requestReloadShaders) {
                 state.requestReloadShaders = false;
                 const auto errors = session.shaders().reloadChanged();
+                ++state.shaderGeneration;
                 if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
                 for (const auto& e : errors)
                     state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");

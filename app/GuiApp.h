@@ -24,6 +24,8 @@ struct GuiOptions {
     std::string layoutOut;      // with frames > 0: the panels' rectangles and the probe as JSON after the last frame
     std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
     std::string view;           // the output the viewport shows at start ("final" when empty)
+    std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
+    bool record = false;        // start with timing capture on (every frame rendered and timed)
 };
 
 // `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).

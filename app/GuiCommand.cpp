@@ -17,7 +17,8 @@ int runGuiCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
                      "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
-                     "                          [--view OUTPUT] [--dump-knobs FILE] [--export-dir DIR]\n"
+                     "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
@@ -30,6 +31,10 @@ int runGuiCommand(int argc, char** argv) {
                      "               the window size and the probe as JSON\n"
                      "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
                      "  --view NAME  the output the viewport shows at start (see list buffers)\n"
+                     "  --resolution full|1/2|1/4|auto  render resolution against the viewport panel\n"
+                     "               (auto: steps to keep the GPU frame under 100 ms)\n"
+                     "  --record     time every frame from the start (otherwise a frame is rendered only\n"
+                     "               when something it shows changed)\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -49,6 +54,10 @@ int runGuiCommand(int argc, char** argv) {
     o.layoutOut = cl.value("--layout-out").value_or("");
     o.exportDir = cl.value("--export-dir").value_or("");
     o.view = cl.value("--view").value_or("");
+    o.resolution = cl.value("--resolution").value_or("");
+    if (!o.resolution.empty() && o.resolution != "full" && o.resolution != "1/2" && o.resolution != "1/4" && o.resolution != "auto")
+        throw UsageError("--resolution takes full, 1/2, 1/4 or auto, not '" + o.resolution + "'");
+    o.record = cl.flag("--record");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");

@@ -82,6 +82,11 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     }
     watchForChanges(state, session);
     PassTimer& timer = session.pipeline().timer();
+    ImGui::Checkbox("record", &state.timingCapture);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("render every frame and time it (the resolution scale holds still);\n"
+                          "off: a frame is rendered only when something it shows changed");
+    ImGui::SameLine();
     bool paused = timer.paused();
     if (ImGui::Checkbox("pause", &paused)) timer.setPaused(paused);
     ImGui::SameLine();

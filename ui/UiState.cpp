@@ -53,6 +53,13 @@ ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSi
     return p;
 }
 
+float nextAutoScale(float scale, float frameMs, float targetMs) {
+    if (!(frameMs > 0.0f) || !(targetMs > 0.0f)) return scale;
+    if (frameMs > targetMs) scale *= 0.8f;
+    else if (frameMs < 0.5f * targetMs) scale *= 1.25f;
+    return std::clamp(scale, 0.125f, 1.0f);
+}
+
 void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before) {
     const glm::vec2 uv = before.uvAt(screen);
     const float zoom = std::clamp(view.zoom * factor, 0.05f, 256.0f);

@@ -122,12 +122,41 @@ ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSi
 // Zooms by `factor` keeping the image point under `screen` where it is.
 void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before);
 
+// The render resolution against the viewport panel's size, for slow GL
+// (llvmpipe): full, half, quarter, or automatic, which steps the scale to
+// hold a frame-time target.
+enum class ResolutionScale { Full, Half, Quarter, Auto };
+
+// Which light volumes the overlay draws: those at the probed pixel (the
+// default: what the pixel sees, readable in a scene of many lights), all, or
+// the light selected in the Lights panel.
+enum class VolumeFilter { AtProbe, All, Selected };
+
 struct ViewportView : ImageView {
     ViewportView() { output = "final"; }
     DisplayMode mode = DisplayMode::Deferred;
     OverlaySettings overlay;
+    VolumeFilter volumes = VolumeFilter::AtProbe;
     CameraMode camera = CameraMode::Orbit;
+    ResolutionScale resolution = ResolutionScale::Full;
+    float frameTargetMs = 100.0f;  // Auto: the GPU frame time to stay under
+    float autoScale = 1.0f;        // Auto: the scale it settled on (1/8 .. 1)
+    float scale() const {
+        switch (resolution) {
+            case ResolutionScale::Full: return 1.0f;
+            case ResolutionScale::Half: return 0.5f;
+            case ResolutionScale::Quarter: return 0.25f;
+            case ResolutionScale::Auto: return autoScale;
+        }
+        return 1.0f;
+    }
 };
+
+// The next automatic scale from the newest GPU frame times (ms): a step down
+// when over the target, a step up when well under it, else unchanged;
+// between 1/8 and 1. Steps are 0.8x and 1.25x, so it settles, not oscillates
+// (under half the target to step up, which 1.25^2 = 1.56x more pixels keeps under).
+float nextAutoScale(float scale, float frameMs, float targetMs);
 
 struct SideView : ImageView {
     SideView() { output = "gbuffer.normal"; }
@@ -140,6 +169,12 @@ struct ProbeState {
     ProbeResult result;
     // Where the pixel sits in the viewport image, for the magnifier.
     glm::vec2 uv{0.0f};
+    // The point and spot lights whose volumes contain the probed surface
+    // point (lightsCovering), one line each for the panel, and how many
+    // directional lights light it besides.
+    std::vector<int> lights;
+    std::vector<std::string> lightLines;
+    int directionalLights = 0;
 };
 
 struct UiState {
@@ -172,6 +207,12 @@ struct UiState {
     // Nearest-neighbour sampling for images zoomed to pixel level (the app
     // owns it; the panels bind it around their image draws).
     const gl::Sampler* nearestSampler = nullptr;
+    // Timing capture: render every frame (for the timings panel) and freeze
+    // the resolution scale. Off: a frame is rendered only when something it
+    // depends on changed (camera, knobs, scene, lights, view, size).
+    bool timingCapture = false;
+    std::uint64_t framesRendered = 0;  // frames the pipeline actually rendered
+    std::uint64_t shaderGeneration = 0;  // bumped by every shader reload (a reason to render again)
     glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;
     double time = 0.0;

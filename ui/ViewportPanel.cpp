@@ -59,15 +59,36 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SameLine();
     ImGui::Checkbox("volumes", &v.overlay.lightVolumes);
     ImGui::SameLine();
-    ImGui::Checkbox("selected only", &v.overlay.onlySelected);
+    const char* filters[] = {"at probe", "all", "selected"};
+    int filter = static_cast<int>(v.volumes);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+    if (ImGui::Combo("##volumes", &filter, filters, 3)) v.volumes = static_cast<VolumeFilter>(filter);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
+                          "every light's, or the one selected in the Lights panel");
     ImGui::SameLine();
     ImGui::Checkbox("axes", &v.overlay.axes);
     ImGui::SameLine();
     bool animate = state.animator.running();
     if (ImGui::Checkbox("animate lights", &animate)) toggleAnimation(state, session);
     ImGui::SameLine();
-    ImGui::TextDisabled("| %s camera | %dx%d", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
-                        state.renderSize.y);
+    ImGui::SameLine();
+    const char* scales[] = {"full", "1/2", "1/4", "auto"};
+    int scale = static_cast<int>(v.resolution);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
+    if (ImGui::Combo("##resolution", &scale, scales, 4)) v.resolution = static_cast<ResolutionScale>(scale);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
+                          "to keep the GPU frame under %.0f ms (frozen while timings are recorded)",
+                          static_cast<double>(v.frameTargetMs));
+    if (v.resolution == ResolutionScale::Auto) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("##target", &v.frameTargetMs, 5.0f, 10.0f, 5000.0f, "%.0f ms");
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
+                        state.renderSize.y, static_cast<double>(v.scale()), state.timingCapture ? " | recording" : "");
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;

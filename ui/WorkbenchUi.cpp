@@ -61,7 +61,9 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         if (ImGui::MenuItem("Wireframe (forward)", "w", v.mode == DisplayMode::Wireframe)) v.mode = DisplayMode::Wireframe;
         ImGui::Separator();
         ImGui::MenuItem("Light volumes", "v", &v.overlay.lightVolumes);
-        ImGui::MenuItem("Only the selected light", nullptr, &v.overlay.onlySelected);
+        if (ImGui::MenuItem("Volumes at the probed pixel", nullptr, v.volumes == VolumeFilter::AtProbe)) v.volumes = VolumeFilter::AtProbe;
+        if (ImGui::MenuItem("Every light's volume", nullptr, v.volumes == VolumeFilter::All)) v.volumes = VolumeFilter::All;
+        if (ImGui::MenuItem("Only the selected light", nullptr, v.volumes == VolumeFilter::Selected)) v.volumes = VolumeFilter::Selected;
         ImGui::MenuItem("World axes", "a", &v.overlay.axes);
         ImGui::Separator();
         if (ImGui::MenuItem("Orbit camera", "f", v.camera == CameraMode::Orbit)) v.camera = CameraMode::Orbit;

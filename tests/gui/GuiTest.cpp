@@ -174,6 +174,8 @@ struct LayoutReport {
     bool pinned = false;
     glm::vec3 camera{0.0f};
     float zoom = 1.0f;
+    glm::ivec2 renderSize{0}, wantedSize{0};
+    int frames = 0, framesRendered = 0;
     const ui::PanelRect* find(const std::string& n) const {
         for (const auto& [name, r] : panels)
             if (name == n) return &r;
@@ -193,15 +195,20 @@ LayoutReport readLayoutReport(const fs::path& p) {
     r.pinned = j["probe"]["pinned"].get<bool>();
     for (int i = 0; i < 3; ++i) r.camera[i] = j["camera"]["position"][i].get<float>();
     r.zoom = j["viewport"]["zoom"].get<float>();
+    r.renderSize = {j["render_size"][0].get<int>(), j["render_size"][1].get<int>()};
+    r.wantedSize = {j["wanted_size"][0].get<int>(), j["wanted_size"][1].get<int>()};
+    r.frames = j["frames"].get<int>();
+    r.framesRendered = j["frames_rendered"].get<int>();
     return r;
 }
 
 // The workbench under Xvfb at `size`, replaying `events` (ScriptedInput).
-LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events) {
+LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events,
+                         const std::string& extra = "") {
     const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
     const Result r = shell("xvfb-run -a -s '-screen 0 1700x1000x24' " + std::string(DW_WORKBENCH_BINARY) +
                            " --scene spheres --set ssao.enabled=false --size " + size + " --frames " + std::to_string(frames) +
-                           " --events " + ev.string() + " --layout-out " + out.string());
+                           " --events " + ev.string() + " --layout-out " + out.string() + " " + extra);
     EXPECT_EQ(r.code, 0) << r.out;
     return r.code == 0 ? readLayoutReport(out) : LayoutReport{};
 }
@@ -463,4 +470,27 @@ TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
     // Axis ticks: nice linear steps, decades on a log axis.
     EXPECT_EQ(ui::axisTicks(0.0f, 47.0f, false, 5), (std::vector<float>{0, 10, 20, 30, 40}));
     EXPECT_EQ(ui::axisTicks(0.05f, 300.0f, true, 6), (std::vector<float>{0.1f, 1.0f, 10.0f, 100.0f}));
+}
+
+// Interactive on a slow GL: an idle window renders no frames after the size
+// settles, recording renders every frame, a drag renders while it moves the
+// camera, and the resolution scale divides the panel's size.
+TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheScaleHalvesTheSize) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport idle = runScripted("idle", "1024x640", 24, "");
+    EXPECT_EQ(idle.frames, 24);
+    EXPECT_LE(idle.framesRendered, 4) << "an idle window kept rendering";
+    EXPECT_GE(idle.framesRendered, 1);
+    const LayoutReport moved = runScripted("moved", "1024x640", 24, "4 drag 500 250 600 260 6\n");
+    EXPECT_GE(moved.framesRendered, idle.framesRendered + 4) << "a drag that orbits the camera did not render";
+    const LayoutReport recording = runScripted("record", "1024x640", 12, "", "--record --resolution 1/2");
+    EXPECT_EQ(recording.framesRendered, 12);
+    EXPECT_NEAR(recording.renderSize.x, recording.wantedSize.x / 2.0, 1.0);
+    EXPECT_NEAR(recording.renderSize.y, recording.wantedSize.y / 2.0, 1.0);
+    // The automatic scale steps down over the target, up well under it, and stays between 1/8 and 1.
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 300.0f, 100.0f), 0.8f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 30.0f, 100.0f), 0.625f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 70.0f, 100.0f), 0.5f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.125f, 900.0f, 100.0f), 0.125f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 1.0f, 100.0f), 1.0f);
 }
