@@ -32,6 +32,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
             ImGui::TableNextColumn();
             const bool openNode = ImGui::TreeNodeEx(rec.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth,
                                                     "%s %s", rec.ran ? "+" : "-", rec.name.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", rec.name.c_str(), rec.ran ? "ran" : ("skipped: " + rec.reason).c_str());
             ImGui::TableNextColumn();
             if (rec.ran) ImGui::Text("%.3f", timer.gpuStats(rec.name, 60).median);
             else ImGui::TextDisabled("-");
@@ -51,7 +52,8 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                     state.viewport.output = o.decl.name;
                     state.viewport.mode = DisplayMode::Deferred;
                 }
-                if (ImGui::IsItemHovered() && !o.decl.description.empty()) ImGui::SetTooltip("%s", o.decl.description.c_str());
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s%s%s", o.decl.name.c_str(), o.decl.description.empty() ? "" : ": ", o.decl.description.c_str());
                 ImGui::Unindent(8.0f);
                 ImGui::TableNextColumn();
                 if (ImGui::SmallButton("side")) {

@@ -36,6 +36,12 @@ bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra) {
                             ImGuiWindowFlags_NoSavedSettings | extra);
 }
 
+void sameLineIfFits(float width) {
+    const float right = ImGui::GetWindowContentRegionMax().x + ImGui::GetWindowPos().x;
+    ImGui::SameLine();
+    if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+}
+
 void clippedText(const std::string& text, float width) {
     if (ImGui::CalcTextSize(text.c_str()).x <= width) {
         ImGui::TextUnformatted(text.c_str());

@@ -172,7 +172,11 @@ void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
         else if (n == "Presets") presets_.draw("Presets", open, state, session);
         else if (n == "Messages") messages_.draw("Messages", open, state);
         else if (n == "Keys") {
-            if (beginPanel("Keys", open)) ImGui::TextUnformatted(shortcutHelp());
+            if (beginPanel("Keys", open)) {
+                ImGui::PushTextWrapPos(0.0f);
+                ImGui::TextUnformatted(shortcutHelp());
+                ImGui::PopTextWrapPos();
+            }
             ImGui::End();
         }
         drawn_.push_back({n, r});
