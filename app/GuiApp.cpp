@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "app/CommandLine.h"
+#include "app/RenderDocCapture.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
 #include "renderer/gl/Sampler.h"
@@ -177,7 +178,8 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"render_size", {state.renderSize.x, state.renderSize.y}},
                               {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
                               {"frames", state.frame + 1},
-                              {"frames_rendered", state.framesRendered}};
+                              {"frames_rendered", state.framesRendered},
+                              {"renderdoc_captures", state.renderdocCaptures}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -209,7 +211,8 @@ public:
         // Render only when something the images depend on changed, unless
         // timings are being captured (every frame then).
         const std::string signature = frameSignature(state);
-        const bool needed = state.timingCapture || state.animator.running() || signature != lastSignature_;
+        const bool needed = state.timingCapture || state.animator.running() || state.forceRender || signature != lastSignature_;
+        state.forceRender = false;
         if (needed) {
             lastSignature_ = signature;
             renderImages(state);
@@ -458,6 +461,16 @@ int runGui(const GuiOptions& options, Scene scene) {
         if (options.resolution == "1/4") state.viewport.resolution = ui::ResolutionScale::Quarter;
         if (options.resolution == "auto") state.viewport.resolution = ui::ResolutionScale::Auto;
         state.timingCapture = options.record;
+        RenderDocCapture renderdoc = RenderDocCapture::attach(false);
+        state.renderdocAvailable = renderdoc.available();
+        state.renderdocWhy = renderdoc.why();
+        if (renderdoc.available()) {
+            std::error_code ec;
+            fs::create_directories(state.exportDir, ec);
+            renderdoc.setPathTemplate(state.exportDir + "/workbench");
+            state.log.info("RenderDoc: F11 or Render > Capture frame saves the next frame to " + state.exportDir, 0.0);
+        }
+        int capturesSeen = 0;
         ui::WorkbenchUi ui;
         if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
         std::optional<ImVec2> scriptMouse;
@@ -533,7 +546,22 @@ int runGui(const GuiOptions& options, Scene scene) {
                     if (scripted) throw;
                 }
             }
+            if (state.requestRenderDocCapture) {
+                state.requestRenderDocCapture = false;
+                if (renderdoc.available()) {
+                    renderdoc.triggerCapture();
+                    state.forceRender = true;  // the captured frame renders every pass, changed or not
+                }
+                else state.log.error("no RenderDoc capture: " + renderdoc.why(), state.time, "renderdoc");
+            }
             glfwSwapBuffers(window.get());
+            // RenderDoc writes a triggered capture at the swap.
+            if (renderdoc.available() && renderdoc.captureCount() > capturesSeen) {
+                capturesSeen = renderdoc.captureCount();
+                state.renderdocCaptures.push_back(renderdoc.lastCapturePath());
+                state.log.done("RenderDoc capture saved to " + state.renderdocCaptures.back(), state.time, "renderdoc");
+                if (scripted) std::printf("wrote %s (RenderDoc capture)\n", state.renderdocCaptures.back().c_str());
+            }
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             if (lastFrame && !options.layoutOut.empty()) {

@@ -26,6 +26,7 @@ struct GuiOptions {
     std::string view;           // the output the viewport shows at start ("final" when empty)
     std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
     bool record = false;        // start with timing capture on (every frame rendered and timed)
+    bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };
 
 // `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).

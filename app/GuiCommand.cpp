@@ -6,6 +6,7 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GuiApp.h"
+#include "app/RenderDocCapture.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -17,7 +18,7 @@ int runGuiCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
                      "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
-                     "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record]\n"
+                     "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
                      "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
@@ -35,6 +36,9 @@ int runGuiCommand(int argc, char** argv) {
                      "               (auto: steps to keep the GPU frame under 100 ms)\n"
                      "  --record     time every frame from the start (otherwise a frame is rendered only\n"
                      "               when something it shows changed)\n"
+                     "  --renderdoc  run under RenderDoc (starts again with librenderdoc.so preloaded,\n"
+                     "               Debian package librenderdoc): Render > Capture frame or F11 saves a\n"
+                     "               capture of the next frame to the export folder\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -58,6 +62,7 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.resolution.empty() && o.resolution != "full" && o.resolution != "1/2" && o.resolution != "1/4" && o.resolution != "auto")
         throw UsageError("--resolution takes full, 1/2, 1/4 or auto, not '" + o.resolution + "'");
     o.record = cl.flag("--record");
+    o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");
@@ -66,6 +71,10 @@ int runGuiCommand(int argc, char** argv) {
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;
 #endif
+    if (o.renderdoc) {
+        // RenderDoc has to hook GL from the start: this process starts again under it.
+        if (const std::string why = RenderDocCapture::relaunchUnderRenderDoc(argv); !why.empty()) throw Error("--renderdoc: " + why);
+    }
     // Bad input is reported before a window opens, as render reports it.
     o.run.validate();
     Scene scene = loadScene(o.run.sceneSpec());

@@ -224,6 +224,12 @@ struct UiState {
 
     // Requests the app carries out after the UI is drawn.
     bool requestScreenshot = false;
+    bool requestRenderDocCapture = false;
+    bool forceRender = false;  // render the next frame even if nothing changed (a capture of it)
+    // RenderDoc, as the app found it: whether captures can be taken, why not, and the captures taken.
+    bool renderdocAvailable = false;
+    std::string renderdocWhy;
+    std::vector<std::string> renderdocCaptures;
     bool requestReloadShaders = false;
     bool requestQuit = false;
     std::string requestTimingsCsv;

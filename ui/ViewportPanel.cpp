@@ -219,6 +219,7 @@ void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     if (pressed(GLFW_KEY_L)) toggleAnimation(state, session);
     if (pressed(GLFW_KEY_F5)) state.requestReloadShaders = true;
     if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
+    if (pressed(GLFW_KEY_F11)) state.requestRenderDocCapture = true;
     if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
     if (pressed(GLFW_KEY_Q, GLFW_MOD_CONTROL)) state.requestQuit = true;
 }
@@ -231,6 +232,7 @@ const char* shortcutHelp() {
            "a     world axes                 v  light-volume wireframes   l  animate lights\n"
            "click pin the pixel probe        Esc unpin\n"
            "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
+           "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"
            "F12   screenshot of the window to PNG\n"
            "Ctrl+Q quit";
 }

@@ -70,6 +70,10 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         if (ImGui::MenuItem("Fly camera", "f", v.camera == CameraMode::Fly)) v.camera = CameraMode::Fly;
         ImGui::Separator();
         if (ImGui::MenuItem("Reload changed shaders", "F5")) state.requestReloadShaders = true;
+        if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
+                                                             : state.renderdocWhy.c_str());
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
+#include <dlfcn.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -176,6 +177,7 @@ struct LayoutReport {
     float zoom = 1.0f;
     glm::ivec2 renderSize{0}, wantedSize{0};
     int frames = 0, framesRendered = 0;
+    std::vector<std::string> renderdocCaptures;
     const ui::PanelRect* find(const std::string& n) const {
         for (const auto& [name, r] : panels)
             if (name == n) return &r;
@@ -199,6 +201,7 @@ LayoutReport readLayoutReport(const fs::path& p) {
     r.wantedSize = {j["wanted_size"][0].get<int>(), j["wanted_size"][1].get<int>()};
     r.frames = j["frames"].get<int>();
     r.framesRendered = j["frames_rendered"].get<int>();
+    r.renderdocCaptures = j["renderdoc_captures"].get<std::vector<std::string>>();
     return r;
 }
 
@@ -493,4 +496,20 @@ TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheSca
     EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 70.0f, 100.0f), 0.5f);
     EXPECT_FLOAT_EQ(ui::nextAutoScale(0.125f, 900.0f, 100.0f), 0.125f);
     EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 1.0f, 100.0f), 1.0f);
+}
+
+// gui --renderdoc: F11 (or Render > Capture frame) writes a RenderDoc capture
+// of the next frame to the export folder, when librenderdoc is installed.
+TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    void* lib = dlopen("librenderdoc.so", RTLD_LAZY | RTLD_LOCAL);
+    if (!lib) GTEST_SKIP() << "librenderdoc.so is not installed (Debian package librenderdoc)";
+    dlclose(lib);
+    const fs::path dir = test::tempDir() / "renderdoc-gui";
+    fs::remove_all(dir);
+    const LayoutReport r = runScripted("renderdoc", "1024x640", 8, "2 key F11\n", "--renderdoc --export-dir " + dir.string());
+    ASSERT_EQ(r.renderdocCaptures.size(), 1u);
+    EXPECT_EQ(fs::path(r.renderdocCaptures[0]).parent_path(), dir);
+    ASSERT_TRUE(fs::exists(r.renderdocCaptures[0]));
+    EXPECT_GT(fs::file_size(r.renderdocCaptures[0]), 10000u);
 }
