@@ -1,5 +1,7 @@
 #include "app/GuiApp.h"
 
+#include <nlohmann/json.hpp>
+
 #include <epoxy/gl.h>
 // epoxy must come before GLFW so GLFW does not pull in the system GL header.
 #include <GLFW/glfw3.h>
@@ -10,13 +12,24 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <tuple>
+#include <type_traits>
 
+#include "app/CommandLine.h"
+#include "app/RenderDocCapture.h"
+#include "app/ScriptedInput.h"
 #include "renderer/Error.h"
+#include "renderer/gl/Sampler.h"
+#include "renderer/io/ImageHistogram.h"
+#include "renderer/lighting/LightVolume.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/WorkbenchUi.h"
+
+#include <imgui_internal.h>
 
 namespace dw {
 
@@ -79,11 +92,13 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
 
 class ImGuiLayer {
 public:
-    ImGuiLayer(GLFWwindow* window, const std::string& iniPath) : ini_(iniPath) {
+    explicit ImGuiLayer(GLFWwindow* window) {
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = ini_.empty() ? nullptr : ini_.c_str();
+        // The layout is the project's own (layout.json): panels are placed
+        // every frame, so imgui.ini would hold nothing worth keeping.
+        io.IniFilename = nullptr;
         ImGui::StyleColorsDark();
         ImGuiStyle& style = ImGui::GetStyle();
         style.WindowRounding = 2.0f;
@@ -101,15 +116,71 @@ public:
     }
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
-
-private:
-    std::string ini_;
 };
 
 std::string configDir() {
     if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) return std::string(x) + "/deferred-workbench";
     if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.config/deferred-workbench";
     return ".deferred-workbench";
+}
+
+std::string exportDirDefault() {
+    if (const char* x = std::getenv("XDG_DATA_HOME"); x && *x) return std::string(x) + "/deferred-workbench/exports";
+    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.local/share/deferred-workbench/exports";
+    return fs::absolute("deferred-workbench-exports").string();
+}
+
+// layout.json: the splitter weights and which panels are open.
+void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(readWholeFile(path, "not found", "cannot read"));
+        if (!j.is_object()) throw std::runtime_error("expected an object");
+        if (j.contains("layout")) ui.layout().fromJson(j["layout"]);
+        if (j.contains("open") && j["open"].is_object())
+            for (auto it = j["open"].begin(); it != j["open"].end(); ++it)
+                if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, it.key()); f && it.value().is_boolean()) *f = it.value().get<bool>();
+        state.resetLayout = false;
+    } catch (const std::exception& e) {
+        state.log.error(path + ": saved layout not used (" + e.what() + "); the default layout is shown", 0.0);
+    }
+}
+
+void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state) {
+    nlohmann::json open = nlohmann::json::object();
+    for (const auto& name : ui.layout().panels())
+        if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, name)) open[name] = *f;
+    try {
+        writeFileAtomically(path, nlohmann::json{{"layout", ui.layout().toJson()}, {"open", open}}.dump(2) + "\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+    }
+}
+
+// --layout-out: where ImGui drew each panel (its own record, not ours), the
+// window size and the probe, for the tests to check.
+void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh) {
+    nlohmann::json panels = nlohmann::json::array();
+    for (const auto& d : ui.drawnPanels()) {
+        const ImGuiWindow* w = ImGui::FindWindowByName(d.name.c_str());
+        if (!w || !w->WasActive) continue;
+        panels.push_back({{"name", d.name}, {"x", w->Pos.x}, {"y", w->Pos.y}, {"w", w->Size.x}, {"h", w->Size.y}});
+    }
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const nlohmann::json j = {{"display", {display.x, display.y}},
+                              {"framebuffer", {fbw, fbh}},
+                              {"menu_bar_height", ImGui::GetFrameHeight()},
+                              {"panels", panels},
+                              {"probe", {{"pinned", state.probe.pinned}, {"pixel", {state.probe.pixel.x, state.probe.pixel.y}}}},
+                              {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
+                              {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}},
+                              {"render_size", {state.renderSize.x, state.renderSize.y}},
+                              {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
+                              {"frames", state.frame + 1},
+                              {"frames_rendered", state.framesRendered},
+                              {"renderdoc_captures", state.renderdocCaptures}};
+    writeFileAtomically(path, j.dump(2) + "\n");
 }
 
 // Everything the frame loop owns besides the UI: the session and the
@@ -120,15 +191,109 @@ public:
         sideView_.setup(session.shaders());
         forward_.setup(session.shaders());
         overlay_.setup(session.shaders());
+        nearest_ = gl::Sampler::create(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "workbench pixel zoom");
     }
+    const gl::Sampler& nearestSampler() const { return nearest_; }
 
     void render(ui::UiState& state) {
         Pipeline& pipeline = session_.pipeline();
-        if (state.wantedSize.x > 0 && state.wantedSize != state.renderSize) {
-            session_.resize(state.wantedSize.x, state.wantedSize.y);
-            state.renderSize = state.wantedSize;
+        // The render size: the viewport panel's, times the resolution scale.
+        if (state.wantedSize.x > 0) {
+            const float scale = state.viewport.scale();
+            const glm::ivec2 target(std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
+                                    std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale))));
+            if (target != state.renderSize) {
+                session_.resize(target.x, target.y);
+                state.renderSize = target;
+            }
         }
         state.animator.update(session_.mutableScene(), state.frame);
+        // Render only when something the images depend on changed, unless
+        // timings are being captured (every frame then).
+        const std::string signature = frameSignature(state);
+        const bool needed = state.timingCapture || state.animator.running() || state.forceRender || signature != lastSignature_;
+        state.forceRender = false;
+        if (needed) {
+            lastSignature_ = signature;
+            renderImages(state);
+            ++state.framesRendered;
+            adjustAutoScale(state);
+        }
+        if (state.probe.hovering || state.probe.pinned) {
+            state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
+            probeLights(state);
+        }
+    }
+
+    // The lights whose volumes contain the probed surface point.
+    void probeLights(ui::UiState& state) {
+        ui::ProbeState& p = state.probe;
+        p.lights.clear();
+        p.lightLines.clear();
+        p.directionalLights = 0;
+        if (!p.result.inside || p.result.surface.background) return;
+        const Scene& scene = session_.scene();
+        const double threshold = session_.knobs().value(*session_.knobs().find("lighting.threshold"));
+        const glm::vec3 at = p.result.surface.worldPosition;
+        p.lights = lightsCovering(scene.lights, at, threshold);
+        for (const Light& l : scene.lights) p.directionalLights += l.enabled && l.type == LightType::Directional;
+        for (int i : p.lights) {
+            const Light& l = scene.lights[static_cast<size_t>(i)];
+            char line[200];
+            std::snprintf(line, sizeof(line), "#%d %s (%s), %.3g from it, volume radius %.3g", i, l.name.c_str(), toString(l.type),
+                          static_cast<double>(glm::distance(l.position, at)), computeLightVolume(l, threshold).radius);
+            p.lightLines.push_back(line);
+        }
+    }
+
+private:
+    // Everything a frame's images depend on that the window can change, as bytes.
+    std::string frameSignature(const ui::UiState& state) const {
+        std::string s;
+        auto put = [&s](const auto& v) {
+            static_assert(std::is_arithmetic_v<std::decay_t<decltype(v)>>);
+            s.append(reinterpret_cast<const char*>(&v), sizeof(v));
+        };
+        auto vec = [&](const glm::vec3& v) { put(v.x), put(v.y), put(v.z); };
+        auto text = [&](const std::string& t) { put(t.size()), s.append(t); };
+        auto view = [&](const BufferViewSettings& b) {
+            put(static_cast<int>(b.mapping)), put(static_cast<int>(b.channel)), put(b.autoRange), put(b.rangeMin), put(b.rangeMax);
+            put(b.exposure), put(b.layer), put(b.sample);
+        };
+        const Camera& c = session_.camera();
+        vec(c.position), vec(c.target), vec(c.up), put(c.fovYDegrees), put(c.nearPlane), put(c.farPlane);
+        put(session_.knobs().generation());
+        const Scene& scene = session_.scene();
+        put(reinterpret_cast<std::uintptr_t>(&scene)), text(scene.source), vec(scene.ambient), vec(scene.background);
+        for (const Light& l : scene.lights) {
+            put(static_cast<int>(l.type)), vec(l.position), vec(l.direction), put(l.cutoffDegrees), put(l.exponent);
+            vec(l.intensity), put(l.attenuation.constant), put(l.attenuation.linear), put(l.attenuation.quadratic);
+            put(l.castShadows), put(l.enabled);
+        }
+        text(state.viewport.output), put(static_cast<int>(state.viewport.mode)), view(state.viewport.settingsOr());
+        const OverlaySettings& o = state.viewport.overlay;
+        put(o.lightVolumes), put(static_cast<int>(state.viewport.volumes)), put(o.selectedLight), put(o.axes);
+        if (o.lightVolumes && state.viewport.volumes == ui::VolumeFilter::AtProbe)
+            for (int i : state.probe.lights) put(i);
+        put(state.panels.sideView), text(state.side.output), view(state.side.settingsOr());
+        put(state.renderSize.x), put(state.renderSize.y), put(state.shaderGeneration);
+        return s;
+    }
+
+    // Auto resolution: a step towards the frame-time target every few frames
+    // rendered, from the newest GPU frame times; frozen while timings are captured.
+    void adjustAutoScale(ui::UiState& state) {
+        ui::ViewportView& v = state.viewport;
+        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.framesRendered % 4 != 0) return;
+        const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);
+        if (!total || total->samples.size() < 2) return;
+        std::vector<float> newest;
+        for (auto it = total->samples.rbegin(); it != total->samples.rend() && newest.size() < 3; ++it) newest.push_back(it->gpuMs);
+        v.autoScale = ui::nextAutoScale(v.autoScale, computeStats(newest).median, v.frameTargetMs);
+    }
+
+    void renderImages(ui::UiState& state) {
+        Pipeline& pipeline = session_.pipeline();
 
         // The final image always; the viewed buffers when they can be produced.
         FrameRequest request;
@@ -151,12 +316,18 @@ public:
         if (deferred) tryAdd(state.viewport.output, viewportWhy);
         if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
         animateFlameParticles(session_.mutableScene(), pipeline.frameIndex());
-        state.report = pipeline.render(session_.camera(), request);
+        // The forward preview modes run no deferred pass at all.
+        if (deferred) {
+            state.report = pipeline.render(session_.camera(), request);
+        } else {
+            pipeline.bindCamera(session_.camera());
+            state.report = {};
+        }
 
         // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
         const gl::Texture* base = nullptr;
         const gl::Texture* depth = nullptr;
-        state.viewportImage = {};
+        keepHistogram(state.viewportImage);
         if (!deferred) {
             const auto mode = state.viewport.mode == ui::DisplayMode::Textured ? ForwardPreview::Mode::Textured
                                                                               : ForwardPreview::Mode::Wireframe;
@@ -169,43 +340,84 @@ public:
             if (isDisplayReady(*o)) {
                 base = o->texture;
             } else {
-                BufferViewSettings s = state.viewport.settings;
+                BufferViewSettings s = state.viewport.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
                 base = &session_.bufferView().render(*o, s);
+                if (BufferView::resolveAutoRange(o->decl.kind, s)) {
+                    std::tie(state.viewportImage.autoLo, state.viewportImage.autoHi) = session_.bufferView().lastAutoRange();
+                    state.viewportImage.haveAutoRange = true;
+                }
             }
+            histogram(state.viewport, *o, state.viewportImage, state);
             depth = pipeline.outputs().find("gbuffer.depth")->texture;
         }
         if (base) {
             const OverlaySettings& ov = state.viewport.overlay;
             if (ov.lightVolumes || ov.axes) {
                 OverlaySettings s = ov;
+                s.onlySelected = state.viewport.volumes == ui::VolumeFilter::Selected;
+                s.onlySubset = state.viewport.volumes == ui::VolumeFilter::AtProbe;
+                s.subset = state.probe.lights;
                 s.threshold = static_cast<float>(session_.knobs().value(*session_.knobs().find("lighting.threshold")));
                 base = &overlay_.compose(*base, depth, session_.scene(), pipeline.lastCamera(), s);
             }
-            state.viewportImage = {base->id(), base->width(), base->height(), {}};
+            state.viewportImage.texture = base->id();
+            state.viewportImage.width = base->width();
+            state.viewportImage.height = base->height();
         }
-        state.sideImage = {};
+        keepHistogram(state.sideImage);
         if (state.panels.sideView) {
             if (!sideWhy.empty()) {
                 state.sideImage.unavailable = sideWhy;
             } else if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) {
-                BufferViewSettings s = state.side.settings;
+                BufferViewSettings s = state.side.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
                 const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
-                state.sideImage = {t.id(), t.width(), t.height(), {}};
+                if (!isDisplayReady(*o) && BufferView::resolveAutoRange(o->decl.kind, s)) {
+                    std::tie(state.sideImage.autoLo, state.sideImage.autoHi) = sideView_.lastAutoRange();
+                    state.sideImage.haveAutoRange = true;
+                }
+                state.sideImage.texture = t.id();
+                state.sideImage.width = t.width();
+                state.sideImage.height = t.height();
+                histogram(state.side, *o, state.sideImage, state);
             }
         }
-        if (state.probe.hovering || state.probe.pinned)
-            state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
     }
 
-private:
+    // A new frame's image, keeping the last histogram (it is recomputed only now and then).
+    static void keepHistogram(ui::ShownImage& img) {
+        ui::ShownImage next;
+        next.histogram = std::move(img.histogram);
+        next.histogramOf = std::move(img.histogramOf);
+        next.histogramFrame = img.histogramFrame;
+        img = std::move(next);
+    }
+    // The raw values of the shown output, binned, when the view asks for it:
+    // a read-back of the whole buffer, so at most every 10 frames for the
+    // same output.
+    void histogram(const ui::ImageView& view, const PublishedOutput& o, ui::ShownImage& img, const ui::UiState& state) {
+        if (!view.histogram) return;
+        const std::string key = o.decl.name + "/" + std::to_string(view.settingsOr().layer) + "/" +
+                                std::to_string(view.settingsOr().sample);
+        if (img.histogramOf == key && state.frame < img.histogramFrame + 10) return;
+        try {
+            img.histogram = computeHistogram(readOutputRaw(o, view.settingsOr().selection()), 128);
+        } catch (const std::exception&) {
+            img.histogram = {};  // outputs that cannot be read back as an image (tables) have none
+        }
+        img.histogramOf = key;
+        img.histogramFrame = state.frame;
+    }
+
     RenderSession& session_;
     BufferView sideView_;
     ForwardPreview forward_;
     ViewportOverlay overlay_;
+    gl::Sampler nearest_;
+    std::string lastSignature_;
 };
 
 }  // namespace
@@ -217,20 +429,17 @@ int runGui(const GuiOptions& options, Scene scene) {
         throw Error("no display (DISPLAY is not set), so the workbench window cannot open; "
                     "use 'deferred-workbench render --scene S --out image.png' to render headless");
     const bool scripted = options.run.frames > 0;
+    const ScriptedInput script = options.events.empty() ? ScriptedInput() : ScriptedInput::load(options.events);
     Window window(options.run.width, options.run.height, !scripted);
     // A scripted run (tests, screenshots) neither reads nor writes the saved layout.
-    std::string ini;
-    if (!scripted) {
-        std::error_code ec;
-        fs::create_directories(configDir(), ec);
-        if (!ec) ini = configDir() + "/imgui.ini";
-    }
-    ImGuiLayer imgui(window.get(), ini);
+    const std::string layoutPath = scripted ? std::string() : configDir() + "/layout.json";
+    ImGuiLayer imgui(window.get());
     {
         RenderSession session;
         ui::UiState state;
         state.presetsDir = options.presetsDir.empty() ? configDir() + "/presets" : options.presetsDir;
         state.scenesDir = options.scenesDir;
+        state.exportDir = fs::absolute(options.exportDir.empty() ? exportDirDefault() : options.exportDir).string();
         // The same rules as render (RunConfig), and again for every scene opened later.
         state.run = options.run;
         session.setScene(std::move(scene), state.run);
@@ -242,7 +451,30 @@ int runGui(const GuiOptions& options, Scene scene) {
         state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
 
         Frame frame(session);
+        state.nearestSampler = &frame.nearestSampler();
+        if (!options.view.empty()) {
+            if (!session.pipeline().outputs().find(options.view))
+                throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
+            state.viewport.output = options.view;
+        }
+        if (options.resolution == "1/2") state.viewport.resolution = ui::ResolutionScale::Half;
+        if (options.resolution == "1/4") state.viewport.resolution = ui::ResolutionScale::Quarter;
+        if (options.resolution == "auto") state.viewport.resolution = ui::ResolutionScale::Auto;
+        state.timingCapture = options.record;
+        RenderDocCapture renderdoc = RenderDocCapture::attach(false);
+        state.renderdocAvailable = renderdoc.available();
+        state.renderdocWhy = renderdoc.why();
+        if (renderdoc.available()) {
+            std::error_code ec;
+            fs::create_directories(state.exportDir, ec);
+            renderdoc.setPathTemplate(state.exportDir + "/workbench");
+            state.log.info("RenderDoc: F11 or Render > Capture frame saves the next frame to " + state.exportDir, 0.0);
+        }
+        int capturesSeen = 0;
         ui::WorkbenchUi ui;
+        if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
+        std::optional<ImVec2> scriptMouse;
+        bool scriptLeft = false, scriptCtrl = false;
         const auto start = std::chrono::steady_clock::now();
         auto last = start;
         while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
@@ -250,24 +482,42 @@ int runGui(const GuiOptions& options, Scene scene) {
             const float dt = std::min(std::chrono::duration<float>(t0 - last).count(), 0.1f);
             last = t0;
             state.time = std::chrono::duration<double>(t0 - start).count();
+            const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
+            if (in.resize) glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
             glfwPollEvents();
             state.keyPresses.swap(pendingKeys());
             pendingKeys().clear();
+            for (int key : in.keys) state.keyPresses.emplace_back(key, 0);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            // Scripted input over what the backend read from the (idle) window.
+            if (in.mouseX && in.mouseY) scriptMouse = ImVec2(*in.mouseX, *in.mouseY);
+            if (in.leftDown) scriptLeft = *in.leftDown;
+            if (in.ctrl) scriptCtrl = *in.ctrl;
+            if (scriptMouse) {
+                ImGuiIO& io = ImGui::GetIO();
+                io.MousePos = *scriptMouse;
+                io.MouseDown[ImGuiMouseButton_Left] = scriptLeft;
+                io.MouseWheel += in.wheel;
+                io.KeyCtrl = io.KeyCtrl || scriptCtrl;
+            }
             ImGui::NewFrame();
             try {
                 frame.render(state);
+                state.log.succeeded("render");
             } catch (const std::exception& e) {
-                state.log.error(std::string("frame failed: ") + e.what(), state.time);
+                state.log.error(std::string("frame failed: ") + e.what(), state.time, "render");
             }
+            state.cameraPosition = session.camera().position;
             ui.draw(state, session, dt);
 
             if (state.requestReloadShaders) {
                 state.requestReloadShaders = false;
                 const auto errors = session.shaders().reloadChanged();
-                if (errors.empty()) state.log.info("shaders reloaded", state.time);
-                for (const auto& e : errors) state.log.error("shader error (the last good program stays in use):\n" + e, state.time);
+                ++state.shaderGeneration;
+                if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
+                for (const auto& e : errors)
+                    state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");
             }
 
             ImGui::Render();
@@ -282,23 +532,49 @@ int runGui(const GuiOptions& options, Scene scene) {
             const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.run.frames;
             if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
                 state.requestScreenshot = false;
-                const std::string path = lastFrame && !options.screenshot.empty()
-                                             ? options.screenshot
-                                             : "screenshot-" + std::to_string(state.frame) + ".png";
+                const bool scriptedShot = lastFrame && !options.screenshot.empty();
+                std::error_code ec;
+                if (!scriptedShot) fs::create_directories(state.exportDir, ec);
+                const std::string path = scriptedShot ? options.screenshot
+                                                      : state.exportDir + "/screenshot-" + std::to_string(state.frame) + ".png";
                 try {
                     writeImage(path, readWindowFramebuffer(fbw, fbh));
-                    state.log.info("wrote " + path, state.time);
+                    state.log.done("screenshot saved to " + fs::absolute(path).string(), state.time, "screenshot");
                     if (scripted) std::printf("wrote %s (%dx%d)\n", path.c_str(), fbw, fbh);
                 } catch (const std::exception& e) {
-                    state.log.error(e.what(), state.time);
+                    state.log.error(e.what(), state.time, "screenshot");
                     if (scripted) throw;
                 }
             }
+            if (state.requestRenderDocCapture) {
+                state.requestRenderDocCapture = false;
+                if (renderdoc.available()) {
+                    renderdoc.triggerCapture();
+                    state.forceRender = true;  // the captured frame renders every pass, changed or not
+                }
+                else state.log.error("no RenderDoc capture: " + renderdoc.why(), state.time, "renderdoc");
+            }
             glfwSwapBuffers(window.get());
+            // RenderDoc writes a triggered capture at the swap.
+            if (renderdoc.available() && renderdoc.captureCount() > capturesSeen) {
+                capturesSeen = renderdoc.captureCount();
+                state.renderdocCaptures.push_back(renderdoc.lastCapturePath());
+                state.log.done("RenderDoc capture saved to " + state.renderdocCaptures.back(), state.time, "renderdoc");
+                if (scripted) std::printf("wrote %s (RenderDoc capture)\n", state.renderdocCaptures.back().c_str());
+            }
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
+            if (lastFrame && !options.layoutOut.empty()) {
+                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh);
+                std::printf("wrote %s\n", options.layoutOut.c_str());
+            }
             ++state.frame;
             if (lastFrame) break;
+        }
+        if (!layoutPath.empty()) {
+            std::error_code ec;
+            fs::create_directories(configDir(), ec);
+            saveLayout(layoutPath, ui, state);
         }
         if (!options.dumpKnobs.empty()) {
             session.writeKnobValues(options.dumpKnobs);

@@ -20,6 +20,13 @@ struct GuiOptions {
     std::string scenesDir;      // example scenes offered in the Scene panel
     std::string screenshot;     // written after the last frame when frames > 0
     std::string dumpKnobs;      // knob values written here at exit (RenderSession::writeKnobValues)
+    std::string events;         // scripted input replayed frame by frame (ScriptedInput), with frames > 0
+    std::string layoutOut;      // with frames > 0: the panels' rectangles and the probe as JSON after the last frame
+    std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
+    std::string view;           // the output the viewport shows at start ("final" when empty)
+    std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
+    bool record = false;        // start with timing capture on (every frame rendered and timed)
+    bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };
 
 // `scene` is run.sceneSpec() loaded (so a bad one fails before a window opens).

@@ -6,6 +6,7 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GuiApp.h"
+#include "app/RenderDocCapture.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -16,14 +17,32 @@ int runGuiCommand(int argc, char** argv) {
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
-                     "                          [--frames N [--screenshot out.png]] [--dump-knobs FILE]\n"
+                     "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
+                     "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
                      "  --presets    folder of preset files (default ~/.config/deferred-workbench/presets)\n"
                      "  --frames     quit after N frames (for scripts and tests)\n"
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
-                     "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n";
+                     "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
+                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key NAME', 'resize W H', 'ctrl down|up' (window pixels)\n"
+                     "  --layout-out with --frames: after the last frame, write each open panel's rectangle,\n"
+                     "               the window size and the probe as JSON\n"
+                     "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
+                     "  --view NAME  the output the viewport shows at start (see list buffers)\n"
+                     "  --resolution full|1/2|1/4|auto  render resolution against the viewport panel\n"
+                     "               (auto: steps to keep the GPU frame under 100 ms)\n"
+                     "  --record     time every frame from the start (otherwise a frame is rendered only\n"
+                     "               when something it shows changed)\n"
+                     "  --renderdoc  run under RenderDoc (starts again with librenderdoc.so preloaded,\n"
+                     "               Debian package librenderdoc): Render > Capture frame or F11 saves a\n"
+                     "               capture of the next frame to the export folder\n"
+                     "  --export-dir where screenshots and timing CSVs go\n"
+                     "               (default ~/.local/share/deferred-workbench/exports)\n"
+                     "The panel layout and which panels are open are saved at exit in\n"
+                     "~/.config/deferred-workbench/layout.json (not in scripted runs).\n";
         return 0;
     }
     GuiOptions o;
@@ -35,12 +54,27 @@ int runGuiCommand(int argc, char** argv) {
     o.presetsDir = cl.value("--presets").value_or("");
     o.screenshot = cl.value("--screenshot").value_or("");
     o.dumpKnobs = cl.value("--dump-knobs").value_or("");
+    o.events = cl.value("--events").value_or("");
+    o.layoutOut = cl.value("--layout-out").value_or("");
+    o.exportDir = cl.value("--export-dir").value_or("");
+    o.view = cl.value("--view").value_or("");
+    o.resolution = cl.value("--resolution").value_or("");
+    if (!o.resolution.empty() && o.resolution != "full" && o.resolution != "1/2" && o.resolution != "1/4" && o.resolution != "auto")
+        throw UsageError("--resolution takes full, 1/2, 1/4 or auto, not '" + o.resolution + "'");
+    o.record = cl.flag("--record");
+    o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");
+    if (!o.events.empty() && o.run.frames == 0) throw UsageError("--events needs --frames N");
+    if (!o.layoutOut.empty() && o.run.frames == 0) throw UsageError("--layout-out needs --frames N");
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;
 #endif
+    if (o.renderdoc) {
+        // RenderDoc has to hook GL from the start: this process starts again under it.
+        if (const std::string why = RenderDocCapture::relaunchUnderRenderDoc(argv); !why.empty()) throw Error("--renderdoc: " + why);
+    }
     // Bad input is reported before a window opens, as render reports it.
     o.run.validate();
     Scene scene = loadScene(o.run.sceneSpec());

@@ -8,6 +8,7 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
+#include "app/RenderDocCapture.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/graph/TimingReport.h"
@@ -21,7 +22,7 @@ int runRenderCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE] [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
-                     "                                 --out FILE\n"
+                     "                                 [--renderdoc-capture FILE.rdc] --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
                      "               the scene's settings and before --set; its scene is used without --scene\n"
@@ -32,7 +33,9 @@ int runRenderCommand(int argc, char** argv) {
                      "               timings are asked for (the first frame compiles shaders), else 0\n"
                      "  --timings    print per-pass GPU and CPU milliseconds\n"
                      "  --timings-out  write the timings as .json, or as .csv rows (any other name)\n"
-                     "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n";
+                     "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n"
+                     "  --renderdoc-capture  capture the last frame with RenderDoc (loads librenderdoc.so,\n"
+                     "               Debian package librenderdoc); RenderDoc writes FILE_capture.rdc\n";
         return 0;
     }
     RunConfig run = cl.runConfig();
@@ -47,6 +50,7 @@ int runRenderCommand(int argc, char** argv) {
     const bool timed = timings || timingsOut;
     run.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or(timed ? "1" : "0"), 0, 100000);
     const bool verbose = cl.flag("--verbose");
+    const auto renderdocCapture = cl.value("--renderdoc-capture");
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
@@ -56,6 +60,17 @@ int runRenderCommand(int argc, char** argv) {
     run.validate();
     Scene loaded = loadScene(run.sceneSpec());
 
+    // RenderDoc must be loaded before the GL context exists, to hook it.
+    RenderDocCapture renderdoc;
+    if (renderdocCapture) {
+        if (const std::string why = RenderDocCapture::relaunchUnderRenderDoc(argv); !why.empty())
+            throw Error("--renderdoc-capture: " + why);
+        renderdoc = RenderDocCapture::attach(false);
+        if (!renderdoc.available()) throw Error("--renderdoc-capture: " + renderdoc.why());
+        std::string stem = *renderdocCapture;
+        if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".rdc") == 0) stem.resize(stem.size() - 4);
+        renderdoc.setPathTemplate(stem);
+    }
     auto context = HeadlessGlContext::create();
     RenderSession session;
     if (verbose)
@@ -72,9 +87,15 @@ int runRenderCommand(int argc, char** argv) {
     FrameReport report;
     std::uint64_t firstCounted = 0;
     for (int i = 0; i < run.warmup + run.frames; ++i) {
+        // The last frame is the one captured.
+        const bool capture = renderdoc.available() && i + 1 == run.warmup + run.frames;
+        if (capture) renderdoc.startFrameCapture();
         report = session.render(request);
+        if (capture && (!renderdoc.endFrameCapture() || renderdoc.lastCapturePath().empty()))
+            throw Error("--renderdoc-capture: RenderDoc recorded no frame");
         if (i == run.warmup) firstCounted = report.frameIndex;
     }
+    if (renderdoc.available()) std::printf("wrote %s (RenderDoc capture of the last frame)\n", renderdoc.lastCapturePath().c_str());
     session.writeOutput(buffer, *out);
     std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
                 session.scene().name.c_str());

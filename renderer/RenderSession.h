@@ -44,6 +44,7 @@ public:
     void writeKnobValues(const std::string& path) const;
 
     KnobRegistry& knobs() { return knobs_; }
+    const KnobRegistry& knobs() const { return knobs_; }
     Pipeline& pipeline() { return pipeline_; }
     gl::ShaderLibrary& shaders() { return shaders_; }
     BufferView& bufferView() { return view_; }

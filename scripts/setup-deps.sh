@@ -10,6 +10,8 @@ packages=(
   # libraries (DESIGN.md: Debian packages only, nothing vendored)
   libimgui-dev libstb-dev libglfw3-dev libglm-dev libtinygltf-dev
   libopenimageio-dev libepoxy-dev nlohmann-json3-dev
+  # RenderDoc's in-app API header (the library is loaded only when asked)
+  librenderdoc-dev
   # headless OpenGL through EGL (Mesa llvmpipe where there is no GPU)
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libgl-dev
   # tests
@@ -19,6 +21,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   # Real glTF files, valid and broken, for the loader tests (they skip without it);
   # matplotlib for bench --plot (scripts/bench_plot.py), which the CLI test draws.
   packages+=(assimp-testmodels python3-matplotlib)
+  # librenderdoc.so, for the frame-capture test (it skips without it)
+  packages+=(librenderdoc)
 fi
 
 missing=()

@@ -5,82 +5,13 @@
 #include <algorithm>
 
 #include "renderer/inspect/OutputReadback.h"
+#include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
 
-bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<glm::vec4, glm::vec4>* autoRange,
-                        const PublishedOutput* output) {
-    bool changed = false;
-    using M = BufferViewSettings::Mapping;
-    using C = BufferViewSettings::Channel;
-    // Which layer (cube) of a layered output and which sample of a multisample one; -1 at the left end.
-    if (const int layers = output ? selectableLayers(*output) : 0; layers > 0) {
-        s.layer = std::min(s.layer, layers - 1);
-        ImGui::SetNextItemWidth(160);
-        const char* what = resourceKind(*output) == ResourceKind::TextureCubeArray ? "cube" : "layer";
-        changed |= ImGui::SliderInt(what, &s.layer, -1, layers - 1, s.layer < 0 ? "all" : "%d");
-    }
-    if (const int samples = output ? sampleCount(*output) : 1; samples > 1) {
-        s.sample = std::min(s.sample, samples - 1);
-        ImGui::SetNextItemWidth(160);
-        changed |= ImGui::SliderInt("sample", &s.sample, -1, samples - 1, s.sample < 0 ? "resolved" : "%d");
-    }
-    const char* channels[] = {"RGB", "R", "G", "B", "A"};
-    for (int c = 0; c < 5; ++c) {
-        if (c) ImGui::SameLine();
-        if (ImGui::RadioButton(channels[c], static_cast<int>(s.channel) == c)) {
-            s.channel = static_cast<C>(c);
-            changed = true;
-        }
-    }
-    const char* mappings[] = {"auto", "direct (range)", "linear depth", "normal colours", "heat map", "tone map"};
-    int m = static_cast<int>(s.mapping) + 1;
-    ImGui::SetNextItemWidth(160);
-    if (ImGui::Combo("mapping", &m, mappings, 6)) {
-        s.mapping = static_cast<M>(m - 1);
-        changed = true;
-    }
-    const M resolved = BufferView::resolveMapping(kind, s);
-    if (s.mapping == M::Auto) {
-        ImGui::SameLine();
-        ImGui::TextDisabled("-> %s", mappings[static_cast<int>(resolved) + 1]);
-    }
-    if (resolved == M::Tonemap) {
-        ImGui::SetNextItemWidth(160);
-        changed |= ImGui::SliderFloat("exposure (EV)", &s.exposure, -10.0f, 10.0f, "%.1f");
-    }
-    if (resolved == M::Direct || resolved == M::LinearDepth || resolved == M::Heatmap) {
-        bool automatic = BufferView::resolveAutoRange(kind, s);
-        if (ImGui::Checkbox("auto min/max", &automatic)) {
-            s.autoRange = automatic ? 1 : 0;
-            changed = true;
-        }
-        if (automatic && autoRange) {
-            ImGui::SameLine();
-            const int c = std::max(0, static_cast<int>(s.channel) - 1);
-            ImGui::TextDisabled("%.4g .. %.4g", autoRange->first[c], autoRange->second[c]);
-        }
-        if (!automatic) {
-            ImGui::SetNextItemWidth(220);
-            float range[2] = {s.rangeMin, s.rangeMax};
-            if (ImGui::InputFloat2("range", range, "%.5g")) {
-                s.rangeMin = range[0];
-                s.rangeMax = range[1];
-                changed = true;
-            }
-            if (autoRange && ImGui::SmallButton("from auto")) {
-                s.rangeMin = autoRange->first[0];
-                s.rangeMax = autoRange->second[0];
-                changed = true;
-            }
-        }
-    }
-    return changed;
-}
-
 void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -101,6 +32,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
             ImGui::TableNextColumn();
             const bool openNode = ImGui::TreeNodeEx(rec.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth,
                                                     "%s %s", rec.ran ? "+" : "-", rec.name.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", rec.name.c_str(), rec.ran ? "ran" : ("skipped: " + rec.reason).c_str());
             ImGui::TableNextColumn();
             if (rec.ran) ImGui::Text("%.3f", timer.gpuStats(rec.name, 60).median);
             else ImGui::TextDisabled("-");
@@ -120,7 +52,8 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                     state.viewport.output = o.decl.name;
                     state.viewport.mode = DisplayMode::Deferred;
                 }
-                if (ImGui::IsItemHovered() && !o.decl.description.empty()) ImGui::SetTooltip("%s", o.decl.description.c_str());
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s%s%s", o.decl.name.c_str(), o.decl.description.empty() ? "" : ": ", o.decl.description.c_str());
                 ImGui::Unindent(8.0f);
                 ImGui::TableNextColumn();
                 if (ImGui::SmallButton("side")) {
@@ -159,19 +92,14 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
     if (shown && state.viewport.mode == DisplayMode::Deferred) {
         ImGui::Text("viewport: %s", shown->decl.name.c_str());
         ImGui::TextDisabled("%s", shown->decl.description.c_str());
-        if (!isDisplayReady(*shown)) {
-            std::pair<glm::vec4, glm::vec4> range;
-            const bool haveRange = BufferView::resolveAutoRange(shown->decl.kind, state.viewport.settings) && state.viewportImage.texture;
-            if (haveRange) range = session.bufferView().lastAutoRange();
-            viewSettingsEditor(state.viewport.settings, shown->decl.kind, haveRange ? &range : nullptr, shown);
-        }
+        wrappedColored(kDimColor, "its display controls (channel, mapping, range, zoom, histogram) are above the image");
         if (ImGui::SmallButton("show final image")) state.viewport.output = "final";
     }
     ImGui::End();
 }
 
 void SideViewPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -181,16 +109,13 @@ void SideViewPanel::draw(const char* title, bool* open, UiState& state, RenderSe
             if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == state.side.output)) state.side.output = o.decl.name;
         ImGui::EndCombo();
     }
-    if (const PublishedOutput* o = session.pipeline().outputs().find(state.side.output))
-        viewSettingsEditor(state.side.settings, o->decl.kind, nullptr, o);
-    const ShownImage& img = state.sideImage;
-    if (img.texture) {
-        const ImVec2 avail = ImGui::GetContentRegionAvail();
-        const float scale = std::min(avail.x / img.width, std::max(avail.y, 64.0f) / img.height);
-        image(img.texture, ImVec2(img.width * scale, img.height * scale));
-    } else {
-        wrappedColored(kErrorColor, img.unavailable.empty() ? "no image" : img.unavailable);
-    }
+    const PublishedOutput* o = session.pipeline().outputs().find(state.side.output);
+    imageViewControls(state.side, o, state.sideImage);
+    imageViewLegend(state.side, o, state.sideImage);
+    const ImVec2 avail(std::max(ImGui::GetContentRegionAvail().x, 16.0f), std::max(ImGui::GetContentRegionAvail().y, 16.0f));
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##side", avail);
+    drawImageView(state.side, state.sideImage, origin, avail, state.nearestSampler, ImGui::IsItemHovered(), ImGui::IsItemActive());
     ImGui::End();
 }
 

@@ -19,10 +19,5 @@ struct SideViewPanel {
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 
-// Editor for how an output is displayed; returns true on change. With
-// `output`, also a layer slider (arrays, cube arrays, 3D) and a sample slider
-// (multisample) for what that output has.
-bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<glm::vec4, glm::vec4>* autoRange,
-                        const PublishedOutput* output = nullptr);
 
 }  // namespace dw::ui

@@ -88,7 +88,7 @@ bool knobWidget(KnobRegistry& knobs, int id) {
 }
 
 void KnobsPanel::draw(const char* title, bool* open, KnobRegistry& knobs) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }

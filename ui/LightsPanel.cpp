@@ -29,7 +29,7 @@ Light newLight(LightType type, const Scene& scene, const Camera& cam, size_t ind
 }  // namespace
 
 void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -43,26 +43,40 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         if (animate) state.animator.start(scene);
         else state.animator.stop(scene);
     }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(70);
+    sameLineIfFits(130.0f);
+    ImGui::SetNextItemWidth(60);
     ImGui::DragFloat("radius", &state.animator.radius, 0.01f, 0.0f, 100.0f, "%.2f");
-    ImGui::SameLine();
+    sameLineIfFits(120.0f);
     ImGui::SetNextItemWidth(60);
     ImGui::DragFloat("speed", &state.animator.speed, 0.01f, 0.0f, 20.0f, "%.2f");
-    if (ImGui::Button("+ point")) scene.lights.push_back(newLight(LightType::Point, scene, session.camera(), scene.lights.size()));
+    // A new light is selected (its editor opens) and scrolled to.
+    int added = -1;
+    auto add = [&](LightType type) {
+        scene.lights.push_back(newLight(type, scene, session.camera(), scene.lights.size()));
+        added = static_cast<int>(scene.lights.size()) - 1;
+    };
+    ImGui::TextDisabled("add");
     ImGui::SameLine();
-    if (ImGui::Button("+ spot")) scene.lights.push_back(newLight(LightType::Spot, scene, session.camera(), scene.lights.size()));
-    ImGui::SameLine();
-    if (ImGui::Button("+ directional"))
-        scene.lights.push_back(newLight(LightType::Directional, scene, session.camera(), scene.lights.size()));
-    ImGui::SameLine();
+    if (ImGui::Button("point")) add(LightType::Point);
+    sameLineIfFits(ImGui::CalcTextSize("spot").x + 16.0f);
+    if (ImGui::Button("spot")) add(LightType::Spot);
+    sameLineIfFits(ImGui::CalcTextSize("directional").x + 16.0f);
+    if (ImGui::Button("directional")) add(LightType::Directional);
+    sameLineIfFits(ImGui::CalcTextSize("all on").x + 16.0f);
     if (ImGui::Button("all on"))
         for (auto& l : scene.lights) l.enabled = true;
-    ImGui::SameLine();
+    sameLineIfFits(ImGui::CalcTextSize("all off").x + 16.0f);
     if (ImGui::Button("all off"))
         for (auto& l : scene.lights) l.enabled = false;
+    if (added >= 0) {
+        state.selectedLight = added;
+        scrollToSelected = true;
+    }
 
-    const float listHeight = std::max(ImGui::GetContentRegionAvail().y * 0.45f, 80.0f);
+    // The list fills the panel until a light is selected, then shares it with the editor.
+    const float avail = ImGui::GetContentRegionAvail().y;
+    const float listHeight =
+        state.selectedLight >= 0 ? std::max(avail * 0.4f, 80.0f) : std::max(avail - ImGui::GetTextLineHeightWithSpacing() - 4.0f, 60.0f);
     if (ImGui::BeginTable("lights", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
                           ImVec2(0, listHeight))) {
         ImGui::TableSetupScrollFreeze(0, 1);
@@ -83,6 +97,11 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             ImGui::SameLine();
             if (ImGui::Selectable(l.name.c_str(), state.selectedLight == static_cast<int>(i), ImGuiSelectableFlags_SpanAllColumns))
                 state.selectedLight = state.selectedLight == static_cast<int>(i) ? -1 : static_cast<int>(i);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s): click to edit", l.name.c_str(), toString(l.type));
+            if (scrollToSelected && state.selectedLight == static_cast<int>(i)) {
+                ImGui::SetScrollHereY(0.5f);
+                scrollToSelected = false;
+            }
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(toString(l.type));
             ImGui::TableNextColumn();
@@ -96,6 +115,11 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     }
     state.viewport.overlay.selectedLight = state.selectedLight;
 
+    if (state.selectedLight < 0) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        clippedText(std::to_string(scene.lights.size()) + " lights; select one to edit it", ImGui::GetContentRegionAvail().x);
+        ImGui::PopStyleColor();
+    }
     if (state.selectedLight >= 0) {
         Light& l = scene.lights[static_cast<size_t>(state.selectedLight)];
         ImGui::Separator();

@@ -8,6 +8,7 @@
 namespace dw::ui {
 
 struct LightsPanel {
+    bool scrollToSelected = false;  // a light was just added: bring its row into view
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 

@@ -12,6 +12,16 @@ namespace dw::ui {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+void rememberPreset(UiState& state, const RenderSession& session, const std::string& name) {
+    state.activePreset = name;
+    state.activePresetKnobs.clear();
+    for (size_t i = 0; i < session.knobs().size(); ++i) state.activePresetKnobs.push_back(session.knobs().value(static_cast<int>(i)));
+}
+
+}  // namespace
+
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset) {
     // Another scene opens as any scene does (start-up knobs first); this
     // preset, chosen by hand, then goes over them.
@@ -19,30 +29,65 @@ bool applyPreset(UiState& state, RenderSession& session, const Preset& preset) {
         if (!openScene(state, session, preset.scene)) return false;
     }
     if (preset.camera) session.camera() = *preset.camera;
-    const Preset::ApplyReport r = preset.applyKnobs(session.knobs());
+    const Preset::ApplyReport r = preset.applyOver(session.knobs(), session.scene().settings);
     state.log.info("preset '" + preset.name + "': " + std::to_string(r.applied) + " knobs set", state.time);
     if (!r.ignored.empty()) {
         std::string all = "preset '" + preset.name + "' ignored " + std::to_string(r.ignored.size()) + " key(s):";
         for (const auto& i : r.ignored) all += "\n  " + i;
-        state.log.error(all, state.time);
+        state.log.error(all, state.time, "load preset");
+    } else {
+        state.log.succeeded("load preset");
     }
+    rememberPreset(state, session, preset.name);
     return true;
+}
+
+bool savePreset(UiState& state, RenderSession& session, const std::string& path, const std::string& name) {
+    std::error_code ec;
+    const std::string shown = fs::absolute(path, ec).string();
+    try {
+        Preset::capture(name, session.knobs(), session.camera(), session.scene().source).save(path);
+        state.log.done("saved preset " + shown, state.time, "save preset");
+        rememberPreset(state, session, name);
+        return true;
+    } catch (const std::exception& e) {
+        state.log.error(std::string("cannot save preset: ") + e.what(), state.time, "save preset");
+        return false;
+    }
+}
+
+bool presetModified(const UiState& state, const RenderSession& session) {
+    const KnobRegistry& k = session.knobs();
+    if (state.activePresetKnobs.size() != k.size()) return false;
+    for (size_t i = 0; i < k.size(); ++i)
+        if (k.value(static_cast<int>(i)) != state.activePresetKnobs[i]) return true;
+    return false;
 }
 
 bool loadPresetFile(UiState& state, RenderSession& session, const std::string& path) {
     try {
         return applyPreset(state, session, Preset::load(path));
     } catch (const std::exception& e) {
-        state.log.error(std::string("cannot load preset: ") + e.what(), state.time);
+        state.log.error(std::string("cannot load preset: ") + e.what(), state.time, "load preset");
         return false;
     }
 }
 
 void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
+    if (state.activePreset.empty()) {
+        ImGui::TextDisabled("no preset loaded");
+    } else {
+        ImGui::Text("active: %s", state.activePreset.c_str());
+        if (presetModified(state, session)) {
+            ImGui::SameLine();
+            ImGui::TextColored(kErrorColor, "(modified since)");
+        }
+    }
+    ImGui::Separator();
     ImGui::TextDisabled("built in");
     for (const auto& p : builtinPresets()) {
         if (ImGui::Selectable(p.name.c_str())) applyPreset(state, session, p);
@@ -65,29 +110,17 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
         ImGui::PushID(f.c_str());
         if (ImGui::Selectable(f.stem().c_str(), false, ImGuiSelectableFlags_AllowItemOverlap)) loadPresetFile(state, session, f.string());
         ImGui::SameLine(ImGui::GetContentRegionAvail().x - 60);
-        if (ImGui::SmallButton("overwrite")) {
-            try {
-                Preset::capture(f.stem().string(), session.knobs(), session.camera(), session.scene().source).save(f.string());
-                state.log.info("saved " + f.string(), state.time);
-            } catch (const std::exception& e) {
-                state.log.error(std::string("cannot save preset: ") + e.what(), state.time);
-            }
-        }
+        if (ImGui::SmallButton("overwrite")) savePreset(state, session, f.string(), f.stem().string());
         ImGui::PopID();
     }
     ImGui::Separator();
     ImGui::SetNextItemWidth(-70);
-    ImGui::InputText("##name", saveName, sizeof(saveName));
+    const bool enter = ImGui::InputText("##name", saveName, sizeof(saveName), ImGuiInputTextFlags_EnterReturnsTrue);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
     ImGui::SameLine();
-    if (ImGui::Button("save as") && saveName[0]) {
-        const fs::path path = fs::path(state.presetsDir) / (std::string(saveName) + ".json");
-        try {
-            fs::create_directories(state.presetsDir);
-            Preset::capture(saveName, session.knobs(), session.camera(), session.scene().source).save(path.string());
-            state.log.info("saved " + path.string(), state.time);
-        } catch (const std::exception& e) {
-            state.log.error(std::string("cannot save preset: ") + e.what(), state.time);
-        }
+    if ((ImGui::Button("save as") || enter) && saveName[0]) {
+        fs::create_directories(state.presetsDir, ec);
+        savePreset(state, session, (fs::path(state.presetsDir) / (std::string(saveName) + ".json")).string(), saveName);
     }
     ImGui::End();
 }

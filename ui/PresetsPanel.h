@@ -13,9 +13,17 @@ struct PresetsPanel {
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 
+// Saves the session's knobs, camera and scene as `path` (atomically); the
+// result goes to the log and a toast with the absolute path.
+bool savePreset(UiState& state, RenderSession& session, const std::string& path, const std::string& name);
+// Whether any knob differs from its value right after the active preset was loaded or saved.
+bool presetModified(const UiState& state, const RenderSession& session);
+
 // Applies a preset to the session; errors and ignored keys go to the log. A
 // preset naming another scene opens it first (openScene: knobs reset to the
-// start-up values for that scene), then sets its camera and knobs on top.
+// start-up values for that scene), then sets its camera, and its knobs over
+// the defaults and scene settings of the groups it covers (Preset::applyOver),
+// so the result does not depend on what was loaded before.
 // Returns false (and changes nothing) when the preset's scene cannot be opened.
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset);
 bool loadPresetFile(UiState& state, RenderSession& session, const std::string& path);

@@ -15,17 +15,27 @@ void row(const char* label, const char* fmt, ...) IM_FMTARGS(2);
 void row(const char* label, const char* fmt, ...) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(label);
+    clippedText(label, ImGui::GetContentRegionAvail().x);
     ImGui::TableNextColumn();
     va_list args;
     va_start(args, fmt);
-    ImGui::TextV(fmt, args);
+    char text[1024];
+    std::vsnprintf(text, sizeof(text), fmt, args);
     va_end(args);
+    clippedText(text, ImGui::GetContentRegionAvail().x);
+}
+
+// Label and value columns: the label as wide as the longest label needs.
+bool beginRows(const char* id, float labelWidth) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg)) return false;
+    ImGui::TableSetupColumn("label", ImGuiTableColumnFlags_WidthFixed, labelWidth);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    return true;
 }
 }  // namespace
 
 void ProbePanel::draw(const char* title, bool* open, UiState& state) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -54,7 +64,7 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
                                             IM_COL32(255, 255, 0, 255));
     }
     const SurfaceSample& s = p.result.surface;
-    if (ImGui::BeginTable("surface", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    if (beginRows("surface", ImGui::CalcTextSize("position (world)").x + 8.0f)) {
         if (s.background) {
             row("surface", "background (no geometry)");
         } else {
@@ -69,8 +79,18 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         row("L-buffer", "%.5g %.5g %.5g  (L = %.5g)", s.radiance.r, s.radiance.g, s.radiance.b, s.luminance);
         ImGui::EndTable();
     }
-    if (ImGui::CollapsingHeader("every output at this pixel", ImGuiTreeNodeFlags_DefaultOpen) &&
-        ImGui::BeginTable("raw", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    // The lights a volume strategy evaluates here (their volumes contain the
+    // surface point); the viewport's volume overlay shows just these by default.
+    if (!s.background) {
+        char head[96];
+        std::snprintf(head, sizeof(head), "lights at this pixel: %zu (+%d directional)###lights", p.lights.size(), p.directionalLights);
+        if (ImGui::CollapsingHeader(head, ImGuiTreeNodeFlags_DefaultOpen))
+            for (const auto& line : p.lightLines) clippedText(line, ImGui::GetContentRegionAvail().x);
+    }
+    float labelWidth = ImGui::CalcTextSize("sample 00").x;
+    for (const auto& v : p.result.values) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(v.output.c_str()).x);
+    labelWidth = std::min(labelWidth + 8.0f, ImGui::GetContentRegionAvail().x * 0.5f);
+    if (ImGui::CollapsingHeader("every output at this pixel", ImGuiTreeNodeFlags_DefaultOpen) && beginRows("raw", labelWidth)) {
         for (const auto& v : p.result.values) {
             switch (v.channels) {
                 case 1: row(v.output.c_str(), "%.6g", v.raw.x); break;

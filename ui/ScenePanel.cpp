@@ -19,16 +19,17 @@ bool openScene(UiState& state, RenderSession& session, const std::string& spec) 
         state.selectedLight = -1;
         state.probe.pinned = false;
         state.log.info("opened scene " + session.scene().name + " (" + spec + ")", state.time);
+        state.log.succeeded("open scene");
         for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, state.time);
         return true;
     } catch (const std::exception& e) {
-        state.log.error(std::string("cannot open scene: ") + e.what(), state.time);
+        state.log.error(std::string("cannot open scene: ") + e.what(), state.time, "open scene");
         return false;
     }
 }
 
 void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }

@@ -1,23 +1,73 @@
 #include "ui/UiState.h"
 
+#include <algorithm>
+
 namespace dw::ui {
 
 namespace {
 constexpr size_t kMaxMessages = 200;
 }
 
-void MessageLog::info(const std::string& text, double time) {
-    messages_.push_back({time, false, text});
+void MessageLog::push(Message m) {
+    messages_.push_back(std::move(m));
     if (messages_.size() > kMaxMessages) {
         messages_.pop_front();
         if (bannerIndex_ >= 0) --bannerIndex_;
+        if (toastIndex_ >= 0) --toastIndex_;
     }
 }
 
-void MessageLog::error(const std::string& text, double time) {
-    info(text, time);
-    messages_.back().error = true;
+void MessageLog::info(const std::string& text, double time) { push({time, false, text, {}}); }
+
+void MessageLog::error(const std::string& text, double time, const std::string& action) {
+    push({time, true, text, action});
     bannerIndex_ = static_cast<long>(messages_.size() - 1);
+}
+
+void MessageLog::done(const std::string& text, double time, const std::string& action) {
+    push({time, false, text, action});
+    toastIndex_ = static_cast<long>(messages_.size() - 1);
+    succeeded(action);
+}
+
+void MessageLog::succeeded(const std::string& action) {
+    if (const Message* b = banner(); b && !action.empty() && b->action == action) dismissBanner();
+}
+
+const Message* MessageLog::toast(double now) const {
+    if (toastIndex_ < 0) return nullptr;
+    const Message& m = messages_[static_cast<size_t>(toastIndex_)];
+    return now - m.time <= kToastSeconds ? &m : nullptr;
+}
+
+}  // namespace dw::ui
+
+namespace dw::ui {
+
+ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSize, const ImageView& view) {
+    ImagePlacement p;
+    if (imageSize.x <= 0.0f || imageSize.y <= 0.0f) return p;
+    p.fitScale = std::min(boxSize.x / imageSize.x, boxSize.y / imageSize.y);
+    p.size = imageSize * p.fitScale * std::max(view.zoom, 1e-3f);
+    p.min = boxMin + boxSize * 0.5f - view.center * p.size;
+    return p;
+}
+
+float nextAutoScale(float scale, float frameMs, float targetMs) {
+    if (!(frameMs > 0.0f) || !(targetMs > 0.0f)) return scale;
+    if (frameMs > targetMs) scale *= 0.8f;
+    else if (frameMs < 0.5f * targetMs) scale *= 1.25f;
+    return std::clamp(scale, 0.125f, 1.0f);
+}
+
+void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before) {
+    const glm::vec2 uv = before.uvAt(screen);
+    const float zoom = std::clamp(view.zoom * factor, 0.05f, 256.0f);
+    // The point under the cursor stays: centre moves towards it by the zoom change.
+    const float k = before.size.x > 0.0f ? view.zoom / zoom : 1.0f;
+    view.center = uv + (view.center - uv) * k;
+    view.zoom = zoom;
+    if (zoom <= 1.0f) view.center = glm::vec2(0.5f);
 }
 
 }  // namespace dw::ui

@@ -5,16 +5,22 @@
 // renderer already owns.
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
 #include "renderer/inspect/BufferView.h"
+#include "renderer/io/ImageHistogram.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/RunConfig.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
+
+namespace dw::gl {
+class Sampler;
+}
 
 namespace dw::ui {
 
@@ -29,8 +35,8 @@ struct PanelFlags {
     bool scene = true;
     bool timings = true;
     bool knobs = true;
-    bool presets = false;
-    bool messages = false;
+    bool presets = true;
+    bool messages = true;
     bool sideView = false;
     bool keys = false;
 };
@@ -39,20 +45,36 @@ struct Message {
     double time = 0.0;
     bool error = false;
     std::string text;
+    std::string action;  // what the user did ("open scene", "save preset", ...); may be empty
 };
 
+// Every message of the session, the error banner over the viewport, and a
+// short toast for things done that leave no other visible trace (a file
+// written). An error names its action; when that action later succeeds
+// (succeeded()), its banner goes away, so a failed scene load does not stay
+// over the scene that loaded after it.
 class MessageLog {
 public:
+    static constexpr double kToastSeconds = 4.0;
+
     void info(const std::string& text, double time);
-    void error(const std::string& text, double time);
+    void error(const std::string& text, double time, const std::string& action = {});
+    // info() that also shows as a toast.
+    void done(const std::string& text, double time, const std::string& action = {});
+    // `action` worked: an error banner it raised is cleared.
+    void succeeded(const std::string& action);
     const std::deque<Message>& all() const { return messages_; }
     // The newest error not yet dismissed, shown as a banner over the viewport.
     const Message* banner() const { return bannerIndex_ >= 0 ? &messages_[static_cast<size_t>(bannerIndex_)] : nullptr; }
     void dismissBanner() { bannerIndex_ = -1; }
+    // The newest toast, while it is younger than kToastSeconds at `now`.
+    const Message* toast(double now) const;
 
 private:
+    void push(Message m);
     std::deque<Message> messages_;
     long bannerIndex_ = -1;
+    long toastIndex_ = -1;
 };
 
 // A texture the renderer produced for the UI to show this frame.
@@ -60,19 +82,84 @@ struct ShownImage {
     unsigned texture = 0;
     int width = 0, height = 0;
     std::string unavailable;  // why there is no image (e.g. the pass did not run)
+    // The raw values' histogram (when the view asked for one), and the
+    // output and frame it was taken from.
+    ImageHistogram histogram;
+    std::string histogramOf;
+    std::uint64_t histogramFrame = 0;
+    // The automatic range the view used (BufferView::lastAutoRange), per channel.
+    bool haveAutoRange = false;
+    glm::vec4 autoLo{0.0f}, autoHi{0.0f};
 };
 
-struct ViewportView {
-    std::string output = "final";
-    BufferViewSettings settings;
+// One image view (the viewport, the side view), as a texture viewer:
+// display settings remembered per output (R + heat map chosen for the
+// L-buffer does not paint the AO buffer red), zoom and pan, and whether the
+// histogram of the shown buffer is wanted.
+struct ImageView {
+    std::string output;
+    std::map<std::string, BufferViewSettings> settingsByOutput;
+    BufferViewSettings& settings() { return settingsByOutput[output]; }
+    BufferViewSettings settingsOr() const {
+        const auto it = settingsByOutput.find(output);
+        return it == settingsByOutput.end() ? BufferViewSettings{} : it->second;
+    }
+    float zoom = 1.0f;          // 1: the whole image fits the view; 2: twice as large; ...
+    float fitScale = 1.0f;      // screen pixels per image pixel at zoom 1 (set when drawn)
+    glm::vec2 center{0.5f};     // the image point at the view's centre (u right, v down, 0..1)
+    bool histogram = false;
+};
+
+// Where an image of `imageSize` pixels lies on screen when shown in a box at
+// `boxMin` of `boxSize` by `view`'s zoom and pan (it may reach past the box;
+// draw it clipped), and the reverse: the image's (u, v) at a screen point.
+struct ImagePlacement {
+    glm::vec2 min{0.0f}, size{0.0f};
+    float fitScale = 1.0f;  // screen pixels per image pixel at zoom 1
+    glm::vec2 uvAt(glm::vec2 screen) const { return (screen - min) / glm::max(size, glm::vec2(1e-6f)); }
+};
+ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSize, const ImageView& view);
+// Zooms by `factor` keeping the image point under `screen` where it is.
+void zoomAt(ImageView& view, float factor, glm::vec2 screen, const ImagePlacement& before);
+
+// The render resolution against the viewport panel's size, for slow GL
+// (llvmpipe): full, half, quarter, or automatic, which steps the scale to
+// hold a frame-time target.
+enum class ResolutionScale { Full, Half, Quarter, Auto };
+
+// Which light volumes the overlay draws: those at the probed pixel (the
+// default: what the pixel sees, readable in a scene of many lights), all, or
+// the light selected in the Lights panel.
+enum class VolumeFilter { AtProbe, All, Selected };
+
+struct ViewportView : ImageView {
+    ViewportView() { output = "final"; }
     DisplayMode mode = DisplayMode::Deferred;
     OverlaySettings overlay;
+    VolumeFilter volumes = VolumeFilter::AtProbe;
     CameraMode camera = CameraMode::Orbit;
+    ResolutionScale resolution = ResolutionScale::Full;
+    float frameTargetMs = 100.0f;  // Auto: the GPU frame time to stay under
+    float autoScale = 1.0f;        // Auto: the scale it settled on (1/8 .. 1)
+    float scale() const {
+        switch (resolution) {
+            case ResolutionScale::Full: return 1.0f;
+            case ResolutionScale::Half: return 0.5f;
+            case ResolutionScale::Quarter: return 0.25f;
+            case ResolutionScale::Auto: return autoScale;
+        }
+        return 1.0f;
+    }
 };
 
-struct SideView {
-    std::string output = "gbuffer.normal";
-    BufferViewSettings settings;
+// The next automatic scale from the newest GPU frame times (ms): a step down
+// when over the target, a step up when well under it, else unchanged;
+// between 1/8 and 1. Steps are 0.8x and 1.25x, so it settles, not oscillates
+// (under half the target to step up, which 1.25^2 = 1.56x more pixels keeps under).
+float nextAutoScale(float scale, float frameMs, float targetMs);
+
+struct SideView : ImageView {
+    SideView() { output = "gbuffer.normal"; }
 };
 
 struct ProbeState {
@@ -82,6 +169,12 @@ struct ProbeState {
     ProbeResult result;
     // Where the pixel sits in the viewport image, for the magnifier.
     glm::vec2 uv{0.0f};
+    // The point and spot lights whose volumes contain the probed surface
+    // point (lightsCovering), one line each for the panel, and how many
+    // directional lights light it besides.
+    std::vector<int> lights;
+    std::vector<std::string> lightLines;
+    int directionalLights = 0;
 };
 
 struct UiState {
@@ -98,6 +191,12 @@ struct UiState {
     // the defaults, its settings, this preset, then these --set values.
     RunConfig run;
     bool resetLayout = true;
+    // The preset loaded or saved last, and the knob values right after it,
+    // so the Presets panel can say "modified since".
+    std::string activePreset;
+    std::vector<double> activePresetKnobs;
+    // Where screenshots and timing CSVs go (absolute; created when first used).
+    std::string exportDir;
 
     // Filled by the app each frame for the panels to read.
     FrameReport report;
@@ -105,6 +204,16 @@ struct UiState {
     glm::ivec2 renderSize{0, 0};   // what the pipeline renders at
     glm::ivec2 wantedSize{0, 0};   // what the viewport panel has room for
     std::deque<float> cpuFrameMs;  // app frame time, newest last
+    // Nearest-neighbour sampling for images zoomed to pixel level (the app
+    // owns it; the panels bind it around their image draws).
+    const gl::Sampler* nearestSampler = nullptr;
+    // Timing capture: render every frame (for the timings panel) and freeze
+    // the resolution scale. Off: a frame is rendered only when something it
+    // depends on changed (camera, knobs, scene, lights, view, size).
+    bool timingCapture = false;
+    std::uint64_t framesRendered = 0;  // frames the pipeline actually rendered
+    std::uint64_t shaderGeneration = 0;  // bumped by every shader reload (a reason to render again)
+    glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;
     double time = 0.0;
 
@@ -115,6 +224,12 @@ struct UiState {
 
     // Requests the app carries out after the UI is drawn.
     bool requestScreenshot = false;
+    bool requestRenderDocCapture = false;
+    bool forceRender = false;  // render the next frame even if nothing changed (a capture of it)
+    // RenderDoc, as the app found it: whether captures can be taken, why not, and the captures taken.
+    bool renderdocAvailable = false;
+    std::string renderdocWhy;
+    std::vector<std::string> renderdocCaptures;
     bool requestReloadShaders = false;
     bool requestQuit = false;
     std::string requestTimingsCsv;

@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "renderer/scene/CameraController.h"
+#include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -32,7 +33,7 @@ void toggleAnimation(UiState& state, RenderSession& session) {
 
 void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-    const bool visible = ImGui::Begin(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    const bool visible = beginPanel(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!visible) {
         ImGui::End();
@@ -58,15 +59,41 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SameLine();
     ImGui::Checkbox("volumes", &v.overlay.lightVolumes);
     ImGui::SameLine();
-    ImGui::Checkbox("selected only", &v.overlay.onlySelected);
+    const char* filters[] = {"at probe", "all", "selected"};
+    int filter = static_cast<int>(v.volumes);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+    if (ImGui::Combo("##volumes", &filter, filters, 3)) v.volumes = static_cast<VolumeFilter>(filter);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
+                          "every light's, or the one selected in the Lights panel");
     ImGui::SameLine();
     ImGui::Checkbox("axes", &v.overlay.axes);
     ImGui::SameLine();
     bool animate = state.animator.running();
     if (ImGui::Checkbox("animate lights", &animate)) toggleAnimation(state, session);
     ImGui::SameLine();
-    ImGui::TextDisabled("| %s camera | %dx%d", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
-                        state.renderSize.y);
+    ImGui::SameLine();
+    const char* scales[] = {"full", "1/2", "1/4", "auto"};
+    int scale = static_cast<int>(v.resolution);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
+    if (ImGui::Combo("##resolution", &scale, scales, 4)) v.resolution = static_cast<ResolutionScale>(scale);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
+                          "to keep the GPU frame under %.0f ms (frozen while timings are recorded)",
+                          static_cast<double>(v.frameTargetMs));
+    if (v.resolution == ResolutionScale::Auto) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("##target", &v.frameTargetMs, 5.0f, 10.0f, 5000.0f, "%.0f ms");
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
+                        state.renderSize.y, static_cast<double>(v.scale()), state.timingCapture ? " | recording" : "");
+    // The texture viewer's controls for what is shown, at the top of the view.
+    const PublishedOutput* shownOutput =
+        v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
+    imageViewControls(v, shownOutput, state.viewportImage);
+    imageViewLegend(v, shownOutput, state.viewportImage);
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     state.wantedSize = glm::ivec2(std::max(16, static_cast<int>(avail.x)), std::max(16, static_cast<int>(avail.y)));
@@ -76,26 +103,17 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     const bool hovered = ImGui::IsItemHovered();
     const bool active = ImGui::IsItemActive();
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ShownImage& img = state.viewportImage;
-    ImVec2 imgMin = origin, imgSize(0, 0);
-    if (img.texture && img.width > 0 && img.height > 0) {
-        // Fit, keeping the aspect ratio (the render size follows the panel a frame later).
-        const float scale = std::min(avail.x / img.width, avail.y / img.height);
-        imgSize = ImVec2(img.width * scale, img.height * scale);
-        imgMin = ImVec2(origin.x + (avail.x - imgSize.x) * 0.5f, origin.y + (avail.y - imgSize.y) * 0.5f);
-        dl->AddImage(textureId(img.texture), imgMin, ImVec2(imgMin.x + imgSize.x, imgMin.y + imgSize.y), ImVec2(0, 1), ImVec2(1, 0));
-    } else {
-        dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(30, 30, 34, 255));
-        const std::string why = img.unavailable.empty() ? "no image" : img.unavailable;
-        dl->AddText(ImVec2(origin.x + 12, origin.y + 12), IM_COL32(255, 140, 120, 255), why.c_str());
-    }
+    // The image fits the box, keeping its aspect ratio (the render size
+    // follows the panel a frame later), then zoomed and panned by the view.
+    const ImagePlacement placed = drawImageView(v, state.viewportImage, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
+                                                state.nearestSampler, hovered, active);
+    const ImVec2 imgMin(placed.min.x, placed.min.y), imgSize(placed.size.x, placed.size.y);
 
-    // Camera from the mouse.
+    // Camera from the mouse (Ctrl belongs to the image's zoom and pan).
     ImGuiIO& io = ImGui::GetIO();
     Camera& cam = session.camera();
-    if (active) {
+    if (active && !io.KeyCtrl) {
         const ImVec2 d = io.MouseDelta;
-        dragDistance += std::fabs(d.x) + std::fabs(d.y);
         if (v.camera == CameraMode::Orbit) {
             if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
                 camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
@@ -104,10 +122,8 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
             camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
         }
-    } else {
-        dragDistance = 0.0f;
     }
-    if (hovered && io.MouseWheel != 0.0f) {
+    if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
         if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
         else camera::fly(cam, glm::vec3(0, 0, io.MouseWheel * std::max(camera::distance(cam), 1.0f) * 0.1f));
     }
@@ -116,14 +132,19 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     state.probe.hovering = false;
     if (hovered && imgSize.x > 0 && state.renderSize.x > 0) {
         const float u = (io.MousePos.x - imgMin.x) / imgSize.x, w = (io.MousePos.y - imgMin.y) / imgSize.y;
-        if (u >= 0 && u < 1 && w >= 0 && w < 1) {
+        const bool inBox = io.MousePos.x >= origin.x && io.MousePos.y >= origin.y && io.MousePos.x < origin.x + avail.x &&
+                           io.MousePos.y < origin.y + avail.y;
+        if (inBox && u >= 0 && u < 1 && w >= 0 && w < 1) {
             const glm::ivec2 px(static_cast<int>(u * state.renderSize.x), static_cast<int>(w * state.renderSize.y));
             if (!state.probe.pinned) {
                 state.probe.pixel = px;
                 state.probe.uv = glm::vec2(u, w);
             }
             state.probe.hovering = true;
-            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && dragDistance < 3.0f) {
+            // ImGui tracks how far the mouse went while the button was down;
+            // an orbit (a drag past the drag threshold) must not pin the probe.
+            const float still = io.MouseDragThreshold * io.MouseDragThreshold;
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still) {
                 state.probe.pinned = true;
                 state.probe.pixel = px;
                 state.probe.uv = glm::vec2(u, w);
@@ -198,6 +219,7 @@ void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     if (pressed(GLFW_KEY_L)) toggleAnimation(state, session);
     if (pressed(GLFW_KEY_F5)) state.requestReloadShaders = true;
     if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
+    if (pressed(GLFW_KEY_F11)) state.requestRenderDocCapture = true;
     if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
     if (pressed(GLFW_KEY_Q, GLFW_MOD_CONTROL)) state.requestQuit = true;
 }
@@ -210,6 +232,7 @@ const char* shortcutHelp() {
            "a     world axes                 v  light-volume wireframes   l  animate lights\n"
            "click pin the pixel probe        Esc unpin\n"
            "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
+           "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"
            "F12   screenshot of the window to PNG\n"
            "Ctrl+Q quit";
 }

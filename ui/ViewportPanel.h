@@ -10,7 +10,6 @@ namespace dw::ui {
 
 struct ViewportPanel {
     bool dragging = false;
-    float dragDistance = 0.0f;
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 

@@ -27,3 +27,30 @@ void wrappedColored(const ImVec4& color, const std::string& text) {
 }
 
 }  // namespace dw::ui
+
+namespace dw::ui {
+
+bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra) {
+    return ImGui::Begin(title, open,
+                        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                            ImGuiWindowFlags_NoSavedSettings | extra);
+}
+
+void sameLineIfFits(float width) {
+    const float right = ImGui::GetWindowContentRegionMax().x + ImGui::GetWindowPos().x;
+    ImGui::SameLine();
+    if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+}
+
+void clippedText(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
+        ImGui::TextUnformatted(text.c_str());
+        return;
+    }
+    std::string cut = text;
+    while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) cut.pop_back();
+    ImGui::TextUnformatted((cut + "...").c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
+}  // namespace dw::ui

@@ -11,6 +11,14 @@ inline ImTextureID textureId(unsigned name) { return reinterpret_cast<ImTextureI
 // Shows a GL texture (rows bottom-up) the right way up.
 void image(unsigned texture, ImVec2 size);
 void helpMarker(const std::string& text);
+// ImGui::Begin for a panel of the workbench layout (PanelLayout): the layout
+// places and sizes it every frame, so it is neither moved nor resized by hand
+// (the gaps between panels are the splitters) nor saved in imgui.ini.
+bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra = 0);
+// SameLine when an item `width` px wide still fits on this line, else a new line.
+void sameLineIfFits(float width);
+// Text cut to `width` px with "..." and the whole text as a tooltip when cut.
+void clippedText(const std::string& text, float width);
 // Text that wraps, in a colour, for errors and reasons.
 void wrappedColored(const ImVec4& color, const std::string& text);
 extern const ImVec4 kErrorColor;

@@ -2,12 +2,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
+
 #include "ui/Widgets.h"
 
 namespace dw::ui {
 
 void MessagesPanel::draw(const char* title, bool* open, UiState& state) {
-    if (!ImGui::Begin(title, open)) {
+    if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
@@ -58,13 +61,19 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         if (ImGui::MenuItem("Wireframe (forward)", "w", v.mode == DisplayMode::Wireframe)) v.mode = DisplayMode::Wireframe;
         ImGui::Separator();
         ImGui::MenuItem("Light volumes", "v", &v.overlay.lightVolumes);
-        ImGui::MenuItem("Only the selected light", nullptr, &v.overlay.onlySelected);
+        if (ImGui::MenuItem("Volumes at the probed pixel", nullptr, v.volumes == VolumeFilter::AtProbe)) v.volumes = VolumeFilter::AtProbe;
+        if (ImGui::MenuItem("Every light's volume", nullptr, v.volumes == VolumeFilter::All)) v.volumes = VolumeFilter::All;
+        if (ImGui::MenuItem("Only the selected light", nullptr, v.volumes == VolumeFilter::Selected)) v.volumes = VolumeFilter::Selected;
         ImGui::MenuItem("World axes", "a", &v.overlay.axes);
         ImGui::Separator();
         if (ImGui::MenuItem("Orbit camera", "f", v.camera == CameraMode::Orbit)) v.camera = CameraMode::Orbit;
         if (ImGui::MenuItem("Fly camera", "f", v.camera == CameraMode::Fly)) v.camera = CameraMode::Fly;
         ImGui::Separator();
         if (ImGui::MenuItem("Reload changed shaders", "F5")) state.requestReloadShaders = true;
+        if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
+                                                             : state.renderdocWhy.c_str());
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
@@ -82,58 +91,101 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
     ImGui::EndMainMenuBar();
 }
 
-void WorkbenchUi::layout(UiState& state) {
-    // The default arrangement, computed from the window size: scene and
-    // lights on the left, the viewport in the middle with timings and the
-    // probe under it, inspector and parameters on the right.
+bool* WorkbenchUi::panelFlag(PanelFlags& p, const std::string& name) {
+    const std::pair<const char*, bool*> flags[] = {
+        {"Viewport", &p.viewport},    {"GPU timings", &p.timings}, {"Pixel probe", &p.probe},
+        {"Scene", &p.scene},          {"Lights", &p.lights},       {"Pass inspector", &p.inspector},
+        {"Parameters", &p.knobs},     {"Side view", &p.sideView},  {"Presets", &p.presets},
+        {"Messages", &p.messages},    {"Keys", &p.keys}};
+    for (const auto& [n, f] : flags)
+        if (name == n) return f;
+    return nullptr;
+}
+
+void WorkbenchUi::splitters(const PanelLayout::Arrangement& a) {
+    // The gaps between panels, in one window behind them that draws nothing
+    // but the bar under the mouse: a drag moves room from one neighbour to the other.
     const ImVec2 d = ImGui::GetIO().DisplaySize;
-    const float top = ImGui::GetFrameHeight();
-    const float left = std::max(d.x * 0.18f, 240.0f), right = std::max(d.x * 0.24f, 300.0f);
-    const float midW = d.x - left - right;
-    const float viewH = (d.y - top) * 0.64f, bottomH = d.y - top - viewH;
-    const ImGuiCond cond = state.resetLayout ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
-    layoutFor_ = {{"Viewport", {left, top, midW, viewH}},
-                  {"GPU timings", {left, top + viewH, midW * 0.62f, bottomH}},
-                  {"Pixel probe", {left + midW * 0.62f, top + viewH, midW * 0.38f, bottomH}},
-                  {"Scene", {0, top, left, (d.y - top) * 0.42f}},
-                  {"Lights", {0, top + (d.y - top) * 0.42f, left, (d.y - top) * 0.58f}},
-                  {"Pass inspector", {d.x - right, top, right, (d.y - top) * 0.5f}},
-                  {"Parameters", {d.x - right, top + (d.y - top) * 0.5f, right, (d.y - top) * 0.5f}},
-                  {"Side view", {left + midW * 0.55f, top + 30, midW * 0.45f, viewH * 0.7f}},
-                  {"Presets", {left + 40, top + 40, 340, 420}},
-                  {"Messages", {left + 60, top + viewH - 220, midW * 0.8f, 200}},
-                  {"Keys", {left + 80, top + 80, 640, 220}}};
-    layoutCond_ = cond;
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(d);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::Begin("##splitters", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                     ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    for (const auto& s : a.splitters) {
+        char id[48];
+        std::snprintf(id, sizeof(id), "##split%d.%d.%d.%d", s.column, s.row, s.item, s.vertical ? 1 : 0);
+        ImGui::SetCursorScreenPos(ImVec2(s.rect.x, s.rect.y));
+        ImGui::InvisibleButton(id, ImVec2(std::max(s.rect.w, 1.0f), std::max(s.rect.h, 1.0f)));
+        const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+        if (hot) {
+            ImGui::SetMouseCursor(s.vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+            ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(s.rect.x, s.rect.y), ImVec2(s.rect.x + s.rect.w, s.rect.y + s.rect.h),
+                                                      ImGui::GetColorU32(ImGuiCol_SeparatorHovered));
+        }
+        if (ImGui::IsItemActive()) {
+            const float delta = s.vertical ? ImGui::GetIO().MouseDelta.x : ImGui::GetIO().MouseDelta.y;
+            if (delta != 0.0f) layout_.drag(s, delta);
+        }
+    }
+    ImGui::End();
+}
+
+void WorkbenchUi::toast(const UiState& state) {
+    const Message* m = state.log.toast(state.time);
+    if (!m) return;
+    // Drawn over everything (not a window: it takes no room and no input).
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    const float wrap = std::min(d.x * 0.5f, 640.0f);
+    const ImVec2 size = ImGui::CalcTextSize(m->text.c_str(), nullptr, false, wrap);
+    const ImVec2 max(d.x - 12.0f, d.y - 12.0f), min(max.x - size.x - 16.0f, max.y - size.y - 12.0f);
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    dl->AddRectFilled(min, max, IM_COL32(40, 70, 45, 235), 4.0f);
+    dl->AddText(nullptr, 0.0f, ImVec2(min.x + 8.0f, min.y + 6.0f), IM_COL32(230, 245, 230, 255), m->text.c_str(), nullptr, wrap);
 }
 
 void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
     handleShortcuts(state, session, dt);
     menuBar(state, session);
-    layout(state);
-    PanelFlags& p = state.panels;
-    auto next = [&](const char* name) {
-        for (const auto& [n, r] : layoutFor_)
-            if (n == name) {
-                ImGui::SetNextWindowPos(ImVec2(r.x, r.y), layoutCond_);
-                ImGui::SetNextWindowSize(ImVec2(r.z, r.w), layoutCond_);
-            }
-    };
-    if (p.viewport) { next("Viewport"); viewport_.draw("Viewport", &p.viewport, state, session); }
-    if (p.timings) { next("GPU timings"); timings_.draw("GPU timings", &p.timings, state, session); }
-    if (p.probe) { next("Pixel probe"); probe_.draw("Pixel probe", &p.probe, state); }
-    if (p.scene) { next("Scene"); scene_.draw("Scene", &p.scene, state, session); }
-    if (p.lights) { next("Lights"); lights_.draw("Lights", &p.lights, state, session); }
-    if (p.inspector) { next("Pass inspector"); inspector_.draw("Pass inspector", &p.inspector, state, session); }
-    if (p.knobs) { next("Parameters"); knobs_.draw("Parameters", &p.knobs, session.knobs()); }
-    if (p.sideView) { next("Side view"); side_.draw("Side view", &p.sideView, state, session); }
-    if (p.presets) { next("Presets"); presets_.draw("Presets", &p.presets, state, session); }
-    if (p.messages) { next("Messages"); messages_.draw("Messages", &p.messages, state); }
-    if (p.keys) {
-        next("Keys");
-        if (ImGui::Begin("Keys", &p.keys)) ImGui::TextUnformatted(shortcutHelp());
-        ImGui::End();
-    }
+    if (state.resetLayout) layout_.reset();
     state.resetLayout = false;
+    PanelFlags& p = state.panels;
+    const ImVec2 d = ImGui::GetIO().DisplaySize;
+    const PanelLayout::Arrangement a = layout_.arrange(d.x, d.y, ImGui::GetFrameHeight(), [&](const std::string& name) {
+        const bool* f = panelFlag(p, name);
+        return f && *f;
+    });
+    splitters(a);
+    drawn_.clear();
+    for (const auto& placed : a.panels) {
+        const PanelRect& r = placed.rect;
+        ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+        const std::string& n = placed.panel;
+        bool* open = panelFlag(p, n);
+        if (n == "Viewport") viewport_.draw("Viewport", open, state, session);
+        else if (n == "GPU timings") timings_.draw("GPU timings", open, state, session);
+        else if (n == "Pixel probe") probe_.draw("Pixel probe", open, state);
+        else if (n == "Scene") scene_.draw("Scene", open, state, session);
+        else if (n == "Lights") lights_.draw("Lights", open, state, session);
+        else if (n == "Pass inspector") inspector_.draw("Pass inspector", open, state, session);
+        else if (n == "Parameters") knobs_.draw("Parameters", open, session.knobs());
+        else if (n == "Side view") side_.draw("Side view", open, state, session);
+        else if (n == "Presets") presets_.draw("Presets", open, state, session);
+        else if (n == "Messages") messages_.draw("Messages", open, state);
+        else if (n == "Keys") {
+            if (beginPanel("Keys", open)) {
+                ImGui::PushTextWrapPos(0.0f);
+                ImGui::TextUnformatted(shortcutHelp());
+                ImGui::PopTextWrapPos();
+            }
+            ImGui::End();
+        }
+        drawn_.push_back({n, r});
+    }
+    toast(state);
 }
 
 }  // namespace dw::ui

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "renderer/Error.h"
+#include "renderer/gl/Fence.h"
 
 namespace dw {
 
@@ -45,6 +46,7 @@ void PassTimer::beginFrame(std::uint64_t frame) {
 
 void PassTimer::beginPass(const std::string& name) {
     if (!inFrame_ || inPass_) throw Error("PassTimer::beginPass outside a frame or inside a pass");
+    if (isolateCpu_) gl::waitForGpu();
     Span s;
     s.name = name;
     s.begin = acquire();

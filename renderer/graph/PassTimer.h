@@ -69,6 +69,12 @@ public:
     // the history on screen holds still.
     void setPaused(bool paused) { paused_ = paused; }
     bool paused() const { return paused_; }
+    // Own CPU time per pass: before each pass starts, wait (on a fence) until
+    // the GPU has finished everything before it, so a pass's CPU time is what
+    // it spends itself, not a wait for earlier GPU work that the driver
+    // happens to charge to it (e.g. a read-back). Slows the frame; off by default.
+    void setIsolateCpu(bool on) { isolateCpu_ = on; }
+    bool isolateCpu() const { return isolateCpu_; }
     // The recorded history as CSV: frame, series, gpu_ms, cpu_ms.
     std::string csv() const;
     // Writes csv() to `path`; throws FileError.
@@ -95,6 +101,7 @@ private:
     bool inPass_ = false;
     bool inSubSpan_ = false;
     bool paused_ = false;
+    bool isolateCpu_ = false;
     size_t historyLength_ = kHistory;
     std::string passName_;
     size_t passIndex_ = 0;

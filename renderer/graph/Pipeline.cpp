@@ -73,6 +73,12 @@ void Pipeline::setScene(const Scene& scene) {
     scene_ = &scene;
 }
 
+void Pipeline::bindCamera(const Camera& camera) {
+    camera_ = cameraUniforms(camera, width_, height_);
+    cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
+    cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+}
+
 void Pipeline::resize(int width, int height) {
     if (width <= 0 || height <= 0) throw Error("render size must be positive");
     if (width == width_ && height == height_) return;

@@ -83,6 +83,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     const CameraUniforms& lastCamera() const { return camera_; }
+    // Sets and binds the camera uniforms without rendering a frame: for the
+    // views drawn outside the passes (the workbench's forward preview and
+    // overlays) when no deferred frame runs.
+    void bindCamera(const Camera& camera);
     const GpuScene& gpuScene() const { return gpu_; }
     static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
     // The output "final" stands for under the current knobs.

@@ -9,6 +9,14 @@
 
 namespace dw {
 
+namespace {
+
+bool inSubset(const OverlaySettings& s, size_t light) {
+    return !s.onlySubset || std::find(s.subset.begin(), s.subset.end(), static_cast<int>(light)) != s.subset.end();
+}
+
+}  // namespace
+
 void ViewportOverlay::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "overlay/lines.vert", .fragment = "overlay/lines.frag"});
     sphere_.create(unitSphereVolume());
@@ -79,7 +87,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
             for (size_t i = 0; i < scene.lights.size(); ++i) {
                 const Light& l = scene.lights[i];
                 const bool selected = static_cast<int>(i) == s.selectedLight;
-                if (!l.enabled || (s.onlySelected && !selected)) continue;
+                if (!l.enabled || (s.onlySelected && !selected) || !inSubset(s, i)) continue;
                 const LightVolume v = computeLightVolume(l, s.threshold);
                 if (v.shape != VolumeShape::Sphere && v.shape != VolumeShape::Cone) continue;
                 glm::vec4 c = lightColor(l.intensity, selected);
@@ -94,7 +102,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
             for (size_t i = 0; i < scene.lights.size(); ++i) {
                 const Light& l = scene.lights[i];
                 const bool selected = static_cast<int>(i) == s.selectedLight;
-                if (l.type == LightType::Directional || (s.onlySelected && !selected)) continue;
+                if (l.type == LightType::Directional || (s.onlySelected && !selected) || !inSubset(s, i)) continue;
                 const glm::vec3 p = l.position;
                 std::vector<glm::vec3> cross = {p - glm::vec3(size, 0, 0), p + glm::vec3(size, 0, 0),
                                                 p - glm::vec3(0, size, 0), p + glm::vec3(0, size, 0),

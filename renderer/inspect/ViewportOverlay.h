@@ -22,6 +22,10 @@ struct OverlaySettings {
     bool lightVolumes = false;
     bool onlySelected = false;
     int selectedLight = -1;
+    // When set, only these lights' volumes and markers (the probed pixel's
+    // lights, lightsCovering): the readable default over a scene of many lights.
+    bool onlySubset = false;
+    std::vector<int> subset;
     bool axes = false;
     float threshold = 1.0f / 255.0f;  // lighting.threshold, for the volume sizes
 };

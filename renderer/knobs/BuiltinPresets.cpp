@@ -2,6 +2,9 @@
 // levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4, and
 // light-volume thresholds. Render size is not a knob (it follows the window,
 // or render --size), so the seed's resolutions are only named in descriptions.
+// The quality levels cover every knob group (what they do not name goes back
+// to its default); the light-volume presets cover only "lighting", so they
+// can be combined with a quality level.
 #include "renderer/knobs/Preset.h"
 
 namespace dw {
@@ -9,11 +12,13 @@ namespace dw {
 const std::vector<Preset>& builtinPresets() {
     static const std::vector<Preset> presets = [] {
         std::vector<Preset> v;
-        auto add = [&](std::string name, std::string description, std::vector<std::pair<std::string, std::string>> knobs) {
+        auto add = [&](std::string name, std::string description, std::vector<std::pair<std::string, std::string>> knobs,
+                       std::vector<std::string> groups = {}) {
             Preset p;
             p.name = std::move(name);
             p.description = std::move(description);
             p.knobs = std::move(knobs);
+            p.groups = std::move(groups);
             v.push_back(std::move(p));
         };
         // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
@@ -37,11 +42,11 @@ const std::vector<Preset>& builtinPresets() {
                  {"ssao.radius", ssao[i][2]}, {"ssao_blur.mode", "bilateral"}, {"ssao_blur.width", ssao[i][3]}});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
-            {{"lighting.threshold", "0.0009765625"}});
+            {{"lighting.threshold", "0.0009765625"}}, {"lighting"});
         add("lights: 8-bit (threshold 1/255)", "seed 001: light volumes end at 1/255, one step of an 8-bit display",
-            {{"lighting.threshold", "0.00392156862745098"}});
-        add("lights: coarse (threshold 5/256)", "seed 003: light volumes end at 5/256", {{"lighting.threshold", "0.01953125"}});
-        add("lights: brute force", "every light over every pixel", {{"lighting.strategy", "fullscreen"}});
+            {{"lighting.threshold", "0.003921569"}}, {"lighting"});
+        add("lights: coarse (threshold 5/256)", "seed 003: light volumes end at 5/256", {{"lighting.threshold", "0.01953125"}}, {"lighting"});
+        add("lights: brute force", "every light over every pixel", {{"lighting.strategy", "fullscreen"}}, {"lighting"});
         return v;
     }();
     return presets;

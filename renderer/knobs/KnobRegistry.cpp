@@ -1,6 +1,7 @@
 #include "renderer/knobs/KnobRegistry.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -31,17 +32,27 @@ std::string trimmed(const std::string& s) {
     return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
+// The shortest text that reads back as the same float (std::to_chars without a
+// precision is the shortest round trip), so presets, --dump-knobs and the
+// panels never show noise such as 0.0039215688593685627 or lose a digit.
 std::string formatNumber(double v) {
-    std::ostringstream ss;
-    ss.precision(6);
-    ss << v;
-    return ss.str();
+    std::array<char, 64> buf{};
+    const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), static_cast<float>(v));
+    if (ec != std::errc()) return std::to_string(v);
+    return std::string(buf.data(), end);
+}
+
+// Float knobs hold float values (passes read them as float): the value a
+// preset writes is then exactly the value it reads back.
+double toKnobPrecision(KnobType type, double v) {
+    return type == KnobType::Float ? static_cast<double>(static_cast<float>(v)) : v;
 }
 
 }  // namespace
 
 int KnobRegistry::add(KnobSpec spec) {
     if (find(spec.name)) throw Error("knob '" + spec.name + "' is declared twice");
+    spec.defaultValue = toKnobPrecision(spec.type, spec.defaultValue);
     specs_.push_back(std::move(spec));
     values_.push_back(specs_.back().defaultValue);
     return static_cast<int>(specs_.size() - 1);
@@ -160,7 +171,7 @@ void KnobRegistry::set(int id, double v) {
     const KnobSpec& s = specs_[id];
     if (!std::isfinite(v)) v = s.defaultValue;
     if (s.type != KnobType::Float) v = std::round(v);
-    v = std::clamp(v, s.minValue, s.maxValue);
+    v = toKnobPrecision(s.type, std::clamp(v, s.minValue, s.maxValue));
     if (values_[id] != v) {
         values_[id] = v;
         ++generation_;

@@ -1,7 +1,8 @@
 #include "renderer/knobs/Preset.h"
 
-#include <unistd.h>
-
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -20,7 +21,28 @@ namespace {
 
 constexpr const char* kFormat = "deferred-workbench preset";
 
-json vec3(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+// A float as the double whose shortest text is the float's shortest text:
+// -14 stays -14 in the file, not -13.999999046325684.
+double exactFloat(float f) {
+    std::array<char, 32> buf{};
+    const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), f);
+    return ec == std::errc() ? std::strtod(std::string(buf.data(), end).c_str(), nullptr) : f;
+}
+
+json vec3(const glm::vec3& v) { return json::array({exactFloat(v.x), exactFloat(v.y), exactFloat(v.z)}); }
+
+// Knob text as a JSON value: booleans, integers as integers, other numbers
+// as numbers, enum choices as strings.
+json knobValue(const std::string& v) {
+    if (v == "true" || v == "false") return v == "true";
+    long long i = 0;
+    if (auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), i); ec == std::errc() && p == v.data() + v.size())
+        return i;
+    double d = 0.0;
+    if (auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), d); ec == std::errc() && p == v.data() + v.size())
+        return d;
+    return v;
+}
 
 glm::vec3 readVec3(const json& j, const std::string& what, const std::string& source) {
     if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
@@ -54,21 +76,14 @@ std::string Preset::toJson() const {
     j["name"] = name;
     if (!description.empty()) j["description"] = description;
     if (!scene.empty()) j["scene"] = scene;
+    if (!groups.empty()) j["groups"] = groups;
     if (camera) {
         j["camera"] = {{"pos", vec3(camera->position)}, {"look-at", vec3(camera->target)}, {"up", vec3(camera->up)},
-                       {"fov", camera->fovYDegrees}, {"near", camera->nearPlane}, {"far", camera->farPlane}};
+                       {"fov", exactFloat(camera->fovYDegrees)}, {"near", exactFloat(camera->nearPlane)},
+                       {"far", exactFloat(camera->farPlane)}};
     }
     json k = json::object();
-    for (const auto& [n, v] : knobs) {
-        // Numbers and booleans as JSON values, enum choices as strings.
-        if (v == "true" || v == "false") k[n] = v == "true";
-        else {
-            char* end = nullptr;
-            const double d = std::strtod(v.c_str(), &end);
-            if (end && *end == '\0' && !v.empty()) k[n] = d;
-            else k[n] = v;
-        }
-    }
+    for (const auto& [n, v] : knobs) k[n] = knobValue(v);
     j["knobs"] = k;
     return j.dump(2) + "\n";
 }
@@ -90,6 +105,14 @@ Preset Preset::fromJson(const std::string& text, const std::string& source) {
     if (j.contains("scene")) {
         if (!j["scene"].is_string()) throw FileError(source, "\"scene\" must be a string");
         p.scene = j["scene"].get<std::string>();
+    }
+    if (j.contains("groups")) {
+        const json& g = j["groups"];
+        if (!g.is_array()) throw FileError(source, "\"groups\" must be an array of knob group names");
+        for (const auto& e : g) {
+            if (!e.is_string()) throw FileError(source, "\"groups\" must be an array of knob group names");
+            p.groups.push_back(e.get<std::string>());
+        }
     }
     if (j.contains("camera")) {
         const json& c = j["camera"];
@@ -113,34 +136,27 @@ Preset Preset::load(const std::string& path) {
     return fromJson(readWholeFile(path, "preset not found", "cannot read preset"), path);
 }
 
-void Preset::save(const std::string& path) const {
-    const fs::path target(path);
-    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    if (!fs::is_directory(dir)) throw FileError(path, "cannot save: folder " + dir.string() + " does not exist");
-    if (fs::is_directory(target)) throw FileError(path, "cannot save: a folder has that name");
-    const std::string text = toJson();
-    const fs::path tmp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw FileError(path, "cannot save: cannot write in " + dir.string());
-        out << text;
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw FileError(path, "cannot save: writing failed (disk full?)");
+void Preset::save(const std::string& path) const { writeFileAtomically(path, toJson()); }
+
+std::string Preset::groupOf(const std::string& knobName) { return knobName.substr(0, knobName.find('.')); }
+
+bool Preset::covers(const std::string& knobName) const {
+    return groups.empty() || std::find(groups.begin(), groups.end(), groupOf(knobName)) != groups.end();
+}
+
+Preset::ApplyReport Preset::applyOver(KnobRegistry& registry,
+                                      const std::vector<std::pair<std::string, std::string>>& sceneSettings) const {
+    for (size_t i = 0; i < registry.size(); ++i)
+        if (covers(registry.spec(static_cast<int>(i)).name)) registry.reset(static_cast<int>(i));
+    for (const auto& [n, v] : sceneSettings) {
+        if (!covers(n)) continue;
+        try {
+            registry.setFromString(n, v);
+        } catch (const Error&) {
+            // The scene's load already reported its bad settings.
         }
     }
-    if (FILE* f = std::fopen(tmp.c_str(), "rb")) {
-        ::fsync(fileno(f));
-        std::fclose(f);
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw FileError(path, "cannot save: " + ec.message());
-    }
+    return applyKnobs(registry);
 }
 
 Preset::ApplyReport Preset::applyKnobs(KnobRegistry& registry) const {

@@ -147,4 +147,18 @@ const VolumeMesh& unitConeVolume() {
     return mesh;
 }
 
+std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold) {
+    std::vector<int> out;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const Light& l = lights[i];
+        if (!l.enabled || l.type == LightType::Directional) continue;
+        const LightVolume v = computeLightVolume(l, threshold);
+        const bool inside = v.shape == VolumeShape::FullScreen ||
+                            (v.shape == VolumeShape::Sphere && unitSphereVolume().contains(v.transform, p)) ||
+                            (v.shape == VolumeShape::Cone && unitConeVolume().contains(v.transform, p));
+        if (inside) out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
+
 }  // namespace dw

@@ -34,6 +34,13 @@ struct VolumeMesh {
     bool contains(const glm::mat4& transform, const glm::vec3& p, float epsilon = 1e-4f) const;
 };
 
+// The lights whose volume (as computeLightVolume builds it for `threshold`,
+// the mesh the stencil test rasterises) contains the world point `p`: the
+// point and spot lights a volume strategy evaluates there. Enabled lights
+// only; directional lights (everywhere) are not listed. Indices into
+// scene.lights, in order.
+std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold);
+
 // Icosphere whose faces lie outside the unit sphere (inradius 1).
 const VolumeMesh& unitSphereVolume();
 // Apex at the origin, axis +Z, height 1, enclosing the circular cone of base radius 1.

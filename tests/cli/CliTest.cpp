@@ -1,6 +1,7 @@
 // The binary as a user runs it: exit codes, one-line errors naming the file,
 // and the files it writes.
 #include <gtest/gtest.h>
+#include <dlfcn.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -325,4 +326,28 @@ TEST(Cli, TimingsCountOnlyTheFramesAfterWarmup) {
     while (std::getline(c, line)) total = line;
     EXPECT_EQ(total.rfind("frame,total,1,2,", 0), 0u) << total;
     EXPECT_EQ(run("render --scene default --frames 3 --warmup -1 --timings --out x.png").code, 2);
+}
+
+// render --renderdoc-capture: one RenderDoc capture of the last frame, when
+// Debian's librenderdoc is installed (scripts/test.sh installs it); a clear
+// error otherwise.
+TEST(Cli, RenderdocCaptureWritesANonEmptyCaptureFile) {
+    const fs::path dir = test::tempDir() / "renderdoc-cli";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    void* lib = dlopen("librenderdoc.so", RTLD_LAZY | RTLD_LOCAL);
+    const Result r = run("render --scene spheres --size 64x36 --out " + (dir / "f.png").string() + " --renderdoc-capture " +
+                         (dir / "frame.rdc").string());
+    if (!lib) {
+        EXPECT_EQ(r.code, 1);
+        EXPECT_NE(r.err.find("librenderdoc"), std::string::npos) << r.err;
+        GTEST_SKIP() << "librenderdoc.so is not installed (Debian package librenderdoc)";
+    }
+    dlclose(lib);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const fs::path capture = dir / "frame_capture.rdc";
+    ASSERT_TRUE(fs::exists(capture)) << r.out;
+    EXPECT_GT(fs::file_size(capture), 10000u);
+    EXPECT_NE(r.out.find(capture.string()), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir / "f.png"));
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
+#include <dlfcn.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -16,7 +17,11 @@
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ScenePanel.h"
+#include "ui/TimingsPanel.h"
+#include "ui/PanelLayout.h"
 #include "ui/WorkbenchUi.h"
+
+#include <nlohmann/json.hpp>
 
 using namespace dw;
 namespace fs = std::filesystem;
@@ -142,28 +147,165 @@ TEST(Gui, TheInspectorListsEveryBufferOfListBuffers) {
     EXPECT_EQ(listed, cli);
 }
 
-TEST(Gui, EveryPanelDrawsWithEveryPanelOpen) {
+namespace {
+
+// Where ImGui put every open panel: inside the window, below the menu bar, none overlapping.
+void expectPanelsTileTheWindow(const std::vector<std::pair<std::string, ui::PanelRect>>& panels, float w, float h,
+                               float top, const std::string& when) {
+    for (const auto& [name, r] : panels) {
+        EXPECT_GE(r.x, 0.0f) << name << " " << when;
+        EXPECT_GE(r.y, top) << name << " " << when;
+        EXPECT_LE(r.x + r.w, w) << name << " " << when;
+        EXPECT_LE(r.y + r.h, h) << name << " " << when;
+        EXPECT_GE(r.w, 100.0f) << name << " " << when;
+        EXPECT_GE(r.h, 60.0f) << name << " " << when;
+    }
+    for (size_t i = 0; i < panels.size(); ++i)
+        for (size_t j = i + 1; j < panels.size(); ++j) {
+            const ui::PanelRect &a = panels[i].second, &b = panels[j].second;
+            EXPECT_FALSE(a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h)
+                << panels[i].first << " overlaps " << panels[j].first << " " << when;
+        }
+}
+
+// The panels as the scripted mode reports them (--layout-out).
+struct LayoutReport {
+    float width = 0, height = 0, top = 0;
+    std::vector<std::pair<std::string, ui::PanelRect>> panels;
+    bool pinned = false;
+    glm::vec3 camera{0.0f};
+    float zoom = 1.0f;
+    glm::ivec2 renderSize{0}, wantedSize{0};
+    int frames = 0, framesRendered = 0;
+    std::vector<std::string> renderdocCaptures;
+    const ui::PanelRect* find(const std::string& n) const {
+        for (const auto& [name, r] : panels)
+            if (name == n) return &r;
+        return nullptr;
+    }
+};
+
+LayoutReport readLayoutReport(const fs::path& p) {
+    std::ifstream in(p);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    LayoutReport r;
+    r.width = j["display"][0].get<float>();
+    r.height = j["display"][1].get<float>();
+    r.top = j["menu_bar_height"].get<float>();
+    for (const auto& e : j["panels"])
+        r.panels.push_back({e["name"].get<std::string>(), {e["x"].get<float>(), e["y"].get<float>(), e["w"].get<float>(), e["h"].get<float>()}});
+    r.pinned = j["probe"]["pinned"].get<bool>();
+    for (int i = 0; i < 3; ++i) r.camera[i] = j["camera"]["position"][i].get<float>();
+    r.zoom = j["viewport"]["zoom"].get<float>();
+    r.renderSize = {j["render_size"][0].get<int>(), j["render_size"][1].get<int>()};
+    r.wantedSize = {j["wanted_size"][0].get<int>(), j["wanted_size"][1].get<int>()};
+    r.frames = j["frames"].get<int>();
+    r.framesRendered = j["frames_rendered"].get<int>();
+    r.renderdocCaptures = j["renderdoc_captures"].get<std::vector<std::string>>();
+    return r;
+}
+
+// The workbench under Xvfb at `size`, replaying `events` (ScriptedInput).
+LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events,
+                         const std::string& extra = "") {
+    const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
+    const Result r = shell("xvfb-run -a -s '-screen 0 1700x1000x24' " + std::string(DW_WORKBENCH_BINARY) +
+                           " --scene spheres --set ssao.enabled=false --size " + size + " --frames " + std::to_string(frames) +
+                           " --events " + ev.string() + " --layout-out " + out.string() + " " + extra);
+    EXPECT_EQ(r.code, 0) << r.out;
+    return r.code == 0 ? readLayoutReport(out) : LayoutReport{};
+}
+
+std::vector<std::pair<std::string, ui::PanelRect>> expectedLayout(const LayoutReport& r) {
+    std::set<std::string> open;
+    for (const auto& [n, rect] : r.panels) open.insert(n);
+    std::vector<std::pair<std::string, ui::PanelRect>> v;
+    for (const auto& p : ui::PanelLayout().arrange(r.width, r.height, r.top, [&](const std::string& n) { return open.count(n) > 0; }).panels)
+        v.push_back({p.panel, p.rect});
+    return v;
+}
+
+}  // namespace
+
+TEST(Gui, EveryPanelFitsTheWindowWithoutOverlapAt1024x640And1600x900) {
     auto session = test::makeSession(64, 36);
     session->loadScene("street");
-    HeadlessImGui imgui;
-    ui::UiState state;
-    state.panels = {true, true, true, true, true, true, true, true, true, true, true};
-    state.presetsDir = (test::tempDir() / "ui-presets").string();
-    state.selectedLight = 2;
-    ui::WorkbenchUi workbench;
-    for (int i = 0; i < 3; ++i) {
-        state.report = session->render();
-        state.renderSize = {64, 36};
-        state.probe.result = probePixel(session->pipeline(), 30, 20);
-        state.probe.pinned = true;
-        imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
-        ++state.frame;
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}, {1100.0f, 650.0f}}) {
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;
+        state.panels = {true, true, true, true, true, true, true, true, true, true, true};
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        state.selectedLight = 2;
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            state.renderSize = {64, 36};
+            state.probe.result = probePixel(session->pipeline(), 30, 20);
+            state.probe.pinned = true;
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        // ImGui's own record of where each panel went, not the layout's plan.
+        std::vector<std::pair<std::string, ui::PanelRect>> drawn;
+        for (const auto& d : workbench.drawnPanels()) {
+            ImGuiWindow* win = ImGui::FindWindowByName(d.name.c_str());
+            ASSERT_NE(win, nullptr) << d.name;
+            drawn.push_back({d.name, {win->Pos.x, win->Pos.y, win->Size.x, win->Size.y}});
+        }
+        EXPECT_EQ(drawn.size(), 11u);
+        expectPanelsTileTheWindow(drawn, w, h, ImGui::GetFrameHeight(), std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)));
     }
-    EXPECT_GT(ImGui::GetDrawData()->CmdListsCount, 8);
-    // The layout put the viewport where the screenshot test expects it.
-    ImGuiWindow* viewport = ImGui::FindWindowByName("Viewport");
-    ASSERT_NE(viewport, nullptr);
-    EXPECT_NEAR(viewport->Pos.x, 288.0f, 1.0f);
+}
+
+TEST(Gui, UnderXvfbTheLayoutFollowsAResizeDownAndBackAndADragOrbitsWithoutPinningTheProbe) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport small = runScripted("layout-1024", "1024x640", 3, "");
+    EXPECT_EQ(small.width, 1024.0f);
+    EXPECT_EQ(small.panels.size(), 9u);  // the default: all but the side view and the keys
+    expectPanelsTileTheWindow(small.panels, small.width, small.height, small.top, "1024x640");
+
+    // Start at 1600x900, orbit with a drag over the viewport, shrink the
+    // window, grow it back: the layout is the 1600x900 one again.
+    const LayoutReport start = runScripted("layout-1600", "1600x900", 3, "");
+    const LayoutReport back = runScripted("layout-back", "1600x900", 16,
+                                          "1 drag 700 300 820 330 3\n8 resize 1024 640\n11 resize 1600 900\n");
+    EXPECT_EQ(back.width, 1600.0f);
+    EXPECT_EQ(back.height, 900.0f);
+    expectPanelsTileTheWindow(back.panels, back.width, back.height, back.top, "after 1600 -> 1024 -> 1600");
+    const auto want = expectedLayout(back);
+    ASSERT_EQ(back.panels.size(), want.size());
+    for (size_t i = 0; i < want.size(); ++i) {
+        const ui::PanelRect* got = back.find(want[i].first);
+        ASSERT_NE(got, nullptr) << want[i].first;
+        EXPECT_NEAR(got->x, want[i].second.x, 0.5f) << want[i].first;
+        EXPECT_NEAR(got->w, want[i].second.w, 0.5f) << want[i].first;
+        EXPECT_NEAR(got->h, want[i].second.h, 0.5f) << want[i].first;
+    }
+    EXPECT_FALSE(back.pinned) << "a drag to orbit pinned the probe";
+    EXPECT_GT(glm::length(back.camera - start.camera), 0.1f) << "the drag did not orbit the camera";
+}
+
+TEST(Gui, UnderXvfbAClickPinsTheProbeASplitterDragResizesBothNeighboursAndCtrlWheelZoomsTheImage) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport before = runScripted("split-before", "1600x900", 2, "");
+    const ui::PanelRect* scene = before.find("Scene");
+    const ui::PanelRect* view = before.find("Viewport");
+    ASSERT_TRUE(scene && view);
+    // The gap between the left column and the viewport, dragged 100 px right; then a click in the viewport.
+    const float gapX = scene->x + scene->w + ui::PanelLayout::kGap * 0.5f;
+    const LayoutReport after = runScripted(
+        "split-after", "1600x900", 16,
+        "1 drag " + std::to_string(gapX) + " 400 " + std::to_string(gapX + 100) + " 400 3\n9 click 800 300\n"
+        "11 ctrl down\n12 wheel 2\n13 ctrl up\n");
+    expectPanelsTileTheWindow(after.panels, after.width, after.height, after.top, "after a splitter drag");
+    ASSERT_TRUE(after.find("Scene") && after.find("Viewport"));
+    EXPECT_NEAR(after.find("Scene")->w, scene->w + 100.0f, 2.0f);
+    EXPECT_NEAR(after.find("Viewport")->x, view->x + 100.0f, 2.0f);
+    EXPECT_NEAR(after.find("Viewport")->w, view->w - 100.0f, 2.0f);
+    EXPECT_TRUE(after.pinned) << "a click without a drag did not pin the probe";
+    // Ctrl+wheel zooms the image (1.25 a notch), not the camera.
+    EXPECT_NEAR(after.zoom, 1.5625f, 1e-4f);
 }
 
 TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
@@ -265,4 +407,109 @@ TEST(Gui, OpeningAnotherSceneResetsTheKnobsAndKeepsStartUpPresetAndSet) {
     EXPECT_FLOAT_EQ(static_cast<float>(knob(*session, "bloom.intensity")), 0.6f);
     EXPECT_EQ(knob(*session, "ssao.samples"), 16.0);
     EXPECT_EQ(knob(*session, "fxaa.enabled"), 0.0);
+}
+
+// A failed action's banner goes away when that action later succeeds; files
+// written show a toast with their absolute path for a few seconds.
+TEST(Gui, AnErrorBannerClearsWhenItsActionSucceedsAndSavesShowAToast) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    state.time = 10.0;
+    EXPECT_FALSE(ui::openScene(state, *session, "/nowhere/scene.json"));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("/nowhere/scene.json"), std::string::npos);
+    // Another action's success leaves it.
+    state.presetsDir = (test::tempDir() / "toast-presets").string();
+    fs::create_directories(state.presetsDir);
+    const std::string path = state.presetsDir + "/toast.json";
+    ASSERT_TRUE(ui::savePreset(state, *session, path, "toast"));
+    ASSERT_NE(state.log.banner(), nullptr);
+    ASSERT_NE(state.log.toast(state.time + 1.0), nullptr);
+    EXPECT_NE(state.log.toast(state.time + 1.0)->text.find(fs::absolute(path).string()), std::string::npos);
+    EXPECT_EQ(state.log.toast(state.time + ui::MessageLog::kToastSeconds + 1.0), nullptr);
+    EXPECT_EQ(state.activePreset, "toast");
+    EXPECT_FALSE(ui::presetModified(state, *session));
+    session->knobs().setFromString("ssao.samples", "4");
+    EXPECT_TRUE(ui::presetModified(state, *session));
+    // Opening a scene that exists clears the scene error.
+    EXPECT_TRUE(ui::openScene(state, *session, "spheres"));
+    EXPECT_EQ(state.log.banner(), nullptr);
+}
+
+// The timings panel: a knob change is named and costed per pass from the
+// frames before and after it; a scene change starts the statistics over.
+TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("spheres");
+    HeadlessImGui imgui;
+    ui::UiState state;
+    state.renderSize = {64, 36};
+    ui::TimingsPanel panel;
+    bool open = true;
+    auto frame = [&] {
+        state.report = session->render();
+        session->pipeline().timer().collect(true);
+        imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    };
+    for (int i = 0; i < 6; ++i) frame();
+    EXPECT_FALSE(panel.cost.active());
+    session->knobs().setFromString("ssao.samples", "64");
+    for (int i = 0; i < 8; ++i) frame();
+    ASSERT_TRUE(panel.cost.active());
+    EXPECT_EQ(panel.cost.what(), "ssao.samples 16 -> 64");
+    const auto costs = panel.cost.costs(session->pipeline().timer());
+    const auto ssao = std::find_if(costs.begin(), costs.end(), [](const PassChangeCost& c) { return c.pass == "ssao"; });
+    ASSERT_NE(ssao, costs.end());
+    EXPECT_GE(ssao->beforeFrames, 4);
+    EXPECT_GE(ssao->afterFrames, 3);
+    EXPECT_GT(ssao->afterMs, 0.0);
+    // Another scene: the history and the change start over.
+    session->loadScene("default");
+    frame();
+    EXPECT_FALSE(panel.cost.active());
+    const PassTimer::Series* total = session->pipeline().timer().find(PassTimer::kFrameSeries);
+    EXPECT_TRUE(total == nullptr || total->samples.empty()) << "frames of the previous scene are still counted";
+    // Axis ticks: nice linear steps, decades on a log axis.
+    EXPECT_EQ(ui::axisTicks(0.0f, 47.0f, false, 5), (std::vector<float>{0, 10, 20, 30, 40}));
+    EXPECT_EQ(ui::axisTicks(0.05f, 300.0f, true, 6), (std::vector<float>{0.1f, 1.0f, 10.0f, 100.0f}));
+}
+
+// Interactive on a slow GL: an idle window renders no frames after the size
+// settles, recording renders every frame, a drag renders while it moves the
+// camera, and the resolution scale divides the panel's size.
+TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheScaleHalvesTheSize) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport idle = runScripted("idle", "1024x640", 24, "");
+    EXPECT_EQ(idle.frames, 24);
+    EXPECT_LE(idle.framesRendered, 4) << "an idle window kept rendering";
+    EXPECT_GE(idle.framesRendered, 1);
+    const LayoutReport moved = runScripted("moved", "1024x640", 24, "4 drag 500 250 600 260 6\n");
+    EXPECT_GE(moved.framesRendered, idle.framesRendered + 4) << "a drag that orbits the camera did not render";
+    const LayoutReport recording = runScripted("record", "1024x640", 12, "", "--record --resolution 1/2");
+    EXPECT_EQ(recording.framesRendered, 12);
+    EXPECT_NEAR(recording.renderSize.x, recording.wantedSize.x / 2.0, 1.0);
+    EXPECT_NEAR(recording.renderSize.y, recording.wantedSize.y / 2.0, 1.0);
+    // The automatic scale steps down over the target, up well under it, and stays between 1/8 and 1.
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 300.0f, 100.0f), 0.8f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 30.0f, 100.0f), 0.625f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 70.0f, 100.0f), 0.5f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(0.125f, 900.0f, 100.0f), 0.125f);
+    EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 1.0f, 100.0f), 1.0f);
+}
+
+// gui --renderdoc: F11 (or Render > Capture frame) writes a RenderDoc capture
+// of the next frame to the export folder, when librenderdoc is installed.
+TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    void* lib = dlopen("librenderdoc.so", RTLD_LAZY | RTLD_LOCAL);
+    if (!lib) GTEST_SKIP() << "librenderdoc.so is not installed (Debian package librenderdoc)";
+    dlclose(lib);
+    const fs::path dir = test::tempDir() / "renderdoc-gui";
+    fs::remove_all(dir);
+    const LayoutReport r = runScripted("renderdoc", "1024x640", 8, "2 key F11\n", "--renderdoc --export-dir " + dir.string());
+    ASSERT_EQ(r.renderdocCaptures.size(), 1u);
+    EXPECT_EQ(fs::path(r.renderdocCaptures[0]).parent_path(), dir);
+    ASSERT_TRUE(fs::exists(r.renderdocCaptures[0]));
+    EXPECT_GT(fs::file_size(r.renderdocCaptures[0]), 10000u);
 }

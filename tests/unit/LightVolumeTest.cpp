@@ -141,3 +141,27 @@ TEST(LightVolumeMesh, WideSpotsUseTheSphereAndDirectionalLightsAreFullScreen) {
     off.enabled = false;
     EXPECT_EQ(computeLightVolume(off, 1.0 / 255.0).shape, VolumeShape::Culled);
 }
+
+// The probe's "lights at this pixel": the point and spot lights whose volume
+// mesh contains the surface point, as the stencil test would find them.
+TEST(LightVolume, LightsCoveringAPointAreThoseWhoseVolumeMeshContainsIt) {
+    std::vector<Light> lights(5);
+    for (auto& l : lights) l.attenuation = {1.0f, 0.0f, 1.0f};  // radius sqrt(255) - ... at 1/255
+    lights[0].position = {0, 0, 0};
+    lights[1].position = {100, 0, 0};  // far away
+    lights[2].position = {3, 0, 0};
+    lights[2].enabled = false;         // off: never listed
+    lights[3].type = LightType::Directional;
+    lights[4].type = LightType::Spot;
+    lights[4].position = {0, 5, 0};
+    lights[4].direction = {0, -1, 0};
+    lights[4].cutoffDegrees = 20.0f;
+    const glm::vec3 p(1.0f, 0.0f, 0.0f);
+    const double threshold = 1.0 / 255.0;
+    ASSERT_GT(computeLightVolume(lights[0], threshold).radius, 5.0);
+    EXPECT_EQ(lightsCovering(lights, p, threshold), (std::vector<int>{0, 4}));
+    // Outside the spot's cone: not listed.
+    EXPECT_EQ(lightsCovering(lights, glm::vec3(6.0f, 0.0f, 0.0f), threshold), (std::vector<int>{0}));
+    // A higher threshold shrinks the volumes until none contains the point.
+    EXPECT_TRUE(lightsCovering(lights, glm::vec3(4.0f, 3.0f, 0.0f), 0.2).empty());
+}

@@ -130,3 +130,91 @@ TEST(Preset, BuiltinPresetsUseOnlyDeclaredKnobsWithValidValues) {
         EXPECT_EQ(findBuiltinPreset(p.name), &p);
     }
 }
+
+TEST(Preset, SaveLoadSaveIsByteIdenticalAndNothingReadsBackChanged) {
+    KnobRegistry knobs;
+    Pipeline declarations(knobs);
+    changeEveryKnob(knobs);
+    // Values a slider or an orbit leaves behind: floats whose double text is noisy.
+    knobs.set(*knobs.find("lighting.threshold"), 1.0 / 255.0);
+    Camera cam;
+    cam.position = {0.1f, -13.999999f, 1.0f / 3.0f};
+    cam.target = {2.0f / 7.0f, 0.5f, 1e-7f};
+    cam.fovYDegrees = 47.123456f;
+    cam.nearPlane = 0.1f;
+    cam.farPlane = 1234.5677f;
+    const fs::path first = test::tempDir() / "exact-1.json", second = test::tempDir() / "exact-2.json";
+    Preset::capture("exact", knobs, cam, "builtin:street").save(first.string());
+
+    KnobRegistry reloaded;
+    Pipeline declarations2(reloaded);
+    const Preset p = Preset::load(first.string());
+    EXPECT_TRUE(p.applyKnobs(reloaded).ignored.empty());
+    for (size_t i = 0; i < knobs.size(); ++i)
+        EXPECT_EQ(reloaded.value(static_cast<int>(i)), knobs.value(static_cast<int>(i))) << knobs.spec(static_cast<int>(i)).name;
+    ASSERT_TRUE(p.camera);
+    EXPECT_EQ(p.camera->position, cam.position);
+    EXPECT_EQ(p.camera->target, cam.target);
+    EXPECT_EQ(p.camera->fovYDegrees, cam.fovYDegrees);
+    EXPECT_EQ(p.camera->farPlane, cam.farPlane);
+    Preset::capture("exact", reloaded, *p.camera, "builtin:street").save(second.string());
+    EXPECT_EQ(readAll(first), readAll(second));
+
+    // Integers as integers, floats in their shortest form.
+    const std::string text = readAll(first);
+    const int samples = static_cast<int>(knobs.value(*knobs.find("ssao.samples")));
+    EXPECT_NE(text.find("\"ssao.samples\": " + std::to_string(samples) + ",\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"lighting.threshold\": 0.003921569,"), std::string::npos) << text;
+    EXPECT_NE(text.find("-13.999999,"), std::string::npos) << text;
+    EXPECT_EQ(text.find("99999904"), std::string::npos) << text;
+
+    // A default written and read back is still the default (not "changed").
+    KnobRegistry defaults;
+    Pipeline declarations3(defaults);
+    const fs::path d = test::tempDir() / "exact-defaults.json";
+    Preset::capture("defaults", defaults, cam, "").save(d.string());
+    Preset::load(d.string()).applyKnobs(defaults);
+    for (size_t i = 0; i < defaults.size(); ++i) EXPECT_TRUE(defaults.isDefault(static_cast<int>(i))) << defaults.spec(static_cast<int>(i)).name;
+}
+
+TEST(Preset, LoadingAPresetGivesTheSameKnobsWhateverWasLoadedBefore) {
+    const std::vector<std::pair<std::string, std::string>> sceneSettings = {{"ssao.radius", "0.75"}, {"bloom.threshold", "3"}};
+    auto after = [&](const Preset* before, const Preset& p) {
+        KnobRegistry k;
+        Pipeline declarations(k);
+        for (const auto& [n, v] : sceneSettings) k.setFromString(n, v);
+        if (before) before->applyOver(k, sceneSettings);
+        EXPECT_TRUE(p.applyOver(k, sceneSettings).ignored.empty());
+        std::vector<double> values;
+        for (size_t i = 0; i < k.size(); ++i) values.push_back(k.value(static_cast<int>(i)));
+        return values;
+    };
+    const Preset* low = findBuiltinPreset("Low");
+    const Preset* high = findBuiltinPreset("High");
+    const Preset* ssao5 = findBuiltinPreset("SSAO5");
+    const Preset* coarse = findBuiltinPreset("lights: coarse (threshold 5/256)");
+    ASSERT_TRUE(low && high && ssao5 && coarse);
+    // A saved (full) preset with everything moved.
+    KnobRegistry moved;
+    Pipeline declarations(moved);
+    changeEveryKnob(moved);
+    const Preset everything = Preset::capture("everything", moved, Camera{}, "");
+
+    for (const Preset* b : {low, high, ssao5}) {
+        const auto fresh = after(nullptr, *b);
+        for (const Preset* a : {low, high, ssao5, coarse, &everything}) EXPECT_EQ(after(a, *b), fresh) << b->name << " after " << a->name;
+    }
+    // SSAO5 after Low does not keep Low's shadow map size, and the scene's settings come back.
+    KnobRegistry k;
+    Pipeline d2(k);
+    low->applyOver(k, sceneSettings);
+    ssao5->applyOver(k, sceneSettings);
+    EXPECT_EQ(k.value(*k.find("shadows.map_size")), k.spec(*k.find("shadows.map_size")).defaultValue);
+    EXPECT_EQ(k.value(*k.find("bloom.threshold")), 3.0);
+    // A partial preset changes only its groups: the quality level before it stays.
+    coarse->applyOver(k, sceneSettings);
+    EXPECT_EQ(k.value(*k.find("ssao.samples")), 32.0);
+    EXPECT_FLOAT_EQ(static_cast<float>(k.value(*k.find("lighting.threshold"))), 5.0f / 256.0f);
+    EXPECT_FALSE(coarse->covers("ssao.samples"));
+    EXPECT_TRUE(coarse->covers("lighting.strategy"));
+}

@@ -1,0 +1,148 @@
+// The workbench layout's arithmetic (PanelLayout) and the scripted input's
+// parser, without a window.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "app/CommandLine.h"
+#include "app/ScriptedInput.h"
+#include "ui/PanelLayout.h"
+
+using namespace dw;
+using namespace dw::ui;
+
+namespace {
+
+bool overlaps(const PanelRect& a, const PanelRect& b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+// Every panel inside the window below the menu bar, none overlapping, all open ones placed.
+void expectTiles(const PanelLayout::Arrangement& a, float w, float h, float top, const std::set<std::string>& open) {
+    std::set<std::string> placed;
+    for (const auto& p : a.panels) {
+        placed.insert(p.panel);
+        EXPECT_GE(p.rect.x, 0.0f) << p.panel;
+        EXPECT_GE(p.rect.y, top) << p.panel;
+        EXPECT_LE(p.rect.x + p.rect.w, w) << p.panel << " at " << w << "x" << h;
+        EXPECT_LE(p.rect.y + p.rect.h, h) << p.panel << " at " << w << "x" << h;
+        EXPECT_GT(p.rect.w, 0.0f) << p.panel;
+        EXPECT_GT(p.rect.h, 0.0f) << p.panel;
+    }
+    EXPECT_EQ(placed, open);
+    for (size_t i = 0; i < a.panels.size(); ++i)
+        for (size_t j = i + 1; j < a.panels.size(); ++j)
+            EXPECT_FALSE(overlaps(a.panels[i].rect, a.panels[j].rect)) << a.panels[i].panel << " / " << a.panels[j].panel;
+}
+
+}  // namespace
+
+TEST(PanelLayout, TilesTheWindowAtEverySizeWithAnyPanelsOpen) {
+    PanelLayout layout;
+    const std::vector<std::string> all = layout.panels();
+    // Every subset of a few panels closed, at sizes from tiny to large.
+    const std::vector<std::set<std::string>> closed = {
+        {}, {"Presets", "Messages", "Keys", "Side view"}, {"Scene", "Lights", "Presets"}, {"Viewport"},
+        {"Pass inspector", "Parameters", "Messages", "Keys"}, {"GPU timings", "Pixel probe"}};
+    for (const auto& c : closed)
+        for (auto [w, h] : {std::pair{1024.f, 640.f}, {1100.f, 650.f}, {1600.f, 900.f}, {3840.f, 2160.f}, {300.f, 200.f}}) {
+            std::set<std::string> open;
+            for (const auto& p : all)
+                if (!c.count(p)) open.insert(p);
+            const auto a = layout.arrange(w, h, 19.0f, [&](const std::string& n) { return open.count(n) > 0; });
+            expectTiles(a, w, h, 19.0f, open);
+        }
+}
+
+TEST(PanelLayout, ScalesWithTheWindowAndComesBackAfterAResize) {
+    PanelLayout layout;
+    auto open = [](const std::string& n) { return n != "Keys" && n != "Side view"; };
+    const auto big = layout.arrange(1600, 900, 19, open);
+    const auto small = layout.arrange(1024, 640, 19, open);
+    const auto again = layout.arrange(1600, 900, 19, open);
+    ASSERT_EQ(big.panels.size(), again.panels.size());
+    for (size_t i = 0; i < big.panels.size(); ++i) {
+        EXPECT_EQ(big.panels[i].rect.w, again.panels[i].rect.w) << big.panels[i].panel;
+        EXPECT_EQ(big.panels[i].rect.h, again.panels[i].rect.h) << big.panels[i].panel;
+    }
+    // The viewport follows the window (it is the same share of both).
+    const PanelRect* vb = big.find("Viewport");
+    const PanelRect* vs = small.find("Viewport");
+    ASSERT_TRUE(vb && vs);
+    EXPECT_NEAR(vb->w / 1600.0f, vs->w / 1024.0f, 0.04f);
+    EXPECT_GE(vs->w, PanelLayout::kMinWidth);
+    // At 1024x640 every open panel keeps a usable size.
+    for (const auto& p : small.panels) {
+        EXPECT_GE(p.rect.w, PanelLayout::kMinWidth) << p.panel;
+        EXPECT_GE(p.rect.h, PanelLayout::kMinHeight) << p.panel;
+    }
+}
+
+TEST(PanelLayout, DraggingASplitterMovesRoomBetweenNeighboursAndStopsAtTheMinimum) {
+    PanelLayout layout;
+    auto open = [](const std::string& n) { return n != "Keys"; };
+    auto a = layout.arrange(1600, 900, 19, open);
+    // The bar between the left column and the middle one.
+    const PanelLayout::Splitter* bar = nullptr;
+    for (const auto& s : a.splitters)
+        if (s.vertical && s.row < 0 && s.column == 0) bar = &s;
+    ASSERT_NE(bar, nullptr);
+    const float sceneW = a.find("Scene")->w, viewW = a.find("Viewport")->w + a.find("Side view")->w + PanelLayout::kGap;
+    layout.drag(*bar, 80.0f);
+    auto b = layout.arrange(1600, 900, 19, open);
+    EXPECT_NEAR(b.find("Scene")->w, sceneW + 80.0f, 1.0f);
+    EXPECT_NEAR(b.find("Viewport")->w + b.find("Side view")->w + PanelLayout::kGap, viewW - 80.0f, 2.0f);
+    EXPECT_EQ(b.find("Pass inspector")->w, a.find("Pass inspector")->w);
+    expectTiles(b, 1600, 900, 19, [&] {
+        std::set<std::string> s;
+        for (const auto& p : layout.panels())
+            if (open(p)) s.insert(p);
+        return s;
+    }());
+    // Far past the end: the neighbour keeps its minimum.
+    for (const auto& s : b.splitters)
+        if (s.vertical && s.row < 0 && s.column == 0) layout.drag(s, 5000.0f);
+    auto c = layout.arrange(1600, 900, 19, open);
+    EXPECT_GE(c.find("Viewport")->w, PanelLayout::kMinWidth - 1.0f);
+    // Saved and read back, the same arrangement.
+    PanelLayout restored;
+    restored.fromJson(layout.toJson());
+    auto d = restored.arrange(1600, 900, 19, open);
+    for (size_t i = 0; i < c.panels.size(); ++i) EXPECT_EQ(c.panels[i].rect.w, d.panels[i].rect.w) << c.panels[i].panel;
+}
+
+TEST(PanelLayout, ASavedLayoutOfAnotherShapeIsRefusedAndChangesNothing) {
+    PanelLayout layout;
+    nlohmann::json j = layout.toJson();
+    j["columns"][0]["width"] = -1;
+    EXPECT_THROW(layout.fromJson(j), std::runtime_error);
+    j = layout.toJson();
+    j["columns"][1]["rows"][0]["panels"] = {"Viewport", "Something else"};
+    EXPECT_THROW(layout.fromJson(j), std::runtime_error);
+    EXPECT_THROW(layout.fromJson(nlohmann::json::array()), std::runtime_error);
+    EXPECT_EQ(layout.toJson(), PanelLayout().toJson());
+}
+
+TEST(ScriptedInput, ParsesActionsIntoFramesAndNamesTheLineOfABadOne) {
+    const ScriptedInput s = ScriptedInput::parse(
+        "# a drag then a click\n2 drag 100 100 200 150 2\n9 click 50 60\n12 key F12\n13 resize 1024 640\n", "events.txt");
+    EXPECT_FLOAT_EQ(*s.at(2).mouseX, 100.0f);
+    EXPECT_FALSE(s.at(2).leftDown.has_value());
+    EXPECT_TRUE(*s.at(3).leftDown);
+    EXPECT_FLOAT_EQ(*s.at(4).mouseX, 150.0f);
+    EXPECT_FLOAT_EQ(*s.at(5).mouseY, 150.0f);
+    EXPECT_FALSE(*s.at(6).leftDown);
+    EXPECT_TRUE(*s.at(9).leftDown);
+    EXPECT_FALSE(*s.at(10).leftDown);
+    ASSERT_EQ(s.at(12).keys.size(), 1u);
+    EXPECT_EQ(s.at(13).resize->first, 1024);
+    EXPECT_EQ(s.lastFrame(), 13);
+    try {
+        ScriptedInput::parse("1 move 3 4\n2 jump 1\n", "events.txt");
+        FAIL() << "an unknown action was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("events.txt: line 2: unknown action 'jump'"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(ScriptedInput::parse("1 key Hyper\n", "e"), UsageError);
+    EXPECT_THROW(ScriptedInput::parse("1 resize 10 10\n", "e"), UsageError);
+}
