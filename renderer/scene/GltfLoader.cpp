@@ -23,6 +23,12 @@
 #include "renderer/scene/NormalGenerator.h"
 #include "renderer/scene/TangentGenerator.h"
 
+// tinygltf's base64 decoder: exported by Debian's libtinygltf, but declared
+// only in tiny_gltf.h's implementation section.
+namespace tinygltf {
+std::string base64_decode(std::string const& encoded);
+}  // namespace tinygltf
+
 namespace dw {
 
 namespace fs = std::filesystem;
@@ -418,6 +424,10 @@ private:
         imageBase_ = static_cast<int>(scene_.images.size());
         for (size_t i = 0; i < model_.images.size(); ++i) {
             auto& img = model_.images[i];
+            // tinygltf 2.7 decodes only the data: URIs of the media types it
+            // lists (PNG, JPEG, BMP, GIF); any other (image/webp for
+            // EXT_texture_webp) is decoded here, through the same decoder.
+            if (img.image.empty() && img.uri.rfind("data:", 0) == 0) decodeDataUri(static_cast<int>(i), img);
             if (img.image.empty() || img.width <= 0 || img.height <= 0) {
                 if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) {
                     const fs::path full = fs::path(path_).parent_path() / img.uri;
@@ -435,6 +445,19 @@ private:
             out.source = path_ + "#" + (img.uri.empty() ? "image" + std::to_string(i) : img.uri);
             scene_.addImage(std::move(out));
         }
+    }
+
+    void decodeDataUri(int index, tinygltf::Image& img) {
+        const std::string& uri = img.uri;
+        const size_t comma = uri.find(',');
+        const std::string header = uri.substr(0, comma);
+        if (comma == std::string::npos || header.size() < 12 || header.compare(header.size() - 7, 7, ";base64") != 0)
+            fail("image[" + std::to_string(index) + "]: a data: URI must be 'data:<media type>;base64,<data>'");
+        const std::string bytes = tinygltf::base64_decode(uri.substr(comma + 1));
+        if (img.mimeType.empty()) img.mimeType = header.substr(5, header.size() - 12);
+        decodeImageCallback(&img, index, nullptr, nullptr, 0, 0, reinterpret_cast<const unsigned char*>(bytes.data()),
+                            static_cast<int>(bytes.size()), this);
+        if (!imageError_.empty()) fail(imageError_);
     }
 
     // EXT_texture_webp's source, or -1.

@@ -43,6 +43,11 @@ void main() {
             hi = vec4(h);
         }
         if (mapping == MAP_HEATMAP) lo = vec4(min(lo.r, 0.0));
+        // A constant buffer (a range of no width: gbuffer.occlusion without
+        // an occlusion texture is all 1) shows its value against [0, 1], not black.
+        bvec4 noWidth = lessThanEqual(hi - lo, 1e-6 * max(abs(hi), vec4(1.0)));
+        lo = mix(lo, min(lo, vec4(0.0)), noWidth);
+        hi = mix(hi, max(hi, vec4(1.0)), noWidth);
     }
     vec4 span = max(hi - lo, vec4(1e-20));
     vec3 c;

@@ -9,11 +9,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 #include "renderer/Error.h"
 #include "renderer/scene/GltfLoader.h"
@@ -379,6 +381,18 @@ TEST(GltfFidelity, WebpTexturesDecodeAndArePreferred) {
     const auto& px = s.images[static_cast<size_t>(m.baseColorTexture)].rgba;
     EXPECT_LT(px[0], 40);
     EXPECT_GT(px[1], 215);
+
+    // The same WebP embedded as a data: URI (tinygltf 2.7 decodes only PNG,
+    // JPEG, BMP and GIF data URIs itself).
+    std::ifstream in(test::tempDir() / "green.webp", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    j["images"][1] = {{"uri", "data:image/webp;base64," + OIIO::Strutil::base64_encode(bytes)}};
+    Scene embedded;
+    importGltf(write("webp-data-uri.gltf", j).string(), embedded, glm::mat4(1.0f), false);
+    const Material& me = embedded.materials[static_cast<size_t>(embedded.meshes[0].material)];
+    const auto& epx = embedded.images[static_cast<size_t>(me.baseColorTexture)].rgba;
+    EXPECT_LT(epx[0], 40);
+    EXPECT_GT(epx[1], 215);
 }
 
 // A triangle facing +Z whose corner normals (as a scan's crease averaging
