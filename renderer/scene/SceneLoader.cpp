@@ -47,7 +47,14 @@ Scene loadScene(const std::string& spec) {
         scene.source = spec;
         scene.name = fs::path(spec).stem().string();
         const GltfImport imported = importGltf(spec, scene, glm::mat4(1.0f), true);
-        if (scene.instances.empty()) throw FileError(spec, "the glTF scene contains no triangle meshes");
+        if (scene.instances.empty()) {
+            // Say what was there instead (the warnings name skipped points, lines, empty primitives).
+            std::string why = "the glTF scene contains no triangle meshes";
+            int skipped = 0;
+            for (const auto& w : scene.warnings) skipped += w.size() >= 9 && w.compare(w.size() - 9, 9, "; skipped") == 0;
+            if (skipped > 0) why += " (" + std::to_string(skipped) + " primitive(s) of points, lines or no triangles skipped)";
+            throw FileError(spec, why);
+        }
         if (!imported.hasCamera) scene.camera = Camera::framing(imported.bounds);
         if (imported.lightCount == 0) addDefaultLightRig(scene);
         return scene;

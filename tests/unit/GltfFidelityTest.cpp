@@ -19,6 +19,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneLoader.h"
 #include "renderer/scene/TangentGenerator.h"
 #include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
@@ -428,4 +429,20 @@ TEST(GltfFidelity, CornersFacingAwayAndTrianglesWoundAgainstTheirNormalsAreRepai
     ASSERT_EQ(s.warnings.size(), 2u);
     EXPECT_NE(s.warnings[0].find("1 triangle(s) wound against"), std::string::npos) << s.warnings[0];
     EXPECT_NE(s.warnings[1].find("1 triangle corner(s)"), std::string::npos) << s.warnings[1];
+}
+
+// A file of only points: refused, saying what was skipped.
+TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
+    test::GltfBuilder b;
+    json j = b.finish({{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0})}}, -1);
+    j["meshes"][0]["primitives"][0]["mode"] = 0;
+    const fs::path p = write("points.gltf", j);
+    try {
+        loadScene(p.string());
+        FAIL() << "a file without triangles was accepted";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("no triangle meshes (1 primitive(s) of points, lines or no triangles skipped)"),
+                  std::string::npos)
+            << e.what();
+    }
 }
