@@ -115,7 +115,7 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     }
     ImGui::Separator();
     ImGui::SetNextItemWidth(-70);
-    const bool enter = ImGui::InputText("##name", saveName, sizeof(saveName), ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter = inputTextEnter("##name", "preset name", saveName, sizeof(saveName));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
     ImGui::SameLine();
     if ((ImGui::Button("save as") || enter) && saveName[0]) {

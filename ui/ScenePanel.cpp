@@ -57,8 +57,7 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
             ImGui::NewLine();
         }
         ImGui::SetNextItemWidth(-60);
-        const bool enter = ImGui::InputTextWithHint("##path", ".json / .gltf / .glb path", path, sizeof(path),
-                                                    ImGuiInputTextFlags_EnterReturnsTrue);
+        const bool enter = inputTextEnter("##path", ".json / .gltf / .glb path", path, sizeof(path));
         ImGui::SameLine();
         if ((ImGui::Button("open") || enter) && path[0]) openScene(state, session, path);
     }

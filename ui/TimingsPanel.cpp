@@ -53,9 +53,11 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
     // Another scene or render size: another configuration, so the statistics start over.
     if (session.scene().source != sceneSource || state.renderSize != renderSize) {
         if (!sceneSource.empty()) timer.clearHistory();
+        firstUsableFrame = state.report.frameIndex + 3;
         sceneSource = session.scene().source;
         renderSize = state.renderSize;
         cost.clear();
+        costsAtFrame = ~0ull;
         snapshot();
         return;
     }
@@ -70,8 +72,10 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
                    knobs.format(static_cast<int>(i));
     }
     if (changed > 1) what += " and " + std::to_string(changed - 1) + " more";
-    if (changed > 0 && state.report.frameIndex > 0)
-        cost.mark(timer, state.report.frameIndex - 1, what, static_cast<size_t>(window));
+    if (changed > 0 && state.report.frameIndex > 0) {
+        cost.mark(timer, state.report.frameIndex - 1, what, static_cast<size_t>(window), 3, firstUsableFrame);
+        costsAtFrame = ~0ull;
+    }
     snapshot();
 }
 
@@ -104,6 +108,7 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
         timer.setIsolateCpu(isolate);
         timer.clearHistory();
         cost.clear();
+        costsAtFrame = ~0ull;
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Adds a CPU column: the time a pass spends issuing its own work.\n"
@@ -334,11 +339,20 @@ void TimingsPanel::changeCost(PassTimer& timer) {
         ImGui::TextDisabled("waiting for frames after the change (the first 3 are left out)");
         return;
     }
-    ImGui::TextDisabled("median GPU ms of %d frames after against the frames before; 95%% bootstrap interval of the ratio", after);
+    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
+    const std::uint64_t newest = total && !total->samples.empty() ? total->samples.back().frame : 0;
+    if (newest != costsAtFrame) {
+        costs = cost.costs(timer);  // a bootstrap per pass: only when new frames came in
+        costsAtFrame = newest;
+    }
+    int before = 0;
+    for (const auto& c : costs) before = std::max(before, c.beforeFrames);
+    ImGui::TextWrapped("median GPU ms, %d frames before against %d after; 95%% bootstrap interval of the ratio%s", before, after,
+                       before < 10 ? ". Few frames before: turn on record before changing a knob for a steadier baseline" : "");
     if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
     for (const char* h : {"pass", "before", "after", "change"}) ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
-    for (const PassChangeCost& c : cost.costs(timer)) {
+    for (const PassChangeCost& c : costs) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(c.pass.c_str());
@@ -351,7 +365,8 @@ void TimingsPanel::changeCost(PassTimer& timer) {
         ImGui::TableNextColumn();
         const std::string d = c.describe();
         if (c.significant()) ImGui::TextColored(c.afterMs > c.beforeMs ? kErrorColor : kOkColor, "%s", d.c_str());
-        else ImGui::TextDisabled("%s (not significant)", d.c_str());
+        else ImGui::TextDisabled("%s (n.s.)", d.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s%s", c.pass.c_str(), d.c_str(), c.significant() ? "" : ", not significant");
     }
     ImGui::EndTable();
 }

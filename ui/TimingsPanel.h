@@ -26,6 +26,10 @@ struct TimingsPanel {
     std::set<std::string> hidden;  // passes not drawn in the graph
     std::string solo;              // when set, the only pass drawn
     ChangeCost cost;
+    // The costs as last computed (a bootstrap per pass): again only when new frames were timed.
+    std::vector<PassChangeCost> costs;
+    std::uint64_t costsAtFrame = ~0ull;
+    std::uint64_t firstUsableFrame = 0;  // after a reset: the first frames (shader compiles) are no baseline
     std::vector<double> knobValues;  // to name the knob that changed
     std::uint64_t knobGeneration = ~0ull;
     std::string sceneSource;

@@ -118,7 +118,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
             if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
                 camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
             else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
-                camera::orbit(cam, -d.x * 0.006f, d.y * 0.006f);
+                camera::orbit(cam, -d.x * 0.004f, d.y * 0.004f);
         } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
             camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
         }

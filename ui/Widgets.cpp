@@ -36,6 +36,12 @@ bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra) {
                             ImGuiWindowFlags_NoSavedSettings | extra);
 }
 
+bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size) {
+    ImGui::InputTextWithHint(label, hint, buffer, size);
+    return ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                          ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+}
+
 void sameLineIfFits(float width) {
     const float right = ImGui::GetWindowContentRegionMax().x + ImGui::GetWindowPos().x;
     ImGui::SameLine();

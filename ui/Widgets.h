@@ -15,6 +15,10 @@ void helpMarker(const std::string& text);
 // places and sizes it every frame, so it is neither moved nor resized by hand
 // (the gaps between panels are the splitters) nor saved in imgui.ini.
 bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra = 0);
+// A text field whose buffer follows every keystroke (so a button beside it
+// sees what was typed; ImGuiInputTextFlags_EnterReturnsTrue would hold the
+// text back until Enter), returning true when Enter ends the edit.
+bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size);
 // SameLine when an item `width` px wide still fits on this line, else a new line.
 void sameLineIfFits(float width);
 // Text cut to `width` px with "..." and the whole text as a tooltip when cut.

@@ -20,7 +20,7 @@ std::string PassChangeCost::describe() const {
 }
 
 void ChangeCost::mark(const PassTimer& timer, std::uint64_t lastFrameBefore, std::string what, size_t window,
-                      std::uint64_t settle) {
+                      std::uint64_t settle, std::uint64_t firstFrame) {
     active_ = true;
     what_ = std::move(what);
     window_ = window;
@@ -29,7 +29,7 @@ void ChangeCost::mark(const PassTimer& timer, std::uint64_t lastFrameBefore, std
     for (const auto& s : timer.series()) {
         std::vector<double> v;
         for (auto it = s.samples.rbegin(); it != s.samples.rend() && v.size() < window; ++it)
-            if (it->frame <= lastFrameBefore) v.push_back(it->gpuMs);
+            if (it->frame <= lastFrameBefore && it->frame >= firstFrame) v.push_back(it->gpuMs);
         if (!v.empty()) before_.emplace_back(s.name, std::move(v));
     }
 }

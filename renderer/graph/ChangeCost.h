@@ -32,8 +32,10 @@ class ChangeCost {
 public:
     // A change happened after frame `lastFrameBefore` was rendered: the
     // newest `window` samples of every series up to it become "before".
+    // Samples of frames before `firstFrame` (the first frames after a reset,
+    // which compile shaders) are no baseline and are left out.
     void mark(const PassTimer& timer, std::uint64_t lastFrameBefore, std::string what, size_t window = 120,
-              std::uint64_t settle = 3);
+              std::uint64_t settle = 3, std::uint64_t firstFrame = 0);
     bool active() const { return active_; }
     void clear() { *this = ChangeCost(); }
     const std::string& what() const { return what_; }

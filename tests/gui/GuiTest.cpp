@@ -452,7 +452,7 @@ TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
         session->pipeline().timer().collect(true);
         imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
     };
-    for (int i = 0; i < 6; ++i) frame();
+    for (int i = 0; i < 9; ++i) frame();
     EXPECT_FALSE(panel.cost.active());
     session->knobs().setFromString("ssao.samples", "64");
     for (int i = 0; i < 8; ++i) frame();
@@ -462,6 +462,7 @@ TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
     const auto ssao = std::find_if(costs.begin(), costs.end(), [](const PassChangeCost& c) { return c.pass == "ssao"; });
     ASSERT_NE(ssao, costs.end());
     EXPECT_GE(ssao->beforeFrames, 4);
+    EXPECT_LE(ssao->beforeFrames, 6) << "the first frames after the start (shader compiles) are no baseline";
     EXPECT_GE(ssao->afterFrames, 3);
     EXPECT_GT(ssao->afterMs, 0.0);
     // Another scene: the history and the change start over.
