@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "renderer/Error.h"
+#include "renderer/io/StderrCapture.h"
 
 namespace dw {
 
@@ -64,6 +65,7 @@ Image toRgba8(std::unique_ptr<OIIO::ImageInput> in, const std::string& name) {
 
 Image loadImage8(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
     return toRgba8(std::move(in), path);
@@ -77,6 +79,7 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
     else if (mimeType == "image/ktx2") ext = ".ktx2";
     else if (mimeType.empty() && size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8) ext = ".jpg";
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes), size);
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     // OIIO 2.4 ignores the proxy argument when a config spec is passed too.
     auto in = OIIO::ImageInput::open("memory" + ext, nullptr, &reader);
     if (!in) throw FileError(nameHint, "cannot decode embedded image: " + OIIO::geterror());
@@ -85,6 +88,7 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
 
 FloatImage loadImageFloat(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();

@@ -334,3 +334,22 @@ TEST(ReaderValidation, DeepNestingIsRefusedInEveryReader) {
     EXPECT_NO_THROW(checkJsonText(std::string(128, '[') + std::string(128, ']'), "ok.json"));
     EXPECT_THROW(checkJsonText(std::string(129, '[') + std::string(129, ']'), "deep.json"), FileError);
 }
+
+TEST(ReaderValidation, ImageLibrariesDoNotWriteTheirOwnLinesToStderr) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "sanitizer builds leave stderr alone (StderrCapture.h)";
+#endif
+    // A PNG whose IDAT chunk type is corrupt: libpng prints "libpng error: ..." itself.
+    const std::string png =
+        std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x04\x08\x06\0\0\0", 29) +
+        std::string("\xa9\xf1\x9e\x7e\0\0\0\x0cIDXT", 12) + std::string(16, '\x01');
+    writeText("corrupt.png", png);
+    const fs::path sceneFile = writeText("corrupt-texture.json",
+                                    R"({"materials": {"m": {"diffuse-map": "corrupt.png"}}, "objects": [{"shape": "box", "material": "m"}]})");
+    testing::internal::CaptureStderr();
+    const std::string e = sceneError(sceneFile);
+    const std::string printed = testing::internal::GetCapturedStderr();
+    EXPECT_HAS(e, "corrupt-texture.json: materials.m.diffuse-map: cannot load texture: ");
+    EXPECT_HAS(e, "corrupt.png");
+    EXPECT_EQ(printed, "");
+}
