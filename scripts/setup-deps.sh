@@ -20,6 +20,10 @@ if [[ "${1:-}" == "--tests" ]]; then
   # matplotlib for bench --plot (scripts/bench_plot.py), which the CLI test draws.
   packages+=(assimp-testmodels python3-matplotlib)
 fi
+if [[ "${1:-}" == "--fuzz" ]]; then
+  # clang 14 and libFuzzer's runtime for the fuzz targets (fuzz/README.md).
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
