@@ -13,7 +13,7 @@
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/knobs/Preset.h"
 #include "renderer/scene/CameraCheck.h"
-#include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneLoader.h"
 #include "renderer/scene/SceneJsonLoader.h"
 
 namespace dw::fuzz {
@@ -121,10 +121,8 @@ std::string gltf(const std::uint8_t* data, std::size_t size) {
         out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     }
     try {
-        Scene scene;
-        scene.source = file.string();
-        importGltf(file.string(), scene, glm::mat4(1.0f), true);
-        checkSceneFinite(scene);
+        // As `--scene file.gltf` loads it: framed camera and default lights included.
+        checkSceneFinite(loadScene(file.string()));
     } catch (const FileError& e) {
         return e.path() == file.string() ? checkMessage(e, file.string()) : std::string(e.what());
     }

@@ -16,6 +16,7 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneCheck.h"
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw {
@@ -276,6 +277,8 @@ private:
             at.target = k.target;
             if (const auto problem = findCameraProblem(at, sceneExtent()); problem && problem->field == "look-at")
                 r_.fail(where + ".look-at", problem->what);
+            at.up = scene_.camera.up;
+            if (!upIsUsable(at)) r_.fail(where + ".look-at", "looks along camera.up; the view needs another direction");
             scene_.cameraPath.push_back(k);
         }
     }
@@ -486,6 +489,7 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
     scene.source = path;
     SceneJsonParser parser(path, scene);
     parser.parse(root);
+    checkSceneValues(scene);  // what the fields combine into (extent, transforms, framed camera)
     return scene;
 }
 

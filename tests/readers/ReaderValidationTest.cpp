@@ -353,3 +353,18 @@ TEST(ReaderValidation, ImageLibrariesDoNotWriteTheirOwnLinesToStderr) {
     EXPECT_HAS(e, "corrupt.png");
     EXPECT_EQ(printed, "");
 }
+
+TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
+    // Each number fits; the box's diagonal, and a camera framing it, do not.
+    EXPECT_HAS(sceneError(writeText("huge.json", R"({"objects": [{"shape": "box", "size": [3e38, 3e38, 3e38]}]})")),
+               "huge.json: the scene's extent");
+    // A translation that fits, under a parent scale that carries it beyond a float.
+    json j = triangleGltf();
+    j["nodes"] = json::array({{{"scale", {1e30, 1e30, 1e30}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {1e10, 0, 0}}}});
+    EXPECT_HAS(gltfError("nested-scale.gltf", j), "nested-scale.gltf: ");
+    EXPECT_EQ(gltfError("nested-scale.gltf", j).find("no error"), std::string::npos);
+    // A walk-through keyframe looking straight down the scene camera's up.
+    EXPECT_HAS(sceneError(writeText("path.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
+        "path": [{"time": 0, "pos": [0, 1, 5], "look-at": [0, 0, 0]}, {"time": 1, "pos": [0, 9, 0], "look-at": [0, 0, 0]}]})"))),
+               "path.json: camera.path[1].look-at: looks along camera.up");
+}
