@@ -99,18 +99,35 @@ void checkJsonText(std::string_view text, const std::string& source, const JsonG
                 errno = 0;
                 char* end = nullptr;
                 const double v = std::strtod(token.c_str(), &end);
-                if (end != token.c_str() + token.size()) return;  // not a number: the parser reports it
+                // The number a parser reads is the longest prefix that is one
+                // ("3.4e381" of "3.4e381e4"): check it before giving up on the rest.
+                if (end == token.c_str()) return;
+                const std::string number(token.c_str(), static_cast<std::size_t>(end - token.c_str()));
                 if (errno == ERANGE && std::isinf(v))
-                    throw FileError(source, pathOf(stack) + ": " + token + " is too large for any number the workbench reads (" +
+                    throw FileError(source, pathOf(stack) + ": " + number + " is too large for any number the workbench reads (" +
                                                 textPosition(text, i + 1) + ")");
                 if (options.numbersAreFloats && std::fabs(v) > static_cast<double>(FLT_MAX))
-                    throw FileError(source, pathOf(stack) + ": " + token +
+                    throw FileError(source, pathOf(stack) + ": " + number +
                                                 " does not fit a 32-bit float (largest about 3.4e38)");
+                if (end != token.c_str() + token.size()) return;  // malformed after the number: the parser reports it
                 i = j;
                 break;
             }
         }
     }
+}
+
+}  // namespace dw
+
+namespace dw {
+
+std::string jsonErrorText(const std::exception& e) {
+    std::string m = e.what();
+    if (m.rfind("[json.exception.", 0) == 0) {
+        const std::size_t close = m.find("] ");
+        if (close != std::string::npos) m = m.substr(close + 2);
+    }
+    return m;
 }
 
 }  // namespace dw

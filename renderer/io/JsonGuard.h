@@ -11,6 +11,7 @@
 // Text that is not well-formed JSON is left to the parser to report: the scan
 // stops quietly at the first byte it does not expect.
 #include <cstddef>
+#include <exception>
 #include <string>
 #include <string_view>
 
@@ -29,5 +30,9 @@ struct JsonGuardOptions {
 // "scene.json: lights[0].intensity: 1e39 does not fit a 32-bit float (largest about 3.4e38)"
 // or "preset.json: line 1, column 129: JSON nested deeper than 128 levels (at knobs.x[0][0]...)".
 void checkJsonText(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+
+// A JSON library exception's text without its "[json.exception.type_error.302] "
+// tag, for the rare error the checks above leave to the parser.
+std::string jsonErrorText(const std::exception& e);
 
 }  // namespace dw

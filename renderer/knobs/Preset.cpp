@@ -75,7 +75,8 @@ std::string Preset::toJson() const {
         else {
             char* end = nullptr;
             const double d = std::strtod(v.c_str(), &end);
-            if (end && *end == '\0' && !v.empty()) k[n] = d;
+            // A number only when it reads back as one (not "1e400", not beyond a float).
+            if (end && *end == '\0' && !v.empty() && floatProblem(d).empty()) k[n] = d;
             else k[n] = v;
         }
     }
@@ -92,7 +93,7 @@ Preset Preset::fromJson(const std::string& text, const std::string& source) {
     } catch (const json::parse_error& e) {
         throw FileError(source, textPosition(text, e.byte) + ": not a valid preset (malformed JSON)");
     } catch (const json::exception& e) {
-        throw FileError(source, std::string("not a readable preset (") + e.what() + ")");
+        throw FileError(source, "not a readable preset: " + jsonErrorText(e));
     }
     if (!j.is_object() || !j.contains("knobs") || !j["knobs"].is_object())
         throw FileError(source, "not a preset: expected an object with a \"knobs\" object");

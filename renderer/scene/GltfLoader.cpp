@@ -54,7 +54,7 @@ public:
         } catch (const nlohmann::json::parse_error& e) {
             fail("malformed JSON at " + textPosition(text, e.byte));
         } catch (const nlohmann::json::exception& e) {
-            fail(std::string("unreadable JSON (") + e.what() + ")");
+            fail("unreadable JSON: " + jsonErrorText(e));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
         checkGltfValues(j, path_);  // cameras, lights, data: URIs (GltfCheck.h)

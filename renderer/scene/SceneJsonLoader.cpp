@@ -483,7 +483,7 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
         if (pos != std::string::npos) msg = msg.substr(pos);
         throw FileError(path, textPosition(text, e.byte) + ": malformed JSON (" + msg + ")");
     } catch (const json::exception& e) {
-        throw FileError(path, std::string("not a readable scene file (") + e.what() + ")");
+        throw FileError(path, "not a readable scene file: " + jsonErrorText(e));
     }
     Scene scene;
     scene.source = path;
