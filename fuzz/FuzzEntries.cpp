@@ -85,7 +85,10 @@ void checkSceneFinite(const Scene& s) {
     require(finite(s.camera.projection(16.0f / 9.0f)), "projection matrix");
     for (const auto& i : s.instances) require(finite(i.transform), "instance transform");
     for (const auto& m : s.meshes)
-        for (const auto& v : m.vertices) require(finite(v.position) && finite(v.normal), "vertex");
+        for (const auto& v : m.vertices)
+            require(finite(v.position) && finite(v.normal) && std::isfinite(v.uv.x) && std::isfinite(v.uv.y) &&
+                        finite(glm::vec3(v.tangent)),
+                    "vertex");
     for (const auto& l : s.lights)
         require(finite(l.position) && finite(l.direction) && finite(l.intensity) && std::isfinite(l.exponent) &&
                     std::isfinite(l.cutoffDegrees),

@@ -15,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <new>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string_view>
 
@@ -650,6 +651,16 @@ private:
         for (int r : roots) visit(r, root);
     }
 
+    // The unit vector along world * axis; none when the transform has no
+    // extent along it (zero scale) or is not finite. Scaled by the largest
+    // component first, so tiny or huge scales neither underflow nor overflow.
+    static std::optional<glm::vec3> unitAxis(const glm::mat4& world, const glm::vec4& axis) {
+        const glm::vec3 v(world * axis);
+        const float m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+        if (!(m > 0.0f) || !std::isfinite(m)) return std::nullopt;
+        return glm::normalize(v / m);
+    }
+
     void importNodeLight(const tinygltf::Node& node, const glm::mat4& world, GltfImport& result) {
         auto it = node.extensions.find("KHR_lights_punctual");
         if (it == node.extensions.end() || !it->second.Has("light")) return;
@@ -661,13 +672,12 @@ private:
         const glm::vec3 color = l.color.size() >= 3 ? glm::vec3(l.color[0], l.color[1], l.color[2]) : glm::vec3(1.0f);
         out.intensity = color * static_cast<float>(l.intensity);
         out.position = glm::vec3(world[3]);
-        const glm::vec3 along = glm::vec3(world * glm::vec4(0, 0, -1, 0));
-        const bool pointed = glm::length(along) > 0.0f && std::isfinite(glm::length(along));
-        if (!pointed && l.type != "point")
+        const auto along = unitAxis(world, glm::vec4(0, 0, -1, 0));
+        if (!along && l.type != "point")
             fail("light " + std::to_string(li) + " ('" + out.name + "'): its node's transform has zero scale, so the light has no direction");
         if (!std::isfinite(out.position.x + out.position.y + out.position.z))
             fail("light " + std::to_string(li) + " ('" + out.name + "'): its node's transform puts it beyond 32-bit float range");
-        out.direction = pointed ? glm::normalize(along) : glm::vec3(0, 0, -1);
+        out.direction = along.value_or(glm::vec3(0, 0, -1));
         // glTF punctual lights fall off as 1/d^2 (candela units are kept as they are).
         out.attenuation = {0.0f, 0.0f, 1.0f};
         if (l.type == "directional") {
@@ -693,13 +703,12 @@ private:
         if (cam.type != "perspective") return;
         Camera c;
         const std::string name = "camera[" + std::to_string(&cam - model_.cameras.data()) + "]";
-        const glm::vec3 forward(world * glm::vec4(0, 0, -1, 0)), up(world * glm::vec4(0, 1, 0, 0));
-        for (const glm::vec3& axis : {forward, up})
-            if (!(glm::length(axis) > 0.0f) || !std::isfinite(glm::length(axis)))
-                fail(name + ": its node's transform has zero scale (or overflows), so the camera has no view direction");
+        const auto forward = unitAxis(world, glm::vec4(0, 0, -1, 0)), up = unitAxis(world, glm::vec4(0, 1, 0, 0));
+        if (!forward || !up)
+            fail(name + ": its node's transform has zero scale (or overflows), so the camera has no view direction");
         c.position = glm::vec3(world[3]);
-        c.target = c.position + glm::normalize(forward);
-        c.up = glm::normalize(up);
+        c.target = c.position + *forward;
+        c.up = *up;
         c.fovYDegrees = static_cast<float>(glm::degrees(cam.perspective.yfov));
         c.nearPlane = static_cast<float>(cam.perspective.znear > 0 ? cam.perspective.znear : 0.05);
         c.farPlane = static_cast<float>(cam.perspective.zfar > c.nearPlane ? cam.perspective.zfar

@@ -22,6 +22,24 @@ void checkSceneValues(const Scene& scene) {
         fail("the scene's extent (" + shortNumber(b.min.x) + " .. " + shortNumber(b.max.x) + " in x, " +
              shortNumber(b.min.y) + " .. " + shortNumber(b.max.y) + " in y, " + shortNumber(b.min.z) + " .. " +
              shortNumber(b.max.z) + " in z) does not fit 32-bit floats");
+    // Vertices: positions and texture coordinates the files gave (or a uv-scale
+    // multiplied), normals and tangents derived from them (cross products overflow).
+    // Attribute by attribute, so that the message names the given one (a
+    // texture coordinate) before the one derived from it (a tangent).
+    for (const Mesh& mesh : scene.meshes)
+        for (int attribute = 0; attribute < 4; ++attribute)
+            for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+                const Vertex& x = mesh.vertices[v];
+                const bool ok = attribute == 0   ? finite(x.position)
+                                : attribute == 1 ? finite(x.normal)
+                                : attribute == 2 ? std::isfinite(x.uv.x) && std::isfinite(x.uv.y)
+                                                 : finite(glm::vec3(x.tangent)) && std::isfinite(x.tangent.w);
+                if (!ok) {
+                    static const char* names[] = {"position", "normal", "texture coordinate", "tangent"};
+                    fail("mesh '" + mesh.name + "': vertex " + std::to_string(v) + " has a " + names[attribute] +
+                         " that does not fit 32-bit floats");
+                }
+            }
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const glm::mat4& m = scene.instances[i].transform;
         for (int c = 0; c < 4; ++c)

@@ -10,7 +10,7 @@
 namespace dw {
 
 // Throws FileError(scene.source, "<what>: <problem>"): the scene's extent,
-// every instance transform, every light's position, direction and intensity,
+// every vertex (position, normal, texture coordinate, tangent), every instance transform, every light's position, direction and intensity,
 // and the camera (CameraCheck.h, relative to the scene's extent).
 void checkSceneValues(const Scene& scene);
 

@@ -430,9 +430,19 @@ private:
         const std::string shape = r_.string(j, "shape", where, "");
         const float uvScale = r_.number(j, "uv-scale", where, 1.0f);
         Mesh mesh;
-        if (shape == "box") mesh = shapes::box(r_.vec3(j, "size", where, glm::vec3(1.0f)), uvScale);
-        else if (shape == "plane") {
+        // A side of 0 has no face normal (the faces are built from cross products).
+        auto sides = [&](glm::vec2 used, const glm::vec3& s) {
+            if (!(used.x > 0.0f && used.y > 0.0f) || (shape == "box" && !(s.z > 0.0f)))
+                r_.fail(where + ".size", "every side must be greater than 0, got [" + shortNumber(s.x) + ", " +
+                                             shortNumber(s.y) + ", " + shortNumber(s.z) + "]");
+        };
+        if (shape == "box") {
+            const glm::vec3 s = r_.vec3(j, "size", where, glm::vec3(1.0f));
+            sides(glm::vec2(s.x, s.y), s);
+            mesh = shapes::box(s, uvScale);
+        } else if (shape == "plane") {
             const glm::vec3 s = r_.vec3(j, "size", where, glm::vec3(10.0f));
+            sides(glm::vec2(s.x, s.z == 0 ? s.y : s.z), s);
             mesh = shapes::plane(s.x, s.z == 0 ? s.y : s.z, uvScale);
         } else if (shape == "sphere") mesh = shapes::sphere(r_.positive(j, "radius", where, 0.5f));
         else if (shape == "cylinder") mesh = shapes::cylinder(r_.positive(j, "radius", where, 0.5f), r_.positive(j, "height", where, 1.0f));

@@ -240,6 +240,13 @@ TEST(ReaderValidation, GltfCameraProblemsAreNamed) {
     EXPECT_HAS(gltfError("scale0.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}},
                                                    {{"translation", {0, 0, 5}}, {"scale", {0, 0, 0}}})),
                "scale0.gltf: camera[0]: its node's transform has zero scale");
+    // A tiny (not zero) scale still gives a direction: no underflow on the way.
+    Scene small = loadScene(writeText("small-scale.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}},
+                                                                     {{"translation", {0, 0, 5}}, {"scale", {1e-25, 1e-25, 1e-25}}})
+                                                              .dump())
+                                .string());
+    EXPECT_NEAR(glm::length(small.camera.target - small.camera.position), 1.0f, 1e-5f);
+    EXPECT_NEAR(small.camera.up.y, 1.0f, 1e-5f);
     // An accepted camera gives finite matrices.
     Scene s = loadScene(writeText("ok-camera.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}}).dump()).string());
     EXPECT_NEAR(s.camera.fovYDegrees, glm::degrees(0.8f), 1e-3f);
@@ -363,6 +370,12 @@ TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
     j["nodes"] = json::array({{{"scale", {1e30, 1e30, 1e30}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {1e10, 0, 0}}}});
     EXPECT_HAS(gltfError("nested-scale.gltf", j), "nested-scale.gltf: ");
     EXPECT_EQ(gltfError("nested-scale.gltf", j).find("no error"), std::string::npos);
+    // A box side of 0 has no face normal (found by fuzz_scene_json).
+    EXPECT_HAS(sceneError(writeText("flat-box.json", R"({"objects": [{"shape": "box", "size": [0, 2, 1]}]})")),
+               "flat-box.json: objects[0].size: every side must be greater than 0, got [0, 2, 1]");
+    // A uv-scale that fits, times the plane's size, does not.
+    EXPECT_HAS(sceneError(writeText("uv.json", R"({"objects": [{"shape": "plane", "size": [10, 0, 10], "uv-scale": 3e38}]})")),
+               "uv.json: mesh 'plane': vertex 1 has a texture coordinate that does not fit 32-bit floats");
     // A walk-through keyframe looking straight down the scene camera's up.
     EXPECT_HAS(sceneError(writeText("path.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
         "path": [{"time": 0, "pos": [0, 1, 5], "look-at": [0, 0, 0]}, {"time": 1, "pos": [0, 9, 0], "look-at": [0, 0, 0]}]})"))),
