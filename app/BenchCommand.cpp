@@ -22,6 +22,8 @@
 #include "renderer/Error.h"
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/io/TextFile.h"
 
 extern char** environ;
 
@@ -227,11 +229,13 @@ int runMerge(int argc, char** argv) {
         parts.push_back(BenchResults::readCsv(in));
         // The machine and settings are in the shard's JSON beside its CSV, when there is one.
         const fs::path sibling = fs::path(in).replace_extension(".json");
-        std::ifstream f(sibling);
-        if (!f) continue;
+        if (!fs::exists(sibling)) continue;
+        const std::string text = readWholeFile(sibling.string(), "not found", "cannot read");
+        // Bounded depth like every JSON the workbench reads; numbers may be any double.
+        checkJsonText(text, sibling.string(), {kMaxJsonDepth, false});
         nlohmann::json j;
         try {
-            j = nlohmann::json::parse(f);
+            j = nlohmann::json::parse(text);
         } catch (const nlohmann::json::exception& e) {
             throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
         }

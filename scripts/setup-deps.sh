@@ -24,6 +24,10 @@ if [[ "${1:-}" == "--tests" ]]; then
   # librenderdoc.so, for the frame-capture test (it skips without it)
   packages+=(librenderdoc)
 fi
+if [[ "${1:-}" == "--fuzz" ]]; then
+  # clang 14 and libFuzzer's runtime for the fuzz targets (fuzz/README.md).
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "renderer/Error.h"
+#include "renderer/io/StderrCapture.h"
 
 namespace dw {
 
@@ -75,6 +76,7 @@ OIIO::ImageSpec straightAlphaConfig() {
 
 Image loadImage8(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     const OIIO::ImageSpec config = straightAlphaConfig();
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
@@ -93,6 +95,7 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
     else if (mimeType == "image/webp") ext = ".webp";
     else if (mimeType == "image/ktx2") ext = ".ktx2";
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes), size);
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     // OIIO 2.4 ignores the proxy argument when a config spec is passed too;
     // the config's "oiio:ioproxy" attribute carries it instead.
     OIIO::ImageSpec config = straightAlphaConfig();
@@ -105,6 +108,7 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
 
 FloatImage loadImageFloat(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();

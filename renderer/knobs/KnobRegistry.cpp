@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "renderer/Error.h"
+#include "renderer/io/FloatCheck.h"
 
 namespace dw {
 
@@ -226,8 +227,12 @@ void KnobRegistry::setFromString(const std::string& name, const std::string& raw
             const char* first = text.data();
             const char* last = text.data() + text.size();
             auto [ptr, ec] = std::from_chars(first, last, v);
+            if (ec == std::errc::result_out_of_range)
+                throw Error("knob '" + name + "' = " + text + " is beyond the range of a 64-bit number");
             if (ec != std::errc() || ptr != last || !std::isfinite(v))
                 throw Error("knob '" + name + "' expects a number, got '" + text + "'");
+            if (const std::string problem = floatProblem(v); !problem.empty())
+                throw Error("knob '" + name + "' = " + text + ": " + problem);
             if (s.type == KnobType::Int && v != std::floor(v))
                 throw Error("knob '" + name + "' expects a whole number, got '" + text + "'");
             if (v < s.minValue || v > s.maxValue)

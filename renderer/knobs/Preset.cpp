@@ -10,7 +10,10 @@
 #include <sstream>
 
 #include "renderer/Error.h"
+#include "renderer/io/FloatCheck.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
+#include "renderer/scene/CameraCheck.h"
 
 namespace dw {
 
@@ -39,15 +42,24 @@ json knobValue(const std::string& v) {
     if (auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), i); ec == std::errc() && p == v.data() + v.size())
         return i;
     double d = 0.0;
-    if (auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), d); ec == std::errc() && p == v.data() + v.size())
+    // A number only when it reads back as one (not "1e400", not beyond a float).
+    if (auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), d);
+        ec == std::errc() && p == v.data() + v.size() && floatProblem(d).empty())
         return d;
     return v;
 }
 
+float readFloat(const json& j, const std::string& what, const std::string& source) {
+    if (!j.is_number()) throw FileError(source, what + ": expected a number");
+    const double v = j.get<double>();
+    if (const std::string problem = floatProblem(v); !problem.empty()) throw FileError(source, what + ": " + problem);
+    return static_cast<float>(v);
+}
+
 glm::vec3 readVec3(const json& j, const std::string& what, const std::string& source) {
-    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
-        throw FileError(source, what + ": expected an array of 3 numbers");
-    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+    if (!j.is_array() || j.size() != 3) throw FileError(source, what + ": expected an array of 3 numbers");
+    return {readFloat(j[0], what + "[0]", source), readFloat(j[1], what + "[1]", source),
+            readFloat(j[2], what + "[2]", source)};
 }
 
 std::string valueText(const json& v) {
@@ -89,22 +101,29 @@ std::string Preset::toJson() const {
 }
 
 Preset Preset::fromJson(const std::string& text, const std::string& source) {
+    // Depth and numbers beyond a float, by JSON path, before parsing.
+    checkJsonText(text, source);
     json j;
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
-        throw FileError(source, std::string("not a valid preset (malformed JSON: ") + e.what() + ")");
+        throw FileError(source, textPosition(text, e.byte) + ": not a valid preset (malformed JSON)");
+    } catch (const json::exception& e) {
+        throw FileError(source, "not a readable preset: " + jsonErrorText(e));
     }
     if (!j.is_object() || !j.contains("knobs") || !j["knobs"].is_object())
         throw FileError(source, "not a preset: expected an object with a \"knobs\" object");
     if (j.contains("format") && j["format"] != kFormat)
         throw FileError(source, "not a preset: \"format\" is " + j["format"].dump());
     Preset p;
-    p.name = j.value("name", fs::path(source).stem().string());
-    if (j.contains("description") && j["description"].is_string()) p.description = j["description"].get<std::string>();
-    if (j.contains("scene")) {
-        if (!j["scene"].is_string()) throw FileError(source, "\"scene\" must be a string");
-        p.scene = j["scene"].get<std::string>();
+    p.name = fs::path(source).stem().string();
+    for (const char* key : {"name", "description", "scene"}) {
+        if (!j.contains(key)) continue;
+        if (!j[key].is_string()) throw FileError(source, std::string(key) + ": expected a string");
+        const std::string v = j[key].get<std::string>();
+        if (std::string(key) == "name") p.name = v;
+        else if (std::string(key) == "description") p.description = v;
+        else p.scene = v;
     }
     if (j.contains("groups")) {
         const json& g = j["groups"];
@@ -116,19 +135,27 @@ Preset Preset::fromJson(const std::string& text, const std::string& source) {
     }
     if (j.contains("camera")) {
         const json& c = j["camera"];
-        if (!c.is_object()) throw FileError(source, "\"camera\" must be an object");
+        if (!c.is_object()) throw FileError(source, "camera: expected an object");
+        for (const char* key : {"pos", "look-at"})
+            if (!c.contains(key)) throw FileError(source, std::string("camera: needs \"") + key + "\"");
         Camera cam;
-        cam.position = readVec3(c.value("pos", json()), "camera.pos", source);
-        cam.target = readVec3(c.value("look-at", json()), "camera.look-at", source);
+        cam.position = readVec3(c["pos"], "camera.pos", source);
+        cam.target = readVec3(c["look-at"], "camera.look-at", source);
         cam.up = c.contains("up") ? readVec3(c["up"], "camera.up", source) : glm::vec3(0, 1, 0);
-        cam.fovYDegrees = c.value("fov", 60.0f);
-        cam.nearPlane = c.value("near", 0.1f);
-        cam.farPlane = c.value("far", 200.0f);
-        if (!(cam.fovYDegrees > 0 && cam.fovYDegrees < 179 && cam.nearPlane > 0 && cam.farPlane > cam.nearPlane))
-            throw FileError(source, "camera has an invalid fov or near/far range");
+        cam.fovYDegrees = c.contains("fov") ? readFloat(c["fov"], "camera.fov", source) : 60.0f;
+        cam.nearPlane = c.contains("near") ? readFloat(c["near"], "camera.near", source) : 0.1f;
+        cam.farPlane = c.contains("far") ? readFloat(c["far"], "camera.far", source) : 200.0f;
+        // The preset's scene is not loaded here: the camera's own coordinates set the scale.
+        if (const auto problem = findCameraProblem(cam, 0.0f))
+            throw FileError(source, "camera." + problem->field + ": " + problem->what);
         p.camera = cam;
     }
-    for (auto it = j["knobs"].begin(); it != j["knobs"].end(); ++it) p.knobs.emplace_back(it.key(), valueText(it.value()));
+    for (auto it = j["knobs"].begin(); it != j["knobs"].end(); ++it) {
+        const json& v = it.value();
+        if (!v.is_string() && !v.is_boolean() && !v.is_number())
+            throw FileError(source, "knobs." + it.key() + ": expected a number, string or boolean");
+        p.knobs.emplace_back(it.key(), valueText(v));
+    }
     return p;
 }
 

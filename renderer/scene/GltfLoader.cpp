@@ -8,18 +8,23 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 #include <new>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string_view>
 
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
+#include "renderer/scene/CameraCheck.h"
+#include "renderer/scene/GltfCheck.h"
 #include "renderer/scene/NormalGenerator.h"
 #include "renderer/scene/TangentGenerator.h"
 
@@ -53,23 +58,19 @@ public:
     // `bytes` is the whole file; returns what tinygltf parses afterwards
     // (the same bytes, unless hideZeroIndexAccessors rewrote the JSON).
     std::string precheck(const std::string& bytes) {
-        std::string_view text = bytes;
-        const bool glb = bytes.size() >= 20 && isGlb(bytes);
-        if (glb) {
-            std::uint32_t chunkLength = 0, chunkType = 0;
-            std::memcpy(&chunkLength, bytes.data() + 12, 4);
-            std::memcpy(&chunkType, bytes.data() + 16, 4);
-            if (chunkType != 0x4E4F534Au || 20ull + chunkLength > bytes.size())
-                fail("malformed GLB: the first chunk is not a complete JSON chunk");
-            text = text.substr(20, chunkLength);
-        }
+        const bool glb = isBinary(bytes);
+        const std::string_view text = glb ? glbJsonChunk(bytes, path_) : std::string_view(bytes);
+        checkJsonText(text, path_);  // nesting depth, numbers beyond a float, by JSON path
         nlohmann::json j;
         try {
             j = nlohmann::json::parse(text);
         } catch (const nlohmann::json::parse_error& e) {
             fail("malformed JSON at " + textPosition(text, e.byte));
+        } catch (const nlohmann::json::exception& e) {
+            fail("unreadable JSON: " + jsonErrorText(e));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
+        checkGltfValues(j, path_);  // cameras, lights, data: URIs (GltfCheck.h)
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
             for (const auto& e : j["extensionsRequired"])
                 if (e.is_string() && !isSupportedExtension(e.get<std::string>()))
@@ -185,9 +186,9 @@ private:
     bool isBinary(const std::string& bytes) const {
         std::string ext = fs::path(path_).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext == ".glb") return true;
-        if (ext == ".gltf") return false;
-        return isGlb(bytes);
+        // The GLB magic wins over the name; a .glb without it is reported as a bad GLB header.
+        if (isGlb(bytes) || ext == ".glb") return true;
+        return false;
     }
 
     static std::string firstLines(const std::string& s) {
@@ -195,7 +196,7 @@ private:
         while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
         std::replace(out.begin(), out.end(), '\n', ';');
         if (out.size() > 400) out = out.substr(0, 400) + "...";
-        return out.empty() ? "unknown error" : out;
+        return out.empty() ? "the glTF reader refused it without giving a reason" : out;
     }
 
     static bool decodeImageCallback(tinygltf::Image* image, const int index, std::string* err,
@@ -204,6 +205,16 @@ private:
         auto* self = static_cast<Importer*>(user);
         const std::string name = image->uri.empty() ? "image[" + std::to_string(index) + "]"
                                                     : "image[" + std::to_string(index) + "] '" + image->uri + "'";
+        // tinygltf passes a bufferView's bytes without checking them against
+        // the buffer: check the range before anything reads it.
+        if (image->bufferView >= 0) {
+            const std::string range = self->imageRangeProblem(*image);
+            if (!range.empty()) {
+                self->imageError_ = name + ": " + range;
+                if (err) *err += self->imageError_;
+                return false;
+            }
+        }
         try {
             Image decoded = decodeImage8(bytes, static_cast<size_t>(std::max(size, 0)), name, image->mimeType);
             image->width = decoded.width;
@@ -219,6 +230,24 @@ private:
             if (err) *err += self->imageError_;
             return false;
         }
+    }
+
+    // Empty when image.bufferView's bytes lie inside its buffer (tinygltf has
+    // parsed buffers and bufferViews into model_ before images).
+    std::string imageRangeProblem(const tinygltf::Image& image) const {
+        const size_t view = static_cast<size_t>(image.bufferView);
+        if (view >= model_.bufferViews.size()) return "bufferView " + std::to_string(view) + " does not exist";
+        const auto& bv = model_.bufferViews[view];
+        if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model_.buffers.size())
+            return "bufferView[" + std::to_string(view) + "] refers to a buffer that does not exist";
+        const size_t size = model_.buffers[bv.buffer].data.size();
+        if (bv.byteOffset > size || bv.byteLength > size - bv.byteOffset)
+            return "bufferView[" + std::to_string(view) + "] (bytes " + std::to_string(bv.byteOffset) + " to " +
+                   std::to_string(bv.byteOffset + bv.byteLength) + ") runs past the end of buffer[" +
+                   std::to_string(bv.buffer) + "] (" + std::to_string(size) + " bytes)";
+        if (bv.byteLength > static_cast<size_t>(std::numeric_limits<int>::max()))
+            return "bufferView[" + std::to_string(view) + "] is larger than 2 GiB";
+        return {};
     }
 
     // ---- structural validation: everything later code indexes is checked here.
@@ -819,6 +848,16 @@ private:
         for (int r : roots) visit(r, root);
     }
 
+    // The unit vector along world * axis; none when the transform has no
+    // extent along it (zero scale) or is not finite. Scaled by the largest
+    // component first, so tiny or huge scales neither underflow nor overflow.
+    static std::optional<glm::vec3> unitAxis(const glm::mat4& world, const glm::vec4& axis) {
+        const glm::vec3 v(world * axis);
+        const float m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+        if (!(m > 0.0f) || !std::isfinite(m)) return std::nullopt;
+        return glm::normalize(v / m);
+    }
+
     void importNodeLight(const tinygltf::Node& node, const glm::mat4& world, GltfImport& result) {
         auto it = node.extensions.find("KHR_lights_punctual");
         if (it == node.extensions.end() || !it->second.Has("light")) return;
@@ -830,14 +869,21 @@ private:
         const glm::vec3 color = l.color.size() >= 3 ? glm::vec3(l.color[0], l.color[1], l.color[2]) : glm::vec3(1.0f);
         out.intensity = color * static_cast<float>(l.intensity);
         out.position = glm::vec3(world[3]);
-        out.direction = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+        const auto along = unitAxis(world, glm::vec4(0, 0, -1, 0));
+        if (!along && l.type != "point")
+            fail("light " + std::to_string(li) + " ('" + out.name + "'): its node's transform has zero scale, so the light has no direction");
+        if (!std::isfinite(out.position.x + out.position.y + out.position.z))
+            fail("light " + std::to_string(li) + " ('" + out.name + "'): its node's transform puts it beyond 32-bit float range");
+        out.direction = along.value_or(glm::vec3(0, 0, -1));
         // glTF punctual lights fall off as 1/d^2 (candela units are kept as they are).
         out.attenuation = {0.0f, 0.0f, 1.0f};
         if (l.type == "directional") {
             out.type = LightType::Directional;
         } else if (l.type == "spot") {
             out.type = LightType::Spot;
-            const double outer = l.spot.outerConeAngle > 0 ? l.spot.outerConeAngle : glm::pi<double>() / 4.0;
+            // GltfCheck allows pi/2 rounded to a float; the cone itself stops at pi/2.
+            const double outer = l.spot.outerConeAngle > 0 ? std::min(l.spot.outerConeAngle, glm::half_pi<double>())
+                                                           : glm::pi<double>() / 4.0;
             const double inner = std::clamp(l.spot.innerConeAngle, 0.0, outer);
             out.cutoffDegrees = static_cast<float>(glm::degrees(outer));
             // Half intensity halfway between the inner and outer cone angles.
@@ -853,12 +899,18 @@ private:
     void importCamera(const tinygltf::Camera& cam, const glm::mat4& world, GltfImport& result) {
         if (cam.type != "perspective") return;
         Camera c;
+        const std::string name = "camera[" + std::to_string(&cam - model_.cameras.data()) + "]";
+        const auto forward = unitAxis(world, glm::vec4(0, 0, -1, 0)), up = unitAxis(world, glm::vec4(0, 1, 0, 0));
+        if (!forward || !up)
+            fail(name + ": its node's transform has zero scale (or overflows), so the camera has no view direction");
         c.position = glm::vec3(world[3]);
-        c.target = c.position + glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
-        c.up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+        c.target = c.position + *forward;
+        c.up = *up;
         c.fovYDegrees = static_cast<float>(glm::degrees(cam.perspective.yfov));
         c.nearPlane = static_cast<float>(cam.perspective.znear > 0 ? cam.perspective.znear : 0.05);
-        c.farPlane = static_cast<float>(cam.perspective.zfar > c.nearPlane ? cam.perspective.zfar : 1000.0);
+        c.farPlane = static_cast<float>(cam.perspective.zfar > c.nearPlane ? cam.perspective.zfar
+                                                                     : std::max(1000.0, c.nearPlane * 1e4));
+        if (const auto problem = findCameraProblem(c, 0.0f)) fail(name + " (as placed by its node): " + problem->field + " " + problem->what);
         scene_.camera = c;
         result.hasCamera = true;
     }

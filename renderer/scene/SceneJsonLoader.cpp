@@ -1,5 +1,6 @@
 #include "renderer/scene/SceneJsonLoader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,9 +10,13 @@
 #include <sstream>
 
 #include "renderer/Error.h"
-#include "renderer/io/TextFile.h"
+#include "renderer/io/FloatCheck.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/io/TextFile.h"
+#include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneCheck.h"
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw {
@@ -60,7 +65,7 @@ public:
     float number(const json& j, const std::string& where) const {
         if (!j.is_number()) fail(where, std::string("expected a number, got ") + typeName(j));
         const double v = j.get<double>();
-        if (!std::isfinite(v)) fail(where, "expected a finite number");
+        if (const std::string problem = floatProblem(v); !problem.empty()) fail(where, problem);
         return static_cast<float>(v);
     }
     float number(const json& obj, const char* key, const std::string& where, float fallback) const {
@@ -140,6 +145,23 @@ public:
     }
 
 private:
+    // The diagonal of what the scene holds so far (objects come before the camera).
+    float sceneExtent() const {
+        const Bounds b = scene_.bounds();
+        return b.empty() ? 0.0f : 2.0f * b.radius();
+    }
+
+    static FloatImage greyToRgb(const FloatImage& grey) {
+        FloatImage rgb;
+        rgb.width = grey.width;
+        rgb.height = grey.height;
+        rgb.channels = 3;
+        rgb.pixels.resize(static_cast<size_t>(grey.width) * grey.height * 3);
+        for (size_t p = 0; p < static_cast<size_t>(grey.width) * grey.height; ++p)
+            for (int c = 0; c < 3; ++c) rgb.pixels[p * 3 + c] = grey.pixels[p * grey.channels];
+        return rgb;
+    }
+
     void parseSky(const json& j) {
         r_.requireObject(j, "sky");
         r_.checkKeys(j, "sky", {"type", "zenith", "horizon", "ground", "sun-size", "file", "files", "intensity", "rotation"});
@@ -151,13 +173,15 @@ private:
         auto image = [&](const std::string& rel, const std::string& where) {
             const std::string full = r_.resolve(rel).string();
             if (!fs::exists(full)) r_.fail(where, "environment image '" + rel + "' not found (looked for " + full + ")");
+            FloatImage img;
             try {
-                FloatImage img = loadImageFloat(full);
-                if (img.channels < 3) r_.fail(where, "environment image '" + rel + "' needs 3 or 4 channels");
-                return img;
+                img = loadImageFloat(full);
             } catch (const FileError& e) {
+                // e.what() names the image file; the scene file and field come first.
                 r_.fail(where, std::string("cannot load environment image: ") + e.what());
             }
+            if (img.channels < 3) img = greyToRgb(img);  // 1 channel (grey) or 2 (grey, alpha)
+            return img;
         };
         if (type == "color") {
             sky.kind = Sky::Kind::Color;
@@ -212,6 +236,9 @@ private:
         c.position = r_.vec3(j, "pos", "camera", c.position);
         c.target = r_.vec3(j, "look-at", "camera", c.target);
         c.up = r_.vec3(j, "up", "camera", glm::vec3(0, 1, 0));
+        // Without an "up", a camera looking straight up or down gets -Z as its
+        // up (docs/scene-format.md); an "up" the file gives is checked as given.
+        if (!j.contains("up") && !upIsUsable(c)) c.up = glm::vec3(0, 0, -1);
         c.fovYDegrees = r_.positive(j, "fov", "camera", 60.0f);
         if (c.fovYDegrees >= 179.0f) r_.fail("camera.fov", "must be less than 179 degrees");
         c.fitClipPlanes(scene_.bounds());
@@ -223,7 +250,7 @@ private:
         if (hasFar && !hasNear) c.nearPlane = std::min(c.nearPlane, c.farPlane * 1e-3f);
         if (hasNear && !hasFar) c.farPlane = std::max(c.farPlane, c.nearPlane * 10.0f);
         if (c.farPlane <= c.nearPlane) r_.fail("camera.far", "must be greater than camera.near");
-        if (glm::length(c.target - c.position) < 1e-6f) r_.fail("camera.look-at", "must differ from camera.pos");
+        if (const auto problem = findCameraProblem(c, sceneExtent())) r_.fail("camera." + problem->field, problem->what);
         scene_.camera = c;
         if (j.contains("path")) parseCameraPath(j["path"]);
     }
@@ -245,7 +272,13 @@ private:
             if (!scene_.cameraPath.empty() && !(k.time > scene_.cameraPath.back().time))
                 r_.fail(where + ".time", "must be greater than the keyframe before it (" +
                                              std::to_string(scene_.cameraPath.back().time) + ")");
-            if (glm::length(k.target - k.position) < 1e-6f) r_.fail(where + ".look-at", "must differ from pos");
+            Camera at;
+            at.position = k.position;
+            at.target = k.target;
+            if (const auto problem = findCameraProblem(at, sceneExtent()); problem && problem->field == "look-at")
+                r_.fail(where + ".look-at", problem->what);
+            at.up = scene_.camera.up;
+            if (!upIsUsable(at)) r_.fail(where + ".look-at", "looks along camera.up; the view needs another direction");
             scene_.cameraPath.push_back(k);
         }
     }
@@ -374,7 +407,12 @@ private:
         t = glm::rotate(t, glm::radians(rot.z), glm::vec3(0, 0, 1));
         const glm::vec3 s = r_.vec3(j, "scale", where, glm::vec3(1.0f));
         if (glm::any(glm::equal(s, glm::vec3(0.0f)))) r_.fail(where + ".scale", "must not be 0");
-        return glm::scale(t, s);
+        t = glm::scale(t, s);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(t[c][r]))
+                    r_.fail(where, "pos, rotate and scale give a transform that does not fit 32-bit floats");
+        return t;
     }
 
     void parseObject(const json& j, const std::string& where) {
@@ -392,9 +430,19 @@ private:
         const std::string shape = r_.string(j, "shape", where, "");
         const float uvScale = r_.number(j, "uv-scale", where, 1.0f);
         Mesh mesh;
-        if (shape == "box") mesh = shapes::box(r_.vec3(j, "size", where, glm::vec3(1.0f)), uvScale);
-        else if (shape == "plane") {
+        // A side of 0 has no face normal (the faces are built from cross products).
+        auto sides = [&](glm::vec2 used, const glm::vec3& s) {
+            if (!(used.x > 0.0f && used.y > 0.0f) || (shape == "box" && !(s.z > 0.0f)))
+                r_.fail(where + ".size", "every side must be greater than 0, got [" + shortNumber(s.x) + ", " +
+                                             shortNumber(s.y) + ", " + shortNumber(s.z) + "]");
+        };
+        if (shape == "box") {
+            const glm::vec3 s = r_.vec3(j, "size", where, glm::vec3(1.0f));
+            sides(glm::vec2(s.x, s.y), s);
+            mesh = shapes::box(s, uvScale);
+        } else if (shape == "plane") {
             const glm::vec3 s = r_.vec3(j, "size", where, glm::vec3(10.0f));
+            sides(glm::vec2(s.x, s.z == 0 ? s.y : s.z), s);
             mesh = shapes::plane(s.x, s.z == 0 ? s.y : s.z, uvScale);
         } else if (shape == "sphere") mesh = shapes::sphere(r_.positive(j, "radius", where, 0.5f));
         else if (shape == "cylinder") mesh = shapes::cylinder(r_.positive(j, "radius", where, 0.5f), r_.positive(j, "height", where, 1.0f));
@@ -434,6 +482,8 @@ private:
 }  // namespace
 
 Scene parseSceneJson(const std::string& text, const std::string& path) {
+    // Depth, and numbers beyond a double or a float, by JSON path before parsing.
+    checkJsonText(text, path);
     json root;
     try {
         root = json::parse(text);
@@ -442,11 +492,14 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
         const auto pos = msg.find("parse error");
         if (pos != std::string::npos) msg = msg.substr(pos);
         throw FileError(path, textPosition(text, e.byte) + ": malformed JSON (" + msg + ")");
+    } catch (const json::exception& e) {
+        throw FileError(path, "not a readable scene file: " + jsonErrorText(e));
     }
     Scene scene;
     scene.source = path;
     SceneJsonParser parser(path, scene);
     parser.parse(root);
+    checkSceneValues(scene);  // what the fields combine into (extent, transforms, framed camera)
     return scene;
 }
 

@@ -6,6 +6,7 @@
 #include "renderer/Error.h"
 #include "renderer/scene/BuiltinScenes.h"
 #include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneCheck.h"
 #include "renderer/scene/SceneJsonLoader.h"
 
 namespace dw {
@@ -57,6 +58,7 @@ Scene loadScene(const std::string& spec) {
         }
         if (!imported.hasCamera) scene.camera = Camera::framing(imported.bounds);
         if (imported.lightCount == 0) addDefaultLightRig(scene);
+        checkSceneValues(scene);  // what the nodes combine into (extent, transforms, framed camera)
         return scene;
     }
     if (!fs::exists(spec)) {

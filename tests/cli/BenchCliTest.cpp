@@ -156,7 +156,8 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
         EXPECT_EQ(rowsByConfig(readCsv(part)).size(), 4u);
         // A shard runs whole comparison groups: each configuration's baseline ran beside it.
         std::ifstream sj(dir / ("shard" + std::to_string(i) + ".json"));
-        for (const auto& c : nlohmann::json::parse(sj)["configs"]) EXPECT_TRUE(c["ratio"].is_number()) << c["config"];
+        const nlohmann::json shard = nlohmann::json::parse(sj);  // the loop below iterates into it
+        for (const auto& c : shard["configs"]) EXPECT_TRUE(c["ratio"].is_number()) << c["config"];
         shardCsvs += " " + part.string();
     }
     const fs::path merged = dir / "merged.csv", mergedJson = dir / "merged.json";

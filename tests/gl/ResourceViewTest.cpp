@@ -385,7 +385,8 @@ TEST(ResourceViews, IntegerTexturesReadAsTheirValues) {
     auto [lo, hi] = s->bufferView().lastAutoRange();
     EXPECT_FLOAT_EQ(lo.r, 0.0f);
     EXPECT_FLOAT_EQ(hi.r, (kW - 1) + 1000.0f * (kH - 1));
-    const ProbeValue* v = probed(probePixel(s->pipeline(), 4, 3), "test.counts");
+    const ProbeResult r = probePixel(s->pipeline(), 4, 3);  // v points into it
+    const ProbeValue* v = probed(r, "test.counts");
     ASSERT_NE(v, nullptr);
     EXPECT_FLOAT_EQ(v->raw.x, 4.0f + 1000.0f * (kH - 1 - 3));
 }

@@ -1,0 +1,38 @@
+#pragma once
+// Checks JSON text before any parser builds a tree from it, for every JSON the
+// product reads (scene files, presets, glTF, bench results):
+//  - nesting depth is bounded (kMaxJsonDepth): recursive readers and writers
+//    (tinygltf's extras, nlohmann's dump) would otherwise overflow the stack;
+//  - a number that does not fit a 64-bit double ("1e400") is reported with the
+//    JSON path of its field, not the JSON library's exception text;
+//  - optionally, every number must fit a 32-bit float (|v| <= FLT_MAX): the
+//    renderer stores every quantity of these formats as a float, and 1e39
+//    would silently become +inf.
+// Text that is not well-formed JSON is left to the parser to report: the scan
+// stops quietly at the first byte it does not expect.
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <string_view>
+
+namespace dw {
+
+// Deeper than any file of these formats needs, far below what the recursive
+// readers' stacks can take (also under AddressSanitizer).
+constexpr int kMaxJsonDepth = 128;
+
+struct JsonGuardOptions {
+    int maxDepth = kMaxJsonDepth;
+    bool numbersAreFloats = true;  // refuse numbers beyond the 32-bit float range
+};
+
+// Throws FileError(source, "<json path>: <problem>"), e.g.
+// "scene.json: lights[0].intensity: 1e39 does not fit a 32-bit float (largest about 3.4e38)"
+// or "preset.json: line 1, column 129: JSON nested deeper than 128 levels (at knobs.x[0][0]...)".
+void checkJsonText(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+
+// A JSON library exception's text without its "[json.exception.type_error.302] "
+// tag, for the rare error the checks above leave to the parser.
+std::string jsonErrorText(const std::exception& e);
+
+}  // namespace dw

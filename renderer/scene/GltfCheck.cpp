@@ -1,0 +1,224 @@
+#include "renderer/scene/GltfCheck.h"
+
+#include <cctype>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "renderer/Error.h"
+#include "renderer/io/FloatCheck.h"
+
+namespace dw {
+
+namespace {
+
+using json = nlohmann::json;
+
+std::uint32_t readU32(const std::string& bytes, std::size_t at) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;  // GLB is little-endian, as is every platform the workbench builds on
+}
+
+constexpr double kPi = 3.14159265358979323846;
+// Exporters write pi/2 rounded to a 32-bit float (1.5707963705...).
+constexpr double kRightAngleTolerance = 1e-6;
+
+class ValueChecker {
+public:
+    ValueChecker(const json& root, const std::string& path) : root_(root), path_(path) {}
+
+    void run() {
+        checkUris("buffers");
+        checkUris("images");
+        if (root_.contains("cameras") && root_["cameras"].is_array())
+            for (std::size_t i = 0; i < root_["cameras"].size(); ++i) checkCamera(root_["cameras"][i], "cameras[" + std::to_string(i) + "]");
+        const json* lights = find(root_, {"extensions", "KHR_lights_punctual", "lights"});
+        if (lights && lights->is_array())
+            for (std::size_t i = 0; i < lights->size(); ++i)
+                checkLight((*lights)[i], "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]");
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw FileError(path_, where + ": " + what);
+    }
+
+    static const json* find(const json& j, std::initializer_list<const char*> keys) {
+        const json* at = &j;
+        for (const char* k : keys) {
+            if (!at->is_object() || !at->contains(k)) return nullptr;
+            at = &(*at)[k];
+        }
+        return at;
+    }
+
+    // The number at obj[key] (fallback when absent), as a float-representable double.
+    double number(const json& obj, const char* key, const std::string& where, double fallback) const {
+        if (!obj.contains(key)) return fallback;
+        const json& v = obj[key];
+        const std::string field = where + "." + key;
+        if (!v.is_number()) fail(field, "expected a number");
+        const double d = v.get<double>();
+        if (const std::string problem = floatProblem(d); !problem.empty()) fail(field, problem);
+        return d;
+    }
+
+    void checkUris(const char* array) const {
+        if (!root_.contains(array) || !root_[array].is_array()) return;
+        const json& a = root_[array];
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (!a[i].is_object() || !a[i].contains("uri") || !a[i]["uri"].is_string()) continue;
+            const std::string uri = a[i]["uri"].get<std::string>();
+            if (uri.rfind("data:", 0) != 0) continue;
+            std::string problem;
+            if (!isDecodableDataUri(uri, problem))
+                fail(std::string(array) + "[" + std::to_string(i) + "].uri", "malformed data: URI: " + problem);
+        }
+    }
+
+    void checkCamera(const json& c, const std::string& where) const {
+        if (!c.is_object() || !c.contains("perspective") || !c["perspective"].is_object()) return;
+        const json& p = c["perspective"];
+        const std::string w = where + ".perspective";
+        if (!p.contains("yfov")) fail(w, "needs \"yfov\"");
+        const double yfov = number(p, "yfov", w, 0.0);
+        if (!(yfov > 0.0 && yfov < 179.0 * kPi / 180.0))
+            fail(w + ".yfov", "must be in (0, 179) degrees, got " + shortNumber(yfov) + " rad (" +
+                                  shortNumber(yfov * 180.0 / kPi) + " degrees)");
+        if (!p.contains("znear")) fail(w, "needs \"znear\"");
+        const double znear = number(p, "znear", w, 0.0);
+        if (!(znear > 0.0)) fail(w + ".znear", "must be greater than 0, got " + shortNumber(znear));
+        if (static_cast<float>(znear) < FLT_MIN)
+            fail(w + ".znear", shortNumber(znear) + " is below the smallest normal 32-bit float (1.2e-38)");
+        if (p.contains("zfar")) {
+            const double zfar = number(p, "zfar", w, 0.0);
+            if (!(static_cast<float>(zfar) > static_cast<float>(znear)))
+                fail(w + ".zfar", "must be greater than znear (" + shortNumber(znear) + "), got " + shortNumber(zfar));
+        }
+        if (p.contains("aspectRatio")) {
+            const double aspect = number(p, "aspectRatio", w, 1.0);
+            if (!(aspect > 0.0)) fail(w + ".aspectRatio", "must be greater than 0, got " + shortNumber(aspect));
+        }
+    }
+
+    void checkLight(const json& l, const std::string& where) const {
+        if (!l.is_object()) fail(where, "expected an object");
+        if (!l.contains("type") || !l["type"].is_string()) fail(where, "needs a \"type\" (directional, point or spot)");
+        const std::string type = l["type"].get<std::string>();
+        if (type != "directional" && type != "point" && type != "spot")
+            fail(where + ".type", "expected \"directional\", \"point\" or \"spot\", got \"" + type + "\"");
+        const double intensity = number(l, "intensity", where, 1.0);
+        if (intensity < 0.0) fail(where + ".intensity", "must not be negative, got " + shortNumber(intensity));
+        if (l.contains("color")) {
+            const json& c = l["color"];
+            if (!c.is_array() || c.size() != 3) fail(where + ".color", "expected an array of 3 numbers");
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::string field = where + ".color[" + std::to_string(k) + "]";
+                if (!c[k].is_number()) fail(field, "expected a number");
+                const double v = c[k].get<double>();
+                if (const std::string problem = floatProblem(v); !problem.empty()) fail(field, problem);
+                if (v < 0.0) fail(field, "must not be negative, got " + shortNumber(v));
+            }
+            // Colour times intensity is the light's radiance: it must stay a float too.
+            for (std::size_t k = 0; k < 3; ++k)
+                if (const std::string problem = floatProblem(c[k].get<double>() * intensity); !problem.empty())
+                    fail(where + ".intensity", "color times intensity " + problem);
+        }
+        if (l.contains("range")) {
+            const double range = number(l, "range", where, 1.0);
+            if (!(range > 0.0)) fail(where + ".range", "must be greater than 0, got " + shortNumber(range));
+        }
+        if (type != "spot") return;
+        const json empty = json::object();
+        const json& s = l.contains("spot") ? l["spot"] : empty;
+        if (!s.is_object()) fail(where + ".spot", "expected an object");
+        const std::string w = where + ".spot";
+        const double inner = number(s, "innerConeAngle", w, 0.0);
+        const double outer = number(s, "outerConeAngle", w, kPi / 4.0);
+        if (!(outer > 0.0 && outer <= kPi / 2.0 + kRightAngleTolerance))
+            fail(w + ".outerConeAngle", "must be in (0, pi/2] radians, got " + shortNumber(outer) + " (" +
+                                             shortNumber(outer * 180.0 / kPi) + " degrees)");
+        if (!(inner >= 0.0 && inner < outer))
+            fail(w + ".innerConeAngle", "must be at least 0 and less than outerConeAngle (" + shortNumber(outer) +
+                                            "), got " + shortNumber(inner));
+    }
+
+    const json& root_;
+    const std::string& path_;
+};
+
+}  // namespace
+
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path) {
+    auto fail = [&](const std::string& what) { throw FileError(path, "malformed GLB: " + what); };
+    if (bytes.size() < 12)
+        fail("the file is " + std::to_string(bytes.size()) + " bytes, shorter than the 12-byte GLB header");
+    if (bytes.compare(0, 4, "glTF") != 0) fail("the file does not start with the GLB magic \"glTF\"");
+    const std::uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
+    if (version != 2) fail("GLB version " + std::to_string(version) + " (only version 2 is read)");
+    if (length > bytes.size())
+        fail("the header says " + std::to_string(length) + " bytes but the file has " + std::to_string(bytes.size()));
+    if (length < 20) fail("no JSON chunk: the file ends after the header");
+    const std::uint32_t jsonLength = readU32(bytes, 12), jsonType = readU32(bytes, 16);
+    if (jsonType != 0x4E4F534Au) fail("the first chunk is not a JSON chunk");
+    if (20ull + jsonLength > length)
+        fail("the JSON chunk (" + std::to_string(jsonLength) + " bytes) runs past the end of the file (" +
+             std::to_string(length) + " bytes)");
+    const std::size_t binAt = 20ull + jsonLength;
+    if (binAt < length) {
+        if (binAt + 8 > length) fail("the chunk after the JSON chunk has an incomplete header");
+        const std::uint64_t binLength = readU32(bytes, binAt);
+        if (binAt + 8 + binLength > length)
+            fail("the binary chunk (" + std::to_string(binLength) + " bytes) runs past the end of the file (" +
+                 std::to_string(length) + " bytes)");
+    }
+    return std::string_view(bytes).substr(20, jsonLength);
+}
+
+bool isDecodableDataUri(const std::string& uri, std::string& problem) {
+    // The types tinygltf 2.7 decodes (IsDataURI), and image/webp, which the
+    // importer decodes itself (EXT_texture_webp); anything else tinygltf
+    // would look for as a file named "data:...".
+    static const char* kTypes[] = {"application/octet-stream", "application/gltf-buffer", "image/jpeg", "image/png",
+                                   "image/bmp", "image/gif", "image/webp", "text/plain"};
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos) {
+        problem = "no ',' before the data";
+        return false;
+    }
+    const std::string header = uri.substr(5, comma - 5);
+    const std::string suffix = ";base64";
+    if (header.size() < suffix.size() || header.compare(header.size() - suffix.size(), suffix.size(), suffix) != 0) {
+        problem = "the data is not marked ;base64";
+        return false;
+    }
+    const std::string type = header.substr(0, header.size() - suffix.size());
+    bool known = false;
+    for (const char* t : kTypes) known = known || type == t;
+    if (!known) {
+        problem = "media type '" + type + "' is not one the reader decodes (application/octet-stream, "
+                  "application/gltf-buffer, image/png, image/jpeg, ...)";
+        return false;
+    }
+    const std::size_t begin = comma + 1;
+    std::size_t end = uri.size();
+    while (end > begin && uri[end - 1] == '=' && uri.size() - end < 2) --end;
+    for (std::size_t i = begin; i < end; ++i) {
+        const unsigned char c = static_cast<unsigned char>(uri[i]);
+        if (!(std::isalnum(c) || c == '+' || c == '/')) {
+            problem = "invalid base64 character at position " + std::to_string(i);
+            return false;
+        }
+    }
+    if ((uri.size() - begin) % 4 == 1) {
+        problem = "the base64 data has a length that no byte count encodes to";
+        return false;
+    }
+    return true;
+}
+
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path) { ValueChecker(gltf, path).run(); }
+
+}  // namespace dw

@@ -1,0 +1,29 @@
+#pragma once
+// Checks on a glTF file's container and JSON made before tinygltf reads it, so
+// that its problems are named in the file's own terms (glTF 2.0 spec section
+// and JSON path) and so that the importer accepts exactly what the scene JSON
+// loader accepts for the same quantity:
+//  - the GLB header and chunk headers (spec "GLB File Format Specification");
+//  - `data:` URIs of buffers and images: a type tinygltf decodes, base64 payload;
+//  - perspective cameras: 0 < yfov < 179 degrees, znear a normal float > 0,
+//    zfar > znear, aspectRatio > 0 (spec "cameras");
+//  - KHR_lights_punctual: known type, color and intensity not negative,
+//    range > 0, spots 0 <= innerConeAngle < outerConeAngle <= pi/2.
+// Every function throws FileError(path, "<what>: <problem>").
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+
+namespace dw {
+
+// The JSON chunk of a .glb after checking the 12-byte header (magic "glTF",
+// version 2, length not past the file) and the chunk headers.
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path);
+
+// The value checks above on the parsed glTF JSON.
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path);
+
+// Whether `uri` is a data: URI tinygltf decodes; `problem` says why not.
+bool isDecodableDataUri(const std::string& uri, std::string& problem);
+
+}  // namespace dw

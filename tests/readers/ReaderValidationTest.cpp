@@ -1,0 +1,383 @@
+// Invalid values in every reader (scene JSON, presets, glTF, knob values) are
+// refused with a message that names the file and the field; degenerate
+// cameras are refused or take their documented fallback; JSON depth is
+// bounded. Each test asserts the message's words and, for what is accepted,
+// the values that result (finite matrices, grey channels copied).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "renderer/Error.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/knobs/Preset.h"
+#include "renderer/scene/CameraCheck.h"
+#include "renderer/scene/GltfLoader.h"
+#include "renderer/scene/SceneJsonLoader.h"
+#include "renderer/scene/SceneLoader.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path& dir() {
+    static const fs::path d = [] {
+        fs::path p = fs::temp_directory_path() / ("dw-reader-tests-" + std::to_string(::getpid()));
+        fs::create_directories(p);
+        return p;
+    }();
+    return d;
+}
+
+fs::path writeText(const std::string& name, const std::string& text) {
+    const fs::path p = dir() / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+
+fs::path regression(const std::string& target, const std::string& name) {
+    return fs::path(DW_FUZZ_DIR) / "regression" / target / name;
+}
+
+// The message loadScene gives for `path`, or "no error".
+std::string sceneError(const fs::path& path) {
+    try {
+        loadScene(path.string());
+    } catch (const FileError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+std::string presetError(const std::string& text, const std::string& name = "p.json") {
+    try {
+        Preset::fromJson(text, name);
+    } catch (const FileError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+// A one-triangle glTF (embedded buffer) to break one field at a time.
+json triangleGltf() {
+    json j;
+    j["asset"] = {{"version", "2.0"}};
+    j["buffers"] = json::array({{{"byteLength", 44},
+                                 {"uri", "data:application/octet-stream;base64,"
+                                         "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}}});
+    j["bufferViews"] = json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+                                    {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}}});
+    j["accessors"] = json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+                                   {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
+                                  {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}});
+    j["meshes"] = json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}})}}});
+    j["nodes"] = json::array({{{"mesh", 0}}});
+    j["scenes"] = json::array({{{"nodes", {0}}}});
+    j["scene"] = 0;
+    return j;
+}
+
+json withCamera(json j, const json& perspective, const json& node = {{"translation", {0, 0, 5}}}) {
+    j["cameras"] = json::array({{{"type", "perspective"}, {"perspective", perspective}}});
+    json n = node;
+    n["camera"] = 0;
+    j["nodes"].push_back(n);
+    j["scenes"][0]["nodes"].push_back(1);
+    return j;
+}
+
+json withLight(json j, const json& light) {
+    j["extensionsUsed"] = {"KHR_lights_punctual"};
+    j["extensions"]["KHR_lights_punctual"]["lights"] = json::array({light});
+    j["nodes"].push_back({{"translation", {0, 3, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    j["scenes"][0]["nodes"].push_back(1);
+    return j;
+}
+
+std::string gltfError(const std::string& name, const json& j) { return sceneError(writeText(name, j.dump())); }
+
+const char* kSceneHead = R"({"objects": [{"shape": "box", "size": [1, 1, 1]}], )";
+std::string scene(const std::string& rest) { return std::string(kSceneHead) + rest + "}"; }
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+#define EXPECT_HAS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
+
+}  // namespace
+
+// ---- numbers beyond a float, everywhere -----------------------------------
+
+TEST(ReaderValidation, SceneNumberBeyondFloatNamesFileAndField) {
+    const std::string e = sceneError(regression("scene_json", "light_intensity_beyond_float.json"));
+    EXPECT_HAS(e, "light_intensity_beyond_float.json: lights[0].intensity[0]: 1e+39 does not fit a 32-bit float");
+    // Camera planes and positions, spot exponents: the same rule, the same words.
+    EXPECT_HAS(sceneError(writeText("near.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "near": 1e39})"))),
+               "near.json: camera.near: 1e39 does not fit a 32-bit float");
+    EXPECT_HAS(sceneError(writeText("pos.json", scene(R"("camera": {"pos": [0, -4e38, 5], "look-at": [0, 0, 0]})"))),
+               "pos.json: camera.pos[1]: -4e38 does not fit a 32-bit float");
+    EXPECT_HAS(sceneError(writeText("exp.json", scene(R"("lights": [{"pos": [0, 2, 0], "direction": [0, -1, 0], "exponent": 3.5e38}])"))),
+               "exp.json: lights[0].exponent: 3.5e38 does not fit a 32-bit float");
+}
+
+TEST(ReaderValidation, NumberBeyondDoubleNamesThePathNotTheJsonLibrary) {
+    const std::string e = sceneError(regression("scene_json", "number_beyond_double.json"));
+    EXPECT_HAS(e, "number_beyond_double.json: camera.pos[1]: 1e400 is too large");
+    EXPECT_EQ(e.find("json.exception"), std::string::npos) << e;
+}
+
+TEST(ReaderValidation, PresetNumbersBeyondFloatAreRefused) {
+    std::ifstream in(regression("preset", "camera_near_beyond_float.json"));
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_HAS(presetError(text, "cam.json"), "cam.json: camera.near: 1e39 does not fit a 32-bit float");
+    EXPECT_HAS(presetError(R"({"knobs": {"tonemap.key": 1e39}})"), "p.json: knobs.tonemap.key: 1e39 does not fit a 32-bit float");
+    // A string where a number belongs is named, not the JSON library's type error.
+    const std::string typed = presetError(R"({"knobs": {}, "camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "fov": "wide"}})");
+    EXPECT_HAS(typed, "p.json: camera.fov: expected a number");
+    EXPECT_HAS(presetError(R"({"name": 3, "knobs": {}})"), "p.json: name: expected a string");
+}
+
+TEST(ReaderValidation, KnobValueBeyondFloatIsRefused) {
+    KnobRegistry k;
+    k.addFloat("a.scale", 1.0, 0.0, 1e300, "a", "a float");
+    try {
+        k.applyAssignment("a.scale=1e39");
+        ADD_FAILURE() << "1e39 accepted";
+    } catch (const Error& e) {
+        EXPECT_HAS(e.what(), "knob 'a.scale' = 1e39: 1e+39 does not fit a 32-bit float");
+    }
+    EXPECT_THROW(k.applyAssignment("a.scale=1e400"), Error);
+    k.applyAssignment("a.scale=3e38");
+    EXPECT_FLOAT_EQ(static_cast<float>(k.value(0)), 3e38f);
+}
+
+TEST(ReaderValidation, GltfCameraAndLightNumbersBeyondFloatAreRefused) {
+    EXPECT_HAS(gltfError("zfar.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 1e39}})),
+               "zfar.gltf: cameras[0].perspective.zfar: 1e+39 does not fit a 32-bit float");
+    EXPECT_HAS(gltfError("intensity.gltf", withLight(triangleGltf(), {{"type", "point"}, {"intensity", 1e39}})),
+               "intensity.gltf: extensions.KHR_lights_punctual.lights[0].intensity: 1e+39 does not fit a 32-bit float");
+    // Any number of the file: a node translation.
+    json j = triangleGltf();
+    j["nodes"][0]["translation"] = {0, 5e38, 0};
+    EXPECT_HAS(gltfError("node.gltf", j), "node.gltf: nodes[0].translation[1]: 5e+38 does not fit a 32-bit float");
+}
+
+// ---- cameras ---------------------------------------------------------------
+
+TEST(ReaderValidation, UpParallelToViewOrZeroIsAnError) {
+    EXPECT_HAS(sceneError(regression("scene_json", "camera_up_parallel_to_view.json")),
+               "camera_up_parallel_to_view.json: camera.up: is parallel to the view direction");
+    EXPECT_HAS(sceneError(writeText("zero-up.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "up": [0, 0, 0]})"))),
+               "zero-up.json: camera.up: must not be zero");
+    EXPECT_HAS(presetError(R"({"knobs": {}, "camera": {"pos": [0, 9, 0], "look-at": [0, 0, 0], "up": [0, 1, 0]}})"),
+               "p.json: camera.up: is parallel to the view direction");
+}
+
+TEST(ReaderValidation, WithoutAnUpALookStraightDownUsesMinusZ) {
+    const Scene s = parseSceneJson(scene(R"("camera": {"pos": [0, 9, 0], "look-at": [0, 0, 0]})"), (dir() / "down.json").string());
+    EXPECT_EQ(s.camera.up, glm::vec3(0, 0, -1));
+    EXPECT_TRUE(finite(s.camera.view()));
+    EXPECT_TRUE(finite(s.camera.projection(16.0f / 9.0f)));
+}
+
+TEST(ReaderValidation, ClipPlanesAndFieldOfViewOutsideTheirRangesAreErrors) {
+    auto err = [](const std::string& name, const std::string& camera) {
+        return sceneError(writeText(name, scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], )" + camera + "}")));
+    };
+    EXPECT_HAS(err("denormal.json", R"("near": 1e-39, "far": 10)"), "denormal.json: camera.near: 1e-39 is below the smallest normal 32-bit float");
+    EXPECT_HAS(err("zero-near.json", R"("near": 0)"), "zero-near.json: camera.near: must be greater than 0");
+    EXPECT_HAS(err("order.json", R"("near": 5, "far": 5)"), "order.json: camera.far: must be greater than camera.near");
+    EXPECT_HAS(err("fov0.json", R"("fov": 0)"), "fov0.json: camera.fov: must be greater than 0");
+    EXPECT_HAS(err("fov180.json", R"("fov": 180)"), "fov180.json: camera.fov: must be less than 179 degrees");
+    EXPECT_HAS(presetError(R"({"knobs": {}, "camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "near": 2, "far": 1}})"),
+               "p.json: camera.far: must be greater than near (2), got 1");
+    EXPECT_HAS(presetError(R"({"knobs": {}, "camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "fov": 180}})"),
+               "p.json: camera.fov: must be in (0, 179) degrees, got 180");
+}
+
+TEST(ReaderValidation, LookAtDistanceIsRelativeToTheScene) {
+    // A scene 1e-8 across, seen from 1e-8 away: accepted, finite matrices.
+    const Scene tiny = parseSceneJson(
+        R"({"objects": [{"shape": "box", "size": [1e-8, 1e-8, 1e-8]}],
+            "camera": {"pos": [0, 0, 1e-8], "look-at": [0, 0, 0], "near": 1e-10, "far": 1e-7}})",
+        (dir() / "tiny.json").string());
+    EXPECT_TRUE(finite(tiny.camera.view()));
+    EXPECT_TRUE(finite(tiny.camera.projection(1.0f)));
+    // The same 1e-8 in a scene 100 units across, 50 units from the origin, is no view direction.
+    EXPECT_HAS(sceneError(writeText("close.json", R"({"objects": [{"shape": "box", "size": [100, 100, 100]}],
+            "camera": {"pos": [50, 0, 1e-8], "look-at": [50, 0, 0]}})")),
+               "close.json: camera.look-at: must differ from pos");
+    Camera c;
+    c.position = {0, 0, 1e-8f};
+    c.target = {0, 0, 0};
+    c.nearPlane = 1e-10f;
+    c.farPlane = 1e-7f;
+    EXPECT_FALSE(findCameraProblem(c, 2e-8f));
+    ASSERT_TRUE(findCameraProblem(c, 200.0f));
+    EXPECT_EQ(findCameraProblem(c, 200.0f)->field, "look-at");
+}
+
+TEST(ReaderValidation, GltfCameraProblemsAreNamed) {
+    EXPECT_HAS(gltfError("yfov0.gltf", withCamera(triangleGltf(), {{"yfov", 0}, {"znear", 0.1}})),
+               "yfov0.gltf: cameras[0].perspective.yfov: must be in (0, 179) degrees, got 0");
+    EXPECT_HAS(gltfError("znear.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0}})),
+               "znear.gltf: cameras[0].perspective.znear: must be greater than 0");
+    EXPECT_HAS(gltfError("zfar.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 1}, {"zfar", 0.5}})),
+               "zfar.gltf: cameras[0].perspective.zfar: must be greater than znear (1), got 0.5");
+    EXPECT_HAS(gltfError("scale0.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}},
+                                                   {{"translation", {0, 0, 5}}, {"scale", {0, 0, 0}}})),
+               "scale0.gltf: camera[0]: its node's transform has zero scale");
+    // A tiny (not zero) scale still gives a direction: no underflow on the way.
+    Scene small = loadScene(writeText("small-scale.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}},
+                                                                     {{"translation", {0, 0, 5}}, {"scale", {1e-25, 1e-25, 1e-25}}})
+                                                              .dump())
+                                .string());
+    EXPECT_NEAR(glm::length(small.camera.target - small.camera.position), 1.0f, 1e-5f);
+    EXPECT_NEAR(small.camera.up.y, 1.0f, 1e-5f);
+    // An accepted camera gives finite matrices.
+    Scene s = loadScene(writeText("ok-camera.gltf", withCamera(triangleGltf(), {{"yfov", 0.8}, {"znear", 0.1}}).dump()).string());
+    EXPECT_NEAR(s.camera.fovYDegrees, glm::degrees(0.8f), 1e-3f);
+    EXPECT_TRUE(finite(s.camera.view()));
+    EXPECT_TRUE(finite(s.camera.projection(1.0f)));
+}
+
+// ---- the glTF importer accepts what the scene JSON loader accepts ------------
+
+TEST(ReaderValidation, GltfLightsFollowTheSceneJsonRules) {
+    EXPECT_HAS(gltfError("neg.gltf", withLight(triangleGltf(), {{"type", "point"}, {"intensity", -2}})),
+               "neg.gltf: extensions.KHR_lights_punctual.lights[0].intensity: must not be negative, got -2");
+    EXPECT_HAS(sceneError(writeText("neg.json", scene(R"("lights": [{"pos": [0, 2, 0], "intensity": [-2, 1, 1]}])"))),
+               "neg.json: lights[0].intensity: must not be negative");
+    EXPECT_HAS(sceneError(regression("gltf", "spot_outer_cone_over_90_degrees.gltf")),
+               "spot_outer_cone_over_90_degrees.gltf: extensions.KHR_lights_punctual.lights[0].spot.outerConeAngle: "
+               "must be in (0, pi/2] radians, got 3");
+    EXPECT_HAS(gltfError("inner.gltf", withLight(triangleGltf(), {{"type", "spot"},
+                                                                  {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.5}}}})),
+               "inner.gltf: extensions.KHR_lights_punctual.lights[0].spot.innerConeAngle: must be at least 0 and less than outerConeAngle");
+    // pi/2 as a 32-bit float writes it (1.5707963705) is the edge, not beyond it.
+    Scene s = loadScene(writeText("edge.gltf", withLight(triangleGltf(), {{"type", "spot"},
+                                                                         {"spot", {{"outerConeAngle", 1.5707963705062866}}}})
+                                                   .dump())
+                            .string());
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_FLOAT_EQ(s.lights[0].cutoffDegrees, 90.0f);
+    EXPECT_TRUE(std::isfinite(s.lights[0].exponent));
+}
+
+// ---- messages in the user's terms --------------------------------------------
+
+TEST(ReaderValidation, GlbHeaderProblemsAreNamedAsSuch) {
+    const std::string glb = "glTF" + std::string("\x02\0\0\0", 4);
+    auto err = [](const std::string& name, const std::string& bytes) { return sceneError(writeText(name, bytes)); };
+    EXPECT_HAS(err("short.glb", "glTF"), "short.glb: malformed GLB: the file is 4 bytes, shorter than the 12-byte GLB header");
+    EXPECT_HAS(err("magic.glb", "{\"asset\": {\"version\": \"2.0\"}}"), "magic.glb: malformed GLB: the file does not start with the GLB magic");
+    EXPECT_HAS(err("v1.glb", "glTF" + std::string("\x01\0\0\0\x14\0\0\0", 8) + std::string(8, '\0')), "v1.glb: malformed GLB: GLB version 1");
+    EXPECT_HAS(err("length.glb", glb + std::string("\xff\0\0\0", 4) + std::string(8, '\0')),
+               "length.glb: malformed GLB: the header says 255 bytes but the file has 20");
+    EXPECT_HAS(err("chunk.glb", glb + std::string("\x20\0\0\0\x40\0\0\0JSON", 12) + std::string(12, ' ')),
+               "chunk.glb: malformed GLB: the JSON chunk (64 bytes) runs past the end of the file (32 bytes)");
+}
+
+TEST(ReaderValidation, MalformedDataUriIsNotFileNotFound) {
+    json j = triangleGltf();
+    j["buffers"][0]["uri"] = "data:application/foo;base64,AAAA";
+    const std::string type = gltfError("uri-type.gltf", j);
+    EXPECT_HAS(type, "uri-type.gltf: buffers[0].uri: malformed data: URI: media type 'application/foo'");
+    j["buffers"][0]["uri"] = "data:application/octet-stream;base64,AA*A";
+    EXPECT_HAS(gltfError("uri-char.gltf", j), "uri-char.gltf: buffers[0].uri: malformed data: URI: invalid base64 character");
+    j["buffers"][0]["uri"] = "data:application/octet-stream,plain";
+    EXPECT_HAS(gltfError("uri-plain.gltf", j), "buffers[0].uri: malformed data: URI: the data is not marked ;base64");
+    EXPECT_EQ(type.find("not found"), std::string::npos) << type;
+}
+
+TEST(ReaderValidation, OneChannelEnvironmentImageIsReadAsGrey) {
+    FloatImage grey;
+    grey.width = 4;
+    grey.height = 2;
+    grey.channels = 1;
+    for (int i = 0; i < 8; ++i) grey.pixels.push_back(0.25f * static_cast<float>(i));
+    writeImage((dir() / "grey.exr").string(), grey, {"Y"});
+    const Scene s = parseSceneJson(R"({"sky": {"type": "environment", "file": "grey.exr"}})", (dir() / "sky.json").string());
+    ASSERT_EQ(s.sky.equirect.channels, 3);
+    ASSERT_EQ(s.sky.equirect.pixels.size(), 24u);
+    for (int i = 0; i < 8; ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(s.sky.equirect.pixels[i * 3 + c], 0.25f * static_cast<float>(i));
+    // A missing one is named once: the scene file, the field, the image.
+    const std::string e = sceneError(writeText("nosky.json", R"({"sky": {"type": "environment", "file": "none.exr"}})"));
+    EXPECT_HAS(e, "nosky.json: sky.file: environment image 'none.exr' not found");
+    EXPECT_EQ(e.find("sky.file", e.find("sky.file") + 1), std::string::npos) << e;
+}
+
+// ---- memory safety -----------------------------------------------------------
+
+TEST(ReaderValidation, ImageBytesPastTheirBufferAreRefusedBeforeAnyRead) {
+    // Under AddressSanitizer (scripts/test.sh --sanitize, the CI sanitizer
+    // test) a read outside the buffer would stop this test.
+    const std::string e = sceneError(regression("gltf", "image_bytes_past_buffer.glb"));
+    EXPECT_HAS(e, "image_bytes_past_buffer.glb: image[0]: bufferView[3] (bytes 840 to 3273) runs past the end of buffer[0] (900 bytes)");
+}
+
+TEST(ReaderValidation, DeepNestingIsRefusedInEveryReader) {
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    EXPECT_HAS(sceneError(writeText("deep.json", R"({"objects": )" + deep + "}")),
+               "deep.json: line 1, column 140: JSON nested deeper than 128 levels (at objects[0][0]");
+    EXPECT_HAS(presetError(R"({"knobs": {"tonemap.key": )" + deep + "}}"), "p.json: line 1, column 153: JSON nested deeper than 128 levels");
+    EXPECT_HAS(sceneError(writeText("deep.gltf", R"({"asset": {"version": "2.0", "extras": )" + deep + "}}")),
+               "deep.gltf: line 1, column 166: JSON nested deeper than 128 levels (at asset.extras[0]");
+    // 128 levels are read; 129 are not.
+    EXPECT_NO_THROW(checkJsonText(std::string(128, '[') + std::string(128, ']'), "ok.json"));
+    EXPECT_THROW(checkJsonText(std::string(129, '[') + std::string(129, ']'), "deep.json"), FileError);
+}
+
+TEST(ReaderValidation, ImageLibrariesDoNotWriteTheirOwnLinesToStderr) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "sanitizer builds leave stderr alone (StderrCapture.h)";
+#endif
+    // A PNG whose IDAT chunk type is corrupt: libpng prints "libpng error: ..." itself.
+    const std::string png =
+        std::string("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x04\x08\x06\0\0\0", 29) +
+        std::string("\xa9\xf1\x9e\x7e\0\0\0\x0cIDXT", 12) + std::string(16, '\x01');
+    writeText("corrupt.png", png);
+    const fs::path sceneFile = writeText("corrupt-texture.json",
+                                    R"({"materials": {"m": {"diffuse-map": "corrupt.png"}}, "objects": [{"shape": "box", "material": "m"}]})");
+    testing::internal::CaptureStderr();
+    const std::string e = sceneError(sceneFile);
+    const std::string printed = testing::internal::GetCapturedStderr();
+    EXPECT_HAS(e, "corrupt-texture.json: materials.m.diffuse-map: cannot load texture: ");
+    EXPECT_HAS(e, "corrupt.png");
+    EXPECT_EQ(printed, "");
+}
+
+TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
+    // Each number fits; the box's diagonal, and a camera framing it, do not.
+    EXPECT_HAS(sceneError(writeText("huge.json", R"({"objects": [{"shape": "box", "size": [3e38, 3e38, 3e38]}]})")),
+               "huge.json: the scene's extent");
+    // A translation that fits, under a parent scale that carries it beyond a float.
+    json j = triangleGltf();
+    j["nodes"] = json::array({{{"scale", {1e30, 1e30, 1e30}}, {"children", {1}}}, {{"mesh", 0}, {"translation", {1e10, 0, 0}}}});
+    EXPECT_HAS(gltfError("nested-scale.gltf", j), "nested-scale.gltf: ");
+    EXPECT_EQ(gltfError("nested-scale.gltf", j).find("no error"), std::string::npos);
+    // A box side of 0 has no face normal (found by fuzz_scene_json).
+    EXPECT_HAS(sceneError(writeText("flat-box.json", R"({"objects": [{"shape": "box", "size": [0, 2, 1]}]})")),
+               "flat-box.json: objects[0].size: every side must be greater than 0, got [0, 2, 1]");
+    // A uv-scale that fits, times the plane's size, does not.
+    EXPECT_HAS(sceneError(writeText("uv.json", R"({"objects": [{"shape": "plane", "size": [10, 0, 10], "uv-scale": 3e38}]})")),
+               "uv.json: mesh 'plane': vertex 1 has a texture coordinate that does not fit 32-bit floats");
+    // A walk-through keyframe looking straight down the scene camera's up.
+    EXPECT_HAS(sceneError(writeText("path.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
+        "path": [{"time": 0, "pos": [0, 1, 5], "look-at": [0, 0, 0]}, {"time": 1, "pos": [0, 9, 0], "look-at": [0, 0, 0]}]})"))),
+               "path.json: camera.path[1].look-at: looks along camera.up");
+}
