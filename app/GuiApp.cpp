@@ -331,7 +331,8 @@ private:
         if (!deferred) {
             const auto mode = state.viewport.mode == ui::DisplayMode::Textured ? ForwardPreview::Mode::Textured
                                                                               : ForwardPreview::Mode::Wireframe;
-            base = &forward_.render(pipeline.gpuScene(), pipeline.width(), pipeline.height(), mode);
+            base = &forward_.render(pipeline.gpuScene(), pipeline.width(), pipeline.height(), mode,
+                                    DepthConvention::fromUniform(pipeline.lastCamera().depth));
             depth = &forward_.depth();
         } else if (!viewportWhy.empty()) {
             state.viewportImage.unavailable = viewportWhy;
@@ -343,6 +344,7 @@ private:
                 BufferViewSettings s = state.viewport.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
+                s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
                 base = &session_.bufferView().render(*o, s);
                 if (BufferView::resolveAutoRange(o->decl.kind, s)) {
                     std::tie(state.viewportImage.autoLo, state.viewportImage.autoHi) = session_.bufferView().lastAutoRange();
@@ -374,6 +376,7 @@ private:
                 BufferViewSettings s = state.side.settingsOr();
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
+                s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
                 const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
                 if (!isDisplayReady(*o) && BufferView::resolveAutoRange(o->decl.kind, s)) {
                     std::tie(state.sideImage.autoLo, state.sideImage.autoHi) = sideView_.lastAutoRange();
@@ -393,20 +396,28 @@ private:
         next.histogram = std::move(img.histogram);
         next.histogramOf = std::move(img.histogramOf);
         next.histogramFrame = img.histogramFrame;
+        next.haveNonFinite = img.haveNonFinite;
+        next.nonFinite = std::move(img.nonFinite);
         img = std::move(next);
     }
     // The raw values of the shown output, binned, when the view asks for it:
     // a read-back of the whole buffer, so at most every 10 frames for the
     // same output.
     void histogram(const ui::ImageView& view, const PublishedOutput& o, ui::ShownImage& img, const ui::UiState& state) {
-        if (!view.histogram) return;
+        const bool nonFiniteView =
+            BufferView::resolveMapping(o.decl.kind, view.settingsOr()) == BufferViewSettings::Mapping::NonFinite;
+        if (!view.histogram && !nonFiniteView) return;
         const std::string key = o.decl.name + "/" + std::to_string(view.settingsOr().layer) + "/" +
                                 std::to_string(view.settingsOr().sample);
         if (img.histogramOf == key && state.frame < img.histogramFrame + 10) return;
         try {
-            img.histogram = computeHistogram(readOutputRaw(o, view.settingsOr().selection()), 128);
+            const FloatImage raw = readOutputRaw(o, view.settingsOr().selection());
+            img.histogram = computeHistogram(raw, 128);
+            img.nonFinite = FiniteCheck::count(raw, o.decl.name);
+            img.haveNonFinite = true;
         } catch (const std::exception&) {
             img.histogram = {};  // outputs that cannot be read back as an image (tables) have none
+            img.haveNonFinite = false;
         }
         img.histogramOf = key;
         img.histogramFrame = state.frame;

@@ -19,7 +19,7 @@ namespace {
 using M = BufferViewSettings::Mapping;
 using C = BufferViewSettings::Channel;
 
-const char* kMappings[] = {"auto", "direct (range)", "linear depth", "normal colours", "heat map", "tone map"};
+const char* kMappings[] = {"auto", "direct (range)", "linear depth", "normal colours", "heat map", "tone map", "non-finite (NaN / Inf)"};
 const char* kChannels[] = {"RGB", "R", "G", "B", "A"};
 
 ImU32 barColor(M mapping, float t) {
@@ -93,12 +93,22 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
         int m = static_cast<int>(s.mapping) + 1;
         const M resolved = BufferView::resolveMapping(output->decl.kind, s);
         ImGui::SetNextItemWidth(w * 1.3f);
-        if (ImGui::Combo("##mapping", &m, kMappings, 6)) {
+        if (ImGui::Combo("##mapping", &m, kMappings, 7)) {
             s.mapping = static_cast<M>(m - 1);
             changed = true;
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("mapping to colours; auto is %s for this output", kMappings[static_cast<int>(resolved) + 1]);
+        if (resolved == M::NonFinite) {
+            // NaN magenta, +Inf red, -Inf blue over a dim picture of the rest; counted from a read-back.
+            ImGui::SameLine();
+            const NonFiniteCount& n = img.nonFinite;
+            if (!img.haveNonFinite) ImGui::TextDisabled("counting...");
+            else if (n.nonFinite() == 0) ImGui::TextDisabled("no NaN or Inf in %lld values", n.values);
+            else
+                ImGui::TextColored(ImVec4(1.0f, 0.3f, 1.0f, 1.0f), "NaN %lld, +Inf %lld, -Inf %lld; first at (%d, %d)", n.nan,
+                                   n.positiveInf, n.negativeInf, n.firstX, n.firstY);
+        }
         if (resolved == M::Tonemap) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(w);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/inspect/BufferView.h"
+#include "renderer/inspect/FiniteCheck.h"
 #include "renderer/io/ImageHistogram.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/graph/Pipeline.h"
@@ -87,6 +88,10 @@ struct ShownImage {
     ImageHistogram histogram;
     std::string histogramOf;
     std::uint64_t histogramFrame = 0;
+    // The shown values' NaN / +Inf / -Inf counts and first pixel (with the
+    // histogram, and whenever the non-finite mapping is shown).
+    bool haveNonFinite = false;
+    NonFiniteCount nonFinite;
     // The automatic range the view used (BufferView::lastAutoRange), per channel.
     bool haveAutoRange = false;
     glm::vec4 autoLo{0.0f}, autoHi{0.0f};

@@ -22,7 +22,9 @@
 namespace dw {
 
 struct BufferViewSettings {
-    enum class Mapping { Auto = -1, Direct = 0, LinearDepth = 1, Normal = 2, Heatmap = 3, Tonemap = 4 };
+    // NonFinite: NaN magenta, +Inf red, -Inf blue, finite values dim grey
+    // (where a NaN entered; FiniteCheck counts them).
+    enum class Mapping { Auto = -1, Direct = 0, LinearDepth = 1, Normal = 2, Heatmap = 3, Tonemap = 4, NonFinite = 5 };
     enum class Channel { RGB = 0, R = 1, G = 2, B = 3, A = 4 };
     Mapping mapping = Mapping::Auto;
     Channel channel = Channel::RGB;
@@ -30,6 +32,7 @@ struct BufferViewSettings {
     float rangeMin = 0.0f, rangeMax = 1.0f;
     float exposure = 0.0f;  // EV, tone-mapped view
     float nearPlane = 0.1f, farPlane = 100.0f;  // for linear depth
+    bool reversedDepth = true;  // the depth.mode of the frame shown (DepthConvention)
     int layer = -1;   // arrays, 3D: one layer (slice); cube arrays: one cube; -1: all, in a grid
     int sample = -1;  // multisample: one sample; -1: resolved (the mean of the samples)
     ViewSelection selection() const { return {layer, sample}; }

@@ -20,7 +20,7 @@ vec3 lightRadiance(Light light, Surface s) {
         bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
         vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;
         float dist = directional ? 0.0 : length(toLight);
-        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position,
+        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position, s.normal,
                               normalize(toLight), dist);
     }
 #endif
@@ -28,4 +28,4 @@ vec3 lightRadiance(Light light, Surface s) {
 }
 
 // Whether the pixel holds a surface to light (not background, not cleared depth).
-bool isSurface(Surface s) { return !(s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND); }
+bool isSurface(Surface s) { return !(isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND); }

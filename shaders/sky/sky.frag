@@ -27,7 +27,7 @@ vec3 procedural(vec3 d) {
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    if (texelFetch(uDepth, px, 0).r < 1.0) {
+    if (!isFarDepth(texelFetch(uDepth, px, 0).r)) {
         outColor = vec4(0.0);
         return;
     }
@@ -45,5 +45,9 @@ void main() {
     } else {
         c = procedural(d);
     }
-    outColor = vec4(c * sky.intensity, 1.0);
+    // The sky target is half float: stay finite. Environment images are
+    // sanitised at load; a scene built in code may still carry NaN (-> 0)
+    // or infinities and huge values (-> 65504).
+    c *= sky.intensity;
+    outColor = vec4(any(isnan(c)) ? vec3(0.0) : min(max(c, vec3(0.0)), vec3(65504.0)), 1.0);
 }
