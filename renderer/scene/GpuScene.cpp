@@ -1,6 +1,7 @@
 #include "renderer/scene/GpuScene.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "renderer/Error.h"
 
@@ -30,6 +31,19 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::ui
     return t;
 }
 
+// Anisotropic filtering where the driver has it, except on Mesa's llvmpipe:
+// there (Mesa 22.3) an anisotropic lookup whose texture coordinates reach
+// about 1e5 (a textured floor scaled by 1e4) spins for minutes per draw, and
+// on a CPU rasteriser the filter costs more than it shows anyway.
+bool anisotropyUsable() {
+    static const bool usable = [] {
+        if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") && epoxy_gl_version() < 46) return false;
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        return !(renderer && std::strstr(renderer, "llvmpipe"));
+    }();
+    return usable;
+}
+
 }  // namespace
 
 GLuint GpuScene::samplerFor(const TextureMapping& m) {
@@ -38,8 +52,7 @@ GLuint GpuScene::samplerFor(const TextureMapping& m) {
     if (it != samplerIndex_.end()) return samplers_[it->second].id();
     gl::Sampler s = gl::Sampler::create(m.minFilter, m.magFilter, m.wrapS, m.wrapT, "glTF sampler");
     const bool mipmapped = m.minFilter != GL_NEAREST && m.minFilter != GL_LINEAR;
-    if (mipmapped && (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") || epoxy_gl_version() >= 46))
-        glSamplerParameterf(s.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    if (mipmapped && anisotropyUsable()) glSamplerParameterf(s.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     samplers_.push_back(std::move(s));
     samplerIndex_[key] = samplers_.size() - 1;
     return samplers_.back().id();
@@ -56,8 +69,7 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     t.upload(0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     t.generateMipmaps();
     t.setWrap(GL_REPEAT);
-    if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") || epoxy_gl_version() >= 46)
-        glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    if (anisotropyUsable()) glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     textureBytes_ += static_cast<std::size_t>(img.width) * img.height * 4 * 4 / 3;
     textures_.push_back(std::move(t));
     const int idx = static_cast<int>(textures_.size() - 1);
