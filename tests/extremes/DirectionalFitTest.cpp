@@ -44,24 +44,12 @@ FloatImage lbuffer(Scene s, bool shadows = true) {
     return session->readRaw("lbuffer");
 }
 
-double fractionOff(const FloatImage& a, const FloatImage& b) {
-    long long off = 0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < 3; ++c)
-                if (!(std::fabs(a.at(x, y, c) - b.at(x, y, c)) <= 0.02f * std::fabs(a.at(x, y, c)) + 0.002f)) {
-                    ++off;
-                    break;
-                }
-    return static_cast<double>(off) / (a.width * a.height);
-}
-
 }  // namespace
 
 TEST(DirectionalShadowFit, NearFiveHundredthsFarAMillionMatchesTheSafeView) {
     const FloatImage safe = lbuffer(sunScene(0.1f, 100.0f));
-    const double shadowsMatter = fractionOff(safe, lbuffer(sunScene(0.1f, 100.0f), false));
-    const double extreme = fractionOff(safe, lbuffer(sunScene(0.05f, 1e6f)));
+    const double shadowsMatter = test::fractionOff(safe, lbuffer(sunScene(0.1f, 100.0f), false));
+    const double extreme = test::fractionOff(safe, lbuffer(sunScene(0.05f, 1e6f)));
     std::printf("near 0.05, far 1e6 vs near 0.1, far 100: %.3f%% of pixels off by > 2%% (shadows on vs off: %.1f%%)\n",
                 100.0 * extreme, 100.0 * shadowsMatter);
     EXPECT_GT(shadowsMatter, 0.02);  // measured 3.2%: the comparison sees the shadows

@@ -91,19 +91,6 @@ void expectFinite(const Frame& f, const std::string& what) {
                                     << c.firstX << ", " << c.firstY << ")";
 }
 
-// Pixels whose L-buffer value is off by more than 2% (+ 0.002 absolute).
-double fractionOff(const FloatImage& a, const FloatImage& b) {
-    long long off = 0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-            for (int c = 0; c < 3; ++c)
-                if (!(std::fabs(a.at(x, y, c) - b.at(x, y, c)) <= 0.02f * std::fabs(a.at(x, y, c)) + 0.002f)) {
-                    ++off;
-                    break;
-                }
-    return static_cast<double>(off) / (a.width * a.height);
-}
-
 // Everything scaled by `k` about the origin: positions, sizes, near/far and
 // the attenuation's distance terms (linear / k, quadratic / k^2).
 void scaleScene(Scene& s, float k) {
@@ -230,7 +217,7 @@ TEST_P(Extremes, EveryBufferFiniteAndInvariantsHold) {
         Scene safe = baseScene();
         c.safe(safe);
         const Frame ref = renderCase(std::move(safe), c.safeKnobs);
-        const double off = fractionOff(ref.lbuffer, f.lbuffer);
+        const double off = test::fractionOff(ref.lbuffer, f.lbuffer);
         std::printf("%s: %.3f%% of L-buffer pixels off by > 2%% from the safe setting (bound %.1f%%)\n", c.name.c_str(),
                     100.0 * off, 100.0 * c.bound);
         EXPECT_LE(off, c.bound) << c.name;

@@ -17,11 +17,6 @@ using nlohmann::json;
 
 namespace {
 
-fs::path write(const std::string& name, const json& j) {
-    const fs::path p = test::tempDir() / name;
-    std::ofstream(p) << j.dump(1);
-    return p;
-}
 
 // A unit cube with one normal per face (24 vertices), counter-clockwise
 // outward, as /work/shared/cases/inputs/negative_scale_mirror.gltf has it.
@@ -60,7 +55,7 @@ TEST(GltfRender, MirroredNodeHasNoBackFacingPixels) {
     json j = b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx,
                       {{{"translation", {-1.2, 0, 0}}}, {{"translation", {1.2, 0, 0}}, {"scale", {-1, 1, 1}}}});
     auto session = test::makeSession(200, 150);
-    session->loadScene(write("mirror.gltf", j).string());
+    session->loadScene(test::writeJson("mirror.gltf", j).string());
     session->render({{"gbuffer.view_normal", "gbuffer.view_position", "gbuffer.albedo"}});
     const FloatImage n = session->readRaw("gbuffer.view_normal");
     const FloatImage p = session->readRaw("gbuffer.view_position");
@@ -111,7 +106,7 @@ TEST(GltfRender, NormalMapUnderAMirroringTransformIsTheMirrorImage) {
         j["nodes"].push_back({{"translation", {0, 0, 3}}, {"camera", 0}});
         j["scenes"][0]["nodes"].push_back(1);
         auto session = test::makeSession(64, 64);
-        session->loadScene(write(scaleX < 0 ? "tilt_mirrored.gltf" : "tilt.gltf", j).string());
+        session->loadScene(test::writeJson(scaleX < 0 ? "tilt_mirrored.gltf" : "tilt.gltf", j).string());
         session->render({{"gbuffer.view_normal"}});
         return session->readRaw("gbuffer.view_normal");
     };
@@ -152,7 +147,7 @@ TEST(GltfRender, OcclusionTextureScalesTheAmbientTermAsTheKnobSays) {
     j["nodes"].push_back({{"translation", {0, 0, 3}}, {"camera", 0}});
     j["scenes"][0]["nodes"].push_back(1);
     auto session = test::makeSession(48, 48);
-    session->loadScene(write("occlusion.gltf", j).string());
+    session->loadScene(test::writeJson("occlusion.gltf", j).string());
     // Ambient light only: without the default light rig a glTF without lights gets.
     Scene ambientOnly = session->scene();
     ambientOnly.lights.clear();

@@ -1,5 +1,9 @@
 #include "tests/support/GltfBuilder.h"
 
+#include <fstream>
+
+#include "tests/support/TestSupport.h"
+
 namespace dw::test {
 
 using nlohmann::json;
@@ -35,6 +39,12 @@ json GltfBuilder::finish(const json& attributes, int indexAccessor, const std::v
     }
     j["scene"] = 0;
     return j;
+}
+
+std::filesystem::path writeJson(const std::string& name, const nlohmann::json& j) {
+    const std::filesystem::path p = tempDir() / name;
+    std::ofstream(p) << j.dump(1);
+    return p;
 }
 
 }  // namespace dw::test

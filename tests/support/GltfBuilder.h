@@ -3,11 +3,15 @@
 // appended one by one, one mesh instanced by one node per transform.
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace dw::test {
+
+// Writes `j` as test::tempDir()/name (a .gltf or scene file) and returns the path.
+std::filesystem::path writeJson(const std::string& name, const nlohmann::json& j);
 
 std::string base64(const std::vector<unsigned char>& data);
 

@@ -229,4 +229,16 @@ double maxAbsDifference(const FloatImage& a, const FloatImage& b, int channels, 
     return worst;
 }
 
+double fractionOff(const FloatImage& a, const FloatImage& b, float relative, float absolute) {
+    long long off = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (!(std::fabs(a.at(x, y, c) - b.at(x, y, c)) <= relative * std::fabs(a.at(x, y, c)) + absolute)) {
+                    ++off;
+                    break;
+                }
+    return static_cast<double>(off) / (static_cast<double>(a.width) * a.height);
+}
+
 }  // namespace dw::test

@@ -56,4 +56,8 @@ struct ChannelStats {
 ChannelStats stats(const FloatImage& img, int channel);
 double maxAbsDifference(const FloatImage& a, const FloatImage& b, int channels, int* worstX = nullptr, int* worstY = nullptr);
 
+// The fraction of pixels whose R, G or B in `b` is off from `a` by more than
+// relative * |a| + absolute (the invariance bound of the extremes tests).
+double fractionOff(const FloatImage& a, const FloatImage& b, float relative = 0.02f, float absolute = 0.002f);
+
 }  // namespace dw::test

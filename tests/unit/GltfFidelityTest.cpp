@@ -30,11 +30,6 @@ using nlohmann::json;
 
 namespace {
 
-fs::path write(const std::string& name, const json& j) {
-    const fs::path p = test::tempDir() / name;
-    std::ofstream(p) << j.dump(1);
-    return p;
-}
 
 // The eight corners and twelve triangles of /work/shared/cases'
 // no_normals_shared_corners.gltf: a unit cube whose faces share corners.
@@ -50,7 +45,7 @@ TEST(GltfFidelity, PrimitiveWithoutNormalsGetsOneFlatNormalPerFace) {
     const int pos = b.vec3(kCubeCorners);
     const int idx = b.indices(kCubeTriangles);
     Scene s;
-    importGltf(write("flat.gltf", b.finish({{"POSITION", pos}}, idx)).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("flat.gltf", b.finish({{"POSITION", pos}}, idx)).string(), s, glm::mat4(1.0f), false);
     ASSERT_EQ(s.meshes.size(), 1u);
     const Mesh& m = s.meshes[0];
     std::set<std::tuple<int, int, int>> distinct;
@@ -83,7 +78,7 @@ TEST(GltfFidelity, NonFiniteNormalsAreRepairedWithOneWarning) {
     const int nrm = b.vec3(normals);
     const int idx = b.indices(kCubeTriangles);
     Scene s;
-    importGltf(write("nan_normals.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s,
+    importGltf(test::writeJson("nan_normals.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s,
                glm::mat4(1.0f), false);
     ASSERT_EQ(s.meshes.size(), 1u);
     for (const Vertex& v : s.meshes[0].vertices) {
@@ -106,7 +101,7 @@ TEST(GltfFidelity, NonFiniteTangentsAreRegeneratedWithOneWarning) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const int tan = b.accessor(std::vector<float>{1, 0, 0, 1, nan, 0, 0, 1, 1, 0, 0, 1}, 5126, "VEC4", 3);
     Scene s;
-    importGltf(write("nan_tangents.gltf",
+    importGltf(test::writeJson("nan_tangents.gltf",
                      b.finish({{"POSITION", pos}, {"NORMAL", nrm}, {"TEXCOORD_0", uv}, {"TANGENT", tan}}, -1))
                    .string(),
                s, glm::mat4(1.0f), false);
@@ -129,7 +124,7 @@ TEST(GltfFidelity, AccessorsWithoutBufferViewAreZeros) {
     j["accessors"].push_back({{"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
     j["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 2}}}, {"indices", 1}});
     Scene s;
-    importGltf(write("no_buffer_view.gltf", j).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("no_buffer_view.gltf", j).string(), s, glm::mat4(1.0f), false);
     ASSERT_EQ(s.meshes.size(), 2u);
     for (const Mesh& m : s.meshes) {
         EXPECT_EQ(m.indices.size(), 6u);
@@ -172,7 +167,7 @@ TEST(GltfFidelity, IgnoredFeaturesAreNamedInOneWarningAndUnsupportedRequiredExte
     j["skins"] = json::array({{{"joints", {1}}}});
     j["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
     Scene s;
-    importGltf(write("ignored.gltf", j).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("ignored.gltf", j).string(), s, glm::mat4(1.0f), false);
     ASSERT_EQ(s.warnings.size(), 1u);
     const std::string& w = s.warnings[0];
     for (const char* part : {"1 skin", "morph targets on 1 primitive", "BLEND on 1 material", "KHR_materials_clearcoat"})
@@ -182,7 +177,7 @@ TEST(GltfFidelity, IgnoredFeaturesAreNamedInOneWarningAndUnsupportedRequiredExte
     j["extensionsRequired"] = {"KHR_materials_clearcoat"};
     try {
         Scene s2;
-        importGltf(write("required.gltf", j).string(), s2, glm::mat4(1.0f), false);
+        importGltf(test::writeJson("required.gltf", j).string(), s2, glm::mat4(1.0f), false);
         ADD_FAILURE() << "an unsupported required extension must be an error";
     } catch (const FileError& e) {
         EXPECT_NE(std::string(e.what()).find("requires glTF extension KHR_materials_clearcoat"), std::string::npos);
@@ -216,7 +211,7 @@ TEST(GltfFidelity, VertexColoursSecondUvSetSamplersAndTextureTransformsAreImport
                                    {"occlusionTexture", {{"index", 0}, {"strength", 0.5}}}}});
     j["meshes"][0]["primitives"][0]["material"] = 0;
     Scene s;
-    importGltf(write("mapping.gltf", j).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("mapping.gltf", j).string(), s, glm::mat4(1.0f), false);
     ASSERT_TRUE(s.warnings.empty()) << s.warnings[0];
     const Mesh& m = s.meshes[0];
     ASSERT_EQ(m.vertices.size(), 3u);
@@ -355,7 +350,7 @@ TEST(GltfFidelity, TexturesKeepStraightAlpha) {
     j["images"] = json::array({{{"uri", "translucent.png"}}});
     j["textures"] = json::array({{{"source", 0}}});
     Scene s;
-    importGltf(write("alpha.gltf", j).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("alpha.gltf", j).string(), s, glm::mat4(1.0f), false);
     ASSERT_EQ(s.images.size(), 1u);
     const auto& px = s.images[0].rgba;
     EXPECT_EQ(px[0], 255);
@@ -375,7 +370,7 @@ TEST(GltfFidelity, WebpTexturesDecodeAndArePreferred) {
     j["textures"] = json::array({{{"source", 0}, {"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}});
     j["extensionsUsed"] = {"EXT_texture_webp"};
     Scene s;
-    importGltf(write("webp.gltf", j).string(), s, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("webp.gltf", j).string(), s, glm::mat4(1.0f), false);
     EXPECT_TRUE(s.warnings.empty());
     const Material& m = s.materials[static_cast<size_t>(s.meshes[0].material)];
     ASSERT_GE(m.baseColorTexture, 0);
@@ -389,7 +384,7 @@ TEST(GltfFidelity, WebpTexturesDecodeAndArePreferred) {
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     j["images"][1] = {{"uri", "data:image/webp;base64," + OIIO::Strutil::base64_encode(bytes)}};
     Scene embedded;
-    importGltf(write("webp-data-uri.gltf", j).string(), embedded, glm::mat4(1.0f), false);
+    importGltf(test::writeJson("webp-data-uri.gltf", j).string(), embedded, glm::mat4(1.0f), false);
     const Material& me = embedded.materials[static_cast<size_t>(embedded.meshes[0].material)];
     const auto& epx = embedded.images[static_cast<size_t>(me.baseColorTexture)].rgba;
     EXPECT_LT(epx[0], 40);
@@ -416,7 +411,7 @@ TEST(GltfFidelity, CornersFacingAwayAndTrianglesWoundAgainstTheirNormalsAreRepai
     normals[2] = -1.0f;
     const int pos = b.vec3(positions), nrm = b.vec3(normals), idx = b.indices(indices);
     Scene s;
-    importGltf(write("creases.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s, glm::mat4(1.0f),
+    importGltf(test::writeJson("creases.gltf", b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx)).string(), s, glm::mat4(1.0f),
                false);
     const Mesh& m = s.meshes[0];
     for (size_t t = 0; t < m.indices.size() / 3; ++t) {
@@ -436,7 +431,7 @@ TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
     test::GltfBuilder b;
     json j = b.finish({{"POSITION", b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0})}}, -1);
     j["meshes"][0]["primitives"][0]["mode"] = 0;
-    const fs::path p = write("points.gltf", j);
+    const fs::path p = test::writeJson("points.gltf", j);
     try {
         loadScene(p.string());
         FAIL() << "a file without triangles was accepted";
