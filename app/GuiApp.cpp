@@ -172,6 +172,7 @@ public:
                 BufferViewSettings s = state.viewport.settings;
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
+                s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
                 base = &session_.bufferView().render(*o, s);
             }
             depth = pipeline.outputs().find("gbuffer.depth")->texture;
@@ -193,6 +194,7 @@ public:
                 BufferViewSettings s = state.side.settings;
                 s.nearPlane = session_.camera().nearPlane;
                 s.farPlane = session_.camera().farPlane;
+                s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
                 const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
                 state.sideImage = {t.id(), t.width(), t.height(), {}};
             }

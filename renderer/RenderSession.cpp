@@ -46,6 +46,7 @@ FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSetti
     if (isDisplayReady(*o)) return readOutputRaw(*o);
     settings.nearPlane = camera_.nearPlane;
     settings.farPlane = camera_.farPlane;
+    settings.reversedDepth = pipeline_.lastCamera().depth.x > 0.5f;
     return readRgba8(view_.render(*o, settings));
 }
 

@@ -1,5 +1,6 @@
 #include "renderer/gl/FullscreenTriangle.h"
 
+#include "renderer/gl/DepthConvention.h"
 #include "renderer/gl/Sampler.h"
 
 namespace dw::gl {
@@ -27,6 +28,7 @@ void resetPipelineState(int width, int height) {
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glDepthFunc(GL_LESS);
+    DepthConvention::applyClipControl();  // depth in [0, 1], either mapping
     glFrontFace(GL_CCW);
     glViewport(0, 0, width, height);
     glBindSamplers(0, Sampler::kResetUnits, nullptr);  // textures' own sampling state

@@ -13,7 +13,8 @@ private:
 };
 
 // Restores the state every pass starts from: no blend, depth, stencil, cull,
-// scissor or depth clamp; all colour channels writable; depth writes on.
+// scissor or depth clamp; all colour channels writable; depth writes on;
+// clip-space depth in [0, 1] (DepthConvention).
 void resetPipelineState(int width, int height);
 
 }  // namespace dw::gl

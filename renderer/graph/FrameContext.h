@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "renderer/gl/DepthConvention.h"
 #include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
@@ -30,6 +31,7 @@ struct CameraUniforms {
     glm::mat4 inverseView{1.0f};
     glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
     glm::vec4 clip{0.0f};      // near, far, tan(fovY/2), aspect
+    glm::vec4 depth{1.0f, 0.0f, 1.0f, 0.0f};  // DepthConvention::uniform(): reversed flag, far depth, near depth
 };
 
 struct FrameContext {
@@ -73,6 +75,8 @@ struct FrameContext {
     const gl::Buffer& buffer(const std::string& name) const;
     // The current image of the post chain.
     const gl::Texture& currentImage() const { return texture(image); }
+    // The depth convention of this frame (the depth.mode knob).
+    DepthConvention depth() const { return DepthConvention::fromUniform(camera.depth); }
 };
 
 }  // namespace dw

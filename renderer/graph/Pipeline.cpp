@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <set>
 
@@ -43,6 +44,7 @@ Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
             throw Error(std::string("post pass '") + passes_[i]->name() + "' declares no output image");
     outputs_.declare("pipeline", {kFinalOutput, OutputKind::Color,
                                   "the display image: the end of the post chain (tonemap.result, then each post pass that ran)"});
+    depthMode_ = knobs.requireEnum("depth.mode");
 }
 
 Pipeline::~Pipeline() = default;
@@ -82,14 +84,22 @@ void Pipeline::resize(int width, int height) {
     for (auto& p : passes_) p->resize(width, height, outputs_);
 }
 
-CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int height) {
+CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int height, DepthMode depthMode) {
     CameraUniforms u;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    u.view = camera.view();
-    u.projection = camera.projection(aspect);
-    u.viewProjection = u.projection * u.view;
-    u.inverseProjection = glm::inverse(u.projection);
-    u.inverseView = glm::inverse(u.view);
+    const DepthConvention convention(depthMode);
+    // In double precision, rounded once: the inverse of a projection with
+    // near 1e-5 and far 1e7 loses most of its digits when inverted in float.
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(camera.position), glm::dvec3(camera.target), glm::dvec3(camera.up));
+    const glm::dmat4 projection = convention.perspective(glm::radians(static_cast<double>(camera.fovYDegrees)),
+                                                         static_cast<double>(width) / height, camera.nearPlane,
+                                                         camera.farPlane);
+    u.view = glm::mat4(view);
+    u.projection = glm::mat4(projection);
+    u.viewProjection = glm::mat4(projection * view);
+    u.inverseProjection = glm::mat4(glm::inverse(projection));
+    u.inverseView = glm::mat4(glm::inverse(view));
+    u.depth = convention.uniform();
     u.viewport = glm::vec4(width, height, 1.0f / width, 1.0f / height);
     u.clip = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDegrees) * 0.5f), aspect);
     return u;
@@ -278,7 +288,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
                 throw Error("buffer '" + name + "' is not produced: pass '" + r.name + "' did not run (" + r.reason + ")");
     }
 
-    camera_ = cameraUniforms(camera, width_, height_);
+    camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
     cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
     cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
     allocateResources(plan);

@@ -84,7 +84,9 @@ public:
     int height() const { return height_; }
     const CameraUniforms& lastCamera() const { return camera_; }
     const GpuScene& gpuScene() const { return gpu_; }
-    static CameraUniforms cameraUniforms(const Camera& camera, int width, int height);
+    // View and projection built in double precision, in the given depth convention.
+    static CameraUniforms cameraUniforms(const Camera& camera, int width, int height,
+                                         DepthMode depthMode = DepthMode::Reversed);
     // The output "final" stands for under the current knobs.
     std::string resolveFinal() const;
     // Plans without executing: which passes would run for `request`, in the
@@ -121,6 +123,7 @@ private:
     gl::ShaderLibrary* shaders_ = nullptr;
     const Scene* scene_ = nullptr;
     CameraUniforms camera_;
+    EnumKnob depthMode_;  // depth.mode: 0 reversed, 1 conventional
     int width_ = 0, height_ = 0;
     std::uint64_t frame_ = 0;
 };

@@ -95,7 +95,8 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     const bool autoRange = resolveAutoRange(output.decl.kind, s);
     ParamsGpu p;
     p.modes = glm::ivec4(static_cast<int>(mapping), static_cast<int>(channel), autoRange ? 1 : 0, output.level);
-    p.flags = glm::ivec4(output.decl.kind == OutputKind::NormalKL, output.decl.kind == OutputKind::Depth,
+    p.flags = glm::ivec4(output.decl.kind == OutputKind::NormalKL, output.decl.kind == OutputKind::Depth ? (s.reversedDepth ? 2 : 1)
+                         : (src && src->isDepth() && s.reversedDepth ? 3 : 0),
                          src && src->isSrgb() ? 1 : 0, static_cast<int>(layout.arrangement));
     p.range = glm::vec4(s.rangeMin, s.rangeMax, s.nearPlane, s.farPlane);
     p.extra = glm::vec4(s.exposure, 0, 0, 0);

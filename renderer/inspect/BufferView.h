@@ -30,6 +30,7 @@ struct BufferViewSettings {
     float rangeMin = 0.0f, rangeMax = 1.0f;
     float exposure = 0.0f;  // EV, tone-mapped view
     float nearPlane = 0.1f, farPlane = 100.0f;  // for linear depth
+    bool reversedDepth = true;  // the depth.mode of the frame shown (DepthConvention)
     int layer = -1;   // arrays, 3D: one layer (slice); cube arrays: one cube; -1: all, in a grid
     int sample = -1;  // multisample: one sample; -1: resolved (the mean of the samples)
     ViewSelection selection() const { return {layer, sample}; }

@@ -15,8 +15,10 @@ class ForwardPreview {
 public:
     enum class Mode { Textured, Wireframe };
     void setup(gl::ShaderLibrary& shaders);
-    // Draws `gpu` with the camera UBO already bound (Pipeline::render binds it).
-    const gl::Texture& render(const GpuScene& gpu, int width, int height, Mode mode);
+    // Draws `gpu` with the camera UBO already bound (Pipeline::render binds
+    // it); `depth` must be the convention that camera's projection was built in.
+    const gl::Texture& render(const GpuScene& gpu, int width, int height, Mode mode,
+                              DepthConvention depth = DepthConvention());
     const gl::Texture& depth() const { return depth_; }
 
 private:

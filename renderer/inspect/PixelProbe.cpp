@@ -102,8 +102,9 @@ ProbeResult probePixel(const Pipeline& pipeline, int x, int y) {
     const CameraUniforms& cam = pipeline.lastCamera();
     if (const ProbeValue* d = value("gbuffer.depth")) {
         s.depth = d->raw.x;
-        s.background = s.depth >= 1.0f;
-        const glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, (yGl + 0.5f) / h * 2.0f - 1.0f, s.depth * 2.0f - 1.0f, 1.0f);
+        s.background = DepthConvention::fromUniform(cam.depth).isFar(s.depth);
+        // Clip depth is in [0, 1] (DepthConvention): window depth is NDC z.
+        const glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, (yGl + 0.5f) / h * 2.0f - 1.0f, s.depth, 1.0f);
         const glm::vec4 v = cam.inverseProjection * ndc;
         s.viewPosition = glm::vec3(v) / v.w;
         s.worldPosition = glm::vec3(cam.inverseView * glm::vec4(s.viewPosition, 1.0f));

@@ -55,7 +55,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
     if (occlusion)
         glCopyImageSubData(depth->id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
     else
-        fbo_.clearDepthStencil(1.0f, 0);
+        fbo_.clearDepthStencil(DepthConvention::fromUniform(camera.depth).farDepth(), 0);
 
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "viewport overlay");
     gl::resetPipelineState(w, h);
@@ -72,7 +72,8 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
     // Two passes: lines hidden by geometry faint, visible ones solid.
     for (int pass = 0; pass < (occlusion ? 2 : 1); ++pass) {
         const bool hidden = occlusion && pass == 0;
-        glDepthFunc(hidden ? GL_GREATER : GL_LEQUAL);
+        const DepthConvention dc = DepthConvention::fromUniform(camera.depth);
+        glDepthFunc(hidden ? dc.farther() : dc.nearerOrEqual());
         const float alpha = hidden ? 0.22f : 0.9f;
         if (s.lightVolumes) {
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);

@@ -33,8 +33,9 @@ void forwardDepthState() {
 std::vector<char> visibleDraws(const GpuScene& gpu, const glm::mat4& viewProjection) {
     const glm::mat4& m = viewProjection;
     auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    // Clip depth in [0, 1] (DepthConvention): the depth planes are z >= 0 and z <= w.
     std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                       row(3) - row(1), row(3) + row(2), row(3) - row(2)};
+                                       row(3) - row(1), row(2), row(3) - row(2)};
     for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
     std::vector<char> visible;
     for (const GpuScene::Draw& d : gpu.draws()) {

@@ -13,8 +13,10 @@ namespace dw {
 
 namespace {
 
-// [-1, 1] clip space to [0, 1] texture space (the seed's matrix B).
-const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+// Clip space (x, y in [-1, 1], depth already in [0, 1]: DepthConvention) to
+// texture space (the seed's matrix B, without its depth remap).
+const glm::mat4 kBias = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0.0f)) *
+                        glm::scale(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 1.0f));
 
 glm::vec3 anyUp(const glm::vec3& dir) { return std::fabs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0); }
 
@@ -78,6 +80,13 @@ void ShadowMaps::ensure(Kind kind, int layers, int size) {
 void ShadowMaps::beginFrame(const FrameContext& ctx, const int counts[3], bool reuse) {
     const int size = ctx.knobs.get(size_);
     mapSize_ = size;
+    depthConvention_ = ctx.depth();
+    // Lit where the receiver is no farther than the map (GL_LEQUAL, or
+    // GL_GEQUAL reversed); outside the map the border reads as the far plane.
+    glSamplerParameteri(compare_.id(), GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(depthConvention_.nearerOrEqual()));
+    const float farDepth = depthConvention_.farDepth();
+    const float border[4] = {farDepth, farDepth, farDepth, farDepth};
+    glSamplerParameterfv(compare_.id(), GL_TEXTURE_BORDER_COLOR, border);
     bytesInUse_ = bytesKeepingAll_ = 0;
     rendered_ = 0;
     const std::size_t texel = 4;  // DEPTH_COMPONENT32F
@@ -119,14 +128,16 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     const float near = far * 1e-3f;
 
     gl::resetPipelineState(size, size);
+    const DepthConvention& dc = depthConvention_;
     glEnable(GL_DEPTH_TEST);
+    glDepthFunc(dc.nearer());
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(k.get(biasSlope_), 0.0f);
+    glPolygonOffset(dc.awaySign() * k.get(biasSlope_), 0.0f);
     const float biasTexels = k.get(biasConstant_);
     fbo_.bind();
     auto target = [&](int layer) {
         fbo_.attachDepthLayer(maps_[kind], 0, layer);
-        fbo_.clearDepth(1.0f);
+        fbo_.clearDepth(dc.farDepth());
     };
 
     if (kind == Map2D) {
@@ -179,12 +190,12 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             hi2 = lo2 + extent + texel;  // one texel of slack for the snap
             lo = glm::vec3(lo2, lo.z);
             hi = glm::vec3(hi2, hi.z);
-            viewProj = glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f) * lightView;
+            viewProj = glm::mat4(dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f)) * lightView;
             out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
         } else {
             const float fov = 2.0f * light.cutoffDegrees + 2.0f;  // <= 2 * kWideSpotDegrees + 2
             const glm::vec3 dir = glm::normalize(light.direction);
-            viewProj = glm::perspective(glm::radians(fov), 1.0f, near, far) *
+            viewProj = glm::mat4(dc.perspective(glm::radians(static_cast<double>(fov)), 1.0, near, far)) *
                        glm::lookAt(light.position, light.position + dir, anyUp(dir));
             out.range.w = biasTexels * 2.0f * std::tan(glm::radians(fov * 0.5f)) / static_cast<float>(size);
         }
@@ -194,7 +205,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
         out.matrix = kBias * viewProj * inverseView;
     } else if (kind == Cube) {
-        const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+        const glm::mat4 proj(dc.perspective(glm::radians(90.0), 1.0, near, far));
         depth_->use();
         for (int f = 0; f < 6; ++f) {
             target(6 * slot + f);
@@ -212,7 +223,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         paraboloid_->set(2, lightView);
         for (int h = 0; h < 2; ++h) {
             target(2 * slot + h);
-            paraboloid_->set(3, glm::vec3(near, far, h == 0 ? 1.0f : -1.0f));
+            paraboloid_->set(3, glm::vec4(near, far, h == 0 ? 1.0f : -1.0f, dc.reversed() ? 1.0f : 0.0f));
             ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::All);
         }
         glDisable(GL_CLIP_DISTANCE0);

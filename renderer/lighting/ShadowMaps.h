@@ -67,6 +67,7 @@ private:
     gl::ShaderLibrary::Handle depth_, paraboloid_;
     gl::Texture maps_[3];
     gl::Sampler compare_;
+    DepthConvention depthConvention_;  // of the frame (beginFrame): projections, clear, test, comparison
     int layers_[3] = {0, 0, 0};
     int mapSize_ = 0;
     gl::Framebuffer fbo_;

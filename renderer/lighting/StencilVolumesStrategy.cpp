@@ -26,7 +26,7 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDisable(GL_BLEND);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(f.ctx.depth().nearer());
         glDepthMask(GL_FALSE);
         glDisable(GL_CULL_FACE);
         glStencilFunc(GL_ALWAYS, 0, 0xFF);

@@ -1,11 +1,17 @@
 #include "renderer/passes/GeometryPass.h"
 
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
-GeometryPass::GeometryPass(KnobRegistry&) {}
+GeometryPass::GeometryPass(KnobRegistry& knobs) {
+    knobs.addEnum("depth.mode", {"reversed", "conventional"}, 0, "depth",
+                  "depth mapping of every depth buffer (G-buffer, shadow maps): reversed (near 1, far 0, GL_GREATER; "
+                  "float depth keeps about 1e-7 relative precision at every distance) or conventional (near 0, far 1, "
+                  "GL_LESS; precision spent near the camera)");
+}
 
 std::vector<OutputDecl> GeometryPass::outputs() const {
     return {
@@ -34,9 +40,10 @@ void GeometryPass::execute(FrameContext& ctx) {
     fbo.clearColor(1, 0, 0, 0, 0);
     fbo.clearColor(2, 0, 0, 0, 0);
     fbo.clearColor(3, 0, 0, 0, 0);
-    fbo.clearDepthStencil(1.0f, 0);
+    const DepthConvention depth = ctx.depth();
+    fbo.clearDepthStencil(depth.farDepth(), 0);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth.nearer());
     // Albedo and specular are sRGB targets: encode the shader's linear values
     // on write, so sampling them decodes back to linear.
     glEnable(GL_FRAMEBUFFER_SRGB);

@@ -10,11 +10,12 @@ namespace dw {
 
 namespace {
 
-// Frustum planes (Gribb & Hartmann) from a view-projection matrix, normalised.
+// Frustum planes (Gribb & Hartmann) from a view-projection matrix, normalised;
+// clip depth in [0, 1] (DepthConvention), so the depth planes are z >= 0 and z <= w.
 std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
     auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
     std::array<glm::vec4, 6> p = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                  row(3) - row(1), row(3) + row(2), row(3) - row(2)};
+                                  row(3) - row(1), row(2), row(3) - row(2)};
     for (auto& plane : p) plane /= glm::length(glm::vec3(plane));
     return p;
 }

@@ -20,10 +20,9 @@ LuminanceStats luminanceStats(const FloatImage& image, double delta) {
         s.max = std::max(s.max, L);
         ++s.finiteCount;
     }
-    if (s.finiteCount > 0) {
-        s.logAverage = std::exp(sumLog / static_cast<double>(s.finiteCount));
-        s.mean = sum / static_cast<double>(s.finiteCount);
-    }
+    if (s.finiteCount > 0) s.mean = sum / static_cast<double>(s.finiteCount);
+    // Nothing counted, or only black: the defined fallback, as on the GPU.
+    s.logAverage = s.finiteCount > 0 && s.max > 0.0 ? std::exp(sumLog / static_cast<double>(s.finiteCount)) : 1.0;
     return s;
 }
 

@@ -13,7 +13,8 @@ struct LuminanceStats {
 };
 
 double luminance(double r, double g, double b);
-// Pixels with a NaN or infinite channel are skipped, as on the GPU.
+// Pixels with a NaN or infinite channel are skipped, as on the GPU. With no
+// pixel left, or only black ones, logAverage is 1 (a neutral exposure).
 LuminanceStats luminanceStats(const FloatImage& image, double delta);
 
 }  // namespace dw::reference

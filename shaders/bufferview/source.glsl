@@ -24,7 +24,7 @@
 
 layout(std140, binding = PASS_UBO) uniform BufferViewParams {
     ivec4 modes;   // x mapping, y channel (0 rgb, 1 r, 2 g, 3 b, 4 a), z auto range, w mip level
-    ivec4 flags;   // x source is KL-encoded normal, y source is depth, z source is an sRGB texture, w arrangement
+    ivec4 flags;   // x source is KL-encoded normal, y source is depth (1 conventional, 2 reversed; 3 a raw reversed depth map), z source is an sRGB texture, w arrangement
     vec4 range;    // x min, y max, z near, w far
     vec4 extra;    // x exposure (EV) for the tone-mapped view
     ivec4 cell;    // x, y cell (layer, face) size; z first layer (cube) shown; w sample (-1: the mean)
@@ -111,17 +111,22 @@ bool viewToSource(ivec2 px, out ivec3 src) {
     return true;
 }
 
+// Window depth in [0, 1] (flags.y: 1 conventional, 2 reversed; dw::DepthConvention) -> distance.
+bool depthReversed() { return view.flags.y == 2; }
 float linearDepth(float d) {
     float n = view.range.z, f = view.range.w;
-    float z = d * 2.0 - 1.0;
-    return 2.0 * n * f / (f + n - z * (f - n));
+    return depthReversed() ? n * f / (n + d * (f - n)) : n * f / (f - d * (f - n));
 }
 
 // Applies the pre-range mapping to a fetched value. Returns false for values
 // that should not count (background depth, NaN/Inf).
 bool mapFetched(inout vec4 v) {
-    if (view.flags.y != 0) {
-        if (v.r >= 1.0) return false;
+    if (view.flags.y == 3) {
+        // Raw window depth (a shadow map) stored reversed: shown the
+        // conventional way round, near dark and far white, in either mode.
+        v.r = 1.0 - v.r;
+    } else if (view.flags.y != 0) {
+        if (depthReversed() ? v.r <= 0.0 : v.r >= 1.0) return false;
         if (view.modes.x == MAP_LINEAR_DEPTH) v = vec4(vec3(linearDepth(v.r)), 1.0);
     } else if (view.flags.x != 0) {
         v = vec4(decodeNormalKL(v.xy), 1.0);

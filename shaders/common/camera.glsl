@@ -1,6 +1,8 @@
 // Camera uniforms (dw::CameraUniforms) and position reconstruction from depth
 // (seed 000, section 3.1: window coordinates and depth back through the
-// inverse projection give the view-space position).
+// inverse projection give the view-space position). Clip-space depth is in
+// [0, 1] (glClipControl GL_ZERO_TO_ONE), so window depth is NDC z; depth.x
+// says whether the mapping is reversed (near 1, far 0; dw::DepthConvention).
 #include "bindings.glsl"
 
 layout(std140, binding = CAMERA_UBO) uniform CameraBlock {
@@ -11,11 +13,19 @@ layout(std140, binding = CAMERA_UBO) uniform CameraBlock {
     mat4 inverseView;
     vec4 viewport;  // width, height, 1/width, 1/height
     vec4 clip;      // near, far, tan(fovY/2), aspect
+    vec4 depth;     // x 1 reversed / 0 conventional, y far-plane depth, z near-plane depth
 } camera;
+
+bool depthReversed() { return camera.depth.x > 0.5; }
+// Window depth of the far plane (the clear value) and of the near plane.
+float farPlaneDepth() { return camera.depth.y; }
+float nearPlaneDepth() { return camera.depth.z; }
+// Whether a stored depth is the cleared background (nothing was drawn).
+bool isFarDepth(float depth) { return depthReversed() ? depth <= 0.0 : depth >= 1.0; }
 
 // uv in [0,1]^2 (pixel centres), depth in [0,1] -> view-space position.
 vec3 viewPositionFromDepth(vec2 uv, float depth) {
-    vec4 ndc = vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    vec4 ndc = vec4(uv * 2.0 - 1.0, depth, 1.0);
     vec4 v = camera.inverseProjection * ndc;
     return v.xyz / v.w;
 }
@@ -24,8 +34,8 @@ vec3 viewPositionAtPixel(ivec2 px, float depth) {
     return viewPositionFromDepth((vec2(px) + 0.5) * camera.viewport.zw, depth);
 }
 
-// Distance along -Z in view space for a window depth (perspective projection).
-float linearizeDepth(float depth, float near, float far) {
-    float z = depth * 2.0 - 1.0;
-    return 2.0 * near * far / (far + near - z * (far - near));
+// Window depth of a point `dist` along the axis of a perspective projection
+// with planes near, far, in this frame's convention (DepthConvention::perspectiveDepth).
+float perspectiveDepth(float dist, float near, float far) {
+    return depthReversed() ? near * (far - dist) / (dist * (far - near)) : far * (dist - near) / (dist * (far - near));
 }

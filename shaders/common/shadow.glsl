@@ -1,4 +1,5 @@
 // Shadow lookups for the lighting pass (seed 000 sections 4.4 and 5.5).
+// Depths follow the frame's convention (camera.glsl: reversed or not).
 // Bias: the maps are drawn with a slope-scaled polygon offset, and the
 // receiver moves a constant number of map texels towards the light.
 // 2D maps (directional, spot): the light's clip space reached from the
@@ -41,7 +42,7 @@ float shadowVisibility(mat4 shadowMatrix, vec4 params, vec4 range, vec3 P, vec3 
     float n = range.x, f = range.y;
     if (mode == SHADOW_CUBE) {
         float z = max(abs(v.x), max(abs(v.y), abs(v.z)));
-        float ref = ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * z)) * 0.5 + 0.5;
+        float ref = perspectiveDepth(z, n, f);
         // Offsets across the direction, about one texel apart at this distance.
         vec3 a = abs(v.y) < 0.9 * length(v) ? vec3(0, 1, 0) : vec3(1, 0, 0);
         vec3 t = normalize(cross(v, a)), b = normalize(cross(v, t));
@@ -60,6 +61,7 @@ float shadowVisibility(mat4 shadowMatrix, vec4 params, vec4 range, vec3 P, vec3 
     if (d.z < 0.0) d.z = -d.z;
     vec2 uv = d.xy / (1.0 + d.z) * 0.5 + 0.5;
     float ref = (len - n) / (f - n);
+    if (depthReversed()) ref = 1.0 - ref;
     for (int j = -radius; j <= radius; ++j)
         for (int i = -radius; i <= radius; ++i) {
             sum += texture(uShadowParaboloid, vec4(uv + vec2(i, j) * texel, layer * 2.0 + hemisphere, ref));

@@ -14,7 +14,7 @@ layout(location = 1) out vec4 outPosition;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(uDepth, px, 0).r;
-    if (depth >= 1.0) {
+    if (isFarDepth(depth)) {
         outNormal = vec4(0.0);
         outPosition = vec4(0.0);
         return;

@@ -16,7 +16,7 @@ out vec4 outColor;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     Surface s = readSurface(px);
-    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
+    if (isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND) {
         outColor = vec4(lightingParams.sky != 0 ? texelFetch(uSky, px, 0).rgb : uBackground, 1.0);
         return;
     }

@@ -13,7 +13,7 @@ void main() {
     if (any(greaterThanEqual(px, ivec2(camera.viewport.xy)))) return;
     float depth = texelFetch(uDepth, px, 0).r;
     float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
-    if (depth >= 1.0 || type == PIXEL_BACKGROUND) return;
+    if (isFarDepth(depth) || type == PIXEL_BACKGROUND) return;
     float dist = -viewPositionAtPixel(px, depth).z;
     uint c = pixelCluster(px, dist);
     atomicMin(cells[c].distMin, floatBitsToUint(dist));

@@ -15,7 +15,7 @@ void main() {
     float depth = texelFetch(uDepth, px, 0).r;
     float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
     float count = 0.0;
-    if (!(depth >= 1.0 || type == PIXEL_BACKGROUND))
+    if (!(isFarDepth(depth) || type == PIXEL_BACKGROUND))
         count = float(cells[pixelCluster(px, -viewPositionAtPixel(px, depth).z)].count);
     imageStore(uClusterCounts, px, vec4(count));
 }

@@ -17,7 +17,7 @@ void main() {
 #endif
     ivec2 px = ivec2(gl_FragCoord.xy);
     Surface s = readSurface(px);
-    if (s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND) {
+    if (isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND) {
         outColor = vec4(0.0);  // not discarded, so the invocation is still counted
         return;
     }

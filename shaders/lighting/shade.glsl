@@ -28,4 +28,4 @@ vec3 lightRadiance(Light light, Surface s) {
 }
 
 // Whether the pixel holds a surface to light (not background, not cleared depth).
-bool isSurface(Surface s) { return !(s.depth >= 1.0 || s.pixelType == PIXEL_BACKGROUND); }
+bool isSurface(Surface s) { return !(isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND); }

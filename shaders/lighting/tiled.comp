@@ -40,7 +40,7 @@ shared uint sMask[MAX_CANDIDATES / 32];
 bool surfaceAt(ivec2 px, out float depth) {
     depth = texelFetch(uDepth, px, 0).r;
     float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
-    return !(depth >= 1.0 || type == PIXEL_BACKGROUND);
+    return !(isFarDepth(depth) || type == PIXEL_BACKGROUND);
 }
 
 void main() {
@@ -67,8 +67,10 @@ void main() {
         ivec2 tileMin = ivec2(gl_WorkGroupID.xy) * TILE_SIZE;
         vec2 pixelMin = vec2(tileMin), pixelMax = vec2(min(tileMin + TILE_SIZE, size));
         vec2 centreUv = 0.5 * (pixelMin + pixelMax) * camera.viewport.zw;
-        float zNear = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMin)).z;
-        float zFar = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMax)).z;
+        // Which extreme is nearer depends on the depth convention (reversed: the largest).
+        float z0 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMin)).z;
+        float z1 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMax)).z;
+        float zNear = max(z0, z1), zFar = min(z0, z1);
         ScreenVolume volume = screenVolume(pixelMin, pixelMax, zNear, zFar);
         for (int i = uFirst + int(tid); i < uEnd; i += GROUP_SIZE) {
             vec4 pr = lights[candidateRows[i]].positionRadius;

@@ -29,7 +29,7 @@ layout(std430, binding = LIGHT_CANDIDATES_SSBO) readonly buffer LightCandidates 
 // orthographic projections alike.
 vec3 pointOnPixelRay(vec2 w, float viewZ) {
     vec2 uv = w * camera.viewport.zw;
-    vec3 a = viewPositionFromDepth(uv, 0.0), b = viewPositionFromDepth(uv, 1.0);
+    vec3 a = viewPositionFromDepth(uv, nearPlaneDepth()), b = viewPositionFromDepth(uv, farPlaneDepth());
     return mix(a, b, (viewZ - a.z) / (b.z - a.z));
 }
 
@@ -48,8 +48,8 @@ ScreenVolume screenVolume(vec2 pixelMin, vec2 pixelMax, float zNear, float zFar)
     vec3 near0[4], far0[4];
     for (int i = 0; i < 4; ++i) {
         vec2 uv = corner[i] * camera.viewport.zw;
-        near0[i] = viewPositionFromDepth(uv, 0.0);
-        far0[i] = viewPositionFromDepth(uv, 1.0);
+        near0[i] = viewPositionFromDepth(uv, nearPlaneDepth());
+        far0[i] = viewPositionFromDepth(uv, farPlaneDepth());
         vec3 p = pointOnPixelRay(corner[i], zNear), q = pointOnPixelRay(corner[i], zFar);
         v.boxMin = min(v.boxMin, min(p, q));
         v.boxMax = max(v.boxMax, max(p, q));

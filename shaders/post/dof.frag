@@ -20,7 +20,7 @@ layout(location = 0) out vec4 outColor;
 
 float linearDepth(ivec2 px) {
     float d = texelFetch(uDepth, px, 0).r;
-    return d >= 1.0 ? camera.clip.y : -viewPositionAtPixel(px, d).z;
+    return isFarDepth(d) ? camera.clip.y : -viewPositionAtPixel(px, d).z;
 }
 
 // Signed circle of confusion in pixels: negative in front of the focus.

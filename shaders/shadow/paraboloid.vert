@@ -5,7 +5,7 @@
 layout(location = 0) in vec3 aPosition;
 layout(location = 0) uniform mat4 uModel;
 layout(location = 2) uniform mat4 uLightView;   // world -> light frame (+Z: front hemisphere)
-layout(location = 3) uniform vec3 uParams;      // near, far, hemisphere sign (+1 front, -1 back)
+layout(location = 3) uniform vec4 uParams;      // near, far, hemisphere sign (+1 front, -1 back), 1 reversed depth
 out gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[1]; };
 void main() {
     vec3 v = (uLightView * uModel * vec4(aPosition, 1.0)).xyz;
@@ -13,6 +13,7 @@ void main() {
     float len = length(v);
     vec3 n = v / max(len, 1e-6);
     gl_ClipDistance[0] = n.z;  // drop what lies behind this hemisphere
+    // Linear in distance, in [0, 1] clip depth (reversed: 1 at near, 0 at far).
     float depth = (len - uParams.x) / (uParams.y - uParams.x);
-    gl_Position = vec4(n.xy / (1.0 + n.z), depth * 2.0 - 1.0, 1.0);
+    gl_Position = vec4(n.xy / (1.0 + n.z), uParams.w > 0.5 ? 1.0 - depth : depth, 1.0);
 }

@@ -27,7 +27,7 @@ vec3 procedural(vec3 d) {
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    if (texelFetch(uDepth, px, 0).r < 1.0) {
+    if (!isFarDepth(texelFetch(uDepth, px, 0).r)) {
         outColor = vec4(0.0);
         return;
     }

@@ -15,7 +15,7 @@ float linearDepthAt(ivec2 aoPixel) {
     vec2 uv = (vec2(aoPixel) + 0.5) / vec2(blur.aoSize);
     ivec2 px = ivec2(uv * camera.viewport.xy);
     float d = texelFetch(uDepth, px, 0).r;
-    return d >= 1.0 ? 1e30 : -viewPositionAtPixel(px, d).z;
+    return isFarDepth(d) ? 1e30 : -viewPositionAtPixel(px, d).z;
 }
 
 void main() {

@@ -22,7 +22,7 @@ void main() {
     vec2 uv = (gl_FragCoord.xy) / vec2(ssao.aoSize);
     ivec2 px = ivec2(uv * camera.viewport.xy);
     float depth = texelFetch(uDepth, px, 0).r;
-    if (depth >= 1.0) {
+    if (isFarDepth(depth)) {
         outOcclusion = 1.0;
         return;
     }
@@ -44,7 +44,7 @@ void main() {
         // filtered depth at Q's exact projection is the surface on Q's ray;
         // the nearest pixel centre would make flat surfaces occlude themselves.
         float sceneDepth = texture(uDepth, quv).r;
-        if (sceneDepth >= 1.0) continue;
+        if (isFarDepth(sceneDepth)) continue;
         vec3 S = viewPositionFromDepth(quv, sceneDepth);
         if (S.z < Q.z + bias) continue;  // the stored surface is behind the sample: not occluded
         float d = length(S - P);

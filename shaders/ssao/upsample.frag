@@ -12,7 +12,7 @@ out float outOcclusion;
 
 float linearDepth(ivec2 px) {
     float d = texelFetch(uDepth, px, 0).r;
-    return d >= 1.0 ? 1e30 : -viewPositionAtPixel(px, d).z;
+    return isFarDepth(d) ? 1e30 : -viewPositionAtPixel(px, d).z;
 }
 
 void main() {

@@ -2,9 +2,11 @@
 // GPU reduction of the L-buffer's luminance (seed 000 section 5.3.1): the
 // first pass turns each pixel into (log(delta + L), L, L, 1) and sums per
 // tile of LUMINANCE_TILE^2 pixels; later passes sum LUMINANCE_GROUP partials
-// at a time; the last writes luminance.stats = (exp(mean log), max, mean, finite pixel count).
+// at a time; the last writes luminance.stats = (exp(mean log), max, mean, finite pixel count);
+// with no pixel counted, or all of them black, the log-average is 1.
 // Non-finite pixels are left out and do not poison the statistics; so are
 // background pixels when luminance.background = exclude.
+#include "../common/camera.glsl"
 #include "../common/color.glsl"
 #include "../params/luminance.h"
 
@@ -18,8 +20,14 @@ layout(local_size_x = 1) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D uStats;
 void main() {
     vec4 s = inData[0];
+    // Statistics of nothing: no pixel counted, or every counted pixel black.
+    // The log-average falls back to 1 (a neutral exposure: key / 1, as with
+    // no statistics at all) rather than delta, whose key / delta would
+    // multiply every uncounted pixel (the excluded background) by ~2000.
+    // The tone mapper reads count 0 or max 0 as "use the manual white".
+    bool empty = s.w < 0.5 || s.y <= 0.0;
     float n = max(s.w, 1.0);
-    imageStore(uStats, ivec2(0), vec4(exp(s.x / n), s.y, s.z / n, s.w));
+    imageStore(uStats, ivec2(0), vec4(empty ? 1.0 : exp(s.x / n), s.y, s.z / n, s.w));
 }
 #else
 #if defined(FIRST_PASS)
@@ -39,7 +47,7 @@ void main() {
     ivec2 size = textureSize(uHdr, 0);
     if (px.x < size.x && px.y < size.y) {
         vec3 c = texelFetch(uHdr, px, 0).rgb;
-        bool background = reduction.skipBackground != 0 && texelFetch(uDepth, px, 0).r >= 1.0;
+        bool background = reduction.skipBackground != 0 && isFarDepth(texelFetch(uDepth, px, 0).r);
         if (isFiniteVec(c) && !background) {
             float L = max(luminance(c), 0.0);
             v = vec4(log(reduction.delta + L), L, L, 1.0);

@@ -74,7 +74,10 @@ void main() {
         float L = luminance(hdr);
         float Ld;
         if (op == TONEMAP_OPERATOR_REINHARD) {
-            float white = tonemap.autoWhite != 0 ? scale * stats.y : tonemap.white;
+            // Auto white needs a brightest pixel: with none counted (or only
+            // black ones) the manual white stands in.
+            bool measured = stats.w > 0.5 && stats.y > 0.0;
+            float white = tonemap.autoWhite != 0 && measured ? scale * stats.y : tonemap.white;
             white = max(white, 1e-6);
             Ld = L * (1.0 + L / (white * white)) / (1.0 + L);
         } else {

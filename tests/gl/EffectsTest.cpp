@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/gl/DepthConvention.h"
 #include "renderer/passes/LightingPass.h"
 #include "renderer/passes/ShadowPass.h"
 #include "renderer/reference/LuminanceReference.h"
@@ -390,7 +391,7 @@ TEST(Sky, FillsOnlyThePixelsWithoutGeometry) {
     int background = 0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
-            if (depth.at(x, y, 0) < 1.0f) {
+            if (!DepthConvention().isFar(depth.at(x, y, 0))) {
                 for (int c = 0; c < 3; ++c) ASSERT_EQ(sky.at(x, y, c), flat.at(x, y, c)) << x << "," << y;
             } else {
                 ++background;

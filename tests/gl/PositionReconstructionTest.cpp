@@ -16,13 +16,18 @@ struct PlaneCase {
     Camera camera;
 };
 
-void checkReconstruction(const PlaneCase& c, double tolerance) {
+struct ReconstructionError {
+    double worst = 0.0, mean = 0.0;
+};
+
+ReconstructionError reconstructionError(const PlaneCase& c, const char* depthMode = "reversed") {
     const int W = 160, H = 90;
     auto session = test::makeSession(W, H);
     Scene s = test::planeScene(200.0f);
     s.instances[0].transform = c.model;
     s.camera = c.camera;
     session->setScene(std::move(s));
+    session->knobs().setFromString("depth.mode", depthMode);  // after setScene, which applies the run's knobs
     session->render({{"gbuffer.view_position"}});
     const FloatImage pos = session->readRaw("gbuffer.view_position");
 
@@ -31,7 +36,7 @@ void checkReconstruction(const PlaneCase& c, double tolerance) {
     const glm::vec3 n = glm::normalize(glm::vec3(glm::transpose(glm::inverse(view * c.model)) * glm::vec4(0, 1, 0, 0)));
     const double tanHalf = std::tan(glm::radians(static_cast<double>(c.camera.fovYDegrees)) * 0.5);
     const double aspect = static_cast<double>(W) / H;
-    double worst = 0.0;
+    double worst = 0.0, sum = 0.0;
     int covered = 0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
@@ -44,11 +49,27 @@ void checkReconstruction(const PlaneCase& c, double tolerance) {
             const double t = glm::dot(glm::dvec3(n), glm::dvec3(p0)) / glm::dot(glm::dvec3(n), dir);
             const glm::dvec3 expected = dir * t;
             const glm::dvec3 got(pos.at(x, y, 0), pos.at(x, y, 1), pos.at(x, y, 2));
-            worst = std::max(worst, glm::length(got - expected) / glm::length(expected));
+            const double e = glm::length(got - expected) / glm::length(expected);
+            worst = std::max(worst, e);
+            sum += e;
         }
-    std::printf("position reconstruction: worst relative error %.3g over %d pixels\n", worst, covered);
+    std::printf("position reconstruction (%s depth, near %g, far %g): worst relative error %.3g, mean %.3g over %d pixels\n",
+                depthMode, c.camera.nearPlane, c.camera.farPlane, worst, sum / std::max(covered, 1), covered);
     EXPECT_GT(covered, W * H / 4);
-    EXPECT_LT(worst, tolerance);
+    return {worst, sum / std::max(covered, 1)};
+}
+
+void checkReconstruction(const PlaneCase& c, double tolerance) { EXPECT_LT(reconstructionError(c).worst, tolerance); }
+
+// The case: near 1e-5, far 5000, a floor seen at a grazing angle.
+PlaneCase tinyNearPlane() {
+    PlaneCase c;
+    c.model = glm::mat4(1.0f);
+    c.camera.position = {0.0f, 2.0f, 10.0f};
+    c.camera.target = {0.0f, 0.0f, -20.0f};
+    c.camera.nearPlane = 1e-5f;
+    c.camera.farPlane = 5000.0f;
+    return c;
 }
 
 }  // namespace
@@ -60,9 +81,8 @@ TEST(PositionReconstruction, GroundPlaneAtAGrazingAngle) {
     c.camera.target = {0.0f, 0.0f, -20.0f};
     c.camera.nearPlane = 0.1f;
     c.camera.farPlane = 100.0f;
-    // DEPTH32F with a standard (not reversed) projection: error grows with
-    // distance as z^2 / near; 1e-3 relative holds out to the far plane here.
-    checkReconstruction(c, 1e-3);
+    // DEPTH32F with reversed Z: the error is about constant in relative terms.
+    checkReconstruction(c, 1e-4);
 }
 
 TEST(PositionReconstruction, TiltedPlaneFacingTheCamera) {
@@ -73,4 +93,19 @@ TEST(PositionReconstruction, TiltedPlaneFacingTheCamera) {
     c.camera.nearPlane = 0.5f;
     c.camera.farPlane = 50.0f;
     checkReconstruction(c, 2e-4);
+}
+
+// Reversed Z (the default) keeps positions exact to a few 1e-6 even with the
+// near plane 5e8 times closer than the far one.
+TEST(PositionReconstruction, ReversedDepthAtNear1e5Far5000) {
+    const ReconstructionError e = reconstructionError(tinyNearPlane(), "reversed");
+    EXPECT_LT(e.worst, 1e-4);
+    EXPECT_LT(e.mean, 1e-5);
+}
+
+// The conventional mapping (depth.mode = conventional, kept for measuring)
+// spends its precision at the near plane: the same view is off by percent.
+TEST(PositionReconstruction, ConventionalDepthAtNear1e5Far5000LosesPrecision) {
+    const ReconstructionError e = reconstructionError(tinyNearPlane(), "conventional");
+    EXPECT_GT(e.mean, 1e-2);
 }

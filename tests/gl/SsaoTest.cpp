@@ -115,7 +115,7 @@ FloatImage blurStep(const std::string& mode, int aoDivisor) {
     const CameraUniforms cu = Pipeline::cameraUniforms(cam, W, H);
     auto windowDepth = [&](float z) {
         const glm::vec4 c = cu.projection * glm::vec4(0, 0, -z, 1);
-        return c.z / c.w * 0.5f + 0.5f;
+        return c.z / c.w;  // clip depth is already in [0, 1]
     };
     std::vector<float> depth(W * H);
     for (int y = 0; y < H; ++y)

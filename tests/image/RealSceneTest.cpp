@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "renderer/gl/DepthConvention.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "tests/support/TestSupport.h"
 
@@ -26,7 +27,7 @@ void checkPlausible(const fs::path& file) {
     for (int y = 0; y < final.height; ++y)
         for (int x = 0; x < final.width; ++x) {
             for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(L.at(x, y, c))) << file << " NaN/Inf in the L-buffer";
-            if (depth.at(x, y, 0) >= 1.0f) continue;
+            if (DepthConvention().isFar(depth.at(x, y, 0))) continue;
             ++covered;
             const double l = reference::luminance(final.at(x, y, 0), final.at(x, y, 1), final.at(x, y, 2));
             lumSum += l;
