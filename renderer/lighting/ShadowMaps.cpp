@@ -52,7 +52,8 @@ ShadowMaps::ShadowMaps(KnobRegistry& knobs) {
 
 void ShadowMaps::setup(gl::ShaderLibrary& shaders) {
     depth_ = shaders.get({.vertex = "shadow/depth.vert", .fragment = "shadow/depth.frag"});
-    paraboloid_ = shaders.get({.vertex = "shadow/paraboloid.vert", .fragment = "shadow/depth.frag"});
+    pointDistance_ = shaders.get({.vertex = "shadow/depth.vert", .fragment = "shadow/distance.frag"});
+    paraboloid_ = shaders.get({.vertex = "shadow/paraboloid.vert", .fragment = "shadow/distance.frag", .defines = {"PARABOLOID"}});
     compare_ = gl::Sampler::createDepthCompare("shadow comparison");
     fbo_ = gl::Framebuffer::create("shadow map");
     fbo_.setNoColorBuffers();
@@ -205,12 +206,17 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
         out.matrix = kBias * viewProj * inverseView;
     } else if (kind == Cube) {
+        // Each face stores the linear distance from the light (distance.frag,
+        // which also applies the slope bias), not its own perspective depth.
         const glm::mat4 proj(dc.perspective(glm::radians(90.0), 1.0, near, far));
-        depth_->use();
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        pointDistance_->use();
+        pointDistance_->set(3, light.position);
+        pointDistance_->set(4, glm::vec4(near, far, k.get(biasSlope_), dc.reversed() ? 1.0f : 0.0f));
         for (int f = 0; f < 6; ++f) {
             target(6 * slot + f);
-            depth_->set(2, proj * glm::lookAt(light.position, light.position + kFaces[f].dir, kFaces[f].up));
-            ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
+            pointDistance_->set(2, proj * glm::lookAt(light.position, light.position + kFaces[f].dir, kFaces[f].up));
+            ctx.gpu.drawDepthOnly(*pointDistance_, GpuScene::Filter::All);
         }
         // World-aligned offset from the light, which is how cube maps are indexed.
         out.matrix = glm::translate(glm::mat4(1.0f), -light.position) * inverseView;
@@ -219,8 +225,11 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         const glm::vec3 axis = glm::normalize(light.direction);
         const glm::mat4 lightView = glm::lookAt(light.position, light.position - axis, anyUp(axis));
         glEnable(GL_CLIP_DISTANCE0);
+        glDisable(GL_POLYGON_OFFSET_FILL);  // distance.frag applies the slope bias
         paraboloid_->use();
         paraboloid_->set(2, lightView);
+        paraboloid_->set(4, glm::vec4(near, far, k.get(biasSlope_), dc.reversed() ? 1.0f : 0.0f));
+        paraboloid_->set(5, static_cast<float>(size));
         for (int h = 0; h < 2; ++h) {
             target(2 * slot + h);
             paraboloid_->set(3, glm::vec4(near, far, h == 0 ? 1.0f : -1.0f, dc.reversed() ? 1.0f : 0.0f));

@@ -64,7 +64,7 @@ private:
     IntKnob size_, pcf_;
     FloatKnob biasConstant_, biasSlope_, distance_;
     EnumKnob pointMethod_;
-    gl::ShaderLibrary::Handle depth_, paraboloid_;
+    gl::ShaderLibrary::Handle depth_, pointDistance_, paraboloid_;  // 2D maps; cube maps; paraboloids (shadow/distance.frag)
     gl::Texture maps_[3];
     gl::Sampler compare_;
     DepthConvention depthConvention_;  // of the frame (beginFrame): projections, clear, test, comparison

@@ -28,9 +28,9 @@ std::vector<OutputDecl> ShadowPass::outputs() const {
     return {{kMapOutputs[0], OutputKind::Scalar,
              "window depth of every directional and spot light's shadow map, a layer each (2D array, DEPTH32F)", imported(), 1},
             {kMapOutputs[1], OutputKind::Scalar,
-             "window depth of every point light's (and wide spot's) cube shadow map (cube array, DEPTH32F)", imported(), 1},
+             "linear distance from the light of every point light's (and wide spot's) cube shadow map (cube array, DEPTH32F)", imported(), 1},
             {kMapOutputs[2], OutputKind::Scalar,
-             "window depth of the dual-paraboloid maps, front and back layer per light (2D array, DEPTH32F)", imported(), 1}};
+             "linear distance from the light in the dual-paraboloid maps, front and back layer per light (2D array, DEPTH32F)", imported(), 1}};
 }
 
 std::string ShadowPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {

@@ -20,7 +20,7 @@ vec3 lightRadiance(Light light, Surface s) {
         bool directional = int(light.attenuation.w + 0.5) == LIGHT_DIRECTIONAL;
         vec3 toLight = directional ? -light.directionCutoff.xyz : light.positionRadius.xyz - s.position;
         float dist = directional ? 0.0 : length(toLight);
-        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position,
+        c *= shadowVisibility(light.shadowMatrix, light.shadowParams, light.shadowRange, s.position, s.normal,
                               normalize(toLight), dist);
     }
 #endif

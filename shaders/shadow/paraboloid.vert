@@ -7,9 +7,11 @@ layout(location = 0) uniform mat4 uModel;
 layout(location = 2) uniform mat4 uLightView;   // world -> light frame (+Z: front hemisphere)
 layout(location = 3) uniform vec4 uParams;      // near, far, hemisphere sign (+1 front, -1 back), 1 reversed depth
 out gl_PerVertex { vec4 gl_Position; float gl_ClipDistance[1]; };
+out vec3 vLightOffset;  // in this hemisphere's frame (+Z its axis), for shadow/distance.frag
 void main() {
     vec3 v = (uLightView * uModel * vec4(aPosition, 1.0)).xyz;
     v.z *= uParams.z;
+    vLightOffset = v;
     float len = length(v);
     vec3 n = v / max(len, 1e-6);
     gl_ClipDistance[0] = n.z;  // drop what lies behind this hemisphere
