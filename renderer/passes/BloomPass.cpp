@@ -33,7 +33,7 @@ std::vector<OutputDecl> BloomPass::outputs() const {
         {"bloom.result", OutputKind::HdrColor, "the bloom the tone mapper adds (half resolution)", texture2D(GL_RGBA16F, 1)}};
     for (int i = 1; i <= kMaxLevels; ++i)
         out.push_back({"bloom.mip" + std::to_string(i), OutputKind::HdrColor,
-                       "bloom level " + std::to_string(i) + " (mip_sum: a mip of bloom.bright; dual_filter: the downsample chain)"});
+                       "bloom level " + std::to_string(i) + " of the filtered downsample chain (1/2^i of bloom.bright)"});
     return out;
 }
 
@@ -87,7 +87,12 @@ void BloomPass::execute(FrameContext& ctx) {
     const gl::Framebuffer& brightFbo = bright_.get(ctx, {"bloom.bright"}, {}, "bloom bright");
     const gl::Framebuffer& resultFbo = result_.get(ctx, {"bloom.result"}, {}, "bloom result");
     const int w = brightTexture.width(), h = brightTexture.height();
-    const int levels = std::min(k.get(levels_), brightTexture.levels() - 1);
+    // A level narrower than kMinLevelTexels is no longer a blur of the image
+    // but a smear across it, clamped at the edges: its halo would lean
+    // towards the image's centre (a 320x180 frame has a 5x2 fifth level).
+    int usable = 0;
+    while (usable < kMaxLevels && (std::min(w, h) >> (usable + 1)) >= kMinLevelTexels) ++usable;
+    const int levels = std::min({k.get(levels_), brightTexture.levels() - 1, usable});
     const bool mipSum = k.get(method_) == mipSum_;
     // Each draw sets what its shader reads; the rest keeps its last value.
     gpu::BloomParams p{};
@@ -106,27 +111,32 @@ void BloomPass::execute(FrameContext& ctx) {
     brightProgram_->use();
     drawInto(brightFbo, w, h);
 
+    // 2. Downsample chain (both methods): level 0 is the bright image itself,
+    //    each level the 13-tap filtered half of the one before.
+    down_->use();
+    const gl::Texture* source = &brightTexture;
+    for (int l = 1; l <= levels; ++l) {
+        const gl::Texture& dst = down_chain_[l].texture;
+        uploadTexels(source, dst);
+        glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 0);
+        source->bind(0);
+        drawInto(down_chain_[l].fbo, dst.width(), dst.height());
+        glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 1000);
+        source = &dst;
+    }
+    for (int i = levels + 1; i <= kMaxLevels; ++i)
+        down_chain_[i].fbo.clearColor(0, 0.0f, 0.0f, 0.0f, 1.0f);  // not drawn this frame: black, not stale
+    for (int i = 1; i <= kMaxLevels; ++i) ctx.outputs.bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
     if (mipSum) {
-        brightTexture.generateMipmaps();
-        uploadTexels(nullptr, brightTexture);
+        // 3. The average of the levels, each upsampled with a cubic B-spline.
+        uploadTexels(nullptr, resultTexture);
+        glTextureParameteri(brightTexture.id(), GL_TEXTURE_MAX_LEVEL, 0);
         brightTexture.bind(0);
+        for (int i = 1; i <= kMaxLevels; ++i) down_chain_[i].texture.bind(i);
         mipsum_->use();
         drawInto(resultFbo, w, h);
-        for (int i = 1; i <= kMaxLevels; ++i)
-            ctx.outputs.bind("bloom.mip" + std::to_string(i), &brightTexture, 4, std::min(i, brightTexture.levels() - 1));
+        glTextureParameteri(brightTexture.id(), GL_TEXTURE_MAX_LEVEL, 1000);
     } else {
-        // 2. Downsample chain: level 0 is the bright image itself.
-        down_->use();
-        const gl::Texture* source = &brightTexture;
-        for (int l = 1; l <= levels; ++l) {
-            const gl::Texture& dst = down_chain_[l].texture;
-            uploadTexels(source, dst);
-            glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 0);
-            source->bind(0);
-            drawInto(down_chain_[l].fbo, dst.width(), dst.height());
-            glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 1000);
-            source = &dst;
-        }
         // 3. Upsample: each level = tent(coarser) + its own downsampled image.
         up_->use();
         const gl::Texture* coarse = &down_chain_[levels].texture;
@@ -145,11 +155,6 @@ void BloomPass::execute(FrameContext& ctx) {
         (levels > 0 ? up_chain_[0].texture : brightTexture).bind(0);
         scale_->use();
         drawInto(resultFbo, w, h);
-        for (int i = 1; i <= kMaxLevels; ++i) {
-            // Levels beyond bloom.levels were not drawn this frame: show them black, not stale.
-            if (i > levels) down_chain_[i].fbo.clearColor(0, 0.0f, 0.0f, 0.0f, 1.0f);
-            ctx.outputs.bind("bloom.mip" + std::to_string(i), &down_chain_[i].texture, 4, 0);
-        }
     }
     stats_ = std::string(mipSum ? "mip sum" : "dual filter") + ", " + std::to_string(levels) + " levels from " +
              std::to_string(w) + "x" + std::to_string(h);

@@ -22,6 +22,7 @@ namespace dw {
 class BloomPass : public RenderPass {
 public:
     static constexpr int kMaxLevels = 6;
+    static constexpr int kMinLevelTexels = 8;  // the coarsest level used is at least this wide and high
     explicit BloomPass(KnobRegistry& knobs);
     const char* name() const override { return "bloom"; }
     std::vector<OutputDecl> outputs() const override;
