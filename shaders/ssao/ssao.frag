@@ -17,6 +17,29 @@ layout(binding = 2) uniform sampler2D uNoise;   // random unit vectors, SSAO_NOI
 
 out float outOcclusion;
 
+// The filtered depth at uv. Between the outermost pixel centres and the
+// image's edge, clamp-to-edge filtering would hold the edge pixel's depth
+// constant (a receding floor would then rise in front of its own samples and
+// darken the border rows, the more so the fewer pixels the radius spans);
+// there the depth is extrapolated linearly from the two outermost pixels,
+// which is exact for a plane, as the filtered depth is inside.
+float depthAt(vec2 uv) {
+    vec2 size = vec2(textureSize(uDepth, 0));
+    vec2 texel = 1.0 / size;
+    vec2 inside = clamp(uv, 0.5 * texel, 1.0 - 0.5 * texel);
+    float d = texture(uDepth, inside).r;
+    vec2 beyond = (uv - inside) * size;  // texels past the outermost centre, |.| <= 0.5
+    if (beyond.x != 0.0) {
+        float inner = texture(uDepth, inside - vec2(sign(beyond.x) * texel.x, 0.0)).r;
+        if (!isFarDepth(inner)) d += (d - inner) * abs(beyond.x);
+    }
+    if (beyond.y != 0.0) {
+        float inner = texture(uDepth, inside - vec2(0.0, sign(beyond.y) * texel.y)).r;
+        if (!isFarDepth(inner)) d += (d - inner) * abs(beyond.y);
+    }
+    return d;
+}
+
 void main() {
     // The full-resolution pixel this AO pixel stands for (its centre).
     vec2 uv = (gl_FragCoord.xy) / vec2(ssao.aoSize);
@@ -43,7 +66,7 @@ void main() {
         // Depth is affine across a plane in window space, so the bilinearly
         // filtered depth at Q's exact projection is the surface on Q's ray;
         // the nearest pixel centre would make flat surfaces occlude themselves.
-        float sceneDepth = texture(uDepth, quv).r;
+        float sceneDepth = depthAt(quv);
         if (isFarDepth(sceneDepth)) continue;
         vec3 S = viewPositionFromDepth(quv, sceneDepth);
         if (S.z < Q.z + bias) continue;  // the stored surface is behind the sample: not occluded
