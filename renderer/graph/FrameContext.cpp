@@ -1,8 +1,24 @@
 #include "renderer/graph/FrameContext.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/Error.h"
 
 namespace dw {
+
+glm::dmat4 CameraUniforms::worldToView() const {
+    return glm::translate(glm::dmat4(view), -origin);
+}
+
+glm::dmat4 CameraUniforms::worldToClip() const {
+    return glm::dmat4(projection) * worldToView();
+}
+
+glm::mat4 CameraUniforms::relative(const glm::mat4& model) const {
+    glm::dmat4 m(model);
+    m[3] -= glm::dvec4(origin, 0.0);
+    return glm::mat4(m);
+}
 
 const PublishedOutput& FrameContext::output(const std::string& name) const {
     const PublishedOutput* o = outputs.find(name);

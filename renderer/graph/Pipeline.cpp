@@ -90,7 +90,10 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     const DepthConvention convention(depthMode);
     // In double precision, rounded once: the inverse of a projection with
     // near 1e-5 and far 1e7 loses most of its digits when inverted in float.
-    const glm::dmat4 view = glm::lookAt(glm::dvec3(camera.position), glm::dvec3(camera.target), glm::dvec3(camera.up));
+    // Camera-relative: the view is a rotation; world positions reach the GPU
+    // minus the camera's position (CameraUniforms::origin).
+    const glm::dvec3 eye(camera.position);
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), glm::dvec3(camera.target) - eye, glm::dvec3(camera.up));
     const glm::dmat4 projection = convention.perspective(glm::radians(static_cast<double>(camera.fovYDegrees)),
                                                          static_cast<double>(width) / height, camera.nearPlane,
                                                          camera.farPlane);
@@ -100,6 +103,7 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     u.inverseProjection = glm::mat4(glm::inverse(projection));
     u.inverseView = glm::mat4(glm::inverse(view));
     u.depth = convention.uniform();
+    u.origin = eye;
     u.viewport = glm::vec4(width, height, 1.0f / width, 1.0f / height);
     u.clip = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDegrees) * 0.5f), aspect);
     return u;
@@ -291,6 +295,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
     cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
     cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+    gpu_.setDrawOrigin(camera_.origin);
     allocateResources(plan);
     outputs_.markFrameStart();
     FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, plan.wanted, &timer_};

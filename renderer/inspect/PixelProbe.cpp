@@ -107,7 +107,8 @@ ProbeResult probePixel(const Pipeline& pipeline, int x, int y) {
         const glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, (yGl + 0.5f) / h * 2.0f - 1.0f, s.depth, 1.0f);
         const glm::vec4 v = cam.inverseProjection * ndc;
         s.viewPosition = glm::vec3(v) / v.w;
-        s.worldPosition = glm::vec3(cam.inverseView * glm::vec4(s.viewPosition, 1.0f));
+        // Camera-relative rendering: view space back to world through the origin, in double.
+        s.worldPosition = glm::vec3(glm::inverse(cam.worldToView()) * glm::dvec4(glm::dvec3(s.viewPosition), 1.0));
         s.linearDepth = -s.viewPosition.z;
     }
     if (const ProbeValue* n = value("gbuffer.normal"))

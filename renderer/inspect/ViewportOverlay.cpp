@@ -66,7 +66,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_CLAMP);
-    const glm::mat4& vp = camera.viewProjection;
+    const glm::mat4 vp(camera.worldToClip());  // absolute world (the overlay draws world positions) to clip
     const float sceneRadius = scene.bounds().radius();  // sizes the light markers and axes
 
     // Two passes: lines hidden by geometry faint, visible ones solid.

@@ -30,21 +30,22 @@ void forwardDepthState() {
 // "visible object"): Gribb-Hartmann planes, a box is out when its corner
 // farthest along a plane's normal lies behind it. Culls only what has no
 // pixel in the laid-down depth, so it changes no image.
-std::vector<char> visibleDraws(const GpuScene& gpu, const glm::mat4& viewProjection) {
-    const glm::mat4& m = viewProjection;
-    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
-    // Clip depth in [0, 1] (DepthConvention): the depth planes are z >= 0 and z <= w.
-    std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                       row(3) - row(1), row(2), row(3) - row(2)};
-    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+std::vector<char> visibleDraws(const GpuScene& gpu, const glm::dmat4& worldToClip) {
+    const glm::dmat4& m = worldToClip;
+    auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    // Clip depth in [0, 1] (DepthConvention): the depth planes are z >= 0 and
+    // z <= w. Double precision: world positions may be far from the origin.
+    std::array<glm::dvec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                        row(3) - row(1), row(2), row(3) - row(2)};
+    for (glm::dvec4& p : planes) p /= glm::length(glm::dvec3(p));
     std::vector<char> visible;
     for (const GpuScene::Draw& d : gpu.draws()) {
         bool in = !d.bounds.empty();
-        for (const glm::vec4& p : planes) {
+        for (const glm::dvec4& p : planes) {
             if (!in) break;
-            const glm::vec3 far(p.x >= 0 ? d.bounds.max.x : d.bounds.min.x, p.y >= 0 ? d.bounds.max.y : d.bounds.min.y,
+            const glm::dvec3 far(p.x >= 0 ? d.bounds.max.x : d.bounds.min.x, p.y >= 0 ? d.bounds.max.y : d.bounds.min.y,
                                 p.z >= 0 ? d.bounds.max.z : d.bounds.min.z);
-            in = glm::dot(glm::vec3(p), far) + p.w >= -1e-3f;  // a little slack: keep, never lose
+            in = glm::dot(glm::dvec3(p), far) + p.w >= -1e-3;  // a little slack: keep, never lose
         }
         visible.push_back(in ? 1 : 0);
     }
@@ -64,10 +65,10 @@ bool sphereMeetsBox(const glm::vec3& centre, float radius, const Bounds& box) {
 }
 
 ForwardLightLists ForwardLightLists::build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights,
-                                           const glm::mat4* viewProjection) {
+                                           const glm::dmat4* worldToClip) {
     ForwardLightLists l;
     const auto& draws = gpu.draws();
-    const std::vector<char> visible = viewProjection ? visibleDraws(gpu, *viewProjection) : std::vector<char>(draws.size(), 1);
+    const std::vector<char> visible = worldToClip ? visibleDraws(gpu, *worldToClip) : std::vector<char>(draws.size(), 1);
     l.first.resize(draws.size());
     l.count.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -102,7 +103,8 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     lastPairs_ = 0;
     if (listed.empty()) return c;
 
-    const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed, &f.ctx.camera.viewProjection);
+    const glm::dmat4 worldToClip = f.ctx.camera.worldToClip();
+    const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed, &worldToClip);
     lastPairs_ = lists.rows.size();
     if (lists.rows.empty()) return c;
     indices_.ensureSize(lists.rows.size() * sizeof(std::uint32_t), "forward light indices");
@@ -134,7 +136,7 @@ StrategyCounts ForwardMultipassStrategy::shade(LightingFrame& f) {
     lastPairs_ = 0;
     const gl::Program& program = f.counting ? *countingProgram_ : *program_;
     const auto& draws = f.ctx.gpu.draws();
-    const std::vector<char> visible = visibleDraws(f.ctx.gpu, f.ctx.camera.viewProjection);
+    const std::vector<char> visible = visibleDraws(f.ctx.gpu, f.ctx.camera.worldToClip());
     std::vector<std::size_t> touched;
     for (const LightTableEntry* e : f.lights) {
         if (!e->inFrustum) {

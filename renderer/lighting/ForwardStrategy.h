@@ -39,9 +39,10 @@ struct ForwardLightLists {
     std::vector<std::uint32_t> rows;                  // light-table rows, draw after draw
     std::vector<std::uint32_t> first, count;          // per GpuScene draw, into `rows`
     // For each draw, the lights of `lights` whose sphere meets its box; none
-    // for draws whose box is outside the frustum of `viewProjection` (if given).
+    // for draws whose box is outside the frustum of `worldToClip` (if given:
+    // absolute world space to clip space, CameraUniforms::worldToClip).
     static ForwardLightLists build(const GpuScene& gpu, const std::vector<const LightTableEntry*>& lights,
-                                   const glm::mat4* viewProjection = nullptr);
+                                   const glm::dmat4* worldToClip = nullptr);
 };
 
 class ForwardStrategy : public LightingStrategy {

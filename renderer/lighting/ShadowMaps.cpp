@@ -107,7 +107,11 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     ShadowLookup out;
     out.params = glm::vec4(static_cast<float>(kind == Map2D ? 1 : (kind == Cube ? 2 : 3)), static_cast<float>(k.get(pcf_)),
                            1.0f / static_cast<float>(size), static_cast<float>(slot));
-    const glm::mat4 inverseView = ctx.camera.inverseView;
+    // Camera-relative rendering (CameraUniforms::origin): the lookups map the
+    // camera's view space to the light's space through absolute world space
+    // in double precision, and each map is drawn relative to its light (the
+    // draw origin), so a scene far from the world origin keeps its shadows.
+    const glm::dmat4 viewToWorld = glm::inverse(ctx.camera.worldToView());
     const Bounds& bounds = ctx.gpu.bounds();
     const float sceneRadius = std::max(bounds.radius(), 1e-3f);
     // The depth range: out to the light's radius, but no further than the
@@ -142,7 +146,8 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     };
 
     if (kind == Map2D) {
-        glm::mat4 viewProj;
+        glm::dmat4 proj, lightView;  // light view: absolute world space -> light space
+        glm::dvec3 eye;
         if (light.type == LightType::Directional) {
             // Fit an orthographic box around the part of the view frustum in
             // reach, extended towards the light over the whole scene. Across
@@ -152,9 +157,11 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             // around the frustum slice, whichever is smaller.
             const float nearC = ctx.camera.clip.x;
             const float farC = k.get(distance_) > 0.0f ? std::min(k.get(distance_), ctx.camera.clip.y) : ctx.camera.clip.y;
-            const glm::vec3 dir = glm::normalize(light.direction);
-            const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
-            const glm::mat4 lightView = glm::lookAt(center - dir * sceneRadius * 2.0f, center, anyUp(dir));
+            const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
+            const glm::dvec3 center = bounds.empty() ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+            eye = center - dir * (static_cast<double>(sceneRadius) * 2.0);
+            lightView = glm::lookAt(eye, center, glm::dvec3(anyUp(glm::vec3(dir))));
+            const glm::dmat4 viewToLight = lightView * viewToWorld;
             const float t = ctx.camera.clip.z, a = ctx.camera.clip.w;
             const float zMid = 0.5f * (nearC + farC);
             float sphereR = 0.0f;
@@ -164,15 +171,19 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
                     for (float sy : {-1.0f, 1.0f}) {
                         const glm::vec4 pv(sx * z * t * a, sy * z * t, -z, 1.0f);
                         sphereR = std::max(sphereR, glm::length(glm::vec3(pv) - glm::vec3(0.0f, 0.0f, -zMid)));
-                        const glm::vec3 pl(lightView * inverseView * pv);
+                        const glm::vec3 pl(viewToLight * glm::dvec4(pv));
                         lo = glm::min(lo, pl);
                         hi = glm::max(hi, pl);
                     }
-            const glm::vec3 sphereC(lightView * inverseView * glm::vec4(0.0f, 0.0f, -zMid, 1.0f));
+            const glm::vec3 sphereC(viewToLight * glm::dvec4(0.0, 0.0, -zMid, 1.0));
             float extent = 2.0f * sphereR;
             glm::vec2 lo2 = glm::vec2(sphereC) - sphereR, hi2 = glm::vec2(sphereC) + sphereR;
             if (!bounds.empty()) {
-                const Bounds lb = bounds.transformed(lightView);
+                Bounds lb;  // the scene's box in light space (corners in double precision)
+                for (int c = 0; c < 8; ++c)
+                    lb.add(glm::vec3(lightView * glm::dvec4((c & 1) ? bounds.max.x : bounds.min.x,
+                                                                (c & 2) ? bounds.max.y : bounds.min.y,
+                                                                (c & 4) ? bounds.max.z : bounds.min.z, 1.0)));
                 const float sceneExtent = std::max(lb.max.x - lb.min.x, lb.max.y - lb.min.y);
                 if (sceneExtent <= extent) {
                     // The whole scene, in a square box centred on it.
@@ -191,39 +202,48 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             hi2 = lo2 + extent + texel;  // one texel of slack for the snap
             lo = glm::vec3(lo2, lo.z);
             hi = glm::vec3(hi2, hi.z);
-            viewProj = glm::mat4(dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f)) * lightView;
+            proj = dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f);
             out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
         } else {
             const float fov = 2.0f * light.cutoffDegrees + 2.0f;  // <= 2 * kWideSpotDegrees + 2
-            const glm::vec3 dir = glm::normalize(light.direction);
-            viewProj = glm::mat4(dc.perspective(glm::radians(static_cast<double>(fov)), 1.0, near, far)) *
-                       glm::lookAt(light.position, light.position + dir, anyUp(dir));
+            const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
+            eye = glm::dvec3(light.position);
+            proj = dc.perspective(glm::radians(static_cast<double>(fov)), 1.0, near, far);
+            lightView = glm::lookAt(eye, eye + dir, glm::dvec3(anyUp(glm::vec3(dir))));
             out.range.w = biasTexels * 2.0f * std::tan(glm::radians(fov * 0.5f)) / static_cast<float>(size);
         }
         target(slot);
         depth_->use();
-        depth_->set(2, viewProj);
+        // Drawn relative to the light's eye: the light view less its translation.
+        ctx.gpu.setDrawOrigin(eye);
+        depth_->set(2, glm::mat4(proj * glm::translate(lightView, eye)));
+        depth_->set(3, glm::vec3(0.0f));
         ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
-        out.matrix = kBias * viewProj * inverseView;
+        out.matrix = kBias * glm::mat4(proj * lightView * viewToWorld);
     } else if (kind == Cube) {
         // Each face stores the linear distance from the light (distance.frag,
         // which also applies the slope bias), not its own perspective depth.
         const glm::mat4 proj(dc.perspective(glm::radians(90.0), 1.0, near, far));
         glDisable(GL_POLYGON_OFFSET_FILL);
         pointDistance_->use();
-        pointDistance_->set(3, light.position);
+        const glm::dvec3 lightPos(light.position);
+        ctx.gpu.setDrawOrigin(lightPos);  // positions relative to the light
+        pointDistance_->set(3, glm::vec3(0.0f));
         pointDistance_->set(4, glm::vec4(near, far, k.get(biasSlope_), dc.reversed() ? 1.0f : 0.0f));
         for (int f = 0; f < 6; ++f) {
             target(6 * slot + f);
-            pointDistance_->set(2, proj * glm::lookAt(light.position, light.position + kFaces[f].dir, kFaces[f].up));
+            pointDistance_->set(2, proj * glm::lookAt(glm::vec3(0.0f), kFaces[f].dir, kFaces[f].up));
             ctx.gpu.drawDepthOnly(*pointDistance_, GpuScene::Filter::All);
         }
         // World-aligned offset from the light, which is how cube maps are indexed.
-        out.matrix = glm::translate(glm::mat4(1.0f), -light.position) * inverseView;
+        out.matrix = glm::mat4(glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);
         out.range = glm::vec4(near, far, 0.0f, biasTexels * 2.0f / static_cast<float>(size));
     } else {
         const glm::vec3 axis = glm::normalize(light.direction);
-        const glm::mat4 lightView = glm::lookAt(light.position, light.position - axis, anyUp(axis));
+        const glm::dvec3 lightPos(light.position);
+        // Rotation only: drawn relative to the light (the draw origin).
+        const glm::mat4 lightView = glm::lookAt(glm::vec3(0.0f), -axis, anyUp(axis));
+        ctx.gpu.setDrawOrigin(lightPos);
         glEnable(GL_CLIP_DISTANCE0);
         glDisable(GL_POLYGON_OFFSET_FILL);  // distance.frag applies the slope bias
         paraboloid_->use();
@@ -236,10 +256,11 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::All);
         }
         glDisable(GL_CLIP_DISTANCE0);
-        out.matrix = lightView * inverseView;
+        out.matrix = glm::mat4(glm::dmat4(lightView) * glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);
         // A paraboloid texel spans at most about 4 / size radians (at its rim).
         out.range = glm::vec4(near, far, 0.0f, biasTexels * 4.0f / static_cast<float>(size));
     }
+    ctx.gpu.setDrawOrigin(ctx.camera.origin);  // back to camera-relative for the passes that follow
     ++rendered_;
     return out;
 }

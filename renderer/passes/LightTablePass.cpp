@@ -10,19 +10,20 @@ namespace dw {
 
 namespace {
 
-// Frustum planes (Gribb & Hartmann) from a view-projection matrix, normalised;
-// clip depth in [0, 1] (DepthConvention), so the depth planes are z >= 0 and z <= w.
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
-    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
-    std::array<glm::vec4, 6> p = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                  row(3) - row(1), row(2), row(3) - row(2)};
-    for (auto& plane : p) plane /= glm::length(glm::vec3(plane));
+// Frustum planes (Gribb & Hartmann) from a world-to-clip matrix, normalised,
+// in double precision (a scene far from the origin); clip depth in [0, 1]
+// (DepthConvention), so the depth planes are z >= 0 and z <= w.
+std::array<glm::dvec4, 6> frustumPlanes(const glm::dmat4& m) {
+    auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    std::array<glm::dvec4, 6> p = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                   row(3) - row(1), row(2), row(3) - row(2)};
+    for (auto& plane : p) plane /= glm::length(glm::dvec3(plane));
     return p;
 }
 
-bool sphereOutside(const std::array<glm::vec4, 6>& planes, const glm::vec3& c, float r) {
+bool sphereOutside(const std::array<glm::dvec4, 6>& planes, const glm::dvec3& c, double r) {
     for (const auto& p : planes)
-        if (glm::dot(glm::vec3(p), c) + p.w < -r) return true;
+        if (glm::dot(glm::dvec3(p), c) + p.w < -r) return true;
     return false;
 }
 
@@ -53,8 +54,9 @@ void LightTablePass::setup(gl::ShaderLibrary&) {
 void LightTablePass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const double threshold = k.get(threshold_);
-    const glm::mat4& view = ctx.camera.view;
-    const auto planes = frustumPlanes(ctx.camera.viewProjection);
+    // Camera-relative: view-space values from world ones in double precision.
+    const glm::dmat4 view = ctx.camera.worldToView();
+    const auto planes = frustumPlanes(ctx.camera.worldToClip());
     const bool cull = k.get(frustumCull_);
     table_ = {};
     int perType[3] = {0, 0, 0}, outside = 0;
@@ -66,9 +68,9 @@ void LightTablePass::execute(FrameContext& ctx) {
             continue;
         }
         LightGpu g;
-        g.volume = v.transform;
-        const glm::vec3 dirView = glm::normalize(glm::vec3(view * glm::vec4(l.direction, 0.0f)));
-        g.positionRadius = glm::vec4(glm::vec3(view * glm::vec4(l.position, 1.0f)),
+        g.volume = ctx.camera.relative(v.transform);
+        const glm::vec3 dirView = glm::normalize(glm::vec3(view * glm::dvec4(glm::dvec3(l.direction), 0.0)));
+        g.positionRadius = glm::vec4(glm::vec3(view * glm::dvec4(glm::dvec3(l.position), 1.0)),
                                      std::isfinite(v.radius) ? static_cast<float>(v.radius) : 0.0f);
         g.directionCutoff = glm::vec4(dirView, std::cos(glm::radians(l.cutoffDegrees)));
         g.intensityExponent = glm::vec4(l.intensity, l.exponent);
@@ -79,7 +81,7 @@ void LightTablePass::execute(FrameContext& ctx) {
         e.light = &l;
         e.volume = v;
         const bool bounded = l.type != LightType::Directional && v.shape != VolumeShape::FullScreen;
-        e.inFrustum = !(cull && bounded && sphereOutside(planes, l.position, static_cast<float>(v.radius)));
+        e.inFrustum = !(cull && bounded && sphereOutside(planes, glm::dvec3(l.position), v.radius));
         outside += e.inFrustum ? 0 : 1;
         ++perType[type];
         table_.rows.push_back(g);

@@ -160,6 +160,12 @@ static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
     return f == GpuScene::Filter::Blend ? blend : !blend;
 }
 
+glm::mat4 GpuScene::relativeModel(const glm::mat4& model) const {
+    glm::dmat4 m(model);
+    m[3] -= glm::dvec4(origin_, 0.0);
+    return glm::mat4(m);
+}
+
 void GpuScene::draw(const gl::Program& program, Filter filter, bool bindTextures) const {
     drawImpl(program, filter, bindTextures, nullptr);
 }
@@ -189,7 +195,7 @@ void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindText
             bindMaterialTextures(d.material);
             boundMaterial = d.material;
         }
-        program.set(0, d.model);
+        program.set(0, relativeModel(d.model));
         program.set(1, d.material);
         glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
@@ -202,7 +208,7 @@ void GpuScene::drawDepthOnly(const gl::Program& program, Filter filter) const {
     vao_.bind();
     for (const Draw& d : draws_) {
         if (!passes(d, filter)) continue;
-        program.set(0, d.model);
+        program.set(0, relativeModel(d.model));
         glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
     }

@@ -58,6 +58,12 @@ public:
     void drawEach(const gl::Program& program, Filter filter, const PerDraw& before) const;
     // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
     void drawDepthOnly(const gl::Program& program, Filter filter) const;
+    // The world position every draw's model matrix is made relative to, in
+    // double precision, before it reaches the GPU (camera-relative rendering:
+    // the pipeline sets the camera's position each frame, a shadow map its
+    // light's while it draws). Not geometry, so settable on a const scene.
+    void setDrawOrigin(const glm::dvec3& origin) const { origin_ = origin; }
+    const glm::dvec3& drawOrigin() const { return origin_; }
     std::size_t textureBytes() const { return textureBytes_; }
     // The sky's environment map (equirectangular 2D or cube), or null.
     const gl::Texture* environment() const { return environment_ ? &environment_ : nullptr; }
@@ -66,6 +72,8 @@ private:
     int textureFor(const Scene& scene, int image, bool srgb);
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
+    glm::mat4 relativeModel(const glm::mat4& model) const;
+    mutable glm::dvec3 origin_{0.0};
 
     gl::Buffer vertices_, indices_, materials_;
     gl::VertexArray vao_;

@@ -50,7 +50,7 @@ Halo measure(const char* method, float x) {
     session->knobs().setFromString("ssao.enabled", "false");
     session->render({{"bloom.result"}});
     const FloatImage bloom = session->readRaw("bloom.result");  // half resolution
-    const glm::vec4 clip = session->pipeline().lastCamera().viewProjection * glm::vec4(x, 1.3f, 0.0f, 1.0f);
+    const glm::vec4 clip(session->pipeline().lastCamera().worldToClip() * glm::dvec4(x, 1.3, 0.0, 1.0));
     Halo h;
     h.source = glm::vec2((clip.x / clip.w * 0.5f + 0.5f) * W, (0.5f - clip.y / clip.w * 0.5f) * H);
     const float sx = static_cast<float>(W) / bloom.width, sy = static_cast<float>(H) / bloom.height;

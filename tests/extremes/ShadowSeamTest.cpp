@@ -73,7 +73,7 @@ SeamResult compareWithShadowsOff(const char* light, const char* method, int pcf)
     session->render({{"lbuffer", "gbuffer.view_position"}});
     const FloatImage shadowed = session->readRaw("lbuffer");
     const FloatImage position = session->readRaw("gbuffer.view_position");
-    const glm::mat4 inverseView = session->pipeline().lastCamera().inverseView;
+    const glm::mat4 inverseView(glm::inverse(session->pipeline().lastCamera().worldToView()));
     session->knobs().setFromString("shadows.enabled", "false");
     session->render({{"lbuffer"}});
     const FloatImage open = session->readRaw("lbuffer");

@@ -21,7 +21,7 @@ constexpr int W = 160, H = 90;
 
 // Pixel (x right, y down) where a world point lands.
 glm::ivec2 project(RenderSession& s, const glm::vec3& p) {
-    const glm::vec4 c = s.pipeline().lastCamera().viewProjection * glm::vec4(p, 1.0f);
+    const glm::vec4 c(s.pipeline().lastCamera().worldToClip() * glm::dvec4(glm::dvec3(p), 1.0));
     const glm::vec2 ndc = glm::vec2(c) / c.w;
     return {static_cast<int>((ndc.x * 0.5f + 0.5f) * W), static_cast<int>((0.5f - ndc.y * 0.5f) * H)};
 }

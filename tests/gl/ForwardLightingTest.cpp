@@ -203,7 +203,7 @@ TEST(ForwardLighting, ObjectsOutsideTheFrustumGetNoLights) {
     for (const LightTableEntry& e : session->pipeline().pass<LightTablePass>()->table().entries)
         if (e.light->type != LightType::Directional) lights.push_back(&e);
     const GpuScene& gpu = session->pipeline().gpuScene();
-    const glm::mat4 viewProjection = session->camera().projection(96.0f / 54.0f) * session->camera().view();
+    const glm::dmat4 viewProjection = session->pipeline().lastCamera().worldToClip();
     const ForwardLightLists all = ForwardLightLists::build(gpu, lights);
     const ForwardLightLists visible = ForwardLightLists::build(gpu, lights, &viewProjection);
     std::printf("camera looking away: %zu light-object pairs, %zu on visible objects\n", all.rows.size(),

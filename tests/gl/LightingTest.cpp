@@ -91,7 +91,7 @@ TEST(Lighting, LBufferMatchesTheCpuShadingEquation) {
         const FloatImage N = session->readRaw("gbuffer.view_normal");
         const FloatImage albedo = session->readRaw("gbuffer.albedo");
         const FloatImage spec = session->readRaw("gbuffer.specular");
-        const glm::dmat4 view = glm::dmat4(session->pipeline().lastCamera().view);  // the matrix the frame used
+        const glm::dmat4 view = session->pipeline().lastCamera().worldToView();  // the matrix the frame used
         const double threshold = session->knobs().value(*session->knobs().find("lighting.threshold"));
         const auto model = std::string(attenuation) == "windowed" ? reference::AttenuationModel::Windowed
                                                                   : reference::AttenuationModel::Classic;

@@ -312,7 +312,7 @@ TEST(TiledLighting, GridStrategiesMatchTheCpuShadingEquation) {
         const FloatImage N = session->readRaw("gbuffer.view_normal");
         const FloatImage albedo = session->readRaw("gbuffer.albedo");
         const FloatImage spec = session->readRaw("gbuffer.specular");
-        const glm::dmat4 view = glm::dmat4(session->pipeline().lastCamera().view);  // the matrix the frame used
+        const glm::dmat4 view = session->pipeline().lastCamera().worldToView();  // the matrix the frame used
         double worst = 0.0, bias = 0.0;
         int checked = 0;
         for (int y = 0; y < H; ++y)
