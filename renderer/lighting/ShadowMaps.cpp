@@ -47,7 +47,8 @@ ShadowMaps::ShadowMaps(KnobRegistry& knobs) {
                            "render each light's map just before shading it, reusing one map (seed 002 3.3); off: "
                            "keep one map per light, rendered before the lights are shaded");
     distance_ = knobs.addFloat("shadows.distance", 0.0, 0.0, 1e5, "shadows",
-                               "how far from the camera a directional light's map reaches (0: the far plane)", "units");
+                               "how far from the camera a directional light's map reaches (0: as far as the scene reaches in view; "
+                               "the map covers the scene's bounds intersected with the view either way)", "units");
 }
 
 void ShadowMaps::setup(gl::ShaderLibrary& shaders) {
@@ -154,9 +155,29 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             // the light, the box is a constant size while the camera moves (so
             // snapping it to whole texels stops the edges shimmering): per
             // axis either the scene's extent, or the diameter of a sphere
-            // around the frustum slice, whichever is smaller.
-            const float nearC = ctx.camera.clip.x;
-            const float farC = k.get(distance_) > 0.0f ? std::min(k.get(distance_), ctx.camera.clip.y) : ctx.camera.clip.y;
+            // around the frustum slice, whichever is smaller. The slice is the
+            // view intersected with the scene's bounds (and shadows.distance):
+            // a view with near 0.05 and far 1e6 over a 20-unit scene gets a
+            // map of the scene, not of a million units of empty frustum (whose
+            // depth range left a float map too coarse for any bias: acne).
+            float nearC = ctx.camera.clip.x;
+            float farC = k.get(distance_) > 0.0f ? std::min(k.get(distance_), ctx.camera.clip.y) : ctx.camera.clip.y;
+            if (!bounds.empty()) {
+                const glm::dmat4 worldToView = ctx.camera.worldToView();
+                double zMin = 1e300, zMax = -1e300;  // distances ahead of the camera
+                for (int c = 0; c < 8; ++c) {
+                    const double z = -(worldToView * glm::dvec4((c & 1) ? bounds.max.x : bounds.min.x,
+                                                                 (c & 2) ? bounds.max.y : bounds.min.y,
+                                                                 (c & 4) ? bounds.max.z : bounds.min.z, 1.0)).z;
+                    zMin = std::min(zMin, z);
+                    zMax = std::max(zMax, z);
+                }
+                if (zMax > nearC) {
+                    farC = std::min(farC, static_cast<float>(zMax));
+                    nearC = std::max(nearC, static_cast<float>(zMin));
+                }
+                farC = std::max(farC, nearC * 1.001f + 1e-6f);
+            }
             const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
             const glm::dvec3 center = bounds.empty() ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
             eye = center - dir * (static_cast<double>(sceneRadius) * 2.0);
@@ -192,9 +213,10 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
                     lo2 = c - 0.5f * extent;
                     hi2 = c + 0.5f * extent;
                 }
-                // Deep enough for every caster between the light and the view.
-                lo.z = std::min(lo.z, lb.min.z);
-                hi.z = std::max(hi.z, lb.max.z);
+                // Deep enough for every caster between the light and the view,
+                // and no deeper: every caster and receiver is in the scene.
+                lo.z = lb.min.z;
+                hi.z = lb.max.z;
             }
             // Snap the box to whole texels of its (constant) size.
             const float texel = extent / static_cast<float>(size);
