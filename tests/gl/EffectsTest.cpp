@@ -181,6 +181,13 @@ class ShadowAcne : public ::testing::TestWithParam<glm::vec3> {};
 TEST_P(ShadowAcne, BiasRemovesAcneOnAnUnoccludedPlane) {
     auto s = test::makeSession(W, H);
     Scene scene = test::planeScene(40.0f);
+    // A tall post behind the camera, its shadow falling off the plane, gives
+    // the map a depth range of 30 units as a real scene would: the map is
+    // fitted to the scene's bounds, and a lone plane's zero-depth box would
+    // need no bias at all.
+    Mesh post = shapes::box({0.5f, 30.0f, 0.5f});
+    post.material = 0;
+    scene.instances.push_back({scene.addMesh(std::move(post)), glm::translate(glm::mat4(1.0f), {18.0f, 15.0f, 18.0f})});
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = glm::normalize(GetParam());
