@@ -11,6 +11,7 @@
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/graph/TimingReport.h"
+#include "renderer/inspect/FiniteCheck.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -21,6 +22,7 @@ int runRenderCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE] [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
+                     "                                 [--check-finite]\n"
                      "                                 --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
@@ -32,7 +34,9 @@ int runRenderCommand(int argc, char** argv) {
                      "               timings are asked for (the first frame compiles shaders), else 0\n"
                      "  --timings    print per-pass GPU and CPU milliseconds\n"
                      "  --timings-out  write the timings as .json, or as .csv rows (any other name)\n"
-                     "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n";
+                     "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n"
+                     "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
+                     "               naming the first that holds a NaN or an infinity (and its first pixel)\n";
         return 0;
     }
     RunConfig run = cl.runConfig();
@@ -47,6 +51,7 @@ int runRenderCommand(int argc, char** argv) {
     const bool timed = timings || timingsOut;
     run.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or(timed ? "1" : "0"), 0, 100000);
     const bool verbose = cl.flag("--verbose");
+    const bool checkFinite = cl.flag("--check-finite");
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
@@ -79,6 +84,20 @@ int runRenderCommand(int argc, char** argv) {
     std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
                 session.scene().name.c_str());
     if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
+    if (checkFinite) {
+        // Every produced buffer, not only the one written: the first named is
+        // the earliest pass that made a non-finite value.
+        const std::vector<NonFiniteCount> counts = FiniteCheck::scan(session.pipeline().outputs());
+        for (const NonFiniteCount& c : counts) {
+            if (c.nonFinite() == 0) continue;
+            std::fprintf(stderr,
+                         "error: buffer '%s' holds %lld non-finite values (%lld NaN, %lld +Inf, %lld -Inf); the first at "
+                         "pixel (%d, %d), rows top-down\n",
+                         c.buffer.c_str(), c.nonFinite(), c.nan, c.positiveInf, c.negativeInf, c.firstX, c.firstY);
+            return 3;
+        }
+        std::printf("check-finite: %zu buffers, no NaN or infinity\n", counts.size());
+    }
     if (timed) {
         const TimingReport t = TimingReport::build(timer, report, firstCounted, run.warmup);
         if (timings) std::fputs(t.table().c_str(), stdout);

@@ -26,5 +26,5 @@ void main() {
     outAlbedo = vec4(clamp(ms.diffuse, 0.0, 1.0), PIXEL_SURFACE / 255.0);
     outNormal = encodeNormalKL(ms.normal);
     outSpecular = vec4(clamp(ms.specular, 0.0, 1.0), encodeExponent(ms.exponent));
-    outEmissive = vec4(max(ms.emissive, vec3(0.0)), 0.0);
+    outEmissive = vec4(clamp(ms.emissive, vec3(0.0), vec3(65000.0)), 0.0);  // R11G11B10F's largest value: stay finite
 }

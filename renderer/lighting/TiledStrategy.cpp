@@ -39,7 +39,7 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
 
     lists.upload(candidates_);
     const gl::Texture& lbuffer = ctx.texture("lbuffer");
-    glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+    glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     if (overlap) glBindImageTexture(1, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     if (counts) glBindImageTexture(2, ctx.texture(kTileCounts).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     program.use();

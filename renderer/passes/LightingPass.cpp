@@ -45,8 +45,10 @@ LightingPass::~LightingPass() = default;
 
 std::vector<OutputDecl> LightingPass::outputs() const {
     std::vector<OutputDecl> out = {
-        {"lbuffer", OutputKind::HdrColor, "HDR radiance (RGBA16F): ambient, emission and every light, additively blended",
-         texture2D(GL_RGBA16F)},
+        {"lbuffer", OutputKind::HdrColor,
+         "HDR radiance (RGBA32F, so lights up to 1e20 and their sums stay finite): ambient, emission and every light, "
+         "additively blended",
+         texture2D(GL_RGBA32F)},
         {"lbuffer.depth", OutputKind::Depth,
          "the G-buffer depth copied for the L-buffer, with the stencil the light volumes used (DEPTH32F_STENCIL8)",
          texture2D(GL_DEPTH32F_STENCIL8), 1},

@@ -1,5 +1,7 @@
 #include "renderer/scene/SceneJsonLoader.h"
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -154,6 +156,20 @@ private:
             try {
                 FloatImage img = loadImageFloat(full);
                 if (img.channels < 3) r_.fail(where, "environment image '" + rel + "' needs 3 or 4 channels");
+                // Sanitised at load (issue 10): the sky is a half-float
+                // texture, so NaN, infinities and values past 65504 would
+                // reach every buffer that samples it. NaN and negative values
+                // become 0, larger ones 65504; the warning says how many.
+                long long fixedValues = 0;
+                for (float& v : img.pixels) {
+                    const float clean = std::isnan(v) || v < 0.0f ? 0.0f : std::min(v, 65504.0f);
+                    if (clean != v) ++fixedValues;
+                    v = clean;
+                }
+                if (fixedValues > 0)
+                    scene_.warnings.push_back(where + ": environment image '" + rel + "': " +
+                                              std::to_string(fixedValues) +
+                                              " values were NaN, negative or beyond half float's 65504; set to 0 or 65504");
                 return img;
             } catch (const FileError& e) {
                 r_.fail(where, std::string("cannot load environment image: ") + e.what());

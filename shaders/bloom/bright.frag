@@ -25,5 +25,7 @@ void main() {
     c *= 0.25;
     float L = luminance(c);
     float t = bloom.threshold * texelFetch(uStats, ivec2(0), 0).x;
-    outColor = vec4(L > t ? c * (L - t) / L : vec3(0.0), 1.0);
+    // The bloom chain is half float: radiance past its largest value (65504)
+    // would turn to infinity there, so it is clamped (the L-buffer is 32-bit).
+    outColor = vec4(min(L > t ? c * (L - t) / L : vec3(0.0), vec3(65504.0)), 1.0);
 }

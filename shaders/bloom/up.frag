@@ -17,5 +17,5 @@ void main() {
              texture(uCoarse, uv).rgb * 4.0 + texture(uCoarse, uv + vec2(t.x, 0)).rgb * 2.0 +
              texture(uCoarse, uv + vec2(-t.x, -t.y)).rgb + texture(uCoarse, uv + vec2(0, -t.y)).rgb * 2.0 +
              texture(uCoarse, uv + vec2(t.x, -t.y)).rgb;
-    outColor = vec4(s / 16.0 + texture(uSame, uv).rgb, 1.0);
+    outColor = vec4(min(s / 16.0 + texture(uSame, uv).rgb, vec3(65504.0)), 1.0);  // half float: stay finite
 }

@@ -17,7 +17,7 @@
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 
-layout(binding = 0, rgba16f) uniform restrict image2D uLBuffer;
+layout(binding = 0, rgba32f) uniform restrict image2D uLBuffer;
 layout(binding = 1, r32f) uniform restrict image2D uOverlap;     // when FLAG_COUNT_OVERLAP
 layout(binding = 2, r32f) uniform restrict image2D uTileCounts;  // when FLAG_TILE_COUNTS
 

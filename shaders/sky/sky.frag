@@ -45,5 +45,5 @@ void main() {
     } else {
         c = procedural(d);
     }
-    outColor = vec4(c * sky.intensity, 1.0);
+    outColor = vec4(min(c * sky.intensity, vec3(65504.0)), 1.0);  // the sky target is half float: stay finite
 }

@@ -67,6 +67,20 @@ TEST(Cli, RendersPngOfTheRequestedSize) {
     EXPECT_EQ(img.height, 54);
 }
 
+// render --check-finite (issue 10): every buffer the frame produced is read
+// back; a clean frame says how many and exits 0. (The non-zero exit naming
+// the first bad buffer is FiniteCheck's, tested in extremes_tests.)
+TEST(Cli, CheckFiniteReadsEveryProducedBuffer) {
+    const fs::path out = test::tempDir() / "finite.png";
+    const Result r = run("render --scene spheres --size 96x54 --check-finite --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("check-finite: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("no NaN or infinity"), std::string::npos) << r.out;
+    // At least the G-buffer's five targets, the L-buffer and the final image.
+    const auto at = r.out.find("check-finite: ");
+    EXPECT_GE(std::stoi(r.out.substr(at + 14)), 7) << r.out;
+}
+
 TEST(Cli, WritesRawBuffersToExr) {
     const fs::path out = test::tempDir() / "depth.exr";
     ASSERT_EQ(run("render --scene default --size 64x36 --buffer gbuffer.depth --out " + out.string()).code, 0);
