@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "renderer/inspect/FiniteCheck.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "ui/Widgets.h"
 
@@ -34,10 +35,11 @@ bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<
             changed = true;
         }
     }
-    const char* mappings[] = {"auto", "direct (range)", "linear depth", "normal colours", "heat map", "tone map"};
+    const char* mappings[] = {"auto",     "direct (range)", "linear depth",
+                              "normal colours", "heat map", "tone map", "non-finite (NaN / Inf)"};
     int m = static_cast<int>(s.mapping) + 1;
     ImGui::SetNextItemWidth(160);
-    if (ImGui::Combo("mapping", &m, mappings, 6)) {
+    if (ImGui::Combo("mapping", &m, mappings, 7)) {
         s.mapping = static_cast<M>(m - 1);
         changed = true;
     }
@@ -45,6 +47,17 @@ bool viewSettingsEditor(BufferViewSettings& s, OutputKind kind, const std::pair<
     if (s.mapping == M::Auto) {
         ImGui::SameLine();
         ImGui::TextDisabled("-> %s", mappings[static_cast<int>(resolved) + 1]);
+    }
+    if (resolved == M::NonFinite && output && output->allocated()) {
+        // Counted on the CPU from a read-back of what is shown (only while this view is on).
+        const NonFiniteCount c = FiniteCheck::count(readOutputRaw(*output, s.selection()), output->decl.name);
+        if (c.nonFinite() == 0) {
+            ImGui::TextDisabled("no NaN or infinity in %lld values", c.values);
+        } else {
+            ImGui::TextColored(ImVec4(1.0f, 0.3f, 1.0f, 1.0f), "NaN %lld (magenta), +Inf %lld (red), -Inf %lld (blue)", c.nan,
+                               c.positiveInf, c.negativeInf);
+            ImGui::TextDisabled("first at pixel (%d, %d), rows top-down", c.firstX, c.firstY);
+        }
     }
     if (resolved == M::Tonemap) {
         ImGui::SetNextItemWidth(160);

@@ -22,7 +22,9 @@
 namespace dw {
 
 struct BufferViewSettings {
-    enum class Mapping { Auto = -1, Direct = 0, LinearDepth = 1, Normal = 2, Heatmap = 3, Tonemap = 4 };
+    // NonFinite: NaN magenta, +Inf red, -Inf blue, finite values dim grey
+    // (where a NaN entered; FiniteCheck counts them).
+    enum class Mapping { Auto = -1, Direct = 0, LinearDepth = 1, Normal = 2, Heatmap = 3, Tonemap = 4, NonFinite = 5 };
     enum class Channel { RGB = 0, R = 1, G = 2, B = 3, A = 4 };
     Mapping mapping = Mapping::Auto;
     Channel channel = Channel::RGB;

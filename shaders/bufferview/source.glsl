@@ -16,6 +16,7 @@
 #define MAP_NORMAL 2
 #define MAP_HEATMAP 3
 #define MAP_TONEMAP 4
+#define MAP_NON_FINITE 5
 
 #define ARRANGE_PLAIN 0
 #define ARRANGE_LAYERS 1

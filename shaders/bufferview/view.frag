@@ -34,6 +34,23 @@ void main() {
         return;
     }
     vec4 raw = fetchRaw(src);
+    if (view.modes.x == MAP_NON_FINITE) {
+        // Non-finite values highlighted over a dim picture of the rest.
+        bool positiveInf = false, negativeInf = false;
+        for (int i = 0; i < 4; ++i)
+            if (isinf(raw[i])) {
+                positiveInf = positiveInf || raw[i] > 0.0;
+                negativeInf = negativeInf || raw[i] < 0.0;
+            }
+        if (any(isnan(raw))) outColor = vec4(1.0, 0.0, 1.0, 1.0);
+        else if (positiveInf) outColor = vec4(1.0, 0.0, 0.0, 1.0);
+        else if (negativeInf) outColor = vec4(0.0, 0.3, 1.0, 1.0);
+        else {
+            float x = max(dot(abs(raw.rgb), vec3(0.2126, 0.7152, 0.0722)), 0.0);
+            outColor = vec4(vec3(0.35 * x / (1.0 + x)), 1.0);
+        }
+        return;
+    }
     vec4 v = raw;
     if (!mapFetched(v)) {
         // Background depth and non-finite values: a dark checker, not a colour.
