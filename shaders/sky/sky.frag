@@ -45,5 +45,9 @@ void main() {
     } else {
         c = procedural(d);
     }
-    outColor = vec4(min(c * sky.intensity, vec3(65504.0)), 1.0);  // the sky target is half float: stay finite
+    // The sky target is half float: stay finite. Environment images are
+    // sanitised at load; a scene built in code may still carry NaN (-> 0)
+    // or infinities and huge values (-> 65504).
+    c *= sky.intensity;
+    outColor = vec4(any(isnan(c)) ? vec3(0.0) : min(max(c, vec3(0.0)), vec3(65504.0)), 1.0);
 }
