@@ -34,7 +34,8 @@ const std::vector<Preset>& builtinPresets() {
                 std::string("seed 000 table 6.4: ") + ssao[i][0] + " resolution, " + ssao[i][1] + " samples, radius " +
                     ssao[i][2] + ", blur width " + ssao[i][3],
                 {{"ssao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
-                 {"ssao.radius", ssao[i][2]}, {"ssao_blur.mode", "bilateral"}, {"ssao_blur.width", ssao[i][3]}});
+                 {"ssao.radius", ssao[i][2]}, {"ssao.radius_unit", "world"}, {"ssao_blur.mode", "bilateral"},
+                 {"ssao_blur.width", ssao[i][3]}});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
             {{"lighting.threshold", "0.0009765625"}});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/IntegerHash.h"
@@ -20,8 +21,14 @@ SsaoPass::SsaoPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("ssao.enabled", true, "ssao", "screen-space ambient occlusion on the ambient term");
     samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao",
                             "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)", "", true);
-    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao", "radius of the sampling hemisphere in scene units",
+    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao",
+                             "radius of the sampling hemisphere, in ssao.radius_unit (the inspector gives it in world units)",
                              "units", false, true);
+    radiusUnit_ = knobs.addEnum("ssao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ssao",
+                                "world: ssao.radius in world units (seed 000's SSAO1-5 presets); scene_fraction: in "
+                                "units of the scene's size, 10^round(log10(R / 10)) for a bounding radius R, so a model "
+                                "authored in millimetres or kilometres gets the AO it would get in metres (1 for scenes of "
+                                "radius 3.2 to 32)");
     intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
     bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ssao",
                            "depth tolerance before a sample counts as occluded, as a fraction of the radius");
@@ -30,6 +37,17 @@ SsaoPass::SsaoPass(KnobRegistry& knobs) {
     // In the order of the shift to the AO size: the choice's index is the shift.
     resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ssao",
                                 "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
+}
+
+float SsaoPass::sceneUnit(const Bounds& bounds) {
+    const double r = bounds.empty() ? 0.0 : static_cast<double>(bounds.radius());
+    if (!(r > 0.0) || !std::isfinite(r)) return 1.0f;
+    return static_cast<float>(std::pow(10.0, std::round(std::log10(r / 10.0))));
+}
+
+float SsaoPass::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
+    const float r = knobs.get(radius_);
+    return knobs.choice(radiusUnit_) == "world" ? r : r * sceneUnit(bounds);
 }
 
 std::string SsaoPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
@@ -91,7 +109,8 @@ void SsaoPass::execute(FrameContext& ctx) {
     p.sampleCount = n;
     p.rangeCheck = k.get(rangeCheck_) ? 1 : 0;
     p.aoSize = size;
-    p.radius = k.get(radius_);
+    const float radius = worldRadius(k, ctx.gpu.bounds());
+    p.radius = radius;
     p.intensity = k.get(intensity_);
     p.bias = k.get(bias_);
     params_.upload(p, binding::kPassUbo);
@@ -103,7 +122,9 @@ void SsaoPass::execute(FrameContext& ctx) {
     target_.get(ctx, {"ssao.raw"}, {}, "SSAO").bind();
     program_->use();
     triangle_.draw();
-    stats_ = std::to_string(n) + " samples at " + std::to_string(size.x) + "x" + std::to_string(size.y);
+    char r[48];
+    std::snprintf(r, sizeof(r), ", radius %.4g world units", radius);
+    stats_ = std::to_string(n) + " samples at " + std::to_string(size.x) + "x" + std::to_string(size.y) + r;
 }
 
 }  // namespace dw

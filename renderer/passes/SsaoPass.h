@@ -18,6 +18,8 @@
 
 namespace dw {
 
+struct Bounds;
+
 class SsaoPass : public RenderPass {
 public:
     explicit SsaoPass(KnobRegistry& knobs);
@@ -31,6 +33,12 @@ public:
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
+    // The scene's unit for ssao.radius_unit = scene_fraction: 10^round(log10(R / 10))
+    // for the bounding radius R (1 for an empty scene), so scaling a scene by a
+    // power of ten scales its SSAO radius with it.
+    static float sceneUnit(const Bounds& bounds);
+    // ssao.radius in world units under the current knobs.
+    float worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const;
     std::string stats() const override { return stats_; }
 
     // The AO resolution for a full resolution under `knobs`.
@@ -42,7 +50,7 @@ private:
     BoolKnob enabled_, rangeCheck_;
     IntKnob samples_;
     FloatKnob radius_, intensity_, bias_;
-    EnumKnob resolution_;
+    EnumKnob resolution_, radiusUnit_;
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::SsaoParams> params_;

@@ -70,7 +70,10 @@ void main() {
         if (isFarDepth(sceneDepth)) continue;
         vec3 S = viewPositionFromDepth(quv, sceneDepth);
         if (S.z < Q.z + bias) continue;  // the stored surface is behind the sample: not occluded
-        float d = length(S - P);
+        // The falloff 1 / (1 + d^2) with d in units of the radius, so the AO
+        // does not change when the scene and the radius scale together (the
+        // same as the seed's for the default radius of 1).
+        float d = length(S - P) / radius;
         float weight = 1.0 / (1.0 + d * d);
         if (ssao.rangeCheck != 0) {
             // A surface far in front of P (another object) does not occlude it.
