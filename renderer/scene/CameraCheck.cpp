@@ -35,6 +35,11 @@ std::optional<CameraProblem> findCameraProblem(const Camera& c, float sceneExten
     if (!finite(c.up)) return CameraProblem{"up", "is not finite"};
     if (!(c.fovYDegrees > 0.0f && c.fovYDegrees < 179.0f))
         return CameraProblem{"fov", "must be in (0, 179) degrees, got " + shortNumber(c.fovYDegrees)};
+    // Narrower, the projection's scale (1 / tan(fov / 2)) leaves float
+    // precision and the frame breaks into blocks or goes black.
+    if (c.fovYDegrees < 1e-3f)
+        return CameraProblem{"fov", "must be at least 0.001 degrees (narrower leaves 32-bit float precision), got " +
+                                        shortNumber(c.fovYDegrees)};
     if (!(c.nearPlane > 0.0f)) return CameraProblem{"near", "must be greater than 0, got " + shortNumber(c.nearPlane)};
     if (c.nearPlane < FLT_MIN)
         return CameraProblem{"near", shortNumber(c.nearPlane) +

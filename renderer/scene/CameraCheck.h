@@ -2,7 +2,7 @@
 // The one definition of a usable camera, applied by every reader of cameras
 // (scene JSON, presets, glTF): a camera it accepts gives a finite view and
 // projection matrix. Fields are the scene JSON's names.
-//  - fov in (0, 179) degrees;
+//  - fov in (0, 179) degrees, and at least 0.001;
 //  - near a normal 32-bit float > 0 (not 0, not denormal), far > near;
 //  - look-at differs from pos by more than kMinViewDistance times the larger
 //    of the scene's extent and the camera's own coordinates (size-relative:

@@ -1,5 +1,6 @@
 #include "renderer/scene/SceneCheck.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "renderer/Error.h"
@@ -47,11 +48,33 @@ void checkSceneValues(const Scene& scene) {
                 fail("mesh '" + scene.meshes[scene.instances[i].mesh].name + "' (instance " + std::to_string(i) +
                      "): its transform does not fit 32-bit floats");
     }
+    // Headroom for sums and squares: the L-buffer adds every light's radiance
+    // (and bloom its levels) in 32-bit floats, and attenuation squares
+    // distances. So light intensities, a light's peak over a constant-only
+    // attenuation, and the ambient and background terms stay at or below
+    // 1e30, and point and spot lights within 1e18 of the origin (d^2 <= 1e36).
+    constexpr float kMaxRadiance = 1e30f, kMaxCoordinate = 1e18f;
+    auto peak = [](const glm::vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); };
     for (const Light& l : scene.lights) {
         if (!finite(l.position)) fail("light '" + l.name + "': its position does not fit 32-bit floats");
         if (!finite(l.direction)) fail("light '" + l.name + "': its direction is not finite");
         if (!finite(l.intensity)) fail("light '" + l.name + "': its intensity does not fit 32-bit floats");
+        if (peak(l.intensity) > kMaxRadiance)
+            fail("light '" + l.name + "': intensity " + shortNumber(peak(l.intensity)) +
+                 " is beyond 1e30 (lights are summed in 32-bit floats)");
+        if (l.type == LightType::Directional) continue;
+        if (peak(l.position) > kMaxCoordinate)
+            fail("light '" + l.name + "': position " + shortNumber(peak(l.position)) +
+                 " is beyond 1e18 from the origin (attenuation squares distances in 32-bit floats)");
+        const Attenuation& a = l.attenuation;
+        const double unattenuated = double(peak(l.intensity)) / double(a.constant);  // in double: it may pass 3.4e38
+        if (a.linear == 0.0f && a.quadratic == 0.0f && a.constant > 0.0f && unattenuated > kMaxRadiance)
+            fail("light '" + l.name + "': intensity / attenuation.constant = " + shortNumber(unattenuated) +
+                 " is beyond 1e30 (lights are summed in 32-bit floats)");
     }
+    if (peak(scene.ambient) > kMaxRadiance) fail("ambient: " + shortNumber(peak(scene.ambient)) + " is beyond 1e30");
+    if (peak(scene.background) > kMaxRadiance)
+        fail("background: " + shortNumber(peak(scene.background)) + " is beyond 1e30");
     if (const auto problem = findCameraProblem(scene.camera, extent))
         fail("camera." + problem->field + ": " + problem->what + " (the scene is " + shortNumber(extent) + " across)");
 }

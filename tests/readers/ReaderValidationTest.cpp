@@ -381,3 +381,22 @@ TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
         "path": [{"time": 0, "pos": [0, 1, 5], "look-at": [0, 0, 0]}, {"time": 1, "pos": [0, 9, 0], "look-at": [0, 0, 0]}]})"))),
                "path.json: camera.path[1].look-at: looks along camera.up");
 }
+
+// Values that each fit a float but overflow in combination (lights summed in
+// the L-buffer, distances squared) and fields of view too narrow for float
+// precision are refused, naming the light or field.
+TEST(ReaderValidation, ValuesThatOverflowInCombinationAreRefused) {
+    auto light = [](const std::string& name, const std::string& fields) {
+        return sceneError(writeText(name, scene(R"("lights": [{"name": "L", "type": "point", "pos": [0, 2, 0], )" +
+                                                fields + "}]")));
+    };
+    EXPECT_HAS(light("bright.json", R"("intensity": 3e38)"), "bright.json: light 'L': intensity 3e+38 is beyond 1e30");
+    EXPECT_HAS(sceneError(writeText("far-light.json", scene(R"("lights": [{"name": "L", "type": "point", "pos": [3e38, 2, 0]}])"))),
+               "far-light.json: light 'L': position 3e+38 is beyond 1e18 from the origin");
+    EXPECT_HAS(light("tiny-constant.json", R"("intensity": 1e20, "attenuation": {"constant": 1e-30})"),
+               "tiny-constant.json: light 'L': intensity / attenuation.constant = 1e+50 is beyond 1e30");
+    EXPECT_HAS(sceneError(writeText("narrow.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0], "fov": 1e-30})"))),
+               "narrow.json: camera.fov: must be at least 0.001 degrees");
+    // The extremes the renderer keeps finite are still accepted.
+    EXPECT_EQ(light("bright-ok.json", R"("intensity": 1e20)"), "no error");
+}
