@@ -49,7 +49,8 @@ void onGlfwError(int code, const char* description) {
 // GLFW and ImGui set up and torn down in the right order.
 class Window {
 public:
-    Window(int width, int height, bool vsync) {
+    // `egl`: create the context through EGL instead of the platform's own API.
+    Window(int width, int height, bool vsync, bool egl) {
         glfwSetErrorCallback(onGlfwError);
         if (!glfwInit())
             throw GlUnsupportedError("cannot open a window (" + glfwErrorText() +
@@ -58,7 +59,17 @@ public:
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        // Under RenderDoc (1.24) the GLX context's frames fail: its GLX layer
+        // reports our framebuffers as having no attachments. Through EGL, the
+        // API the headless renderer uses, RenderDoc captures complete frames;
+        // GLX stays the default otherwise, and the fallback if EGL fails.
+        if (egl) glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
         window_ = glfwCreateWindow(width, height, "Deferred Workbench", nullptr, nullptr);
+        if (!window_ && egl) {
+            eglFailed_ = glfwErrorText();
+            glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_NATIVE_CONTEXT_API);
+            window_ = glfwCreateWindow(width, height, "Deferred Workbench", nullptr, nullptr);
+        }
         if (!window_) {
             glfwTerminate();
             throw GlUnsupportedError("cannot create an OpenGL 4.5 core window (" + glfwErrorText() +
@@ -74,9 +85,12 @@ public:
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
     GLFWwindow* get() const { return window_; }
+    // Why an EGL context was asked for and not had ("" when it was, or not asked).
+    const std::string& eglFailed() const { return eglFailed_; }
 
 private:
     GLFWwindow* window_ = nullptr;
+    std::string eglFailed_;
 };
 
 // Key presses since the last frame; see UiState::keyPresses.
@@ -161,6 +175,9 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
 void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh) {
+    nlohmann::json errors = nlohmann::json::array();
+    for (const ui::Message& m : state.log.all())
+        if (m.error) errors.push_back(m.text);
     nlohmann::json panels = nlohmann::json::array();
     for (const auto& d : ui.drawnPanels()) {
         const ImGuiWindow* w = ImGui::FindWindowByName(d.name.c_str());
@@ -179,7 +196,8 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
                               {"frames", state.frame + 1},
                               {"frames_rendered", state.framesRendered},
-                              {"renderdoc_captures", state.renderdocCaptures}};
+                              {"renderdoc_captures", state.renderdocCaptures},
+                              {"errors", errors}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -441,7 +459,7 @@ int runGui(const GuiOptions& options, Scene scene) {
                     "use 'deferred-workbench render --scene S --out image.png' to render headless");
     const bool scripted = options.run.frames > 0;
     const ScriptedInput script = options.events.empty() ? ScriptedInput() : ScriptedInput::load(options.events);
-    Window window(options.run.width, options.run.height, !scripted);
+    Window window(options.run.width, options.run.height, !scripted, RenderDocCapture::injected());
     // A scripted run (tests, screenshots) neither reads nor writes the saved layout.
     const std::string layoutPath = scripted ? std::string() : configDir() + "/layout.json";
     ImGuiLayer imgui(window.get());
@@ -480,6 +498,10 @@ int runGui(const GuiOptions& options, Scene scene) {
             fs::create_directories(state.exportDir, ec);
             renderdoc.setPathTemplate(state.exportDir + "/workbench");
             state.log.info("RenderDoc: F11 or Render > Capture frame saves the next frame to " + state.exportDir, 0.0);
+            if (!window.eglFailed().empty())
+                state.log.error("RenderDoc: no EGL context for the window (" + window.eglFailed() +
+                                    "), so it runs on GLX, where RenderDoc 1.24 reports the G-buffer incomplete",
+                                0.0);
         }
         int capturesSeen = 0;
         ui::WorkbenchUi ui;

@@ -178,6 +178,7 @@ struct LayoutReport {
     glm::ivec2 renderSize{0}, wantedSize{0};
     int frames = 0, framesRendered = 0;
     std::vector<std::string> renderdocCaptures;
+    std::vector<std::string> errors;  // every error the Messages panel holds
     const ui::PanelRect* find(const std::string& n) const {
         for (const auto& [name, r] : panels)
             if (name == n) return &r;
@@ -202,6 +203,7 @@ LayoutReport readLayoutReport(const fs::path& p) {
     r.frames = j["frames"].get<int>();
     r.framesRendered = j["frames_rendered"].get<int>();
     r.renderdocCaptures = j["renderdoc_captures"].get<std::vector<std::string>>();
+    r.errors = j["errors"].get<std::vector<std::string>>();
     return r;
 }
 
@@ -509,6 +511,10 @@ TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
     const fs::path dir = test::tempDir() / "renderdoc-gui";
     fs::remove_all(dir);
     const LayoutReport r = runScripted("renderdoc", "1024x640", 8, "2 key F11\n", "--renderdoc --export-dir " + dir.string());
+    // The frames under RenderDoc are complete (no incomplete framebuffer, no
+    // failed pass), so the capture holds a real frame.
+    EXPECT_EQ(r.errors, std::vector<std::string>{});
+    EXPECT_GT(r.framesRendered, 0);
     ASSERT_EQ(r.renderdocCaptures.size(), 1u);
     EXPECT_EQ(fs::path(r.renderdocCaptures[0]).parent_path(), dir);
     ASSERT_TRUE(fs::exists(r.renderdocCaptures[0]));
