@@ -253,7 +253,8 @@ public:
         const Scene& scene = session_.scene();
         const double threshold = session_.knobs().value(*session_.knobs().find("lighting.threshold"));
         const glm::vec3 at = p.result.surface.worldPosition;
-        p.lights = lightsCovering(scene.lights, at, threshold);
+        p.lights = lightsCovering(scene.lights, at, threshold,
+                                  static_cast<int>(session_.knobs().value(*session_.knobs().find("lighting.volume_subdivisions"))));
         for (const Light& l : scene.lights) p.directionalLights += l.enabled && l.type == LightType::Directional;
         for (int i : p.lights) {
             const Light& l = scene.lights[static_cast<size_t>(i)];
@@ -380,6 +381,7 @@ private:
                 s.onlySubset = state.viewport.volumes == ui::VolumeFilter::AtProbe;
                 s.subset = state.probe.lights;
                 s.threshold = static_cast<float>(session_.knobs().value(*session_.knobs().find("lighting.threshold")));
+                s.sphereSubdivisions = static_cast<int>(session_.knobs().value(*session_.knobs().find("lighting.volume_subdivisions")));
                 base = &overlay_.compose(*base, depth, session_.scene(), pipeline.lastCamera(), s);
             }
             state.viewportImage.texture = base->id();

@@ -19,7 +19,7 @@ bool inSubset(const OverlaySettings& s, size_t light) {
 
 void ViewportOverlay::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "overlay/lines.vert", .fragment = "overlay/lines.frag"});
-    sphere_.create(unitSphereVolume());
+    for (int k = 0; k <= kMaxSphereSubdivisions; ++k) sphere_[k].create(unitSphereVolume(k));
     cone_.create(unitConeVolume());
     lines_ = gl::Buffer::create(4096 * sizeof(glm::vec3), nullptr, true, "overlay lines");
     linesVao_ = gl::VertexArray::create();
@@ -95,7 +95,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
                 c.a = alpha;
                 program_->set(0, vp * v.transform);
                 program_->set(1, c);
-                (v.shape == VolumeShape::Cone ? cone_ : sphere_).draw();
+                (v.shape == VolumeShape::Cone ? cone_ : sphere_[std::clamp(s.sphereSubdivisions, 0, kMaxSphereSubdivisions)]).draw();
             }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
             // A small cross at every point and spot light.

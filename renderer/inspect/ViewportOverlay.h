@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/graph/FrameContext.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/lighting/LightVolumeGeometry.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
@@ -28,6 +29,7 @@ struct OverlaySettings {
     std::vector<int> subset;
     bool axes = false;
     float threshold = 1.0f / 255.0f;  // lighting.threshold, for the volume sizes
+    int sphereSubdivisions = kDefaultSphereSubdivisions;  // lighting.volume_subdivisions: the mesh the stencil draws
 };
 
 class ViewportOverlay {
@@ -43,7 +45,7 @@ public:
 private:
     void drawLines(const std::vector<glm::vec3>& points, const glm::mat4& mvp, const glm::vec4& color);
     gl::ShaderLibrary::Handle program_;
-    LightVolumeGeometry sphere_, cone_;
+    LightVolumeGeometry sphere_[kMaxSphereSubdivisions + 1], cone_;
     gl::Buffer lines_;
     gl::VertexArray linesVao_;
     gl::Texture color_, depth_;

@@ -84,8 +84,8 @@ bool VolumeMesh::contains(const glm::mat4& transform, const glm::vec3& p, float 
     return true;
 }
 
-const VolumeMesh& unitSphereVolume() {
-    static const VolumeMesh mesh = [] {
+const VolumeMesh& unitSphereVolume(int subdivisions) {
+    static const auto build = [](int levels) {
         VolumeMesh m;
         const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
         m.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
@@ -93,7 +93,7 @@ const VolumeMesh& unitSphereVolume() {
         for (auto& p : m.positions) p = glm::normalize(p);
         m.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
                      3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
-        for (int level = 0; level < 2; ++level) {
+        for (int level = 0; level < levels; ++level) {
             std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
             auto midpoint = [&](uint32_t a, uint32_t b) {
                 const auto key = std::minmax(a, b);
@@ -121,8 +121,9 @@ const VolumeMesh& unitSphereVolume() {
         }
         for (auto& p : m.positions) p /= inradius * 0.9999f;
         return m;
-    }();
-    return mesh;
+    };
+    static const VolumeMesh meshes[kMaxSphereSubdivisions + 1] = {build(0), build(1), build(2), build(3)};
+    return meshes[std::clamp(subdivisions, 0, kMaxSphereSubdivisions)];
 }
 
 const VolumeMesh& unitConeVolume() {
@@ -147,14 +148,14 @@ const VolumeMesh& unitConeVolume() {
     return mesh;
 }
 
-std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold) {
+std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold, int sphereSubdivisions) {
     std::vector<int> out;
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& l = lights[i];
         if (!l.enabled || l.type == LightType::Directional) continue;
         const LightVolume v = computeLightVolume(l, threshold);
         const bool inside = v.shape == VolumeShape::FullScreen ||
-                            (v.shape == VolumeShape::Sphere && unitSphereVolume().contains(v.transform, p)) ||
+                            (v.shape == VolumeShape::Sphere && unitSphereVolume(sphereSubdivisions).contains(v.transform, p)) ||
                             (v.shape == VolumeShape::Cone && unitConeVolume().contains(v.transform, p));
         if (inside) out.push_back(static_cast<int>(i));
     }

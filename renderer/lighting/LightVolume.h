@@ -16,6 +16,10 @@ namespace dw {
 // +infinity when the attenuation never falls (constant only).
 double solveLightRadius(const Attenuation& att, double maxIntensity, double threshold);
 
+// The sphere volume meshes: the icosahedron subdivided 0 to 3 times (unitSphereVolume).
+constexpr int kMaxSphereSubdivisions = 3;
+constexpr int kDefaultSphereSubdivisions = 0;  // fastest on llvmpipe (docs/bench.md)
+
 enum class VolumeShape { Culled, Sphere, Cone, FullScreen };
 
 struct LightVolume {
@@ -39,10 +43,18 @@ struct VolumeMesh {
 // point and spot lights a volume strategy evaluates there. Enabled lights
 // only; directional lights (everywhere) are not listed. Indices into
 // scene.lights, in order.
-std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold);
+// `sphereSubdivisions`: the sphere mesh in use (lighting.volume_subdivisions).
+std::vector<int> lightsCovering(const std::vector<Light>& lights, const glm::vec3& p, double threshold,
+                                int sphereSubdivisions = kDefaultSphereSubdivisions);
 
-// Icosphere whose faces lie outside the unit sphere (inradius 1).
-const VolumeMesh& unitSphereVolume();
+// Icosphere whose faces lie outside the unit sphere (inradius 1): the
+// icosahedron subdivided `subdivisions` times (0 to kMaxSphereSubdivisions),
+// 20 * 4^k faces. Fewer faces cost less vertex work per light; their
+// vertices reach further out (circumradius 1.259 at k = 0, 1.071 at 1,
+// 1.018 at 2, 1.005 at 3), so the stencil marks a few more pixels that the
+// shader's in-radius test then rejects. The image is the same at every k.
+// The knob lighting.volume_subdivisions picks it.
+const VolumeMesh& unitSphereVolume(int subdivisions = kDefaultSphereSubdivisions);
 // Apex at the origin, axis +Z, height 1, enclosing the circular cone of base radius 1.
 const VolumeMesh& unitConeVolume();
 

@@ -7,8 +7,11 @@
 // strategy is one class and one registration line:
 //     static dw::RegisterLightingStrategy<MyStrategy> registerMine;
 // (built-in ones are listed in BuiltinStrategies.cpp).
+#include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -18,10 +21,16 @@
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/lighting/LightTable.h"
+#include "renderer/lighting/LightVolume.h"
 
 namespace dw {
 
 class KnobRegistry;
+
+namespace binding {
+// VOLUME_ROWS_SSBO in shaders/lighting/volume.vert (4-7 are the tiled and clustered lists).
+constexpr GLuint kVolumeRowsSsbo = 8;
+}  // namespace binding
 
 // What strategies share: the light shader (and its overlap-counting variant)
 // as a full-screen pass and over a volume mesh, the stencil-marking program,
@@ -33,13 +42,27 @@ public:
     const gl::Program& volume(bool counting) const { return counting ? *volumeCounting_ : *volume_; }
     const gl::Program& stencil() const { return *stencil_; }
     const LightVolumeGeometry& geometry(const LightTableEntry& e) const {
-        return e.volume.shape == VolumeShape::Cone ? cone_ : sphere_;
+        return e.volume.shape == VolumeShape::Cone ? cone_ : sphere_[sphereSubdivisions_];
     }
+    // The sphere mesh this frame uses (lighting.volume_subdivisions, unitSphereVolume).
+    void setSphereSubdivisions(int k) { sphereSubdivisions_ = std::clamp(k, 0, kMaxSphereSubdivisions); }
+    int sphereSubdivisions() const { return sphereSubdivisions_; }
     void drawFullscreenTriangle() const { triangle_.draw(); }
+
+    // Instanced volume draws: `rows` (light-table rows) go to the SSBO at
+    // binding::kVolumeRowsSsbo, and drawVolumes draws rows[first .. first +
+    // count) with `program` (in use; a volume or the stencil program), one
+    // instance each, all of `shape` (Sphere or Cone).
+    void uploadVolumeRows(const std::vector<std::uint32_t>& rows) const;
+    void drawVolumes(const gl::Program& program, VolumeShape shape, int first, int count) const;
+    // The unit mesh's local bounding box (for screen rectangles).
+    std::pair<glm::vec3, glm::vec3> localBox(VolumeShape shape) const;
 
 private:
     gl::ShaderLibrary::Handle fullscreen_, volume_, fullscreenCounting_, volumeCounting_, stencil_;
-    LightVolumeGeometry sphere_, cone_;
+    LightVolumeGeometry sphere_[kMaxSphereSubdivisions + 1], cone_;
+    int sphereSubdivisions_ = kDefaultSphereSubdivisions;
+    mutable gl::Buffer volumeRows_;
     gl::FullscreenTriangle triangle_;
 };
 
@@ -65,6 +88,7 @@ struct StrategyCounts {
     int fullscreen = 0;  // lights drawn over the whole screen
     int culled = 0;      // lights skipped (outside the view frustum)
     int grid = 0;        // lights shaded many at once from tile or cluster lists
+    int batches = 0;     // instanced volume draws (each covers many lights)
 };
 
 class LightingStrategy {

@@ -1,59 +1,135 @@
 #include "renderer/lighting/StencilVolumesStrategy.h"
 
+#include <algorithm>
+
+#include "renderer/lighting/LightLists.h"
+#include "renderer/lighting/ScreenBatches.h"
+#include "renderer/lighting/VolumesStrategy.h"
+
 namespace dw {
 
-StencilVolumesStrategy::StencilVolumesStrategy(KnobRegistry& knobs) {
+StencilVolumesStrategy::StencilVolumesStrategy(KnobRegistry& knobs) : instanced_(declareInstancedVolumesKnob(knobs)) {
     stencilCount_ = knobs.addEnum("lighting.stencil_count", {"depth_fail", "depth_pass"}, DepthFail, "lighting",
                                   "stencil counting of the volume test: depth_fail (correct with the camera inside a "
                                   "volume) or depth_pass (seed 001's table as written; loses lights around the camera)");
 }
 
+namespace {
+
+// 1. Mark pixels whose surface lies inside the volume.
+void markState(const FrameContext& ctx, bool depthFail) {
+    glEnable(GL_DEPTH_CLAMP);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(ctx.depth().nearer());
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    if (depthFail) {
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    } else {
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    }
+}
+
+// 2. Shade the marked pixels through the back faces, zeroing the stencil on
+//    the way so the next light (or batch) starts clean.
+void shadeState() {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+}
+
+}  // namespace
+
 StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
-    StrategyCounts c;
     const bool depthFail = f.ctx.knobs.get(stencilCount_) == DepthFail;
     const gl::Program& volume = f.shading.volume(f.counting);
-    for (const LightTableEntry* e : f.lights) {
-        if (!e->inFrustum) {
-            ++c.culled;
-            continue;
-        }
-        f.beginLight(*e);
-        const LightVolumeGeometry& geometry = f.shading.geometry(*e);
-        glEnable(GL_DEPTH_CLAMP);
-        glEnable(GL_STENCIL_TEST);
-        glStencilMask(0xFF);
-        // 1. Mark pixels whose surface lies inside the volume.
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glDisable(GL_BLEND);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(f.ctx.depth().nearer());
-        glDepthMask(GL_FALSE);
-        glDisable(GL_CULL_FACE);
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
-        if (depthFail) {
-            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-        } else {
-            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-        }
-        f.shading.stencil().use();
-        f.shading.stencil().set(0, e->row);
+    const gl::Program& stencil = f.shading.stencil();
+    auto oneLight = [&](const LightTableEntry& e) {
+        f.beginLight(e);
+        const LightVolumeGeometry& geometry = f.shading.geometry(e);
+        markState(f.ctx, depthFail);
+        stencil.use();
+        stencil.set(0, e.row);
         geometry.draw();
-        // 2. Shade the marked pixels through the back faces, zeroing the
-        //    stencil on the way so the next light starts clean.
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glEnable(GL_BLEND);
-        glDisable(GL_DEPTH_TEST);
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_FRONT);
-        glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);
+        shadeState();
         volume.use();
-        volume.set(0, e->row);
+        volume.set(0, e.row);
         geometry.draw();
-        ++c.volumes;
+    };
+
+    StrategyCounts c;
+    if (!f.ctx.knobs.get(instanced_)) {
+        for (const LightTableEntry* e : f.lights) {
+            if (!e->inFrustum) {
+                ++c.culled;
+                continue;
+            }
+            oneLight(*e);
+            ++c.volumes;
+        }
+        return c;
     }
+
+    // Lights without a map, batched: within a batch no two screen rectangles
+    // overlap, so one instanced draw marks them all and one shades them all.
+    const LightLists lists = LightLists::split(f);
+    c.culled = lists.culled;
+    if (lists.shaded > 0) {
+        const glm::dmat4 worldToClip = f.ctx.camera.worldToClip();
+        struct Batch {
+            VolumeShape shape;
+            int first = 0, count = 0;
+        };
+        std::vector<std::uint32_t> ordered;
+        std::vector<Batch> batches;
+        for (VolumeShape shape : {VolumeShape::Sphere, VolumeShape::Cone}) {
+            const auto [boxMin, boxMax] = f.shading.localBox(shape);
+            std::vector<std::uint32_t> rows;
+            std::vector<PixelRect> rects;
+            for (int i = 0; i < lists.shaded; ++i) {
+                const std::uint32_t row = lists.rows[static_cast<std::size_t>(i)];
+                const LightTableEntry& e = f.table.entries[row];
+                if (e.volume.shape != shape) continue;
+                rows.push_back(row);
+                rects.push_back(screenRect(worldToClip * glm::dmat4(e.volume.transform), boxMin, boxMax, f.ctx.width, f.ctx.height));
+            }
+            const std::vector<int> batchOf = disjointBatches(rects, f.ctx.width, f.ctx.height);
+            const int n = rows.empty() ? 0 : *std::max_element(batchOf.begin(), batchOf.end()) + 1;
+            for (int b = 0; b < n; ++b) {
+                Batch batch{shape, static_cast<int>(ordered.size()), 0};
+                for (std::size_t i = 0; i < rows.size(); ++i)
+                    if (batchOf[i] == b) {
+                        ordered.push_back(rows[i]);
+                        ++batch.count;
+                    }
+                batches.push_back(batch);
+            }
+        }
+        f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
+        f.shading.uploadVolumeRows(ordered);
+        for (const Batch& b : batches) {
+            markState(f.ctx, depthFail);
+            stencil.use();
+            f.shading.drawVolumes(stencil, b.shape, b.first, b.count);
+            shadeState();
+            volume.use();
+            f.shading.drawVolumes(volume, b.shape, b.first, b.count);
+        }
+        c.batches = static_cast<int>(batches.size());
+    }
+    for (const LightTableEntry* e : lists.oneByOne) oneLight(*e);
+    c.volumes = lists.shaded + static_cast<int>(lists.oneByOne.size());
     return c;
 }
 

@@ -43,6 +43,11 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
                                       "which ambient occlusion scales the ambient term: the materials' baked occlusion "
                                       "textures (gbuffer.occlusion), screen-space (ssao.blurred, when ssao.enabled), or "
                                       "their product");
+    volumeSubdivisions_ = knobs.addInt(
+        "lighting.volume_subdivisions", kDefaultSphereSubdivisions, 0, kMaxSphereSubdivisions, "lighting",
+        "sphere light volumes: the icosahedron subdivided k times (20, 80, 320 or 1280 faces), circumscribing the "
+        "light's sphere. Fewer faces: less vertex work per light; more: fewer pixels marked outside the radius "
+        "(which the shader rejects). The image is the same for every k");
     aoBaked_ = knobs.choiceIndex(ambientOcclusion_, "baked");
     aoSsao_ = knobs.choiceIndex(ambientOcclusion_, "ssao");
 }
@@ -157,6 +162,7 @@ void LightingPass::execute(FrameContext& ctx) {
 
     // Directional and unbounded lights cover the screen whatever the strategy.
     counts_ = {};
+    shading_.setSphereSubdivisions(ctx.knobs.get(volumeSubdivisions_));
     counts_.belowThreshold = table.belowThreshold;
     LightingFrame frame{ctx, table, {}, counting, shading_, beginLight};
     const gl::Program& fullscreen = shading_.fullscreen(counting);
@@ -181,6 +187,7 @@ void LightingPass::execute(FrameContext& ctx) {
     for (auto& other : strategies_)
         if (other.get() != &strategy) other->writeOutputs(frame);  // their lists, when asked for
     counts_.volumes = sc.volumes;
+    counts_.batches = sc.batches;
     counts_.grid = sc.grid;
     counts_.fullscreen += sc.fullscreen;
     counts_.frustumCulled = sc.culled;
@@ -192,7 +199,8 @@ void LightingPass::execute(FrameContext& ctx) {
                       counts_.belowThreshold;
     stats_ = std::string(strategy.name()) + ", " + std::to_string(total) + " lights: " + std::to_string(counts_.directional) +
              " directional, " + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
-             std::to_string(counts_.volumes) + " volumes, " + std::to_string(counts_.fullscreen) +
+             std::to_string(counts_.volumes) + " volumes" +
+             (counts_.batches > 0 ? " (" + std::to_string(counts_.batches) + " instanced batches)" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;

@@ -40,7 +40,7 @@ public:
     std::string stats() const override { return stats_; }
 
     struct Counts {
-        int directional = 0, volumes = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
+        int directional = 0, volumes = 0, batches = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
         int grid = 0;  // shaded from tile or cluster lists (tiled, clustered)
     };
     const Counts& lastCounts() const { return counts_; }
@@ -53,6 +53,7 @@ private:
     int windowed_ = 0;  // lighting.attenuation = windowed
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
+    IntKnob volumeSubdivisions_;
     EnumKnob ambientOcclusion_;  // both, baked, ssao
     int aoBaked_ = 0, aoSsao_ = 0;
 

@@ -3,7 +3,13 @@
 // Shared by every lighting strategy, so their images differ only by rounding.
 #include "shade.glsl"
 
+#ifdef VOLUME_ROW
+flat in int vLight;  // from volume.vert: one light, or an instance of a batch
+#define LIGHT_ROW vLight
+#else
 layout(location = 0) uniform int uLight;
+#define LIGHT_ROW uLight
+#endif
 
 layout(location = 0) out vec4 outColor;
 #ifdef COUNT_OVERLAP
@@ -21,6 +27,6 @@ void main() {
         outColor = vec4(0.0);  // not discarded, so the invocation is still counted
         return;
     }
-    vec3 c = lightRadiance(lights[uLight], s);
+    vec3 c = lightRadiance(lights[LIGHT_ROW], s);
     outColor = vec4(c, 0.0);
 }

@@ -161,3 +161,58 @@ TEST(Lighting, LightStopsAtItsRadiusAndTheWindowFadesItToZero) {
         }
     }
 }
+
+// lighting.instanced_volumes: the volume strategies draw many lights per call
+// (volumes: one instanced draw per shape; stencil_volumes: batches of lights
+// whose screen rectangles are disjoint, renderer/lighting/ScreenBatches.h).
+// The image is the one-light-at-a-time image up to the order of the additive
+// sums; a batch that let two volumes share a pixel would lose a light there
+// (the first shade zeroes the stencil), far beyond that bound. Depth-fail and
+// depth-pass counting, 200 overlapping small lights, and the camera inside
+// volumes (whose rectangles are the whole screen).
+TEST(Lighting, InstancedVolumeBatchesEqualOneLightAtATime) {
+    auto session = test::makeSession(96, 54);
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    auto lbuffer = [&](const std::string& strategy, const std::string& count, bool instanced) {
+        session->knobs().setFromString("lighting.instanced_volumes", instanced ? "true" : "false");
+        return lbufferWith(*session, strategy, count);
+    };
+    struct Case {
+        const char* what;
+        Scene scene;
+        glm::vec3 position{0.0f}, target{0.0f};
+    };
+    std::vector<Case> cases;
+    cases.push_back({"200 small lights", test::straddleScene(3)});
+    cases.push_back({"camera inside volumes", test::boxesScene(true), {0.0f, 1.0f, 3.5f}, {0.0f, 0.5f, -2.0f}});
+    for (Case& c : cases) {
+        session->setScene(std::move(c.scene));
+        if (c.position != c.target) {
+            session->camera().position = c.position;
+            session->camera().target = c.target;
+        }
+        for (const char* strategy : {"stencil_volumes", "volumes"})
+            for (const char* count : {"depth_fail", "depth_pass"}) {
+                if (std::string(strategy) == "volumes" && std::string(count) == "depth_pass") continue;
+                const FloatImage one = lbuffer(strategy, count, false);
+                const int volumes = lighting->lastCounts().volumes;
+                EXPECT_EQ(lighting->lastCounts().batches, 0);
+                const FloatImage batched = lbuffer(strategy, count, true);
+                const LightingPass::Counts counts = lighting->lastCounts();
+                int x = 0, y = 0;
+                const double d = worstRelative(batched, one, &x, &y);
+                std::printf("%s, %s (%s): %d volumes in %d instanced batches; worst relative difference to one light "
+                            "at a time %.2g at (%d, %d)\n",
+                            c.what, strategy, count, counts.volumes, counts.batches, d, x, y);
+                EXPECT_LT(d, 1e-5) << c.what << ", " << strategy << " " << count << " at " << x << "," << y;
+                EXPECT_EQ(counts.volumes, volumes) << c.what << ", " << strategy;
+                EXPECT_GE(counts.batches, 1) << c.what << ", " << strategy;
+                if (std::string(strategy) == "volumes") {
+                    EXPECT_LE(counts.batches, 2) << c.what;
+                } else if (std::string(c.what) == "200 small lights") {
+                    // (Inside or behind the camera, a volume's rectangle is the whole screen.)
+                    EXPECT_LT(counts.batches, counts.volumes / 2) << c.what;
+                }
+            }
+    }
+}

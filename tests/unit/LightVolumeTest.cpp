@@ -81,15 +81,20 @@ TEST(LightVolumeMesh, SphereEnclosesTheLitBallAndIsTight) {
     std::mt19937 rng(1);
     std::normal_distribution<float> n;
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    const VolumeMesh& mesh = unitSphereVolume();
-    for (int i = 0; i < 5000; ++i) {
-        const glm::vec3 dir = glm::normalize(glm::vec3(n(rng), n(rng), n(rng)));
-        // Points in the lit ball, many right on its boundary.
-        const float d = i % 2 ? r : r * std::cbrt(u(rng));
-        EXPECT_TRUE(mesh.contains(v.transform, l.position + dir * d)) << "point " << i << " at distance " << d;
+    // Every mesh lighting.volume_subdivisions offers (20 to 1280 faces).
+    const float loosest[] = {1.26f, 1.075f, 1.02f, 1.005f};
+    for (int k = 0; k <= kMaxSphereSubdivisions; ++k) {
+        const VolumeMesh& mesh = unitSphereVolume(k);
+        EXPECT_EQ(mesh.indices.size(), 3u * 20u << (2 * k));
+        for (int i = 0; i < 5000; ++i) {
+            const glm::vec3 dir = glm::normalize(glm::vec3(n(rng), n(rng), n(rng)));
+            // Points in the lit ball, many right on its boundary.
+            const float d = i % 2 ? r : r * std::cbrt(u(rng));
+            EXPECT_TRUE(mesh.contains(v.transform, l.position + dir * d)) << "k " << k << ", point " << i << " at distance " << d;
+        }
+        // And not absurdly loose: every vertex within the icosphere's circumradius.
+        for (const auto& p : mesh.positions) EXPECT_LT(glm::length(p), loosest[k]) << "k " << k;
     }
-    // And not absurdly loose: every vertex within 5 % of the radius.
-    for (const auto& p : mesh.positions) EXPECT_LT(glm::length(p), 1.05f);
 }
 
 TEST(LightVolumeMesh, ConeEnclosesTheLitSectorForManyCutoffs) {
