@@ -19,9 +19,4 @@ void LightVolumeGeometry::draw() const {
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
 }
 
-void LightVolumeGeometry::drawInstanced(int count) const {
-    vao_.bind();
-    glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, count);
-}
-
 }  // namespace dw

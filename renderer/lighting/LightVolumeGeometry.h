@@ -12,8 +12,6 @@ class LightVolumeGeometry {
 public:
     void create(const VolumeMesh& mesh);
     void draw() const;
-    // `count` instances in one draw call (volume.vert picks each one's light).
-    void drawInstanced(int count) const;
 
 private:
     gl::Buffer vertices_, indices_;

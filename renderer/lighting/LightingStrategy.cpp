@@ -1,6 +1,7 @@
 #include "renderer/lighting/LightingStrategy.h"
 
 #include <algorithm>
+#include <cstddef>
 
 #include "renderer/lighting/LightVolume.h"
 
@@ -14,20 +15,44 @@ void LightShading::setup(gl::ShaderLibrary& shaders) {
     stencil_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/stencil.frag"});
     for (int k = 0; k <= kMaxSphereSubdivisions; ++k) sphere_[k].create(unitSphereVolume(k));
     cone_.create(unitConeVolume());
-    volumeRows_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "light volume rows");
+    batchVertexBuffer_ = gl::Buffer::create(sizeof(BatchVertex), nullptr, true, "light volume batch vertices");
+    batchIndexBuffer_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "light volume batch indices");
+    batchVao_ = gl::VertexArray::create();
 }
 
-void LightShading::uploadVolumeRows(const std::vector<std::uint32_t>& rows) const {
-    volumeRows_.ensureSize(std::max<std::size_t>(rows.size(), 1) * sizeof(std::uint32_t), "light volume rows");
-    if (!rows.empty()) volumeRows_.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
-    volumeRows_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kVolumeRowsSsbo);
+void LightShading::uploadVolumeBatch(const LightTable& table, const std::vector<std::uint32_t>& rows) const {
+    batchVertices_.clear();
+    batchIndices_.clear();
+    batchIndexStart_.assign(1, 0u);
+    for (const std::uint32_t row : rows) {
+        const bool cone = table.entries[row].volume.shape == VolumeShape::Cone;
+        const VolumeMesh& mesh = cone ? unitConeVolume() : unitSphereVolume(sphereSubdivisions_);
+        const glm::mat4& m = table.rows[row].volume;  // unit mesh -> camera-relative world, as the GPU gets it
+        const auto base = static_cast<std::uint32_t>(batchVertices_.size());
+        for (const glm::vec3& p : mesh.positions) batchVertices_.push_back({glm::vec3(m * glm::vec4(p, 1.0f)), static_cast<float>(row)});
+        for (const std::uint32_t i : mesh.indices) batchIndices_.push_back(base + i);
+        batchIndexStart_.push_back(static_cast<std::uint32_t>(batchIndices_.size()));
+    }
+    if (batchVertices_.empty()) return;
+    batchVertexBuffer_.ensureSize(batchVertices_.size() * sizeof(BatchVertex), "light volume batch vertices");
+    batchVertexBuffer_.update(0, batchVertices_.size() * sizeof(BatchVertex), batchVertices_.data());
+    batchIndexBuffer_.ensureSize(batchIndices_.size() * sizeof(std::uint32_t), "light volume batch indices");
+    batchIndexBuffer_.update(0, batchIndices_.size() * sizeof(std::uint32_t), batchIndices_.data());
+    // (Re)attached every time: ensureSize may have replaced the buffers.
+    batchVao_.setVertexBuffer(0, batchVertexBuffer_, 0, sizeof(BatchVertex));
+    batchVao_.setIndexBuffer(batchIndexBuffer_);
+    batchVao_.setAttribute(0, 0, 3, offsetof(BatchVertex, position));
+    batchVao_.setAttribute(1, 0, 1, offsetof(BatchVertex, row));
 }
 
-void LightShading::drawVolumes(const gl::Program& program, VolumeShape shape, int first, int count) const {
+void LightShading::drawVolumeBatch(const gl::Program& program, int first, int count) const {
     if (count <= 0) return;
+    const std::uint32_t begin = batchIndexStart_[static_cast<std::size_t>(first)];
+    const std::uint32_t end = batchIndexStart_[static_cast<std::size_t>(first + count)];
     program.set(0, -1);
-    program.set(1, first);
-    (shape == VolumeShape::Cone ? cone_ : sphere_[sphereSubdivisions_]).drawInstanced(count);
+    batchVao_.bind();
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(end - begin), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(begin) * sizeof(std::uint32_t)));
 }
 
 std::pair<glm::vec3, glm::vec3> LightShading::localBox(VolumeShape shape) const {

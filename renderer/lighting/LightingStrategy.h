@@ -27,10 +27,6 @@ namespace dw {
 
 class KnobRegistry;
 
-namespace binding {
-// VOLUME_ROWS_SSBO in shaders/lighting/volume.vert (4-7 are the tiled and clustered lists).
-constexpr GLuint kVolumeRowsSsbo = 8;
-}  // namespace binding
 
 // What strategies share: the light shader (and its overlap-counting variant)
 // as a full-screen pass and over a volume mesh, the stencil-marking program,
@@ -49,12 +45,15 @@ public:
     int sphereSubdivisions() const { return sphereSubdivisions_; }
     void drawFullscreenTriangle() const { triangle_.draw(); }
 
-    // Instanced volume draws: `rows` (light-table rows) go to the SSBO at
-    // binding::kVolumeRowsSsbo, and drawVolumes draws rows[first .. first +
-    // count) with `program` (in use; a volume or the stencil program), one
-    // instance each, all of `shape` (Sphere or Cone).
-    void uploadVolumeRows(const std::vector<std::uint32_t>& rows) const;
-    void drawVolumes(const gl::Program& program, VolumeShape shape, int first, int count) const;
+    // Batched volume draws: the volume meshes of `rows` (light-table rows of
+    // `table`, spheres and cones alike) placed on the CPU, camera-relative,
+    // into one vertex buffer whose vertices carry their row; then
+    // drawVolumeBatch draws the meshes of rows[first .. first + count) in one
+    // call with `program` (in use: a volume or the stencil program). Placing
+    // 12 or 26 vertices per light costs the CPU far less than a draw call or
+    // an instance on a CPU rasteriser.
+    void uploadVolumeBatch(const LightTable& table, const std::vector<std::uint32_t>& rows) const;
+    void drawVolumeBatch(const gl::Program& program, int first, int count) const;
     // The unit mesh's local bounding box (for screen rectangles).
     std::pair<glm::vec3, glm::vec3> localBox(VolumeShape shape) const;
 
@@ -62,7 +61,14 @@ private:
     gl::ShaderLibrary::Handle fullscreen_, volume_, fullscreenCounting_, volumeCounting_, stencil_;
     LightVolumeGeometry sphere_[kMaxSphereSubdivisions + 1], cone_;
     int sphereSubdivisions_ = kDefaultSphereSubdivisions;
-    mutable gl::Buffer volumeRows_;
+    struct BatchVertex {
+        glm::vec3 position;
+        float row;
+    };
+    mutable std::vector<BatchVertex> batchVertices_;
+    mutable std::vector<std::uint32_t> batchIndices_, batchIndexStart_;
+    mutable gl::Buffer batchVertexBuffer_, batchIndexBuffer_;
+    mutable gl::VertexArray batchVao_;
     gl::FullscreenTriangle triangle_;
 };
 
@@ -88,7 +94,7 @@ struct StrategyCounts {
     int fullscreen = 0;  // lights drawn over the whole screen
     int culled = 0;      // lights skipped (outside the view frustum)
     int grid = 0;        // lights shaded many at once from tile or cluster lists
-    int batches = 0;     // instanced volume draws (each covers many lights)
+    int batches = 0;     // batched volume draws (each covers many lights)
 };
 
 class LightingStrategy {

@@ -1,6 +1,6 @@
 #pragma once
 // Lights grouped into batches whose screen rectangles do not overlap, so one
-// instanced draw can stencil-mark (and then shade) every light of a batch at
+// draw can stencil-mark (and then shade) every light of a batch at
 // once: within a batch no pixel is reached by two volumes, so the per-light
 // stencil count of the volume test (seed 001 section 2.2, seed 000 section
 // 3.2.1) stays exact. This is what cuts the stencil strategy's per-light CPU

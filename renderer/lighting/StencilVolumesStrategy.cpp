@@ -8,7 +8,7 @@
 
 namespace dw {
 
-StencilVolumesStrategy::StencilVolumesStrategy(KnobRegistry& knobs) : instanced_(declareInstancedVolumesKnob(knobs)) {
+StencilVolumesStrategy::StencilVolumesStrategy(KnobRegistry& knobs) : batched_(declareBatchedVolumesKnob(knobs)) {
     stencilCount_ = knobs.addEnum("lighting.stencil_count", {"depth_fail", "depth_pass"}, DepthFail, "lighting",
                                   "stencil counting of the volume test: depth_fail (correct with the camera inside a "
                                   "volume) or depth_pass (seed 001's table as written; loses lights around the camera)");
@@ -69,7 +69,7 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
     };
 
     StrategyCounts c;
-    if (!f.ctx.knobs.get(instanced_)) {
+    if (!f.ctx.knobs.get(batched_)) {
         for (const LightTableEntry* e : f.lights) {
             if (!e->inFrustum) {
                 ++c.culled;
@@ -82,7 +82,7 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
     }
 
     // Lights without a map, batched: within a batch no two screen rectangles
-    // overlap, so one instanced draw marks them all and one shades them all.
+    // overlap, so one draw marks them all and one shades them all.
     const LightLists lists = LightLists::split(f);
     c.culled = lists.culled;
     if (lists.shaded > 0) {
@@ -117,14 +117,14 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
             }
         }
         f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
-        f.shading.uploadVolumeRows(ordered);
+        f.shading.uploadVolumeBatch(f.table, ordered);
         for (const Batch& b : batches) {
             markState(f.ctx, depthFail);
             stencil.use();
-            f.shading.drawVolumes(stencil, b.shape, b.first, b.count);
+            f.shading.drawVolumeBatch(stencil, b.first, b.count);
             shadeState();
             volume.use();
-            f.shading.drawVolumes(volume, b.shape, b.first, b.count);
+            f.shading.drawVolumeBatch(volume, b.first, b.count);
         }
         c.batches = static_cast<int>(batches.size());
     }

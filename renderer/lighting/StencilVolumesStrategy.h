@@ -5,9 +5,9 @@
 // so no clear is needed between lights. Counting on depth fail (the default)
 // stays right with the camera inside a volume; depth pass is the seed's table
 // as written. Needs the L-buffer's depth-stencil (lbuffer.depth) bound.
-// With lighting.instanced_volumes (the default) the lights without a shadow
+// With lighting.batched_volumes (the default) the lights without a shadow
 // map go in batches whose screen rectangles are disjoint
-// (renderer/lighting/ScreenBatches.h): per batch one instanced draw marks and
+// (renderer/lighting/ScreenBatches.h): per batch one draw marks and
 // one shades, so the count per pixel stays exact and the CPU pays two draw
 // calls per batch instead of two per light.
 #include "renderer/knobs/KnobRegistry.h"
@@ -27,7 +27,7 @@ public:
 
 private:
     EnumKnob stencilCount_;
-    BoolKnob instanced_;  // lighting.instanced_volumes
+    BoolKnob batched_;  // lighting.batched_volumes
 };
 
 }  // namespace dw

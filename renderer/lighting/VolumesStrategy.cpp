@@ -4,11 +4,12 @@
 
 namespace dw {
 
-BoolKnob declareInstancedVolumesKnob(KnobRegistry& knobs) {
-    if (knobs.find("lighting.instanced_volumes")) return knobs.requireBool("lighting.instanced_volumes");
-    return knobs.addBool("lighting.instanced_volumes", true, "lighting",
-                         "volume strategies: draw many lights' volumes per instanced call (stencil_volumes: one "
-                         "batch of lights with disjoint screen rectangles per call) instead of one call per light");
+BoolKnob declareBatchedVolumesKnob(KnobRegistry& knobs) {
+    if (knobs.find("lighting.batched_volumes")) return knobs.requireBool("lighting.batched_volumes");
+    return knobs.addBool("lighting.batched_volumes", true, "lighting",
+                         "volume strategies: draw many lights' volumes per call, their meshes placed on the CPU into "
+                         "one vertex buffer (stencil_volumes: one batch of lights with disjoint screen rectangles per "
+                         "call) instead of one call per light");
 }
 
 namespace {
@@ -31,7 +32,7 @@ void VolumesStrategy::drawVolume(LightingFrame& f, const LightTableEntry& e) {
 
 StrategyCounts VolumesStrategy::shade(LightingFrame& f) {
     StrategyCounts c;
-    if (!f.ctx.knobs.get(instanced_)) {
+    if (!f.ctx.knobs.get(batched_)) {
         for (const LightTableEntry* e : f.lights) {
             if (!e->inFrustum) {
                 ++c.culled;
@@ -42,21 +43,17 @@ StrategyCounts VolumesStrategy::shade(LightingFrame& f) {
         }
         return c;
     }
-    // Lights without a map: spheres, then cones (LightingFrame::lights' order).
+    // Lights without a map, spheres and cones, in one draw.
     const LightLists lists = LightLists::split(f);
     c.culled = lists.culled;
     if (lists.shaded > 0) {
-        int spheres = 0;
-        for (int i = 0; i < lists.shaded; ++i)
-            spheres += f.table.entries[lists.rows[static_cast<std::size_t>(i)]].volume.shape == VolumeShape::Sphere ? 1 : 0;
         f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
         volumeState();
         const gl::Program& program = f.shading.volume(f.counting);
         program.use();
-        f.shading.uploadVolumeRows(lists.rows);
-        f.shading.drawVolumes(program, VolumeShape::Sphere, 0, spheres);
-        f.shading.drawVolumes(program, VolumeShape::Cone, spheres, lists.shaded - spheres);
-        c.batches = (spheres > 0 ? 1 : 0) + (lists.shaded > spheres ? 1 : 0);
+        f.shading.uploadVolumeBatch(f.table, {lists.rows.begin(), lists.rows.begin() + lists.shaded});
+        f.shading.drawVolumeBatch(program, 0, lists.shaded);
+        c.batches = 1;
     }
     c.volumes = lists.shaded + lists.shadeOneByOne(f);
     return c;

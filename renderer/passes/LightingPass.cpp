@@ -200,7 +200,7 @@ void LightingPass::execute(FrameContext& ctx) {
     stats_ = std::string(strategy.name()) + ", " + std::to_string(total) + " lights: " + std::to_string(counts_.directional) +
              " directional, " + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
              std::to_string(counts_.volumes) + " volumes" +
-             (counts_.batches > 0 ? " (" + std::to_string(counts_.batches) + " instanced batches)" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
+             (counts_.batches > 0 ? " (" + std::to_string(counts_.batches) + " batched draws)" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;

@@ -1,26 +1,24 @@
 #version 450 core
-// A light's volume mesh (unit sphere or cone) placed by the light's transform.
-// One light (uLight >= 0), or instanced: instance i draws light-table row
-// volumeRows[uFirst + i] (a batch of lights in one draw call, so the CPU cost
-// per light is no longer a draw call and its state changes).
+// A light's volume mesh (unit sphere or cone) placed by the light's transform
+// (uLight >= 0), or a batch of many lights' meshes placed on the CPU into one
+// vertex buffer, each vertex carrying its light-table row (uLight < 0): one
+// draw call for many lights, and none of the per-instance work a CPU
+// rasteriser does for instanced draws (LightShading::uploadVolumeBatch).
 #include "../common/camera.glsl"
 #include "../common/lighting.glsl"
 
-// Mirrored by binding::kVolumeRowsSsbo in renderer/lighting/LightingStrategy.h.
-#define VOLUME_ROWS_SSBO 8
-
-layout(location = 0) in vec3 aPosition;
+layout(location = 0) in vec3 aPosition;  // unit mesh, or camera-relative world when batched
+layout(location = 1) in float aRow;      // batched: the vertex's light-table row (exact below 2^24)
 layout(location = 0) uniform int uLight;
-layout(location = 1) uniform int uFirst;
-
-layout(std430, binding = VOLUME_ROWS_SSBO) readonly buffer VolumeRows {
-    uint volumeRows[];
-};
 
 flat out int vLight;  // the row, for light.frag
 
 void main() {
-    int row = uLight >= 0 ? uLight : int(volumeRows[uFirst + gl_InstanceID]);
-    vLight = row;
-    gl_Position = camera.viewProjection * lights[row].volume * vec4(aPosition, 1.0);
+    if (uLight >= 0) {
+        vLight = uLight;
+        gl_Position = camera.viewProjection * lights[uLight].volume * vec4(aPosition, 1.0);
+    } else {
+        vLight = int(aRow + 0.5);
+        gl_Position = camera.viewProjection * vec4(aPosition, 1.0);
+    }
 }
