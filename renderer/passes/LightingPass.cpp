@@ -5,7 +5,9 @@
 
 #include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
+#include "renderer/lighting/AutoStrategy.h"
 #include "renderer/lighting/LightTable.h"
+#include "renderer/lighting/ScreenBatches.h"
 #include "renderer/lighting/ShadowService.h"
 #include "renderer/scene/Scene.h"
 
@@ -29,7 +31,18 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
         names.emplace_back(strategies_.back()->name());
         description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + strategies_.back()->description();
     }
+    names.emplace_back("auto");
+    description += "; auto: per frame, clustered when the bounded lights in view cover the screen "
+                   "lighting.auto_coverage times over and each covers lighting.auto_light_size of it on average, "
+                   "else stencil_volumes (the statistics say which and why)";
+    autoChoice_ = static_cast<int>(names.size()) - 1;
     strategy_ = knobs.addEnum("lighting.strategy", names, 0, "lighting", description);
+    autoCoverage_ = knobs.addFloat("lighting.auto_coverage", kAutoCoverage, 0.0, 1e6, "lighting",
+                                   "auto: the screen coverage (the bounded lights' screen rectangles summed, in "
+                                   "screens) from which the clustered strategy may be picked (docs/bench.md)");
+    autoLightSize_ = knobs.addFloat("lighting.auto_light_size", kAutoLightSize, 0.0, 1.0, "lighting",
+                                    "auto: and the mean light's screen rectangle (a fraction of the screen) from "
+                                    "which it is picked; smaller lights stay with stencil_volumes (docs/bench.md)");
     attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, "classic", "lighting",
                                  "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
                                  "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");
@@ -93,7 +106,6 @@ void LightingPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
     const LightTable& table = *ctx.lightTable;
-    LightingStrategy& strategy = *strategies_[static_cast<size_t>(k.get(strategy_))];
 
     const bool occlusion = ctx.produced("ssao.blurred");
     const bool sky = ctx.produced("sky");
@@ -179,6 +191,26 @@ void LightingPass::execute(FrameContext& ctx) {
         if (e.light->type == LightType::Directional) ++counts_.directional;
         else ++counts_.fullscreen;
     }
+    // The strategy: the knob's, or the one auto picks for this frame.
+    int chosen = k.get(strategy_);
+    autoWhy_.clear();
+    if (chosen == autoChoice_) {
+        AutoStrategyInputs in;
+        const glm::dmat4 worldToClip = ctx.camera.worldToClip();
+        for (const LightTableEntry* e : frame.lights) {
+            if (!e->inFrustum) continue;
+            ++in.lights;
+            const auto [lo, hi] = shading_.localBox(e->volume.shape);
+            const PixelRect r = screenRect(worldToClip * glm::dmat4(e->volume.transform), lo, hi, ctx.width, ctx.height);
+            if (!r.empty()) in.coverage += double(r.x1 - r.x0) * (r.y1 - r.y0) / (double(ctx.width) * ctx.height);
+        }
+        const AutoStrategyChoice c = chooseLightingStrategy(in, {k.get(autoCoverage_), k.get(autoLightSize_)});
+        chosen = 0;
+        for (std::size_t i = 0; i < strategies_.size(); ++i)
+            if (std::string(strategies_[i]->name()) == c.strategy) chosen = static_cast<int>(i);
+        autoWhy_ = "auto picked " + std::string(c.strategy) + ": " + c.why;
+    }
+    LightingStrategy& strategy = *strategies_[static_cast<std::size_t>(chosen)];
     // Spheres before cones (fewer state changes), otherwise in scene order.
     std::stable_sort(frame.lights.begin(), frame.lights.end(), [](const LightTableEntry* a, const LightTableEntry* b) {
         return (a->volume.shape == VolumeShape::Cone) < (b->volume.shape == VolumeShape::Cone);
@@ -205,6 +237,8 @@ void LightingPass::execute(FrameContext& ctx) {
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;
     if (counts_.shadowed > 0) stats_ += "; " + std::to_string(counts_.shadowed) + " with shadow maps";
+    if (!autoWhy_.empty()) stats_ += "; " + autoWhy_;
+    lastStrategy_ = strategy.name();
 }
 
 }  // namespace dw

@@ -350,3 +350,33 @@ TEST(TiledLighting, GridStrategiesMatchTheCpuShadingEquation) {
     EXPECT_LE(worstOf[1], worstOf[0]);
     EXPECT_LE(worstOf[2], worstOf[0]);
 }
+
+// lighting.strategy = auto: below either threshold it lights with
+// stencil_volumes, from both on with clustered, and the image is that
+// strategy's image; the statistics line says which it picked and why.
+TEST(TiledLighting, AutoPicksByCoverageAndLightSizeAndRendersThatStrategy) {
+    auto session = test::makeSession(96, 54);
+    session->setScene(test::straddleScene(0));
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    const FloatImage stencil = lbufferWith(*session, "stencil_volumes");
+    const FloatImage clustered = lbufferWith(*session, "clustered");
+    struct Case {
+        const char* coverage;
+        const char* size;
+        const char* expected;
+    };
+    for (const Case c : {Case{"1000", "0", "stencil_volumes"}, Case{"0", "0.9", "stencil_volumes"},
+                         Case{"0.5", "0.001", "clustered"}}) {
+        session->knobs().setFromString("lighting.auto_coverage", c.coverage);
+        session->knobs().setFromString("lighting.auto_light_size", c.size);
+        const FloatImage image = lbufferWith(*session, "auto");
+        EXPECT_EQ(lighting->lastStrategy(), c.expected) << c.coverage << " " << c.size;
+        const std::string stats = lighting->stats();
+        EXPECT_NE(stats.find(std::string("auto picked ") + c.expected), std::string::npos) << stats;
+        const FloatImage& want = std::string(c.expected) == "clustered" ? clustered : stencil;
+        double worst = 0.0;
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) worst = std::max(worst, double(std::fabs(image.pixels[i] - want.pixels[i])));
+        EXPECT_EQ(worst, 0.0) << c.expected;
+        std::printf("auto (coverage >= %s and light size >= %s): %s\n", c.coverage, c.size, stats.c_str());
+    }
+}

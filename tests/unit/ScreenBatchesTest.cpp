@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
+#include "renderer/lighting/AutoStrategy.h"
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/lighting/ScreenBatches.h"
 
@@ -85,4 +86,18 @@ TEST(ScreenBatches, RectangleHoldsTheProjectedVolume) {
     EXPECT_EQ(whole.y0, 0);
     EXPECT_EQ(whole.x1, W);
     EXPECT_EQ(whole.y1, H);
+}
+
+TEST(AutoStrategy, ClusteredWhenLargeLightsCoverTheScreenManyTimes) {
+    const AutoStrategyThresholds at{20.0, 0.04};
+    // The measured cases (docs/bench.md): many small lights stay with volumes,
+    // many large ones go to the grid.
+    EXPECT_STREQ(chooseLightingStrategy({2587, 43.36}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({96, 23.41}, at).strategy, "clustered");
+    EXPECT_STREQ(chooseLightingStrategy({262, 17.40}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({0, 0.0}, at).strategy, "stencil_volumes");
+    // Both thresholds are inclusive.
+    EXPECT_STREQ(chooseLightingStrategy({500, 20.0}, at).strategy, "clustered");
+    EXPECT_EQ(chooseLightingStrategy({96, 23.41}, at).why,
+              "96 lights in view, screen coverage 23.41 (>= 20.00), 0.2439 of the screen each (>= 0.0400)");
 }
