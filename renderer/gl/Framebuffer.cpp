@@ -43,7 +43,9 @@ void Framebuffer::attachDepthLayer(const Texture& texture, int level, int layer)
     glNamedFramebufferTextureLayer(id(), attachment, texture.id(), level, layer);
 }
 
-void Framebuffer::setDrawBuffers(std::initializer_list<int> colorIndices) {
+void Framebuffer::setDrawBuffers(std::initializer_list<int> colorIndices) { setDrawBuffers(std::vector<int>(colorIndices)); }
+
+void Framebuffer::setDrawBuffers(const std::vector<int>& colorIndices) {
     std::vector<GLenum> bufs;
     for (int i : colorIndices) bufs.push_back(GL_COLOR_ATTACHMENT0 + i);
     glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(bufs.size()), bufs.data());

@@ -2,6 +2,7 @@
 // Framebuffer object: attachments by texture, draw-buffer list, completeness
 // check that names the failure, and clears without touching global state.
 #include <initializer_list>
+#include <vector>
 #include <string>
 
 #include "renderer/gl/GlObject.h"
@@ -27,6 +28,7 @@ public:
     void attachDepth(const Texture& texture, int level = 0);
     void attachDepthLayer(const Texture& texture, int level, int layer);
     void setDrawBuffers(std::initializer_list<int> colorIndices);
+    void setDrawBuffers(const std::vector<int>& colorIndices);
     void setNoColorBuffers();
     // Throws dw::Error naming the incomplete status.
     void checkComplete(const std::string& what) const;

@@ -1,6 +1,7 @@
 #include "renderer/graph/TargetFramebuffer.h"
 
 #include <string>
+#include <vector>
 
 #include "renderer/Error.h"
 #include "renderer/graph/FrameContext.h"
@@ -21,14 +22,17 @@ gl::Framebuffer& TargetFramebuffer::get(const FrameContext& ctx, std::initialize
         fbo.attachColor(index++, *o.texture, o.level);
     }
     if (!depth.empty()) fbo.attachDepth(ctx.texture(depth));
-    switch (index) {
-        case 0: fbo.setNoColorBuffers(); break;
-        case 1: fbo.setDrawBuffers({0}); break;
-        case 2: fbo.setDrawBuffers({0, 1}); break;
-        case 3: fbo.setDrawBuffers({0, 1, 2}); break;
-        case 4: fbo.setDrawBuffers({0, 1, 2, 3}); break;
-        case 5: fbo.setDrawBuffers({0, 1, 2, 3, 4}); break;  // the G-buffer with gbuffer.occlusion
-        default: throw Error(std::string(label) + ": more than 5 colour targets");
+    if (index == 0) {
+        fbo.setNoColorBuffers();
+    } else {
+        GLint most = 0;
+        glGetIntegerv(GL_MAX_DRAW_BUFFERS, &most);
+        if (index > most)
+            throw GlUnsupportedError(std::string(label) + ": " + std::to_string(index) + " colour targets, the driver draws at most " +
+                                     std::to_string(most));
+        std::vector<int> buffers(static_cast<std::size_t>(index));
+        for (int i = 0; i < index; ++i) buffers[static_cast<std::size_t>(i)] = i;
+        fbo.setDrawBuffers(buffers);  // the G-buffer has 5, 6 with gbuffer.directional
     }
     fbo.checkComplete(label);
     fbo_ = std::move(fbo);

@@ -40,6 +40,17 @@ struct LightTableEntry {
     bool shadowed = false;       // gets a shadow map this frame (set by the shadow pass)
 };
 
+// Directional lights the G-buffer pass shades when
+// lighting.directional_in_gbuffer is on (seed 000 section 3.2.1: "possibly
+// generating the results during the G-Buffer pass"): the enabled directional
+// rows without a shadow map this frame (`shadows`: FrameContext::shadows is
+// set), the first kMaxGBufferDirectional of them in table order. The lighting
+// pass skips exactly these; lights with a map stay there (a reused map exists
+// only while its light is shaded).
+constexpr int kMaxGBufferDirectional = 8;  // MAX_GBUFFER_DIRECTIONAL in geometry.frag
+struct LightTable;
+std::vector<int> gbufferDirectionalRows(const LightTable& table, bool shadows);
+
 struct LightTable {
     std::vector<LightGpu> rows;
     std::vector<LightTableEntry> entries;  // one per row, in scene order

@@ -1,6 +1,8 @@
 #include "renderer/passes/GeometryPass.h"
 
+#include "renderer/Error.h"
 #include "renderer/knobs/KnobRegistry.h"
+#include "renderer/lighting/LightTable.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
@@ -11,6 +13,16 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
                   "depth mapping of every depth buffer (G-buffer, shadow maps): reversed (near 1, far 0, GL_GREATER; "
                   "float depth keeps about 1e-7 relative precision at every distance) or conventional (near 0, far 1, "
                   "GL_LESS; precision spent near the camera)");
+    directional_ = knobs.addBool("lighting.directional_in_gbuffer", false, "lighting",
+                                 "shade the directional lights without a shadow map in the G-buffer pass, from the "
+                                 "unquantised material, into gbuffer.directional, instead of one full-screen pass each "
+                                 "in the lighting pass (seed 000 section 3.2.1); at most 8, the rest as before");
+}
+
+PassIO GeometryPass::inputs(const KnobRegistry& knobs) const {
+    PassIO io;
+    if (knobs.get(directional_)) io.inputs.push_back("lights.table");
+    return io;
 }
 
 std::vector<OutputDecl> GeometryPass::outputs() const {
@@ -25,25 +37,38 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
         {"gbuffer.occlusion", OutputKind::Scalar,
          "baked ambient accessibility from the material's occlusion texture, 1 without one (R8)", texture2D(GL_R8), 1},
         {"gbuffer.depth", OutputKind::Depth, "window-space depth (DEPTH32F_STENCIL8)", texture2D(GL_DEPTH32F_STENCIL8), 1},
+        {"gbuffer.directional", OutputKind::HdrColor,
+         "with lighting.directional_in_gbuffer: the directional lights without a shadow map, shaded in the G-buffer "
+         "pass (RGBA32F)",
+         texture2D(GL_RGBA32F), 3, true},
     };
 }
 
 void GeometryPass::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "geometry.vert", .fragment = "geometry.frag"});
+    directionalProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "geometry.frag", .defines = {"DIRECTIONAL_IN_GBUFFER"}});
 }
 
 void GeometryPass::execute(FrameContext& ctx) {
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
+    if (ctx.wants("gbuffer.directional") && !ctx.knobs.get(directional_))
+        throw Error("gbuffer.directional is written only with lighting.directional_in_gbuffer=true");
+    const bool directional = ctx.knobs.get(directional_) && ctx.wants("gbuffer.directional") && ctx.lightTable;
     const gl::Framebuffer& fbo =
-        target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.occlusion"},
-                    "gbuffer.depth", "G-buffer");
+        directional ? directionalTarget_.get(ctx,
+                                             {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
+                                              "gbuffer.occlusion", "gbuffer.directional"},
+                                             "gbuffer.depth", "G-buffer")
+                    : target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.occlusion"},
+                                  "gbuffer.depth", "G-buffer");
     fbo.bind();
     fbo.clearColor(0, 0, 0, 0, 0);
     fbo.clearColor(1, 0, 0, 0, 0);
     fbo.clearColor(2, 0, 0, 0, 0);
     fbo.clearColor(3, 0, 0, 0, 0);
     fbo.clearColor(4, 1, 1, 1, 1);
+    if (directional) fbo.clearColor(5, 0, 0, 0, 0);
     const DepthConvention depth = ctx.depth();
     fbo.clearDepthStencil(depth.farDepth(), 0);
     glEnable(GL_DEPTH_TEST);
@@ -51,10 +76,19 @@ void GeometryPass::execute(FrameContext& ctx) {
     // Albedo and specular are sRGB targets: encode the shader's linear values
     // on write, so sampling them decodes back to linear.
     glEnable(GL_FRAMEBUFFER_SRGB);
-    program_->use();
+    const gl::Program& program = directional ? *directionalProgram_ : *program_;
+    program.use();
+    std::vector<int> rows;
+    if (directional) {
+        rows = gbufferDirectionalRows(*ctx.lightTable, ctx.shadows != nullptr);
+        program.set(2, static_cast<int>(rows.size()));
+        for (std::size_t i = 0; i < rows.size(); ++i) program.set(3 + static_cast<GLint>(i), rows[i]);
+        ctx.lightTable->buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+    }
     // Blended materials are drawn as opaque until a transparency pass exists.
-    ctx.gpu.draw(*program_, GpuScene::Filter::All);
+    ctx.gpu.draw(program, GpuScene::Filter::All);
     stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
+    if (directional) stats_ += ", " + std::to_string(rows.size()) + " directional lights shaded";
 }
 
 }  // namespace dw

@@ -2,8 +2,11 @@
 // Geometry pass (seed 000 section 5.2, seed 002 pipeline step 1): renders the
 // opaque scene once into the G-buffer. Reads the scene; writes gbuffer.albedo,
 // gbuffer.normal, gbuffer.specular, gbuffer.emissive, gbuffer.occlusion (the
-// materials' baked ambient occlusion, glTF occlusionTexture) and gbuffer.depth.
+// materials' baked ambient occlusion, glTF occlusionTexture) and gbuffer.depth;
+// with lighting.directional_in_gbuffer also gbuffer.directional, the
+// directional lights without a shadow map shaded here (seed 000 section 3.2.1).
 #include "renderer/graph/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/ShaderLibrary.h"
@@ -16,14 +19,17 @@ public:
     explicit GeometryPass(KnobRegistry& knobs);
     const char* name() const override { return "geometry"; }
     std::vector<OutputDecl> outputs() const override;
-    PassIO inputs(const KnobRegistry&) const override { return {}; }
+    // With lighting.directional_in_gbuffer: the light table (and so the
+    // shadow pass, which marks the lights with maps) first.
+    PassIO inputs(const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
 private:
-    gl::ShaderLibrary::Handle program_;
-    TargetFramebuffer target_;
+    BoolKnob directional_;  // lighting.directional_in_gbuffer
+    gl::ShaderLibrary::Handle program_, directionalProgram_;
+    TargetFramebuffer target_, directionalTarget_;
     std::string stats_;
 };
 

@@ -85,8 +85,11 @@ std::vector<OutputDecl> LightingPass::outputs() const {
     return out;
 }
 
-PassIO LightingPass::inputs(const KnobRegistry&) const {
+void LightingPass::connect(const KnobRegistry& knobs) { directionalInGBuffer_ = knobs.requireBool("lighting.directional_in_gbuffer"); }
+
+PassIO LightingPass::inputs(const KnobRegistry& knobs) const {
     PassIO io{{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ssao.blurred", "sky"}};
+    if (knobs.get(directionalInGBuffer_)) io.inputs.push_back("gbuffer.directional");
     io.inputs.push_back("lights.table");
     io.inputs.push_back("gbuffer.occlusion");
     return io;
@@ -156,6 +159,13 @@ void LightingPass::execute(FrameContext& ctx) {
     ambientProgram_->use();
     ambientProgram_->set(0, ctx.scene.ambient);
     ambientProgram_->set(1, ctx.scene.background);
+    // The directional lights the G-buffer pass shaded (lighting.directional_in_gbuffer).
+    std::vector<int> shadedInGBuffer;
+    if (k.get(directionalInGBuffer_) && ctx.produced("gbuffer.directional")) {
+        shadedInGBuffer = gbufferDirectionalRows(table, ctx.shadows != nullptr);
+        ctx.texture("gbuffer.directional").bind(12);
+    }
+    ambientProgram_->set(2, shadedInGBuffer.empty() ? 0 : 1);
     triangle_.draw();
 
     // Every light: its shadow map first when maps are reused, then the
@@ -182,6 +192,10 @@ void LightingPass::execute(FrameContext& ctx) {
         const bool bounded = e.light->type != LightType::Directional && e.volume.shape != VolumeShape::FullScreen;
         if (bounded) {
             frame.lights.push_back(&e);
+            continue;
+        }
+        if (std::find(shadedInGBuffer.begin(), shadedInGBuffer.end(), e.row) != shadedInGBuffer.end()) {
+            ++counts_.directionalInGBuffer;
             continue;
         }
         beginLight(e);
@@ -227,10 +241,13 @@ void LightingPass::execute(FrameContext& ctx) {
     fbo.bind();
     fbo.setDrawBuffers({0});
 
-    const int total = counts_.directional + counts_.fullscreen + counts_.volumes + counts_.grid + counts_.frustumCulled +
+    const int total = counts_.directional + counts_.directionalInGBuffer + counts_.fullscreen + counts_.volumes + counts_.grid + counts_.frustumCulled +
                       counts_.belowThreshold;
     stats_ = std::string(strategy.name()) + ", " + std::to_string(total) + " lights: " + std::to_string(counts_.directional) +
-             " directional, " + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
+             " directional, " +
+             (counts_.directionalInGBuffer > 0
+                  ? std::to_string(counts_.directionalInGBuffer) + " directional shaded in the G-buffer pass, "
+                  : std::string()) + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
              std::to_string(counts_.volumes) + " volumes" +
              (counts_.batches > 0 ? " (" + std::to_string(counts_.batches) + " batched draws)" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +

@@ -35,12 +35,13 @@ public:
     const char* name() const override { return "lighting"; }
     std::vector<OutputDecl> outputs() const override;
     PassIO inputs(const KnobRegistry& knobs) const override;
+    void connect(const KnobRegistry& knobs) override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
     struct Counts {
-        int directional = 0, volumes = 0, batches = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
+        int directional = 0, directionalInGBuffer = 0, volumes = 0, batches = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
         int grid = 0;  // shaded from tile or cluster lists (tiled, clustered)
     };
     const Counts& lastCounts() const { return counts_; }
@@ -73,6 +74,7 @@ private:
     std::string stats_, autoWhy_, lastStrategy_;
     int autoChoice_ = 0;  // lighting.strategy's index of "auto"
     FloatKnob autoCoverage_, autoLightSize_;
+    BoolKnob directionalInGBuffer_;  // declared by the geometry pass
 };
 
 }  // namespace dw

@@ -13,6 +13,10 @@ layout(location = 0) uniform vec3 uAmbient;
 layout(location = 1) uniform vec3 uBackground;
 layout(binding = 9) uniform sampler2D uSky;  // when lightingParams.sky != 0
 layout(binding = 11) uniform sampler2D uBakedOcclusion;  // gbuffer.occlusion
+// lighting.directional_in_gbuffer: the directional lights the G-buffer pass
+// shaded (gbuffer.directional), added here instead of a full-screen pass each.
+layout(location = 2) uniform int uGBufferDirectional;
+layout(binding = 12) uniform sampler2D uGBufferDirectionalLight;
 
 out vec4 outColor;
 
@@ -27,5 +31,6 @@ void main() {
     if (lightingParams.bakedOcclusion != 0) access *= texelFetch(uBakedOcclusion, px, 0).r;
     vec3 emitted = texelFetch(uEmissive, px, 0).rgb;
     vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
-    outColor = vec4(uAmbient * reflectance * access + emitted, 1.0);
+    vec3 directional = uGBufferDirectional != 0 ? texelFetch(uGBufferDirectionalLight, px, 0).rgb : vec3(0.0);
+    outColor = vec4(uAmbient * reflectance * access + emitted + directional, 1.0);
 }

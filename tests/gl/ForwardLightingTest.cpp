@@ -212,3 +212,53 @@ TEST(ForwardLighting, ObjectsOutsideTheFrustumGetNoLights) {
     EXPECT_LT(visible.rows.size(), all.rows.size());
     EXPECT_GT(visible.rows.size(), 0u);  // the floor, which the camera sees, keeps its lights
 }
+
+// lighting.directional_in_gbuffer (seed 000 section 3.2.1): the directional
+// lights without a shadow map are shaded in the G-buffer pass from the
+// unquantised material, and the lighting pass skips their full-screen passes.
+// Against the deferred image they agree within the G-buffer's quantisation
+// (the forward strategies' bounds); a shadowed directional light stays in the
+// lighting pass, so with only such lights the image is unchanged.
+TEST(ForwardLighting, DirectionalLightsInTheGBufferPassAgreeWithinQuantisation) {
+    auto session = test::makeSession(160, 90);
+    Scene s = test::boxesScene(false);
+    s.ambient = glm::vec3(0.0f);
+    for (const glm::vec3 dir : {glm::vec3(-0.3f, -1.0f, -0.4f), glm::vec3(0.6f, -0.5f, 0.2f)}) {
+        Light l;
+        l.name = "sun";
+        l.type = LightType::Directional;
+        l.direction = glm::normalize(dir);
+        l.intensity = glm::vec3(0.6f, 0.55f, 0.5f);
+        s.lights.push_back(l);
+    }
+    session->setScene(std::move(s));
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    auto lbuffer = [&](bool inGBuffer) {
+        session->knobs().setFromString("lighting.directional_in_gbuffer", inGBuffer ? "true" : "false");
+        return lbufferWith(*session, "stencil_volumes");
+    };
+    const FloatImage deferred = lbuffer(false);
+    EXPECT_EQ(lighting->lastCounts().directional, 2);
+    const FloatImage inGBuffer = lbuffer(true);
+    EXPECT_EQ(lighting->lastCounts().directional, 0);
+    EXPECT_EQ(lighting->lastCounts().directionalInGBuffer, 2);
+    const Difference d = relativeDifference(inGBuffer, deferred);
+    std::printf("directional lights in the G-buffer pass vs deferred over %d lit pixels: mean relative difference "
+                "%.4f, 99th percentile %.4f, worst %.4f\n",
+                d.lit, d.mean, d.p99, d.worst);
+    EXPECT_GT(d.lit, 5000);
+    EXPECT_LT(d.mean, 0.005);
+    EXPECT_LT(d.p99, 0.02);
+
+    // A directional light with a shadow map stays in the lighting pass.
+    session->mutableScene().lights[session->scene().lights.size() - 1].castShadows = true;
+    session->mutableScene().lights[session->scene().lights.size() - 2].castShadows = true;
+    const FloatImage shadowedDeferred = lbuffer(false);
+    const FloatImage shadowedIn = lbuffer(true);
+    EXPECT_EQ(lighting->lastCounts().directionalInGBuffer, 0);
+    EXPECT_EQ(lighting->lastCounts().directional, 2);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < shadowedIn.pixels.size(); ++i)
+        worst = std::max(worst, static_cast<double>(std::fabs(shadowedIn.pixels[i] - shadowedDeferred.pixels[i])));
+    EXPECT_EQ(worst, 0.0);
+}
