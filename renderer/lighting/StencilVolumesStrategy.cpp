@@ -88,33 +88,24 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
     if (lists.shaded > 0) {
         const glm::dmat4 worldToClip = f.ctx.camera.worldToClip();
         struct Batch {
-            VolumeShape shape;
             int first = 0, count = 0;
         };
-        std::vector<std::uint32_t> ordered;
-        std::vector<Batch> batches;
-        for (VolumeShape shape : {VolumeShape::Sphere, VolumeShape::Cone}) {
-            const auto [boxMin, boxMax] = f.shading.localBox(shape);
-            std::vector<std::uint32_t> rows;
-            std::vector<PixelRect> rects;
-            for (int i = 0; i < lists.shaded; ++i) {
-                const std::uint32_t row = lists.rows[static_cast<std::size_t>(i)];
-                const LightTableEntry& e = f.table.entries[row];
-                if (e.volume.shape != shape) continue;
-                rows.push_back(row);
-                rects.push_back(screenRect(worldToClip * glm::dmat4(e.volume.transform), boxMin, boxMax, f.ctx.width, f.ctx.height));
-            }
-            const std::vector<int> batchOf = disjointBatches(rects, f.ctx.width, f.ctx.height);
-            const int n = rows.empty() ? 0 : *std::max_element(batchOf.begin(), batchOf.end()) + 1;
-            for (int b = 0; b < n; ++b) {
-                Batch batch{shape, static_cast<int>(ordered.size()), 0};
-                for (std::size_t i = 0; i < rows.size(); ++i)
-                    if (batchOf[i] == b) {
-                        ordered.push_back(rows[i]);
-                        ++batch.count;
-                    }
-                batches.push_back(batch);
-            }
+        // Spheres and cones alike: the batch's meshes share one vertex buffer.
+        std::vector<std::uint32_t> rows(lists.rows.begin(), lists.rows.begin() + lists.shaded), ordered;
+        std::vector<PixelRect> rects;
+        for (const std::uint32_t row : rows) {
+            const LightTableEntry& e = f.table.entries[row];
+            const auto [boxMin, boxMax] = f.shading.localBox(e.volume.shape);
+            rects.push_back(screenRect(worldToClip * glm::dmat4(e.volume.transform), boxMin, boxMax, f.ctx.width, f.ctx.height));
+        }
+        const std::vector<int> batchOf = disjointBatches(rects, f.ctx.width, f.ctx.height);
+        const int n = *std::max_element(batchOf.begin(), batchOf.end()) + 1;
+        std::vector<Batch> batches(static_cast<std::size_t>(n));
+        std::vector<std::vector<std::uint32_t>> members(static_cast<std::size_t>(n));
+        for (std::size_t i = 0; i < rows.size(); ++i) members[static_cast<std::size_t>(batchOf[i])].push_back(rows[i]);
+        for (int b = 0; b < n; ++b) {
+            batches[static_cast<std::size_t>(b)] = {static_cast<int>(ordered.size()), static_cast<int>(members[static_cast<std::size_t>(b)].size())};
+            ordered.insert(ordered.end(), members[static_cast<std::size_t>(b)].begin(), members[static_cast<std::size_t>(b)].end());
         }
         f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
         f.shading.uploadVolumeBatch(f.table, ordered);
