@@ -26,7 +26,9 @@ void main() {
         for (uint k = 0u; k < cell.count; ++k) {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
-            sum += lightRadiance(lights[candidateRows[i]], s);
+            uint row = candidateRows[i];
+            if (!lightReaches(lights[row].positionRadius, s.position)) continue;
+            sum += lightRadiance(lights[row], s);
             ++shaded;
         }
     }

@@ -27,5 +27,13 @@ vec3 lightRadiance(Light light, Surface s) {
     return c;
 }
 
+// Whether a bounded light's sphere (positionRadius: view-space centre,
+// radius; 0 = unbounded) holds the surface point P: the test attenuate()
+// makes, made first by the grid strategies so the lights of a tile's or
+// cluster's list that cannot reach the pixel cost a distance, not a shading.
+bool lightReaches(vec4 positionRadius, vec3 P) {
+    return !(positionRadius.w > 0.0 && length(positionRadius.xyz - P) > positionRadius.w);
+}
+
 // Whether the pixel holds a surface to light (not background, not cleared depth).
 bool isSurface(Surface s) { return !(isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND); }

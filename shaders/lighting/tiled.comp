@@ -3,7 +3,7 @@
 // one work group per TILE_SIZE x TILE_SIZE screen tile finds its surfaces'
 // nearest and farthest depth, culls the candidate lights' bounding spheres
 // against the tile's frustum between them into a list in shared memory, then
-// every pixel adds all of the list's lights (the same lightRadiance as
+// every pixel adds the list's lights whose sphere holds its surface (the same lightRadiance as
 // light.frag) into the L-buffer with one read-modify-write.
 // The list is a bit mask over up to MAX_CANDIDATES candidates (the CPU
 // dispatches again for the next ones), walked in candidate order, so the sum
@@ -95,7 +95,9 @@ void main() {
                     int i = uFirst + int(w) * 32 + findLSB(bits);
                     bits &= bits - 1u;
                     if (i >= uShaded) break;  // candidates are in order: the rest are only counted
-                    sum += lightRadiance(lights[candidateRows[i]], s);
+                    uint row = candidateRows[i];
+                    if (!lightReaches(lights[row].positionRadius, s.position)) continue;
+                    sum += lightRadiance(lights[row], s);
                     ++shaded;
                 }
             }
