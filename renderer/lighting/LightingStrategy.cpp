@@ -71,6 +71,19 @@ std::pair<glm::vec3, glm::vec3> LightShading::localBox(VolumeShape shape) const 
     return shape == VolumeShape::Cone ? cone : spheres[sphereSubdivisions_];
 }
 
+StrategyCounts drawEachLightInView(LightingFrame& f, const std::function<void(const LightTableEntry&)>& draw) {
+    StrategyCounts c;
+    for (const LightTableEntry* e : f.lights) {
+        if (!e->inFrustum) {
+            ++c.culled;
+            continue;
+        }
+        draw(*e);
+        ++c.volumes;
+    }
+    return c;
+}
+
 LightingStrategyCatalog& LightingStrategyCatalog::extra() {
     static LightingStrategyCatalog catalog;
     return catalog;

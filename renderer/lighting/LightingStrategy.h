@@ -114,6 +114,10 @@ public:
     virtual void writeOutputs(LightingFrame& frame) { (void)frame; }
 };
 
+// One light at a time: `draw` for every light of the frame inside the view
+// frustum (counted as volumes), the rest counted as culled.
+StrategyCounts drawEachLightInView(LightingFrame& frame, const std::function<void(const LightTableEntry&)>& draw);
+
 using LightingStrategyFactory = std::function<std::unique_ptr<LightingStrategy>(KnobRegistry&)>;
 
 class LightingStrategyCatalog {

@@ -68,18 +68,8 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
         geometry.draw();
     };
 
+    if (!f.ctx.knobs.get(batched_)) return drawEachLightInView(f, oneLight);
     StrategyCounts c;
-    if (!f.ctx.knobs.get(batched_)) {
-        for (const LightTableEntry* e : f.lights) {
-            if (!e->inFrustum) {
-                ++c.culled;
-                continue;
-            }
-            oneLight(*e);
-            ++c.volumes;
-        }
-        return c;
-    }
 
     // Lights without a map, batched: within a batch no two screen rectangles
     // overlap, so one draw marks them all and one shades them all.

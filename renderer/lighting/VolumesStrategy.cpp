@@ -31,18 +31,8 @@ void VolumesStrategy::drawVolume(LightingFrame& f, const LightTableEntry& e) {
 }
 
 StrategyCounts VolumesStrategy::shade(LightingFrame& f) {
+    if (!f.ctx.knobs.get(batched_)) return drawEachLightInView(f, [&](const LightTableEntry& e) { drawVolume(f, e); });
     StrategyCounts c;
-    if (!f.ctx.knobs.get(batched_)) {
-        for (const LightTableEntry* e : f.lights) {
-            if (!e->inFrustum) {
-                ++c.culled;
-                continue;
-            }
-            drawVolume(f, *e);
-            ++c.volumes;
-        }
-        return c;
-    }
     // Lights without a map, spheres and cones, in one draw.
     const LightLists lists = LightLists::split(f);
     c.culled = lists.culled;
