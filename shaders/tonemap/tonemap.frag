@@ -23,9 +23,11 @@ out vec4 outColor;
 
 vec3 guard(vec3 c) {
     if (tonemap.nanGuard == 0) return c;
-    // NaN -> 0, +inf -> the largest half float, -inf and negatives -> 0.
+    // NaN -> 0, +inf -> 1e38 (finite, and the L-buffer is RGBA32F: clamping
+    // at the half-float maximum blacked out scenes brighter than 65504 once
+    // the log-average divided them), -inf and negatives -> 0.
     vec3 g = mix(c, vec3(0.0), isnan(c));
-    return clamp(g, 0.0, 65504.0);
+    return clamp(g, 0.0, 1e38);
 }
 
 vec3 acesFitted(vec3 c) {
@@ -72,18 +74,21 @@ void main() {
         rgb = clamp(hdr, 0.0, 1.0);
     } else {
         float L = luminance(hdr);
-        float Ld;
+        // Ld / L, formed without Ld itself (L * (1 + L / white^2) overflows
+        // for L near the float limit) and capped, so hdr * ratio is never
+        // 0 * infinity.
+        float ratio;
         if (op == TONEMAP_OPERATOR_REINHARD) {
             // Auto white needs a brightest pixel: with none counted (or only
             // black ones) the manual white stands in.
             bool measured = stats.w > 0.5 && stats.y > 0.0;
             float white = tonemap.autoWhite != 0 && measured ? scale * stats.y : tonemap.white;
             white = max(white, 1e-6);
-            Ld = L * (1.0 + L / (white * white)) / (1.0 + L);
+            ratio = (1.0 + L / (white * white)) / (1.0 + L);  // Ld = L (1 + L / white^2) / (1 + L)
         } else {
-            Ld = L / (1.0 + L);
+            ratio = 1.0 / (1.0 + L);  // Ld = L / (1 + L)
         }
-        rgb = L > 0.0 ? clamp(hdr * (Ld / L), 0.0, 1.0) : vec3(0.0);
+        rgb = L > 0.0 ? clamp(hdr * min(ratio, 1e30), 0.0, 1.0) : vec3(0.0);
     }
     if (tonemap.bloom != 0 && tonemap.bloomComposite == BLOOM_COMPOSITE_LDR_LUMINANCE_ALPHA) {
         // Seed 002 step 10 / seed 004: the bloom, compressed like the image,

@@ -7,6 +7,7 @@
 // stays well inside the CI budget on two cores.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -308,4 +309,39 @@ TEST(Extremes, SharedHdrTestImagesRenderFinite) {
         ++n;
     }
     EXPECT_GT(n, 0);
+}
+
+// The key-based Reinhard operator (seed 000 eqs. 4.1-4.4, the default)
+// divides by the log-average luminance, so one scene lit 1e8, 1e16 or 1e20
+// times brighter tone-maps to the same image. Lights without a radius (a sun
+// and the ambient term) keep the scene itself unchanged by the scale
+// (emission is left out: the G-buffer stores it in R11G11B10F). Until the NaN guard stopped clamping at the half-float maximum
+// (65504, from when the L-buffer was RGBA16F), a scene at 1e16 came out
+// black.
+TEST(Extremes, ReinhardGivesTheSameImageWhateverTheIntensityScale) {
+    auto frameAt = [](float k) {
+        Scene s = baseScene();
+        s.lights.erase(std::remove_if(s.lights.begin(), s.lights.end(),
+                                      [](const Light& l) { return l.type != LightType::Directional; }),
+                       s.lights.end());
+        for (Light& l : s.lights) l.intensity *= k;
+        s.ambient *= k;
+        for (Material& m : s.materials) m.emissive = glm::vec3(0.0f);  // stored as R11G11B10F: at most 65000
+        auto session = test::makeSession(W, H);
+        session->setScene(std::move(s));
+        for (const auto& [knob, value] : Knobs{{"shadows.map_size", "256"}, {"skybox.mode", "color"},
+                                              {"luminance.background", "exclude"}, {"tonemap.operator", "reinhard"}})
+            session->knobs().setFromString(knob, value);
+        session->render({{"final"}});
+        return session->readRaw("final");
+    };
+    const FloatImage reference = frameAt(1.0f);
+    EXPECT_GT(test::stats(reference, 0).mean, 0.05);
+    for (const float k : {1e8f, 1e16f, 1e20f}) {
+        const FloatImage image = frameAt(k);
+        const double off = test::fractionOff(image, reference);
+        std::printf("Reinhard at intensity x %.0e: mean %.3f (x1: %.3f), %.4f%% of pixels off by more than 2%%\n", k,
+                    test::stats(image, 0).mean, test::stats(reference, 0).mean, 100.0 * off);
+        EXPECT_LT(off, 0.01) << k;
+    }
 }
