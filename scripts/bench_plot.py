@@ -66,6 +66,10 @@ def main():
     except (OSError, ValueError, KeyError) as e:
         print(f"bench_plot: {e}", file=sys.stderr)
         return 2
+    if not any(n > 0 for points in lines.values() for n in points):
+        print(f"bench_plot: nothing to plot in {args.csv}: every row has 0 lights, and the light axis is "
+              "logarithmic (run with --lights above 0)", file=sys.stderr)
+        return 2
     try:
         import matplotlib
         matplotlib.use("Agg")

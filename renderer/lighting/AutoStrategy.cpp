@@ -5,6 +5,7 @@
 namespace dw {
 
 AutoStrategyChoice chooseLightingStrategy(const AutoStrategyInputs& in, const AutoStrategyThresholds& at) {
+    if (in.lights <= 0) return {"stencil_volumes", "no bounded lights in view"};
     char line[200];
     const double size = in.lights > 0 ? in.coverage / in.lights : 0.0;
     const bool covering = in.coverage >= at.coverage, large = in.lights > 0 && size >= at.lightSize;

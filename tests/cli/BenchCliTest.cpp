@@ -201,6 +201,21 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     EXPECT_NE(help.out.find("--shard i/n"), std::string::npos);
 }
 
+// A grid of 0 lights has nothing for the log-log plot: one line says so
+// (no Python traceback), and the CSV and JSON are still written.
+TEST(BenchCli, APlotWithOnlyZeroLightsSaysSoInOneLine) {
+    const fs::path dir = test::tempDir() / "bench-zero";
+    fs::create_directories(dir);
+    const Result r = run("bench --scene default --size 32x18 --lights 0 --frames 1 --warmup 0 --no-lpp --quiet --csv " +
+                         (dir / "z.csv").string() + " --json " + (dir / "z.json").string() + " --plot " + (dir / "z.png").string());
+    if (r.err.find("matplotlib is missing") != std::string::npos) GTEST_SKIP() << "python3-matplotlib is not installed";
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("nothing to plot"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "z.csv"));
+    EXPECT_FALSE(fs::exists(dir / "z.png"));
+}
+
 TEST(BenchCli, OrbitAndWalkthroughAverageOverTheirPoses) {
     const fs::path dir = test::tempDir() / "bench-paths";
     fs::create_directories(dir);

@@ -96,6 +96,9 @@ TEST(AutoStrategy, ClusteredWhenLargeLightsCoverTheScreenManyTimes) {
     EXPECT_STREQ(chooseLightingStrategy({96, 23.41}, at).strategy, "clustered");
     EXPECT_STREQ(chooseLightingStrategy({262, 17.40}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({0, 0.0}, at).strategy, "stencil_volumes");
+    // No light in view: nothing to choose between, and the reason says so
+    // (not a threshold comparison that reads as met).
+    EXPECT_EQ(chooseLightingStrategy({0, 0.0}, {0.0, 0.0}).why, "no bounded lights in view");
     // Both thresholds are inclusive.
     EXPECT_STREQ(chooseLightingStrategy({500, 20.0}, at).strategy, "clustered");
     EXPECT_EQ(chooseLightingStrategy({96, 23.41}, at).why,
