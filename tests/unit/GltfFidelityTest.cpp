@@ -238,15 +238,18 @@ TEST(GltfFidelity, VertexColoursSecondUvSetSamplersAndTextureTransformsAreImport
 // 0..1 then back 1..0), as mirrored normal-mapped models are laid out.
 // `shareSeam`: the seam's two vertices are shared by both quads (as many
 // exporters write them) or duplicated (split seams).
+// A vertex in the z = 0 plane facing +Z.
+Vertex planeVertex(float x, float y, float u, float v) {
+    Vertex out;
+    out.position = {x, y, 0.0f};
+    out.normal = {0.0f, 0.0f, 1.0f};
+    out.uv = {u, v};
+    return out;
+}
+
 Mesh mirroredStrip(bool shareSeam) {
+    const auto vertex = planeVertex;
     Mesh m;
-    auto vertex = [](float x, float y, float u, float v) {
-        Vertex out;
-        out.position = {x, y, 0.0f};
-        out.normal = {0.0f, 0.0f, 1.0f};
-        out.uv = {u, v};
-        return out;
-    };
     m.vertices = {vertex(0, 0, 0, 0), vertex(1, 0, 1, 0), vertex(1, 1, 1, 1), vertex(0, 1, 0, 1),
                   vertex(2, 0, 0, 0), vertex(2, 1, 0, 1)};
     std::uint32_t seamBottom = 1, seamTop = 2;
@@ -296,13 +299,7 @@ TEST(GltfFidelity, TangentsAreNotAveragedAcrossAUvDiscontinuity) {
     // Two triangles sharing an edge in space; the second's UVs are rotated by
     // 90 degrees (a UV island boundary): same positions and normals, other UVs.
     Mesh m;
-    auto vertex = [](float x, float y, float u, float v) {
-        Vertex out;
-        out.position = {x, y, 0.0f};
-        out.normal = {0.0f, 0.0f, 1.0f};
-        out.uv = {u, v};
-        return out;
-    };
+    const auto vertex = planeVertex;
     m.vertices = {vertex(0, 0, 0, 0), vertex(1, 0, 1, 0), vertex(0, 1, 0, 1),
                   vertex(1, 0, 5, 4), vertex(1, 1, 6, 4), vertex(0, 1, 6, 5)};
     m.indices = {0, 1, 2, 3, 4, 5};
