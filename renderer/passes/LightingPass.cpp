@@ -105,6 +105,26 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
     white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
 }
 
+LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights) {
+    autoWhy_.clear();
+    const int knob = ctx.knobs.get(strategy_);
+    if (knob != autoChoice_) return *strategies_[static_cast<std::size_t>(knob)];
+    AutoStrategyInputs in;
+    const glm::dmat4 worldToClip = ctx.camera.worldToClip();
+    for (const LightTableEntry* e : lights) {
+        if (!e->inFrustum) continue;
+        ++in.lights;
+        const auto [lo, hi] = shading_.localBox(e->volume.shape);
+        const PixelRect r = screenRect(worldToClip * glm::dmat4(e->volume.transform), lo, hi, ctx.width, ctx.height);
+        if (!r.empty()) in.coverage += double(r.x1 - r.x0) * (r.y1 - r.y0) / (double(ctx.width) * ctx.height);
+    }
+    const AutoStrategyChoice c = chooseLightingStrategy(in, {ctx.knobs.get(autoCoverage_), ctx.knobs.get(autoLightSize_)});
+    autoWhy_ = "auto picked " + std::string(c.strategy) + ": " + c.why;
+    for (const auto& s : strategies_)
+        if (std::string(s->name()) == c.strategy) return *s;
+    throw Error(std::string("lighting.strategy=auto picked '") + c.strategy + "', which is not registered");
+}
+
 void LightingPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
@@ -205,26 +225,7 @@ void LightingPass::execute(FrameContext& ctx) {
         if (e.light->type == LightType::Directional) ++counts_.directional;
         else ++counts_.fullscreen;
     }
-    // The strategy: the knob's, or the one auto picks for this frame.
-    int chosen = k.get(strategy_);
-    autoWhy_.clear();
-    if (chosen == autoChoice_) {
-        AutoStrategyInputs in;
-        const glm::dmat4 worldToClip = ctx.camera.worldToClip();
-        for (const LightTableEntry* e : frame.lights) {
-            if (!e->inFrustum) continue;
-            ++in.lights;
-            const auto [lo, hi] = shading_.localBox(e->volume.shape);
-            const PixelRect r = screenRect(worldToClip * glm::dmat4(e->volume.transform), lo, hi, ctx.width, ctx.height);
-            if (!r.empty()) in.coverage += double(r.x1 - r.x0) * (r.y1 - r.y0) / (double(ctx.width) * ctx.height);
-        }
-        const AutoStrategyChoice c = chooseLightingStrategy(in, {k.get(autoCoverage_), k.get(autoLightSize_)});
-        chosen = 0;
-        for (std::size_t i = 0; i < strategies_.size(); ++i)
-            if (std::string(strategies_[i]->name()) == c.strategy) chosen = static_cast<int>(i);
-        autoWhy_ = "auto picked " + std::string(c.strategy) + ": " + c.why;
-    }
-    LightingStrategy& strategy = *strategies_[static_cast<std::size_t>(chosen)];
+    LightingStrategy& strategy = pickStrategy(ctx, frame.lights);
     // Spheres before cones (fewer state changes), otherwise in scene order.
     std::stable_sort(frame.lights.begin(), frame.lights.end(), [](const LightTableEntry* a, const LightTableEntry* b) {
         return (a->volume.shape == VolumeShape::Cone) < (b->volume.shape == VolumeShape::Cone);
@@ -249,7 +250,7 @@ void LightingPass::execute(FrameContext& ctx) {
                   ? std::to_string(counts_.directionalInGBuffer) + " directional shaded in the G-buffer pass, "
                   : std::string()) + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
              std::to_string(counts_.volumes) + " volumes" +
-             (counts_.batches > 0 ? " (" + std::to_string(counts_.batches) + " batched draws)" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
+             (counts_.batches > 0 ? " in " + std::to_string(counts_.batches) + " batches" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;

@@ -55,6 +55,11 @@ public:
     const std::vector<std::unique_ptr<LightingStrategy>>& strategies() const { return strategies_; }
 
 private:
+    // The strategy lighting.strategy names, or under auto the one
+    // chooseLightingStrategy picks from `lights` (the frame's bounded lights);
+    // sets autoWhy_.
+    LightingStrategy& pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights);
+
     std::vector<std::unique_ptr<LightingStrategy>> strategies_;
     EnumKnob strategy_, attenuation_;
     int windowed_ = 0;  // lighting.attenuation = windowed

@@ -201,7 +201,7 @@ TEST(Lighting, BatchedVolumesEqualOneLightAtATime) {
                 const LightingPass::Counts counts = lighting->lastCounts();
                 int x = 0, y = 0;
                 const double d = worstRelative(batched, one, &x, &y);
-                std::printf("%s, %s (%s): %d volumes in %d batched draws; worst relative difference to one light "
+                std::printf("%s, %s (%s): %d volumes in %d batches; worst relative difference to one light "
                             "at a time %.2g at (%d, %d)\n",
                             c.what, strategy, count, counts.volumes, counts.batches, d, x, y);
                 EXPECT_LT(d, 1e-5) << c.what << ", " << strategy << " " << count << " at " << x << "," << y;
