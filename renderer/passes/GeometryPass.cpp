@@ -50,11 +50,11 @@ void GeometryPass::setup(gl::ShaderLibrary& shaders) {
 }
 
 void GeometryPass::execute(FrameContext& ctx) {
-    // Outputs are nearest-filtered: a G-buffer value between pixels means
-    // nothing (SSAO reads depth between pixel centres through its own sampler).
     if (ctx.wants("gbuffer.directional") && !ctx.knobs.get(directional_))
         throw Error("gbuffer.directional is written only with lighting.directional_in_gbuffer=true");
     const bool directional = ctx.knobs.get(directional_) && ctx.wants("gbuffer.directional") && ctx.lightTable;
+    // Outputs are nearest-filtered: a G-buffer value between pixels means
+    // nothing (SSAO reads depth between pixel centres through its own sampler).
     const gl::Framebuffer& fbo =
         directional ? directionalTarget_.get(ctx,
                                              {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
