@@ -27,7 +27,7 @@ void main() {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
             uint row = candidateRows[i];
-            if (!lightReaches(lights[row].positionRadius, s.position)) continue;
+            if (!lightReaches(row, s.position)) continue;
             sum += lightRadiance(lights[row], s);
             ++shaded;
         }

@@ -27,12 +27,19 @@ vec3 lightRadiance(Light light, Surface s) {
     return c;
 }
 
-// Whether a bounded light's sphere (positionRadius: view-space centre,
-// radius; 0 = unbounded) holds the surface point P: the test attenuate()
-// makes, made first by the grid strategies so the lights of a tile's or
-// cluster's list that cannot reach the pixel cost a distance, not a shading.
-bool lightReaches(vec4 positionRadius, vec3 P) {
-    return !(positionRadius.w > 0.0 && length(positionRadius.xyz - P) > positionRadius.w);
+// Whether light-table row `row` can light the surface point P: inside its
+// radius (the test attenuate() makes) and, for a spot light, inside its
+// cone (shadeLight's test, with the same operations so both agree at the
+// edge). The grid strategies ask first, so the lights of a tile's or
+// cluster's list that cannot reach a pixel cost a distance, not a shading.
+bool lightReaches(uint row, vec3 P) {
+    vec4 pr = lights[row].positionRadius;
+    vec3 toLight = pr.xyz - P;
+    float d = length(toLight);
+    if (pr.w > 0.0 && d > pr.w) return false;
+    if (int(lights[row].attenuation.w + 0.5) != LIGHT_SPOT) return true;
+    vec4 dc = lights[row].directionCutoff;
+    return dot(-(toLight / max(d, 1e-6)), dc.xyz) >= dc.w;
 }
 
 // Whether the pixel holds a surface to light (not background, not cleared depth).

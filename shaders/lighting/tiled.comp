@@ -96,7 +96,7 @@ void main() {
                     bits &= bits - 1u;
                     if (i >= uShaded) break;  // candidates are in order: the rest are only counted
                     uint row = candidateRows[i];
-                    if (!lightReaches(lights[row].positionRadius, s.position)) continue;
+                    if (!lightReaches(row, s.position)) continue;
                     sum += lightRadiance(lights[row], s);
                     ++shaded;
                 }

@@ -268,9 +268,9 @@ TEST(TiledLighting, TileAndClusterCountsAreConservative) {
 }
 
 // lighting.overlap under tiled and clustered counts the lights each pixel
-// shaded: those of its tile's or cluster's list whose sphere holds the
-// pixel's surface (the grid tests the distance before shading, the test
-// attenuate() makes). Lists are conservative, so that is every light that
+// shaded: those of its tile's or cluster's list that reach the pixel's
+// surface (the grid tests the radius, and a spot light's cone, before
+// shading: the tests attenuate() and shadeLight make). Lists are conservative, so that is every light that
 // reaches the surface: the stencil strategy's count up to the volume mesh,
 // and never more than the list.
 TEST(TiledLighting, OverlapCountsTheLightsEachPixelEvaluated) {
@@ -300,15 +300,22 @@ TEST(TiledLighting, OverlapCountsTheLightsEachPixelEvaluated) {
                 EXPECT_LE(o, lists.at(x, y, 0)) << strategy << " at " << x << "," << y;
                 const glm::vec3 p(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2));
                 int reaching = 0;
-                for (const LightGpu& row : table.rows)
-                    reaching += row.positionRadius.w <= 0.0f || glm::length(glm::vec3(row.positionRadius) - p) <= row.positionRadius.w;
+                for (const LightGpu& row : table.rows) {
+                    const glm::vec3 toLight = glm::vec3(row.positionRadius) - p;
+                    const float d = glm::length(toLight);
+                    if (row.positionRadius.w > 0.0f && d > row.positionRadius.w) continue;
+                    const bool spot = static_cast<int>(row.attenuation.w + 0.5f) == 2;  // LIGHT_SPOT
+                    if (spot && glm::dot(-toLight / std::max(d, 1e-6f), glm::vec3(row.directionCutoff)) < row.directionCutoff.w)
+                        continue;
+                    ++reaching;
+                }
                 // The G-buffer's reconstructed position and the CPU's may put a
                 // surface on either side of a sphere's edge: one light at most.
                 EXPECT_NEAR(o, reaching, 1.0) << strategy << " at " << x << "," << y;
                 off += o != static_cast<float>(reaching);
             }
-        std::printf("%s: mean lights shaded per pixel %.2f, listed %.2f per surface pixel (of 200 lights); %d of %d "
-                    "surface pixels differ from the CPU's count by one\n",
+        std::printf("%s: mean lights shaded per pixel %.2f, listed %.2f per surface pixel (of 200 lights, spots "
+                    "among them); %d of %d surface pixels differ from the CPU's count by one\n",
                     strategy, sum / (W * H), listed / surfaces, off, surfaces);
         EXPECT_GT(sum, 0.0);
         EXPECT_LT(off, surfaces / 100);
