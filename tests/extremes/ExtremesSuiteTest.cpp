@@ -34,11 +34,7 @@ constexpr int W = 96, H = 54;
 Scene baseScene() {
     Scene s = test::planeScene(30.0f);
     s.ambient = glm::vec3(0.08f);
-    Material m;
-    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
-    m.specularColor = glm::vec3(0.3f);
-    m.specularExponent = 40.0f;
-    const int mat = s.addMaterial(m);
+    const int mat = test::addBlinnPhong(s, {0.7f, 0.6f, 0.5f}, glm::vec3(0.3f), 40.0f);
     Material glow;
     glow.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     glow.emissive = glm::vec3(40.0f);

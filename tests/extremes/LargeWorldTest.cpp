@@ -20,11 +20,7 @@ namespace {
 Scene smallScene() {
     Scene s = test::planeScene(30.0f);
     s.ambient = glm::vec3(0.05f);
-    Material m;
-    m.baseColor = glm::vec4(0.8f, 0.5f, 0.4f, 1.0f);
-    m.specularColor = glm::vec3(0.2f);
-    m.specularExponent = 30.0f;
-    const int mat = s.addMaterial(m);
+    const int mat = test::addBlinnPhong(s, {0.8f, 0.5f, 0.4f}, glm::vec3(0.2f), 30.0f);
     Mesh box = shapes::box({1.0f, 1.5f, 1.0f});
     box.material = mat;
     const int mesh = s.addMesh(std::move(box));

@@ -15,13 +15,17 @@
 
 namespace dw::test {
 
+int addBlinnPhong(Scene& s, glm::vec3 diffuse, glm::vec3 specular, float exponent) {
+    Material m;
+    m.baseColor = glm::vec4(diffuse, 1.0f);
+    m.specularColor = specular;
+    m.specularExponent = exponent;
+    return s.addMaterial(m);
+}
+
 Scene boxesScene(bool withSun) {
     Scene s = planeScene(30.0f);
-    Material m;
-    m.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
-    m.specularColor = glm::vec3(0.4f);
-    m.specularExponent = 40.0f;
-    const int mat = s.addMaterial(m);
+    const int mat = addBlinnPhong(s, {0.7f, 0.6f, 0.5f}, glm::vec3(0.4f), 40.0f);
     Mesh box = shapes::box({1.5f, 2.0f, 1.5f});
     box.material = mat;
     const int mesh = s.addMesh(std::move(box));

@@ -26,6 +26,8 @@ Light& addSpotLight(Scene& s, glm::vec3 pos, glm::vec3 dir, float cutoff, float 
 
 // Boxes on a floor among 12 overlapping point lights and 4 spots (and a dim
 // sun when `withSun`): the lighting tests' common scene.
+// Adds an opaque Blinn-Phong material; returns its index.
+int addBlinnPhong(Scene& s, glm::vec3 diffuse, glm::vec3 specular, float exponent);
 Scene boxesScene(bool withSun);
 // 200 small lights (radius 1 to 2, every 9th a spot) on a jittered grid over
 // part of a floor with 6 boxes, straddling box edges, screen tiles and depth
