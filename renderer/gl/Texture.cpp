@@ -93,6 +93,12 @@ Texture Texture::create3D(GLenum internalFormat, int width, int height, int dept
     return t;
 }
 
+Texture Texture::createBuffer(GLenum internalFormat) {
+    return named(GL_TEXTURE_BUFFER, internalFormat, 1, 1, 1, 1);
+}
+
+void Texture::attachBuffer(GLuint buffer) const { glTextureBuffer(id(), format_, buffer); }
+
 Texture Texture::createView(const Texture& source, GLenum target, int firstLayer, int layers) {
     GLuint id = 0;
     glGenTextures(1, &id);  // a view needs a name that has never been bound: not glCreateTextures

@@ -22,6 +22,11 @@ public:
     // firstLayer + layers) as `target` (e.g. a cube map read as a 2D array of
     // faces): same storage, sampling state of its own.
     static Texture createView(const Texture& source, GLenum target, int firstLayer, int layers);
+    // A buffer texture (GL_TEXTURE_BUFFER): texelFetch over a buffer object's
+    // bytes read as `internalFormat` texels. Empty until attachBuffer.
+    static Texture createBuffer(GLenum internalFormat);
+    // Points a buffer texture at `buffer` (again after the buffer is re-created).
+    void attachBuffer(GLuint buffer) const;
     int layers() const { return layers_; }
     // Number of mip levels of a full chain down to 1x1.
     static int fullMipCount(int width, int height);

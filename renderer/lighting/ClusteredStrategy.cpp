@@ -38,8 +38,9 @@ std::vector<OutputDecl> ClusteredStrategy::outputs() const {
 
 void ClusteredStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
-    candidates_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "lighting candidates");
+    candidates_.create();
     ranges_ = gl::Buffer::create(16, nullptr, true, "cluster ranges");
+    rangesTexture_ = gl::Texture::createBuffer(GL_RGBA32UI);
     cells_ = gl::Buffer::create(sizeof(ClusterCell), nullptr, true, "cluster grid");
     index_ = gl::Buffer::create(8, nullptr, true, "cluster light index");
 }
@@ -50,10 +51,12 @@ const gl::Program& ClusteredStrategy::program(gl::ShaderLibrary::Handle& handle,
 }
 
 void ClusteredStrategy::bindBuffers() const {
-    candidates_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+    candidates_.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+    candidates_.dataTexture.bind(binding::kCandidateDataUnit);
     cells_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterGridSsbo);
     index_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterIndexSsbo);
-    ranges_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterRangeSsbo);
+    rangesTexture_.attachBuffer(ranges_.id());  // ensureSize may have re-created it
+    rangesTexture_.bind(binding::kClusterRangeUnit);
 }
 
 void ClusteredStrategy::setGridUniforms(const gl::Program& p, const Grid& g) const {
@@ -120,7 +123,7 @@ ClusteredStrategy::Grid ClusteredStrategy::build(LightingFrame& f, const LightLi
                     static_cast<std::size_t>(s1 - s0 + 1);
     }
 
-    lists.upload(candidates_);
+    lists.upload(candidates_, f.table);
     ranges_.ensureSize(ranges.size() * sizeof(glm::uvec4), "cluster ranges");
     ranges_.update(0, ranges.size() * sizeof(glm::uvec4), ranges.data());
     cells_.ensureSize(static_cast<std::size_t>(g.clusters()) * sizeof(ClusterCell), "cluster grid");

@@ -55,7 +55,9 @@ private:
     const gl::Program& program(gl::ShaderLibrary::Handle& handle, const gl::ProgramDesc& desc);
     gl::ShaderLibrary* shaders_ = nullptr;
     gl::ShaderLibrary::Handle bounds_, assign_, shade_, shadeCounting_, counts_;
-    gl::Buffer candidates_, ranges_, cells_, index_;
+    CandidateBuffers candidates_;
+    gl::Buffer ranges_, cells_, index_;
+    gl::Texture rangesTexture_;  // ranges_ as RGBA32UI texels
 };
 
 }  // namespace dw

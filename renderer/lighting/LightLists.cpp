@@ -1,5 +1,6 @@
 #include "renderer/lighting/LightLists.h"
 
+#include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/ShadowService.h"
 #include "renderer/lighting/VolumesStrategy.h"
 
@@ -36,11 +37,29 @@ LightLists LightLists::split(const LightingFrame& frame) {
     return l;
 }
 
-void LightLists::upload(gl::Buffer& buffer) const {
-    const std::size_t bytes = std::max<std::size_t>(rows.size(), 1) * sizeof(std::uint32_t);
-    buffer.ensureSize(bytes, "lighting candidates");
-    if (!rows.empty()) buffer.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
-    buffer.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+void CandidateBuffers::create() {
+    rows = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "lighting candidates");
+    data = gl::Buffer::create(sizeof(glm::vec4) * 4, nullptr, true, "lighting candidate data");
+    dataTexture = gl::Texture::createBuffer(GL_RGBA32F);
+}
+
+void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) const {
+    const std::size_t n = std::max<std::size_t>(rows.size(), 1);
+    buffers.rows.ensureSize(n * sizeof(std::uint32_t), "lighting candidates");
+    if (!rows.empty()) buffers.rows.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
+    buffers.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+
+    std::vector<glm::vec4> texels;
+    texels.reserve(rows.size() * 4);
+    for (std::uint32_t row : rows) {
+        const LightGpu& l = table.rows[row];
+        texels.insert(texels.end(), {l.positionRadius, l.directionCutoff, l.intensityExponent, l.attenuation});
+    }
+    buffers.data.ensureSize(n * 4 * sizeof(glm::vec4), "lighting candidate data");
+    if (!texels.empty()) buffers.data.update(0, texels.size() * sizeof(glm::vec4), texels.data());
+    // ensureSize may have re-created the buffer: point the texture at today's.
+    buffers.dataTexture.attachBuffer(buffers.data.id());
+    buffers.dataTexture.bind(binding::kCandidateDataUnit);
 }
 
 int LightLists::shadeOneByOne(LightingFrame& frame) const {

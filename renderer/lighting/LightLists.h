@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "renderer/gl/Buffer.h"
+#include "renderer/gl/Texture.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/lighting/LightingStrategy.h"
 
@@ -25,13 +26,31 @@ namespace binding {
 constexpr GLuint kLightCandidatesSsbo = 4;
 constexpr GLuint kClusterGridSsbo = 5;
 constexpr GLuint kClusterIndexSsbo = 6;
-constexpr GLuint kClusterRangeSsbo = 7;
+// Texture units of CANDIDATE_DATA_UNIT and CLUSTER_RANGE_UNIT.
+constexpr GLuint kCandidateDataUnit = 13;
+constexpr GLuint kClusterRangeUnit = 14;
 }  // namespace binding
 
 // lighting.tile_size, declared by whichever strategy asks first.
 IntKnob declareTileSizeKnob(KnobRegistry& knobs);
 // Its value in pixels (4 to 32).
 int tileSizeOf(const KnobRegistry& knobs, IntKnob knob);
+
+// The grid strategies' candidates on the GPU: their light-table rows (SSBO
+// at LIGHT_CANDIDATES_SSBO) and, in the same order, the four vec4 of each
+// candidate's light that culling and shading read (positionRadius,
+// directionCutoff, intensityExponent, attenuation), as an RGBA32F buffer
+// texture at CANDIDATE_DATA_UNIT. The shaders fetch light data as texels
+// rather than from the light table's SSBO: on llvmpipe a texel fetch at a
+// per-invocation index is one vector gather, an SSBO or shared-memory read a
+// loop over the SIMD lanes (tiled lighting pass at 1000 lights, 640x360:
+// see docs/bench.md).
+struct CandidateBuffers {
+    gl::Buffer rows;
+    gl::Buffer data;
+    gl::Texture dataTexture;
+    void create();
+};
 
 struct LightLists {
     // Light-table rows the grid culls: the first `shaded` it shades, the
@@ -47,9 +66,9 @@ struct LightLists {
     int culled = 0;  // outside the view frustum (LightTableEntry::inFrustum)
 
     static LightLists split(const LightingFrame& frame);
-    // Uploads `rows` into `buffer` (at least one element) and binds it at
-    // LIGHT_CANDIDATES_SSBO.
-    void upload(gl::Buffer& buffer) const;
+    // Uploads `rows` and their lights' data from `table` (at least one
+    // element each) and binds both (see CandidateBuffers).
+    void upload(CandidateBuffers& buffers, const LightTable& table) const;
     // Shades oneByOne like VolumesStrategy (frame.beginLight first, so a
     // reused map is rendered), returning how many it drew.
     int shadeOneByOne(LightingFrame& frame) const;

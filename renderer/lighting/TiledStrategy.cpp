@@ -1,6 +1,9 @@
 #include "renderer/lighting/TiledStrategy.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <tuple>
 
 #include "renderer/gl/Texture.h"
 
@@ -12,7 +15,17 @@ constexpr const char* kTileCounts = "lighting.tile_counts";
 constexpr int kMaxCandidatesPerDispatch = 4096;
 }
 
-TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKnob(knobs)) {}
+TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKnob(knobs)) {
+    tileThreads_ = knobs.addInt("lighting.tile_threads", 0, 0, 1024, "lighting",
+                                "invocations per tile work group of the tiled strategy, each shading every n-th pixel "
+                                "of the tile (at most one per pixel); 0: auto, one per pixel on a GPU and one SIMD "
+                                "batch on llvmpipe, whose barriers switch coroutines per batch",
+                                "", true);
+    depthMask_ = knobs.addBool("lighting.tile_depth_mask", true, "lighting",
+                               "tiled: a light must also span one of 32 depth slices of the tile that holds a surface "
+                               "(2.5D culling, Harada 2012), not only the tile's frustum between its nearest and "
+                               "farthest surface");
+}
 
 std::vector<OutputDecl> TiledStrategy::outputs() const {
     return {{kTileCounts, OutputKind::Count,
@@ -21,9 +34,18 @@ std::vector<OutputDecl> TiledStrategy::outputs() const {
              texture2D(GL_R32F), 1, true}};
 }
 
+int TiledStrategy::autoThreads(int tilePixels) {
+    // llvmpipe names its vector width: "llvmpipe (LLVM 15.0.6, 256 bits)".
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (!renderer || !std::strstr(renderer, "llvmpipe")) return tilePixels;
+    int bits = 0;
+    if (const char* comma = std::strstr(renderer, ", ")) bits = std::atoi(comma + 2);
+    return std::clamp(bits >= 128 ? bits / 32 : 8, 1, tilePixels);
+}
+
 void TiledStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
-    candidates_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "lighting candidates");
+    candidates_.create();
 }
 
 void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool shade) {
@@ -33,11 +55,19 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     if (!counts && (!shade || lists.shaded == 0)) return;
 
     const int tile = tileSizeOf(ctx.knobs, tileSize_);
-    gl::ShaderLibrary::Handle& handle = programs_[tile];
-    if (!handle) handle = shaders_->get({.compute = "lighting/tiled.comp", .defines = {"TILE_SIZE=" + std::to_string(tile)}});
+    const int pixels = tile * tile;
+    const int setThreads = ctx.knobs.get(tileThreads_);
+    const int threads = setThreads <= 0 ? autoThreads(pixels) : std::min(setThreads, pixels);
+    const bool depthMask = ctx.knobs.get(depthMask_);
+    gl::ShaderLibrary::Handle& handle = programs_[{tile, threads, depthMask}];
+    if (!handle) {
+        std::vector<std::string> defines{"TILE_SIZE=" + std::to_string(tile), "TILE_THREADS=" + std::to_string(threads)};
+        if (depthMask) defines.push_back("DEPTH_MASK");
+        handle = shaders_->get({.compute = "lighting/tiled.comp", .defines = defines});
+    }
     const gl::Program& program = *handle;
 
-    lists.upload(candidates_);
+    lists.upload(candidates_, f.table);
     const gl::Texture& lbuffer = ctx.texture("lbuffer");
     glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     if (overlap) glBindImageTexture(1, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);

@@ -11,6 +11,7 @@
 // LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
 #include <map>
+#include <tuple>
 
 #include "renderer/gl/Buffer.h"
 #include "renderer/knobs/KnobRegistry.h"
@@ -35,11 +36,17 @@ public:
 private:
     // Culls (and shades, when `shade`) every tile.
     void dispatch(LightingFrame& frame, const LightLists& lists, bool shade);
+    // lighting.tile_threads = 0: one invocation per pixel, except on llvmpipe
+    // one SIMD batch (its vector width / 32 lanes), at most tilePixels.
+    static int autoThreads(int tilePixels);
 
     IntKnob tileSize_;
+    IntKnob tileThreads_;
+    BoolKnob depthMask_;
     gl::ShaderLibrary* shaders_ = nullptr;
-    std::map<int, gl::ShaderLibrary::Handle> programs_;  // per tile size, compiled on first use
-    gl::Buffer candidates_;
+    // Per tile size, threads and depth mask, compiled on first use.
+    std::map<std::tuple<int, int, bool>, gl::ShaderLibrary::Handle> programs_;
+    CandidateBuffers candidates_;
 };
 
 }  // namespace dw

@@ -17,9 +17,8 @@ layout(location = 1) uniform int uCandidates;
 layout(location = 7) uniform uint uCapacity;
 
 // Per candidate: first and last tile across (x), down (y), slice (z), packed lo | hi << 16.
-layout(std430, binding = CLUSTER_RANGE_SSBO) readonly buffer ClusterRanges {
-    uvec4 ranges[];
-};
+// (A buffer texture: see CandidateBuffers in renderer/lighting/LightLists.h.)
+layout(binding = CLUSTER_RANGE_UNIT) uniform usamplerBuffer uRanges;
 
 bool inRange(uint span, int v) {
     return v >= int(span & 0xFFFFu) && v <= int(span >> 16);
@@ -45,18 +44,18 @@ void main() {
 
     uint count = 0u;
     for (int i = 0; i < uCandidates; ++i) {
-        uvec4 r = ranges[i];
+        uvec4 r = texelFetch(uRanges, i);
         if (!inRange(r.x, c.x) || !inRange(r.y, c.y) || !inRange(r.z, c.z)) continue;
-        vec4 pr = lights[candidateRows[i]].positionRadius;
+        vec4 pr = candidatePositionRadius(i);
         if (sphereMeetsVolume(volume, pr.xyz, pr.w)) ++count;
     }
     uint offset = count > 0u ? atomicAdd(clusterLights.used, count) : 0u;
     count = offset + count <= uCapacity ? count : (offset < uCapacity ? uCapacity - offset : 0u);
     uint k = 0u;
     for (int i = 0; i < uCandidates && k < count; ++i) {
-        uvec4 r = ranges[i];
+        uvec4 r = texelFetch(uRanges, i);
         if (!inRange(r.x, c.x) || !inRange(r.y, c.y) || !inRange(r.z, c.z)) continue;
-        vec4 pr = lights[candidateRows[i]].positionRadius;
+        vec4 pr = candidatePositionRadius(i);
         if (sphereMeetsVolume(volume, pr.xyz, pr.w)) clusterLights.index[offset + k++] = uint(i);
     }
     cells[id].offset = offset;

@@ -26,9 +26,12 @@ void main() {
         for (uint k = 0u; k < cell.count; ++k) {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
-            uint row = candidateRows[i];
-            if (!lightReaches(row, s.position)) continue;
-            sum += lightRadiance(lights[row], s);
+            // lightReaches' radius test first, on one texel: most listed lights miss.
+            vec4 pr = candidatePositionRadius(int(i));
+            if (pr.w > 0.0 && length(pr.xyz - s.position) > pr.w) continue;
+            Light light = candidateLight(int(i));
+            if (!lightReaches(light, s.position)) continue;
+            sum += lightRadiance(light, s);
             ++shaded;
         }
     }

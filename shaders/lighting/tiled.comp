@@ -1,21 +1,37 @@
 #version 450 core
-// Tiled deferred shading (seed 003 section 2.2.1, seed 004 "Moving forward"):
-// one work group per TILE_SIZE x TILE_SIZE screen tile finds its surfaces'
-// nearest and farthest depth, culls the candidate lights' bounding spheres
-// against the tile's frustum between them into a list in shared memory, then
-// every pixel adds the list's lights whose sphere holds its surface (the same lightRadiance as
-// light.frag) into the L-buffer with one read-modify-write.
-// The list is a bit mask over up to MAX_CANDIDATES candidates (the CPU
-// dispatches again for the next ones), walked in candidate order, so the sum
-// is the same every frame whatever the threads' timing. The shading loop
-// comes after the last barrier: llvmpipe turns barriers into coroutine
-// splits, and values live across one cost a trip through memory.
+// Tiled deferred shading (seed 003 section 2.2.1, seed 004 "Moving forward";
+// Andersson 2009, Olsson and Assarsson 2011): one work group per
+// TILE_SIZE x TILE_SIZE screen tile
+//   1. finds its surfaces' nearest and farthest depth,
+//   2. culls the candidate lights' bounding spheres against the tile's
+//      frustum between those depths into a bit list in shared memory; with
+//      DEPTH_MASK (lighting.tile_depth_mask) a light must also span one of
+//      the 32 depth slices between them that holds a surface (2.5D culling,
+//      Harada 2012), which drops the lights that fall in a depth gap,
+//   3. turns the bit list into a list of candidate indices in shared memory
+//      (in candidate order),
+//   4. and every pixel walks that list and adds the lights that reach its
+//      surface (the same lightReaches and lightRadiance as light.frag) into
+//      the L-buffer with one read-modify-write.
+// Light data comes from the candidates' buffer texture (tiles.glsl). On
+// llvmpipe walking the index list costs a third of walking the bits with
+// findLSB (lighting pass at 1000 lights, 640x360: docs/bench.md).
+// The group has TILE_THREADS invocations, each shading every
+// TILE_THREADS-th pixel of the tile (lighting.tile_threads): one per pixel
+// suits a GPU; on a CPU rasteriser, which runs a group's SIMD batches as
+// coroutines switched at every barrier, one SIMD batch per tile costs far less.
+// The bit list covers up to MAX_CANDIDATES candidates (the CPU dispatches
+// again for the next ones) and is walked in candidate order, so the sum is
+// the same every frame whatever the threads' timing.
 // Shaded lights never have a shadow map (those go one at a time).
 #define UNSHADOWED 1
 #include "shade.glsl"
 #include "tiles.glsl"
 
-layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
+#ifndef TILE_THREADS
+#define TILE_THREADS (TILE_SIZE * TILE_SIZE)
+#endif
+layout(local_size_x = TILE_THREADS) in;
 
 layout(binding = 0, rgba32f) uniform restrict image2D uLBuffer;
 layout(binding = 1, r32f) uniform restrict image2D uOverlap;     // when FLAG_COUNT_OVERLAP
@@ -32,84 +48,160 @@ layout(location = 4) uniform int uFlags;
 #define FLAG_ADD_COUNTS 8  // not the first dispatch: add to the tile counts
 
 #define MAX_CANDIDATES 4096
-#define GROUP_SIZE (TILE_SIZE * TILE_SIZE)
+#define WORDS (MAX_CANDIDATES / 32)
+#define TILE_PIXELS (TILE_SIZE * TILE_SIZE)
+#define PIXELS_PER_THREAD ((TILE_PIXELS + TILE_THREADS - 1) / TILE_THREADS)
 
 shared uint sDepthMin, sDepthMax;
-shared uint sMask[MAX_CANDIDATES / 32];
+shared uint sDepthSlices;  // DEPTH_MASK: bit k set when slice k holds a surface
+shared uint sMask[WORDS];
+shared uint sBefore[WORDS];         // listed lights in the words before
+shared uint sListed;                // listed lights
+shared uint sShadedListed;          // of them, those below uShaded (they come first)
+shared uint sList[MAX_CANDIDATES];  // the listed candidates' indices
 
-bool surfaceAt(ivec2 px, out float depth) {
-    depth = texelFetch(uDepth, px, 0).r;
-    float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
-    return !(isFarDepth(depth) || type == PIXEL_BACKGROUND);
+// The depth slice (0 to 31) of view-space z in a tile whose nearest surface
+// is at zNear, sliceScale = 32 / (zNear - zFar).
+uint depthSlice(float z, float zNear, float sliceScale) {
+    return uint(clamp((zNear - z) * sliceScale, 0.0, 31.0));
+}
+
+ivec2 tilePixel(uint k) {
+    uint p = gl_LocalInvocationIndex + k * uint(TILE_THREADS);
+    return ivec2(gl_WorkGroupID.xy) * TILE_SIZE + ivec2(p % uint(TILE_SIZE), p / uint(TILE_SIZE));
+}
+
+bool pixelInTile(uint k, ivec2 size) {
+    return gl_LocalInvocationIndex + k * uint(TILE_THREADS) < uint(TILE_PIXELS) &&
+           all(lessThan(tilePixel(k), size));
 }
 
 void main() {
     ivec2 size = ivec2(camera.viewport.xy);
-    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     uint tid = gl_LocalInvocationIndex;
-    bool inImage = all(lessThan(px, size));
     if (tid == 0u) {
         sDepthMin = 0xFFFFFFFFu;
         sDepthMax = 0u;
+        sDepthSlices = 0u;
     }
-    for (uint w = tid; w < uint(MAX_CANDIDATES / 32); w += uint(GROUP_SIZE)) sMask[w] = 0u;
+    for (uint w = tid; w < uint(WORDS); w += uint(TILE_THREADS)) sMask[w] = 0u;
     barrier();
 
-    float depth;
-    // Depths are >= 0, so their bit patterns order like the values.
-    if (inImage && surfaceAt(px, depth)) {
-        atomicMin(sDepthMin, floatBitsToUint(depth));
-        atomicMax(sDepthMax, floatBitsToUint(depth));
+    // 1. Depths are >= 0, so their bit patterns order like the values.
+    uint depthMin = 0xFFFFFFFFu, depthMax = 0u;
+    for (uint k = 0u; k < uint(PIXELS_PER_THREAD); ++k) {
+        if (!pixelInTile(k, size)) continue;
+        ivec2 px = tilePixel(k);
+        float depth = texelFetch(uDepth, px, 0).r;
+        float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
+        if (isFarDepth(depth) || type == PIXEL_BACKGROUND) continue;
+        depthMin = min(depthMin, floatBitsToUint(depth));
+        depthMax = max(depthMax, floatBitsToUint(depth));
+    }
+    if (depthMin <= depthMax) {
+        atomicMin(sDepthMin, depthMin);
+        atomicMax(sDepthMax, depthMax);
     }
     barrier();
 
-    if (sDepthMin <= sDepthMax) {
-        ivec2 tileMin = ivec2(gl_WorkGroupID.xy) * TILE_SIZE;
-        vec2 pixelMin = vec2(tileMin), pixelMax = vec2(min(tileMin + TILE_SIZE, size));
-        vec2 centreUv = 0.5 * (pixelMin + pixelMax) * camera.viewport.zw;
-        // Which extreme is nearer depends on the depth convention (reversed: the largest).
-        float z0 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMin)).z;
-        float z1 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMax)).z;
-        float zNear = max(z0, z1), zFar = min(z0, z1);
+    // 2. The tile's frustum between its nearest and farthest surface.
+    bool tileHasSurface = sDepthMin <= sDepthMax;
+    ivec2 tileMin = ivec2(gl_WorkGroupID.xy) * TILE_SIZE;
+    vec2 pixelMin = vec2(tileMin), pixelMax = vec2(min(tileMin + TILE_SIZE, size));
+    vec2 centreUv = 0.5 * (pixelMin + pixelMax) * camera.viewport.zw;
+    // Which extreme is nearer depends on the depth convention (reversed: the largest).
+    float z0 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMin)).z;
+    float z1 = viewPositionFromDepth(centreUv, uintBitsToFloat(sDepthMax)).z;
+    float zNear = max(z0, z1), zFar = min(z0, z1);
+#ifdef DEPTH_MASK
+    // 32 equal slices from zNear (slice 0) to zFar; depthSlice is monotonic
+    // in z, so a sphere holding a surface point spans that point's slice.
+    float sliceScale = 32.0 / max(zNear - zFar, 1e-30);
+    if (tileHasSurface) {
+        uint slices = 0u;
+        for (uint k = 0u; k < uint(PIXELS_PER_THREAD); ++k) {
+            if (!pixelInTile(k, size)) continue;
+            ivec2 px = tilePixel(k);
+            float depth = texelFetch(uDepth, px, 0).r;
+            float type = floor(texelFetch(uAlbedo, px, 0).a * 255.0 + 0.5);
+            if (isFarDepth(depth) || type == PIXEL_BACKGROUND) continue;
+            slices |= 1u << depthSlice(viewPositionAtPixel(px, depth).z, zNear, sliceScale);
+        }
+        if (slices != 0u) atomicOr(sDepthSlices, slices);
+    }
+    barrier();
+#endif
+    if (tileHasSurface) {
         ScreenVolume volume = screenVolume(pixelMin, pixelMax, zNear, zFar);
-        for (int i = uFirst + int(tid); i < uEnd; i += GROUP_SIZE) {
-            vec4 pr = lights[candidateRows[i]].positionRadius;
-            if (sphereMeetsVolume(volume, pr.xyz, pr.w)) atomicOr(sMask[(i - uFirst) >> 5], 1u << ((i - uFirst) & 31));
+        for (int i = uFirst + int(tid); i < uEnd; i += TILE_THREADS) {
+            vec4 pr = candidatePositionRadius(i);
+            if (!sphereMeetsVolume(volume, pr.xyz, pr.w)) continue;
+#ifdef DEPTH_MASK
+            float r = pr.w * 1.0001 + 1e-5;  // sphereMeetsVolume's slack
+            uint first = depthSlice(pr.z + r, zNear, sliceScale), last = depthSlice(pr.z - r, zNear, sliceScale);
+            uint spanned = (last == 31u ? 0xFFFFFFFFu : (2u << last) - 1u) & ~((1u << first) - 1u);
+            if ((spanned & sDepthSlices) == 0u) continue;
+#endif
+            atomicOr(sMask[(i - uFirst) >> 5], 1u << ((i - uFirst) & 31));
         }
     }
     barrier();
 
-    if (!inImage) return;
     uint words = uint(uEnd - uFirst + 31) / 32u;
-    uint tileLights = 0u;
-    for (uint w = 0u; w < words; ++w) tileLights += uint(bitCount(sMask[w]));
-
-    uint shaded = 0u;
-    if ((uFlags & FLAG_SHADE) != 0 && tileLights > 0u) {
-        Surface s = readSurface(px);
-        if (isSurface(s)) {
-            vec3 sum = vec3(0.0);
-            for (uint w = 0u; w < words; ++w) {
-                uint bits = sMask[w];
-                while (bits != 0u) {
-                    int i = uFirst + int(w) * 32 + findLSB(bits);
-                    bits &= bits - 1u;
-                    if (i >= uShaded) break;  // candidates are in order: the rest are only counted
-                    uint row = candidateRows[i];
-                    if (!lightReaches(row, s.position)) continue;
-                    sum += lightRadiance(lights[row], s);
-                    ++shaded;
-                }
-            }
-            // Each pixel belongs to one invocation, and the L-buffer's earlier
-            // writes (ambient, directional lights) came through the
-            // framebuffer before this dispatch.
-            if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
+    // The list in candidate order: thread 0 counts each word's bits into
+    // offsets, then every thread writes its words' candidates.
+    if (tid == 0u) {
+        uint listed = 0u, shadedListed = 0u;
+        for (uint w = 0u; w < words; ++w) {
+            uint bits = sMask[w];
+            sBefore[w] = listed;
+            listed += uint(bitCount(bits));
+            // The shaded candidates are those below uShaded.
+            int below = clamp(uShaded - uFirst - int(w) * 32, 0, 32);
+            shadedListed += uint(bitCount(below == 32 ? bits : bits & ((1u << below) - 1u)));
+        }
+        sListed = listed;
+        sShadedListed = shadedListed;
+    }
+    barrier();
+    for (uint w = tid; w < words; w += uint(TILE_THREADS)) {
+        uint bits = sMask[w];
+        uint entry = sBefore[w];
+        while (bits != 0u) {
+            sList[entry++] = uint(uFirst + int(w) * 32 + findLSB(bits));
+            bits &= bits - 1u;
         }
     }
-    if ((uFlags & FLAG_COUNT_OVERLAP) != 0) imageStore(uOverlap, px, imageLoad(uOverlap, px) + vec4(float(shaded)));
-    if ((uFlags & FLAG_TILE_COUNTS) != 0) {
-        float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
-        imageStore(uTileCounts, px, vec4(before + float(tileLights)));
+    barrier();
+    uint tileLights = sListed;
+    // Shaded candidates come first in candidate order.
+    uint toShade = (uFlags & FLAG_SHADE) != 0 ? sShadedListed : 0u;
+
+    for (uint k = 0u; k < uint(PIXELS_PER_THREAD); ++k) {
+        if (!pixelInTile(k, size)) continue;
+        ivec2 px = tilePixel(k);
+        vec3 sum = vec3(0.0);
+        uint shaded = 0u;
+        Surface s = readSurface(px);
+        if (toShade > 0u && isSurface(s)) {
+            for (uint e = 0u; e < toShade; ++e) {
+                int i = int(sList[e]);
+                vec4 pr = candidatePositionRadius(i);
+                if (pr.w > 0.0 && length(pr.xyz - s.position) > pr.w) continue;
+                Light light = candidateLight(i);
+                if (!lightReaches(light, s.position)) continue;
+                sum += lightRadiance(light, s);
+                ++shaded;
+            }
+        }
+        // Each pixel belongs to one invocation, and the L-buffer's earlier
+        // writes (ambient, directional lights) came through the framebuffer
+        // before this dispatch.
+        if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
+        if ((uFlags & FLAG_COUNT_OVERLAP) != 0) imageStore(uOverlap, px, imageLoad(uOverlap, px) + vec4(float(shaded)));
+        if ((uFlags & FLAG_TILE_COUNTS) != 0) {
+            float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
+            imageStore(uTileCounts, px, vec4(before + float(tileLights)));
+        }
     }
 }

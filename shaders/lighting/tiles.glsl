@@ -9,13 +9,15 @@
 #ifndef TILES_GLSL
 #define TILES_GLSL
 #include "../common/camera.glsl"
+#include "../common/lighting.glsl"
 
 // Shader storage bindings of the tiled and clustered strategies (mirrored by
 // renderer/lighting/LightLists.h).
 #define LIGHT_CANDIDATES_SSBO 4
 #define CLUSTER_GRID_SSBO 5
 #define CLUSTER_INDEX_SSBO 6
-#define CLUSTER_RANGE_SSBO 7
+#define CLUSTER_RANGE_UNIT 14
+#define CANDIDATE_DATA_UNIT 13
 
 // The lights a tile or cluster may take: rows of the light table. The first
 // `shaded` of them are shaded by the grid, the rest (lights with a shadow map,
@@ -23,6 +25,28 @@
 layout(std430, binding = LIGHT_CANDIDATES_SSBO) readonly buffer LightCandidates {
     uint candidateRows[];
 };
+
+// The same candidates' light data, four texels each in candidate order:
+// positionRadius, directionCutoff, intensityExponent, attenuation (see
+// CandidateBuffers in renderer/lighting/LightLists.h for why texels).
+layout(binding = CANDIDATE_DATA_UNIT) uniform samplerBuffer uCandidateData;
+
+vec4 candidatePositionRadius(int i) { return texelFetch(uCandidateData, 4 * i); }
+
+// Candidate i as a Light with the fields lightReaches and shadeLight read;
+// no volume and no shadow map.
+Light candidateLight(int i) {
+    Light light;
+    light.volume = mat4(0.0);
+    light.positionRadius = texelFetch(uCandidateData, 4 * i);
+    light.directionCutoff = texelFetch(uCandidateData, 4 * i + 1);
+    light.intensityExponent = texelFetch(uCandidateData, 4 * i + 2);
+    light.attenuation = texelFetch(uCandidateData, 4 * i + 3);
+    light.shadowMatrix = mat4(0.0);
+    light.shadowParams = vec4(0.0);
+    light.shadowRange = vec4(0.0);
+    return light;
+}
 
 // The view-space point at depth viewZ (negative in front of the camera) on
 // the ray through window position w (in pixels). Exact for perspective and

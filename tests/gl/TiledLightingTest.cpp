@@ -267,6 +267,80 @@ TEST(TiledLighting, TileAndClusterCountsAreConservative) {
     }
 }
 
+// How the tiled strategy's work is split and culled changes no pixel: one
+// invocation per pixel, one SIMD batch per tile (llvmpipe's auto choice), a
+// count that leaves a partial last round, and the 2.5D depth mask on and off
+// all sum each pixel's reaching lights in candidate order. The depth mask
+// drops the lights that float in a tile's depth gap (between a box near the
+// camera and the floor far behind it), so with it the lists are shorter but
+// still hold every light that reaches the pixel.
+TEST(TiledLighting, TileThreadsAndDepthMaskChangeNoPixel) {
+    const int W = 96, H = 54;
+    auto session = test::makeSession(W, H);
+    Scene s = test::straddleScene(0);
+    // A wall across the lower screen, near the camera (at (0, 7, 11), looking
+    // at (0, 0, -2)); its top edge splits tiles between the wall (about 9
+    // units away) and the floor beyond it (about 12).
+    Mesh wall = shapes::box({30.0f, 3.0f, 1.0f});
+    wall.material = 0;
+    s.instances.push_back({s.addMesh(std::move(wall)), glm::translate(glm::mat4(1.0f), {0.0f, 1.5f, 6.0f})});
+    // Small lights in mid-air in that gap, on the rays just past the edge,
+    // touching neither surface.
+    for (int i = 0; i < 40; ++i) {
+        const float x = -8.0f + 0.4f * i, t = 1.12f + 0.1f * std::fmod(i * 0.618f, 1.0f);
+        const glm::vec3 edge(x, 3.0f, 5.5f), eye(0.0f, 7.0f, 11.0f);
+        test::addPointLight(s, eye + t * (edge - eye), {0.9f, 0.6f, 0.3f}, {1.0f, 0.0f, (255.0f * 0.9f - 1.0f) / 0.09f});
+    }
+    session->setScene(std::move(s));
+    session->knobs().setFromString("lighting.strategy", "tiled");
+    session->knobs().setFromString("lighting.tile_size", "16");
+
+    struct Run {
+        FloatImage lbuffer, overlap, counts;
+    };
+    auto run = [&](const char* threads, const char* mask) {
+        session->knobs().setFromString("lighting.tile_threads", threads);
+        session->knobs().setFromString("lighting.tile_depth_mask", mask);
+        session->render({{"lbuffer", "lighting.overlap", "lighting.tile_counts", "gbuffer.view_position"}});
+        return Run{session->readRaw("lbuffer"), session->readRaw("lighting.overlap"), session->readRaw("lighting.tile_counts")};
+    };
+    const Run base = run("256", "false");
+    const FloatImage P = session->readRaw("gbuffer.view_position");
+    EXPECT_GT(test::stats(base.lbuffer, 0).max, 0.0);
+    for (const char* threads : {"256", "0", "8", "1", "100"})
+        for (const char* mask : {"false", "true"}) {
+            const Run r = run(threads, mask);
+            EXPECT_EQ(test::maxAbsDifference(r.lbuffer, base.lbuffer, 4), 0.0) << threads << " threads, mask " << mask;
+            EXPECT_EQ(test::maxAbsDifference(r.overlap, base.overlap, 1), 0.0) << threads << " threads, mask " << mask;
+            if (std::string(mask) == "false") {
+                EXPECT_EQ(test::maxAbsDifference(r.counts, base.counts, 1), 0.0) << threads << " threads";
+            }
+        }
+
+    const Run masked = run("0", "true");
+    const LightTable& table = session->pipeline().pass<LightTablePass>()->table();
+    double withMask = 0.0, without = 0.0;
+    int surfaces = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            if (P.at(x, y, 3) == 0.0f) continue;
+            const glm::vec3 p(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2));
+            int reaching = 0;
+            for (const LightGpu& row : table.rows)
+                reaching += row.positionRadius.w > 0.0f &&
+                            glm::length(p - glm::vec3(row.positionRadius)) < row.positionRadius.w * 0.9999f;
+            const float m = masked.counts.at(x, y, 0), b = base.counts.at(x, y, 0);
+            EXPECT_GE(m, reaching) << x << "," << y;
+            EXPECT_LE(m, b) << x << "," << y;
+            withMask += m;
+            without += b;
+            ++surfaces;
+        }
+    std::printf("lights listed per surface pixel: %.2f with the depth mask, %.2f without\n", withMask / surfaces,
+                without / surfaces);
+    EXPECT_LT(withMask, 0.9 * without);
+}
+
 // lighting.overlap under tiled and clustered counts the lights each pixel
 // shaded: those of its tile's or cluster's list that reach the pixel's
 // surface (the grid tests the radius, and a spot light's cone, before
