@@ -24,6 +24,7 @@ void LightShading::uploadVolumeBatch(const LightTable& table, const std::vector<
     batchVertices_.clear();
     batchIndices_.clear();
     batchIndexStart_.assign(1, 0u);
+    batchVertexStart_.assign(1, 0u);
     for (const std::uint32_t row : rows) {
         const bool cone = table.entries[row].volume.shape == VolumeShape::Cone;
         const VolumeMesh& mesh = cone ? unitConeVolume() : unitSphereVolume(sphereSubdivisions_);
@@ -32,6 +33,7 @@ void LightShading::uploadVolumeBatch(const LightTable& table, const std::vector<
         for (const glm::vec3& p : mesh.positions) batchVertices_.push_back({glm::vec3(m * glm::vec4(p, 1.0f)), static_cast<float>(row)});
         for (const std::uint32_t i : mesh.indices) batchIndices_.push_back(base + i);
         batchIndexStart_.push_back(static_cast<std::uint32_t>(batchIndices_.size()));
+        batchVertexStart_.push_back(static_cast<std::uint32_t>(batchVertices_.size()));
     }
     if (batchVertices_.empty()) return;
     batchVertexBuffer_.ensureSize(batchVertices_.size() * sizeof(BatchVertex), "light volume batch vertices");
@@ -51,8 +53,11 @@ void LightShading::drawVolumeBatch(const gl::Program& program, int first, int co
     const std::uint32_t end = batchIndexStart_[static_cast<std::size_t>(first + count)];
     program.set(0, -1);
     batchVao_.bind();
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(end - begin), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(static_cast<std::uintptr_t>(begin) * sizeof(std::uint32_t)));
+    // The lights of a batch are consecutive, so are their vertices: the range
+    // spares the driver a scan of the indices for their bounds.
+    glDrawRangeElements(GL_TRIANGLES, batchVertexStart_[static_cast<std::size_t>(first)],
+                        batchVertexStart_[static_cast<std::size_t>(first + count)] - 1, static_cast<GLsizei>(end - begin),
+                        GL_UNSIGNED_INT, reinterpret_cast<const void*>(static_cast<std::uintptr_t>(begin) * sizeof(std::uint32_t)));
 }
 
 std::pair<glm::vec3, glm::vec3> LightShading::localBox(VolumeShape shape) const {

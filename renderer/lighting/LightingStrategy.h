@@ -66,7 +66,7 @@ private:
         float row;
     };
     mutable std::vector<BatchVertex> batchVertices_;
-    mutable std::vector<std::uint32_t> batchIndices_, batchIndexStart_;
+    mutable std::vector<std::uint32_t> batchIndices_, batchIndexStart_, batchVertexStart_;
     mutable gl::Buffer batchVertexBuffer_, batchIndexBuffer_;
     mutable gl::VertexArray batchVao_;
     gl::FullscreenTriangle triangle_;

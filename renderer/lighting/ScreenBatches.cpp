@@ -1,6 +1,7 @@
 #include "renderer/lighting/ScreenBatches.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -32,29 +33,45 @@ std::vector<int> disjointBatches(const std::vector<PixelRect>& rects, int width,
     if (width <= 0 || height <= 0) return batchOf;
     const int cell = std::max({1, (width + 63) / 64, (height + 63) / 64});
     const int cols = (width + cell - 1) / cell, rows = (height + cell - 1) / cell;
-    const int words = (cols * rows + 63) / 64;
-    std::vector<std::vector<std::uint64_t>> used;  // per batch, one bit per cell
-    auto cellsOf = [&](const PixelRect& r, auto&& visit) {
-        for (int cy = r.y0 / cell; cy <= (r.y1 - 1) / cell; ++cy)
-            for (int cx = r.x0 / cell; cx <= (r.x1 - 1) / cell; ++cx)
-                if (!visit(cy * cols + cx)) return false;
-        return true;
-    };
+    // Per cell, one bit per batch that holds a rectangle over it, in words
+    // of 64 batches; `words` grows (and the table is laid out again) when the
+    // batches outgrow it. First fit is then the lowest bit that is clear in
+    // every cell of the rectangle, looked for a word at a time.
+    std::size_t words = 1;
+    std::vector<std::uint64_t> used(static_cast<std::size_t>(cols * rows) * words, 0u);
+    int batches = 0;
     for (std::size_t i = 0; i < rects.size(); ++i) {
         const PixelRect& r = rects[i];
         if (r.empty()) continue;
-        std::size_t b = 0;
-        for (; b < used.size(); ++b) {
-            std::vector<std::uint64_t>& bits = used[b];
-            if (cellsOf(r, [&](int c) { return (bits[static_cast<std::size_t>(c / 64)] >> (c % 64) & 1u) == 0; })) break;
+        const int cx0 = r.x0 / cell, cx1 = (r.x1 - 1) / cell, cy0 = r.y0 / cell, cy1 = (r.y1 - 1) / cell;
+        int b = -1;
+        for (std::size_t w = 0; b < 0; ++w) {
+            if (w == words) {  // every batch so far meets the rectangle: a new one
+                b = batches;
+                break;
+            }
+            std::uint64_t taken = 0;
+            for (int cy = cy0; cy <= cy1 && taken != ~std::uint64_t{0}; ++cy)
+                for (int cx = cx0; cx <= cx1; ++cx) taken |= used[static_cast<std::size_t>(cy * cols + cx) * words + w];
+            if (taken != ~std::uint64_t{0}) b = static_cast<int>(w * 64) + std::countr_one(taken);
         }
-        if (b == used.size()) used.emplace_back(static_cast<std::size_t>(words), 0u);
-        std::vector<std::uint64_t>& bits = used[b];
-        cellsOf(r, [&](int c) {
-            bits[static_cast<std::size_t>(c / 64)] |= std::uint64_t{1} << (c % 64);
-            return true;
-        });
-        batchOf[i] = static_cast<int>(b);
+        b = std::min(b, batches);  // a clear bit past the last batch is a new batch
+        if (b == batches) {
+            ++batches;
+            if (static_cast<std::size_t>(batches) > words * 64) {
+                std::vector<std::uint64_t> wider(static_cast<std::size_t>(cols * rows) * words * 2, 0u);
+                for (std::size_t c = 0; c < static_cast<std::size_t>(cols * rows); ++c)
+                    std::copy_n(used.begin() + static_cast<std::ptrdiff_t>(c * words), words,
+                                wider.begin() + static_cast<std::ptrdiff_t>(c * words * 2));
+                used.swap(wider);
+                words *= 2;
+            }
+        }
+        const std::size_t w = static_cast<std::size_t>(b) / 64;
+        const std::uint64_t bit = std::uint64_t{1} << (b % 64);
+        for (int cy = cy0; cy <= cy1; ++cy)
+            for (int cx = cx0; cx <= cx1; ++cx) used[static_cast<std::size_t>(cy * cols + cx) * words + w] |= bit;
+        batchOf[i] = b;
     }
     return batchOf;
 }

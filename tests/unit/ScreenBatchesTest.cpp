@@ -57,6 +57,41 @@ TEST(ScreenBatches, DisjointRectanglesShareOneBatch) {
     EXPECT_EQ(disjointBatches({{10, 10, 20, 20}, {10, 10, 20, 20}}, 64, 36), (std::vector<int>{0, 1}));
 }
 
+// The batches are first fit over the grid cells: each rectangle goes into the
+// lowest batch none of whose rectangles shares a cell with it. Checked against
+// that rule written out plainly, with more than 64 batches (the bit table's
+// first word) and the grid's cells wider than a pixel.
+TEST(ScreenBatches, AreFirstFitOverTheCells) {
+    std::mt19937 rng(11);
+    const int W = 640, H = 360, cell = 10;  // a 64 x 36 grid
+    std::uniform_int_distribution<int> x(0, W - 1), y(0, H - 1), size(1, 120);
+    std::vector<PixelRect> rects;
+    for (int i = 0; i < 1500; ++i) {
+        const int x0 = x(rng), y0 = y(rng);
+        rects.push_back({x0, y0, std::min(W, x0 + size(rng)), std::min(H, y0 + size(rng))});
+    }
+    for (int i = 0; i < 150; ++i) rects.push_back({300, 150, 340, 170});  // 150 on one spot
+    const std::vector<int> batch = disjointBatches(rects, W, H);
+    auto cellsMeet = [&](const PixelRect& a, const PixelRect& b) {
+        return a.x0 / cell <= (b.x1 - 1) / cell && b.x0 / cell <= (a.x1 - 1) / cell && a.y0 / cell <= (b.y1 - 1) / cell &&
+               b.y0 / cell <= (a.y1 - 1) / cell;
+    };
+    std::vector<int> expected(rects.size(), 0);
+    std::vector<std::vector<std::size_t>> members;
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        std::size_t b = 0;
+        while (b < members.size() &&
+               std::any_of(members[b].begin(), members[b].end(), [&](std::size_t j) { return cellsMeet(rects[i], rects[j]); }))
+            ++b;
+        if (b == members.size()) members.emplace_back();
+        members[b].push_back(i);
+        expected[i] = static_cast<int>(b);
+    }
+    std::printf("%zu rectangles: %zu batches\n", rects.size(), members.size());
+    EXPECT_GT(members.size(), 150u);
+    EXPECT_EQ(batch, expected);
+}
+
 TEST(ScreenBatches, RectangleHoldsTheProjectedVolume) {
     const int W = 320, H = 180;
     const glm::dmat4 proj = glm::perspective(glm::radians(60.0), double(W) / H, 0.1, 100.0);
@@ -88,19 +123,24 @@ TEST(ScreenBatches, RectangleHoldsTheProjectedVolume) {
     EXPECT_EQ(whole.y1, H);
 }
 
-TEST(AutoStrategy, ClusteredWhenLargeLightsCoverTheScreenManyTimes) {
-    const AutoStrategyThresholds at{20.0, 0.04};
-    // The measured cases (docs/bench.md): many small lights stay with volumes,
-    // many large ones go to the grid.
-    EXPECT_STREQ(chooseLightingStrategy({2587, 43.36}, at).strategy, "stencil_volumes");
-    EXPECT_STREQ(chooseLightingStrategy({96, 23.41}, at).strategy, "clustered");
-    EXPECT_STREQ(chooseLightingStrategy({262, 17.40}, at).strategy, "stencil_volumes");
+TEST(AutoStrategy, VolumesTiledOrClusteredByScreenCoverage) {
+    const AutoStrategyThresholds at{4.0, 65.0};
+    // The measured cases (docs/bench.md, "auto"): lights in view, coverage, the faster strategy.
+    EXPECT_STREQ(chooseLightingStrategy({83, 1.48}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({27, 1.20}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({87, 6.05}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({29, 5.29}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({2587, 43.36}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({893, 55.91}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({291, 76.01}, at).strategy, "clustered");
+    EXPECT_STREQ(chooseLightingStrategy({2699, 161.91}, at).strategy, "clustered");
     EXPECT_STREQ(chooseLightingStrategy({0, 0.0}, at).strategy, "stencil_volumes");
     // No light in view: nothing to choose between, and the reason says so
     // (not a threshold comparison that reads as met).
     EXPECT_EQ(chooseLightingStrategy({0, 0.0}, {0.0, 0.0}).why, "no bounded lights in view");
     // Both thresholds are inclusive.
-    EXPECT_STREQ(chooseLightingStrategy({500, 20.0}, at).strategy, "clustered");
+    EXPECT_STREQ(chooseLightingStrategy({500, 4.0}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({500, 65.0}, at).strategy, "clustered");
     EXPECT_EQ(chooseLightingStrategy({96, 23.41}, at).why,
-              "96 lights in view, screen coverage 23.41 (>= 20.00), 0.2439 of the screen each (>= 0.0400)");
+              "96 lights in view, screen coverage 23.41 (>= 4.00, < 65.00), 0.2439 of the screen each");
 }
