@@ -8,6 +8,7 @@
 // so `bench merge` can join shards from CSV alone and recompute the table.
 // Needs no GL.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,10 @@ struct BenchConfigResult {
     // over all pixels, and over the pixels at least one light reached. NaN
     // when not measured.
     double lpp = 0.0, lppLit = 0.0;
+    // Each pass's own statistics line (PassRecord::stats) of the last counted
+    // frame, e.g. the lighting pass's strategy, counts and auto's choice.
+    // Only in this run's JSON: the CSV (and so bench merge) does not carry it.
+    std::map<std::string, std::string> stats;
 };
 
 using BenchFields = std::vector<std::pair<std::string, std::string>>;  // ordered name -> value

@@ -254,6 +254,10 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
                 results.samples.push_back(std::move(b));
             }
     }
+    for (auto& r : results.configs)
+        if (auto it = lastReport.find(r.config.index); it != lastReport.end())
+            for (const PassRecord& rec : it->second.passes)
+                if (rec.ran && !rec.stats.empty()) r.stats[rec.name] = rec.stats;
     // Each frame's series in pipeline order (passes, each followed by its spans), the frame total last.
     std::map<int, std::map<std::string, int>> rank;
     for (auto& [config, report] : lastReport) {

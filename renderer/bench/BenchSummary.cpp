@@ -288,6 +288,7 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
                 j["ci95"] = nullptr;
             }
         }
+        if (!c.stats.empty()) j["stats"] = c.stats;
         j["samples"] = samples.count(c.config.index) ? samples[c.config.index] : Json::array();
         configs.push_back(std::move(j));
     }

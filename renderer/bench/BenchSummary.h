@@ -60,8 +60,9 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
 
 // {"tool", "machine", "settings", "axes", "baseline", "configs": [{config,
 // size, width, height, lights, knobs, lpp, lpp_lit, frames, series: {name:
-// {gpu_ms, cpu_ms}}, ratio, ci95, baseline_config, samples: [{sample, seq,
-// frame, gpu_ms: {series: ms}, cpu_ms: {...}}]}]}
+// {gpu_ms, cpu_ms}}, ratio, ci95, baseline_config, stats: {pass: line} (when
+// recorded), samples: [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms:
+// {...}}]}]}
 std::string benchJson(const BenchResults& results, const BenchSummary& summary);
 void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary);
 

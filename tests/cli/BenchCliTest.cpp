@@ -110,6 +110,9 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
         EXPECT_TRUE(c["samples"][0]["gpu_ms"].contains("lighting"));
         EXPECT_TRUE(c["series"].contains("lighting"));
         ASSERT_TRUE(c["lpp"].is_number()) << c.dump();
+        // The lighting pass's own line: which strategy lit, and how many lights.
+        ASSERT_TRUE(c["stats"].contains("lighting")) << c.dump();
+        EXPECT_NE(c["stats"]["lighting"].get<std::string>().find(strategy), std::string::npos) << c["stats"].dump();
         // The full-screen strategy shades every light on every pixel it lights.
         if (strategy == "fullscreen") {
             EXPECT_NEAR(c["lpp_lit"].get<double>(), c["lights"].get<double>(), 1e-3) << c["size"];
