@@ -7,17 +7,28 @@
 // times the stencil strategy rasterises each pixel.
 //
 // Light volumes (stencil_volumes) pay for every pixel each volume covers
-// (marked, and shaded where a surface is inside); the clustered grid pays a
-// fixed cost per pixel (the cluster build and a full-screen pass) plus the
-// lists it walks, about proportional to the coverage whatever the lights'
-// size. Measured (docs/bench.md, "auto"), the grid wins when the lights cover
-// the screen many times over AND each light is large on screen: many small
-// lights (radius 1 in the default scene, 2587 in view covering it 43 times,
-// 1.3% of the screen each) still favour volumes, 96 large ones (23 times,
-// 24% each) favour the grid 1.5x. So: clustered when coverage >= C and
-// coverage / lights >= S, stencil_volumes otherwise, C and S the knobs
-// lighting.auto_coverage and lighting.auto_light_size. Depth complexity (how
-// many surfaces stack per pixel) is not an input yet.
+// (marked, and shaded where a surface is inside) plus two draws per batch;
+// the grid strategies pay a fixed cost per pixel (depth bounds, a walk over
+// every pixel) plus the lists they walk, which grow with the coverage.
+// Measured (docs/bench.md, "auto"; lighting pass at 640x360 in the default
+// scene): volumes win while the lights cover the screen a few times over at
+// most (83 lights of radius 1, coverage 1.5: 10.1 ms against tiled's 13.7);
+// tiled wins from there (87 lights of radius 2, coverage 6.1: 13.9 against
+// 19.1; 893 lights, coverage 56: 37 against 147); clustered wins over tiled
+// once the coverage is very high (291 lights of radius 4, coverage 76: 43
+// against 49; 2699 of radius 2, coverage 162: 94 against 116), because a
+// tile's list holds every light over the tile's whole depth range and a
+// cluster's only those of its slice. So:
+//   coverage < C   -> stencil_volumes
+//   coverage >= K  -> clustered
+//   otherwise      -> tiled
+// C and K the knobs lighting.auto_coverage and lighting.auto_cluster_coverage.
+// The mean light's share of the screen (coverage / lights) did not decide
+// anything the coverage did not, so it is reported but not used. Depth
+// complexity (how many surfaces stack per pixel) is not an input: the
+// G-buffer keeps one surface per pixel, so it changes none of these
+// strategies' lighting cost; the depth range a tile spans is what separates
+// tiled from clustered, and the coverage grows with it.
 #include <string>
 
 namespace dw {
@@ -28,8 +39,8 @@ struct AutoStrategyInputs {
 };
 
 struct AutoStrategyThresholds {
-    double coverage = 0.0;   // C: screens covered, summed over the lights
-    double lightSize = 0.0;  // S: the mean light's screen rectangle, as a fraction of the screen
+    double coverage = 0.0;         // C: screens covered, summed over the lights, from which tiled
+    double clusterCoverage = 0.0;  // K: and from which clustered
 };
 
 struct AutoStrategyChoice {

@@ -32,17 +32,18 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
         description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + strategies_.back()->description();
     }
     names.emplace_back("auto");
-    description += "; auto: per frame, clustered when the bounded lights in view cover the screen "
-                   "lighting.auto_coverage times over and each covers lighting.auto_light_size of it on average, "
-                   "else stencil_volumes (the statistics say which and why)";
+    description += "; auto: per frame, stencil_volumes while the bounded lights in view cover the screen fewer than "
+                   "lighting.auto_coverage times over, clustered from lighting.auto_cluster_coverage times, tiled "
+                   "between (the statistics say which and why)";
     autoChoice_ = static_cast<int>(names.size()) - 1;
     strategy_ = knobs.addEnum("lighting.strategy", names, 0, "lighting", description);
     autoCoverage_ = knobs.addFloat("lighting.auto_coverage", kAutoCoverage, 0.0, 1e6, "lighting",
                                    "auto: the screen coverage (the bounded lights' screen rectangles summed, in "
-                                   "screens) from which the clustered strategy may be picked (docs/bench.md)");
-    autoLightSize_ = knobs.addFloat("lighting.auto_light_size", kAutoLightSize, 0.0, 1.0, "lighting",
-                                    "auto: and the mean light's screen rectangle (a fraction of the screen) from "
-                                    "which it is picked; smaller lights stay with stencil_volumes (docs/bench.md)");
+                                   "screens) from which a grid strategy (tiled or clustered) is picked instead of "
+                                   "stencil_volumes (docs/bench.md)");
+    autoClusterCoverage_ = knobs.addFloat("lighting.auto_cluster_coverage", kAutoClusterCoverage, 0.0, 1e6, "lighting",
+                                          "auto: the screen coverage from which clustered is picked instead of tiled "
+                                          "(docs/bench.md)");
     attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, "classic", "lighting",
                                  "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
                                  "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");
@@ -118,7 +119,8 @@ LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std:
         const PixelRect r = screenRect(worldToClip * glm::dmat4(e->volume.transform), lo, hi, ctx.width, ctx.height);
         if (!r.empty()) in.coverage += double(r.x1 - r.x0) * (r.y1 - r.y0) / (double(ctx.width) * ctx.height);
     }
-    const AutoStrategyChoice c = chooseLightingStrategy(in, {ctx.knobs.get(autoCoverage_), ctx.knobs.get(autoLightSize_)});
+    const AutoStrategyChoice c = chooseLightingStrategy(
+        in, {ctx.knobs.get(autoCoverage_), ctx.knobs.get(autoClusterCoverage_)});
     autoWhy_ = "auto picked " + std::string(c.strategy) + ": " + c.why;
     for (const auto& s : strategies_)
         if (std::string(s->name()) == c.strategy) return *s;

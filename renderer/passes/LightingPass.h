@@ -47,10 +47,10 @@ public:
     const Counts& lastCounts() const { return counts_; }
     // The strategy the last frame used (what auto picked, under auto).
     const std::string& lastStrategy() const { return lastStrategy_; }
-    // lighting.auto_coverage and lighting.auto_light_size defaults: measured
-    // on llvmpipe at 320x180 and 640x360 (docs/bench.md, "auto").
-    static constexpr double kAutoCoverage = 20.0;
-    static constexpr double kAutoLightSize = 0.04;
+    // lighting.auto_coverage and lighting.auto_cluster_coverage defaults:
+    // measured on llvmpipe at 640x360 (docs/bench.md, "auto").
+    static constexpr double kAutoCoverage = 4.0;
+    static constexpr double kAutoClusterCoverage = 65.0;
     // The strategies, in the order of lighting.strategy's choices.
     const std::vector<std::unique_ptr<LightingStrategy>>& strategies() const { return strategies_; }
 
@@ -78,7 +78,7 @@ private:
     Counts counts_;
     std::string stats_, autoWhy_, lastStrategy_;
     int autoChoice_ = 0;  // lighting.strategy's index of "auto"
-    FloatKnob autoCoverage_, autoLightSize_;
+    FloatKnob autoCoverage_, autoClusterCoverage_;
     BoolKnob directionalInGBuffer_;  // declared by the geometry pass
 };
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/lighting/LightVolume.h"
@@ -456,32 +457,31 @@ TEST(TiledLighting, GridStrategiesMatchTheCpuShadingEquation) {
     EXPECT_LE(worstOf[2], worstOf[0]);
 }
 
-// lighting.strategy = auto: below either threshold it lights with
-// stencil_volumes, from both on with clustered, and the image is that
-// strategy's image; the statistics line says which it picked and why.
-TEST(TiledLighting, AutoPicksByCoverageAndLightSizeAndRendersThatStrategy) {
+// lighting.strategy = auto: below lighting.auto_coverage it lights with
+// stencil_volumes, from there with tiled, and from
+// lighting.auto_cluster_coverage with clustered; the image is that strategy's
+// image, and the statistics line says which it picked and why.
+TEST(TiledLighting, AutoPicksByCoverageAndRendersThatStrategy) {
     auto session = test::makeSession(96, 54);
     session->setScene(test::straddleScene(0));
     const auto* lighting = session->pipeline().pass<LightingPass>();
-    const FloatImage stencil = lbufferWith(*session, "stencil_volumes");
-    const FloatImage clustered = lbufferWith(*session, "clustered");
+    std::map<std::string, FloatImage> images;
+    for (const char* s : {"stencil_volumes", "tiled", "clustered"}) images[s] = lbufferWith(*session, s);
     struct Case {
         const char* coverage;
-        const char* size;
+        const char* clusterCoverage;
         const char* expected;
     };
-    for (const Case c : {Case{"1000", "0", "stencil_volumes"}, Case{"0", "0.9", "stencil_volumes"},
-                         Case{"0.5", "0.001", "clustered"}}) {
+    for (const Case c : {Case{"1000", "1000", "stencil_volumes"}, Case{"0.5", "1000", "tiled"},
+                         Case{"0.5", "0.5", "clustered"}}) {
         session->knobs().setFromString("lighting.auto_coverage", c.coverage);
-        session->knobs().setFromString("lighting.auto_light_size", c.size);
+        session->knobs().setFromString("lighting.auto_cluster_coverage", c.clusterCoverage);
         const FloatImage image = lbufferWith(*session, "auto");
-        EXPECT_EQ(lighting->lastStrategy(), c.expected) << c.coverage << " " << c.size;
+        EXPECT_EQ(lighting->lastStrategy(), c.expected) << c.coverage << " " << c.clusterCoverage;
         const std::string stats = lighting->stats();
         EXPECT_NE(stats.find(std::string("auto picked ") + c.expected), std::string::npos) << stats;
-        const FloatImage& want = std::string(c.expected) == "clustered" ? clustered : stencil;
-        double worst = 0.0;
-        for (std::size_t i = 0; i < image.pixels.size(); ++i) worst = std::max(worst, double(std::fabs(image.pixels[i] - want.pixels[i])));
-        EXPECT_EQ(worst, 0.0) << c.expected;
-        std::printf("auto (coverage >= %s and light size >= %s): %s\n", c.coverage, c.size, stats.c_str());
+        EXPECT_EQ(test::maxAbsDifference(image, images.at(c.expected), 4), 0.0) << c.expected;
+        std::printf("auto (tiled from coverage %s, clustered from %s): %s\n", c.coverage, c.clusterCoverage,
+                    stats.c_str());
     }
 }
