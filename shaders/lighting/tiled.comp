@@ -12,7 +12,9 @@
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
 //      surface (the same lightReaches and lightRadiance as light.frag) into
-//      the L-buffer with one read-modify-write.
+//      the L-buffer with one read-modify-write. An invocation with several
+//      pixels walks the list for WALK of them at once, so each listed
+//      light's texels are fetched once for all of them.
 // Light data comes from the candidates' buffer texture (tiles.glsl). On
 // llvmpipe walking the index list costs a third of walking the bits with
 // findLSB (lighting pass at 1000 lights, 640x360: docs/bench.md).
@@ -51,6 +53,8 @@ layout(location = 4) uniform int uFlags;
 #define WORDS (MAX_CANDIDATES / 32)
 #define TILE_PIXELS (TILE_SIZE * TILE_SIZE)
 #define PIXELS_PER_THREAD ((TILE_PIXELS + TILE_THREADS - 1) / TILE_THREADS)
+// Pixels per walk of the list: 4 measured best on llvmpipe (docs/bench.md).
+#define WALK (PIXELS_PER_THREAD < 4 ? PIXELS_PER_THREAD : 4)
 
 shared uint sDepthMin, sDepthMax;
 shared uint sDepthSlices;  // DEPTH_MASK: bit k set when slice k holds a surface
@@ -74,6 +78,18 @@ ivec2 tilePixel(uint k) {
 bool pixelInTile(uint k, ivec2 size) {
     return gl_LocalInvocationIndex + k * uint(TILE_THREADS) < uint(TILE_PIXELS) &&
            all(lessThan(tilePixel(k), size));
+}
+
+// Adds a pixel's sum into the L-buffer and writes its counts. Each pixel
+// belongs to one invocation, and the L-buffer's earlier writes (ambient,
+// directional lights) came through the framebuffer before this dispatch.
+void writePixel(ivec2 px, vec3 sum, uint shaded, uint tileLights) {
+    if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
+    if ((uFlags & FLAG_COUNT_OVERLAP) != 0) imageStore(uOverlap, px, imageLoad(uOverlap, px) + vec4(float(shaded)));
+    if ((uFlags & FLAG_TILE_COUNTS) != 0) {
+        float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
+        imageStore(uTileCounts, px, vec4(before + float(tileLights)));
+    }
 }
 
 void main() {
@@ -177,31 +193,40 @@ void main() {
     // Shaded candidates come first in candidate order.
     uint toShade = (uFlags & FLAG_SHADE) != 0 ? sShadedListed : 0u;
 
-    for (uint k = 0u; k < uint(PIXELS_PER_THREAD); ++k) {
-        if (!pixelInTile(k, size)) continue;
-        ivec2 px = tilePixel(k);
-        vec3 sum = vec3(0.0);
-        uint shaded = 0u;
-        Surface s = readSurface(px);
-        if (toShade > 0u && isSurface(s)) {
+    for (uint k = 0u; k < uint(PIXELS_PER_THREAD); k += uint(WALK)) {
+        bool inside[WALK], lit[WALK];
+        Surface surf[WALK];
+        vec3 sum[WALK];
+        uint shaded[WALK];
+        bool any = false;
+        for (int j = 0; j < WALK; ++j) {
+            inside[j] = k + uint(j) < uint(PIXELS_PER_THREAD) && pixelInTile(k + uint(j), size);
+            surf[j] = readSurface(min(tilePixel(k + uint(j)), size - 1));  // (unused when outside)
+            lit[j] = inside[j] && isSurface(surf[j]);
+            any = any || lit[j];
+            sum[j] = vec3(0.0);
+            shaded[j] = 0u;
+        }
+        if (toShade > 0u && any) {
             for (uint e = 0u; e < toShade; ++e) {
                 int i = int(sList[e]);
                 vec4 pr = candidatePositionRadius(i);
-                if (pr.w > 0.0 && length(pr.xyz - s.position) > pr.w) continue;
+                bool near[WALK];
+                bool anyNear = false;
+                for (int j = 0; j < WALK; ++j) {
+                    near[j] = lit[j] && !(pr.w > 0.0 && length(pr.xyz - surf[j].position) > pr.w);
+                    anyNear = anyNear || near[j];
+                }
+                if (!anyNear) continue;
                 Light light = candidateLight(i);
-                if (!lightReaches(light, s.position)) continue;
-                sum += lightRadiance(light, s);
-                ++shaded;
+                for (int j = 0; j < WALK; ++j)
+                    if (near[j] && lightReaches(light, surf[j].position)) {
+                        sum[j] += lightRadiance(light, surf[j]);
+                        ++shaded[j];
+                    }
             }
         }
-        // Each pixel belongs to one invocation, and the L-buffer's earlier
-        // writes (ambient, directional lights) came through the framebuffer
-        // before this dispatch.
-        if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
-        if ((uFlags & FLAG_COUNT_OVERLAP) != 0) imageStore(uOverlap, px, imageLoad(uOverlap, px) + vec4(float(shaded)));
-        if ((uFlags & FLAG_TILE_COUNTS) != 0) {
-            float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
-            imageStore(uTileCounts, px, vec4(before + float(tileLights)));
-        }
+        for (int j = 0; j < WALK; ++j)
+            if (inside[j]) writePixel(tilePixel(k + uint(j)), sum[j], shaded[j], tileLights);
     }
 }
