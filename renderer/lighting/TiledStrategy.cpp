@@ -34,17 +34,18 @@ std::vector<OutputDecl> TiledStrategy::outputs() const {
              texture2D(GL_R32F), 1, true}};
 }
 
-int TiledStrategy::autoThreads(int tilePixels) {
+int TiledStrategy::simdLanes() {
     // llvmpipe names its vector width: "llvmpipe (LLVM 15.0.6, 256 bits)".
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer || !std::strstr(renderer, "llvmpipe")) return tilePixels;
+    if (!renderer || !std::strstr(renderer, "llvmpipe")) return 0;
     int bits = 0;
     if (const char* comma = std::strstr(renderer, ", ")) bits = std::atoi(comma + 2);
-    return std::clamp(bits >= 128 ? bits / 32 : 8, 1, tilePixels);
+    return bits >= 128 ? bits / 32 : 8;
 }
 
 void TiledStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
+    cpuLanes_ = simdLanes();
     candidates_.create();
 }
 
@@ -57,7 +58,7 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     const int tile = tileSizeOf(ctx.knobs, tileSize_);
     const int pixels = tile * tile;
     const int setThreads = ctx.knobs.get(tileThreads_);
-    const int threads = setThreads <= 0 ? autoThreads(pixels) : std::min(setThreads, pixels);
+    const int threads = std::min(setThreads > 0 ? setThreads : cpuLanes_ > 0 ? cpuLanes_ : pixels, pixels);
     const bool depthMask = ctx.knobs.get(depthMask_);
     gl::ShaderLibrary::Handle& handle = programs_[{tile, threads, depthMask}];
     if (!handle) {

@@ -3,13 +3,18 @@
 // a compute pass (shaders/lighting/tiled.comp) with one work group per screen
 // tile of lighting.tile_size pixels. Each group takes the nearest and farthest
 // depth of its tile's surfaces (gbuffer.depth), culls every light's bounding
-// sphere against the tile's frustum between them into a list in shared
-// memory, and adds all of the list's lights into the L-buffer (imageLoad /
+// sphere against the tile's frustum between them (and, with
+// lighting.tile_depth_mask, against the tile's depth slices that hold a
+// surface: 2.5D culling, Harada 2012) into a list in shared memory, and adds
+// the list's lights that reach each pixel into the L-buffer (imageLoad /
 // imageStore on lbuffer, after the ambient pass) with the light shader's
 // lightRadiance (shaders/lighting/shade.glsl), so the image is the volume
 // strategies'. Lights with a shadow map are shaded one at a time (see
 // LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
+// lighting.tile_threads sets the invocations per group; the image is the
+// same for every value and either depth-mask setting (each pixel sums its
+// reaching lights in candidate order).
 #include <map>
 #include <tuple>
 
@@ -36,13 +41,15 @@ public:
 private:
     // Culls (and shades, when `shade`) every tile.
     void dispatch(LightingFrame& frame, const LightLists& lists, bool shade);
-    // lighting.tile_threads = 0: one invocation per pixel, except on llvmpipe
-    // one SIMD batch (its vector width / 32 lanes), at most tilePixels.
-    static int autoThreads(int tilePixels);
+    // lighting.tile_threads = 0 means one invocation per pixel, except on
+    // llvmpipe one SIMD batch: its vector width / 32 lanes, which this
+    // returns (0 on other drivers).
+    static int simdLanes();
 
     IntKnob tileSize_;
     IntKnob tileThreads_;
     BoolKnob depthMask_;
+    int cpuLanes_ = 0;  // simdLanes() of the context setup ran in
     gl::ShaderLibrary* shaders_ = nullptr;
     // Per tile size, threads and depth mask, compiled on first use.
     std::map<std::tuple<int, int, bool>, gl::ShaderLibrary::Handle> programs_;
