@@ -11,24 +11,25 @@
 // the grid strategies pay a fixed cost per pixel (depth bounds, a walk over
 // every pixel) plus the lists they walk, which grow with the coverage.
 // Measured (docs/bench.md, "auto"; lighting pass at 640x360 in the default
-// scene): volumes win while the lights cover the screen a few times over at
-// most (83 lights of radius 1, coverage 1.5: 10.1 ms against tiled's 13.7);
-// tiled wins from there (87 lights of radius 2, coverage 6.1: 13.9 against
-// 19.1; 893 lights, coverage 56: 37 against 147); clustered wins over tiled
-// once the coverage is very high (291 lights of radius 4, coverage 76: 43
-// against 49; 2699 of radius 2, coverage 162: 94 against 116), because a
-// tile's list holds every light over the tile's whole depth range and a
-// cluster's only those of its slice. So:
+// scene on llvmpipe): volumes win while the lights cover the screen a few
+// times over at most (83 lights of radius 1, coverage 1.5: 8.8 ms against
+// tiled's 12.9); tiled wins from there (250 lights, coverage 4.6: 13.3
+// against 15.4; 893 lights of radius 2, coverage 56: 28.5 against 158).
+// A cluster's list holds only the lights of its depth slice, a tile's every
+// light across the tile's depth range, so with enough lights clustered
+// could overtake tiled; on llvmpipe it did not, up to coverage 657 (2923
+// lights of radius 4: 215 against 256 ms). So:
 //   coverage < C   -> stencil_volumes
 //   coverage >= K  -> clustered
 //   otherwise      -> tiled
-// C and K the knobs lighting.auto_coverage and lighting.auto_cluster_coverage.
-// The mean light's share of the screen (coverage / lights) did not decide
-// anything the coverage did not, so it is reported but not used. Depth
-// complexity (how many surfaces stack per pixel) is not an input: the
+// C and K the knobs lighting.auto_coverage (4) and
+// lighting.auto_cluster_coverage (1e6 by default: never, on this evidence;
+// a machine where clustered wins sets it from its own bench run). The mean
+// light's share of the screen (coverage / lights) is reported, not used.
+// Depth complexity (how many surfaces stack per pixel) is not an input: the
 // G-buffer keeps one surface per pixel, so it changes none of these
-// strategies' lighting cost; the depth range a tile spans is what separates
-// tiled from clustered, and the coverage grows with it.
+// strategies' lighting cost; what a tile's depth range spans is what
+// separates tiled from clustered, and the coverage grows with it.
 #include <string>
 
 namespace dw {

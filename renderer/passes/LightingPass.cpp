@@ -42,8 +42,9 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
                                    "screens) from which a grid strategy (tiled or clustered) is picked instead of "
                                    "stencil_volumes (docs/bench.md)");
     autoClusterCoverage_ = knobs.addFloat("lighting.auto_cluster_coverage", kAutoClusterCoverage, 0.0, 1e6, "lighting",
-                                          "auto: the screen coverage from which clustered is picked instead of tiled "
-                                          "(docs/bench.md)");
+                                          "auto: the screen coverage from which clustered is picked instead of tiled; "
+                                          "the default 1e6 means never: on llvmpipe tiled was faster at every "
+                                          "coverage measured, up to 657 (docs/bench.md)");
     attenuation_ = knobs.addEnum("lighting.attenuation", {"classic", "windowed"}, "classic", "lighting",
                                  "classic 1/(c + l d + q d^2), cut at the radius; or windowed, multiplied by "
                                  "1 - (d/r)^k so it reaches zero at the radius (Ferko, seed 000 eq. 3.5)");

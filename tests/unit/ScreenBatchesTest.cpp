@@ -12,6 +12,7 @@
 #include "renderer/lighting/AutoStrategy.h"
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/lighting/ScreenBatches.h"
+#include "renderer/passes/LightingPass.h"
 
 using namespace dw;
 
@@ -124,23 +125,27 @@ TEST(ScreenBatches, RectangleHoldsTheProjectedVolume) {
 }
 
 TEST(AutoStrategy, VolumesTiledOrClusteredByScreenCoverage) {
-    const AutoStrategyThresholds at{4.0, 65.0};
-    // The measured cases (docs/bench.md, "auto"): lights in view, coverage, the faster strategy.
+    // The defaults (LightingPass::kAutoCoverage, kAutoClusterCoverage) on the
+    // measured cases (docs/bench.md, "auto"): lights in view, coverage, and
+    // the faster strategy on llvmpipe.
+    const AutoStrategyThresholds at{LightingPass::kAutoCoverage, LightingPass::kAutoClusterCoverage};
+    EXPECT_STREQ(chooseLightingStrategy({25, 0.32}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({83, 1.48}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({27, 1.20}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({250, 4.60}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({87, 6.05}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({29, 5.29}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({2587, 43.36}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({893, 55.91}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({291, 76.01}, at).strategy, "clustered");
-    EXPECT_STREQ(chooseLightingStrategy({2699, 161.91}, at).strategy, "clustered");
+    EXPECT_STREQ(chooseLightingStrategy({2923, 657.39}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({0, 0.0}, at).strategy, "stencil_volumes");
     // No light in view: nothing to choose between, and the reason says so
     // (not a threshold comparison that reads as met).
     EXPECT_EQ(chooseLightingStrategy({0, 0.0}, {0.0, 0.0}).why, "no bounded lights in view");
-    // Both thresholds are inclusive.
-    EXPECT_STREQ(chooseLightingStrategy({500, 4.0}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({500, 65.0}, at).strategy, "clustered");
-    EXPECT_EQ(chooseLightingStrategy({96, 23.41}, at).why,
+    // Where clustered is set to win, from K on; both thresholds are inclusive.
+    const AutoStrategyThresholds withClusters{4.0, 65.0};
+    EXPECT_STREQ(chooseLightingStrategy({500, 4.0}, withClusters).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({500, 64.9}, withClusters).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({500, 65.0}, withClusters).strategy, "clustered");
+    EXPECT_EQ(chooseLightingStrategy({96, 23.41}, withClusters).why,
               "96 lights in view, screen coverage 23.41 (>= 4.00, < 65.00), 0.2439 of the screen each");
 }
