@@ -26,37 +26,49 @@ layout(std430, binding = LIGHT_SSBO) readonly buffer LightTable {
 // Distance attenuation; 0 outside the light's radius (the in-volume test of
 // seed 000 section 3.2.1, so every lighting strategy shades the same region).
 // windowed: Ferko's window 1 - (d/r)^k on top (lighting.attenuation).
+// The functions here have one exit and no early return: llvmpipe runs a
+// return inside a branch as masks over the rest of the function.
 float attenuate(Light light, float d, bool windowed, float windowExponent) {
     float radius = light.positionRadius.w;
-    if (radius > 0.0 && d > radius) return 0.0;
     vec3 k = light.attenuation.xyz;
     float att = 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
     if (windowed && radius > 0.0) att *= 1.0 - pow(d / radius, windowExponent);
-    return att;
+    return radius > 0.0 && d > radius ? 0.0 : att;
+}
+
+// A bounded light's attenuation times its spot factor at distance d in unit
+// direction L (from the point towards the light).
+float boundedLightScale(Light light, vec3 L, float d, bool windowed, float windowExponent) {
+    float scale = attenuate(light, d, windowed, windowExponent);
+    if (int(light.attenuation.w + 0.5) == LIGHT_SPOT) {
+        float cosTheta = dot(-L, light.directionCutoff.xyz);
+        scale *= cosTheta >= light.directionCutoff.w ? pow(max(cosTheta, 0.0), light.intensityExponent.w) : 0.0;
+    }
+    return scale;
+}
+
+// Blinn-Phong radiance towards the eye from a light of the given intensity
+// times scale, in unit direction L, seen from unit direction V; 0 where
+// scale <= 0 or the surface faces away from the light.
+vec3 blinnPhong(vec3 intensity, float scale, vec3 L, vec3 V, vec3 N, vec3 diffuse, vec3 specular, float exponent) {
+    float nDotL = dot(N, L);
+    vec3 H = normalize(L + V);
+    float spec = pow(max(dot(N, H), 0.0), exponent);
+    vec3 c = vec3(0.0);
+    if (scale > 0.0 && nDotL > 0.0) c = intensity * scale * (diffuse * nDotL + specular * spec);
+    return c;
 }
 
 // Radiance reflected towards the eye by one light at view-space point P.
 vec3 shadeLight(Light light, vec3 P, vec3 N, vec3 diffuse, vec3 specular, float exponent,
                 bool windowed, float windowExponent) {
-    int type = int(light.attenuation.w + 0.5);
-    vec3 L;
+    vec3 L = -light.directionCutoff.xyz;
     float scale = 1.0;
-    if (type == LIGHT_DIRECTIONAL) {
-        L = -light.directionCutoff.xyz;
-    } else {
+    if (int(light.attenuation.w + 0.5) != LIGHT_DIRECTIONAL) {
         vec3 toLight = light.positionRadius.xyz - P;
         float d = length(toLight);
         L = toLight / max(d, 1e-6);
-        scale = attenuate(light, d, windowed, windowExponent);
-        if (type == LIGHT_SPOT) {
-            float cosTheta = dot(-L, light.directionCutoff.xyz);
-            scale *= cosTheta >= light.directionCutoff.w ? pow(max(cosTheta, 0.0), light.intensityExponent.w) : 0.0;
-        }
+        scale = boundedLightScale(light, L, d, windowed, windowExponent);
     }
-    float nDotL = dot(N, L);
-    if (scale <= 0.0 || nDotL <= 0.0) return vec3(0.0);
-    vec3 V = normalize(-P);
-    vec3 H = normalize(L + V);
-    float spec = pow(max(dot(N, H), 0.0), exponent);
-    return light.intensityExponent.rgb * scale * (diffuse * nDotL + specular * spec);
+    return blinnPhong(light.intensityExponent.rgb, scale, L, normalize(-P), N, diffuse, specular, exponent);
 }

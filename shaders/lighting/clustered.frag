@@ -1,7 +1,7 @@
 #version 450 core
 // Clustered shading, step 3 (full screen): every surface pixel finds its
 // cluster and adds the lights of the cluster's list, the same lightRadiance
-// as light.frag, in one blended write.
+// as light.frag (shade.glsl's lightRadianceAt), in one blended write.
 #define CLUSTER_GRID_ACCESS readonly
 #define CLUSTER_INDEX_ACCESS readonly
 #define UNSHADOWED 1
@@ -23,15 +23,20 @@ void main() {
     uint shaded = 0u;
     if (isSurface(s)) {
         ClusterCell cell = cells[pixelCluster(px, -s.position.z)];
+        vec3 V = normalize(-s.position);
         for (uint k = 0u; k < cell.count; ++k) {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
-            // lightReaches' radius test first, on one texel: most listed lights miss.
+            // lightReaches' radius test first, on one texel: most listed
+            // lights miss; its distance is kept for the shading.
             vec4 pr = candidatePositionRadius(int(i));
-            if (pr.w > 0.0 && length(pr.xyz - s.position) > pr.w) continue;
+            vec3 toLight = pr.xyz - s.position;
+            float d = length(toLight);
+            if (pr.w > 0.0 && d > pr.w) continue;
             Light light = candidateLight(int(i));
-            if (!lightReaches(light, s.position)) continue;
-            sum += lightRadiance(light, s);
+            vec3 L = toLight / max(d, 1e-6);
+            if (!spotReaches(light, L)) continue;
+            sum += lightRadianceAt(light, s, L, d, V);
             ++shaded;
         }
     }

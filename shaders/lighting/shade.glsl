@@ -27,6 +27,25 @@ vec3 lightRadiance(Light light, Surface s) {
     return c;
 }
 
+#ifdef UNSHADOWED
+// lightRadiance of a bounded light for a caller that has already computed,
+// as shadeLight does, toLight = position - P, d = length(toLight),
+// L = toLight / max(d, 1e-6) and V = normalize(-P) (the grid strategies
+// compute d for their radius test and V once per pixel): the same
+// operations, so the same value.
+vec3 lightRadianceAt(Light light, Surface s, vec3 L, float d, vec3 V) {
+    return blinnPhong(light.intensityExponent.rgb,
+                      boundedLightScale(light, L, d, lightingParams.windowed != 0, lightingParams.windowExponent), L,
+                      V, s.normal, s.diffuse, s.specular, s.exponent);
+}
+
+// lightReaches for the same caller: d already within the radius (or the
+// light unbounded), L as above.
+bool spotReaches(Light light, vec3 L) {
+    return int(light.attenuation.w + 0.5) != LIGHT_SPOT || dot(-L, light.directionCutoff.xyz) >= light.directionCutoff.w;
+}
+#endif
+
 // Whether `light` (or light-table row `row`) can light the surface point P: inside its
 // radius (the test attenuate() makes) and, for a spot light, inside its
 // cone (shadeLight's test, with the same operations so both agree at the

@@ -11,7 +11,8 @@
 //   3. turns the bit list into a list of candidate indices in shared memory
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
-//      surface (the same lightReaches and lightRadiance as light.frag) into
+//      surface (lightReaches and lightRadiance as light.frag, computing
+//      each light's distance and each pixel's view direction once) into
 //      the L-buffer with one read-modify-write. An invocation with several
 //      pixels walks the list for WALK of them at once, so each listed
 //      light's texels are fetched once for all of them.
@@ -196,12 +197,14 @@ void main() {
     for (uint k = 0u; k < uint(PIXELS_PER_THREAD); k += uint(WALK)) {
         bool inside[WALK], lit[WALK];
         Surface surf[WALK];
+        vec3 V[WALK];
         vec3 sum[WALK];
         uint shaded[WALK];
         bool any = false;
         for (int j = 0; j < WALK; ++j) {
             inside[j] = k + uint(j) < uint(PIXELS_PER_THREAD) && pixelInTile(k + uint(j), size);
             surf[j] = readSurface(min(tilePixel(k + uint(j)), size - 1));  // (unused when outside)
+            V[j] = normalize(-surf[j].position);
             lit[j] = inside[j] && isSurface(surf[j]);
             any = any || lit[j];
             sum[j] = vec3(0.0);
@@ -211,19 +214,29 @@ void main() {
             for (uint e = 0u; e < toShade; ++e) {
                 int i = int(sList[e]);
                 vec4 pr = candidatePositionRadius(i);
+                // lightReaches' radius test on one texel; its distance is
+                // kept for the shading.
                 bool near[WALK];
+                vec3 toLight[WALK];
+                float dist[WALK];
                 bool anyNear = false;
                 for (int j = 0; j < WALK; ++j) {
-                    near[j] = lit[j] && !(pr.w > 0.0 && length(pr.xyz - surf[j].position) > pr.w);
+                    toLight[j] = pr.xyz - surf[j].position;
+                    dist[j] = length(toLight[j]);
+                    near[j] = lit[j] && !(pr.w > 0.0 && dist[j] > pr.w);
                     anyNear = anyNear || near[j];
                 }
                 if (!anyNear) continue;
                 Light light = candidateLight(i);
-                for (int j = 0; j < WALK; ++j)
-                    if (near[j] && lightReaches(light, surf[j].position)) {
-                        sum[j] += lightRadiance(light, surf[j]);
+                // No early exit in this loop: on llvmpipe a continue here
+                // costs more than it saves.
+                for (int j = 0; j < WALK; ++j) {
+                    vec3 L = toLight[j] / max(dist[j], 1e-6);
+                    if (near[j] && spotReaches(light, L)) {
+                        sum[j] += lightRadianceAt(light, surf[j], L, dist[j], V[j]);
                         ++shaded[j];
                     }
+                }
             }
         }
         for (int j = 0; j < WALK; ++j)
