@@ -1,6 +1,7 @@
 #include "renderer/lighting/TiledStrategy.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <tuple>
@@ -11,8 +12,13 @@ namespace dw {
 
 namespace {
 constexpr const char* kTileCounts = "lighting.tile_counts";
-// MAX_CANDIDATES in shaders/lighting/tiled.comp: the bits of its shared-memory list.
+// MAX_CANDIDATES of shaders/lighting/tiled.comp and tiled_coarse.comp: the
+// bits of their shared-memory lists.
 constexpr int kMaxCandidatesPerDispatch = 4096;
+// COARSE: tiles per edge of a coarse tile (tiled_coarse.comp). 4 x 4 tiles of
+// 16 pixels: at 10 000 lights, 640x360, the coarse pass costs about 2 ms and
+// cuts the tiles' culling from about 25 ms to a few (docs/bench.md).
+constexpr int kCoarseTiles = 4;
 }
 
 TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKnob(knobs)) {
@@ -25,6 +31,10 @@ TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKno
                                "tiled: a light must also span one of 32 depth slices of the tile that holds a surface "
                                "(2.5D culling, Harada 2012), not only the tile's frustum between its nearest and "
                                "farthest surface");
+    coarse_ = knobs.addBool("lighting.tile_coarse", true, "lighting",
+                            "tiled: a coarse pass first culls the lights against tiles of 4 x 4 tiles, and each tile "
+                            "tests only its coarse tile's lights, not all of them (a two-level light grid); the "
+                            "lists and the image are the same either way");
 }
 
 std::vector<OutputDecl> TiledStrategy::outputs() const {
@@ -47,6 +57,7 @@ void TiledStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
     cpuLanes_ = simdLanes();
     candidates_.create();
+    coarseMask_ = gl::Buffer::create(4, nullptr, true, "tiled coarse masks");
 }
 
 void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool shade) {
@@ -60,33 +71,60 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     const int setThreads = ctx.knobs.get(tileThreads_);
     const int threads = std::min(setThreads > 0 ? setThreads : cpuLanes_ > 0 ? cpuLanes_ : pixels, pixels);
     const bool depthMask = ctx.knobs.get(depthMask_);
-    gl::ShaderLibrary::Handle& handle = programs_[{tile, threads, depthMask}];
-    if (!handle) {
-        std::vector<std::string> defines{"TILE_SIZE=" + std::to_string(tile), "TILE_THREADS=" + std::to_string(threads)};
+    const bool useCoarse = ctx.knobs.get(coarse_);
+    Programs& programs = programs_[{tile, threads, depthMask, useCoarse}];
+    if (!programs.fine) {
+        std::vector<std::string> defines{"TILE_SIZE=" + std::to_string(tile), "TILE_THREADS=" + std::to_string(threads),
+                                         "MAX_CANDIDATES=" + std::to_string(kMaxCandidatesPerDispatch)};
+        if (useCoarse) {
+            defines.push_back("COARSE=" + std::to_string(kCoarseTiles));
+            programs.coarse = shaders_->get({.compute = "lighting/tiled_coarse.comp", .defines = defines});
+        }
         if (depthMask) defines.push_back("DEPTH_MASK");
-        handle = shaders_->get({.compute = "lighting/tiled.comp", .defines = defines});
+        programs.fine = shaders_->get({.compute = "lighting/tiled.comp", .defines = defines});
     }
-    const gl::Program& program = *handle;
+    const gl::Program& program = *programs.fine;
+
+    const GLuint tilesX = static_cast<GLuint>((ctx.width + tile - 1) / tile);
+    const GLuint tilesY = static_cast<GLuint>((ctx.height + tile - 1) / tile);
+    const GLuint coarseX = (tilesX + kCoarseTiles - 1) / kCoarseTiles;
+    const GLuint coarseY = (tilesY + kCoarseTiles - 1) / kCoarseTiles;
+    if (useCoarse) {
+        coarseMask_.ensureSize(
+            std::size_t{coarseX} * coarseY * (kMaxCandidatesPerDispatch / 32) * sizeof(std::uint32_t),
+            "tiled coarse masks");
+        coarseMask_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTileCoarseMaskSsbo);
+    }
 
     lists.upload(candidates_, f.table);
     const gl::Texture& lbuffer = ctx.texture("lbuffer");
     glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     if (overlap) glBindImageTexture(1, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     if (counts) glBindImageTexture(2, ctx.texture(kTileCounts).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
-    program.use();
-    program.set(3, lists.shaded);
     // What came before through the framebuffer (ambient, directional lights)
     // is visible to the first dispatch by GL's ordering; the barriers make
-    // each dispatch's image stores visible to the next, and the last one's to
-    // the blending, sampling and read-back after.
+    // each coarse pass's masks visible to its tiles, each dispatch's image
+    // stores visible to the next, and the last one's to the blending,
+    // sampling and read-back after.
     const int total = static_cast<int>(lists.rows.size());
     for (int first = 0; first == 0 || first < total; first += kMaxCandidatesPerDispatch) {
+        const int end = std::min(total, first + kMaxCandidatesPerDispatch);
+        if (useCoarse) {
+            const gl::Program& coarse = *programs.coarse;
+            coarse.use();
+            coarse.set(1, first);
+            coarse.set(2, end);
+            glDispatchCompute(coarseX, coarseY, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        }
+        program.use();
         program.set(1, first);
-        program.set(2, std::min(total, first + kMaxCandidatesPerDispatch));
+        program.set(2, end);
+        program.set(3, lists.shaded);
         program.set(4, (shade ? 1 : 0) | (overlap ? 2 : 0) | (counts ? 4 : 0) | (first > 0 ? 8 : 0));
-        glDispatchCompute(static_cast<GLuint>((ctx.width + tile - 1) / tile), static_cast<GLuint>((ctx.height + tile - 1) / tile), 1);
-        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                        GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+        glDispatchCompute(tilesX, tilesY, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
     }
 }
 

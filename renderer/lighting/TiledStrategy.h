@@ -12,9 +12,14 @@
 // strategies'. Lights with a shadow map are shaded one at a time (see
 // LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
-// lighting.tile_threads sets the invocations per group; the image is the
-// same for every value and either depth-mask setting (each pixel sums its
-// reaching lights in candidate order).
+// With lighting.tile_coarse (the default) a coarse pass
+// (shaders/lighting/tiled_coarse.comp) first culls the lights against coarse
+// tiles of 4 x 4 tiles into a bit mask each, and a tile tests only its
+// coarse tile's lights: a two-level light grid, whose coarse test keeps
+// everything a tile's test keeps. lighting.tile_threads sets the
+// invocations per group; the image is the same for every value, either
+// depth-mask setting and with or without the coarse pass (each pixel sums
+// its reaching lights in candidate order).
 #include <map>
 #include <tuple>
 
@@ -49,11 +54,18 @@ private:
     IntKnob tileSize_;
     IntKnob tileThreads_;
     BoolKnob depthMask_;
+    BoolKnob coarse_;
     int cpuLanes_ = 0;  // simdLanes() of the context setup ran in
     gl::ShaderLibrary* shaders_ = nullptr;
+    // The coarse culling pass and the tiles' pass.
+    struct Programs {
+        gl::ShaderLibrary::Handle coarse, fine;
+    };
     // Per tile size, threads and depth mask, compiled on first use.
-    std::map<std::tuple<int, int, bool>, gl::ShaderLibrary::Handle> programs_;
+    std::map<std::tuple<int, int, bool, bool>, Programs> programs_;
     CandidateBuffers candidates_;
+    // Per coarse tile, MAX_CANDIDATES bits: the candidates its pass kept.
+    gl::Buffer coarseMask_;
 };
 
 }  // namespace dw

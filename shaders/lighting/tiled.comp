@@ -4,7 +4,9 @@
 // TILE_SIZE x TILE_SIZE screen tile
 //   1. finds its surfaces' nearest and farthest depth,
 //   2. culls the candidate lights' bounding spheres against the tile's
-//      frustum between those depths into a bit list in shared memory; with
+//      frustum between those depths into a bit list in shared memory (with
+//      lighting.tile_coarse only the candidates its coarse tile kept:
+//      tiled_coarse.comp); with
 //      DEPTH_MASK (lighting.tile_depth_mask) a light must also span one of
 //      the 32 depth slices between them that holds a surface (2.5D culling,
 //      Harada 2012), which drops the lights that fall in a depth gap,
@@ -40,6 +42,13 @@ layout(binding = 0, rgba32f) uniform restrict image2D uLBuffer;
 layout(binding = 1, r32f) uniform restrict image2D uOverlap;     // when FLAG_COUNT_OVERLAP
 layout(binding = 2, r32f) uniform restrict image2D uTileCounts;  // when FLAG_TILE_COUNTS
 
+#ifdef COARSE
+// The coarse tiles' candidate masks, written by tiled_coarse.comp just before.
+layout(std430, binding = TILE_COARSE_MASK_SSBO) readonly buffer TileCoarseMask {
+    uint coarseMask[];
+};
+#endif
+
 layout(location = 1) uniform int uFirst;   // this dispatch's candidates: candidateRows[uFirst ..
 layout(location = 2) uniform int uEnd;     // .. uEnd), at most MAX_CANDIDATES
 layout(location = 3) uniform int uShaded;  // candidates below this index are shaded, the rest only counted
@@ -50,7 +59,8 @@ layout(location = 4) uniform int uFlags;
 #define FLAG_TILE_COUNTS 4
 #define FLAG_ADD_COUNTS 8  // not the first dispatch: add to the tile counts
 
-#define MAX_CANDIDATES 4096
+// MAX_CANDIDATES (the candidates of one dispatch) and COARSE (tiles per
+// coarse tile edge, when lighting.tile_coarse) come from TiledStrategy.cpp.
 #define WORDS (MAX_CANDIDATES / 32)
 #define TILE_PIXELS (TILE_SIZE * TILE_SIZE)
 #define PIXELS_PER_THREAD ((TILE_PIXELS + TILE_THREADS - 1) / TILE_THREADS)
@@ -148,23 +158,43 @@ void main() {
     }
     barrier();
 #endif
+    uint words = uint(uEnd - uFirst + 31) / 32u;
     if (tileHasSurface) {
+        // With COARSE only the candidates of the coarse tile's mask
+        // (tiled_coarse.comp), else every candidate; each invocation owns
+        // whole words of the list's bits.
         ScreenVolume volume = screenVolume(pixelMin, pixelMax, zNear, zFar);
-        for (int i = uFirst + int(tid); i < uEnd; i += TILE_THREADS) {
-            vec4 pr = candidatePositionRadius(i);
-            if (!sphereMeetsVolume(volume, pr.xyz, pr.w)) continue;
-#ifdef DEPTH_MASK
-            float r = pr.w * 1.0001 + 1e-5;  // sphereMeetsVolume's slack
-            uint first = depthSlice(pr.z + r, zNear, sliceScale), last = depthSlice(pr.z - r, zNear, sliceScale);
-            uint spanned = (last == 31u ? 0xFFFFFFFFu : (2u << last) - 1u) & ~((1u << first) - 1u);
-            if ((spanned & sDepthSlices) == 0u) continue;
+#ifdef COARSE
+        uvec2 coarseTile = gl_WorkGroupID.xy / uint(COARSE);
+        uint coarseTilesX = (gl_NumWorkGroups.x + uint(COARSE) - 1u) / uint(COARSE);
+        uint coarseBase = (coarseTile.y * coarseTilesX + coarseTile.x) * uint(WORDS);
 #endif
-            atomicOr(sMask[(i - uFirst) >> 5], 1u << ((i - uFirst) & 31));
+        for (uint w = tid; w < words; w += uint(TILE_THREADS)) {
+#ifdef COARSE
+            uint bits = coarseMask[coarseBase + w];
+#else
+            int inWord = min(32, uEnd - uFirst - int(w) * 32);
+            uint bits = inWord == 32 ? 0xFFFFFFFFu : (1u << uint(inWord)) - 1u;
+#endif
+            uint kept = 0u;
+            while (bits != 0u) {
+                int b = findLSB(bits);
+                bits &= bits - 1u;
+                vec4 pr = candidatePositionRadius(uFirst + int(w) * 32 + b);
+                bool keep = sphereMeetsVolume(volume, pr.xyz, pr.w);
+#ifdef DEPTH_MASK
+                float r = pr.w * 1.0001 + 1e-5;  // sphereMeetsVolume's slack
+                uint first = depthSlice(pr.z + r, zNear, sliceScale), last = depthSlice(pr.z - r, zNear, sliceScale);
+                uint spanned = (last == 31u ? 0xFFFFFFFFu : (2u << last) - 1u) & ~((1u << first) - 1u);
+                keep = keep && (spanned & sDepthSlices) != 0u;
+#endif
+                if (keep) kept |= 1u << uint(b);
+            }
+            sMask[w] = kept;
         }
     }
     barrier();
 
-    uint words = uint(uEnd - uFirst + 31) / 32u;
     // The list in candidate order: thread 0 counts each word's bits into
     // offsets, then every thread writes its words' candidates.
     if (tid == 0u) {

@@ -342,6 +342,51 @@ TEST(TiledLighting, TileThreadsAndDepthMaskChangeNoPixel) {
     EXPECT_LT(withMask, 0.9 * without);
 }
 
+// The coarse pass (lighting.tile_coarse) only saves work: every tile's list,
+// and so every pixel, is what culling every candidate gives, at tile sizes
+// whose coarse tiles are 16 to 128 pixels, with and without the depth mask,
+// and over several dispatches (the 4500 lights). The lists are not all
+// alike, so a coarse mask read from the wrong coarse tile would show.
+TEST(TiledLighting, CoarsePassChangesNoListAndNoPixel) {
+    auto session = test::makeSession(160, 90);
+    session->knobs().setFromString("lighting.strategy", "tiled");
+    struct Run {
+        FloatImage lbuffer, overlap, counts;
+    };
+    auto run = [&](const char* coarse) {
+        session->knobs().setFromString("lighting.tile_coarse", coarse);
+        session->render({{"lbuffer", "lighting.overlap", "lighting.tile_counts"}});
+        return Run{session->readRaw("lbuffer"), session->readRaw("lighting.overlap"), session->readRaw("lighting.tile_counts")};
+    };
+    auto compare = [&](const std::string& what) {
+        const Run all = run("false"), coarse = run("true");
+        const test::ChannelStats counts = test::stats(all.counts, 0);
+        EXPECT_GT(counts.max, counts.min) << what << ": the lists should differ between tiles";
+        EXPECT_GT(test::stats(all.lbuffer, 0).max, 0.0) << what;
+        EXPECT_EQ(test::maxAbsDifference(coarse.counts, all.counts, 1), 0.0) << what;
+        EXPECT_EQ(test::maxAbsDifference(coarse.lbuffer, all.lbuffer, 4), 0.0) << what;
+        EXPECT_EQ(test::maxAbsDifference(coarse.overlap, all.overlap, 1), 0.0) << what;
+    };
+    session->setScene(test::straddleScene(3));
+    for (const char* tile : {"4", "16", "32"})
+        for (const char* mask : {"false", "true"}) {
+            session->knobs().setFromString("lighting.tile_size", tile);
+            session->knobs().setFromString("lighting.tile_depth_mask", mask);
+            compare(std::string("200 lights, tile ") + tile + ", depth mask " + mask);
+        }
+
+    Scene s = test::planeScene(40.0f);
+    s.camera.position = {0.0f, 9.0f, 9.0f};
+    s.camera.target = {0.0f, 0.0f, -3.0f};
+    for (int i = 0; i < 4500; ++i) {
+        const glm::vec3 pos(-15.0f + (i % 75) * 0.4f, 0.2f + 0.3f * std::fmod(i * 0.618f, 1.0f), -20.0f + (i / 75) * 0.4f);
+        test::addPointLight(s, pos, {0.8f, 0.5f, 0.4f}, {1.0f, 0.0f, (255.0f * 0.8f - 1.0f) / 0.36f});
+    }
+    session->setScene(std::move(s));
+    session->knobs().setFromString("lighting.tile_size", "8");
+    compare("4500 lights, tile 8");
+}
+
 // lighting.overlap under tiled and clustered counts the lights each pixel
 // shaded: those of its tile's or cluster's list that reach the pixel's
 // surface (the grid tests the radius, and a spot light's cone, before
