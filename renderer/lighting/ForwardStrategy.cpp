@@ -100,6 +100,7 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     // First, while the G-buffer is still bound to the volume shader's units.
     c.volumes = oneByOne.shadeOneByOne(f);
     c.grid = static_cast<int>(listed.size());
+    c.gridWhere = "in per-object light lists";
     lastPairs_ = 0;
     if (listed.empty()) return c;
 

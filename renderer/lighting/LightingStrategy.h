@@ -93,7 +93,9 @@ struct StrategyCounts {
     int volumes = 0;     // lights drawn through a volume mesh
     int fullscreen = 0;  // lights drawn over the whole screen
     int culled = 0;      // lights skipped (outside the view frustum)
-    int grid = 0;        // lights shaded many at once from tile or cluster lists
+    int grid = 0;        // lights shaded many at once from lists (tile, cluster or per-object)
+    // Where the statistics line says the grid lights went.
+    const char* gridWhere = "in tiles or clusters";
     int batches = 0;     // batched volume draws (each covers many lights)
 };
 

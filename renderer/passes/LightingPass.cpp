@@ -239,6 +239,7 @@ void LightingPass::execute(FrameContext& ctx) {
     counts_.volumes = sc.volumes;
     counts_.batches = sc.batches;
     counts_.grid = sc.grid;
+    counts_.gridWhere = sc.gridWhere;
     counts_.fullscreen += sc.fullscreen;
     counts_.frustumCulled = sc.culled;
     gl::resetPipelineState(ctx.width, ctx.height);
@@ -251,7 +252,7 @@ void LightingPass::execute(FrameContext& ctx) {
              " directional, " +
              (counts_.directionalInGBuffer > 0
                   ? std::to_string(counts_.directionalInGBuffer) + " directional shaded in the G-buffer pass, "
-                  : std::string()) + (counts_.grid > 0 ? std::to_string(counts_.grid) + " in tiles or clusters, " : "") +
+                  : std::string()) + (counts_.grid > 0 ? std::to_string(counts_.grid) + " " + counts_.gridWhere + ", " : "") +
              std::to_string(counts_.volumes) + " volumes" +
              (counts_.batches > 0 ? " in " + std::to_string(counts_.batches) + " batches" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +

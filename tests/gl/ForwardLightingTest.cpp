@@ -163,6 +163,10 @@ TEST(ForwardLighting, AgreesWithManySmallLightsAndCullsPerObject) {
     std::printf("200 small lights: forward shaded %d lights over %zu draws as %zu light-object pairs (of %zu)\n",
                 counts.grid, draws, pairs, static_cast<std::size_t>(counts.grid) * draws);
     EXPECT_GT(counts.grid, 150);
+    // The statistics line says where those lights went: per-object lists, not tiles.
+    const std::string stats = session->pipeline().pass<LightingPass>()->stats();
+    EXPECT_NE(stats.find(std::to_string(counts.grid) + " in per-object light lists"), std::string::npos) << stats;
+    EXPECT_EQ(stats.find("tiles"), std::string::npos) << stats;
     EXPECT_GT(pairs, 0u);
     EXPECT_LT(pairs, static_cast<std::size_t>(counts.grid) * draws / 2);
 
