@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 
