@@ -12,6 +12,9 @@ void LightShading::setup(gl::ShaderLibrary& shaders) {
     volume_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"VOLUME_ROW"}});
     fullscreenCounting_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP"}});
     volumeCounting_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP", "VOLUME_ROW"}});
+    // Batches hold only lights without a shadow map (LightLists).
+    volumeBatch_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"VOLUME_ROW", "UNSHADOWED"}});
+    volumeBatchCounting_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP", "VOLUME_ROW", "UNSHADOWED"}});
     stencil_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/stencil.frag"});
     for (int k = 0; k <= kMaxSphereSubdivisions; ++k) sphere_[k].create(unitSphereVolume(k));
     cone_.create(unitConeVolume());

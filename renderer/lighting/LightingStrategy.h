@@ -36,6 +36,10 @@ public:
     void setup(gl::ShaderLibrary& shaders);
     const gl::Program& fullscreen(bool counting) const { return counting ? *fullscreenCounting_ : *fullscreen_; }
     const gl::Program& volume(bool counting) const { return counting ? *volumeCounting_ : *volume_; }
+    // The light shader for drawVolumeBatch: built without the shadow lookup
+    // (UNSHADOWED), since a batch holds only lights without a shadow map; on
+    // llvmpipe the lookup's code costs even where its branch is never taken.
+    const gl::Program& volumeBatch(bool counting) const { return counting ? *volumeBatchCounting_ : *volumeBatch_; }
     const gl::Program& stencil() const { return *stencil_; }
     const LightVolumeGeometry& geometry(const LightTableEntry& e) const {
         return e.volume.shape == VolumeShape::Cone ? cone_ : sphere_[sphereSubdivisions_];
@@ -58,7 +62,8 @@ public:
     std::pair<glm::vec3, glm::vec3> localBox(VolumeShape shape) const;
 
 private:
-    gl::ShaderLibrary::Handle fullscreen_, volume_, fullscreenCounting_, volumeCounting_, stencil_;
+    gl::ShaderLibrary::Handle fullscreen_, volume_, fullscreenCounting_, volumeCounting_, volumeBatch_, volumeBatchCounting_,
+        stencil_;
     LightVolumeGeometry sphere_[kMaxSphereSubdivisions + 1], cone_;
     int sphereSubdivisions_ = kDefaultSphereSubdivisions;
     struct BatchVertex {

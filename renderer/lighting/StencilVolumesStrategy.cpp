@@ -98,14 +98,15 @@ StrategyCounts StencilVolumesStrategy::shade(LightingFrame& f) {
             ordered.insert(ordered.end(), members[static_cast<std::size_t>(b)].begin(), members[static_cast<std::size_t>(b)].end());
         }
         f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
+        const gl::Program& batchVolume = f.shading.volumeBatch(f.counting);
         f.shading.uploadVolumeBatch(f.table, ordered);
         for (const Batch& b : batches) {
             markState(f.ctx, depthFail);
             stencil.use();
             f.shading.drawVolumeBatch(stencil, b.first, b.count);
             shadeState();
-            volume.use();
-            f.shading.drawVolumeBatch(volume, b.first, b.count);
+            batchVolume.use();
+            f.shading.drawVolumeBatch(batchVolume, b.first, b.count);
         }
         c.batches = static_cast<int>(batches.size());
     }

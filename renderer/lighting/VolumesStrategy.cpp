@@ -39,7 +39,7 @@ StrategyCounts VolumesStrategy::shade(LightingFrame& f) {
     if (lists.shaded > 0) {
         f.beginLight(*lists.firstShaded);  // the L-buffer target and blending; it has no map
         volumeState();
-        const gl::Program& program = f.shading.volume(f.counting);
+        const gl::Program& program = f.shading.volumeBatch(f.counting);
         program.use();
         f.shading.uploadVolumeBatch(f.table, {lists.rows.begin(), lists.rows.begin() + lists.shaded});
         f.shading.drawVolumeBatch(program, 0, lists.shaded);

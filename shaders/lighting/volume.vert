@@ -12,6 +12,8 @@ layout(location = 1) in float aRow;      // batched: the vertex's light-table ro
 layout(location = 0) uniform int uLight;
 
 flat out int vLight;  // the row, for light.frag
+// The row's shading fields, for light.frag (see there why here).
+flat out vec4 vPositionRadius, vDirectionCutoff, vIntensityExponent, vAttenuation;
 
 void main() {
     if (uLight >= 0) {
@@ -21,4 +23,8 @@ void main() {
         vLight = int(aRow + 0.5);
         gl_Position = camera.viewProjection * vec4(aPosition, 1.0);
     }
+    vPositionRadius = lights[vLight].positionRadius;
+    vDirectionCutoff = lights[vLight].directionCutoff;
+    vIntensityExponent = lights[vLight].intensityExponent;
+    vAttenuation = lights[vLight].attenuation;
 }
