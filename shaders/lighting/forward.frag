@@ -55,10 +55,10 @@ void main() {
     s.exponent = clamp(ms.exponent, 1.0, 2048.0);
     vec3 c = vec3(0.0);
 #ifdef FORWARD_ONE_LIGHT
-    c = lightRadiance(lights[uLight], s);
+    c = lightRadiance(shadingLight(uLight), s);
     float n = 1.0;
 #else
-    for (int i = 0; i < uCount; ++i) c += lightRadiance(lights[forwardLights[uFirst + i]], s);
+    for (int i = 0; i < uCount; ++i) c += lightRadiance(shadingLight(int(forwardLights[uFirst + i])), s);
     float n = float(uCount);
 #endif
     outColor = vec4(c, 0.0);
