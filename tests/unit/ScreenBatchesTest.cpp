@@ -132,9 +132,13 @@ TEST(AutoStrategy, VolumesTiledOrClusteredByScreenCoverage) {
     EXPECT_STREQ(chooseLightingStrategy({25, 0.32}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({83, 1.48}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({27, 1.20}, at).strategy, "stencil_volumes");
-    EXPECT_STREQ(chooseLightingStrategy({250, 4.60}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({87, 6.05}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({29, 5.29}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({250, 4.60}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({87, 6.05}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({29, 5.29}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({419, 7.75}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({131, 8.35}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({177, 11.66}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({856, 14.97}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({893, 55.91}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({2923, 657.39}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({0, 0.0}, at).strategy, "stencil_volumes");
