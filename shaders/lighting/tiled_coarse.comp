@@ -12,10 +12,12 @@
 // tiled.comp then tests only its coarse tile's candidates, not all of them:
 // at 10 000 lights a tile of 16 x 16 pixels tests a few hundred instead of
 // 4096 per dispatch. The coarse volume holds every one of its tiles' volumes
-// (its pixel rectangle holds theirs, its depth range theirs; the side planes
-// of the tiles on its edges are the same planes) and its test has more slack
-// than theirs, so a light the finer test keeps is always in the mask and the
-// tiles' lists are those of culling every candidate.
+// (its pixel rectangle holds theirs, its depth range theirs, so its box holds
+// their boxes; in front of the eye its side planes' outside half-spaces
+// hold theirs, and a sphere reaching behind the eye is tested against the
+// box alone) and its test has more slack than theirs, so a light the finer
+// test keeps is always in the mask and the tiles' lists are those of
+// culling every candidate.
 #include "gbuffer_read.glsl"
 #include "tiles.glsl"
 
@@ -79,8 +81,17 @@ void main() {
         for (int i = uFirst + int(tid); i < uEnd; i += TILE_THREADS) {
             vec4 pr = candidatePositionRadius(i);
             // Ten times tiled.comp's slack for rounding on top of its own.
-            if (sphereMeetsVolume(volume, pr.xyz, pr.w * 1.001 + 1e-4))
-                atomicOr(sMask[(i - uFirst) >> 5], 1u << ((i - uFirst) & 31));
+            float r = pr.w * 1.001 + 1e-4;
+            // The side planes of a perspective view pass through the eye. In
+            // front of it (z < 0) the coarse tile's outside half-spaces hold
+            // its tiles'; behind it they do not, so a sphere reaching behind
+            // the eye could lie outside a coarse plane and still be kept by a
+            // tile (by the box around the tile's slab, which holds points of
+            // neither frustum). Such a sphere is tested against the coarse box
+            // alone, which holds every tile's box.
+            bool keep = pr.z + r * 1.0001 + 1e-5 >= 0.0 ? sphereMeetsBox(volume, pr.xyz, r * 1.0001 + 1e-5)
+                                                        : sphereMeetsVolume(volume, pr.xyz, r);
+            if (keep) atomicOr(sMask[(i - uFirst) >> 5], 1u << ((i - uFirst) & 31));
         }
     }
     barrier();

@@ -94,13 +94,18 @@ ScreenVolume screenVolume(vec2 pixelMin, vec2 pixelMax, float zNear, float zFar)
     return v;
 }
 
+// The box test alone, with r as given (no slack).
+bool sphereMeetsBox(ScreenVolume v, vec3 c, float r) {
+    vec3 q = clamp(c, v.boxMin, v.boxMax) - c;
+    return dot(q, q) <= r * r;
+}
+
 bool sphereMeetsVolume(ScreenVolume v, vec3 c, float r) {
     // A sliver of slack for rounding: the shader lights points up to d == r.
     r = r * 1.0001 + 1e-5;
     for (int i = 0; i < 4; ++i)
         if (dot(v.planes[i].xyz, c) + v.planes[i].w > r) return false;
-    vec3 q = clamp(c, v.boxMin, v.boxMax) - c;
-    return dot(q, q) <= r * r;
+    return sphereMeetsBox(v, c, r);
 }
 
 // Clusters: tiles of tileSize pixels times exponential depth slices, slice k

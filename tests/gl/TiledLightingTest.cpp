@@ -387,6 +387,120 @@ TEST(TiledLighting, CoarsePassChangesNoListAndNoPixel) {
     compare("4500 lights, tile 8");
 }
 
+namespace {
+// tiles.glsl's screen volume on the CPU, for a perspective camera at the
+// origin looking down -z: the side planes through the eye and the rays
+// through the rectangle's corners (window pixels, y up), and the box around
+// the slab between view depths zNear >= zFar.
+struct CpuScreenVolume {
+    glm::dvec4 planes[4];
+    glm::dvec3 boxMin{1e30}, boxMax{-1e30};
+    CpuScreenVolume(glm::dvec2 pixelMin, glm::dvec2 pixelMax, double zNear, double zFar, glm::dvec2 size,
+                    double tanHalfY) {
+        const double aspect = size.x / size.y;
+        auto ray = [&](glm::dvec2 w) {
+            const glm::dvec2 ndc = 2.0 * w / size - 1.0;
+            return glm::dvec3(ndc.x * tanHalfY * aspect, ndc.y * tanHalfY, -1.0);
+        };
+        const glm::dvec2 corner[4] = {pixelMin, {pixelMax.x, pixelMin.y}, pixelMax, {pixelMin.x, pixelMax.y}};
+        const glm::dvec3 inside = ray(0.5 * (pixelMin + pixelMax)) * (-0.5 * (zNear + zFar));
+        for (int i = 0; i < 4; ++i) {
+            for (const double z : {zNear, zFar}) {
+                boxMin = glm::min(boxMin, ray(corner[i]) * -z);
+                boxMax = glm::max(boxMax, ray(corner[i]) * -z);
+            }
+            glm::dvec3 n = glm::normalize(glm::cross(ray(corner[i]), ray(corner[(i + 1) & 3])));
+            if (glm::dot(n, inside) > 0.0) n = -n;
+            planes[i] = glm::dvec4(n, 0.0);  // through the eye
+        }
+    }
+    // How far the sphere is kept by the side planes and the box, as the
+    // shader tests them: > 0 kept by that margin, < 0 dropped by it (in units of r).
+    double planeMargin(glm::dvec3 c, double r) const {
+        double m = 1e30;
+        for (const glm::dvec4& p : planes) m = std::min(m, (r - (glm::dot(glm::dvec3(p), c) + p.w)) / r);
+        return m;
+    }
+    double boxMargin(glm::dvec3 c, double r) const {
+        return (r - glm::length(glm::clamp(c, boxMin, boxMax) - c)) / r;
+    }
+};
+}  // namespace
+
+// The side planes of every tile pass through the eye. In front of it a
+// coarse tile's outside half-spaces hold its tiles', behind it they do not:
+// a large light centred behind the eye can lie wholly outside one of the
+// coarse tile's planes while a tile inside it keeps the light (its planes
+// do not reject it behind the eye, and the light touches the box around its
+// slab, which reaches beyond the slab where the tile spans a near and a far
+// surface). The coarse pass must keep such a light, or the tile's list (here
+// its count) differs from culling every candidate. The light is found on
+// the CPU with tiles.glsl's tests, for a floor seen straight from above at
+// view depth -20 and a box whose top, at depth -1, covers half of the tile
+// (so the tile's and its coarse tile's depth ranges are known).
+TEST(TiledLighting, CoarsePassKeepsLightsReachingBehindTheEye) {
+    const int W = 64, H = 36, tile = 4, coarse = 4 * tile;
+    auto session = test::makeSession(W, H);
+    Scene s = test::planeScene(40.0f);
+    s.lights.clear();
+    s.camera.position = {0.0f, 20.0f, 0.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.camera.up = {0.0f, 0.0f, -1.0f};
+    const glm::mat4 viewToWorld = glm::inverse(s.camera.view());
+    const double tanHalfY = std::tan(glm::radians(static_cast<double>(s.camera.fovYDegrees)) / 2.0);
+    const glm::dvec2 size(W, H);
+    // Tile (5, 4) lies inside coarse tile (1, 1), away from its edges.
+    const glm::ivec2 t(5, 4), ct = t * tile / coarse;
+    // The box's right edge at the tile's middle column (view x at depth 1).
+    const double edgeX = (2.0 * (t.x * tile + tile / 2) / W - 1.0) * tanHalfY * W / H;
+    // Thin, so its side faces cover no whole pixel column of the tile.
+    Mesh box = shapes::box({0.5f, 0.02f, 0.6f});  // world x, y, z; view x, -z, -y
+    box.material = 0;
+    const glm::vec4 boxCentre = viewToWorld * glm::vec4(static_cast<float>(edgeX) - 0.25f,
+                                                        static_cast<float>((2.0 * (t.y * tile + tile / 2) / H - 1.0) * tanHalfY),
+                                                        -1.01f, 1.0f);
+    s.instances.push_back({s.addMesh(std::move(box)), glm::translate(glm::mat4(1.0f), glm::vec3(boxCentre))});
+    const CpuScreenVolume fine(glm::dvec2(t * tile), glm::dvec2(t * tile + tile), -1.0, -20.0, size, tanHalfY);
+    const CpuScreenVolume coarseVolume(glm::dvec2(ct * coarse), glm::dvec2(ct * coarse + coarse), -1.0, -20.0, size,
+                                       tanHalfY);
+    const CpuScreenVolume screen(glm::dvec2(0.0), size, -0.2, -150.0, size, tanHalfY);
+    glm::dvec3 centre(0.0);
+    double radius = 0.0;
+    for (int i = 0; i < 200000 && radius == 0.0; ++i) {
+        const double u = std::fmod(i * 0.6180339887, 1.0), v = std::fmod(i * 0.4142135624, 1.0);
+        const double w = std::fmod(i * 0.7320508076, 1.0), q = std::fmod(i * 0.2360679775, 1.0);
+        const glm::dvec3 c(-60.0 + 120.0 * u, -60.0 + 120.0 * v, 0.5 + 40.0 * w);
+        const double r = 3.0 + 57.0 * q;
+        // Kept by the tile and met by the view (so a candidate), dropped by
+        // a coarse plane even with the coarse pass's extra slack; all with
+        // margins (0.4% and 0.1% of radii of tens of units) far beyond rounding.
+        if (fine.planeMargin(c, r) > 0.004 && fine.boxMargin(c, r) > 0.004 && screen.planeMargin(c, r) > 0.004 &&
+            screen.boxMargin(c, r) > 0.004 && coarseVolume.planeMargin(c, r * 1.001 + 1e-4) < -0.001) {
+            centre = c;
+            radius = r;
+        }
+    }
+    ASSERT_GT(radius, 0.0) << "no light of that kind found";
+    const float rf = static_cast<float>(radius);
+    test::addPointLight(s, glm::vec3(viewToWorld * glm::vec4(glm::vec3(centre), 1.0f)), {0.01f, 0.01f, 0.01f},
+                        {1.0f, 0.0f, (255.0f * 0.01f - 1.0f) / (rf * rf)});
+    std::printf("light at view (%.2f, %.2f, %.2f), radius %.2f\n", centre.x, centre.y, centre.z, radius);
+    session->setScene(std::move(s));
+    session->knobs().setFromString("lighting.strategy", "tiled");
+    session->knobs().setFromString("lighting.tile_size", std::to_string(tile));
+    auto counts = [&](const char* withCoarse) {
+        session->knobs().setFromString("lighting.tile_coarse", withCoarse);
+        session->render({{"lighting.tile_counts"}});
+        return session->readRaw("lighting.tile_counts");
+    };
+    const FloatImage all = counts("false"), withCoarse = counts("true");
+    // Read-back rows run top-down, window coordinates bottom-up.
+    const int x = t.x * tile + 1, y = H - 1 - (t.y * tile + 1);
+    EXPECT_EQ(all.at(x, y, 0), 1.0f) << "the tile keeps the light";
+    EXPECT_EQ(withCoarse.at(x, y, 0), all.at(x, y, 0)) << "with the coarse pass";
+    EXPECT_EQ(test::maxAbsDifference(withCoarse, all, 1), 0.0);
+}
+
 // lighting.overlap under tiled and clustered counts the lights each pixel
 // shaded: those of its tile's or cluster's list that reach the pixel's
 // surface (the grid tests the radius, and a spot light's cone, before
