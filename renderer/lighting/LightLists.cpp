@@ -1,5 +1,8 @@
 #include "renderer/lighting/LightLists.h"
 
+#include <string>
+
+#include "renderer/Error.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/ShadowService.h"
 #include "renderer/lighting/VolumesStrategy.h"
@@ -48,6 +51,15 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
     buffers.rows.ensureSize(n * sizeof(std::uint32_t), "lighting candidates");
     if (!rows.empty()) buffers.rows.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
     buffers.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+
+    // GL 4.5 guarantees 65536 texels (16384 candidates); llvmpipe and the
+    // desktop drivers allow far more, but past the limit texelFetch reads 0.
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (maxTexels > 0 && rows.size() * 4 > static_cast<std::size_t>(maxTexels))
+        throw GlUnsupportedError(std::to_string(rows.size()) + " lights for the tiled or clustered lists need " +
+                                 std::to_string(rows.size() * 4) + " texels of light data; this GL allows at most " +
+                                 std::to_string(maxTexels) + " (GL_MAX_TEXTURE_BUFFER_SIZE)");
 
     std::vector<glm::vec4> texels;
     texels.reserve(rows.size() * 4);
