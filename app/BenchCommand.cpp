@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +22,7 @@
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
+#include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/io/JsonGuard.h"
@@ -201,6 +204,60 @@ std::pair<int, int> plotSize(CommandLine& cl) {
     return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"));
 }
 
+// Fails now, before any frame is rendered, when `path` cannot be written at
+// the end of the run: its folder is missing or read-only, or it is a folder
+// or a read-only file. Creates nothing.
+void requireWritable(const std::string& path, const std::string& what) {
+    std::error_code ec;
+    const fs::path p(path);
+    if (p.filename().empty()) throw FileError(path, "cannot write the " + what + ": not a file name");
+    if (fs::is_directory(p, ec)) throw FileError(path, "cannot write the " + what + ": it is a folder");
+    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir, ec)) throw FileError(path, "cannot write the " + what + ": no folder " + dir.string());
+    if (fs::exists(p, ec) ? access(path.c_str(), W_OK) != 0 : access(dir.c_str(), W_OK) != 0)
+        throw FileError(path, "cannot write the " + what + ": " + (fs::exists(p, ec) ? "the file" : "its folder") +
+                                  " is not writable");
+}
+
+// --plot: a .png (the script writes PNG only) at least 50x50 (the script's
+// least), in a folder that can be written.
+void checkPlotOptions(const std::optional<std::string>& plot, int width, int height) {
+    if (!plot) return;
+    std::string ext = fs::path(*plot).extension().string();
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + *plot + "'");
+    if (width < 50 || height < 50)
+        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
+    requireWritable(*plot, "plot");
+}
+
+// The run a shard's JSON describes, apart from which shard and where its
+// files went: its command without argv[0], --shard, --csv, --json, --plot,
+// --plot-size and --quiet.
+std::string runOf(const std::string& command) {
+    std::vector<std::string> words;
+    size_t start = 0;
+    while (start <= command.size()) {
+        const size_t space = command.find(' ', start);
+        words.push_back(command.substr(start, space == std::string::npos ? std::string::npos : space - start));
+        if (space == std::string::npos) break;
+        start = space + 1;
+    }
+    std::string run;
+    for (size_t i = 1; i < words.size(); ++i) {
+        const std::string& w = words[i];
+        if (w == "--quiet" || w.rfind("--shard=", 0) == 0 || w.rfind("--csv=", 0) == 0 || w.rfind("--json=", 0) == 0 ||
+            w.rfind("--plot=", 0) == 0 || w.rfind("--plot-size=", 0) == 0)
+            continue;
+        if (w == "--shard" || w == "--csv" || w == "--json" || w == "--plot" || w == "--plot-size") {
+            ++i;
+            continue;
+        }
+        run += (run.empty() ? "" : " ") + w;
+    }
+    return run;
+}
+
 BenchFields fieldsOf(const nlohmann::json& j) {
     BenchFields f;
     if (j.is_object())
@@ -221,12 +278,28 @@ int runMerge(int argc, char** argv) {
     const std::vector<std::string> inputs = cl.positional();
     if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
     if (!out) throw UsageError("bench merge needs --out FILE.csv");
+    requireWritable(*out, "merged CSV");
+    if (json) requireWritable(*json, "merged JSON");
+    checkPlotOptions(plot, plotW, plotH);
 
     std::vector<BenchResults> parts;
     BenchFields machine, settings;
     std::string machineNote;
+    // From the shards' JSONs: the run they come from, and which shards of how many.
+    std::string firstRun, firstRunFrom;
+    int shardCount = 0;
+    std::vector<int> shardIndices;
     for (const auto& in : inputs) {
         parts.push_back(BenchResults::readCsv(in));
+        // A configuration without a whole-frame sample: the file was cut short.
+        for (const auto& c : parts.back().configs) {
+            bool anyFrame = false;
+            for (const auto& sample : parts.back().samples)
+                anyFrame = anyFrame || (sample.config == c.config.index && sample.series == "frame");
+            if (!anyFrame)
+                throw FileError(in, "configuration " + std::to_string(c.config.index) +
+                                        " has no frame samples (is the file cut short?)");
+        }
         // The machine and settings are in the shard's JSON beside its CSV, when there is one.
         const fs::path sibling = fs::path(in).replace_extension(".json");
         if (!fs::exists(sibling)) continue;
@@ -239,6 +312,32 @@ int runMerge(int argc, char** argv) {
         } catch (const nlohmann::json::exception& e) {
             throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
         }
+        const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
+        if (const std::string command = fieldOr(s, "command", ""); !command.empty()) {
+            const std::string run = runOf(command);
+            if (firstRunFrom.empty()) {
+                firstRun = run;
+                firstRunFrom = sibling.string();
+            } else if (run != firstRun) {
+                throw FileError(sibling.string(), "comes from another bench run than " + firstRunFrom + " ('" + run +
+                                                      "' against '" + firstRun + "'): shards of different grids do "
+                                                      "not merge");
+            }
+        }
+        if (const std::string shard = fieldOr(s, "shard", ""); !shard.empty()) {
+            try {
+                const BenchShard sh = BenchShard::parse(shard);
+                if (shardCount != 0 && sh.count != shardCount)
+                    throw FileError(sibling.string(), "is shard " + shard + ", the others are of " +
+                                                          std::to_string(shardCount) + " shards");
+                shardCount = sh.count;
+                shardIndices.push_back(sh.index);
+            } catch (const FileError&) {
+                throw;
+            } catch (const Error&) {
+                throw FileError(sibling.string(), "its settings.shard '" + shard + "' is not i/n");
+            }
+        }
         const BenchFields m = fieldsOf(j.value("machine", nlohmann::json::object()));
         if (machine.empty()) {
             machine = m;
@@ -249,6 +348,16 @@ int runMerge(int argc, char** argv) {
         }
     }
     BenchResults all = BenchResults::merge(std::move(parts), inputs);
+    if (shardCount > 0) {
+        std::string missing;
+        for (int i = 0; i < shardCount; ++i)
+            if (std::find(shardIndices.begin(), shardIndices.end(), i) == shardIndices.end())
+                missing += (missing.empty() ? "" : ", ") + std::to_string(i);
+        if (!missing.empty())
+            std::fprintf(stderr, "bench merge: warning: shard(s) %s of %d are not among the inputs; their "
+                                 "configurations are missing from the table\n",
+                         missing.c_str(), shardCount);
+    }
     all.machine = machine;
     if (!machineNote.empty()) all.machine.emplace_back("note", machineNote);
     all.settings.clear();
@@ -259,18 +368,35 @@ int runMerge(int argc, char** argv) {
     all.settings.emplace_back("merged_from", from);
 
     const BenchSummary summary = summarize(all, chooseBaseline(all, baselineSpec), resamples);
-    all.writeCsv(*out);
-    if (json) writeBenchJson(*json, all, summary);
     printTables(all, summary,
                 "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
                     std::to_string(inputs.size()) + " shard(s)");
+    std::fflush(stdout);
+    all.writeCsv(*out);
+    if (json) writeBenchJson(*json, all, summary);
     std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
     return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
 }
 
+// A comma list of a flag; an empty item is a usage error.
+std::vector<std::string> flagList(const std::string& flag, const std::string& text) {
+    try {
+        return splitList(text, flag);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+}
+
 std::vector<int> parseIntList(const std::string& flag, const std::string& text, int min, int max) {
     std::vector<int> values;
-    for (const auto& item : splitList(text, flag)) values.push_back(CommandLine::parseInt(flag, item, min, max));
+    for (const auto& item : flagList(flag, text)) {
+        const int v = CommandLine::parseInt(flag, item, min, max);
+        if (std::find(values.begin(), values.end(), v) != values.end())
+            throw UsageError(flag + ": '" + item + "' is given twice");
+        values.push_back(v);
+    }
     return values;
 }
 
@@ -285,11 +411,20 @@ int runBenchCommand(int argc, char** argv) {
     }
     BenchOptions o;
     o.run = cl.runConfig();
-    for (const auto& s : splitList(cl.value("--size").value_or("640x360"), "--size"))
-        o.grid.sizes.push_back(CommandLine::parseSize(s));
+    for (const auto& s : flagList("--size", cl.value("--size").value_or("640x360"))) {
+        const auto size = CommandLine::parseSize(s);
+        if (std::find(o.grid.sizes.begin(), o.grid.sizes.end(), size) != o.grid.sizes.end())
+            throw UsageError("--size: '" + s + "' is given twice");
+        o.grid.sizes.push_back(size);
+    }
     if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, 0, 1000000);
     for (const auto& s : cl.values("--sweep")) {
-        BenchKnobAxis axis = BenchGrid::parseSweep(s);
+        BenchKnobAxis axis;
+        try {
+            axis = BenchGrid::parseSweep(s);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
         for (const auto& a : o.grid.knobAxes)
             if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
         o.grid.knobAxes.push_back(std::move(axis));
@@ -327,6 +462,10 @@ int runBenchCommand(int argc, char** argv) {
     const bool quiet = cl.flag("--quiet");
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
+    // The outputs are checked before the run, so a long run is never lost to a bad path.
+    checkPlotOptions(plot, plotW, plotH);
+    requireWritable(csv, "bench CSV");
+    requireWritable(json, "bench JSON");
     if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);
 
@@ -349,12 +488,14 @@ int runBenchCommand(int argc, char** argv) {
     results.settings.emplace_back("command", command);
 
     const BenchSummary summary = summarize(results, baseline, resamples);
-    results.writeCsv(csv);
-    writeBenchJson(json, results, summary);
+    // The tables first: should writing the files still fail, the run's figures are on stdout.
     printTables(results, summary,
                 "bench: " + runner.scene().name + ", " + std::to_string(results.configs.size()) + " configuration(s) x " +
                     fieldOr(results.settings, "frames", "?") + " frame(s) on " +
                     fieldOr(results.machine, "gl_renderer", "?"));
+    std::fflush(stdout);
+    results.writeCsv(csv);
+    writeBenchJson(json, results, summary);
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     return plot ? writePlot(csv, *plot, plotW, plotH) : 0;
 }

@@ -108,7 +108,11 @@ def main():
         ax.legend(title=legend_title or None, fontsize="small", title_fontsize="small")
     fig.tight_layout()
     # No bbox_inches="tight": the image is exactly the size asked for.
-    fig.savefig(args.out, dpi=dpi, format="png")
+    try:
+        fig.savefig(args.out, dpi=dpi, format="png")
+    except OSError as e:
+        print(f"bench_plot: {args.out}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+        return 2
     if skipped:
         print(f"bench_plot: left out {skipped} point(s) with 0 lights (log axis)", file=sys.stderr)
     return 0

@@ -202,6 +202,61 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     const Result help = run("help bench");
     EXPECT_EQ(help.code, 0);
     EXPECT_NE(help.out.find("--shard i/n"), std::string::npos);
+
+    // Usage errors exit 2: a malformed sweep, a value given twice, a plot
+    // that is not a PNG or too small for the script.
+    for (const char* args : {"--sweep lighting.strategy", "--sweep lighting.strategy=,tiled", "--lights 10,10",
+                             "--size 64x36,64x36", "--plot p.jpg", "--plot p.png --plot-size 10x10"}) {
+        const Result usage = run(std::string("bench --scene default --size 32x18 --lights 1 --frames 1 ") + args);
+        EXPECT_EQ(usage.code, 2) << args << ": " << usage.err;
+        EXPECT_NE(usage.err.find("deferred-workbench: "), std::string::npos) << args;
+    }
+    // Outputs that could not be written at the end are refused before the
+    // first frame (no progress line), naming the path.
+    for (const char* flag : {"--csv", "--json", "--plot"}) {
+        const std::string path = std::string("/nonexistent-dw-folder/out") + (std::string(flag) == "--plot" ? ".png" : ".x");
+        const Result bad = run(std::string("bench --scene default --size 32x18 --lights 1 --frames 1 ") + flag + " " + path);
+        EXPECT_EQ(bad.code, 1) << flag;
+        EXPECT_NE(bad.err.find(path + ": cannot write"), std::string::npos) << bad.err;
+        EXPECT_EQ(bad.err.find("bench: frame"), std::string::npos) << flag << " ran before failing:\n" << bad.err;
+    }
+}
+
+// bench merge refuses what is not one grid's shards: shards of two runs
+// with different grids, and a CSV cut short; a missing shard is named.
+TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
+    const fs::path dir = test::tempDir() / "bench-merge";
+    fs::create_directories(dir / "other");
+    const std::string common = "bench --scene default --size 32x18 --frames 1 --warmup 0 --no-lpp --quiet ";
+    auto shard = [&](const fs::path& base, const std::string& grid, int i) {
+        const Result r = run(common + grid + " --shard " + std::to_string(i) + "/2 --csv " + (base.string() + ".csv") +
+                             " --json " + (base.string() + ".json"));
+        EXPECT_EQ(r.code, 0) << r.err;
+    };
+    shard(dir / "a0", "--lights 1,2 --sweep lighting.strategy=stencil_volumes,tiled", 0);
+    shard(dir / "a1", "--lights 1,2 --sweep lighting.strategy=stencil_volumes,tiled", 1);
+    shard(dir / "other" / "b0", "--lights 3,4 --sweep lighting.strategy=volumes,clustered", 0);
+
+    const Result mixed = run("bench merge " + (dir / "a1.csv").string() + " " + (dir / "other" / "b0.csv").string() +
+                             " --out " + (dir / "m.csv").string());
+    EXPECT_EQ(mixed.code, 1);
+    EXPECT_NE(mixed.err.find("comes from another bench run"), std::string::npos) << mixed.err;
+    EXPECT_FALSE(fs::exists(dir / "m.csv"));
+
+    const Result missing = run("bench merge " + (dir / "a0.csv").string() + " --out " + (dir / "m.csv").string());
+    EXPECT_EQ(missing.code, 0) << missing.err;
+    EXPECT_NE(missing.err.find("shard(s) 1 of 2 are not among the inputs"), std::string::npos) << missing.err;
+
+    // The first two lines of a shard: a configuration without its frame rows.
+    {
+        std::ifstream in(dir / "a1.csv");
+        std::ofstream cut(dir / "cut.csv");
+        std::string line;
+        for (int i = 0; i < 2 && std::getline(in, line); ++i) cut << line << "\n";
+    }
+    const Result cut = run("bench merge " + (dir / "cut.csv").string() + " --out " + (dir / "m2.csv").string());
+    EXPECT_EQ(cut.code, 1);
+    EXPECT_NE(cut.err.find("has no frame samples"), std::string::npos) << cut.err;
 }
 
 // A grid of 0 lights has nothing for the log-log plot: one line says so
