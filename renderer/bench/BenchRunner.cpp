@@ -205,10 +205,13 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
     if (o_.lpp) {
         say("bench: lights per pixel (untimed frames)");
         const int poses = path.moving() ? o_.lppPoses : 1;
-        const FrameRequest counting{{"lighting.overlap"}};
+        // gbuffer.view_position's alpha is 0 where no surface is: sky and
+        // background count towards LPP (a full-screen light's shader runs
+        // there too) but not towards LPP lit.
+        const FrameRequest counting{{"lighting.overlap", "gbuffer.view_position"}};
         for (auto& r : results.configs) {
             RenderSession& session = apply(r.config);
-            double sum = 0.0, pixels = 0.0, lit = 0.0;
+            double sum = 0.0, pixels = 0.0, lit = 0.0, litSum = 0.0;
             // A strategy that cannot count (a new one, say) costs its LPP, not the run.
             try {
                 for (int p = 0; p < poses; ++p) {
@@ -216,11 +219,15 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
                     session.camera() = path.at(k, o_.frames);
                     session.render(counting);
                     const FloatImage overlap = session.readRaw("lighting.overlap");
+                    const FloatImage position = session.readRaw("gbuffer.view_position");
                     for (int y = 0; y < overlap.height; ++y)
                         for (int x = 0; x < overlap.width; ++x) {
                             const float v = overlap.at(x, y, 0);
                             sum += v;
-                            lit += v > 0.0f ? 1.0 : 0.0;
+                            if (v > 0.0f && position.at(x, y, 3) != 0.0f) {
+                                lit += 1.0;
+                                litSum += v;
+                            }
                         }
                     pixels += static_cast<double>(overlap.width) * overlap.height;
                 }
@@ -229,7 +236,7 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
                 continue;
             }
             r.lpp = pixels > 0.0 ? sum / pixels : std::nan("");
-            r.lppLit = lit > 0.0 ? sum / lit : 0.0;
+            r.lppLit = lit > 0.0 ? litSum / lit : 0.0;
         }
     }
 

@@ -222,6 +222,23 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     }
 }
 
+// LPP lit averages over the surface pixels a light reached: in the fire
+// scene a directional light runs over every pixel, sky included, so LPP
+// (over all pixels) counts the sky's invocations and LPP lit, without the
+// sky, is larger. When sky pixels counted as lit the two were equal.
+TEST(BenchCli, LppLitLeavesOutPixelsWithoutASurface) {
+    const fs::path dir = test::tempDir() / "bench-lpp";
+    fs::create_directories(dir);
+    const Result r = run("bench --scene fire --size 64x36 --frames 1 --warmup 0 --quiet --csv " + (dir / "f.csv").string() +
+                         " --json " + (dir / "f.json").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream f(dir / "f.json");
+    const nlohmann::json j = nlohmann::json::parse(f);
+    const double lpp = j["configs"][0]["lpp"].get<double>(), lit = j["configs"][0]["lpp_lit"].get<double>();
+    EXPECT_GT(lpp, 1.0);
+    EXPECT_GT(lit, lpp * 1.1) << "LPP " << lpp << ", LPP lit " << lit;
+}
+
 // bench merge refuses what is not one grid's shards: shards of two runs
 // with different grids, and a CSV cut short; a missing shard is named.
 TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
