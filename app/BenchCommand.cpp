@@ -440,6 +440,7 @@ int runBenchCommand(int argc, char** argv) {
             throw UsageError("--light-radius expects a positive number, got '" + *r + "'");
     }
     o.keepSceneLights = cl.flag("--keep-scene-lights");
+    const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
     if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
     o.walkthrough = cl.flag("--walkthrough");
     o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), 1, 1000);
@@ -492,7 +493,9 @@ int runBenchCommand(int argc, char** argv) {
     printTables(results, summary,
                 "bench: " + runner.scene().name + ", " + std::to_string(results.configs.size()) + " configuration(s) x " +
                     fieldOr(results.settings, "frames", "?") + " frame(s) on " +
-                    fieldOr(results.machine, "gl_renderer", "?"));
+                    fieldOr(results.machine, "gl_renderer", "?") +
+                    (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
+                                     : std::string()));
     std::fflush(stdout);
     results.writeCsv(csv);
     writeBenchJson(json, results, summary);

@@ -292,7 +292,9 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
         {"frames", std::to_string(o_.frames)},
         {"warmup_per_switch", std::to_string(o_.warmup)},
         {"block", std::to_string(o_.block)},
-        {"lights", o_.grid.lights.empty() ? "the scene's own" : o_.keepSceneLights ? "generated, added to the scene's" : "generated"},
+        {"lights", o_.grid.lights.empty()  ? "the scene's own"
+                   : o_.keepSceneLights ? "generated, added to the scene's " + std::to_string(scene_.lights.size())
+                                        : "generated"},
         {"seed", std::to_string(o_.seed)},
         {"light_radius", std::to_string(radius_)},
         {"radius_threshold", std::to_string(threshold_)},

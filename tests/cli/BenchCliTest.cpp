@@ -239,6 +239,24 @@ TEST(BenchCli, LppLitLeavesOutPixelsWithoutASurface) {
     EXPECT_GT(lit, lpp * 1.1) << "LPP " << lpp << ", LPP lit " << lit;
 }
 
+// --keep-scene-lights: the lights column counts the generated lights, and
+// the title and settings.lights say how many of the scene's own are added.
+TEST(BenchCli, KeptSceneLightsAreCountedInTheTitleAndSettings) {
+    const fs::path dir = test::tempDir() / "bench-keep";
+    fs::create_directories(dir);
+    const Result r = run("bench --scene fire --size 32x18 --lights 5 --keep-scene-lights --frames 1 --warmup 0 --no-lpp "
+                         "--quiet --csv " + (dir / "k.csv").string() + " --json " + (dir / "k.json").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream f(dir / "k.json");
+    const nlohmann::json j = nlohmann::json::parse(f);
+    const std::string lights = j["settings"]["lights"].get<std::string>();
+    const std::string prefix = "generated, added to the scene's ";
+    ASSERT_EQ(lights.rfind(prefix, 0), 0u) << lights;
+    EXPECT_GT(std::stoi(lights.substr(prefix.size())), 100) << lights;  // the fire's flame lights
+    EXPECT_NE(r.out.find("the lights column: " + lights), std::string::npos) << r.out;
+    EXPECT_EQ(j["configs"][0]["lights"].get<int>(), 5);
+}
+
 // bench merge refuses what is not one grid's shards: shards of two runs
 // with different grids, and a CSV cut short; a missing shard is named.
 TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
