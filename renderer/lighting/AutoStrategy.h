@@ -12,10 +12,10 @@
 // every pixel) plus the lists they walk, which grow with the coverage.
 // Measured (docs/bench.md, "auto"; lighting pass at 640x360 in the default
 // scene on llvmpipe): volumes win while the lights cover the screen up to
-// about 7 times over (87 lights of radius 2, coverage 6.05: 15.1 ms against
-// tiled's 25.3 and 13.1 against 15.3 in a second run); tiled wins from there
-// (419 lights of radius 1, coverage 7.75: 15.3 against 19.0; 893 lights of
-// radius 2, coverage 56: 24.5 against 75.2).
+// about 9 times over (131 lights of radius 2, coverage 8.35: 13.3 ms against
+// tiled's 14.4; at 7.75 the two were even, 15.6 against 14.7); tiled wins
+// from there (595 lights of radius 1, coverage 10.9: 14.7 against 19.1; 893
+// lights of radius 2, coverage 56: 23.6 against 59.1).
 // A cluster's list holds only the lights of its depth slice, a tile's every
 // light across the tile's depth range, so with enough lights clustered
 // could overtake tiled; on llvmpipe it did not, up to coverage 657 (2923
@@ -23,7 +23,7 @@
 //   coverage < C   -> stencil_volumes
 //   coverage >= K  -> clustered
 //   otherwise      -> tiled
-// C and K the knobs lighting.auto_coverage (7) and
+// C and K the knobs lighting.auto_coverage (9) and
 // lighting.auto_cluster_coverage (1e6 by default: never, on this evidence;
 // a machine where clustered wins sets it from its own bench run). The mean
 // light's share of the screen (coverage / lights) is reported, not used.

@@ -50,7 +50,7 @@ public:
     const std::string& lastStrategy() const { return lastStrategy_; }
     // lighting.auto_coverage and lighting.auto_cluster_coverage defaults:
     // measured on llvmpipe at 640x360 (docs/bench.md, "auto").
-    static constexpr double kAutoCoverage = 7.0;
+    static constexpr double kAutoCoverage = 9.0;
     static constexpr double kAutoClusterCoverage = 1e6;  // never: tiled was faster at every coverage measured
     // The strategies, in the order of lighting.strategy's choices.
     const std::vector<std::unique_ptr<LightingStrategy>>& strategies() const { return strategies_; }

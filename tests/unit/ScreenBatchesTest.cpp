@@ -135,8 +135,10 @@ TEST(AutoStrategy, VolumesTiledOrClusteredByScreenCoverage) {
     EXPECT_STREQ(chooseLightingStrategy({250, 4.60}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({87, 6.05}, at).strategy, "stencil_volumes");
     EXPECT_STREQ(chooseLightingStrategy({29, 5.29}, at).strategy, "stencil_volumes");
-    EXPECT_STREQ(chooseLightingStrategy({419, 7.75}, at).strategy, "tiled");
-    EXPECT_STREQ(chooseLightingStrategy({131, 8.35}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({419, 7.75}, at).strategy, "stencil_volumes");  // even: 15.6 against 14.7 ms
+    EXPECT_STREQ(chooseLightingStrategy({131, 8.35}, at).strategy, "stencil_volumes");
+    EXPECT_STREQ(chooseLightingStrategy({595, 10.91}, at).strategy, "tiled");
+    EXPECT_STREQ(chooseLightingStrategy({48, 11.29}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({177, 11.66}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({856, 14.97}, at).strategy, "tiled");
     EXPECT_STREQ(chooseLightingStrategy({893, 55.91}, at).strategy, "tiled");
