@@ -86,6 +86,27 @@ def main():
     fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi)
     ax = fig.add_subplot(1, 1, 1)
     skipped = 0
+    counts = sorted({n for points in lines.values() for n in points if n > 0})
+    if len(counts) == 1:
+        # One light count: a line against the light count would be a column
+        # of points over a single tick, so a bar per configuration instead.
+        labels = [label for label in lines if counts[0] in lines[label]]
+        values = [lines[label][counts[0]] for label in labels]
+        ax.bar(range(len(labels)), values, color=[f"C{i % 10}" for i in range(len(labels))])
+        ax.set_xticks(range(len(labels)))
+        ax.set_xticklabels(labels, rotation=30 if len(labels) > 3 else 0, ha="right" if len(labels) > 3 else "center")
+        ax.set_xlabel(legend_title or "configuration")
+        ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median)")
+        ax.set_title(args.title or f"frame time at {counts[0]} lights")
+        ax.grid(True, axis="y", alpha=0.3)
+        fig.tight_layout()
+        try:
+            fig.savefig(args.out, dpi=dpi, format="png")
+        except OSError as e:
+            print(f"bench_plot: {args.out}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+            return 2
+        print(f"bench_plot: one light count ({counts[0]}): a bar per configuration", file=sys.stderr)
+        return 0
     for label, points in lines.items():
         xs = sorted(n for n in points if n > 0)  # a log axis has no 0
         skipped += len(points) - len(xs)

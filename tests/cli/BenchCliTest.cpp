@@ -309,6 +309,22 @@ TEST(BenchCli, APlotWithOnlyZeroLightsSaysSoInOneLine) {
     EXPECT_FALSE(fs::exists(dir / "z.png"));
 }
 
+// With one light count the plot is a bar per configuration (a line over
+// a single light count would be a column of points on one tick), of the size asked for.
+TEST(BenchCli, APlotOfOneLightCountIsABarPerConfiguration) {
+    const fs::path dir = test::tempDir() / "bench-bars";
+    fs::create_directories(dir);
+    const Result r = run("bench --scene default --size 32x18 --lights 5 --sweep lighting.strategy=stencil_volumes,tiled "
+                         "--frames 1 --warmup 0 --no-lpp --quiet --csv " + (dir / "b.csv").string() + " --json " +
+                         (dir / "b.json").string() + " --plot " + (dir / "b.png").string() + " --plot-size 300x200");
+    if (r.err.find("matplotlib is missing") != std::string::npos) GTEST_SKIP() << "python3-matplotlib is not installed";
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("one light count (5): a bar per configuration"), std::string::npos) << r.err;
+    const FloatImage plot = loadImageFloat((dir / "b.png").string());
+    EXPECT_EQ(plot.width, 300);
+    EXPECT_EQ(plot.height, 200);
+}
+
 TEST(BenchCli, OrbitAndWalkthroughAverageOverTheirPoses) {
     const fs::path dir = test::tempDir() / "bench-paths";
     fs::create_directories(dir);
