@@ -1,5 +1,6 @@
 #include "renderer/scene/SceneJsonLoader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -268,6 +269,39 @@ private:
         if (j.contains("path")) parseCameraPath(j["path"]);
     }
 
+    // Between two keyframes pos and look-at move linearly: the camera must not
+    // reach its look-at point, nor look along camera.up, on the way (both
+    // ends can be fine while the middle is not: pos going from one side of
+    // a fixed look-at to the other passes through it).
+    void checkPathSegment(const CameraKeyframe& a, const CameraKeyframe& b, const std::string& where) {
+        const glm::dvec3 v0 = glm::dvec3(a.target) - glm::dvec3(a.position);
+        const glm::dvec3 dv = glm::dvec3(b.target) - glm::dvec3(b.position) - v0;
+        const glm::dvec3 up(scene_.camera.up);
+        const double scale = std::max({static_cast<double>(sceneExtent()), glm::length(glm::dvec3(a.position)),
+                                       glm::length(glm::dvec3(a.target)), glm::length(glm::dvec3(b.position)),
+                                       glm::length(glm::dvec3(b.target))});
+        // The view vector v(t) = v0 + t dv is nearest zero at tView; its cross
+        // product with up, linear in t too, is nearest zero at tUp.
+        auto nearestZero = [](const glm::dvec3& p, const glm::dvec3& d) {
+            const double dd = glm::dot(d, d);
+            return dd > 0.0 ? std::clamp(-glm::dot(p, d) / dd, 0.0, 1.0) : 0.0;
+        };
+        const double tView = nearestZero(v0, dv), tUp = nearestZero(glm::cross(v0, up), glm::cross(dv, up));
+        auto timeAt = [&](double t) { return shortNumber(static_cast<float>(a.time + t * (b.time - a.time))); };
+        if (!(glm::length(v0 + tView * dv) > static_cast<double>(kMinViewDistance) * scale))
+            r_.fail(where, "on the way from the keyframe before it, the camera reaches its look-at point (at time " +
+                               timeAt(tView) + "), where it has no view direction");
+        for (const double t : {tView, tUp}) {
+            Camera c;
+            c.position = glm::vec3(glm::dvec3(a.position) + t * (glm::dvec3(b.position) - glm::dvec3(a.position)));
+            c.target = glm::vec3(glm::dvec3(a.target) + t * (glm::dvec3(b.target) - glm::dvec3(a.target)));
+            c.up = scene_.camera.up;
+            if (!upIsUsable(c))
+                r_.fail(where, "on the way from the keyframe before it, the camera looks along camera.up (at time " +
+                                   timeAt(t) + "); the view needs another direction");
+        }
+    }
+
     // A walk-through for `bench --walkthrough`: [{"time", "pos", "look-at"}, ...].
     void parseCameraPath(const json& j) {
         if (!j.is_array()) r_.fail("camera.path", std::string("expected an array of keyframes, got ") + typeName(j));
@@ -292,6 +326,7 @@ private:
                 r_.fail(where + ".look-at", problem->what);
             at.up = scene_.camera.up;
             if (!upIsUsable(at)) r_.fail(where + ".look-at", "looks along camera.up; the view needs another direction");
+            if (!scene_.cameraPath.empty()) checkPathSegment(scene_.cameraPath.back(), k, where);
             scene_.cameraPath.push_back(k);
         }
     }

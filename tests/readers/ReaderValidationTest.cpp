@@ -380,6 +380,16 @@ TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
     EXPECT_HAS(sceneError(writeText("path.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
         "path": [{"time": 0, "pos": [0, 1, 5], "look-at": [0, 0, 0]}, {"time": 1, "pos": [0, 9, 0], "look-at": [0, 0, 0]}]})"))),
                "path.json: camera.path[1].look-at: looks along camera.up");
+    // Both keyframes are fine, but pos moves through the fixed look-at point
+    // between them, and in the other file the view turns through camera.up.
+    EXPECT_HAS(sceneError(writeText("through.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
+        "path": [{"time": 0, "pos": [4, 2.5, 0], "look-at": [0, 2.5, 0]}, {"time": 2, "pos": [-4, 2.5, 0], "look-at": [0, 2.5, 0]}]})"))),
+               "through.json: camera.path[1]: on the way from the keyframe before it, the camera reaches its look-at "
+               "point (at time 1)");
+    EXPECT_HAS(sceneError(writeText("over.json", scene(R"("camera": {"pos": [0, 1, 5], "look-at": [0, 0, 0],
+        "path": [{"time": 0, "pos": [-4, 5, 0], "look-at": [0, 0, 0]}, {"time": 1, "pos": [4, 5, 0], "look-at": [0, 0, 0]}]})"))),
+               "over.json: camera.path[1]: on the way from the keyframe before it, the camera looks along camera.up "
+               "(at time 0.5)");
 }
 
 // Values that each fit a float but overflow in combination (lights summed in
