@@ -45,6 +45,17 @@ def read_medians(path, column):
     return lines, ", ".join(varying)
 
 
+def save(fig, path, dpi):
+    """Writes the figure as a PNG of exactly its size; False (after one line) when it cannot."""
+    try:
+        # No bbox_inches="tight": the image is exactly the size asked for.
+        fig.savefig(path, dpi=dpi, format="png")
+    except OSError as e:
+        print(f"bench_plot: {path}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+        return False
+    return True
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--csv", required=True)
@@ -100,10 +111,7 @@ def main():
         ax.set_title(args.title or f"frame time at {counts[0]} lights")
         ax.grid(True, axis="y", alpha=0.3)
         fig.tight_layout()
-        try:
-            fig.savefig(args.out, dpi=dpi, format="png")
-        except OSError as e:
-            print(f"bench_plot: {args.out}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+        if not save(fig, args.out, dpi):
             return 2
         print(f"bench_plot: one light count ({counts[0]}): a bar per configuration", file=sys.stderr)
         return 0
@@ -128,11 +136,7 @@ def main():
     if lines:
         ax.legend(title=legend_title or None, fontsize="small", title_fontsize="small")
     fig.tight_layout()
-    # No bbox_inches="tight": the image is exactly the size asked for.
-    try:
-        fig.savefig(args.out, dpi=dpi, format="png")
-    except OSError as e:
-        print(f"bench_plot: {args.out}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+    if not save(fig, args.out, dpi):
         return 2
     if skipped:
         print(f"bench_plot: left out {skipped} point(s) with 0 lights (log axis)", file=sys.stderr)
