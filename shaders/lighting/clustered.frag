@@ -27,7 +27,7 @@ void main() {
         for (uint k = 0u; k < cell.count; ++k) {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
-            // lightReaches' radius test first, on one texel: most listed
+            // The radius test first, on one texel: most listed
             // lights miss; its distance is kept for the shading.
             vec4 pr = candidatePositionRadius(int(i));
             vec3 toLight = pr.xyz - s.position;

@@ -68,36 +68,16 @@ vec3 lightRadianceAt(Light light, Surface s, vec3 L, float d, vec3 V) {
                       V, s.normal, s.diffuse, s.specular, s.exponent);
 }
 
-// lightReaches for the same caller: d already within the radius (or the
-// light unbounded), L as above.
+// Whether a light whose radius test passed (d <= radius, or the light
+// unbounded: the test attenuate() makes) reaches the point: for a spot
+// light, inside its cone (shadeLight's test, the same operations, so both
+// agree at the edge). The grid strategies test the radius on the light's
+// first texel and then this before shading, so the lights of a tile's or
+// cluster's list that cannot reach a pixel cost a distance, not a shading.
 bool spotReaches(Light light, vec3 L) {
     return int(light.attenuation.w + 0.5) != LIGHT_SPOT || dot(-L, light.directionCutoff.xyz) >= light.directionCutoff.w;
 }
 #endif
-
-// Whether `light` (or light-table row `row`) can light the surface point P: inside its
-// radius (the test attenuate() makes) and, for a spot light, inside its
-// cone (shadeLight's test, with the same operations so both agree at the
-// edge). The grid strategies ask first, so the lights of a tile's or
-// cluster's list that cannot reach a pixel cost a distance, not a shading.
-// Of `light`, only positionRadius, directionCutoff and attenuation are read.
-bool lightReaches(Light light, vec3 P) {
-    vec4 pr = light.positionRadius;
-    vec3 toLight = pr.xyz - P;
-    float d = length(toLight);
-    if (pr.w > 0.0 && d > pr.w) return false;
-    if (int(light.attenuation.w + 0.5) != LIGHT_SPOT) return true;
-    vec4 dc = light.directionCutoff;
-    return dot(-(toLight / max(d, 1e-6)), dc.xyz) >= dc.w;
-}
-
-bool lightReaches(uint row, vec3 P) {
-    Light light;
-    light.positionRadius = lights[row].positionRadius;
-    light.attenuation = lights[row].attenuation;
-    light.directionCutoff = lights[row].directionCutoff;
-    return lightReaches(light, P);
-}
 
 // Whether the pixel holds a surface to light (not background, not cleared depth).
 bool isSurface(Surface s) { return !(isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND); }

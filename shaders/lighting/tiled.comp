@@ -13,7 +13,7 @@
 //   3. turns the bit list into a list of candidate indices in shared memory
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
-//      surface (lightReaches and lightRadiance as light.frag, computing
+//      surface (the radius test, spotReaches and lightRadiance as light.frag, computing
 //      each light's distance and each pixel's view direction once) into
 //      the L-buffer with one read-modify-write. An invocation with several
 //      pixels walks the list for WALK of them at once, so each listed
@@ -244,7 +244,7 @@ void main() {
             for (uint e = 0u; e < toShade; ++e) {
                 int i = int(sList[e]);
                 vec4 pr = candidatePositionRadius(i);
-                // lightReaches' radius test on one texel; its distance is
+                // The radius test on one texel; its distance is
                 // kept for the shading.
                 bool near[WALK];
                 vec3 toLight[WALK];

@@ -34,7 +34,7 @@ layout(binding = CANDIDATE_DATA_UNIT) uniform samplerBuffer uCandidateData;
 
 vec4 candidatePositionRadius(int i) { return texelFetch(uCandidateData, 4 * i); }
 
-// Candidate i as a Light with the fields lightReaches and shadeLight read;
+// Candidate i as a Light with the fields spotReaches and shadeLight read;
 // no volume and no shadow map.
 Light candidateLight(int i) {
     Light light;
