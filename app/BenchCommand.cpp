@@ -17,6 +17,8 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include "app/CommandLine.h"
@@ -215,9 +217,9 @@ void requireWritable(const std::string& path, const std::string& what) {
     if (fs::is_directory(p, ec)) throw FileError(path, "cannot write the " + what + ": it is a folder");
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec)) throw FileError(path, "cannot write the " + what + ": no folder " + dir.string());
-    if (fs::exists(p, ec) ? access(path.c_str(), W_OK) != 0 : access(dir.c_str(), W_OK) != 0)
-        throw FileError(path, "cannot write the " + what + ": " + (fs::exists(p, ec) ? "the file" : "its folder") +
-                                  " is not writable");
+    const bool exists = fs::exists(p, ec);
+    if (access((exists ? p : dir).c_str(), W_OK) != 0)
+        throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
 }
 
 // --plot: a .png (the script writes PNG only) at least 50x50 (the script's
@@ -236,22 +238,15 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
 // files went: its command without argv[0], --shard, --csv, --json, --plot,
 // --plot-size and --quiet.
 std::string runOf(const std::string& command) {
-    std::vector<std::string> words;
-    size_t start = 0;
-    while (start <= command.size()) {
-        const size_t space = command.find(' ', start);
-        words.push_back(command.substr(start, space == std::string::npos ? std::string::npos : space - start));
-        if (space == std::string::npos) break;
-        start = space + 1;
-    }
-    std::string run;
-    for (size_t i = 1; i < words.size(); ++i) {
-        const std::string& w = words[i];
-        if (w == "--quiet" || w.rfind("--shard=", 0) == 0 || w.rfind("--csv=", 0) == 0 || w.rfind("--json=", 0) == 0 ||
-            w.rfind("--plot=", 0) == 0 || w.rfind("--plot-size=", 0) == 0)
-            continue;
-        if (w == "--shard" || w == "--csv" || w == "--json" || w == "--plot" || w == "--plot-size") {
-            ++i;
+    static const std::set<std::string> withValue = {"--shard", "--csv", "--json", "--plot", "--plot-size"};
+    std::istringstream words(command);
+    std::string w, run;
+    words >> w;  // argv[0]
+    while (words >> w) {
+        const std::string flag = w.substr(0, w.find('='));
+        if (w == "--quiet" || (withValue.count(flag) && flag != w)) continue;
+        if (withValue.count(w)) {
+            words >> w;  // its value
             continue;
         }
         run += (run.empty() ? "" : " ") + w;
@@ -293,14 +288,13 @@ int runMerge(int argc, char** argv) {
     for (const auto& in : inputs) {
         parts.push_back(BenchResults::readCsv(in));
         // A configuration without a whole-frame sample: the file was cut short.
-        for (const auto& c : parts.back().configs) {
-            bool anyFrame = false;
-            for (const auto& sample : parts.back().samples)
-                anyFrame = anyFrame || (sample.config == c.config.index && sample.series == "frame");
-            if (!anyFrame)
+        std::set<int> framed;
+        for (const auto& sample : parts.back().samples)
+            if (sample.series == "frame") framed.insert(sample.config);
+        for (const auto& c : parts.back().configs)
+            if (!framed.count(c.config.index))
                 throw FileError(in, "configuration " + std::to_string(c.config.index) +
                                         " has no frame samples (is the file cut short?)");
-        }
         // The machine and settings are in the shard's JSON beside its CSV, when there is one.
         const fs::path sibling = fs::path(in).replace_extension(".json");
         if (!fs::exists(sibling)) continue;

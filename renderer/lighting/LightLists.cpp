@@ -44,6 +44,7 @@ void CandidateBuffers::create() {
     rows = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "lighting candidates");
     data = gl::Buffer::create(sizeof(glm::vec4) * 4, nullptr, true, "lighting candidate data");
     dataTexture = gl::Texture::createBuffer(GL_RGBA32F);
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
 }
 
 void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) const {
@@ -54,12 +55,10 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
 
     // GL 4.5 guarantees 65536 texels (16384 candidates); llvmpipe and the
     // desktop drivers allow far more, but past the limit texelFetch reads 0.
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    if (maxTexels > 0 && rows.size() * 4 > static_cast<std::size_t>(maxTexels))
+    if (buffers.maxTexels > 0 && rows.size() * 4 > static_cast<std::size_t>(buffers.maxTexels))
         throw GlUnsupportedError(std::to_string(rows.size()) + " lights for the tiled or clustered lists need " +
                                  std::to_string(rows.size() * 4) + " texels of light data; this GL allows at most " +
-                                 std::to_string(maxTexels) + " (GL_MAX_TEXTURE_BUFFER_SIZE)");
+                                 std::to_string(buffers.maxTexels) + " (GL_MAX_TEXTURE_BUFFER_SIZE)");
 
     std::vector<glm::vec4> texels;
     texels.reserve(rows.size() * 4);

@@ -50,6 +50,7 @@ struct CandidateBuffers {
     gl::Buffer rows;
     gl::Buffer data;
     gl::Texture dataTexture;
+    GLint maxTexels = 0;  // GL_MAX_TEXTURE_BUFFER_SIZE, read by create()
     void create();
 };
 

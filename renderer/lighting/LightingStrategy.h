@@ -93,6 +93,10 @@ struct LightingFrame {
     std::function<void(const LightTableEntry&)> beginLight;
 };
 
+// Where the statistics line says the lights shaded from lists went, unless
+// the strategy says otherwise (forward: per-object lists).
+inline constexpr const char* kGridInTilesOrClusters = "in tiles or clusters";
+
 // What a strategy did, for the pass's statistics line.
 struct StrategyCounts {
     int volumes = 0;     // lights drawn through a volume mesh
@@ -100,7 +104,7 @@ struct StrategyCounts {
     int culled = 0;      // lights skipped (outside the view frustum)
     int grid = 0;        // lights shaded many at once from lists (tile, cluster or per-object)
     // Where the statistics line says the grid lights went.
-    const char* gridWhere = "in tiles or clusters";
+    const char* gridWhere = kGridInTilesOrClusters;
     int batches = 0;     // batched volume draws (each covers many lights)
 };
 

@@ -43,7 +43,7 @@ public:
     struct Counts {
         int directional = 0, directionalInGBuffer = 0, volumes = 0, batches = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
         int grid = 0;  // shaded from lists: tiles, clusters (tiled, clustered) or per object (forward)
-        const char* gridWhere = "in tiles or clusters";
+        const char* gridWhere = kGridInTilesOrClusters;
     };
     const Counts& lastCounts() const { return counts_; }
     // The strategy the last frame used (what auto picked, under auto).
