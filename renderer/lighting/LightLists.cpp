@@ -64,7 +64,11 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
     texels.reserve(rows.size() * 4);
     for (std::uint32_t row : rows) {
         const LightGpu& l = table.rows[row];
-        texels.insert(texels.end(), {l.positionRadius, l.directionCutoff, l.intensityExponent, l.attenuation});
+        // Only a spot light's cone limits it: the others get one that holds
+        // every direction, so tiled.comp's coneReaches tests no type.
+        const bool spot = table.entries[row].light->type == LightType::Spot;
+        texels.insert(texels.end(), {l.positionRadius, spot ? l.directionCutoff : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f),
+                                     l.intensityExponent, l.attenuation});
     }
     buffers.data.ensureSize(n * 4 * sizeof(glm::vec4), "lighting candidate data");
     if (!texels.empty()) buffers.data.update(0, texels.size() * sizeof(glm::vec4), texels.data());

@@ -40,7 +40,8 @@ int tileSizeOf(const KnobRegistry& knobs, IntKnob knob);
 // The grid strategies' candidates on the GPU: their light-table rows (SSBO
 // at LIGHT_CANDIDATES_SSBO) and, in the same order, the four vec4 of each
 // candidate's light that culling and shading read (positionRadius,
-// directionCutoff, intensityExponent, attenuation), as an RGBA32F buffer
+// directionCutoff, intensityExponent, attenuation; directionCutoff is
+// (0, 0, 0, -1) for a light that is not a spot), as an RGBA32F buffer
 // texture at CANDIDATE_DATA_UNIT. The shaders fetch light data as texels
 // rather than from the light table's SSBO: on llvmpipe a texel fetch at a
 // per-invocation index is one vector gather, an SSBO or shared-memory read a

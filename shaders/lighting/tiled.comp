@@ -13,11 +13,17 @@
 //   3. turns the bit list into a list of candidate indices in shared memory
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
-//      surface (the radius test, spotReaches and lightRadiance as light.frag, computing
-//      each light's distance and each pixel's view direction once) into
-//      the L-buffer with one read-modify-write. An invocation with several
-//      pixels walks the list for WALK of them at once, so each listed
-//      light's texels are fetched once for all of them.
+//      surface (the radius test, spotReaches and lightRadiance as light.frag,
+//      computing each pixel's view direction once) into the L-buffer with
+//      one read-modify-write. An invocation with several pixels walks the
+//      list for WALK of them at once, 32 listed lights at a time: first it
+//      marks which of the 32 reach one of its WALK pixels (one light's
+//      position and cone fetched once for all of them), then it shades only
+//      the marked ones. On a CPU rasteriser a branch does not skip its body
+//      for lanes that all fail it (the body runs under a mask), but a loop
+//      stops when its last lane is done, so the shading loop costs the
+//      marked lights alone, not the whole list (lighting pass at 10 000
+//      lights, 640x360: docs/bench.md).
 // Light data comes from the candidates' buffer texture (tiles.glsl). On
 // llvmpipe walking the index list costs a third of walking the bits with
 // findLSB (lighting pass at 1000 lights, 640x360: docs/bench.md).
@@ -241,30 +247,42 @@ void main() {
             shaded[j] = 0u;
         }
         if (toShade > 0u && any) {
-            for (uint e = 0u; e < toShade; ++e) {
-                int i = int(sList[e]);
-                vec4 pr = candidatePositionRadius(i);
-                // The radius test on one texel; its distance is
-                // kept for the shading.
-                bool near[WALK];
-                vec3 toLight[WALK];
-                float dist[WALK];
-                bool anyNear = false;
-                for (int j = 0; j < WALK; ++j) {
-                    toLight[j] = pr.xyz - surf[j].position;
-                    dist[j] = length(toLight[j]);
-                    near[j] = lit[j] && !(pr.w > 0.0 && dist[j] > pr.w);
-                    anyNear = anyNear || near[j];
+            for (uint c = 0u; c < toShade; c += 32u) {
+                uint n = min(32u, toShade - c);
+                // Bit b: listed light c + b reaches one of this
+                // invocation's WALK pixels.
+                uint reach = 0u;
+                for (uint b = 0u; b < n; ++b) {
+                    int i = int(sList[c + b]);
+                    vec4 pr = candidatePositionRadius(i);
+                    // The same operations as the shading loop's test
+                    // below, so both agree on every light.
+                    vec4 cone = candidateCone(i);
+                    bool r = false;
+                    for (int j = 0; j < WALK; ++j) {
+                        vec3 toLight = pr.xyz - surf[j].position;
+                        float dist = length(toLight);
+                        vec3 L = toLight / max(dist, 1e-6);
+                        r = r || (lit[j] && !(pr.w > 0.0 && dist > pr.w) && coneReaches(cone, L));
+                    }
+                    if (r) reach |= 1u << b;
                 }
-                if (!anyNear) continue;
-                Light light = candidateLight(i);
-                // No early exit in this loop: on llvmpipe a continue here
-                // costs more than it saves.
-                for (int j = 0; j < WALK; ++j) {
-                    vec3 L = toLight[j] / max(dist[j], 1e-6);
-                    if (near[j] && spotReaches(light, L)) {
-                        sum[j] += lightRadianceAt(light, surf[j], L, dist[j], V[j]);
-                        ++shaded[j];
+                // In list order, so each pixel's sum is the same whatever
+                // the other pixels of the walk.
+                while (reach != 0u) {
+                    uint b = uint(findLSB(reach));
+                    reach &= reach - 1u;
+                    int i = int(sList[c + b]);
+                    Light light = candidateLight(i);
+                    vec4 pr = light.positionRadius;
+                    for (int j = 0; j < WALK; ++j) {
+                        vec3 toLight = pr.xyz - surf[j].position;
+                        float dist = length(toLight);
+                        vec3 L = toLight / max(dist, 1e-6);
+                        if (lit[j] && !(pr.w > 0.0 && dist > pr.w) && spotReaches(light, L)) {
+                            sum[j] += lightRadianceAt(light, surf[j], L, dist, V[j]);
+                            ++shaded[j];
+                        }
                     }
                 }
             }

@@ -28,11 +28,18 @@ layout(std430, binding = LIGHT_CANDIDATES_SSBO) readonly buffer LightCandidates 
 };
 
 // The same candidates' light data, four texels each in candidate order:
-// positionRadius, directionCutoff, intensityExponent, attenuation (see
-// CandidateBuffers in renderer/lighting/LightLists.h for why texels).
+// positionRadius, directionCutoff (a spot light's; (0, 0, 0, -1) for the
+// others), intensityExponent, attenuation (see CandidateBuffers in
+// renderer/lighting/LightLists.h for why texels).
 layout(binding = CANDIDATE_DATA_UNIT) uniform samplerBuffer uCandidateData;
 
 vec4 candidatePositionRadius(int i) { return texelFetch(uCandidateData, 4 * i); }
+// Candidate i's direction and cos(cutoff): a spot light's, and (0, 0, 0, -1)
+// for any other light (LightLists::upload), so coneReaches needs no type.
+vec4 candidateCone(int i) { return texelFetch(uCandidateData, 4 * i + 1); }
+// spotReaches for a candidate's cone: the same operations for a spot light,
+// always true for the others (dot(-L, 0) = 0 >= -1).
+bool coneReaches(vec4 cone, vec3 L) { return dot(-L, cone.xyz) >= cone.w; }
 
 // Candidate i as a Light with the fields spotReaches and shadeLight read;
 // no volume and no shadow map.
