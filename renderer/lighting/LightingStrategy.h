@@ -118,6 +118,14 @@ public:
     // Outputs of its own (e.g. per-tile light counts), published by the lighting pass.
     virtual std::vector<OutputDecl> outputs() const { return {}; }
     virtual void setup(gl::ShaderLibrary& shaders) { (void)shaders; }
+    // Whether shade() makes this frame's first write of the L-buffer itself
+    // (every pixel: shaders/lighting/ambient.glsl's firstRadiance, the
+    // ambient term, emission and the sky) in the pass that adds its lights,
+    // as tiled shading does (Andersson 2009: one compute pass per tile reads
+    // the G-buffer once and writes the final radiance). The lighting pass
+    // then draws no ambient pass, and blends the directional and unbounded
+    // lights after shade() instead of before.
+    virtual bool writesFirstRadiance(const FrameContext& ctx) const { (void)ctx; return false; }
     virtual StrategyCounts shade(LightingFrame& frame) = 0;
     // In a frame another strategy shades: writes those of this strategy's own
     // outputs that were asked for (ctx.wants), without shading, so its light

@@ -31,6 +31,10 @@ TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKno
                                "tiled: a light must also span one of 32 depth slices of the tile that holds a surface "
                                "(2.5D culling, Harada 2012), not only the tile's frustum between its nearest and "
                                "farthest surface");
+    ambient_ = knobs.addBool("lighting.tile_ambient", true, "lighting",
+                             "tiled: the compute pass also writes the ambient term, emission and the sky (one read of "
+                             "the G-buffer and one write of the L-buffer per pixel), instead of a full-screen ambient "
+                             "pass before it; the image is the same either way (up to the order of the sums)");
     coarse_ = knobs.addBool("lighting.tile_coarse", true, "lighting",
                             "tiled: a coarse pass first culls the lights against tiles of 4 x 4 tiles, and each tile "
                             "tests only its coarse tile's lights, not all of them (a two-level light grid); the "
@@ -64,7 +68,9 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     FrameContext& ctx = f.ctx;
     const bool counts = ctx.wants(kTileCounts);
     const bool overlap = shade && f.counting;
-    if (!counts && (!shade || lists.shaded == 0)) return;
+    // With lighting.tile_ambient a shading dispatch makes the L-buffer's
+    // first write, with or without lights.
+    if (!counts && (!shade || (lists.shaded == 0 && !writesFirstRadiance(ctx)))) return;
 
     const int tile = tileSizeOf(ctx.knobs, tileSize_);
     const int pixels = tile * tile;
@@ -121,7 +127,8 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
         program.set(1, first);
         program.set(2, end);
         program.set(3, lists.shaded);
-        program.set(4, (shade ? 1 : 0) | (overlap ? 2 : 0) | (counts ? 4 : 0) | (first > 0 ? 8 : 0));
+        program.set(4, (shade ? 1 : 0) | (overlap ? 2 : 0) | (counts ? 4 : 0) | (first > 0 ? 8 : 0) |
+                           (shade && first == 0 && writesFirstRadiance(ctx) ? 16 : 0));
         glDispatchCompute(tilesX, tilesY, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);

@@ -6,10 +6,14 @@
 // sphere against the tile's frustum between them (and, with
 // lighting.tile_depth_mask, against the tile's depth slices that hold a
 // surface: 2.5D culling, Harada 2012) into a list in shared memory, and adds
-// the list's lights that reach each pixel into the L-buffer (imageLoad /
-// imageStore on lbuffer, after the ambient pass) with the light shader's
-// lightRadiance (shaders/lighting/shade.glsl), so the image is the volume
-// strategies'. Lights with a shadow map are shaded one at a time (see
+// the list's lights that reach each pixel into the L-buffer (imageStore on
+// lbuffer) with the light shader's lightRadiance (shaders/lighting/
+// shade.glsl), so the image is the volume strategies'. With
+// lighting.tile_ambient (the default) the pass also makes the L-buffer's first
+// write (the ambient term, emission, the sky: shaders/lighting/ambient.glsl),
+// so it reads the G-buffer once and writes each pixel once, and the lighting
+// pass draws no ambient pass before it; without, it adds to what the ambient
+// pass wrote (imageLoad + imageStore). Lights with a shadow map are shaded one at a time (see
 // LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
 // With lighting.tile_coarse (the default) a coarse pass
@@ -40,6 +44,9 @@ public:
     }
     std::vector<OutputDecl> outputs() const override;
     void setup(gl::ShaderLibrary& shaders) override;
+    // lighting.tile_ambient: the first dispatch writes every pixel's first
+    // radiance with its lights.
+    bool writesFirstRadiance(const FrameContext& ctx) const override { return ctx.knobs.get(ambient_); }
     StrategyCounts shade(LightingFrame& frame) override;
     void writeOutputs(LightingFrame& frame) override;
 
@@ -55,6 +62,7 @@ private:
     IntKnob tileThreads_;
     BoolKnob depthMask_;
     BoolKnob coarse_;
+    BoolKnob ambient_;
     int cpuLanes_ = 0;  // simdLanes() of the context setup ran in
     gl::ShaderLibrary* shaders_ = nullptr;
     // The coarse culling pass and the tiles' pass.

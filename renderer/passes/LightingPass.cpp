@@ -143,6 +143,13 @@ void LightingPass::execute(FrameContext& ctx) {
     params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     params.sky = sky ? 1 : 0;
     params.windowExponent = k.get(windowExponent_);
+    // The directional lights the G-buffer pass shaded (lighting.directional_in_gbuffer).
+    std::vector<int> shadedInGBuffer;
+    if (k.get(directionalInGBuffer_) && ctx.produced("gbuffer.directional"))
+        shadedInGBuffer = gbufferDirectionalRows(table, ctx.shadows != nullptr);
+    params.gbufferDirectional = shadedInGBuffer.empty() ? 0 : 1;
+    params.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
+    params.background = glm::vec4(ctx.scene.background, 0.0f);
     params_.upload(params, binding::kPassUbo);
 
     // The L-buffer gets its own copy of the G-buffer depth: the stencil test
@@ -161,36 +168,23 @@ void LightingPass::execute(FrameContext& ctx) {
     const gl::Texture* occlusionTexture = occlusion ? &ctx.texture("ssao.blurred") : &white_;
     const gl::Texture* skyTexture = sky ? &ctx.texture("sky") : nullptr;
     const gl::Texture& bakedOcclusion = ctx.texture("gbuffer.occlusion");
+    const gl::Texture* gbufferDirectional = shadedInGBuffer.empty() ? nullptr : &ctx.texture("gbuffer.directional");
     auto bindInputs = [&] {
         for (std::size_t unit = 0; unit < std::size(kGBufferInputs); ++unit) inputTextures[unit]->bind(static_cast<GLuint>(unit));
         occlusionTexture->bind(5);
         if (skyTexture) skyTexture->bind(9);
         bakedOcclusion.bind(11);
+        if (gbufferDirectional) gbufferDirectional->bind(12);
         table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
         params_.bind(binding::kPassUbo);
     };
     bindInputs();
 
-    // Ambient + emission + background: the first write, no blending.
-    gl::resetPipelineState(ctx.width, ctx.height);
-    fbo.bind();
-    if (counting) {
-        fbo.setDrawBuffers({0, 1});  // clearing draw buffer 1 needs it enabled
-        fbo.clearColor(1, 0, 0, 0, 0);
-    }
-    fbo.setDrawBuffers({0});
-    ambientProgram_->use();
-    ambientProgram_->set(0, ctx.scene.ambient);
-    ambientProgram_->set(1, ctx.scene.background);
-    // The directional lights the G-buffer pass shaded (lighting.directional_in_gbuffer).
-    std::vector<int> shadedInGBuffer;
-    if (k.get(directionalInGBuffer_) && ctx.produced("gbuffer.directional")) {
-        shadedInGBuffer = gbufferDirectionalRows(table, ctx.shadows != nullptr);
-        ctx.texture("gbuffer.directional").bind(12);
-    }
-    ambientProgram_->set(2, shadedInGBuffer.empty() ? 0 : 1);
-    triangle_.draw();
-
+    // The bounded lights go to the strategy; directional and unbounded
+    // lights cover the screen whatever the strategy.
+    counts_ = {};
+    shading_.setSphereSubdivisions(ctx.knobs.get(volumeSubdivisions_));
+    counts_.belowThreshold = table.belowThreshold;
     // Every light: its shadow map first when maps are reused, then the
     // L-buffer target with additive blending.
     auto beginLight = [&](const LightTableEntry& e) {
@@ -204,36 +198,49 @@ void LightingPass::execute(FrameContext& ctx) {
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
     };
-
-    // Directional and unbounded lights cover the screen whatever the strategy.
-    counts_ = {};
-    shading_.setSphereSubdivisions(ctx.knobs.get(volumeSubdivisions_));
-    counts_.belowThreshold = table.belowThreshold;
     LightingFrame frame{ctx, table, {}, counting, shading_, beginLight};
-    const gl::Program& fullscreen = shading_.fullscreen(counting);
+    std::vector<const LightTableEntry*> screenLights;
     for (const LightTableEntry& e : table.entries) {
         const bool bounded = e.light->type != LightType::Directional && e.volume.shape != VolumeShape::FullScreen;
-        if (bounded) {
-            frame.lights.push_back(&e);
-            continue;
-        }
-        if (std::find(shadedInGBuffer.begin(), shadedInGBuffer.end(), e.row) != shadedInGBuffer.end()) {
+        if (bounded) frame.lights.push_back(&e);
+        else if (std::find(shadedInGBuffer.begin(), shadedInGBuffer.end(), e.row) != shadedInGBuffer.end())
             ++counts_.directionalInGBuffer;
-            continue;
-        }
-        beginLight(e);
-        fullscreen.use();
-        fullscreen.set(0, e.row);
-        triangle_.draw();
-        if (e.light->type == LightType::Directional) ++counts_.directional;
-        else ++counts_.fullscreen;
+        else screenLights.push_back(&e);
     }
     LightingStrategy& strategy = pickStrategy(ctx, frame.lights);
+    const bool strategyWritesFirst = strategy.writesFirstRadiance(ctx);
+
+    gl::resetPipelineState(ctx.width, ctx.height);
+    fbo.bind();
+    if (counting) {
+        fbo.setDrawBuffers({0, 1});  // clearing draw buffer 1 needs it enabled
+        fbo.clearColor(1, 0, 0, 0, 0);
+    }
+    fbo.setDrawBuffers({0});
+    // Ambient + emission + background: the first write, no blending (unless
+    // the strategy's own pass makes it).
+    if (!strategyWritesFirst) {
+        ambientProgram_->use();
+        triangle_.draw();
+    }
+    const gl::Program& fullscreen = shading_.fullscreen(counting);
+    auto drawScreenLights = [&] {
+        for (const LightTableEntry* e : screenLights) {
+            beginLight(*e);
+            fullscreen.use();
+            fullscreen.set(0, e->row);
+            triangle_.draw();
+            if (e->light->type == LightType::Directional) ++counts_.directional;
+            else ++counts_.fullscreen;
+        }
+    };
+    if (!strategyWritesFirst) drawScreenLights();
     // Spheres before cones (fewer state changes), otherwise in scene order.
     std::stable_sort(frame.lights.begin(), frame.lights.end(), [](const LightTableEntry* a, const LightTableEntry* b) {
         return (a->volume.shape == VolumeShape::Cone) < (b->volume.shape == VolumeShape::Cone);
     });
     const StrategyCounts sc = strategy.shade(frame);
+    if (strategyWritesFirst) drawScreenLights();
     for (auto& other : strategies_)
         if (other.get() != &strategy) other->writeOutputs(frame);  // their lists, when asked for
     counts_.volumes = sc.volumes;

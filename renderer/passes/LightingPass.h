@@ -2,11 +2,15 @@
 // Lighting into the HDR L-buffer (seed 000 sections 3.2 and 5.2.1; seed 002
 // step 4). Reads the G-buffer, the light table (lights.table) and, when they
 // ran, ssao.blurred and sky; writes lbuffer (RGBA32F) by additive blending:
-// the ambient term, emission and the sky first, then each directional (and
-// unbounded) light as a full-screen pass, then the bounded point and spot
-// lights by the strategy lighting.strategy names (renderer/lighting/
-// LightingStrategy.h: stencil_volumes, volumes, fullscreen, tiled (which adds
-// by image load/store from a compute pass), clustered, and any registered).
+// the ambient term, emission and the sky first (shaders/lighting/
+// ambient.glsl), then each directional (and unbounded) light as a
+// full-screen pass, then the bounded point and spot lights by the strategy
+// lighting.strategy names (renderer/lighting/LightingStrategy.h:
+// stencil_volumes, volumes, fullscreen, tiled (a compute pass writing by
+// image load/store), clustered, and any registered). A strategy whose own
+// pass makes the first write (LightingStrategy::writesFirstRadiance: tiled
+// with lighting.tile_ambient) goes first instead, and the directional lights
+// after it.
 // Shadow maps come from the shadow pass (FrameContext::shadows),
 // rendered just before their light when maps are reused. Also writes
 // lbuffer.depth (the G-buffer depth copied, with the stencil the volumes

@@ -14,16 +14,20 @@
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
 //      surface (the radius test, spotReaches and lightRadiance as light.frag,
-//      computing each pixel's view direction once) into the L-buffer with
-//      one read-modify-write. An invocation with several pixels walks the
-//      list for WALK of them at once, 32 listed lights at a time: first it
-//      marks which of the 32 reach one of its WALK pixels (one light's
-//      position and cone fetched once for all of them), then it shades only
-//      the marked ones. On a CPU rasteriser a branch does not skip its body
-//      for lanes that all fail it (the body runs under a mask), but a loop
-//      stops when its last lane is done, so the shading loop costs the
-//      marked lights alone, not the whole list (lighting pass at 10 000
-//      lights, 640x360: docs/bench.md).
+//      computing each pixel's view direction once) into the L-buffer. With
+//      lighting.tile_ambient the first dispatch (FLAG_FIRST) also writes
+//      each pixel's first radiance (ambient.glsl: ambient, emission, the
+//      sky), so the G-buffer is read once and the L-buffer written once,
+//      with no full-screen ambient pass before (Andersson 2009); otherwise,
+//      and in later dispatches, it adds with one read-modify-write. An invocation
+//      with several pixels walks the list for WALK of them at once, 32
+//      listed lights at a time: first it marks which of the 32 reach one of
+//      its WALK pixels (one light's position and cone fetched once for all
+//      of them), then it shades only the marked ones. On a CPU rasteriser a
+//      branch does not skip its body for lanes that all fail it (the body
+//      runs under a mask), but a loop stops when its last lane is done, so
+//      the shading loop costs the marked lights alone, not the whole list
+//      (lighting pass at 10 000 lights, 640x360: docs/bench.md).
 // Light data comes from the candidates' buffer texture (tiles.glsl). On
 // llvmpipe walking the index list costs a third of walking the bits with
 // findLSB (lighting pass at 1000 lights, 640x360: docs/bench.md).
@@ -37,6 +41,7 @@
 // Shaded lights never have a shadow map (those go one at a time).
 #define UNSHADOWED 1
 #include "shade.glsl"
+#include "ambient.glsl"
 #include "tiles.glsl"
 
 #ifndef TILE_THREADS
@@ -64,6 +69,7 @@ layout(location = 4) uniform int uFlags;
 #define FLAG_COUNT_OVERLAP 2
 #define FLAG_TILE_COUNTS 4
 #define FLAG_ADD_COUNTS 8  // not the first dispatch: add to the tile counts
+#define FLAG_FIRST 16      // write firstRadiance plus the lights, no read (lighting.tile_ambient)
 
 // MAX_CANDIDATES (the candidates of one dispatch) and COARSE (tiles per
 // coarse tile edge, when lighting.tile_coarse) come from TiledStrategy.cpp.
@@ -97,11 +103,12 @@ bool pixelInTile(uint k, ivec2 size) {
            all(lessThan(tilePixel(k), size));
 }
 
-// Adds a pixel's sum into the L-buffer and writes its counts. Each pixel
-// belongs to one invocation, and the L-buffer's earlier writes (ambient,
-// directional lights) came through the framebuffer before this dispatch.
-void writePixel(ivec2 px, vec3 sum, uint shaded, uint tileLights) {
-    if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
+// Writes a pixel's sum into the L-buffer (on top of its first radiance in
+// the first dispatch, else added to what is there) and its counts. Each
+// pixel belongs to one invocation.
+void writePixel(ivec2 px, Surface s, vec3 sum, uint shaded, uint tileLights) {
+    if ((uFlags & FLAG_FIRST) != 0) imageStore(uLBuffer, px, vec4(firstRadiance(px, s) + sum, 1.0));
+    else if (shaded > 0u) imageStore(uLBuffer, px, imageLoad(uLBuffer, px) + vec4(sum, 0.0));
     if ((uFlags & FLAG_COUNT_OVERLAP) != 0) imageStore(uOverlap, px, imageLoad(uOverlap, px) + vec4(float(shaded)));
     if ((uFlags & FLAG_TILE_COUNTS) != 0) {
         float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
@@ -288,6 +295,6 @@ void main() {
             }
         }
         for (int j = 0; j < WALK; ++j)
-            if (inside[j]) writePixel(tilePixel(k + uint(j)), sum[j], shaded[j], tileLights);
+            if (inside[j]) writePixel(tilePixel(k + uint(j)), surf[j], sum[j], shaded[j], tileLights);
     }
 }

@@ -644,3 +644,58 @@ TEST(TiledLighting, AutoPicksByCoverageAndRendersThatStrategy) {
                     stats.c_str());
     }
 }
+
+// lighting.tile_ambient: the tiled compute pass writing each pixel's first
+// radiance itself (ambient.glsl: the ambient term with SSAO and baked
+// occlusion, emission, the sky) gives the image of the full-screen ambient
+// pass before it, with directional lights (blended after the pass instead of
+// before), shadowed lights shaded one at a time, directional lights shaded in
+// the G-buffer pass, and with no bounded light at all (the pass still makes
+// the first write). The sums are the same up to their order: within a few
+// float roundings.
+TEST(TiledLighting, TileAmbientChangesNoPixel) {
+    auto session = test::makeSession(160, 90);
+    const auto* lighting = session->pipeline().pass<LightingPass>();
+    auto worstRelative = [](const FloatImage& a, const FloatImage& b) {
+        double worst = 0.0;
+        for (int y = 0; y < a.height; ++y)
+            for (int x = 0; x < a.width; ++x)
+                for (int c = 0; c < 4; ++c) {
+                    const double va = a.at(x, y, c), vb = b.at(x, y, c);
+                    worst = std::max(worst, std::fabs(va - vb) / (std::max(std::fabs(va), std::fabs(vb)) + 1e-6));
+                }
+        return worst;
+    };
+    struct Case {
+        const char* scene;
+        const char* directionalInGBuffer;
+        bool boundedLights;
+    };
+    for (const Case c : {Case{"default", "false", true}, Case{"default", "true", true}, Case{"street", "false", true},
+                         Case{"street", "false", false}}) {
+        const std::string what = std::string(c.scene) + ", directional_in_gbuffer " + c.directionalInGBuffer +
+                                 (c.boundedLights ? "" : ", no bounded light");
+        session->loadScene(c.scene);
+        if (!c.boundedLights)
+            for (Light& l : session->mutableScene().lights) l.enabled = l.type == LightType::Directional;
+        session->knobs().setFromString("lighting.strategy", "tiled");
+        session->knobs().setFromString("lighting.directional_in_gbuffer", c.directionalInGBuffer);
+        std::map<std::string, FloatImage> lbuffer, overlap;
+        for (const char* fused : {"false", "true"}) {
+            session->knobs().setFromString("lighting.tile_ambient", fused);
+            session->render({{"lbuffer", "lighting.overlap"}});
+            lbuffer[fused] = session->readRaw("lbuffer");
+            overlap[fused] = session->readRaw("lighting.overlap");
+        }
+        const std::string stats = lighting->stats();
+        std::printf("%s: %s\n", what.c_str(), stats.c_str());
+        // Every pixel written (the sky or a lit surface), not all alike.
+        const auto red = test::stats(lbuffer["true"], 0);
+        EXPECT_GT(red.min, 0.0) << what;
+        EXPECT_GT(red.max, 2.0 * red.min) << what;
+        const double worst = worstRelative(lbuffer["true"], lbuffer["false"]);
+        std::printf("%s: tile_ambient on against off: worst relative difference %.3g\n", what.c_str(), worst);
+        EXPECT_LE(worst, 1e-5) << what;
+        EXPECT_EQ(test::maxAbsDifference(overlap["true"], overlap["false"], 1), 0.0) << what;
+    }
+}

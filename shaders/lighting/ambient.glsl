@@ -1,0 +1,33 @@
+// The L-buffer's first write at a pixel, before any light is added: the sky
+// (or the background colour) where no geometry is, else the ambient term
+// k_a i_a (seed 000 eq. 2.1; k_a = diffuse, plus specular when
+// lighting.ambient_specular is on) scaled by the ambient-occlusion
+// accessibility, plus emitted radiance. The accessibility is the product of
+// the screen-space one (ssao.blurred, when it ran) and the materials' baked
+// one (gbuffer.occlusion), as lighting.ambient_occlusion selects. With
+// lighting.directional_in_gbuffer the directional lights the G-buffer pass
+// shaded (gbuffer.directional) are added here instead of a full-screen pass
+// each. Written by ambient.frag, or by a strategy whose own pass makes the
+// first write (tiled.comp: LightingStrategy::writesFirstRadiance).
+#ifndef AMBIENT_GLSL
+#define AMBIENT_GLSL
+#include "gbuffer_read.glsl"
+#include "../params/lighting.h"
+
+layout(binding = 9) uniform sampler2D uSky;                      // when lightingParams.sky != 0
+layout(binding = 11) uniform sampler2D uBakedOcclusion;          // gbuffer.occlusion
+layout(binding = 12) uniform sampler2D uGBufferDirectionalLight;  // when lightingParams.gbufferDirectional != 0
+
+vec3 firstRadiance(ivec2 px, Surface s) {
+    vec3 background = lightingParams.sky != 0 ? texelFetch(uSky, px, 0).rgb : lightingParams.background.rgb;
+    float access = lightingParams.occlusion != 0 ? texelFetch(uOcclusion, px, 0).r : 1.0;
+    if (lightingParams.bakedOcclusion != 0) access *= texelFetch(uBakedOcclusion, px, 0).r;
+    vec3 emitted = texelFetch(uEmissive, px, 0).rgb;
+    vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
+    vec3 directional =
+        lightingParams.gbufferDirectional != 0 ? texelFetch(uGBufferDirectionalLight, px, 0).rgb : vec3(0.0);
+    vec3 lit = lightingParams.ambient.rgb * reflectance * access + emitted + directional;
+    return isFarDepth(s.depth) || s.pixelType == PIXEL_BACKGROUND ? background : lit;
+}
+
+#endif
