@@ -28,7 +28,9 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/graph/Pipeline.h"
 #include "renderer/io/JsonGuard.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/io/TextFile.h"
 
 extern char** environ;
@@ -44,11 +46,11 @@ const char* const kBenchUsage =
     "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
     "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]...\n"
     "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
-    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--resamples N]\n"
-    "                                [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
-    "                                [--quiet]\n"
+    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of PASS]\n"
+    "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
+    "                                [--plot-size WxH] [--quiet]\n"
     "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--baseline axis=value] [--resamples N]\n"
+    "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of PASS] [--resamples N]\n"
     "  --size       render sizes (default 640x360); one session per size, all in one process\n"
     "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
     "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"
@@ -64,6 +66,8 @@ const char* const kBenchUsage =
     "  --lpp-poses  poses the untimed lights-per-pixel frame averages on a moving camera (default 4)\n"
     "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
     "               knob); default: the first value of the first swept knob (else lights, else size)\n"
+    "  --ratio-of   the series each ratio and its interval compare: frame (the default), a pass\n"
+    "               (e.g. lighting: the strategies alone) or a span (PASS/NAME); list passes names them\n"
     "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
     "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
     "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
@@ -224,6 +228,22 @@ void requireWritable(const std::string& path, const std::string& what) {
 
 // --plot: a .png (the script writes PNG only) at least 50x50 (the script's
 // least), in a folder that can be written.
+// --ratio-of before a run: the frame, a pass of the pipeline or a span of
+// one ("PASS/NAME", whose names are known only once the pass runs). Throws
+// Error naming the passes.
+void checkRatioSeriesNamesAPass(const std::string& series) {
+    if (series == PassTimer::kFrameSeries) return;
+    KnobRegistry knobs;
+    const Pipeline pipeline(knobs);
+    const std::string pass = series.substr(0, series.find('/'));
+    std::string names;
+    for (const PassInfo& p : pipeline.passList()) {
+        if (p.name == pass && (pass == series || series.size() > pass.size() + 1)) return;
+        names += (names.empty() ? "" : ", ") + p.name;
+    }
+    throw Error("--ratio-of: '" + series + "' is not frame, a pass (" + names + ") or a span PASS/NAME of one");
+}
+
 void checkPlotOptions(const std::optional<std::string>& plot, int width, int height) {
     if (!plot) return;
     std::string ext = fs::path(*plot).extension().string();
@@ -269,6 +289,7 @@ int runMerge(int argc, char** argv) {
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
     const std::string baselineSpec = cl.value("--baseline").value_or("");
+    const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     cl.finish("bench merge");
     const std::vector<std::string> inputs = cl.positional();
@@ -362,7 +383,16 @@ int runMerge(int argc, char** argv) {
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     all.settings.emplace_back("merged_from", from);
 
-    const BenchSummary summary = summarize(all, chooseBaseline(all, baselineSpec), resamples);
+    BenchBaseline baseline = chooseBaseline(all, baselineSpec);
+    baseline.series = ratioOf;
+    if (!hasSeries(all, ratioOf)) {
+        std::set<std::string> seen;
+        for (const auto& sample : all.samples) seen.insert(sample.series);
+        std::string names;
+        for (const auto& n : seen) names += (names.empty() ? "" : ", ") + n;
+        throw Error("--ratio-of: no configuration of these shards has samples of '" + ratioOf + "' (" + names + ")");
+    }
+    const BenchSummary summary = summarize(all, baseline, resamples);
     printTables(all, summary,
                 "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
                     std::to_string(inputs.size()) + " shard(s)");
@@ -454,6 +484,7 @@ int runBenchCommand(int argc, char** argv) {
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
     const std::string baselineSpec = cl.value("--baseline").value_or("");
+    const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     const bool quiet = cl.flag("--quiet");
     cl.finish("bench");
@@ -462,6 +493,7 @@ int runBenchCommand(int argc, char** argv) {
     checkPlotOptions(plot, plotW, plotH);
     requireWritable(csv, "bench CSV");
     requireWritable(json, "bench JSON");
+    checkRatioSeriesNamesAPass(ratioOf);
     if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);
 
@@ -477,7 +509,8 @@ int runBenchCommand(int argc, char** argv) {
     // Everything that can fail without GL fails here: knobs, values, the scene, the baseline.
     o.baseline = baselineSpec;
     BenchRunner runner(std::move(o));
-    const BenchBaseline baseline = runner.baseline();
+    BenchBaseline baseline = runner.baseline();
+    baseline.series = ratioOf;
     for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     auto context = HeadlessGlContext::create();

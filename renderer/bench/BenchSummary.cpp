@@ -147,17 +147,23 @@ BenchBaseline chooseBaseline(const BenchGrid& grid, int sceneLights, const std::
     return chooseFrom(axes, spec);
 }
 
+bool hasSeries(const BenchResults& results, const std::string& series) {
+    for (const auto& s : results.samples)
+        if (s.series == series) return true;
+    return false;
+}
+
 BenchSummary summarize(const BenchResults& results, const BenchBaseline& baseline, int resamples, std::uint64_t seed) {
     BenchSummary summary;
     summary.baseline = baseline;
     // Samples by configuration and series, and the frame times for the ratios.
     std::map<int, std::map<std::string, std::pair<std::vector<float>, std::vector<float>>>> bySeries;
-    std::map<int, std::vector<double>> frames;
+    std::map<int, std::vector<double>> compared;  // the ratio series' GPU samples
     for (const auto& s : results.samples) {
         auto& [gpu, cpu] = bySeries[s.config][s.series];
         gpu.push_back(static_cast<float>(s.gpuMs));
         cpu.push_back(static_cast<float>(s.cpuMs));
-        if (s.series == PassTimer::kFrameSeries) frames[s.config].push_back(s.gpuMs);
+        if (s.series == baseline.series) compared[s.config].push_back(s.gpuMs);
         if (s.series != PassTimer::kFrameSeries &&
             std::find(summary.passes.begin(), summary.passes.end(), s.series) == summary.passes.end()) {
             // Keep pipeline order: a span follows its pass, a pass seen late goes last.
@@ -181,8 +187,8 @@ BenchSummary summarize(const BenchResults& results, const BenchBaseline& baselin
                     r.baseline = other.config.index;
                     break;
                 }
-            if (r.baseline >= 0)
-                r.ratio = bootstrapRatioOfMedians(frames[r.config], frames[r.baseline], resamples,
+            if (r.baseline >= 0 && !compared[r.config].empty() && !compared[r.baseline].empty())
+                r.ratio = bootstrapRatioOfMedians(compared[r.config], compared[r.baseline], resamples,
                                                   seed + static_cast<std::uint64_t>(r.config));
         }
         summary.rows.push_back(std::move(r));
@@ -196,8 +202,11 @@ std::string markdownTable(const BenchResults& results, const BenchSummary& summa
     const size_t text = header.size();
     for (const char* h : {"LPP", "LPP lit", "frames", "GPU ms median", "GPU ms min", "GPU ms max", "CPU ms median"})
         header.emplace_back(h);
-    const std::string ratioTitle =
-        summary.baseline.axis.empty() ? "ratio" : "ratio to " + summary.baseline.axis + "=" + summary.baseline.value;
+    const std::string series =
+        summary.baseline.series == PassTimer::kFrameSeries ? std::string() : summary.baseline.series + " ";
+    const std::string ratioTitle = summary.baseline.axis.empty()
+                                       ? "ratio"
+                                       : series + "ratio to " + summary.baseline.axis + "=" + summary.baseline.value;
     header.push_back(ratioTitle);
     header.emplace_back("95% CI");
     std::string out = row(header) + rule(header, text);
@@ -294,7 +303,9 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
     }
     Json baseline = summary.baseline.axis.empty()
                         ? Json(nullptr)
-                        : Json{{"axis", summary.baseline.axis}, {"value", summary.baseline.value}};
+                        : Json{{"axis", summary.baseline.axis},
+                               {"value", summary.baseline.value},
+                               {"series", summary.baseline.series}};
     const Json root = {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
                        {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
     return root.dump(2) + "\n";

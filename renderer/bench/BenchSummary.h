@@ -2,8 +2,10 @@
 // The numbers a `bench` run reports, made from its samples alone (so a
 // merged set of shards gives the same table as one run): per configuration
 // and per series (each pass, each span, the whole frame) the median, min, max
-// and mean GPU and CPU milliseconds over its counted frames, and the frame
-// time's ratio to the baseline configuration with a bootstrap 95% interval.
+// and mean GPU and CPU milliseconds over its counted frames, and the ratio of
+// one series' GPU median (the whole frame unless `bench --ratio-of` names a
+// pass or span) to the baseline configuration's, with a bootstrap 95%
+// interval.
 // Shown as Markdown tables and written as JSON with every sample. Needs no GL.
 #include <cstdint>
 #include <string>
@@ -26,12 +28,15 @@ struct BenchSummaryRow {
     const BenchSeriesStats* find(const std::string& name) const;
     const BenchSeriesStats* frame() const { return find(PassTimer::kFrameSeries); }
     int baseline = -1;    // the configuration it is compared with; -1: none in the results
-    RatioInterval ratio;  // frame GPU median / the baseline's
+    RatioInterval ratio;  // the ratio series' GPU median / the baseline's (invalid where either has none)
 };
 
 struct BenchBaseline {
     std::string axis;   // "size", "lights" or a knob; empty: no axis to compare along
     std::string value;
+    // The series whose GPU medians the ratios compare: "frame", a pass
+    // ("lighting") or a span ("shadows/shadow maps").
+    std::string series = PassTimer::kFrameSeries;
 };
 
 struct BenchSummary {
@@ -49,16 +54,20 @@ BenchBaseline chooseBaseline(const BenchResults& results, const std::string& spe
 // The same rule over a whole grid, before it runs (a shard's results may lack
 // the baseline's configurations; theirs then get no ratio).
 BenchBaseline chooseBaseline(const BenchGrid& grid, int sceneLights, const std::string& spec);
+// Whether some configuration of `results` has samples of `series`.
+bool hasSeries(const BenchResults& results, const std::string& series);
 BenchSummary summarize(const BenchResults& results, const BenchBaseline& baseline, int resamples = 2000,
                        std::uint64_t seed = 12345);
 
 // The main table (one row per configuration: its axes, LPP, frames, frame
-// GPU median/min/max, CPU median, ratio and 95% CI) and the per-pass table
+// GPU median/min/max, CPU median, ratio and 95% CI; the ratio's column names
+// its series unless it is the frame) and the per-pass table
 // (GPU medians per pass and span).
 std::string markdownTable(const BenchResults& results, const BenchSummary& summary);
 std::string markdownPassTable(const BenchResults& results, const BenchSummary& summary);
 
-// {"tool", "machine", "settings", "axes", "baseline", "configs": [{config,
+// {"tool", "machine", "settings", "axes", "baseline" ({axis, value, series}
+// or null), "configs": [{config,
 // size, width, height, lights, knobs, lpp, lpp_lit, frames, series: {name:
 // {gpu_ms, cpu_ms}}, ratio, ci95, baseline_config, stats: {pass: line} (when
 // recorded), samples: [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms:

@@ -175,6 +175,35 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     EXPECT_EQ(mjson["configs"].size(), 8u);
     EXPECT_EQ(mjson["machine"]["gl_renderer"], j["machine"]["gl_renderer"]);
     EXPECT_NE(m.out.find("95% CI"), std::string::npos);
+    EXPECT_EQ(j["baseline"]["series"], "frame");
+
+    // --ratio-of lighting: the ratios are those of the lighting pass's
+    // medians; a series no shard recorded is refused.
+    const fs::path litJson = dir / "lit.json";
+    const Result lit = run("bench merge" + shardCsvs + " --out " + (dir / "lit.csv").string() + " --json " +
+                           litJson.string() + " --ratio-of lighting");
+    ASSERT_EQ(lit.code, 0) << lit.err;
+    EXPECT_NE(lit.out.find("| lighting ratio to lighting.strategy=stencil_volumes | 95% CI |"), std::string::npos)
+        << lit.out;
+    std::ifstream lj(litJson);
+    const nlohmann::json ljson = nlohmann::json::parse(lj);
+    EXPECT_EQ(ljson["baseline"]["series"], "lighting");
+    int compared = 0;
+    for (const auto& c : ljson["configs"]) {
+        const auto& base = ljson["configs"][c["baseline_config"].get<int>()];
+        const double expected = c["series"]["lighting"]["gpu_ms"]["median"].get<double>() /
+                                base["series"]["lighting"]["gpu_ms"]["median"].get<double>();
+        ASSERT_TRUE(c["ratio"].is_number()) << c["config"];
+        EXPECT_NEAR(c["ratio"].get<double>(), expected, 2e-3 * expected + 1e-3) << c["config"];
+        compared += c["config"] != base["config"];
+    }
+    EXPECT_EQ(compared, 4);
+    const Result noSeries = run("bench merge" + shardCsvs + " --out " + (dir / "none.csv").string() +
+                                " --ratio-of lighting/nope");
+    EXPECT_EQ(noSeries.code, 1);
+    EXPECT_NE(noSeries.err.find("--ratio-of: no configuration of these shards has samples of 'lighting/nope'"),
+              std::string::npos)
+        << noSeries.err;
 
     // Merging a shard twice is refused, naming the configuration.
     const Result twice = run("bench merge " + (dir / "shard0.csv").string() + " " + (dir / "shard0.csv").string() +
@@ -196,6 +225,11 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     const Result baseline = run("bench --sweep lighting.strategy=volumes,fullscreen --baseline lighting.strategy=forwardx");
     EXPECT_EQ(baseline.code, 1);
     EXPECT_NE(baseline.err.find("--baseline"), std::string::npos) << baseline.err;
+    const Result ratioOf = run("bench --sweep lighting.strategy=volumes,fullscreen --ratio-of lightning");
+    EXPECT_EQ(ratioOf.code, 1);
+    EXPECT_NE(ratioOf.err.find("--ratio-of: 'lightning' is not frame, a pass (geometry,"), std::string::npos)
+        << ratioOf.err;
+    EXPECT_EQ(ratioOf.err.find("bench: frame"), std::string::npos) << ratioOf.err;
     const Result walk = run("bench --scene default --walkthrough");
     EXPECT_EQ(walk.code, 1);
     EXPECT_NE(walk.err.find("camera.path"), std::string::npos) << walk.err;

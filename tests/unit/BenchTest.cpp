@@ -145,6 +145,46 @@ TEST(BenchResults, CsvRoundTripsAndShardsMergeIntoTheGrid) {
     }
 }
 
+// --ratio-of: the ratio compares one pass's medians, not the frame's. Here
+// fullscreen's lighting pass takes 3x stencil_volumes' while the frames are
+// alike; a configuration without samples of that pass gets no ratio.
+TEST(BenchSummary, RatioOfAPassComparesThatPass) {
+    BenchGrid g;
+    g.sizes = {{64, 36}};
+    g.lights = {10};
+    g.knobAxes = {BenchGrid::parseSweep("lighting.strategy=stencil_volumes,fullscreen,tiled")};
+    BenchResults r;
+    r.knobAxes = {"lighting.strategy"};
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(1.0, 0.02);
+    long long seq = 0;
+    for (const auto& c : g.configs()) {
+        r.configs.push_back({c, 1.0, 1.0});
+        const std::string strategy = c.knobValues[0];
+        for (int k = 0; k < 30; ++k, ++seq) {
+            const double lighting = (strategy == "fullscreen" ? 3.0 : 1.0) * noise(rng);
+            if (strategy != "tiled")
+                r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "lighting", lighting, 0.1});
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "frame", 10.0 * noise(rng), 0.2});
+        }
+    }
+    BenchBaseline b = chooseBaseline(r, "");
+    EXPECT_EQ(b.series, "frame");
+    EXPECT_NEAR(summarize(r, b, 500).find(1)->ratio.ratio, 1.0, 0.05);
+    b.series = "lighting";
+    const BenchSummary s = summarize(r, b, 500);
+    ASSERT_TRUE(s.find(1)->ratio.valid());
+    EXPECT_NEAR(s.find(1)->ratio.ratio, 3.0, 0.15);
+    EXPECT_LT(s.find(1)->ratio.low, 3.0);
+    EXPECT_GT(s.find(1)->ratio.high, 3.0);
+    EXPECT_FALSE(s.find(2)->ratio.valid());  // tiled recorded no lighting samples here
+    EXPECT_TRUE(hasSeries(r, "lighting"));
+    EXPECT_FALSE(hasSeries(r, "ssao"));
+    const std::string table = markdownTable(r, s);
+    EXPECT_NE(table.find("| lighting ratio to lighting.strategy=stencil_volumes | 95% CI |"), std::string::npos) << table;
+    EXPECT_NE(benchJson(r, s).find("\"series\": \"lighting\""), std::string::npos);
+}
+
 TEST(BenchSummary, RatiosAgainstTheFirstValueOfTheFirstSweptKnob) {
     const BenchGrid g = smallGrid();
     // fullscreen twice as slow as stencil_volumes, in every size and light count.
