@@ -30,8 +30,8 @@
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/io/JsonGuard.h"
-#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/io/TextFile.h"
+#include "renderer/knobs/KnobRegistry.h"
 
 extern char** environ;
 
@@ -46,11 +46,11 @@ const char* const kBenchUsage =
     "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
     "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]...\n"
     "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
-    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of PASS]\n"
+    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
     "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
     "                                [--plot-size WxH] [--quiet]\n"
     "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of PASS] [--resamples N]\n"
+    "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
     "  --size       render sizes (default 640x360); one session per size, all in one process\n"
     "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
     "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"
@@ -67,7 +67,8 @@ const char* const kBenchUsage =
     "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
     "               knob); default: the first value of the first swept knob (else lights, else size)\n"
     "  --ratio-of   the series each ratio and its interval compare: frame (the default), a pass\n"
-    "               (e.g. lighting: the strategies alone) or a span (PASS/NAME); list passes names them\n"
+    "               (e.g. lighting: the strategies alone) or a span PASS/NAME; list passes names\n"
+    "               the passes; a series no configuration recorded is an error after the run\n"
     "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
     "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
     "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
@@ -226,11 +227,9 @@ void requireWritable(const std::string& path, const std::string& what) {
         throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
 }
 
-// --plot: a .png (the script writes PNG only) at least 50x50 (the script's
-// least), in a folder that can be written.
 // --ratio-of before a run: the frame, a pass of the pipeline or a span of
 // one ("PASS/NAME", whose names are known only once the pass runs). Throws
-// Error naming the passes.
+// Error naming the passes. Whether the pass runs is known after the run.
 void checkRatioSeriesNamesAPass(const std::string& series) {
     if (series == PassTimer::kFrameSeries) return;
     KnobRegistry knobs;
@@ -244,6 +243,8 @@ void checkRatioSeriesNamesAPass(const std::string& series) {
     throw Error("--ratio-of: '" + series + "' is not frame, a pass (" + names + ") or a span PASS/NAME of one");
 }
 
+// --plot: a .png (the script writes PNG only) at least 50x50 (the script's
+// least), in a folder that can be written.
 void checkPlotOptions(const std::optional<std::string>& plot, int width, int height) {
     if (!plot) return;
     std::string ext = fs::path(*plot).extension().string();
@@ -537,7 +538,14 @@ int runBenchCommand(int argc, char** argv) {
     results.writeCsv(csv);
     writeBenchJson(json, results, summary);
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
-    return plot ? writePlot(csv, *plot, plotW, plotH) : 0;
+    const int plotted = plot ? writePlot(csv, *plot, plotW, plotH) : 0;
+    // A pass can be known and still not run (switched off, culled, a span
+    // it never opened): the run's figures are written, then the ratio that
+    // was asked for and could not be made is an error.
+    if (!hasSeries(results, ratioOf))
+        throw Error("--ratio-of: no configuration recorded '" + ratioOf +
+                    "' (the pass did not run, or has no such span); the ratios are empty");
+    return plotted;
 }
 
 }  // namespace dw

@@ -220,7 +220,7 @@ std::string markdownTable(const BenchResults& results, const BenchSummary& summa
         cells.push_back(std::to_string(f ? f->gpu.count : 0));
         for (double v : {f ? f->gpu.median : NAN, f ? f->gpu.min : NAN, f ? f->gpu.max : NAN, f ? f->cpu.median : NAN})
             cells.push_back(fixed(finiteOrNan(v)));
-        if (r && r->baseline == r->config) {
+        if (r && r->baseline == r->config && r->find(summary.baseline.series)) {
             cells.emplace_back("1 (baseline)");
             cells.emplace_back("-");
         } else if (r && r->ratio.valid()) {

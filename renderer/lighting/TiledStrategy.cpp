@@ -32,9 +32,18 @@ TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKno
                                "(2.5D culling, Harada 2012), not only the tile's frustum between its nearest and "
                                "farthest surface");
     ambient_ = knobs.addBool("lighting.tile_ambient", true, "lighting",
-                             "tiled: the compute pass also writes the ambient term, emission and the sky (one read of "
-                             "the G-buffer and one write of the L-buffer per pixel), instead of a full-screen ambient "
-                             "pass before it; the image is the same either way (up to the order of the sums)");
+                             "tiled: the compute pass also writes the ambient term, emission and the sky (with its "
+                             "lights, in one image store per pixel), instead of a full-screen ambient pass before it "
+                             "whose output the compute pass reads back; the image is the same either way (up to the "
+                             "order of the sums)");
+    walk_ = knobs.addEnum("lighting.tile_walk", {"auto", "mark", "branch"}, "auto", "lighting",
+                          "tiled: how a pixel walks its tile's light list. mark: 32 listed lights at a time, first "
+                          "mark which reach the invocation's pixels, then shade only those (on a CPU rasteriser a "
+                          "branch every lane fails still runs its body, a loop ends with its last lane); branch: "
+                          "test and shade each listed light in turn (a GPU's lanes skip a branch together); auto: "
+                          "mark on llvmpipe, branch elsewhere. The image is the same either way");
+    walkMark_ = knobs.choiceIndex(walk_, "mark");
+    walkBranch_ = knobs.choiceIndex(walk_, "branch");
     coarse_ = knobs.addBool("lighting.tile_coarse", true, "lighting",
                             "tiled: a coarse pass first culls the lights against tiles of 4 x 4 tiles, and each tile "
                             "tests only its coarse tile's lights, not all of them (a two-level light grid); the "
@@ -78,7 +87,9 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     const int threads = std::min(setThreads > 0 ? setThreads : cpuLanes_ > 0 ? cpuLanes_ : pixels, pixels);
     const bool depthMask = ctx.knobs.get(depthMask_);
     const bool useCoarse = ctx.knobs.get(coarse_);
-    Programs& programs = programs_[{tile, threads, depthMask, useCoarse}];
+    const int walk = ctx.knobs.get(walk_);
+    const bool mark = walk == walkMark_ || (walk != walkBranch_ && cpuLanes_ > 0);
+    Programs& programs = programs_[{tile, threads, depthMask, useCoarse, mark}];
     if (!programs.fine) {
         std::vector<std::string> defines{"TILE_SIZE=" + std::to_string(tile), "TILE_THREADS=" + std::to_string(threads),
                                          "MAX_CANDIDATES=" + std::to_string(kMaxCandidatesPerDispatch)};
@@ -87,6 +98,7 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
             programs.coarse = shaders_->get({.compute = "lighting/tiled_coarse.comp", .defines = defines});
         }
         if (depthMask) defines.push_back("DEPTH_MASK");
+        if (mark) defines.push_back("TILE_WALK_MARK");
         programs.fine = shaders_->get({.compute = "lighting/tiled.comp", .defines = defines});
     }
     const gl::Program& program = *programs.fine;
@@ -107,8 +119,9 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     if (overlap) glBindImageTexture(1, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     if (counts) glBindImageTexture(2, ctx.texture(kTileCounts).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
-    // What came before through the framebuffer (ambient, directional lights)
-    // is visible to the first dispatch by GL's ordering; the barriers make
+    // What came before through the framebuffer (the ambient pass and the
+    // directional lights, without lighting.tile_ambient) is visible to the
+    // first dispatch by GL's ordering; the barriers make
     // each coarse pass's masks visible to its tiles, each dispatch's image
     // stores visible to the next, and the last one's to the blending,
     // sampling and read-back after.

@@ -10,11 +10,14 @@
 // lbuffer) with the light shader's lightRadiance (shaders/lighting/
 // shade.glsl), so the image is the volume strategies'. With
 // lighting.tile_ambient (the default) the pass also makes the L-buffer's first
-// write (the ambient term, emission, the sky: shaders/lighting/ambient.glsl),
-// so it reads the G-buffer once and writes each pixel once, and the lighting
-// pass draws no ambient pass before it; without, it adds to what the ambient
-// pass wrote (imageLoad + imageStore). Lights with a shadow map are shaded one at a time (see
-// LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
+// write (the ambient term, emission, the sky: shaders/lighting/ambient.glsl)
+// with its lights in one store per pixel, and the lighting pass draws no
+// ambient pass before it; without, it adds to what the ambient pass wrote
+// (imageLoad + imageStore), as every dispatch after the first does (more
+// than 4096 candidates). lighting.tile_walk chooses how a pixel walks the
+// list: marking which lights reach first and shading only those (the
+// default on llvmpipe), or testing and shading each in turn (elsewhere).
+// Lights with a shadow map are shaded one at a time (see LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
 // With lighting.tile_coarse (the default) a coarse pass
 // (shaders/lighting/tiled_coarse.comp) first culls the lights against coarse
@@ -22,8 +25,8 @@
 // coarse tile's lights: a two-level light grid, whose coarse test keeps
 // everything a tile's test keeps. lighting.tile_threads sets the
 // invocations per group; the image is the same for every value, either
-// depth-mask setting and with or without the coarse pass (each pixel sums
-// its reaching lights in candidate order).
+// depth-mask setting, either walk and with or without the coarse pass (each
+// pixel sums its reaching lights in candidate order).
 #include <map>
 #include <tuple>
 
@@ -63,14 +66,16 @@ private:
     BoolKnob depthMask_;
     BoolKnob coarse_;
     BoolKnob ambient_;
+    EnumKnob walk_;  // lighting.tile_walk: auto, mark, branch
+    int walkMark_ = 0, walkBranch_ = 0;
     int cpuLanes_ = 0;  // simdLanes() of the context setup ran in
     gl::ShaderLibrary* shaders_ = nullptr;
     // The coarse culling pass and the tiles' pass.
     struct Programs {
         gl::ShaderLibrary::Handle coarse, fine;
     };
-    // Per tile size, threads and depth mask, compiled on first use.
-    std::map<std::tuple<int, int, bool, bool>, Programs> programs_;
+    // Per tile size, threads, depth mask, coarse pass and walk, compiled on first use.
+    std::map<std::tuple<int, int, bool, bool, bool>, Programs> programs_;
     CandidateBuffers candidates_;
     // Per coarse tile, MAX_CANDIDATES bits: the candidates its pass kept.
     gl::Buffer coarseMask_;

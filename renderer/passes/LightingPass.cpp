@@ -266,6 +266,7 @@ void LightingPass::execute(FrameContext& ctx) {
              std::to_string(counts_.belowThreshold) + " below threshold";
     for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;
     if (counts_.shadowed > 0) stats_ += "; " + std::to_string(counts_.shadowed) + " with shadow maps";
+    if (strategyWritesFirst) stats_ += std::string("; ambient, emission and sky in the ") + strategy.name() + " pass";
     if (!autoWhy_.empty()) stats_ += "; " + autoWhy_;
     lastStrategy_ = strategy.name();
 }

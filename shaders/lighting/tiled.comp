@@ -13,21 +13,25 @@
 //   3. turns the bit list into a list of candidate indices in shared memory
 //      (in candidate order),
 //   4. and every pixel walks that list and adds the lights that reach its
-//      surface (the radius test, spotReaches and lightRadiance as light.frag,
-//      computing each pixel's view direction once) into the L-buffer. With
+//      surface (candidateReaches: the radius and cone tests of light.frag's
+//      lightRadiance; then lightRadianceAt, with each pixel's view
+//      direction computed once) into the L-buffer. With
 //      lighting.tile_ambient the first dispatch (FLAG_FIRST) also writes
 //      each pixel's first radiance (ambient.glsl: ambient, emission, the
-//      sky), so the G-buffer is read once and the L-buffer written once,
-//      with no full-screen ambient pass before (Andersson 2009); otherwise,
-//      and in later dispatches, it adds with one read-modify-write. An invocation
-//      with several pixels walks the list for WALK of them at once, 32
-//      listed lights at a time: first it marks which of the 32 reach one of
-//      its WALK pixels (one light's position and cone fetched once for all
-//      of them), then it shades only the marked ones. On a CPU rasteriser a
-//      branch does not skip its body for lanes that all fail it (the body
-//      runs under a mask), but a loop stops when its last lane is done, so
-//      the shading loop costs the marked lights alone, not the whole list
-//      (lighting pass at 10 000 lights, 640x360: docs/bench.md).
+//      sky) with one store, and no full-screen ambient pass runs before
+//      (Andersson 2009); otherwise, and in later dispatches, it adds with
+//      one read-modify-write. An invocation with several pixels walks the
+//      list for WALK of them at once. With TILE_WALK_MARK
+//      (lighting.tile_walk, by default on a CPU rasteriser) it takes the
+//      list 32 lights at a time: first it marks which of the 32 reach one
+//      of its WALK pixels (one light's position and cone fetched once for
+//      all of them), then it shades only the marked ones. On a CPU
+//      rasteriser a branch does not skip its body for lanes that all fail
+//      it (the body runs under a mask), but a loop stops when its last lane
+//      is done, so the shading loop costs the marked lights alone, not the
+//      whole list (lighting pass at 10 000 lights, 640x360: docs/bench.md).
+//      Otherwise (by default on a GPU, where a group's lanes skip a branch
+//      together) it tests and shades each listed light in turn.
 // Light data comes from the candidates' buffer texture (tiles.glsl). On
 // llvmpipe walking the index list costs a third of walking the bits with
 // findLSB (lighting pass at 1000 lights, 640x360: docs/bench.md).
@@ -113,6 +117,26 @@ void writePixel(ivec2 px, Surface s, vec3 sum, uint shaded, uint tileLights) {
     if ((uFlags & FLAG_TILE_COUNTS) != 0) {
         float before = (uFlags & FLAG_ADD_COUNTS) != 0 ? imageLoad(uTileCounts, px).r : 0.0;
         imageStore(uTileCounts, px, vec4(before + float(tileLights)));
+    }
+}
+
+// The slack of the marking's test (relative on the radius, absolute on the
+// cone's cosine): far above the roundings by which two copies of the same
+// test could differ, far below a light's extent.
+#define MARK_SLACK 1e-4
+
+// Whether candidate light i reaches each lit pixel of the walk (the exact
+// test), and if so adds its radiance and counts it.
+void shadeListed(int i, Surface surf[WALK], bool lit[WALK], vec3 V[WALK], inout vec3 sum[WALK],
+                 inout uint shaded[WALK]) {
+    Light light = candidateLight(i);
+    for (int j = 0; j < WALK; ++j) {
+        float d;
+        vec3 L;
+        if (lit[j] && candidateReaches(light.positionRadius, light.directionCutoff, surf[j].position, 0.0, d, L)) {
+            sum[j] += lightRadianceAt(light, surf[j], L, d, V[j]);
+            ++shaded[j];
+        }
     }
 }
 
@@ -254,23 +278,21 @@ void main() {
             shaded[j] = 0u;
         }
         if (toShade > 0u && any) {
+#ifdef TILE_WALK_MARK
             for (uint c = 0u; c < toShade; c += 32u) {
                 uint n = min(32u, toShade - c);
                 // Bit b: listed light c + b reaches one of this
-                // invocation's WALK pixels.
+                // invocation's WALK pixels (with slack: the shading loop
+                // tests again, exactly).
                 uint reach = 0u;
                 for (uint b = 0u; b < n; ++b) {
                     int i = int(sList[c + b]);
-                    vec4 pr = candidatePositionRadius(i);
-                    // The same operations as the shading loop's test
-                    // below, so both agree on every light.
-                    vec4 cone = candidateCone(i);
+                    vec4 pr = candidatePositionRadius(i), cone = candidateCone(i);
                     bool r = false;
                     for (int j = 0; j < WALK; ++j) {
-                        vec3 toLight = pr.xyz - surf[j].position;
-                        float dist = length(toLight);
-                        vec3 L = toLight / max(dist, 1e-6);
-                        r = r || (lit[j] && !(pr.w > 0.0 && dist > pr.w) && coneReaches(cone, L));
+                        float d;
+                        vec3 L;
+                        r = r || (lit[j] && candidateReaches(pr, cone, surf[j].position, MARK_SLACK, d, L));
                     }
                     if (r) reach |= 1u << b;
                 }
@@ -279,20 +301,12 @@ void main() {
                 while (reach != 0u) {
                     uint b = uint(findLSB(reach));
                     reach &= reach - 1u;
-                    int i = int(sList[c + b]);
-                    Light light = candidateLight(i);
-                    vec4 pr = light.positionRadius;
-                    for (int j = 0; j < WALK; ++j) {
-                        vec3 toLight = pr.xyz - surf[j].position;
-                        float dist = length(toLight);
-                        vec3 L = toLight / max(dist, 1e-6);
-                        if (lit[j] && !(pr.w > 0.0 && dist > pr.w) && spotReaches(light, L)) {
-                            sum[j] += lightRadianceAt(light, surf[j], L, dist, V[j]);
-                            ++shaded[j];
-                        }
-                    }
+                    shadeListed(int(sList[c + b]), surf, lit, V, sum, shaded);
                 }
             }
+#else
+            for (uint e = 0u; e < toShade; ++e) shadeListed(int(sList[e]), surf, lit, V, sum, shaded);
+#endif
         }
         for (int j = 0; j < WALK; ++j)
             if (inside[j]) writePixel(tilePixel(k + uint(j)), surf[j], sum[j], shaded[j], tileLights);

@@ -35,11 +35,19 @@ layout(binding = CANDIDATE_DATA_UNIT) uniform samplerBuffer uCandidateData;
 
 vec4 candidatePositionRadius(int i) { return texelFetch(uCandidateData, 4 * i); }
 // Candidate i's direction and cos(cutoff): a spot light's, and (0, 0, 0, -1)
-// for any other light (LightLists::upload), so coneReaches needs no type.
+// for any other light (LightLists::upload), so candidateReaches needs no type.
 vec4 candidateCone(int i) { return texelFetch(uCandidateData, 4 * i + 1); }
-// spotReaches for a candidate's cone: the same operations for a spot light,
-// always true for the others (dot(-L, 0) = 0 >= -1).
-bool coneReaches(vec4 cone, vec3 L) { return dot(-L, cone.xyz) >= cone.w; }
+// Whether candidate light (position and radius pr, cone as candidateCone)
+// reaches view-space point P, with its distance d and unit direction L
+// from P: the radius test attenuate() makes and shadeLight's cone test (the
+// same operations as shade.glsl's spotReaches for a spot light, always true
+// for the others: dot(-L, 0) = 0 >= -1). slack widens both (0: exact).
+bool candidateReaches(vec4 pr, vec4 cone, vec3 P, float slack, out float d, out vec3 L) {
+    vec3 toLight = pr.xyz - P;
+    d = length(toLight);
+    L = toLight / max(d, 1e-6);
+    return !(pr.w > 0.0 && d > pr.w * (1.0 + slack)) && dot(-L, cone.xyz) >= cone.w - slack;
+}
 
 // Candidate i as a Light with the fields spotReaches and shadeLight read;
 // no volume and no shadow map.

@@ -230,6 +230,16 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     EXPECT_NE(ratioOf.err.find("--ratio-of: 'lightning' is not frame, a pass (geometry,"), std::string::npos)
         << ratioOf.err;
     EXPECT_EQ(ratioOf.err.find("bench: frame"), std::string::npos) << ratioOf.err;
+    // A pass that exists but does not run (depth of field is off): the run's
+    // files are written, then the ratio it could not make is an error.
+    const fs::path offDir = test::tempDir() / "bench-ratio-of";
+    fs::create_directories(offDir);
+    const Result off = run("bench --scene default --size 32x18 --lights 1 --frames 1 --quiet --ratio-of dof --csv " +
+                           (offDir / "dof.csv").string() + " --json " + (offDir / "dof.json").string());
+    EXPECT_EQ(off.code, 1);
+    EXPECT_NE(off.err.find("--ratio-of: no configuration recorded 'dof'"), std::string::npos) << off.err;
+    EXPECT_TRUE(fs::exists(offDir / "dof.csv") && fs::exists(offDir / "dof.json"));
+    EXPECT_NE(off.out.find("| 0 | 32x18 | 1 |"), std::string::npos) << off.out;
     const Result walk = run("bench --scene default --walkthrough");
     EXPECT_EQ(walk.code, 1);
     EXPECT_NE(walk.err.find("camera.path"), std::string::npos) << walk.err;

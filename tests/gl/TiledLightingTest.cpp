@@ -275,7 +275,7 @@ TEST(TiledLighting, TileAndClusterCountsAreConservative) {
 // drops the lights that float in a tile's depth gap (between a box near the
 // camera and the floor far behind it), so with it the lists are shorter but
 // still hold every light that reaches the pixel.
-TEST(TiledLighting, TileThreadsAndDepthMaskChangeNoPixel) {
+TEST(TiledLighting, TileThreadsDepthMaskAndWalkChangeNoPixel) {
     const int W = 96, H = 54;
     auto session = test::makeSession(W, H);
     Scene s = test::straddleScene(0);
@@ -299,24 +299,30 @@ TEST(TiledLighting, TileThreadsAndDepthMaskChangeNoPixel) {
     struct Run {
         FloatImage lbuffer, overlap, counts;
     };
-    auto run = [&](const char* threads, const char* mask) {
+    auto run = [&](const char* threads, const char* mask, const char* walk = "auto") {
         session->knobs().setFromString("lighting.tile_threads", threads);
         session->knobs().setFromString("lighting.tile_depth_mask", mask);
+        session->knobs().setFromString("lighting.tile_walk", walk);
         session->render({{"lbuffer", "lighting.overlap", "lighting.tile_counts", "gbuffer.view_position"}});
         return Run{session->readRaw("lbuffer"), session->readRaw("lighting.overlap"), session->readRaw("lighting.tile_counts")};
     };
-    const Run base = run("256", "false");
+    const Run base = run("256", "false", "branch");
     const FloatImage P = session->readRaw("gbuffer.view_position");
     EXPECT_GT(test::stats(base.lbuffer, 0).max, 0.0);
-    for (const char* threads : {"256", "0", "8", "1", "100"})
-        for (const char* mask : {"false", "true"}) {
-            const Run r = run(threads, mask);
-            EXPECT_EQ(test::maxAbsDifference(r.lbuffer, base.lbuffer, 4), 0.0) << threads << " threads, mask " << mask;
-            EXPECT_EQ(test::maxAbsDifference(r.overlap, base.overlap, 1), 0.0) << threads << " threads, mask " << mask;
-            if (std::string(mask) == "false") {
-                EXPECT_EQ(test::maxAbsDifference(r.counts, base.counts, 1), 0.0) << threads << " threads";
+    // Both walks (marking first, or a test per listed light) at every
+    // thread count: the marking's slack never drops a light, and the exact
+    // test after it keeps the same ones in the same order.
+    for (const char* walk : {"branch", "mark"})
+        for (const char* threads : {"256", "0", "8", "1", "100"})
+            for (const char* mask : {"false", "true"}) {
+                const Run r = run(threads, mask, walk);
+                const std::string what = std::string(walk) + " walk, " + threads + " threads, mask " + mask;
+                EXPECT_EQ(test::maxAbsDifference(r.lbuffer, base.lbuffer, 4), 0.0) << what;
+                EXPECT_EQ(test::maxAbsDifference(r.overlap, base.overlap, 1), 0.0) << what;
+                if (std::string(mask) == "false") {
+                    EXPECT_EQ(test::maxAbsDifference(r.counts, base.counts, 1), 0.0) << what;
+                }
             }
-        }
 
     const Run masked = run("0", "true");
     const LightTable& table = session->pipeline().pass<LightTablePass>()->table();
@@ -652,7 +658,8 @@ TEST(TiledLighting, AutoPicksByCoverageAndRendersThatStrategy) {
 // before), shadowed lights shaded one at a time, directional lights shaded in
 // the G-buffer pass, and with no bounded light at all (the pass still makes
 // the first write). The sums are the same up to their order: within a few
-// float roundings.
+// float roundings. Each frame runs over an L-buffer filled with NaN, so a
+// pixel the first write misses shows, and the statistics say which pass made it.
 TEST(TiledLighting, TileAmbientChangesNoPixel) {
     auto session = test::makeSession(160, 90);
     const auto* lighting = session->pipeline().pass<LightingPass>();
@@ -684,13 +691,27 @@ TEST(TiledLighting, TileAmbientChangesNoPixel) {
         for (const char* fused : {"false", "true"}) {
             session->knobs().setFromString("lighting.tile_ambient", fused);
             session->render({{"lbuffer", "lighting.overlap"}});
+            // The L-buffer filled with NaN, then the frame again: a pixel
+            // the first write misses keeps its NaN.
+            const PublishedOutput* out = session->pipeline().outputs().find("lbuffer");
+            ASSERT_TRUE(out && out->texture) << what;
+            const float nan4[4] = {NAN, NAN, NAN, NAN};
+            glClearTexImage(out->texture->id(), 0, GL_RGBA, GL_FLOAT, nan4);
+            session->render({{"lbuffer", "lighting.overlap"}});
             lbuffer[fused] = session->readRaw("lbuffer");
             overlap[fused] = session->readRaw("lighting.overlap");
+            // Which pass made the first write, as the statistics say.
+            const std::string stats = lighting->stats();
+            std::printf("%s, tile_ambient %s: %s\n", what.c_str(), fused, stats.c_str());
+            EXPECT_EQ(stats.find("ambient, emission and sky in the tiled pass") != std::string::npos,
+                      std::string(fused) == "true")
+                << stats;
         }
-        const std::string stats = lighting->stats();
-        std::printf("%s: %s\n", what.c_str(), stats.c_str());
         // Every pixel written (the sky or a lit surface), not all alike.
         const auto red = test::stats(lbuffer["true"], 0);
+        for (int channel = 0; channel < 4; ++channel)
+            for (const char* fused : {"false", "true"})
+                EXPECT_EQ(test::stats(lbuffer[fused], channel).nonFinite, 0) << what << ", channel " << channel << ", " << fused;
         EXPECT_GT(red.min, 0.0) << what;
         EXPECT_GT(red.max, 2.0 * red.min) << what;
         const double worst = worstRelative(lbuffer["true"], lbuffer["false"]);
