@@ -65,7 +65,7 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
     for (std::uint32_t row : rows) {
         const LightGpu& l = table.rows[row];
         // Only a spot light's cone limits it: the others get one that holds
-        // every direction, so tiled.comp's coneReaches tests no type.
+        // every direction, so tiles.glsl's candidateReaches tests no type.
         const bool spot = table.entries[row].light->type == LightType::Spot;
         texels.insert(texels.end(), {l.positionRadius, spot ? l.directionCutoff : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f),
                                      l.intensityExponent, l.attenuation});

@@ -122,7 +122,7 @@ public:
     // (every pixel: shaders/lighting/ambient.glsl's firstRadiance, the
     // ambient term, emission and the sky) in the pass that adds its lights,
     // as tiled shading does (Andersson 2009: one compute pass per tile reads
-    // the G-buffer once and writes the final radiance). The lighting pass
+    // the G-buffer and writes the final radiance). The lighting pass
     // then draws no ambient pass, and blends the directional and unbounded
     // lights after shade() instead of before.
     virtual bool writesFirstRadiance(const FrameContext& ctx) const { (void)ctx; return false; }
