@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/gl/ShaderLoopLimit.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/lighting/LightTable.h"
 
@@ -38,6 +39,7 @@ std::vector<OutputDecl> ClusteredStrategy::outputs() const {
 
 void ClusteredStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
+    loopLimit_ = gl::shaderLoopIterationLimit();
     candidates_.create();
     ranges_ = gl::Buffer::create(16, nullptr, true, "cluster ranges");
     rangesTexture_ = gl::Texture::createBuffer(GL_RGBA32UI);
@@ -143,10 +145,23 @@ ClusteredStrategy::Grid ClusteredStrategy::build(LightingFrame& f, const LightLi
     const gl::Program& assign = program(assign_, {.compute = "lighting/cluster_assign.comp"});
     assign.use();
     setGridUniforms(assign, g);
-    assign.set(1, static_cast<int>(lists.rows.size()));
     assign.set(7, static_cast<unsigned>(capacity));
-    glDispatchCompute(static_cast<GLuint>((g.tilesX * g.tilesY + 63) / 64), static_cast<GLuint>(g.slices), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // cluster_assign.comp's stages, over slices of the candidates small
+    // enough for the driver's loop limit (one slice where there is none).
+    const int total = static_cast<int>(lists.rows.size());
+    const int perSlice = loopLimit_ > 0 ? loopLimit_ * 9 / 10 : std::max(total, 1);
+    auto stage = [&](int which, int first, int end) {
+        assign.set(1, first);
+        assign.set(2, end);
+        assign.set(3, which);
+        glDispatchCompute(static_cast<GLuint>((g.tilesX * g.tilesY + 63) / 64), static_cast<GLuint>(g.slices), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    constexpr int kCount = 0, kOffsets = 1, kFill = 2;  // STAGE_* in cluster_assign.comp
+    for (int first = 0; first < total; first += perSlice) stage(kCount, first, std::min(total, first + perSlice));
+    stage(kOffsets, 0, 0);
+    for (int first = 0; first < total; first += perSlice) stage(kFill, first, std::min(total, first + perSlice));
+    g.longestList = total;  // no cluster's list is longer than the candidates
     return g;
 }
 
@@ -178,7 +193,14 @@ StrategyCounts ClusteredStrategy::shade(LightingFrame& f) {
             p.use();
             setGridUniforms(p, g);
             p.set(2, lists.shaded);
-            f.shading.drawFullscreenTriangle();
+            // Each pass shades list entries first .. first + perPass of every
+            // pixel's cluster (one pass unless a list could outrun the loop limit).
+            const int perPass = loopLimit_ > 0 ? loopLimit_ * 9 / 10 : std::max(g.longestList, 1);
+            for (int first = 0; first == 0 || first < g.longestList; first += perPass) {
+                p.set(7, first);
+                p.set(8, first + perPass);
+                f.shading.drawFullscreenTriangle();
+            }
             c.grid = lists.shaded;
         }
         if (counts) writeCounts(f, g);

@@ -11,10 +11,16 @@
 //      candidate lights (those whose conservative cluster range, worked out
 //      here on the CPU, holds it) against the cluster's volume and writes its
 //      count and its slice of one index list (an atomic add hands out the
-//      slices; the list's size is the sum of the ranges, so it cannot overflow);
+//      slices; the list's size is the sum of the ranges, so it cannot
+//      overflow), counting and filling over slices of the candidates;
 //   3. clustered.frag: full screen, each pixel adds its cluster's lights with
 //      the light shader's lightRadiance, blended into the L-buffer (and its
-//      count into lighting.overlap).
+//      count into lighting.overlap), in more than one pass when a list could
+//      be longer than one invocation's loop may run.
+// Where the driver ends an invocation's loops after a number of iterations
+// (llvmpipe: 65 535, renderer/gl/ShaderLoopLimit.h), the slices of step 2
+// and the passes of step 3 keep every invocation within 90% of it: without
+// them, more than about 32 000 lights in view lost lights.
 // Lights with a shadow map are shaded one at a time (LightLists.h). Writes
 // lighting.cluster_counts (the pixel's cluster list length) when asked for.
 #include "renderer/gl/Buffer.h"
@@ -41,6 +47,7 @@ private:
     struct Grid {
         int tile = 16, tilesX = 0, tilesY = 0, slices = 1;
         float nearPlane = 0.1f, scale = 1.0f;  // slice(d) = floor(log(d / near) * scale)
+        int longestList = 0;                    // a bound on every cluster's list length
         int clusters() const { return tilesX * tilesY * slices; }
     };
     // Steps 1 and 2: the grid's bounds and light lists for `lists`.
@@ -51,6 +58,7 @@ private:
 
     IntKnob tileSize_;
     IntKnob slices_;
+    int loopLimit_ = 0;  // gl::shaderLoopIterationLimit() of the context setup ran in
     // Compiled on first use, so sessions that never pick this strategy pay nothing.
     const gl::Program& program(gl::ShaderLibrary::Handle& handle, const gl::ProgramDesc& desc);
     gl::ShaderLibrary* shaders_ = nullptr;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "renderer/gl/ShaderLoopLimit.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/lighting/LightLists.h"
 #include "renderer/scene/GpuScene.h"
@@ -82,6 +83,7 @@ ForwardLightLists ForwardLightLists::build(const GpuScene& gpu, const std::vecto
 }
 
 void ForwardStrategy::setup(gl::ShaderLibrary& shaders) {
+    loopLimit_ = gl::shaderLoopIterationLimit();
     program_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag"});
     countingProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag", .defines = {"COUNT_OVERLAP"}});
     indices_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "forward light indices");
@@ -116,12 +118,19 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     forwardDepthState();
     const gl::Program& program = f.counting ? *countingProgram_ : *program_;
     program.use();
-    f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
-        if (lists.count[i] == 0) return false;
-        program.set(2, static_cast<int>(lists.first[i]));
-        program.set(3, static_cast<int>(lists.count[i]));
-        return true;
-    });
+    // A list longer than the driver's loop limit lets one fragment run
+    // (gl::shaderLoopIterationLimit) is drawn in parts, blended together.
+    const std::uint32_t perDraw = loopLimit_ > 0 ? static_cast<std::uint32_t>(loopLimit_ * 9 / 10) : ~0u;
+    const std::uint32_t longest = *std::max_element(lists.count.begin(), lists.count.end());
+    for (std::uint32_t part = 0; part == 0 || part < (longest + perDraw - 1) / perDraw; ++part) {
+        f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
+            const std::uint64_t skip = std::uint64_t{part} * perDraw;
+            if (lists.count[i] <= skip) return false;
+            program.set(2, static_cast<int>(lists.first[i] + skip));
+            program.set(3, static_cast<int>(std::min<std::uint64_t>(perDraw, lists.count[i] - skip)));
+            return true;
+        });
+    }
     rebindGBuffer(f.ctx);
     return c;
 }

@@ -62,6 +62,9 @@ private:
     gl::ShaderLibrary::Handle program_, countingProgram_;
     gl::Buffer indices_;
     std::size_t lastPairs_ = 0;
+    // gl::shaderLoopIterationLimit() of the setup's context: a draw's list
+    // longer than 90% of it is drawn in parts (llvmpipe ends the loop early).
+    int loopLimit_ = 0;
 };
 
 class ForwardMultipassStrategy : public LightingStrategy {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <tuple>
 
+#include "renderer/gl/ShaderLoopLimit.h"
 #include "renderer/gl/Texture.h"
 
 namespace dw {
@@ -19,6 +20,32 @@ constexpr int kMaxCandidatesPerDispatch = 4096;
 // 16 pixels: at 10 000 lights, 640x360, the coarse pass costs about 2 ms and
 // cuts the tiles' culling from about 25 ms to a few (docs/bench.md).
 constexpr int kCoarseTiles = 4;
+constexpr int kWalk = 4;  // WALK in tiled.comp (pixels per walk when an invocation has 4 or more)
+
+// The candidates one dispatch may take when the driver ends an invocation's
+// loops after `limit` iterations in all (gl::shaderLoopIterationLimit; 0:
+// no limit). An invocation of tiled.comp with P pixels, one of T in its
+// group, runs at most 16 + 2 P + 33 W / T + W + 33 W / T iterations before
+// its walk (W = 128 words of candidate bits: clearing, depth bounds, depth
+// slices, culling, the list) and, in each of its ceil(P / WALK) walks over
+// N listed candidates, N + 2 ceil(N / 32) + N when marking (N + 1 when
+// branching). N is the largest multiple of 32 keeping that within 90% of
+// the limit (the tenth for the loops' own bookkeeping); on llvmpipe, 16 px
+// tiles of 8 invocations: 3488 candidates per dispatch. Measured: with
+// 4096 a dispatch, every light reaching every pixel of a tile, tiled shaded
+// 3832 of 3900 lights there.
+int candidatesPerDispatch(int pixelsPerThread, int threads, bool mark, int limit) {
+    if (limit <= 0) return kMaxCandidatesPerDispatch;
+    constexpr int words = kMaxCandidatesPerDispatch / 32;
+    const long perWord = 33L * ((words + threads - 1) / threads);
+    const long before = 16 + 2L * pixelsPerThread + 2 * perWord + words;
+    const long walks = (pixelsPerThread + kWalk - 1) / kWalk;
+    const long budget = static_cast<long>(0.9 * limit) - before - walks;
+    // Per walk and 32 candidates: 64 + 2 iterations marking, 32 branching.
+    const long perChunk = walks * (mark ? 66 : 32);
+    const long chunks = budget > 0 ? budget / perChunk : 0;
+    return static_cast<int>(std::clamp<long>(chunks * 32, 32, kMaxCandidatesPerDispatch));
+}
 }
 
 TiledStrategy::TiledStrategy(KnobRegistry& knobs) : tileSize_(declareTileSizeKnob(knobs)) {
@@ -69,6 +96,7 @@ int TiledStrategy::simdLanes() {
 void TiledStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
     cpuLanes_ = simdLanes();
+    loopLimit_ = gl::shaderLoopIterationLimit();
     candidates_.create();
     coarseMask_ = gl::Buffer::create(4, nullptr, true, "tiled coarse masks");
 }
@@ -126,8 +154,9 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     // stores visible to the next, and the last one's to the blending,
     // sampling and read-back after.
     const int total = static_cast<int>(lists.rows.size());
-    for (int first = 0; first == 0 || first < total; first += kMaxCandidatesPerDispatch) {
-        const int end = std::min(total, first + kMaxCandidatesPerDispatch);
+    const int perDispatch = candidatesPerDispatch((pixels + threads - 1) / threads, threads, mark, loopLimit_);
+    for (int first = 0; first == 0 || first < total; first += perDispatch) {
+        const int end = std::min(total, first + perDispatch);
         if (useCoarse) {
             const gl::Program& coarse = *programs.coarse;
             coarse.use();

@@ -69,6 +69,7 @@ private:
     EnumKnob walk_;  // lighting.tile_walk: auto, mark, branch
     int walkMark_ = 0, walkBranch_ = 0;
     int cpuLanes_ = 0;  // simdLanes() of the context setup ran in
+    int loopLimit_ = 0;  // gl::shaderLoopIterationLimit() there: bounds the candidates per dispatch
     gl::ShaderLibrary* shaders_ = nullptr;
     // The coarse culling pass and the tiles' pass.
     struct Programs {

@@ -9,6 +9,10 @@
 #include "cluster_common.glsl"
 
 layout(location = 2) uniform int uShaded;  // candidates below this index are shaded
+// This pass's entries of the cluster's list: uListFirst .. uListEnd (the
+// strategy splits lists longer than the driver's loop limit over passes).
+layout(location = 7) uniform int uListFirst;
+layout(location = 8) uniform int uListEnd;
 
 layout(location = 0) out vec4 outColor;
 #ifdef COUNT_OVERLAP
@@ -24,7 +28,7 @@ void main() {
     if (isSurface(s)) {
         ClusterCell cell = cells[pixelCluster(px, -s.position.z)];
         vec3 V = normalize(-s.position);
-        for (uint k = 0u; k < cell.count; ++k) {
+        for (uint k = uint(uListFirst); k < min(cell.count, uint(uListEnd)); ++k) {
             uint i = clusterLights.index[cell.offset + k];
             if (int(i) >= uShaded) continue;
             // The radius test first, on one texel: most listed
