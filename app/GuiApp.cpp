@@ -174,7 +174,12 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
 
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
-void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh) {
+void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
+                       const PassTimer& timer) {
+    // The newest frame whose GPU times have come back (-1: none).
+    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
+    const long long lastTimedFrame =
+        total && !total->samples.empty() ? static_cast<long long>(total->samples.back().frame) : -1;
     nlohmann::json errors = nlohmann::json::array();
     for (const ui::Message& m : state.log.all())
         if (m.error) errors.push_back(m.text);
@@ -196,6 +201,8 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
                               {"frames", state.frame + 1},
                               {"frames_rendered", state.framesRendered},
+                              {"last_rendered_frame", static_cast<long long>(state.report.frameIndex)},
+                              {"last_timed_frame", lastTimedFrame},
                               {"renderdoc_captures", state.renderdocCaptures},
                               {"errors", errors}};
     writeFileAtomically(path, j.dump(2) + "\n");
@@ -237,6 +244,9 @@ public:
             ++state.framesRendered;
             adjustAutoScale(state);
         }
+        // The timer results come back a few frames late; an idle window
+        // renders no later frame to pick them up, so poll here (it never waits).
+        pipeline.timer().collect(false);
         if (state.probe.hovering || state.probe.pinned) {
             state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
             probeLights(state);
@@ -600,7 +610,7 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             if (lastFrame && !options.layoutOut.empty()) {
-                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh);
+                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session.pipeline().timer());
                 std::printf("wrote %s\n", options.layoutOut.c_str());
             }
             ++state.frame;

@@ -177,6 +177,7 @@ struct LayoutReport {
     float zoom = 1.0f;
     glm::ivec2 renderSize{0}, wantedSize{0};
     int frames = 0, framesRendered = 0;
+    long long lastRenderedFrame = -1, lastTimedFrame = -1;
     std::vector<std::string> renderdocCaptures;
     std::vector<std::string> errors;  // every error the Messages panel holds
     const ui::PanelRect* find(const std::string& n) const {
@@ -202,6 +203,8 @@ LayoutReport readLayoutReport(const fs::path& p) {
     r.wantedSize = {j["wanted_size"][0].get<int>(), j["wanted_size"][1].get<int>()};
     r.frames = j["frames"].get<int>();
     r.framesRendered = j["frames_rendered"].get<int>();
+    r.lastRenderedFrame = j["last_rendered_frame"].get<long long>();
+    r.lastTimedFrame = j["last_timed_frame"].get<long long>();
     r.renderdocCaptures = j["renderdoc_captures"].get<std::vector<std::string>>();
     r.errors = j["errors"].get<std::vector<std::string>>();
     return r;
@@ -479,7 +482,7 @@ TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
 }
 
 // Interactive on a slow GL: an idle window renders no frames after the size
-// settles, recording renders every frame, a drag renders while it moves the
+// settles (and still reads its last frame's GPU times), recording renders every frame, a drag renders while it moves the
 // camera, and the resolution scale divides the panel's size.
 TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheScaleHalvesTheSize) {
     ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
@@ -487,6 +490,8 @@ TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheSca
     EXPECT_EQ(idle.frames, 24);
     EXPECT_LE(idle.framesRendered, 4) << "an idle window kept rendering";
     EXPECT_GE(idle.framesRendered, 1);
+    // Its last frame's GPU times still arrive, though no frame follows it.
+    EXPECT_EQ(idle.lastTimedFrame, idle.lastRenderedFrame) << "the idle window never read its last frame's timings";
     const LayoutReport moved = runScripted("moved", "1024x640", 24, "4 drag 500 250 600 260 6\n");
     EXPECT_GE(moved.framesRendered, idle.framesRendered + 4) << "a drag that orbits the camera did not render";
     const LayoutReport recording = runScripted("record", "1024x640", 12, "", "--record --resolution 1/2");
