@@ -1,6 +1,7 @@
 // deferred-workbench bench: lighting strategies (or any knob) side by side,
 // against light count and render size, in one process; `bench merge` joins
 // the CSVs of shards. docs/bench.md says how to run it and what each column means.
+#include <fcntl.h>
 #include <malloc.h>
 #include <spawn.h>
 #include <sys/utsname.h>
@@ -10,8 +11,10 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -214,7 +217,9 @@ std::pair<int, int> plotSize(CommandLine& cl) {
 
 // Fails now, before any frame is rendered, when `path` cannot be written at
 // the end of the run: its folder is missing or read-only, or it is a folder
-// or a read-only file. Creates nothing.
+// or a read-only file, or the file system refuses a new file there (/proc,
+// a full disk's quota). Leaves nothing behind: a file it had to create to
+// find out is removed, an existing one is opened to append and not touched.
 void requireWritable(const std::string& path, const std::string& what) {
     std::error_code ec;
     const fs::path p(path);
@@ -225,6 +230,36 @@ void requireWritable(const std::string& path, const std::string& what) {
     const bool exists = fs::exists(p, ec);
     if (access((exists ? p : dir).c_str(), W_OK) != 0)
         throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
+    const int fd = exists ? open(p.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC)
+                          : open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw FileError(path, "cannot write the " + what + ": " + std::strerror(errno));
+    close(fd);
+    if (!exists) unlink(p.c_str());
+}
+
+// The same file named twice among what a command writes, or a file it
+// writes that it also reads (bench merge's shards and their JSONs): the
+// later write would replace the other. A device such as /dev/null takes
+// any number of writes.
+using NamedFiles = std::vector<std::pair<std::string, std::string>>;  // (what, path)
+void requireDistinct(const NamedFiles& writes, const NamedFiles& reads = {}) {
+    auto key = [](const std::string& path) {
+        std::error_code ec;
+        if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) return fs::path();
+        const fs::path canonical = fs::weakly_canonical(fs::absolute(path), ec);
+        return ec ? fs::path() : canonical;
+    };
+    auto refuse = [](const std::string& a, const std::string& b, const std::string& path) {
+        throw UsageError(a + " and " + b + " are the same file (" + path + "): one would replace the other");
+    };
+    for (std::size_t i = 0; i < writes.size(); ++i) {
+        const fs::path k = key(writes[i].second);
+        if (k.empty()) continue;
+        for (std::size_t j = 0; j < i; ++j)
+            if (key(writes[j].second) == k) refuse(writes[j].first, writes[i].first, writes[i].second);
+        for (const auto& [what, path] : reads)
+            if (key(path) == k) refuse(what, writes[i].first, writes[i].second);
+    }
 }
 
 // --ratio-of before a run: the frame, a pass of the pipeline or a span of
@@ -296,6 +331,14 @@ int runMerge(int argc, char** argv) {
     const std::vector<std::string> inputs = cl.positional();
     if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
     if (!out) throw UsageError("bench merge needs --out FILE.csv");
+    NamedFiles writes = {{"--out", *out}}, reads;
+    if (json) writes.emplace_back("--json", *json);
+    if (plot) writes.emplace_back("--plot", *plot);
+    for (const auto& in : inputs) {
+        reads.emplace_back("the shard " + in, in);
+        reads.emplace_back("the shard's JSON", fs::path(in).replace_extension(".json").string());
+    }
+    requireDistinct(writes, reads);
     requireWritable(*out, "merged CSV");
     if (json) requireWritable(*json, "merged JSON");
     checkPlotOptions(plot, plotW, plotH);
@@ -309,17 +352,32 @@ int runMerge(int argc, char** argv) {
     std::vector<int> shardIndices;
     for (const auto& in : inputs) {
         parts.push_back(BenchResults::readCsv(in));
-        // A configuration without a whole-frame sample: the file was cut short.
-        std::set<int> framed;
+        // Every configuration of a run counts the same frames: one with
+        // fewer (or none) was cut short, even at a line's end. How many,
+        // the shard's JSON says; without it, the most any configuration has.
+        std::map<int, int> framesOf;
         for (const auto& sample : parts.back().samples)
-            if (sample.series == "frame") framed.insert(sample.config);
-        for (const auto& c : parts.back().configs)
-            if (!framed.count(c.config.index))
-                throw FileError(in, "configuration " + std::to_string(c.config.index) +
-                                        " has no frame samples (is the file cut short?)");
-        // The machine and settings are in the shard's JSON beside its CSV, when there is one.
+            if (sample.series == "frame") ++framesOf[sample.config];
         const fs::path sibling = fs::path(in).replace_extension(".json");
-        if (!fs::exists(sibling)) continue;
+        auto checkFrames = [&](int expected, const std::string& whence) {
+            for (const auto& c : parts.back().configs) {
+                const int n = framesOf.count(c.config.index) ? framesOf[c.config.index] : 0;
+                if (n == 0)
+                    throw FileError(in, "configuration " + std::to_string(c.config.index) +
+                                            " has no frame samples (is the file cut short?)");
+                if (n != expected)
+                    throw FileError(in, "configuration " + std::to_string(c.config.index) + " has " + std::to_string(n) +
+                                            " frames, " + whence + " " + std::to_string(expected) +
+                                            " (is the file cut short?)");
+            }
+        };
+        int most = 0;
+        for (const auto& [config, n] : framesOf) most = std::max(most, n);
+        // The machine and settings are in the shard's JSON beside its CSV, when there is one.
+        if (!fs::exists(sibling)) {
+            checkFrames(most, "others have");
+            continue;
+        }
         const std::string text = readWholeFile(sibling.string(), "not found", "cannot read");
         // Bounded depth like every JSON the workbench reads; numbers may be any double.
         checkJsonText(text, sibling.string(), {kMaxJsonDepth, false});
@@ -330,6 +388,11 @@ int runMerge(int argc, char** argv) {
             throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
         }
         const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
+        const std::string frames = fieldOr(s, "frames", "");
+        if (!frames.empty() && std::all_of(frames.begin(), frames.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); }))
+            checkFrames(std::stoi(frames), "its JSON (" + sibling.string() + ") says");
+        else
+            checkFrames(most, "others have");
         if (const std::string command = fieldOr(s, "command", ""); !command.empty()) {
             const std::string run = runOf(command);
             if (firstRunFrom.empty()) {
@@ -480,6 +543,7 @@ int runBenchCommand(int argc, char** argv) {
     }
     const std::string suffix =
         o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
+    const std::string shardText = std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count);
     const std::string csv = cl.value("--csv").value_or("bench" + suffix + ".csv");
     const std::string json = cl.value("--json").value_or("bench" + suffix + ".json");
     const auto plot = cl.value("--plot");
@@ -491,6 +555,9 @@ int runBenchCommand(int argc, char** argv) {
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
     // The outputs are checked before the run, so a long run is never lost to a bad path.
+    NamedFiles writes = {{"--csv", csv}, {"--json", json}};
+    if (plot) writes.emplace_back("--plot", *plot);
+    requireDistinct(writes);
     checkPlotOptions(plot, plotW, plotH);
     requireWritable(csv, "bench CSV");
     requireWritable(json, "bench JSON");
@@ -512,6 +579,10 @@ int runBenchCommand(int argc, char** argv) {
     BenchRunner runner(std::move(o));
     BenchBaseline baseline = runner.baseline();
     baseline.series = ratioOf;
+    if (runner.configs().empty())
+        std::fprintf(stderr, "bench: note: shard %s holds none of the grid's %zu configurations (more shards than "
+                             "comparison groups); its files list none\n",
+                     shardText.c_str(), runner.gridSize());
     for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     auto context = HeadlessGlContext::create();
@@ -530,8 +601,9 @@ int runBenchCommand(int argc, char** argv) {
     // The tables first: should writing the files still fail, the run's figures are on stdout.
     printTables(results, summary,
                 "bench: " + runner.scene().name + ", " + std::to_string(results.configs.size()) + " configuration(s) x " +
-                    fieldOr(results.settings, "frames", "?") + " frame(s) on " +
-                    fieldOr(results.machine, "gl_renderer", "?") +
+                    fieldOr(results.settings, "frames", "?") + " frame(s)" +
+                    (results.configs.empty() ? std::string()
+                                             : " on " + fieldOr(results.machine, "gl_renderer", "?")) +
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
                                      : std::string()));
     std::fflush(stdout);
@@ -542,7 +614,7 @@ int runBenchCommand(int argc, char** argv) {
     // A pass can be known and still not run (switched off, culled, a span
     // it never opened): the run's figures are written, then the ratio that
     // was asked for and could not be made is an error.
-    if (!hasSeries(results, ratioOf))
+    if (!results.configs.empty() && !hasSeries(results, ratioOf))
         throw Error("--ratio-of: no configuration recorded '" + ratioOf +
                     "' (the pass did not run, or has no such span); the ratios are empty");
     return plotted;

@@ -35,7 +35,7 @@ struct BenchBaseline {
     std::string axis;   // "size", "lights" or a knob; empty: no axis to compare along
     std::string value;
     // The series whose GPU medians the ratios compare: "frame", a pass
-    // ("lighting") or a span ("shadows/shadow maps").
+    // ("lighting") or a span ("lighting/shadow maps").
     std::string series = PassTimer::kFrameSeries;
 };
 

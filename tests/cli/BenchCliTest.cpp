@@ -255,6 +255,20 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
         EXPECT_EQ(usage.code, 2) << args << ": " << usage.err;
         EXPECT_NE(usage.err.find("deferred-workbench: "), std::string::npos) << args;
     }
+    // Two outputs naming one file: one would replace the other.
+    for (const char* args : {"--csv same.x --json same.x", "--json same.png --plot same.png",
+                             "--csv ./same.png --plot same.png"}) {
+        const Result same = run(std::string("bench --scene default --size 32x18 --lights 1 --frames 1 ") + args);
+        EXPECT_EQ(same.code, 2) << args << ": " << same.err;
+        EXPECT_NE(same.err.find("are the same file"), std::string::npos) << args << ": " << same.err;
+        EXPECT_EQ(same.err.find("bench: frame"), std::string::npos) << args;
+    }
+    // A folder that is there and writable to access() but takes no new
+    // file (/proc): refused before the first frame too.
+    const Result proc = run("bench --scene default --size 32x18 --lights 1 --frames 1 --json /proc/dw-bench.json");
+    EXPECT_EQ(proc.code, 1);
+    EXPECT_NE(proc.err.find("/proc/dw-bench.json: cannot write the bench JSON"), std::string::npos) << proc.err;
+    EXPECT_EQ(proc.err.find("bench: frame"), std::string::npos) << proc.err;
     // Outputs that could not be written at the end are refused before the
     // first frame (no progress line), naming the path.
     for (const char* flag : {"--csv", "--json", "--plot"}) {
@@ -336,6 +350,36 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
     const Result cut = run("bench merge " + (dir / "cut.csv").string() + " --out " + (dir / "m2.csv").string());
     EXPECT_EQ(cut.code, 1);
     EXPECT_NE(cut.err.find("has no frame samples"), std::string::npos) << cut.err;
+
+    // Cut at the end of a line, its JSON beside it: a configuration with
+    // fewer frames than the run counted (3 here).
+    shard(dir / "f0", "--lights 1,2 --sweep lighting.strategy=stencil_volumes,tiled --frames 3", 0);
+    std::vector<std::string> lines;
+    {
+        std::ifstream in(dir / "f0.csv");
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+    }
+    fs::create_directories(dir / "short");
+    {
+        std::ofstream part(dir / "short" / "f0.csv");
+        for (std::size_t i = 0; i + 3 < lines.size(); ++i) part << lines[i] << "\n";
+    }
+    fs::copy_file(dir / "f0.json", dir / "short" / "f0.json", fs::copy_options::overwrite_existing);
+    const Result lineCut = run("bench merge " + (dir / "short" / "f0.csv").string() + " --out " + (dir / "m3.csv").string());
+    EXPECT_EQ(lineCut.code, 1);
+    EXPECT_NE(lineCut.err.find("frames, its JSON"), std::string::npos) << lineCut.err;
+    EXPECT_NE(lineCut.err.find("says 3 (is the file cut short?)"), std::string::npos) << lineCut.err;
+    EXPECT_FALSE(fs::exists(dir / "m3.csv"));
+
+    // Writing over an input (a shard or its JSON) is refused before anything is read.
+    const Result over = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "a1.csv").string() + " --out " +
+                            (dir / "a0.csv").string());
+    EXPECT_EQ(over.code, 2);
+    EXPECT_NE(over.err.find("are the same file"), std::string::npos) << over.err;
+    const Result overJson = run("bench merge " + (dir / "a0.csv").string() + " --out " + (dir / "m4.csv").string() +
+                                " --json " + (dir / "a0.json").string());
+    EXPECT_EQ(overJson.code, 2);
+    EXPECT_NE(overJson.err.find("are the same file"), std::string::npos) << overJson.err;
 }
 
 // A grid of 0 lights has nothing for the log-log plot: one line says so
