@@ -290,17 +290,20 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
     requireWritable(*plot, "plot");
 }
 
-// The run a shard's JSON describes, apart from which shard and where its
-// files went: its command without argv[0], --shard, --csv, --json, --plot,
-// --plot-size and --quiet.
+// The run a shard's JSON describes, apart from which shard, where its files
+// went and how its tables were made: its command without argv[0], --shard,
+// --csv, --json, --plot, --plot-size, --baseline, --ratio-of, --resamples,
+// --no-lpp and --quiet (shards differing only in those measured the same
+// grid; bench merge makes its own tables).
 std::string runOf(const std::string& command) {
-    static const std::set<std::string> withValue = {"--shard", "--csv", "--json", "--plot", "--plot-size"};
+    static const std::set<std::string> withValue = {"--shard",    "--csv",      "--json",    "--plot",
+                                                    "--plot-size", "--baseline", "--ratio-of", "--resamples"};
     std::istringstream words(command);
     std::string w, run;
     words >> w;  // argv[0]
     while (words >> w) {
         const std::string flag = w.substr(0, w.find('='));
-        if (w == "--quiet" || (withValue.count(flag) && flag != w)) continue;
+        if (w == "--quiet" || w == "--no-lpp" || (withValue.count(flag) && flag != w)) continue;
         if (withValue.count(w)) {
             words >> w;  // its value
             continue;
@@ -325,7 +328,7 @@ int runMerge(int argc, char** argv) {
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
     const std::string baselineSpec = cl.value("--baseline").value_or("");
-    const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
+    const std::optional<std::string> ratioOfGiven = cl.value("--ratio-of");
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     cl.finish("bench merge");
     const std::vector<std::string> inputs = cl.positional();
@@ -350,6 +353,9 @@ int runMerge(int argc, char** argv) {
     std::string firstRun, firstRunFrom;
     int shardCount = 0;
     std::vector<int> shardIndices;
+    // The series the shards' ratios compared, when all their JSONs agree
+    // ("-" when they differ): merge's default for --ratio-of.
+    std::string ratioOfFromShards;
     for (const auto& in : inputs) {
         parts.push_back(BenchResults::readCsv(in));
         // Every configuration of a run counts the same frames: one with
@@ -388,6 +394,20 @@ int runMerge(int argc, char** argv) {
             throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
         }
         const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
+        // Every configuration the shard's JSON lists must be in its CSV.
+        if (j.contains("configs") && j["configs"].is_array())
+            for (const auto& c : j["configs"])
+                if (c.is_object() && c.contains("config") && c["config"].is_number_integer() &&
+                    !framesOf.count(c["config"].get<int>()) &&
+                    std::none_of(parts.back().configs.begin(), parts.back().configs.end(),
+                                 [&](const auto& r) { return r.config.index == c["config"].get<int>(); }))
+                    throw FileError(in, "configuration " + std::to_string(c["config"].get<int>()) + " of " +
+                                            sibling.string() + " has no samples (is the file cut short?)");
+        if (ratioOfFromShards != "-" && j.contains("baseline") && j["baseline"].is_object() &&
+            j["baseline"].contains("series") && j["baseline"]["series"].is_string()) {
+            const std::string series = j["baseline"]["series"].get<std::string>();
+            ratioOfFromShards = ratioOfFromShards.empty() || ratioOfFromShards == series ? series : "-";
+        }
         const std::string frames = fieldOr(s, "frames", "");
         if (!frames.empty() && std::all_of(frames.begin(), frames.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); }))
             checkFrames(std::stoi(frames), "its JSON (" + sibling.string() + ") says");
@@ -400,7 +420,7 @@ int runMerge(int argc, char** argv) {
                 firstRunFrom = sibling.string();
             } else if (run != firstRun) {
                 throw FileError(sibling.string(), "comes from another bench run than " + firstRunFrom + " ('" + run +
-                                                      "' against '" + firstRun + "'): shards of different grids do "
+                                                      "' against '" + firstRun + "'): shards of different runs do "
                                                       "not merge");
             }
         }
@@ -428,7 +448,7 @@ int runMerge(int argc, char** argv) {
         }
     }
     BenchResults all = BenchResults::merge(std::move(parts), inputs);
-    if (shardCount > 0) {
+    if (shardCount > 0 && shardIndices.size() == inputs.size()) {
         std::string missing;
         for (int i = 0; i < shardCount; ++i)
             if (std::find(shardIndices.begin(), shardIndices.end(), i) == shardIndices.end())
@@ -437,6 +457,11 @@ int runMerge(int argc, char** argv) {
             std::fprintf(stderr, "bench merge: warning: shard(s) %s of %d are not among the inputs; their "
                                  "configurations are missing from the table\n",
                          missing.c_str(), shardCount);
+    } else if (shardCount > 0 && inputs.size() < static_cast<std::size_t>(shardCount)) {
+        // Some inputs have no JSON to say which shard they are.
+        std::fprintf(stderr, "bench merge: warning: %zu input(s) of a run of %d shards (%zu without a JSON beside "
+                             "them to say which shard they are): some shards are missing from the table\n",
+                     inputs.size(), shardCount, inputs.size() - shardIndices.size());
     }
     all.machine = machine;
     if (!machineNote.empty()) all.machine.emplace_back("note", machineNote);
@@ -447,6 +472,9 @@ int runMerge(int argc, char** argv) {
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     all.settings.emplace_back("merged_from", from);
 
+    const std::string ratioOf = ratioOfGiven ? *ratioOfGiven
+                                : !ratioOfFromShards.empty() && ratioOfFromShards != "-" ? ratioOfFromShards
+                                                                                          : PassTimer::kFrameSeries;
     BenchBaseline baseline = chooseBaseline(all, baselineSpec);
     baseline.series = ratioOf;
     if (!hasSeries(all, ratioOf)) {

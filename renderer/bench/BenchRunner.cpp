@@ -255,8 +255,10 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
                 b.seq = it->second.seq;
                 b.frame = t.frame;
                 b.series = series.name;
-                b.gpuMs = t.gpuMs;
-                b.cpuMs = t.cpuMs;
+                // To the CSV's 0.1 µs, so that the tables of this run and of
+                // `bench merge` over its CSV are made from the same numbers.
+                b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
+                b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
                 seriesOf[b.config].insert(b.series);
                 results.samples.push_back(std::move(b));
             }

@@ -207,11 +207,17 @@ void KnobRegistry::setFromString(const std::string& name, const std::string& raw
     const std::string text = trimmed(rawText);
     double v = 0.0;
     switch (s.type) {
-        case KnobType::Bool:
-            if (text == "true" || text == "1" || text == "on" || text == "yes") v = 1.0;
-            else if (text == "false" || text == "0" || text == "off" || text == "no") v = 0.0;
-            else throw Error("knob '" + name + "' is a bool: expected true or false, got '" + text + "'");
+        case KnobType::Bool: {
+            // Any case: TRUE, True and true alike (as 1, on and yes).
+            std::string lower = text;
+            for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+            if (lower == "true" || lower == "1" || lower == "on" || lower == "yes") v = 1.0;
+            else if (lower == "false" || lower == "0" || lower == "off" || lower == "no") v = 0.0;
+            else
+                throw Error("knob '" + name + "' is a bool: expected true or false (or 1/0, on/off, yes/no), got '" +
+                            text + "'");
             break;
+        }
         case KnobType::Enum: {
             const auto it = std::find(s.choices.begin(), s.choices.end(), text);
             if (it == s.choices.end()) {

@@ -41,6 +41,17 @@ TEST(KnobRegistry, ParsesEachTypeAndRejectsBadValuesWithoutChangingThem) {
     EXPECT_EQ(k.get(i), 16);
     k.setFromString("p.b", "on");
     EXPECT_TRUE(k.get(b));
+    // Bools in any case, as 1/0 and yes/no too.
+    for (const char* no : {"FALSE", "False", "0", "Off", "NO"}) {
+        k.setFromString("p.b", "true");
+        k.setFromString("p.b", no);
+        EXPECT_FALSE(k.get(b)) << no;
+    }
+    for (const char* yes : {"TRUE", "True", "1", "ON", "Yes"}) {
+        k.setFromString("p.b", "false");
+        k.setFromString("p.b", yes);
+        EXPECT_TRUE(k.get(b)) << yes;
+    }
     k.setFromString("p.e", "three");
     EXPECT_EQ(k.get(e), 2);
     EXPECT_EQ(k.choice(e), "three");
