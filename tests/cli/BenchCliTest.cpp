@@ -371,6 +371,25 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
     EXPECT_NE(lineCut.err.find("says 3 (is the file cut short?)"), std::string::npos) << lineCut.err;
     EXPECT_FALSE(fs::exists(dir / "m3.csv"));
 
+    // Cut so that its last configuration has no line left: its JSON lists it.
+    {
+        std::ofstream part(dir / "short" / "f0.csv");
+        const std::string lastConfig = lines.back().substr(0, lines.back().find(','));
+        for (const auto& line : lines)
+            if (line.substr(0, line.find(',')) != lastConfig) part << line << "\n";
+    }
+    const Result gone = run("bench merge " + (dir / "short" / "f0.csv").string() + " --out " + (dir / "m3.csv").string());
+    EXPECT_EQ(gone.code, 1);
+    EXPECT_NE(gone.err.find("has no samples (is the file cut short?)"), std::string::npos) << gone.err;
+
+    // Shards that differ only in how their tables were made merge.
+    shard(dir / "g1", "--lights 1,2 --sweep lighting.strategy=stencil_volumes,tiled --baseline lighting.strategy=tiled "
+                      "--ratio-of lighting",
+          1);
+    const Result reporting = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "g1.csv").string() +
+                                 " --out " + (dir / "m5.csv").string());
+    EXPECT_EQ(reporting.code, 0) << reporting.err;
+
     // Writing over an input (a shard or its JSON) is refused before anything is read.
     const Result over = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "a1.csv").string() + " --out " +
                             (dir / "a0.csv").string());
