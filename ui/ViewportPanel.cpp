@@ -92,11 +92,19 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
+    const float belowToolbar = ImGui::GetContentRegionAvail().y;
     imageViewControls(v, shownOutput, state.viewportImage);
+    // The render size is the room below the toolbar and one row of the
+    // viewer's controls (a buffer's combos are taller than the final image's
+    // zoom buttons), which are there whatever is shown: the colour bar and
+    // the histogram of a buffer take room from the image box, not from the
+    // render, so looking at a buffer keeps the frame size (and the timings
+    // comparable) and the image fits the smaller box.
+    const ImVec2 room(ImGui::GetContentRegionAvail().x, belowToolbar - ImGui::GetFrameHeightWithSpacing());
+    state.wantedSize = glm::ivec2(std::max(16, static_cast<int>(room.x)), std::max(16, static_cast<int>(room.y)));
     imageViewLegend(v, shownOutput, state.viewportImage);
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    state.wantedSize = glm::ivec2(std::max(16, static_cast<int>(avail.x)), std::max(16, static_cast<int>(avail.y)));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##viewport", ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);

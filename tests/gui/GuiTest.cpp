@@ -492,6 +492,10 @@ TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheSca
     EXPECT_GE(idle.framesRendered, 1);
     // Its last frame's GPU times still arrive, though no frame follows it.
     EXPECT_EQ(idle.lastTimedFrame, idle.lastRenderedFrame) << "the idle window never read its last frame's timings";
+    // A buffer shown with its colour bar renders at the size the final image
+    // does: the bar takes room from the image box, not from the frame.
+    const LayoutReport heat = runScripted("heat", "1024x640", 8, "", "--view lighting.overlap");
+    EXPECT_EQ(heat.renderSize, idle.renderSize) << "showing a buffer changed the render size";
     const LayoutReport moved = runScripted("moved", "1024x640", 24, "4 drag 500 250 600 260 6\n");
     EXPECT_GE(moved.framesRendered, idle.framesRendered + 4) << "a drag that orbits the camera did not render";
     const LayoutReport recording = runScripted("record", "1024x640", 12, "", "--record --resolution 1/2");
