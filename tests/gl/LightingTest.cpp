@@ -87,10 +87,7 @@ TEST(Lighting, LBufferMatchesTheCpuShadingEquation) {
         session->knobs().setFromString("lighting.attenuation", attenuation);
         session->render({{"lbuffer", "gbuffer.view_position", "gbuffer.view_normal"}});
         const FloatImage L = session->readRaw("lbuffer");
-        const FloatImage P = session->readRaw("gbuffer.view_position");
-        const FloatImage N = session->readRaw("gbuffer.view_normal");
-        const FloatImage albedo = session->readRaw("gbuffer.albedo");
-        const FloatImage spec = session->readRaw("gbuffer.specular");
+        const test::GBufferImages g = test::readGBuffer(*session);
         const glm::dmat4 view = session->pipeline().lastCamera().worldToView();  // the matrix the frame used
         const double threshold = session->knobs().value(*session->knobs().find("lighting.threshold"));
         const auto model = std::string(attenuation) == "windowed" ? reference::AttenuationModel::Windowed
@@ -99,21 +96,8 @@ TEST(Lighting, LBufferMatchesTheCpuShadingEquation) {
         int checked = 0;
         for (int y = 0; y < H; y += 3)
             for (int x = 0; x < W; x += 3) {
-                if (P.at(x, y, 3) == 0.0f) continue;
-                reference::SurfacePoint sp;
-                sp.position = {P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)};
-                sp.normal = glm::normalize(glm::dvec3(N.at(x, y, 0), N.at(x, y, 1), N.at(x, y, 2)));
-                sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
-                sp.specular = {spec.at(x, y, 0), spec.at(x, y, 1), spec.at(x, y, 2)};
-                sp.exponent = std::exp2(spec.at(x, y, 3) * 11.0);
-                glm::dvec3 expected(0.0);
-                for (const Light& l : lights) {
-                    const LightVolume v = computeLightVolume(l, threshold);
-                    if (v.shape == VolumeShape::Culled) continue;
-                    const glm::dvec3 lp = glm::dvec3(view * glm::dvec4(glm::dvec3(l.position), 1.0));
-                    const glm::dvec3 ld = glm::dvec3(view * glm::dvec4(glm::dvec3(l.direction), 0.0));
-                    expected += reference::shadeLight(l, lp, ld, std::isfinite(v.radius) ? v.radius : 0.0, sp, model, 20.0);
-                }
+                if (!g.surface(x, y)) continue;
+                const glm::dvec3 expected = test::referenceRadiance(lights, view, g.at(x, y), threshold, model);
                 for (int c = 0; c < 3; ++c) {
                     const double got = L.at(x, y, c);
                     worst = std::max(worst, std::fabs(got - expected[c]) / (std::fabs(expected[c]) + 0.01));

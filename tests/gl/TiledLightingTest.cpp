@@ -579,31 +579,14 @@ TEST(TiledLighting, GridStrategiesMatchTheCpuShadingEquation) {
         session->knobs().setFromString("lighting.strategy", strategies[k]);
         session->render({{"lbuffer", "gbuffer.view_position", "gbuffer.view_normal"}});
         const FloatImage L = session->readRaw("lbuffer");
-        const FloatImage P = session->readRaw("gbuffer.view_position");
-        const FloatImage N = session->readRaw("gbuffer.view_normal");
-        const FloatImage albedo = session->readRaw("gbuffer.albedo");
-        const FloatImage spec = session->readRaw("gbuffer.specular");
+        const test::GBufferImages g = test::readGBuffer(*session);
         const glm::dmat4 view = session->pipeline().lastCamera().worldToView();  // the matrix the frame used
         double worst = 0.0, bias = 0.0;
         int checked = 0;
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
-                if (P.at(x, y, 3) == 0.0f) continue;
-                reference::SurfacePoint sp;
-                sp.position = {P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)};
-                sp.normal = glm::normalize(glm::dvec3(N.at(x, y, 0), N.at(x, y, 1), N.at(x, y, 2)));
-                sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
-                sp.specular = {spec.at(x, y, 0), spec.at(x, y, 1), spec.at(x, y, 2)};
-                sp.exponent = std::exp2(spec.at(x, y, 3) * 11.0);
-                glm::dvec3 expected(0.0);
-                for (const Light& l : lights) {
-                    const LightVolume v = computeLightVolume(l, 1.0 / 255.0);
-                    if (v.shape == VolumeShape::Culled) continue;
-                    const glm::dvec3 lp = glm::dvec3(view * glm::dvec4(glm::dvec3(l.position), 1.0));
-                    const glm::dvec3 ld = glm::dvec3(view * glm::dvec4(glm::dvec3(l.direction), 0.0));
-                    expected += reference::shadeLight(l, lp, ld, std::isfinite(v.radius) ? v.radius : 0.0, sp,
-                                                      reference::AttenuationModel::Classic, 20.0);
-                }
+                if (!g.surface(x, y)) continue;
+                const glm::dvec3 expected = test::referenceRadiance(lights, view, g.at(x, y), 1.0 / 255.0);
                 for (int c = 0; c < 3; ++c) {
                     const double e = (L.at(x, y, c) - expected[c]) / (std::fabs(expected[c]) + 0.01);
                     worst = std::max(worst, std::fabs(e));
@@ -755,30 +738,17 @@ TEST(TiledLighting, ListsLongerThanTheCpuRasterisersLoopLimitLoseNoLight) {
             session->knobs().setFromString("lighting.tile_walk", walk);
             session->render({{"lbuffer", "lighting.overlap", "gbuffer.view_position", "gbuffer.view_normal"}});
             const FloatImage L = session->readRaw("lbuffer"), overlap = session->readRaw("lighting.overlap");
-            const FloatImage P = session->readRaw("gbuffer.view_position"), N = session->readRaw("gbuffer.view_normal");
-            const FloatImage albedo = session->readRaw("gbuffer.albedo"), spec = session->readRaw("gbuffer.specular");
+            const test::GBufferImages g = test::readGBuffer(*session);
             const glm::dmat4 view = session->pipeline().lastCamera().worldToView();
             double worst = 0.0;
             int checked = 0;
             for (int y = 0; y < H; y += 5)
                 for (int x = 0; x < W; x += 5) {
-                    ASSERT_NE(P.at(x, y, 3), 0.0f) << "the floor fills the view";
+                    ASSERT_TRUE(g.surface(x, y)) << "the floor fills the view";
                     if (std::string(strategy) != "forward") {
                         EXPECT_EQ(overlap.at(x, y, 0), float(kLights)) << what << " at " << x << "," << y;
                     }
-                    reference::SurfacePoint sp;
-                    sp.position = {P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2)};
-                    sp.normal = glm::normalize(glm::dvec3(N.at(x, y, 0), N.at(x, y, 1), N.at(x, y, 2)));
-                    sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
-                    sp.specular = {spec.at(x, y, 0), spec.at(x, y, 1), spec.at(x, y, 2)};
-                    sp.exponent = std::exp2(spec.at(x, y, 3) * 11.0);
-                    glm::dvec3 expected(0.0);
-                    for (const Light& l : lights) {
-                        const LightVolume v = computeLightVolume(l, 1.0 / 255.0);
-                        const glm::dvec3 lp = glm::dvec3(view * glm::dvec4(glm::dvec3(l.position), 1.0));
-                        expected += reference::shadeLight(l, lp, glm::dvec3(0.0), v.radius, sp,
-                                                          reference::AttenuationModel::Classic, 20.0);
-                    }
+                    const glm::dvec3 expected = test::referenceRadiance(lights, view, g.at(x, y), 1.0 / 255.0);
                     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(L.at(x, y, c) - expected[c]) / expected[c]);
                     ++checked;
                 }

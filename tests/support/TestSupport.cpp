@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "app/HeadlessGlContext.h"
+#include "renderer/lighting/LightVolume.h"
 #include "renderer/scene/ShapeBuilder.h"
 
 namespace dw::test {
@@ -243,6 +244,35 @@ double fractionOff(const FloatImage& a, const FloatImage& b, float relative, flo
                     break;
                 }
     return static_cast<double>(off) / (static_cast<double>(a.width) * a.height);
+}
+
+reference::SurfacePoint GBufferImages::at(int x, int y) const {
+    reference::SurfacePoint sp;
+    sp.position = {position.at(x, y, 0), position.at(x, y, 1), position.at(x, y, 2)};
+    sp.normal = glm::normalize(glm::dvec3(normal.at(x, y, 0), normal.at(x, y, 1), normal.at(x, y, 2)));
+    sp.diffuse = {albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2)};
+    sp.specular = {specular.at(x, y, 0), specular.at(x, y, 1), specular.at(x, y, 2)};
+    sp.exponent = std::exp2(specular.at(x, y, 3) * 11.0);
+    return sp;
+}
+
+GBufferImages readGBuffer(const RenderSession& session) {
+    return {session.readRaw("gbuffer.view_position"), session.readRaw("gbuffer.view_normal"),
+            session.readRaw("gbuffer.albedo"), session.readRaw("gbuffer.specular")};
+}
+
+glm::dvec3 referenceRadiance(const std::vector<Light>& lights, const glm::dmat4& worldToView,
+                             const reference::SurfacePoint& s, double threshold, reference::AttenuationModel model,
+                             double windowExponent) {
+    glm::dvec3 sum(0.0);
+    for (const Light& l : lights) {
+        const LightVolume v = computeLightVolume(l, threshold);
+        if (v.shape == VolumeShape::Culled) continue;
+        const glm::dvec3 lp = glm::dvec3(worldToView * glm::dvec4(glm::dvec3(l.position), 1.0));
+        const glm::dvec3 ld = glm::dvec3(worldToView * glm::dvec4(glm::dvec3(l.direction), 0.0));
+        sum += reference::shadeLight(l, lp, ld, std::isfinite(v.radius) ? v.radius : 0.0, s, model, windowExponent);
+    }
+    return sum;
 }
 
 }  // namespace dw::test

@@ -8,6 +8,7 @@
 
 #include "renderer/io/ImageIO.h"
 #include "renderer/RenderSession.h"
+#include "renderer/reference/ShadingReference.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw::test {
@@ -50,6 +51,24 @@ CommandResult runWorkbench(const std::string& args);
 // A --dump-knobs file: knob name -> value text; the "# scene <source>" line
 // as key "#scene". Empty when the file does not exist.
 std::map<std::string, std::string> readKnobDump(const std::filesystem::path& path);
+
+// The last frame's G-buffer as the CPU shading reference reads it: view
+// position (w = 0 where no surface), view normal, albedo and specular (its
+// alpha the encoded exponent). The frame must have produced
+// gbuffer.view_position and gbuffer.view_normal.
+struct GBufferImages {
+    FloatImage position, normal, albedo, specular;
+    bool surface(int x, int y) const { return position.at(x, y, 3) != 0.0f; }
+    // The surface at a pixel, the exponent decoded as geometry.frag encodes it.
+    reference::SurfacePoint at(int x, int y) const;
+};
+GBufferImages readGBuffer(const RenderSession& session);
+// reference::shadeLight summed over `lights` that reach `threshold` (their
+// volume radii), in the view of `worldToView` (the frame's matrix).
+glm::dvec3 referenceRadiance(const std::vector<Light>& lights, const glm::dmat4& worldToView,
+                             const reference::SurfacePoint& s, double threshold,
+                             reference::AttenuationModel model = reference::AttenuationModel::Classic,
+                             double windowExponent = 20.0);
 
 struct ChannelStats {
     double mean = 0, max = 0, min = 0;
