@@ -45,6 +45,7 @@ void ClusteredStrategy::setup(gl::ShaderLibrary& shaders) {
     rangesTexture_ = gl::Texture::createBuffer(GL_RGBA32UI);
     cells_ = gl::Buffer::create(sizeof(ClusterCell), nullptr, true, "cluster grid");
     index_ = gl::Buffer::create(8, nullptr, true, "cluster light index");
+    filled_ = gl::Buffer::create(4, nullptr, true, "cluster fill counts");
 }
 
 const gl::Program& ClusteredStrategy::program(gl::ShaderLibrary::Handle& handle, const gl::ProgramDesc& desc) {
@@ -57,6 +58,7 @@ void ClusteredStrategy::bindBuffers() const {
     candidates_.dataTexture.bind(binding::kCandidateDataUnit);
     cells_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterGridSsbo);
     index_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterIndexSsbo);
+    filled_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterFillSsbo);
     rangesTexture_.attachBuffer(ranges_.id());  // ensureSize may have re-created it
     rangesTexture_.bind(binding::kClusterRangeUnit);
 }
@@ -131,6 +133,9 @@ ClusteredStrategy::Grid ClusteredStrategy::build(LightingFrame& f, const LightLi
     cells_.ensureSize(static_cast<std::size_t>(g.clusters()) * sizeof(ClusterCell), "cluster grid");
     const ClusterCell empty{0xFFFFFFFFu, 0u, 0u, 0u};
     glClearNamedBufferData(cells_.id(), GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, &empty);
+    filled_.ensureSize(static_cast<std::size_t>(g.clusters()) * sizeof(std::uint32_t), "cluster fill counts");
+    const std::uint32_t none = 0;
+    glClearNamedBufferData(filled_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     index_.ensureSize((capacity + 1) * sizeof(std::uint32_t), "cluster light index");
     const std::uint32_t zero = 0;
     index_.update(0, sizeof(zero), &zero);

@@ -65,6 +65,7 @@ private:
     gl::ShaderLibrary::Handle bounds_, assign_, shade_, shadeCounting_, counts_;
     CandidateBuffers candidates_;
     gl::Buffer ranges_, cells_, index_;
+    gl::Buffer filled_;  // per cluster, the list entries cluster_assign.comp's FILL stage has written
     gl::Texture rangesTexture_;  // ranges_ as RGBA32UI texels
 };
 

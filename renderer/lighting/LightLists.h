@@ -27,6 +27,7 @@ constexpr GLuint kLightCandidatesSsbo = 4;
 constexpr GLuint kClusterGridSsbo = 5;
 constexpr GLuint kClusterIndexSsbo = 6;
 constexpr GLuint kTileCoarseMaskSsbo = 7;
+constexpr GLuint kClusterFillSsbo = 8;
 // Texture units of CANDIDATE_DATA_UNIT and CLUSTER_RANGE_UNIT.
 constexpr GLuint kCandidateDataUnit = 13;
 constexpr GLuint kClusterRangeUnit = 14;

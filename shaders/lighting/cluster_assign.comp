@@ -5,10 +5,10 @@
 // surfaces' explicit depth bounds. In three stages, each a dispatch:
 //   COUNT (once per slice uFirst .. uEnd of the candidates) adds the lights
 //     the cluster takes to its count,
-//   OFFSETS takes that many entries of the index list with one atomic add
-//     and sets the count back to 0,
+//   OFFSETS takes that many entries of the index list with one atomic add,
 //   FILL (once per slice, in order) writes the slice's lights at the offset
-//     plus the count so far, counting again;
+//     plus how many it wrote before (its entry of ClusterFill), stopping
+//     once it has written the count;
 // so the lights are in candidate order, and the shading sums in the same
 // order every frame. The slices keep each invocation's loop under the
 // driver's iteration limit (renderer/gl/ShaderLoopLimit.h), which a single
@@ -30,6 +30,11 @@ layout(location = 7) uniform uint uCapacity;
 #define STAGE_OFFSETS 1
 #define STAGE_FILL 2
 
+// Per cluster, the entries FILL has written so far (cleared to 0 by the CPU).
+layout(std430, binding = CLUSTER_FILL_SSBO) restrict buffer ClusterFill {
+    uint filled[];
+};
+
 // Per candidate: first and last tile across (x), down (y), slice (z), packed lo | hi << 16.
 // (A buffer texture: see CandidateBuffers in renderer/lighting/LightLists.h.)
 layout(binding = CLUSTER_RANGE_UNIT) uniform usamplerBuffer uRanges;
@@ -50,26 +55,34 @@ void main() {
     // No surface: count and offset stay 0, as the grid was cleared.
     if (cell.distMin > cell.distMax) return;
     if (uStage == STAGE_OFFSETS) {
-        cells[id].offset = cell.count > 0u ? atomicAdd(clusterLights.used, cell.count) : 0u;
-        cells[id].count = 0u;
+        uint offset = cell.count > 0u ? atomicAdd(clusterLights.used, cell.count) : 0u;
+        cells[id].offset = offset;
+        // Never past the list's end (the capacity bounds every assignment; this only guards it).
+        cells[id].count = offset + cell.count <= uCapacity ? cell.count : (offset < uCapacity ? uCapacity - offset : 0u);
         return;
     }
+    if (uStage == STAGE_FILL && filled[id] >= cell.count) return;
     vec2 pixelMin = vec2(c.xy * uLayout.x);
     vec2 pixelMax = min(vec2((c.xy + 1) * uLayout.x), camera.viewport.xy);
     ScreenVolume volume = screenVolume(pixelMin, pixelMax, -uintBitsToFloat(cell.distMin), -uintBitsToFloat(cell.distMax));
 
-    uint count = cell.count;
-    for (int i = uFirst; i < uEnd; ++i) {
-        uvec4 r = texelFetch(uRanges, i);
-        if (!inRange(r.x, c.x) || !inRange(r.y, c.y) || !inRange(r.z, c.z)) continue;
-        vec4 pr = candidatePositionRadius(i);
-        if (!sphereMeetsVolume(volume, pr.xyz, pr.w)) continue;
-        if (uStage == STAGE_COUNT) {
-            ++count;
-        } else if (cell.offset + count < uCapacity) {
-            clusterLights.index[cell.offset + count] = uint(i);
-            ++count;
+    if (uStage == STAGE_COUNT) {
+        uint count = cell.count;
+        for (int i = uFirst; i < uEnd; ++i) {
+            uvec4 r = texelFetch(uRanges, i);
+            if (!inRange(r.x, c.x) || !inRange(r.y, c.y) || !inRange(r.z, c.z)) continue;
+            vec4 pr = candidatePositionRadius(i);
+            if (sphereMeetsVolume(volume, pr.xyz, pr.w)) ++count;
         }
+        cells[id].count = count;
+    } else {
+        uint k = filled[id];
+        for (int i = uFirst; i < uEnd && k < cell.count; ++i) {
+            uvec4 r = texelFetch(uRanges, i);
+            if (!inRange(r.x, c.x) || !inRange(r.y, c.y) || !inRange(r.z, c.z)) continue;
+            vec4 pr = candidatePositionRadius(i);
+            if (sphereMeetsVolume(volume, pr.xyz, pr.w)) clusterLights.index[cell.offset + k++] = uint(i);
+        }
+        filled[id] = k;
     }
-    cells[id].count = count;
 }
