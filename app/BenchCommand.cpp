@@ -75,7 +75,8 @@ const char* const kBenchUsage =
     "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
     "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
     "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
-    "               the groups whose number % n == i; join the CSVs with bench merge\n"
+    "               the groups whose number % n == i; join the CSVs with bench merge, which takes\n"
+    "               --baseline and --ratio-of from the shards' JSONs unless it is given its own\n"
     "  --csv, --json  the samples (every counted frame, every pass) and the summary with the machine;\n"
     "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
     "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
@@ -228,9 +229,12 @@ void requireWritable(const std::string& path, const std::string& what) {
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec)) throw FileError(path, "cannot write the " + what + ": no folder " + dir.string());
     const bool exists = fs::exists(p, ec);
+    if (!exists && fs::is_symlink(fs::symlink_status(p, ec)))
+        throw FileError(path, "cannot write the " + what + ": it is a link to nothing");
     if (access((exists ? p : dir).c_str(), W_OK) != 0)
         throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
-    const int fd = exists ? open(p.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC)
+    if (exists && !fs::is_regular_file(p, ec)) return;  // a device or a pipe: opening it could block or consume
+    const int fd = exists ? open(p.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK)
                           : open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd < 0) throw FileError(path, "cannot write the " + what + ": " + std::strerror(errno));
     close(fd);
@@ -243,22 +247,25 @@ void requireWritable(const std::string& path, const std::string& what) {
 // any number of writes.
 using NamedFiles = std::vector<std::pair<std::string, std::string>>;  // (what, path)
 void requireDistinct(const NamedFiles& writes, const NamedFiles& reads = {}) {
-    auto key = [](const std::string& path) {
+    // The same path, or two names of one existing file (a hard link).
+    auto same = [](const std::string& a, const std::string& b) {
         std::error_code ec;
-        if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) return fs::path();
-        const fs::path canonical = fs::weakly_canonical(fs::absolute(path), ec);
-        return ec ? fs::path() : canonical;
+        for (const std::string& p : {a, b})
+            if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) return false;
+        if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+        const fs::path ka = fs::weakly_canonical(fs::absolute(a), ec);
+        if (ec) return false;
+        const fs::path kb = fs::weakly_canonical(fs::absolute(b), ec);
+        return !ec && ka == kb;
     };
     auto refuse = [](const std::string& a, const std::string& b, const std::string& path) {
         throw UsageError(a + " and " + b + " are the same file (" + path + "): one would replace the other");
     };
     for (std::size_t i = 0; i < writes.size(); ++i) {
-        const fs::path k = key(writes[i].second);
-        if (k.empty()) continue;
         for (std::size_t j = 0; j < i; ++j)
-            if (key(writes[j].second) == k) refuse(writes[j].first, writes[i].first, writes[i].second);
+            if (same(writes[j].second, writes[i].second)) refuse(writes[j].first, writes[i].first, writes[i].second);
         for (const auto& [what, path] : reads)
-            if (key(path) == k) refuse(what, writes[i].first, writes[i].second);
+            if (same(path, writes[i].second)) refuse(what, writes[i].first, writes[i].second);
     }
 }
 
@@ -292,9 +299,9 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
 
 // The run a shard's JSON describes, apart from which shard, where its files
 // went and how its tables were made: its command without argv[0], --shard,
-// --csv, --json, --plot, --plot-size, --baseline, --ratio-of, --resamples,
-// --no-lpp and --quiet (shards differing only in those measured the same
-// grid; bench merge makes its own tables).
+// --csv, --json, --plot, --plot-size, --baseline, --ratio-of, --resamples
+// and --quiet (shards differing only in those measured the same grid; bench
+// merge makes its own tables). --no-lpp counts: it leaves out a column.
 std::string runOf(const std::string& command) {
     static const std::set<std::string> withValue = {"--shard",    "--csv",      "--json",    "--plot",
                                                     "--plot-size", "--baseline", "--ratio-of", "--resamples"};
@@ -303,7 +310,7 @@ std::string runOf(const std::string& command) {
     words >> w;  // argv[0]
     while (words >> w) {
         const std::string flag = w.substr(0, w.find('='));
-        if (w == "--quiet" || w == "--no-lpp" || (withValue.count(flag) && flag != w)) continue;
+        if (w == "--quiet" || (withValue.count(flag) && flag != w)) continue;
         if (withValue.count(w)) {
             words >> w;  // its value
             continue;
@@ -327,7 +334,7 @@ int runMerge(int argc, char** argv) {
     const auto json = cl.value("--json");
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
-    const std::string baselineSpec = cl.value("--baseline").value_or("");
+    const std::optional<std::string> baselineGiven = cl.value("--baseline");
     const std::optional<std::string> ratioOfGiven = cl.value("--ratio-of");
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     cl.finish("bench merge");
@@ -353,9 +360,10 @@ int runMerge(int argc, char** argv) {
     std::string firstRun, firstRunFrom;
     int shardCount = 0;
     std::vector<int> shardIndices;
-    // The series the shards' ratios compared, when all their JSONs agree
-    // ("-" when they differ): merge's default for --ratio-of.
-    std::string ratioOfFromShards;
+    // The series the shards' ratios compared and the baseline they divided
+    // by, when all their JSONs agree ("-" when they differ): merge's
+    // defaults for --ratio-of and --baseline.
+    std::string ratioOfFromShards, baselineFromShards;
     for (const auto& in : inputs) {
         parts.push_back(BenchResults::readCsv(in));
         // Every configuration of a run counts the same frames: one with
@@ -403,10 +411,14 @@ int runMerge(int argc, char** argv) {
                                  [&](const auto& r) { return r.config.index == c["config"].get<int>(); }))
                     throw FileError(in, "configuration " + std::to_string(c["config"].get<int>()) + " of " +
                                             sibling.string() + " has no samples (is the file cut short?)");
-        if (ratioOfFromShards != "-" && j.contains("baseline") && j["baseline"].is_object() &&
-            j["baseline"].contains("series") && j["baseline"]["series"].is_string()) {
-            const std::string series = j["baseline"]["series"].get<std::string>();
-            ratioOfFromShards = ratioOfFromShards.empty() || ratioOfFromShards == series ? series : "-";
+        auto agree = [](std::string& sofar, const std::string& value) {
+            if (sofar != "-") sofar = sofar.empty() || sofar == value ? value : "-";
+        };
+        if (j.contains("baseline") && j["baseline"].is_object()) {
+            const nlohmann::json& b = j["baseline"];
+            if (b.contains("series") && b["series"].is_string()) agree(ratioOfFromShards, b["series"].get<std::string>());
+            if (b.contains("axis") && b["axis"].is_string() && b.contains("value") && b["value"].is_string())
+                agree(baselineFromShards, b["axis"].get<std::string>() + "=" + b["value"].get<std::string>());
         }
         const std::string frames = fieldOr(s, "frames", "");
         if (!frames.empty() && std::all_of(frames.begin(), frames.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); }))
@@ -472,9 +484,11 @@ int runMerge(int argc, char** argv) {
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     all.settings.emplace_back("merged_from", from);
 
-    const std::string ratioOf = ratioOfGiven ? *ratioOfGiven
-                                : !ratioOfFromShards.empty() && ratioOfFromShards != "-" ? ratioOfFromShards
-                                                                                          : PassTimer::kFrameSeries;
+    auto inherited = [](const std::string& fromShards) { return !fromShards.empty() && fromShards != "-"; };
+    const std::string ratioOf = ratioOfGiven               ? *ratioOfGiven
+                                : inherited(ratioOfFromShards) ? ratioOfFromShards
+                                                               : PassTimer::kFrameSeries;
+    const std::string baselineSpec = baselineGiven ? *baselineGiven : inherited(baselineFromShards) ? baselineFromShards : "";
     BenchBaseline baseline = chooseBaseline(all, baselineSpec);
     baseline.series = ratioOf;
     if (!hasSeries(all, ratioOf)) {
@@ -482,7 +496,9 @@ int runMerge(int argc, char** argv) {
         for (const auto& sample : all.samples) seen.insert(sample.series);
         std::string names;
         for (const auto& n : seen) names += (names.empty() ? "" : ", ") + n;
-        throw Error("--ratio-of: no configuration of these shards has samples of '" + ratioOf + "' (" + names + ")");
+        throw Error(std::string("--ratio-of") + (ratioOfGiven ? "" : " (from the shards' JSONs)") +
+                    ": no configuration of these shards has samples of '" + ratioOf + "' (" + names +
+                    "); give --ratio-of frame or a pass they ran");
     }
     const BenchSummary summary = summarize(all, baseline, resamples);
     printTables(all, summary,

@@ -61,12 +61,35 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
     // Every knob value a configuration will set, checked before any GL work.
     o_.run.validate();
     const KnobRegistry declared = RunConfig::declaredKnobs();
-    for (const auto& axis : o_.grid.knobAxes) {
+    // Each value is then written as the knob writes it (TRUE and 1 as true,
+    // 16.0 as 16), so that two spellings of one value are one configuration
+    // and --baseline finds the value however it is spelt.
+    auto canonical = [&](const std::string& knob, const std::string& value) {
+        KnobRegistry k = declared;
+        k.applyAssignment(knob + "=" + value);
+        return k.format(*k.find(knob));
+    };
+    for (auto& axis : o_.grid.knobAxes) {
         if (!declared.find(axis.knob)) throw Error("--sweep: unknown knob '" + axis.knob + "' (see: list knobs)");
-        for (const auto& v : axis.values) {
-            KnobRegistry k = declared;
-            k.applyAssignment(axis.knob + "=" + v);
+        for (size_t i = 0; i < axis.values.size(); ++i) {
+            const std::string given = axis.values[i];
+            axis.values[i] = canonical(axis.knob, given);
+            for (size_t j = 0; j < i; ++j)
+                if (axis.values[j] == axis.values[i])
+                    throw Error("--sweep " + axis.knob + ": '" + given + "' is '" + axis.values[i] +
+                                "', which is given before");
         }
+    }
+    if (const size_t eq = o_.baseline.find('='); eq != std::string::npos) {
+        const std::string axis = o_.baseline.substr(0, eq);
+        for (const auto& a : o_.grid.knobAxes)
+            if (a.knob == axis) {
+                try {
+                    o_.baseline = axis + "=" + canonical(axis, o_.baseline.substr(eq + 1));
+                } catch (const Error&) {
+                    // Not a value of the knob: chooseBaseline says the axis never has it.
+                }
+            }
     }
 
     scene_ = loadScene(o_.run.sceneSpec());

@@ -120,11 +120,12 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     program.use();
     // A list longer than the driver's loop limit lets one fragment run
     // (gl::shaderLoopIterationLimit) is drawn in parts, blended together.
-    const std::uint32_t perDraw = loopLimit_ > 0 ? static_cast<std::uint32_t>(loopLimit_ * 9 / 10) : ~0u;
-    const std::uint32_t longest = *std::max_element(lists.count.begin(), lists.count.end());
-    for (std::uint32_t part = 0; part == 0 || part < (longest + perDraw - 1) / perDraw; ++part) {
+    const std::uint64_t longest = *std::max_element(lists.count.begin(), lists.count.end());
+    const std::uint64_t perDraw = loopLimit_ > 0 ? static_cast<std::uint64_t>(loopLimit_) * 9 / 10 : std::max<std::uint64_t>(longest, 1);
+    const std::uint64_t parts = std::max<std::uint64_t>(1, (longest + perDraw - 1) / perDraw);
+    for (std::uint64_t part = 0; part < parts; ++part) {
         f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
-            const std::uint64_t skip = std::uint64_t{part} * perDraw;
+            const std::uint64_t skip = part * perDraw;
             if (lists.count[i] <= skip) return false;
             program.set(2, static_cast<int>(lists.first[i] + skip));
             program.set(3, static_cast<int>(std::min<std::uint64_t>(perDraw, lists.count[i] - skip)));

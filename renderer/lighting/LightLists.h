@@ -27,7 +27,9 @@ constexpr GLuint kLightCandidatesSsbo = 4;
 constexpr GLuint kClusterGridSsbo = 5;
 constexpr GLuint kClusterIndexSsbo = 6;
 constexpr GLuint kTileCoarseMaskSsbo = 7;
-constexpr GLuint kClusterFillSsbo = 8;
+// 3: GL 4.5 promises shader storage bindings 0 to 7 only; 0 and 3 are
+// free of every other pass's storage buffers.
+constexpr GLuint kClusterFillSsbo = 3;
 // Texture units of CANDIDATE_DATA_UNIT and CLUSTER_RANGE_UNIT.
 constexpr GLuint kCandidateDataUnit = 13;
 constexpr GLuint kClusterRangeUnit = 14;

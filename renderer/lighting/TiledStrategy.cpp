@@ -20,30 +20,41 @@ constexpr int kMaxCandidatesPerDispatch = 4096;
 // 16 pixels: at 10 000 lights, 640x360, the coarse pass costs about 2 ms and
 // cuts the tiles' culling from about 25 ms to a few (docs/bench.md).
 constexpr int kCoarseTiles = 4;
-constexpr int kWalk = 4;  // WALK in tiled.comp (pixels per walk when an invocation has 4 or more)
+// WALK of tiled.comp (given it as a define): pixels per walk of the list,
+// 4 measured best on llvmpipe (docs/bench.md), fewer when an invocation has fewer.
+int walkOf(int pixelsPerThread) { return std::min(pixelsPerThread, 4); }
 
 // The candidates one dispatch may take when the driver ends an invocation's
 // loops after `limit` iterations in all (gl::shaderLoopIterationLimit; 0:
-// no limit). An invocation of tiled.comp with P pixels, one of T in its
-// group, runs at most 16 + 2 P + 33 W / T + W + 33 W / T iterations before
-// its walk (W = 128 words of candidate bits: clearing, depth bounds, depth
-// slices, culling, the list) and, in each of its ceil(P / WALK) walks over
-// N listed candidates, N + 2 ceil(N / 32) + N when marking (N + 1 when
-// branching). N is the largest multiple of 32 keeping that within 90% of
-// the limit (the tenth for the loops' own bookkeeping); on llvmpipe, 16 px
-// tiles of 8 invocations: 3488 candidates per dispatch. Measured: with
-// 4096 a dispatch, every light reaching every pixel of a tile, tiled shaded
-// 3832 of 3900 lights there.
+// no limit). llvmpipe counts, per batch of SIMD lanes, each loop's
+// iterations (its slowest lane's) plus one for the test that ends it; the
+// loops of a known small trip count (over the WALK pixels, the four planes)
+// are unrolled and cost nothing. tiled.comp's invocation, with P pixels,
+// one of T in its group, W = MAX_CANDIDATES / 32 words of candidate bits
+// and N = 32 C candidates this dispatch, runs at most:
+//   clearing the bits       ceil(W / T) + 1
+//   depth bounds, slices    2 (P + 1)
+//   culling                 ceil(W / T) (32 + 1) + 1   (a word's bits, then the words)
+//   the list                W + 1, and ceil(W / T) (32 + 1) + 1
+//   the walk                ceil(P / WALK) + 1 walks, each
+//     marking:    C + 1 chunks of 32 + 1 marking and 32 + 1 shading iterations: 67 C + 1
+//     branching:  N + 1 listed lights
+// C is the largest whole number keeping the sum within 90% of the limit (a
+// tenth in reserve), at least 1: on llvmpipe, 16 px tiles of 8 invocations
+// take 3424 candidates a dispatch (lights start to drop at about 3830).
+// Measured before this bound existed: with 4096 a dispatch, every light
+// reaching every pixel of a tile, tiled shaded 3832 of 3900 lights there.
 int candidatesPerDispatch(int pixelsPerThread, int threads, bool mark, int limit) {
     if (limit <= 0) return kMaxCandidatesPerDispatch;
-    constexpr int words = kMaxCandidatesPerDispatch / 32;
-    const long perWord = 33L * ((words + threads - 1) / threads);
-    const long before = 16 + 2L * pixelsPerThread + 2 * perWord + words;
-    const long walks = (pixelsPerThread + kWalk - 1) / kWalk;
-    const long budget = static_cast<long>(0.9 * limit) - before - walks;
-    // Per walk and 32 candidates: 64 + 2 iterations marking, 32 branching.
-    const long perChunk = walks * (mark ? 66 : 32);
-    const long chunks = budget > 0 ? budget / perChunk : 0;
+    constexpr long words = kMaxCandidatesPerDispatch / 32;
+    const long perThread = (words + threads - 1) / threads;
+    const long before = (perThread + 1) + 2L * (pixelsPerThread + 1) + (perThread * 33 + 1) + (words + 1) +
+                        (perThread * 33 + 1);
+    const long walks = (pixelsPerThread + walkOf(pixelsPerThread) - 1) / walkOf(pixelsPerThread);
+    const long budget = static_cast<long>(0.9 * limit) - before - (walks + 1);
+    // Per walk: a fixed 1, and per chunk of 32 candidates 67 (marking) or 32 (branching).
+    const long perWalkFixed = 1, perChunk = mark ? 67 : 32;
+    const long chunks = budget > walks * perWalkFixed ? (budget - walks * perWalkFixed) / (walks * perChunk) : 0;
     return static_cast<int>(std::clamp<long>(chunks * 32, 32, kMaxCandidatesPerDispatch));
 }
 }
@@ -120,7 +131,8 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     Programs& programs = programs_[{tile, threads, depthMask, useCoarse, mark}];
     if (!programs.fine) {
         std::vector<std::string> defines{"TILE_SIZE=" + std::to_string(tile), "TILE_THREADS=" + std::to_string(threads),
-                                         "MAX_CANDIDATES=" + std::to_string(kMaxCandidatesPerDispatch)};
+                                         "MAX_CANDIDATES=" + std::to_string(kMaxCandidatesPerDispatch),
+                                         "WALK=" + std::to_string(walkOf((pixels + threads - 1) / threads))};
         if (useCoarse) {
             defines.push_back("COARSE=" + std::to_string(kCoarseTiles));
             programs.coarse = shaders_->get({.compute = "lighting/tiled_coarse.comp", .defines = defines});

@@ -14,10 +14,11 @@
 // with its lights in one store per pixel, and the lighting pass draws no
 // ambient pass before it; without, it adds to what the ambient pass wrote
 // (imageLoad + imageStore), as every dispatch after the first does (more
-// than 4096 candidates). lighting.tile_walk chooses how a pixel walks the
-// list: marking which lights reach first and shading only those (the
-// default on llvmpipe), or testing and shading each in turn (elsewhere).
-// Lights with a shadow map are shaded one at a time (see LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
+// than one dispatch's candidates: 4096, fewer on llvmpipe). lighting.tile_walk
+// chooses how a pixel walks the list: marking which lights reach first and
+// shading only those (the default on llvmpipe), or testing and shading each
+// in turn (elsewhere). Lights with a shadow map are shaded one at a time
+// (see LightLists.h). Writes lighting.tile_counts (per pixel, its tile's list
 // length) when asked for, and adds its per-pixel work into lighting.overlap.
 // With lighting.tile_coarse (the default) a coarse pass
 // (shaders/lighting/tiled_coarse.comp) first culls the lights against coarse

@@ -75,13 +75,15 @@ layout(location = 4) uniform int uFlags;
 #define FLAG_ADD_COUNTS 8  // not the first dispatch: add to the tile counts
 #define FLAG_FIRST 16      // write firstRadiance plus the lights, no read (lighting.tile_ambient)
 
-// MAX_CANDIDATES (the candidates of one dispatch) and COARSE (tiles per
-// coarse tile edge, when lighting.tile_coarse) come from TiledStrategy.cpp.
+// MAX_CANDIDATES (the most candidates of one dispatch: the bits' size) and
+// COARSE (tiles per coarse tile edge, when lighting.tile_coarse) come from
+// TiledStrategy.cpp.
 #define WORDS (MAX_CANDIDATES / 32)
 #define TILE_PIXELS (TILE_SIZE * TILE_SIZE)
 #define PIXELS_PER_THREAD ((TILE_PIXELS + TILE_THREADS - 1) / TILE_THREADS)
-// Pixels per walk of the list: 4 measured best on llvmpipe (docs/bench.md).
-#define WALK (PIXELS_PER_THREAD < 4 ? PIXELS_PER_THREAD : 4)
+// WALK, pixels per walk of the list, comes from TiledStrategy.cpp too
+// (4 measured best on llvmpipe, docs/bench.md; fewer with fewer pixels):
+// the number of walks bounds the candidates per dispatch there.
 
 shared uint sDepthMin, sDepthMax;
 shared uint sDepthSlices;  // DEPTH_MASK: bit k set when slice k holds a surface

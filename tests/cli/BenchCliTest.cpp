@@ -177,6 +177,22 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     EXPECT_NE(m.out.find("95% CI"), std::string::npos);
     EXPECT_EQ(j["baseline"]["series"], "frame");
 
+    // bench merge over the run's own CSV (its JSON beside it) gives the run's
+    // ratios exactly: both are made from the samples as the CSV holds them.
+    const fs::path againJson = dir / "again.json";
+    const Result again = run("bench merge " + csv.string() + " --out " + (dir / "again.csv").string() + " --json " +
+                             againJson.string() + " --resamples 200");
+    ASSERT_EQ(again.code, 0) << again.err;
+    {
+        std::ifstream aj(againJson);
+        const nlohmann::json a = nlohmann::json::parse(aj);
+        ASSERT_EQ(a["configs"].size(), j["configs"].size());
+        for (std::size_t i = 0; i < a["configs"].size(); ++i) {
+            EXPECT_EQ(a["configs"][i]["ratio"], j["configs"][i]["ratio"]) << i;
+            EXPECT_EQ(a["configs"][i]["ci95"], j["configs"][i]["ci95"]) << i;
+        }
+    }
+
     // --ratio-of lighting: the ratios are those of the lighting pass's
     // medians; a series no shard recorded is refused.
     const fs::path litJson = dir / "lit.json";
@@ -240,6 +256,12 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     EXPECT_NE(off.err.find("--ratio-of: no configuration recorded 'dof'"), std::string::npos) << off.err;
     EXPECT_TRUE(fs::exists(offDir / "dof.csv") && fs::exists(offDir / "dof.json"));
     EXPECT_NE(off.out.find("| 0 | 32x18 | 1 |"), std::string::npos) << off.out;
+    // Two spellings of one value are one configuration: refused like a value given twice.
+    const Result spelt = run("bench --scene default --size 32x18 --lights 1 --frames 1 --sweep "
+                             "lighting.tile_coarse=true,TRUE --csv /dev/null --json /dev/null");
+    EXPECT_EQ(spelt.code, 1);
+    EXPECT_NE(spelt.err.find("'TRUE' is 'true', which is given before"), std::string::npos) << spelt.err;
+    EXPECT_EQ(spelt.err.find("bench: frame"), std::string::npos) << spelt.err;
     const Result walk = run("bench --scene default --walkthrough");
     EXPECT_EQ(walk.code, 1);
     EXPECT_NE(walk.err.find("camera.path"), std::string::npos) << walk.err;
@@ -389,6 +411,14 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
     const Result reporting = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "g1.csv").string() +
                                  " --out " + (dir / "m5.csv").string());
     EXPECT_EQ(reporting.code, 0) << reporting.err;
+    // Where their JSONs agree on the ratio's series and baseline, merge takes them.
+    shard(dir / "g0", "--lights 1,2 --sweep lighting.strategy=stencil_volumes,tiled --baseline lighting.strategy=tiled "
+                      "--ratio-of lighting",
+          0);
+    const Result agreed = run("bench merge " + (dir / "g0.csv").string() + " " + (dir / "g1.csv").string() + " --out " +
+                              (dir / "m6.csv").string());
+    EXPECT_EQ(agreed.code, 0) << agreed.err;
+    EXPECT_NE(agreed.out.find("| lighting ratio to lighting.strategy=tiled |"), std::string::npos) << agreed.out;
 
     // Writing over an input (a shard or its JSON) is refused before anything is read.
     const Result over = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "a1.csv").string() + " --out " +
