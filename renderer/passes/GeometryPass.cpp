@@ -13,6 +13,13 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
                   "depth mapping of every depth buffer (G-buffer, shadow maps): reversed (near 1, far 0, GL_GREATER; "
                   "float depth keeps about 1e-7 relative precision at every distance) or conventional (near 0, far 1, "
                   "GL_LESS; precision spent near the camera)");
+    materialFormat_ = knobs.addEnum(
+        "gbuffer.material_format", {"srgb8", "unorm16"}, "unorm16", "geometry",
+        "the storage of gbuffer.albedo and gbuffer.specular: srgb8 (4 bytes each, the seeds' layout: colours rounded "
+        "to 8-bit sRGB, up to about 0.55% of a mid-grey, and the exponent to 1/255 of its log2 range, which a forward "
+        "strategy's unquantised material shows as a mean difference of about 0.6% on a 0.6 diffuse) or unorm16 (8 "
+        "bytes each, rounding 256 times finer)",
+        true);
     directional_ = knobs.addBool("lighting.directional_in_gbuffer", false, "lighting",
                                  "shade the directional lights without a shadow map in the G-buffer pass, from the "
                                  "unquantised material, into gbuffer.directional, instead of one full-screen pass each "
@@ -27,11 +34,15 @@ PassIO GeometryPass::inputs(const KnobRegistry& knobs) const {
 
 std::vector<OutputDecl> GeometryPass::outputs() const {
     return {
-        {"gbuffer.albedo", OutputKind::Color, "diffuse colour (sRGB8); alpha holds the pixel type (0 background, 1 surface)",
+        {"gbuffer.albedo", OutputKind::Color,
+         "diffuse colour (RGBA16, or sRGB8 with gbuffer.material_format = srgb8); alpha holds the pixel type (0 "
+         "background, 1 surface)",
          texture2D(GL_SRGB8_ALPHA8), 4},
         {"gbuffer.normal", OutputKind::NormalKL, "view-space normal, Kircher-Lawrance encoded in RG16_SNORM",
          texture2D(GL_RG16_SNORM), 2},
-        {"gbuffer.specular", OutputKind::Color, "specular colour (sRGB8); alpha = log2(Blinn-Phong exponent)/11",
+        {"gbuffer.specular", OutputKind::Color,
+         "specular colour (RGBA16, or sRGB8 with gbuffer.material_format = srgb8); alpha = log2(Blinn-Phong "
+         "exponent)/11",
          texture2D(GL_SRGB8_ALPHA8), 4},
         {"gbuffer.emissive", OutputKind::HdrColor, "emitted radiance (R11G11B10F)", texture2D(GL_R11F_G11F_B10F), 3},
         {"gbuffer.occlusion", OutputKind::Scalar,
@@ -42,6 +53,14 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
          "pass (RGBA32F)",
          texture2D(GL_RGBA32F), 3, true},
     };
+}
+
+ResourceDesc GeometryPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    if ((output.name == "gbuffer.albedo" || output.name == "gbuffer.specular") &&
+        knobs.get(materialFormat_) == knobs.choiceIndex(materialFormat_, "unorm16"))
+        d.format = GL_RGBA16;
+    return d;
 }
 
 void GeometryPass::setup(gl::ShaderLibrary& shaders) {

@@ -22,12 +22,15 @@ public:
     // With lighting.directional_in_gbuffer: the light table (and so the
     // shadow pass, which marks the lights with maps) first.
     PassIO inputs(const KnobRegistry& knobs) const override;
+    // gbuffer.albedo and gbuffer.specular as gbuffer.material_format says.
+    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
 private:
     BoolKnob directional_;  // lighting.directional_in_gbuffer
+    EnumKnob materialFormat_;  // gbuffer.material_format: srgb8, unorm16
     gl::ShaderLibrary::Handle program_, directionalProgram_;
     TargetFramebuffer target_, directionalTarget_;
     std::string stats_;
