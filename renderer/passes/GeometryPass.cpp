@@ -14,7 +14,7 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
                   "float depth keeps about 1e-7 relative precision at every distance) or conventional (near 0, far 1, "
                   "GL_LESS; precision spent near the camera)");
     materialFormat_ = knobs.addEnum(
-        "gbuffer.material_format", {"srgb8", "unorm16"}, "unorm16", "geometry",
+        "gbuffer.material_format", {"srgb8", "unorm16"}, "unorm16", "gbuffer",
         "the storage of gbuffer.albedo and gbuffer.specular: srgb8 (4 bytes each, the seeds' layout: colours rounded "
         "to 8-bit sRGB, up to about 0.55% of a mid-grey, and the exponent to 1/255 of its log2 range, which a forward "
         "strategy's unquantised material shows as a mean difference of about 0.6% on a 0.6 diffuse) or unorm16 (8 "
