@@ -50,9 +50,15 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
         for (size_t i = 0; i < knobs.size(); ++i) knobValues.push_back(knobs.value(static_cast<int>(i)));
         knobGeneration = knobs.generation();
     };
-    // Another scene or render size: another configuration, so the statistics start over.
+    // Another scene or render size: another configuration, so the statistics
+    // start over. A new size is in force from the frame this UI frame
+    // rendered (the render comes before the panels), which stays: in an idle
+    // window it may be the only one.
     if (session.scene().source != sceneSource || state.renderSize != renderSize) {
-        if (!sceneSource.empty()) timer.clearHistory();
+        if (!sceneSource.empty()) {
+            if (session.scene().source != sceneSource) timer.clearHistory();
+            else timer.clearHistoryBefore(state.report.frameIndex);
+        }
         firstUsableFrame = state.report.frameIndex + 3;
         sceneSource = session.scene().source;
         renderSize = state.renderSize;
@@ -178,8 +184,9 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     const bool drawTotal = solo.empty();
 
     char caption[160];
-    std::snprintf(caption, sizeof(caption), "%s, GPU ms per pass%s, %zu frames%s", timer.paused() ? "paused" : "live",
-                  drawTotal ? " (white: whole frame)" : "", n, solo.empty() ? "" : (" - only " + solo).c_str());
+    std::snprintf(caption, sizeof(caption), "%s, GPU ms per pass%s, %zu frame%s%s", timer.paused() ? "paused" : "live",
+                  drawTotal ? " (white: whole frame)" : "", n, n == 1 ? "" : "s",
+                  solo.empty() ? "" : (" - only " + solo).c_str());
     ImGui::TextDisabled("%s", caption);
 
     const float axisW = 52.0f, labelH = ImGui::GetTextLineHeight();
@@ -218,7 +225,17 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
         else t = ms / top;
         return p1.y - size.y * std::clamp(t, 0.0f, 1.0f);
     };
-    auto X = [&](size_t i) { return n > 1 ? p0.x + size.x * static_cast<float>(i) / static_cast<float>(n - 1) : p0.x; };
+    // One frame (an idle window rendered once) is drawn across the plot,
+    // as two columns of the same values.
+    const bool single = n == 1;
+    if (single) {
+        totals.push_back(totals[0]);
+        for (auto& v : values) v.push_back(v[0]);
+    }
+    const size_t columns = single ? 2 : n;
+    auto X = [&](size_t i) {
+        return columns > 1 ? p0.x + size.x * static_cast<float>(i) / static_cast<float>(columns - 1) : p0.x;
+    };
 
     // Axis: ticks, grid lines and labels left of the plot.
     for (float t : axisTicks(bottom, top, logScale)) {
@@ -229,12 +246,12 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
         const float w = ImGui::CalcTextSize(label).x;
         dl->AddText(ImVec2(p0.x - w - 4.0f, y - labelH * 0.5f), IM_COL32(170, 170, 175, 255), label);
     }
-    if (n >= 2) {
-        std::vector<float> base(n, 0.0f);
+    if (columns >= 2) {
+        std::vector<float> base(columns, 0.0f);
         dl->PushClipRect(p0, p1, true);
         for (size_t p = 0; p < shown.size(); ++p) {
             const unsigned col = passColor(shown[p]);
-            for (size_t i = 0; i + 1 < n; ++i) {
+            for (size_t i = 0; i + 1 < columns; ++i) {
                 const float lo0 = stack ? base[i] : 0.0f, lo1 = stack ? base[i + 1] : 0.0f;
                 const float hi0 = lo0 + values[p][i], hi1 = lo1 + values[p][i + 1];
                 if (stack)
@@ -243,10 +260,10 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
                     dl->AddLine(ImVec2(X(i), Y(hi0)), ImVec2(X(i + 1), Y(hi1)), col, 1.5f);
             }
             if (stack)
-                for (size_t i = 0; i < n; ++i) base[i] += values[p][i];
+                for (size_t i = 0; i < columns; ++i) base[i] += values[p][i];
         }
         if (drawTotal)
-            for (size_t i = 0; i + 1 < n; ++i)
+            for (size_t i = 0; i + 1 < columns; ++i)
                 dl->AddLine(ImVec2(X(i), Y(totals[i])), ImVec2(X(i + 1), Y(totals[i + 1])), IM_COL32(255, 255, 255, 200), 1.0f);
         dl->PopClipRect();
     } else {
@@ -255,10 +272,13 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     ImGui::SetCursorScreenPos(at);
     ImGui::InvisibleButton("##plot", ImVec2(axisW + size.x, size.y + labelH));
     // Hover readout: the frame under the mouse, every shown pass and the total.
-    if (ImGui::IsItemHovered() && n >= 2) {
+    if (ImGui::IsItemHovered() && n >= 1) {
         const float mx = ImGui::GetIO().MousePos.x;
         if (mx >= p0.x && mx <= p1.x) {
-            const size_t i = std::min(n - 1, static_cast<size_t>(std::lround((mx - p0.x) / size.x * static_cast<float>(n - 1))));
+            // With one frame both columns are that frame.
+            const size_t i = single ? 0
+                                    : std::min(n - 1, static_cast<size_t>(std::lround((mx - p0.x) / size.x *
+                                                                                      static_cast<float>(n - 1))));
             dl->AddLine(ImVec2(X(i), p0.y), ImVec2(X(i), p1.y), IM_COL32(255, 255, 255, 110));
             ImGui::BeginTooltip();
             ImGui::Text("frame %llu", static_cast<unsigned long long>(frames[i]));

@@ -186,6 +186,13 @@ TimingStats PassTimer::cpuStats(const std::string& name, size_t window) const {
 
 void PassTimer::clearHistory() { series_.clear(); }
 
+void PassTimer::clearHistoryBefore(std::uint64_t frame) {
+    for (auto& s : series_)
+        while (!s.samples.empty() && s.samples.front().frame < frame) s.samples.pop_front();
+    series_.erase(std::remove_if(series_.begin(), series_.end(), [](const Series& s) { return s.samples.empty(); }),
+                  series_.end());
+}
+
 std::string PassTimer::csv() const {
     std::ostringstream out;
     out << "frame,series,gpu_ms,cpu_ms\n";

@@ -57,6 +57,9 @@ public:
     TimingStats cpuStats(const std::string& name, size_t window = 0) const;
     size_t pendingFrames() const { return pending_.size(); }
     void clearHistory();
+    // Drops the samples of frames before `frame` (a configuration that
+    // started with it: the frames of the one before no longer compare).
+    void clearHistoryBefore(std::uint64_t frame);
     // Samples kept per series (kHistory by default); a run that reports on
     // more frames than that (render --frames N) raises it so none drop out.
     void setHistoryLength(size_t samples);

@@ -212,10 +212,10 @@ LayoutReport readLayoutReport(const fs::path& p) {
 
 // The workbench under Xvfb at `size`, replaying `events` (ScriptedInput).
 LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events,
-                         const std::string& extra = "") {
+                         const std::string& extra = "", const std::string& scene = "spheres --set ssao.enabled=false") {
     const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
     const Result r = shell("xvfb-run -a -s '-screen 0 1700x1000x24' " + std::string(DW_WORKBENCH_BINARY) +
-                           " --scene spheres --set ssao.enabled=false --size " + size + " --frames " + std::to_string(frames) +
+                           " --scene " + scene + " --size " + size + " --frames " + std::to_string(frames) +
                            " --events " + ev.string() + " --layout-out " + out.string() + " " + extra);
     EXPECT_EQ(r.code, 0) << r.out;
     return r.code == 0 ? readLayoutReport(out) : LayoutReport{};
@@ -494,8 +494,12 @@ TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheSca
     EXPECT_EQ(idle.lastTimedFrame, idle.lastRenderedFrame) << "the idle window never read its last frame's timings";
     // A buffer shown with its colour bar renders at the size the final image
     // does: the bar takes room from the image box, not from the frame.
-    const LayoutReport heat = runScripted("heat", "1024x640", 8, "", "--view lighting.overlap");
+    const LayoutReport heat = runScripted("heat", "1024x640", 8, "", "--view lighting.overlap", "default");
     EXPECT_EQ(heat.renderSize, idle.renderSize) << "showing a buffer changed the render size";
+    // Its last frame came at a new render size (the first one is the
+    // window's before it settles): the statistics start over from it, and
+    // keep it.
+    EXPECT_EQ(heat.lastTimedFrame, heat.lastRenderedFrame) << "the frame at the settled size lost its timings";
     const LayoutReport moved = runScripted("moved", "1024x640", 24, "4 drag 500 250 600 260 6\n");
     EXPECT_GE(moved.framesRendered, idle.framesRendered + 4) << "a drag that orbits the camera did not render";
     const LayoutReport recording = runScripted("record", "1024x640", 12, "", "--record --resolution 1/2");
