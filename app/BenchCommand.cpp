@@ -241,34 +241,6 @@ void requireWritable(const std::string& path, const std::string& what) {
     if (!exists) unlink(p.c_str());
 }
 
-// The same file named twice among what a command writes, or a file it
-// writes that it also reads (bench merge's shards and their JSONs): the
-// later write would replace the other. A device such as /dev/null takes
-// any number of writes.
-using NamedFiles = std::vector<std::pair<std::string, std::string>>;  // (what, path)
-void requireDistinct(const NamedFiles& writes, const NamedFiles& reads = {}) {
-    // The same path, or two names of one existing file (a hard link).
-    auto same = [](const std::string& a, const std::string& b) {
-        std::error_code ec;
-        for (const std::string& p : {a, b})
-            if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) return false;
-        if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
-        const fs::path ka = fs::weakly_canonical(fs::absolute(a), ec);
-        if (ec) return false;
-        const fs::path kb = fs::weakly_canonical(fs::absolute(b), ec);
-        return !ec && ka == kb;
-    };
-    auto refuse = [](const std::string& a, const std::string& b, const std::string& path) {
-        throw UsageError(a + " and " + b + " are the same file (" + path + "): one would replace the other");
-    };
-    for (std::size_t i = 0; i < writes.size(); ++i) {
-        for (std::size_t j = 0; j < i; ++j)
-            if (same(writes[j].second, writes[i].second)) refuse(writes[j].first, writes[i].first, writes[i].second);
-        for (const auto& [what, path] : reads)
-            if (same(path, writes[i].second)) refuse(what, writes[i].first, writes[i].second);
-    }
-}
-
 // --ratio-of before a run: the frame, a pass of the pipeline or a span of
 // one ("PASS/NAME", whose names are known only once the pass runs). Throws
 // Error naming the passes. Whether the pass runs is known after the run.
@@ -341,14 +313,14 @@ int runMerge(int argc, char** argv) {
     const std::vector<std::string> inputs = cl.positional();
     if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
     if (!out) throw UsageError("bench merge needs --out FILE.csv");
-    NamedFiles writes = {{"--out", *out}}, reads;
+    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
     if (json) writes.emplace_back("--json", *json);
     if (plot) writes.emplace_back("--plot", *plot);
     for (const auto& in : inputs) {
         reads.emplace_back("the shard " + in, in);
         reads.emplace_back("the shard's JSON", fs::path(in).replace_extension(".json").string());
     }
-    requireDistinct(writes, reads);
+    CommandLine::requireDistinctFiles(writes, reads);
     requireWritable(*out, "merged CSV");
     if (json) requireWritable(*json, "merged JSON");
     checkPlotOptions(plot, plotW, plotH);
@@ -599,9 +571,9 @@ int runBenchCommand(int argc, char** argv) {
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
     // The outputs are checked before the run, so a long run is never lost to a bad path.
-    NamedFiles writes = {{"--csv", csv}, {"--json", json}};
+    CommandLine::NamedFiles writes = {{"--csv", csv}, {"--json", json}};
     if (plot) writes.emplace_back("--plot", *plot);
-    requireDistinct(writes);
+    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(o.run));
     checkPlotOptions(plot, plotW, plotH);
     requireWritable(csv, "bench CSV");
     requireWritable(json, "bench JSON");

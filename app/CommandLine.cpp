@@ -1,6 +1,7 @@
 #include "app/CommandLine.h"
 
 #include <charconv>
+#include <filesystem>
 
 namespace dw {
 
@@ -90,6 +91,42 @@ std::pair<int, int> CommandLine::parseSize(const std::string& text) {
     if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
     return {parseInt("--size width", text.substr(0, x), 1, 16384),
             parseInt("--size height", text.substr(x + 1), 1, 16384)};
+}
+
+void CommandLine::requireDistinctFiles(const NamedFiles& writes, const NamedFiles& reads) {
+    namespace fs = std::filesystem;
+    // The same path, or two names of one existing file (a hard link).
+    auto same = [](const std::string& a, const std::string& b) {
+        std::error_code ec;
+        if (a.empty() || b.empty()) return false;
+        for (const std::string& p : {a, b})
+            if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) return false;
+        if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+        const fs::path ka = fs::weakly_canonical(fs::absolute(a, ec), ec);
+        if (ec) return false;
+        const fs::path kb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+        return !ec && ka == kb;
+    };
+    auto refuse = [](const std::string& a, const std::string& b, const std::string& path) {
+        throw UsageError(a + " and " + b + " are the same file (" + path + "): one would replace the other");
+    };
+    for (std::size_t i = 0; i < writes.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j)
+            if (same(writes[j].second, writes[i].second)) refuse(writes[j].first, writes[i].first, writes[i].second);
+        for (const auto& [what, path] : reads)
+            if (same(path, writes[i].second)) refuse(what, writes[i].first, writes[i].second);
+    }
+}
+
+CommandLine::NamedFiles CommandLine::inputFiles(const RunConfig& run) {
+    namespace fs = std::filesystem;
+    NamedFiles files;
+    std::error_code ec;
+    const std::string scene = run.sceneSpec();
+    if (fs::is_regular_file(scene, ec)) files.emplace_back("the scene", scene);
+    if (!run.presetSpec().empty() && fs::is_regular_file(run.presetSpec(), ec))
+        files.emplace_back("the preset", run.presetSpec());
+    return files;
 }
 
 }  // namespace dw

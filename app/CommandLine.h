@@ -30,6 +30,16 @@ public:
     // Throws UsageError for anything not consumed by value()/values()/flag().
     void finish(const std::string& command) const;
 
+    // (what, path) pairs: what a command writes or reads, named as its messages say.
+    using NamedFiles = std::vector<std::pair<std::string, std::string>>;
+    // Throws UsageError when two of `writes` are the same file, or one is a
+    // file of `reads`: the later write would replace the other (the same
+    // path, or two names of one existing file). A device such as /dev/null
+    // takes any number of writes.
+    static void requireDistinctFiles(const NamedFiles& writes, const NamedFiles& reads = {});
+    // The files a run configuration reads: its scene and its preset, where they are files.
+    static NamedFiles inputFiles(const RunConfig& run);
+
     static int parseInt(const std::string& flag, const std::string& text, int min, int max);
     // "1280x720" -> (1280, 720)
     static std::pair<int, int> parseSize(const std::string& text);

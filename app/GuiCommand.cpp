@@ -68,6 +68,13 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");
     if (!o.events.empty() && o.run.frames == 0) throw UsageError("--events needs --frames N");
     if (!o.layoutOut.empty() && o.run.frames == 0) throw UsageError("--layout-out needs --frames N");
+    // No file the window writes may replace another, its scene, preset or events.
+    CommandLine::NamedFiles writes, reads = CommandLine::inputFiles(o.run);
+    if (!o.screenshot.empty()) writes.emplace_back("--screenshot", o.screenshot);
+    if (!o.layoutOut.empty()) writes.emplace_back("--layout-out", o.layoutOut);
+    if (!o.dumpKnobs.empty()) writes.emplace_back("--dump-knobs", o.dumpKnobs);
+    if (!o.events.empty()) reads.emplace_back("--events", o.events);
+    CommandLine::requireDistinctFiles(writes, reads);
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;
 #endif

@@ -59,6 +59,11 @@ int runRenderCommand(int argc, char** argv) {
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
+    // No output may replace another, or the scene or preset it renders.
+    CommandLine::NamedFiles writes = {{"--out", *out}};
+    if (timingsOut) writes.emplace_back("--timings-out", *timingsOut);
+    if (dumpKnobs) writes.emplace_back("--dump-knobs", *dumpKnobs);
+    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
 
     // Bad input fails before any GL work: the preset and --set against the
     // knob declarations, then the scene (CPU only).

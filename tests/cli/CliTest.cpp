@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -243,6 +244,38 @@ TEST(Cli, BadArgumentsExitWithUsageOrError) {
     EXPECT_NE(scene.err.find("nowhere.glb"), std::string::npos) << scene.err;
     const Result out = run("render --scene default --size 32x32 --out " + (test::tempDir() / "x.unknownext").string());
     EXPECT_EQ(out.code, 1);
+}
+
+// No command writes over the files it reads or another output of its own:
+// a scene, a preset or an events file named as an output is refused before
+// anything runs, and stays as it was (found by a new user: bench --json and
+// render --timings-out replaced the scene they rendered).
+TEST(Cli, OutputsNeverReplaceTheirInputs) {
+    const fs::path scene = writeText("own-scene.json", R"({"objects": [{"shape": "plane", "size": [10, 0, 10]}]})");
+    const fs::path preset = writeText("own-preset.json", R"({"name": "p", "knobs": {"bloom.enabled": "false"}})");
+    auto contents = [](const fs::path& p) {
+        std::ifstream in(p);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const std::string sceneText = contents(scene), presetText = contents(preset);
+    const std::string png = (test::tempDir() / "own.png").string();
+    for (const std::string& args :
+         {"render --scene " + scene.string() + " --size 32x18 --timings-out " + scene.string() + " --out " + png,
+          "render --scene " + scene.string() + " --size 32x18 --dump-knobs " + scene.string() + " --out " + png,
+          "render --scene " + scene.string() + " --size 32x18 --out " + scene.string(),
+          "render --scene " + scene.string() + " --preset " + preset.string() + " --size 32x18 --timings-out " +
+              preset.string() + " --out " + png,
+          "render --scene " + scene.string() + " --size 32x18 --timings-out " + png + " --out " + png,
+          "bench --scene " + scene.string() + " --size 32x18 --frames 1 --json " + scene.string(),
+          "bench --scene " + scene.string() + " --preset " + preset.string() + " --size 32x18 --frames 1 --csv " +
+              preset.string(),
+          "gui --scene " + scene.string() + " --frames 2 --dump-knobs " + scene.string()}) {
+        const Result r = run(args);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+        EXPECT_NE(r.err.find("are the same file"), std::string::npos) << args << ": " << r.err;
+    }
+    EXPECT_EQ(contents(scene), sceneText);
+    EXPECT_EQ(contents(preset), presetText);
 }
 
 TEST(Cli, UsageComesFromTheCommandTable) {
