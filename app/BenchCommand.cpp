@@ -18,8 +18,10 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -213,7 +215,7 @@ std::string fieldOr(const BenchFields& f, const std::string& key, const std::str
 }
 
 std::pair<int, int> plotSize(CommandLine& cl) {
-    return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"));
+    return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"), "--plot-size");
 }
 
 // Fails now, before any frame is rendered, when `path` cannot be written at
@@ -222,6 +224,7 @@ std::pair<int, int> plotSize(CommandLine& cl) {
 // a full disk's quota). Leaves nothing behind: a file it had to create to
 // find out is removed, an existing one is opened to append and not touched.
 void requireWritable(const std::string& path, const std::string& what) {
+    if (path.empty()) throw UsageError("the " + what + " needs a file name, got an empty one");
     std::error_code ec;
     const fs::path p(path);
     if (p.filename().empty()) throw FileError(path, "cannot write the " + what + ": not a file name");
@@ -239,6 +242,41 @@ void requireWritable(const std::string& path, const std::string& what) {
     if (fd < 0) throw FileError(path, "cannot write the " + what + ": " + std::strerror(errno));
     close(fd);
     if (!exists) unlink(p.c_str());
+}
+
+// Writes every file it is given even when one fails (a full disk for the
+// CSV leaves the JSON written), then throws the first failure, the others
+// said on stderr first.
+void writeEach(const std::vector<std::function<void()>>& writes) {
+    std::optional<FileError> first;
+    for (const auto& write : writes) {
+        try {
+            write();
+        } catch (const FileError& e) {
+            if (first) std::fprintf(stderr, "deferred-workbench: error: %s\n", e.what());
+            else first = e;
+        }
+    }
+    if (first) throw *first;
+}
+
+// After the tables: the configurations that have a baseline but no ratio,
+// because one of the two has no samples of the ratio's series (a pass that
+// runs in some configurations only, such as dof with dof.enabled swept). No
+// ratio at all is an error; some missing, a warning naming them.
+void checkRatiosMade(const BenchSummary& summary, const std::string& series) {
+    int compared = 0;
+    std::string missing;
+    for (const auto& r : summary.rows) {
+        if (r.baseline < 0 || r.baseline == r.config) continue;
+        ++compared;
+        if (!r.ratio.valid()) missing += (missing.empty() ? "" : ", ") + std::to_string(r.config);
+    }
+    if (missing.empty()) return;
+    const std::string why = "'" + series + "' is not in every configuration and its baseline";
+    if (std::count(missing.begin(), missing.end(), ',') + 1 == compared)
+        throw Error("--ratio-of: no configuration has a ratio: " + why + " (the tables and files are written)");
+    std::fprintf(stderr, "bench: warning: no ratio for configuration(s) %s: %s\n", missing.c_str(), why.c_str());
 }
 
 // --ratio-of before a run: the frame, a pass of the pipeline or a span of
@@ -273,22 +311,72 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
 // went and how its tables were made: its command without argv[0], --shard,
 // --csv, --json, --plot, --plot-size, --baseline, --ratio-of, --resamples
 // and --quiet (shards differing only in those measured the same grid; bench
-// merge makes its own tables). --no-lpp counts: it leaves out a column.
+// merge makes its own tables), its options in any order but --sweep's and
+// --set's among themselves (the order of the axes, and of the assignments,
+// counts). --no-lpp counts: it leaves out a column.
+// An argument as a POSIX shell reads it back: as it is when it holds only
+// safe characters, else in single quotes (a quote inside as '\'').
+std::string shellQuoted(const std::string& arg) {
+    const bool safe = !arg.empty() && std::all_of(arg.begin(), arg.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_-+=.,:/@%", c);
+    });
+    if (safe) return arg;
+    std::string q = "'";
+    for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+// shellQuoted's words, split back.
+std::vector<std::string> shellWords(const std::string& text) {
+    std::vector<std::string> words;
+    std::string word;
+    bool inWord = false, quoted = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (quoted) {
+            if (c == '\'') quoted = false;
+            else word += c;
+        } else if (c == '\'') {
+            quoted = inWord = true;
+        } else if (c == '\\' && i + 1 < text.size()) {
+            word += text[++i];
+            inWord = true;
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            if (inWord) words.push_back(word);
+            word.clear();
+            inWord = false;
+        } else {
+            word += c;
+            inWord = true;
+        }
+    }
+    if (inWord) words.push_back(word);
+    return words;
+}
+
 std::string runOf(const std::string& command) {
-    static const std::set<std::string> withValue = {"--shard",    "--csv",      "--json",    "--plot",
-                                                    "--plot-size", "--baseline", "--ratio-of", "--resamples"};
-    std::istringstream words(command);
-    std::string w, run;
-    words >> w;  // argv[0]
-    while (words >> w) {
-        const std::string flag = w.substr(0, w.find('='));
-        if (w == "--quiet" || (withValue.count(flag) && flag != w)) continue;
-        if (withValue.count(w)) {
-            words >> w;  // its value
+    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",    "--plot",
+                                                  "--plot-size", "--baseline", "--ratio-of", "--resamples"};
+    static const std::set<std::string> bare = {"--quiet", "--no-lpp", "--keep-scene-lights", "--walkthrough"};
+    const std::vector<std::string> tokens = shellWords(command);
+    std::vector<std::string> words0, unordered, ordered;  // the subcommand's words, then the options
+    for (std::size_t i = 1; i < tokens.size(); ++i) {     // tokens[0]: argv[0]
+        std::string option = tokens[i];
+        if (option.rfind("--", 0) != 0) {
+            words0.push_back(option);
             continue;
         }
-        run += (run.empty() ? "" : " ") + w;
+        const std::string flag = option.substr(0, option.find('='));
+        if (flag == option && !bare.count(flag) && i + 1 < tokens.size())
+            option += "=" + tokens[++i];  // "--flag value" as "--flag=value"
+        if (flag == "--quiet" || ignored.count(flag)) continue;
+        (flag == "--sweep" || flag == "--set" ? ordered : unordered).push_back(option);
     }
+    std::sort(unordered.begin(), unordered.end());
+    std::string run;
+    for (const auto& o : words0) run += (run.empty() ? "" : " ") + o;
+    for (const auto& o : unordered) run += (run.empty() ? "" : " ") + o;
+    for (const auto& o : ordered) run += (run.empty() ? "" : " ") + o;
     return run;
 }
 
@@ -302,10 +390,16 @@ BenchFields fieldsOf(const nlohmann::json& j) {
 
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
+    if (cl.flag("--help")) {
+        std::cout << kBenchUsage;
+        return 0;
+    }
     const auto out = cl.value("--out");
     const auto json = cl.value("--json");
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
+    if (!plot && cl.value("--plot-size"))
+        std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
     const std::optional<std::string> baselineGiven = cl.value("--baseline");
     const std::optional<std::string> ratioOfGiven = cl.value("--ratio-of");
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
@@ -432,6 +526,9 @@ int runMerge(int argc, char** argv) {
         }
     }
     BenchResults all = BenchResults::merge(std::move(parts), inputs);
+    if (all.configs.empty())
+        throw Error("bench merge: the inputs hold no configuration (empty shards: more shards than the grid's "
+                    "comparison groups)");
     if (shardCount > 0 && shardIndices.size() == inputs.size()) {
         std::string missing;
         for (int i = 0; i < shardCount; ++i)
@@ -461,8 +558,23 @@ int runMerge(int argc, char** argv) {
                                 : inherited(ratioOfFromShards) ? ratioOfFromShards
                                                                : PassTimer::kFrameSeries;
     const std::string baselineSpec = baselineGiven ? *baselineGiven : inherited(baselineFromShards) ? baselineFromShards : "";
+    if (!ratioOfGiven && ratioOfFromShards == "-")
+        std::fprintf(stderr, "bench merge: note: the shards' JSONs name different --ratio-of series; the ratios are "
+                             "of %s (give --ratio-of to choose)\n", ratioOf.c_str());
+    if (!baselineGiven && baselineFromShards == "-")
+        std::fprintf(stderr, "bench merge: note: the shards' JSONs name different baselines; the ratios use the "
+                             "default one (give --baseline to choose)\n");
     BenchBaseline baseline = chooseBaseline(all, baselineSpec);
     baseline.series = ratioOf;
+    // A shard runs whole groups along its run's baseline axis, so each ratio
+    // compares frames of one process; along another axis they come from
+    // different shards (other processes, maybe other machines).
+    const std::string shardAxis =
+        inherited(baselineFromShards) ? baselineFromShards.substr(0, baselineFromShards.find('=')) : "";
+    if (shardCount > 1 && !shardAxis.empty() && !baseline.axis.empty() && baseline.axis != shardAxis)
+        std::fprintf(stderr, "bench merge: warning: the shards were grouped along %s, the ratios are along %s: they "
+                             "compare configurations measured by different shards (other processes, maybe other "
+                             "machines)\n", shardAxis.c_str(), baseline.axis.c_str());
     if (!hasSeries(all, ratioOf)) {
         std::set<std::string> seen;
         for (const auto& sample : all.samples) seen.insert(sample.series);
@@ -477,10 +589,13 @@ int runMerge(int argc, char** argv) {
                 "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
                     std::to_string(inputs.size()) + " shard(s)");
     std::fflush(stdout);
-    all.writeCsv(*out);
-    if (json) writeBenchJson(*json, all, summary);
+    std::vector<std::function<void()>> outputs = {[&] { all.writeCsv(*out); }};
+    if (json) outputs.push_back([&] { writeBenchJson(*json, all, summary); });
+    writeEach(outputs);
     std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+    const int plotted = plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+    checkRatiosMade(summary, ratioOf);
+    return plotted;
 }
 
 // A comma list of a flag; an empty item is a usage error.
@@ -541,9 +656,17 @@ int runBenchCommand(int argc, char** argv) {
     if (const auto r = cl.value("--light-radius")) {
         char* end = nullptr;
         o.lightRadius = std::strtof(r->c_str(), &end);
-        if (end != r->c_str() + r->size() || !(o.lightRadius > 0.0f) || !std::isfinite(o.lightRadius))
+        if (end != r->c_str() + r->size() || r->empty())
             throw UsageError("--light-radius expects a positive number, got '" + *r + "'");
+        if (!std::isfinite(o.lightRadius))
+            throw UsageError("--light-radius " + *r + " does not fit a 32-bit float (largest about 3.4e38)");
+        if (!(o.lightRadius > 0.0f))
+            throw UsageError("--light-radius must be above 0 (and at least the smallest 32-bit float), got '" + *r + "'");
     }
+    // Options that change nothing without another one: said, not ignored.
+    if (cl.value("--light-radius") && !cl.value("--lights"))
+        std::fprintf(stderr, "bench: note: --light-radius sizes the generated lights; without --lights the scene's "
+                             "own lights are used and it changes nothing\n");
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
     if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
@@ -564,6 +687,8 @@ int runBenchCommand(int argc, char** argv) {
     const std::string json = cl.value("--json").value_or("bench" + suffix + ".json");
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = plotSize(cl);
+    if (!plot && cl.value("--plot-size"))
+        std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
     const std::string baselineSpec = cl.value("--baseline").value_or("");
     const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
@@ -610,7 +735,7 @@ int runBenchCommand(int argc, char** argv) {
     for (auto& f : hostFields()) machine.push_back(std::move(f));
     results.machine = std::move(machine);
     std::string command;
-    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + shellQuoted(argv[i]);
     results.settings.emplace_back("command", command);
 
     const BenchSummary summary = summarize(results, baseline, resamples);
@@ -623,8 +748,7 @@ int runBenchCommand(int argc, char** argv) {
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
                                      : std::string()));
     std::fflush(stdout);
-    results.writeCsv(csv);
-    writeBenchJson(json, results, summary);
+    writeEach({[&] { results.writeCsv(csv); }, [&] { writeBenchJson(json, results, summary); }});
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     const int plotted = plot ? writePlot(csv, *plot, plotW, plotH) : 0;
     // A pass can be known and still not run (switched off, culled, a span
@@ -633,6 +757,7 @@ int runBenchCommand(int argc, char** argv) {
     if (!results.configs.empty() && !hasSeries(results, ratioOf))
         throw Error("--ratio-of: no configuration recorded '" + ratioOf +
                     "' (the pass did not run, or has no such span); the ratios are empty");
+    checkRatiosMade(summary, ratioOf);
     return plotted;
 }
 

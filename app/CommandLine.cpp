@@ -65,8 +65,11 @@ bool CommandLine::flag(const std::string& flag) {
 
 RunConfig CommandLine::runConfig() {
     RunConfig run;
-    run.scene = value("--scene").value_or("");
-    run.setPreset(value("--preset").value_or(""));
+    const std::optional<std::string> scene = value("--scene"), preset = value("--preset");
+    if (scene && scene->empty()) throw UsageError("--scene needs a built-in scene's name or a file, got an empty one");
+    if (preset && preset->empty()) throw UsageError("--preset needs a built-in preset's name or a file, got an empty one");
+    run.scene = scene.value_or("");
+    run.setPreset(preset.value_or(""));
     run.sets = values("--set");
     return run;
 }
@@ -86,11 +89,10 @@ int CommandLine::parseInt(const std::string& flag, const std::string& text, int 
     return v;
 }
 
-std::pair<int, int> CommandLine::parseSize(const std::string& text) {
+std::pair<int, int> CommandLine::parseSize(const std::string& text, const std::string& flag) {
     const auto x = text.find('x');
-    if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
-    return {parseInt("--size width", text.substr(0, x), 1, 16384),
-            parseInt("--size height", text.substr(x + 1), 1, 16384)};
+    if (x == std::string::npos) throw UsageError(flag + " expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
+    return {parseInt(flag + " width", text.substr(0, x), 1, 16384), parseInt(flag + " height", text.substr(x + 1), 1, 16384)};
 }
 
 void CommandLine::requireDistinctFiles(const NamedFiles& writes, const NamedFiles& reads) {

@@ -41,8 +41,8 @@ public:
     static NamedFiles inputFiles(const RunConfig& run);
 
     static int parseInt(const std::string& flag, const std::string& text, int min, int max);
-    // "1280x720" -> (1280, 720)
-    static std::pair<int, int> parseSize(const std::string& text);
+    // "1280x720" -> (1280, 720); errors name `flag`.
+    static std::pair<int, int> parseSize(const std::string& text, const std::string& flag = "--size");
 
 private:
     struct Arg {

@@ -4,13 +4,16 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "renderer/Error.h"
+#include "renderer/io/TextFile.h"
 
 namespace dw {
 
@@ -111,9 +114,14 @@ BenchResults BenchResults::parseCsv(const std::string& text, const std::string& 
     r.knobAxes.assign(header.begin() + static_cast<std::ptrdiff_t>(lead), header.end() - static_cast<std::ptrdiff_t>(trail));
     const size_t knobs = r.knobAxes.size();
     std::map<int, BenchConfigResult> configs;
+    std::set<std::tuple<int, int, std::string>> once;  // (config, sample, series): each once
+    // Every line bench writes ends in a newline: a last line without one was cut.
+    const bool complete = text.empty() || text.back() == '\n';
     int lineNo = 1;
     while (std::getline(in, line)) {
         ++lineNo;
+        if (!complete && in.peek() == std::char_traits<char>::eof() && !line.empty())
+            throw FileError(path, "line " + std::to_string(lineNo) + ": the last line has no end (is the file cut short?)");
         if (line.empty() || line == "\r") continue;
         const std::vector<std::string> f = splitCsvLine(line);
         auto fail = [&](const std::string& what) -> void {
@@ -161,8 +169,18 @@ BenchResults BenchResults::parseCsv(const std::string& text, const std::string& 
         s.seq = integer(t + 3);
         s.frame = static_cast<std::uint64_t>(integer(t + 4));
         s.series = f[t + 5];
-        s.gpuMs = real(t + 6);
-        s.cpuMs = real(t + 7);
+        // A time is a finite number of milliseconds, never negative.
+        auto time = [&](size_t i) {
+            const double v = real(i);
+            if (!std::isfinite(v) || v < 0.0)
+                fail(header[i] + ": expected milliseconds (a finite number, at least 0), got '" + f[i] + "'");
+            return v;
+        };
+        s.gpuMs = time(t + 6);
+        s.cpuMs = time(t + 7);
+        if (!once.emplace(s.config, s.sample, s.series).second)
+            fail("configuration " + std::to_string(s.config) + ", sample " + std::to_string(s.sample) + ", " + s.series +
+                 " is there twice (a file joined twice?)");
         r.samples.push_back(std::move(s));
     }
     for (auto& [index, c] : configs) r.configs.push_back(std::move(c));
@@ -170,6 +188,8 @@ BenchResults BenchResults::parseCsv(const std::string& text, const std::string& 
 }
 
 BenchResults BenchResults::readCsv(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a folder, not a bench samples CSV");
     std::ifstream f(path);
     if (!f) throw FileError(path, "cannot open the bench CSV");
     std::stringstream text;
@@ -177,12 +197,26 @@ BenchResults BenchResults::readCsv(const std::string& path) {
     return parseCsv(text.str(), path);
 }
 
-void BenchResults::writeCsv(const std::string& path) const {
-    std::ofstream f(path, std::ios::trunc);
-    if (!f) throw FileError(path, "cannot write the bench CSV");
-    f << csv();
-    if (!f.flush()) throw FileError(path, "writing the bench CSV failed");
+void writeBenchFile(const std::string& path, const std::string& text, const std::string& what) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+        // A device or a pipe (/dev/null, a reader's FIFO): written in place, never renamed over.
+        std::ofstream f(path, std::ios::trunc);
+        if (!f) throw FileError(path, "cannot write the " + what);
+        f << text;
+        if (!f.flush()) throw FileError(path, "writing the " + what + " failed");
+        return;
+    }
+    // A file: whole or not at all (a failed write leaves the old one, and no part).
+    try {
+        writeFileAtomically(path, text);
+    } catch (const FileError&) {
+        throw FileError(path, "writing the " + what + " failed (disk full, or not writable)");
+    }
 }
+
+void BenchResults::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "bench CSV"); }
 
 BenchResults BenchResults::merge(std::vector<BenchResults> parts, const std::vector<std::string>& names) {
     if (parts.empty()) throw Error("nothing to merge");

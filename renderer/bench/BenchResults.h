@@ -56,6 +56,7 @@ struct BenchResults {
     // Reads csv() back; throws FileError naming the file and line.
     static BenchResults parseCsv(const std::string& text, const std::string& path);
     static BenchResults readCsv(const std::string& path);
+    // Writes csv() whole or not at all (writeBenchFile). Throws FileError.
     void writeCsv(const std::string& path) const;
 
     // Joins shards of one grid: the same knob columns, no configuration in
@@ -63,5 +64,10 @@ struct BenchResults {
     // first part's (bench merge records each shard's own beside them).
     static BenchResults merge(std::vector<BenchResults> parts, const std::vector<std::string>& names);
 };
+
+// Writes a file of bench's: a regular file whole or not at all (a temporary
+// file renamed over it, so a failed write leaves the old one and no part of
+// the new), a device or a pipe in place. Throws FileError naming `what`.
+void writeBenchFile(const std::string& path, const std::string& text, const std::string& what);
 
 }  // namespace dw

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -17,6 +18,18 @@
 namespace dw {
 
 namespace {
+
+// A number as the fewest digits that read back the same (to_string's six
+// decimals wrote a radius of 1e-7 as 0.000000).
+std::string shortest(double v) {
+    char text[32];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof(text), "%.*g", digits, v);
+        if (std::strtod(text, nullptr) == v) break;
+    }
+    return text;
+}
+
 
 using Clock = std::chrono::steady_clock;
 
@@ -321,8 +334,8 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
                    : o_.keepSceneLights ? "generated, added to the scene's " + std::to_string(scene_.lights.size())
                                         : "generated"},
         {"seed", std::to_string(o_.seed)},
-        {"light_radius", std::to_string(radius_)},
-        {"radius_threshold", std::to_string(threshold_)},
+        {"light_radius", shortest(radius_)},
+        {"radius_threshold", shortest(threshold_)},
         {"camera", o_.walkthrough ? "walkthrough (camera.path)" : o_.orbit > 0 ? "orbit " + std::to_string(o_.orbit) : "still"},
         {"lpp_poses", o_.lpp ? std::to_string(path.moving() ? o_.lppPoses : 1) : "0"},
         {"shard", std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count)},

@@ -289,7 +289,11 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
             for (const auto& s : r->series) series[s.series] = {{"gpu_ms", msJson(s.gpu)}, {"cpu_ms", msJson(s.cpu)}};
             j["series"] = series;
             j["baseline_config"] = r->baseline >= 0 ? Json(r->baseline) : Json(nullptr);
-            if (r->ratio.valid()) {
+            if (r->baseline == r->config && r->find(summary.baseline.series)) {
+                // The baseline against itself: 1, with no interval (as the table says).
+                j["ratio"] = 1.0;
+                j["ci95"] = nullptr;
+            } else if (r->ratio.valid()) {
                 j["ratio"] = rounded(r->ratio.ratio);
                 j["ci95"] = {rounded(r->ratio.low), rounded(r->ratio.high)};
             } else {
@@ -312,10 +316,7 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
 }
 
 void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary) {
-    std::ofstream f(path, std::ios::trunc);
-    if (!f) throw FileError(path, "cannot write the bench JSON");
-    f << benchJson(results, summary);
-    if (!f.flush()) throw FileError(path, "writing the bench JSON failed");
+    writeBenchFile(path, benchJson(results, summary), "bench JSON");
 }
 
 }  // namespace dw

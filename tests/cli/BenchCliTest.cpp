@@ -118,6 +118,12 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
             EXPECT_NEAR(c["lpp_lit"].get<double>(), c["lights"].get<double>(), 1e-3) << c["size"];
         }
         ASSERT_TRUE(c["ratio"].is_number());
+        if (c["baseline_config"] == c["config"]) {
+            // The baseline against itself: 1 and no interval, as the table shows.
+            EXPECT_EQ(c["ratio"].get<double>(), 1.0);
+            EXPECT_TRUE(c["ci95"].is_null());
+            continue;
+        }
         ASSERT_TRUE(c["ci95"].is_array());
         EXPECT_LE(c["ci95"][0].get<double>(), c["ratio"].get<double>());
         EXPECT_GE(c["ci95"][1].get<double>(), c["ratio"].get<double>());
@@ -246,6 +252,22 @@ TEST(BenchCli, BadInputFailsBeforeRendering) {
     EXPECT_NE(ratioOf.err.find("--ratio-of: 'lightning' is not frame, a pass (geometry,"), std::string::npos)
         << ratioOf.err;
     EXPECT_EQ(ratioOf.err.find("bench: frame"), std::string::npos) << ratioOf.err;
+    // A pass that runs in some configurations only: no baseline has it, so
+    // no ratio, an error after the run.
+    const Result partly = run("bench --scene default --size 32x18 --lights 1 --frames 1 --quiet --sweep "
+                              "dof.enabled=false,true --ratio-of dof --csv /dev/null --json /dev/null");
+    EXPECT_EQ(partly.code, 1);
+    EXPECT_NE(partly.err.find("no configuration has a ratio: 'dof' is not in every configuration and its baseline"),
+              std::string::npos)
+        << partly.err;
+    // One output failing (a full disk) does not cost the others.
+    const fs::path kept = test::tempDir() / "bench-full" / "kept.json";
+    fs::create_directories(kept.parent_path());
+    const Result full = run("bench --scene default --size 32x18 --lights 1 --frames 1 --quiet --csv /dev/full --json " +
+                            kept.string());
+    EXPECT_EQ(full.code, 1);
+    EXPECT_NE(full.err.find("/dev/full: writing the bench CSV failed"), std::string::npos) << full.err;
+    EXPECT_TRUE(fs::exists(kept)) << "the JSON was not written after the CSV failed";
     // A pass that exists but does not run (depth of field is off): the run's
     // files are written, then the ratio it could not make is an error.
     const fs::path offDir = test::tempDir() / "bench-ratio-of";
@@ -419,6 +441,43 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
                               (dir / "m6.csv").string());
     EXPECT_EQ(agreed.code, 0) << agreed.err;
     EXPECT_NE(agreed.out.find("| lighting ratio to lighting.strategy=tiled |"), std::string::npos) << agreed.out;
+
+    // Cut inside its last line (no newline at the end), rows joined twice,
+    // and times that are no times: each refused naming the line.
+    auto variant = [&](const std::string& name, const std::string& text) {
+        fs::create_directories(dir / name);
+        std::ofstream(dir / name / "f0.csv") << text;
+        return run("bench merge " + (dir / name / "f0.csv").string() + " --out " + (dir / (name + ".csv")).string());
+    };
+    std::string whole;
+    for (const auto& line : lines) whole += line + "\n";
+    const Result midLine = variant("midline", whole.substr(0, whole.size() - 4));
+    EXPECT_EQ(midLine.code, 1);
+    EXPECT_NE(midLine.err.find("the last line has no end (is the file cut short?)"), std::string::npos) << midLine.err;
+    std::string twice = whole;
+    for (std::size_t i = 1; i < lines.size(); ++i) twice += lines[i] + "\n";
+    const Result joined = variant("twice", twice);
+    EXPECT_EQ(joined.code, 1);
+    EXPECT_NE(joined.err.find("is there twice"), std::string::npos) << joined.err;
+    for (const char* bad : {"inf", "-5", "nan", ""}) {
+        std::string text = whole;
+        const std::size_t lineEnd = text.find('\n', text.find('\n') + 1);  // the first sample's line
+        const std::size_t lastComma = text.rfind(',', lineEnd), gpuComma = text.rfind(',', lastComma - 1);
+        text.replace(gpuComma + 1, lastComma - gpuComma - 1, bad);
+        const Result r = variant(std::string("time") + (bad[0] ? bad : "empty"), text);
+        EXPECT_EQ(r.code, 1) << bad;
+        EXPECT_NE(r.err.find("gpu_ms: expected milliseconds"), std::string::npos) << bad << ": " << r.err;
+    }
+
+    // Options in another order are the same run; a ratio along another axis
+    // than the shards' groups is said to compare shards.
+    shard(dir / "o1", "--sweep lighting.strategy=stencil_volumes,tiled --lights 1,2", 1);
+    const Result order = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "o1.csv").string() + " --out " +
+                             (dir / "m7.csv").string() + " --baseline lights=1");
+    EXPECT_EQ(order.code, 0) << order.err;
+    EXPECT_NE(order.err.find("the shards were grouped along lighting.strategy, the ratios are along lights"),
+              std::string::npos)
+        << order.err;
 
     // Writing over an input (a shard or its JSON) is refused before anything is read.
     const Result over = run("bench merge " + (dir / "a0.csv").string() + " " + (dir / "a1.csv").string() + " --out " +
