@@ -448,7 +448,7 @@ int runMerge(int argc, char** argv) {
                 if (n != expected)
                     throw FileError(in, "configuration " + std::to_string(c.config.index) + " has " + std::to_string(n) +
                                             " frames, " + whence + " " + std::to_string(expected) +
-                                            " (is the file cut short?)");
+                                            (n < expected ? " (is the file cut short?)" : " (rows of another run?)"));
             }
         };
         int most = 0;
