@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -27,6 +28,7 @@
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
 #include "renderer/inspect/ViewportOverlay.h"
+#include "ui/InputQueue.h"
 #include "ui/WorkbenchUi.h"
 
 #include <imgui_internal.h>
@@ -93,15 +95,30 @@ private:
     std::string eglFailed_;
 };
 
-// Key presses since the last frame; see UiState::keyPresses.
-std::vector<std::pair<int, int>>& pendingKeys() {
-    static std::vector<std::pair<int, int>> keys;
-    return keys;
+// The window's input events, queued in arrival order for ui::InputQueue to
+// hand to ImGui a change per key or button per frame (the callbacks have no
+// user pointer to reach the frame loop through: GLFW's is ImGui's backend's).
+ui::InputQueue& inputQueue() {
+    static ui::InputQueue queue;
+    return queue;
+}
+// Files dropped on the window since the last frame.
+std::vector<std::string>& droppedFiles() {
+    static std::vector<std::string> files;
+    return files;
 }
 
-void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-    if (action == GLFW_PRESS) pendingKeys().emplace_back(key, mods);
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (action != GLFW_REPEAT) inputQueue().key(key, action == GLFW_PRESS, mods);
+}
+void onChar(GLFWwindow*, unsigned codepoint) { inputQueue().character(codepoint); }
+void onMouseButton(GLFWwindow* window, int button, int action, int) {
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    inputQueue().button(button, action == GLFW_PRESS, static_cast<float>(x), static_cast<float>(y));
+}
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) droppedFiles().emplace_back(paths[i]);
 }
 
 class ImGuiLayer {
@@ -119,8 +136,13 @@ public:
         style.FrameRounding = 2.0f;
         style.WindowPadding = ImVec2(6, 6);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
-        // Ours forwards to ImGui's and also queues the press.
+        // Keys, text and buttons go through the input queue instead of
+        // ImGui's callbacks (which set state a frame can miss); the wheel,
+        // cursor and focus stay with the backend.
         glfwSetKeyCallback(window, onKey);
+        glfwSetCharCallback(window, onChar);
+        glfwSetMouseButtonCallback(window, onMouseButton);
+        glfwSetDropCallback(window, onDrop);
         ImGui_ImplOpenGL3_Init("#version 450 core");
     }
     ~ImGuiLayer() {
@@ -155,6 +177,9 @@ void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
         if (j.contains("open") && j["open"].is_object())
             for (auto it = j["open"].begin(); it != j["open"].end(); ++it)
                 if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, it.key()); f && it.value().is_boolean()) *f = it.value().get<bool>();
+        if (j.contains("recent_scenes") && j["recent_scenes"].is_array())
+            for (const auto& r : j["recent_scenes"])
+                if (r.is_string() && state.recentScenes.size() < ui::UiState::kRecentScenes) state.recentScenes.push_back(r.get<std::string>());
         state.resetLayout = false;
     } catch (const std::exception& e) {
         state.log.error(path + ": saved layout not used (" + e.what() + "); the default layout is shown", 0.0);
@@ -166,7 +191,8 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
     for (const auto& name : ui.layout().panels())
         if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, name)) open[name] = *f;
     try {
-        writeFileAtomically(path, nlohmann::json{{"layout", ui.layout().toJson()}, {"open", open}}.dump(2) + "\n");
+        const nlohmann::json recent = std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end());
+        writeFileAtomically(path, nlohmann::json{{"layout", ui.layout().toJson()}, {"open", open}, {"recent_scenes", recent}}.dump(2) + "\n");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
     }
@@ -175,7 +201,8 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
 void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
-                       const PassTimer& timer) {
+                       RenderSession& session) {
+    const PassTimer& timer = session.pipeline().timer();
     // The newest frame whose GPU times have come back (-1: none).
     const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
     const long long lastTimedFrame =
@@ -189,6 +216,8 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
         if (!w || !w->WasActive) continue;
         panels.push_back({{"name", d.name}, {"x", w->Pos.x}, {"y", w->Pos.y}, {"w", w->Size.x}, {"h", w->Size.y}});
     }
+    nlohmann::json items = nlohmann::json::object();
+    for (const auto& [name, r] : state.itemRects) items[name] = {r.x, r.y, r.z, r.w};
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const nlohmann::json j = {{"display", {display.x, display.y}},
                               {"framebuffer", {fbw, fbh}},
@@ -198,13 +227,22 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
                               {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}},
                               {"render_size", {state.renderSize.x, state.renderSize.y}},
+                              {"resolution", {{"scale", state.viewport.scale()},
+                                              {"auto", state.viewport.resolution == ui::ResolutionScale::Auto},
+                                              {"software_start", state.viewport.softwareStart}}},
                               {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
                               {"frames", state.frame + 1},
                               {"frames_rendered", state.framesRendered},
                               {"last_rendered_frame", static_cast<long long>(state.report.frameIndex)},
                               {"last_timed_frame", lastTimedFrame},
                               {"renderdoc_captures", state.renderdocCaptures},
-                              {"errors", errors}};
+                              {"errors", errors},
+                              {"banner", state.log.banner() ? state.log.banner()->text : std::string()},
+                              {"scene", {{"name", session.scene().name}, {"source", session.scene().source}}},
+                              {"recent_scenes", std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end())},
+                              {"active_preset", state.activePreset},
+                              {"axes", state.viewport.overlay.axes},
+                              {"items", items}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -461,6 +499,33 @@ private:
     std::string lastSignature_;
 };
 
+// The viewer's *save*: the shown output at its own resolution, EXR raw or
+// PNG as the view maps it, into the export folder.
+void saveShownOutput(ui::ImageView& view, ui::UiState& state, RenderSession& session) {
+    const std::string ext = view.saveRequest;
+    view.saveRequest.clear();
+    if (&view == &state.viewport && state.viewport.mode != ui::DisplayMode::Deferred) {
+        state.log.error("save: the textured and wireframe previews are no pipeline output; F12 saves the window", state.time,
+                        "save buffer");
+        return;
+    }
+    std::string name = view.output;
+    std::replace(name.begin(), name.end(), '.', '_');
+    const std::string path = state.exportDir + "/" + name + "-frame" + std::to_string(state.report.frameIndex) + "." + ext;
+    try {
+        std::error_code ec;
+        fs::create_directories(state.exportDir, ec);
+        BufferViewSettings s = view.settingsOr();
+        s.nearPlane = session.camera().nearPlane;
+        s.farPlane = session.camera().farPlane;
+        s.reversedDepth = session.pipeline().lastCamera().depth.x > 0.5f;
+        session.writeOutput(view.output, path, s);
+        state.log.done(view.output + " saved to " + path, state.time, "save buffer");
+    } catch (const std::exception& e) {
+        state.log.error("cannot save " + view.output + ": " + e.what(), state.time, "save buffer");
+    }
+}
+
 }  // namespace
 
 int runGui(const GuiOptions& options, Scene scene) {
@@ -488,6 +553,9 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.log.info("preset '" + p->name + "': " + std::to_string(p->knobs.size()) + " knobs set", 0.0);
         for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, 0.0);
         state.log.info("GL: " + session.glInfo().renderer + " | " + session.glInfo().version, 0.0);
+        state.log.info("shaders: " + session.shaders().root().string() +
+                           " (edit and press F5 to reload; DW_SHADER_DIR=FOLDER picks another folder)",
+                       0.0);
         // Until the viewport panel reports its size, render at a guess of it.
         state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
 
@@ -496,11 +564,19 @@ int runGui(const GuiOptions& options, Scene scene) {
         if (!options.view.empty()) {
             if (!session.pipeline().outputs().find(options.view))
                 throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
-            state.viewport.output = options.view;
+            state.viewport.show(options.view);
         }
-        if (options.resolution == "1/2") state.viewport.resolution = ui::ResolutionScale::Half;
-        if (options.resolution == "1/4") state.viewport.resolution = ui::ResolutionScale::Quarter;
-        if (options.resolution == "auto") state.viewport.resolution = ui::ResolutionScale::Auto;
+        const ui::StartResolution startScale = ui::startResolution(options.resolution, gl::isCpuRasterizer(session.glInfo()), scripted);
+        state.viewport.resolution = startScale.scale;
+        state.viewport.autoScale = startScale.autoScale;
+        state.viewport.frameTargetMs = startScale.frameTargetMs;
+        if (startScale.softwareDefault) {
+            state.viewport.softwareStart = session.glInfo().renderer;
+            state.log.info("software OpenGL (" + session.glInfo().renderer +
+                               "): the viewport starts at auto resolution (1/4, then stepping to keep a frame under 150 ms); "
+                               "the toolbar's 'full' button or --resolution full renders every pixel",
+                           0.0);
+        }
         state.timingCapture = options.record;
         RenderDocCapture renderdoc = RenderDocCapture::attach(false);
         state.renderdocAvailable = renderdoc.available();
@@ -530,11 +606,33 @@ int runGui(const GuiOptions& options, Scene scene) {
             const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
             if (in.resize) glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
             glfwPollEvents();
-            state.keyPresses.swap(pendingKeys());
-            pendingKeys().clear();
-            for (int key : in.keys) state.keyPresses.emplace_back(key, 0);
+            // Scripted keys and text go through the queue as a person's would.
+            for (const auto& [key, mods] : in.keys) {
+                for (const auto& [bit, modKey] : kModifierKeys)
+                    if (mods & bit) inputQueue().key(modKey, true, mods);
+                inputQueue().key(key, true, mods);
+                inputQueue().key(key, false, mods);
+                for (const auto& [bit, modKey] : kModifierKeys)
+                    if (mods & bit) inputQueue().key(modKey, false, 0);
+            }
+            for (const char32_t c : in.text) {
+                const ScriptedKey k = scriptedKeyForChar(c);
+                if (k.key >= 0) {
+                    if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, true, k.mods);
+                    inputQueue().key(k.key, true, k.mods);
+                }
+                inputQueue().character(static_cast<unsigned>(c));
+                if (k.key >= 0) {
+                    inputQueue().key(k.key, false, k.mods);
+                    if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, false, 0);
+                }
+            }
+            for (const auto& f : in.drops) droppedFiles().push_back(f);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            state.keyPresses = inputQueue().feed(ImGui::GetIO());
+            state.droppedFiles.swap(droppedFiles());
+            droppedFiles().clear();
             // Scripted input over what the backend read from the (idle) window.
             if (in.mouseX && in.mouseY) scriptMouse = ImVec2(*in.mouseX, *in.mouseY);
             if (in.leftDown) scriptLeft = *in.leftDown;
@@ -556,6 +654,8 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.cameraPosition = session.camera().position;
             ui.draw(state, session, dt);
 
+            for (ui::ImageView* view : {static_cast<ui::ImageView*>(&state.viewport), static_cast<ui::ImageView*>(&state.side)})
+                if (!view->saveRequest.empty()) saveShownOutput(*view, state, session);
             if (state.requestReloadShaders) {
                 state.requestReloadShaders = false;
                 const auto errors = session.shaders().reloadChanged();
@@ -610,11 +710,13 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             if (lastFrame && !options.layoutOut.empty()) {
-                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session.pipeline().timer());
+                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
                 std::printf("wrote %s\n", options.layoutOut.c_str());
             }
             ++state.frame;
             if (lastFrame) break;
+            if (!scripted && !options.layoutOut.empty() && (glfwWindowShouldClose(window.get()) || state.requestQuit))
+                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
         }
         if (!layoutPath.empty()) {
             std::error_code ec;

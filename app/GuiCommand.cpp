@@ -17,7 +17,7 @@ int runGuiCommand(int argc, char** argv) {
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
-                     "                          [--frames N [--screenshot out.png] [--events FILE] [--layout-out FILE]]\n"
+                     "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
                      "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
@@ -27,13 +27,15 @@ int runGuiCommand(int argc, char** argv) {
                      "  --frames     quit after N frames (for scripts and tests)\n"
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
                      "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
-                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key NAME', 'resize W H', 'ctrl down|up' (window pixels)\n"
-                     "  --layout-out with --frames: after the last frame, write each open panel's rectangle,\n"
-                     "               the window size and the probe as JSON\n"
+                     "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key [ctrl+]NAME', 'type TEXT', 'drop PATH',\n"
+                     "               'resize W H', 'ctrl down|up' (window pixels)\n"
+                     "  --layout-out after the last frame (with --frames) or when the window closes, write each\n"
+                     "               open panel's rectangle, the window size, the probe, the scene and errors as JSON\n"
                      "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
                      "  --view NAME  the output the viewport shows at start (see list buffers)\n"
                      "  --resolution full|1/2|1/4|auto  render resolution against the viewport panel\n"
-                     "               (auto: steps to keep the GPU frame under 100 ms)\n"
+                     "               (auto: steps to keep the GPU frame under 100 ms). Default: full, but on a\n"
+                     "               CPU rasteriser (llvmpipe) without --frames auto from 1/4 with a 150 ms target\n"
                      "  --record     time every frame from the start (otherwise a frame is rendered only\n"
                      "               when something it shows changed)\n"
                      "  --renderdoc  run under RenderDoc (starts again with librenderdoc.so preloaded,\n"
@@ -67,7 +69,6 @@ int runGuiCommand(int argc, char** argv) {
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
     if (!o.screenshot.empty() && o.run.frames == 0) throw UsageError("--screenshot needs --frames N");
     if (!o.events.empty() && o.run.frames == 0) throw UsageError("--events needs --frames N");
-    if (!o.layoutOut.empty() && o.run.frames == 0) throw UsageError("--layout-out needs --frames N");
     // No file the window writes may replace another, its scene, preset or events.
     CommandLine::NamedFiles writes, reads = CommandLine::inputFiles(o.run);
     if (!o.screenshot.empty()) writes.emplace_back("--screenshot", o.screenshot);

@@ -25,11 +25,62 @@ int glfwKeyFromName(const std::string& name) {
         }
         return n >= 1 && n <= 12 ? GLFW_KEY_F1 + n - 1 : -1;
     }
-    if (name == "Escape") return GLFW_KEY_ESCAPE;
-    if (name == "Enter") return GLFW_KEY_ENTER;
-    if (name == "Space") return GLFW_KEY_SPACE;
+    static const std::pair<const char*, int> named[] = {
+        {"Escape", GLFW_KEY_ESCAPE}, {"Enter", GLFW_KEY_ENTER},         {"Space", GLFW_KEY_SPACE},
+        {"Tab", GLFW_KEY_TAB},       {"Backspace", GLFW_KEY_BACKSPACE}, {"Delete", GLFW_KEY_DELETE},
+        {"Home", GLFW_KEY_HOME},     {"End", GLFW_KEY_END},             {"Left", GLFW_KEY_LEFT},
+        {"Right", GLFW_KEY_RIGHT},   {"Up", GLFW_KEY_UP},               {"Down", GLFW_KEY_DOWN},
+        {"PageUp", GLFW_KEY_PAGE_UP}, {"PageDown", GLFW_KEY_PAGE_DOWN}};
+    for (const auto& [n, k] : named)
+        if (name == n) return k;
     return -1;
 }
+
+ScriptedKey scriptedKeyForChar(char32_t c) {
+    if (c >= 'a' && c <= 'z') return {GLFW_KEY_A + static_cast<int>(c - 'a'), 0};
+    if (c >= 'A' && c <= 'Z') return {GLFW_KEY_A + static_cast<int>(c - 'A'), GLFW_MOD_SHIFT};
+    if (c >= '0' && c <= '9') return {GLFW_KEY_0 + static_cast<int>(c - '0'), 0};
+    static const std::pair<char32_t, ScriptedKey> keys[] = {
+        {' ', {GLFW_KEY_SPACE, 0}},  {'.', {GLFW_KEY_PERIOD, 0}},           {'/', {GLFW_KEY_SLASH, 0}},
+        {'-', {GLFW_KEY_MINUS, 0}},  {'_', {GLFW_KEY_MINUS, GLFW_MOD_SHIFT}}, {',', {GLFW_KEY_COMMA, 0}},
+        {'=', {GLFW_KEY_EQUAL, 0}},  {'+', {GLFW_KEY_EQUAL, GLFW_MOD_SHIFT}}, {':', {GLFW_KEY_SEMICOLON, GLFW_MOD_SHIFT}}};
+    for (const auto& [ch, k] : keys)
+        if (ch == c) return k;
+    return {};
+}
+
+namespace {
+
+// UTF-8 to code points; a malformed byte stands for itself.
+std::u32string decodeUtf8(const std::string& s) {
+    std::u32string out;
+    for (size_t i = 0; i < s.size();) {
+        const auto b = static_cast<unsigned char>(s[i]);
+        const int extra = b >= 0xF0 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : 0;
+        char32_t c = extra ? (b & (0x3F >> extra)) : b;
+        bool ok = i + extra < s.size();
+        for (int k = 1; ok && k <= extra; ++k) {
+            const auto n = static_cast<unsigned char>(s[i + k]);
+            ok = (n & 0xC0) == 0x80;
+            c = (c << 6) | (n & 0x3F);
+        }
+        if (!ok) c = b;
+        out.push_back(c);
+        i += ok ? extra + 1 : 1;
+    }
+    return out;
+}
+
+// The rest of the line after the action word and one space.
+std::string restOfLine(std::istringstream& words) {
+    std::string rest;
+    std::getline(words, rest);
+    if (!rest.empty() && rest[0] == ' ') rest.erase(0, 1);
+    while (!rest.empty() && (rest.back() == '\r' || rest.back() == '\n')) rest.pop_back();
+    return rest;
+}
+
+}  // namespace
 
 ScriptedInput ScriptedInput::load(const std::string& path) {
     return parse(readWholeFile(path, "events file not found", "cannot read events file"), path);
@@ -97,9 +148,28 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
         } else if (what == "key") {
             std::string name;
             if (!(words >> name)) throw bad("key takes a key name");
+            int mods = 0;
+            for (size_t plus; (plus = name.find('+')) != std::string::npos && plus + 1 < name.size();) {
+                const std::string mod = name.substr(0, plus);
+                if (mod == "ctrl") mods |= GLFW_MOD_CONTROL;
+                else if (mod == "shift") mods |= GLFW_MOD_SHIFT;
+                else if (mod == "alt") mods |= GLFW_MOD_ALT;
+                else if (mod == "super") mods |= GLFW_MOD_SUPER;
+                else throw bad("unknown modifier '" + mod + "' (ctrl, shift, alt, super)");
+                name.erase(0, plus + 1);
+            }
             const int key = glfwKeyFromName(name);
-            if (key < 0) throw bad("unknown key '" + name + "' (a-z, 0-9, F1-F12, Escape, Enter, Space)");
-            in.keys.push_back(key);
+            if (key < 0)
+                throw bad("unknown key '" + name +
+                          "' (a-z, 0-9, F1-F12, Escape, Enter, Space, Tab, Backspace, Delete, Home, End, arrows, PageUp, PageDown)");
+            in.keys.emplace_back(key, mods);
+        } else if (what == "type" || what == "drop") {
+            const std::string rest = restOfLine(words);
+            if (rest.empty()) throw bad(what + (what == "type" ? " takes the text to type" : " takes a file path"));
+            if (what == "type") in.text = decodeUtf8(rest);
+            else in.drops.push_back(rest);
+            add(frame, in);
+            continue;
         } else if (what == "resize") {
             int w = 0, h = 0;
             if (!(words >> w >> h) || w < 64 || h < 64 || w > 16384 || h > 16384)
@@ -110,7 +180,7 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
             if (!(words >> state) || (state != "down" && state != "up")) throw bad("ctrl takes down or up");
             in.ctrl = state == "down";
         } else {
-            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, resize, ctrl)");
+            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, type, drop, resize, ctrl)");
         }
         std::string extra;
         if (words >> extra) throw bad("unexpected '" + extra + "'");
@@ -129,6 +199,8 @@ ScriptedFrameInput ScriptedInput::at(int frame) const {
         if (e.input.leftDown) out.leftDown = e.input.leftDown;
         out.wheel += e.input.wheel;
         out.keys.insert(out.keys.end(), e.input.keys.begin(), e.input.keys.end());
+        out.text += e.input.text;
+        out.drops.insert(out.drops.end(), e.input.drops.begin(), e.input.drops.end());
         if (e.input.resize) out.resize = e.input.resize;
         if (e.input.ctrl) out.ctrl = e.input.ctrl;
     }

@@ -148,6 +148,16 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("one image pixel per screen pixel");
     ImGui::SameLine();
     ImGui::TextDisabled("x%.1f", view.zoom);
+    // The shown output at its own resolution (F12 saves the whole window).
+    sameLineIfFits(ImGui::CalcTextSize("save EXR save PNG").x + 4 * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::SmallButton("save EXR")) view.saveRequest = "exr";
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s's raw values at its own resolution to an OpenEXR file in the export folder", view.output.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("save PNG")) view.saveRequest = "png";
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s as shown (channel, mapping, range) at its own resolution to a PNG in the export folder",
+                          view.output.c_str());
     return changed;
 }
 

@@ -49,7 +49,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                 const bool selected = state.viewport.output == o.decl.name && state.viewport.mode == DisplayMode::Deferred;
                 ImGui::Indent(8.0f);
                 if (ImGui::Selectable(o.decl.name.c_str(), selected, ImGuiSelectableFlags_AllowItemOverlap)) {
-                    state.viewport.output = o.decl.name;
+                    state.viewport.show(o.decl.name);
                     state.viewport.mode = DisplayMode::Deferred;
                 }
                 if (ImGui::IsItemHovered())
@@ -57,7 +57,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                 ImGui::Unindent(8.0f);
                 ImGui::TableNextColumn();
                 if (ImGui::SmallButton("side")) {
-                    state.side.output = o.decl.name;
+                    state.side.show(o.decl.name);
                     state.panels.sideView = true;
                 }
                 ImGui::TableNextColumn();
@@ -93,7 +93,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
         ImGui::Text("viewport: %s", shown->decl.name.c_str());
         ImGui::TextDisabled("%s", shown->decl.description.c_str());
         wrappedColored(kDimColor, "its display controls (channel, mapping, range, zoom, histogram) are above the image");
-        if (ImGui::SmallButton("show final image")) state.viewport.output = "final";
+        if (ImGui::SmallButton("show final image")) state.viewport.show("final");
     }
     ImGui::End();
 }
@@ -106,7 +106,7 @@ void SideViewPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(200);
     if (ImGui::BeginCombo("output", state.side.output.c_str())) {
         for (const auto& o : session.pipeline().outputs().all())
-            if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == state.side.output)) state.side.output = o.decl.name;
+            if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == state.side.output)) state.side.show(o.decl.name);
         ImGui::EndCombo();
     }
     const PublishedOutput* o = session.pipeline().outputs().find(state.side.output);

@@ -87,10 +87,22 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
             ImGui::TextColored(kErrorColor, "(modified since)");
         }
     }
+    // Saving first: the lists below can be long, the name field stays in reach.
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("save as").x - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
+    const bool enter = inputTextEnter("##name", "preset name", saveName, sizeof(saveName));
+    recordItemRect(state.itemRects, "presets.name");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
+    ImGui::SameLine();
+    std::error_code ec;
+    if ((ImGui::Button("save as") || enter) && saveName[0]) {
+        fs::create_directories(state.presetsDir, ec);
+        savePreset(state, session, (fs::path(state.presetsDir) / (std::string(saveName) + ".json")).string(), saveName);
+    }
     ImGui::Separator();
-    ImGui::TextDisabled("built in");
+    ImGui::TextDisabled("built in (a click loads)");
     for (const auto& p : builtinPresets()) {
         if (ImGui::Selectable(p.name.c_str())) applyPreset(state, session, p);
+        recordItemRect(state.itemRects, "presets.builtin." + p.name);
         if (ImGui::IsItemHovered()) {
             std::string tip = p.description.empty() ? "" : p.description + "\n\n";
             for (const auto& [k, v] : p.knobs) tip += k + " = " + v + "\n";
@@ -99,7 +111,6 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     }
     ImGui::Separator();
     ImGui::TextDisabled("folder %s", state.presetsDir.c_str());
-    std::error_code ec;
     std::vector<fs::path> files;
     if (fs::is_directory(state.presetsDir, ec))
         for (const auto& e : fs::directory_iterator(state.presetsDir, ec))
@@ -112,15 +123,6 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
         ImGui::SameLine(ImGui::GetContentRegionAvail().x - 60);
         if (ImGui::SmallButton("overwrite")) savePreset(state, session, f.string(), f.stem().string());
         ImGui::PopID();
-    }
-    ImGui::Separator();
-    ImGui::SetNextItemWidth(-70);
-    const bool enter = inputTextEnter("##name", "preset name", saveName, sizeof(saveName));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
-    ImGui::SameLine();
-    if ((ImGui::Button("save as") || enter) && saveName[0]) {
-        fs::create_directories(state.presetsDir, ec);
-        savePreset(state, session, (fs::path(state.presetsDir) / (std::string(saveName) + ".json")).string(), saveName);
     }
     ImGui::End();
 }

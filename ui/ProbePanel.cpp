@@ -11,8 +11,9 @@
 namespace dw::ui {
 
 namespace {
-void row(const char* label, const char* fmt, ...) IM_FMTARGS(2);
-void row(const char* label, const char* fmt, ...) {
+// A label and value row; the pair also goes to `copy` (the panel's text for the clipboard).
+void row(std::string& copy, const char* label, const char* fmt, ...) IM_FMTARGS(3);
+void row(std::string& copy, const char* label, const char* fmt, ...) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     clippedText(label, ImGui::GetContentRegionAvail().x);
@@ -23,6 +24,9 @@ void row(const char* label, const char* fmt, ...) {
     std::vsnprintf(text, sizeof(text), fmt, args);
     va_end(args);
     clippedText(text, ImGui::GetContentRegionAvail().x);
+    std::string l(label);
+    l.erase(0, l.find_first_not_of(' '));
+    copy += l + "\t" + text + "\n";
 }
 
 // Label and value columns: the label as wide as the longest label needs.
@@ -46,6 +50,15 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         return;
     }
     ImGui::Text("pixel (%d, %d)%s", p.result.x, p.result.y, p.pinned ? "  [pinned, Esc to release]" : "");
+    ImGui::SameLine();
+    // Every value below as tab-separated lines (this frame's, drawn last frame).
+    if (ImGui::SmallButton("copy")) {
+        ImGui::SetClipboardText(copyText.c_str());
+        state.log.done("probe values of pixel (" + std::to_string(p.result.x) + ", " + std::to_string(p.result.y) +
+                           ") copied to the clipboard",
+                       state.time);
+    }
+    std::string copy = "pixel\t" + std::to_string(p.result.x) + " " + std::to_string(p.result.y) + "\n";
     // Magnifier of the viewport image around the pixel (nearest filtering).
     const ShownImage& img = state.viewportImage;
     if (img.texture && img.width > 0) {
@@ -66,17 +79,17 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
     const SurfaceSample& s = p.result.surface;
     if (beginRows("surface", ImGui::CalcTextSize("position (world)").x + 8.0f)) {
         if (s.background) {
-            row("surface", "background (no geometry)");
+            row(copy, "surface", "background (no geometry)");
         } else {
-            row("depth", "%.7f (linear %.4f)", s.depth, s.linearDepth);
-            row("position (view)", "%.4f %.4f %.4f", s.viewPosition.x, s.viewPosition.y, s.viewPosition.z);
-            row("position (world)", "%.4f %.4f %.4f", s.worldPosition.x, s.worldPosition.y, s.worldPosition.z);
-            row("normal (view)", "%.4f %.4f %.4f", s.viewNormal.x, s.viewNormal.y, s.viewNormal.z);
-            row("albedo", "%.4f %.4f %.4f", s.albedo.r, s.albedo.g, s.albedo.b);
-            row("specular", "%.4f %.4f %.4f  n = %.1f", s.specular.r, s.specular.g, s.specular.b, s.exponent);
-            row("emissive", "%.4f %.4f %.4f", s.emissive.r, s.emissive.g, s.emissive.b);
+            row(copy, "depth", "%.7f (linear %.4f)", s.depth, s.linearDepth);
+            row(copy, "position (view)", "%.4f %.4f %.4f", s.viewPosition.x, s.viewPosition.y, s.viewPosition.z);
+            row(copy, "position (world)", "%.4f %.4f %.4f", s.worldPosition.x, s.worldPosition.y, s.worldPosition.z);
+            row(copy, "normal (view)", "%.4f %.4f %.4f", s.viewNormal.x, s.viewNormal.y, s.viewNormal.z);
+            row(copy, "albedo", "%.4f %.4f %.4f", s.albedo.r, s.albedo.g, s.albedo.b);
+            row(copy, "specular", "%.4f %.4f %.4f  n = %.1f", s.specular.r, s.specular.g, s.specular.b, s.exponent);
+            row(copy, "emissive", "%.4f %.4f %.4f", s.emissive.r, s.emissive.g, s.emissive.b);
         }
-        row("L-buffer", "%.5g %.5g %.5g  (L = %.5g)", s.radiance.r, s.radiance.g, s.radiance.b, s.luminance);
+        row(copy, "L-buffer", "%.5g %.5g %.5g  (L = %.5g)", s.radiance.r, s.radiance.g, s.radiance.b, s.luminance);
         ImGui::EndTable();
     }
     // The lights a volume strategy evaluates here (their volumes contain the
@@ -86,6 +99,7 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         std::snprintf(head, sizeof(head), "lights at this pixel: %zu (+%d directional)###lights", p.lights.size(), p.directionalLights);
         if (ImGui::CollapsingHeader(head, ImGuiTreeNodeFlags_DefaultOpen))
             for (const auto& line : p.lightLines) clippedText(line, ImGui::GetContentRegionAvail().x);
+        for (const auto& line : p.lightLines) copy += "light\t" + line + "\n";
     }
     float labelWidth = ImGui::CalcTextSize("sample 00").x;
     for (const auto& v : p.result.values) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(v.output.c_str()).x);
@@ -93,17 +107,17 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
     if (ImGui::CollapsingHeader("every output at this pixel", ImGuiTreeNodeFlags_DefaultOpen) && beginRows("raw", labelWidth)) {
         for (const auto& v : p.result.values) {
             switch (v.channels) {
-                case 1: row(v.output.c_str(), "%.6g", v.raw.x); break;
-                case 2: row(v.output.c_str(), "%.6g %.6g", v.raw.x, v.raw.y); break;
-                case 3: row(v.output.c_str(), "%.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z); break;
-                default: row(v.output.c_str(), "%.5g %.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z, v.raw.w); break;
+                case 1: row(copy, v.output.c_str(), "%.6g", v.raw.x); break;
+                case 2: row(copy, v.output.c_str(), "%.6g %.6g", v.raw.x, v.raw.y); break;
+                case 3: row(copy, v.output.c_str(), "%.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z); break;
+                default: row(copy, v.output.c_str(), "%.5g %.5g %.5g %.5g", v.raw.x, v.raw.y, v.raw.z, v.raw.w); break;
             }
             // A multisample output: every sample under the mean above.
             for (size_t i = 0; i < v.samples.size(); ++i) {
                 const std::string label = "  sample " + std::to_string(i);
                 const glm::vec4& c = v.samples[i];
-                if (v.channels == 1) row(label.c_str(), "%.6g", c.x);
-                else row(label.c_str(), "%.5g %.5g %.5g %.5g", c.x, c.y, c.z, c.w);
+                if (v.channels == 1) row(copy, label.c_str(), "%.6g", c.x);
+                else row(copy, label.c_str(), "%.5g %.5g %.5g %.5g", c.x, c.y, c.z, c.w);
             }
             // A per-pixel buffer element beyond its first four words.
             if (v.words.size() > 4) {
@@ -113,11 +127,12 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
                     std::snprintf(b, sizeof(b), "%08x ", w);
                     hex += b;
                 }
-                row("  words", "%s", hex.c_str());
+                row(copy, "  words", "%s", hex.c_str());
             }
         }
         ImGui::EndTable();
     }
+    copyText = std::move(copy);
     ImGui::End();
 }
 

@@ -3,6 +3,8 @@
 // (normal, reconstructed position, depth, albedo, specular), the L-buffer,
 // and the raw value of every other output produced this frame; with a
 // magnifier around the pixel.
+#include <string>
+
 #include "renderer/RenderSession.h"
 #include "ui/UiState.h"
 
@@ -10,6 +12,8 @@ namespace dw::ui {
 
 struct ProbePanel {
     int zoomPixels = 15;  // magnifier width in image pixels
+    // Every value the panel shows, as "label<TAB>value" lines: what *copy* puts on the clipboard.
+    std::string copyText;
     void draw(const char* title, bool* open, UiState& state);
 };
 

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "renderer/Error.h"
@@ -12,6 +14,22 @@ namespace dw::ui {
 
 namespace fs = std::filesystem;
 
+const std::vector<std::string> kSceneExtensions = {".json", ".gltf", ".glb"};
+
+namespace {
+
+void rememberRecent(UiState& state, const std::string& spec) {
+    std::error_code ec;
+    if (!fs::is_regular_file(spec, ec)) return;  // a built-in scene's name
+    const std::string path = fs::absolute(spec, ec).lexically_normal().string();
+    auto& r = state.recentScenes;
+    r.erase(std::remove(r.begin(), r.end(), path), r.end());
+    r.push_front(path);
+    while (r.size() > UiState::kRecentScenes) r.pop_back();
+}
+
+}  // namespace
+
 bool openScene(UiState& state, RenderSession& session, const std::string& spec) {
     try {
         if (state.animator.running()) state.animator.stop(session.mutableScene());
@@ -20,10 +38,11 @@ bool openScene(UiState& state, RenderSession& session, const std::string& spec) 
         state.probe.pinned = false;
         state.log.info("opened scene " + session.scene().name + " (" + spec + ")", state.time);
         state.log.succeeded("open scene");
+        rememberRecent(state, spec);
         for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, state.time);
         return true;
     } catch (const std::exception& e) {
-        state.log.error(std::string("cannot open scene: ") + e.what(), state.time, "open scene");
+        state.log.error("cannot open scene " + spec + ": " + e.what(), state.time, "open scene");
         return false;
     }
 }
@@ -40,6 +59,12 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
     std::snprintf(facts, sizeof(facts), "%zu triangles, %zu draws, %zu lights, %zu materials, %zu textures",
                   scene.triangleCount(), scene.instances.size(), scene.lights.size(), scene.materials.size(), scene.images.size());
     wrappedColored(kDimColor, facts);
+    const bool focusPath = state.requestOpenScene;
+    if (focusPath) {
+        ImGui::SetWindowFocus();
+        ImGui::SetNextItemOpen(true, ImGuiCond_Always);
+        state.requestOpenScene = false;
+    }
     if (ImGui::CollapsingHeader("open", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const auto& b : builtinScenes()) {
             if (ImGui::Button(b.name.c_str())) openScene(state, session, b.name);
@@ -56,10 +81,38 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
             }
             ImGui::NewLine();
         }
-        ImGui::SetNextItemWidth(-60);
-        const bool enter = inputTextEnter("##path", ".json / .gltf / .glb path", path, sizeof(path));
+        // The field has the panel's whole width (paths are long), the buttons the next line.
+        ImGui::SetNextItemWidth(-1.0f);
+        if (focusPath) ImGui::SetKeyboardFocusHere();
+        // Focused by Ctrl+O, the old path is selected, so typing replaces it.
+        const bool enter = inputTextEnter("##path", ".json / .gltf / .glb path (Ctrl+O)", path, sizeof(path),
+                                          ImGuiInputTextFlags_AutoSelectAll);
+        recordItemRect(state.itemRects, "scene.path");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("a scene file's path (relative to %s); Enter opens it. Files dropped on the window open too.",
+                              fs::current_path().c_str());
+        const bool openClicked = ImGui::Button("open##path");  // not "open": the header above has that ID
+        recordItemRect(state.itemRects, "scene.open");
+        if (openClicked || enter) {
+            if (path[0]) openScene(state, session, path);
+            else state.log.error("cannot open scene: type a file's path first (or use browse)", state.time, "open scene");
+        }
         ImGui::SameLine();
-        if ((ImGui::Button("open") || enter) && path[0]) openScene(state, session, path);
+        if (ImGui::Button("browse")) browser.open(path);
+        if (auto picked = browser.draw("Open scene file", kSceneExtensions)) {
+            std::snprintf(path, sizeof(path), "%s", picked->c_str());
+            openScene(state, session, *picked);
+        }
+        if (!state.recentScenes.empty() && ImGui::TreeNodeEx("recent", ImGuiTreeNodeFlags_DefaultOpen)) {
+            for (const std::string& r : std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end())) {
+                if (ImGui::Selectable(fs::path(r).filename().c_str())) {
+                    std::snprintf(path, sizeof(path), "%s", r.c_str());
+                    openScene(state, session, r);
+                }
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.c_str());
+            }
+            ImGui::TreePop();
+        }
     }
     if (ImGui::CollapsingHeader("global terms", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::ColorEdit3("ambient", &scene.ambient.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);

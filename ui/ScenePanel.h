@@ -3,18 +3,23 @@
 // failure keeps the current scene and says why), ambient and background, and
 // the camera.
 #include "renderer/RenderSession.h"
+#include "ui/FileBrowser.h"
 #include "ui/UiState.h"
 
 namespace dw::ui {
 
 struct ScenePanel {
-    char path[512] = {};
+    char path[1024] = {};
+    FileBrowser browser;
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
 };
 
 // Loads a scene into the session with knobs and camera as at start-up
 // (state.run: defaults, the scene's settings, the start-up preset, --set);
-// on failure logs the error and keeps the old scene and knobs.
+// on failure logs the error and keeps the old scene and knobs. A file
+// opened goes to the front of state.recentScenes.
 bool openScene(UiState& state, RenderSession& session, const std::string& spec);
+// The scene files the Scene panel and the file browser offer.
+extern const std::vector<std::string> kSceneExtensions;
 
 }  // namespace dw::ui

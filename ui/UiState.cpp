@@ -44,6 +44,31 @@ const Message* MessageLog::toast(double now) const {
 
 namespace dw::ui {
 
+StartResolution startResolution(const std::string& option, bool cpuRasterizer, bool scripted) {
+    StartResolution r;
+    if (option == "1/2") r.scale = ResolutionScale::Half;
+    else if (option == "1/4") r.scale = ResolutionScale::Quarter;
+    else if (option == "auto") r.scale = ResolutionScale::Auto;
+    else if (option.empty() && cpuRasterizer && !scripted) {
+        r.scale = ResolutionScale::Auto;
+        r.autoScale = 0.25f;
+        r.frameTargetMs = 150.0f;
+        r.softwareDefault = true;
+    }
+    return r;
+}
+
+void ImageView::show(const std::string& name) {
+    if (name == output) return;
+    framingByOutput_[output] = {zoom, center, histogram};
+    output = name;
+    const auto it = framingByOutput_.find(name);
+    const Framing f = it == framingByOutput_.end() ? Framing{} : it->second;
+    zoom = f.zoom;
+    center = f.center;
+    histogram = f.histogram;
+}
+
 ImagePlacement placeImage(glm::vec2 imageSize, glm::vec2 boxMin, glm::vec2 boxSize, const ImageView& view) {
     ImagePlacement p;
     if (imageSize.x <= 0.0f || imageSize.y <= 0.0f) return p;

@@ -98,10 +98,11 @@ struct ShownImage {
 };
 
 // One image view (the viewport, the side view), as a texture viewer:
-// display settings remembered per output (R + heat map chosen for the
-// L-buffer does not paint the AO buffer red), zoom and pan, and whether the
-// histogram of the shown buffer is wanted.
+// display settings, zoom, pan and the histogram remembered per output (R +
+// heat map and a 16x zoom chosen for the L-buffer do not carry over to the
+// AO buffer, and coming back to the L-buffer finds them again).
 struct ImageView {
+    // The output shown; change it with show(), which keeps each output's view.
     std::string output;
     std::map<std::string, BufferViewSettings> settingsByOutput;
     BufferViewSettings& settings() { return settingsByOutput[output]; }
@@ -113,6 +114,21 @@ struct ImageView {
     float fitScale = 1.0f;      // screen pixels per image pixel at zoom 1 (set when drawn)
     glm::vec2 center{0.5f};     // the image point at the view's centre (u right, v down, 0..1)
     bool histogram = false;
+    // "exr" or "png" when *save* was chosen: the app writes the shown output
+    // at its own resolution (EXR raw values, PNG as shown) and clears it.
+    std::string saveRequest;
+
+    // Shows `name`: the current output's zoom, pan and histogram are kept,
+    // and `name`'s own (or the defaults: fit, no histogram) come back.
+    void show(const std::string& name);
+
+private:
+    struct Framing {
+        float zoom = 1.0f;
+        glm::vec2 center{0.5f};
+        bool histogram = false;
+    };
+    std::map<std::string, Framing> framingByOutput_;
 };
 
 // Where an image of `imageSize` pixels lies on screen when shown in a box at
@@ -146,6 +162,10 @@ struct ViewportView : ImageView {
     ResolutionScale resolution = ResolutionScale::Full;
     float frameTargetMs = 100.0f;  // Auto: the GPU frame time to stay under
     float autoScale = 1.0f;        // Auto: the scale it settled on (1/8 .. 1)
+    // The renderer's name when it rasterises on the CPU and the window
+    // started at a reduced scale because of it (the toolbar says so, with
+    // full resolution one click away); empty otherwise.
+    std::string softwareStart;
     float scale() const {
         switch (resolution) {
             case ResolutionScale::Full: return 1.0f;
@@ -162,6 +182,20 @@ struct ViewportView : ImageView {
 // between 1/8 and 1. Steps are 0.8x and 1.25x, so it settles, not oscillates
 // (under half the target to step up, which 1.25^2 = 1.56x more pixels keeps under).
 float nextAutoScale(float scale, float frameMs, float targetMs);
+
+// The resolution the window starts at: `option` (--resolution) when given;
+// else on a CPU rasteriser (llvmpipe: a frame of the default scene at the
+// default window size takes 1.5 s) auto scaling from 1/4 with a 150 ms
+// target, so a camera step shows within about 0.2 s; else full. Scripted
+// runs (tests, screenshots) keep full unless told, so their images do not
+// depend on the machine's speed.
+struct StartResolution {
+    ResolutionScale scale = ResolutionScale::Full;
+    float autoScale = 1.0f;
+    float frameTargetMs = 100.0f;
+    bool softwareDefault = false;  // chosen because of the CPU rasteriser
+};
+StartResolution startResolution(const std::string& option, bool cpuRasterizer, bool scripted);
 
 struct SideView : ImageView {
     SideView() { output = "gbuffer.normal"; }
@@ -203,6 +237,11 @@ struct UiState {
     // Where screenshots and timing CSVs go (absolute; created when first used).
     std::string exportDir;
 
+    // Where a few widgets were drawn last frame (screen pixels: x, y, w, h),
+    // by name ("scene.path", "presets.name", ...): --layout-out reports them,
+    // so a test can click a field as a person would.
+    std::map<std::string, glm::vec4> itemRects;
+
     // Filled by the app each frame for the panels to read.
     FrameReport report;
     ShownImage viewportImage, sideImage;
@@ -222,10 +261,15 @@ struct UiState {
     std::uint64_t frame = 0;
     double time = 0.0;
 
-    // Keys pressed since the last frame (GLFW key, modifier bits), in order.
-    // Dear ImGui 1.86 has no input queue: a tap shorter than a frame (common
-    // at llvmpipe frame rates) never shows as down, so shortcuts read these.
+    // Keys pressed this frame (GLFW key, modifier bits), in order, as the
+    // input queue handed them to ImGui (ui/InputQueue): shortcuts read these,
+    // so a tap shorter than a frame still counts.
     std::vector<std::pair<int, int>> keyPresses;
+    // Files dropped on the window this frame (opened as scenes).
+    std::vector<std::string> droppedFiles;
+    // Scene files opened, newest first (kept in layout.json between sessions).
+    static constexpr size_t kRecentScenes = 10;
+    std::deque<std::string> recentScenes;
 
     // Requests the app carries out after the UI is drawn.
     bool requestScreenshot = false;
@@ -236,6 +280,8 @@ struct UiState {
     std::string renderdocWhy;
     std::vector<std::string> renderdocCaptures;
     bool requestReloadShaders = false;
+    // File > Open scene (Ctrl+O): the Scene panel opens with its path field focused.
+    bool requestOpenScene = false;
     bool requestQuit = false;
     std::string requestTimingsCsv;
 };

@@ -52,7 +52,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(170);
     if (ImGui::BeginCombo("##output", v.output.c_str())) {
         for (const auto& o : session.pipeline().outputs().all())
-            if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == v.output)) v.output = o.decl.name;
+            if (ImGui::Selectable(o.decl.name.c_str(), o.decl.name == v.output)) v.show(o.decl.name);
         ImGui::EndCombo();
     }
     ImGui::EndDisabled();
@@ -85,6 +85,16 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::SameLine();
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
         ImGui::DragFloat("##target", &v.frameTargetMs, 5.0f, 10.0f, 5000.0f, "%.0f ms");
+    }
+    if (!v.softwareStart.empty() && v.resolution == ResolutionScale::Auto) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "software GL: reduced");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s rasterises on the CPU: a full-resolution frame takes seconds, so the viewport\n"
+                              "renders at a scale that keeps a frame under %.0f ms. 'full' renders every pixel.",
+                              v.softwareStart.c_str(), static_cast<double>(v.frameTargetMs));
+        ImGui::SameLine();
+        if (ImGui::SmallButton("full")) v.resolution = ResolutionScale::Full;
     }
     ImGui::SameLine();
     ImGui::TextDisabled("| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
@@ -186,12 +196,18 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
 
 void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;
+    // A key with exactly these modifiers (Shift aside) was pressed this frame.
     auto pressed = [&](int key, int mods = 0) {
+        constexpr int kCommand = GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER;
         for (const auto& [k, m] : state.keyPresses)
-            if (k == key && (m & mods) == mods) return true;
+            if (k == key && (m & kCommand) == mods) return true;
         return false;
     };
+    // Ctrl shortcuts work while a text field is being typed in too.
+    if (pressed(GLFW_KEY_Q, GLFW_MOD_CONTROL)) state.requestQuit = true;
+    if (pressed(GLFW_KEY_O, GLFW_MOD_CONTROL)) state.requestOpenScene = true;
+    // Keys typed into a text field are the field's, not shortcuts.
+    if (io.WantTextInput) return;
     Camera& cam = session.camera();
     ViewportView& v = state.viewport;
     const bool flying = v.camera == CameraMode::Fly && ImGui::IsMouseDown(ImGuiMouseButton_Right);
@@ -229,7 +245,6 @@ void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
     if (pressed(GLFW_KEY_F11)) state.requestRenderDocCapture = true;
     if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
-    if (pressed(GLFW_KEY_Q, GLFW_MOD_CONTROL)) state.requestQuit = true;
 }
 
 const char* shortcutHelp() {
@@ -242,6 +257,7 @@ const char* shortcutHelp() {
            "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
            "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"
            "F12   screenshot of the window to PNG\n"
+           "Ctrl+O open a scene file (the Scene panel's path field; files dropped on the window open too)\n"
            "Ctrl+Q quit";
 }
 

@@ -36,10 +36,15 @@ bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra) {
                             ImGuiWindowFlags_NoSavedSettings | extra);
 }
 
-bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size) {
-    ImGui::InputTextWithHint(label, hint, buffer, size);
+bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size, int flags) {
+    ImGui::InputTextWithHint(label, hint, buffer, size, flags);
     return ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
                                           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+}
+
+void recordItemRect(std::map<std::string, glm::vec4>& rects, const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    rects[name] = glm::vec4(a.x, a.y, b.x - a.x, b.y - a.y);
 }
 
 void sameLineIfFits(float width) {

@@ -2,6 +2,8 @@
 // Small ImGui helpers shared by the panels.
 #include <imgui.h>
 
+#include <glm/glm.hpp>
+#include <map>
 #include <string>
 
 namespace dw::ui {
@@ -18,7 +20,9 @@ bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra = 0);
 // A text field whose buffer follows every keystroke (so a button beside it
 // sees what was typed; ImGuiInputTextFlags_EnterReturnsTrue would hold the
 // text back until Enter), returning true when Enter ends the edit.
-bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size);
+bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size, int flags = 0);
+// Records the last item's rectangle as state.itemRects[name].
+void recordItemRect(std::map<std::string, glm::vec4>& rects, const std::string& name);
 // SameLine when an item `width` px wide still fits on this line, else a new line.
 void sameLineIfFits(float width);
 // Text cut to `width` px with "..." and the whole text as a tooltip when cut.

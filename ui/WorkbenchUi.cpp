@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "ui/ScenePanel.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -32,7 +33,15 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
     if (!ImGui::BeginMainMenuBar()) return;
     PanelFlags& p = state.panels;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open scene...")) p.scene = true;
+        if (ImGui::MenuItem("Open scene...", "Ctrl+O")) {
+            p.scene = true;
+            state.requestOpenScene = true;
+        }
+        if (ImGui::BeginMenu("Open recent", !state.recentScenes.empty())) {
+            for (const std::string& r : std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end()))
+                if (ImGui::MenuItem(r.c_str())) openScene(state, session, r);
+            ImGui::EndMenu();
+        }
         if (ImGui::MenuItem("Presets...")) p.presets = true;
         if (ImGui::MenuItem("Screenshot", "F12")) state.requestScreenshot = true;
         ImGui::Separator();
@@ -70,6 +79,9 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         if (ImGui::MenuItem("Fly camera", "f", v.camera == CameraMode::Fly)) v.camera = CameraMode::Fly;
         ImGui::Separator();
         if (ImGui::MenuItem("Reload changed shaders", "F5")) state.requestReloadShaders = true;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("from %s (DW_SHADER_DIR=FOLDER picks another folder at start)", session.shaders().root().c_str());
+        ImGui::MenuItem(("shader folder: " + session.shaders().root().string()).c_str(), nullptr, false, false);
         if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
@@ -148,6 +160,10 @@ void WorkbenchUi::toast(const UiState& state) {
 
 void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
     handleShortcuts(state, session, dt);
+    if (state.requestOpenScene) state.panels.scene = true;
+    // A file dropped on the window opens as a scene (the last of several wins).
+    for (const std::string& f : state.droppedFiles) openScene(state, session, f);
+    state.droppedFiles.clear();
     menuBar(state, session);
     if (state.resetLayout) layout_.reset();
     state.resetLayout = false;

@@ -63,4 +63,10 @@ bool installDebugOutput(bool force) {
     return true;
 }
 
+bool isCpuRasterizer(const GlInfo& info) {
+    for (const char* name : {"llvmpipe", "softpipe", "SWR", "Software Rasterizer", "software rasterizer"})
+        if (info.renderer.find(name) != std::string::npos) return true;
+    return false;
+}
+
 }  // namespace dw::gl

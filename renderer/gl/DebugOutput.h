@@ -14,6 +14,11 @@ struct GlInfo {
     int timestampBits = 0;
 };
 
+// Whether the context rasterises on the CPU (Mesa's llvmpipe or softpipe,
+// OpenSWR, or a renderer that calls itself a software rasterizer): frames
+// there cost seconds at window sizes, and their time ratios are not a GPU's.
+bool isCpuRasterizer(const GlInfo& info);
+
 // Reads the context's capabilities; throws GlUnsupportedError naming what is
 // missing when the context is older than 4.5 core or lacks a needed feature.
 GlInfo requireGl45();

@@ -89,9 +89,9 @@ Scene straddleScene(int shadowed) {
     return s;
 }
 
-CommandResult runWorkbench(const std::string& args) {
+CommandResult runCommand(const std::string& command) {
     const std::filesystem::path errFile = tempDir() / "stderr.txt";
-    const std::string cmd = std::string(DW_WORKBENCH_BINARY) + " " + args + " 2>" + errFile.string();
+    const std::string cmd = "(" + command + ") 2>" + errFile.string();
     CommandResult r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -103,6 +103,8 @@ CommandResult runWorkbench(const std::string& args) {
     r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
     return r;
 }
+
+CommandResult runWorkbench(const std::string& args) { return runCommand(std::string(DW_WORKBENCH_BINARY) + " " + args); }
 
 namespace {
 std::unique_ptr<HeadlessGlContext>& context() {

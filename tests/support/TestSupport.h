@@ -47,6 +47,8 @@ struct CommandResult {
     std::string out, err;
 };
 CommandResult runWorkbench(const std::string& args);
+// Runs a shell command line the same way.
+CommandResult runCommand(const std::string& command);
 
 // A --dump-knobs file: knob name -> value text; the "# scene <source>" line
 // as key "#scene". Empty when the file does not exist.

@@ -1,0 +1,194 @@
+// The workbench's text fields, shortcuts and scene opening driven by input
+// events under Xvfb: scripted events (gui --events, which go through the same
+// input queue as the window's), and real X events from xdotool.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path writeFile(const std::string& name, const std::string& text) {
+    const fs::path p = test::tempDir() / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+nlohmann::json readJson(const fs::path& p) {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in);
+}
+
+// The window under Xvfb at 1024x640 for `frames` frames replaying `events`;
+// its --layout-out report (null when it failed).
+nlohmann::json runEvents(const std::string& name, int frames, const std::string& events, const std::string& extra = "") {
+    const fs::path ev = writeFile(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
+    const test::CommandResult r =
+        test::runCommand("xvfb-run -a -s '-screen 0 1100x700x24' " + std::string(DW_WORKBENCH_BINARY) +
+                         " --scene spheres --set ssao.enabled=false --size 1024x640 --frames " + std::to_string(frames) +
+                         " --events " + ev.string() + " --layout-out " + out.string() + " " + extra);
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    return r.code == 0 ? readJson(out) : nlohmann::json();
+}
+
+std::string validScene() { return (test::scenesDir() / "spotlights.json").string(); }
+
+fs::path brokenGltf() {
+    // Cut short in the middle of its JSON, as a failed download leaves it.
+    return writeFile("cut-short.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [{\"nodes\": [0");
+}
+
+}  // namespace
+
+TEST(GuiInput, CtrlOThenTypingAPathOverOldTextAndEnterOpensTheScene) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing (scripts/setup-deps.sh installs it)";
+    ASSERT_TRUE(fs::exists(validScene()));
+    // Ctrl+O focuses the path field; old text typed there (its 'a's are no
+    // shortcut: the axes stay off), Ctrl+A selects it, the path replaces it,
+    // Enter opens. Each key is pressed and released within one frame.
+    const nlohmann::json r = runEvents("open-typed", 16,
+                                       "1 key ctrl+o\n3 type a wrong start\n5 key ctrl+a\n6 type " + validScene() +
+                                           "\n8 key Enter\n");
+    ASSERT_FALSE(r.is_null());
+    EXPECT_EQ(r["scene"]["source"].get<std::string>(), validScene());
+    EXPECT_EQ(r["errors"].size(), 0u) << r["errors"].dump();
+    EXPECT_FALSE(r["axes"].get<bool>()) << "a key typed into the path field toggled the axes";
+    ASSERT_GE(r["recent_scenes"].size(), 1u);
+    EXPECT_EQ(r["recent_scenes"][0].get<std::string>(), fs::absolute(validScene()).lexically_normal().string());
+}
+
+TEST(GuiInput, HomeAndEndEditThePathAndTheOpenButtonOpensIt) {
+    const fs::path dir = fs::path(validScene()).parent_path();
+    // The field gets "spotlights.json", Home, the folder in front, End, then a click on *open*.
+    const nlohmann::json first = runEvents("open-button-where", 2, "");
+    ASSERT_FALSE(first.is_null());
+    const auto open = first["items"]["scene.open"];
+    ASSERT_EQ(open.size(), 4u) << first["items"].dump();
+    const float x = open[0].get<float>() + open[2].get<float>() * 0.5f, y = open[1].get<float>() + open[3].get<float>() * 0.5f;
+    const nlohmann::json r = runEvents("open-home-end", 16,
+                                       "1 key ctrl+o\n3 type spotlights\n4 key Home\n5 type " + dir.string() +
+                                           "/\n7 key End\n8 type .json\n10 click " + std::to_string(x) + " " +
+                                           std::to_string(y) + "\n");
+    ASSERT_FALSE(r.is_null());
+    EXPECT_EQ(r["scene"]["source"].get<std::string>(), validScene());
+}
+
+TEST(GuiInput, ABrokenSceneFileShowsWhyInTheBannerAndKeepsTheScene) {
+    const fs::path broken = brokenGltf();
+    const nlohmann::json r = runEvents("open-broken", 12, "1 key ctrl+o\n3 type " + broken.string() + "\n5 key Enter\n");
+    ASSERT_FALSE(r.is_null());
+    EXPECT_EQ(r["scene"]["name"].get<std::string>(), "spheres") << "the scene that failed replaced the one shown";
+    const std::string banner = r["banner"].get<std::string>();
+    EXPECT_NE(banner.find(broken.string()), std::string::npos) << banner;
+    EXPECT_NE(banner.find("cannot open scene"), std::string::npos) << banner;
+    // A reason, not only the name: the JSON parser's words (where it ended).
+    EXPECT_GT(banner.size(), broken.string().size() + 30) << banner;
+    // An empty field says what to do instead of doing nothing.
+    const nlohmann::json empty = runEvents("open-empty", 8, "1 key ctrl+o\n3 key Enter\n");
+    ASSERT_FALSE(empty.is_null());
+    EXPECT_NE(empty["banner"].get<std::string>().find("type a file's path"), std::string::npos) << empty["banner"];
+}
+
+TEST(GuiInput, AFileDroppedOnTheWindowOpensAsTheScene) {
+    const nlohmann::json r = runEvents("drop", 8, "2 drop " + validScene() + "\n");
+    ASSERT_FALSE(r.is_null());
+    EXPECT_EQ(r["scene"]["source"].get<std::string>(), validScene());
+}
+
+TEST(GuiInput, EnterInThePresetNameFieldSavesAndOneClickLoadsABuiltInPreset) {
+    const fs::path presets = test::tempDir() / "typed-presets";
+    fs::remove_all(presets);
+    const nlohmann::json where = runEvents("preset-where", 2, "", "--presets " + presets.string());
+    ASSERT_FALSE(where.is_null());
+    const auto name = where["items"]["presets.name"];
+    const auto low = where["items"]["presets.builtin.Low"];
+    ASSERT_EQ(name.size(), 4u) << where["items"].dump();
+    ASSERT_EQ(low.size(), 4u) << where["items"].dump();
+    auto centre = [](const nlohmann::json& r) {
+        return std::to_string(r[0].get<float>() + r[2].get<float>() * 0.5f) + " " +
+               std::to_string(r[1].get<float>() + r[3].get<float>() * 0.5f);
+    };
+    const nlohmann::json r = runEvents("preset-typed", 14,
+                                       "1 click " + centre(low) + "\n4 click " + centre(name) + "\n6 key ctrl+a\n7 type my-ssao\n9 key Enter\n",
+                                       "--presets " + presets.string());
+    ASSERT_FALSE(r.is_null());
+    EXPECT_TRUE(fs::exists(presets / "my-ssao.json")) << "Enter in the name field did not save";
+    EXPECT_EQ(r["active_preset"].get<std::string>(), "my-ssao");
+    EXPECT_EQ(r["errors"].size(), 0u) << r["errors"].dump();
+    // The click on "Low" loaded it (the save after it named the active preset anew).
+    std::ifstream saved(presets / "my-ssao.json");
+    const nlohmann::json preset = nlohmann::json::parse(saved);
+    EXPECT_EQ(preset["knobs"]["ssao.resolution"].get<std::string>(), "quarter") << preset.dump();
+}
+
+// Real key events from the X server (xdotool through XTEST), the way a
+// person's keyboard reaches the window: Ctrl+O, a path typed over old text
+// after Ctrl+A, Return; then a broken file; then Ctrl+Q. The window writes
+// its report at exit.
+TEST(GuiInput, RealKeyEventsFromXdotoolOpenATypedPathAndReportABrokenOne) {
+    ASSERT_EQ(test::runCommand("command -v xdotool && command -v Xvfb").code, 0)
+        << "xdotool or Xvfb is missing (scripts/setup-deps.sh --tests installs them)";
+    const fs::path dir = test::tempDir() / "xdotool";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path report = dir / "report.json", broken = brokenGltf();
+    const std::string script = R"(
+set -u
+dir=)" + dir.string() + R"(
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$dir/display" 2>/dev/null &
+xvfb=$!
+for i in $(seq 100); do [ -s "$dir/display" ] && break; sleep 0.1; done
+export DISPLAY=:$(cat "$dir/display")
+export XDG_CONFIG_HOME="$dir/config" XDG_DATA_HOME="$dir/data"
+)" + std::string(DW_WORKBENCH_BINARY) + R"( --scene spheres --set ssao.enabled=false --size 1024x640 --layout-out )" +
+                               report.string() + R"( >"$dir/out.txt" 2>&1 &
+app=$!
+win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Deferred Workbench' | head -1)
+xdotool windowfocus --sync "$win"
+sleep 2
+xdotool key ctrl+o; sleep 0.5
+xdotool type --delay 20 'a wrong start'
+xdotool key ctrl+a
+xdotool type --delay 20 ')" + validScene() + R"('
+xdotool key Return; sleep 3
+xdotool key ctrl+o; sleep 0.5
+xdotool type --delay 20 ')" + broken.string() + R"('
+xdotool key Return; sleep 2
+# Ctrl+Q, again until the window has gone (a loaded machine may be mid-frame).
+for i in $(seq 40); do kill -0 $app 2>/dev/null || break; xdotool key ctrl+q 2>/dev/null; sleep 1.5; done
+kill $app 2>/dev/null && echo "the window did not close on Ctrl+Q" >&2
+wait $app; code=$?
+kill $xvfb; wait $xvfb 2>/dev/null
+exit $code
+)";
+    const test::CommandResult r = test::runCommand("bash -c '" + [&] {
+        std::string q;
+        for (char c : script) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q;
+    }() + "'");
+    std::ifstream log(dir / "out.txt");
+    const std::string out((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    ASSERT_EQ(r.code, 0) << r.out << r.err << out;
+    ASSERT_TRUE(fs::exists(report)) << out;
+    const nlohmann::json j = readJson(report);
+    // The valid path opened (recent list), then the broken one failed and kept it.
+    ASSERT_GE(j["recent_scenes"].size(), 1u) << j.dump();
+    EXPECT_EQ(j["recent_scenes"][0].get<std::string>(), fs::absolute(validScene()).lexically_normal().string());
+    EXPECT_EQ(j["scene"]["source"].get<std::string>(), validScene());
+    const std::string banner = j["banner"].get<std::string>();
+    EXPECT_NE(banner.find(broken.string()), std::string::npos) << banner;
+    EXPECT_FALSE(j["axes"].get<bool>()) << "typed 'a's toggled the axes";
+    // Without a GPU the window started at a reduced, automatic scale and said so.
+    if (j["resolution"]["software_start"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_TRUE(j["resolution"]["auto"].get<bool>());
+        EXPECT_LT(j["resolution"]["scale"].get<float>(), 0.5f);
+    }
+}
