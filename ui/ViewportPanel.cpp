@@ -103,7 +103,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
     const float belowToolbar = ImGui::GetContentRegionAvail().y;
-    imageViewControls(v, shownOutput, state.viewportImage);
+    imageViewControls(v, shownOutput, state.viewportImage, &state.itemRects, "viewport");
     // The render size is the room below the toolbar and one row of the
     // viewer's controls (a buffer's combos are taller than the final image's
     // zoom buttons), which are there whatever is shown: the colour bar and

@@ -2,14 +2,19 @@
 // events under Xvfb: scripted events (gui --events, which go through the same
 // input queue as the window's), and real X events from xdotool.
 #include <gtest/gtest.h>
+#include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/inspect/PixelProbe.h"
 #include "tests/support/TestSupport.h"
+#include "ui/ProbePanel.h"
 
 using namespace dw;
 namespace fs = std::filesystem;
@@ -191,4 +196,77 @@ exit $code
         EXPECT_TRUE(j["resolution"]["auto"].get<bool>());
         EXPECT_LT(j["resolution"]["scale"].get<float>(), 0.5f);
     }
+}
+
+TEST(GuiInput, TheViewerSavesTheShownBufferAtItsOwnResolutionAsExrAndPng) {
+    const fs::path exports = test::tempDir() / "viewer-exports";
+    fs::remove_all(exports);
+    const std::string extra = "--view gbuffer.normal --export-dir " + exports.string();
+    const nlohmann::json where = runEvents("save-where", 2, "", extra);
+    ASSERT_FALSE(where.is_null());
+    auto centre = [](const nlohmann::json& r) {
+        return std::to_string(r[0].get<float>() + r[2].get<float>() * 0.5f) + " " +
+               std::to_string(r[1].get<float>() + r[3].get<float>() * 0.5f);
+    };
+    ASSERT_EQ(where["items"]["viewport.save_exr"].size(), 4u) << where["items"].dump();
+    const nlohmann::json r = runEvents("save", 10,
+                                       "2 click " + centre(where["items"]["viewport.save_exr"]) + "\n5 click " +
+                                           centre(where["items"]["viewport.save_png"]) + "\n",
+                                       extra);
+    ASSERT_FALSE(r.is_null());
+    EXPECT_EQ(r["errors"].size(), 0u) << r["errors"].dump();
+    fs::path exr, png;
+    for (const auto& e : fs::directory_iterator(exports)) {
+        if (e.path().extension() == ".exr") exr = e.path();
+        if (e.path().extension() == ".png") png = e.path();
+    }
+    ASSERT_FALSE(exr.empty()) << "save EXR wrote nothing";
+    ASSERT_FALSE(png.empty()) << "save PNG wrote nothing";
+    EXPECT_EQ(exr.filename().string().rfind("gbuffer_normal-frame", 0), 0u) << exr;
+    const int w = r["render_size"][0].get<int>(), h = r["render_size"][1].get<int>();
+    const FloatImage raw = loadImageFloat(exr.string()), shown = loadImageFloat(png.string());
+    EXPECT_EQ(raw.width, w);
+    EXPECT_EQ(raw.height, h);
+    EXPECT_EQ(shown.width, w);
+    EXPECT_EQ(shown.height, h);
+    // The EXR holds the raw encoded normals (two signed channels), not the colours shown.
+    EXPECT_EQ(raw.channels, 2) << "gbuffer.normal is two Kircher-Lawrance channels";
+    double lo = 0.0;
+    for (float v : raw.pixels) lo = std::min(lo, static_cast<double>(v));
+    EXPECT_LT(lo, -0.01) << "signed values: raw, not a display mapping";
+}
+
+TEST(GuiInput, TheProbesCopyHoldsEveryValueItShowsAsLabelTabValueLines) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("default");
+    ui::UiState state;
+    state.report = session->render();
+    state.probe.result = probePixel(session->pipeline(), 32, 20);
+    state.probe.pinned = true;
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(800, 900);
+    io.IniFilename = nullptr;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    ui::ProbePanel panel;
+    bool open = true;
+    for (int i = 0; i < 2; ++i) {
+        ImGui::NewFrame();
+        ImGui::SetNextWindowSize(ImVec2(600, 880));
+        panel.draw("Pixel probe", &open, state);
+        ImGui::Render();
+    }
+    ImGui::DestroyContext();
+    const std::string& t = panel.copyText;
+    EXPECT_EQ(t.rfind("pixel\t32 20\n", 0), 0u) << t;
+    char lbuffer[128];
+    const glm::vec3 L = state.probe.result.surface.radiance;
+    std::snprintf(lbuffer, sizeof(lbuffer), "L-buffer\t%.5g %.5g %.5g", L.r, L.g, L.b);
+    EXPECT_NE(t.find(lbuffer), std::string::npos) << t;
+    EXPECT_NE(t.find("\ndepth\t"), std::string::npos) << t;
+    // Every output's raw value at the pixel, by name.
+    EXPECT_NE(t.find("\ngbuffer.normal\t"), std::string::npos) << t;
+    EXPECT_NE(t.find("\nlbuffer\t"), std::string::npos) << t;
 }

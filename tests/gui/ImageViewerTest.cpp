@@ -46,6 +46,42 @@ TEST(ImageViewer, DisplaySettingsAreKeptPerOutput) {
     EXPECT_EQ(v.settingsOr().channel, BufferViewSettings::Channel::R);
 }
 
+TEST(ImageViewer, ZoomPanAndHistogramAreKeptPerOutputToo) {
+    ViewportView v;
+    v.show("lbuffer");
+    v.zoom = 16.0f;
+    v.center = {0.25f, 0.75f};
+    v.histogram = true;
+    v.show("ssao.blurred");
+    // Another buffer starts fitted, without the lbuffer's histogram.
+    EXPECT_FLOAT_EQ(v.zoom, 1.0f);
+    EXPECT_EQ(v.center, glm::vec2(0.5f));
+    EXPECT_FALSE(v.histogram);
+    v.zoom = 2.0f;
+    v.show("lbuffer");
+    EXPECT_FLOAT_EQ(v.zoom, 16.0f);
+    EXPECT_EQ(v.center, glm::vec2(0.25f, 0.75f));
+    EXPECT_TRUE(v.histogram);
+    v.show("ssao.blurred");
+    EXPECT_FLOAT_EQ(v.zoom, 2.0f);
+}
+
+TEST(ImageViewer, OnACpuRasteriserTheWindowStartsAtAutoFromAQuarterUnlessTold) {
+    const StartResolution cpu = startResolution("", true, false);
+    EXPECT_EQ(cpu.scale, ResolutionScale::Auto);
+    EXPECT_FLOAT_EQ(cpu.autoScale, 0.25f);
+    EXPECT_FLOAT_EQ(cpu.frameTargetMs, 150.0f);
+    EXPECT_TRUE(cpu.softwareDefault);
+    // A GPU, a scripted run or an explicit --resolution: as asked, full by default.
+    EXPECT_EQ(startResolution("", false, false).scale, ResolutionScale::Full);
+    EXPECT_EQ(startResolution("", true, true).scale, ResolutionScale::Full);
+    EXPECT_EQ(startResolution("full", true, false).scale, ResolutionScale::Full);
+    EXPECT_FALSE(startResolution("full", true, false).softwareDefault);
+    EXPECT_EQ(startResolution("1/2", true, false).scale, ResolutionScale::Half);
+    EXPECT_EQ(startResolution("auto", false, false).scale, ResolutionScale::Auto);
+    EXPECT_FLOAT_EQ(startResolution("auto", false, false).autoScale, 1.0f);
+}
+
 TEST(ImageViewer, HistogramCountsFiniteValuesPerChannelAndCountsNanAndInfApart) {
     FloatImage img;
     img.width = 10;
