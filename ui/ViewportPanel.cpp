@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/constants.hpp>
 
 #include "renderer/scene/CameraController.h"
@@ -56,7 +57,12 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::EndCombo();
     }
     ImGui::EndDisabled();
-    ImGui::SameLine();
+    // The toolbar wraps where the panel is narrow: nothing is cut off.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    auto checkboxWidth = [&](const char* label) {
+        return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+    };
+    sameLineIfFits(checkboxWidth("volumes") + style.ItemSpacing.x + ImGui::GetFontSize() * 6.0f);
     ImGui::Checkbox("volumes", &v.overlay.lightVolumes);
     ImGui::SameLine();
     const char* filters[] = {"at probe", "all", "selected"};
@@ -66,13 +72,15 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
                           "every light's, or the one selected in the Lights panel");
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("axes"));
     ImGui::Checkbox("axes", &v.overlay.axes);
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("animate lights"));
     bool animate = state.animator.running();
     if (ImGui::Checkbox("animate lights", &animate)) toggleAnimation(state, session);
-    ImGui::SameLine();
-    ImGui::SameLine();
+    const bool autoScale = v.resolution == ResolutionScale::Auto;
+    const bool software = !v.softwareStart.empty() && autoScale;
+    sameLineIfFits(ImGui::GetFontSize() * (autoScale ? 9.5f : 4.5f) + style.ItemSpacing.x +
+                   (software ? ImGui::CalcTextSize("software GL: reduced full").x + 3 * style.ItemSpacing.x : 0.0f));
     const char* scales[] = {"full", "1/2", "1/4", "auto"};
     int scale = static_cast<int>(v.resolution);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
@@ -81,12 +89,12 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::SetTooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
                           "to keep the GPU frame under %.0f ms (frozen while timings are recorded)",
                           static_cast<double>(v.frameTargetMs));
-    if (v.resolution == ResolutionScale::Auto) {
+    if (autoScale) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
         ImGui::DragFloat("##target", &v.frameTargetMs, 5.0f, 10.0f, 5000.0f, "%.0f ms");
     }
-    if (!v.softwareStart.empty() && v.resolution == ResolutionScale::Auto) {
+    if (software) {
         ImGui::SameLine();
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "software GL: reduced");
         if (ImGui::IsItemHovered())
@@ -95,10 +103,15 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
                               v.softwareStart.c_str(), static_cast<double>(v.frameTargetMs));
         ImGui::SameLine();
         if (ImGui::SmallButton("full")) v.resolution = ResolutionScale::Full;
+        recordItemRect(state.itemRects, "viewport.full_resolution");
     }
-    ImGui::SameLine();
-    ImGui::TextDisabled("| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly", state.renderSize.x,
-                        state.renderSize.y, static_cast<double>(v.scale()), state.timingCapture ? " | recording" : "");
+    char info[160];
+    std::snprintf(info, sizeof(info), "| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly",
+                  state.renderSize.x, state.renderSize.y, static_cast<double>(v.scale()), state.timingCapture ? " | recording" : "");
+    // Fitted by its widest form, so a new render size cannot wrap the toolbar
+    // and so change the render size again.
+    sameLineIfFits(ImGui::CalcTextSize("| orbit camera | 00000x00000 (x0.00) | recording").x);
+    ImGui::TextDisabled("%s", info);
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
