@@ -334,6 +334,7 @@ private:
         put(reinterpret_cast<std::uintptr_t>(&scene)), text(scene.source), vec(scene.ambient), vec(scene.background);
         for (const Light& l : scene.lights) {
             put(static_cast<int>(l.type)), vec(l.position), vec(l.direction), put(l.cutoffDegrees), put(l.exponent);
+            put(static_cast<int>(l.falloff)), put(l.innerConeDegrees);
             vec(l.intensity), put(l.attenuation.constant), put(l.attenuation.linear), put(l.attenuation.quadratic);
             put(l.castShadows), put(l.enabled);
         }

@@ -157,8 +157,19 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             if (l.attenuation.constant + l.attenuation.linear + l.attenuation.quadratic <= 0.0f) l.attenuation.constant = 1.0f;
         }
         if (l.type == LightType::Spot) {
-            ImGui::SliderFloat("cutoff (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
-            ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.2f");
+            // The seeds' cutoff and exponent, or KHR_lights_punctual's cone
+            // (what a glTF spot light comes with); the cutoff is the outer cone.
+            int falloff = l.falloff == SpotFalloff::InnerOuterCone ? 1 : 0;
+            if (ImGui::Combo("falloff", &falloff, "cutoff + exponent\0inner + outer cone (glTF)\0"))
+                l.falloff = falloff == 1 ? SpotFalloff::InnerOuterCone : SpotFalloff::CutoffExponent;
+            if (l.falloff == SpotFalloff::InnerOuterCone) {
+                ImGui::SliderFloat("outer cone (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
+                ImGui::SliderFloat("inner cone (deg)", &l.innerConeDegrees, 0.0f, l.cutoffDegrees, "%.1f");
+                l.innerConeDegrees = std::clamp(l.innerConeDegrees, 0.0f, l.cutoffDegrees);
+            } else {
+                ImGui::SliderFloat("cutoff (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
+                ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.2f");
+            }
         }
         const LightVolume v = computeLightVolume(l, threshold);
         const char* shape = v.shape == VolumeShape::Cone ? "cone" : v.shape == VolumeShape::Sphere ? "sphere"

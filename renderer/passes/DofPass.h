@@ -1,8 +1,11 @@
 #pragma once
 // Depth of field (seed 004): blur from view depth around a focus distance,
-// near and far. Reads the post chain's current image (the tone-mapped one unless a
-// post pass comes before) and gbuffer.depth; writes dof.result
-// (RGBA8) and dof.coc (signed circle of confusion in pixels, when asked for).
+// near and far, the near field as its own layer (Sousa 2013, Jimenez 2014:
+// its blur dilated, its colour weighted by coverage and composited over the
+// in-focus and far field; shaders/post/dof.frag). Reads the post chain's
+// current image (the tone-mapped one unless a post pass comes before) and
+// gbuffer.depth; writes dof.result (RGBA8) and dof.coc (signed circle of
+// confusion in pixels, when asked for).
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"

@@ -75,7 +75,10 @@ void LightTablePass::execute(FrameContext& ctx) {
         g.directionCutoff = glm::vec4(dirView, std::cos(glm::radians(l.cutoffDegrees)));
         g.intensityExponent = glm::vec4(l.intensity, l.exponent);
         const int type = l.type == LightType::Directional ? 0 : (l.type == LightType::Point ? 1 : 2);
-        g.attenuation = glm::vec4(l.attenuation.constant, l.attenuation.linear, l.attenuation.quadratic, static_cast<float>(type));
+        const bool cone = l.type == LightType::Spot && l.falloff == SpotFalloff::InnerOuterCone;
+        if (cone) g.intensityExponent.w = coneRampScale(l);
+        g.attenuation = glm::vec4(l.attenuation.constant, l.attenuation.linear, l.attenuation.quadratic,
+                                  static_cast<float>(cone ? kLightKindSpotCone : type));
         LightTableEntry e;
         e.row = static_cast<int>(table_.rows.size());
         e.light = &l;

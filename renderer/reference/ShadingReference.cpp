@@ -12,6 +12,18 @@ double attenuation(const Attenuation& a, double d, double radius, AttenuationMod
     return att;
 }
 
+double spotFactor(const Light& light, double cosTheta) {
+    constexpr double kDegree = 3.14159265358979323846 / 180.0;
+    const double cosOuter = std::cos(light.cutoffDegrees * kDegree);
+    if (!(cosTheta >= cosOuter)) return 0.0;
+    if (light.falloff == SpotFalloff::CutoffExponent)
+        return std::pow(std::max(cosTheta, 0.0), static_cast<double>(light.exponent));
+    const double cosInner = std::cos(light.innerConeDegrees * kDegree);
+    if (cosInner <= cosOuter) return cosTheta > cosOuter ? 1.0 : 0.0;
+    const double t = std::clamp((cosTheta - cosOuter) / (cosInner - cosOuter), 0.0, 1.0);
+    return t * t;
+}
+
 glm::dvec3 shadeLight(const Light& light, const glm::dvec3& lightPosition, const glm::dvec3& lightDirection,
                       double radius, const SurfacePoint& s, AttenuationModel model, double windowExponent) {
     glm::dvec3 L;
@@ -24,9 +36,7 @@ glm::dvec3 shadeLight(const Light& light, const glm::dvec3& lightPosition, const
         L = toLight / std::max(d, 1e-12);
         scale = attenuation(light.attenuation, d, radius, model, windowExponent);
         if (light.type == LightType::Spot) {
-            const double cosTheta = glm::dot(-L, glm::normalize(lightDirection));
-            const double cosCutoff = std::cos(light.cutoffDegrees * 3.14159265358979323846 / 180.0);
-            scale *= cosTheta >= cosCutoff ? std::pow(std::max(cosTheta, 0.0), static_cast<double>(light.exponent)) : 0.0;
+            scale *= spotFactor(light, glm::dot(-L, glm::normalize(lightDirection)));
         }
     }
     const double nDotL = glm::dot(s.normal, L);

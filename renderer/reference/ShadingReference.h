@@ -24,6 +24,9 @@ struct SurfacePoint {
 glm::dvec3 shadeLight(const Light& light, const glm::dvec3& lightPosition, const glm::dvec3& lightDirection,
                       double radius, const SurfacePoint& s, AttenuationModel model, double windowExponent);
 double attenuation(const Attenuation& a, double d, double radius, AttenuationModel model, double windowExponent);
+// A spot light's factor at cos(theta) from its axis, by its falloff model
+// (Light::falloff): 0 outside the cone of cutoffDegrees.
+double spotFactor(const Light& light, double cosTheta);
 
 // Kircher-Lawrance normal transform, exact.
 glm::dvec2 encodeNormalKL(const glm::dvec3& n);

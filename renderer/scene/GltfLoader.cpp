@@ -885,10 +885,11 @@ private:
             const double outer = l.spot.outerConeAngle > 0 ? std::min(l.spot.outerConeAngle, glm::half_pi<double>())
                                                            : glm::pi<double>() / 4.0;
             const double inner = std::clamp(l.spot.innerConeAngle, 0.0, outer);
+            // The extension's own falloff: full inside the inner cone, 0 at the outer one.
+            out.falloff = SpotFalloff::InnerOuterCone;
             out.cutoffDegrees = static_cast<float>(glm::degrees(outer));
-            // Half intensity halfway between the inner and outer cone angles.
-            const double mid = std::cos(0.5 * (inner + outer));
-            out.exponent = mid < 0.999999 ? static_cast<float>(std::log(0.5) / std::log(mid)) : 0.0f;
+            out.innerConeDegrees = std::min(static_cast<float>(glm::degrees(inner)), out.cutoffDegrees);
+            out.exponent = 0.0f;
         } else {
             out.type = LightType::Point;
         }

@@ -1,19 +1,24 @@
 // Light table and the shading equation: Blinn-Phong (seed 000, eqs. 2.1-2.3)
 // with the attenuation 1/(c + l d + q d^2) (eq. 2.2, seed 001 eq. 1), the
-// spot factor (cos theta)^e inside the cutoff (seed 001, section 3.3), and
-// Ferko's windowed attenuation (seed 000, eq. 3.5) as an option.
+// spot factor (cos theta)^e inside the cutoff (seed 001, section 3.3) or, for
+// spot lights from glTF, KHR_lights_punctual's cone (1 inside the inner cone,
+// the square of a linear ramp in cos theta between the cones, 0 at the outer
+// one), and Ferko's windowed attenuation (seed 000, eq. 3.5) as an option.
 #include "bindings.glsl"
 
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
+// A spot light with KHR_lights_punctual's inner and outer cone (a kind >=
+// LIGHT_SPOT is a spot light; renderer/lighting/LightTable.h).
+#define LIGHT_SPOT_CONE 3
 
 struct Light {
     mat4 volume;            // unit volume mesh -> world
     vec4 positionRadius;    // view-space position, radius (0 = unbounded)
-    vec4 directionCutoff;   // view-space direction the light points to, cos(cutoff)
-    vec4 intensityExponent; // rgb intensity, spot exponent
-    vec4 attenuation;       // constant, linear, quadratic, type
+    vec4 directionCutoff;   // view-space direction the light points to, cos(cutoff) (the outer cone)
+    vec4 intensityExponent; // rgb intensity; spot exponent (LIGHT_SPOT) or 1 / (cos inner - cos outer) (LIGHT_SPOT_CONE)
+    vec4 attenuation;       // constant, linear, quadratic, kind (LIGHT_*)
     mat4 shadowMatrix;      // view space -> the shadow map's space
     vec4 shadowParams;      // mode, PCF radius, texel size, layer
     vec4 shadowRange;       // near, far (cube and paraboloid maps)
@@ -36,14 +41,27 @@ float attenuate(Light light, float d, bool windowed, float windowExponent) {
     return radius > 0.0 && d > radius ? 0.0 : att;
 }
 
+bool isSpotLight(Light light) { return int(light.attenuation.w + 0.5) >= LIGHT_SPOT; }
+
+// A spot light's factor at cos(theta) from its axis: 0 outside the cone
+// (cos theta < cos cutoff), inside it (cos theta)^exponent, or for
+// LIGHT_SPOT_CONE t^2 with t = (cos theta - cos outer) / (cos inner - cos outer)
+// clamped to [0, 1] (the CPU's reference::spotFactor).
+float spotFactor(Light light, float cosTheta) {
+    float cosOuter = light.directionCutoff.w;
+    float f = pow(max(cosTheta, 0.0), light.intensityExponent.w);
+    if (int(light.attenuation.w + 0.5) == LIGHT_SPOT_CONE) {
+        float t = clamp((cosTheta - cosOuter) * light.intensityExponent.w, 0.0, 1.0);
+        f = t * t;
+    }
+    return cosTheta >= cosOuter ? f : 0.0;
+}
+
 // A bounded light's attenuation times its spot factor at distance d in unit
 // direction L (from the point towards the light).
 float boundedLightScale(Light light, vec3 L, float d, bool windowed, float windowExponent) {
     float scale = attenuate(light, d, windowed, windowExponent);
-    if (int(light.attenuation.w + 0.5) == LIGHT_SPOT) {
-        float cosTheta = dot(-L, light.directionCutoff.xyz);
-        scale *= cosTheta >= light.directionCutoff.w ? pow(max(cosTheta, 0.0), light.intensityExponent.w) : 0.0;
-    }
+    if (isSpotLight(light)) scale *= spotFactor(light, dot(-L, light.directionCutoff.xyz));
     return scale;
 }
 

@@ -75,7 +75,7 @@ vec3 lightRadianceAt(Light light, Surface s, vec3 L, float d, vec3 V) {
 // first texel and then this before shading, so the lights of a tile's or
 // cluster's list that cannot reach a pixel cost a distance, not a shading.
 bool spotReaches(Light light, vec3 L) {
-    return int(light.attenuation.w + 0.5) != LIGHT_SPOT || dot(-L, light.directionCutoff.xyz) >= light.directionCutoff.w;
+    return !isSpotLight(light) || dot(-L, light.directionCutoff.xyz) >= light.directionCutoff.w;
 }
 #endif
 

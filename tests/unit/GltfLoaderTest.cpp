@@ -192,6 +192,9 @@ TEST(GltfLoader, ImportsPunctualLightsAndCamera) {
     EXPECT_NEAR(s.lights[0].position.y, 3.0f, 1e-6f);
     EXPECT_NEAR(s.lights[0].direction.z, -1.0f, 1e-6f);  // glTF lights point down -Z
     EXPECT_NEAR(s.lights[0].cutoffDegrees, glm::degrees(0.6f), 1e-3f);
+    // The extension's falloff, not an exponent fitted to it.
+    EXPECT_EQ(s.lights[0].falloff, SpotFalloff::InnerOuterCone);
+    EXPECT_NEAR(s.lights[0].innerConeDegrees, glm::degrees(0.2f), 1e-3f);
     EXPECT_NEAR(s.lights[0].intensity.g, 2.0f, 1e-6f);
     EXPECT_TRUE(r.hasCamera);
     EXPECT_NEAR(s.camera.fovYDegrees, glm::degrees(0.8f), 1e-3f);
