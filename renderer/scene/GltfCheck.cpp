@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "renderer/Error.h"
@@ -151,28 +152,83 @@ private:
 
 }  // namespace
 
-std::string_view glbJsonChunk(const std::string& bytes, const std::string& path) {
+namespace {
+
+// A chunk type as the spec writes it: 0x4E4F534A ("JSON").
+std::string chunkTypeName(std::uint32_t type) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%08X", type);
+    std::string text;
+    for (int i = 0; i < 4; ++i) {
+        const unsigned char c = static_cast<unsigned char>((type >> (8 * i)) & 0xFF);
+        if (c == 0) text += "\\0";
+        else if (c >= 0x20 && c < 0x7F) text += static_cast<char>(c);
+        else return hex;
+    }
+    return std::string(hex) + " (\"" + text + "\")";
+}
+
+constexpr std::uint32_t kJsonChunk = 0x4E4F534Au, kBinChunk = 0x004E4942u;
+
+}  // namespace
+
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path, std::vector<std::string>* invalid) {
     auto fail = [&](const std::string& what) { throw FileError(path, "malformed GLB: " + what); };
-    if (bytes.size() < 12)
-        fail("the file is " + std::to_string(bytes.size()) + " bytes, shorter than the 12-byte GLB header");
+    auto note = [&](const std::string& what) {
+        if (invalid) invalid->push_back("GLB: " + what);
+    };
+    const std::size_t size = bytes.size();
+    if (size < 12) fail("the file is " + std::to_string(size) + " bytes, shorter than the 12-byte GLB header");
     if (bytes.compare(0, 4, "glTF") != 0) fail("the file does not start with the GLB magic \"glTF\"");
     const std::uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
     if (version != 2) fail("GLB version " + std::to_string(version) + " (only version 2 is read)");
-    if (length > bytes.size())
-        fail("the header says " + std::to_string(length) + " bytes but the file has " + std::to_string(bytes.size()));
-    if (length < 20) fail("no JSON chunk: the file ends after the header");
+    // Spec: "length is the total length of the Binary glTF, including Header
+    // and all Chunks, in bytes". Either way round the file is not what its
+    // header says: cut short, or the length field (or the file) is wrong.
+    if (length != size)
+        fail("the header declares a total length of " + std::to_string(length) + " bytes but the file has " +
+             std::to_string(size) + (length > size ? " (cut short?)" : ""));
+    if (size == 12) fail("no JSON chunk: the file ends after the 12-byte header");
+    if (size < 20)
+        fail("the JSON chunk's header is incomplete: " + std::to_string(size - 12) +
+             " byte(s) after the 12-byte file header, a chunk header takes 8");
     const std::uint32_t jsonLength = readU32(bytes, 12), jsonType = readU32(bytes, 16);
-    if (jsonType != 0x4E4F534Au) fail("the first chunk is not a JSON chunk");
-    if (20ull + jsonLength > length)
-        fail("the JSON chunk (" + std::to_string(jsonLength) + " bytes) runs past the end of the file (" +
-             std::to_string(length) + " bytes)");
-    const std::size_t binAt = 20ull + jsonLength;
-    if (binAt < length) {
-        if (binAt + 8 > length) fail("the chunk after the JSON chunk has an incomplete header");
-        const std::uint64_t binLength = readU32(bytes, binAt);
-        if (binAt + 8 + binLength > length)
-            fail("the binary chunk (" + std::to_string(binLength) + " bytes) runs past the end of the file (" +
-                 std::to_string(length) + " bytes)");
+    if (jsonType != kJsonChunk)
+        fail("the first chunk is of type " + chunkTypeName(jsonType) + ", not JSON (0x4E4F534A): the JSON chunk must come first");
+    if (jsonLength == 0) fail("the JSON chunk is empty (chunkLength 0)");
+    if (jsonLength > size - 20)
+        fail("the JSON chunk declares " + std::to_string(jsonLength) + " bytes but only " + std::to_string(size - 20) +
+             " follow its header (the file has " + std::to_string(size) + ")");
+    if (jsonLength % 4 != 0)
+        note("the JSON chunk's length (" + std::to_string(jsonLength) +
+             " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)");
+    // The chunks after the JSON chunk: an optional BIN chunk first, then any
+    // of unknown types (which readers must skip); each must fit the file.
+    std::size_t at = 20ull + jsonLength;
+    for (int index = 1; at < size; ++index) {
+        const std::string where = "chunk " + std::to_string(index) + " (at byte " + std::to_string(at) + ")";
+        if (size - at < 8)
+            fail(where + ": " + std::to_string(size - at) + " byte(s) left, too few for a chunk header (8 bytes)");
+        const std::uint32_t chunkLength = readU32(bytes, at), type = readU32(bytes, at + 4);
+        const std::string name = type == kBinChunk ? "the binary chunk" : "chunk " + std::to_string(index);
+        if (chunkLength > size - at - 8)
+            fail(name + " (at byte " + std::to_string(at) + ") declares " + std::to_string(chunkLength) +
+                 " bytes but only " + std::to_string(size - at - 8) + " follow its header (the file has " +
+                 std::to_string(size) + ")");
+        if (index == 1 && type != kBinChunk)
+            fail(where + " is of type " + chunkTypeName(type) +
+                 ", not BIN (0x004E4942): the reader needs the binary chunk right after the JSON chunk");
+        if (type == kJsonChunk) fail(where + " is a second JSON chunk (a GLB has exactly one)");
+        if (type == kBinChunk && index > 1) fail(where + " is a second binary chunk (a GLB has at most one)");
+        if (type == kBinChunk && chunkLength == 0)
+            fail("the binary chunk is empty (chunkLength 0; spec: an empty binary chunk is left out)");
+        if (chunkLength % 4 != 0) {
+            const std::string what = name + "'s length (" + std::to_string(chunkLength) +
+                                     " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)";
+            if (type == kBinChunk) fail(what);  // the reader refuses it
+            note(what);
+        }
+        at += 8ull + chunkLength;
     }
     return std::string_view(bytes).substr(20, jsonLength);
 }

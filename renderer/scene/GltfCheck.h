@@ -13,12 +13,17 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dw {
 
 // The JSON chunk of a .glb after checking the 12-byte header (magic "glTF",
-// version 2, length not past the file) and the chunk headers.
-std::string_view glbJsonChunk(const std::string& bytes, const std::string& path);
+// version 2, a length that is the file's size) and every chunk header (JSON
+// first, then at most one BIN chunk, each within the file). What breaks the
+// spec but still reads (a chunk length that is not a multiple of 4) is added
+// to `invalid`, when given, as "GLB: <what>".
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path,
+                              std::vector<std::string>* invalid = nullptr);
 
 // The value checks above on the parsed glTF JSON.
 void checkGltfValues(const nlohmann::json& gltf, const std::string& path);

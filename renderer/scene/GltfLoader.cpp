@@ -59,7 +59,7 @@ public:
     // (the same bytes, unless hideZeroIndexAccessors rewrote the JSON).
     std::string precheck(const std::string& bytes) {
         const bool glb = isBinary(bytes);
-        const std::string_view text = glb ? glbJsonChunk(bytes, path_) : std::string_view(bytes);
+        const std::string_view text = glb ? glbJsonChunk(bytes, path_, &invalid_) : std::string_view(bytes);
         checkJsonText(text, path_);  // nesting depth, numbers beyond a float, by JSON path
         nlohmann::json j;
         try {
@@ -175,6 +175,7 @@ public:
         importMeshes();
         GltfImport result;
         walkScene(root, lightsAndCamera, result);
+        warnInvalid();
         warnIgnored();
         return result;
     }
@@ -915,6 +916,17 @@ private:
         result.hasCamera = true;
     }
 
+    // One warning line naming every rule of the glTF 2.0 spec the file breaks
+    // in a way the importer reads past (so the file still draws, but a user
+    // learns that the file, not the workbench, is wrong), apart from the
+    // valid features the workbench does not support (warnIgnored).
+    void warnInvalid() {
+        if (invalid_.empty()) return;
+        std::string line = path_ + ": invalid glTF (drawn anyway): ";
+        for (size_t i = 0; i < invalid_.size(); ++i) line += (i ? "; " : "") + invalid_[i];
+        scene_.warnings.push_back(line);
+    }
+
     // One warning line naming everything the file uses that the workbench
     // does not draw, so a user knows why the picture differs from a viewer's.
     void warnIgnored() {
@@ -946,6 +958,7 @@ private:
     Scene& scene_;
     tinygltf::Model model_;
     std::vector<HiddenIndices> hiddenIndices_;
+    std::vector<std::string> invalid_;  // spec rules broken but read past (warnInvalid)
     mutable bool ignoredUvSets_ = false;
     std::string imageError_;
     int imageBase_ = 0, materialBase_ = 0, defaultMaterial_ = -1;

@@ -74,6 +74,11 @@ TEST(ValidationCli, ImageBytesPastTheBufferNameTheImageAndTheRange) {
                   "image[0]", "bufferView[3] (bytes 840 to 3273) runs past the end of buffer[0] (900 bytes)");
 }
 
+TEST(ValidationCli, GlbHeaderDisagreeingWithTheFileSaysHow) {
+    expectRefused("--scene " + regression("gltf", "chunk_too_big.glb").string(), "chunk_too_big.glb", "malformed GLB",
+                  "the header declares a total length of 13 bytes but the file has 48");
+}
+
 TEST(ValidationCli, DeepNestingIsOneLineInEveryReader) {
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
     for (const auto& [args, name] : std::initializer_list<std::pair<std::string, std::string>>{
