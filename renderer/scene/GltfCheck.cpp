@@ -1,5 +1,6 @@
 #include "renderer/scene/GltfCheck.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cfloat>
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/io/FloatCheck.h"
+#include "renderer/scene/GltfSchema.h"
 
 namespace dw {
 
@@ -26,24 +28,47 @@ constexpr double kPi = 3.14159265358979323846;
 // Exporters write pi/2 rounded to a 32-bit float (1.5707963705...).
 constexpr double kRightAngleTolerance = 1e-6;
 
+// One object's first problem: the checks of that object stop there, the
+// other objects are still checked (every bad camera is named, not the last).
+struct ObjectProblem {
+    std::string text;
+};
+
 class ValueChecker {
 public:
-    ValueChecker(const json& root, const std::string& path) : root_(root), path_(path) {}
+    ValueChecker(const json& root, std::vector<std::string>& problems) : root_(root), problems_(problems) {}
 
     void run() {
         checkUris("buffers");
         checkUris("images");
         if (root_.contains("cameras") && root_["cameras"].is_array())
-            for (std::size_t i = 0; i < root_["cameras"].size(); ++i) checkCamera(root_["cameras"][i], "cameras[" + std::to_string(i) + "]");
+            for (std::size_t i = 0; i < root_["cameras"].size(); ++i) {
+                const std::string where = "cameras[" + std::to_string(i) + "]";
+                attempt(where, [&] { checkCamera(root_["cameras"][i], where); });
+            }
         const json* lights = find(root_, {"extensions", "KHR_lights_punctual", "lights"});
         if (lights && lights->is_array())
-            for (std::size_t i = 0; i < lights->size(); ++i)
-                checkLight((*lights)[i], "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]");
+            for (std::size_t i = 0; i < lights->size(); ++i) {
+                const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+                attempt(where, [&] { checkLight((*lights)[i], where); });
+            }
     }
 
 private:
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw FileError(path_, where + ": " + what);
+        throw ObjectProblem{where + ": " + what};
+    }
+
+    // Runs one object's checks unless the schema check already named it.
+    template <typename F>
+    void attempt(const std::string& where, F check) {
+        for (const std::string& p : problems_)
+            if (p.rfind(where + ":", 0) == 0 || p.rfind(where + ".", 0) == 0) return;
+        try {
+            check();
+        } catch (const ObjectProblem& p) {
+            problems_.push_back(p.text);
+        }
     }
 
     static const json* find(const json& j, std::initializer_list<const char*> keys) {
@@ -66,7 +91,7 @@ private:
         return d;
     }
 
-    void checkUris(const char* array) const {
+    void checkUris(const char* array) {
         if (!root_.contains(array) || !root_[array].is_array()) return;
         const json& a = root_[array];
         for (std::size_t i = 0; i < a.size(); ++i) {
@@ -75,7 +100,7 @@ private:
             if (uri.rfind("data:", 0) != 0) continue;
             std::string problem;
             if (!isDecodableDataUri(uri, problem))
-                fail(std::string(array) + "[" + std::to_string(i) + "].uri", "malformed data: URI: " + problem);
+                problems_.push_back(std::string(array) + "[" + std::to_string(i) + "].uri: malformed data: URI: " + problem);
         }
     }
 
@@ -147,7 +172,7 @@ private:
     }
 
     const json& root_;
-    const std::string& path_;
+    std::vector<std::string>& problems_;
 };
 
 }  // namespace
@@ -275,6 +300,44 @@ bool isDecodableDataUri(const std::string& uri, std::string& problem) {
     return true;
 }
 
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path) { ValueChecker(gltf, path).run(); }
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid) {
+    std::vector<std::string> problems, readPast;
+    checkGltfSchema(gltf, problems, readPast);
+    ValueChecker(gltf, problems).run();
+    if (!problems.empty()) throw FileError(path, joinProblems(problems));
+    if (invalid) invalid->insert(invalid->end(), readPast.begin(), readPast.end());
+}
+
+std::string joinProblems(std::vector<std::string> problems) {
+    // In the order of the objects' JSON paths, indices by number (cameras[2]
+    // before cameras[10]); one object's problems in the order found.
+    auto less = [](const std::string& a, const std::string& b) {
+        const std::string pa = a.substr(0, a.find(": ")), pb = b.substr(0, b.find(": "));
+        std::size_t i = 0, k = 0;
+        while (i < pa.size() && k < pb.size()) {
+            if (std::isdigit(static_cast<unsigned char>(pa[i])) && std::isdigit(static_cast<unsigned char>(pb[k]))) {
+                std::size_t ei = i, ek = k;
+                while (ei < pa.size() && std::isdigit(static_cast<unsigned char>(pa[ei]))) ++ei;
+                while (ek < pb.size() && std::isdigit(static_cast<unsigned char>(pb[ek]))) ++ek;
+                const std::string na = pa.substr(i, ei - i), nb = pb.substr(k, ek - k);
+                if (na.size() != nb.size()) return na.size() < nb.size();
+                if (na != nb) return na < nb;
+                i = ei;
+                k = ek;
+            } else {
+                if (pa[i] != pb[k]) return pa[i] < pb[k];
+                ++i;
+                ++k;
+            }
+        }
+        return pa.size() - i < pb.size() - k;
+    };
+    std::stable_sort(problems.begin(), problems.end(), less);
+    constexpr std::size_t kShown = 12;
+    std::string out;
+    for (std::size_t i = 0; i < problems.size() && i < kShown; ++i) out += (i ? "; " : "") + problems[i];
+    if (problems.size() > kShown) out += "; and " + std::to_string(problems.size() - kShown) + " more";
+    return out;
+}
 
 }  // namespace dw

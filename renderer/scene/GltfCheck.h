@@ -9,7 +9,8 @@
 //    zfar > znear, aspectRatio > 0 (spec "cameras");
 //  - KHR_lights_punctual: known type, color and intensity not negative,
 //    range > 0, spots 0 <= innerConeAngle < outerConeAngle <= pi/2.
-// Every function throws FileError(path, "<what>: <problem>").
+// Every function throws FileError(path, "<what>: <problem>"); checkGltfValues
+// names every object with a problem, not only the first or the last.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -25,8 +26,15 @@ namespace dw {
 std::string_view glbJsonChunk(const std::string& bytes, const std::string& path,
                               std::vector<std::string>* invalid = nullptr);
 
-// The value checks above on the parsed glTF JSON.
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path);
+// The value checks above and the schema's (GltfSchema.h) on the parsed glTF
+// JSON. Every object's first problem is collected (all bad cameras, lights,
+// accessors...) and thrown as one FileError, "<what>; <what>; ..."; rules the
+// importer reads past are added to `invalid`, when given.
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid = nullptr);
+
+// Problems ("<json path>: <what>") in the order of their paths, joined with
+// "; ", at most 12 shown ("...; and 3 more").
+std::string joinProblems(std::vector<std::string> problems);
 
 // Whether `uri` is a data: URI tinygltf decodes; `problem` says why not.
 bool isDecodableDataUri(const std::string& uri, std::string& problem);

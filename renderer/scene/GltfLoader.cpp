@@ -25,6 +25,7 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/GltfCheck.h"
+#include "renderer/scene/GltfSchema.h"
 #include "renderer/scene/NormalGenerator.h"
 #include "renderer/scene/TangentGenerator.h"
 
@@ -60,7 +61,11 @@ public:
     std::string precheck(const std::string& bytes) {
         const bool glb = isBinary(bytes);
         const std::string_view text = glb ? glbJsonChunk(bytes, path_, &invalid_) : std::string_view(bytes);
-        checkJsonText(text, path_);  // nesting depth, numbers beyond a float, by JSON path
+        // Nesting depth, numbers beyond a float, by JSON path; integer
+        // properties beyond a float are named as integers (GltfSchema.h).
+        JsonGuardOptions guard;
+        guard.integerProblem = gltfIntegerProblem;
+        checkJsonText(text, path_, guard);
         nlohmann::json j;
         try {
             j = nlohmann::json::parse(text);
@@ -70,7 +75,7 @@ public:
             fail("unreadable JSON: " + jsonErrorText(e));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
-        checkGltfValues(j, path_);  // cameras, lights, data: URIs (GltfCheck.h)
+        checkGltfValues(j, path_, &invalid_);  // schema, cameras, lights, data: URIs (GltfCheck.h)
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
             for (const auto& e : j["extensionsRequired"])
                 if (e.is_string() && !isSupportedExtension(e.get<std::string>()))

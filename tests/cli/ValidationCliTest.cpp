@@ -79,6 +79,25 @@ TEST(ValidationCli, GlbHeaderDisagreeingWithTheFileSaysHow) {
                   "the header declares a total length of 13 bytes but the file has 48");
 }
 
+// Issue 25: a required property tinygltf refuses without a reason, and every
+// bad object of a kind, on one line naming the file and the objects.
+TEST(ValidationCli, GltfSchemaBreaksAreOneLineNamingEachObject) {
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "skins": [{"name": "rig"}], "cameras": [
+        {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": -1}}],
+        "bufferViews": [{"buffer": 0, "byteLength": 1e39}]})";
+    expectRefused("--scene " + writeText("schema.gltf", gltf).string(), "schema.gltf", "bufferViews[0].byteLength",
+                  "1e39 is out of range (a byte length from 1 to 9007199254740991)");
+    const std::string rest = R"({"asset": {"version": "2.0"}, "skins": [{"name": "rig"}], "cameras": [
+        {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": -1}}]})";
+    expectRefused("--scene " + writeText("objects.gltf", rest).string(), "objects.gltf", "cameras[0].perspective.yfov",
+                  "must be in (0, 179) degrees, got 0 rad (0 degrees); cameras[2].perspective.znear: must be greater than 0, "
+                  "got -1; skins[0]: required property 'joints' is missing");
+}
+
 TEST(ValidationCli, DeepNestingIsOneLineInEveryReader) {
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
     for (const auto& [args, name] : std::initializer_list<std::pair<std::string, std::string>>{

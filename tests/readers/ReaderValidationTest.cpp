@@ -355,6 +355,26 @@ TEST(ReaderValidation, UnalignedGlbJsonChunkIsReadAndCalledInvalid) {
                         " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)");
 }
 
+// What tinygltf refuses without a reason, integers out of range and several
+// bad objects at once: each named by file, object and rule (issue 25).
+TEST(ReaderValidation, GltfSchemaBreaksAreNamedByObject) {
+    json j = triangleGltf();
+    j["skins"] = json::array({{{"name", "rig"}}});
+    EXPECT_HAS(gltfError("nojoints.gltf", j), "nojoints.gltf: skins[0]: required property 'joints' is missing");
+    j = triangleGltf();
+    std::string text = j.dump();
+    const std::string count = "\"count\":3";
+    text.replace(text.find(count), count.size(), "\"count\":4e40");
+    const std::string e = sceneError(writeText("count.gltf", text));
+    EXPECT_HAS(e, "count.gltf: accessors[0].count: 4e40 is out of range (a count from 1 to 9007199254740991)");
+    EXPECT_EQ(e.find("32-bit float"), std::string::npos) << e;
+    j = withCamera(triangleGltf(), {{"yfov", 0}, {"znear", 0.1}});
+    j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}});
+    j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}}}});
+    EXPECT_HAS(gltfError("cams.gltf", j), "cams.gltf: cameras[0].perspective.yfov: must be in (0, 179) degrees, got 0 rad "
+                                          "(0 degrees); cameras[2].perspective: required property 'znear' is missing");
+}
+
 TEST(ReaderValidation, MalformedDataUriIsNotFileNotFound) {
     json j = triangleGltf();
     j["buffers"][0]["uri"] = "data:application/foo;base64,AAAA";
