@@ -265,14 +265,27 @@ private:
                  std::to_string(v.size()));
     }
 
+    // Runs one object's checks; its first problem goes into `problems` (without
+    // the file name) and the other objects are still checked.
+    template <typename F>
+    void collect(std::vector<std::string>& problems, F check) const {
+        try {
+            check();
+        } catch (const FileError& e) {
+            const std::string text = e.what();
+            problems.push_back(text.rfind(path_ + ": ", 0) == 0 ? text.substr(path_.size() + 2) : text);
+        }
+    }
+
     void validate() const {
         for (const auto& ext : model_.extensionsRequired)
             if (!isSupportedExtension(ext)) fail("requires glTF extension " + ext + ", which the workbench does not support");
+        std::vector<std::string> problems;
         for (size_t i = 0; i < model_.buffers.size(); ++i) {
             if (model_.buffers[i].data.empty())
-                fail("buffer[" + std::to_string(i) + "] has no data (missing .bin file?)");
+                problems.push_back("buffer[" + std::to_string(i) + "] has no data (missing .bin file?)");
         }
-        for (size_t i = 0; i < model_.bufferViews.size(); ++i) {
+        for (size_t i = 0; i < model_.bufferViews.size(); ++i) collect(problems, [&] {
             const auto& bv = model_.bufferViews[i];
             const std::string what = "bufferView[" + std::to_string(i) + "]";
             checkIndex(bv.buffer, model_.buffers, what + ".buffer", false);
@@ -281,25 +294,26 @@ private:
                 fail(what + " (offset " + std::to_string(bv.byteOffset) + ", length " +
                      std::to_string(bv.byteLength) + ") runs past the end of buffer[" +
                      std::to_string(bv.buffer) + "] (" + std::to_string(size) + " bytes)");
-        }
-        for (size_t i = 0; i < model_.accessors.size(); ++i) validateAccessor(static_cast<int>(i));
+        });
+        for (size_t i = 0; i < model_.accessors.size(); ++i)
+            collect(problems, [&] { validateAccessor(static_cast<int>(i)); });
         for (size_t m = 0; m < model_.meshes.size(); ++m) {
-            for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+            for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) collect(problems, [&] {
                 const auto& prim = model_.meshes[m].primitives[p];
                 const std::string what = "mesh[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
                 for (const auto& [name, acc] : prim.attributes)
                     checkIndex(acc, model_.accessors, what + ".attributes." + name, false);
                 checkIndex(prim.indices, model_.accessors, what + ".indices");
                 checkIndex(prim.material, model_.materials, what + ".material");
-            }
+            });
         }
-        for (size_t i = 0; i < model_.textures.size(); ++i) {
+        for (size_t i = 0; i < model_.textures.size(); ++i) collect(problems, [&] {
             checkIndex(model_.textures[i].source, model_.images, "texture[" + std::to_string(i) + "].source");
             checkIndex(model_.textures[i].sampler, model_.samplers, "texture[" + std::to_string(i) + "].sampler");
             checkIndex(webpSource(model_.textures[i]), model_.images,
                        "texture[" + std::to_string(i) + "].extensions.EXT_texture_webp.source");
-        }
-        for (size_t i = 0; i < model_.materials.size(); ++i) {
+        });
+        for (size_t i = 0; i < model_.materials.size(); ++i) collect(problems, [&] {
             const auto& m = model_.materials[i];
             const std::string what = "material[" + std::to_string(i) + "]";
             checkIndex(m.pbrMetallicRoughness.baseColorTexture.index, model_.textures, what + ".baseColorTexture");
@@ -308,8 +322,8 @@ private:
             checkIndex(m.normalTexture.index, model_.textures, what + ".normalTexture");
             checkIndex(m.emissiveTexture.index, model_.textures, what + ".emissiveTexture");
             checkIndex(m.occlusionTexture.index, model_.textures, what + ".occlusionTexture");
-        }
-        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+        });
+        for (size_t i = 0; i < model_.nodes.size(); ++i) collect(problems, [&] {
             const auto& n = model_.nodes[i];
             const std::string what = "node[" + std::to_string(i) + "]";
             checkIndex(n.mesh, model_.meshes, what + ".mesh");
@@ -326,11 +340,13 @@ private:
             finite(n.translation, 3, "translation");
             finite(n.rotation, 4, "rotation");
             finite(n.scale, 3, "scale");
-        }
-        for (size_t s = 0; s < model_.scenes.size(); ++s)
+        });
+        for (size_t s = 0; s < model_.scenes.size(); ++s) collect(problems, [&] {
             for (int n : model_.scenes[s].nodes)
                 checkIndex(n, model_.nodes, "scene[" + std::to_string(s) + "].nodes", false);
-        checkNodeGraph();
+        });
+        if (!problems.empty()) fail(joinProblems(problems));
+        checkNodeGraph();  // needs every child index in range
     }
 
     void validateAccessor(int index) const {

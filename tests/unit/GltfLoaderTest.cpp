@@ -362,3 +362,18 @@ TEST(GltfLoader, EveryInvalidCameraAndLightIsNamed) {
     EXPECT_NE(many.find("; and 3 more"), std::string::npos) << many;
     EXPECT_EQ(many.find('\n'), std::string::npos) << many;
 }
+
+// Issue 25: the checks after parsing (ranges, references) name every bad
+// object too, not only the first.
+TEST(GltfLoader, EveryBadAccessorAndReferenceIsNamed) {
+    TriangleGltf t;
+    json j = t.build();
+    j["accessors"][0]["count"] = 30;
+    j["accessors"][1]["count"] = 40;
+    j["nodes"].push_back({{"mesh", 7}});
+    const std::string e = errorOf(write("accessors-range.gltf", j));
+    EXPECT_NE(e.find("accessors-range.gltf: accessor[0] reads 360 bytes but bufferView[0] has only 36; "
+                     "accessor[1] reads 80 bytes but bufferView[1] has only 6; node[1].mesh refers to index 7 but there are only 1"),
+              std::string::npos)
+        << e;
+}
