@@ -175,6 +175,7 @@ public:
     GltfImport import(const glm::mat4& root, bool lightsAndCamera) {
         load();
         validate();
+        noteInvalid();
         importImages();
         importMaterials();
         importMeshes();
@@ -347,6 +348,64 @@ private:
         });
         if (!problems.empty()) fail(joinProblems(problems));
         checkNodeGraph();  // needs every child index in range
+    }
+
+    // Rules of the spec ("Skins", "Morph Targets") whose breaking does not
+    // stop the file from drawing, since the workbench draws neither skins nor
+    // morph targets: named for the "invalid glTF (drawn anyway)" warning.
+    void noteInvalid() {
+        auto targetCount = [&](size_t mesh) { return model_.meshes[mesh].primitives.empty() ? size_t(0)
+                                                                                               : model_.meshes[mesh].primitives[0].targets.size(); };
+        for (size_t m = 0; m < model_.meshes.size(); ++m) {
+            const auto& mesh = model_.meshes[m];
+            const std::string what = "meshes[" + std::to_string(m) + "]";
+            for (size_t p = 1; p < mesh.primitives.size(); ++p)
+                if (mesh.primitives[p].targets.size() != targetCount(m)) {
+                    invalid_.push_back(what + ": primitive 0 has " + std::to_string(targetCount(m)) + " morph target(s), primitive " +
+                                       std::to_string(p) + " " + std::to_string(mesh.primitives[p].targets.size()) +
+                                       " (spec: every primitive of a mesh has the same number)");
+                    break;
+                }
+            if (!mesh.weights.empty() && mesh.weights.size() != targetCount(m))
+                invalid_.push_back(what + ".weights: " + std::to_string(mesh.weights.size()) + " weight(s) for " +
+                                   std::to_string(targetCount(m)) + " morph target(s) (spec: one weight per morph target)");
+        }
+        for (size_t i = 0; i < model_.skins.size(); ++i)
+            for (int joint : model_.skins[i].joints)
+                if (joint < 0 || static_cast<size_t>(joint) >= model_.nodes.size()) {
+                    invalid_.push_back("skins[" + std::to_string(i) + "].joints: refers to node " + std::to_string(joint) +
+                                       " but there are only " + std::to_string(model_.nodes.size()));
+                    break;
+                }
+        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+            const auto& n = model_.nodes[i];
+            const std::string what = "nodes[" + std::to_string(i) + "]";
+            if (n.skin >= 0) {
+                if (static_cast<size_t>(n.skin) >= model_.skins.size())
+                    invalid_.push_back(what + ".skin: refers to skin " + std::to_string(n.skin) + " but there are only " +
+                                       std::to_string(model_.skins.size()));
+                else if (n.mesh < 0)
+                    invalid_.push_back(what + ": has skin " + std::to_string(n.skin) +
+                                       " but no mesh (spec: a node with a skin has a mesh)");
+                else
+                    for (size_t p = 0; p < model_.meshes[n.mesh].primitives.size(); ++p) {
+                        const auto& attrs = model_.meshes[n.mesh].primitives[p].attributes;
+                        if (attrs.count("JOINTS_0") && attrs.count("WEIGHTS_0")) continue;
+                        invalid_.push_back(what + ": has skin " + std::to_string(n.skin) + " but mesh " + std::to_string(n.mesh) +
+                                           " primitive " + std::to_string(p) +
+                                           " has no JOINTS_0 and WEIGHTS_0 (spec: the primitives of a skinned node's mesh have both)");
+                        break;
+                    }
+            }
+            if (!n.weights.empty()) {
+                if (n.mesh < 0)
+                    invalid_.push_back(what + ".weights: set on a node without a mesh (spec: weights need a mesh)");
+                else if (n.weights.size() != targetCount(static_cast<size_t>(n.mesh)))
+                    invalid_.push_back(what + ".weights: " + std::to_string(n.weights.size()) + " weight(s) for the " +
+                                       std::to_string(targetCount(static_cast<size_t>(n.mesh))) + " morph target(s) of mesh " +
+                                       std::to_string(n.mesh) + " (spec: one weight per morph target)");
+            }
+        }
     }
 
     void validateAccessor(int index) const {

@@ -170,7 +170,11 @@ public:
         forEach("images", [&](const json& o, const std::string& w) { image(o, w); });
         forEach("materials", [&](const json& o, const std::string& w) { material(o, w); });
         forEach("meshes", [&](const json& o, const std::string& w) { mesh(o, w); });
-        forEach("nodes", [&](const json& o, const std::string& w) { indexArray(o, w, "children", false); });
+        forEach("nodes", [&](const json& o, const std::string& w) {
+            indexArray(o, w, "children", false);
+            if (o.contains("matrix") && (o.contains("translation") || o.contains("rotation") || o.contains("scale")))
+                invalid_.push_back(w + ": has both 'matrix' and translation/rotation/scale (spec: one or the other); the matrix is used");
+        });
         forEach("samplers", [](const json&, const std::string&) {});
         forEach("scenes", [&](const json& o, const std::string& w) { indexArray(o, w, "nodes", false); });
         forEach("skins", [&](const json& o, const std::string& w) {

@@ -16,9 +16,9 @@
 //    enums) are integers in their range: not negative, not fractional,
 //    within what the reader stores (an index fits an int; a size 2^53 - 1),
 //    and enums one of their values.
-// A break that the importer reads past (an accessor component type the spec
-// does not allow but the reader decodes, a sampler enum it replaces by the
-// default) is added to `invalid` instead, for the "invalid glTF (drawn
+// A break that the importer reads past (a sampler or buffer view enum it
+// replaces by the default, an image without its mimeType, a node with both
+// a matrix and TRS) is added to `invalid` instead, for the "invalid glTF (drawn
 // anyway)" warning.
 #include <nlohmann/json.hpp>
 #include <string>

@@ -98,6 +98,27 @@ TEST(ValidationCli, GltfSchemaBreaksAreOneLineNamingEachObject) {
                   "got -1; skins[0]: required property 'joints' is missing");
 }
 
+// Issue 25: invalid but drawable: rendered (exit 0), with a warning that
+// calls the file invalid and names the rule and the object.
+TEST(ValidationCli, InvalidButDrawableGltfRendersWithAWarningNamingTheRule) {
+    const fs::path scene = writeText("skin-no-mesh.gltf", R"({"asset": {"version": "2.0"},
+        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "skins": [{"joints": [0]}],
+        "nodes": [{"mesh": 0}, {"skin": 0}], "scenes": [{"nodes": [0, 1]}], "scene": 0})");
+    const fs::path out = dw::test::tempDir() / "skin-no-mesh.png";
+    const auto r = dw::test::runWorkbench("render --size 160x90 --scene " + scene.string() + " --out " + out.string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_NE(r.err.find("warning: " + scene.string() +
+                         ": invalid glTF (drawn anyway): nodes[1]: has skin 0 but no mesh (spec: a node with a skin has a mesh)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("ignored (not supported by the workbench): 1 skin(s)"), std::string::npos) << r.err;
+}
+
 TEST(ValidationCli, DeepNestingIsOneLineInEveryReader) {
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
     for (const auto& [args, name] : std::initializer_list<std::pair<std::string, std::string>>{
