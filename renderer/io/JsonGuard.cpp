@@ -103,7 +103,14 @@ void checkJsonText(std::string_view text, const std::string& source, const JsonG
                 // ("3.4e381" of "3.4e381e4"): check it before giving up on the rest.
                 if (end == token.c_str()) return;
                 const std::string number(token.c_str(), static_cast<std::size_t>(end - token.c_str()));
-                if (errno == ERANGE && std::isinf(v))
+                const bool beyondDouble = errno == ERANGE && std::isinf(v);
+                if ((beyondDouble || (options.numbersAreFloats && std::fabs(v) > static_cast<double>(FLT_MAX))) &&
+                    options.integerProblem) {
+                    const std::string path = pathOf(stack);
+                    if (const std::string problem = options.integerProblem(path, v, number); !problem.empty())
+                        throw FileError(source, path + ": " + problem);
+                }
+                if (beyondDouble)
                     throw FileError(source, pathOf(stack) + ": " + number + " is too large for any number the workbench reads (" +
                                                 textPosition(text, i + 1) + ")");
                 if (options.numbersAreFloats && std::fabs(v) > static_cast<double>(FLT_MAX))

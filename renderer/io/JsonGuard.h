@@ -12,6 +12,7 @@
 // stops quietly at the first byte it does not expect.
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,11 @@ constexpr int kMaxJsonDepth = 128;
 struct JsonGuardOptions {
     int maxDepth = kMaxJsonDepth;
     bool numbersAreFloats = true;  // refuse numbers beyond the 32-bit float range
+    // For formats with integer fields (glTF's counts, offsets, indices): given
+    // the JSON path of a number beyond a float (or a double), its value and
+    // its text, what is wrong with it as that field's integer, or empty when
+    // the field is not an integer (then the float message stands).
+    std::function<std::string(const std::string& path, double value, const std::string& number)> integerProblem;
 };
 
 // Throws FileError(source, "<json path>: <problem>"), e.g.

@@ -1,13 +1,16 @@
 #include "renderer/scene/GltfCheck.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "renderer/Error.h"
 #include "renderer/io/FloatCheck.h"
+#include "renderer/scene/GltfSchema.h"
 
 namespace dw {
 
@@ -25,24 +28,47 @@ constexpr double kPi = 3.14159265358979323846;
 // Exporters write pi/2 rounded to a 32-bit float (1.5707963705...).
 constexpr double kRightAngleTolerance = 1e-6;
 
+// One object's first problem: the checks of that object stop there, the
+// other objects are still checked (every bad camera is named, not the last).
+struct ObjectProblem {
+    std::string text;
+};
+
 class ValueChecker {
 public:
-    ValueChecker(const json& root, const std::string& path) : root_(root), path_(path) {}
+    ValueChecker(const json& root, std::vector<std::string>& problems) : root_(root), problems_(problems) {}
 
     void run() {
         checkUris("buffers");
         checkUris("images");
         if (root_.contains("cameras") && root_["cameras"].is_array())
-            for (std::size_t i = 0; i < root_["cameras"].size(); ++i) checkCamera(root_["cameras"][i], "cameras[" + std::to_string(i) + "]");
+            for (std::size_t i = 0; i < root_["cameras"].size(); ++i) {
+                const std::string where = "cameras[" + std::to_string(i) + "]";
+                attempt(where, [&] { checkCamera(root_["cameras"][i], where); });
+            }
         const json* lights = find(root_, {"extensions", "KHR_lights_punctual", "lights"});
         if (lights && lights->is_array())
-            for (std::size_t i = 0; i < lights->size(); ++i)
-                checkLight((*lights)[i], "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]");
+            for (std::size_t i = 0; i < lights->size(); ++i) {
+                const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+                attempt(where, [&] { checkLight((*lights)[i], where); });
+            }
     }
 
 private:
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw FileError(path_, where + ": " + what);
+        throw ObjectProblem{where + ": " + what};
+    }
+
+    // Runs one object's checks unless the schema check already named it.
+    template <typename F>
+    void attempt(const std::string& where, F check) {
+        for (const std::string& p : problems_)
+            if (p.rfind(where + ":", 0) == 0 || p.rfind(where + ".", 0) == 0) return;
+        try {
+            check();
+        } catch (const ObjectProblem& p) {
+            problems_.push_back(p.text);
+        }
     }
 
     static const json* find(const json& j, std::initializer_list<const char*> keys) {
@@ -65,7 +91,7 @@ private:
         return d;
     }
 
-    void checkUris(const char* array) const {
+    void checkUris(const char* array) {
         if (!root_.contains(array) || !root_[array].is_array()) return;
         const json& a = root_[array];
         for (std::size_t i = 0; i < a.size(); ++i) {
@@ -74,7 +100,7 @@ private:
             if (uri.rfind("data:", 0) != 0) continue;
             std::string problem;
             if (!isDecodableDataUri(uri, problem))
-                fail(std::string(array) + "[" + std::to_string(i) + "].uri", "malformed data: URI: " + problem);
+                problems_.push_back(std::string(array) + "[" + std::to_string(i) + "].uri: malformed data: URI: " + problem);
         }
     }
 
@@ -146,33 +172,88 @@ private:
     }
 
     const json& root_;
-    const std::string& path_;
+    std::vector<std::string>& problems_;
 };
 
 }  // namespace
 
-std::string_view glbJsonChunk(const std::string& bytes, const std::string& path) {
+namespace {
+
+// A chunk type as the spec writes it: 0x4E4F534A ("JSON").
+std::string chunkTypeName(std::uint32_t type) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%08X", type);
+    std::string text;
+    for (int i = 0; i < 4; ++i) {
+        const unsigned char c = static_cast<unsigned char>((type >> (8 * i)) & 0xFF);
+        if (c == 0) text += "\\0";
+        else if (c >= 0x20 && c < 0x7F) text += static_cast<char>(c);
+        else return hex;
+    }
+    return std::string(hex) + " (\"" + text + "\")";
+}
+
+constexpr std::uint32_t kJsonChunk = 0x4E4F534Au, kBinChunk = 0x004E4942u;
+
+}  // namespace
+
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path, std::vector<std::string>* invalid) {
     auto fail = [&](const std::string& what) { throw FileError(path, "malformed GLB: " + what); };
-    if (bytes.size() < 12)
-        fail("the file is " + std::to_string(bytes.size()) + " bytes, shorter than the 12-byte GLB header");
+    auto note = [&](const std::string& what) {
+        if (invalid) invalid->push_back("GLB: " + what);
+    };
+    const std::size_t size = bytes.size();
+    if (size < 12) fail("the file is " + std::to_string(size) + " bytes, shorter than the 12-byte GLB header");
     if (bytes.compare(0, 4, "glTF") != 0) fail("the file does not start with the GLB magic \"glTF\"");
     const std::uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
     if (version != 2) fail("GLB version " + std::to_string(version) + " (only version 2 is read)");
-    if (length > bytes.size())
-        fail("the header says " + std::to_string(length) + " bytes but the file has " + std::to_string(bytes.size()));
-    if (length < 20) fail("no JSON chunk: the file ends after the header");
+    // Spec: "length is the total length of the Binary glTF, including Header
+    // and all Chunks, in bytes". Either way round the file is not what its
+    // header says: cut short, or the length field (or the file) is wrong.
+    if (length != size)
+        fail("the header declares a total length of " + std::to_string(length) + " bytes but the file has " +
+             std::to_string(size) + (length > size ? " (cut short?)" : ""));
+    if (size == 12) fail("no JSON chunk: the file ends after the 12-byte header");
+    if (size < 20)
+        fail("the JSON chunk's header is incomplete: " + std::to_string(size - 12) +
+             " byte(s) after the 12-byte file header, a chunk header takes 8");
     const std::uint32_t jsonLength = readU32(bytes, 12), jsonType = readU32(bytes, 16);
-    if (jsonType != 0x4E4F534Au) fail("the first chunk is not a JSON chunk");
-    if (20ull + jsonLength > length)
-        fail("the JSON chunk (" + std::to_string(jsonLength) + " bytes) runs past the end of the file (" +
-             std::to_string(length) + " bytes)");
-    const std::size_t binAt = 20ull + jsonLength;
-    if (binAt < length) {
-        if (binAt + 8 > length) fail("the chunk after the JSON chunk has an incomplete header");
-        const std::uint64_t binLength = readU32(bytes, binAt);
-        if (binAt + 8 + binLength > length)
-            fail("the binary chunk (" + std::to_string(binLength) + " bytes) runs past the end of the file (" +
-                 std::to_string(length) + " bytes)");
+    if (jsonType != kJsonChunk)
+        fail("the first chunk is of type " + chunkTypeName(jsonType) + ", not JSON (0x4E4F534A): the JSON chunk must come first");
+    if (jsonLength == 0) fail("the JSON chunk is empty (chunkLength 0)");
+    if (jsonLength > size - 20)
+        fail("the JSON chunk declares " + std::to_string(jsonLength) + " bytes but only " + std::to_string(size - 20) +
+             " follow its header (the file has " + std::to_string(size) + ")");
+    if (jsonLength % 4 != 0)
+        note("the JSON chunk's length (" + std::to_string(jsonLength) +
+             " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)");
+    // The chunks after the JSON chunk: an optional BIN chunk first, then any
+    // of unknown types (which readers must skip); each must fit the file.
+    std::size_t at = 20ull + jsonLength;
+    for (int index = 1; at < size; ++index) {
+        const std::string where = "chunk " + std::to_string(index) + " (at byte " + std::to_string(at) + ")";
+        if (size - at < 8)
+            fail(where + ": " + std::to_string(size - at) + " byte(s) left, too few for a chunk header (8 bytes)");
+        const std::uint32_t chunkLength = readU32(bytes, at), type = readU32(bytes, at + 4);
+        const std::string name = type == kBinChunk ? "the binary chunk" : "chunk " + std::to_string(index);
+        if (chunkLength > size - at - 8)
+            fail(name + " (at byte " + std::to_string(at) + ") declares " + std::to_string(chunkLength) +
+                 " bytes but only " + std::to_string(size - at - 8) + " follow its header (the file has " +
+                 std::to_string(size) + ")");
+        if (index == 1 && type != kBinChunk)
+            fail(where + " is of type " + chunkTypeName(type) +
+                 ", not BIN (0x004E4942): the reader needs the binary chunk right after the JSON chunk");
+        if (type == kJsonChunk) fail(where + " is a second JSON chunk (a GLB has exactly one)");
+        if (type == kBinChunk && index > 1) fail(where + " is a second binary chunk (a GLB has at most one)");
+        if (type == kBinChunk && chunkLength == 0)
+            fail("the binary chunk is empty (chunkLength 0; spec: an empty binary chunk is left out)");
+        if (chunkLength % 4 != 0) {
+            const std::string what = name + "'s length (" + std::to_string(chunkLength) +
+                                     " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)";
+            if (type == kBinChunk) fail(what);  // the reader refuses it
+            note(what);
+        }
+        at += 8ull + chunkLength;
     }
     return std::string_view(bytes).substr(20, jsonLength);
 }
@@ -219,6 +300,44 @@ bool isDecodableDataUri(const std::string& uri, std::string& problem) {
     return true;
 }
 
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path) { ValueChecker(gltf, path).run(); }
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid) {
+    std::vector<std::string> problems, readPast;
+    checkGltfSchema(gltf, problems, readPast);
+    ValueChecker(gltf, problems).run();
+    if (!problems.empty()) throw FileError(path, joinProblems(problems));
+    if (invalid) invalid->insert(invalid->end(), readPast.begin(), readPast.end());
+}
+
+std::string joinProblems(std::vector<std::string> problems) {
+    // In the order of the objects' JSON paths, indices by number (cameras[2]
+    // before cameras[10]); one object's problems in the order found.
+    auto less = [](const std::string& a, const std::string& b) {
+        const std::string pa = a.substr(0, a.find(": ")), pb = b.substr(0, b.find(": "));
+        std::size_t i = 0, k = 0;
+        while (i < pa.size() && k < pb.size()) {
+            if (std::isdigit(static_cast<unsigned char>(pa[i])) && std::isdigit(static_cast<unsigned char>(pb[k]))) {
+                std::size_t ei = i, ek = k;
+                while (ei < pa.size() && std::isdigit(static_cast<unsigned char>(pa[ei]))) ++ei;
+                while (ek < pb.size() && std::isdigit(static_cast<unsigned char>(pb[ek]))) ++ek;
+                const std::string na = pa.substr(i, ei - i), nb = pb.substr(k, ek - k);
+                if (na.size() != nb.size()) return na.size() < nb.size();
+                if (na != nb) return na < nb;
+                i = ei;
+                k = ek;
+            } else {
+                if (pa[i] != pb[k]) return pa[i] < pb[k];
+                ++i;
+                ++k;
+            }
+        }
+        return pa.size() - i < pb.size() - k;
+    };
+    std::stable_sort(problems.begin(), problems.end(), less);
+    constexpr std::size_t kShown = 12;
+    std::string out;
+    for (std::size_t i = 0; i < problems.size() && i < kShown; ++i) out += (i ? "; " : "") + problems[i];
+    if (problems.size() > kShown) out += "; and " + std::to_string(problems.size() - kShown) + " more";
+    return out;
+}
 
 }  // namespace dw

@@ -9,19 +9,32 @@
 //    zfar > znear, aspectRatio > 0 (spec "cameras");
 //  - KHR_lights_punctual: known type, color and intensity not negative,
 //    range > 0, spots 0 <= innerConeAngle < outerConeAngle <= pi/2.
-// Every function throws FileError(path, "<what>: <problem>").
+// Every function throws FileError(path, "<what>: <problem>"); checkGltfValues
+// names every object with a problem, not only the first or the last.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dw {
 
 // The JSON chunk of a .glb after checking the 12-byte header (magic "glTF",
-// version 2, length not past the file) and the chunk headers.
-std::string_view glbJsonChunk(const std::string& bytes, const std::string& path);
+// version 2, a length that is the file's size) and every chunk header (JSON
+// first, then at most one BIN chunk, each within the file). What breaks the
+// spec but still reads (a chunk length that is not a multiple of 4) is added
+// to `invalid`, when given, as "GLB: <what>".
+std::string_view glbJsonChunk(const std::string& bytes, const std::string& path,
+                              std::vector<std::string>* invalid = nullptr);
 
-// The value checks above on the parsed glTF JSON.
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path);
+// The value checks above and the schema's (GltfSchema.h) on the parsed glTF
+// JSON. Every object's first problem is collected (all bad cameras, lights,
+// accessors...) and thrown as one FileError, "<what>; <what>; ..."; rules the
+// importer reads past are added to `invalid`, when given.
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid = nullptr);
+
+// Problems ("<json path>: <what>") in the order of their paths, joined with
+// "; ", at most 12 shown ("...; and 3 more").
+std::string joinProblems(std::vector<std::string> problems);
 
 // Whether `uri` is a data: URI tinygltf decodes; `problem` says why not.
 bool isDecodableDataUri(const std::string& uri, std::string& problem);

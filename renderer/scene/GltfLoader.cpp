@@ -25,6 +25,7 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/GltfCheck.h"
+#include "renderer/scene/GltfSchema.h"
 #include "renderer/scene/NormalGenerator.h"
 #include "renderer/scene/TangentGenerator.h"
 
@@ -59,8 +60,12 @@ public:
     // (the same bytes, unless hideZeroIndexAccessors rewrote the JSON).
     std::string precheck(const std::string& bytes) {
         const bool glb = isBinary(bytes);
-        const std::string_view text = glb ? glbJsonChunk(bytes, path_) : std::string_view(bytes);
-        checkJsonText(text, path_);  // nesting depth, numbers beyond a float, by JSON path
+        const std::string_view text = glb ? glbJsonChunk(bytes, path_, &invalid_) : std::string_view(bytes);
+        // Nesting depth, numbers beyond a float, by JSON path; integer
+        // properties beyond a float are named as integers (GltfSchema.h).
+        JsonGuardOptions guard;
+        guard.integerProblem = gltfIntegerProblem;
+        checkJsonText(text, path_, guard);
         nlohmann::json j;
         try {
             j = nlohmann::json::parse(text);
@@ -70,7 +75,7 @@ public:
             fail("unreadable JSON: " + jsonErrorText(e));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
-        checkGltfValues(j, path_);  // cameras, lights, data: URIs (GltfCheck.h)
+        checkGltfValues(j, path_, &invalid_);  // schema, cameras, lights, data: URIs (GltfCheck.h)
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
             for (const auto& e : j["extensionsRequired"])
                 if (e.is_string() && !isSupportedExtension(e.get<std::string>()))
@@ -170,11 +175,13 @@ public:
     GltfImport import(const glm::mat4& root, bool lightsAndCamera) {
         load();
         validate();
+        noteInvalid();
         importImages();
         importMaterials();
         importMeshes();
         GltfImport result;
         walkScene(root, lightsAndCamera, result);
+        warnInvalid();
         warnIgnored();
         return result;
     }
@@ -259,14 +266,27 @@ private:
                  std::to_string(v.size()));
     }
 
+    // Runs one object's checks; its first problem goes into `problems` (without
+    // the file name) and the other objects are still checked.
+    template <typename F>
+    void collect(std::vector<std::string>& problems, F check) const {
+        try {
+            check();
+        } catch (const FileError& e) {
+            const std::string text = e.what();
+            problems.push_back(text.rfind(path_ + ": ", 0) == 0 ? text.substr(path_.size() + 2) : text);
+        }
+    }
+
     void validate() const {
         for (const auto& ext : model_.extensionsRequired)
             if (!isSupportedExtension(ext)) fail("requires glTF extension " + ext + ", which the workbench does not support");
+        std::vector<std::string> problems;
         for (size_t i = 0; i < model_.buffers.size(); ++i) {
             if (model_.buffers[i].data.empty())
-                fail("buffer[" + std::to_string(i) + "] has no data (missing .bin file?)");
+                problems.push_back("buffer[" + std::to_string(i) + "] has no data (missing .bin file?)");
         }
-        for (size_t i = 0; i < model_.bufferViews.size(); ++i) {
+        for (size_t i = 0; i < model_.bufferViews.size(); ++i) collect(problems, [&] {
             const auto& bv = model_.bufferViews[i];
             const std::string what = "bufferView[" + std::to_string(i) + "]";
             checkIndex(bv.buffer, model_.buffers, what + ".buffer", false);
@@ -275,25 +295,26 @@ private:
                 fail(what + " (offset " + std::to_string(bv.byteOffset) + ", length " +
                      std::to_string(bv.byteLength) + ") runs past the end of buffer[" +
                      std::to_string(bv.buffer) + "] (" + std::to_string(size) + " bytes)");
-        }
-        for (size_t i = 0; i < model_.accessors.size(); ++i) validateAccessor(static_cast<int>(i));
+        });
+        for (size_t i = 0; i < model_.accessors.size(); ++i)
+            collect(problems, [&] { validateAccessor(static_cast<int>(i)); });
         for (size_t m = 0; m < model_.meshes.size(); ++m) {
-            for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+            for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) collect(problems, [&] {
                 const auto& prim = model_.meshes[m].primitives[p];
                 const std::string what = "mesh[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
                 for (const auto& [name, acc] : prim.attributes)
                     checkIndex(acc, model_.accessors, what + ".attributes." + name, false);
                 checkIndex(prim.indices, model_.accessors, what + ".indices");
                 checkIndex(prim.material, model_.materials, what + ".material");
-            }
+            });
         }
-        for (size_t i = 0; i < model_.textures.size(); ++i) {
+        for (size_t i = 0; i < model_.textures.size(); ++i) collect(problems, [&] {
             checkIndex(model_.textures[i].source, model_.images, "texture[" + std::to_string(i) + "].source");
             checkIndex(model_.textures[i].sampler, model_.samplers, "texture[" + std::to_string(i) + "].sampler");
             checkIndex(webpSource(model_.textures[i]), model_.images,
                        "texture[" + std::to_string(i) + "].extensions.EXT_texture_webp.source");
-        }
-        for (size_t i = 0; i < model_.materials.size(); ++i) {
+        });
+        for (size_t i = 0; i < model_.materials.size(); ++i) collect(problems, [&] {
             const auto& m = model_.materials[i];
             const std::string what = "material[" + std::to_string(i) + "]";
             checkIndex(m.pbrMetallicRoughness.baseColorTexture.index, model_.textures, what + ".baseColorTexture");
@@ -302,8 +323,8 @@ private:
             checkIndex(m.normalTexture.index, model_.textures, what + ".normalTexture");
             checkIndex(m.emissiveTexture.index, model_.textures, what + ".emissiveTexture");
             checkIndex(m.occlusionTexture.index, model_.textures, what + ".occlusionTexture");
-        }
-        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+        });
+        for (size_t i = 0; i < model_.nodes.size(); ++i) collect(problems, [&] {
             const auto& n = model_.nodes[i];
             const std::string what = "node[" + std::to_string(i) + "]";
             checkIndex(n.mesh, model_.meshes, what + ".mesh");
@@ -320,11 +341,71 @@ private:
             finite(n.translation, 3, "translation");
             finite(n.rotation, 4, "rotation");
             finite(n.scale, 3, "scale");
-        }
-        for (size_t s = 0; s < model_.scenes.size(); ++s)
+        });
+        for (size_t s = 0; s < model_.scenes.size(); ++s) collect(problems, [&] {
             for (int n : model_.scenes[s].nodes)
                 checkIndex(n, model_.nodes, "scene[" + std::to_string(s) + "].nodes", false);
-        checkNodeGraph();
+        });
+        if (!problems.empty()) fail(joinProblems(problems));
+        checkNodeGraph();  // needs every child index in range
+    }
+
+    // Rules of the spec ("Skins", "Morph Targets") whose breaking does not
+    // stop the file from drawing, since the workbench draws neither skins nor
+    // morph targets: named for the "invalid glTF (drawn anyway)" warning.
+    void noteInvalid() {
+        auto targetCount = [&](size_t mesh) { return model_.meshes[mesh].primitives.empty() ? size_t(0)
+                                                                                               : model_.meshes[mesh].primitives[0].targets.size(); };
+        for (size_t m = 0; m < model_.meshes.size(); ++m) {
+            const auto& mesh = model_.meshes[m];
+            const std::string what = "meshes[" + std::to_string(m) + "]";
+            for (size_t p = 1; p < mesh.primitives.size(); ++p)
+                if (mesh.primitives[p].targets.size() != targetCount(m)) {
+                    invalid_.push_back(what + ": primitive 0 has " + std::to_string(targetCount(m)) + " morph target(s), primitive " +
+                                       std::to_string(p) + " " + std::to_string(mesh.primitives[p].targets.size()) +
+                                       " (spec: every primitive of a mesh has the same number)");
+                    break;
+                }
+            if (!mesh.weights.empty() && mesh.weights.size() != targetCount(m))
+                invalid_.push_back(what + ".weights: " + std::to_string(mesh.weights.size()) + " weight(s) for " +
+                                   std::to_string(targetCount(m)) + " morph target(s) (spec: one weight per morph target)");
+        }
+        for (size_t i = 0; i < model_.skins.size(); ++i)
+            for (int joint : model_.skins[i].joints)
+                if (joint < 0 || static_cast<size_t>(joint) >= model_.nodes.size()) {
+                    invalid_.push_back("skins[" + std::to_string(i) + "].joints: refers to node " + std::to_string(joint) +
+                                       " but there are only " + std::to_string(model_.nodes.size()));
+                    break;
+                }
+        for (size_t i = 0; i < model_.nodes.size(); ++i) {
+            const auto& n = model_.nodes[i];
+            const std::string what = "nodes[" + std::to_string(i) + "]";
+            if (n.skin >= 0) {
+                if (static_cast<size_t>(n.skin) >= model_.skins.size())
+                    invalid_.push_back(what + ".skin: refers to skin " + std::to_string(n.skin) + " but there are only " +
+                                       std::to_string(model_.skins.size()));
+                else if (n.mesh < 0)
+                    invalid_.push_back(what + ": has skin " + std::to_string(n.skin) +
+                                       " but no mesh (spec: a node with a skin has a mesh)");
+                else
+                    for (size_t p = 0; p < model_.meshes[n.mesh].primitives.size(); ++p) {
+                        const auto& attrs = model_.meshes[n.mesh].primitives[p].attributes;
+                        if (attrs.count("JOINTS_0") && attrs.count("WEIGHTS_0")) continue;
+                        invalid_.push_back(what + ": has skin " + std::to_string(n.skin) + " but mesh " + std::to_string(n.mesh) +
+                                           " primitive " + std::to_string(p) +
+                                           " has no JOINTS_0 and WEIGHTS_0 (spec: the primitives of a skinned node's mesh have both)");
+                        break;
+                    }
+            }
+            if (!n.weights.empty()) {
+                if (n.mesh < 0)
+                    invalid_.push_back(what + ".weights: set on a node without a mesh (spec: weights need a mesh)");
+                else if (n.weights.size() != targetCount(static_cast<size_t>(n.mesh)))
+                    invalid_.push_back(what + ".weights: " + std::to_string(n.weights.size()) + " weight(s) for the " +
+                                       std::to_string(targetCount(static_cast<size_t>(n.mesh))) + " morph target(s) of mesh " +
+                                       std::to_string(n.mesh) + " (spec: one weight per morph target)");
+            }
+        }
     }
 
     void validateAccessor(int index) const {
@@ -916,6 +997,17 @@ private:
         result.hasCamera = true;
     }
 
+    // One warning line naming every rule of the glTF 2.0 spec the file breaks
+    // in a way the importer reads past (so the file still draws, but a user
+    // learns that the file, not the workbench, is wrong), apart from the
+    // valid features the workbench does not support (warnIgnored).
+    void warnInvalid() {
+        if (invalid_.empty()) return;
+        std::string line = path_ + ": invalid glTF (drawn anyway): ";
+        for (size_t i = 0; i < invalid_.size(); ++i) line += (i ? "; " : "") + invalid_[i];
+        scene_.warnings.push_back(line);
+    }
+
     // One warning line naming everything the file uses that the workbench
     // does not draw, so a user knows why the picture differs from a viewer's.
     void warnIgnored() {
@@ -947,6 +1039,7 @@ private:
     Scene& scene_;
     tinygltf::Model model_;
     std::vector<HiddenIndices> hiddenIndices_;
+    std::vector<std::string> invalid_;  // spec rules broken but read past (warnInvalid)
     mutable bool ignoredUvSets_ = false;
     std::string imageError_;
     int imageBase_ = 0, materialBase_ = 0, defaultMaterial_ = -1;

@@ -74,6 +74,51 @@ TEST(ValidationCli, ImageBytesPastTheBufferNameTheImageAndTheRange) {
                   "image[0]", "bufferView[3] (bytes 840 to 3273) runs past the end of buffer[0] (900 bytes)");
 }
 
+TEST(ValidationCli, GlbHeaderDisagreeingWithTheFileSaysHow) {
+    expectRefused("--scene " + regression("gltf", "chunk_too_big.glb").string(), "chunk_too_big.glb", "malformed GLB",
+                  "the header declares a total length of 13 bytes but the file has 48");
+}
+
+// Issue 25: a required property tinygltf refuses without a reason, and every
+// bad object of a kind, on one line naming the file and the objects.
+TEST(ValidationCli, GltfSchemaBreaksAreOneLineNamingEachObject) {
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "skins": [{"name": "rig"}], "cameras": [
+        {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": -1}}],
+        "bufferViews": [{"buffer": 0, "byteLength": 1e39}]})";
+    expectRefused("--scene " + writeText("schema.gltf", gltf).string(), "schema.gltf", "bufferViews[0].byteLength",
+                  "1e39 is out of range (a byte length from 1 to 9007199254740991)");
+    const std::string rest = R"({"asset": {"version": "2.0"}, "skins": [{"name": "rig"}], "cameras": [
+        {"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+        {"type": "perspective", "perspective": {"yfov": 0.8, "znear": -1}}]})";
+    expectRefused("--scene " + writeText("objects.gltf", rest).string(), "objects.gltf", "cameras[0].perspective.yfov",
+                  "must be in (0, 179) degrees, got 0 rad (0 degrees); cameras[2].perspective.znear: must be greater than 0, "
+                  "got -1; skins[0]: required property 'joints' is missing");
+}
+
+// Issue 25: invalid but drawable: rendered (exit 0), with a warning that
+// calls the file invalid and names the rule and the object.
+TEST(ValidationCli, InvalidButDrawableGltfRendersWithAWarningNamingTheRule) {
+    const fs::path scene = writeText("skin-no-mesh.gltf", R"({"asset": {"version": "2.0"},
+        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "skins": [{"joints": [0]}],
+        "nodes": [{"mesh": 0}, {"skin": 0}], "scenes": [{"nodes": [0, 1]}], "scene": 0})");
+    const fs::path out = dw::test::tempDir() / "skin-no-mesh.png";
+    const auto r = dw::test::runWorkbench("render --size 160x90 --scene " + scene.string() + " --out " + out.string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_NE(r.err.find("warning: " + scene.string() +
+                         ": invalid glTF (drawn anyway): nodes[1]: has skin 0 but no mesh (spec: a node with a skin has a mesh)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("ignored (not supported by the workbench): 1 skin(s)"), std::string::npos) << r.err;
+}
+
 TEST(ValidationCli, DeepNestingIsOneLineInEveryReader) {
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
     for (const auto& [args, name] : std::initializer_list<std::pair<std::string, std::string>>{

@@ -8,6 +8,9 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <glm/glm.hpp>
@@ -279,6 +282,16 @@ TEST(ReaderValidation, GltfLightsFollowTheSceneJsonRules) {
 
 // ---- messages in the user's terms --------------------------------------------
 
+// A GLB of `chunks` (length field, type, data); the header's length is the
+// file's size unless `declared` is given.
+std::string glbOf(const std::vector<std::tuple<std::uint32_t, std::string, std::string>>& chunks, long declared = -1) {
+    auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    std::string body;
+    for (const auto& [length, type, data] : chunks) body += u32(length) + type + data;
+    const auto total = static_cast<std::uint32_t>(declared >= 0 ? declared : static_cast<long>(12 + body.size()));
+    return "glTF" + u32(2) + u32(total) + body;
+}
+
 TEST(ReaderValidation, GlbHeaderProblemsAreNamedAsSuch) {
     const std::string glb = "glTF" + std::string("\x02\0\0\0", 4);
     auto err = [](const std::string& name, const std::string& bytes) { return sceneError(writeText(name, bytes)); };
@@ -286,9 +299,80 @@ TEST(ReaderValidation, GlbHeaderProblemsAreNamedAsSuch) {
     EXPECT_HAS(err("magic.glb", "{\"asset\": {\"version\": \"2.0\"}}"), "magic.glb: malformed GLB: the file does not start with the GLB magic");
     EXPECT_HAS(err("v1.glb", "glTF" + std::string("\x01\0\0\0\x14\0\0\0", 8) + std::string(8, '\0')), "v1.glb: malformed GLB: GLB version 1");
     EXPECT_HAS(err("length.glb", glb + std::string("\xff\0\0\0", 4) + std::string(8, '\0')),
-               "length.glb: malformed GLB: the header says 255 bytes but the file has 20");
+               "length.glb: malformed GLB: the header declares a total length of 255 bytes but the file has 20 (cut short?)");
     EXPECT_HAS(err("chunk.glb", glb + std::string("\x20\0\0\0\x40\0\0\0JSON", 12) + std::string(12, ' ')),
-               "chunk.glb: malformed GLB: the JSON chunk (64 bytes) runs past the end of the file (32 bytes)");
+               "chunk.glb: malformed GLB: the JSON chunk declares 64 bytes but only 12 follow its header (the file has 32)");
+}
+
+// Each way a GLB's header and chunk headers can disagree with each other or
+// with the file names itself (the declared total against the file's size, a
+// chunk's length against what is left), not a neighbouring problem.
+TEST(ReaderValidation, EveryGlbInconsistencyNamesItself) {
+    const std::string text = R"({"asset":{"version":"2.0"}} )";  // 28 bytes
+    const std::string bin(8, '\0');
+    auto err = [](const std::string& name, const std::string& bytes) { return sceneError(writeText(name, bytes)); };
+    // The issue's chunk_too_big.glb: the header says 13 bytes, the file has 48 with a whole JSON chunk.
+    const std::string e = sceneError(regression("gltf", "chunk_too_big.glb"));
+    EXPECT_HAS(e, "chunk_too_big.glb: malformed GLB: the header declares a total length of 13 bytes but the file has 48");
+    EXPECT_EQ(e.find("ends after the header"), std::string::npos) << e;
+    EXPECT_HAS(err("long.glb", glbOf({{28, "JSON", text}}, 100)),
+               "long.glb: malformed GLB: the header declares a total length of 100 bytes but the file has 48 (cut short?)");
+    EXPECT_HAS(err("header-only.glb", glbOf({})), "header-only.glb: malformed GLB: no JSON chunk: the file ends after the 12-byte header");
+    EXPECT_HAS(err("half-chunk.glb", glbOf({}, 16) + std::string("\x1c\0\0\0", 4)),
+               "half-chunk.glb: malformed GLB: the JSON chunk's header is incomplete: 4 byte(s) after the 12-byte file header, a chunk header takes 8");
+    EXPECT_HAS(err("bin-first.glb", glbOf({{8, std::string("BIN\0", 4), bin}, {28, "JSON", text}})),
+               "bin-first.glb: malformed GLB: the first chunk is of type 0x004E4942 (\"BIN\\0\"), not JSON (0x4E4F534A)");
+    EXPECT_HAS(err("empty-text.glb", glbOf({{0, "JSON", ""}})), "empty-text.glb: malformed GLB: the JSON chunk is empty (chunkLength 0)");
+    EXPECT_HAS(err("text-long.glb", glbOf({{40, "JSON", text}})),
+               "text-long.glb: malformed GLB: the JSON chunk declares 40 bytes but only 28 follow its header (the file has 48)");
+    EXPECT_HAS(err("bin-long.glb", glbOf({{28, "JSON", text}, {16, std::string("BIN\0", 4), bin}})),
+               "bin-long.glb: malformed GLB: the binary chunk (at byte 48) declares 16 bytes but only 8 follow its header (the file has 64)");
+    EXPECT_HAS(err("tail.glb", glbOf({{28, "JSON", text}}, 52) + std::string(4, '\0')),
+               "tail.glb: malformed GLB: chunk 1 (at byte 48): 4 byte(s) left, too few for a chunk header (8 bytes)");
+    EXPECT_HAS(err("xyz.glb", glbOf({{28, "JSON", text}, {8, "XYZW", bin}})),
+               "xyz.glb: malformed GLB: chunk 1 (at byte 48) is of type 0x575A5958 (\"XYZW\"), not BIN (0x004E4942)");
+    EXPECT_HAS(err("two-bin.glb", glbOf({{28, "JSON", text}, {8, std::string("BIN\0", 4), bin}, {8, std::string("BIN\0", 4), bin}})),
+               "two-bin.glb: malformed GLB: chunk 2 (at byte 64) is a second binary chunk (a GLB has at most one)");
+    EXPECT_HAS(err("two-text.glb", glbOf({{28, "JSON", text}, {8, std::string("BIN\0", 4), bin}, {28, "JSON", text}})),
+               "two-text.glb: malformed GLB: chunk 2 (at byte 64) is a second JSON chunk (a GLB has exactly one)");
+    EXPECT_HAS(err("empty-bin.glb", glbOf({{28, "JSON", text}, {0, std::string("BIN\0", 4), ""}})),
+               "empty-bin.glb: malformed GLB: the binary chunk is empty (chunkLength 0");
+    EXPECT_HAS(err("bin-6.glb", glbOf({{28, "JSON", text}, {6, std::string("BIN\0", 4), std::string(6, '\0')}})),
+               "bin-6.glb: malformed GLB: the binary chunk's length (6 bytes) is not a multiple of 4");
+}
+
+// A JSON chunk whose length is not a multiple of 4 breaks the spec but reads:
+// drawn, with the file called invalid.
+TEST(ReaderValidation, UnalignedGlbJsonChunkIsReadAndCalledInvalid) {
+    std::string text = triangleGltf().dump();
+    if (text.size() % 4 == 0) text += ' ';
+    const fs::path p = writeText("unaligned.glb", glbOf({{static_cast<std::uint32_t>(text.size()), "JSON", text}}));
+    const Scene s = loadScene(p.string());
+    EXPECT_EQ(s.triangleCount(), 1u);
+    std::string all;
+    for (const auto& w : s.warnings) all += w + "\n";
+    EXPECT_HAS(all, "unaligned.glb: invalid glTF (drawn anyway): GLB: the JSON chunk's length (" + std::to_string(text.size()) +
+                        " bytes) is not a multiple of 4 (spec: chunks end on a 4-byte boundary)");
+}
+
+// What tinygltf refuses without a reason, integers out of range and several
+// bad objects at once: each named by file, object and rule (issue 25).
+TEST(ReaderValidation, GltfSchemaBreaksAreNamedByObject) {
+    json j = triangleGltf();
+    j["skins"] = json::array({{{"name", "rig"}}});
+    EXPECT_HAS(gltfError("nojoints.gltf", j), "nojoints.gltf: skins[0]: required property 'joints' is missing");
+    j = triangleGltf();
+    std::string text = j.dump();
+    const std::string count = "\"count\":3";
+    text.replace(text.find(count), count.size(), "\"count\":4e40");
+    const std::string e = sceneError(writeText("count.gltf", text));
+    EXPECT_HAS(e, "count.gltf: accessors[0].count: 4e40 is out of range (a count from 1 to 9007199254740991)");
+    EXPECT_EQ(e.find("32-bit float"), std::string::npos) << e;
+    j = withCamera(triangleGltf(), {{"yfov", 0}, {"znear", 0.1}});
+    j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}});
+    j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}}}});
+    EXPECT_HAS(gltfError("cams.gltf", j), "cams.gltf: cameras[0].perspective.yfov: must be in (0, 179) degrees, got 0 rad "
+                                          "(0 degrees); cameras[2].perspective: required property 'znear' is missing");
 }
 
 TEST(ReaderValidation, MalformedDataUriIsNotFileNotFound) {

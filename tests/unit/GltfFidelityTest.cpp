@@ -438,3 +438,48 @@ TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
             << e.what();
     }
 }
+
+// Issue 25: a file that breaks the spec where the workbench can read past it
+// (skins and morph targets it does not draw) is drawn, and one warning says
+// the file is invalid, naming each rule and object, apart from the valid
+// features the workbench does not support.
+TEST(GltfFidelity, InvalidButDrawableFilesAreDrawnAndCalledInvalid) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    json j = b.finish({{"POSITION", pos}}, -1, {json::object(), {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1}},
+                                                                 {"translation", {2, 0, 0}}}});
+    j["skins"] = json::array({{{"joints", {0}}}});
+    j["nodes"][0]["skin"] = 0;                              // its mesh has no JOINTS_0 / WEIGHTS_0
+    j["nodes"].push_back({{"skin", 0}});                    // a skin without a mesh
+    j["nodes"].push_back({{"weights", {0.5}}});             // weights without a mesh
+    j["meshes"][0]["weights"] = {0.25, 0.75};               // weights without morph targets
+    j["scenes"][0]["nodes"] = {0, 1, 2, 3};
+    Scene s;
+    importGltf(test::writeJson("invalid-drawable.gltf", j).string(), s, glm::mat4(1.0f), false);
+    EXPECT_EQ(s.instances.size(), 2u);  // drawn
+    EXPECT_FLOAT_EQ(s.instances[1].transform[3].x, 2.0f);
+    ASSERT_EQ(s.warnings.size(), 2u);
+    const std::string& w = s.warnings[0];
+    EXPECT_NE(w.find("invalid-drawable.gltf: invalid glTF (drawn anyway): "), std::string::npos) << w;
+    for (const char* part : {"nodes[1]: has both 'matrix' and translation/rotation/scale (spec: one or the other); the matrix is used",
+                             "meshes[0].weights: 2 weight(s) for 0 morph target(s) (spec: one weight per morph target)",
+                             "nodes[0]: has skin 0 but mesh 0 primitive 0 has no JOINTS_0 and WEIGHTS_0 (spec: the primitives of "
+                             "a skinned node's mesh have both)",
+                             "nodes[2]: has skin 0 but no mesh (spec: a node with a skin has a mesh)",
+                             "nodes[3].weights: set on a node without a mesh (spec: weights need a mesh)"})
+        EXPECT_NE(w.find(part), std::string::npos) << part << " missing from: " << w;
+    EXPECT_EQ(w.find("not supported"), std::string::npos) << w;
+    EXPECT_NE(s.warnings[1].find("ignored (not supported by the workbench): 1 skin(s)"), std::string::npos) << s.warnings[1];
+
+    // The same skin, unused, and morph targets with their weights: valid, only "not supported".
+    j = b.finish({{"POSITION", pos}}, -1);
+    j["skins"] = json::array({{{"joints", {0}}}});
+    j["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", pos}}});
+    j["meshes"][0]["weights"] = {0.5};
+    Scene valid;
+    importGltf(test::writeJson("valid-unsupported.gltf", j).string(), valid, glm::mat4(1.0f), false);
+    ASSERT_EQ(valid.warnings.size(), 1u);
+    EXPECT_NE(valid.warnings[0].find("ignored (not supported by the workbench): 1 skin(s), morph targets on 1 primitive(s)"),
+              std::string::npos)
+        << valid.warnings[0];
+}

@@ -250,3 +250,133 @@ TEST(GltfLoader, AssimpBrokenModelsGiveClearErrors) {
         EXPECT_FALSE(s.instances.empty()) << ok;
     }
 }
+
+// Issue 25: what tinygltf refuses without a reason (a skin without joints),
+// or drops silently (a texture reference without index, a primitive without
+// attributes), is named by the object and the property the spec requires.
+TEST(GltfLoader, MissingRequiredPropertiesAreNamedByObject) {
+    TriangleGltf t;
+    json j = t.build();
+    j["nodes"].push_back(json::object());
+    j["skins"] = json::array({{{"inverseBindMatrices", 0}}});
+    std::string e = errorOf(write("skin.gltf", j));
+    EXPECT_NE(e.find("skin.gltf: skins[0]: required property 'joints' is missing"), std::string::npos) << e;
+    EXPECT_EQ(e.find("without giving a reason"), std::string::npos) << e;
+    j["skins"] = json::array({{{"joints", json::array()}}});
+    e = errorOf(write("skin-empty.gltf", j));
+    EXPECT_NE(e.find("skins[0].joints: must not be empty"), std::string::npos) << e;
+
+    j = t.build();
+    j["accessors"][0].erase("count");
+    j["accessors"][1].erase("componentType");
+    j["accessors"][1].erase("type");
+    e = errorOf(write("accessors.gltf", j));
+    EXPECT_NE(e.find("accessors[0]: required property 'count' is missing; accessors[1]: required property 'componentType' "
+                     "is missing; accessors[1]: required property 'type' is missing"),
+              std::string::npos)
+        << e;
+
+    j = t.build();
+    j["bufferViews"][0].erase("byteLength");
+    j["buffers"][0].erase("byteLength");
+    j["meshes"][0]["primitives"].push_back({{"indices", 1}});
+    j["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"texCoord", 0}}}}}}});
+    j["cameras"] = json::array({{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}}}}});
+    e = errorOf(write("several.gltf", j));
+    for (const char* part : {"buffers[0]: required property 'byteLength' is missing",
+                             "bufferViews[0]: required property 'byteLength' is missing",
+                             "meshes[0].primitives[1]: required property 'attributes' is missing",
+                             "materials[0].pbrMetallicRoughness.baseColorTexture: required property 'index' is missing",
+                             "cameras[0].orthographic: required property 'zfar' is missing"})
+        EXPECT_NE(e.find(part), std::string::npos) << part << " missing from: " << e;
+}
+
+// Issue 25: offsets, lengths, counts and indices are integers: a value beyond
+// a float, negative, fractional or past what the reader stores is named as
+// an integer out of range, never "does not fit a 32-bit float".
+TEST(GltfLoader, IntegerPropertiesAreCheckedAsIntegers) {
+    TriangleGltf t;
+    auto withText = [&](const std::string& name, const std::string& field, const std::string& number) {
+        json j = t.build();
+        j["bufferViews"][1][field] = 12345;
+        std::string text = j.dump();
+        const std::string key = "\"" + field + "\":12345";
+        text.replace(text.find(key), key.size(), "\"" + field + "\":" + number);
+        const fs::path p = test::tempDir() / name;
+        std::ofstream(p) << text;
+        return errorOf(p);
+    };
+    std::string e = withText("big.gltf", "byteLength", "1e39");
+    EXPECT_NE(e.find("big.gltf: bufferViews[1].byteLength: 1e39 is out of range (a byte length from 1 to 9007199254740991)"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(e.find("32-bit float"), std::string::npos) << e;
+    e = withText("huge.gltf", "byteOffset", "1e400");
+    EXPECT_NE(e.find("bufferViews[1].byteOffset: 1e400 is out of range (a byte offset from 0"), std::string::npos) << e;
+    e = withText("frac.gltf", "byteLength", "6.5");
+    EXPECT_NE(e.find("bufferViews[1].byteLength: expected an integer, got 6.5"), std::string::npos) << e;
+    e = withText("neg.gltf", "byteOffset", "-4");
+    EXPECT_NE(e.find("bufferViews[1].byteOffset: -4 is out of range (a byte offset from 0 to 9007199254740991)"),
+              std::string::npos)
+        << e;
+    e = withText("stride.gltf", "byteStride", "6");
+    EXPECT_NE(e.find("bufferViews[1].byteStride: 6 is not a multiple of 4"), std::string::npos) << e;
+
+    json j = t.build();
+    j["nodes"][0]["mesh"] = 4294967296ull;  // an int would wrap it to 0
+    e = errorOf(write("wrap.gltf", j));
+    EXPECT_NE(e.find("nodes[0].mesh: 4294967296 is out of range (an index from 0 to 2147483647)"), std::string::npos) << e;
+    j = t.build();
+    j["accessors"][0]["count"] = 0;
+    j["accessors"][1]["componentType"] = 5127;
+    j["meshes"][0]["primitives"][0]["indices"] = "1";
+    j["meshes"][0]["primitives"][0]["mode"] = 9;
+    e = errorOf(write("ints.gltf", j));
+    for (const char* part : {"accessors[0].count: 0 is out of range (a count from 1 to 9007199254740991)",
+                             "accessors[1].componentType: 5127 is not one of 5120 (BYTE)",
+                             "meshes[0].primitives[0].indices: expected an integer, got \"1\"",
+                             "meshes[0].primitives[0].mode: 9 is out of range (a primitive mode (0 POINTS to 6 TRIANGLE_FAN)"})
+        EXPECT_NE(e.find(part), std::string::npos) << part << " missing from: " << e;
+}
+
+// Issue 25: every invalid camera and light is named, not only the last.
+TEST(GltfLoader, EveryInvalidCameraAndLightIsNamed) {
+    TriangleGltf t;
+    json j = t.build();
+    j["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0}, {"znear", 0.1}}}},
+                                {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}},
+                                {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", -1}}}}});
+    j["extensions"]["KHR_lights_punctual"]["lights"] =
+        json::array({{{"type", "point"}, {"intensity", -1}}, {{"type", "laser"}}, {{"type", "point"}}});
+    const std::string e = errorOf(write("cameras.gltf", j));
+    EXPECT_NE(e.find("cameras.gltf: cameras[0].perspective.yfov: must be in (0, 179) degrees, got 0 rad (0 degrees); "
+                     "cameras[2].perspective.znear: must be greater than 0, got -1; "
+                     "extensions.KHR_lights_punctual.lights[0].intensity: must not be negative, got -1; "
+                     "extensions.KHR_lights_punctual.lights[1].type: expected \"directional\", \"point\" or \"spot\", got \"laser\""),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(e.find("cameras[1]"), std::string::npos) << e;
+    // Many problems: the first twelve and a count of the rest, on one line.
+    j = t.build();
+    for (int i = 0; i < 15; ++i) j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0}, {"znear", 0.1}}}});
+    const std::string many = errorOf(write("many.gltf", j));
+    EXPECT_NE(many.find("cameras[11].perspective.yfov"), std::string::npos) << many;
+    EXPECT_EQ(many.find("cameras[12]"), std::string::npos) << many;
+    EXPECT_NE(many.find("; and 3 more"), std::string::npos) << many;
+    EXPECT_EQ(many.find('\n'), std::string::npos) << many;
+}
+
+// Issue 25: the checks after parsing (ranges, references) name every bad
+// object too, not only the first.
+TEST(GltfLoader, EveryBadAccessorAndReferenceIsNamed) {
+    TriangleGltf t;
+    json j = t.build();
+    j["accessors"][0]["count"] = 30;
+    j["accessors"][1]["count"] = 40;
+    j["nodes"].push_back({{"mesh", 7}});
+    const std::string e = errorOf(write("accessors-range.gltf", j));
+    EXPECT_NE(e.find("accessors-range.gltf: accessor[0] reads 360 bytes but bufferView[0] has only 36; "
+                     "accessor[1] reads 80 bytes but bufferView[1] has only 6; node[1].mesh refers to index 7 but there are only 1"),
+              std::string::npos)
+        << e;
+}
