@@ -60,15 +60,8 @@ public:
     std::string precheck(const std::string& bytes) {
         const bool glb = isBinary(bytes);
         const std::string_view text = glb ? glbJsonChunk(bytes, path_) : std::string_view(bytes);
-        checkJsonText(text, path_);  // nesting depth, numbers beyond a float, by JSON path
-        nlohmann::json j;
-        try {
-            j = nlohmann::json::parse(text);
-        } catch (const nlohmann::json::parse_error& e) {
-            fail("malformed JSON at " + textPosition(text, e.byte));
-        } catch (const nlohmann::json::exception& e) {
-            fail("unreadable JSON: " + jsonErrorText(e));
-        }
+        // Nesting depth, numbers beyond a float by JSON path, then the parse.
+        nlohmann::json j = parseJson(text, path_);
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
         checkGltfValues(j, path_);  // cameras, lights, data: URIs (GltfCheck.h)
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
