@@ -458,15 +458,8 @@ int runMerge(int argc, char** argv) {
             checkFrames(most, "others have");
             continue;
         }
-        const std::string text = readWholeFile(sibling.string(), "not found", "cannot read");
         // Bounded depth like every JSON the workbench reads; numbers may be any double.
-        checkJsonText(text, sibling.string(), {kMaxJsonDepth, false});
-        nlohmann::json j;
-        try {
-            j = nlohmann::json::parse(text);
-        } catch (const nlohmann::json::exception& e) {
-            throw FileError(sibling.string(), std::string("not JSON: ") + e.what());
-        }
+        const nlohmann::json j = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
         const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
         // Every configuration the shard's JSON lists must be in its CSV.
         if (j.contains("configs") && j["configs"].is_array())

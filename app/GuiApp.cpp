@@ -23,6 +23,7 @@
 #include "renderer/gl/Sampler.h"
 #include "renderer/io/ImageHistogram.h"
 #include "renderer/lighting/LightVolume.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
@@ -167,11 +168,13 @@ std::string exportDirDefault() {
 }
 
 // layout.json: the splitter weights and which panels are open.
-void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state) {
+// A missing saved layout is no error; a missing --layout file is (readJsonFile says "not found").
+void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state, bool mustExist = false) {
     std::error_code ec;
-    if (!fs::exists(path, ec)) return;
+    if (!mustExist && !fs::exists(path, ec)) return;
     try {
-        const nlohmann::json j = nlohmann::json::parse(readWholeFile(path, "not found", "cannot read"));
+        // Guarded like every JSON the workbench reads (150 000 levels overflowed the stack).
+        const nlohmann::json j = readJsonFile(path, {kMaxJsonDepth, false});
         if (!j.is_object()) throw std::runtime_error("expected an object");
         if (j.contains("layout")) ui.layout().fromJson(j["layout"]);
         if (j.contains("open") && j["open"].is_object())
@@ -182,7 +185,9 @@ void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
                 if (r.is_string() && state.recentScenes.size() < ui::UiState::kRecentScenes) state.recentScenes.push_back(r.get<std::string>());
         state.resetLayout = false;
     } catch (const std::exception& e) {
-        state.log.error(path + ": saved layout not used (" + e.what() + "); the default layout is shown", 0.0);
+        std::string why = e.what();
+        if (why.rfind(path + ": ", 0) == 0) why = why.substr(path.size() + 2);  // a FileError names the file already
+        state.log.error(path + ": saved layout not used (" + why + "); the default layout is shown", 0.0);
     }
 }
 
@@ -594,7 +599,8 @@ int runGui(const GuiOptions& options, Scene scene) {
         }
         int capturesSeen = 0;
         ui::WorkbenchUi ui;
-        if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
+        if (!options.layoutIn.empty()) loadLayout(options.layoutIn, ui, state, true);
+        else if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
         std::optional<ImVec2> scriptMouse;
         bool scriptLeft = false, scriptCtrl = false;
         const auto start = std::chrono::steady_clock::now();

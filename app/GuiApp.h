@@ -21,6 +21,7 @@ struct GuiOptions {
     std::string screenshot;     // written after the last frame when frames > 0
     std::string dumpKnobs;      // knob values written here at exit (RenderSession::writeKnobValues)
     std::string events;         // scripted input replayed frame by frame (ScriptedInput), with frames > 0
+    std::string layoutIn;       // a layout.json to start from instead of the saved one (also scripted; never written)
     std::string layoutOut;      // with frames > 0: the panels' rectangles and the probe as JSON after the last frame
     std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
     std::string view;           // the output the viewport shows at start ("final" when empty)

@@ -18,6 +18,7 @@ int runGuiCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
+                     "                          [--layout FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
                      "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
@@ -31,6 +32,8 @@ int runGuiCommand(int argc, char** argv) {
                      "               'resize W H', 'ctrl down|up' (window pixels)\n"
                      "  --layout-out after the last frame (with --frames) or when the window closes, write each\n"
                      "               open panel's rectangle, the window size, the probe, the scene and errors as JSON\n"
+                     "  --layout     start from this layout.json instead of the saved one (also with --frames;\n"
+                     "               a file that cannot be used is reported and the default layout shown)\n"
                      "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
                      "  --view NAME  the output the viewport shows at start (see list buffers)\n"
                      "  --resolution full|1/2|1/4|auto  render resolution against the viewport panel\n"
@@ -57,6 +60,7 @@ int runGuiCommand(int argc, char** argv) {
     o.screenshot = cl.value("--screenshot").value_or("");
     o.dumpKnobs = cl.value("--dump-knobs").value_or("");
     o.events = cl.value("--events").value_or("");
+    o.layoutIn = cl.value("--layout").value_or("");
     o.layoutOut = cl.value("--layout-out").value_or("");
     o.exportDir = cl.value("--export-dir").value_or("");
     o.view = cl.value("--view").value_or("");
@@ -75,6 +79,7 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.layoutOut.empty()) writes.emplace_back("--layout-out", o.layoutOut);
     if (!o.dumpKnobs.empty()) writes.emplace_back("--dump-knobs", o.dumpKnobs);
     if (!o.events.empty()) reads.emplace_back("--events", o.events);
+    if (!o.layoutIn.empty()) reads.emplace_back("--layout", o.layoutIn);
     CommandLine::requireDistinctFiles(writes, reads);
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;

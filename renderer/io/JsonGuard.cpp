@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "renderer/Error.h"
 #include "renderer/io/TextFile.h"
 
@@ -135,6 +137,43 @@ std::string jsonErrorText(const std::exception& e) {
         if (close != std::string::npos) m = m.substr(close + 2);
     }
     return m;
+}
+
+}  // namespace dw
+
+namespace dw {
+
+namespace {
+
+template <typename Json>
+Json guardedParse(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
+    checkJsonText(text, source, options);  // depth first: nlohmann's parser recurses
+    try {
+        return Json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        // "parse error at line 1, column 5: syntax error while parsing value - ...":
+        // the position in our words, then what the parser expected.
+        std::string detail = jsonErrorText(e);
+        if (const std::size_t colon = detail.find(": "); detail.rfind("parse error", 0) == 0 && colon != std::string::npos)
+            detail = detail.substr(colon + 2);
+        throw FileError(source, "malformed JSON at " + textPosition(text, e.byte) + ": " + detail);
+    } catch (const nlohmann::json::exception& e) {
+        throw FileError(source, "unreadable JSON: " + jsonErrorText(e));
+    }
+}
+
+}  // namespace
+
+nlohmann::json parseJson(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
+    return guardedParse<nlohmann::json>(text, source, options);
+}
+
+nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
+    return guardedParse<nlohmann::ordered_json>(text, source, options);
+}
+
+nlohmann::json readJsonFile(const std::string& path, const JsonGuardOptions& options) {
+    return parseJson(readWholeFile(path, "not found", "cannot read"), path, options);
 }
 
 }  // namespace dw

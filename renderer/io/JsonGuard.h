@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace dw {
 
 // Deeper than any file of these formats needs, far below what the recursive
@@ -36,6 +38,16 @@ struct JsonGuardOptions {
 // "scene.json: lights[0].intensity: 1e39 does not fit a 32-bit float (largest about 3.4e38)"
 // or "preset.json: line 1, column 129: JSON nested deeper than 128 levels (at knobs.x[0][0]...)".
 void checkJsonText(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+
+// The one way the product reads JSON: checkJsonText, then nlohmann's parser.
+// Nothing calls nlohmann::json::parse directly (a unit test looks), so no
+// reader can forget the guard. Malformed JSON throws
+// FileError(source, "malformed JSON at line L, column C: <what the parser expected>").
+nlohmann::json parseJson(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+// The same, keeping the file's key order (scene settings apply in order).
+nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+// The same for a file: readWholeFile, then parseJson.
+nlohmann::json readJsonFile(const std::string& path, const JsonGuardOptions& options = {});
 
 // A JSON library exception's text without its "[json.exception.type_error.302] "
 // tag, for the rare error the checks above leave to the parser.

@@ -102,15 +102,7 @@ std::string Preset::toJson() const {
 
 Preset Preset::fromJson(const std::string& text, const std::string& source) {
     // Depth and numbers beyond a float, by JSON path, before parsing.
-    checkJsonText(text, source);
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw FileError(source, textPosition(text, e.byte) + ": not a valid preset (malformed JSON)");
-    } catch (const json::exception& e) {
-        throw FileError(source, "not a readable preset: " + jsonErrorText(e));
-    }
+    const json j = parseOrderedJson(text, source);
     if (!j.is_object() || !j.contains("knobs") || !j["knobs"].is_object())
         throw FileError(source, "not a preset: expected an object with a \"knobs\" object");
     if (j.contains("format") && j["format"] != kFormat)

@@ -531,18 +531,7 @@ private:
 
 Scene parseSceneJson(const std::string& text, const std::string& path) {
     // Depth, and numbers beyond a double or a float, by JSON path before parsing.
-    checkJsonText(text, path);
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        std::string msg = e.what();
-        const auto pos = msg.find("parse error");
-        if (pos != std::string::npos) msg = msg.substr(pos);
-        throw FileError(path, textPosition(text, e.byte) + ": malformed JSON (" + msg + ")");
-    } catch (const json::exception& e) {
-        throw FileError(path, "not a readable scene file: " + jsonErrorText(e));
-    }
+    const json root = parseOrderedJson(text, path);
     Scene scene;
     scene.source = path;
     SceneJsonParser parser(path, scene);

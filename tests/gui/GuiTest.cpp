@@ -533,3 +533,58 @@ TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
     ASSERT_TRUE(fs::exists(r.renderdocCaptures[0]));
     EXPECT_GT(fs::file_size(r.renderdocCaptures[0]), 10000u);
 }
+
+// The window's own layout.json is read through the same JSON guard as every
+// other file: 150 000 levels of nesting overflowed the stack at start-up
+// (exit 139). Now the window starts, shows the default layout, and says why.
+TEST(Gui, UnderXvfbADeeplyNestedLayoutJsonIsNotUsedAndTheWindowStarts) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path config = test::tempDir() / "deep-layout-config";
+    fs::create_directories(config / "deferred-workbench");
+    const fs::path layout = config / "deferred-workbench" / "layout.json";
+    // The default layout's shape (3, 2 and 4 rows), each row's panel list
+    // 150 000 arrays deep: the layout reader copied and compared it recursively.
+    const std::string row = R"({"panels": )" + std::string(150000, '[') + std::string(150000, ']') + "}";
+    std::string columns;
+    for (int rows : {3, 2, 4}) {
+        columns += std::string(columns.empty() ? "" : ",") + R"({"width": 1, "rows": [)";
+        for (int i = 0; i < rows; ++i) columns += (i ? "," : "") + row;
+        columns += "]}";
+    }
+    std::ofstream(layout) << R"({"layout": {"columns": [)" << columns << "]}}";
+    // A scripted run started from it (--layout): the screenshot is taken and
+    // the Messages panel holds the reason.
+    const fs::path shot = test::tempDir() / "deep-layout.png", out = test::tempDir() / "deep-layout-report.json";
+    const Result r = shell("xvfb-run -a -s '-screen 0 1024x640x24' " + std::string(DW_WORKBENCH_BINARY) +
+                           " --scene spheres --set ssao.enabled=false --frames 3 --layout " + layout.string() +
+                           " --screenshot " + shot.string() + " --layout-out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(fs::exists(shot));
+    const LayoutReport rep = readLayoutReport(out);
+    ASSERT_EQ(rep.errors.size(), 1u) << ::testing::PrintToString(rep.errors);
+    EXPECT_EQ(rep.errors[0], layout.string() + ": saved layout not used (line 1, column 180: JSON nested deeper than 128 levels "
+                                               "(at layout.columns[0].rows[0].panels[0][0][0][0][0][0][0][0][0][...[0][0][0][0][0][0][0][0][0][0])); "
+                                               "the default layout is shown");
+    // The default layout, as computed from the window size.
+    const auto want = expectedLayout(rep);
+    ASSERT_FALSE(want.empty());
+    for (const auto& [name, rect] : want) {
+        const ui::PanelRect* got = rep.find(name);
+        ASSERT_NE(got, nullptr) << name;
+        EXPECT_NEAR(got->x, rect.x, 1.0f) << name;
+        EXPECT_NEAR(got->w, rect.w, 1.0f) << name;
+    }
+    // A missing --layout file is reported the same way.
+    const Result missing = shell("xvfb-run -a -s '-screen 0 1024x640x24' " + std::string(DW_WORKBENCH_BINARY) +
+                                 " --scene spheres --set ssao.enabled=false --frames 2 --layout " + (config / "none.json").string() +
+                                 " --layout-out " + out.string());
+    ASSERT_EQ(missing.code, 0) << missing.out;
+    EXPECT_EQ(readLayoutReport(out).errors,
+              std::vector<std::string>{(config / "none.json").string() + ": saved layout not used (not found); the default layout is shown"});
+    // The window as a person starts it (not scripted, so it reads the saved
+    // layout.json): still running after 8 s instead of dying at start (139),
+    // then stopped by timeout (124).
+    const Result live = shell("XDG_CONFIG_HOME=" + config.string() + " xvfb-run -a -s '-screen 0 1024x640x24' sh -c 'timeout 8 " +
+                              std::string(DW_WORKBENCH_BINARY) + " --scene spheres --set ssao.enabled=false; echo exit=$?'");
+    EXPECT_NE(live.out.find("exit=124"), std::string::npos) << live.out;
+}

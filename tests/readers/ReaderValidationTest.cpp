@@ -13,6 +13,7 @@
 #include <vector>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -424,6 +425,46 @@ TEST(ReaderValidation, DeepNestingIsRefusedInEveryReader) {
     // 128 levels are read; 129 are not.
     EXPECT_NO_THROW(checkJsonText(std::string(128, '[') + std::string(128, ']'), "ok.json"));
     EXPECT_THROW(checkJsonText(std::string(129, '[') + std::string(129, ']'), "deep.json"), FileError);
+}
+
+TEST(ReaderValidation, EveryJsonTheProductReadsGoesThroughTheGuard) {
+    // One helper guards and parses (parseJson, readJsonFile): no reader of
+    // the product may call the JSON library's parser past it (the window's
+    // layout.json did, and 150 000 levels overflowed the stack at start-up).
+    const std::regex direct(R"(json::parse\s*\(|json::accept\s*\(|json::sax_parse|>>\s*\w*json\b)", std::regex::icase);
+    std::vector<std::string> offenders;
+    for (const char* top : {"app", "renderer", "ui"})
+        for (const auto& e : fs::recursive_directory_iterator(fs::path(DW_SOURCE_DIR) / top)) {
+            const std::string ext = e.path().extension().string();
+            if (ext != ".cpp" && ext != ".h") continue;
+            if (e.path().filename() == "JsonGuard.cpp") continue;  // the helper itself
+            std::ifstream in(e.path());
+            std::string line;
+            for (int n = 1; std::getline(in, line); ++n)
+                if (std::regex_search(line, direct))
+                    offenders.push_back(fs::relative(e.path(), DW_SOURCE_DIR).string() + ":" + std::to_string(n));
+        }
+    EXPECT_TRUE(offenders.empty()) << "JSON parsed without parseJson at " << ::testing::PrintToString(offenders);
+
+    // The helper: depth first, then the parse, malformed JSON by position.
+    const std::string deep = std::string(150000, '[') + std::string(150000, ']');
+    const fs::path layout = writeText("layout.json", R"({"layout": )" + deep + "}");
+    std::string e;
+    try {
+        readJsonFile(layout.string(), {kMaxJsonDepth, false});
+    } catch (const FileError& x) {
+        e = x.what();
+    }
+    EXPECT_HAS(e, "layout.json: line 1, column 139: JSON nested deeper than 128 levels (at layout[0]");
+    try {
+        parseJson("{\"a\": [1, 2,, 3]}", "bad.json");
+        e = "no error";
+    } catch (const FileError& x) {
+        e = x.what();
+    }
+    EXPECT_HAS(e, "bad.json: malformed JSON at line 1, column 13: syntax error while parsing value");
+    EXPECT_EQ(parseJson(R"({"a": [1, 2e300]})", "big.json", {kMaxJsonDepth, false})["a"][1].get<double>(), 2e300);
+    EXPECT_THROW(parseJson(R"({"a": [1, 2e300]})", "big.json"), FileError);  // beyond a float by default
 }
 
 TEST(ReaderValidation, ImageLibrariesDoNotWriteTheirOwnLinesToStderr) {
