@@ -116,3 +116,24 @@ TEST(DepthOfField, SharpForegroundKeepsItsEdgeOverABlurredBackground) {
     for (int x = xs - 12; x < xs; ++x) EXPECT_GT(p.share[x], 0.98) << "silhouette" << x - xs;
     for (int x = xs; x < xs + 12; ++x) EXPECT_LT(p.share[x], 0.02) << "silhouette+" << x - xs;
 }
+
+// The near layer's alpha (dof.near_alpha) over the case's row: 1 well inside
+// the box, about 1/2 at the silhouette, falling to 0 one radius out; none
+// with dof.near_blur off, where the image is the far field's alone.
+TEST(DepthOfField, NearAlphaIsTheForegroundsCoverage) {
+    auto s = test::makeSession(W, H);
+    s->loadScene(test::writeJson("dof_alpha.json", nlohmann::json::parse(caseScene(12.0, 2.0))).string());
+    const int xs = measure(*s).silhouette, y = H / 2;
+    s->render({{"dof.near_alpha"}});
+    const FloatImage a = s->readRaw("dof.near_alpha");
+    std::printf("near alpha from silhouette-2:");
+    for (int x = xs - 2; x <= xs + 9; ++x) std::printf(" %.2f", a.at(x, y, 0));
+    std::printf("\n");
+    EXPECT_NEAR(a.at(xs - 12, y, 0), 1.0f, 0.01f);
+    EXPECT_NEAR(0.5f * (a.at(xs - 1, y, 0) + a.at(xs, y, 0)), 0.5f, 0.1f);
+    for (int x = xs + static_cast<int>(kMaxRadius) + 1; x < xs + 20; ++x) EXPECT_EQ(a.at(x, y, 0), 0.0f) << x - xs;
+    EXPECT_EQ(a.at(W - 1, y, 0), 0.0f);
+    s->knobs().setFromString("dof.near_blur", "false");
+    s->render({{"dof.near_alpha"}});
+    EXPECT_EQ(test::stats(s->readRaw("dof.near_alpha"), 0).max, 0.0);
+}
