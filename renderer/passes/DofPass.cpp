@@ -13,7 +13,9 @@ DofPass::DofPass(KnobRegistry& knobs) {
                             "depth band around the focus that stays sharp; the blur reaches its maximum one band further",
                             "units", false, true);
     radius_ = knobs.addFloat("dof.max_radius", 6.0, 0.0, 32.0, "dof", "largest blur radius", "px", true);
-    samples_ = knobs.addInt("dof.samples", 24, 4, 128, "dof", "gather samples per pixel", "", true);
+    samples_ = knobs.addInt("dof.samples", 24, 4, 128, "dof",
+                           "gather samples per pixel (the near layer takes twice as many, in each of its two gathers)", "",
+                           true);
     near_ = knobs.addBool("dof.near_blur", true, "dof", "blur what is nearer than the focus");
     far_ = knobs.addBool("dof.far_blur", true, "dof", "blur what is farther than the focus");
     // Declared by the tone mapper, which comes first: whether its output is
@@ -46,11 +48,13 @@ void DofPass::execute(FrameContext& ctx) {
     p.focusRange = k.get(range_);
     p.maxRadius = k.get(radius_);
     p.srgbInput = k.get(srgb_) ? 1 : 0;
-    for (int cocOnly : {0, 1}) {
-        if (cocOnly && !ctx.wants("dof.coc")) continue;
-        p.cocOnly = cocOnly;
+    for (int write : {gpu::DOF_WRITE_RESULT, gpu::DOF_WRITE_COC, gpu::DOF_WRITE_NEAR_ALPHA}) {
+        if (write == gpu::DOF_WRITE_COC && !ctx.wants("dof.coc")) continue;
+        if (write == gpu::DOF_WRITE_NEAR_ALPHA && !ctx.wants("dof.near_alpha")) continue;
+        p.outputKind = write;
         params_.upload(p, binding::kPassUbo);
-        if (cocOnly) coc_.get(ctx, {"dof.coc"}, {}, "circle of confusion").bind();
+        if (write == gpu::DOF_WRITE_COC) coc_.get(ctx, {"dof.coc"}, {}, "circle of confusion").bind();
+        else if (write == gpu::DOF_WRITE_NEAR_ALPHA) nearAlpha_.get(ctx, {"dof.near_alpha"}, {}, "near field alpha").bind();
         else result_.get(ctx, {"dof.result"}, {}, "depth of field").bind();
         triangle_.draw();
     }

@@ -4,8 +4,9 @@
 // its blur dilated, its colour weighted by coverage and composited over the
 // in-focus and far field; shaders/post/dof.frag). Reads the post chain's
 // current image (the tone-mapped one unless a post pass comes before) and
-// gbuffer.depth; writes dof.result (RGBA8) and dof.coc (signed circle of
-// confusion in pixels, when asked for).
+// gbuffer.depth; writes dof.result (RGBA8), and when asked for dof.coc
+// (signed circle of confusion in pixels) and dof.near_alpha (the near layer's
+// coverage).
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
@@ -25,6 +26,9 @@ public:
     std::vector<OutputDecl> outputs() const override {
         return {{"dof.result", OutputKind::Color, "the image with depth of field (RGBA8)", texture2D(GL_RGBA8)},
                 {"dof.coc", OutputKind::Scalar, "signed circle of confusion in pixels (negative: nearer than the focus)",
+                 texture2D(GL_R16F), 1, true},
+                {"dof.near_alpha", OutputKind::Scalar,
+                 "the near field's coverage, 0 to 1, with which its blurred layer is composited over the rest",
                  texture2D(GL_R16F), 1, true}};
     }
     PassIO inputs(const KnobRegistry&) const override { return {{kCurrentImage, "gbuffer.depth"}, {}}; }
@@ -40,7 +44,7 @@ private:
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::DofParams> params_;
-    TargetFramebuffer result_, coc_;
+    TargetFramebuffer result_, coc_, nearAlpha_;
 };
 
 }  // namespace dw

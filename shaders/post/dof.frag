@@ -5,7 +5,8 @@
 // SIGGRAPH 2013; Jimenez, "Next Generation Post Processing in Call of Duty:
 // Advanced Warfare", SIGGRAPH 2014).
 // Reads: uImage (the post chain's image), uDepth (gbuffer.depth).
-// Writes: outColor (dof.result), or the signed circle of confusion (dof.coc).
+// Writes: outColor (dof.result), or the signed circle of confusion (dof.coc),
+// or the near layer's alpha (dof.near_alpha).
 //
 // A circle of confusion from view depth: zero within focus_range around
 // focus_distance, growing to max_radius one focus_range beyond it, for the
@@ -80,7 +81,7 @@ void main() {
     ivec2 size = textureSize(uImage, 0);
     float zc = linearDepth(px);
     float cc = coc(zc);
-    if (dof.cocOnly != 0) {
+    if (dof.outputKind == DOF_WRITE_COC) {
         outColor = vec4(cc, 0.0, 0.0, 1.0);
         return;
     }
@@ -112,7 +113,7 @@ void main() {
     // Near layer: the dilated near radius, then the coverage gather over it,
     // with twice the samples: its alpha moves in steps of one sample's share.
     int nNear = 2 * n;
-    float nearR = nearRadius(cc);
+    float nearR = nearRadius(cc), alpha = 0.0;
     for (int i = 0; i < nNear; ++i) {
         float r;
         vec2 o = discSample(i, nNear, maxR, r);
@@ -132,8 +133,12 @@ void main() {
             nearSum += readLinear(q) * w;
             coverage += w;
         }
-        float alpha = min(coverage * nearR * nearR / float(nNear), 1.0);
+        alpha = min(coverage * nearR * nearR / float(nNear), 1.0);
         if (coverage > 0.0) result = mix(result, nearSum / coverage, alpha);
+    }
+    if (dof.outputKind == DOF_WRITE_NEAR_ALPHA) {
+        outColor = vec4(alpha, 0.0, 0.0, 1.0);
+        return;
     }
     outColor = vec4(dof.srgbInput != 0 ? linearToSrgb(result) : result, 1.0);
 }

@@ -37,28 +37,31 @@ std::string caseScene(double focus, double range) {
 
 double linear(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 
-// The foreground's share of each pixel of row H/2: the linear red of `img`
-// between the background's (the wall alone, far right) and the foreground's
-// (the box's centre in the sharp image), 0 to 1.
+// The foreground's share of each pixel on the line from the image's centre
+// along (dx, dy) (the row H/2 to the right, or the column W/2 downwards): the
+// linear red of `img` between the background's (the wall alone, at the
+// line's end) and the foreground's (the box's centre in the sharp image),
+// 0 to 1, indexed by the distance from the centre.
 struct Profile {
     std::vector<double> share;
-    int silhouette = 0;  // first column right of the box in the sharp image
+    int silhouette = 0;  // the first pixel outside the box in the sharp image
 };
 
-Profile measure(RenderSession& s) {
+Profile measure(RenderSession& s, int dx = 1, int dy = 0) {
     s.knobs().setFromString("dof.enabled", "false");
     s.render({{"final"}});
     const FloatImage sharp = s.readRaw("final");
     s.knobs().setFromString("dof.enabled", "true");
     s.render({{"dof.result"}});
     const FloatImage img = s.readRaw("dof.result");
-    const int y = H / 2;
-    const double fg = linear(sharp.at(W / 2, y, 0)), bg = linear(sharp.at(W - 1, y, 0));
+    const int n = dx ? W / 2 : H / 2;
+    auto red = [&](const FloatImage& i, int k) { return linear(i.at(W / 2 + k * dx, H / 2 + k * dy, 0)); };
+    const double fg = red(sharp, 0), bg = red(sharp, n - 1);
     Profile p;
-    p.share.resize(W);
-    for (int x = 0; x < W; ++x) p.share[x] = (linear(img.at(x, y, 0)) - bg) / (fg - bg);
-    for (int x = W / 2; x < W && !p.silhouette; ++x)
-        if ((linear(sharp.at(x, y, 0)) - bg) / (fg - bg) < 0.5) p.silhouette = x;
+    p.share.resize(n);
+    for (int k = 0; k < n; ++k) p.share[k] = (red(img, k) - bg) / (fg - bg);
+    for (int k = 0; k < n && !p.silhouette; ++k)
+        if ((red(sharp, k) - bg) / (fg - bg) < 0.5) p.silhouette = k;
     return p;
 }
 
@@ -79,25 +82,38 @@ void print(const Profile& p, int from, int to) {
 TEST(DepthOfField, BlurredForegroundSpreadsSoftlyOverASharpBackground) {
     auto s = test::makeSession(W, H);
     s->loadScene(test::writeJson("dof_near.json", nlohmann::json::parse(caseScene(12.0, 2.0))).string());
-    const Profile p = measure(*s);
-    print(p, -10, 12);
-    const int xs = p.silhouette;
-    ASSERT_GT(xs, W / 2 + 20);
-    ASSERT_LT(xs, W - 40);
-    // About half at the silhouette (the pixels either side of it).
-    EXPECT_NEAR(0.5 * (p.share[xs - 1] + p.share[xs]), 0.5, 0.1);
-    // The background partly shows inside the edge; none of the box far inside.
-    EXPECT_LT(p.share[xs - 1], 0.8);
-    EXPECT_GT(p.share[xs - 11], 0.98);
-    // No plateau outside the silhouette: below one half from the first pixel out.
-    for (int x = xs; x < xs + 9; ++x) EXPECT_LT(p.share[x], 0.5) << "at silhouette+" << x - xs;
-    // Still reaching out half the radius, and gone one radius (and a pixel) out.
-    EXPECT_GT(p.share[xs + static_cast<int>(kMaxRadius / 2)], 0.03);
-    for (int x = xs + static_cast<int>(kMaxRadius) + 1; x < xs + 20; ++x) EXPECT_LT(p.share[x], 0.01) << x - xs;
-    // Monotonic and smooth: no step of more than 0.15 between neighbours.
-    for (int x = xs - 12; x < xs + 14; ++x) {
-        EXPECT_LE(p.share[x + 1], p.share[x] + 0.01) << "rising at silhouette+" << x + 1 - xs;
-        EXPECT_LT(p.share[x] - p.share[x + 1], 0.15) << "a hard step at silhouette+" << x + 1 - xs;
+    // The case's radius along the box's right edge, then its bottom edge and
+    // other radii (4 and 16 px) along either.
+    struct Variant {
+        float radius;
+        int dx, dy;
+    };
+    for (const Variant v : {Variant{kMaxRadius, 1, 0}, Variant{kMaxRadius, 0, 1}, Variant{4.0f, 1, 0}, Variant{16.0f, 0, 1}}) {
+        SCOPED_TRACE("max_radius " + std::to_string(v.radius) + (v.dx ? ", right edge" : ", bottom edge"));
+        s->knobs().setFromString("dof.max_radius", std::to_string(v.radius));
+        const Profile p = measure(*s, v.dx, v.dy);
+        const int R = static_cast<int>(v.radius);
+        print(p, -R - 2, R + 4);
+        const int xs = p.silhouette;
+        ASSERT_GT(xs, R + 14);
+        ASSERT_LT(xs + R + 12, static_cast<int>(p.share.size()));
+        // About half at the silhouette (the pixels either side of it).
+        EXPECT_NEAR(0.5 * (p.share[xs - 1] + p.share[xs]), 0.5, 0.1);
+        // The background partly shows inside the edge; none of the box far inside.
+        EXPECT_LT(p.share[xs - 1], 0.8);
+        EXPECT_GT(p.share[xs - R - 3], 0.98);
+        // No plateau outside the silhouette: below one half from the first pixel out.
+        for (int x = xs; x <= xs + R; ++x) EXPECT_LT(p.share[x], 0.5) << "at silhouette+" << x - xs;
+        // Still reaching out half the radius, and gone one radius (and a pixel) out.
+        EXPECT_GT(p.share[xs + R / 2], 0.03);
+        for (int x = xs + R + 1; x < xs + R + 12; ++x) EXPECT_LT(p.share[x], 0.01) << x - xs;
+        // Monotonic and smooth: no step between neighbours much steeper than
+        // the disc's own slope at the silhouette, 2 / (pi R) per pixel.
+        const double steepest = 1.5 * 2.0 / (3.14159265 * v.radius) + 0.05;
+        for (int x = xs - R - 4; x < xs + R + 6; ++x) {
+            EXPECT_LE(p.share[x + 1], p.share[x] + 0.01) << "rising at silhouette+" << x + 1 - xs;
+            EXPECT_LT(p.share[x] - p.share[x + 1], steepest) << "a hard step at silhouette+" << x + 1 - xs;
+        }
     }
 }
 
@@ -110,9 +126,32 @@ TEST(DepthOfField, SharpForegroundKeepsItsEdgeOverABlurredBackground) {
     s->render({{"dof.coc"}});
     EXPECT_NEAR(s->readRaw("dof.coc").at(W - 10, H / 2, 0), kMaxRadius, 0.01);  // the wall is far-blurred
     EXPECT_NEAR(s->readRaw("dof.coc").at(W / 2, H / 2, 0), 0.0, 0.01);         // the box is in focus
-    const Profile p = measure(*s);
-    print(p, -4, 4);
-    const int xs = p.silhouette;
-    for (int x = xs - 12; x < xs; ++x) EXPECT_GT(p.share[x], 0.98) << "silhouette" << x - xs;
-    for (int x = xs; x < xs + 12; ++x) EXPECT_LT(p.share[x], 0.02) << "silhouette+" << x - xs;
+    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        const Profile p = measure(*s, dx, dy);
+        print(p, -4, 4);
+        const int xs = p.silhouette;
+        for (int x = xs - 12; x < xs; ++x) EXPECT_GT(p.share[x], 0.98) << "silhouette" << x - xs;
+        for (int x = xs; x < xs + 12; ++x) EXPECT_LT(p.share[x], 0.02) << "silhouette+" << x - xs;
+    }
+}
+
+// The near layer's alpha (dof.near_alpha) over the case's row: 1 well inside
+// the box, about 1/2 at the silhouette, falling to 0 one radius out; none
+// with dof.near_blur off, where the image is the far field's alone.
+TEST(DepthOfField, NearAlphaIsTheForegroundsCoverage) {
+    auto s = test::makeSession(W, H);
+    s->loadScene(test::writeJson("dof_alpha.json", nlohmann::json::parse(caseScene(12.0, 2.0))).string());
+    const int xs = W / 2 + measure(*s).silhouette, y = H / 2;
+    s->render({{"dof.near_alpha"}});
+    const FloatImage a = s->readRaw("dof.near_alpha");
+    std::printf("near alpha from silhouette-2:");
+    for (int x = xs - 2; x <= xs + 9; ++x) std::printf(" %.2f", a.at(x, y, 0));
+    std::printf("\n");
+    EXPECT_NEAR(a.at(xs - 12, y, 0), 1.0f, 0.01f);
+    EXPECT_NEAR(0.5f * (a.at(xs - 1, y, 0) + a.at(xs, y, 0)), 0.5f, 0.1f);
+    for (int x = xs + static_cast<int>(kMaxRadius) + 1; x < xs + 20; ++x) EXPECT_EQ(a.at(x, y, 0), 0.0f) << x - xs;
+    EXPECT_EQ(a.at(W - 1, y, 0), 0.0f);
+    s->knobs().setFromString("dof.near_blur", "false");
+    s->render({{"dof.near_alpha"}});
+    EXPECT_EQ(test::stats(s->readRaw("dof.near_alpha"), 0).max, 0.0);
 }
