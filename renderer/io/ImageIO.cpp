@@ -6,10 +6,12 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 
 #include "renderer/Error.h"
+#include "renderer/io/ImageLimits.h"
 #include "renderer/io/StderrCapture.h"
 
 namespace dw {
@@ -30,13 +32,55 @@ std::string lower(std::string s) {
     return s;
 }
 
+// The budget (ImageLimits.h) for what the decoder's header says, before any
+// pixel is read: `bytesPerChannel` in the decoded copy, plus `extraPerPixel`.
+void checkSpec(const OIIO::ImageSpec& spec, const std::string& name, std::uint64_t bytesPerChannel,
+               std::uint64_t extraPerPixel) {
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw FileError(name, "image has no pixels");
+    if (spec.deep) throw FileError(name, "deep images (samples per pixel) are not supported");
+    checkImageBudget(static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height), spec.nchannels,
+                     static_cast<std::uint64_t>(spec.nchannels) * bytesPerChannel + extraPerPixel, name);
+    if (spec.tile_width > 0)
+        checkImageBudget(static_cast<std::uint64_t>(spec.tile_width), static_cast<std::uint64_t>(spec.tile_height),
+                         spec.nchannels, static_cast<std::uint64_t>(spec.nchannels) * 4, name, "one tile");
+}
+
+// OIIO's own size check (limits:imagesize_MB, set to the same budget) speaks
+// of its attribute; the workbench's words say how to raise the workbench's limit.
+std::string openError(const std::string& error) {
+    if (error.find("limits:imagesize_MB") != std::string::npos) {
+        const std::size_t cut = error.find(". Possible corrupt");
+        return (cut == std::string::npos ? error : error.substr(0, cut)) + ": over the image memory limit of " +
+               std::to_string(imageMemoryLimit() / (1024 * 1024)) + " MB (set " + kImageLimitVariable + "=MB to raise it)";
+    }
+    return error;
+}
+
+// OIIO's size check at open uses the workbench's budget.
+void applyLimits() {
+    const int mb = static_cast<int>(std::min<std::uint64_t>(imageMemoryLimit() / (1024 * 1024), INT_MAX));
+    OIIO::attribute("limits:imagesize_MB", mb);
+}
+
+// A decoder's exception (std::bad_alloc from a damaged file's sizes, or any
+// other) becomes an error naming the file.
+template <typename F>
+auto guarded(const std::string& name, F&& decode) -> decltype(decode()) {
+    try {
+        return decode();
+    } catch (const Error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw FileError(name, "cannot decode image: out of memory (the file's sizes are damaged, or " +
+                                  std::string("the image is larger than this machine can hold)"));
+    } catch (const std::exception& e) {
+        throw FileError(name, std::string("cannot decode image: ") + e.what());
+    }
+}
+
 Image toRgba8(std::unique_ptr<OIIO::ImageInput> in, const std::string& name) {
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        throw FileError(name, "image has no pixels");
-    if (static_cast<long long>(spec.width) * spec.height > (1LL << 28))
-        throw FileError(name, "image is too large (" + std::to_string(spec.width) + "x" +
-                                  std::to_string(spec.height) + ")");
+    checkSpec(spec, name, 1, 4);  // the decoded bytes, then RGBA
     std::vector<std::uint8_t> raw(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
         throw FileError(name, "cannot decode image: " + in->geterror());
@@ -76,11 +120,15 @@ OIIO::ImageSpec straightAlphaConfig() {
 
 Image loadImage8(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    checkExrFile(path, 1);  // before OpenEXR allocates from the header
+    applyLimits();
     StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
-    const OIIO::ImageSpec config = straightAlphaConfig();
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
-    return toRgba8(std::move(in), path);
+    return guarded(path, [&] {
+        const OIIO::ImageSpec config = straightAlphaConfig();
+        auto in = OIIO::ImageInput::open(path, &config);
+        if (!in) throw FileError(path, "cannot read image: " + openError(OIIO::geterror()));
+        return toRgba8(std::move(in), path);
+    });
 }
 
 Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& nameHint,
@@ -94,6 +142,8 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
     else if (mimeType == "image/jpeg") ext = ".jpg";
     else if (mimeType == "image/webp") ext = ".webp";
     else if (mimeType == "image/ktx2") ext = ".ktx2";
+    if (isExr(bytes, size)) checkExrHeader(bytes, size, size, nameHint, 1);
+    applyLimits();
     OIIO::Filesystem::IOMemReader reader(const_cast<std::uint8_t*>(bytes), size);
     StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
     // OIIO 2.4 ignores the proxy argument when a config spec is passed too;
@@ -101,25 +151,32 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
     OIIO::ImageSpec config = straightAlphaConfig();
     OIIO::Filesystem::IOProxy* proxy = &reader;
     config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto in = OIIO::ImageInput::open("memory" + ext, &config);
-    if (!in) throw FileError(nameHint, "cannot decode embedded image: " + OIIO::geterror());
-    return toRgba8(std::move(in), nameHint);
+    return guarded(nameHint, [&] {
+        auto in = OIIO::ImageInput::open("memory" + ext, &config);
+        if (!in) throw FileError(nameHint, "cannot decode embedded image: " + openError(OIIO::geterror()));
+        return toRgba8(std::move(in), nameHint);
+    });
 }
 
 FloatImage loadImageFloat(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    checkExrFile(path, 4);  // before OpenEXR allocates from the header
+    applyLimits();
     StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    FloatImage img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-        throw FileError(path, "cannot decode image: " + in->geterror());
-    return img;
+    return guarded(path, [&] {
+        auto in = OIIO::ImageInput::open(path);
+        if (!in) throw FileError(path, "cannot read image: " + openError(OIIO::geterror()));
+        const OIIO::ImageSpec& spec = in->spec();
+        checkSpec(spec, path, 4, 0);
+        FloatImage img;
+        img.width = spec.width;
+        img.height = spec.height;
+        img.channels = spec.nchannels;
+        img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+        if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+            throw FileError(path, "cannot decode image: " + in->geterror());
+        return img;
+    });
 }
 
 bool isFloatFormat(const std::string& path) {

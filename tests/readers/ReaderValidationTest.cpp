@@ -7,10 +7,14 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <tuple>
 #include <vector>
+#include <optional>
+#include <random>
+#include <typeinfo>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -19,6 +23,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/io/ImageLimits.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/knobs/Preset.h"
@@ -484,6 +489,223 @@ TEST(ReaderValidation, ImageLibrariesDoNotWriteTheirOwnLinesToStderr) {
     EXPECT_HAS(e, "corrupt-texture.json: materials.m.diffuse-map: cannot load texture: ");
     EXPECT_HAS(e, "corrupt.png");
     EXPECT_EQ(printed, "");
+}
+
+// ---- damaged images: the memory budget ---------------------------------------
+
+namespace {
+
+// A small valid OpenEXR file (OIIO writes it: 16 x 8, RGB float).
+std::string smallExr() {
+    FloatImage img;
+    img.width = 16;
+    img.height = 8;
+    img.channels = 3;
+    img.pixels.assign(16 * 8 * 3, 0.5f);
+    const fs::path p = dir() / "small-valid.exr";
+    writeImage(p.string(), img);
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+struct ExrAttribute {
+    std::string name, type;
+    std::size_t sizeAt = 0, valueAt = 0;  // byte offsets of the size field and the value
+    std::int32_t size = 0;
+};
+
+std::int32_t le32(const std::string& b, std::size_t at) {
+    std::uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(i)]);
+    return static_cast<std::int32_t>(v);
+}
+void put32(std::string& b, std::size_t at, std::int32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<char>((static_cast<std::uint32_t>(v) >> (8 * i)) & 0xff);
+}
+
+// The single-part header's attributes, in file order; `end` gets the byte of its closing 0.
+std::vector<ExrAttribute> exrAttributes(const std::string& b, std::size_t* end = nullptr) {
+    std::vector<ExrAttribute> v;
+    std::size_t i = 8;
+    while (b[i] != '\0') {
+        ExrAttribute a;
+        a.name = b.substr(i, b.find('\0', i) - i);
+        i += a.name.size() + 1;
+        a.type = b.substr(i, b.find('\0', i) - i);
+        i += a.type.size() + 1;
+        a.sizeAt = i;
+        a.size = le32(b, i);
+        a.valueAt = i + 4;
+        i = a.valueAt + static_cast<std::size_t>(a.size);
+        v.push_back(a);
+    }
+    if (end) *end = i;
+    return v;
+}
+
+const ExrAttribute& attribute(const std::vector<ExrAttribute>& v, const std::string& name) {
+    for (const auto& a : v)
+        if (a.name == name) return a;
+    throw std::runtime_error("no attribute " + name);
+}
+
+std::string withBox(std::string b, const std::string& name, std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1) {
+    const std::size_t at = attribute(exrAttributes(b), name).valueAt;
+    put32(b, at, x0);
+    put32(b, at + 4, y0);
+    put32(b, at + 8, x1);
+    put32(b, at + 12, y1);
+    return b;
+}
+
+// What loadImageFloat (or loadImage8) says of these bytes, "no error", or
+// the type of any exception that is not a FileError.
+std::string imageError(const std::string& name, const std::string& bytes, bool eightBit = false) {
+    const fs::path p = writeText(name, bytes);
+    try {
+        if (eightBit) loadImage8(p.string());
+        else loadImageFloat(p.string());
+    } catch (const FileError& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("not a FileError: ") + typeid(e).name() + ": " + e.what();
+    }
+    return "no error";
+}
+
+struct ScopedEnv {
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        if (value) ::setenv(name, value, 1);
+        else ::unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (old_) ::setenv(name_, old_->c_str(), 1);
+        else ::unsetenv(name_);
+    }
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+}  // namespace
+
+TEST(ReaderValidation, DamagedExrHeadersAreRefusedByNameBeforeDecoding) {
+    const ScopedEnv noLimit(kImageLimitVariable, nullptr);
+    const std::string exr = smallExr();
+    ASSERT_EQ(imageError("ok.exr", exr), "no error");
+    const auto start = std::chrono::steady_clock::now();
+    // A data window within OpenEXR's coordinates but over the budget: 30000 x
+    // 30000 x 3 channels x 4 bytes as floats; as 8 bits, a quarter.
+    const std::string big = withBox(exr, "dataWindow", 0, 0, 29999, 29999);
+    const std::string budget = "big.exr: the OpenEXR data window (0, 0) to (29999, 29999) is 30000 x 30000 pixels of 3 channels: ";
+    EXPECT_HAS(imageError("big.exr", big), budget + "10299.7 MB decoded, over the image memory limit of 1024 MB (set DW_IMAGE_LIMIT_MB=MB to raise it)");
+    EXPECT_HAS(imageError("big.exr", big, true), budget + "2574.9 MB decoded, over the image memory limit of 1024 MB");
+    // Embedded in a glTF (bytes, not a file): the image's name.
+    const auto* b = reinterpret_cast<const std::uint8_t*>(big.data());
+    EXPECT_THROW(
+        try { decodeImage8(b, big.size(), "model.glb: image[0]", "image/png"); } catch (const FileError& e) {
+            EXPECT_HAS(e.what(), "model.glb: image[0]: the OpenEXR data window (0, 0) to (29999, 29999)");
+            throw;
+        },
+        FileError);
+    // Coordinates beyond OpenEXR's range, data and display windows; inverted windows.
+    EXPECT_HAS(imageError("far.exr", withBox(exr, "dataWindow", 0, 0, 2000000000, 2000000000)),
+               "far.exr: the OpenEXR data window (0, 0) to (2000000000, 2000000000) has coordinates beyond +-1073741823 (a damaged header)");
+    EXPECT_HAS(imageError("display.exr", withBox(exr, "displayWindow", INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX)),
+               "display.exr: the OpenEXR display window (-2147483648, -2147483648) to (2147483647, 2147483647) has coordinates beyond");
+    EXPECT_HAS(imageError("inverted.exr", withBox(exr, "dataWindow", 10, 0, 0, 7)),
+               "inverted.exr: the OpenEXR data window (10, 0) to (0, 7) is empty (its maximum is below its minimum)");
+    // A header cut short, inside an attribute and before its end.
+    std::size_t end = 0;
+    const auto attrs = exrAttributes(exr, &end);
+    EXPECT_HAS(imageError("cut.exr", exr.substr(0, attribute(attrs, "dataWindow").valueAt + 6)),
+               "cut.exr: the OpenEXR header is cut short: attribute 'dataWindow' runs past the end of the file");
+    EXPECT_HAS(imageError("cut2.exr", exr.substr(0, end)), "cut2.exr: the OpenEXR header is cut short: an attribute name runs past the end");
+    // An attribute claiming 2 GB (OpenEXR allocated it: 16 s and 2.2 GB before "Unexpected end of file").
+    std::string huge = exr;
+    put32(huge, attrs.front().sizeAt, 0x7ffffff0);
+    EXPECT_HAS(imageError("attr.exr", huge), "attr.exr: the OpenEXR header is cut short: attribute '" + attrs.front().name +
+                                                 "' runs past the end of the file (" + std::to_string(exr.size()) + " bytes)");
+    std::string negative = exr;
+    put32(negative, attrs.front().sizeAt, -5);
+    EXPECT_HAS(imageError("negative.exr", negative), "negative.exr: the OpenEXR header is damaged: attribute '" + attrs.front().name +
+                                                         "' has a negative size (-5)");
+    // A channel of an unknown pixel type; no channels at all.
+    std::string type = exr;
+    const ExrAttribute& ch = attribute(attrs, "channels");
+    put32(type, ch.valueAt + 2, 7);  // the first channel's name is one letter
+    EXPECT_HAS(imageError("type.exr", type), "type.exr: the OpenEXR header is damaged: channel '" + exr.substr(ch.valueAt, 1) +
+                                                 "' has pixel type 7 (0 to 2 exist)");
+    // Every attempt is quick: nothing was allocated from the header.
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+TEST(ReaderValidation, TheImageMemoryLimitIsRaisedByItsVariable) {
+    const std::string exr = smallExr();
+    const std::string big = withBox(exr, "dataWindow", 0, 0, 29999, 29999);
+    {
+        // Raised: the header passes, and the decoder finds the file cut short
+        // (13 KB of pixels for 30000 rows) without allocating 10 GB first.
+        const ScopedEnv raised(kImageLimitVariable, "20000");
+        const std::string e = imageError("big-raised.exr", big);
+        EXPECT_HAS(e, "big-raised.exr: ");
+        EXPECT_EQ(e.find("image memory limit"), std::string::npos) << e;
+        EXPECT_EQ(e.find("not a FileError"), std::string::npos) << e;
+    }
+    {
+        // Lowered below the small file: refused with the limit it was given.
+        const ScopedEnv lowered(kImageLimitVariable, "1");
+        EXPECT_EQ(imageError("ok.exr", exr), "no error");  // 16 x 8 x 3 x 4 bytes
+        FloatImage img;
+        img.width = 512;
+        img.height = 512;
+        img.channels = 3;
+        img.pixels.assign(512 * 512 * 3, 1.0f);
+        writeImage((dir() / "big.png").string(), img);
+        EXPECT_HAS(imageError("big.png", [] {
+                       std::ifstream in(dir() / "big.png", std::ios::binary);
+                       return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+                   }()),
+                   "big.png: the image is 512 x 512 pixels of 3 channels: 3.0 MB decoded, over the image memory limit of 1 MB");
+    }
+    for (const char* bad : {"0", "-3", "lots", "12MB", ""}) {
+        const ScopedEnv wrong(kImageLimitVariable, bad);
+        if (!*bad) {
+            EXPECT_EQ(imageMemoryLimit(), kDefaultImageLimitMB * 1024 * 1024);
+            continue;
+        }
+        try {
+            imageMemoryLimit();
+            ADD_FAILURE() << bad;
+        } catch (const Error& e) {
+            EXPECT_HAS(e.what(), std::string("DW_IMAGE_LIMIT_MB is '") + bad + "': it takes a whole number of megabytes");
+        }
+    }
+}
+
+TEST(ReaderValidation, CorruptExrBytesAreAFileErrorOrAnImageNeverAnotherException) {
+    const ScopedEnv noLimit(kImageLimitVariable, nullptr);
+    const std::string exr = smallExr();
+    std::size_t end = 0;
+    exrAttributes(exr, &end);
+    std::mt19937 rng(25);
+    const auto start = std::chrono::steady_clock::now();
+    int refused = 0;
+    for (int i = 0; i < 300; ++i) {
+        std::string b = exr;
+        // Mostly the header and the offset table, where sizes come from.
+        const std::size_t span = i % 3 == 0 ? b.size() : std::min(b.size(), end + 8 * 8 + 16);
+        for (int k = 0; k < 1 + i % 4; ++k) b[rng() % span] = static_cast<char>(rng());
+        if (i % 10 == 9) b.resize(rng() % b.size());
+        const std::string e = imageError("corrupt.exr", b);
+        EXPECT_EQ(e.find("not a FileError"), std::string::npos) << i << ": " << e;
+        if (e != "no error") {
+            ++refused;
+            EXPECT_HAS(e, "corrupt.exr: ");
+        }
+    }
+    EXPECT_GT(refused, 50);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 TEST(ReaderValidation, FieldsThatCombineBeyondAFloatAreRefused) {
