@@ -2,8 +2,8 @@
 // The C++ side checks std140's rules at compile time; these tests ask the GL
 // compiler itself, through program introspection, where each member of each
 // block is in every program the pipeline built, and compare that with the
-// C++ struct field by field. And the enum defines the passes give their
-// shaders carry the knob's choice indices.
+// C++ struct field by field: the passes' blocks and the camera's. And the
+// enum defines the passes give their shaders carry the knob's choice indices.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include "renderer/gl/Program.h"
 #include "renderer/scene/GpuScene.h"
 #include "shaders/params/bloom.h"
+#include "shaders/params/camera.h"
 #include "shaders/params/dof.h"
 #include "shaders/params/fxaa.h"
 #include "shaders/params/lighting.h"
@@ -33,21 +34,29 @@ namespace {
 struct BlockInfo {
     std::string name;
     std::size_t size = 0;
+    unsigned binding = 0;
     std::vector<gpu::ParamField> fields;
 };
 
 template <typename Block>
 BlockInfo describe() {
-    return {Block::kBlockName, sizeof(Block), Block::fields()};
+    return {Block::kBlockName, sizeof(Block), Block::kBinding, Block::fields()};
 }
 
-// Every parameter block a pass declares. A new header adds a line here.
+// The binding names of shaders/common/bindings.glsl, which the blocks'
+// bindings come from, are dw::binding's.
+static_assert(CAMERA_UBO == binding::kCameraUbo && PASS_UBO == binding::kPassUbo &&
+              MATERIAL_SSBO == binding::kMaterialSsbo && LIGHT_SSBO == binding::kLightSsbo);
+static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo &&
+              gpu::SsaoParams::kBinding == binding::kPassUbo);
+
+// Every parameter block in shaders/params. A new header adds a line here.
 std::vector<BlockInfo> allBlocks() {
     return {describe<gpu::SsaoParams>(),      describe<gpu::SsaoBlurParams>(),
             describe<gpu::SkyParams>(),       describe<gpu::LightingParams>(),
             describe<gpu::LuminanceParams>(), describe<gpu::BloomParams>(),
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
-            describe<gpu::FxaaParams>()};
+            describe<gpu::FxaaParams>(),      describe<gpu::CameraBlock>()};
 }
 
 // Blocks at the pass binding that are not declared in shaders/params yet.
@@ -79,7 +88,7 @@ std::vector<std::string> mismatches(const BlockInfo& b, const gl::UniformBlockLa
         if (gl != cpp)
             out.push_back(what + ": GLSL " + std::to_string(gl) + ", C++ " + std::to_string(cpp));
     };
-    differ("binding", layout.binding, binding::kPassUbo);
+    differ("binding", layout.binding, b.binding);
     differ("size", layout.dataSize, static_cast<long long>(b.size));
     // std140 blocks have every member active, used or not.
     differ("member count", static_cast<long long>(layout.members.size()),
@@ -128,11 +137,9 @@ TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
             const auto b = std::find_if(blocks.begin(), blocks.end(),
                                         [&](const BlockInfo& i) { return i.name == name; });
             if (b == blocks.end()) {
-                // Only shared headers declare blocks at the pass binding.
-                if (layout->binding == static_cast<GLint>(binding::kPassUbo)) {
-                    EXPECT_TRUE(kNotYetShared.count(name))
-                        << where << " declares " << name << " by hand";
-                }
+                // Every uniform block is declared in shaders/params (but the
+                // buffer view's, for now).
+                EXPECT_TRUE(kNotYetShared.count(name)) << where << " declares " << name << " by hand";
                 continue;
             }
             ++programsWithBlock[name];
