@@ -33,7 +33,8 @@
 // to a multiple of 16 bytes. Comments inside a field list are /* */ (a //
 // comment would swallow the line continuation). Enum knob values are not
 // written here: the pass passes KnobRegistry::choiceDefines() as defines.
-// Values that are no knob's (the sky's kinds) are DW_PARAM_CONSTs in the header.
+// Values that are no knob's (the sky's kinds, the buffer view's mappings)
+// are DW_PARAM_CONSTs in the header.
 #ifndef DW_PARAMS_PRELUDE_H
 #define DW_PARAMS_PRELUDE_H
 
