@@ -7,6 +7,7 @@
 
 #include "renderer/gl/DepthConvention.h"
 #include "renderer/graph/OutputRegistry.h"
+#include "shaders/params/camera.h"
 
 namespace dw {
 
@@ -22,22 +23,18 @@ class Texture;
 class Buffer;
 }
 
-// std140 mirror of CameraBlock in shaders/common/camera.glsl, followed by the
-// frame's world origin (C++ only, past the block's end: the shaders never
-// read it). Rendering is camera-relative: every world position reaches the
-// GPU minus `origin` (the camera's position, subtracted in double precision),
-// so `view` is a rotation and a scene 1e5 or 1e7 from the world origin keeps
-// float's full precision near the camera. "World" in the shaders means
-// world - origin.
-struct CameraUniforms {
-    glm::mat4 view{1.0f};
-    glm::mat4 projection{1.0f};
-    glm::mat4 viewProjection{1.0f};
-    glm::mat4 inverseProjection{1.0f};
-    glm::mat4 inverseView{1.0f};
-    glm::vec4 viewport{0.0f};  // width, height, 1/width, 1/height
-    glm::vec4 clip{0.0f};      // near, far, tan(fovY/2), aspect
-    glm::vec4 depth{1.0f, 0.0f, 1.0f, 0.0f};  // DepthConvention::uniform(): reversed flag, far depth, near depth
+// The camera block (gpu::CameraBlock, declared once in
+// shaders/params/camera.h for C++ and shaders/common/camera.glsl) and the
+// frame's world origin (C++ only: Pipeline uploads the gpu::CameraBlock part,
+// the shaders never read it). Rendering is camera-relative: every world
+// position reaches the GPU minus `origin` (the camera's position, subtracted
+// in double precision), so `view` is a rotation and a scene 1e5 or 1e7 from
+// the world origin keeps float's full precision near the camera. "World" in
+// the shaders means world - origin.
+struct CameraUniforms : gpu::CameraBlock {
+    // Identity matrices, no viewport, DepthConvention::uniform() of reversed depth.
+    CameraUniforms();
+
     glm::dvec3 origin{0.0};  // world position of the frame's origin (the camera), not uploaded to shaders
 
     // Absolute world space to view / clip space, in double precision.

@@ -14,6 +14,9 @@
 
 namespace dw {
 
+static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo,
+              "shaders/common/bindings.glsl and dw::binding disagree on the camera's binding");
+
 const PassRecord* FrameReport::find(const std::string& name) const {
     for (const auto& p : passes)
         if (p.name == name) return &p;
@@ -64,7 +67,7 @@ RenderPass* Pipeline::findPass(const std::string& name) const {
 void Pipeline::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
     for (auto& p : passes_) p->setup(shaders);
-    cameraUbo_ = gl::Buffer::create(sizeof(CameraUniforms), nullptr, true, "camera");
+    cameraUbo_.create();
 }
 
 void Pipeline::setScene(const Scene& scene) {
@@ -77,8 +80,7 @@ void Pipeline::setScene(const Scene& scene) {
 
 void Pipeline::bindCamera(const Camera& camera) {
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
-    cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
-    cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+    cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
 }
 
@@ -300,8 +302,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     }
 
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
-    cameraUbo_.update(0, sizeof(CameraUniforms), &camera_);
-    cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+    cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
     allocateResources(plan);
     outputs_.markFrameStart();
@@ -317,7 +318,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             RenderPass& p = *passes_[i];
             ctx.image = plan.image[i];
             gl::resetPipelineState(width_, height_);
-            cameraUbo_.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+            cameraUbo_.bind(binding::kCameraUbo);
             glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
             timer_.beginPass(p.name());
             try {

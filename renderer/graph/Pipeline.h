@@ -16,6 +16,7 @@
 #include "renderer/graph/PassTimer.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/gl/Buffer.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/graph/ResourcePool.h"
 
@@ -123,7 +124,7 @@ private:
     OutputRegistry outputs_;
     PassTimer timer_;
     GpuScene gpu_;
-    gl::Buffer cameraUbo_;
+    gl::ParamBuffer<gpu::CameraBlock> cameraUbo_;
     gl::ShaderLibrary* shaders_ = nullptr;
     const Scene* scene_ = nullptr;
     CameraUniforms camera_;

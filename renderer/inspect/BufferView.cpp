@@ -2,19 +2,33 @@
 
 #include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
+#include "shaders/params/bufferview.h"
 
 namespace dw {
 
 namespace {
-struct ParamsGpu {
-    glm::ivec4 modes{0};
-    glm::ivec4 flags{0};
-    glm::vec4 range{0.0f};
-    glm::vec4 extra{0.0f};
-    glm::ivec4 cell{0};    // x, y cell (layer, face) size; z first layer (cube); w sample (-1: mean)
-    glm::ivec4 grid{0};    // x, y image size; z grid columns; w cells
-    glm::ivec4 source{0};  // x samples; y buffer words per element step; z buffer words are unsigned
-};
+using Mapping = BufferViewSettings::Mapping;
+using Channel = BufferViewSettings::Channel;
+using Arrangement = ImageLayout::Arrangement;
+// The numbers the shaders compare with are declared in shaders/params/bufferview.h.
+static_assert(static_cast<int>(Mapping::Direct) == gpu::VIEW_MAP_DIRECT &&
+              static_cast<int>(Mapping::LinearDepth) == gpu::VIEW_MAP_LINEAR_DEPTH &&
+              static_cast<int>(Mapping::Normal) == gpu::VIEW_MAP_NORMAL &&
+              static_cast<int>(Mapping::Heatmap) == gpu::VIEW_MAP_HEATMAP &&
+              static_cast<int>(Mapping::Tonemap) == gpu::VIEW_MAP_TONEMAP &&
+              static_cast<int>(Mapping::NonFinite) == gpu::VIEW_MAP_NON_FINITE,
+              "BufferViewSettings::Mapping and the VIEW_MAP_* constants differ");
+static_assert(static_cast<int>(Channel::RGB) == gpu::VIEW_CHANNEL_RGB &&
+              static_cast<int>(Channel::R) == gpu::VIEW_CHANNEL_R &&
+              static_cast<int>(Channel::G) == gpu::VIEW_CHANNEL_G &&
+              static_cast<int>(Channel::B) == gpu::VIEW_CHANNEL_B &&
+              static_cast<int>(Channel::A) == gpu::VIEW_CHANNEL_A,
+              "BufferViewSettings::Channel and the VIEW_CHANNEL_* constants differ");
+static_assert(static_cast<int>(Arrangement::Plain) == gpu::VIEW_ARRANGE_PLAIN &&
+              static_cast<int>(Arrangement::Layers) == gpu::VIEW_ARRANGE_LAYERS &&
+              static_cast<int>(Arrangement::Crosses) == gpu::VIEW_ARRANGE_CROSSES &&
+              static_cast<int>(Arrangement::Table) == gpu::VIEW_ARRANGE_TABLE,
+              "ImageLayout::Arrangement and the VIEW_ARRANGE_* constants differ");
 
 enum SourceKind { Source2D = 0, SourceMultisample = 1, SourceArray = 2, Source3D = 3, SourceBuffer = 4 };
 const char* const kSourceDefines[] = {nullptr, "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"};
@@ -30,7 +44,7 @@ void BufferView::setup(gl::ShaderLibrary& shaders) {
         for (auto& p : kind) p = {};
     programs(Source2D, 0);  // the common case now, so its errors show at start-up
     minmaxNext_ = shaders.get({.compute = "bufferview/minmax.comp"});
-    params_ = gl::Buffer::create(sizeof(ParamsGpu), nullptr, true, "buffer view params");
+    params_.create();
 }
 
 const BufferView::Programs& BufferView::programs(int sourceKind, int valueType) {
@@ -93,18 +107,35 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     const BufferViewSettings::Channel channel =
         channels == 1 && s.channel == BufferViewSettings::Channel::RGB ? BufferViewSettings::Channel::R : s.channel;
     const bool autoRange = resolveAutoRange(output.decl.kind, s);
-    ParamsGpu p;
-    p.modes = glm::ivec4(static_cast<int>(mapping), static_cast<int>(channel), autoRange ? 1 : 0, output.level);
-    p.flags = glm::ivec4(output.decl.kind == OutputKind::NormalKL, output.decl.kind == OutputKind::Depth ? (s.reversedDepth ? 2 : 1)
-                         : (src && src->isDepth() && s.reversedDepth ? 3 : 0),
-                         src && src->isSrgb() ? 1 : 0, static_cast<int>(layout.arrangement));
-    p.range = glm::vec4(s.rangeMin, s.rangeMax, s.nearPlane, s.farPlane);
-    p.extra = glm::vec4(s.exposure, 0, 0, 0);
-    p.cell = glm::ivec4(layout.cellWidth, layout.cellHeight, layout.first, layout.sample);
-    p.grid = glm::ivec4(w, h, layout.columns, layout.cells);
-    p.source = glm::ivec4(layout.samples, layout.wordStep, layout.uintWords ? 1 : 0, 0);
-    params_.update(0, sizeof(p), &p);
-    params_.bindBase(GL_UNIFORM_BUFFER, binding::kPassUbo);
+    gpu::BufferViewParams p{};
+    p.mapping = static_cast<int>(mapping);
+    p.channel = static_cast<int>(channel);
+    p.autoRange = autoRange ? 1 : 0;
+    p.mipLevel = output.level;
+    p.klNormal = output.decl.kind == OutputKind::NormalKL ? 1 : 0;
+    if (output.decl.kind == OutputKind::Depth)
+        p.depthKind = s.reversedDepth ? gpu::VIEW_DEPTH_REVERSED : gpu::VIEW_DEPTH_CONVENTIONAL;
+    else if (src && src->isDepth() && s.reversedDepth)
+        p.depthKind = gpu::VIEW_DEPTH_RAW_REVERSED;
+    else
+        p.depthKind = gpu::VIEW_DEPTH_NONE;
+    p.srgb = src && src->isSrgb() ? 1 : 0;
+    p.arrangement = static_cast<int>(layout.arrangement);
+    p.rangeMin = s.rangeMin;
+    p.rangeMax = s.rangeMax;
+    p.nearPlane = s.nearPlane;
+    p.farPlane = s.farPlane;
+    p.exposure = s.exposure;
+    p.firstLayer = layout.first;
+    p.cellSize = glm::ivec2(layout.cellWidth, layout.cellHeight);
+    p.viewSize = glm::ivec2(w, h);
+    p.gridColumns = layout.columns;
+    p.cells = layout.cells;
+    p.sampleIndex = layout.sample;
+    p.samples = layout.samples;
+    p.wordsPerStep = layout.wordStep;
+    p.unsignedWords = layout.uintWords ? 1 : 0;
+    params_.upload(p, binding::kPassUbo);
 
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "buffer view");
     // Sources written by shader stores (buffers, images) are complete before they are read.

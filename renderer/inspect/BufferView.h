@@ -16,8 +16,10 @@
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Framebuffer.h"
 #include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/Texture.h"
+#include "shaders/params/bufferview.h"
 
 namespace dw {
 
@@ -65,7 +67,8 @@ private:
     gl::ShaderLibrary::Handle minmaxNext_;
     gl::Texture sourceView_;  // layered sources: a view without compare mode (cubes as 2D arrays)
     gl::FullscreenTriangle triangle_;
-    gl::Buffer params_, ping_, pong_;
+    gl::ParamBuffer<gpu::BufferViewParams> params_;
+    gl::Buffer ping_, pong_;
     const gl::Buffer* result_ = nullptr;
     gl::Texture target_;
     gl::Framebuffer fbo_;

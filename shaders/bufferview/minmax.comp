@@ -20,7 +20,7 @@ void main() {
     vec4 a = vec4(3.0e38), b = vec4(-3.0e38);
 #if defined(FIRST_PASS)
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = view.grid.xy;  // the view image: layers, faces and table cells included
+    ivec2 size = view.viewSize;  // the view image: layers, faces and table cells included
     vec4 v;
     if (px.x < size.x && px.y < size.y && fetchMapped(px, v)) {
         v = selectChannel(v);

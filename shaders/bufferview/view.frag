@@ -22,7 +22,7 @@ void main() {
         return;
     }
     vec4 raw = fetchRaw(src);
-    if (view.modes.x == MAP_NON_FINITE) {
+    if (view.mapping == VIEW_MAP_NON_FINITE) {
         // Non-finite values highlighted over a dim picture of the rest.
         bool positiveInf = false, negativeInf = false;
         for (int i = 0; i < 4; ++i)
@@ -48,18 +48,18 @@ void main() {
         return;
     }
     v = selectChannel(v);
-    int mapping = view.modes.x;
-    vec4 lo = vec4(view.range.x), hi = vec4(view.range.y);
-    if (view.modes.z != 0) {
+    int mapping = view.mapping;
+    vec4 lo = vec4(view.rangeMin), hi = vec4(view.rangeMax);
+    if (view.autoRange != 0) {
         lo = autoRange[0].lo;
         hi = autoRange[0].hi;
-        if (view.modes.y == 0 && mapping != MAP_HEATMAP) {
+        if (view.channel == VIEW_CHANNEL_RGB && mapping != VIEW_MAP_HEATMAP) {
             // One range for all colour channels keeps hues honest.
             float l = min(min(lo.r, lo.g), lo.b), h = max(max(hi.r, hi.g), hi.b);
             lo = vec4(l);
             hi = vec4(h);
         }
-        if (mapping == MAP_HEATMAP) lo = vec4(min(lo.r, 0.0));
+        if (mapping == VIEW_MAP_HEATMAP) lo = vec4(min(lo.r, 0.0));
         // A constant buffer (a range of no width: gbuffer.occlusion without
         // an occlusion texture is all 1) shows its value against [0, 1], not black.
         bvec4 noWidth = lessThanEqual(hi - lo, 1e-6 * max(abs(hi), vec4(1.0)));
@@ -68,17 +68,17 @@ void main() {
     }
     vec4 span = max(hi - lo, vec4(1e-20));
     vec3 c;
-    if (mapping == MAP_NORMAL) {
-        c = view.modes.y == 0 ? v.xyz * 0.5 + 0.5 : vec3(v.x * 0.5 + 0.5);
-    } else if (mapping == MAP_HEATMAP) {
+    if (mapping == VIEW_MAP_NORMAL) {
+        c = view.channel == VIEW_CHANNEL_RGB ? v.xyz * 0.5 + 0.5 : vec3(v.x * 0.5 + 0.5);
+    } else if (mapping == VIEW_MAP_HEATMAP) {
         c = turbo((v.r - lo.r) / span.r);
-    } else if (mapping == MAP_TONEMAP) {
-        vec3 x = max(v.rgb, 0.0) * exp2(view.extra.x);
+    } else if (mapping == VIEW_MAP_TONEMAP) {
+        vec3 x = max(v.rgb, 0.0) * exp2(view.exposure);
         c = linearToSrgb(x / (1.0 + x));
     } else {
         c = clamp((v.rgb - lo.rgb) / span.rgb, 0.0, 1.0);
         // Linear colour stored in sRGB textures (albedo, specular) displays encoded.
-        if (view.flags.z != 0 && view.modes.y == 0) c = linearToSrgb(c);
+        if (view.srgb != 0 && view.channel == VIEW_CHANNEL_RGB) c = linearToSrgb(c);
     }
     outColor = vec4(c, 1.0);
 }

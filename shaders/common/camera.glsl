@@ -1,20 +1,10 @@
-// Camera uniforms (dw::CameraUniforms) and position reconstruction from depth
-// (seed 000, section 3.1: window coordinates and depth back through the
-// inverse projection give the view-space position). Clip-space depth is in
+// The camera block (declared in shaders/params/camera.h; dw::CameraUniforms)
+// and position reconstruction from depth (seed 000, section 3.1: window
+// coordinates and depth back through the inverse projection give the
+// view-space position). Clip-space depth is in
 // [0, 1] (glClipControl GL_ZERO_TO_ONE), so window depth is NDC z; depth.x
 // says whether the mapping is reversed (near 1, far 0; dw::DepthConvention).
-#include "bindings.glsl"
-
-layout(std140, binding = CAMERA_UBO) uniform CameraBlock {
-    mat4 view;
-    mat4 projection;
-    mat4 viewProjection;
-    mat4 inverseProjection;
-    mat4 inverseView;
-    vec4 viewport;  // width, height, 1/width, 1/height
-    vec4 clip;      // near, far, tan(fovY/2), aspect
-    vec4 depth;     // x 1 reversed / 0 conventional, y far-plane depth, z near-plane depth
-} camera;
+#include "../params/camera.h"
 
 bool depthReversed() { return camera.depth.x > 0.5; }
 // Window depth of the far plane (the clear value) and of the near plane.

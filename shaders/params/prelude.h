@@ -21,12 +21,20 @@
 // in DW_PARAM_SIZE, and SsaoParams::fields(), which the GL tests compare with
 // the compiled program's own idea of the block.
 //
+// A block at another binding point than the pass's (the camera's, at
+// CAMERA_UBO) is DW_PARAM_BLOCK_AT(Block, instance, CAMERA_UBO, FIELDS);
+// DW_PARAM_BLOCK is DW_PARAM_BLOCK_AT(..., PASS_UBO, ...). The binding names
+// come from shaders/common/bindings.glsl in both languages, and C++ has the
+// block's as Block::kBinding.
+//
 // Rules: int, uint, float, vecN, ivecN and mat4 fields only (no bool: GLSL's
 // is 4 bytes); arrays only of 16-byte types (vec4, ivec4, mat4); put padding
 // fields (pad0, pad1, ...) where std140 would leave a gap, and pad the block
 // to a multiple of 16 bytes. Comments inside a field list are /* */ (a //
 // comment would swallow the line continuation). Enum knob values are not
 // written here: the pass passes KnobRegistry::choiceDefines() as defines.
+// Values that are no knob's (the sky's kinds, the buffer view's mappings)
+// are DW_PARAM_CONSTs in the header.
 #ifndef DW_PARAMS_PRELUDE_H
 #define DW_PARAMS_PRELUDE_H
 
@@ -36,6 +44,7 @@
 // the GLSL preprocessor skips this branch.
 #include <cstddef>
 #include <renderer/gl/Std140.h>
+#include <shaders/common/bindings.glsl>
 #include <vector>
 
 #define DW_PARAM_CONST(type, name, value) \
@@ -60,12 +69,13 @@
 
 // Member function bodies see the complete struct, so offsetof works there;
 // checkStd140's static_asserts are evaluated when the struct is compiled.
-#define DW_PARAM_BLOCK(Block, instance, FIELDS)                                           \
+#define DW_PARAM_BLOCK_AT(Block, instance, bindingPoint, FIELDS)                          \
     namespace dw::gpu {                                                                   \
     struct Block {                                                                        \
         FIELDS(DW_PARAM_CPP_FIELD, DW_PARAM_CPP_ARRAY)                                    \
         static constexpr const char* kBlockName = #Block;                                 \
         static constexpr const char* kInstanceName = #instance;                           \
+        static constexpr unsigned kBinding = bindingPoint;                                \
         static std::vector<ParamField> fields() {                                         \
             using Self = Block;                                                           \
             return {FIELDS(DW_PARAM_CPP_DESCRIBE_FIELD, DW_PARAM_CPP_DESCRIBE_ARRAY)};    \
@@ -78,6 +88,7 @@
     static_assert(std::is_standard_layout_v<Block>, #Block " must be plain data");        \
     static_assert(sizeof(Block) % 16 == 0, #Block ": pad the block to a multiple of 16"); \
     }
+#define DW_PARAM_BLOCK(Block, instance, FIELDS) DW_PARAM_BLOCK_AT(Block, instance, PASS_UBO, FIELDS)
 
 #define DW_PARAM_SIZE(Block, bytes) \
     static_assert(sizeof(::dw::gpu::Block) == (bytes), #Block " is not the size its header says");
@@ -89,8 +100,9 @@
 #define DW_PARAM_CONST(type, name, value) const type name = value;
 #define DW_PARAM_GLSL_FIELD(type, name) type name;
 #define DW_PARAM_GLSL_ARRAY(type, name, count) type name[count];
-#define DW_PARAM_BLOCK(Block, instance, FIELDS) \
-    layout(std140, binding = PASS_UBO) uniform Block { FIELDS(DW_PARAM_GLSL_FIELD, DW_PARAM_GLSL_ARRAY) } instance;
+#define DW_PARAM_BLOCK_AT(Block, instance, bindingPoint, FIELDS) \
+    layout(std140, binding = bindingPoint) uniform Block { FIELDS(DW_PARAM_GLSL_FIELD, DW_PARAM_GLSL_ARRAY) } instance;
+#define DW_PARAM_BLOCK(Block, instance, FIELDS) DW_PARAM_BLOCK_AT(Block, instance, PASS_UBO, FIELDS)
 #define DW_PARAM_SIZE(Block, bytes)
 
 #endif

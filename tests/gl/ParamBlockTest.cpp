@@ -2,8 +2,9 @@
 // The C++ side checks std140's rules at compile time; these tests ask the GL
 // compiler itself, through program introspection, where each member of each
 // block is in every program the pipeline built, and compare that with the
-// C++ struct field by field. And the enum defines the passes give their
-// shaders carry the knob's choice indices.
+// C++ struct field by field: the passes' blocks, the buffer view's and the
+// camera's. And the enum defines the passes give their shaders carry the
+// knob's choice indices, and the buffer view's constants are its C++ enums'.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,8 +15,11 @@
 
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Program.h"
+#include "renderer/inspect/BufferView.h"
 #include "renderer/scene/GpuScene.h"
 #include "shaders/params/bloom.h"
+#include "shaders/params/bufferview.h"
+#include "shaders/params/camera.h"
 #include "shaders/params/dof.h"
 #include "shaders/params/fxaa.h"
 #include "shaders/params/lighting.h"
@@ -33,27 +37,47 @@ namespace {
 struct BlockInfo {
     std::string name;
     std::size_t size = 0;
+    unsigned binding = 0;
     std::vector<gpu::ParamField> fields;
 };
 
 template <typename Block>
 BlockInfo describe() {
-    return {Block::kBlockName, sizeof(Block), Block::fields()};
+    return {Block::kBlockName, sizeof(Block), Block::kBinding, Block::fields()};
 }
 
-// Every parameter block a pass declares. A new header adds a line here.
+// The binding names of shaders/common/bindings.glsl, which the blocks'
+// bindings come from, are dw::binding's.
+static_assert(CAMERA_UBO == binding::kCameraUbo && PASS_UBO == binding::kPassUbo &&
+              MATERIAL_SSBO == binding::kMaterialSsbo && LIGHT_SSBO == binding::kLightSsbo);
+static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo &&
+              gpu::SsaoParams::kBinding == binding::kPassUbo &&
+              gpu::BufferViewParams::kBinding == binding::kPassUbo);
+
+// Every parameter block in shaders/params. A new header adds a line here.
 std::vector<BlockInfo> allBlocks() {
     return {describe<gpu::SsaoParams>(),      describe<gpu::SsaoBlurParams>(),
             describe<gpu::SkyParams>(),       describe<gpu::LightingParams>(),
             describe<gpu::LuminanceParams>(), describe<gpu::BloomParams>(),
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
-            describe<gpu::FxaaParams>()};
+            describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
+            describe<gpu::CameraBlock>()};
 }
 
-// Blocks at the pass binding that are not declared in shaders/params yet.
-const std::set<std::string> kNotYetShared = {
-    "BufferViewParams",  // the buffer view's, rewritten separately
-};
+// Builds every variant of the buffer view's programs (BufferView compiles
+// one per source kind and value type when first needed), so the layout test
+// sees them all.
+void buildBufferViewVariants(gl::ShaderLibrary& shaders) {
+    for (const char* source : {"", "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"})
+        for (const char* type : {"", "SOURCE_UINT", "SOURCE_INT"}) {
+            std::vector<std::string> defines;
+            for (const char* d : {source, type})
+                if (*d) defines.push_back(d);
+            shaders.get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag", .defines = defines});
+            defines.insert(defines.begin(), "FIRST_PASS");
+            shaders.get({.compute = "bufferview/minmax.comp", .defines = defines});
+        }
+}
 
 GLenum glType(const std::string& glsl) {
     static const std::map<std::string, GLenum> types = {{"int", GL_INT},
@@ -79,7 +103,7 @@ std::vector<std::string> mismatches(const BlockInfo& b, const gl::UniformBlockLa
         if (gl != cpp)
             out.push_back(what + ": GLSL " + std::to_string(gl) + ", C++ " + std::to_string(cpp));
     };
-    differ("binding", layout.binding, binding::kPassUbo);
+    differ("binding", layout.binding, b.binding);
     differ("size", layout.dataSize, static_cast<long long>(b.size));
     // std140 blocks have every member active, used or not.
     differ("member count", static_cast<long long>(layout.members.size()),
@@ -118,6 +142,7 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
     auto s = test::makeSession(64, 36);
+    buildBufferViewVariants(s->shaders());
     const std::vector<BlockInfo> blocks = allBlocks();
     std::map<std::string, int> programsWithBlock;
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs()) {
@@ -128,11 +153,8 @@ TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
             const auto b = std::find_if(blocks.begin(), blocks.end(),
                                         [&](const BlockInfo& i) { return i.name == name; });
             if (b == blocks.end()) {
-                // Only shared headers declare blocks at the pass binding.
-                if (layout->binding == static_cast<GLint>(binding::kPassUbo)) {
-                    EXPECT_TRUE(kNotYetShared.count(name))
-                        << where << " declares " << name << " by hand";
-                }
+                // Every uniform block is declared in shaders/params.
+                ADD_FAILURE() << where << " declares " << name << " by hand";
                 continue;
             }
             ++programsWithBlock[name];
@@ -215,4 +237,48 @@ TEST(ParamBlocks, BoundsSharedWithGlslAreTheKnobsBounds) {
             ASSERT_NE(kernel, layout->members.end());
             EXPECT_EQ(kernel->arraySize, gpu::SSAO_MAX_SAMPLES);
         }
+}
+
+TEST(ParamBlocks, BufferViewConstantsAreItsCppEnums) {
+    // The VIEW_* values as GLSL compiles them from shaders/params/bufferview.h,
+    // against the C++ enums BufferView.cpp static_asserts against the same header.
+    using M = BufferViewSettings::Mapping;
+    using C = BufferViewSettings::Channel;
+    using A = ImageLayout::Arrangement;
+    const std::vector<std::pair<std::string, int>> expected = {
+        {"VIEW_MAP_DIRECT", static_cast<int>(M::Direct)},
+        {"VIEW_MAP_LINEAR_DEPTH", static_cast<int>(M::LinearDepth)},
+        {"VIEW_MAP_NORMAL", static_cast<int>(M::Normal)},
+        {"VIEW_MAP_HEATMAP", static_cast<int>(M::Heatmap)},
+        {"VIEW_MAP_TONEMAP", static_cast<int>(M::Tonemap)},
+        {"VIEW_MAP_NON_FINITE", static_cast<int>(M::NonFinite)},
+        {"VIEW_CHANNEL_RGB", static_cast<int>(C::RGB)},
+        {"VIEW_CHANNEL_R", static_cast<int>(C::R)},
+        {"VIEW_CHANNEL_G", static_cast<int>(C::G)},
+        {"VIEW_CHANNEL_B", static_cast<int>(C::B)},
+        {"VIEW_CHANNEL_A", static_cast<int>(C::A)},
+        {"VIEW_ARRANGE_PLAIN", static_cast<int>(A::Plain)},
+        {"VIEW_ARRANGE_LAYERS", static_cast<int>(A::Layers)},
+        {"VIEW_ARRANGE_CROSSES", static_cast<int>(A::Crosses)},
+        {"VIEW_ARRANGE_TABLE", static_cast<int>(A::Table)},
+    };
+    auto s = test::makeSession(16, 16);
+    std::string src =
+        "#version 450 core\n#include \"params/bufferview.h\"\nlayout(local_size_x = 1) in;\n"
+        "layout(std430, binding = 0) writeonly buffer Out { int v[]; };\nvoid main() {\n";
+    for (size_t i = 0; i < expected.size(); ++i)
+        src += "    v[" + std::to_string(i) + "] = " + expected[i].first + ";\n";
+    src += "}\n";
+    const auto program = gl::Program::link(
+        {{GL_COMPUTE_SHADER,
+          gl::ShaderSource::fromString(s->shaders().root(), "constants.comp", src, {})}});
+    gl::Buffer out = gl::Buffer::create(expected.size() * sizeof(int), nullptr, false);
+    out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    program.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<int> got(expected.size());
+    out.read(0, got.size() * sizeof(int), got.data());
+    for (size_t i = 0; i < expected.size(); ++i)
+        EXPECT_EQ(got[i], expected[i].second) << expected[i].first;
 }
