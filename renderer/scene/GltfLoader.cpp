@@ -75,7 +75,10 @@ public:
             fail("unreadable JSON: " + jsonErrorText(e));
         }
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
-        checkGltfValues(j, path_, &invalid_);  // schema, cameras, lights, data: URIs (GltfCheck.h)
+        GltfContainer container;
+        container.glb = glb;
+        if (glb) container.binLength = glbBinLength(bytes);
+        checkGltfValues(j, path_, &invalid_, container);  // schema, buffers, cameras, lights, data: URIs (GltfCheck.h)
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
             for (const auto& e : j["extensionsRequired"])
                 if (e.is_string() && !isSupportedExtension(e.get<std::string>()))
