@@ -300,9 +300,43 @@ bool isDecodableDataUri(const std::string& uri, std::string& problem) {
     return true;
 }
 
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid) {
+std::optional<std::uint32_t> glbBinLength(const std::string& bytes) {
+    const std::size_t at = 20ull + readU32(bytes, 12);
+    if (at + 8 > bytes.size() || readU32(bytes, at + 4) != kBinChunk) return std::nullopt;
+    return readU32(bytes, at);
+}
+
+namespace {
+
+// A buffer without a uri: only a GLB's buffer 0, for its binary chunk, which
+// must exist and hold byteLength bytes (tinygltf says neither which buffer nor why).
+void checkBufferSources(const json& gltf, const GltfContainer& container, std::vector<std::string>& problems) {
+    if (!gltf.contains("buffers") || !gltf["buffers"].is_array()) return;
+    const json& buffers = gltf["buffers"];
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        const json& b = buffers[i];
+        if (!b.is_object() || b.contains("uri")) continue;
+        const std::string where = "buffers[" + std::to_string(i) + "]";
+        if (!container.glb)
+            problems.push_back(where + ": required property 'uri' is missing (only a GLB's buffer 0 may leave it out)");
+        else if (i != 0)
+            problems.push_back(where + ": has no uri (only buffer 0 of a GLB takes the binary chunk)");
+        else if (!container.binLength)
+            problems.push_back(where + ": has no uri and the GLB has no binary chunk");
+        else if (b.contains("byteLength") && b["byteLength"].is_number_unsigned() &&
+                 b["byteLength"].get<std::uint64_t>() > *container.binLength)
+            problems.push_back(where + ".byteLength: " + b["byteLength"].dump() + " is more than the binary chunk's " +
+                               std::to_string(*container.binLength) + " bytes");
+    }
+}
+
+}  // namespace
+
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid,
+                     const GltfContainer& container) {
     std::vector<std::string> problems, readPast;
     checkGltfSchema(gltf, problems, readPast);
+    checkBufferSources(gltf, container, problems);
     ValueChecker(gltf, problems).run();
     if (!problems.empty()) throw FileError(path, joinProblems(problems));
     if (invalid) invalid->insert(invalid->end(), readPast.begin(), readPast.end());

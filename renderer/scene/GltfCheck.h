@@ -11,7 +11,9 @@
 //    range > 0, spots 0 <= innerConeAngle < outerConeAngle <= pi/2.
 // Every function throws FileError(path, "<what>: <problem>"); checkGltfValues
 // names every object with a problem, not only the first or the last.
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,11 +28,23 @@ namespace dw {
 std::string_view glbJsonChunk(const std::string& bytes, const std::string& path,
                               std::vector<std::string>* invalid = nullptr);
 
+// The length of a .glb's binary chunk, when it has one; `bytes` has passed glbJsonChunk.
+std::optional<std::uint32_t> glbBinLength(const std::string& bytes);
+
+// Where a file's buffers can come from: a GLB's buffer 0 may leave out its
+// uri and take the binary chunk (when there is one, of binLength bytes).
+struct GltfContainer {
+    bool glb = false;
+    std::optional<std::uint32_t> binLength;
+};
+
 // The value checks above and the schema's (GltfSchema.h) on the parsed glTF
 // JSON. Every object's first problem is collected (all bad cameras, lights,
 // accessors...) and thrown as one FileError, "<what>; <what>; ..."; rules the
 // importer reads past are added to `invalid`, when given.
-void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid = nullptr);
+// `container` says whether a buffer without a uri has bytes (spec "GLB-stored Buffer").
+void checkGltfValues(const nlohmann::json& gltf, const std::string& path, std::vector<std::string>* invalid = nullptr,
+                     const GltfContainer& container = {});
 
 // Problems ("<json path>: <what>") in the order of their paths, joined with
 // "; ", at most 12 shown ("...; and 3 more").

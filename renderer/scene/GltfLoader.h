@@ -3,7 +3,10 @@
 // image-loader hook). tinygltf accepts many invalid files (indices and
 // accessors out of range, node cycles, non-finite positions) and throws
 // std::bad_alloc on some: this loader checks what tinygltf does not and turns
-// both into one FileError naming the file and the problem.
+// both into one FileError naming the file and the problem. Its parts, each
+// with the spec section it follows: GltfCheck and GltfSchema (the container
+// and JSON before tinygltf), GltfModelCheck (the model after it),
+// GltfAccessors, GltfMaterials, GltfLights (docs/architecture.md, "glTF import").
 #include <glm/glm.hpp>
 #include <string>
 

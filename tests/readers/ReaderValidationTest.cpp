@@ -114,6 +114,16 @@ json withLight(json j, const json& light) {
 
 std::string gltfError(const std::string& name, const json& j) { return sceneError(writeText(name, j.dump())); }
 
+// A GLB of `chunks` (length field, type, data); the header's length is the
+// file's size unless `declared` is given.
+std::string glbOf(const std::vector<std::tuple<std::uint32_t, std::string, std::string>>& chunks, long declared = -1) {
+    auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    std::string body;
+    for (const auto& [length, type, data] : chunks) body += u32(length) + type + data;
+    const auto total = static_cast<std::uint32_t>(declared >= 0 ? declared : static_cast<long>(12 + body.size()));
+    return "glTF" + u32(2) + u32(total) + body;
+}
+
 const char* kSceneHead = R"({"objects": [{"shape": "box", "size": [1, 1, 1]}], )";
 std::string scene(const std::string& rest) { return std::string(kSceneHead) + rest + "}"; }
 
@@ -288,16 +298,6 @@ TEST(ReaderValidation, GltfLightsFollowTheSceneJsonRules) {
 
 // ---- messages in the user's terms --------------------------------------------
 
-// A GLB of `chunks` (length field, type, data); the header's length is the
-// file's size unless `declared` is given.
-std::string glbOf(const std::vector<std::tuple<std::uint32_t, std::string, std::string>>& chunks, long declared = -1) {
-    auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
-    std::string body;
-    for (const auto& [length, type, data] : chunks) body += u32(length) + type + data;
-    const auto total = static_cast<std::uint32_t>(declared >= 0 ? declared : static_cast<long>(12 + body.size()));
-    return "glTF" + u32(2) + u32(total) + body;
-}
-
 TEST(ReaderValidation, GlbHeaderProblemsAreNamedAsSuch) {
     const std::string glb = "glTF" + std::string("\x02\0\0\0", 4);
     auto err = [](const std::string& name, const std::string& bytes) { return sceneError(writeText(name, bytes)); };
@@ -379,6 +379,17 @@ TEST(ReaderValidation, GltfSchemaBreaksAreNamedByObject) {
     j["cameras"].push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.8}}}});
     EXPECT_HAS(gltfError("cams.gltf", j), "cams.gltf: cameras[0].perspective.yfov: must be in (0, 179) degrees, got 0 rad "
                                           "(0 degrees); cameras[2].perspective: required property 'znear' is missing");
+    // A buffer without a uri: only a GLB's buffer 0, with a binary chunk that holds it.
+    j = triangleGltf();
+    j["buffers"][0].erase("uri");
+    EXPECT_HAS(gltfError("nouri.gltf", j), "nouri.gltf: buffers[0]: required property 'uri' is missing (only a GLB's buffer 0 may leave it out)");
+    std::string text2 = j.dump();
+    text2.resize((text2.size() + 3) & ~std::size_t(3), ' ');
+    const auto n = static_cast<std::uint32_t>(text2.size());
+    EXPECT_HAS(sceneError(writeText("nobin.glb", glbOf({{n, "JSON", text2}}))),
+               "nobin.glb: buffers[0]: has no uri and the GLB has no binary chunk");
+    EXPECT_HAS(sceneError(writeText("smallbin.glb", glbOf({{n, "JSON", text2}, {8, std::string("BIN\0", 4), std::string(8, '\0')}}))),
+               "smallbin.glb: buffers[0].byteLength: 44 is more than the binary chunk's 8 bytes");
 }
 
 TEST(ReaderValidation, MalformedDataUriIsNotFileNotFound) {
