@@ -112,6 +112,15 @@ std::optional<UniformBlockLayout> Program::uniformBlock(const std::string& block
     return layout;
 }
 
+std::optional<Program::BufferVariable> Program::bufferVariable(const std::string& name) const {
+    const GLuint v = glGetProgramResourceIndex(id(), GL_BUFFER_VARIABLE, name.c_str());
+    if (v == GL_INVALID_INDEX) return std::nullopt;
+    const GLenum props[] = {GL_OFFSET, GL_TOP_LEVEL_ARRAY_STRIDE};
+    GLint p[2] = {};
+    glGetProgramResourceiv(id(), GL_BUFFER_VARIABLE, v, 2, props, 2, nullptr, p);
+    return BufferVariable{p[0], p[1]};
+}
+
 void Program::set(GLint l, int v) const { glProgramUniform1i(id(), l, v); }
 void Program::set(GLint l, unsigned v) const { glProgramUniform1ui(id(), l, v); }
 void Program::set(GLint l, float v) const { glProgramUniform1f(id(), l, v); }

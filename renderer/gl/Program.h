@@ -46,6 +46,14 @@ public:
     std::optional<UniformBlockLayout> uniformBlock(const std::string& blockName) const;
     // The names of all its uniform blocks.
     std::vector<std::string> uniformBlockNames() const;
+    // A storage-buffer variable ("lights[0].volume"): its byte offset in its
+    // array element and the stride of the buffer's top-level array, or
+    // nothing when the program does not use it (only used ones are active).
+    struct BufferVariable {
+        GLint offset = 0;
+        GLint topLevelStride = 0;
+    };
+    std::optional<BufferVariable> bufferVariable(const std::string& name) const;
 
     void set(GLint location, int v) const;
     void set(GLint location, unsigned v) const;

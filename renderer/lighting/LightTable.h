@@ -13,29 +13,22 @@
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/gl/Buffer.h"
 #include "renderer/scene/Light.h"
+#include "shaders/params/light.h"
 
 namespace dw {
 
-// std430 mirror of `Light` in shaders/common/lighting.glsl.
-struct LightGpu {
-    glm::mat4 volume{1.0f};            // unit volume mesh -> world
-    glm::vec4 positionRadius{0.0f};    // view-space position, radius (0 = unbounded)
-    glm::vec4 directionCutoff{0.0f};   // view-space direction, cos(cutoff) (a glTF spot's outer cone)
-    glm::vec4 intensityExponent{0.0f}; // rgb intensity; spot exponent, or coneRampScale for kind 3
-    glm::vec4 attenuation{0.0f};       // constant, linear, quadratic, kind (0 dir, 1 point, 2 spot, 3 spot with inner/outer cone)
-    glm::mat4 shadowMatrix{1.0f};      // view space -> the shadow map's space
-    glm::vec4 shadowParams{0.0f};      // mode (0 none), PCF radius, texel size, layer
-    glm::vec4 shadowRange{0.0f};       // near, far; constant bias (fixed, per unit distance)
+// A row of the table: gpu::Light (shaders/params/light.h, what
+// shaders/common/lighting.glsl reads), with identity matrices and zero vectors.
+struct LightGpu : gpu::Light {
+    LightGpu() : gpu::Light{glm::mat4(1.0f), glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f),
+                            glm::mat4(1.0f), glm::vec4(0.0f), glm::vec4(0.0f)} {}
 };
-static_assert(sizeof(LightGpu) == 224, "std430 layout of Light in shaders/common/lighting.glsl");
-static_assert(offsetof(LightGpu, positionRadius) == 64 && offsetof(LightGpu, shadowMatrix) == 128 &&
-                  offsetof(LightGpu, shadowRange) == 208,
-              "std430 offsets of Light in shaders/common/lighting.glsl");
+static_assert(sizeof(LightGpu) == sizeof(gpu::Light), "the table's rows are gpu::Light");
 
 // The kind in a row's attenuation.w of a spot light whose falloff is
-// SpotFalloff::InnerOuterCone (LIGHT_SPOT_CONE in shaders/common/lighting.glsl;
-// 0, 1 and 2 are directional, point and spot with cutoff and exponent).
-constexpr int kLightKindSpotCone = 3;
+// SpotFalloff::InnerOuterCone (0, 1 and 2 are directional, point and spot
+// with cutoff and exponent).
+constexpr int kLightKindSpotCone = gpu::LIGHT_SPOT_CONE;
 
 // What such a row holds in intensityExponent.w: 1 / (cos inner - cos outer),
 // worked out in double (the shader's ramp is (cos theta - cos outer) times

@@ -74,7 +74,9 @@ void LightTablePass::execute(FrameContext& ctx) {
                                      std::isfinite(v.radius) ? static_cast<float>(v.radius) : 0.0f);
         g.directionCutoff = glm::vec4(dirView, std::cos(glm::radians(l.cutoffDegrees)));
         g.intensityExponent = glm::vec4(l.intensity, l.exponent);
-        const int type = l.type == LightType::Directional ? 0 : (l.type == LightType::Point ? 1 : 2);
+        const int type = l.type == LightType::Directional ? gpu::LIGHT_DIRECTIONAL
+                         : l.type == LightType::Point     ? gpu::LIGHT_POINT
+                                                          : gpu::LIGHT_SPOT;
         const bool cone = l.type == LightType::Spot && l.falloff == SpotFalloff::InnerOuterCone;
         if (cone) g.intensityExponent.w = coneRampScale(l);
         g.attenuation = glm::vec4(l.attenuation.constant, l.attenuation.linear, l.attenuation.quadratic,

@@ -5,24 +5,10 @@
 // the square of a linear ramp in cos theta between the cones, 0 at the outer
 // one), and Ferko's windowed attenuation (seed 000, eq. 3.5) as an option.
 #include "bindings.glsl"
-
-#define LIGHT_DIRECTIONAL 0
-#define LIGHT_POINT 1
-#define LIGHT_SPOT 2
-// A spot light with KHR_lights_punctual's inner and outer cone (a kind >=
-// LIGHT_SPOT is a spot light; renderer/lighting/LightTable.h).
-#define LIGHT_SPOT_CONE 3
-
-struct Light {
-    mat4 volume;            // unit volume mesh -> world
-    vec4 positionRadius;    // view-space position, radius (0 = unbounded)
-    vec4 directionCutoff;   // view-space direction the light points to, cos(cutoff) (the outer cone)
-    vec4 intensityExponent; // rgb intensity; spot exponent (LIGHT_SPOT) or 1 / (cos inner - cos outer) (LIGHT_SPOT_CONE)
-    vec4 attenuation;       // constant, linear, quadratic, kind (LIGHT_*)
-    mat4 shadowMatrix;      // view space -> the shadow map's space
-    vec4 shadowParams;      // mode, PCF radius, texel size, layer
-    vec4 shadowRange;       // near, far (cube and paraboloid maps)
-};
+// The row (struct Light) and the kinds (LIGHT_DIRECTIONAL, LIGHT_POINT,
+// LIGHT_SPOT, LIGHT_SPOT_CONE; a kind >= LIGHT_SPOT is a spot light),
+// declared once for C++ and GLSL.
+#include "../params/light.h"
 
 layout(std430, binding = LIGHT_SSBO) readonly buffer LightTable {
     Light lights[];

@@ -90,6 +90,26 @@
     }
 #define DW_PARAM_BLOCK(Block, instance, FIELDS) DW_PARAM_BLOCK_AT(Block, instance, PASS_UBO, FIELDS)
 
+// A struct that is a row of a std430 storage buffer (the light table): vec4
+// and mat4 fields only, where std430 and std140 lay out alike, so the same
+// checks hold. GLSL gets `struct Name { ... };` for its buffer's array.
+#define DW_PARAM_STRUCT(Name, FIELDS)                                                     \
+    namespace dw::gpu {                                                                   \
+    struct Name {                                                                         \
+        FIELDS(DW_PARAM_CPP_FIELD, DW_PARAM_CPP_ARRAY)                                    \
+        static std::vector<ParamField> fields() {                                         \
+            using Self = Name;                                                            \
+            return {FIELDS(DW_PARAM_CPP_DESCRIBE_FIELD, DW_PARAM_CPP_DESCRIBE_ARRAY)};    \
+        }                                                                                 \
+        static constexpr void checkStd140() {                                             \
+            using Self = Name;                                                            \
+            FIELDS(DW_PARAM_CPP_CHECK_FIELD, DW_PARAM_CPP_CHECK_ARRAY)                    \
+        }                                                                                 \
+    };                                                                                    \
+    static_assert(std::is_standard_layout_v<Name>, #Name " must be plain data");          \
+    static_assert(sizeof(Name) % 16 == 0, #Name ": pad the row to a multiple of 16");     \
+    }
+
 #define DW_PARAM_SIZE(Block, bytes) \
     static_assert(sizeof(::dw::gpu::Block) == (bytes), #Block " is not the size its header says");
 
@@ -103,6 +123,7 @@
 #define DW_PARAM_BLOCK_AT(Block, instance, bindingPoint, FIELDS) \
     layout(std140, binding = bindingPoint) uniform Block { FIELDS(DW_PARAM_GLSL_FIELD, DW_PARAM_GLSL_ARRAY) } instance;
 #define DW_PARAM_BLOCK(Block, instance, FIELDS) DW_PARAM_BLOCK_AT(Block, instance, PASS_UBO, FIELDS)
+#define DW_PARAM_STRUCT(Name, FIELDS) struct Name { FIELDS(DW_PARAM_GLSL_FIELD, DW_PARAM_GLSL_ARRAY) };
 #define DW_PARAM_SIZE(Block, bytes)
 
 #endif

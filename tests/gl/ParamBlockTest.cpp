@@ -16,12 +16,14 @@
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Program.h"
 #include "renderer/inspect/BufferView.h"
+#include "renderer/lighting/LightTable.h"
 #include "renderer/scene/GpuScene.h"
 #include "shaders/params/bloom.h"
 #include "shaders/params/bufferview.h"
 #include "shaders/params/camera.h"
 #include "shaders/params/dof.h"
 #include "shaders/params/fxaa.h"
+#include "shaders/params/light.h"
 #include "shaders/params/lighting.h"
 #include "shaders/params/luminance.h"
 #include "shaders/params/sky.h"
@@ -164,6 +166,38 @@ TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
     }
     for (const BlockInfo& b : blocks)
         EXPECT_GT(programsWithBlock[b.name], 0) << "no program declares " << b.name;
+}
+
+// The light table's row (a std430 array, shaders/params/light.h) where every
+// program that reads it has it: each field that program uses at the C++
+// offset, rows 224 bytes apart.
+TEST(ParamBlocks, EveryProgramReadingTheLightTableLaysOutItsRowAsTheCppStruct) {
+    auto s = test::makeSession(64, 36);
+    // Every lighting strategy's programs.
+    s->loadScene("default");
+    for (const char* strategy : {"stencil_volumes", "volumes", "fullscreen", "tiled", "clustered", "forward", "forward_multipass"}) {
+        s->knobs().setFromString("lighting.strategy", strategy);
+        s->render();
+    }
+    std::map<std::string, int> seen;
+    int programs = 0;
+    for (const gl::ShaderLibrary::Entry* e : s->shaders().programs()) {
+        bool reads = false;
+        for (const gpu::ParamField& f : gpu::Light::fields()) {
+            const auto v = e->program.bufferVariable(std::string("lights[0].") + f.name);
+            if (!v) continue;
+            reads = true;
+            ++seen[f.name];
+            EXPECT_EQ(v->offset, static_cast<GLint>(f.offset)) << f.name << " in " << describeProgram(e->desc);
+            EXPECT_EQ(v->topLevelStride, static_cast<GLint>(sizeof(gpu::Light))) << describeProgram(e->desc);
+        }
+        programs += reads;
+    }
+    EXPECT_GE(programs, 5) << "the lighting programs read the light table";
+    for (const gpu::ParamField& f : gpu::Light::fields()) EXPECT_GT(seen[f.name], 0) << "no program reads " << f.name;
+    // The kinds, as GLSL compiles them, are the C++ ones the table writes.
+    static_assert(gpu::LIGHT_DIRECTIONAL == 0 && gpu::LIGHT_POINT == 1 && gpu::LIGHT_SPOT == 2 &&
+                  gpu::LIGHT_SPOT_CONE == kLightKindSpotCone);
 }
 
 TEST(ParamBlocks, TheComparisonCatchesABlockMirroredByPosition) {
