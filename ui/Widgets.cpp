@@ -1,5 +1,7 @@
 #include "ui/Widgets.h"
 
+#include <imgui_internal.h>
+
 namespace dw::ui {
 
 const ImVec4 kErrorColor(1.0f, 0.42f, 0.38f, 1.0f);
@@ -19,6 +21,31 @@ void helpMarker(const std::string& text) {
         ImGui::EndTooltip();
     }
 }
+
+namespace {
+std::map<std::string, DrawnItem>& itemTable() {
+    static std::map<std::string, DrawnItem> items;
+    return items;
+}
+}  // namespace
+
+void noteItem(const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    DrawnItem d;
+    d.x = a.x, d.y = a.y, d.w = b.x - a.x, d.h = b.y - a.y;
+    d.frame = ImGui::GetFrameCount();
+    const ImGuiWindow* w = ImGui::GetCurrentWindowRead();
+    if (w) {
+        // The root panel (an item in a table or child belongs to the panel around it).
+        const ImGuiWindow* root = w->RootWindow ? w->RootWindow : w;
+        d.window = root->Name;
+        const ImRect clip = w->ClipRect;
+        d.clipX = clip.Min.x, d.clipY = clip.Min.y, d.clipW = clip.GetWidth(), d.clipH = clip.GetHeight();
+    }
+    itemTable()[name] = d;
+}
+
+const std::map<std::string, DrawnItem>& drawnItems() { return itemTable(); }
 
 void wrappedColored(const ImVec4& color, const std::string& text) {
     ImGui::PushStyleColor(ImGuiCol_Text, color);

@@ -2,6 +2,7 @@
 // Small ImGui helpers shared by the panels.
 #include <imgui.h>
 
+#include <map>
 #include <string>
 
 namespace dw::ui {
@@ -25,6 +26,18 @@ void sameLineIfFits(float width);
 void clippedText(const std::string& text, float width);
 // Text that wraps, in a colour, for errors and reasons.
 void wrappedColored(const ImVec4& color, const std::string& text);
+// Named items for --layout-out and the GUI tests: noteItem(name) records
+// where the last item was drawn (screen pixels) and the frame it was drawn in,
+// and the window it lies in; drawnItems() lists them.
+struct DrawnItem {
+    float x = 0, y = 0, w = 0, h = 0;
+    int frame = -1;      // ImGui::GetFrameCount() when drawn
+    std::string window;  // the panel it was drawn in
+    // The visible part of the panel that holds it (its clip rectangle then).
+    float clipX = 0, clipY = 0, clipW = 0, clipH = 0;
+};
+void noteItem(const std::string& name);
+const std::map<std::string, DrawnItem>& drawnItems();
 extern const ImVec4 kErrorColor;
 extern const ImVec4 kDimColor;
 extern const ImVec4 kOkColor;
