@@ -224,7 +224,9 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     std::snprintf(caption, sizeof(caption), "%s, GPU ms per pass%s, %zu frame%s%s", timer.paused() ? "paused" : "live",
                   drawTotal ? " (white: whole frame)" : "", n, n == 1 ? "" : "s",
                   solo.empty() ? "" : (" - only " + solo).c_str());
-    ImGui::TextDisabled("%s", caption);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", caption);
+    ImGui::PopStyleColor();
 
     const float axisW = 52.0f, labelH = ImGui::GetTextLineHeight();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -331,15 +333,6 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     }
     ImGui::TextDisabled("older  <-  frames  ->  newest");
     (void)state;
-}
-
-void numberCell(double value, int decimals) {
-    char text[48];
-    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
-    // Right-aligned in its column, so digits line up and neighbours never touch.
-    const float w = ImGui::CalcTextSize(text).x, avail = ImGui::GetContentRegionAvail().x;
-    if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + avail - w);
-    ImGui::TextUnformatted(text);
 }
 
 namespace {
@@ -461,7 +454,12 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
     noteItem("timings.method");
     std::vector<std::string> names;
     for (const auto& p : v.passes) names.push_back(p.pass);
-    if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_BordersInnerV)) return;
+    // Every row shown (the panel scrolls), the table scrolls sideways in a narrow panel.
+    const float rowH = ImGui::GetTextLineHeight() + style.CellPadding.y * 2.0f;
+    const float tableH = rowH * static_cast<float>(v.passes.size() + 1) + style.ScrollbarSize + 6.0f;
+    if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_BordersInnerV,
+                           ImVec2(0.0f, tableH)))
+        return;
     ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameColumnWidth(names, 8.0f));
     ImGui::TableSetupColumn("before", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("before"));
     ImGui::TableSetupColumn("after", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("after"));
@@ -488,6 +486,7 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
                                              : ",\nnot flagged: it reads no changed knob and nothing a pass reading one writes");
     }
     ImGui::EndTable();
+    noteItem("timings.cost_table");
 }
 
 std::string gpuFrameText(const PassTimer& timer, const UiState& state) {

@@ -65,7 +65,5 @@ std::string gpuFrameText(const PassTimer& timer, const UiState& state);
 // rendered and timed frames, and the cost of the change (its state, knobs,
 // frames and the verdict per pass).
 nlohmann::json timingsReport(const PassTimer& timer, const UiState& state);
-// A number in a table cell, right-aligned, with `decimals` fixed decimals.
-void numberCell(double value, int decimals = 3);
 
 }  // namespace dw::ui

@@ -2,6 +2,8 @@
 
 #include <imgui_internal.h>
 
+#include <cstdio>
+
 namespace dw::ui {
 
 const ImVec4 kErrorColor(1.0f, 0.42f, 0.38f, 1.0f);
@@ -29,8 +31,9 @@ std::map<std::string, DrawnItem>& itemTable() {
 }
 }  // namespace
 
-void noteItem(const std::string& name) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+void noteItem(const std::string& name) { noteRect(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax()); }
+
+void noteRect(const std::string& name, ImVec2 a, ImVec2 b) {
     DrawnItem d;
     d.x = a.x, d.y = a.y, d.w = b.x - a.x, d.h = b.y - a.y;
     d.frame = ImGui::GetFrameCount();
@@ -46,6 +49,15 @@ void noteItem(const std::string& name) {
 }
 
 const std::map<std::string, DrawnItem>& drawnItems() { return itemTable(); }
+
+void numberCell(double value, int decimals) {
+    char text[48];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+    // Right-aligned in its column, so digits line up and neighbours never touch.
+    const float w = ImGui::CalcTextSize(text).x, avail = ImGui::GetContentRegionAvail().x;
+    if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + avail - w);
+    ImGui::TextUnformatted(text);
+}
 
 void wrappedColored(const ImVec4& color, const std::string& text) {
     ImGui::PushStyleColor(ImGuiCol_Text, color);

@@ -24,6 +24,8 @@ bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t si
 void sameLineIfFits(float width);
 // Text cut to `width` px with "..." and the whole text as a tooltip when cut.
 void clippedText(const std::string& text, float width);
+// A number in a table cell, right-aligned, with `decimals` fixed decimals.
+void numberCell(double value, int decimals = 3);
 // Text that wraps, in a colour, for errors and reasons.
 void wrappedColored(const ImVec4& color, const std::string& text);
 // Named items for --layout-out and the GUI tests: noteItem(name) records
@@ -37,6 +39,8 @@ struct DrawnItem {
     float clipX = 0, clipY = 0, clipW = 0, clipH = 0;
 };
 void noteItem(const std::string& name);
+// The same for a rectangle that is not an item (a table cell's room).
+void noteRect(const std::string& name, ImVec2 min, ImVec2 max);
 const std::map<std::string, DrawnItem>& drawnItems();
 extern const ImVec4 kErrorColor;
 extern const ImVec4 kDimColor;

@@ -19,6 +19,7 @@
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
+#include "ui/Widgets.h"
 #include "ui/WorkbenchUi.h"
 
 #include <nlohmann/json.hpp>
@@ -271,6 +272,48 @@ TEST(Gui, EveryPanelFitsTheWindowWithoutOverlapAt1024x640And1600x900) {
         }
         EXPECT_EQ(drawn.size(), 11u);
         expectPanelsTileTheWindow(drawn, w, h, ImGui::GetFrameHeight(), std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)));
+    }
+}
+
+// At the default sizes every control stays reachable: the timings toolbar
+// wraps, so the CSV export button lies inside the timings panel and on show
+// without scrolling, and the Lights table keeps room for its names.
+TEST(Gui, AtTheDefaultSizesTheExportButtonIsInItsPanelAndTheLightsKeepTheirNames) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("default");
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}}) {
+        const std::string size = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h));
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;  // the panels open by default
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            ++state.framesRendered;
+            state.renderSize = {64, 36};
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        const int frame = ImGui::GetFrameCount();
+        const auto& items = ui::drawnItems();
+        ImGuiWindow* timings = ImGui::FindWindowByName("GPU timings");
+        ASSERT_NE(timings, nullptr) << size;
+        ASSERT_TRUE(items.count("timings.export")) << size;
+        const ui::DrawnItem& e = items.at("timings.export");
+        EXPECT_EQ(e.frame, frame) << size;
+        EXPECT_EQ(e.window, "GPU timings");
+        EXPECT_GE(e.x, timings->Pos.x) << size;
+        EXPECT_LE(e.x + e.w, timings->Pos.x + timings->Size.x) << size << ": the export button leaves the panel";
+        EXPECT_GE(e.y, timings->Pos.y) << size;
+        EXPECT_LE(e.y + e.h, timings->Pos.y + timings->Size.y) << size;
+        // On show: inside the panel's visible part.
+        EXPECT_LE(e.x + e.w, e.clipX + e.clipW) << size;
+        EXPECT_LE(e.y + e.h, e.clipY + e.clipH) << size;
+        ASSERT_TRUE(items.count("lights.name_cell")) << size;
+        const ui::DrawnItem& name = items.at("lights.name_cell");
+        EXPECT_EQ(name.window, "Lights");
+        EXPECT_GE(name.w, ImGui::CalcTextSize("lantern00").x) << size << ": the names have no room";
     }
 }
 
@@ -615,6 +658,14 @@ TEST(Gui, UnderXvfbAKnobChangeIsMeasuredToTheEndWithoutRecord) {
     const LayoutReport r = runScripted("measure", "1600x900", 70, events, "--dump-knobs " + (test::tempDir() / "measure-knobs.txt").string(), scene);
     const nlohmann::json& cost = r.timings["cost"];
     ASSERT_EQ(cost["state"], "done") << cost.dump(1);
+    // The export button, on show in its panel.
+    const ui::PanelRect* timings = r.find("GPU timings");
+    ASSERT_NE(timings, nullptr);
+    ASSERT_TRUE(r.items.contains("timings.export"));
+    const auto& ex = r.items["timings.export"];
+    EXPECT_GE(ex["x"].get<float>(), timings->x);
+    EXPECT_LE(ex["x"].get<float>() + ex["w"].get<float>(), timings->x + timings->w);
+    EXPECT_LE(ex["y"].get<float>() + ex["h"].get<float>(), timings->y + timings->h);
     EXPECT_EQ(cost["what"], "lighting.frustum_cull true -> false");
     EXPECT_EQ(cost["frames_rendered"], cost["frames_scheduled"]);
     EXPECT_EQ(cost["frames_scheduled"].get<int>(), 36);  // 12 a side, turns of 1 settling + 2 counted
