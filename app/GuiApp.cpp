@@ -290,6 +290,7 @@ public:
             order.push_back(PassTimer::kFrameSeries);
             state.measure.collect(pipeline.timer(), session_.knobs(), order);
         }
+        state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active();
         if (state.probe.hovering || state.probe.pinned) {
             state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
             probeLights(state);

@@ -535,6 +535,7 @@ nlohmann::json timingsReport(const PassTimer& timer, const UiState& state) {
     return {{"gpu_text", gpuFrameText(timer, state)},
             {"config_since", state.configSince},
             {"pending_frames", timer.pendingFrames()},
+            {"timings_pending", state.timingsPending},
             {"oldest_timed_frame", total && !total->samples.empty() ? static_cast<long long>(total->samples.front().frame) : -1},
             {"newest", series},
             {"cost", cost}};

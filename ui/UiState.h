@@ -225,6 +225,9 @@ struct UiState {
     // The cost of a change: the timings panel starts it, the frame loop
     // renders its frames one a UI frame (ChangeMeasurement).
     ChangeMeasurement measure;
+    // Timer results still in flight or a measurement running: the frame loop
+    // must keep polling (never sleep waiting for input) until this is false.
+    bool timingsPending = false;
     std::uint64_t shaderGeneration = 0;  // bumped by every shader reload (a reason to render again)
     glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;

@@ -691,8 +691,10 @@ TEST(Gui, UnderXvfbAKnobChangeIsMeasuredToTheEndWithoutRecord) {
     const std::string dumped((std::istreambuf_iterator<char>(knobs)), std::istreambuf_iterator<char>());
     EXPECT_NE(dumped.find("lighting.frustum_cull=false"), std::string::npos) << dumped;
     EXPECT_LT(r.framesRendered, 36 + 8) << "the idle window kept rendering after the measurement";
-    // The top bar shows the latest rendered frame's time.
+    // The top bar shows the latest rendered frame's time; nothing is left in flight.
     EXPECT_EQ(r.lastTimedFrame, r.lastRenderedFrame);
+    EXPECT_EQ(r.timings["pending_frames"], 0);
+    EXPECT_FALSE(r.timings["timings_pending"].get<bool>());
     char gpu[64];
     std::snprintf(gpu, sizeof(gpu), "GPU %.2f ms", r.timings["newest"]["frame"]["gpu_ms"].get<double>());
     EXPECT_EQ(r.timings["gpu_text"], gpu);
