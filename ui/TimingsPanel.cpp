@@ -87,26 +87,11 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
 
 void TimingsPanel::startMeasure(UiState& state, RenderSession& session) {
     if (!change) return;
-    const Pipeline& pipeline = session.pipeline();
     // Which passes the change can reach: those reading a changed knob (the
     // pipeline learnt them when it made the passes) and everything downstream.
-    std::set<std::string> readers;
-    for (int id : change->knobs) {
-        const std::set<std::string>& r = pipeline.knobReaders(id);
-        if (r.empty()) readers.insert("*");  // read by no pass we know: assume every pass
-        readers.insert(r.begin(), r.end());
-    }
-    std::vector<PassEdges> edges;
-    for (const PassInfo& p : pipeline.passList()) {
-        PassEdges e{p.name, p.reads, {}};
-        e.reads.insert(e.reads.end(), p.optionalReads.begin(), p.optionalReads.end());
-        e.reads.insert(e.reads.end(), p.modifies.begin(), p.modifies.end());
-        for (const auto& o : p.writes) e.writes.push_back(o.name);
-        e.writes.insert(e.writes.end(), p.modifies.begin(), p.modifies.end());
-        edges.push_back(std::move(e));
-    }
+    const std::set<std::string> reached = passesReachedBy(session.pipeline(), change->knobs);
     session.pipeline().timer().setPaused(false);  // paused, the frames' times would never be recorded
-    state.measure.start(*change, measureSettings, influencedPasses(edges, readers));
+    state.measure.start(*change, measureSettings, reached);
 }
 
 void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& session) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/graph/Pipeline.h"
+
 namespace dw {
 
 // ---- the committed change ----
@@ -56,6 +58,29 @@ std::set<std::string> influencedPasses(const std::vector<PassEdges>& passes, con
 bool seriesInfluenced(const std::string& series, const std::set<std::string>& influenced) {
     if (series == PassTimer::kFrameSeries) return !influenced.empty();
     return influenced.count(series.substr(0, series.find('/'))) > 0;
+}
+
+std::vector<PassEdges> passEdges(const Pipeline& pipeline) {
+    std::vector<PassEdges> edges;
+    for (const PassInfo& p : pipeline.passList()) {
+        PassEdges e{p.name, p.reads, {}};
+        e.reads.insert(e.reads.end(), p.optionalReads.begin(), p.optionalReads.end());
+        e.reads.insert(e.reads.end(), p.modifies.begin(), p.modifies.end());
+        for (const auto& o : p.writes) e.writes.push_back(o.name);
+        e.writes.insert(e.writes.end(), p.modifies.begin(), p.modifies.end());
+        edges.push_back(std::move(e));
+    }
+    return edges;
+}
+
+std::set<std::string> passesReachedBy(const Pipeline& pipeline, const std::vector<int>& knobs) {
+    std::set<std::string> readers;
+    for (int id : knobs) {
+        const std::set<std::string>& r = pipeline.knobReaders(id);
+        if (r.empty()) readers.insert("*");  // read by no pass we know of: assume every pass
+        readers.insert(r.begin(), r.end());
+    }
+    return influencedPasses(passEdges(pipeline), readers);
 }
 
 // ---- the verdict ----

@@ -29,6 +29,8 @@
 
 namespace dw {
 
+class Pipeline;
+
 // The knobs a committed edit changed, with their values before and after it.
 struct KnobChange {
     std::vector<int> knobs;
@@ -67,6 +69,13 @@ std::set<std::string> influencedPasses(const std::vector<PassEdges>& passes, con
 // Whether a timer series belongs to an influenced pass: "lighting/shadow maps"
 // to "lighting"; the frame total whenever any pass is influenced.
 bool seriesInfluenced(const std::string& series, const std::set<std::string>& influenced);
+// The pipeline's passes as edges (Pipeline::passList; optional reads and
+// modified resources count as reads, modified ones as writes too).
+std::vector<PassEdges> passEdges(const Pipeline& pipeline);
+// What a change of `knobs` can reach in `pipeline`: influencedPasses from
+// the passes that read them (Pipeline::knobReaders; a knob no pass is known
+// to read counts as read by every pass).
+std::set<std::string> passesReachedBy(const Pipeline& pipeline, const std::vector<int>& knobs);
 
 struct PassVerdict {
     std::string pass;                      // a timer series

@@ -2,6 +2,7 @@
 
 #include "renderer/graph/ChangeCost.h"
 #include "renderer/graph/PassTimer.h"
+#include "renderer/graph/Pipeline.h"
 #include "renderer/knobs/KnobRegistry.h"
 
 #include <stdexcept>
@@ -213,4 +214,30 @@ TEST(ChangeCost, AMeasurementInterleavesTheSidesAndEndsOnTheAfterValues) {
     EXPECT_FALSE(m.prepareFrame(knobs));
     EXPECT_EQ(m.state(), ChangeMeasurement::State::Cancelled);
     EXPECT_EQ(knobs.value(samples), 64.0);
+}
+
+// The pipeline learns which pass reads each knob while it makes and connects
+// the passes (no GL): the declaring pass, and passes that look a knob up.
+TEST(ChangeCost, ThePipelineKnowsWhichPassesReadEachKnob) {
+    KnobRegistry knobs;
+    Pipeline pipeline(knobs);
+    auto readers = [&](const std::string& knob) { return pipeline.knobReaders(*knobs.find(knob)); };
+    EXPECT_EQ(readers("ssao.samples"), std::set<std::string>{"ssao"});
+    // Declared by the light table pass, though its group is "lighting".
+    EXPECT_EQ(readers("lighting.threshold"), std::set<std::string>{"lights"});
+    // Looked up by other passes: bloom (upstream of tonemap) reads tonemap.nan_guard.
+    EXPECT_TRUE(readers("tonemap.nan_guard").count("bloom"));
+    EXPECT_TRUE(readers("tonemap.nan_guard").count("tonemap"));
+    EXPECT_TRUE(readers("lighting.directional_in_gbuffer").count("geometry"));
+    EXPECT_TRUE(readers("lighting.directional_in_gbuffer").count("lighting"));
+    EXPECT_TRUE(readers("depth.mode").count("*")) << "the camera every pass uses";
+    // With the pass edges: an SSAO change cannot reach the geometry or the light table.
+    const std::set<std::string> ssao = passesReachedBy(pipeline, {*knobs.find("ssao.samples")});
+    EXPECT_TRUE(ssao.count("ssao") && ssao.count("ssao_blur") && ssao.count("lighting") && ssao.count("tonemap"));
+    EXPECT_FALSE(ssao.count("geometry") || ssao.count("lights") || ssao.count("shadows") || ssao.count("skybox"));
+    EXPECT_EQ(passesReachedBy(pipeline, {*knobs.find("depth.mode")}).size(), pipeline.passList().size());
+    // lighting.threshold reaches the light table and what follows it, not the G-buffer or SSAO.
+    const std::set<std::string> threshold = passesReachedBy(pipeline, {*knobs.find("lighting.threshold")});
+    EXPECT_TRUE(threshold.count("lights") && threshold.count("shadows") && threshold.count("lighting"));
+    EXPECT_FALSE(threshold.count("geometry") || threshold.count("ssao"));
 }
