@@ -161,6 +161,7 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     watchForChanges(state, session);
     PassTimer& timer = session.pipeline().timer();
     toolbar(state, timer, session);
+    changeBar(state, session);
 
     std::vector<std::string> passes;
     for (const auto& rec : state.report.passes)
@@ -394,16 +395,19 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
     ImGui::EndTable();
 }
 
-void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
+void TimingsPanel::changeBar(UiState& state, RenderSession& session) {
+    // Under the toolbar, so the action is on show at any panel size; the
+    // verdict goes under the graph.
     ChangeMeasurement& m = state.measure;
     const bool shown = m.state() != ChangeMeasurement::State::Idle;
     if (!change && !shown) {
-        ImGui::TextDisabled("Cost of a change: change a knob, then measure it here");
+        ImGui::TextDisabled("cost of a change: change a knob, then measure it here");
         return;
     }
     const std::string what = shown ? m.change().what : change->what;
-    const std::string header = "Cost of the change: " + what + "###cost";
-    if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("change: %s", what.c_str());
+    ImGui::PopStyleColor();
     const ImGuiStyle& style = ImGui::GetStyle();
     if (m.active()) {
         // One measured frame a UI frame: the window stays responsive, and
@@ -415,22 +419,30 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
         sameLineIfFits(cancelW);
         if (ImGui::Button("cancel")) m.cancel(session.knobs());
         noteItem("timings.cancel");
-    } else if (change) {
-        const bool measured = m.state() == ChangeMeasurement::State::Done && m.change().what == change->what;
-        if (ImGui::Button(measured ? "measure again" : "measure")) startMeasure(state, session);
-        noteItem("timings.measure");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("renders the frames before and after the change in turns (B B A A ...), one a UI frame,\n"
-                              "the first frame of each turn left out, and compares each pass's GPU times");
-        sameLineIfFits(90.0f + style.ItemInnerSpacing.x + ImGui::CalcTextSize("frames per side").x);
-        ImGui::SetNextItemWidth(90.0f);
-        ImGui::InputInt("frames per side", &measureSettings.framesPerSide, 2, 10);
-        measureSettings.framesPerSide = std::clamp(measureSettings.framesPerSide, 2, 150);
-        if (m.state() == ChangeMeasurement::State::Cancelled) ImGui::TextDisabled("%s", m.status().c_str());
-        if (!measured) return;
-    } else {
         return;
     }
+    if (!change) return;
+    const bool measured = m.state() == ChangeMeasurement::State::Done && m.change().what == change->what;
+    if (ImGui::Button(measured ? "measure again" : "measure")) startMeasure(state, session);
+    noteItem("timings.measure");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("renders the frames before and after the change in turns (B B A A ...), one a UI frame,\n"
+                          "the first frame of each turn left out, and compares each pass's GPU times");
+    sameLineIfFits(90.0f + style.ItemInnerSpacing.x + ImGui::CalcTextSize("frames per side").x);
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::InputInt("frames per side", &measureSettings.framesPerSide, 2, 10);
+    measureSettings.framesPerSide = std::clamp(measureSettings.framesPerSide, 2, 150);
+    if (m.state() == ChangeMeasurement::State::Cancelled) ImGui::TextDisabled("%s", m.status().c_str());
+    if (measured) ImGui::TextDisabled("measured: the verdict is under the graph");
+}
+
+void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
+    (void)session;
+    ChangeMeasurement& m = state.measure;
+    if (m.state() != ChangeMeasurement::State::Done || !change || m.change().what != change->what) return;
+    const std::string header = "Cost of the change: " + m.change().what + "###cost";
+    if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const ImGuiStyle& style = ImGui::GetStyle();
     if (m.state() != ChangeMeasurement::State::Done) return;
     const ChangeVerdict& v = m.verdict();
     const PassVerdict* total = v.find(PassTimer::kFrameSeries);

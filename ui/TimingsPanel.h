@@ -46,7 +46,8 @@ private:
     void toolbar(UiState& state, PassTimer& timer, RenderSession& session);
     void graph(UiState& state, PassTimer& timer, const std::vector<std::string>& passes);
     void table(PassTimer& timer, const std::vector<std::string>& passes);
-    void changeCost(UiState& state, RenderSession& session);
+    void changeBar(UiState& state, RenderSession& session);   // the change, measure / progress and cancel
+    void changeCost(UiState& state, RenderSession& session);  // the verdict
 };
 
 // A stable, distinct colour per pass name.

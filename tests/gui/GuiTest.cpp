@@ -654,6 +654,12 @@ TEST(Gui, UnderXvfbAKnobChangeIsMeasuredToTheEndWithoutRecord) {
     const LayoutReport changed = runScripted("measure-changed", "1600x900", 6, "2 click " + knobAt + "\n", "", scene);
     EXPECT_EQ(changed.timings["cost"]["state"], "idle");
     ASSERT_TRUE(changed.items.contains("timings.measure")) << "no measure button after a knob change";
+    {
+        // On show in the timings panel without scrolling.
+        const auto& b = changed.items["timings.measure"];
+        EXPECT_EQ(b["panel"], "GPU timings");
+        EXPECT_LE(b["y"].get<float>() + b["h"].get<float>(), b["clip"][1].get<float>() + b["clip"][3].get<float>());
+    }
     const std::string events = "2 click " + knobAt + "\n6 click " + changed.at("timings.measure") + "\n";
     const LayoutReport r = runScripted("measure", "1600x900", 70, events, "--dump-knobs " + (test::tempDir() / "measure-knobs.txt").string(), scene);
     const nlohmann::json& cost = r.timings["cost"];
