@@ -30,6 +30,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/InputQueue.h"
+#include "ui/Widgets.h"
 #include "ui/WorkbenchUi.h"
 
 #include <imgui_internal.h>
@@ -203,6 +204,17 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
     }
 }
 
+// Named items drawn in the last frame (ui::noteItem): where, in which panel,
+// and the visible part of that panel.
+nlohmann::json itemsReport() {
+    nlohmann::json items = nlohmann::json::object();
+    for (const auto& [name, d] : ui::drawnItems())
+        if (d.frame == ImGui::GetFrameCount())
+            items[name] = {{"x", d.x}, {"y", d.y}, {"w", d.w}, {"h", d.h}, {"panel", d.window},
+                           {"clip", {d.clipX, d.clipY, d.clipW, d.clipH}}};
+    return items;
+}
+
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
 void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
@@ -221,8 +233,6 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
         if (!w || !w->WasActive) continue;
         panels.push_back({{"name", d.name}, {"x", w->Pos.x}, {"y", w->Pos.y}, {"w", w->Size.x}, {"h", w->Size.y}});
     }
-    nlohmann::json items = nlohmann::json::object();
-    for (const auto& [name, r] : state.itemRects) items[name] = {r.x, r.y, r.z, r.w};
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const nlohmann::json j = {{"display", {display.x, display.y}},
                               {"framebuffer", {fbw, fbh}},
@@ -241,13 +251,14 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"last_rendered_frame", static_cast<long long>(state.report.frameIndex)},
                               {"last_timed_frame", lastTimedFrame},
                               {"renderdoc_captures", state.renderdocCaptures},
-                              {"errors", errors},
                               {"banner", state.log.banner() ? state.log.banner()->text : std::string()},
                               {"scene", {{"name", session.scene().name}, {"source", session.scene().source}}},
                               {"recent_scenes", std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end())},
                               {"active_preset", state.activePreset},
                               {"axes", state.viewport.overlay.axes},
-                              {"items", items}};
+                              {"timings", ui::timingsReport(timer, state)},
+                              {"items", itemsReport()},
+                              {"errors", errors}};
     writeFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -276,20 +287,50 @@ public:
             }
         }
         state.animator.update(session_.mutableScene(), state.frame);
+        // A change being measured: this frame renders the knob values of its
+        // side (one measured frame a UI frame, so the window stays responsive).
+        bool measuring = false;
+        if (state.measure.active()) {
+            if (state.viewport.mode != ui::DisplayMode::Deferred)
+                state.measure.cancel(session_.knobs(), "cancelled: a forward view runs no deferred pass");
+            else
+                measuring = state.measure.prepareFrame(session_.knobs());
+        }
         // Render only when something the images depend on changed, unless
         // timings are being captured (every frame then).
         const std::string signature = frameSignature(state);
-        const bool needed = state.timingCapture || state.animator.running() || state.forceRender || signature != lastSignature_;
+        const bool needed =
+            measuring || state.timingCapture || state.animator.running() || state.forceRender || signature != lastSignature_;
         state.forceRender = false;
         if (needed) {
             lastSignature_ = signature;
             renderImages(state);
             ++state.framesRendered;
+            if (measuring) state.measure.frameRendered(state.report.frameIndex);
+            // The first frame of another scene or render size starts the statistics over.
+            const std::string config = session_.scene().source + "|" + std::to_string(state.renderSize.x) + "x" +
+                                       std::to_string(state.renderSize.y);
+            if (config != lastConfig_) {
+                lastConfig_ = config;
+                state.configSince = state.report.frameIndex;
+            }
             adjustAutoScale(state);
+        } else {
+            // Nothing new to render, but a histogram asked for since the last
+            // frame is taken from the frame on show, not left waiting for the next.
+            refreshHistograms(state);
         }
         // The timer results come back a few frames late; an idle window
-        // renders no later frame to pick them up, so poll here (it never waits).
+        // renders no later frame to pick them up, so poll here every UI frame
+        // (it never waits) until the latest frame's results are in.
         pipeline.timer().collect(false);
+        if (state.measure.state() == ChangeMeasurement::State::Waiting) {
+            std::vector<std::string> order;
+            for (const auto& rec : state.report.passes) order.push_back(rec.name);
+            order.push_back(PassTimer::kFrameSeries);
+            state.measure.collect(pipeline.timer(), session_.knobs(), order);
+        }
+        state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active();
         if (state.probe.hovering || state.probe.pinned) {
             state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
             probeLights(state);
@@ -357,7 +398,8 @@ private:
     // rendered, from the newest GPU frame times; frozen while timings are captured.
     void adjustAutoScale(ui::UiState& state) {
         ui::ViewportView& v = state.viewport;
-        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.framesRendered % 4 != 0) return;
+        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.framesRendered % 4 != 0)
+            return;
         const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);
         if (!total || total->samples.size() < 2) return;
         std::vector<float> newest;
@@ -470,6 +512,7 @@ private:
         next.histogram = std::move(img.histogram);
         next.histogramOf = std::move(img.histogramOf);
         next.histogramFrame = img.histogramFrame;
+        next.histogramUiFrame = img.histogramUiFrame;
         next.haveNonFinite = img.haveNonFinite;
         next.nonFinite = std::move(img.nonFinite);
         img = std::move(next);
@@ -483,7 +526,9 @@ private:
         if (!view.histogram && !nonFiniteView) return;
         const std::string key = o.decl.name + "/" + std::to_string(view.settingsOr().layer) + "/" +
                                 std::to_string(view.settingsOr().sample);
-        if (img.histogramOf == key && state.frame < img.histogramFrame + 10) return;
+        // The same output of the same frame: nothing new. While frames keep
+        // coming, at most every 10 UI frames for the same output.
+        if (img.histogramOf == key && (img.histogramFrame == state.report.frameIndex || state.frame < img.histogramUiFrame + 10)) return;
         try {
             const FloatImage raw = readOutputRaw(o, view.settingsOr().selection());
             img.histogram = computeHistogram(raw, 128);
@@ -494,7 +539,17 @@ private:
             img.haveNonFinite = false;
         }
         img.histogramOf = key;
-        img.histogramFrame = state.frame;
+        img.histogramFrame = state.report.frameIndex;
+        img.histogramUiFrame = state.frame;
+    }
+
+    // The histograms of the images on show when a view asks for one between frames.
+    void refreshHistograms(ui::UiState& state) {
+        Pipeline& pipeline = session_.pipeline();
+        if (state.viewport.mode == ui::DisplayMode::Deferred && state.viewportImage.unavailable.empty() && state.framesRendered > 0)
+            if (const PublishedOutput* o = pipeline.outputs().find(state.viewport.output)) histogram(state.viewport, *o, state.viewportImage, state);
+        if (state.panels.sideView && state.sideImage.unavailable.empty() && state.framesRendered > 0)
+            if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) histogram(state.side, *o, state.sideImage, state);
     }
 
     RenderSession& session_;
@@ -503,6 +558,7 @@ private:
     ViewportOverlay overlay_;
     gl::Sampler nearest_;
     std::string lastSignature_;
+    std::string lastConfig_;
 };
 
 // The viewer's *save*: the shown output at its own resolution, EXR raw or

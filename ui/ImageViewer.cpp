@@ -64,8 +64,7 @@ bool displayRange(const ImageView& view, const PublishedOutput& output, const Sh
     return true;
 }
 
-bool imageViewControls(ImageView& view, const PublishedOutput* output, const ShownImage& img,
-                       std::map<std::string, glm::vec4>* rects, const std::string& prefix) {
+bool imageViewControls(ImageView& view, const PublishedOutput* output, const ShownImage& img, const std::string& prefix) {
     bool changed = false;
     const float w = ImGui::GetFontSize() * 7.0f;
     if (output && !isDisplayReady(*output)) {
@@ -152,12 +151,12 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
     // The shown output at its own resolution (F12 saves the whole window).
     sameLineIfFits(ImGui::CalcTextSize("save EXR save PNG").x + 4 * ImGui::GetStyle().FramePadding.x);
     if (ImGui::SmallButton("save EXR")) view.saveRequest = "exr";
-    if (rects) recordItemRect(*rects, prefix + ".save_exr");
+    if (!prefix.empty()) noteItem(prefix + ".save_exr");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s's raw values at its own resolution to an OpenEXR file in the export folder", view.output.c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("save PNG")) view.saveRequest = "png";
-    if (rects) recordItemRect(*rects, prefix + ".save_png");
+    if (!prefix.empty()) noteItem(prefix + ".save_png");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s as shown (channel, mapping, range) at its own resolution to a PNG in the export folder",
                           view.output.c_str());

@@ -17,10 +17,9 @@ namespace dw::ui {
 
 // The controls; `output` may be null (the final image: only zoom). Returns
 // whether a display setting changed.
-// `rects`, when given, receives the save buttons' rectangles as
-// "<prefix>.save_exr" and "<prefix>.save_png" (UiState::itemRects).
-bool imageViewControls(ImageView& view, const PublishedOutput* output, const ShownImage& img,
-                       std::map<std::string, glm::vec4>* rects = nullptr, const std::string& prefix = "");
+// With a `prefix`, the save buttons are noted (noteItem) as
+// "<prefix>.save_exr" and "<prefix>.save_png".
+bool imageViewControls(ImageView& view, const PublishedOutput* output, const ShownImage& img, const std::string& prefix = "");
 // The colour bar and, when the view asks for it, the histogram, full width at the cursor.
 void imageViewLegend(ImageView& view, const PublishedOutput* output, const ShownImage& img);
 // Draws `img` in the box by the view's zoom and pan, clipped to the box, and

@@ -65,6 +65,7 @@ bool knobWidget(KnobRegistry& knobs, int id) {
             break;
         }
     }
+    noteItem("knob." + s.name);
     if (labelHovered || ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);

@@ -76,14 +76,30 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     // The list fills the panel until a light is selected, then shares it with the editor.
     const float avail = ImGui::GetContentRegionAvail().y;
     const float listHeight =
-        state.selectedLight >= 0 ? std::max(avail * 0.4f, 80.0f) : std::max(avail - ImGui::GetTextLineHeightWithSpacing() - 4.0f, 60.0f);
-    if (ImGui::BeginTable("lights", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp,
-                          ImVec2(0, listHeight))) {
-        ImGui::TableSetupScrollFreeze(0, 1);
-        ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed, 24.0f);
-        ImGui::TableSetupColumn("name");
-        ImGui::TableSetupColumn("type", ImGuiTableColumnFlags_WidthFixed, 70.0f);
-        ImGui::TableSetupColumn("radius", ImGuiTableColumnFlags_WidthFixed, 60.0f);
+        state.selectedLight >= 0 ? std::max(avail * 0.4f, 80.0f)
+                                 : std::max(avail - ImGui::GetTextLineHeightWithSpacing() - 4.0f, 5.0f * ImGui::GetFrameHeightWithSpacing());
+    // Columns as wide as their contents, the name taking what is left; a
+    // panel too narrow for the longest name (up to 160 px) scrolls the table
+    // sideways, the switch and name frozen at the left, rather than
+    // squeezing the names away.
+    float nameWidth = ImGui::CalcTextSize("name").x;
+    for (const Light& l : scene.lights) nameWidth = std::max(nameWidth, ImGui::CalcTextSize(l.name.c_str()).x);
+    nameWidth = std::min(nameWidth, 160.0f) + 18.0f;  // and the colour swatch
+    const float onWidth = ImGui::GetFrameHeight(), typeWidth = ImGui::CalcTextSize("directional").x + 4.0f,
+                radiusWidth = ImGui::CalcTextSize("999.99").x + 4.0f;
+    const float cells = 4.0f * 2.0f * ImGui::GetStyle().CellPadding.x;
+    // At least 9 characters of name before the table scrolls.
+    const float nameMin = std::min(nameWidth, ImGui::CalcTextSize("lantern00").x + 18.0f);
+    const float innerWidth = std::max(ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize,
+                                      onWidth + nameMin + typeWidth + radiusWidth + cells);
+    if (ImGui::BeginTable("lights", 4,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_SizingFixedFit,
+                          ImVec2(0, listHeight), innerWidth)) {
+        ImGui::TableSetupScrollFreeze(2, 1);
+        ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed, onWidth);
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("type", ImGuiTableColumnFlags_WidthFixed, typeWidth);
+        ImGui::TableSetupColumn("radius", ImGuiTableColumnFlags_WidthFixed, radiusWidth);
         ImGui::TableHeadersRow();
         for (size_t i = 0; i < scene.lights.size(); ++i) {
             Light& l = scene.lights[i];
@@ -92,6 +108,11 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             ImGui::TableNextColumn();
             ImGui::Checkbox("##on", &l.enabled);
             ImGui::TableNextColumn();
+            if (i == 0) {
+                // The room the names have (--layout-out: the GUI tests check it at small sizes).
+                const ImVec2 at = ImGui::GetCursorScreenPos();
+                noteRect("lights.name_cell", at, ImVec2(at.x + ImGui::GetContentRegionAvail().x, at.y + ImGui::GetTextLineHeight()));
+            }
             const glm::vec4 c = ViewportOverlay::lightColor(l.intensity, false);
             ImGui::ColorButton("##c", ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
             ImGui::SameLine();
@@ -108,7 +129,7 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             const LightVolume v = computeLightVolume(l, threshold);
             if (v.shape == VolumeShape::Culled) ImGui::TextDisabled(l.enabled ? "none" : "off");
             else if (!std::isfinite(v.radius)) ImGui::TextDisabled("all");
-            else ImGui::Text("%.2f", v.radius);
+            else numberCell(v.radius, v.radius >= 1000.0f ? 0 : 2);
             ImGui::PopID();
         }
         ImGui::EndTable();

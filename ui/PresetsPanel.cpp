@@ -90,7 +90,7 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     // Saving first: the lists below can be long, the name field stays in reach.
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("save as").x - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
     const bool enter = inputTextEnter("##name", "preset name", saveName, sizeof(saveName));
-    recordItemRect(state.itemRects, "presets.name");
+    noteItem("presets.name");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
     ImGui::SameLine();
     std::error_code ec;
@@ -102,7 +102,7 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     ImGui::TextDisabled("built in (a click loads)");
     for (const auto& p : builtinPresets()) {
         if (ImGui::Selectable(p.name.c_str())) applyPreset(state, session, p);
-        recordItemRect(state.itemRects, "presets.builtin." + p.name);
+        noteItem("presets.builtin." + p.name);
         if (ImGui::IsItemHovered()) {
             std::string tip = p.description.empty() ? "" : p.description + "\n\n";
             for (const auto& [k, v] : p.knobs) tip += k + " = " + v + "\n";

@@ -98,7 +98,7 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         char head[96];
         std::snprintf(head, sizeof(head), "lights at this pixel: %zu (+%d directional)###lights", p.lights.size(), p.directionalLights);
         if (ImGui::CollapsingHeader(head, ImGuiTreeNodeFlags_DefaultOpen))
-            for (const auto& line : p.lightLines) clippedText(line, ImGui::GetContentRegionAvail().x);
+            for (const auto& line : p.lightLines) ImGui::TextWrapped("%s", line.c_str());  // wrapped, never cut
         for (const auto& line : p.lightLines) copy += "light\t" + line + "\n";
     }
     float labelWidth = ImGui::CalcTextSize("sample 00").x;

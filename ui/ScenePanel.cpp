@@ -87,12 +87,12 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
         // Focused by Ctrl+O, the old path is selected, so typing replaces it.
         const bool enter = inputTextEnter("##path", ".json / .gltf / .glb path (Ctrl+O)", path, sizeof(path),
                                           ImGuiInputTextFlags_AutoSelectAll);
-        recordItemRect(state.itemRects, "scene.path");
+        noteItem("scene.path");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("a scene file's path (relative to %s); Enter opens it. Files dropped on the window open too.",
                               fs::current_path().c_str());
         const bool openClicked = ImGui::Button("open##path");  // not "open": the header above has that ID
-        recordItemRect(state.itemRects, "scene.open");
+        noteItem("scene.open");
         if (openClicked || enter) {
             if (path[0]) openScene(state, session, path);
             else state.log.error("cannot open scene: type a file's path first (or use browse)", state.time, "open scene");

@@ -28,9 +28,25 @@ std::vector<float> axisTicks(float bottom, float top, bool logScale, int count) 
         bottom = std::max(bottom, top * 1e-6f);
         const int lo = static_cast<int>(std::floor(std::log10(bottom))), hi = static_cast<int>(std::ceil(std::log10(top)));
         const int every = std::max(1, (hi - lo + count - 1) / count);
-        for (int e = lo; e <= hi; e += every) {
-            const float v = std::pow(10.0f, static_cast<float>(e));
-            if (v >= bottom * 0.999f && v <= top * 1.001f) ticks.push_back(v);
+        // Within two decades, 2 and 5 times the powers of ten as well, so a
+        // narrow range (20 to 80 ms) still has labelled lines.
+        const bool fine = hi - lo <= 2;
+        for (int e = lo; e <= hi; e += every)
+            for (float m : {1.0f, 2.0f, 5.0f}) {
+                if (m != 1.0f && !fine) continue;
+                const float v = m * std::pow(10.0f, static_cast<float>(e));
+                if (v >= bottom * 0.999f && v <= top * 1.001f) ticks.push_back(v);
+            }
+        if (ticks.size() < 2) {
+            // Not even two: the range's ends, to 2 significant digits.
+            auto round2 = [](float v) {
+                const float mag = std::pow(10.0f, std::floor(std::log10(v)) - 1.0f);
+                return std::round(v / mag) * mag;
+            };
+            const float b = round2(bottom * 1.05f), t = round2(top * 0.95f);
+            ticks.clear();
+            ticks.push_back(b);
+            if (t > b) ticks.push_back(t);
         }
         return ticks;
     }
@@ -44,88 +60,83 @@ std::vector<float> axisTicks(float bottom, float top, bool logScale, int count) 
 
 void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
     PassTimer& timer = session.pipeline().timer();
-    const KnobRegistry& knobs = session.knobs();
-    auto snapshot = [&] {
-        knobValues.clear();
-        for (size_t i = 0; i < knobs.size(); ++i) knobValues.push_back(knobs.value(static_cast<int>(i)));
-        knobGeneration = knobs.generation();
-    };
+    KnobRegistry& knobs = session.knobs();
     // Another scene or render size: another configuration, so the statistics
-    // start over. A new size is in force from the frame this UI frame
-    // rendered (the render comes before the panels), which stays: in an idle
-    // window it may be the only one.
-    if (session.scene().source != sceneSource || state.renderSize != renderSize) {
-        if (!sceneSource.empty()) {
-            if (session.scene().source != sceneSource) timer.clearHistory();
-            else timer.clearHistoryBefore(state.report.frameIndex);
-        }
-        firstUsableFrame = state.report.frameIndex + 3;
+    // start over from its first frame (UiState::configSince, set by the frame
+    // loop when it rendered it; it stays: in an idle window it may be the only one).
+    const bool newScene = session.scene().source != sceneSource;
+    if (state.configSince != configSeen || newScene) {
+        if (state.configSince != configSeen) timer.clearHistoryBefore(state.configSince);
+        configSeen = state.configSince;
         sceneSource = session.scene().source;
-        renderSize = state.renderSize;
-        cost.clear();
-        costsAtFrame = ~0ull;
-        snapshot();
+        if (state.measure.active()) state.measure.cancel(knobs, "cancelled: the scene or the render size changed");
+        else state.measure = ChangeMeasurement();
+        change.reset();
+        watcher.reset(knobs);
         return;
     }
-    if (knobs.generation() == knobGeneration) return;
-    std::string what;
-    int changed = 0;
-    for (size_t i = 0; i < knobs.size() && i < knobValues.size(); ++i) {
-        const double now = knobs.value(static_cast<int>(i));
-        if (now == knobValues[i]) continue;
-        if (changed++ == 0)
-            what = knobs.spec(static_cast<int>(i)).name + " " + knobs.formatValue(static_cast<int>(i), knobValues[i]) + " -> " +
-                   knobs.format(static_cast<int>(i));
+    // While a measurement runs it sets the knobs itself.
+    if (state.measure.active()) return;
+    // A value is committed when no widget is being edited (a slider let go,
+    // a typed value entered): never each keystroke of "64".
+    if (auto c = watcher.update(knobs, ImGui::IsAnyItemActive())) {
+        change = std::move(c);
+        state.measure = ChangeMeasurement();  // the verdict was of an earlier change
     }
-    if (changed > 1) what += " and " + std::to_string(changed - 1) + " more";
-    if (changed > 0 && state.report.frameIndex > 0) {
-        cost.mark(timer, state.report.frameIndex - 1, what, static_cast<size_t>(window), 3, firstUsableFrame);
-        costsAtFrame = ~0ull;
-    }
-    snapshot();
 }
 
-void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!beginPanel(title, open)) {
-        ImGui::End();
-        return;
-    }
-    watchForChanges(state, session);
-    PassTimer& timer = session.pipeline().timer();
+void TimingsPanel::startMeasure(UiState& state, RenderSession& session) {
+    if (!change) return;
+    // Which passes the change can reach: those reading a changed knob (the
+    // pipeline learnt them when it made the passes) and everything downstream.
+    const std::set<std::string> reached = passesReachedBy(session.pipeline(), change->knobs);
+    session.pipeline().timer().setPaused(false);  // paused, the frames' times would never be recorded
+    state.measure.start(*change, measureSettings, reached);
+}
+
+void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& session) {
+    // Items go on the line while they fit and wrap when not, so every one
+    // (the CSV export last) stays reachable in a narrow panel.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    auto checkboxWidth = [&](const char* label) {
+        return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+    };
     ImGui::Checkbox("record", &state.timingCapture);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("render every frame and time it (the resolution scale holds still);\n"
                           "off: a frame is rendered only when something it shows changed");
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("pause"));
     bool paused = timer.paused();
     if (ImGui::Checkbox("pause", &paused)) timer.setPaused(paused);
-    ImGui::SameLine();
+    sameLineIfFits(110.0f + style.ItemInnerSpacing.x + ImGui::CalcTextSize("frames").x);
     ImGui::SetNextItemWidth(110);
     ImGui::SliderInt("frames", &window, 30, static_cast<int>(PassTimer::kHistory));
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("stacked"));
     ImGui::Checkbox("stacked", &stacked);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("areas stacked up to the frame total; off: one line per pass");
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("log"));
     ImGui::Checkbox("log", &logScale);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("logarithmic y axis (passes drawn as lines)");
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("own CPU"));
     bool isolate = timer.isolateCpu();
     if (ImGui::Checkbox("own CPU", &isolate)) {
         timer.setIsolateCpu(isolate);
-        timer.clearHistory();
-        cost.clear();
-        costsAtFrame = ~0ull;
+        // Frames timed the other way (some still in flight) no longer compare.
+        timer.clearHistoryBefore(session.pipeline().frameIndex());
+        if (state.measure.active()) state.measure.cancel(session.knobs(), "cancelled: own CPU timing was switched");
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Adds a CPU column: the time a pass spends issuing its own work.\n"
                           "Before each pass the frame waits (on a GL fence) for the GPU to finish\n"
                           "the passes before it, so no pass is charged for waiting on another.\n"
                           "Frames get slower while this is on; the history starts over.");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - 90.0f, 60.0f));
+    // The file field and its button together: at least 120 px of field.
+    const float exportW = ImGui::CalcTextSize("export CSV").x + style.FramePadding.x * 2.0f;
+    sameLineIfFits(120.0f + style.ItemSpacing.x + exportW);
+    ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - exportW - style.ItemSpacing.x, 120.0f, 360.0f));
     ImGui::InputText("##csv", csvPath, sizeof(csvPath));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("CSV file; a bare name goes to %s", state.exportDir.c_str());
-    ImGui::SameLine();
+    sameLineIfFits(exportW);
     if (ImGui::Button("export CSV")) {
         // A bare name goes to the export folder, not wherever the app was started.
         std::filesystem::path path(csvPath);
@@ -139,12 +150,24 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
             state.log.error(e.what(), state.time, "export timings");
         }
     }
+    noteItem("timings.export");
+}
+
+void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    if (!beginPanel(title, open)) {
+        ImGui::End();
+        return;
+    }
+    watchForChanges(state, session);
+    PassTimer& timer = session.pipeline().timer();
+    toolbar(state, timer, session);
+    changeBar(state, session);
 
     std::vector<std::string> passes;
     for (const auto& rec : state.report.passes)
         if (timer.find(rec.name)) passes.push_back(rec.name);
     graph(state, timer, passes);
-    if (cost.active()) changeCost(timer);
+    changeCost(state, session);
     table(timer, passes);
     // CPU frame time of the whole app loop (UI included), beside the GPU numbers.
     if (!state.cpuFrameMs.empty()) {
@@ -187,7 +210,9 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     std::snprintf(caption, sizeof(caption), "%s, GPU ms per pass%s, %zu frame%s%s", timer.paused() ? "paused" : "live",
                   drawTotal ? " (white: whole frame)" : "", n, n == 1 ? "" : "s",
                   solo.empty() ? "" : (" - only " + solo).c_str());
-    ImGui::TextDisabled("%s", caption);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", caption);
+    ImGui::PopStyleColor();
 
     const float axisW = 52.0f, labelH = ImGui::GetTextLineHeight();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -296,18 +321,37 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     (void)state;
 }
 
+namespace {
+
+// A fixed column wide enough for "99999.999" and its header, with padding.
+float numberColumnWidth(const char* header) {
+    return std::max(ImGui::CalcTextSize("99999.999").x, ImGui::CalcTextSize(header).x) + ImGui::GetStyle().CellPadding.x * 2.0f + 6.0f;
+}
+
+float nameColumnWidth(const std::vector<std::string>& names, float extra) {
+    float w = ImGui::CalcTextSize("whole frame").x;
+    for (const auto& n : names) w = std::max(w, ImGui::CalcTextSize(n.c_str()).x);
+    return w + extra;
+}
+
+}  // namespace
+
 void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passes) {
     const bool cpu = timer.isolateCpu();
     const int columns = cpu ? 8 : 7;
-    // The rest of the panel but the app CPU plot under it.
-    const float height = std::max(ImGui::GetContentRegionAvail().y - 46.0f, 3.0f * ImGui::GetFrameHeight());
-    if (!ImGui::BeginTable("stats", columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_ScrollY,
+    // The rest of the panel but the app CPU plot under it; it scrolls both
+    // ways when the panel is smaller than its rows and columns.
+    const float height = std::max(ImGui::GetContentRegionAvail().y - 46.0f, 5.0f * ImGui::GetFrameHeight());
+    if (!ImGui::BeginTable("stats", columns,
+                           ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
+                               ImGuiTableFlags_BordersInnerV,
                            ImVec2(0.0f, height)))
         return;
-    ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("show", ImGuiTableColumnFlags_WidthFixed, 34.0f);
-    for (const char* h : {"pass", "last", "median", "mean", "min", "max"}) ImGui::TableSetupColumn(h);
-    if (cpu) ImGui::TableSetupColumn("own CPU");
+    ImGui::TableSetupScrollFreeze(1, 1);
+    ImGui::TableSetupColumn("show", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight() + 4.0f);
+    ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameColumnWidth(passes, 24.0f));
+    for (const char* h : {"last", "median", "mean", "min", "max"}) ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed, numberColumnWidth(h));
+    if (cpu) ImGui::TableSetupColumn("own CPU", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("own CPU"));
     ImGui::TableHeadersRow();
     auto statsRow = [&](const std::string& name, unsigned color, bool pass) {
         const TimingStats g = timer.gpuStats(name, static_cast<size_t>(window));
@@ -331,17 +375,18 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
             if (ImGui::Selectable(name.c_str(), solo == name)) solo = solo == name ? std::string() : name;
             if (ImGui::IsItemHovered()) ImGui::SetTooltip(solo == name ? "click: show every pass again" : "click: show only %s", name.c_str());
         } else {
-            ImGui::TextUnformatted(name.c_str());
+            ImGui::TextUnformatted("whole frame");
         }
         ImGui::TableNextColumn();
-        ImGui::Text("%.3f", s && !s->samples.empty() ? s->samples.back().gpuMs : 0.0f);
+        if (s && !s->samples.empty()) numberCell(s->samples.back().gpuMs);
+        else ImGui::TextDisabled("...");
         for (float v : {g.median, g.mean, g.min, g.max}) {
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", v);
+            numberCell(v);
         }
         if (cpu) {
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", c.median);
+            numberCell(c.median);
         }
         ImGui::PopID();
     };
@@ -350,45 +395,147 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
     ImGui::EndTable();
 }
 
-void TimingsPanel::changeCost(PassTimer& timer) {
-    const int after = cost.afterFrames(timer);
-    char header[256];
-    std::snprintf(header, sizeof(header), "Cost of the change: %s###cost", cost.what().c_str());
-    if (!ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (after == 0) {
-        ImGui::TextDisabled("waiting for frames after the change (the first 3 are left out)");
+void TimingsPanel::changeBar(UiState& state, RenderSession& session) {
+    // Under the toolbar, so the action is on show at any panel size; the
+    // verdict goes under the graph.
+    ChangeMeasurement& m = state.measure;
+    const bool shown = m.state() != ChangeMeasurement::State::Idle;
+    if (!change && !shown) {
+        ImGui::TextDisabled("cost of a change: change a knob, then measure it here");
         return;
     }
-    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
-    const std::uint64_t newest = total && !total->samples.empty() ? total->samples.back().frame : 0;
-    if (newest != costsAtFrame) {
-        costs = cost.costs(timer);  // a bootstrap per pass: only when new frames came in
-        costsAtFrame = newest;
+    const std::string what = shown ? m.change().what : change->what;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("change: %s", what.c_str());
+    ImGui::PopStyleColor();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    if (m.active()) {
+        // One measured frame a UI frame: the window stays responsive, and
+        // the measurement can be cancelled at any frame.
+        const float cancelW = ImGui::CalcTextSize("cancel").x + style.FramePadding.x * 2.0f;
+        ImGui::ProgressBar(m.progress(), ImVec2(std::max(ImGui::GetContentRegionAvail().x - cancelW - style.ItemSpacing.x, 80.0f), 0.0f),
+                           m.status().c_str());
+        noteItem("timings.progress");
+        sameLineIfFits(cancelW);
+        if (ImGui::Button("cancel")) m.cancel(session.knobs());
+        noteItem("timings.cancel");
+        return;
     }
-    int before = 0;
-    for (const auto& c : costs) before = std::max(before, c.beforeFrames);
-    ImGui::TextWrapped("median GPU ms, %d frames before against %d after; 95%% bootstrap interval of the ratio%s", before, after,
-                       before < 10 ? ". Few frames before: turn on record before changing a knob for a steadier baseline" : "");
-    if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
-    for (const char* h : {"pass", "before", "after", "change"}) ImGui::TableSetupColumn(h);
+    if (!change) return;
+    const bool measured = m.state() == ChangeMeasurement::State::Done && m.change().what == change->what;
+    if (ImGui::Button(measured ? "measure again" : "measure")) startMeasure(state, session);
+    noteItem("timings.measure");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("renders the frames before and after the change in turns (B B A A ...), one a UI frame,\n"
+                          "the first frame of each turn left out, and compares each pass's GPU times");
+    sameLineIfFits(90.0f + style.ItemInnerSpacing.x + ImGui::CalcTextSize("frames per side").x);
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::InputInt("frames per side", &measureSettings.framesPerSide, 2, 10);
+    measureSettings.framesPerSide = std::clamp(measureSettings.framesPerSide, 2, 150);
+    if (m.state() == ChangeMeasurement::State::Cancelled) ImGui::TextDisabled("%s", m.status().c_str());
+    if (measured) ImGui::TextDisabled("measured: the verdict is under the graph");
+}
+
+void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
+    (void)session;
+    ChangeMeasurement& m = state.measure;
+    if (m.state() != ChangeMeasurement::State::Done || !change || m.change().what != change->what) return;
+    const std::string header = "Cost of the change: " + m.change().what + "###cost";
+    if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    if (m.state() != ChangeMeasurement::State::Done) return;
+    const ChangeVerdict& v = m.verdict();
+    const PassVerdict* total = v.find(PassTimer::kFrameSeries);
+    ImGui::TextWrapped("median GPU ms of %d frames a side, interleaved; %s", total ? std::max(total->beforeFrames, total->afterFrames) : 0,
+                       v.method().c_str());
+    noteItem("timings.method");
+    std::vector<std::string> names;
+    for (const auto& p : v.passes) names.push_back(p.pass);
+    // Every row shown (the panel scrolls), the table scrolls sideways in a narrow panel.
+    const float rowH = ImGui::GetTextLineHeight() + style.CellPadding.y * 2.0f;
+    const float tableH = rowH * static_cast<float>(v.passes.size() + 1) + style.ScrollbarSize + 6.0f;
+    if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_BordersInnerV,
+                           ImVec2(0.0f, tableH)))
+        return;
+    ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameColumnWidth(names, 8.0f));
+    ImGui::TableSetupColumn("before", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("before"));
+    ImGui::TableSetupColumn("after", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("after"));
+    ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("+0000.0 ms (+000%, 99.7% CI +000% to +000%) (n.s.)").x);
     ImGui::TableHeadersRow();
-    for (const PassChangeCost& c : costs) {
+    for (const PassVerdict& c : v.passes) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(c.pass.c_str());
+        ImGui::TextUnformatted(c.pass == PassTimer::kFrameSeries ? "whole frame" : c.pass.c_str());
         ImGui::TableNextColumn();
-        if (c.beforeFrames) ImGui::Text("%.3f", c.beforeMs);
+        if (c.beforeFrames) numberCell(c.beforeMs);
         else ImGui::TextDisabled("-");
         ImGui::TableNextColumn();
-        if (c.afterFrames) ImGui::Text("%.3f", c.afterMs);
+        if (c.afterFrames) numberCell(c.afterMs);
         else ImGui::TextDisabled("-");
         ImGui::TableNextColumn();
         const std::string d = c.describe();
-        if (c.significant()) ImGui::TextColored(c.afterMs > c.beforeMs ? kErrorColor : kOkColor, "%s", d.c_str());
-        else ImGui::TextDisabled("%s (n.s.)", d.c_str());
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s%s", c.pass.c_str(), d.c_str(), c.significant() ? "" : ", not significant");
+        if (c.significant) ImGui::TextColored(c.afterMs > c.beforeMs ? kErrorColor : kOkColor, "%s", d.c_str());
+        else ImGui::TextDisabled("%s (%s)", d.c_str(), c.influenced ? "n.s." : "not reached");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s: %s%s", c.pass.c_str(), d.c_str(),
+                              c.significant ? ""
+                              : c.influenced ? ", not significant at the adjusted level"
+                                             : ",\nnot flagged: it reads no changed knob and nothing a pass reading one writes");
     }
     ImGui::EndTable();
+    noteItem("timings.cost_table");
+}
+
+std::string gpuFrameText(const PassTimer& timer, const UiState& state) {
+    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
+    char text[160];
+    const auto latest = static_cast<unsigned long long>(state.report.frameIndex);
+    if (state.framesRendered == 0 || state.report.passes.empty()) return "GPU -";
+    const TimingSample* newest = total && !total->samples.empty() ? &total->samples.back() : nullptr;
+    if (newest && newest->frame == state.report.frameIndex) {
+        std::snprintf(text, sizeof(text), "GPU %.2f ms", newest->gpuMs);
+    } else if (newest && newest->frame >= state.configSince && newest->frame < state.report.frameIndex) {
+        std::snprintf(text, sizeof(text), "GPU %.2f ms (frame %llu; %llu pending)", newest->gpuMs,
+                      static_cast<unsigned long long>(newest->frame), latest);
+    } else {
+        std::snprintf(text, sizeof(text), "GPU ... ms (frame %llu pending)", latest);
+    }
+    return text;
+}
+
+nlohmann::json timingsReport(const PassTimer& timer, const UiState& state) {
+    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
+    const ChangeMeasurement& m = state.measure;
+    nlohmann::json passes = nlohmann::json::array();
+    for (const PassVerdict& p : m.verdict().passes)
+        passes.push_back({{"pass", p.pass},
+                          {"before_ms", p.beforeMs},
+                          {"after_ms", p.afterMs},
+                          {"before_frames", p.beforeFrames},
+                          {"after_frames", p.afterFrames},
+                          {"influenced", p.influenced},
+                          {"significant", p.significant},
+                          {"confidence", p.confidence},
+                          {"text", p.describe()}});
+    nlohmann::json cost = {{"state", m.stateName()},
+                           {"status", m.status()},
+                           {"what", m.change().what},
+                           {"frames_rendered", m.framesRendered()},
+                           {"frames_scheduled", m.framesScheduled()},
+                           {"compared", m.verdict().compared},
+                           {"per_pass_confidence", m.verdict().perPassConfidence},
+                           {"influenced", std::vector<std::string>(m.influenced().begin(), m.influenced().end())},
+                           {"passes", passes}};
+    nlohmann::json series = nlohmann::json::object();
+    for (const auto& s : timer.series())
+        if (!s.samples.empty()) series[s.name] = {{"frame", s.samples.back().frame}, {"gpu_ms", s.samples.back().gpuMs}};
+    return {{"gpu_text", gpuFrameText(timer, state)},
+            {"config_since", state.configSince},
+            {"pending_frames", timer.pendingFrames()},
+            {"timings_pending", state.timingsPending},
+            {"oldest_timed_frame", total && !total->samples.empty() ? static_cast<long long>(total->samples.front().frame) : -1},
+            {"newest", series},
+            {"cost", cost}};
 }
 
 }  // namespace dw::ui

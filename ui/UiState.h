@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/graph/ChangeCost.h"
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/FiniteCheck.h"
 #include "renderer/io/ImageHistogram.h"
@@ -87,7 +88,8 @@ struct ShownImage {
     // output and frame it was taken from.
     ImageHistogram histogram;
     std::string histogramOf;
-    std::uint64_t histogramFrame = 0;
+    std::uint64_t histogramFrame = 0;    // the rendered frame (FrameReport::frameIndex)
+    std::uint64_t histogramUiFrame = 0;  // the UI frame it was taken in
     // The shown values' NaN / +Inf / -Inf counts and first pixel (with the
     // histogram, and whenever the non-finite mapping is shown).
     bool haveNonFinite = false;
@@ -237,11 +239,6 @@ struct UiState {
     // Where screenshots and timing CSVs go (absolute; created when first used).
     std::string exportDir;
 
-    // Where a few widgets were drawn last frame (screen pixels: x, y, w, h),
-    // by name ("scene.path", "presets.name", ...): --layout-out reports them,
-    // so a test can click a field as a person would.
-    std::map<std::string, glm::vec4> itemRects;
-
     // Filled by the app each frame for the panels to read.
     FrameReport report;
     ShownImage viewportImage, sideImage;
@@ -256,6 +253,15 @@ struct UiState {
     // depends on changed (camera, knobs, scene, lights, view, size).
     bool timingCapture = false;
     std::uint64_t framesRendered = 0;  // frames the pipeline actually rendered
+    // The first frame of the current configuration (scene and render size):
+    // timings of frames before it no longer compare.
+    std::uint64_t configSince = 0;
+    // The cost of a change: the timings panel starts it, the frame loop
+    // renders its frames one a UI frame (ChangeMeasurement).
+    ChangeMeasurement measure;
+    // Timer results still in flight or a measurement running: the frame loop
+    // must keep polling (never sleep waiting for input) until this is false.
+    bool timingsPending = false;
     std::uint64_t shaderGeneration = 0;  // bumped by every shader reload (a reason to render again)
     glm::vec3 cameraPosition{0.0f}; // after the last frame (the scripted mode reports it)
     std::uint64_t frame = 0;

@@ -103,7 +103,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
                               v.softwareStart.c_str(), static_cast<double>(v.frameTargetMs));
         ImGui::SameLine();
         if (ImGui::SmallButton("full")) v.resolution = ResolutionScale::Full;
-        recordItemRect(state.itemRects, "viewport.full_resolution");
+        noteItem("viewport.full_resolution");
     }
     char info[160];
     std::snprintf(info, sizeof(info), "| %s camera | %dx%d (x%.2g)%s", v.camera == CameraMode::Orbit ? "orbit" : "fly",
@@ -116,7 +116,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
     const float belowToolbar = ImGui::GetContentRegionAvail().y;
-    imageViewControls(v, shownOutput, state.viewportImage, &state.itemRects, "viewport");
+    imageViewControls(v, shownOutput, state.viewportImage, "viewport");
     // The render size is the room below the toolbar and one row of the
     // viewer's controls (a buffer's combos are taller than the final image's
     // zoom buttons), which are there whatever is shown: the colour bar and

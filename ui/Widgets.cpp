@@ -1,5 +1,9 @@
 #include "ui/Widgets.h"
 
+#include <imgui_internal.h>
+
+#include <cstdio>
+
 namespace dw::ui {
 
 const ImVec4 kErrorColor(1.0f, 0.42f, 0.38f, 1.0f);
@@ -18,6 +22,41 @@ void helpMarker(const std::string& text) {
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
+}
+
+namespace {
+std::map<std::string, DrawnItem>& itemTable() {
+    static std::map<std::string, DrawnItem> items;
+    return items;
+}
+}  // namespace
+
+void noteItem(const std::string& name) { noteRect(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax()); }
+
+void noteRect(const std::string& name, ImVec2 a, ImVec2 b) {
+    DrawnItem d;
+    d.x = a.x, d.y = a.y, d.w = b.x - a.x, d.h = b.y - a.y;
+    d.frame = ImGui::GetFrameCount();
+    const ImGuiWindow* w = ImGui::GetCurrentWindowRead();
+    if (w) {
+        // The root panel (an item in a table or child belongs to the panel around it).
+        const ImGuiWindow* root = w->RootWindow ? w->RootWindow : w;
+        d.window = root->Name;
+        const ImRect clip = w->ClipRect;
+        d.clipX = clip.Min.x, d.clipY = clip.Min.y, d.clipW = clip.GetWidth(), d.clipH = clip.GetHeight();
+    }
+    itemTable()[name] = d;
+}
+
+const std::map<std::string, DrawnItem>& drawnItems() { return itemTable(); }
+
+void numberCell(double value, int decimals) {
+    char text[48];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+    // Right-aligned in its column, so digits line up and neighbours never touch.
+    const float w = ImGui::CalcTextSize(text).x, avail = ImGui::GetContentRegionAvail().x;
+    if (avail > w) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + avail - w);
+    ImGui::TextUnformatted(text);
 }
 
 void wrappedColored(const ImVec4& color, const std::string& text) {
@@ -40,11 +79,6 @@ bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t si
     ImGui::InputTextWithHint(label, hint, buffer, size, flags);
     return ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
                                           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
-}
-
-void recordItemRect(std::map<std::string, glm::vec4>& rects, const std::string& name) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    rects[name] = glm::vec4(a.x, a.y, b.x - a.x, b.y - a.y);
 }
 
 void sameLineIfFits(float width) {

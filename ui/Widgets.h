@@ -2,7 +2,6 @@
 // Small ImGui helpers shared by the panels.
 #include <imgui.h>
 
-#include <glm/glm.hpp>
 #include <map>
 #include <string>
 
@@ -21,14 +20,28 @@ bool beginPanel(const char* title, bool* open, ImGuiWindowFlags extra = 0);
 // sees what was typed; ImGuiInputTextFlags_EnterReturnsTrue would hold the
 // text back until Enter), returning true when Enter ends the edit.
 bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t size, int flags = 0);
-// Records the last item's rectangle as state.itemRects[name].
-void recordItemRect(std::map<std::string, glm::vec4>& rects, const std::string& name);
 // SameLine when an item `width` px wide still fits on this line, else a new line.
 void sameLineIfFits(float width);
 // Text cut to `width` px with "..." and the whole text as a tooltip when cut.
 void clippedText(const std::string& text, float width);
+// A number in a table cell, right-aligned, with `decimals` fixed decimals.
+void numberCell(double value, int decimals = 3);
 // Text that wraps, in a colour, for errors and reasons.
 void wrappedColored(const ImVec4& color, const std::string& text);
+// Named items for --layout-out and the GUI tests: noteItem(name) records
+// where the last item was drawn (screen pixels) and the frame it was drawn in,
+// and the window it lies in; drawnItems() lists them.
+struct DrawnItem {
+    float x = 0, y = 0, w = 0, h = 0;
+    int frame = -1;      // ImGui::GetFrameCount() when drawn
+    std::string window;  // the panel it was drawn in
+    // The visible part of the panel that holds it (its clip rectangle then).
+    float clipX = 0, clipY = 0, clipW = 0, clipH = 0;
+};
+void noteItem(const std::string& name);
+// The same for a rectangle that is not an item (a table cell's room).
+void noteRect(const std::string& name, ImVec2 min, ImVec2 max);
+const std::map<std::string, DrawnItem>& drawnItems();
 extern const ImVec4 kErrorColor;
 extern const ImVec4 kDimColor;
 extern const ImVec4 kOkColor;

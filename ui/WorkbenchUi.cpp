@@ -92,12 +92,11 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::MenuItem("Keys", nullptr, &p.keys);
         ImGui::EndMenu();
     }
-    // Frame facts at the right of the bar.
-    const PassTimer::Series* total = session.pipeline().timer().find(PassTimer::kFrameSeries);
-    char info[160];
-    std::snprintf(info, sizeof(info), "%s | GPU %.2f ms | %s", session.scene().name.c_str(),
-                  total && !total->samples.empty() ? session.pipeline().timer().gpuStats(PassTimer::kFrameSeries, 60).median : 0.0f,
-                  session.glInfo().renderer.c_str());
+    // Frame facts at the right of the bar: the GPU time of the latest
+    // rendered frame (or which frame's it is while that one's is in flight).
+    char info[256];
+    std::snprintf(info, sizeof(info), "%s | %s | %s", session.scene().name.c_str(),
+                  gpuFrameText(session.pipeline().timer(), state).c_str(), session.glInfo().renderer.c_str());
     ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(info).x - 16);
     ImGui::TextDisabled("%s", info);
     ImGui::EndMainMenuBar();

@@ -1,56 +1,179 @@
 #pragma once
-// What a change cost, per pass: when a knob changes, the frames timed before
-// it are kept as "before", the frames timed after it (once `settle` frames
-// have passed, so re-created resources and recompiled shaders are not
-// counted) as "after", and each pass gets the median before and after, the
-// difference and a 95% percentile-bootstrap interval of the ratio of medians
-// (renderer/bench/Bootstrap.h, as `bench` reports ratios). A change is
-// significant when that interval leaves out 1. The workbench's timings panel
-// shows it as "ssao +44.0 ms (+63%, 95% CI 58-69%)". No GL: it reads the
-// PassTimer's history, so it is tested with synthetic samples.
+// What a knob change costs, per pass, measured the way `bench` measures
+// (renderer/bench/): the workbench renders frames with the knobs at their
+// values before the change and after it, interleaved in short turns
+// (B B A A B B ... with the first frame of each turn left out, so re-created
+// resources and recompiled shaders are not counted), and compares each
+// pass's GPU times of the two sides: medians, the difference and a
+// percentile-bootstrap interval of the ratio of medians.
+//
+// Many passes are compared at once, so the verdict accounts for it: a pass
+// the change cannot influence (it neither reads a changed knob nor reads
+// anything such a pass writes, directly or further down) is reported but
+// never flagged, and the intervals of the others are Bonferroni-adjusted for
+// their number (95% for all of them together). No GL here: the tests feed
+// synthetic samples.
+//
+// KnobChangeWatcher names the change by the values the user committed (a
+// slider let go, a typed value entered), not by each keystroke in between.
 #include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/graph/PassTimer.h"
+#include "renderer/knobs/KnobRegistry.h"
 
 namespace dw {
 
-struct PassChangeCost {
-    std::string pass;
+class Pipeline;
+
+// The knobs a committed edit changed, with their values before and after it.
+struct KnobChange {
+    std::vector<int> knobs;
+    std::vector<double> before, after;
+    std::string what;  // "ssao.samples 16 -> 64", "... and 2 more"
+    bool empty() const { return knobs.empty(); }
+};
+
+class KnobChangeWatcher {
+public:
+    // The current values are the committed ones.
+    void reset(const KnobRegistry& knobs);
+    // Called once a UI frame. `editing`: a widget is being edited (a slider
+    // held, a value being typed), so the values are not committed yet and
+    // nothing is reported. Otherwise a change of any value since the last
+    // committed state is reported once, against that state (16 -> 64 for a
+    // typed "64", never 16 -> 6 -> 64).
+    std::optional<KnobChange> update(const KnobRegistry& knobs, bool editing);
+    const std::vector<double>& committed() const { return committed_; }
+
+private:
+    std::vector<double> committed_;
+    std::uint64_t generation_ = ~0ull;
+};
+
+// A pass's reads and writes, for working out what a change can reach
+// (Pipeline::passList gives them; a pass that modifies a resource reads and writes it).
+struct PassEdges {
+    std::string name;
+    std::vector<std::string> reads, writes;
+};
+// The passes that read a knob (`readers`; "*" for the whole pipeline) and
+// every pass that reads what an influenced pass writes, transitively.
+// `passes` in pipeline order.
+std::set<std::string> influencedPasses(const std::vector<PassEdges>& passes, const std::set<std::string>& readers);
+// Whether a timer series belongs to an influenced pass: "lighting/shadow maps"
+// to "lighting"; the frame total whenever any pass is influenced.
+bool seriesInfluenced(const std::string& series, const std::set<std::string>& influenced);
+// The pipeline's passes as edges (Pipeline::passList; optional reads and
+// modified resources count as reads, modified ones as writes too).
+std::vector<PassEdges> passEdges(const Pipeline& pipeline);
+// What a change of `knobs` can reach in `pipeline`: influencedPasses from
+// the passes that read them (Pipeline::knobReaders; a knob no pass is known
+// to read counts as read by every pass).
+std::set<std::string> passesReachedBy(const Pipeline& pipeline, const std::vector<int>& knobs);
+
+struct PassVerdict {
+    std::string pass;                      // a timer series
     double beforeMs = 0.0, afterMs = 0.0;  // medians, GPU ms
     int beforeFrames = 0, afterFrames = 0;
-    RatioInterval ratio;                   // after / before, with its 95% interval
-    bool significant() const { return ratio.valid() && (ratio.low > 1.0 || ratio.high < 1.0); }
-    // "+44.0 ms (+63%, 95% CI +58% to +69%)"; "new: 3.2 ms" for a pass that
-    // runs only since; "no frames since" before the first frame after.
+    RatioInterval ratio;      // after / before; at the adjusted level when influenced, else 95%
+    double confidence = 0.95; // of `ratio`'s interval
+    bool influenced = true;   // the change can reach this pass
+    bool significant = false; // influenced and the interval leaves out 1
+    // "+44.0 ms (+63%, 99.6% CI +58% to +69%)"; "new: 3.200 ms" for a pass that
+    // runs only after the change, "gone (was 3.200 ms)" for one that stopped.
     std::string describe() const;
 };
 
-class ChangeCost {
+struct ChangeVerdict {
+    std::vector<PassVerdict> passes;
+    int compared = 0;             // influenced series with frames on both sides: the family
+    double familyConfidence = 0.95;
+    double perPassConfidence = 0.95;  // 1 - (1 - family) / compared (Bonferroni)
+    int notInfluenced = 0;
+    const PassVerdict* find(const std::string& pass) const;
+    // "99.6% interval per pass (Bonferroni over 9 passes: 95% for all together); 5 passes the change cannot reach: not flagged"
+    std::string method() const;
+};
+
+using SeriesSamples = std::map<std::string, std::vector<double>>;
+// Judges the samples of the two sides: `influenced` as influencedPasses gives
+// it (a series outside it is never flagged), `order` the series in the
+// order to report them (others follow).
+ChangeVerdict judgeChange(const SeriesSamples& before, const SeriesSamples& after, const std::set<std::string>& influenced,
+                          const std::vector<std::string>& order = {}, double familyConfidence = 0.95, int resamples = 4000);
+
+// One measurement of a change, driven by the frame loop one frame at a time
+// (never blocking): prepareFrame() sets the knobs to the side the next frame
+// measures, frameRendered() notes the frame index, collect() gathers the GPU
+// times once they are in, puts the knobs back to their values after the
+// change and judges.
+class ChangeMeasurement {
 public:
-    // A change happened after frame `lastFrameBefore` was rendered: the
-    // newest `window` samples of every series up to it become "before".
-    // Samples of frames before `firstFrame` (the first frames after a reset,
-    // which compile shaders) are no baseline and are left out.
-    void mark(const PassTimer& timer, std::uint64_t lastFrameBefore, std::string what, size_t window = 120,
-              std::uint64_t settle = 3, std::uint64_t firstFrame = 0);
-    bool active() const { return active_; }
-    void clear() { *this = ChangeCost(); }
-    const std::string& what() const { return what_; }
-    // Every series with frames before the change, in the order of the
-    // timer's series; "after" from the frames timed since (at most `window`).
-    std::vector<PassChangeCost> costs(const PassTimer& timer) const;
-    // Frames timed after the change so far (of the frame series).
-    int afterFrames(const PassTimer& timer) const;
+    struct Settings {
+        int framesPerSide = 12;  // counted frames of each side
+        int perTurn = 2;         // counted frames per turn
+        int settle = 1;          // frames left out at the start of each turn
+    };
+    enum class State { Idle, Rendering, Waiting, Done, Cancelled };
+
+    void start(const KnobChange& change, const Settings& settings, std::set<std::string> influenced);
+    // Stops; the knobs go back to their values after the change (those the
+    // user has not touched since).
+    void cancel(KnobRegistry& knobs, const std::string& why = "cancelled");
+    State state() const { return state_; }
+    bool active() const { return state_ == State::Rendering || state_ == State::Waiting; }
+    // Before a frame: true when the measurement wants this frame rendered,
+    // with the knobs set to its side. A knob changed by anything else since
+    // the last frame cancels the measurement (false).
+    bool prepareFrame(KnobRegistry& knobs);
+    // The frame prepared last was rendered as `frameIndex`.
+    void frameRendered(std::uint64_t frameIndex);
+    // Once every measured frame's times are in (or the timer has none
+    // pending): gathers them, restores the after values and judges. True
+    // when the measurement finished in this call.
+    bool collect(const PassTimer& timer, KnobRegistry& knobs, const std::vector<std::string>& order = {});
+
+    const KnobChange& change() const { return change_; }
+    const Settings& settings() const { return settings_; }
+    const ChangeVerdict& verdict() const { return verdict_; }
+    const std::set<std::string>& influenced() const { return influenced_; }
+    int framesRendered() const { return static_cast<int>(next_); }
+    int framesScheduled() const { return static_cast<int>(schedule_.size()); }
+    float progress() const;
+    // "measuring: frame 7 of 36", "waiting for the GPU times", "done", "cancelled: ..."
+    std::string status() const;
+    const char* stateName() const;
+    // The schedule, for the tests: per frame its side (true: after) and whether it is counted.
+    struct Slot {
+        bool after = false;
+        bool counted = true;
+    };
+    const std::vector<Slot>& schedule() const { return schedule_; }
+    static std::vector<Slot> makeSchedule(const Settings& settings);
 
 private:
-    bool active_ = false;
-    std::string what_;
-    std::uint64_t firstAfter_ = 0;
-    size_t window_ = 120;
-    std::vector<std::pair<std::string, std::vector<double>>> before_;
+    void setSide(KnobRegistry& knobs, bool after);
+    void restore(KnobRegistry& knobs);
+
+    State state_ = State::Idle;
+    KnobChange change_;
+    Settings settings_;
+    std::set<std::string> influenced_;
+    std::vector<Slot> schedule_;
+    size_t next_ = 0;                 // the next slot to render
+    bool prepared_ = false;
+    std::map<std::uint64_t, Slot> frames_;  // rendered frame index -> its slot
+    std::uint64_t lastFrame_ = 0;
+    std::uint64_t generation_ = 0;    // the registry's generation after our last set
+    std::vector<double> lastSet_;     // the values we set last
+    std::string why_;
+    ChangeVerdict verdict_;
 };
 
 }  // namespace dw

@@ -133,7 +133,7 @@ void PassTimer::harvest(PendingFrame& f) {
 }
 
 void PassTimer::addSample(const std::string& series, const TimingSample& sample) {
-    if (paused_) return;
+    if (paused_ || sample.frame < floor_) return;
     Series& s = seriesFor(series);
     s.samples.push_back(sample);
     while (s.samples.size() > historyLength_) s.samples.pop_front();
@@ -187,6 +187,7 @@ TimingStats PassTimer::cpuStats(const std::string& name, size_t window) const {
 void PassTimer::clearHistory() { series_.clear(); }
 
 void PassTimer::clearHistoryBefore(std::uint64_t frame) {
+    floor_ = std::max(floor_, frame);
     for (auto& s : series_)
         while (!s.samples.empty() && s.samples.front().frame < frame) s.samples.pop_front();
     series_.erase(std::remove_if(series_.begin(), series_.end(), [](const Series& s) { return s.samples.empty(); }),

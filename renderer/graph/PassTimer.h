@@ -58,7 +58,9 @@ public:
     size_t pendingFrames() const { return pending_.size(); }
     void clearHistory();
     // Drops the samples of frames before `frame` (a configuration that
-    // started with it: the frames of the one before no longer compare).
+    // started with it: the frames of the one before no longer compare),
+    // also those still in flight: their results, when they come back, are
+    // not recorded.
     void clearHistoryBefore(std::uint64_t frame);
     // Samples kept per series (kHistory by default); a run that reports on
     // more frames than that (render --frames N) raises it so none drop out.
@@ -106,6 +108,7 @@ private:
     bool paused_ = false;
     bool isolateCpu_ = false;
     size_t historyLength_ = kHistory;
+    std::uint64_t floor_ = 0;  // samples of earlier frames are not recorded (clearHistoryBefore)
     std::string passName_;
     size_t passIndex_ = 0;
     std::chrono::steady_clock::time_point subStart_;

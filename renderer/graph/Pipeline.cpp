@@ -30,11 +30,38 @@ Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
     for (const auto& e : PassCatalog::extra().entries()) entries.push_back(e);
     std::stable_sort(entries.begin(), entries.end(),
                      [](const PassEntry& a, const PassEntry& b) { return a.stage < b.stage; });
+    // Which pass reads which knob: those it declares, and those it looks up
+    // while it is made and connected (KnobRegistry::logLookups).
+    std::vector<std::vector<int>> lookups;
     for (const auto& e : entries) {
-        passes_.push_back(e.make(knobs));
+        std::vector<int> log;
+        const size_t declared = knobs.size();
+        knobs.logLookups(&log);
+        try {
+            passes_.push_back(e.make(knobs));
+        } catch (...) {
+            knobs.logLookups(nullptr);
+            throw;
+        }
+        knobs.logLookups(nullptr);
+        for (size_t id = declared; id < knobs.size(); ++id) log.push_back(static_cast<int>(id));
+        lookups.push_back(std::move(log));
         stages_.push_back(e.stage);
     }
-    for (const auto& p : passes_) p->connect(knobs);
+    for (size_t i = 0; i < passes_.size(); ++i) {
+        knobs.logLookups(&lookups[i]);
+        try {
+            passes_[i]->connect(knobs);
+        } catch (...) {
+            knobs.logLookups(nullptr);
+            throw;
+        }
+        knobs.logLookups(nullptr);
+    }
+    knobReaders_.assign(knobs.size(), {});
+    for (size_t i = 0; i < passes_.size(); ++i)
+        for (int id : lookups[i])
+            if (id >= 0 && static_cast<size_t>(id) < knobReaders_.size()) knobReaders_[static_cast<size_t>(id)].insert(passes_[i]->name());
     std::set<std::string> names;
     for (const auto& p : passes_) {
         if (!names.insert(p->name()).second) throw Error(std::string("two passes are named '") + p->name() + "'");
@@ -48,6 +75,12 @@ Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
     outputs_.declare("pipeline", {kFinalOutput, OutputKind::Color,
                                   "the display image: the end of the post chain (tonemap.result, then each post pass that ran)"});
     depthMode_ = knobs.requireEnum("depth.mode");
+    knobReaders_[static_cast<size_t>(depthMode_.id)].insert("*");  // the camera every pass uses
+}
+
+const std::set<std::string>& Pipeline::knobReaders(int knob) const {
+    static const std::set<std::string> none;
+    return knob >= 0 && static_cast<size_t>(knob) < knobReaders_.size() ? knobReaders_[static_cast<size_t>(knob)] : none;
 }
 
 Pipeline::~Pipeline() = default;

@@ -97,6 +97,10 @@ public:
     // Plans without executing: which passes would run for `request`, in the
     // order they would run, and (optionally) every output that something consumes.
     std::vector<PassRecord> plan(const FrameRequest& request, std::set<std::string>* wanted = nullptr) const;
+    // The passes that read knob `knob` (declared it, or looked it up while
+    // being made or connected); "*" when the pipeline itself reads it for
+    // every pass (depth.mode). Empty for a knob no pass reads.
+    const std::set<std::string>& knobReaders(int knob) const;
     // Every pass in pipeline order under the current knobs (`list passes`).
     std::vector<PassInfo> passList() const;
     PassStage stageOf(const RenderPass& pass) const;
@@ -131,6 +135,7 @@ private:
     EnumKnob depthMode_;  // depth.mode: 0 reversed, 1 conventional
     int width_ = 0, height_ = 0;
     std::uint64_t frame_ = 0;
+    std::vector<std::set<std::string>> knobReaders_;  // by knob id
 };
 
 }  // namespace dw

@@ -164,7 +164,10 @@ std::vector<std::string> KnobRegistry::choiceDefines(EnumKnob k) const {
 
 std::optional<int> KnobRegistry::find(const std::string& name) const {
     for (size_t i = 0; i < specs_.size(); ++i)
-        if (specs_[i].name == name) return static_cast<int>(i);
+        if (specs_[i].name == name) {
+            if (readLog_) readLog_->push_back(static_cast<int>(i));
+            return static_cast<int>(i);
+        }
     return std::nullopt;
 }
 

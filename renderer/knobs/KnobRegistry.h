@@ -93,12 +93,18 @@ public:
     // Bumped on every change, so views can cache derived state.
     std::uint64_t generation() const { return generation_; }
 
+    // While set, every knob looked up (find, require*) is appended to `log`:
+    // the Pipeline learns which pass reads which knob while it makes and
+    // connects each pass. nullptr stops it.
+    void logLookups(std::vector<int>* log) const { readLog_ = log; }
+
 private:
     int add(KnobSpec spec);
     int require(const std::string& name, KnobType type) const;
     std::vector<KnobSpec> specs_;
     std::vector<double> values_;
     std::uint64_t generation_ = 0;
+    mutable std::vector<int>* readLog_ = nullptr;
 };
 
 }  // namespace dw

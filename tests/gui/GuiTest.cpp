@@ -19,6 +19,7 @@
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
+#include "ui/Widgets.h"
 #include "ui/WorkbenchUi.h"
 
 #include <nlohmann/json.hpp>
@@ -180,6 +181,15 @@ struct LayoutReport {
     long long lastRenderedFrame = -1, lastTimedFrame = -1;
     std::vector<std::string> renderdocCaptures;
     std::vector<std::string> errors;  // every error the Messages panel holds
+    nlohmann::json timings;           // ui::timingsReport
+    nlohmann::json items;             // named items drawn in the last frame (ui::noteItem)
+    // The centre of a named item, as "X Y" for an events file.
+    std::string at(const std::string& item) const {
+        if (!items.contains(item)) return "-1 -1";
+        const auto& i = items[item];
+        return std::to_string(static_cast<int>(i["x"].get<float>() + i["w"].get<float>() * 0.5f)) + " " +
+               std::to_string(static_cast<int>(i["y"].get<float>() + i["h"].get<float>() * 0.5f));
+    }
     const ui::PanelRect* find(const std::string& n) const {
         for (const auto& [name, r] : panels)
             if (name == n) return &r;
@@ -207,6 +217,8 @@ LayoutReport readLayoutReport(const fs::path& p) {
     r.lastTimedFrame = j["last_timed_frame"].get<long long>();
     r.renderdocCaptures = j["renderdoc_captures"].get<std::vector<std::string>>();
     r.errors = j["errors"].get<std::vector<std::string>>();
+    r.timings = j["timings"];
+    r.items = j["items"];
     return r;
 }
 
@@ -260,6 +272,48 @@ TEST(Gui, EveryPanelFitsTheWindowWithoutOverlapAt1024x640And1600x900) {
         }
         EXPECT_EQ(drawn.size(), 11u);
         expectPanelsTileTheWindow(drawn, w, h, ImGui::GetFrameHeight(), std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)));
+    }
+}
+
+// At the default sizes every control stays reachable: the timings toolbar
+// wraps, so the CSV export button lies inside the timings panel and on show
+// without scrolling, and the Lights table keeps room for its names.
+TEST(Gui, AtTheDefaultSizesTheExportButtonIsInItsPanelAndTheLightsKeepTheirNames) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("default");
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}}) {
+        const std::string size = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h));
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;  // the panels open by default
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            ++state.framesRendered;
+            state.renderSize = {64, 36};
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        const int frame = ImGui::GetFrameCount();
+        const auto& items = ui::drawnItems();
+        ImGuiWindow* timings = ImGui::FindWindowByName("GPU timings");
+        ASSERT_NE(timings, nullptr) << size;
+        ASSERT_TRUE(items.count("timings.export")) << size;
+        const ui::DrawnItem& e = items.at("timings.export");
+        EXPECT_EQ(e.frame, frame) << size;
+        EXPECT_EQ(e.window, "GPU timings");
+        EXPECT_GE(e.x, timings->Pos.x) << size;
+        EXPECT_LE(e.x + e.w, timings->Pos.x + timings->Size.x) << size << ": the export button leaves the panel";
+        EXPECT_GE(e.y, timings->Pos.y) << size;
+        EXPECT_LE(e.y + e.h, timings->Pos.y + timings->Size.y) << size;
+        // On show: inside the panel's visible part.
+        EXPECT_LE(e.x + e.w, e.clipX + e.clipW) << size;
+        EXPECT_LE(e.y + e.h, e.clipY + e.clipH) << size;
+        ASSERT_TRUE(items.count("lights.name_cell")) << size;
+        const ui::DrawnItem& name = items.at("lights.name_cell");
+        EXPECT_EQ(name.window, "Lights");
+        EXPECT_GE(name.w, ImGui::CalcTextSize("lantern00").x) << size << ": the names have no room";
     }
 }
 
@@ -442,43 +496,105 @@ TEST(Gui, AnErrorBannerClearsWhenItsActionSucceedsAndSavesShowAToast) {
     EXPECT_EQ(state.log.banner(), nullptr);
 }
 
-// The timings panel: a knob change is named and costed per pass from the
-// frames before and after it; a scene change starts the statistics over.
-TEST(Gui, TimingsPanelCostsAKnobChangeAndStartsOverOnAnotherScene) {
+// The timings panel: a committed knob change is named by its values before
+// and after; *measure* renders both sides in turns, one frame a call, and
+// judges each pass; passes the change cannot reach are shown, never flagged.
+// The top bar's GPU time is the latest frame's, or says which frame it is of.
+// A scene change starts the statistics over.
+TEST(Gui, TimingsPanelMeasuresACommittedKnobChangeAndStartsOverOnAnotherScene) {
     auto session = test::makeSession(64, 36);
     session->loadScene("spheres");
     HeadlessImGui imgui;
     ui::UiState state;
     state.renderSize = {64, 36};
     ui::TimingsPanel panel;
+    panel.measureSettings = {4, 2, 1};
     bool open = true;
-    auto frame = [&] {
+    // What the window's frame loop does: the measurement's side, a frame, the timer, the panel.
+    auto frame = [&](bool wait) {
+        const bool measuring = state.measure.prepareFrame(session->knobs());
         state.report = session->render();
-        session->pipeline().timer().collect(true);
+        ++state.framesRendered;
+        if (measuring) state.measure.frameRendered(state.report.frameIndex);
+        session->pipeline().timer().collect(wait);
+        if (state.measure.state() == ChangeMeasurement::State::Waiting)
+            state.measure.collect(session->pipeline().timer(), session->knobs());
         imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
     };
-    for (int i = 0; i < 9; ++i) frame();
-    EXPECT_FALSE(panel.cost.active());
-    session->knobs().setFromString("ssao.samples", "64");
-    for (int i = 0; i < 8; ++i) frame();
-    ASSERT_TRUE(panel.cost.active());
-    EXPECT_EQ(panel.cost.what(), "ssao.samples 16 -> 64");
-    const auto costs = panel.cost.costs(session->pipeline().timer());
-    const auto ssao = std::find_if(costs.begin(), costs.end(), [](const PassChangeCost& c) { return c.pass == "ssao"; });
-    ASSERT_NE(ssao, costs.end());
-    EXPECT_GE(ssao->beforeFrames, 4);
-    EXPECT_LE(ssao->beforeFrames, 6) << "the first frames after the start (shader compiles) are no baseline";
-    EXPECT_GE(ssao->afterFrames, 3);
-    EXPECT_GT(ssao->afterMs, 0.0);
-    // Another scene: the history and the change start over.
-    session->loadScene("default");
-    frame();
-    EXPECT_FALSE(panel.cost.active());
+    // The GPU time shown is the newest frame's, once it is in; until then it says which frame.
+    state.report = session->render();
+    ++state.framesRendered;
+    const std::string before = ui::gpuFrameText(session->pipeline().timer(), state);
+    session->pipeline().timer().collect(true);
+    const std::string after = ui::gpuFrameText(session->pipeline().timer(), state);
+    EXPECT_EQ(before, "GPU ... ms (frame " + std::to_string(state.report.frameIndex) + " pending)");
     const PassTimer::Series* total = session->pipeline().timer().find(PassTimer::kFrameSeries);
-    EXPECT_TRUE(total == nullptr || total->samples.empty()) << "frames of the previous scene are still counted";
-    // Axis ticks: nice linear steps, decades on a log axis.
+    ASSERT_TRUE(total && !total->samples.empty());
+    char expected[64];
+    std::snprintf(expected, sizeof(expected), "GPU %.2f ms", total->samples.back().gpuMs);
+    EXPECT_EQ(after, expected);
+
+    for (int i = 0; i < 4; ++i) frame(true);
+    EXPECT_FALSE(panel.change);
+    session->knobs().setFromString("ssao.samples", "64");
+    frame(true);
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ssao.samples 16 -> 64");
+    EXPECT_EQ(state.measure.state(), ChangeMeasurement::State::Idle) << "measured without being asked";
+    panel.startMeasure(state, *session);
+    ASSERT_TRUE(state.measure.active());
+    // The schedule: turns of 1 settling + 2 counted frames, B then A, 4 counted a side.
+    EXPECT_EQ(state.measure.framesScheduled(), 12);
+    std::set<std::string> influenced = state.measure.influenced();
+    EXPECT_TRUE(influenced.count("ssao") && influenced.count("ssao_blur") && influenced.count("lighting") && influenced.count("tonemap"));
+    EXPECT_FALSE(influenced.count("geometry") || influenced.count("lights") || influenced.count("shadows") || influenced.count("skybox"));
+    int frames = 0;
+    std::vector<double> samples;
+    while (state.measure.active() && frames < 40) {
+        frame(false);
+        samples.push_back(knob(*session, "ssao.samples"));
+        ++frames;
+    }
+    // A side's value per frame, then the after value once it is done.
+    EXPECT_EQ(std::vector<double>(samples.begin(), samples.begin() + 6), (std::vector<double>{16, 16, 16, 64, 64, 64}));
+    for (int i = 0; i < 40 && state.measure.active(); ++i) frame(true);
+    ASSERT_EQ(state.measure.state(), ChangeMeasurement::State::Done) << state.measure.status();
+    EXPECT_EQ(knob(*session, "ssao.samples"), 64.0) << "the knob did not go back to the value after the change";
+    const ChangeVerdict& v = state.measure.verdict();
+    const PassVerdict* ssao = v.find("ssao");
+    const PassVerdict* geometry = v.find("geometry");
+    ASSERT_TRUE(ssao && geometry);
+    EXPECT_EQ(ssao->beforeFrames, 4);
+    EXPECT_EQ(ssao->afterFrames, 4);
+    EXPECT_TRUE(ssao->influenced);
+    EXPECT_FALSE(geometry->influenced);
+    EXPECT_FALSE(geometry->significant);
+    EXPECT_GT(v.compared, 3);
+    EXPECT_NEAR(v.perPassConfidence, 1.0 - 0.05 / v.compared, 1e-12);
+    // The measurement's own knob settings are no change to measure.
+    frame(true);
+    EXPECT_EQ(panel.change->what, "ssao.samples 16 -> 64");
+    EXPECT_EQ(state.measure.state(), ChangeMeasurement::State::Done);
+    const nlohmann::json report = ui::timingsReport(session->pipeline().timer(), state);
+    EXPECT_EQ(report["cost"]["state"], "done");
+    EXPECT_EQ(report["cost"]["what"], "ssao.samples 16 -> 64");
+
+    // Another scene: the history and the change start over, from its first frame.
+    session->loadScene("default");
+    state.report = session->render();
+    state.configSince = state.report.frameIndex;
+    imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    EXPECT_FALSE(panel.change);
+    EXPECT_EQ(state.measure.state(), ChangeMeasurement::State::Idle);
+    session->pipeline().timer().collect(true);
+    for (const auto& series : session->pipeline().timer().series())
+        for (const auto& t : series.samples) EXPECT_GE(t.frame, state.configSince) << series.name << ": a frame of the previous scene";
+    // Axis ticks: nice linear steps, decades on a log axis, 1-2-5 steps
+    // within two decades, and the ends when nothing else falls inside.
     EXPECT_EQ(ui::axisTicks(0.0f, 47.0f, false, 5), (std::vector<float>{0, 10, 20, 30, 40}));
     EXPECT_EQ(ui::axisTicks(0.05f, 300.0f, true, 6), (std::vector<float>{0.1f, 1.0f, 10.0f, 100.0f}));
+    EXPECT_EQ(ui::axisTicks(15.0f, 90.0f, true, 6), (std::vector<float>{20.0f, 50.0f}));
+    EXPECT_EQ(ui::axisTicks(2.5f, 4.5f, true, 6).size(), 2u);
 }
 
 // Interactive on a slow GL: an idle window renders no frames after the size
@@ -512,6 +628,82 @@ TEST(Gui, UnderXvfbAnIdleWindowRendersNothingRecordingRendersEveryFrameAndTheSca
     EXPECT_FLOAT_EQ(ui::nextAutoScale(0.5f, 70.0f, 100.0f), 0.5f);
     EXPECT_FLOAT_EQ(ui::nextAutoScale(0.125f, 900.0f, 100.0f), 0.125f);
     EXPECT_FLOAT_EQ(ui::nextAutoScale(1.0f, 1.0f, 100.0f), 1.0f);
+}
+
+// A knob change measured to the end under Xvfb without --record: a click
+// on lighting.frustum_cull, a click on *measure*; the measurement renders
+// its own frames in an idle window, finishes, and reports every pass with
+// the passes upstream of the light table (geometry, ssao, ssao_blur) not
+// reached and not flagged. The window stays live meanwhile (one measured
+// frame a UI frame).
+TEST(Gui, UnderXvfbAKnobChangeIsMeasuredToTheEndWithoutRecord) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const std::string scene = "spheres --resolution 1/4";  // a quarter of the pixels: the same panels, faster frames
+    // Where the knob is, then where the measure button appears once it changed.
+    const LayoutReport first = runScripted("measure-where", "1600x900", 4, "", "", scene);
+    ASSERT_TRUE(first.items.contains("knob.lighting.frustum_cull")) << first.items.dump();
+    const std::string knobAt = first.at("knob.lighting.frustum_cull");
+    {
+        // Inside the part of the Parameters panel on show, so a click reaches it.
+        const auto& k = first.items["knob.lighting.frustum_cull"];
+        const auto& clip = k["clip"];
+        EXPECT_EQ(k["panel"], "Parameters");
+        EXPECT_GE(k["y"].get<float>(), clip[1].get<float>());
+        EXPECT_LE(k["y"].get<float>() + k["h"].get<float>(), clip[1].get<float>() + clip[3].get<float>());
+    }
+    const LayoutReport changed = runScripted("measure-changed", "1600x900", 6, "2 click " + knobAt + "\n", "", scene);
+    EXPECT_EQ(changed.timings["cost"]["state"], "idle");
+    ASSERT_TRUE(changed.items.contains("timings.measure")) << "no measure button after a knob change";
+    {
+        // On show in the timings panel without scrolling.
+        const auto& b = changed.items["timings.measure"];
+        EXPECT_EQ(b["panel"], "GPU timings");
+        EXPECT_LE(b["y"].get<float>() + b["h"].get<float>(), b["clip"][1].get<float>() + b["clip"][3].get<float>());
+    }
+    const std::string events = "2 click " + knobAt + "\n6 click " + changed.at("timings.measure") + "\n";
+    const LayoutReport r = runScripted("measure", "1600x900", 70, events, "--dump-knobs " + (test::tempDir() / "measure-knobs.txt").string(), scene);
+    const nlohmann::json& cost = r.timings["cost"];
+    ASSERT_EQ(cost["state"], "done") << cost.dump(1);
+    // The export button, on show in its panel.
+    const ui::PanelRect* timings = r.find("GPU timings");
+    ASSERT_NE(timings, nullptr);
+    ASSERT_TRUE(r.items.contains("timings.export"));
+    const auto& ex = r.items["timings.export"];
+    EXPECT_GE(ex["x"].get<float>(), timings->x);
+    EXPECT_LE(ex["x"].get<float>() + ex["w"].get<float>(), timings->x + timings->w);
+    EXPECT_LE(ex["y"].get<float>() + ex["h"].get<float>(), timings->y + timings->h);
+    EXPECT_EQ(cost["what"], "lighting.frustum_cull true -> false");
+    EXPECT_EQ(cost["frames_rendered"], cost["frames_scheduled"]);
+    EXPECT_EQ(cost["frames_scheduled"].get<int>(), 36);  // 12 a side, turns of 1 settling + 2 counted
+    std::map<std::string, nlohmann::json> passes;
+    for (const auto& p : cost["passes"]) passes[p["pass"].get<std::string>()] = p;
+    for (const char* upstream : {"geometry", "ssao", "ssao_blur"}) {
+        ASSERT_TRUE(passes.count(upstream)) << upstream;
+        EXPECT_FALSE(passes[upstream]["influenced"].get<bool>()) << upstream;
+        EXPECT_FALSE(passes[upstream]["significant"].get<bool>()) << upstream;
+        EXPECT_EQ(passes[upstream]["before_frames"], 12) << upstream;
+        EXPECT_EQ(passes[upstream]["after_frames"], 12) << upstream;
+    }
+    for (const char* reached : {"lights", "lighting", "tonemap", "frame"}) {
+        ASSERT_TRUE(passes.count(reached)) << reached;
+        EXPECT_TRUE(passes[reached]["influenced"].get<bool>()) << reached;
+    }
+    // Bonferroni over the passes compared.
+    const int compared = cost["compared"].get<int>();
+    EXPECT_GE(compared, 4);
+    EXPECT_NEAR(cost["per_pass_confidence"].get<double>(), 1.0 - 0.05 / compared, 1e-9);
+    // The knob ends at the value the user chose, and no frame ran after the measurement's own.
+    std::ifstream knobs(test::tempDir() / "measure-knobs.txt");
+    const std::string dumped((std::istreambuf_iterator<char>(knobs)), std::istreambuf_iterator<char>());
+    EXPECT_NE(dumped.find("lighting.frustum_cull=false"), std::string::npos) << dumped;
+    EXPECT_LT(r.framesRendered, 36 + 8) << "the idle window kept rendering after the measurement";
+    // The top bar shows the latest rendered frame's time; nothing is left in flight.
+    EXPECT_EQ(r.lastTimedFrame, r.lastRenderedFrame);
+    EXPECT_EQ(r.timings["pending_frames"], 0);
+    EXPECT_FALSE(r.timings["timings_pending"].get<bool>());
+    char gpu[64];
+    std::snprintf(gpu, sizeof(gpu), "GPU %.2f ms", r.timings["newest"]["frame"]["gpu_ms"].get<double>());
+    EXPECT_EQ(r.timings["gpu_text"], gpu);
 }
 
 // gui --renderdoc: F11 (or Render > Capture frame) writes a RenderDoc capture

@@ -2,6 +2,8 @@
 
 #include "renderer/graph/ChangeCost.h"
 #include "renderer/graph/PassTimer.h"
+#include "renderer/graph/Pipeline.h"
+#include "renderer/knobs/KnobRegistry.h"
 
 #include <stdexcept>
 
@@ -19,48 +21,223 @@ TEST(TimingStats, MedianMeanMinMax) {
     EXPECT_EQ(computeStats({}).count, 0);
 }
 
-// The cost of a change from synthetic histories: 40 frames of ssao at about
-// 70 ms, a change, 3 frames to settle, 40 frames at about 114 ms.
-TEST(ChangeCost, ReportsTheMediansTheDifferenceAndASignificantRatio) {
-    PassTimer timer;
-    auto jitter = [](int i) { return static_cast<float>((i * 37) % 11 - 5) * 0.4f; };
-    for (int f = 0; f < 40; ++f) {
-        timer.addSample("ssao", {static_cast<std::uint64_t>(f), 70.0f + jitter(f), 1.0f});
-        timer.addSample("tonemap", {static_cast<std::uint64_t>(f), 2.0f + jitter(f) * 0.01f, 0.1f});
-        timer.addSample(PassTimer::kFrameSeries, {static_cast<std::uint64_t>(f), 90.0f + jitter(f), 2.0f});
-    }
-    ChangeCost cost;
-    cost.mark(timer, 39, "ssao.samples 16 -> 64", 120, 3);
-    // Frames 40-42 re-create resources: slow, and left out.
-    for (int f = 40; f < 83; ++f) {
-        const float ssao = f < 43 ? 900.0f : 114.0f + jitter(f);
-        timer.addSample("ssao", {static_cast<std::uint64_t>(f), ssao, 1.0f});
-        timer.addSample("tonemap", {static_cast<std::uint64_t>(f), 2.0f + jitter(f + 3) * 0.01f, 0.1f});
-        timer.addSample(PassTimer::kFrameSeries, {static_cast<std::uint64_t>(f), ssao + 20.0f, 2.0f});
-        if (f == 60) timer.addSample("bloom", {static_cast<std::uint64_t>(f), 5.0f, 0.1f});
-    }
-    EXPECT_EQ(cost.afterFrames(timer), 40);
-    const auto costs = cost.costs(timer);
-    auto find = [&](const std::string& n) -> const PassChangeCost& {
-        for (const auto& c : costs)
-            if (c.pass == n) return c;
-        throw std::runtime_error("no " + n);
+namespace {
+
+// Synthetic GPU times: `ms` with a spread of about +-`noise` ms (a fixed,
+// irregular sequence, the same every run).
+std::vector<double> noisy(double ms, double noise, int n, int seed) {
+    std::vector<double> v;
+    for (int i = 0; i < n; ++i) v.push_back(ms + noise * static_cast<double>(((i + seed) * 37) % 11 - 5) / 5.0);
+    return v;
+}
+
+KnobRegistry ssaoKnobs() {
+    KnobRegistry k;
+    k.addInt("ssao.samples", 16, 4, 64, "ssao", "samples");
+    k.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao", "radius");
+    k.addBool("bloom.enabled", true, "bloom", "bloom");
+    return k;
+}
+
+}  // namespace
+
+// The change is what the user committed: typing 64 into the samples field
+// goes through 6 while the field is active, and only 16 -> 64 is reported,
+// once, when the edit ends.
+TEST(ChangeCost, AChangeIsTheCommittedValueNotEachKeystroke) {
+    KnobRegistry knobs = ssaoKnobs();
+    const int samples = *knobs.find("ssao.samples");
+    KnobChangeWatcher w;
+    w.reset(knobs);
+    EXPECT_FALSE(w.update(knobs, false));
+    knobs.set(samples, 6);  // "6" typed
+    EXPECT_FALSE(w.update(knobs, true));
+    knobs.set(samples, 64);  // "64"
+    EXPECT_FALSE(w.update(knobs, true));
+    const auto c = w.update(knobs, false);  // Enter: the field is let go
+    ASSERT_TRUE(c);
+    EXPECT_EQ(c->what, "ssao.samples 16 -> 64");
+    ASSERT_EQ(c->knobs, std::vector<int>{samples});
+    EXPECT_EQ(c->before, std::vector<double>{16.0});
+    EXPECT_EQ(c->after, std::vector<double>{64.0});
+    EXPECT_EQ(w.committed()[static_cast<size_t>(samples)], 64.0);
+    EXPECT_FALSE(w.update(knobs, false)) << "reported twice";
+    // Dragged away and back to where it was: no change.
+    knobs.set(samples, 30);
+    EXPECT_FALSE(w.update(knobs, true));
+    knobs.set(samples, 64);
+    EXPECT_FALSE(w.update(knobs, false));
+    // Two knobs at once (reset group): both, named as the first and a count.
+    knobs.set(samples, 8);
+    knobs.set(*knobs.find("ssao.radius"), 2.0);
+    const auto two = w.update(knobs, false);
+    ASSERT_TRUE(two);
+    EXPECT_EQ(two->what, "ssao.samples 64 -> 8 and 1 more");
+    EXPECT_EQ(two->knobs.size(), 2u);
+}
+
+// What a knob can reach: its readers and everything downstream of them.
+TEST(ChangeCost, APassUpstreamOfOrBesideTheReaderIsNotInfluenced) {
+    const std::vector<PassEdges> passes = {
+        {"geometry", {}, {"gbuffer.depth", "gbuffer.normal"}},
+        {"ssao", {"gbuffer.depth", "gbuffer.normal"}, {"ssao.raw"}},
+        {"ssao_blur", {"ssao.raw"}, {"ssao.blurred"}},
+        {"lights", {}, {"lights.table"}},
+        {"shadows", {"lights.table"}, {"lights.table", "shadow.maps"}},
+        {"lighting", {"gbuffer.depth", "lights.table", "ssao.blurred"}, {"lbuffer"}},
+        {"bloom", {"lbuffer"}, {"bloom.result"}},
+        {"tonemap", {"lbuffer", "bloom.result"}, {"tonemap.result"}},
     };
-    const PassChangeCost& ssao = find("ssao");
-    EXPECT_EQ(ssao.beforeFrames, 40);
-    EXPECT_EQ(ssao.afterFrames, 40);
-    EXPECT_NEAR(ssao.beforeMs, 70.0, 2.1);
-    EXPECT_NEAR(ssao.afterMs, 114.0, 2.1);
-    EXPECT_TRUE(ssao.significant());
-    EXPECT_NEAR(ssao.ratio.ratio, 114.0 / 70.0, 0.05);
-    EXPECT_LT(ssao.ratio.low, ssao.ratio.ratio);
-    EXPECT_GT(ssao.ratio.high, ssao.ratio.ratio);
+    EXPECT_EQ(influencedPasses(passes, {"ssao"}), (std::set<std::string>{"ssao", "ssao_blur", "lighting", "bloom", "tonemap"}));
+    EXPECT_EQ(influencedPasses(passes, {"lights"}),
+              (std::set<std::string>{"lights", "shadows", "lighting", "bloom", "tonemap"}));
+    EXPECT_EQ(influencedPasses(passes, {"tonemap"}), (std::set<std::string>{"tonemap"}));
+    EXPECT_EQ(influencedPasses(passes, {"*"}).size(), passes.size());
+    EXPECT_TRUE(seriesInfluenced("lighting/shadow maps", {"lighting"}));
+    EXPECT_FALSE(seriesInfluenced("geometry", {"lighting"}));
+    EXPECT_TRUE(seriesInfluenced(PassTimer::kFrameSeries, {"lighting"}));
+}
+
+// The verdict from synthetic samples: ssao 70 -> 114 ms is flagged at the
+// adjusted level; bloom, which an SSAO change cannot reach, is shown but not
+// flagged though its frames came out 49% slower (a busy CPU); tonemap,
+// influenced but unchanged within its noise, is not flagged either.
+TEST(ChangeCost, TheVerdictFlagsTheAffectedPassAndNotAnUnreachableOneWithNoise) {
+    SeriesSamples before, after;
+    before["geometry"] = noisy(20.0, 1.0, 24, 0);
+    after["geometry"] = noisy(20.0, 1.0, 24, 3);
+    before["ssao"] = noisy(70.0, 2.0, 24, 1);
+    after["ssao"] = noisy(114.0, 2.0, 24, 4);
+    before["bloom"] = noisy(10.0, 0.5, 24, 2);
+    after["bloom"] = noisy(14.9, 0.5, 24, 5);  // +49%, but bloom reads nothing ssao writes here
+    before["tonemap"] = noisy(2.0, 0.2, 24, 6);
+    after["tonemap"] = noisy(2.0, 0.2, 24, 7);
+    before["frame"] = noisy(102.0, 3.0, 24, 8);
+    after["frame"] = noisy(150.9, 3.0, 24, 9);
+    after["ssao_blur"] = std::vector<double>(24, 3.0);  // switched on by the change
+    const std::set<std::string> influenced = {"ssao", "ssao_blur", "lighting", "tonemap"};
+    const ChangeVerdict v = judgeChange(before, after, influenced, {"geometry", "ssao", "ssao_blur", "bloom", "tonemap", "frame"});
+    ASSERT_EQ(v.passes.size(), 6u);
+    EXPECT_EQ(v.passes[0].pass, "geometry");
+    EXPECT_EQ(v.passes[5].pass, "frame");
+    // ssao, tonemap and frame are compared (ssao_blur has no frames before).
+    EXPECT_EQ(v.compared, 3);
+    EXPECT_NEAR(v.perPassConfidence, 1.0 - 0.05 / 3.0, 1e-12);
+    EXPECT_EQ(v.notInfluenced, 2);
+    const PassVerdict& ssao = *v.find("ssao");
+    EXPECT_TRUE(ssao.influenced);
+    EXPECT_TRUE(ssao.significant);
+    EXPECT_NEAR(ssao.beforeMs, 70.0, 1e-9);
+    EXPECT_NEAR(ssao.afterMs, 114.0, 1e-9);
+    EXPECT_EQ(ssao.beforeFrames, 24);
     EXPECT_GT(ssao.ratio.low, 1.5);
-    EXPECT_EQ(ssao.describe().substr(0, 7), "+44.0 m") << ssao.describe();
-    EXPECT_NE(ssao.describe().find("95% CI"), std::string::npos);
-    // Unchanged within its noise: not significant.
-    EXPECT_FALSE(find("tonemap").significant()) << find("tonemap").describe();
-    // A pass that runs only since the change.
-    EXPECT_EQ(find("bloom").beforeFrames, 0);
-    EXPECT_EQ(find("bloom").describe(), "new: 5.000 ms");
+    EXPECT_EQ(ssao.describe().substr(0, 9), "+44.0 ms ") << ssao.describe();
+    EXPECT_NE(ssao.describe().find("98.3% CI"), std::string::npos) << ssao.describe();
+    const PassVerdict& bloom = *v.find("bloom");
+    EXPECT_FALSE(bloom.influenced);
+    EXPECT_FALSE(bloom.significant) << "a pass the change cannot reach was flagged";
+    EXPECT_GT(bloom.ratio.low, 1.3) << "its own interval is still reported";
+    EXPECT_NE(bloom.describe().find("95% CI"), std::string::npos);
+    EXPECT_FALSE(v.find("geometry")->significant);
+    EXPECT_FALSE(v.find("tonemap")->significant) << v.find("tonemap")->describe();
+    EXPECT_TRUE(v.find("frame")->significant);
+    EXPECT_EQ(v.find("ssao_blur")->describe(), "new: 3.000 ms");
+    EXPECT_FALSE(v.find("ssao_blur")->significant);
+    EXPECT_NE(v.method().find("Bonferroni over 3"), std::string::npos) << v.method();
+}
+
+// With 20 unchanged, noisy passes compared, the adjusted intervals flag none
+// of them; at 95% each, one in twenty would be flagged by chance.
+TEST(ChangeCost, ManyUnchangedPassesAreNotFlaggedByChance) {
+    SeriesSamples before, after;
+    std::set<std::string> influenced;
+    for (int p = 0; p < 20; ++p) {
+        const std::string n = "pass" + std::to_string(p);
+        // Each side its own irregular noise (a different order of the same spread plus a little drift).
+        std::vector<double> b, a;
+        for (int i = 0; i < 16; ++i) {
+            b.push_back(10.0 + static_cast<double>((i * 7 + p * 3) % 13 - 6) * 0.25);
+            a.push_back(10.0 + static_cast<double>((i * 5 + p * 11) % 13 - 6) * 0.25 + 0.05 * ((p % 3) - 1));
+        }
+        before[n] = b;
+        after[n] = a;
+        influenced.insert(n);
+    }
+    const ChangeVerdict v = judgeChange(before, after, influenced);
+    EXPECT_EQ(v.compared, 20);
+    for (const auto& p : v.passes) EXPECT_FALSE(p.significant) << p.pass << ": " << p.describe();
+}
+
+// The measurement's schedule: before and after in alternating turns, the
+// first frame of each turn left out, until each side has its frames; the
+// knobs follow the side and go back to the after values at the end.
+TEST(ChangeCost, AMeasurementInterleavesTheSidesAndEndsOnTheAfterValues) {
+    const auto s = ChangeMeasurement::makeSchedule({5, 2, 1});
+    std::string text;
+    for (const auto& slot : s) text += slot.counted ? (slot.after ? 'A' : 'B') : (slot.after ? 'a' : 'b');
+    EXPECT_EQ(text, "bBBaAAbBBaAAbBaA");
+    KnobRegistry knobs = ssaoKnobs();
+    const int samples = *knobs.find("ssao.samples");
+    knobs.set(samples, 64);
+    KnobChange change{{samples}, {16.0}, {64.0}, "ssao.samples 16 -> 64"};
+    ChangeMeasurement m;
+    m.start(change, {3, 1, 1}, {"ssao"});
+    PassTimer timer;
+    std::uint64_t frame = 100;
+    std::vector<double> seen;
+    while (m.prepareFrame(knobs)) {
+        const double v = knobs.value(samples);
+        seen.push_back(v);
+        timer.addSample("ssao", {frame, static_cast<float>(v), 0.0f});
+        timer.addSample("geometry", {frame, 5.0f, 0.0f});
+        timer.addSample(PassTimer::kFrameSeries, {frame, static_cast<float>(v) + 5.0f, 0.0f});
+        m.frameRendered(frame++);
+    }
+    EXPECT_EQ(seen, (std::vector<double>{16, 16, 64, 64, 16, 16, 64, 64, 16, 16, 64, 64}));
+    EXPECT_EQ(m.state(), ChangeMeasurement::State::Waiting);
+    ASSERT_TRUE(m.collect(timer, knobs, {"geometry", "ssao"}));
+    EXPECT_EQ(m.state(), ChangeMeasurement::State::Done);
+    EXPECT_EQ(knobs.value(samples), 64.0);
+    const PassVerdict* ssao = m.verdict().find("ssao");
+    ASSERT_NE(ssao, nullptr);
+    EXPECT_EQ(ssao->beforeFrames, 3);
+    EXPECT_EQ(ssao->afterFrames, 3);
+    EXPECT_EQ(ssao->beforeMs, 16.0);
+    EXPECT_EQ(ssao->afterMs, 64.0);
+    EXPECT_FALSE(m.verdict().find("geometry")->influenced);
+    // A knob edited by hand mid-way cancels, and the measured knob goes back to its after value.
+    m.start(change, {3, 1, 1}, {"ssao"});
+    ASSERT_TRUE(m.prepareFrame(knobs));
+    EXPECT_EQ(knobs.value(samples), 16.0);
+    m.frameRendered(frame++);
+    knobs.set(*knobs.find("bloom.enabled"), 0.0);
+    EXPECT_FALSE(m.prepareFrame(knobs));
+    EXPECT_EQ(m.state(), ChangeMeasurement::State::Cancelled);
+    EXPECT_EQ(knobs.value(samples), 64.0);
+}
+
+// The pipeline learns which pass reads each knob while it makes and connects
+// the passes (no GL): the declaring pass, and passes that look a knob up.
+TEST(ChangeCost, ThePipelineKnowsWhichPassesReadEachKnob) {
+    KnobRegistry knobs;
+    Pipeline pipeline(knobs);
+    auto readers = [&](const std::string& knob) { return pipeline.knobReaders(*knobs.find(knob)); };
+    EXPECT_EQ(readers("ssao.samples"), std::set<std::string>{"ssao"});
+    // Declared by the light table pass, though its group is "lighting".
+    EXPECT_EQ(readers("lighting.threshold"), std::set<std::string>{"lights"});
+    // Looked up by other passes: bloom (upstream of tonemap) reads tonemap.nan_guard.
+    EXPECT_TRUE(readers("tonemap.nan_guard").count("bloom"));
+    EXPECT_TRUE(readers("tonemap.nan_guard").count("tonemap"));
+    EXPECT_TRUE(readers("lighting.directional_in_gbuffer").count("geometry"));
+    EXPECT_TRUE(readers("lighting.directional_in_gbuffer").count("lighting"));
+    EXPECT_TRUE(readers("depth.mode").count("*")) << "the camera every pass uses";
+    // With the pass edges: an SSAO change cannot reach the geometry or the light table.
+    const std::set<std::string> ssao = passesReachedBy(pipeline, {*knobs.find("ssao.samples")});
+    EXPECT_TRUE(ssao.count("ssao") && ssao.count("ssao_blur") && ssao.count("lighting") && ssao.count("tonemap"));
+    EXPECT_FALSE(ssao.count("geometry") || ssao.count("lights") || ssao.count("shadows") || ssao.count("skybox"));
+    EXPECT_EQ(passesReachedBy(pipeline, {*knobs.find("depth.mode")}).size(), pipeline.passList().size());
+    // lighting.threshold reaches the light table and what follows it, not the G-buffer or SSAO.
+    const std::set<std::string> threshold = passesReachedBy(pipeline, {*knobs.find("lighting.threshold")});
+    EXPECT_TRUE(threshold.count("lights") && threshold.count("shadows") && threshold.count("lighting"));
+    EXPECT_FALSE(threshold.count("geometry") || threshold.count("ssao"));
 }
