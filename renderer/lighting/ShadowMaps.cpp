@@ -227,7 +227,8 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             hi2 = lo2 + extent + texel;  // one texel of slack for the snap
             lo = glm::vec3(lo2, lo.z);
             hi = glm::vec3(hi2, hi.z);
-            const float pad = sceneRadius * 1e-4f;  // 1e-3 for a scene 20 across, as before
+            // 1e-3 as before for scenes 20 or more across, in proportion below.
+            const float pad = std::min(1e-3f, sceneRadius * 1e-4f);
             proj = dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - pad, -lo.z + pad);
             out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
         } else {
