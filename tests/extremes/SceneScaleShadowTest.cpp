@@ -28,7 +28,7 @@ std::string vec(double x, double y, double z, double k) { return "[" + num(x * k
 // A floor, a box and a sphere on it, lit by `light` (its positions scaled by k),
 // seen by a camera scaled by k. No attenuation but the constant term, so the
 // light's radiance does not depend on the scale.
-Scene shadowScene(double k, const std::string& light) {
+Scene shadowScene(double k, const std::string& light, bool clipPlanes = true) {
     std::string l = light;
     for (std::size_t at; (at = l.find("@")) != std::string::npos;) {
         const std::size_t end = l.find(']', at);
@@ -42,8 +42,8 @@ Scene shadowScene(double k, const std::string& light) {
         {"shape": "sphere", "radius": )" + num(0.8 * k) + R"(, "pos": )" + vec(2.5, 0.8, 1.5, k) + R"(}],
       "ambient": [0, 0, 0],
       "lights": [)" + l + R"(],
-      "camera": {"pos": )" + vec(4, 5, 6, k) + R"(, "look-at": )" + vec(0, 0, 0, k) + R"(, "near": )" + num(0.1 * k) +
-                             R"(, "far": )" + num(50 * k) + R"(}})";
+      "camera": {"pos": )" + vec(4, 5, 6, k) + R"(, "look-at": )" + vec(0, 0, 0, k) + (clipPlanes ? R"(, "near": )" + num(0.1 * k) +
+                             R"(, "far": )" + num(50 * k) : std::string()) + R"(}})";
     return parseSceneJson(text, "scaled.json");
 }
 
@@ -105,5 +105,33 @@ TEST(SceneScaleShadows, TheSameScaledSceneHasTheSameShadowsAtEveryScale) {
             }
             EXPECT_LT(diff, 0.01 * sum) << name << " at scale " << k;
         }
+    }
+}
+
+// Without near and far the camera's planes come from the scene's bounds, in
+// proportion at any scale (a 1e-3 floor on the radius put the near plane of
+// a scene 1e-8 across beyond the whole scene: nothing was drawn).
+TEST(SceneScaleShadows, FittedClipPlanesFollowTheScene) {
+    const std::string light = R"({"type": "directional", "direction": [-1, -2, -0.5], "intensity": [2, 2, 2], "shadow": true})";
+    const Scene unit = shadowScene(1.0, light, false);
+    for (double k : {1e-8, 1e-4, 1e4}) {
+        const Scene s = shadowScene(k, light, false);
+        EXPECT_NEAR(s.camera.nearPlane / k, unit.camera.nearPlane, 1e-4 * unit.camera.nearPlane) << k;
+        EXPECT_NEAR(s.camera.farPlane / k, unit.camera.farPlane, 1e-4 * unit.camera.farPlane) << k;
+        auto render = [&](const Scene& scene) {
+            auto session = test::makeSession(160, 90);
+            session->setScene(scene);
+            session->knobs().setFromString("ssao.enabled", "false");
+            session->render({{"lbuffer"}});
+            return session->readRaw("lbuffer");
+        };
+        const FloatImage a = render(unit), b = render(s);
+        double diff = 0, sum = 0;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+            diff += std::fabs(a.pixels[i] - b.pixels[i]);
+            sum += a.pixels[i];
+        }
+        EXPECT_GT(sum, 0.0);
+        EXPECT_LT(diff, 0.01 * sum) << k;
     }
 }
