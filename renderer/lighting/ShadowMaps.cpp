@@ -114,7 +114,10 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
     // draw origin), so a scene far from the world origin keeps its shadows.
     const glm::dmat4 viewToWorld = glm::inverse(ctx.camera.worldToView());
     const Bounds& bounds = ctx.gpu.bounds();
-    const float sceneRadius = std::max(bounds.radius(), 1e-3f);
+    // Every length below is relative to the scene's size, as the camera rule
+    // is: absolute floors (1e-3 units) sized a directional map of a scene
+    // 1e-8 across 100 000 times too large, and its shadows were gone.
+    const float sceneRadius = bounds.radius() > 0.0f ? bounds.radius() : 1.0f;
     // The depth range: out to the light's radius, but no further than the
     // farthest corner of the scene (a bright light's radius can be far larger
     // than the scene, and the near plane scales with the far one). No
@@ -176,7 +179,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
                     farC = std::min(farC, static_cast<float>(zMax));
                     nearC = std::max(nearC, static_cast<float>(zMin));
                 }
-                farC = std::max(farC, nearC * 1.001f + 1e-6f);
+                farC = std::max(farC, nearC * 1.001f + sceneRadius * 1e-6f);
             }
             const glm::dvec3 dir = glm::normalize(glm::dvec3(light.direction));
             const glm::dvec3 center = bounds.empty() ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
@@ -208,7 +211,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
                 const float sceneExtent = std::max(lb.max.x - lb.min.x, lb.max.y - lb.min.y);
                 if (sceneExtent <= extent) {
                     // The whole scene, in a square box centred on it.
-                    extent = std::max(sceneExtent, 1e-3f);
+                    extent = std::max(sceneExtent, sceneRadius * 1e-3f);
                     const glm::vec2 c = 0.5f * (glm::vec2(lb.min) + glm::vec2(lb.max));
                     lo2 = c - 0.5f * extent;
                     hi2 = c + 0.5f * extent;
@@ -224,7 +227,9 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
             hi2 = lo2 + extent + texel;  // one texel of slack for the snap
             lo = glm::vec3(lo2, lo.z);
             hi = glm::vec3(hi2, hi.z);
-            proj = dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - 1e-3f, -lo.z + 1e-3f);
+            // 1e-3 as before for scenes 20 or more across, in proportion below.
+            const float pad = std::min(1e-3f, sceneRadius * 1e-4f);
+            proj = dc.orthographic(lo.x, hi.x, lo.y, hi.y, -hi.z - pad, -lo.z + pad);
             out.range.z = biasTexels * std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<float>(size);
         } else {
             const float fov = 2.0f * light.cutoffDegrees + 2.0f;  // <= 2 * kWideSpotDegrees + 2

@@ -32,7 +32,8 @@ struct Bounds {
         }
     }
     glm::vec3 center() const { return (min + max) * 0.5f; }
-    float radius() const { return empty() ? 0.0f : glm::length(max - min) * 0.5f; }
+    // In double: the squares of a box 1e30 across overflow a float, of one 1e-25 across underflow it.
+    float radius() const { return empty() ? 0.0f : static_cast<float>(glm::length(glm::dvec3(max) - glm::dvec3(min)) * 0.5); }
     Bounds transformed(const glm::mat4& m) const;
 };
 

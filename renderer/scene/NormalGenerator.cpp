@@ -3,22 +3,22 @@
 #include <cmath>
 
 #include "renderer/scene/Mesh.h"
+#include "renderer/scene/UnitVector.h"
 
 namespace dw {
 
 namespace {
 
-glm::vec3 faceNormalTimesTwoArea(const Mesh& m, size_t t) {
-    const glm::vec3 p0 = m.vertices[m.indices[3 * t]].position;
-    const glm::vec3 p1 = m.vertices[m.indices[3 * t + 1]].position;
-    const glm::vec3 p2 = m.vertices[m.indices[3 * t + 2]].position;
+// In double: a triangle 1e-20 across has a cross product below the smallest
+// float, one 1e30 across beyond the largest (UnitVector.h).
+glm::dvec3 faceNormalTimesTwoArea(const Mesh& m, size_t t) {
+    const glm::dvec3 p0 = m.vertices[m.indices[3 * t]].position;
+    const glm::dvec3 p1 = m.vertices[m.indices[3 * t + 1]].position;
+    const glm::dvec3 p2 = m.vertices[m.indices[3 * t + 2]].position;
     return glm::cross(p1 - p0, p2 - p0);
 }
 
-glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
-    const float len = glm::length(v);
-    return len > 0.0f && std::isfinite(len) ? v / len : fallback;
-}
+glm::vec3 unitOr(const glm::dvec3& v, const glm::vec3& fallback) { return unitVector(v, fallback); }
 
 }  // namespace
 
@@ -44,12 +44,12 @@ std::size_t orientTrianglesToNormals(Mesh& mesh) {
     std::vector<size_t> against;
     size_t counted = 0;
     for (size_t t = 0; t < triangles; ++t) {
-        const glm::vec3 face = faceNormalTimesTwoArea(mesh, t);
-        if (!(glm::dot(face, face) > 0.0f)) continue;
+        const glm::dvec3 face = faceNormalTimesTwoArea(mesh, t);
+        if (!(glm::dot(face, face) > 0.0)) continue;
         ++counted;
-        glm::vec3 vertexNormals(0.0f);
-        for (int c = 0; c < 3; ++c) vertexNormals += mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]].normal;
-        if (glm::dot(face, vertexNormals) < 0.0f) against.push_back(t);
+        glm::dvec3 vertexNormals(0.0);
+        for (int c = 0; c < 3; ++c) vertexNormals += glm::dvec3(mesh.vertices[mesh.indices[3 * t + static_cast<size_t>(c)]].normal);
+        if (glm::dot(face, vertexNormals) < 0.0) against.push_back(t);
     }
     if (against.empty() || 2 * against.size() >= counted) return 0;
     for (size_t t : against) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
@@ -60,13 +60,13 @@ std::size_t splitCornersFacingAway(Mesh& mesh) {
     std::size_t split = 0;
     const size_t triangles = mesh.indices.size() / 3;
     for (size_t t = 0; t < triangles; ++t) {
-        const glm::vec3 face = faceNormalTimesTwoArea(mesh, t);
-        if (!(glm::dot(face, face) > 0.0f)) continue;
+        const glm::dvec3 face = faceNormalTimesTwoArea(mesh, t);
+        if (!(glm::dot(face, face) > 0.0)) continue;
         for (int c = 0; c < 3; ++c) {
             std::uint32_t& index = mesh.indices[3 * t + static_cast<size_t>(c)];
-            if (glm::dot(face, mesh.vertices[index].normal) >= 0.0f) continue;
+            if (glm::dot(face, glm::dvec3(mesh.vertices[index].normal)) >= 0.0) continue;
             Vertex v = mesh.vertices[index];
-            v.normal = glm::normalize(face);
+            v.normal = unitOr(face, v.normal);
             index = static_cast<std::uint32_t>(mesh.vertices.size());
             mesh.vertices.push_back(v);
             ++split;
@@ -76,9 +76,9 @@ std::size_t splitCornersFacingAway(Mesh& mesh) {
 }
 
 std::size_t repairNormals(Mesh& mesh, const std::vector<bool>& repair) {
-    std::vector<glm::vec3> sum(mesh.vertices.size(), glm::vec3(0.0f));
+    std::vector<glm::dvec3> sum(mesh.vertices.size(), glm::dvec3(0.0));
     for (size_t t = 0; t < mesh.indices.size() / 3; ++t) {
-        const glm::vec3 fn = faceNormalTimesTwoArea(mesh, t);
+        const glm::dvec3 fn = faceNormalTimesTwoArea(mesh, t);
         for (int c = 0; c < 3; ++c) {
             const std::uint32_t v = mesh.indices[3 * t + static_cast<size_t>(c)];
             if (repair[v]) sum[v] += fn;

@@ -3,6 +3,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "renderer/scene/TangentGenerator.h"
+#include "renderer/scene/UnitVector.h"
 
 namespace dw::shapes {
 
@@ -10,11 +11,13 @@ namespace {
 
 void addQuad(Mesh& m, const glm::vec3& origin, const glm::vec3& u, const glm::vec3& v,
              const glm::vec2& uvSize) {
-    const glm::vec3 n = glm::normalize(glm::cross(u, v));
+    // In double: any size a float holds gives a unit normal (UnitVector.h).
+    const glm::vec3 n = unitVector(glm::cross(glm::dvec3(u), glm::dvec3(v)), glm::vec3(0, 1, 0));
+    const glm::vec3 t = unitVector(glm::dvec3(u), glm::vec3(1, 0, 0));
     const auto base = static_cast<uint32_t>(m.vertices.size());
     const glm::vec3 corners[4] = {origin, origin + u, origin + u + v, origin + v};
     const glm::vec2 uvs[4] = {{0, 0}, {uvSize.x, 0}, {uvSize.x, uvSize.y}, {0, uvSize.y}};
-    for (int i = 0; i < 4; ++i) m.vertices.push_back({corners[i], n, glm::vec4(glm::normalize(u), 1.0f), uvs[i]});
+    for (int i = 0; i < 4; ++i) m.vertices.push_back({corners[i], n, glm::vec4(t, 1.0f), uvs[i]});
     for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
 }
 
@@ -108,12 +111,13 @@ Mesh cylinder(float radius, float height, int segments) {
 Mesh cone(float radius, float height, int segments) {
     Mesh m;
     const float twoPi = 2.0f * glm::pi<float>();
-    const float slope = radius / height;
     for (int i = 0; i <= segments; ++i) {
         const float u = static_cast<float>(i) / segments;
         const float a = u * twoPi;
         const glm::vec3 radial(std::cos(a), 0.0f, -std::sin(a));
-        const glm::vec3 n = glm::normalize(radial + glm::vec3(0, slope, 0));
+        // radial + (0, radius / height, 0), scaled by height: radius / height
+        // is infinite for a cone 1e-40 high.
+        const glm::vec3 n = unitVector(glm::dvec3(radial) * double(height) + glm::dvec3(0, radius, 0), glm::vec3(0, 1, 0));
         m.vertices.push_back({radial * radius, n, {}, {u, 0.0f}});
         m.vertices.push_back({{0, height, 0}, n, {}, {u, 1.0f}});
     }

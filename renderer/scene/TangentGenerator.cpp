@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "renderer/scene/Mesh.h"
+#include "renderer/scene/UnitVector.h"
 
 namespace dw {
 
@@ -29,11 +30,12 @@ CornerKey keyOf(const Vertex& v, int orientation) {
     return k;
 }
 
+// In double, as the face tangents: edges 1e-20 long have squares below a float.
 float cornerAngle(const glm::vec3& at, const glm::vec3& a, const glm::vec3& b) {
-    const glm::vec3 e1 = a - at, e2 = b - at;
-    const float l1 = glm::length(e1), l2 = glm::length(e2);
-    if (l1 <= 0.0f || l2 <= 0.0f) return 0.0f;
-    return std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
+    const glm::dvec3 e1 = glm::dvec3(a) - glm::dvec3(at), e2 = glm::dvec3(b) - glm::dvec3(at);
+    const double l1 = glm::length(e1), l2 = glm::length(e2);
+    if (!(l1 > 0.0) || !(l2 > 0.0)) return 0.0f;
+    return static_cast<float>(std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0, 1.0)));
 }
 
 glm::vec3 anyPerpendicular(const glm::vec3& n) {
@@ -54,12 +56,16 @@ void generateTangents(Mesh& mesh, UvConvention convention) {
         const Vertex& v0 = mesh.vertices[mesh.indices[3 * t]];
         const Vertex& v1 = mesh.vertices[mesh.indices[3 * t + 1]];
         const Vertex& v2 = mesh.vertices[mesh.indices[3 * t + 2]];
-        const glm::vec3 e1 = v1.position - v0.position, e2 = v2.position - v0.position;
-        const glm::vec2 d1 = v1.uv - v0.uv, d2 = v2.uv - v0.uv;
-        const float area = d1.x * d2.y - d2.x * d1.y;
-        if (!(std::fabs(area) > 1e-20f) || !std::isfinite(area)) continue;
-        orientation[t] = area > 0.0f ? 1 : -1;
-        faceTangent[t] = (e1 * d2.y - e2 * d1.y) / area;
+        // In double, and degenerate relative to the UV edges' lengths, so a
+        // box 1e-12 across (UVs 1e-12 apart, UV area 1e-24) is shaded as one
+        // 1 across; only the direction is kept.
+        const glm::dvec3 e1 = glm::dvec3(v1.position) - glm::dvec3(v0.position);
+        const glm::dvec3 e2 = glm::dvec3(v2.position) - glm::dvec3(v0.position);
+        const glm::dvec2 d1 = glm::dvec2(v1.uv) - glm::dvec2(v0.uv), d2 = glm::dvec2(v2.uv) - glm::dvec2(v0.uv);
+        const double area = d1.x * d2.y - d2.x * d1.y;
+        if (!std::isfinite(area) || !(std::fabs(area) > 1e-12 * glm::length(d1) * glm::length(d2))) continue;
+        orientation[t] = area > 0.0 ? 1 : -1;
+        faceTangent[t] = unitVector((e1 * d2.y - e2 * d1.y) / area, glm::vec3(0.0f));
     }
 
     // Group the corners; degenerate-UV triangles join a group of either

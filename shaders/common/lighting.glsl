@@ -71,7 +71,9 @@ vec3 shadeLight(Light light, vec3 P, vec3 N, vec3 diffuse, vec3 specular, float 
     if (int(light.attenuation.w + 0.5) != LIGHT_DIRECTIONAL) {
         vec3 toLight = light.positionRadius.xyz - P;
         float d = length(toLight);
-        L = toLight / max(d, 1e-6);
+        // No absolute floor but 0 (at the light itself): 1e-6 made L short of
+        // unit length, and a scene 1e-8 across dark, for every light within 1e-6.
+        L = toLight / max(d, 1e-30);
         scale = boundedLightScale(light, L, d, windowed, windowExponent);
     }
     return blinnPhong(light.intensityExponent.rgb, scale, L, normalize(-P), N, diffuse, specular, exponent);

@@ -38,7 +38,7 @@ void main() {
             float d = length(toLight);
             if (pr.w > 0.0 && d > pr.w) continue;
             Light light = candidateLight(int(i));
-            vec3 L = toLight / max(d, 1e-6);
+            vec3 L = toLight / max(d, 1e-30);
             if (!spotReaches(light, L)) continue;
             sum += lightRadianceAt(light, s, L, d, V);
             ++shaded;

@@ -59,7 +59,7 @@ vec3 lightRadiance(Light light, Surface s) {
 #ifdef UNSHADOWED
 // lightRadiance of a bounded light for a caller that has already computed,
 // as shadeLight does, toLight = position - P, d = length(toLight),
-// L = toLight / max(d, 1e-6) and V = normalize(-P) (the grid strategies
+// L = toLight / max(d, 1e-30) and V = normalize(-P) (the grid strategies
 // compute d for their radius test and V once per pixel): the same
 // operations, so the same value.
 vec3 lightRadianceAt(Light light, Surface s, vec3 L, float d, vec3 V) {

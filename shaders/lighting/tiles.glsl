@@ -46,7 +46,7 @@ vec4 candidateCone(int i) { return texelFetch(uCandidateData, 4 * i + 1); }
 bool candidateReaches(vec4 pr, vec4 cone, vec3 P, float slack, out float d, out vec3 L) {
     vec3 toLight = pr.xyz - P;
     d = length(toLight);
-    L = toLight / max(d, 1e-6);
+    L = toLight / max(d, 1e-30);
     return !(pr.w > 0.0 && d > pr.w * (1.0 + slack)) && dot(-L, cone.xyz) >= cone.w - slack;
 }
 

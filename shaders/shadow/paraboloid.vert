@@ -13,7 +13,7 @@ void main() {
     v.z *= uParams.z;
     vLightOffset = v;
     float len = length(v);
-    vec3 n = v / max(len, 1e-6);
+    vec3 n = len > 0.0 ? v / len : vec3(0.0, 0.0, 1.0);  // no absolute floor: a scene 1e-8 across is 1e-8 from its light
     gl_ClipDistance[0] = n.z;  // drop what lies behind this hemisphere
     // Linear in distance, in [0, 1] clip depth (reversed: 1 at near, 0 at far).
     float depth = (len - uParams.x) / (uParams.y - uParams.x);
