@@ -46,19 +46,11 @@ public:
     std::string precheck(const std::string& bytes) {
         const bool glb = isBinary(bytes);
         const std::string_view text = glb ? glbJsonChunk(bytes, path_, &invalid_) : std::string_view(bytes);
-        // Nesting depth, numbers beyond a float, by JSON path; integer
-        // properties beyond a float are named as integers (GltfSchema.h).
+        // Nesting depth, numbers beyond a float by JSON path (integer
+        // properties beyond a float named as integers, GltfSchema.h), then the parse.
         JsonGuardOptions guard;
         guard.integerProblem = gltfIntegerProblem;
-        checkJsonText(text, path_, guard);
-        nlohmann::json j;
-        try {
-            j = nlohmann::json::parse(text);
-        } catch (const nlohmann::json::parse_error& e) {
-            fail("malformed JSON at " + textPosition(text, e.byte));
-        } catch (const nlohmann::json::exception& e) {
-            fail("unreadable JSON: " + jsonErrorText(e));
-        }
+        nlohmann::json j = parseJson(text, path_, guard);
         if (!j.is_object()) fail("not a glTF file: the top level is not a JSON object");
         GltfContainer container;
         container.glb = glb;
