@@ -192,7 +192,6 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
         ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.05f, 0.05f, 0.92f));
         const float width = std::max(avail.x - 16, 50.0f);
-        const ImGuiStyle& style = ImGui::GetStyle();
         const float textHeight = ImGui::CalcTextSize(m->text.c_str(), nullptr, false, width - 2 * style.WindowPadding.x).y;
         const float height = std::min(textHeight + ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4,
                                       std::max(avail.y - 16, 40.0f));
