@@ -67,47 +67,44 @@
 #define DW_PARAM_CPP_DESCRIBE_ARRAY(type, name, count) \
     ::dw::gpu::ParamField{#name, #type, offsetof(Self, name), static_cast<int>(count)},
 
-// Member function bodies see the complete struct, so offsetof works there;
-// checkStd140's static_asserts are evaluated when the struct is compiled.
-#define DW_PARAM_BLOCK_AT(Block, instance, bindingPoint, FIELDS)                          \
-    namespace dw::gpu {                                                                   \
-    struct Block {                                                                        \
-        FIELDS(DW_PARAM_CPP_FIELD, DW_PARAM_CPP_ARRAY)                                    \
-        static constexpr const char* kBlockName = #Block;                                 \
-        static constexpr const char* kInstanceName = #instance;                           \
-        static constexpr unsigned kBinding = bindingPoint;                                \
-        static std::vector<ParamField> fields() {                                         \
-            using Self = Block;                                                           \
-            return {FIELDS(DW_PARAM_CPP_DESCRIBE_FIELD, DW_PARAM_CPP_DESCRIBE_ARRAY)};    \
-        }                                                                                 \
-        static constexpr void checkStd140() {                                             \
-            using Self = Block;                                                           \
-            FIELDS(DW_PARAM_CPP_CHECK_FIELD, DW_PARAM_CPP_CHECK_ARRAY)                    \
-        }                                                                                 \
-    };                                                                                    \
-    static_assert(std::is_standard_layout_v<Block>, #Block " must be plain data");        \
-    static_assert(sizeof(Block) % 16 == 0, #Block ": pad the block to a multiple of 16"); \
+// The C++ struct's fields, fields() and the std140 checks, for a block or a
+// row. Member function bodies see the complete struct, so offsetof works
+// there; checkStd140's static_asserts are evaluated when the struct is compiled.
+#define DW_PARAM_CPP_MEMBERS(Name, FIELDS)                                             \
+    FIELDS(DW_PARAM_CPP_FIELD, DW_PARAM_CPP_ARRAY)                                     \
+    static std::vector<ParamField> fields() {                                          \
+        using Self = Name;                                                             \
+        return {FIELDS(DW_PARAM_CPP_DESCRIBE_FIELD, DW_PARAM_CPP_DESCRIBE_ARRAY)};     \
+    }                                                                                  \
+    static constexpr void checkStd140() {                                              \
+        using Self = Name;                                                             \
+        FIELDS(DW_PARAM_CPP_CHECK_FIELD, DW_PARAM_CPP_CHECK_ARRAY)                     \
+    }
+#define DW_PARAM_CPP_PLAIN(Name)                                                       \
+    static_assert(std::is_standard_layout_v<Name>, #Name " must be plain data");       \
+    static_assert(sizeof(Name) % 16 == 0, #Name ": pad it to a multiple of 16 bytes");
+
+#define DW_PARAM_BLOCK_AT(Block, instance, bindingPoint, FIELDS) \
+    namespace dw::gpu {                                          \
+    struct Block {                                               \
+        DW_PARAM_CPP_MEMBERS(Block, FIELDS)                      \
+        static constexpr const char* kBlockName = #Block;        \
+        static constexpr const char* kInstanceName = #instance;  \
+        static constexpr unsigned kBinding = bindingPoint;       \
+    };                                                           \
+    DW_PARAM_CPP_PLAIN(Block)                                    \
     }
 #define DW_PARAM_BLOCK(Block, instance, FIELDS) DW_PARAM_BLOCK_AT(Block, instance, PASS_UBO, FIELDS)
 
 // A struct that is a row of a std430 storage buffer (the light table): vec4
 // and mat4 fields only, where std430 and std140 lay out alike, so the same
 // checks hold. GLSL gets `struct Name { ... };` for its buffer's array.
-#define DW_PARAM_STRUCT(Name, FIELDS)                                                     \
-    namespace dw::gpu {                                                                   \
-    struct Name {                                                                         \
-        FIELDS(DW_PARAM_CPP_FIELD, DW_PARAM_CPP_ARRAY)                                    \
-        static std::vector<ParamField> fields() {                                         \
-            using Self = Name;                                                            \
-            return {FIELDS(DW_PARAM_CPP_DESCRIBE_FIELD, DW_PARAM_CPP_DESCRIBE_ARRAY)};    \
-        }                                                                                 \
-        static constexpr void checkStd140() {                                             \
-            using Self = Name;                                                            \
-            FIELDS(DW_PARAM_CPP_CHECK_FIELD, DW_PARAM_CPP_CHECK_ARRAY)                    \
-        }                                                                                 \
-    };                                                                                    \
-    static_assert(std::is_standard_layout_v<Name>, #Name " must be plain data");          \
-    static_assert(sizeof(Name) % 16 == 0, #Name ": pad the row to a multiple of 16");     \
+#define DW_PARAM_STRUCT(Name, FIELDS)       \
+    namespace dw::gpu {                     \
+    struct Name {                           \
+        DW_PARAM_CPP_MEMBERS(Name, FIELDS)  \
+    };                                      \
+    DW_PARAM_CPP_PLAIN(Name)                \
     }
 
 #define DW_PARAM_SIZE(Block, bytes) \
