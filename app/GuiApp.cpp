@@ -238,7 +238,9 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"framebuffer", {fbw, fbh}},
                               {"menu_bar_height", ImGui::GetFrameHeight()},
                               {"panels", panels},
-                              {"probe", {{"pinned", state.probe.pinned}, {"pixel", {state.probe.pixel.x, state.probe.pixel.y}}}},
+                              {"probe", {{"pinned", state.probe.pinned},
+                                         {"pixel", {state.probe.pixel.x, state.probe.pixel.y}},
+                                         {"shows_values", state.probe.result.inside}}},
                               {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
                               {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}},
                               {"render_size", {state.renderSize.x, state.renderSize.y}},
@@ -299,9 +301,13 @@ public:
         // Render only when something the images depend on changed, unless
         // timings are being captured (every frame then).
         const std::string signature = frameSignature(state);
-        const bool needed =
-            measuring || state.timingCapture || state.animator.running() || state.forceRender || signature != lastSignature_;
+        const bool changed = signature != lastSignature_;
+        const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed;
         state.forceRender = false;
+        // The probe's values describe the image they were read from: another
+        // image (a scene opened, the camera moved) with the probe neither
+        // hovered nor pinned leaves nothing to show, not the old pixel's values.
+        if (changed && !state.probe.hovering && !state.probe.pinned) state.probe = ui::ProbeState{};
         if (needed) {
             lastSignature_ = signature;
             renderImages(state);

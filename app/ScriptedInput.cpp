@@ -114,11 +114,16 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
             in.mouseX = x0;
             in.mouseY = y0;
             if (what == "click") {
-                in.leftDown = true;
+                // Over the point first, as a hand gets there: a widget that
+                // wants to have been hovered the frame before (ImGui's
+                // overlapping selectables) takes the press a frame later.
                 add(frame, in);
+                ScriptedFrameInput down;
+                down.leftDown = true;
+                add(frame + 1, down);
                 ScriptedFrameInput up;
                 up.leftDown = false;
-                add(frame + 1, up);
+                add(frame + 2, up);
                 continue;
             }
         } else if (what == "drag") {

@@ -5,7 +5,7 @@
 // window manager or xdotool. One action a line, '#' starts a comment:
 //
 //   <frame> move X Y              the mouse to window pixel (X, Y)
-//   <frame> click X Y             press the left button there, release a frame later
+//   <frame> click X Y             the mouse to (X, Y), press the left button a frame later, release the next
 //   <frame> drag X0 Y0 X1 Y1 [N]  press at (X0, Y0), move to (X1, Y1) over N frames (default 4), release
 //   <frame> wheel D               scroll D notches (positive: away from the user)
 //   <frame> key NAME              press and release a key: a-z, 0-9, F1-F12, Escape, Enter,

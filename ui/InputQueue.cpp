@@ -44,6 +44,14 @@ std::vector<std::pair<int, int>> InputQueue::feed(ImGuiIO& io) {
         const Event e = queue_.front();
         if (e.kind == Event::Button) {
             if (buttonChanged[e.code] || text || editingKey) break;
+            // A press away from where the pointer was last frame: the move
+            // first, the press next frame (widgets that overlap others take
+            // a press only where they were hovered the frame before).
+            if (e.down && e.pos.x > -FLT_MAX && (e.pos.x != lastPos_.x || e.pos.y != lastPos_.y)) {
+                io.MousePos = e.pos;
+                lastPos_ = e.pos;
+                break;
+            }
             buttonChanged[e.code] = anyButton = true;
             buttonsDown_[e.code] = e.down;
             if (e.pos.x > -FLT_MAX) io.MousePos = e.pos;
@@ -78,6 +86,7 @@ std::vector<std::pair<int, int>> InputQueue::feed(ImGuiIO& io) {
     io.KeyAlt = keyDown(GLFW_KEY_LEFT_ALT) || keyDown(GLFW_KEY_RIGHT_ALT);
     io.KeySuper = keyDown(GLFW_KEY_LEFT_SUPER) || keyDown(GLFW_KEY_RIGHT_SUPER);
     for (int b = 0; b < kButtons; ++b) io.MouseDown[b] = buttonsDown_[b];
+    lastPos_ = io.MousePos;
     return presses;
 }
 

@@ -10,6 +10,8 @@
 // input queue that "trickles" fast input over frames; this is that, for 1.86,
 // with the same rules:
 //   - a key or button that already changed this frame waits for the next one;
+//   - a press away from where the pointer was the frame before waits a frame
+//     with the pointer over its point (the move first, as 1.87 trickles it);
 //   - after a button changed, keys and text wait (a click that focuses a
 //     field lands before what is typed into it);
 //   - after text, a key that edits (Enter, Home, Ctrl+A, a modifier) waits,
@@ -62,6 +64,7 @@ private:
     std::deque<Event> queue_;
     std::vector<int> keysDown_;
     bool buttonsDown_[kButtons] = {};
+    ImVec2 lastPos_{-FLT_MAX, -FLT_MAX};  // the pointer handed to ImGui last frame
 };
 
 }  // namespace dw::ui

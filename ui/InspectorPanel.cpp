@@ -48,10 +48,17 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
                 ImGui::PushID(o.decl.name.c_str());
                 const bool selected = state.viewport.output == o.decl.name && state.viewport.mode == DisplayMode::Deferred;
                 ImGui::Indent(8.0f);
-                if (ImGui::Selectable(o.decl.name.c_str(), selected, ImGuiSelectableFlags_AllowItemOverlap)) {
+                // In a narrow column the part that tells outputs apart (".albedo",
+                // not "gbuffer" eight times); the whole name is the tooltip.
+                std::string label = o.decl.name;
+                if (const size_t dot = label.find('.');
+                    dot != std::string::npos && ImGui::CalcTextSize(label.c_str()).x > ImGui::GetContentRegionAvail().x)
+                    label = label.substr(dot);
+                if (ImGui::Selectable((label + "###" + o.decl.name).c_str(), selected, ImGuiSelectableFlags_AllowItemOverlap)) {
                     state.viewport.show(o.decl.name);
                     state.viewport.mode = DisplayMode::Deferred;
                 }
+                noteItem("inspector." + o.decl.name);
                 if (ImGui::IsItemHovered())
                     ImGui::SetTooltip("%s%s%s", o.decl.name.c_str(), o.decl.description.empty() ? "" : ": ", o.decl.description.c_str());
                 ImGui::Unindent(8.0f);

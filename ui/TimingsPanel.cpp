@@ -70,10 +70,15 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
         configSeen = state.configSince;
         sceneSource = session.scene().source;
         if (state.measure.active()) state.measure.cancel(knobs, "cancelled: the scene or the render size changed");
-        else state.measure = ChangeMeasurement();
-        change.reset();
-        watcher.reset(knobs);
-        return;
+        else if (newScene) state.measure = ChangeMeasurement();
+        // A measurement renders both sides of a change itself, so a new
+        // render size (the auto scale stepping) keeps the change and the
+        // value being typed; another scene's knobs start over.
+        if (newScene) {
+            change.reset();
+            watcher.reset(knobs);
+            return;
+        }
     }
     // While a measurement runs it sets the knobs itself.
     if (state.measure.active()) return;

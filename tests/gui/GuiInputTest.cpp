@@ -102,10 +102,15 @@ TEST(GuiInput, ABrokenSceneFileShowsWhyInTheBannerAndKeepsTheScene) {
     EXPECT_NE(empty["banner"].get<std::string>().find("type a file's path"), std::string::npos) << empty["banner"];
 }
 
-TEST(GuiInput, AFileDroppedOnTheWindowOpensAsTheScene) {
-    const nlohmann::json r = runEvents("drop", 8, "2 drop " + validScene() + "\n");
+TEST(GuiInput, AFileDroppedOnTheWindowOpensAsTheSceneAndTheProbeDropsTheOldScenesValues) {
+    // The probe read a pixel of the old scene, then the mouse left the viewport.
+    const nlohmann::json hovered = runEvents("drop-hover", 6, "2 move 500 250\n4 move 60 600\n");
+    ASSERT_FALSE(hovered.is_null());
+    EXPECT_TRUE(hovered["probe"]["shows_values"].get<bool>()) << "the probe read nothing to begin with";
+    const nlohmann::json r = runEvents("drop", 10, "2 move 500 250\n4 move 60 600\n6 drop " + validScene() + "\n");
     ASSERT_FALSE(r.is_null());
     EXPECT_EQ(r["scene"]["source"].get<std::string>(), validScene());
+    EXPECT_FALSE(r["probe"]["shows_values"].get<bool>()) << "the probe still shows the previous scene's pixel";
 }
 
 TEST(GuiInput, EnterInThePresetNameFieldSavesAndOneClickLoadsABuiltInPreset) {
@@ -196,6 +201,19 @@ exit $code
         EXPECT_TRUE(j["resolution"]["auto"].get<bool>());
         EXPECT_LT(j["resolution"]["scale"].get<float>(), 0.5f);
     }
+}
+
+TEST(GuiInput, OneQuickClickOnAnOutputInThePassInspectorShowsIt) {
+    const nlohmann::json where = runEvents("inspector-where", 2, "");
+    ASSERT_FALSE(where.is_null());
+    ASSERT_TRUE(where["items"].contains("inspector.gbuffer.normal")) << where["items"].dump();
+    const auto& r = where["items"]["inspector.gbuffer.normal"];
+    // Straight from elsewhere to the output and a press and release at once, as xdotool clicks.
+    const nlohmann::json shown = runEvents("inspector-click", 8,
+                                           "2 click " + std::to_string(r["x"].get<float>() + 20.0f) + " " +
+                                               std::to_string(r["y"].get<float>() + r["h"].get<float>() * 0.5f) + "\n");
+    ASSERT_FALSE(shown.is_null());
+    EXPECT_EQ(shown["viewport"]["output"].get<std::string>(), "gbuffer.normal");
 }
 
 TEST(GuiInput, TheViewerSavesTheShownBufferAtItsOwnResolutionAsExrAndPng) {

@@ -579,6 +579,21 @@ TEST(Gui, TimingsPanelMeasuresACommittedKnobChangeAndStartsOverOnAnotherScene) {
     EXPECT_EQ(report["cost"]["state"], "done");
     EXPECT_EQ(report["cost"]["what"], "ssao.samples 16 -> 64");
 
+    // A new render size (the auto scale stepping, say while a value is being
+    // typed): the change and its verdict stay, and the watcher keeps its
+    // baseline (it was re-based on the size change before, so a value half
+    // typed then became the "before" of the change).
+    state.configSince = state.report.frameIndex + 1;
+    state.report = session->render();
+    imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    ASSERT_TRUE(panel.change) << "a size change threw the change away";
+    EXPECT_EQ(panel.change->what, "ssao.samples 16 -> 64");
+    EXPECT_EQ(state.measure.state(), ChangeMeasurement::State::Done) << "a size change threw the verdict away";
+    session->knobs().setFromString("ssao.samples", "40");
+    frame(true);
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ssao.samples 64 -> 40");
+
     // Another scene: the history and the change start over, from its first frame.
     session->loadScene("default");
     state.report = session->render();

@@ -139,6 +139,10 @@ TEST(InputQueue, TextWaitsForTheClickBeforeItAndAKeyOfTheSameNameForTheNextFrame
     imgui.click(10, 10);
     imgui.type("ab");
     imgui.frame([] {});
+    // The pointer moves over the point first, the press a frame later.
+    EXPECT_FALSE(ImGui::GetIO().MouseDown[0]);
+    EXPECT_EQ(ImGui::GetIO().MousePos.x, 10.0f);
+    imgui.frame([] {});
     // The click alone: its press this frame, and nothing typed yet.
     EXPECT_TRUE(ImGui::GetIO().MouseDown[0]);
     EXPECT_TRUE(imgui.presses.empty());

@@ -132,8 +132,10 @@ TEST(ScriptedInput, ParsesActionsIntoFramesAndNamesTheLineOfABadOne) {
     EXPECT_FLOAT_EQ(*s.at(4).mouseX, 150.0f);
     EXPECT_FLOAT_EQ(*s.at(5).mouseY, 150.0f);
     EXPECT_FALSE(*s.at(6).leftDown);
-    EXPECT_TRUE(*s.at(9).leftDown);
-    EXPECT_FALSE(*s.at(10).leftDown);
+    EXPECT_FLOAT_EQ(*s.at(9).mouseX, 50.0f);
+    EXPECT_FALSE(s.at(9).leftDown.has_value()) << "a click is over its point a frame before the press";
+    EXPECT_TRUE(*s.at(10).leftDown);
+    EXPECT_FALSE(*s.at(11).leftDown);
     ASSERT_EQ(s.at(12).keys.size(), 1u);
     EXPECT_EQ(s.at(13).resize->first, 1024);
     EXPECT_EQ(s.lastFrame(), 13);
