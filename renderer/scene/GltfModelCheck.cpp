@@ -189,6 +189,14 @@ std::vector<std::string> GltfModelCheck::ignoredFeatures(bool ignoredUvSets) con
     for (const auto& m : model_.materials) blended += m.alphaMode == "BLEND" ? 1 : 0;
     if (blended > 0) parts.push_back("alpha mode BLEND on " + std::to_string(blended) + " material(s), drawn opaque");
     if (ignoredUvSets) parts.push_back("texture coordinate sets beyond TEXCOORD_1 (TEXCOORD_0 used)");
+    // KHR_lights_punctual's range (a distance where a light stops): the
+    // light volumes end where the 1/d^2 falloff drops under
+    // lighting.threshold, whatever the range says.
+    size_t ranged = 0;
+    for (const auto& l : model_.lights) ranged += l.range > 0.0 ? 1 : 0;
+    if (ranged > 0)
+        parts.push_back("KHR_lights_punctual range on " + std::to_string(ranged) +
+                        " light(s) (they fall off as 1/d^2 to the lighting.threshold volume)");
     for (const auto& ext : model_.extensionsUsed)
         if (!isSupportedExtension(ext)) parts.push_back("extension " + ext);
     return parts;

@@ -199,6 +199,18 @@ TEST(GltfLoader, ImportsPunctualLightsAndCamera) {
     EXPECT_TRUE(r.hasCamera);
     EXPECT_NEAR(s.camera.fovYDegrees, glm::degrees(0.8f), 1e-3f);
     EXPECT_NEAR(s.camera.position.z, 5.0f, 1e-6f);
+    // No range: nothing said of it.
+    for (const auto& w : s.warnings) EXPECT_EQ(w.find("range"), std::string::npos) << w;
+
+    // A light's range is not silently dropped: the warning says it is not used.
+    j["extensions"]["KHR_lights_punctual"]["lights"][0]["range"] = 3.5;
+    Scene ranged;
+    importGltf(write("ranged.gltf", j).string(), ranged, glm::mat4(1.0f), true);
+    bool said = false;
+    for (const auto& w : ranged.warnings)
+        said |= w.find("ignored (not supported by the workbench)") != std::string::npos &&
+                w.find("KHR_lights_punctual range on 1 light(s)") != std::string::npos;
+    EXPECT_TRUE(said) << "the range went unmentioned";
 }
 
 TEST(GltfLoader, SharedSampleModelsLoad) {
