@@ -350,7 +350,10 @@ private:
         if (!j.is_number()) return problem(path, "expected an integer, got " + j.dump());
         const double value = j.get<double>();
         bool readPast = false;
-        const std::string what = problemOf(*rule, value, j.dump(), j.is_number_integer(), readPast);
+        // A whole number beyond 64 bits (18446744073709551616) or written as
+        // 1e20 is an integer the parser kept as a double: its problem is its size.
+        const bool integral = j.is_number_integer() || (std::isfinite(value) && value == std::floor(value));
+        const std::string what = problemOf(*rule, value, j.dump(), integral, readPast);
         if (what.empty()) return;
         if (readPast) invalid_.push_back(path + ": " + what + "; the default is used");
         else problem(path, what);

@@ -325,6 +325,11 @@ TEST(GltfLoader, IntegerPropertiesAreCheckedAsIntegers) {
     EXPECT_EQ(e.find("32-bit float"), std::string::npos) << e;
     e = withText("huge.gltf", "byteOffset", "1e400");
     EXPECT_NE(e.find("bufferViews[1].byteOffset: 1e400 is out of range (a byte offset from 0"), std::string::npos) << e;
+    // Whole numbers the parser keeps as doubles (past 64 bits, or in exponent form) are integers too big.
+    e = withText("u64.gltf", "byteLength", "18446744073709551616");
+    EXPECT_NE(e.find("bufferViews[1].byteLength: 1.8446744073709552e+19 is out of range (a byte length"), std::string::npos) << e;
+    e = withText("e20.gltf", "byteLength", "1e20");
+    EXPECT_NE(e.find("bufferViews[1].byteLength: 1e+20 is out of range (a byte length"), std::string::npos) << e;
     e = withText("frac.gltf", "byteLength", "6.5");
     EXPECT_NE(e.find("bufferViews[1].byteLength: expected an integer, got 6.5"), std::string::npos) << e;
     e = withText("neg.gltf", "byteOffset", "-4");
