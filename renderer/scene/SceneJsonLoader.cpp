@@ -67,6 +67,10 @@ public:
         if (!j.is_number()) fail(where, std::string("expected a number, got ") + typeName(j));
         const double v = j.get<double>();
         if (const std::string problem = floatProblem(v); !problem.empty()) fail(where, problem);
+        // A number that is not 0 but becomes 0 as a float would be read as 0
+        // and refused (or used) as if the file said 0.
+        if (v != 0.0 && static_cast<float>(v) == 0.0f)
+            fail(where, shortNumber(v) + " is too small for a 32-bit float: it would be 0 (smallest about 1.4e-45)");
         return static_cast<float>(v);
     }
     float number(const json& obj, const char* key, const std::string& where, float fallback) const {

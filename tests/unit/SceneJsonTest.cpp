@@ -82,6 +82,12 @@ TEST(SceneJson, MalformedJsonNamesFileLineAndColumn) {
     EXPECT_NE(e.find("malformed JSON"), std::string::npos) << e;
 }
 
+TEST(SceneJson, ANumberThatBecomes0AsAFloatIsNamedNotReadAs0) {
+    const std::string e = errorOf(R"({"objects": [{"shape": "box", "size": [1e-50, 1, 1]}]})", "tiny.json");
+    EXPECT_NE(e.find("tiny.json: objects[0].size[0]: 1e-50 is too small for a 32-bit float"), std::string::npos) << e;
+    EXPECT_EQ(errorOf(R"({"objects": [{"shape": "box", "size": [1e-40, 1, 1]}]})"), "no error") << "a denormal float is a size";
+}
+
 TEST(SceneJson, WrongTypesNameTheJsonPath) {
     EXPECT_NE(errorOf(R"({"lights": [{"pos": [0,1,0], "attenuation": {"quadratic": "high"}}]})")
                   .find("lights[0].attenuation.quadratic: expected a number, got string"),
