@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/inspect/PixelProbe.h"
+#include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
 #include "ui/ProbePanel.h"
 
@@ -261,22 +262,16 @@ TEST(GuiInput, TheProbesCopyHoldsEveryValueItShowsAsLabelTabValueLines) {
     state.report = session->render();
     state.probe.result = probePixel(session->pipeline(), 32, 20);
     state.probe.pinned = true;
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(800, 900);
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     ui::ProbePanel panel;
-    bool open = true;
-    for (int i = 0; i < 2; ++i) {
-        ImGui::NewFrame();
-        ImGui::SetNextWindowSize(ImVec2(600, 880));
-        panel.draw("Pixel probe", &open, state);
-        ImGui::Render();
+    {
+        test::HeadlessImGui imgui(ImVec2(800, 900));
+        bool open = true;
+        for (int i = 0; i < 2; ++i)
+            imgui.frame([&] {
+                ImGui::SetNextWindowSize(ImVec2(600, 880));
+                panel.draw("Pixel probe", &open, state);
+            });
     }
-    ImGui::DestroyContext();
     const std::string& t = panel.copyText;
     EXPECT_EQ(t.rfind("pixel\t32 20\n", 0), 0u) << t;
     char lbuffer[128];

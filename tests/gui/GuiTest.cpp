@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "renderer/knobs/Preset.h"
+#include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ScenePanel.h"
@@ -44,27 +45,7 @@ Result shell(const std::string& cmd) {
     return r;
 }
 
-// A Dear ImGui context with a font atlas and no platform or renderer backend.
-class HeadlessImGui {
-public:
-    HeadlessImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(1600, 900);
-        io.DeltaTime = 1.0f / 60.0f;
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    }
-    ~HeadlessImGui() { ImGui::DestroyContext(); }
-    template <typename F>
-    void frame(F&& draw) {
-        ImGui::NewFrame();
-        draw();
-        ImGui::Render();
-    }
-};
+using test::HeadlessImGui;
 
 fs::path writeText(const std::string& name, const std::string& text) {
     const fs::path p = test::tempDir() / name;

@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "tests/gui/HeadlessImGui.h"
 #include "ui/InputQueue.h"
 #include "ui/Widgets.h"
 
@@ -16,28 +17,10 @@ using namespace dw;
 
 namespace {
 
-// One ImGui context, its font atlas built, a key map as the GLFW backend's.
+// A headless ImGui context fed through an input queue.
 class QueuedImGui {
 public:
-    QueuedImGui() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(800, 600);
-        io.DeltaTime = 1.0f / 60.0f;
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-        const std::pair<ImGuiKey, int> map[] = {
-            {ImGuiKey_Tab, GLFW_KEY_TAB},         {ImGuiKey_LeftArrow, GLFW_KEY_LEFT}, {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
-            {ImGuiKey_UpArrow, GLFW_KEY_UP},      {ImGuiKey_DownArrow, GLFW_KEY_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME},
-            {ImGuiKey_End, GLFW_KEY_END},         {ImGuiKey_Delete, GLFW_KEY_DELETE},  {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
-            {ImGuiKey_Enter, GLFW_KEY_ENTER},     {ImGuiKey_Escape, GLFW_KEY_ESCAPE},  {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER},
-            {ImGuiKey_A, GLFW_KEY_A},             {ImGuiKey_C, GLFW_KEY_C},            {ImGuiKey_V, GLFW_KEY_V},
-            {ImGuiKey_X, GLFW_KEY_X},             {ImGuiKey_Y, GLFW_KEY_Y},            {ImGuiKey_Z, GLFW_KEY_Z}};
-        for (const auto& [k, g] : map) io.KeyMap[k] = g;
-    }
-    ~QueuedImGui() { ImGui::DestroyContext(); }
+    QueuedImGui() : context_(ImVec2(800, 600)) {}
     // One frame: this frame's share of the queue, then `draw` in a window at (0, 0).
     void frame(const std::function<void()>& draw) {
         presses = queue.feed(ImGui::GetIO());
@@ -70,6 +53,9 @@ public:
     }
     ui::InputQueue queue;
     std::vector<std::pair<int, int>> presses;
+
+private:
+    test::HeadlessImGui context_;
 };
 
 }  // namespace
