@@ -20,6 +20,11 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
         "strategy's unquantised material shows as a mean difference of about 0.6% on a 0.6 diffuse) or unorm16 (8 "
         "bytes each, rounding 256 times finer)",
         true);
+    textureFilter_ = knobs.addEnum(
+        "gbuffer.texture_filter", {"mipmap", "base_level"}, "mipmap", "gbuffer",
+        "how the materials' textures are filtered: mipmap (trilinear, and anisotropic on a GPU, as each glTF sampler "
+        "asks: the pixel's footprint averaged) or base_level (bilinear at the full-resolution level, as the CPU "
+        "reference samples at the pixel centre: aliases where textures are minified)");
     directional_ = knobs.addBool("lighting.directional_in_gbuffer", false, "lighting",
                                  "shade the directional lights without a shadow map in the G-buffer pass, from the "
                                  "unquantised material, into gbuffer.directional, instead of one full-screen pass each "
@@ -72,6 +77,8 @@ void GeometryPass::execute(FrameContext& ctx) {
     if (ctx.wants("gbuffer.directional") && !ctx.knobs.get(directional_))
         throw Error("gbuffer.directional is written only with lighting.directional_in_gbuffer=true");
     const bool directional = ctx.knobs.get(directional_) && ctx.wants("gbuffer.directional") && ctx.lightTable;
+    // For the whole frame: the forward strategies draw the materials with the same samplers.
+    ctx.gpu.setBaseLevelFiltering(ctx.knobs.get(textureFilter_) == 1);
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
     const gl::Framebuffer& fbo =

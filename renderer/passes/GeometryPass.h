@@ -30,6 +30,7 @@ public:
 
 private:
     BoolKnob directional_;  // lighting.directional_in_gbuffer
+    EnumKnob textureFilter_;  // gbuffer.texture_filter
     EnumKnob materialFormat_;  // gbuffer.material_format: srgb8, unorm16
     gl::ShaderLibrary::Handle program_, directionalProgram_;
     TargetFramebuffer target_, directionalTarget_;

@@ -39,11 +39,7 @@ SsaoPass::SsaoPass(KnobRegistry& knobs) {
                                 "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
 }
 
-float SsaoPass::sceneUnit(const Bounds& bounds) {
-    const double r = bounds.empty() ? 0.0 : static_cast<double>(bounds.radius());
-    if (!(r > 0.0) || !std::isfinite(r)) return 1.0f;
-    return static_cast<float>(std::pow(10.0, std::round(std::log10(r / 10.0))));
-}
+float SsaoPass::sceneUnit(const Bounds& bounds) { return static_cast<float>(sceneLengthUnit(bounds)); }
 
 float SsaoPass::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
     const float r = knobs.get(radius_);

@@ -51,11 +51,28 @@ GLuint GpuScene::samplerFor(const TextureMapping& m) {
     auto it = samplerIndex_.find(key);
     if (it != samplerIndex_.end()) return samplers_[it->second].id();
     gl::Sampler s = gl::Sampler::create(m.minFilter, m.magFilter, m.wrapS, m.wrapT, "glTF sampler");
-    const bool mipmapped = m.minFilter != GL_NEAREST && m.minFilter != GL_LINEAR;
-    if (mipmapped && anisotropyUsable()) glSamplerParameterf(s.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     samplers_.push_back(std::move(s));
+    samplerKeys_.push_back(key);
     samplerIndex_[key] = samplers_.size() - 1;
+    applyFiltering(samplers_.size() - 1);
     return samplers_.back().id();
+}
+
+void GpuScene::applyFiltering(std::size_t i) const {
+    const auto [wrapS, wrapT, minFilter, magFilter] = samplerKeys_[i];
+    (void)wrapS;
+    (void)wrapT;
+    const GLuint id = samplers_[i].id();
+    const bool mipmapped = minFilter != GL_NEAREST && minFilter != GL_LINEAR;
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(baseLevel_ ? magFilter : minFilter));
+    if (anisotropyUsable())
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, mipmapped && !baseLevel_ ? 8.0f : 1.0f);
+}
+
+void GpuScene::setBaseLevelFiltering(bool baseLevel) const {
+    if (baseLevel == baseLevel_) return;
+    baseLevel_ = baseLevel;
+    for (std::size_t i = 0; i < samplers_.size(); ++i) applyFiltering(i);
 }
 
 int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {

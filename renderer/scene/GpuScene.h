@@ -73,6 +73,12 @@ public:
     // light's while it draws). Not geometry, so settable on a const scene.
     void setDrawOrigin(const glm::dvec3& origin) const { origin_ = origin; }
     const glm::dvec3& drawOrigin() const { return origin_; }
+    // gbuffer.texture_filter: the materials' textures filtered as their glTF
+    // samplers ask (mip-mapped, anisotropic where usable), or bilinearly at the
+    // base level, one texel footprint, as the CPU reference samples
+    // (renderer/reference/TextureSampler.h). Sampler objects are GL state, so
+    // this changes no scene data; it costs a few GL calls when it changes.
+    void setBaseLevelFiltering(bool baseLevel) const;
     std::size_t textureBytes() const { return textureBytes_; }
     // The sky's environment map (equirectangular 2D or cube), or null.
     const gl::Texture* environment() const { return environment_ ? &environment_ : nullptr; }
@@ -81,6 +87,7 @@ private:
     int textureFor(const Scene& scene, int image, bool srgb);
     // One sampler object per distinct glTF sampler (wrap S/T, min/mag filter).
     GLuint samplerFor(const TextureMapping& mapping);
+    void applyFiltering(std::size_t sampler) const;
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
     glm::mat4 relativeModel(const glm::mat4& model) const;
@@ -96,7 +103,9 @@ private:
     };
     using SamplerKey = std::tuple<unsigned, unsigned, unsigned, unsigned>;
     std::vector<gl::Sampler> samplers_;
+    std::vector<SamplerKey> samplerKeys_;  // per samplers_ entry
     std::map<SamplerKey, std::size_t> samplerIndex_;
+    mutable bool baseLevel_ = false;
     std::vector<MaterialTextures> materialTextures_;
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;

@@ -1,5 +1,7 @@
 #include "renderer/scene/Mesh.h"
 
+#include <cmath>
+
 namespace dw {
 
 Bounds Bounds::transformed(const glm::mat4& m) const {
@@ -10,6 +12,12 @@ Bounds Bounds::transformed(const glm::mat4& m) const {
         out.add(glm::vec3(m * glm::vec4(c, 1.0f)));
     }
     return out;
+}
+
+double sceneLengthUnit(const Bounds& bounds) {
+    const double r = bounds.empty() ? 0.0 : static_cast<double>(bounds.radius());
+    if (!(r > 0.0) || !std::isfinite(r)) return 1.0;
+    return std::pow(10.0, std::round(std::log10(r / 10.0)));
 }
 
 void Mesh::computeBounds() {

@@ -37,6 +37,12 @@ struct Bounds {
     Bounds transformed(const glm::mat4& m) const;
 };
 
+// The scene's length unit for settings given as a fraction of the scene's
+// size (ssao.radius_unit = scene_fraction): 10^round(log10(R / 10)) for the
+// bounding radius R, 1 for an empty or non-finite one. Shared by the SSAO
+// pass and the CPU reference so both take the same radius.
+double sceneLengthUnit(const Bounds& bounds);
+
 struct Mesh {
     std::string name;
     std::vector<Vertex> vertices;

@@ -1,0 +1,212 @@
+// deferred-workbench reference: the CPU ground truth of one view, headless,
+// with no GL at all (renderer/reference/ReferenceRenderer.h).
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <fstream>
+#include <thread>
+#include <tuple>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "renderer/Error.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+reference::ReferenceProgress* gProgress = nullptr;
+
+extern "C" void cancelOnSignal(int) {
+    if (gProgress) gProgress->cancel.store(true);
+}
+
+// Renders on a worker thread while this one reports progress on stderr
+// (a line rewritten in place on a terminal, a line each 10% otherwise);
+// Ctrl+C (SIGINT) or SIGTERM cancels.
+reference::ReferenceImages renderWithProgress(const Scene& scene, const reference::ReferenceModel& model,
+                                              const reference::ReferenceRequest& request, bool quiet) {
+    reference::ReferenceProgress progress;
+    gProgress = &progress;
+    struct sigaction action{}, oldInt{}, oldTerm{};
+    action.sa_handler = cancelOnSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &oldInt);
+    sigaction(SIGTERM, &action, &oldTerm);
+    reference::ReferenceImages result;
+    std::exception_ptr failure;
+    std::atomic<bool> done{false};
+    std::thread worker([&] {
+        try {
+            result = reference::renderReference(scene, model, request, &progress);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        done = true;
+    });
+    const bool tty = isatty(STDERR_FILENO) != 0;
+    const auto start = std::chrono::steady_clock::now();
+    int lastDecile = 0;
+    while (!done.load()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        if (quiet || done.load()) continue;
+        const double f = progress.fraction();
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (tty) {
+            std::fprintf(stderr, "\rreference: %5.1f%% of %dx%d, %.1f s (Ctrl+C cancels)", 100.0 * f, request.width,
+                         request.height, elapsed);
+        } else if (static_cast<int>(f * 10.0) > lastDecile) {
+            lastDecile = static_cast<int>(f * 10.0);
+            std::fprintf(stderr, "reference: %d%% of %dx%d, %.1f s\n", lastDecile * 10, request.width, request.height,
+                         elapsed);
+        }
+    }
+    worker.join();
+    if (tty && !quiet) std::fprintf(stderr, "\n");
+    sigaction(SIGINT, &oldInt, nullptr);
+    sigaction(SIGTERM, &oldTerm, nullptr);
+    gProgress = nullptr;
+    if (failure) std::rethrow_exception(failure);
+    return result;
+}
+
+}  // namespace
+
+int runReferenceCommand(int argc, char** argv) {
+    CommandLine cl(argc, argv, 2);
+    if (cl.flag("--help")) {
+        std::cout
+            << "usage: deferred-workbench reference [--scene NAME|FILE] [--size WxH] [--buffer lbuffer|final|ao|shadow]\n"
+               "                                    [--preset NAME|FILE] [--set knob=value]... [--ao-rays N] [--seed N]\n"
+               "                                    [--threads N] [--no-cache] [--cache-dir DIR] [--stats-out FILE]\n"
+               "                                    [--throughput] [--quiet] --out FILE\n"
+               "The CPU ground truth of the view: the GPU's shading model without its approximations, in double\n"
+               "precision on exact geometry traced with Embree (docs/reference.md). No GL is used.\n"
+               "  --buffer     lbuffer (HDR radiance, the default), final (tone-mapped), ao (ray-traced ambient\n"
+               "               accessibility), shadow (share of the shadow-casting lights' light that arrives)\n"
+               "  --out        .exr writes the raw values; .png the values in [0, 1] (not for lbuffer)\n"
+               "  --preset, --set  as for render: the knobs that define the model are honoured (shadows.enabled,\n"
+               "               ssao.enabled/radius/radius_unit/intensity, lighting.attenuation and its window,\n"
+               "               lighting.ambient_*, skybox.*, tonemap.*, luminance.*); the rest choose GPU\n"
+               "               approximations and are ignored, and the run says which of those were set\n"
+               "  --ao-rays    cosine-weighted AO rays per pixel (default 64); the standard error is reported\n"
+               "  --seed       the AO sample pattern's seed (default 1); the image is the same for any --threads\n"
+               "  --threads    worker threads (default: all cores)\n"
+               "  --no-cache   render even when the cache holds this reference, and do not store it\n"
+               "  --cache-dir  the cache (default $DW_REFERENCE_CACHE, else ~/.cache/deferred-workbench/reference)\n"
+               "  --stats-out  write the render's statistics as JSON\n"
+               "  --throughput also trace the same rays with Embree alone and print the ratio of rays per second\n"
+               "Progress goes to stderr; Ctrl+C cancels (exit 130, nothing cached).\n";
+        return 0;
+    }
+    RunConfig run = cl.runConfig();
+    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
+    const std::string buffer = cl.value("--buffer").value_or("lbuffer");
+    const auto out = cl.value("--out");
+    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
+    const int seed = CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647);
+    const int threads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"), 0, 4096);
+    const bool noCache = cl.flag("--no-cache");
+    const auto cacheDir = cl.value("--cache-dir");
+    const auto statsOut = cl.value("--stats-out");
+    const bool throughput = cl.flag("--throughput");
+    const bool quiet = cl.flag("--quiet");
+    cl.finish("reference");
+    if (!cl.positional().empty()) throw UsageError("reference: unexpected argument '" + cl.positional()[0] + "'");
+    if (!out) throw UsageError("reference needs --out FILE (.exr, or .png for final, ao and shadow)");
+    const auto& names = reference::referenceBuffers();
+    if (std::find(names.begin(), names.end(), buffer) == names.end())
+        throw UsageError("--buffer: unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
+    if (buffer == "lbuffer" && !isFloatFormat(*out))
+        throw UsageError("--out " + *out + ": the L-buffer is HDR; write it as .exr");
+    CommandLine::NamedFiles writes = {{"--out", *out}};
+    if (statsOut) writes.emplace_back("--stats-out", *statsOut);
+    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
+
+    run.validate();
+    const Scene scene = loadScene(run.sceneSpec());
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    run.applyKnobs(knobs, scene);
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
+    model.aoRays = aoRays;
+    model.seed = static_cast<std::uint32_t>(seed);
+    std::printf("%s\n", reference::reportKnobs(knobs).text().c_str());
+
+    reference::ReferenceRequest request;
+    request.camera = run.camera(scene);
+    request.width = run.width;
+    request.height = run.height;
+    request.threads = threads;
+
+    const reference::ReferenceCache cache(cacheDir ? std::filesystem::path(*cacheDir) : std::filesystem::path());
+    const std::string key = reference::referenceKey(scene, model, request);
+    std::optional<reference::ReferenceImages> images;
+    if (!noCache) images = cache.load(key);
+    const bool cached = images.has_value();
+    if (!cached) {
+        try {
+            images = renderWithProgress(scene, model, request, quiet);
+        } catch (const reference::ReferenceCancelled&) {
+            std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
+            return 130;
+        }
+        if (!noCache) cache.store(key, *images);
+    }
+    writeImage(*out, *images->buffer(buffer));
+    const reference::ReferenceStatistics& s = images->stats;
+    std::printf("wrote %s (reference %s of a %dx%d frame, scene %s; %s)\n", out->c_str(), buffer.c_str(), run.width,
+                run.height, scene.name.c_str(),
+                cached ? ("from the cache, key " + key).c_str() : ("cache key " + key).c_str());
+    std::printf("%s %.2f s on %d threads (Embree build %.2f s, %zu triangles): %.2f M rays (%.2f M rays/s; %lld primary, "
+                "%lld shadow, %lld AO)\n",
+                cached ? "rendered earlier in" : "rendered in", s.seconds, s.threads, s.buildSeconds, s.triangles,
+                s.rays() / 1e6, s.seconds > 0 ? s.rays() / s.seconds / 1e6 : 0.0, s.primaryRays, s.shadowRays, s.aoRays);
+    if (model.rayTracedAo)
+        std::printf("ambient occlusion: %d rays per pixel, radius %g, standard error of A: mean %.4f, max %.4f\n",
+                    model.aoRays, model.aoRadius, s.aoStandardErrorMean, s.aoStandardErrorMax);
+    nlohmann::json stats = {{"key", key},
+                            {"cached", cached},
+                            {"scene", scene.name},
+                            {"width", run.width},
+                            {"height", run.height},
+                            {"seconds", s.seconds},
+                            {"build_seconds", s.buildSeconds},
+                            {"threads", s.threads},
+                            {"triangles", s.triangles},
+                            {"primary_rays", s.primaryRays},
+                            {"shadow_rays", s.shadowRays},
+                            {"ao_rays", s.aoRays},
+                            {"ao_rays_per_pixel", model.rayTracedAo ? model.aoRays : 0},
+                            {"ao_standard_error_mean", s.aoStandardErrorMean},
+                            {"ao_standard_error_max", s.aoStandardErrorMax},
+                            {"model", model.canonical()}};
+    if (throughput) {
+        // Side by side in this run: the reference once more (uncached) and Embree alone over the same rays.
+        const reference::ReferenceImages again = reference::renderReference(scene, model, request);
+        const reference::RayThroughput bare = reference::measureRayThroughput(scene, model, request);
+        const double refRate = again.stats.seconds > 0 ? again.stats.rays() / again.stats.seconds : 0.0;
+        const double ratio = bare.raysPerSecond() > 0 ? refRate / bare.raysPerSecond() : 0.0;
+        std::printf("throughput: reference %.2f M rays/s, Embree alone %.2f M rays/s over %.2f M rays: ratio %.2f\n",
+                    refRate / 1e6, bare.raysPerSecond() / 1e6, bare.rays / 1e6, ratio);
+        stats["throughput"] = {{"reference_rays_per_second", refRate},
+                               {"embree_rays_per_second", bare.raysPerSecond()},
+                               {"embree_rays", bare.rays},
+                               {"ratio", ratio}};
+    }
+    if (statsOut) {
+        std::ofstream f(*statsOut);
+        f << stats.dump(2) << "\n";
+        if (!f) throw FileError(*statsOut, "cannot write the statistics");
+    }
+    return 0;
+}
+
+}  // namespace dw

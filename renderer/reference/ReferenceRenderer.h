@@ -1,0 +1,107 @@
+#pragma once
+// The CPU ground truth (DESIGN.md "The measuring half"; issue "Ground truth
+// and error metrics"): the GPU's shading model without its approximations,
+// evaluated in double precision on exact geometry traced with Embree.
+//
+// Per pixel: one ray through the pixel centre (as the rasteriser samples),
+// clipped to the camera's near and far planes; the hit recomputed in double
+// from its triangle and barycentrics; the material as the G-buffer pass
+// evaluates it (MaterialEvaluator) without the G-buffer's quantisation; every
+// enabled light by ShadingReference::shadeLight with no volume cut-off (the
+// classic attenuation) or with Ferko's window at the threshold's radius (the
+// windowed model); hard shadows by a ray to each shadow-casting light; the
+// ambient term k_a i_a scaled by the accessibility A and the baked occlusion,
+// plus emission; the sky where no geometry is.
+//
+// Ambient occlusion (when the model has it) is the integral
+//     A = 1 - intensity * (1/pi) Int_{hemisphere(N)} V_R(w) / (1 + (d(w)/R)^2) cos(theta) dw,
+// V_R(w) = 1 where a surface lies within the AO radius R along w (d(w) its
+// distance), estimated with `aoRays` cosine-weighted rays (a Hammersley set
+// rotated per pixel; fixed seed) and clamped to [0, 1]. Its standard error per
+// pixel is estimated from the samples (for a stratified set this is an upper
+// bound). Directions below the geometric surface count as occluded at d = 0.
+//
+// Outputs: all W x H, rows top-down (as written to files), in linear radiance:
+//   lbuffer  RGBA, A = 1 (HDR L-buffer: what the GPU's `lbuffer` holds)
+//   final    RGBA in [0, 1]: the tone-mapped lbuffer (ToneMapReference), sRGB-encoded as the GPU's `final`
+//   ao       1 channel: the accessibility A (1 where the model has no AO, and on the sky)
+//   shadow   1 channel: the fraction of the shadow-casting lights' direct light (luminance) that reaches the
+//            point; 1 where no such light reaches it, and on the sky
+// Deterministic: the same image for any thread count. Cancellable through
+// ReferenceProgress (ReferenceCancelled is thrown).
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "renderer/Error.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/reference/ReferenceModel.h"
+#include "renderer/scene/Camera.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw::reference {
+
+class ReferenceCancelled : public Error {
+public:
+    ReferenceCancelled() : Error("reference render cancelled") {}
+};
+
+// Shared with whoever watches a render: the renderer counts finished pixels
+// and stops soon after `cancel` is set.
+struct ReferenceProgress {
+    std::atomic<long long> donePixels{0};
+    std::atomic<long long> totalPixels{0};
+    std::atomic<bool> cancel{false};
+    double fraction() const {
+        const long long t = totalPixels.load();
+        return t > 0 ? static_cast<double>(donePixels.load()) / static_cast<double>(t) : 0.0;
+    }
+};
+
+struct ReferenceStatistics {
+    double seconds = 0.0;       // wall time of the render (not the Embree build)
+    double buildSeconds = 0.0;  // Embree scene build
+    int threads = 0;
+    long long primaryRays = 0, shadowRays = 0, aoRays = 0;
+    double aoStandardErrorMean = 0.0;  // mean over surface pixels of the per-pixel standard error of A
+    double aoStandardErrorMax = 0.0;
+    size_t triangles = 0;
+    long long rays() const { return primaryRays + shadowRays + aoRays; }
+};
+
+struct ReferenceImages {
+    FloatImage lbuffer, final, ao, shadow;
+    std::vector<std::uint8_t> background;  // 1 where the pixel sees the sky
+    ReferenceStatistics stats;
+    // The image by buffer name: "lbuffer", "final", "ao" or "shadow"; nullptr otherwise.
+    const FloatImage* buffer(const std::string& name) const;
+};
+
+// The buffer names a reference has, in order.
+const std::vector<std::string>& referenceBuffers();
+
+struct ReferenceRequest {
+    Camera camera;
+    int width = 640, height = 360;
+    int threads = 0;  // 0: all the machine has
+};
+
+// Throws Error (Embree failures, a size below 1x1) or ReferenceCancelled.
+ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
+                                ReferenceProgress* progress = nullptr);
+
+// Embree alone over the rays a reference render casts: the same primary rays;
+// at each primary hit, a shadow ray to every shadow-casting light (when the
+// model has shadows) and the model's AO rays (the same directions about the
+// geometric normal), with no material, shading or statistics. The reference's
+// rays per second divided by this says how much the shading and sampling add
+// to the ray queries (1: nothing).
+struct RayThroughput {
+    long long rays = 0;
+    double seconds = 0.0;
+    double raysPerSecond() const { return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0; }
+};
+RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request);
+
+}  // namespace dw::reference

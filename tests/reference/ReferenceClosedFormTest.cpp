@@ -1,0 +1,293 @@
+// The CPU reference against closed forms (issue "Ground truth and error
+// metrics", how it will be checked): a point light over a plane, AO on an
+// open plane and in a right-angle corner, a hard shadow's edge; and its
+// promises: the same image for any thread count, the cache key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/RunConfig.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/SceneLoader.h"
+#include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/TestSupport.h"
+
+namespace dw {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A pixel centre's ray, worked out independently of the renderer: unproject
+// the window point through the inverse of glm's GL projection x view.
+struct PixelRay {
+    glm::dvec3 origin, direction;
+};
+PixelRay pixelRay(const Camera& c, int w, int h, int x, int row) {
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(c.position), glm::dvec3(c.target), glm::dvec3(c.up));
+    const glm::dmat4 proj = glm::perspective(glm::radians(static_cast<double>(c.fovYDegrees)), static_cast<double>(w) / h,
+                                             static_cast<double>(c.nearPlane), static_cast<double>(c.farPlane));
+    const glm::dmat4 inv = glm::inverse(proj * view);
+    const double nx = (x + 0.5) / w * 2.0 - 1.0, ny = ((h - 1 - row) + 0.5) / h * 2.0 - 1.0;
+    glm::dvec4 a = inv * glm::dvec4(nx, ny, -1.0, 1.0), b = inv * glm::dvec4(nx, ny, 1.0, 1.0);
+    a /= a.w;
+    b /= b.w;
+    return {glm::dvec3(a), glm::normalize(glm::dvec3(b - a))};
+}
+// Where the pixel's ray meets the plane y = 0 (false when it does not, going forwards).
+bool floorHit(const PixelRay& r, glm::dvec3& p) {
+    if (r.direction.y >= 0.0) return false;
+    p = r.origin + r.direction * (-r.origin.y / r.direction.y);
+    return true;
+}
+
+reference::ReferenceModel plainModel() {
+    reference::ReferenceModel m;  // classic attenuation, no AO, no shadows
+    m.shadows = false;
+    m.rayTracedAo = false;
+    m.bakedOcclusion = false;
+    return m;
+}
+
+reference::ReferenceRequest requestFor(const Scene& s, int w, int h) {
+    reference::ReferenceRequest r;
+    r.camera = s.camera;
+    r.width = w;
+    r.height = h;
+    return r;
+}
+
+TEST(ReferenceClosedForm, PointLightOverPlaneGivesTheIrradianceAtEveryPixel) {
+    Scene s = test::planeScene(400.0f);
+    const glm::dvec3 lightPos(0.5, 2.0, -1.0), intensity(3.0, 2.0, 1.0);
+    const Attenuation att{1.0f, 0.2f, 0.5f};
+    test::addPointLight(s, glm::vec3(lightPos), glm::vec3(intensity), att);
+    const int W = 96, H = 54;
+    const auto img = reference::renderReference(s, plainModel(), requestFor(s, W, H));
+    int checked = 0;
+    double worst = 0.0;
+    for (int row = 0; row < H; ++row)
+        for (int x = 0; x < W; ++x) {
+            glm::dvec3 p;
+            // Clipped at the far plane (view depth), as the rasteriser clips.
+            const glm::dvec3 forward = glm::normalize(glm::dvec3(s.camera.target - s.camera.position));
+            const bool hit = floorHit(pixelRay(s.camera, W, H, x, row), p) && std::abs(p.x) < 199.0 &&
+                             std::abs(p.z) < 199.0 && glm::dot(p - glm::dvec3(s.camera.position), forward) < s.camera.farPlane * 0.999;
+            if (!hit && floorHit(pixelRay(s.camera, W, H, x, row), p) &&
+                std::abs(glm::dot(p - glm::dvec3(s.camera.position), forward) - s.camera.farPlane) < s.camera.farPlane * 0.002)
+                continue;  // at the far plane itself
+            const float* px = &img.lbuffer.pixels[(static_cast<size_t>(row) * W + x) * 4];
+            if (!hit) {
+                EXPECT_EQ(px[0], 0.0f) << x << "," << row;
+                continue;
+            }
+            const glm::dvec3 toLight = lightPos - p;
+            const double d = glm::length(toLight);
+            const double cosTheta = toLight.y / d;
+            const glm::dvec3 expected = intensity * cosTheta / (att.constant + att.linear * d + att.quadratic * d * d);
+            for (int c = 0; c < 3; ++c) {
+                const double rel = std::abs(px[c] - expected[c]) / expected[c];
+                worst = std::max(worst, rel);
+                EXPECT_LT(rel, 1e-5) << "pixel " << x << "," << row << " channel " << c;
+            }
+            ++checked;
+        }
+    EXPECT_GT(checked, W * H / 3);
+    std::printf("point light over a plane: %d pixels, largest relative error %.2e\n", checked, worst);
+}
+
+TEST(ReferenceClosedForm, AmbientOcclusionIsOneOnAnOpenPlane) {
+    Scene s = test::planeScene(400.0f);
+    reference::ReferenceModel m = plainModel();
+    m.rayTracedAo = true;
+    m.aoRadius = 1.0;
+    m.aoIntensity = 1.0;
+    m.aoRays = 64;
+    const auto img = reference::renderReference(s, m, requestFor(s, 64, 36));
+    int surface = 0;
+    for (size_t p = 0; p < img.ao.pixels.size(); ++p) {
+        EXPECT_EQ(img.ao.pixels[p], 1.0f) << p;
+        surface += img.background[p] ? 0 : 1;
+    }
+    EXPECT_GT(surface, 64 * 36 / 3);
+    EXPECT_EQ(img.stats.aoStandardErrorMax, 0.0);
+}
+
+// The AO integral's value at distance x from an infinite wall (normal +x) on
+// an infinite floor (normal +y), by quadrature in Malley's coordinates:
+// occlusion = (1/2pi) Int_0^1 Int_0^2pi f dphi du, sin^2(theta) = u.
+double cornerOcclusion(double x, double radius) {
+    const int nu = 1200, nphi = 2400;
+    double sum = 0.0;
+    for (int i = 0; i < nu; ++i) {
+        const double u = (i + 0.5) / nu, sinTheta = std::sqrt(u);
+        for (int j = 0; j < nphi; ++j) {
+            const double phi = 2.0 * kPi * (j + 0.5) / nphi;
+            const double wx = sinTheta * std::cos(phi);
+            if (wx >= 0.0) continue;  // away from the wall
+            const double d = x / -wx;
+            if (d <= radius) sum += 1.0 / (1.0 + (d / radius) * (d / radius));
+        }
+    }
+    return sum / (static_cast<double>(nu) * nphi);
+}
+
+TEST(ReferenceClosedForm, AmbientOcclusionInARightAngleCornerMatchesTheIntegral) {
+    Scene s = test::planeScene(400.0f);
+    Mesh wall = shapes::plane(400.0f, 400.0f);
+    wall.material = 0;
+    // The plane's normal +y turned to +x: the wall x = 0 faces the floor's x > 0 half.
+    const glm::mat4 toWall = glm::rotate(glm::mat4(1.0f), glm::radians(-90.0f), glm::vec3(0, 0, 1));
+    s.instances.push_back({s.addMesh(std::move(wall)), toWall});
+    s.camera.position = {1.0f, 3.0f, 0.0f};
+    s.camera.target = {1.0f, 0.0f, 0.0f};
+    s.camera.up = {0.0f, 0.0f, -1.0f};
+    s.camera.fovYDegrees = 40.0f;
+    reference::ReferenceModel m = plainModel();
+    m.rayTracedAo = true;
+    m.aoRadius = 2.0;
+    m.aoIntensity = 1.0;
+    m.aoRays = 4096;
+    const int W = 24, H = 24;
+    const auto img = reference::renderReference(s, m, requestFor(s, W, H));
+    const double tolerance = 4.0 * img.stats.aoStandardErrorMax + 2e-3;
+    EXPECT_LT(img.stats.aoStandardErrorMax, 0.01);
+    int checked = 0;
+    for (int row = 2; row < H; row += 5)
+        for (int x = 1; x < W; x += 5) {
+            glm::dvec3 p;
+            ASSERT_TRUE(floorHit(pixelRay(s.camera, W, H, x, row), p));
+            if (p.x < 0.05) continue;
+            const double expected = 1.0 - cornerOcclusion(p.x, m.aoRadius);
+            EXPECT_NEAR(img.ao.pixels[static_cast<size_t>(row) * W + x], expected, tolerance)
+                << "at distance " << p.x << " from the wall";
+            ++checked;
+        }
+    EXPECT_GE(checked, 10);
+    // Far from everything but the floor's corner edge: the infinite-radius limit is 1/2 occluded.
+    EXPECT_NEAR(cornerOcclusion(1e-4, 1e3), 0.5, 1e-3);
+}
+
+TEST(ReferenceClosedForm, HardShadowEdgeIsWhereTheGeometryPutsIt) {
+    Scene s = test::planeScene(400.0f);
+    // A 2 x 2 occluder at y = 1 facing down: single-sided, so the camera
+    // (above) does not see it, while shadow rays stop at any face.
+    Mesh quad = shapes::plane(2.0f, 2.0f);
+    quad.material = 0;
+    const glm::mat4 flip = glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 0)) *
+                           glm::rotate(glm::mat4(1.0f), glm::radians(180.0f), glm::vec3(1, 0, 0));
+    s.instances.push_back({s.addMesh(std::move(quad)), flip});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0.0f, -1.0f, 0.0f};
+    sun.intensity = glm::vec3(1.0f);
+    sun.castShadows = true;
+    s.lights.push_back(sun);
+    s.camera.position = {0.3f, 6.0f, 2.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    reference::ReferenceModel m = plainModel();
+    m.shadows = true;
+    const int W = 128, H = 96;
+    const auto img = reference::renderReference(s, m, requestFor(s, W, H));
+    int shadowed = 0, lit = 0;
+    for (int row = 0; row < H; ++row)
+        for (int x = 0; x < W; ++x) {
+            glm::dvec3 p;
+            if (!floorHit(pixelRay(s.camera, W, H, x, row), p)) continue;
+            const double edge = std::min(std::abs(std::abs(p.x) - 1.0), std::abs(std::abs(p.z) - 1.0));
+            const bool inside = std::abs(p.x) < 1.0 && std::abs(p.z) < 1.0;
+            if (edge < 1e-4 && (std::abs(p.x) <= 1.0 + 1e-4 && std::abs(p.z) <= 1.0 + 1e-4)) continue;
+            const size_t i = static_cast<size_t>(row) * W + x;
+            const float r = img.lbuffer.pixels[i * 4];
+            if (inside) {
+                EXPECT_EQ(r, 0.0f) << "pixel " << x << "," << row << " at " << p.x << "," << p.z << " is under the occluder";
+                EXPECT_EQ(img.shadow.pixels[i], 0.0f);
+                ++shadowed;
+            } else {
+                EXPECT_FLOAT_EQ(r, 1.0f) << "pixel " << x << "," << row << " at " << p.x << "," << p.z;
+                EXPECT_EQ(img.shadow.pixels[i], 1.0f);
+                ++lit;
+            }
+        }
+    EXPECT_GT(shadowed, 100);
+    EXPECT_GT(lit, 1000);
+}
+
+Scene builtin(const std::string& name) { return loadScene(name); }
+
+TEST(ReferenceRenderer, SameImageForAnyThreadCount) {
+    const Scene s = builtin("default");
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    RunConfig().applyKnobs(knobs, s);
+    reference::ReferenceModel m = reference::ReferenceModel::fromKnobs(knobs, s);
+    m.aoRays = 8;
+    reference::ReferenceRequest r = requestFor(s, 48, 27);
+    r.threads = 1;
+    const auto one = reference::renderReference(s, m, r);
+    r.threads = 2;
+    const auto two = reference::renderReference(s, m, r);
+    EXPECT_EQ(one.lbuffer.pixels, two.lbuffer.pixels);
+    EXPECT_EQ(one.ao.pixels, two.ao.pixels);
+    EXPECT_EQ(one.final.pixels, two.final.pixels);
+    EXPECT_GT(one.stats.aoRays, 0);
+    EXPECT_GT(one.stats.shadowRays, 0);
+}
+
+TEST(ReferenceRenderer, CancelStopsTheRender) {
+    const Scene s = builtin("default");
+    reference::ReferenceProgress progress;
+    progress.cancel = true;
+    EXPECT_THROW(reference::renderReference(s, plainModel(), requestFor(s, 64, 36), &progress),
+                 reference::ReferenceCancelled);
+}
+
+TEST(ReferenceModel, HonouredKnobsChangeTheKeyIgnoredOnesDoNot) {
+    const Scene s = builtin("spheres");
+    auto keyWith = [&](const std::vector<std::string>& sets) {
+        KnobRegistry knobs = RunConfig::declaredKnobs();
+        RunConfig run;
+        run.sets = sets;
+        run.applyKnobs(knobs, s);
+        return reference::referenceKey(s, reference::ReferenceModel::fromKnobs(knobs, s), requestFor(s, 32, 18));
+    };
+    const std::string base = keyWith({});
+    EXPECT_EQ(base, keyWith({"lighting.strategy=tiled", "shadows.map_size=256", "ssao.samples=4"}));
+    EXPECT_NE(base, keyWith({"ssao.intensity=2"}));
+    EXPECT_NE(base, keyWith({"shadows.enabled=false"}));
+    EXPECT_NE(base, keyWith({"lighting.attenuation=windowed"}));
+    // The threshold matters only to the windowed model.
+    EXPECT_EQ(base, keyWith({"lighting.threshold=0.05"}));
+    EXPECT_NE(keyWith({"lighting.attenuation=windowed"}), keyWith({"lighting.attenuation=windowed", "lighting.threshold=0.05"}));
+
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    RunConfig run;
+    run.sets = {"lighting.strategy=tiled", "bloom.enabled=true"};
+    run.applyKnobs(knobs, s);
+    const reference::KnobReport report = reference::reportKnobs(knobs);
+    EXPECT_EQ(report.ignoredChanged, std::vector<std::string>{"lighting.strategy=tiled"});
+    EXPECT_NE(std::find(report.unmodelledOn.begin(), report.unmodelledOn.end(), "bloom.enabled"), report.unmodelledOn.end());
+}
+
+TEST(ReferenceCache, StoresAndLoadsAnEntry) {
+    const Scene s = builtin("spheres");
+    reference::ReferenceModel m = plainModel();
+    const auto request = requestFor(s, 32, 18);
+    const auto img = reference::renderReference(s, m, request);
+    const reference::ReferenceCache cache(test::tempDir() / "reference-cache");
+    const std::string key = reference::referenceKey(s, m, request);
+    EXPECT_FALSE(cache.load(key).has_value());
+    cache.store(key, img);
+    const auto back = cache.load(key);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->lbuffer.pixels, img.lbuffer.pixels);
+    EXPECT_EQ(back->final.pixels, img.final.pixels);
+    EXPECT_EQ(back->background, img.background);
+    EXPECT_EQ(back->stats.primaryRays, img.stats.primaryRays);
+    // A damaged entry is a miss, not an error.
+    std::filesystem::resize_file(cache.directory() / (key + ".lbuffer.exr"), 10);
+    EXPECT_FALSE(cache.load(key).has_value());
+}
+
+}  // namespace
+}  // namespace dw
