@@ -1,0 +1,70 @@
+// `deferred-workbench reference` as a user runs it: the buffers it writes,
+// the knobs it reports, the cache, and one clear line for bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "renderer/io/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+test::CommandResult run(const std::string& args) { return test::runWorkbench(args); }
+
+TEST(ReferenceCli, WritesEachBufferAndCachesTheRender) {
+    const fs::path dir = test::tempDir() / "reference-cli";
+    fs::create_directories(dir);
+    const std::string cache = " --cache-dir " + (dir / "cache").string();
+    const std::string common = "reference --scene spheres --size 48x27 --ao-rays 4 --quiet" + cache;
+    const auto first = run(common + " --set lighting.strategy=tiled --stats-out " + (dir / "s.json").string() +
+                           " --out " + (dir / "l.exr").string());
+    ASSERT_EQ(first.code, 0) << first.err;
+    EXPECT_NE(first.out.find("of them set here: lighting.strategy=tiled"), std::string::npos) << first.out;
+    EXPECT_NE(first.out.find("not modelled"), std::string::npos) << first.out;
+    const FloatImage l = loadImageFloat((dir / "l.exr").string());
+    EXPECT_EQ(l.width, 48);
+    EXPECT_EQ(l.height, 27);
+    std::ifstream sf(dir / "s.json");
+    const auto stats = nlohmann::json::parse(sf);
+    EXPECT_EQ(stats["cached"], false);
+    EXPECT_EQ(stats["primary_rays"], 48 * 27);
+    EXPECT_GT(stats["ao_rays"].get<long long>(), 0);
+
+    // The same model (the strategy is ignored): from the cache, the same values.
+    const auto again = run(common + " --buffer ao --out " + (dir / "ao.exr").string());
+    ASSERT_EQ(again.code, 0) << again.err;
+    EXPECT_NE(again.out.find("from the cache"), std::string::npos) << again.out;
+    const FloatImage ao = loadImageFloat((dir / "ao.exr").string());
+    EXPECT_EQ(ao.channels, 1);
+    // A honoured knob makes a new reference.
+    const auto other = run(common + " --set ssao.intensity=2 --buffer final --out " + (dir / "f.png").string());
+    ASSERT_EQ(other.code, 0) << other.err;
+    EXPECT_EQ(other.out.find("from the cache"), std::string::npos) << other.out;
+}
+
+TEST(ReferenceCli, BadInputGetsOneClearLine) {
+    const fs::path dir = test::tempDir() / "reference-cli-bad";
+    fs::create_directories(dir);
+    auto r = run("reference --scene spheres --size 8x8 --buffer depth --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("unknown reference buffer 'depth'"), std::string::npos) << r.err;
+    r = run("reference --scene spheres --size 8x8 --out " + (dir / "x.png").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("the L-buffer is HDR; write it as .exr"), std::string::npos) << r.err;
+    const fs::path broken = dir / "broken.json";
+    std::ofstream(broken) << "{ \"objects\": [ }";
+    r = run("reference --scene " + broken.string() + " --size 8x8 --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find(broken.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+    r = run("reference --scene spheres --size 8x8 --set ssao.intensity=9 --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_NE(r.err.find("'ssao.intensity' = 9 is out of range"), std::string::npos) << r.err;
+}
+
+}  // namespace
