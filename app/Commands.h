@@ -10,6 +10,7 @@ int runGuiCommand(int argc, char** argv);
 int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
+int runCompareCommand(int argc, char** argv);
 
 struct Command {
     const char* name;
@@ -25,6 +26,7 @@ inline constexpr Command kCommands[] = {
     {"gui", "[--scene S] [--preset P] [--set k=v]...", "open the workbench window (the default)", runGuiCommand},
     {"render", "--scene S --out FILE [...]", "render one buffer headless to .png/.exr; time the passes", runRenderCommand},
     {"bench", "--sweep k=a,b --lights N,.. [...]", "time configurations side by side (bench merge: join shards)", runBenchCommand},
+    {"compare", "A B | --a k=v --b k=v [...]", "error of one image against another: statistics, SSIM, FLIP, gates", runCompareCommand},
     {"list", "scenes|buffers|knobs|passes|presets", "the scenes, buffers, knobs, passes or presets there are", runListCommand},
 };
 
