@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <thread>
 #include <vector>
 
 #include "renderer/Error.h"
@@ -106,23 +108,33 @@ struct Plane {
 };
 
 // Separable convolution, kx along rows then ky along columns; outside the
-// image the edge pixel repeats.
+// image the edge pixel repeats. Rows are padded once and columns are summed a
+// whole row at a time, so the inner loops run over contiguous memory.
 Plane convolve(const Plane& in, const std::vector<double>& kx, const std::vector<double>& ky) {
+    const int w = in.width, h = in.height;
     const int rx = static_cast<int>(kx.size() / 2), ry = static_cast<int>(ky.size() / 2);
-    Plane tmp{in.width, in.height, std::vector<double>(in.v.size())};
-    for (int y = 0; y < in.height; ++y)
-        for (int x = 0; x < in.width; ++x) {
+    Plane tmp{w, h, std::vector<double>(in.v.size())};
+    std::vector<double> padded(static_cast<size_t>(w + 2 * rx));
+    for (int y = 0; y < h; ++y) {
+        const double* row = &in.v[static_cast<size_t>(y) * w];
+        for (int x = -rx; x < w + rx; ++x) padded[static_cast<size_t>(x + rx)] = row[std::clamp(x, 0, w - 1)];
+        double* out = &tmp.v[static_cast<size_t>(y) * w];
+        for (int x = 0; x < w; ++x) {
+            const double* p = &padded[static_cast<size_t>(x)];
             double s = 0;
-            for (int k = -rx; k <= rx; ++k) s += kx[static_cast<size_t>(k + rx)] * in.at(std::clamp(x + k, 0, in.width - 1), y);
-            tmp.v[static_cast<size_t>(y) * in.width + x] = s;
+            for (size_t k = 0; k < kx.size(); ++k) s += kx[k] * p[k];
+            out[x] = s;
         }
-    Plane out{in.width, in.height, std::vector<double>(in.v.size())};
-    for (int y = 0; y < in.height; ++y)
-        for (int x = 0; x < in.width; ++x) {
-            double s = 0;
-            for (int k = -ry; k <= ry; ++k) s += ky[static_cast<size_t>(k + ry)] * tmp.at(x, std::clamp(y + k, 0, in.height - 1));
-            out.v[static_cast<size_t>(y) * in.width + x] = s;
+    }
+    Plane out{w, h, std::vector<double>(in.v.size(), 0.0)};
+    for (int y = 0; y < h; ++y) {
+        double* o = &out.v[static_cast<size_t>(y) * w];
+        for (int k = -ry; k <= ry; ++k) {
+            const double weight = ky[static_cast<size_t>(k + ry)];
+            const double* src = &tmp.v[static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w];
+            for (int x = 0; x < w; ++x) o[x] += weight * src[x];
         }
+    }
     return out;
 }
 
@@ -317,10 +329,10 @@ FlipResult Flip::hdr(const FloatImage& reference, const FloatImage& test, const 
     const double ppd = resolvePpd(parameters);
     const int w = reference.width, h = reference.height;
     const size_t n = static_cast<size_t>(w) * h;
-    std::vector<Vec3> r(n), t(n);
+    std::vector<Vec3> referenceRgb(n), testRgb(n);
     for (size_t i = 0; i < n; ++i) {
-        r[i] = rgbAt(reference, i);
-        t[i] = rgbAt(test, i);
+        referenceRgb[i] = rgbAt(reference, i);
+        testRgb[i] = rgbAt(test, i);
     }
     // The exposure range from the reference's luminance (HDR-FLIP, section 3):
     // the start makes its brightest pixel reach 0.85 after tone mapping, the
@@ -333,7 +345,7 @@ FlipResult Flip::hdr(const FloatImage& reference, const FloatImage& test, const 
         std::vector<double> lum(n);
         double yMax = 0, yMinPositive = std::numeric_limits<double>::infinity();
         for (size_t i = 0; i < n; ++i) {
-            lum[i] = 0.2126 * r[i].x + 0.7152 * r[i].y + 0.0722 * r[i].z;
+            lum[i] = 0.2126 * referenceRgb[i].x + 0.7152 * referenceRgb[i].y + 0.0722 * referenceRgb[i].z;
             yMax = std::max(yMax, lum[i]);
             if (lum[i] > 0) yMinPositive = std::min(yMinPositive, lum[i]);
         }
@@ -353,22 +365,42 @@ FlipResult Flip::hdr(const FloatImage& reference, const FloatImage& test, const 
     if (start > stop) throw Error("HDR-FLIP: the start exposure must not exceed the stop exposure");
     const int count = parameters.exposureCount > 0 ? parameters.exposureCount
                                                    : static_cast<int>(std::max(2.0, std::ceil(stop - start)));
-    std::vector<double> worst(n, 0.0);
-    std::vector<Vec3> re(n), te(n);
     auto expose = [](Vec3 v, double m) {
         auto one = [m](double x) { return std::clamp(Flip::acesToneMap(x * m), 0.0, 1.0); };
         return Vec3{one(v.x), one(v.y), one(v.z)};
     };
-    for (int e = 0; e < count; ++e) {
-        const double exposure = count == 1 ? start : start + e * (stop - start) / (count - 1);
-        const double m = std::exp2(exposure);
-        for (size_t i = 0; i < n; ++i) {
-            re[i] = expose(r[i], m);
-            te[i] = expose(t[i], m);
+    // The exposures are independent: a few threads each take every k-th one
+    // and keep their own per-pixel maximum; the maxima are merged (the same
+    // result for any thread count).
+    const unsigned threads = std::max(1u, std::min({std::thread::hardware_concurrency(), 4u, static_cast<unsigned>(count)}));
+    std::vector<std::vector<double>> worstOf(threads, std::vector<double>(n, 0.0));
+    std::vector<std::exception_ptr> errors(threads);
+    auto work = [&](unsigned t) {
+        try {
+            std::vector<Vec3> re(n), te(n);
+            for (int e = static_cast<int>(t); e < count; e += static_cast<int>(threads)) {
+                const double exposure = count == 1 ? start : start + e * (stop - start) / (count - 1);
+                const double m = std::exp2(exposure);
+                for (size_t i = 0; i < n; ++i) {
+                    re[i] = expose(referenceRgb[i], m);
+                    te[i] = expose(testRgb[i], m);
+                }
+                const std::vector<double> ldr = ldrFlipLinear(re, te, w, h, ppd);
+                for (size_t i = 0; i < n; ++i) worstOf[t][i] = std::max(worstOf[t][i], ldr[i]);
+            }
+        } catch (...) {
+            errors[t] = std::current_exception();
         }
-        const std::vector<double> ldr = ldrFlipLinear(re, te, w, h, ppd);
-        for (size_t i = 0; i < n; ++i) worst[i] = std::max(worst[i], ldr[i]);
-    }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (std::thread& th : pool) th.join();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+    std::vector<double>& worst = worstOf[0];
+    for (unsigned t = 1; t < threads; ++t)
+        for (size_t i = 0; i < n; ++i) worst[i] = std::max(worst[i], worstOf[t][i]);
     FlipResult result = toResult(worst, w, h);
     result.hdr = true;
     result.startExposure = start;

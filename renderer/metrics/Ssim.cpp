@@ -33,25 +33,33 @@ struct Plane {
     std::vector<double> v;
 };
 
-// The separable Gaussian filter: along x, then along y.
+// The separable Gaussian filter: along x, then along y (rows padded once by
+// reflection; columns summed a whole row at a time).
 Plane gaussianFilter(const Plane& in, const std::vector<double>& kernel) {
+    const int w = in.width, h = in.height;
     const int r = static_cast<int>(kernel.size() / 2);
-    Plane tmp{in.width, in.height, std::vector<double>(in.v.size())};
-    for (int y = 0; y < in.height; ++y)
-        for (int x = 0; x < in.width; ++x) {
+    Plane tmp{w, h, std::vector<double>(in.v.size())};
+    std::vector<double> padded(static_cast<size_t>(w + 2 * r));
+    for (int y = 0; y < h; ++y) {
+        const double* row = &in.v[static_cast<size_t>(y) * w];
+        for (int x = -r; x < w + r; ++x) padded[static_cast<size_t>(x + r)] = row[reflectIndex(x, w)];
+        double* out = &tmp.v[static_cast<size_t>(y) * w];
+        for (int x = 0; x < w; ++x) {
+            const double* p = &padded[static_cast<size_t>(x)];
             double s = 0;
-            for (int k = -r; k <= r; ++k)
-                s += kernel[static_cast<size_t>(k + r)] * in.v[static_cast<size_t>(y) * in.width + reflectIndex(x + k, in.width)];
-            tmp.v[static_cast<size_t>(y) * in.width + x] = s;
+            for (size_t k = 0; k < kernel.size(); ++k) s += kernel[k] * p[k];
+            out[x] = s;
         }
-    Plane out{in.width, in.height, std::vector<double>(in.v.size())};
-    for (int y = 0; y < in.height; ++y)
-        for (int x = 0; x < in.width; ++x) {
-            double s = 0;
-            for (int k = -r; k <= r; ++k)
-                s += kernel[static_cast<size_t>(k + r)] * tmp.v[static_cast<size_t>(reflectIndex(y + k, in.height)) * in.width + x];
-            out.v[static_cast<size_t>(y) * in.width + x] = s;
+    }
+    Plane out{w, h, std::vector<double>(in.v.size(), 0.0)};
+    for (int y = 0; y < h; ++y) {
+        double* o = &out.v[static_cast<size_t>(y) * w];
+        for (int k = -r; k <= r; ++k) {
+            const double weight = kernel[static_cast<size_t>(k + r)];
+            const double* src = &tmp.v[static_cast<size_t>(reflectIndex(y + k, h)) * w];
+            for (int x = 0; x < w; ++x) o[x] += weight * src[x];
         }
+    }
     return out;
 }
 
