@@ -96,6 +96,8 @@ TEST(CompareCli, ThresholdsGiveTheDocumentedExitCodes) {
     const Result warn = run(files + " --fail 0.1 --warn 0.01 --failpercent 1");
     EXPECT_EQ(warn.code, 1) << warn.out;
     EXPECT_NE(warn.out.find("\nWARNING\n"), std::string::npos) << warn.out;
+    // "More than": 6 is not more than 0.5 % of 1200 = 6.
+    EXPECT_EQ(run(files + " --fail 0.1 --warn 0.3 --failpercent 0.5").code, 0);
     // 6 > 0.4 % of 1200 = 4.8: fail.
     const Result fail = run(files + " --fail 0.1 --warn 0.01 --failpercent 0.4 --warnpercent 5");
     EXPECT_EQ(fail.code, 2) << fail.out;
