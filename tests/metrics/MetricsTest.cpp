@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
@@ -305,6 +306,25 @@ TEST(Flip, HdrExposureRangeFromTheReference) {
     EXPECT_NEAR(r.startExposure, std::log2(2.118872 / 16.0), 1e-5);
     EXPECT_NEAR(r.stopExposure, std::log2(2.118872 / 9.0), 1e-5);
     EXPECT_EQ(r.exposureCount, 2);  // max(2, ceil(log2(16 / 9) = 0.83))
+}
+
+// A black reference, and one mostly black (median 0): finite exposures, a
+// finite map (the authors' code would stop at log2(x_t / 0) = infinity).
+TEST(Flip, HdrDarkReferencesStayFinite) {
+    const FlipResult black = Flip::hdr(flat(16, 16, 3, 0.0f), flat(16, 16, 3, 0.5f));
+    EXPECT_NEAR(black.startExposure, std::log2(2.118872), 1e-5);  // taken as luminance 1
+    EXPECT_EQ(black.startExposure, black.stopExposure);
+    EXPECT_GT(black.mean, 0.0);
+    FloatImage sparse = flat(16, 16, 3, 0.0f);
+    for (int c = 0; c < 3; ++c) {
+        sparse.at(2, 2, c) = 4.0f;
+        sparse.at(9, 9, c) = 0.25f;
+    }
+    const FlipResult r = Flip::hdr(sparse, flat(16, 16, 3, 0.0f));
+    EXPECT_NEAR(r.startExposure, std::log2(2.118872 / 4.0), 1e-5);
+    EXPECT_NEAR(r.stopExposure, std::log2(2.118872 / 0.25), 1e-5);  // the dimmest lit pixel
+    EXPECT_EQ(r.exposureCount, 4);
+    for (float v : r.map.pixels) EXPECT_TRUE(std::isfinite(v));
 }
 
 // An edge moved by one pixel: FLIP is high at the edge, 0 far from it (beyond
