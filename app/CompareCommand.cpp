@@ -235,7 +235,17 @@ int compare(int argc, char** argv) {
         std::cout << kUsage;
         return 0;
     }
-    RunConfig base = cl.runConfig();
+    // An input file that cannot be read (here: the preset) exits 4, as an image does.
+    auto unreadable = [](const FileError& e) {
+        std::fprintf(stderr, "deferred-workbench: cannot read %s\n", e.what());
+        return kExitFile;
+    };
+    RunConfig base;
+    try {
+        base = cl.runConfig();
+    } catch (const FileError& e) {
+        return unreadable(e);
+    }
     const auto size = cl.value("--size");
     const auto bufferFlag = cl.value("--buffer");
     const auto framesFlag = cl.value("--frames");
@@ -267,7 +277,11 @@ int compare(int argc, char** argv) {
     if (!aSets.empty() || !bSets.empty()) {
         if (!files.empty())
             throw UsageError("compare takes two image files or --a/--b knob sets, not both (got '" + files[0] + "')");
-        base.validate();
+        try {
+            base.validate();
+        } catch (const FileError& e) {
+            return unreadable(e);
+        }
         std::tie(base.width, base.height) = CommandLine::parseSize(size.value_or("1280x720"));
         base.frames = CommandLine::parseInt("--frames", framesFlag.value_or("1"), 1, 1000);
         for (auto* side : {&inA, &inB}) {
@@ -311,8 +325,7 @@ int compare(int argc, char** argv) {
         a = inputs.produce(inA);
         b = inputs.produce(inB);
     } catch (const FileError& e) {
-        std::fprintf(stderr, "deferred-workbench: cannot read %s\n", e.what());
-        return kExitFile;
+        return unreadable(e);
     }
     if (forceHdr || forceLdr) a.hdr = b.hdr = forceHdr;
     if (a.image.width != b.image.width || a.image.height != b.image.height || a.image.channels != b.image.channels) {

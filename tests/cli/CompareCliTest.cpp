@@ -240,6 +240,11 @@ TEST(CompareCli, TwoRendersOfOneScene) {
     const Result bad = run("compare" + scene + " --a ssao.enabled=maybe --b ssao.enabled=true");
     EXPECT_EQ(bad.code, 5);
     EXPECT_NE(bad.err.find("ssao.enabled"), std::string::npos) << bad.err;
+    // A scene or preset that cannot be read: 4 and one line, as for an image.
+    const Result noScene = run("compare --scene " + (dir / "no-scene.json").string() + " --a ssao.enabled=true --b ssao.enabled=false");
+    EXPECT_EQ(noScene.code, 4);
+    EXPECT_EQ(lines(noScene.err), 1) << noScene.err;
+    EXPECT_NE(noScene.err.find("no-scene.json: scene file not found"), std::string::npos) << noScene.err;
     // Files and knob sets together: a usage error.
     EXPECT_EQ(run("compare a.png b.png --a x=1 --b x=2").code, 5);
 }
