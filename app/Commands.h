@@ -11,6 +11,7 @@ int runRenderCommand(int argc, char** argv);
 int runListCommand(int argc, char** argv);
 int runBenchCommand(int argc, char** argv);
 int runReferenceCommand(int argc, char** argv);
+int runCompareCommand(int argc, char** argv);
 
 struct Command {
     const char* name;
@@ -27,6 +28,7 @@ inline constexpr Command kCommands[] = {
     {"render", "--scene S --out FILE [...]", "render one buffer headless to .png/.exr; time the passes", runRenderCommand},
     {"bench", "--sweep k=a,b --lights N,.. [...]", "time configurations side by side (bench merge: join shards)", runBenchCommand},
     {"reference", "--scene S --out FILE [...]", "the CPU ground truth of a view (Embree, double precision)", runReferenceCommand},
+    {"compare", "A B | --a k=v --b k=v [...]", "error of one image against another: statistics, SSIM, FLIP, gates", runCompareCommand},
     {"list", "scenes|buffers|knobs|passes|presets", "the scenes, buffers, knobs, passes or presets there are", runListCommand},
 };
 

@@ -23,6 +23,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   # Real glTF files, valid and broken, for the loader tests (they skip without it);
   # matplotlib for bench --plot (scripts/bench_plot.py), which the CLI test draws.
   packages+=(assimp-testmodels python3-matplotlib)
+  # scikit-image: the SSIM test compares against its structural_similarity (tests/metrics)
+  packages+=(python3-skimage)
   # real X key and mouse events for the window's input test (tests/gui/GuiInputTest.cpp)
   packages+=(xdotool)
   # librenderdoc.so, for the frame-capture test (it skips without it)

@@ -1,0 +1,250 @@
+// deferred-workbench compare as a user runs it: the idiff-style exit codes,
+// one clear line for bad input, the JSON's keys and numbers, the error maps,
+// and the two-render mode.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "renderer/io/ImageIO.h"
+#include "renderer/io/JsonGuard.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Result = test::CommandResult;
+Result run(const std::string& args) { return test::runWorkbench(args); }
+
+int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+}
+
+FloatImage flat(int w, int h, float v) {
+    FloatImage img;
+    img.width = w;
+    img.height = h;
+    img.channels = 3;
+    img.pixels.assign(static_cast<size_t>(w) * h * 3, v);
+    return img;
+}
+
+std::string write(const std::string& name, const FloatImage& img) {
+    const fs::path p = test::tempDir() / "compare" / name;
+    fs::create_directories(p.parent_path());
+    writeImage(p.string(), img);
+    return p.string();
+}
+
+// 40 x 30 grey 128/255; the test image has 6 pixels 51/255 brighter (0.2) and
+// 30 more 5/255 brighter (0.0196), in all three channels: 8-bit exact.
+struct Pair {
+    std::string reference, test;
+};
+const Pair& thresholdPair() {
+    static const Pair p = [] {
+        const FloatImage a = flat(40, 30, 128.0f / 255.0f);
+        FloatImage b = a;
+        for (int i = 0; i < 36; ++i)
+            for (int c = 0; c < 3; ++c) b.at(i, 10, c) = (i < 6 ? 179.0f : 133.0f) / 255.0f;
+        return Pair{write("ref.png", a), write("test.png", b)};
+    }();
+    return p;
+}
+
+nlohmann::json readJson(const fs::path& p) { return readJsonFile(p.string(), {kMaxJsonDepth, false}); }
+
+}  // namespace
+
+TEST(CompareCli, IdenticalImagesPass) {
+    const Pair& p = thresholdPair();
+    const fs::path json = test::tempDir() / "compare" / "same.json";
+    const Result r = run("compare " + p.reference + " " + p.reference + " --json " + json.string());
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("\nPASS\n"), std::string::npos) << r.out;
+    const nlohmann::json j = readJson(json);
+    EXPECT_EQ(j["mean"].get<double>(), 0.0);
+    EXPECT_EQ(j["max"].get<double>(), 0.0);
+    EXPECT_TRUE(j["psnr"].is_null());  // infinite
+    EXPECT_DOUBLE_EQ(j["ssim"].get<double>(), 1.0);
+    EXPECT_EQ(j["flip"].get<double>(), 0.0);
+    EXPECT_EQ(j["fail_count"].get<long long>(), 0);
+    EXPECT_EQ(j["verdict"], "pass");
+}
+
+// Each documented exit code from the thresholds, as idiff combines them:
+// 1200 pixels, 6 over 0.1, 36 over 0.01.
+TEST(CompareCli, ThresholdsGiveTheDocumentedExitCodes) {
+    const Pair& p = thresholdPair();
+    const std::string files = "compare " + p.reference + " " + p.test;
+    // idiff's defaults (1e-6, 0 %): any difference fails.
+    EXPECT_EQ(run(files).code, 2);
+    // 6 of 1200 = 0.5 % over --fail, allowed 1 %; 36 = 3 % over --warn, allowed 5 %.
+    EXPECT_EQ(run(files + " --fail 0.1 --warn 0.01 --failpercent 1 --warnpercent 5").code, 0);
+    // The same, no warnings allowed: 36 > 0.
+    const Result warn = run(files + " --fail 0.1 --warn 0.01 --failpercent 1");
+    EXPECT_EQ(warn.code, 1) << warn.out;
+    EXPECT_NE(warn.out.find("\nWARNING\n"), std::string::npos) << warn.out;
+    // "More than": 6 is not more than 0.5 % of 1200 = 6.
+    EXPECT_EQ(run(files + " --fail 0.1 --warn 0.3 --failpercent 0.5").code, 0);
+    // 6 > 0.4 % of 1200 = 4.8: fail.
+    const Result fail = run(files + " --fail 0.1 --warn 0.01 --failpercent 0.4 --warnpercent 5");
+    EXPECT_EQ(fail.code, 2) << fail.out;
+    EXPECT_NE(fail.out.find("6 pixels (0.5%) differ by more than 0.1, allowed 0.4%"), std::string::npos) << fail.out;
+    // --hardfail: the largest difference 0.2 exceeds 0.15.
+    EXPECT_EQ(run(files + " --fail 0.3 --warn 0.3 --hardfail 0.15").code, 2);
+    // --fail-ssim fails below it; --fail-flip above it.
+    const std::string loose = files + " --fail 0.3 --warn 0.3";
+    EXPECT_EQ(run(loose).code, 0);
+    EXPECT_EQ(run(loose + " --fail-ssim 0.99999").code, 2);
+    EXPECT_EQ(run(loose + " --fail-ssim 0.5").code, 0);
+    EXPECT_EQ(run(loose + " --fail-flip 0.001").code, 2);
+    EXPECT_EQ(run(loose + " --fail-flip 0.9").code, 0);
+}
+
+TEST(CompareCli, MismatchedSizesExitThree) {
+    const Pair& p = thresholdPair();
+    const std::string small = write("small.png", flat(20, 30, 0.5f));
+    const Result r = run("compare " + p.reference + " " + small);
+    EXPECT_EQ(r.code, 3);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("40x30x3"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("20x30x3"), std::string::npos) << r.err;
+}
+
+TEST(CompareCli, UnreadableFileExitsFourWithOneLine) {
+    const Pair& p = thresholdPair();
+    const fs::path missing = test::tempDir() / "compare" / "no-such.png";
+    const Result r = run("compare " + p.reference + " " + missing.string());
+    EXPECT_EQ(r.code, 4);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(missing.string() + ": image file not found"), std::string::npos) << r.err;
+    const fs::path garbage = test::tempDir() / "compare" / "garbage.png";
+    std::ofstream(garbage) << "not an image";
+    const Result g = run("compare " + garbage.string() + " " + p.reference);
+    EXPECT_EQ(g.code, 4);
+    EXPECT_EQ(lines(g.err), 1) << g.err;
+    EXPECT_NE(g.err.find(garbage.string()), std::string::npos) << g.err;
+}
+
+TEST(CompareCli, NonFiniteInputIsAClearError) {
+    FloatImage a = flat(16, 16, 0.5f);
+    const std::string good = write("finite.exr", a);
+    a.at(7, 3, 2) = std::nanf("");
+    const std::string bad = write("nan.exr", a);
+    const Result r = run("compare " + good + " " + bad);
+    EXPECT_EQ(r.code, 5);
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(bad + ": pixel (7, 3) channel 2 is NaN"), std::string::npos) << r.err;
+}
+
+TEST(CompareCli, JsonHasTheFixedKeysAndNumbers) {
+    const Pair& p = thresholdPair();
+    const fs::path json = test::tempDir() / "compare" / "diff.json";
+    const Result r = run("compare " + p.reference + " " + p.test + " --fail 0.1 --warn 0.01 --json " + json.string());
+    ASSERT_EQ(r.code, 2) << r.err;
+    const nlohmann::json j = readJson(json);
+    for (const char* key : {"mean", "rms", "psnr", "max", "ssim", "flip", "fail_count", "warn_count", "mean_per_channel",
+                            "rms_per_channel", "max_per_channel", "ssim_per_channel", "fail_count_per_channel",
+                            "ssim_encoding", "flip_variant", "reference", "test", "verdict", "exit_code"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    // Every channel: (6 x 51 + 30 x 5) / 255 over 1200 pixels.
+    const double mean = (6 * 51.0 + 30 * 5.0) / 255.0 / 1200.0;
+    EXPECT_NEAR(j["mean"].get<double>(), mean, 1e-7);
+    EXPECT_NEAR(j["rms"].get<double>(), std::sqrt((6 * 51.0 * 51.0 + 30 * 25.0) / (255.0 * 255.0) / 1200.0), 1e-7);
+    EXPECT_NEAR(j["max"].get<double>(), 51.0 / 255.0, 1e-6);
+    EXPECT_NEAR(j["psnr"].get<double>(), 20 * std::log10(1.0 / j["rms"].get<double>()), 1e-3);
+    ASSERT_EQ(j["mean_per_channel"].size(), 3u);
+    EXPECT_NEAR(j["mean_per_channel"][1].get<double>(), mean, 1e-7);
+    EXPECT_EQ(j["fail_count"].get<long long>(), 6);
+    EXPECT_EQ(j["warn_count"].get<long long>(), 36);
+    EXPECT_EQ(j["fail_count_per_channel"][2].get<long long>(), 6);
+    EXPECT_EQ(j["pixel_count"].get<long long>(), 1200);
+    EXPECT_EQ(j["ssim_encoding"], "as-stored");
+    EXPECT_EQ(j["flip_variant"], "LDR-FLIP");
+    EXPECT_GT(j["flip"].get<double>(), 0.0);
+    EXPECT_LT(j["ssim"].get<double>(), 1.0);
+    EXPECT_EQ(j["reference"]["kind"], "file");
+    EXPECT_EQ(j["reference"]["path"], p.reference);
+    EXPECT_EQ(j["verdict"], "fail");
+    EXPECT_EQ(j["exit_code"].get<int>(), 2);
+}
+
+TEST(CompareCli, ExrInputsUseHdrFlipAndWriteErrorMaps) {
+    FloatImage a = flat(24, 16, 1.0f), b = flat(24, 16, 2.0f);
+    const std::string ra = write("one.exr", a), rb = write("two.exr", b);
+    const fs::path dir = test::tempDir() / "compare";
+    const Result r = run("compare " + ra + " " + rb + " --fail 2 --warn 2 --error-map " + (dir / "map.exr").string() +
+                         " --json " + (dir / "hdr.json").string());
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    const nlohmann::json j = readJson(dir / "hdr.json");
+    EXPECT_EQ(j["flip_variant"], "HDR-FLIP");
+    EXPECT_EQ(j["ssim_encoding"], "reinhard");
+    EXPECT_TRUE(j["hdr"].get<bool>());
+    // The flat radiance pair worked by hand in tests/metrics/MetricsTest.cpp.
+    EXPECT_NEAR(j["flip"].get<double>(), 0.144751, 1e-5);
+    EXPECT_EQ(j["flip_exposures"]["count"].get<int>(), 2);
+    // EXR keeps channels by name (OpenEXR sorts them): look each up.
+    auto in = OIIO::ImageInput::open((dir / "map.exr").string());
+    ASSERT_TRUE(in);
+    const std::vector<std::string> names = in->spec().channelnames;
+    ASSERT_EQ(names.size(), 5u);
+    const FloatImage map = loadImageFloat((dir / "map.exr").string());
+    auto channel = [&](const std::string& name) {
+        const auto it = std::find(names.begin(), names.end(), name);
+        EXPECT_NE(it, names.end()) << name;
+        return static_cast<int>(it - names.begin());
+    };
+    EXPECT_FLOAT_EQ(map.at(3, 4, channel("absdiff.R")), 1.0f);
+    EXPECT_FLOAT_EQ(map.at(3, 4, channel("absdiff.B")), 1.0f);
+    EXPECT_NEAR(map.at(3, 4, channel("flip")), 0.144751, 1e-5);
+    // Flat images: no variance, SSIM = (2 mx my + C1) / (mx^2 + my^2 + C1) on
+    // the Reinhard values mx = 1/2, my = 2/3, C1 = 1e-4: 0.666767 / 0.694544 = 0.960006.
+    EXPECT_NEAR(map.at(3, 4, channel("ssim")), 0.960006, 1e-5);
+    EXPECT_NEAR(j["ssim"].get<double>(), 0.960006, 1e-5);
+
+    const FloatImage heat = loadImageFloat((dir / "map.png").string());  // beside the EXR
+    EXPECT_EQ(heat.width, 24);
+    EXPECT_EQ(heat.channels, 3);
+}
+
+// Two renders of one scene: equal knob sets are identical; SSAO off differs.
+TEST(CompareCli, TwoRendersOfOneScene) {
+    const fs::path dir = test::tempDir() / "compare";
+    const std::string scene = " --scene spheres --size 96x54";
+    const Result same = run("compare" + scene + " --a ssao.enabled=true --b ssao.enabled=true --json " +
+                            (dir / "same-render.json").string());
+    ASSERT_EQ(same.code, 0) << same.out << same.err;
+    EXPECT_EQ(readJson(dir / "same-render.json")["flip"].get<double>(), 0.0);
+    const Result differ = run("compare" + scene + " --buffer lbuffer --a ssao.enabled=true --b ssao.enabled=false,shadows.enabled=false" +
+                              " --json " + (dir / "render.json").string());
+    EXPECT_EQ(differ.code, 2) << differ.out << differ.err;
+    const nlohmann::json j = readJson(dir / "render.json");
+    EXPECT_GT(j["mean"].get<double>(), 0.0);
+    EXPECT_EQ(j["flip_variant"], "HDR-FLIP");
+    EXPECT_EQ(j["test"]["kind"], "render");
+    EXPECT_EQ(j["test"]["buffer"], "lbuffer");
+    EXPECT_EQ(j["test"]["set"].size(), 2u);
+    // A bad knob is a usage error (5), named before anything renders.
+    const Result bad = run("compare" + scene + " --a ssao.enabled=maybe --b ssao.enabled=true");
+    EXPECT_EQ(bad.code, 5);
+    EXPECT_NE(bad.err.find("ssao.enabled"), std::string::npos) << bad.err;
+    // A scene or preset that cannot be read: 4 and one line, as for an image.
+    const Result noScene = run("compare --scene " + (dir / "no-scene.json").string() + " --a ssao.enabled=true --b ssao.enabled=false");
+    EXPECT_EQ(noScene.code, 4);
+    EXPECT_EQ(lines(noScene.err), 1) << noScene.err;
+    EXPECT_NE(noScene.err.find("no-scene.json: scene file not found"), std::string::npos) << noScene.err;
+    // Files and knob sets together: a usage error.
+    EXPECT_EQ(run("compare a.png b.png --a x=1 --b x=2").code, 5);
+}
