@@ -30,6 +30,8 @@ constexpr const char* kUsage =
     "usage: deferred-workbench compare REFERENCE TEST [options]\n"
     "       deferred-workbench compare --a k=v[,k=v...] --b k=v[,k=v...] [--scene S] [--preset P] [--set k=v]...\n"
     "                                  [--size WxH] [--buffer final|lbuffer|NAME] [--frames N] [options]\n"
+    "       deferred-workbench compare --against reference [--b k=v[,k=v...]] [--scene S] [--preset P] [--set k=v]...\n"
+    "                                  [--size WxH] [--buffer final|lbuffer|ssao.blurred] [--ao-rays N] [options]\n"
     "  Two image files: EXR/HDR/PFM are HDR (linear radiance: HDR-FLIP, SSIM on v/(1+v));\n"
     "  anything else (PNG, JPEG, ...) LDR (display values: LDR-FLIP, SSIM as stored).\n"
     "  Two renders: the scene rendered twice with the same --scene/--preset/--set, then side A's\n"
@@ -37,6 +39,11 @@ constexpr const char* kUsage =
     "  without its flag renders the shared configuration alone); A is the\n"
     "  reference. --buffer final (default) compares the displayed image (LDR), any other buffer\n"
     "  its raw float values (HDR; lbuffer is the linear radiance). Default size 1280x720.\n"
+    "  Against the reference: side A is the CPU ground truth (docs/reference.md) of the same\n"
+    "  configuration with --b's knobs (the knobs that define the model are the render's), rendered\n"
+    "  once and cached; final against its tone-mapped image (no bloom, DoF or FXAA: set them false\n"
+    "  on the render), lbuffer against its L-buffer, ssao.raw/ssao.blurred against its ray-traced AO\n"
+    "  (--ao-rays, default 64).\n"
     "options:\n"
     "  --error-map FILE.exr  per-pixel maps: absdiff.<channel>..., ssim (mean of the colour\n"
     "                      channels' SSIM), flip\n"
@@ -251,6 +258,8 @@ int compare(int argc, char** argv) {
     const auto framesFlag = cl.value("--frames");
     const std::vector<std::string> aSets = splitSets("--a", cl.values("--a"));
     const std::vector<std::string> bSets = splitSets("--b", cl.values("--b"));
+    const auto against = cl.value("--against");
+    const auto aoRaysFlag = cl.value("--ao-rays");
     const auto errorMap = cl.value("--error-map");
     auto heatMap = cl.value("--heat-map");
     const auto json = cl.value("--json");
@@ -274,9 +283,13 @@ int compare(int argc, char** argv) {
     const std::vector<std::string> files = cl.positional();
 
     CompareInput inA, inB;
-    if (!aSets.empty() || !bSets.empty()) {
+    if (against && *against != "reference")
+        throw UsageError("--against: only 'reference' (the CPU ground truth) is known, not '" + *against + "'");
+    if (against && !aSets.empty()) throw UsageError("--against reference is side A: give the render's knobs with --b, not --a");
+    if (aoRaysFlag && !against) throw UsageError("--ao-rays applies to --against reference");
+    if (!aSets.empty() || !bSets.empty() || against) {
         if (!files.empty())
-            throw UsageError("compare takes two image files or --a/--b knob sets, not both (got '" + files[0] + "')");
+            throw UsageError("compare takes two image files, or --a/--b knob sets or --against reference, not both (got '" + files[0] + "')");
         try {
             base.validate();
         } catch (const FileError& e) {
@@ -293,11 +306,18 @@ int compare(int argc, char** argv) {
         inB.label = "--b";
         inA.run.sets.insert(inA.run.sets.end(), aSets.begin(), aSets.end());
         inB.run.sets.insert(inB.run.sets.end(), bSets.begin(), bSets.end());
+        if (against) {
+            inA.kind = CompareInput::Kind::Reference;
+            inA.label = "reference";
+            inA.run.sets = inB.run.sets;  // the model's knobs are the render's
+            inA.aoRays = CommandLine::parseInt("--ao-rays", aoRaysFlag.value_or("64"), 1, 1 << 20);
+            CompareInputs::referenceBufferFor(inA.buffer);  // a buffer without a counterpart fails before rendering
+        }
         inA.run.validate();
         inB.run.validate();
     } else {
         if (files.size() != 2)
-            throw UsageError("compare needs two image files (REFERENCE TEST), or --a and --b knob sets; got " +
+            throw UsageError("compare needs two image files (REFERENCE TEST), --a and --b knob sets, or --against reference; got " +
                              std::to_string(files.size()) + " file" + (files.size() == 1 ? "" : "s"));
         for (const auto& [flag, given] : {std::pair{"--size", size.has_value()}, std::pair{"--buffer", bufferFlag.has_value()},
                                           std::pair{"--frames", framesFlag.has_value()}})

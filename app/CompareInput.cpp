@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -29,12 +32,13 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
         out.describe = "file " + input.path + (out.hdr ? " (HDR)" : " (LDR)");
         return out;
     }
-    // A render: the same run configuration, session and frame loop as `render`.
     const std::string spec = input.run.sceneSpec();
     if (!loaded_ || loadedSpec_ != spec) {
         loaded_ = loadScene(spec);
         loadedSpec_ = spec;
     }
+    if (input.kind == CompareInput::Kind::Reference) return produceReference(input);
+    // A render: the same run configuration, session and frame loop as `render`.
     if (!context_) context_ = HeadlessGlContext::create();
     // A fresh session per side: each starts at frame 0 with no state from the
     // other (flame particles move with the frame index).
@@ -50,6 +54,49 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
     out.describe = "render of " + session_->scene().name + ", " + input.buffer + ", " + std::to_string(input.run.width) +
                    "x" + std::to_string(input.run.height) + (out.hdr ? " (HDR)" : " (LDR)");
     for (const std::string& s : input.run.sets) out.describe += ", --set " + s;
+    return out;
+}
+
+std::string CompareInputs::referenceBufferFor(const std::string& buffer) {
+    if (buffer == "final" || buffer == "lbuffer") return buffer;
+    if (buffer == "ssao.raw" || buffer == "ssao.blurred") return "ao";
+    throw Error("--against reference: the reference has no counterpart of buffer '" + buffer +
+                "' (final, lbuffer, or ssao.raw / ssao.blurred against its ray-traced AO)");
+}
+
+CompareImage CompareInputs::produceReference(const CompareInput& input) {
+    const std::string name = referenceBufferFor(input.buffer);
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    input.run.applyKnobs(knobs, *loaded_);
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, *loaded_);
+    model.aoRays = input.aoRays;
+    reference::ReferenceRequest request;
+    request.camera = input.run.camera(*loaded_);
+    request.width = input.run.width;
+    request.height = input.run.height;
+    const reference::ReferenceCache cache;
+    const std::string key = reference::referenceKey(*loaded_, model, request);
+    std::optional<reference::ReferenceImages> images = cache.load(key);
+    const bool cached = images.has_value();
+    if (!cached) {
+        images = reference::renderReference(*loaded_, model, request);
+        cache.store(key, *images);
+    }
+    const reference::KnobReport report = reference::reportKnobs(knobs);
+    if (!report.unmodelledOn.empty() && name == "final") {
+        std::string on;
+        for (const auto& k : report.unmodelledOn) on += " " + k;
+        std::fprintf(stderr, "note: the reference's final image has no%s (set them false on the render to compare "
+                     "the shading alone)\n", on.c_str());
+    }
+    CompareImage out;
+    out.label = input.label;
+    out.image = *images->buffer(name);
+    out.hdr = name != "final";
+    out.describe = "CPU reference of " + loaded_->name + ", " + name + ", " + std::to_string(request.width) + "x" +
+                   std::to_string(request.height) + (out.hdr ? " (HDR)" : " (LDR)") +
+                   (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
+                   (cached ? ", from the cache" : "");
     return out;
 }
 

@@ -17,12 +17,16 @@ class HeadlessGlContext;
 class RenderSession;
 
 struct CompareInput {
-    enum class Kind { File, Render };
+    // Reference: the CPU ground truth (renderer/reference) of `run`, its
+    // buffer matching `buffer` (final, lbuffer; ssao.raw / ssao.blurred ->
+    // its ray-traced AO), through the reference cache.
+    enum class Kind { File, Render, Reference };
     Kind kind = Kind::File;
     std::string path;             // File: the image file
     RunConfig run;                // Render: scene, preset, --set (base then this side's), size, frames
     std::string buffer = "final"; // Render: the output read back
     std::string label;            // how messages and the JSON name this side ("a.png", "--a")
+    int aoRays = 64;              // Reference: AO rays per pixel
 };
 
 struct CompareImage {
@@ -46,8 +50,11 @@ public:
 
     // HDR by a file's extension: .exr, .hdr, .pfm.
     static bool isHdrFile(const std::string& path);
+    // The reference buffer a render's buffer is compared with; throws Error when there is none.
+    static std::string referenceBufferFor(const std::string& buffer);
 
 private:
+    CompareImage produceReference(const CompareInput& input);
     std::unique_ptr<HeadlessGlContext> context_;
     std::unique_ptr<RenderSession> session_;
     std::string loadedSpec_;

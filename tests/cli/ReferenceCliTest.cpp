@@ -67,4 +67,32 @@ TEST(ReferenceCli, BadInputGetsOneClearLine) {
     EXPECT_NE(r.err.find("'ssao.intensity' = 9 is out of range"), std::string::npos) << r.err;
 }
 
+TEST(ReferenceCli, CompareAgainstTheReference) {
+    const fs::path dir = test::tempDir() / "reference-compare";
+    fs::create_directories(dir);
+    const std::string env = "DW_REFERENCE_CACHE=" + (dir / "cache").string() + " ";
+    const std::string accurate =
+        " --b lighting.strategy=fullscreen,lighting.threshold=1e-5,ssao.enabled=false,gbuffer.texture_filter=base_level,"
+        "shadows.enabled=false";
+    auto r = test::runCommand(env + DW_WORKBENCH_BINARY + std::string(" compare --against reference --scene spheres --size 64x36 "
+                                                                       "--buffer lbuffer --fail 0.01 --warn 0.01 --json ") +
+                              (dir / "c.json").string() + accurate);
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("CPU reference of spheres, lbuffer"), std::string::npos) << r.out;
+    std::ifstream jf(dir / "c.json");
+    const auto j = nlohmann::json::parse(jf);
+    EXPECT_LT(j["mean"].get<double>(), 1e-3);
+    EXPECT_LT(j["flip"].get<double>(), 0.02);
+    // The entry is in the cache the variable names.
+    int entries = 0;
+    for (const auto& e : fs::directory_iterator(dir / "cache")) entries += e.path().extension() == ".json";
+    EXPECT_EQ(entries, 1);
+    // A buffer with no counterpart: one line, before anything renders.
+    r = run("compare --against reference --scene spheres --size 8x8 --buffer gbuffer.normal");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("no counterpart of buffer 'gbuffer.normal'"), std::string::npos) << r.err;
+    r = run("compare --against reference --a ssao.enabled=false --scene spheres --size 8x8");
+    EXPECT_NE(r.err.find("give the render's knobs with --b"), std::string::npos) << r.err;
+}
+
 }  // namespace
