@@ -28,6 +28,7 @@
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
+#include "renderer/passes/ReferencePass.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/InputQueue.h"
 #include "ui/Widgets.h"
@@ -215,6 +216,15 @@ nlohmann::json itemsReport() {
     return items;
 }
 
+// The CPU reference the workbench shows, and the frame's error against it.
+nlohmann::json referenceReport(RenderSession& session) {
+    const ReferencePass* pass = session.pipeline().pass<ReferencePass>();
+    if (!pass || !pass->hasReference()) return {{"shown", false}};
+    const ReferencePass::Errors& e = pass->errors();
+    return {{"shown", true}, {"stats", pass->stats()}, {"mean_absolute", e.meanAbsolute}, {"rms", e.rms},
+            {"max", e.max}, {"mean_relative", e.meanRelative}};
+}
+
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
 void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
@@ -242,7 +252,10 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                                          {"pixel", {state.probe.pixel.x, state.probe.pixel.y}},
                                          {"shows_values", state.probe.result.inside}}},
                               {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
-                              {"viewport", {{"output", state.viewport.output}, {"zoom", state.viewport.zoom}}},
+                              {"viewport", {{"output", state.viewport.output},
+                                            {"zoom", state.viewport.zoom},
+                                            {"unavailable", state.viewportImage.unavailable}}},
+                              {"reference", referenceReport(session)},
                               {"render_size", {state.renderSize.x, state.renderSize.y}},
                               {"resolution", {{"scale", state.viewport.scale()},
                                               {"auto", state.viewport.resolution == ui::ResolutionScale::Auto},

@@ -280,6 +280,7 @@ struct UiState {
     // Requests the app carries out after the UI is drawn.
     bool requestScreenshot = false;
     bool requestRenderDocCapture = false;
+    bool requestReference = false;  // F9, Render > CPU reference of this view
     bool forceRender = false;  // render the next frame even if nothing changed (a capture of it)
     // RenderDoc, as the app found it: whether captures can be taken, why not, and the captures taken.
     bool renderdocAvailable = false;

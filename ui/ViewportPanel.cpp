@@ -256,6 +256,7 @@ void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     if (pressed(GLFW_KEY_F5)) state.requestReloadShaders = true;
     if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
     if (pressed(GLFW_KEY_F11)) state.requestRenderDocCapture = true;
+    if (pressed(GLFW_KEY_F9)) state.requestReference = true;
     if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
 }
 
@@ -267,6 +268,7 @@ const char* shortcutHelp() {
            "a     world axes                 v  light-volume wireframes   l  animate lights\n"
            "click pin the pixel probe        Esc unpin\n"
            "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
+           "F9    CPU reference of this view, in the background (then reference.* and compare.error)\n"
            "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"
            "F12   screenshot of the window to PNG\n"
            "Ctrl+O open a scene file (the Scene panel's path field; files dropped on the window open too)\n"

@@ -83,6 +83,8 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
             ImGui::SetTooltip("from %s (DW_SHADER_DIR=FOLDER picks another folder at start)", session.shaders().root().c_str());
         ImGui::MenuItem(("shader folder: " + session.shaders().root().string()).c_str(), nullptr, false, false);
         if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
+        ImGui::Separator();
+        reference_.menuItems(state, session);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
                                                              : state.renderdocWhy.c_str());
@@ -92,6 +94,7 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::MenuItem("Keys", nullptr, &p.keys);
         ImGui::EndMenu();
     }
+    reference_.progressBar();
     // Frame facts at the right of the bar: the GPU time of the latest
     // rendered frame (or which frame's it is while that one's is in flight).
     char info[256];
@@ -163,6 +166,7 @@ void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
     // A file dropped on the window opens as a scene (the last of several wins).
     for (const std::string& f : state.droppedFiles) openScene(state, session, f);
     state.droppedFiles.clear();
+    reference_.update(state, session);
     menuBar(state, session);
     if (state.resetLayout) layout_.reset();
     state.resetLayout = false;

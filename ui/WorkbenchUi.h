@@ -10,6 +10,7 @@
 #include "ui/PanelLayout.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ProbePanel.h"
+#include "ui/ReferenceControls.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
 #include "ui/UiState.h"
@@ -52,6 +53,7 @@ private:
     KnobsPanel knobs_;
     PresetsPanel presets_;
     MessagesPanel messages_;
+    ReferenceControls reference_;
 };
 
 }  // namespace dw::ui

@@ -12,6 +12,7 @@
 #include "renderer/passes/LightingPass.h"
 #include "renderer/passes/ShadowPass.h"
 #include "renderer/passes/LuminancePass.h"
+#include "renderer/passes/ReferencePass.h"
 #include "renderer/passes/SkyboxPass.h"
 #include "renderer/passes/SsaoBlurPass.h"
 #include "renderer/passes/SsaoPass.h"
@@ -38,6 +39,7 @@ std::vector<PassEntry> builtinPasses() {
         entry<LightingPass>(PassStage::Lighting),
         entry<LuminancePass>(PassStage::Hdr),
         entry<BloomPass>(PassStage::Hdr),
+        entry<ReferencePass>(PassStage::Hdr),
         entry<TonemapPass>(PassStage::Tonemap),
         entry<DofPass>(PassStage::Post),
         entry<FxaaPass>(PassStage::Post),

@@ -776,3 +776,40 @@ TEST(Gui, UnderXvfbADeeplyNestedLayoutJsonIsNotUsedAndTheWindowStarts) {
                               std::string(DW_WORKBENCH_BINARY) + " --scene spheres --set ssao.enabled=false; echo exit=$?'");
     EXPECT_NE(live.out.find("exit=124"), std::string::npos) << live.out;
 }
+
+namespace {
+
+nlohmann::json scriptedReport(const std::string& name, const std::string& events, int frames, const std::string& view) {
+    const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
+    const Result r = shell("DW_REFERENCE_CACHE=" + (test::tempDir() / (name + "-cache")).string() +
+                           " xvfb-run -a -s '-screen 0 1024x640x24' " + std::string(DW_WORKBENCH_BINARY) +
+                           " --scene spheres --size 1024x640 --resolution 1/4 --frames " + std::to_string(frames) +
+                           " --view " + view + " --events " + ev.string() + " --layout-out " + out.string());
+    EXPECT_EQ(r.code, 0) << r.out;
+    std::ifstream f(out);
+    return r.code == 0 ? nlohmann::json::parse(f) : nlohmann::json::object();
+}
+
+}  // namespace
+
+// Issue 20, in the workbench: F9 renders the CPU reference in the background;
+// its outputs and the frame's error against it appear like any other output,
+// and a changed view withdraws it with the reason.
+TEST(Gui, TheCpuReferenceOfTheViewAppearsAsOutputsAndIsWithdrawnWhenTheViewChanges) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const nlohmann::json shown = scriptedReport("reference-shown", "3 key F9\n", 50, "compare.error");
+    ASSERT_TRUE(shown.contains("reference"));
+    EXPECT_TRUE(shown["reference"]["shown"].get<bool>()) << shown.dump();
+    EXPECT_EQ(shown["viewport"]["unavailable"], "") << shown.dump();
+    // The default knobs (mip-mapped textures, SSAO, shadow maps) differ from the reference: a measured, finite error.
+    EXPECT_GT(shown["reference"]["mean_absolute"].get<double>(), 0.0);
+    EXPECT_LT(shown["reference"]["mean_absolute"].get<double>(), 0.1);
+    EXPECT_NE(shown["reference"]["stats"].get<std::string>().find("lbuffer vs CPU reference"), std::string::npos);
+
+    const nlohmann::json stale = scriptedReport("reference-stale", "3 key F9\n45 key Left\n", 55, "reference.final");
+    ASSERT_TRUE(stale.contains("reference"));
+    EXPECT_FALSE(stale["reference"]["shown"].get<bool>()) << stale.dump();
+    EXPECT_NE(stale["viewport"]["unavailable"].get<std::string>().find("the view changed since the CPU reference"),
+              std::string::npos)
+        << stale.dump();
+}
