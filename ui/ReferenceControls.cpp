@@ -35,7 +35,7 @@ void ReferenceControls::start(UiState& state, RenderSession& session) {
                    state.time);
 }
 
-void ReferenceControls::menuItems(UiState& state, RenderSession& session) {
+void ReferenceControls::menuItems(UiState& state) {
     if (ImGui::MenuItem("CPU reference of this view", "F9", false, !job_.running())) state.requestReference = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("ray-traced ground truth (Embree, double precision) of this view, in the background; then "

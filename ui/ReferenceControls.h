@@ -16,7 +16,7 @@ namespace dw::ui {
 
 struct ReferenceControls {
     // Menu items (inside the Render menu).
-    void menuItems(UiState& state, RenderSession& session);
+    void menuItems(UiState& state);
     // The progress bar and cancel button while a render runs (in the menu bar).
     void progressBar();
     // Every frame: takes a finished render, withdraws a stale one.

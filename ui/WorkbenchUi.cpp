@@ -84,7 +84,7 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::MenuItem(("shader folder: " + session.shaders().root().string()).c_str(), nullptr, false, false);
         if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
         ImGui::Separator();
-        reference_.menuItems(state, session);
+        reference_.menuItems(state);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
                                                              : state.renderdocWhy.c_str());

@@ -54,6 +54,7 @@ SurfaceSample evaluateSurface(const RayScene& rays, const RayHit& hit, const glm
 
     glm::dvec4 base = glm::dvec4(m.baseColor) * interpolate(g.colors, t, u, v);
     if (m.baseColorTexture >= 0) base *= sample(m.baseColorTexture, Material::BaseColorSlot, true);
+    s.alpha = std::clamp(base.a, 0.0, 1.0);
 
     glm::dvec3 N = interpolate(g.normals, t, u, v);
     const double nLength = glm::length(N);

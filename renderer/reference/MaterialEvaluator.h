@@ -21,6 +21,7 @@ struct SurfaceSample {
     double exponent = 1.0;
     glm::dvec3 emissive{0.0};
     double occlusion = 1.0;  // baked ambient accessibility (occlusionTexture), 1 without one
+    double alpha = 1.0;      // base colour alpha (factor x vertex colour x texture), for blended materials
 };
 
 // `dir` is the incoming ray's direction (any length).

@@ -33,6 +33,12 @@ void filterHits(const RTCFilterFunctionNArguments* args) {
             args->valid[i] = 0;
             continue;
         }
+        // Blended surfaces cast no shadow and occlude no AO (as on the GPU,
+        // where they are in neither the shadow maps nor the G-buffer).
+        if (ctx->visibility == Visibility::Secondary && ctx->scene->blended(instance)) {
+            args->valid[i] = 0;
+            continue;
+        }
         if (ctx->visibility == Visibility::Camera) {
             const glm::dvec3 dir(RTCRayN_dir_x(rays, args->N, i), RTCRayN_dir_y(rays, args->N, i),
                                  RTCRayN_dir_z(rays, args->N, i));
@@ -127,7 +133,7 @@ RayScene::RayScene(const Scene& scene, const glm::dvec3& origin)
         for (size_t i = 0; i < triangles * 3; ++i) ib[i] = mesh.indices[i];
         const Material& mat = scene.materials[mesh.material];
         rtcSetGeometryIntersectFilterFunction(geom, filterHits);
-        if (mat.alphaMode == AlphaMode::Mask) rtcSetGeometryOccludedFilterFunction(geom, filterHits);
+        if (mat.alphaMode != AlphaMode::Opaque) rtcSetGeometryOccludedFilterFunction(geom, filterHits);
         rtcCommitGeometry(geom);
         const unsigned id = rtcAttachGeometry(embree_->scene, geom);
         rtcReleaseGeometry(geom);
@@ -161,6 +167,10 @@ bool RayScene::cutOut(int instance, int tri, double u, double v) const {
         alpha *= sampleBilinear(scene_.images[m.baseColorTexture], map, transformUv(map, uv), true).a;
     }
     return alpha < m.alphaCutoff;
+}
+
+bool RayScene::blended(int instance) const {
+    return scene_.materials[instances_[instance].material].alphaMode == AlphaMode::Blend;
 }
 
 bool RayScene::backFacing(int instance, int tri, const glm::dvec3& dir) const {

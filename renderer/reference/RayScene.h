@@ -16,8 +16,9 @@
 // - primary rays (Visibility::Camera) skip the back faces of single-sided
 //   materials (the GPU culls them); secondary rays (shadow, AO) stop at any
 //   face.
-// Blended materials (glTF BLEND) are opaque here, as the deferred pipeline
-// draws them today.
+// - blended materials (glTF BLEND) are seen by primary rays only: they cast
+//   no shadow and occlude no AO (on the GPU they are in neither the shadow
+//   maps nor the G-buffer); ReferenceRenderer composites them in exact order.
 // Errors: Error when Embree cannot create its device or build the scene.
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -75,6 +76,8 @@ public:
 
     // Whether an alpha-masked material cuts the point out (used by Embree's filters).
     bool cutOut(int instance, int triangle, double u, double v) const;
+    // Whether the instance's material is blended (AlphaMode::Blend).
+    bool blended(int instance) const;
     // Whether the ray direction meets the triangle's back face (origin-relative geometric normal by winding).
     bool backFacing(int instance, int triangle, const glm::dvec3& dir) const;
 

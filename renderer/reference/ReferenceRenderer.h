@@ -11,7 +11,10 @@
 // classic attenuation) or with Ferko's window at the threshold's radius (the
 // windowed model); hard shadows by a ray to each shadow-casting light; the
 // ambient term k_a i_a scaled by the accessibility A and the baked occlusion,
-// plus emission; the sky where no geometry is.
+// plus emission; the sky where no geometry is. Blended materials (glTF
+// BLEND) are composited front to back along the primary ray in exact depth
+// order, premultiplied "over" (C = a C_s + (1 - a) C_d), each shaded like an
+// opaque surface but without AO; they cast no shadow and occlude no AO.
 //
 // Ambient occlusion (when the model has it) is the integral
 //     A = 1 - intensity * (1/pi) Int_{hemisphere(N)} V_R(w) / (1 + (d(w)/R)^2) cos(theta) dw,
@@ -64,6 +67,7 @@ struct ReferenceStatistics {
     double buildSeconds = 0.0;  // Embree scene build
     int threads = 0;
     long long primaryRays = 0, shadowRays = 0, aoRays = 0;
+    long long blendedHits = 0;  // blended surfaces composited (extra primary-ray hits)
     double aoStandardErrorMean = 0.0;  // mean over surface pixels of the per-pixel standard error of A
     double aoStandardErrorMax = 0.0;
     size_t triangles = 0;

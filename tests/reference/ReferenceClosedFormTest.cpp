@@ -214,6 +214,43 @@ TEST(ReferenceClosedForm, HardShadowEdgeIsWhereTheGeometryPutsIt) {
     EXPECT_GT(lit, 1000);
 }
 
+// Blended surfaces along the ray, composited in exact depth order with
+// premultiplied "over": C = a1 C1 + (1 - a1) (a2 C2 + (1 - a2) C_behind).
+TEST(ReferenceClosedForm, BlendedSurfacesCompositeInExactDepthOrder) {
+    Scene s;
+    s.ambient = glm::vec3(0.0f);
+    auto emitter = [&](glm::vec3 emission, float alpha, AlphaMode mode) {
+        Material m;
+        m.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, alpha);
+        m.specularColor = glm::vec3(0.0f);
+        m.emissive = emission;
+        m.alphaMode = mode;
+        return s.addMaterial(m);
+    };
+    auto pane = [&](int material, float z) {
+        Mesh m = shapes::plane(4.0f, 4.0f);
+        m.material = material;
+        const glm::mat4 t = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, z)) *
+                            glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0));
+        s.instances.push_back({s.addMesh(std::move(m)), t});
+    };
+    const int red = emitter({1, 0, 0}, 0.5f, AlphaMode::Blend), green = emitter({0, 1, 0}, 0.25f, AlphaMode::Blend);
+    const int blue = emitter({0, 0, 1}, 1.0f, AlphaMode::Opaque);
+    pane(green, 0.0f);  // added out of depth order on purpose
+    pane(blue, -1.0f);
+    pane(red, 1.0f);
+    s.camera.position = {0.0f, 0.0f, 5.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.camera.fovYDegrees = 20.0f;
+    const auto img = reference::renderReference(s, plainModel(), requestFor(s, 8, 8));
+    const float* c = &img.lbuffer.pixels[(4 * 8 + 4) * 4];
+    EXPECT_NEAR(c[0], 0.5, 1e-6);
+    EXPECT_NEAR(c[1], 0.5 * 0.25, 1e-6);
+    EXPECT_NEAR(c[2], 0.5 * 0.75, 1e-6);
+    EXPECT_EQ(img.stats.blendedHits, 2 * 8 * 8);
+    EXPECT_EQ(img.background[4 * 8 + 4], 0);
+}
+
 Scene builtin(const std::string& name) { return loadScene(name); }
 
 TEST(ReferenceRenderer, SameImageForAnyThreadCount) {
