@@ -184,6 +184,7 @@ int runReferenceCommand(int argc, char** argv) {
                             {"primary_rays", s.primaryRays},
                             {"shadow_rays", s.shadowRays},
                             {"ao_rays", s.aoRays},
+                            {"blended_hits", s.blendedHits},
                             {"ao_rays_per_pixel", model.rayTracedAo ? model.aoRays : 0},
                             {"ao_standard_error_mean", s.aoStandardErrorMean},
                             {"ao_standard_error_max", s.aoStandardErrorMax},

@@ -121,6 +121,7 @@ nlohmann::json statsJson(const ReferenceStatistics& s) {
             {"primary_rays", s.primaryRays},
             {"shadow_rays", s.shadowRays},
             {"ao_rays", s.aoRays},
+            {"blended_hits", s.blendedHits},
             {"ao_standard_error_mean", s.aoStandardErrorMean},
             {"ao_standard_error_max", s.aoStandardErrorMax},
             {"triangles", s.triangles}};
@@ -205,6 +206,7 @@ std::optional<ReferenceImages> ReferenceCache::load(const std::string& key) cons
         r.stats.primaryRays = s.at("primary_rays").get<long long>();
         r.stats.shadowRays = s.at("shadow_rays").get<long long>();
         r.stats.aoRays = s.at("ao_rays").get<long long>();
+        r.stats.blendedHits = s.value("blended_hits", 0LL);
         r.stats.aoStandardErrorMean = s.at("ao_standard_error_mean").get<double>();
         r.stats.aoStandardErrorMax = s.at("ao_standard_error_max").get<double>();
         r.stats.triangles = s.at("triangles").get<size_t>();
