@@ -318,6 +318,13 @@ int compare(int argc, char** argv) {
         reads = CommandLine::inputFiles(base);
     }
     CommandLine::requireDistinctFiles(writes, reads);
+    // An output that cannot be written fails before any image is read or rendered.
+    for (const auto& [what, path] : writes) {
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        std::error_code ec;
+        if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+            throw Error(what + " " + path + ": folder " + folder.string() + " does not exist");
+    }
 
     CompareInputs inputs;
     CompareImage a, b;
