@@ -14,6 +14,7 @@
 #include "app/CompareInput.h"
 #include "app/Commands.h"
 #include "renderer/Error.h"
+#include "renderer/io/ImageIO.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ComparisonGates.h"
 #include "renderer/metrics/HeatMap.h"
@@ -327,6 +328,8 @@ int compare(int argc, char** argv) {
         inA.path = inA.label = files[0];
         inB.path = inB.label = files[1];
     }
+    if (errorMap && !isFloatFormat(*errorMap))
+        throw UsageError("--error-map writes float maps: give it an .exr name, got '" + *errorMap + "'");
     if (errorMap && !heatMap) heatMap = std::filesystem::path(*errorMap).replace_extension(".png").string();
     CommandLine::NamedFiles writes, reads;
     if (errorMap) writes.emplace_back("--error-map", *errorMap);
@@ -338,6 +341,13 @@ int compare(int argc, char** argv) {
         reads = CommandLine::inputFiles(base);
     }
     CommandLine::requireDistinctFiles(writes, reads);
+    // An output that cannot be written fails before any image is read or rendered.
+    for (const auto& [what, path] : writes) {
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        std::error_code ec;
+        if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+            throw Error(what + " " + path + ": folder " + folder.string() + " does not exist");
+    }
 
     CompareInputs inputs;
     CompareImage a, b;

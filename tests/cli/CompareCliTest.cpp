@@ -222,6 +222,12 @@ TEST(CompareCli, ExrInputsUseHdrFlipAndWriteErrorMaps) {
 // Two renders of one scene: equal knob sets are identical; SSAO off differs.
 TEST(CompareCli, TwoRendersOfOneScene) {
     const fs::path dir = test::tempDir() / "compare";
+    // An output in a folder that does not exist: refused before anything renders.
+    const Result noFolder = run("compare --scene spheres --a ssao.enabled=true --b ssao.enabled=false --json " +
+                                (dir / "missing-folder" / "r.json").string());
+    EXPECT_EQ(noFolder.code, 5);
+    EXPECT_NE(noFolder.err.find("missing-folder does not exist"), std::string::npos) << noFolder.err;
+    fs::create_directories(dir);
     const std::string scene = " --scene spheres --size 96x54";
     const Result same = run("compare" + scene + " --a ssao.enabled=true --b ssao.enabled=true --json " +
                             (dir / "same-render.json").string());
