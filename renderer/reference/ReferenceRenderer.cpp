@@ -12,6 +12,7 @@
 #include <mutex>
 
 #include "renderer/lighting/LightVolume.h"
+#include "renderer/reference/CameraRays.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/reference/MaterialEvaluator.h"
 #include "renderer/reference/RayScene.h"
@@ -34,31 +35,6 @@ double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// The camera as the GPU sets it up (Pipeline::cameraUniforms): a rotation
-// about the eye, and pixel-centre rays with view depth as their parameter.
-struct CameraRays {
-    glm::dmat3 viewToWorld;  // rotation
-    glm::dmat3 worldToView;
-    double tanHalf, aspect, nearPlane, farPlane;
-    int width, height;
-    CameraRays(const Camera& c, int w, int h) : width(w), height(h) {
-        const glm::dvec3 eye(c.position);
-        const glm::dmat4 view =
-            glm::lookAt(glm::dvec3(0.0), glm::dvec3(c.target) - eye, glm::dvec3(c.up));
-        worldToView = glm::dmat3(view);
-        viewToWorld = glm::transpose(worldToView);
-        tanHalf = std::tan(static_cast<double>(c.fovYDegrees) * kPi / 360.0);
-        aspect = static_cast<double>(w) / h;
-        nearPlane = c.nearPlane;
-        farPlane = c.farPlane;
-    }
-    // Row 0 at the top of the image; GL's window y counts from the bottom.
-    glm::dvec3 direction(int x, int row) const {
-        const double ndcX = (x + 0.5) / width * 2.0 - 1.0;
-        const double ndcY = ((height - 1 - row) + 0.5) / height * 2.0 - 1.0;
-        return viewToWorld * glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0);
-    }
-};
 
 // SplitMix64: a pixel's random offsets from its index and the seed, the same
 // whichever thread renders it.
