@@ -218,31 +218,6 @@ std::pair<int, int> plotSize(CommandLine& cl) {
     return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"), "--plot-size");
 }
 
-// Fails now, before any frame is rendered, when `path` cannot be written at
-// the end of the run: its folder is missing or read-only, or it is a folder
-// or a read-only file, or the file system refuses a new file there (/proc,
-// a full disk's quota). Leaves nothing behind: a file it had to create to
-// find out is removed, an existing one is opened to append and not touched.
-void requireWritable(const std::string& path, const std::string& what) {
-    if (path.empty()) throw UsageError("the " + what + " needs a file name, got an empty one");
-    std::error_code ec;
-    const fs::path p(path);
-    if (p.filename().empty()) throw FileError(path, "cannot write the " + what + ": not a file name");
-    if (fs::is_directory(p, ec)) throw FileError(path, "cannot write the " + what + ": it is a folder");
-    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir, ec)) throw FileError(path, "cannot write the " + what + ": no folder " + dir.string());
-    const bool exists = fs::exists(p, ec);
-    if (!exists && fs::is_symlink(fs::symlink_status(p, ec)))
-        throw FileError(path, "cannot write the " + what + ": it is a link to nothing");
-    if (access((exists ? p : dir).c_str(), W_OK) != 0)
-        throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
-    if (exists && !fs::is_regular_file(p, ec)) return;  // a device or a pipe: opening it could block or consume
-    const int fd = exists ? open(p.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK)
-                          : open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) throw FileError(path, "cannot write the " + what + ": " + std::strerror(errno));
-    close(fd);
-    if (!exists) unlink(p.c_str());
-}
 
 // Writes every file it is given even when one fails (a full disk for the
 // CSV leaves the JSON written), then throws the first failure, the others
@@ -304,7 +279,7 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
     if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + *plot + "'");
     if (width < 50 || height < 50)
         throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
-    requireWritable(*plot, "plot");
+    CommandLine::requireWritable(*plot, "plot");
 }
 
 // The run a shard's JSON describes, apart from which shard, where its files
@@ -415,8 +390,8 @@ int runMerge(int argc, char** argv) {
         reads.emplace_back("the shard's JSON", fs::path(in).replace_extension(".json").string());
     }
     CommandLine::requireDistinctFiles(writes, reads);
-    requireWritable(*out, "merged CSV");
-    if (json) requireWritable(*json, "merged JSON");
+    CommandLine::requireWritable(*out, "merged CSV");
+    if (json) CommandLine::requireWritable(*json, "merged JSON");
     checkPlotOptions(plot, plotW, plotH);
 
     std::vector<BenchResults> parts;
@@ -693,8 +668,8 @@ int runBenchCommand(int argc, char** argv) {
     if (plot) writes.emplace_back("--plot", *plot);
     CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(o.run));
     checkPlotOptions(plot, plotW, plotH);
-    requireWritable(csv, "bench CSV");
-    requireWritable(json, "bench JSON");
+    CommandLine::requireWritable(csv, "bench CSV");
+    CommandLine::requireWritable(json, "bench JSON");
     checkRatioSeriesNamesAPass(ratioOf);
     if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);

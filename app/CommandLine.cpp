@@ -1,5 +1,11 @@
 #include "app/CommandLine.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <charconv>
 #include <filesystem>
 
@@ -129,6 +135,28 @@ CommandLine::NamedFiles CommandLine::inputFiles(const RunConfig& run) {
     if (!run.presetSpec().empty() && fs::is_regular_file(run.presetSpec(), ec))
         files.emplace_back("the preset", run.presetSpec());
     return files;
+}
+
+void CommandLine::requireWritable(const std::string& path, const std::string& what) {
+    namespace fs = std::filesystem;
+    if (path.empty()) throw UsageError("the " + what + " needs a file name, got an empty one");
+    std::error_code ec;
+    const fs::path p(path);
+    if (p.filename().empty()) throw FileError(path, "cannot write the " + what + ": not a file name");
+    if (fs::is_directory(p, ec)) throw FileError(path, "cannot write the " + what + ": it is a folder");
+    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir, ec)) throw FileError(path, "cannot write the " + what + ": no folder " + dir.string());
+    const bool exists = fs::exists(p, ec);
+    if (!exists && fs::is_symlink(fs::symlink_status(p, ec)))
+        throw FileError(path, "cannot write the " + what + ": it is a link to nothing");
+    if (access((exists ? p : dir).c_str(), W_OK) != 0)
+        throw FileError(path, "cannot write the " + what + ": " + (exists ? "the file" : "its folder") + " is not writable");
+    if (exists && !fs::is_regular_file(p, ec)) return;  // a device or a pipe: opening it could block or consume
+    const int fd = exists ? open(p.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NONBLOCK)
+                          : open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw FileError(path, "cannot write the " + what + ": " + std::strerror(errno));
+    close(fd);
+    if (!exists) unlink(p.c_str());
 }
 
 }  // namespace dw

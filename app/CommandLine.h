@@ -40,6 +40,11 @@ public:
     // The files a run configuration reads: its scene and its preset, where they are files.
     static NamedFiles inputFiles(const RunConfig& run);
 
+    // Fails now (FileError) when `path` could not be written at the end of a
+    // run: its folder is missing or read-only, it is a folder or a read-only
+    // file, or the file system refuses a new file there. Leaves nothing
+    // behind: a file it creates to find out is removed; `what` names it.
+    static void requireWritable(const std::string& path, const std::string& what);
     static int parseInt(const std::string& flag, const std::string& text, int min, int max);
     // "1280x720" -> (1280, 720); errors name `flag`.
     static std::pair<int, int> parseSize(const std::string& text, const std::string& flag = "--size");

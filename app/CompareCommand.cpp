@@ -342,12 +342,7 @@ int compare(int argc, char** argv) {
     }
     CommandLine::requireDistinctFiles(writes, reads);
     // An output that cannot be written fails before any image is read or rendered.
-    for (const auto& [what, path] : writes) {
-        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-        std::error_code ec;
-        if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
-            throw Error(what + " " + path + ": folder " + folder.string() + " does not exist");
-    }
+    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
 
     CompareInputs inputs;
     CompareImage a, b;

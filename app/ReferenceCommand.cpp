@@ -129,6 +129,8 @@ int runReferenceCommand(int argc, char** argv) {
     CommandLine::NamedFiles writes = {{"--out", *out}};
     if (statsOut) writes.emplace_back("--stats-out", *statsOut);
     CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
+    // A render can take minutes: an output that cannot be written fails now, not after it.
+    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
 
     run.validate();
     const Scene scene = loadScene(run.sceneSpec());

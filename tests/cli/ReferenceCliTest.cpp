@@ -62,6 +62,11 @@ TEST(ReferenceCli, BadInputGetsOneClearLine) {
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find(broken.string()), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "x.exr"));
+    // An output that cannot be written fails before the render, not after it.
+    r = run("reference --scene spheres --size 8x8 --out " + (dir / "no-such-folder" / "x.exr").string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("cannot write the --out file: no folder"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("rendered in"), std::string::npos) << r.out;
     r = run("reference --scene spheres --size 8x8 --set ssao.intensity=9 --out " + (dir / "x.exr").string());
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_NE(r.err.find("'ssao.intensity' = 9 is out of range"), std::string::npos) << r.err;
