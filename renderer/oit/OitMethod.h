@@ -18,6 +18,8 @@
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/Buffer.h"
+#include "renderer/gl/Texture.h"
 #include "renderer/graph/FrameContext.h"
 #include "renderer/graph/OutputRegistry.h"
 #include "shaders/params/oit.h"

@@ -221,15 +221,16 @@ void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindText
     std::vector<std::size_t> order;
     order.reserve(draws_.size());
     for (std::size_t i = 0; i < draws_.size(); ++i)
-        if (passes(draws_[i], filter) && (!before || (*before)(i, draws_[i]))) order.push_back(i);
-    drawList(program, order, bindTextures);
+        if (passes(draws_[i], filter)) order.push_back(i);
+    drawList(program, order, bindTextures, before);
 }
 
 void GpuScene::drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order) const {
-    drawList(program, order, true);
+    drawList(program, order, true, nullptr);
 }
 
-void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures) const {
+void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
+                        const PerDraw* before) const {
     if (draws_.empty() || order.empty()) return;
     vao_.bind();
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
@@ -239,6 +240,8 @@ void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_
     glCullFace(GL_BACK);
     for (std::size_t i : order) {
         const Draw& d = draws_.at(i);
+        // Right before its draw: it sets the program's per-draw uniforms.
+        if (before && !(*before)(i, d)) continue;
         if (d.doubleSided == cullOn) {
             cullOn = !d.doubleSided;
             if (cullOn) glEnable(GL_CULL_FACE);

@@ -87,7 +87,8 @@ private:
     GLuint samplerFor(const TextureMapping& mapping);
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
-    void drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures) const;
+    void drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
+                  const PerDraw* before) const;
     glm::mat4 relativeModel(const glm::mat4& model) const;
     mutable glm::dvec3 origin_{0.0};
 

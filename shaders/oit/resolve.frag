@@ -55,10 +55,13 @@ void main() {
         depth[i] = texelFetch(uSampleDepth, px, i).r;
     }
 #else
-    uint node = imageLoad(uHeads, px).r;
+    // Links are node index + 1, 0 ending the list: a lane whose loads are
+    // masked (llvmpipe returns 0 for them) stops instead of walking node 0's
+    // list until the driver's loop limit (2.5 s a frame at 320x180).
+    uint link = imageLoad(uHeads, px).r;
     uint dropped = 0u;
-    while (node != 0xFFFFFFFFu) {
-        uvec4 v = nodes[node];
+    while (link != 0u) {
+        uvec4 v = nodes[link - 1u];
         vec4 c = vec4(unpackHalf2x16(v.x), unpackHalf2x16(v.y));
         float z = uintBitsToFloat(v.z);
         if (n < kMax) {
@@ -76,7 +79,7 @@ void main() {
             }
             ++dropped;
         }
-        node = v.w;
+        link = v.w;
     }
     if (dropped > 0u) imageAtomicAdd(uLost, px, dropped);
 #endif

@@ -88,14 +88,25 @@ void main() {
     for (int i = 0; i < oit.lightCount; ++i) c += lightRadiance(shadingLight(i), s);
     vec4 premultiplied = vec4(c * alpha, alpha);
 
-    if (oit.countFragments != 0) imageAtomicAdd(uFragmentCount, px, 1u);
+    // Helper invocations (quad neighbours run for derivatives) must not
+    // count or store: llvmpipe lets their atomics through, doubling the
+    // fragments along every triangle's diagonal.
+    if (gl_HelperInvocation) discard;
+#ifdef METHOD_ABUFFER
+    // Multisample rasterisation: a pixel on the edge two triangles share gets
+    // a fragment from each (complementary samples); count the one covering sample 0.
+    bool counted = (gl_SampleMaskIn[0] & 1) != 0;
+#else
+    bool counted = true;
+#endif
+    if (oit.countFragments != 0 && counted) imageAtomicAdd(uFragmentCount, px, 1u);
 #if defined(METHOD_LIST)
     uint node = atomicAdd(usedNodes, 1u);
     if (node >= oit.nodeBudget) {
         imageAtomicAdd(uLost, px, 1u);
         return;
     }
-    uint next = imageAtomicExchange(uHeads, px, node);
+    uint next = imageAtomicExchange(uHeads, px, node + 1u);  // links are index + 1; 0 ends a list
     nodes[node] = uvec4(packHalf2x16(premultiplied.rg), packHalf2x16(premultiplied.ba), floatBitsToUint(gl_FragCoord.z), next);
 #elif defined(METHOD_WEIGHTED)
     float w = blendWeight(alpha, fs.viewPosition.z, gl_FragCoord.z);
