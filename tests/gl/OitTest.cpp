@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/oit/StencilRoutedOit.h"
@@ -274,6 +275,16 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
         for (int x = 0; x < count.width; ++x) lost += listLost.at(x, y, 0);
     std::printf("glass: deepest pixel %.0f fragments (list sort bound %d), list lost %.0f\n", deepest,
                 gpu::OIT_LIST_MAX_FRAGMENTS, lost);
+    double level = 0.0;
+    int covered = 0;
+    for (int y = 0; y < count.height; ++y)
+        for (int x = 0; x < count.width; ++x)
+            if (count.at(x, y, 0) > 0.5f) {
+                level += (reference.at(x, y, 0) + reference.at(x, y, 1) + reference.at(x, y, 2)) / 3.0;
+                ++covered;
+            }
+    std::printf("glass: mean reference radiance %.3f over the %d pixels transparent fragments reach\n",
+                level / std::max(covered, 1), covered);
     EXPECT_GT(deepest, 8.0f);
     EXPECT_LT(deepest, static_cast<float>(gpu::OIT_LIST_MAX_FRAGMENTS));
     EXPECT_EQ(lost, 0.0f);
@@ -292,6 +303,13 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
     for (int y = 0; y < overflow.height; ++y)
         for (int x = 0; x < overflow.width; ++x) abufferLost += overflow.at(x, y, 0);
     const Difference weighted = difference(run("weighted"), reference, count);
+    for (const char* eq : {"eq8", "eq9", "eq10"}) {
+        s->knobs().setFromString("oit.weight_function", eq);
+        const Difference d = difference(run("weighted"), reference, count);
+        std::printf("weighted (%s)%*s mean %.4f  p99 %.4f  max %.4f\n", eq, static_cast<int>(15 - std::strlen(eq)), "",
+                    d.mean, d.p99, d.max);
+        EXPECT_GT(d.mean, 1e-3) << eq;
+    }
     const Difference forward = difference(run("forward_sorted"), reference, count);
     auto line = [](const char* name, const Difference& d) {
         std::printf("%-28s mean %.4f  p99 %.4f  max %.4f  over %d pixels\n", name, d.mean, d.p99, d.max, d.pixels);
