@@ -1,6 +1,7 @@
 #include "renderer/passes/OitPass.h"
 
 #include <glm/glm.hpp>
+#include <set>
 
 #include "renderer/Error.h"
 #include "renderer/lighting/LightTable.h"
@@ -188,6 +189,13 @@ void OitPass::execute(FrameContext& ctx) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     };
     method.render(f);
+    // The method's own outputs and the overflow are written every frame, so
+    // the probe and the inspector can read them although nothing asked for
+    // them; the count only when it was counted.
+    std::set<std::string> written{"oit.overflow"};
+    if (f.params.countFragments != 0 || method.needsFragmentCount()) written.insert("oit.sample_count");
+    for (const auto& o : method.outputs()) written.insert(o.name);
+    ctx.outputs.markProduced(name(), written);
     stats_ = std::string(method.name()) + ": " + std::to_string(f.draws.size()) + " blended draws, " +
              (f.shadowed ? "shadowed" : ctx.shadows ? "unshadowed (shadow maps reused: shadows.reuse_map)" : "no shadow maps") +
              "; " + method.stats();

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/inspect/PixelProbe.h"
 #include "renderer/oit/StencilRoutedOit.h"
 #include "renderer/passes/OitPass.h"
 #include "renderer/scene/ShapeBuilder.h"
@@ -328,4 +329,30 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
     // The approximations differ from the reference (the numbers are in the docs).
     EXPECT_GT(weighted.mean, 1e-3);
     EXPECT_GT(forward.max, 1e-2);
+}
+
+// The probe lists a pixel's transparent fragments nearest first with their
+// depth, colour and alpha, from the linked list and from the A-buffer.
+TEST(Oit, ProbeListsThePixelsFragmentsInDepthOrder) {
+    auto s = test::makeSession(W, H);
+    s->setScene(panesScene());
+    std::vector<const Pane*> over;
+    int x = W - 1;
+    while (x > 0 && panesAt(x, over) != 6) --x;
+    ASSERT_EQ(panesAt(x, over), 6);
+    std::sort(over.begin(), over.end(), [](const Pane* a, const Pane* b) { return a->z > b->z; });  // nearest first
+    for (const char* method : {"linked_list", "abuffer"}) {
+        renderPanes(*s, method, 4);
+        const ProbeResult r = probePixel(s->pipeline(), x, H / 2);
+        EXPECT_EQ(r.fragmentsFrom, method);
+        const std::size_t kept = std::string(method) == "abuffer" ? 4u : 6u;
+        ASSERT_EQ(r.fragments.size(), kept) << method;
+        for (std::size_t i = 0; i + 1 < r.fragments.size(); ++i)
+            EXPECT_GT(r.fragments[i].depth, r.fragments[i + 1].depth) << method << " (reversed depth: nearer is larger)";
+        if (kept == 6u)
+            for (std::size_t i = 0; i < kept; ++i) {
+                EXPECT_NEAR(r.fragments[i].alpha, over[i]->alpha, 1e-3) << i;
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.fragments[i].colour[c], over[i]->emissive[c], 2e-3) << i;
+            }
+    }
 }
