@@ -182,6 +182,7 @@ void imageViewLegend(ImageView& view, const PublishedOutput* output, const Shown
                                         barColor(mapping, static_cast<float>(i) / steps));
         }
         ImGui::Dummy(ImVec2(barW, h));
+        noteRect("legend.colour_bar", at, ImVec2(at.x + barW, at.y + h));
         char a[32], b[32], m[32];
         std::snprintf(a, sizeof(a), "%.4g", lo);
         std::snprintf(m, sizeof(m), "%.4g", 0.5f * (lo + hi));

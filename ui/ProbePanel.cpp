@@ -101,6 +101,22 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
             for (const auto& line : p.lightLines) ImGui::TextWrapped("%s", line.c_str());  // wrapped, never cut
         for (const auto& line : p.lightLines) copy += "light\t" + line + "\n";
     }
+    // The transparent fragments the oit method kept here, nearest first (issue 21).
+    if (!p.result.fragmentsFrom.empty()) {
+        char head[96];
+        std::snprintf(head, sizeof(head), "transparent fragments: %zu (%s)###fragments", p.result.fragments.size(),
+                      p.result.fragmentsFrom.c_str());
+        if (ImGui::CollapsingHeader(head, ImGuiTreeNodeFlags_DefaultOpen) &&
+            beginRows("fragments", ImGui::CalcTextSize("fragment 00").x + 8.0f)) {
+            for (std::size_t i = 0; i < p.result.fragments.size(); ++i) {
+                const TransparentFragment& f = p.result.fragments[i];
+                const std::string label = "fragment " + std::to_string(i);
+                row(copy, label.c_str(), "depth %.6f  colour %.4g %.4g %.4g  alpha %.3f", f.depth, f.colour.r, f.colour.g,
+                    f.colour.b, f.alpha);
+            }
+            ImGui::EndTable();
+        }
+    }
     float labelWidth = ImGui::CalcTextSize("sample 00").x;
     for (const auto& v : p.result.values) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(v.output.c_str()).x);
     labelWidth = std::min(labelWidth + 8.0f, ImGui::GetContentRegionAvail().x * 0.5f);

@@ -41,4 +41,8 @@ void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
     glGetNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
 }
 
+void Buffer::clearUint(unsigned value) const {
+    glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
+}
+
 }  // namespace dw::gl

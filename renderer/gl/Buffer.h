@@ -26,6 +26,8 @@ public:
     void bindBase(GLenum target, GLuint index) const;
     void bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
     void read(std::size_t offset, std::size_t bytes, void* out) const;
+    // Every 32-bit word to `value`.
+    void clearUint(unsigned value) const;
 
 private:
     GlObject<BufferTraits> name_;

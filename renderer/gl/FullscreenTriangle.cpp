@@ -28,6 +28,20 @@ void resetPipelineState(int width, int height) {
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glDepthFunc(GL_LESS);
+    // What a pass may have set and the next must not inherit: stencil
+    // function and operations, blend function and equation (every draw
+    // buffer), and every sample-mask word (the A-buffer's stencil routing
+    // sets them one sample at a time).
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glBlendEquation(GL_FUNC_ADD);
+    static const GLint maskWords = [] {
+        GLint n = 1;
+        glGetIntegerv(GL_MAX_SAMPLE_MASK_WORDS, &n);
+        return n;
+    }();
+    for (GLint w = 0; w < maskWords; ++w) glSampleMaski(static_cast<GLuint>(w), ~0u);
     DepthConvention::applyClipControl();  // depth in [0, 1], either mapping
     glFrontFace(GL_CCW);
     glViewport(0, 0, width, height);

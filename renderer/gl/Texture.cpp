@@ -185,4 +185,12 @@ std::vector<std::uint8_t> Texture::readBytes(int level, GLenum format, int chann
     return out;
 }
 
+void Texture::bindImage(GLuint unit, GLenum access) const {
+    glBindImageTexture(unit, id(), 0, GL_FALSE, 0, access, format_);
+}
+
+void Texture::clearUint(unsigned value) const {
+    glClearTexImage(id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
+}
+
 }  // namespace dw::gl

@@ -51,6 +51,10 @@ public:
     void uploadCubeFace(int face, int level, int size, GLenum format, GLenum type, const void* data);
     void generateMipmaps() const;
     void bind(GLuint unit) const;
+    // Level 0 as image `unit` (load/store/atomics) in the texture's own format.
+    void bindImage(GLuint unit, GLenum access) const;
+    // Every texel of level 0 to `value` (integer formats: GL_RED_INTEGER).
+    void clearUint(unsigned value) const;
 
     // Reads a level back to CPU memory (rows bottom-up, as GL stores them).
     std::vector<float> readFloats(int level, GLenum format, int channels) const;

@@ -46,6 +46,14 @@ public:
         (void)knobs;
         return output.resource;
     }
+    // Whether a managed output exists under the current knobs: the outputs
+    // of an OIT method other than the one oit.method names are not
+    // allocated (nor is their memory spent). By default every one.
+    virtual bool allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
+        (void)output;
+        (void)knobs;
+        return true;
+    }
     // After every pass has declared its knobs: resolve other passes' knobs
     // (KnobRegistry::require*), which throws if one is missing.
     virtual void connect(const KnobRegistry& knobs) { (void)knobs; }

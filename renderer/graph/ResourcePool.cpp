@@ -69,7 +69,7 @@ void ResourcePool::acquireOutputs(const RenderPass& pass, const KnobRegistry& kn
     const auto decls = pass.outputs();
     for (const auto& o : decls) {
         if (!o.viewOf.empty() || !o.resource.managed()) continue;
-        if (o.onDemand && (!wanted || !wanted->count(o.name))) {
+        if ((o.onDemand && (!wanted || !wanted->count(o.name))) || !pass.allocates(o, knobs)) {
             release(o.name);
             outputs.bindResource(o.name, nullptr, nullptr, {}, 0);
             continue;

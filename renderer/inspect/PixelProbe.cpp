@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/graph/Pipeline.h"
@@ -38,6 +39,55 @@ glm::vec4 readTexel(const gl::Texture& t, int level, int x, int yGl, int channel
     if (t.isSrgb())
         for (int c = 0; c < 3; ++c) out[c] = srgbToLinear(out[c]);
     return out;
+}
+
+const ProbeValue* findValue(const ProbeResult& r, const char* name) {
+    for (const auto& v : r.values)
+        if (v.output == name) return &v;
+    return nullptr;
+}
+
+TransparentFragment fragmentOf(const glm::vec4& premultiplied, float depth) {
+    TransparentFragment f;
+    f.depth = depth;
+    f.alpha = premultiplied.a;
+    f.colour = premultiplied.a > 0.0f ? glm::vec3(premultiplied) / premultiplied.a : glm::vec3(0.0f);
+    return f;
+}
+
+// The oit pass's fragments at the pixel: the linked list walked from its
+// head (links are node index + 1), or the A-buffer's first
+// min(oit.sample_count, samples) samples; nearest first.
+void transparentFragments(const Pipeline& pipeline, ProbeResult& r, int x, int yGl) {
+    const PublishedOutput* nodes = pipeline.outputs().find("oit.list_nodes");
+    if (const ProbeValue* head = findValue(r, "oit.list_heads"); head && nodes && nodes->producedThisFrame && nodes->buffer) {
+        (void)x;
+        (void)yGl;
+        r.fragmentsFrom = "linked_list";
+        auto link = static_cast<std::uint32_t>(head->raw.x);
+        const std::size_t count = nodes->buffer->size() / 16;
+        for (int guard = 0; link != 0 && link <= count && guard < 4096; ++guard) {
+            std::uint32_t node[4];
+            nodes->buffer->read((link - 1) * 16ull, sizeof node, node);
+            const glm::vec2 rg = glm::unpackHalf2x16(node[0]), ba = glm::unpackHalf2x16(node[1]);
+            float depth;
+            std::memcpy(&depth, &node[2], 4);
+            r.fragments.push_back(fragmentOf(glm::vec4(rg, ba), depth));
+            link = node[3];
+        }
+    } else if (const ProbeValue* colour = findValue(r, "oit.abuffer")) {
+        const ProbeValue* depth = findValue(r, "oit.abuffer_depth");
+        const ProbeValue* count = findValue(r, "oit.sample_count");
+        if (!depth || !count) return;
+        r.fragmentsFrom = "abuffer";
+        const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(count->raw.x), colour->samples.size());
+        for (std::size_t i = 0; i < n && i < depth->samples.size(); ++i)
+            r.fragments.push_back(fragmentOf(colour->samples[i], depth->samples[i].x));
+    }
+    const bool reversed = DepthConvention::fromUniform(pipeline.lastCamera().depth).reversed();
+    std::sort(r.fragments.begin(), r.fragments.end(), [&](const TransparentFragment& a, const TransparentFragment& b) {
+        return reversed ? a.depth > b.depth : a.depth < b.depth;
+    });
 }
 
 }  // namespace
@@ -123,6 +173,7 @@ ProbeResult probePixel(const Pipeline& pipeline, int x, int y) {
         s.radiance = glm::vec3(l->raw);
         s.luminance = static_cast<float>(reference::luminance(l->raw.r, l->raw.g, l->raw.b));
     }
+    transparentFragments(pipeline, r, x, yGl);
     return r;
 }
 

@@ -37,11 +37,23 @@ struct SurfaceSample {
     float luminance = 0.0f;
 };
 
+// A transparent fragment the oit pass kept at the pixel (issue 21).
+struct TransparentFragment {
+    float depth = 0.0f;          // window depth
+    glm::vec3 colour{0.0f};      // lit colour (the stored premultiplied colour / alpha)
+    float alpha = 0.0f;
+};
+
 struct ProbeResult {
     int x = 0, y = 0;  // pixel, rows top-down
     bool inside = false;
     SurfaceSample surface;
     std::vector<ProbeValue> values;
+    // The pixel's transparent fragments, nearest first, from the method that
+    // keeps them this frame (the linked list's nodes, the A-buffer's
+    // samples); `fragmentsFrom` names it, empty when no method kept any.
+    std::vector<TransparentFragment> fragments;
+    std::string fragmentsFrom;
 };
 
 // x, y in pixels with y = 0 at the top. Blocks on the GPU (a read-back).

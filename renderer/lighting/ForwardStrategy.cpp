@@ -124,7 +124,7 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     const std::uint64_t perDraw = loopLimit_ > 0 ? static_cast<std::uint64_t>(loopLimit_) * 9 / 10 : std::max<std::uint64_t>(longest, 1);
     const std::uint64_t parts = std::max<std::uint64_t>(1, (longest + perDraw - 1) / perDraw);
     for (std::uint64_t part = 0; part < parts; ++part) {
-        f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
+        f.ctx.gpu.drawEach(program, GpuScene::Filter::Opaque, [&](std::size_t i, const GpuScene::Draw&) {
             const std::uint64_t skip = part * perDraw;
             if (lists.count[i] <= skip) return false;
             program.set(2, static_cast<int>(lists.first[i] + skip));
@@ -165,7 +165,7 @@ StrategyCounts ForwardMultipassStrategy::shade(LightingFrame& f) {
         program.use();
         program.set(2, e->row);
         std::size_t next = 0;  // draws come in index order
-        f.ctx.gpu.drawEach(program, GpuScene::Filter::All, [&](std::size_t i, const GpuScene::Draw&) {
+        f.ctx.gpu.drawEach(program, GpuScene::Filter::Opaque, [&](std::size_t i, const GpuScene::Draw&) {
             while (next < touched.size() && touched[next] < i) ++next;
             return next < touched.size() && touched[next] == i;
         });

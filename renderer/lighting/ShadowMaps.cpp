@@ -245,7 +245,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         ctx.gpu.setDrawOrigin(eye);
         depth_->set(2, glm::mat4(proj * glm::translate(lightView, eye)));
         depth_->set(3, glm::vec3(0.0f));
-        ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::All);
+        ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::Opaque);
         out.matrix = kBias * glm::mat4(proj * lightView * viewToWorld);
     } else if (kind == Cube) {
         // Each face stores the linear distance from the light (distance.frag,
@@ -260,7 +260,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         for (int f = 0; f < 6; ++f) {
             target(6 * slot + f);
             pointDistance_->set(2, proj * glm::lookAt(glm::vec3(0.0f), kFaces[f].dir, kFaces[f].up));
-            ctx.gpu.drawDepthOnly(*pointDistance_, GpuScene::Filter::All);
+            ctx.gpu.drawDepthOnly(*pointDistance_, GpuScene::Filter::Opaque);
         }
         // World-aligned offset from the light, which is how cube maps are indexed.
         out.matrix = glm::mat4(glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);
@@ -280,7 +280,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         for (int h = 0; h < 2; ++h) {
             target(2 * slot + h);
             paraboloid_->set(3, glm::vec4(near, far, h == 0 ? 1.0f : -1.0f, dc.reversed() ? 1.0f : 0.0f));
-            ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::All);
+            ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::Opaque);
         }
         glDisable(GL_CLIP_DISTANCE0);
         out.matrix = glm::mat4(glm::dmat4(lightView) * glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);

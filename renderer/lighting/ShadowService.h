@@ -17,6 +17,10 @@ public:
     virtual bool prepare(FrameContext& ctx, const LightTableEntry& entry) = 0;
     // Binds the maps with their comparison samplers (units 6, 7, 8).
     virtual void bind() const = 0;
+    // Whether every shadowed light's map exists now, its lookup in the light
+    // table (no reuse this frame): a pass after the lighting (oit) may then
+    // look up any light's shadow. With a reused map only the last light's is left.
+    virtual bool everyMapKept() const { return false; }
 };
 
 }  // namespace dw

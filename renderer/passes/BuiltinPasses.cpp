@@ -1,6 +1,6 @@
 // The built-in passes, one line each, in seed 002 section 6's order within
-// each stage: G-buffer, SSAO, (transparency), L-buffer (the sky and the
-// shadow maps feed it), luminance statistics, bloom, tone mapping; then the
+// each stage: G-buffer, SSAO, L-buffer (the sky and the shadow maps feed
+// it), transparency over the L-buffer (oit), luminance statistics, bloom, tone mapping; then the
 // post chain (depth of field, FXAA) on the tone-mapped image.
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/passes/BloomPass.h"
@@ -12,6 +12,7 @@
 #include "renderer/passes/LightingPass.h"
 #include "renderer/passes/ShadowPass.h"
 #include "renderer/passes/LuminancePass.h"
+#include "renderer/passes/OitPass.h"
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/passes/SkyboxPass.h"
 #include "renderer/passes/SsaoBlurPass.h"
@@ -37,6 +38,7 @@ std::vector<PassEntry> builtinPasses() {
         entry<LightTablePass>(PassStage::Lights),
         entry<ShadowPass>(PassStage::Lights),
         entry<LightingPass>(PassStage::Lighting),
+        entry<OitPass>(PassStage::Lighting),
         entry<LuminancePass>(PassStage::Hdr),
         entry<BloomPass>(PassStage::Hdr),
         entry<ReferencePass>(PassStage::Hdr),

@@ -111,8 +111,9 @@ void GeometryPass::execute(FrameContext& ctx) {
         for (std::size_t i = 0; i < rows.size(); ++i) program.set(3 + static_cast<GLint>(i), rows[i]);
         ctx.lightTable->buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
     }
-    // Blended materials are drawn as opaque until a transparency pass exists.
-    ctx.gpu.draw(program, GpuScene::Filter::All);
+    // Blended materials stay out of the G-buffer (and so out of SSAO and the
+    // deferred lighting): the oit pass draws them over the L-buffer.
+    ctx.gpu.draw(program, GpuScene::Filter::Opaque);
     stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
     if (directional) stats_ += ", " + std::to_string(rows.size()) + " directional lights shaded";
 }

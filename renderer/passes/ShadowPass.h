@@ -28,6 +28,7 @@ public:
 
     bool prepare(FrameContext& ctx, const LightTableEntry& entry) override;
     void bind() const override { maps_.bind(); }
+    bool everyMapKept() const override { return !reuse_; }
 
     // Maps rendered in the last frame, the bytes they took, and what one map
     // per light would take.

@@ -103,6 +103,19 @@ public:
         t = glm::rotate(t, glm::radians(yawDegrees), glm::vec3(0, 1, 0));
         s_.instances.push_back({mesh, glm::scale(t, scale)});
     }
+    // A blended material (issue 21): double-sided, so both faces of a
+    // closed shape are layers, with `opacity` as the base colour's alpha.
+    int glass(const std::string& name, glm::vec3 colour, float opacity, glm::vec3 specular = glm::vec3(0.5f),
+              float exponent = 96.0f) {
+        Material m;
+        m.name = name;
+        m.baseColor = glm::vec4(colour, opacity);
+        m.specularColor = specular;
+        m.specularExponent = exponent;
+        m.alphaMode = AlphaMode::Blend;
+        m.doubleSided = true;
+        return s_.addMaterial(m);
+    }
     Light& light(LightType type, const std::string& name, glm::vec3 pos, glm::vec3 dir, glm::vec3 intensity,
                  Attenuation att = {}, float cutoff = 45.0f, float exponent = 0.0f) {
         Light l;
@@ -331,6 +344,57 @@ Scene spheres() {
     return s;
 }
 
+// Issue 21's transparency scene: intersecting coloured panes (thin boxes, so
+// each pane is two layers) in a fan about one vertical axis, a row of eight
+// parallel panes, and nested transparent objects (a sphere in a box in a
+// sphere); the row and the nest put more than 8 layers on some pixels, so
+// a 4-sample A-buffer overflows there. Every map is kept
+// (shadows.reuse_map = false), so the glass receives shadows too.
+Scene glassScene() {
+    Scene s;
+    s.name = "glass";
+    s.ambient = glm::vec3(0.08f);
+    s.background = glm::vec3(0.16f, 0.18f, 0.22f);
+    Builder b(s);
+    BlockTexture checker = blockTexture("checker", 128, 8, 8, false, {0.35f, 0.35f, 0.35f}, {0.7f, 0.7f, 0.7f}, {0.3f, 0.3f, 0.3f}, 3);
+    const int checkerA = s.addImage(std::move(checker.albedo));
+    const int floorMat = b.material("floor", glm::vec3(1.0f), glm::vec3(0.05f), 10.0f, checkerA);
+    b.place(b.mesh(shapes::plane(24.0f, 16.0f, 0.5f), floorMat), {0, 0, 0});
+    const int wallMat = b.material("wall", {0.55f, 0.5f, 0.45f}, glm::vec3(0.05f), 10.0f);
+    b.place(b.mesh(shapes::box({24.0f, 6.0f, 0.3f}), wallMat), {0, 3.0f, -6.0f});
+    const int pillarMat = b.material("pillar", {0.7f, 0.2f, 0.15f}, glm::vec3(0.2f), 40.0f);
+    b.place(b.mesh(shapes::cylinder(0.35f, 3.0f), pillarMat), {-4.5f, 1.5f, -2.0f});
+    // The fan: four panes through the axis x = -4.5, z = 0.5, 45 degrees apart.
+    const glm::vec3 fanColours[] = {{1.0f, 0.2f, 0.2f}, {0.2f, 1.0f, 0.3f}, {0.25f, 0.4f, 1.0f}, {1.0f, 0.9f, 0.2f}};
+    for (int i = 0; i < 4; ++i) {
+        const int mat = b.glass("fan pane " + std::to_string(i), fanColours[i], 0.35f);
+        b.place(b.mesh(shapes::box({3.0f, 2.4f, 0.04f}), mat), {-4.5f, 1.3f, 0.5f}, 45.0f * i);
+    }
+    // The row: eight parallel panes one behind the other, 0.35 apart, each a little to the side.
+    for (int i = 0; i < 8; ++i) {
+        const float t = i / 7.0f;
+        const int mat = b.glass("row pane " + std::to_string(i), {0.3f + 0.7f * t, 0.8f - 0.5f * t, 1.0f - 0.7f * t}, 0.25f);
+        b.place(b.mesh(shapes::box({2.2f, 2.0f, 0.03f}), mat), {0.0f + 0.12f * i, 1.2f, 1.5f - 0.35f * i});
+    }
+    // The nest: a sphere in a box in a sphere.
+    const int outer = b.glass("outer sphere", {0.6f, 0.9f, 1.0f}, 0.2f);
+    const int middle = b.glass("middle box", {1.0f, 0.6f, 0.2f}, 0.3f);
+    const int inner = b.glass("inner sphere", {1.0f, 0.15f, 0.5f}, 0.5f);
+    b.place(b.mesh(shapes::sphere(1.4f, 40, 20), outer), {4.5f, 1.5f, 0.5f});
+    b.place(b.mesh(shapes::box({1.5f, 1.5f, 1.5f}), middle), {4.5f, 1.5f, 0.5f}, 30.0f);
+    b.place(b.mesh(shapes::sphere(0.5f, 32, 16), inner), {4.5f, 1.5f, 0.5f});
+    b.light(LightType::Directional, "sun", {}, {-0.4f, -0.8f, -0.45f}, glm::vec3(1.6f, 1.5f, 1.4f)).castShadows = true;
+    b.light(LightType::Point, "warm", {2.0f, 3.5f, 3.0f}, {0, -1, 0}, {2.5f, 1.6f, 0.8f}, {1.0f, 0.2f, 0.15f});
+    b.light(LightType::Point, "cool", {-3.0f, 3.0f, 3.5f}, {0, -1, 0}, {0.6f, 1.0f, 2.2f}, {1.0f, 0.2f, 0.15f});
+    s.settings.push_back({"shadows.reuse_map", "false"});
+    s.camera.position = {0.0f, 3.2f, 9.5f};
+    s.camera.target = {0.0f, 1.3f, 0.0f};
+    s.camera.fovYDegrees = 55.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 60.0f;
+    return s;
+}
+
 // Seed 004's fire: a central fire pit and four braziers in a ring of columns
 // under a night sky; every flame particle is a small point light (300 in all)
 // that rises, sways, fades and respawns frame by frame (FlameParticles).
@@ -415,6 +479,7 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
         {"default", "courtyard at dusk: columns, fountain, a sun, 36 coloured point lights, 8 spot lights"},
         {"street", "night road lit by 22 spot-light street lamps (the 9 nearest the camera cast shadows) and a moon (the CMSC 23700 motivating case)"},
         {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents, a shadowing key light, a point and a spot light"},
+        {"glass", "transparency: intersecting coloured panes, a row of eight panes and a sphere in a box in a sphere (blended materials, depth complexity above 8; issue 21)"},
         {"fire", "night courtyard with a fire pit and four braziers: 300 flame particles, each a small point light, animated per frame (seed 004)"},
     };
     return scenes;
@@ -432,6 +497,7 @@ Scene makeBuiltinScene(const std::string& name) {
     else if (name == "street") s = street();
     else if (name == "spheres") s = spheres();
     else if (name == "fire") s = fire();
+    else if (name == "glass") s = glassScene();
     else {
         std::string names;
         for (const auto& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;

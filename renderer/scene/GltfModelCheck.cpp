@@ -185,9 +185,6 @@ std::vector<std::string> GltfModelCheck::ignoredFeatures(bool ignoredUvSets) con
         for (const auto& p : m.primitives) morphed += p.targets.empty() ? 0 : 1;
     if (morphed > 0) parts.push_back("morph targets on " + std::to_string(morphed) + " primitive(s)");
     if (!model_.animations.empty()) parts.push_back(std::to_string(model_.animations.size()) + " animation(s)");
-    size_t blended = 0;
-    for (const auto& m : model_.materials) blended += m.alphaMode == "BLEND" ? 1 : 0;
-    if (blended > 0) parts.push_back("alpha mode BLEND on " + std::to_string(blended) + " material(s), drawn opaque");
     if (ignoredUvSets) parts.push_back("texture coordinate sets beyond TEXCOORD_1 (TEXCOORD_0 used)");
     // KHR_lights_punctual's range (a distance where a light stops): the
     // light volumes end where the 1/d^2 falloff drops under

@@ -235,16 +235,29 @@ void GpuScene::drawEach(const gl::Program& program, Filter filter, const PerDraw
 }
 
 void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const {
-    if (draws_.empty()) return;
+    std::vector<std::size_t> order;
+    order.reserve(draws_.size());
+    for (std::size_t i = 0; i < draws_.size(); ++i)
+        if (passes(draws_[i], filter)) order.push_back(i);
+    drawList(program, order, bindTextures, before);
+}
+
+void GpuScene::drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order) const {
+    drawList(program, order, true, nullptr);
+}
+
+void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
+                        const PerDraw* before) const {
+    if (draws_.empty() || order.empty()) return;
     vao_.bind();
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
     int boundMaterial = -1;
     bool cullOn = true;
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    for (std::size_t i = 0; i < draws_.size(); ++i) {
-        const Draw& d = draws_[i];
-        if (!passes(d, filter)) continue;
+    for (std::size_t i : order) {
+        const Draw& d = draws_.at(i);
+        // Right before its draw: it sets the program's per-draw uniforms.
         if (before && !(*before)(i, d)) continue;
         if (d.doubleSided == cullOn) {
             cullOn = !d.doubleSided;

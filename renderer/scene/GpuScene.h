@@ -23,6 +23,7 @@ constexpr GLuint kCameraUbo = 0;
 constexpr GLuint kMaterialSsbo = 1;
 constexpr GLuint kLightSsbo = 2;
 constexpr GLuint kPassUbo = 3;
+constexpr GLuint kOitUbo = 4;  // the oit pass's own block, beside the lighting block at kPassUbo
 }  // namespace binding
 
 class GpuScene {
@@ -65,6 +66,9 @@ public:
     // and returns false to skip the instance (the forward lighting strategies).
     using PerDraw = std::function<bool(std::size_t, const Draw&)>;
     void drawEach(const gl::Program& program, Filter filter, const PerDraw& before) const;
+    // Draws the instances `order` lists (indices into draws()), in that
+    // order, whatever their alpha mode (the sorted forward transparency pass).
+    void drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order) const;
     // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
     void drawDepthOnly(const gl::Program& program, Filter filter) const;
     // The world position every draw's model matrix is made relative to, in
@@ -90,6 +94,8 @@ private:
     void applyFiltering(std::size_t sampler) const;
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
+    void drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
+                  const PerDraw* before) const;
     glm::mat4 relativeModel(const glm::mat4& model) const;
     mutable glm::dvec3 origin_{0.0};
 

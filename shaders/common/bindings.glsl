@@ -5,4 +5,5 @@
 #define MATERIAL_SSBO 1
 #define LIGHT_SSBO 2
 #define PASS_UBO 3
+#define OIT_UBO 4
 #endif

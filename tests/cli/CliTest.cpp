@@ -4,7 +4,9 @@
 #include <dlfcn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -400,4 +402,36 @@ TEST(Cli, RenderdocCaptureWritesANonEmptyCaptureFile) {
     EXPECT_GT(fs::file_size(capture), 10000u);
     EXPECT_NE(r.out.find(capture.string()), std::string::npos) << r.out;
     EXPECT_TRUE(fs::exists(dir / "f.png"));
+}
+
+// Transparency (issue 21): `render --buffer oit.sample_count` writes every
+// pixel's transparent fragment count (the glass scene is deeper than 8
+// somewhere, and the 4- or 8-sample A-buffer's overflow is the rest);
+// the default scene has no blended material, and --timings says the oit
+// pass was skipped and why.
+TEST(Cli, WritesTransparencySampleCounts) {
+    const fs::path counts = test::tempDir() / "oit_counts.exr";
+    const Result r = run("render --scene glass --size 160x90 --set oit.method=abuffer --set oit.samples=4 --buffer "
+                         "oit.sample_count --out " + counts.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const FloatImage c = loadImageFloat(counts.string());
+    EXPECT_EQ(c.channels, 1);
+    const auto s = test::stats(c, 0);
+    EXPECT_EQ(s.min, 0.0);
+    EXPECT_GT(s.max, 8.0);
+    EXPECT_EQ(s.max, std::floor(s.max));  // counts, not a display mapping
+    const fs::path overflow = test::tempDir() / "oit_overflow.exr";
+    ASSERT_EQ(run("render --scene glass --size 160x90 --set oit.method=abuffer --set oit.samples=4 --buffer "
+                  "oit.overflow --out " + overflow.string()).code, 0);
+    const FloatImage o = loadImageFloat(overflow.string());
+    for (int y = 0; y < c.height; ++y)
+        for (int x = 0; x < c.width; ++x)
+            ASSERT_EQ(o.at(x, y, 0), std::max(0.0f, c.at(x, y, 0) - 4.0f)) << x << ", " << y;
+    const Result skipped = run("render --scene default --size 64x36 --timings --out " + (test::tempDir() / "t.png").string());
+    ASSERT_EQ(skipped.code, 0) << skipped.err;
+    EXPECT_NE(skipped.out.find("(skipped: no blended material in the scene)"), std::string::npos) << skipped.out;
+    const Result wrong = run("render --scene glass --size 64x36 --set oit.method=weighted --buffer oit.abuffer --out " +
+                             (test::tempDir() / "x.png").string());
+    EXPECT_NE(wrong.code, 0);
+    EXPECT_NE(wrong.err.find("oit.abuffer is written only with oit.method=abuffer"), std::string::npos) << wrong.err;
 }

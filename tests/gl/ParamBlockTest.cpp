@@ -21,6 +21,7 @@
 #include "shaders/params/bloom.h"
 #include "shaders/params/bufferview.h"
 #include "shaders/params/camera.h"
+#include "shaders/params/oit.h"
 #include "shaders/params/dof.h"
 #include "shaders/params/fxaa.h"
 #include "shaders/params/light.h"
@@ -63,7 +64,7 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::LuminanceParams>(), describe<gpu::BloomParams>(),
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
-            describe<gpu::CameraBlock>()};
+            describe<gpu::CameraBlock>(),     describe<gpu::OitParams>()};
 }
 
 // Builds every variant of the buffer view's programs (BufferView compiles

@@ -813,3 +813,43 @@ TEST(Gui, TheCpuReferenceOfTheViewAppearsAsOutputsAndIsWithdrawnWhenTheViewChang
               std::string::npos)
         << stale.dump();
 }
+
+// Transparency (issue 21), as a person opens it: the glass scene with the
+// viewport showing oit.sample_count draws it as a heat map with its colour
+// bar: the bar runs from the heat map's dark blue to its red, and the image
+// holds both cold (few layers) and hot (many) colours, which the final image
+// of the same scene does not.
+TEST(Gui, UnderXvfbTheTransparencySampleCountsShowAsAHeatMapWithItsColourBar) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path shot = test::tempDir() / "oit-heat.png";
+    const LayoutReport heat = runScripted("oit-heat", "1024x640", 8, "",
+                                          "--view oit.sample_count --screenshot " + shot.string(),
+                                          "glass --set oit.method=abuffer --set ssao.enabled=false");
+    ASSERT_TRUE(heat.items.contains("legend.colour_bar")) << heat.items.dump();
+    const auto& bar = heat.items["legend.colour_bar"];
+    const FloatImage img = loadImageFloat(shot.string());
+    const int y = static_cast<int>(bar["y"].get<float>() + bar["h"].get<float>() * 0.5f);
+    // At 15% and 90% of the bar (turbo: blue, then red; its very ends are dark).
+    const float bx = bar["x"].get<float>(), bw = bar["w"].get<float>();
+    const int x0 = static_cast<int>(bx + 0.15f * bw), x1 = static_cast<int>(bx + 0.9f * bw);
+    ASSERT_GT(x1 - x0, 40);
+    const glm::vec3 cold(img.at(x0, y, 0), img.at(x0, y, 1), img.at(x0, y, 2)), hot(img.at(x1, y, 0), img.at(x1, y, 1), img.at(x1, y, 2));
+    std::printf("colour bar %d..%d at y %d: cold %.2f %.2f %.2f, hot %.2f %.2f %.2f\n", x0, x1, y, cold.r, cold.g, cold.b,
+                hot.r, hot.g, hot.b);
+    EXPECT_GT(cold.b, cold.r + 0.1f) << "the bar's low end is not the heat map's blue";
+    EXPECT_GT(hot.r, hot.b + 0.3f) << "the bar's high end is not the heat map's red";
+    // The viewport image under the bar: warm (turbo's upper end: red well
+    // over blue and green) and cold (blue) pixels.
+    const ui::PanelRect* viewport = heat.find("Viewport");
+    ASSERT_NE(viewport, nullptr);
+    long long warm = 0, coldPixels = 0;
+    for (int py = y + 20; py < static_cast<int>(viewport->y + viewport->h) - 10; ++py)
+        for (int px = static_cast<int>(viewport->x) + 10; px < static_cast<int>(viewport->x + viewport->w) - 10; ++px) {
+            const float r = img.at(px, py, 0), g = img.at(px, py, 1), b = img.at(px, py, 2);
+            warm += r > 0.4f && r > b + 0.3f && r > g + 0.3f;
+            coldPixels += b > r + 0.3f;
+        }
+    std::printf("heat map: %lld warm, %lld cold pixels\n", warm, coldPixels);
+    EXPECT_GT(warm, 200);
+    EXPECT_GT(coldPixels, 2000);
+}

@@ -195,3 +195,66 @@ TEST(GltfModels, TextureTransformTestOffsetsApply) {
     EXPECT_EQ(notApplied, 0);
     for (long long c : correct) EXPECT_GT(c, 1000);
 }
+
+namespace {
+
+// The final image of AlphaBlendModeTest seen square-on from (x, 0.9, 4), from
+// `gltf` (the file itself, or a copy with other alpha modes).
+FloatImage finalImageOf(const fs::path& gltf, const char* name, float x) {
+    const fs::path p = test::tempDir() / (std::string(name) + ".json");
+    std::ofstream(p) << "{\"camera\": {\"pos\": [" << x << ", 0.9, 4], \"look-at\": [" << x
+                     << ", 0.9, 0], \"fov\": 40},\n \"ambient\": [0.3, 0.3, 0.3],\n"
+                     << " \"objects\": [{\"gltf\": \"" << gltf.string() << "\"}]}\n";
+    auto session = test::makeSession(400, 300);
+    session->loadScene(p.string());
+    session->render({{"final"}});
+    return session->readRaw("final");
+}
+
+double meanAbsDifference(const FloatImage& a, const FloatImage& b, Region r) {
+    double sum = 0.0;
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            for (int c = 0; c < 3; ++c) sum += std::fabs(a.at(x, y, c) - b.at(x, y, c));
+    return sum / (3.0 * (r.x1 - r.x0) * (r.y1 - r.y0));
+}
+
+// Lit and tone-mapped, the marks are pale: a channel 0.12 above the others.
+bool reddish(float r, float g, float b) { return r > g + 0.12f && r > b + 0.12f; }
+bool greenish(float r, float g, float b) { return g > r + 0.12f && g > b + 0.12f; }
+
+}  // namespace
+
+// alphaMode BLEND (issue 21): the BLEND box is see-through where its
+// texture's alpha ramp is low (the top) and as the same file with OPAQUE
+// where it is 1 (the bottom); the red X beside its label (alpha 0) is
+// blended away, showing the green check behind it, which the OPAQUE copy
+// covers with the X (the model's README).
+TEST(GltfModels, AlphaBlendModeTestBlendBoxIsSeeThrough) {
+    const fs::path file = model("AlphaBlendModeTest");
+    REQUIRE_MODEL(file);
+    const fs::path copy = test::tempDir() / "alpha_blend_opaque";
+    fs::create_directories(copy);
+    for (const auto& e : fs::directory_iterator(file.parent_path()))
+        fs::copy_file(e.path(), copy / e.path().filename(), fs::copy_options::overwrite_existing);
+    {
+        std::ifstream in(file);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        for (std::size_t at; (at = text.find("\"BLEND\"")) != std::string::npos;) text.replace(at, 7, "\"OPAQUE\"");
+        std::ofstream(copy / "AlphaBlendModeTest.gltf") << text;
+    }
+    const FloatImage blend = finalImageOf(file, "alpha_blend_blend", -1.7f);
+    const FloatImage opaque = finalImageOf(copy / "AlphaBlendModeTest.gltf", "alpha_blend_opaque", -1.7f);
+    const Region top{205, 55, 265, 85}, bottom{205, 185, 265, 210}, check{245, 240, 290, 270};
+    const double topDiff = meanAbsDifference(blend, opaque, top), bottomDiff = meanAbsDifference(blend, opaque, bottom);
+    const long long redBlend = countPixels(blend, check, reddish), greenBlend = countPixels(blend, check, greenish);
+    const long long redOpaque = countPixels(opaque, check, reddish);
+    std::printf("BLEND vs OPAQUE: top (alpha ~0) %.3f, bottom (alpha ~1) %.3f; beside the label: BLEND green %lld, red "
+                "%lld; OPAQUE red %lld\n",
+                topDiff, bottomDiff, greenBlend, redBlend, redOpaque);
+    EXPECT_GT(topDiff, 0.1);
+    EXPECT_LT(bottomDiff, 0.5 * topDiff);
+    EXPECT_GT(greenBlend, 30);
+    EXPECT_EQ(redBlend, 0);
+    EXPECT_GT(redOpaque, 30);
+}

@@ -135,7 +135,7 @@ TEST(SceneJson, MissingFileAndUnknownSpec) {
         loadScene("no-such-scene");
         FAIL();
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("built-in scene (default, street, spheres, fire)"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("built-in scene (default, street, spheres, glass, fire)"), std::string::npos);
     }
 }
 

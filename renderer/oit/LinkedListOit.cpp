@@ -1,0 +1,81 @@
+#include "renderer/oit/LinkedListOit.h"
+
+#include <algorithm>
+
+#include "renderer/graph/PassTimer.h"
+
+namespace dw {
+
+LinkedListOit::LinkedListOit(KnobRegistry& knobs) {
+    nodes_ = knobs.addInt("oit.list_nodes", 1 << 22, 1, 1 << 26, "oit",
+                          "linked_list: the node buffer's size in nodes (16 bytes each; the default 4 Mi nodes is 64 MiB). "
+                          "Fragments past it are lost and counted in oit.overflow",
+                          "nodes", true);
+}
+
+std::string LinkedListOit::description() const {
+    return "per-pixel linked lists (head-pointer image, node buffer, atomic counter), sorted per pixel in a local array "
+           "of " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + ": exact within oit.list_nodes, the reference";
+}
+
+std::vector<OutputDecl> LinkedListOit::outputs() const {
+    return {
+        {"oit.list_heads", OutputKind::Scalar, "linked_list: each pixel's first node + 1 (R32UI; 0: none)",
+         texture2D(GL_R32UI), 1},
+        {"oit.list_nodes", OutputKind::Scalar,
+         "linked_list: the node buffer (uvec4: premultiplied RG and BA as halves, window depth, next node + 1 (0: the end))",
+         bufferFixed(kNodeBytes, kNodeBytes), 1},
+        {"oit.list_counter", OutputKind::Count, "linked_list: nodes taken this frame (one word, the atomic counter)",
+         bufferFixed(16, 4), 1},
+    };
+}
+
+ResourceDesc LinkedListOit::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    if (output.name == "oit.list_nodes")
+        return bufferFixed(static_cast<std::size_t>(knobs.get(nodes_)) * kNodeBytes, kNodeBytes);
+    return output.resource;
+}
+
+void LinkedListOit::setup(gl::ShaderLibrary& shaders) {
+    resolve_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "oit/resolve.frag", .defines = {"RESOLVE_LIST"}});
+}
+
+void LinkedListOit::render(OitFrame& f) {
+    FrameContext& ctx = f.ctx;
+    const gl::Texture& heads = ctx.texture("oit.list_heads");
+    const gl::Buffer& nodes = ctx.buffer("oit.list_nodes");
+    const gl::Buffer& counter = ctx.buffer("oit.list_counter");
+    heads.clearUint(0);
+    counter.clearUint(0);
+    heads.bindImage(oit_unit::kListHeads, GL_READ_WRITE);
+    nodes.bindBase(GL_SHADER_STORAGE_BUFFER, kOitNodeSsbo);
+    counter.bindBase(GL_SHADER_STORAGE_BUFFER, kOitCounterSsbo);
+    const unsigned budget = static_cast<unsigned>(ctx.knobs.get(nodes_));
+    f.params.nodeBudget = budget;
+    f.uploadParams();
+
+    // No colour or depth writes: the fragments go to the list.
+    gl::Framebuffer& fbo = target_.get(ctx, {"lbuffer"}, {}, "oit linked list");
+    fbo.bind();
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    if (ctx.timer) ctx.timer->beginSubSpan("oit.list_build");
+    f.drawTransparent(f.transparentProgram("METHOD_LIST"));
+    if (ctx.timer) ctx.timer->endSubSpan();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (ctx.timer) ctx.timer->beginSubSpan("oit.list_resolve");
+    f.compositeOverLBuffer(*resolve_);
+    if (ctx.timer) ctx.timer->endSubSpan();
+
+    unsigned taken = 0;
+    counter.read(0, sizeof taken, &taken);
+    const unsigned used = std::min(taken, budget);
+    stats_ = std::to_string(used) + " of " + std::to_string(budget) + " nodes" +
+             (taken > budget ? ", " + std::to_string(taken - budget) + " fragments over the budget (oit.overflow)" : "") +
+             "; resolve sorts up to " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " per pixel; memory " +
+             mebibytes(allocatedBytes(ctx, {"oit.list_heads", "oit.list_nodes", "oit.list_counter", "oit.sample_count",
+                                            "oit.overflow"}));
+}
+
+}  // namespace dw

@@ -1,0 +1,204 @@
+#include "renderer/passes/OitPass.h"
+
+#include <glm/glm.hpp>
+#include <set>
+
+#include "renderer/Error.h"
+#include "renderer/lighting/LightTable.h"
+#include "renderer/lighting/ShadowService.h"
+#include "renderer/scene/GpuScene.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+namespace {
+
+// Whether the instance's box can be seen: not wholly outside one clip plane.
+bool boxInView(const Bounds& b, const glm::dmat4& worldToClip) {
+    if (b.empty()) return false;
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 p((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y, (c & 4) ? b.max.z : b.min.z);
+        const glm::dvec4 q = worldToClip * glm::dvec4(p, 1.0);
+        outside[0] += q.x < -q.w;
+        outside[1] += q.x > q.w;
+        outside[2] += q.y < -q.w;
+        outside[3] += q.y > q.w;
+        outside[4] += q.w <= 0.0;  // behind the eye (depth conventions differ; the near side is enough)
+        outside[5] += 0;
+    }
+    for (int k = 0; k < 6; ++k)
+        if (outside[k] == 8) return false;
+    return true;
+}
+
+}  // namespace
+
+OitPass::OitPass(KnobRegistry& knobs) {
+    std::vector<OitMethodFactory> factories = builtinOitMethods();
+    for (const auto& f : OitMethodCatalog::extra().factories()) factories.push_back(f);
+    std::vector<std::string> names;
+    std::string description = "how the blended materials are composited over the L-buffer:";
+    for (const auto& make : factories) {
+        methods_.push_back(make(knobs));
+        names.emplace_back(methods_.back()->name());
+        description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + methods_.back()->description();
+    }
+    method_ = knobs.addEnum("oit.method", names, 0, "oit", description, true);
+}
+
+OitPass::~OitPass() = default;
+
+void OitPass::connect(const KnobRegistry& knobs) {
+    attenuation_ = knobs.requireEnum("lighting.attenuation");
+    windowed_ = knobs.choiceIndex(attenuation_, "windowed");
+    windowExponent_ = knobs.requireFloat("lighting.window_exponent");
+    ambientSpecular_ = knobs.requireBool("lighting.ambient_specular");
+}
+
+std::vector<OutputDecl> OitPass::outputs() const {
+    std::vector<OutputDecl> out = {
+        {"oit.sample_count", OutputKind::Count,
+         "transparent fragments that reached the pixel in front of the opaque surface, stored or lost (= stored + "
+         "oit.overflow; R32UI)",
+         texture2D(GL_R32UI), 1},
+        {"oit.overflow", OutputKind::Count,
+         "transparent fragments lost per pixel: past the A-buffer's samples, the peeled layers or the list's budget "
+         "(R32UI)",
+         texture2D(GL_R32UI), 1},
+    };
+    for (const auto& m : methods_)
+        for (auto& o : m->outputs()) out.push_back(o);
+    return out;
+}
+
+const OitMethod* OitPass::ownerOf(const std::string& output) const {
+    for (const auto& m : methods_)
+        for (const auto& o : m->outputs())
+            if (o.name == output) return m.get();
+    return nullptr;
+}
+
+ResourceDesc OitPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    const OitMethod* m = ownerOf(output.name);
+    return m ? m->resource(output, knobs) : output.resource;
+}
+
+bool OitPass::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
+    const OitMethod* m = ownerOf(output.name);
+    return !m || m == methods_[static_cast<std::size_t>(knobs.get(method_))].get();
+}
+
+PassIO OitPass::inputs(const KnobRegistry& knobs) const {
+    (void)knobs;
+    PassIO io;
+    io.inputs = {"gbuffer.depth", "lights.table", "lbuffer.depth"};
+    io.modifies = {"lbuffer"};
+    return io;
+}
+
+std::string OitPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
+    (void)knobs;
+    for (const auto& inst : scene.instances) {
+        if (inst.mesh < 0 || static_cast<std::size_t>(inst.mesh) >= scene.meshes.size()) continue;
+        const int mat = scene.meshes[static_cast<std::size_t>(inst.mesh)].material;
+        if (mat >= 0 && static_cast<std::size_t>(mat) < scene.materials.size() &&
+            scene.materials[static_cast<std::size_t>(mat)].alphaMode == AlphaMode::Blend)
+            return {};
+    }
+    return "no blended material in the scene";
+}
+
+void OitPass::setup(gl::ShaderLibrary& shaders) {
+    shaders_ = &shaders;
+    for (auto& m : methods_) m->setup(shaders);
+    lighting_.create();
+    params_.create();
+}
+
+const gl::Program& OitPass::transparentProgram(const std::string& method, bool shadowed) {
+    std::vector<std::string> defines{method};
+    if (shadowed) defines.emplace_back("OIT_SHADOWED");
+    // The library caches programs by description.
+    return *shaders_->get({.vertex = "geometry.vert", .fragment = "oit/transparent.frag", .defines = defines});
+}
+
+void OitPass::execute(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    OitMethod& method = *methods_[static_cast<std::size_t>(k.get(method_))];
+    for (const auto& m : methods_)
+        if (m.get() != &method)
+            for (const auto& o : m->outputs())
+                if (ctx.wants(o.name))
+                    throw Error(o.name + " is written only with oit.method=" + m->name() + " (now " + method.name() + ")");
+    if (!ctx.lightTable) throw Error("the oit pass ran without a light table (the lights pass did not run)");
+    const LightTable& table = *ctx.lightTable;
+
+    const gl::Texture& count = ctx.texture("oit.sample_count");
+    const gl::Texture& overflow = ctx.texture("oit.overflow");
+    count.clearUint(0);
+    overflow.clearUint(0);
+
+    OitFrame f{ctx};
+    const glm::dmat4 worldToClip = ctx.camera.worldToClip();
+    const auto& draws = ctx.gpu.draws();
+    for (std::size_t i = 0; i < draws.size(); ++i)
+        if (draws[i].alphaMode == AlphaMode::Blend && boxInView(draws[i].bounds, worldToClip)) f.draws.push_back(i);
+    lastDraws_ = f.draws.size();
+    if (f.draws.empty()) {
+        stats_ = std::string(method.name()) + ": no blended material in view";
+        return;
+    }
+    f.shadowed = ctx.shadows && ctx.shadows->everyMapKept();
+
+    gpu::LightingParams lp{};
+    lp.windowed = k.get(attenuation_) == windowed_ ? 1 : 0;
+    lp.windowExponent = k.get(windowExponent_);
+    lp.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
+    lp.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
+    lp.background = glm::vec4(ctx.scene.background, 0.0f);
+    lighting_.upload(lp, binding::kPassUbo);
+
+    f.params.samples = 1;
+    f.params.nodeBudget = 0;
+    f.params.weightFunction = 7;
+    f.params.countFragments = method.needsFragmentCount() || ctx.wants("oit.sample_count") ? 1 : 0;
+    f.params.lightCount = static_cast<int>(table.rows.size());
+    f.params.peelLayer = 0;
+    f.uploadParams = [&] { params_.upload(f.params, binding::kOitUbo); };
+    f.uploadParams();
+
+    ctx.texture("gbuffer.depth").bind(4);
+    table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+    if (f.shadowed) ctx.shadows->bind();
+    count.bindImage(oit_unit::kFragmentCount, GL_READ_WRITE);
+    overflow.bindImage(oit_unit::kOverflow, GL_READ_WRITE);
+
+    f.transparentProgram = [&](const std::string& m) -> const gl::Program& { return transparentProgram(m, f.shadowed); };
+    f.compositeOverLBuffer = [&](const gl::Program& program) {
+        gl::Framebuffer& fbo = composite_.get(ctx, {"lbuffer"}, {}, "oit composite");
+        fbo.bind();
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
+        params_.bind(binding::kOitUbo);
+        program.use();
+        triangle_.draw();
+        glDisable(GL_BLEND);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    };
+    method.render(f);
+    // The method's own outputs and the overflow are written every frame, so
+    // the probe and the inspector can read them although nothing asked for
+    // them; the count only when it was counted.
+    std::set<std::string> written{"oit.overflow"};
+    if (f.params.countFragments != 0 || method.needsFragmentCount()) written.insert("oit.sample_count");
+    for (const auto& o : method.outputs()) written.insert(o.name);
+    ctx.outputs.markProduced(name(), written);
+    stats_ = std::string(method.name()) + ": " + std::to_string(f.draws.size()) + " blended draws, " +
+             (f.shadowed ? "shadowed" : ctx.shadows ? "unshadowed (shadow maps reused: shadows.reuse_map)" : "no shadow maps") +
+             "; " + method.stats();
+}
+
+}  // namespace dw

@@ -1,0 +1,68 @@
+#pragma once
+// Order-independent transparency (issue 21; seed 000 sections 3.4-3.5 and
+// 5.8-5.9, seed 002 section 4, seed 003 section 3.4). Reads gbuffer.depth
+// (transparent fragments behind the opaque surface are discarded against
+// it), lights.table (and the shadow maps when every map was kept) and
+// lbuffer.depth; adds into lbuffer (a modify edge: bloom and tone mapping
+// see the transparent surfaces). The blended materials, kept out of the
+// G-buffer, shadow maps and SSAO, are forward-shaded with the light table
+// and composited by the method oit.method names (renderer/oit/OitMethod.h:
+// linked_list, abuffer, depth_peeling, weighted, forward_sorted). Writes
+// oit.sample_count (every transparent fragment that reached the pixel,
+// stored or lost) and oit.overflow (lost), and each method's own outputs.
+// Skipped, with the reason, when the scene has no blended material.
+#include <memory>
+#include <vector>
+
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ParamBuffer.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/graph/RenderPass.h"
+#include "renderer/graph/TargetFramebuffer.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "renderer/oit/OitMethod.h"
+#include "shaders/params/lighting.h"
+#include "shaders/params/oit.h"
+
+namespace dw {
+
+class OitPass : public RenderPass {
+public:
+    explicit OitPass(KnobRegistry& knobs);
+    ~OitPass() override;
+    const char* name() const override { return "oit"; }
+    std::vector<OutputDecl> outputs() const override;
+    PassIO inputs(const KnobRegistry& knobs) const override;
+    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
+    bool allocates(const OutputDecl& output, const KnobRegistry& knobs) const override;
+    void connect(const KnobRegistry& knobs) override;
+    std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    void setup(gl::ShaderLibrary& shaders) override;
+    void execute(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+    const std::vector<std::unique_ptr<OitMethod>>& methods() const { return methods_; }
+    // The blended instances the last frame drew.
+    std::size_t lastDraws() const { return lastDraws_; }
+
+private:
+    // The method that declares `output`, or null for the shared outputs.
+    const OitMethod* ownerOf(const std::string& output) const;
+    const gl::Program& transparentProgram(const std::string& method, bool shadowed);
+
+    std::vector<std::unique_ptr<OitMethod>> methods_;
+    EnumKnob method_;
+    EnumKnob attenuation_;
+    int windowed_ = 0;
+    FloatKnob windowExponent_;
+    BoolKnob ambientSpecular_;
+    gl::ShaderLibrary* shaders_ = nullptr;
+    gl::ParamBuffer<gpu::LightingParams> lighting_;
+    gl::ParamBuffer<gpu::OitParams> params_;
+    gl::FullscreenTriangle triangle_;
+    TargetFramebuffer composite_;
+    std::string stats_;
+    std::size_t lastDraws_ = 0;
+};
+
+}  // namespace dw

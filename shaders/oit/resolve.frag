@@ -1,0 +1,120 @@
+#version 450 core
+// The transparent layers of a pixel, composited: the output is (C, T), the
+// layers' premultiplied colour blended back to front with "over",
+// C = a_i C_i + (1 - a_i) C (seed 000 eq. 3.6 with the operands in this
+// order), and their transmittance T = prod(1 - a_i); the pass blends it over
+// the L-buffer as L = C + T L (GL_ONE, GL_SRC_ALPHA). One variant per method:
+//   RESOLVE_ABUFFER: every sample of the stencil-routed A-buffer (seed 000
+//     section 5.9), sorted by depth; the fragments past the samples counted
+//     into oit.overflow (oit.sample_count - samples).
+//   RESOLVE_LIST: the pixel's linked list, the nearest OIT_LIST_MAX_FRAGMENTS
+//     kept in a local array and sorted; the rest counted into oit.overflow.
+//   RESOLVE_WEIGHTED: McGuire and Bavoil 2013's composite (their eq. 6).
+//   RESOLVE_PEEL: the layers depth peeling accumulated front to back;
+//     the fragments past the peeled layers counted into oit.overflow.
+#include "../common/camera.glsl"
+#include "../params/oit.h"
+
+layout(location = 0) out vec4 outColor;
+layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
+layout(binding = 2, r32ui) uniform coherent uimage2D uLost;           // oit.overflow
+
+bool farther(float a, float b) { return depthReversed() ? a < b : a > b; }
+
+#if defined(RESOLVE_ABUFFER)
+layout(binding = 13) uniform sampler2DMS uSamples;
+layout(binding = 14) uniform sampler2DMS uSampleDepth;
+#elif defined(RESOLVE_LIST)
+layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
+layout(std430, binding = 5) readonly buffer ListNodes { uvec4 nodes[]; };
+#elif defined(RESOLVE_WEIGHTED)
+layout(binding = 13) uniform sampler2D uAccum;
+layout(binding = 14) uniform sampler2D uRevealage;
+#elif defined(RESOLVE_PEEL)
+layout(binding = 13) uniform sampler2D uPeelAccum;  // (C, T) front to back
+layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;  // oit.peel_layers
+#endif
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+#if defined(RESOLVE_ABUFFER) || defined(RESOLVE_LIST)
+#if defined(RESOLVE_ABUFFER)
+    const int kMax = OIT_MAX_SAMPLES;
+#else
+    const int kMax = OIT_LIST_MAX_FRAGMENTS;
+#endif
+    vec4 colour[kMax];
+    float depth[kMax];
+    int n = 0;
+#if defined(RESOLVE_ABUFFER)
+    uint arrived = imageLoad(uFragmentCount, px).r;
+    n = int(min(arrived, uint(oit.samples)));
+    imageStore(uLost, px, uvec4(arrived - uint(n)));
+    for (int i = 0; i < n; ++i) {
+        colour[i] = texelFetch(uSamples, px, i);
+        depth[i] = texelFetch(uSampleDepth, px, i).r;
+    }
+#else
+    // Links are node index + 1, 0 ending the list: a lane whose loads are
+    // masked (llvmpipe returns 0 for them) stops instead of walking node 0's
+    // list until the driver's loop limit (2.5 s a frame at 320x180).
+    uint link = imageLoad(uHeads, px).r;
+    uint dropped = 0u;
+    while (link != 0u) {
+        uvec4 v = nodes[link - 1u];
+        vec4 c = vec4(unpackHalf2x16(v.x), unpackHalf2x16(v.y));
+        float z = uintBitsToFloat(v.z);
+        if (n < kMax) {
+            colour[n] = c;
+            depth[n] = z;
+            ++n;
+        } else {
+            // Full: keep the nearest kMax, drop the farthest.
+            int far = 0;
+            for (int i = 1; i < kMax; ++i)
+                if (farther(depth[i], depth[far])) far = i;
+            if (farther(depth[far], z)) {
+                colour[far] = c;
+                depth[far] = z;
+            }
+            ++dropped;
+        }
+        link = v.w;
+    }
+    if (dropped > 0u) imageAtomicAdd(uLost, px, dropped);
+#endif
+    if (n == 0) discard;
+    // Insertion sort, farthest first.
+    for (int i = 1; i < n; ++i) {
+        vec4 c = colour[i];
+        float z = depth[i];
+        int j = i - 1;
+        while (j >= 0 && farther(z, depth[j])) {
+            colour[j + 1] = colour[j];
+            depth[j + 1] = depth[j];
+            --j;
+        }
+        colour[j + 1] = c;
+        depth[j + 1] = z;
+    }
+    vec3 C = vec3(0.0);
+    float T = 1.0;
+    for (int i = 0; i < n; ++i) {
+        C = colour[i].rgb + (1.0 - colour[i].a) * C;
+        T *= 1.0 - colour[i].a;
+    }
+    outColor = vec4(C, T);
+#elif defined(RESOLVE_WEIGHTED)
+    vec4 accum = texelFetch(uAccum, px, 0);
+    float revealage = texelFetch(uRevealage, px, 0).r;
+    if (revealage >= 1.0) discard;  // nothing transparent here
+    vec3 average = accum.rgb / clamp(accum.a, 1e-4, 5e4);
+    outColor = vec4(average * (1.0 - revealage), revealage);
+#elif defined(RESOLVE_PEEL)
+    uint arrived = imageLoad(uFragmentCount, px).r;
+    uint layers = imageLoad(uLayers, px).r;
+    imageStore(uLost, px, uvec4(arrived > layers ? arrived - layers : 0u));
+    if (layers == 0u) discard;
+    outColor = texelFetch(uPeelAccum, px, 0);
+#endif
+}

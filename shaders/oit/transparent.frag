@@ -1,0 +1,118 @@
+#version 450 core
+// Transparent fragments, forward-shaded (seed 003 section 3.4; seed 000
+// section 3.5): the material (common/material_eval.glsl, what the G-buffer
+// pass evaluates), alpha from the base colour factor and texture, lit by
+// every row of the light table with shade.glsl's lightRadiance (and the
+// shadow maps when they were all kept: OIT_SHADOWED), plus the ambient term
+// and emission; premultiplied by alpha. Fragments behind the opaque surface
+// are discarded against gbuffer.depth here, not by the depth test (the
+// A-buffer's stencil routing must see only the fragments it stores). Then
+// one method stores it:
+//   METHOD_LIST: a node of the per-pixel linked list (head image, node SSBO,
+//     atomic counter; past oit.nodeBudget counted in oit.overflow)
+//   METHOD_WEIGHTED: McGuire and Bavoil 2013's accumulation and revealage
+//   METHOD_ABUFFER: the colour to the stencil-routed sample (the pass sets
+//     the stencil state; depth GL_ALWAYS, written)
+//   METHOD_PEEL: the nearest fragment behind the previous layer (uPrevDepth)
+//   METHOD_FORWARD: blended "over" into the L-buffer, sorted on the CPU
+#ifndef OIT_SHADOWED
+#define UNSHADOWED
+#endif
+#include "../lighting/shade.glsl"
+#include "../common/material_eval.glsl"
+#include "../params/oit.h"
+
+layout(location = 1) uniform int uMaterial;
+
+in VertexData {
+    vec3 viewPosition;
+    vec3 normal;
+    vec4 tangent;
+    vec2 uvs[MATERIAL_SLOTS];
+    vec4 color;
+} fs;
+
+layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
+#if defined(METHOD_LIST)
+layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
+layout(binding = 2, r32ui) uniform coherent uimage2D uLost;  // oit.overflow
+layout(std430, binding = 5) buffer ListNodes { uvec4 nodes[]; };
+layout(std430, binding = 6) buffer ListCounter { uint usedNodes; };
+#elif defined(METHOD_WEIGHTED)
+layout(location = 0) out vec4 outAccum;
+layout(location = 1) out vec4 outRevealage;
+#elif defined(METHOD_PEEL)
+layout(binding = 13) uniform sampler2D uPrevDepth;
+layout(location = 0) out vec4 outColor;
+#else
+layout(location = 0) out vec4 outColor;
+#endif
+
+bool nearer(float a, float b) { return depthReversed() ? a > b : a < b; }
+
+// McGuire and Bavoil, "Weighted Blended Order-Independent Transparency",
+// JCGT 2(2), 2013, equations 7-10: z the view-space distance, d the
+// conventional window depth (0 near, 1 far).
+float blendWeight(float alpha, float z, float windowDepth) {
+    float d = depthReversed() ? 1.0 - windowDepth : windowDepth;
+    z = abs(z);
+    if (oit.weightFunction == 8) return alpha * clamp(10.0 / (1e-5 + pow(z / 10.0, 3.0) + pow(z / 200.0, 6.0)), 1e-2, 3e3);
+    if (oit.weightFunction == 9) return alpha * clamp(0.03 / (1e-5 + pow(z / 200.0, 4.0)), 1e-2, 3e3);
+    if (oit.weightFunction == 10) return alpha * max(1e-2, 3e3 * pow(1.0 - d, 3.0));
+    return alpha * clamp(10.0 / (1e-5 + pow(z / 5.0, 2.0) + pow(z / 200.0, 6.0)), 1e-2, 3e3);
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    if (!nearer(gl_FragCoord.z, texelFetch(uDepth, px, 0).r)) discard;  // behind the opaque surface
+#ifdef METHOD_PEEL
+    if (!nearer(texelFetch(uPrevDepth, px, 0).r, gl_FragCoord.z)) discard;  // peeled already
+#endif
+    Material m = materials[uMaterial];
+    MaterialSample ms;
+    if (!evaluateMaterial(m, fs.normal, fs.tangent, fs.uvs, fs.color, gl_FrontFacing, ms)) discard;
+    vec4 base = m.baseColor * fs.color;
+    if (m.textures.x != 0) base *= texture(uBaseColorMap, fs.uvs[SLOT_BASE_COLOR]);
+    float alpha = clamp(base.a, 0.0, 1.0);
+
+    Surface s;
+    s.depth = gl_FragCoord.z;
+    s.pixelType = PIXEL_SURFACE;
+    s.position = fs.viewPosition;
+    s.normal = ms.normal;
+    s.diffuse = clamp(ms.diffuse, 0.0, 1.0);
+    s.specular = clamp(ms.specular, 0.0, 1.0);
+    s.exponent = clamp(ms.exponent, 1.0, 2048.0);
+    vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
+    vec3 c = lightingParams.ambient.rgb * reflectance + ms.emissive;
+    for (int i = 0; i < oit.lightCount; ++i) c += lightRadiance(shadingLight(i), s);
+    vec4 premultiplied = vec4(c * alpha, alpha);
+
+    // Helper invocations (quad neighbours run for derivatives) must not
+    // count or store: llvmpipe lets their atomics through, doubling the
+    // fragments along every triangle's diagonal.
+    if (gl_HelperInvocation) discard;
+#ifdef METHOD_ABUFFER
+    // Multisample rasterisation: a pixel on the edge two triangles share gets
+    // a fragment from each (complementary samples); count the one covering sample 0.
+    bool counted = (gl_SampleMaskIn[0] & 1) != 0;
+#else
+    bool counted = true;
+#endif
+    if (oit.countFragments != 0 && counted) imageAtomicAdd(uFragmentCount, px, 1u);
+#if defined(METHOD_LIST)
+    uint node = atomicAdd(usedNodes, 1u);
+    if (node >= oit.nodeBudget) {
+        imageAtomicAdd(uLost, px, 1u);
+        return;
+    }
+    uint next = imageAtomicExchange(uHeads, px, node + 1u);  // links are index + 1; 0 ends a list
+    nodes[node] = uvec4(packHalf2x16(premultiplied.rg), packHalf2x16(premultiplied.ba), floatBitsToUint(gl_FragCoord.z), next);
+#elif defined(METHOD_WEIGHTED)
+    float w = blendWeight(alpha, fs.viewPosition.z, gl_FragCoord.z);
+    outAccum = premultiplied * w;
+    outRevealage = vec4(alpha);
+#else
+    outColor = premultiplied;
+#endif
+}
