@@ -35,7 +35,6 @@ double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-
 // SplitMix64: a pixel's random offsets from its index and the seed, the same
 // whichever thread renders it.
 std::uint64_t mix64(std::uint64_t z) {
@@ -242,7 +241,9 @@ ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model,
                 aoError[p] = model.aoIntensity * std::sqrt(variance / n);
             }
             if (!transparent) out.ao.pixels[p] = static_cast<float>(access);
-            if (model.bakedOcclusion) access *= s.occlusion;
+            // The GPU's transparent fragments take no baked occlusion either
+            // (shaders/oit/transparent.frag).
+            if (model.bakedOcclusion && !transparent) access *= s.occlusion;
             const glm::dvec3 reflectance =
                 s.diffuse + (model.ambientSpecular ? s.specular : glm::dvec3(0.0));
             radiance = ambient * reflectance * access + s.emissive;
