@@ -128,7 +128,7 @@ void printReport(const CompareImage& a, const CompareImage& b, const ImageCompar
     std::printf("  %s, %s\n", DifferenceStatistics::shape(a.image).c_str(), c.hdr ? "HDR" : "LDR");
     std::printf("  mean error   %-12.6g (%s)\n", d.overall.mean, perChannel(d.perChannel, &DifferenceFigures::mean, ch).c_str());
     std::printf("  RMS error    %-12.6g (%s)\n", d.overall.rms, perChannel(d.perChannel, &DifferenceFigures::rms, ch).c_str());
-    std::printf("  PSNR         %.4g dB (peak 1.0)\n", d.overall.psnr);
+    std::printf("  PSNR         %.4g dB (peak max(1, largest value), as OpenImageIO)\n", d.overall.psnr);
     std::printf("  max error    %-12.6g at (%d, %d) channel %s\n", d.overall.max, d.overall.maxX, d.overall.maxY,
                 channelName(d.overall.maxChannel, ch).c_str());
     if (c.ssim) {
@@ -313,6 +313,16 @@ int compare(int argc, char** argv) {
             inA.run.sets = inB.run.sets;  // the model's knobs are the render's
             inA.aoRays = CommandLine::parseInt("--ao-rays", aoRaysFlag.value_or("64"), 1, 1 << 20);
             CompareInputs::referenceBufferFor(inA.buffer);  // a buffer without a counterpart fails before rendering
+            if (inA.buffer == "ssao.raw") {
+                // ssao.raw is at the AO resolution; the reference's AO at the frame's.
+                KnobRegistry knobs = RunConfig::declaredKnobs();
+                for (const std::string& set : inB.run.sets) knobs.applyAssignment(set);
+                if (knobs.choice(knobs.requireEnum("ssao.resolution")) != "full")
+                    throw UsageError("--against reference --buffer ssao.raw: ssao.raw is at ssao.resolution (" +
+                                     knobs.choice(knobs.requireEnum("ssao.resolution")) +
+                                     "), the reference's AO at the frame's size: add --b ssao.resolution=full, or "
+                                     "compare ssao.blurred");
+            }
         }
         inA.run.validate();
         inB.run.validate();

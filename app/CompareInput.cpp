@@ -10,6 +10,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/FlameParticles.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -66,23 +67,33 @@ std::string CompareInputs::referenceBufferFor(const std::string& buffer) {
 
 CompareImage CompareInputs::produceReference(const CompareInput& input) {
     const std::string name = referenceBufferFor(input.buffer);
+    // The scene as the render's last frame has it: flame particles (fire) move with the frame index.
+    Scene scene = *loaded_;
+    animateFlameParticles(scene, static_cast<std::uint64_t>(input.run.warmup + input.run.frames - 1));
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     KnobRegistry knobs = RunConfig::declaredKnobs();
-    input.run.applyKnobs(knobs, *loaded_);
-    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, *loaded_);
+    input.run.applyKnobs(knobs, scene);
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
     model.aoRays = input.aoRays;
     reference::ReferenceRequest request;
-    request.camera = input.run.camera(*loaded_);
+    request.camera = input.run.camera(scene);
     request.width = input.run.width;
     request.height = input.run.height;
     const reference::ReferenceCache cache;
-    const std::string key = reference::referenceKey(*loaded_, model, request);
+    const std::string key = reference::referenceKey(scene, model, request);
     std::optional<reference::ReferenceImages> images = cache.load(key);
     const bool cached = images.has_value();
     if (!cached) {
-        images = reference::renderReference(*loaded_, model, request);
-        cache.store(key, *images);
+        std::fprintf(stderr, "rendering the CPU reference (%dx%d, %d AO rays; cached for the next run)...\n",
+                     request.width, request.height, model.rayTracedAo ? model.aoRays : 0);
+        images = reference::renderReference(scene, model, request);
+        try {
+            cache.store(key, *images);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
+        }
     }
-    const reference::KnobReport report = reference::reportKnobs(knobs);
+    const reference::KnobReport report = reference::reportKnobs(knobs, model);
     if (!report.unmodelledOn.empty() && name == "final") {
         std::string on;
         for (const auto& k : report.unmodelledOn) on += " " + k;
@@ -93,7 +104,7 @@ CompareImage CompareInputs::produceReference(const CompareInput& input) {
     out.label = input.label;
     out.image = *images->buffer(name);
     out.hdr = name != "final";
-    out.describe = "CPU reference of " + loaded_->name + ", " + name + ", " + std::to_string(request.width) + "x" +
+    out.describe = "CPU reference of " + scene.name + ", " + name + ", " + std::to_string(request.width) + "x" +
                    std::to_string(request.height) + (out.hdr ? " (HDR)" : " (LDR)") +
                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
                    (cached ? ", from the cache" : "");

@@ -417,7 +417,8 @@ private:
     // rendered, from the newest GPU frame times; frozen while timings are captured.
     void adjustAutoScale(ui::UiState& state) {
         ui::ViewportView& v = state.viewport;
-        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.framesRendered % 4 != 0)
+        if (v.resolution != ui::ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.holdView ||
+            state.framesRendered % 4 != 0)
             return;
         const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);
         if (!total || total->samples.size() < 2) return;
@@ -449,7 +450,8 @@ private:
         };
         if (deferred) tryAdd(state.viewport.output, viewportWhy);
         if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
-        animateFlameParticles(session_.mutableScene(), pipeline.frameIndex());
+        state.flameFrame = state.heldFlameFrame.value_or(pipeline.frameIndex());
+        animateFlameParticles(session_.mutableScene(), state.flameFrame);
         // The forward preview modes run no deferred pass at all.
         if (deferred) {
             state.report = pipeline.render(session_.camera(), request);

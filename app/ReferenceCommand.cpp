@@ -2,11 +2,13 @@
 // with no GL at all (renderer/reference/ReferenceRenderer.h).
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 #include <tuple>
@@ -107,12 +109,16 @@ int runReferenceCommand(int argc, char** argv) {
         return 0;
     }
     RunConfig run = cl.runConfig();
-    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
+    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
     const std::string buffer = cl.value("--buffer").value_or("lbuffer");
     const auto out = cl.value("--out");
     const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
     const int seed = CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647);
-    const int threads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"), 0, 4096);
+    const int requestedThreads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"), 0, 4096);
+    // oneTBB runs at most as many threads as the machine has cores; more are not asked for.
+    const int threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
+    if (requestedThreads > threads && threads > 0)
+        std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", requestedThreads, threads, threads);
     const bool noCache = cl.flag("--no-cache");
     const auto cacheDir = cl.value("--cache-dir");
     const auto statsOut = cl.value("--stats-out");
@@ -124,6 +130,8 @@ int runReferenceCommand(int argc, char** argv) {
     const auto& names = reference::referenceBuffers();
     if (std::find(names.begin(), names.end(), buffer) == names.end())
         throw UsageError("--buffer: unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
+    if (isFloatFormat(*out) && std::filesystem::path(*out).extension() != ".exr")
+        throw UsageError("--out " + *out + ": float images are written as .exr (or .png for final, ao and shadow)");
     if (buffer == "lbuffer" && !isFloatFormat(*out))
         throw UsageError("--out " + *out + ": the L-buffer is HDR; write it as .exr");
     CommandLine::NamedFiles writes = {{"--out", *out}};
@@ -140,7 +148,7 @@ int runReferenceCommand(int argc, char** argv) {
     reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
     model.aoRays = aoRays;
     model.seed = static_cast<std::uint32_t>(seed);
-    std::printf("%s\n", reference::reportKnobs(knobs).text().c_str());
+    std::printf("%s\n", reference::reportKnobs(knobs, model, buffer == "final").text().c_str());
 
     reference::ReferenceRequest request;
     request.camera = run.camera(scene);
@@ -160,7 +168,13 @@ int runReferenceCommand(int argc, char** argv) {
             std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
             return 130;
         }
-        if (!noCache) cache.store(key, *images);
+        if (!noCache) {
+            try {
+                cache.store(key, *images);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
+            }
+        }
     }
     writeImage(*out, *images->buffer(buffer));
     const reference::ReferenceStatistics& s = images->stats;

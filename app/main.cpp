@@ -2,6 +2,7 @@
 // dispatched through the table in app/Commands.h.
 #include <algorithm>
 #include <cstdio>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,6 +65,9 @@ int main(int argc, char** argv) {
         if (command) std::fprintf(stderr, "(deferred-workbench help %s lists its options)\n", command->name);
         else printUsage(stderr);
         return 2;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "deferred-workbench: error: out of memory (a smaller --size, or fewer samples, needs less)\n");
+        return 1;
     } catch (const dw::gl::ShaderError& e) {
         std::fprintf(stderr, "deferred-workbench: shader error: %s\n", e.what());
         return 1;

@@ -29,6 +29,8 @@ void ReferenceControls::start(UiState& state, RenderSession& session) {
         state.log.error("no frame has been rendered yet to take a reference of", state.time, "reference");
         return;
     }
+    // The flames (fire) stay where this frame put them while the reference is rendered and shown.
+    state.heldFlameFrame = state.flameFrame;
     job_.start(session.scene(), model, request);
     state.log.info("CPU reference of the view started (" + std::to_string(request.width) + "x" +
                        std::to_string(request.height) + ", " + std::to_string(aoRays) + " AO rays)",
@@ -79,14 +81,18 @@ void ReferenceControls::update(UiState& state, RenderSession& session) {
             state.log.info("the CPU reference finished after the view changed; render it again (F9)", state.time);
         }
     }
-    if (const std::string e = job_.takeError(); !e.empty())
-        state.log.error(e == "cancelled" ? "CPU reference cancelled" : "CPU reference failed: " + e, state.time, "reference");
+    if (const std::string e = job_.takeError(); !e.empty()) {
+        if (e == "cancelled") state.log.info("CPU reference cancelled", state.time);
+        else state.log.error("CPU reference failed: " + e, state.time, "reference");
+    }
     if (!shownKey_.empty() && currentKey(session) != shownKey_) {
         pass->setReference(nullptr, "the view changed since the CPU reference (camera, size, lights or a knob of the "
                                     "model): render it again (F9)");
         shownKey_.clear();
         state.forceRender = true;
     }
+    state.holdView = job_.running() || !shownKey_.empty();
+    if (!state.holdView) state.heldFlameFrame.reset();
 }
 
 }  // namespace dw::ui

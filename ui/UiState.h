@@ -7,6 +7,7 @@
 #include <deque>
 #include <map>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -281,6 +282,12 @@ struct UiState {
     bool requestScreenshot = false;
     bool requestRenderDocCapture = false;
     bool requestReference = false;  // F9, Render > CPU reference of this view
+    // While the CPU reference is rendered or shown (ReferenceControls), the
+    // view holds still: the auto resolution scale keeps its step, and the
+    // fire scene's flames stay where they were for frame heldFlameFrame.
+    bool holdView = false;
+    std::optional<std::uint64_t> heldFlameFrame;
+    std::uint64_t flameFrame = 0;  // the frame index the flames were last placed for
     bool forceRender = false;  // render the next frame even if nothing changed (a capture of it)
     // RenderDoc, as the app found it: whether captures can be taken, why not, and the captures taken.
     bool renderdocAvailable = false;

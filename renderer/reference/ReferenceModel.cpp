@@ -97,15 +97,20 @@ std::string ReferenceModel::canonical() const {
     return s.str();
 }
 
-KnobReport reportKnobs(const KnobRegistry& knobs) {
+KnobReport reportKnobs(const KnobRegistry& knobs, const ReferenceModel& model, bool finalImage) {
     KnobReport r;
+    if (const auto id = knobs.find("lighting.threshold"); id && model.attenuation == AttenuationModel::Classic) {
+        ++r.ignoredTotal;
+        if (!knobs.isDefault(*id))
+            r.ignoredChanged.push_back("lighting.threshold=" + knobs.format(*id) + " (the classic model has no cut-off)");
+    }
     const auto& honoured = ReferenceModel::honouredKnobs();
     const auto& unmodelled = ReferenceModel::unmodelledKnobs();
     for (size_t id = 0; id < knobs.size(); ++id) {
         const std::string& name = knobs.spec(static_cast<int>(id)).name;
         if (std::find(honoured.begin(), honoured.end(), name) != honoured.end()) continue;
         if (std::find(unmodelled.begin(), unmodelled.end(), name) != unmodelled.end()) {
-            if (knobs.value(static_cast<int>(id)) != 0.0) r.unmodelledOn.push_back(name);
+            if (finalImage && knobs.value(static_cast<int>(id)) != 0.0) r.unmodelledOn.push_back(name);
             continue;
         }
         ++r.ignoredTotal;

@@ -71,6 +71,9 @@ struct KnobReport {
     std::vector<std::string> unmodelledOn;    // "bloom.enabled"
     std::string text() const;
 };
-KnobReport reportKnobs(const KnobRegistry& knobs);
+// `model`: what the knobs made (the threshold is ignored under the classic
+// model); `finalImage`: whether the run writes the final image (the effects
+// not modelled matter only there).
+KnobReport reportKnobs(const KnobRegistry& knobs, const ReferenceModel& model, bool finalImage = true);
 
 }  // namespace dw::reference

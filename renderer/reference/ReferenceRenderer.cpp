@@ -139,6 +139,8 @@ void forEachTile(int width, int height, int threads, ReferenceProgress* progress
 
 }  // namespace
 
+int availableThreads() { return tbb::this_task_arena::max_concurrency(); }
+
 const std::vector<std::string>& referenceBuffers() {
     static const std::vector<std::string> names = {"lbuffer", "final", "ao", "shadow"};
     return names;

@@ -91,6 +91,9 @@ struct ReferenceRequest {
     int threads = 0;  // 0: all the machine has
 };
 
+// The threads a render can run at once (oneTBB's default concurrency).
+int availableThreads();
+
 // Throws Error (Embree failures, a size below 1x1) or ReferenceCancelled.
 ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
                                 ReferenceProgress* progress = nullptr);

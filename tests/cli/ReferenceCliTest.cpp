@@ -25,7 +25,8 @@ TEST(ReferenceCli, WritesEachBufferAndCachesTheRender) {
                            " --out " + (dir / "l.exr").string());
     ASSERT_EQ(first.code, 0) << first.err;
     EXPECT_NE(first.out.find("of them set here: lighting.strategy=tiled"), std::string::npos) << first.out;
-    EXPECT_NE(first.out.find("not modelled"), std::string::npos) << first.out;
+    // Bloom and FXAA are on, but they matter only to the final image.
+    EXPECT_EQ(first.out.find("not modelled"), std::string::npos) << first.out;
     const FloatImage l = loadImageFloat((dir / "l.exr").string());
     EXPECT_EQ(l.width, 48);
     EXPECT_EQ(l.height, 27);
@@ -45,6 +46,16 @@ TEST(ReferenceCli, WritesEachBufferAndCachesTheRender) {
     const auto other = run(common + " --set ssao.intensity=2 --buffer final --out " + (dir / "f.png").string());
     ASSERT_EQ(other.code, 0) << other.err;
     EXPECT_EQ(other.out.find("from the cache"), std::string::npos) << other.out;
+    EXPECT_NE(other.out.find("not modelled"), std::string::npos) << other.out;
+
+    // A cache that cannot be written costs the next run a render, not this run's image.
+    const fs::path notADir = dir / "a-file";
+    std::ofstream(notADir) << "x";
+    const auto uncached = run("reference --scene spheres --size 16x9 --ao-rays 2 --quiet --cache-dir " + notADir.string() +
+                              " --out " + (dir / "u.exr").string());
+    EXPECT_EQ(uncached.code, 0) << uncached.err;
+    EXPECT_NE(uncached.err.find("warning: the reference is not cached"), std::string::npos) << uncached.err;
+    EXPECT_TRUE(fs::exists(dir / "u.exr"));
 }
 
 TEST(ReferenceCli, BadInputGetsOneClearLine) {
@@ -53,6 +64,9 @@ TEST(ReferenceCli, BadInputGetsOneClearLine) {
     auto r = run("reference --scene spheres --size 8x8 --buffer depth --out " + (dir / "x.exr").string());
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("unknown reference buffer 'depth'"), std::string::npos) << r.err;
+    r = run("reference --scene spheres --size 8x8 --out " + (dir / "x.hdr").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("float images are written as .exr"), std::string::npos) << r.err;
     r = run("reference --scene spheres --size 8x8 --out " + (dir / "x.png").string());
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("the L-buffer is HDR; write it as .exr"), std::string::npos) << r.err;
@@ -92,6 +106,20 @@ TEST(ReferenceCli, CompareAgainstTheReference) {
     int entries = 0;
     for (const auto& e : fs::directory_iterator(dir / "cache")) entries += e.path().extension() == ".json";
     EXPECT_EQ(entries, 1);
+    // An animated scene: the reference is of the render's last frame (fire's flames move with it).
+    for (const char* frames : {"1", "12"}) {
+        r = test::runCommand(env + DW_WORKBENCH_BINARY +
+                             std::string(" compare --against reference --scene fire --size 48x27 --buffer lbuffer "
+                                         "--warn 1 --fail 1 --frames ") +
+                             frames + " --json " + (dir / "fire.json").string() + accurate);
+        ASSERT_EQ(r.code, 0) << r.out << r.err;
+        std::ifstream ff(dir / "fire.json");
+        EXPECT_LT(nlohmann::json::parse(ff)["flip"].get<double>(), 0.03) << "after " << frames << " frames";
+    }
+    // ssao.raw is at the AO resolution: said before anything renders.
+    r = run("compare --against reference --scene spheres --size 8x8 --buffer ssao.raw");
+    EXPECT_EQ(r.code, 5);
+    EXPECT_NE(r.err.find("add --b ssao.resolution=full"), std::string::npos) << r.err;
     // A buffer with no counterpart: one line, before anything renders.
     r = run("compare --against reference --scene spheres --size 8x8 --buffer gbuffer.normal");
     EXPECT_NE(r.code, 0);

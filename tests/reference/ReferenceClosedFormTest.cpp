@@ -299,11 +299,16 @@ TEST(ReferenceModel, HonouredKnobsChangeTheKeyIgnoredOnesDoNot) {
 
     KnobRegistry knobs = RunConfig::declaredKnobs();
     RunConfig run;
-    run.sets = {"lighting.strategy=tiled", "bloom.enabled=true"};
+    run.sets = {"lighting.strategy=tiled", "bloom.enabled=true", "lighting.threshold=0.1"};
     run.applyKnobs(knobs, s);
-    const reference::KnobReport report = reference::reportKnobs(knobs);
-    EXPECT_EQ(report.ignoredChanged, std::vector<std::string>{"lighting.strategy=tiled"});
+    const reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, s);
+    const reference::KnobReport report = reference::reportKnobs(knobs, model);
+    // The threshold is ignored under the classic model (no cut-off), and said so.
+    EXPECT_EQ(report.ignoredChanged, (std::vector<std::string>{"lighting.threshold=0.1 (the classic model has no cut-off)",
+                                                              "lighting.strategy=tiled"}));
     EXPECT_NE(std::find(report.unmodelledOn.begin(), report.unmodelledOn.end(), "bloom.enabled"), report.unmodelledOn.end());
+    // Bloom and FXAA matter only to the final image.
+    EXPECT_TRUE(reference::reportKnobs(knobs, model, false).unmodelledOn.empty());
 }
 
 TEST(ReferenceCache, StoresAndLoadsAnEntry) {
