@@ -47,7 +47,25 @@ void checkSpec(const OIIO::ImageSpec& spec, const std::string& name, std::uint64
 
 // OIIO's own size check (limits:imagesize_MB, set to the same budget) speaks
 // of its attribute; the workbench's words say how to raise the workbench's limit.
-std::string openError(const std::string& error) {
+// OIIO joins the decoder's messages with newlines ("Read error: hit end of
+// file\nPNG read error: IDAT: ..."): the CLI's promise is one line per problem.
+std::string oneLine(const std::string& text) {
+    std::string out, line;
+    auto flush = [&] {
+        const size_t b = line.find_first_not_of(" \t"), e = line.find_last_not_of(" \t");
+        if (b != std::string::npos) out += (out.empty() ? "" : "; ") + line.substr(b, e - b + 1);
+        line.clear();
+    };
+    for (char c : text) {
+        if (c == '\n' || c == '\r') flush();
+        else line += c;
+    }
+    flush();
+    return out;
+}
+
+std::string openError(const std::string& raw) {
+    const std::string error = oneLine(raw);
     if (error.find("limits:imagesize_MB") != std::string::npos) {
         const std::size_t cut = error.find(". Possible corrupt");
         return (cut == std::string::npos ? error : error.substr(0, cut)) + ": over the image memory limit of " +
@@ -83,7 +101,7 @@ Image toRgba8(std::unique_ptr<OIIO::ImageInput> in, const std::string& name) {
     checkSpec(spec, name, 1, 4);  // the decoded bytes, then RGBA
     std::vector<std::uint8_t> raw(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
-        throw FileError(name, "cannot decode image: " + in->geterror());
+        throw FileError(name, "cannot decode image: " + oneLine(in->geterror()));
     Image img;
     img.width = spec.width;
     img.height = spec.height;
@@ -174,7 +192,7 @@ FloatImage loadImageFloat(const std::string& path) {
         img.channels = spec.nchannels;
         img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
         if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-            throw FileError(path, "cannot decode image: " + in->geterror());
+            throw FileError(path, "cannot decode image: " + oneLine(in->geterror()));
         return img;
     });
 }
@@ -199,7 +217,7 @@ void writeImage(const std::string& path, const FloatImage& image,
                          asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     if (!channelNames.empty() && static_cast<int>(channelNames.size()) == image.channels && !pad)
         spec.channelnames = channelNames;
-    if (!out->open(path, spec)) throw FileError(path, "cannot open for writing: " + out->geterror());
+    if (!out->open(path, spec)) throw FileError(path, "cannot open for writing: " + oneLine(out->geterror()));
     bool ok;
     if (asFloat) {
         ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
@@ -213,7 +231,7 @@ void writeImage(const std::string& path, const FloatImage& image,
             }
         ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
     }
-    if (!ok || !out->close()) throw FileError(path, "cannot write image: " + out->geterror());
+    if (!ok || !out->close()) throw FileError(path, "cannot write image: " + oneLine(out->geterror()));
 }
 
 ImageDifference compareImages(const FloatImage& a, const FloatImage& b, float failThreshold) {
