@@ -15,6 +15,7 @@
 #include "renderer/reference/CameraRays.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/reference/MaterialEvaluator.h"
+#include "renderer/reference/PixelRandom.h"
 #include "renderer/reference/RayScene.h"
 #include "renderer/reference/ShadingReference.h"
 #include "renderer/reference/SkyReference.h"
@@ -33,18 +34,6 @@ constexpr int kMaxBlendedLayers = 256;
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-// SplitMix64: a pixel's random offsets from its index and the seed, the same
-// whichever thread renders it.
-std::uint64_t mix64(std::uint64_t z) {
-    z += 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-double unitFloat(std::uint64_t z) {
-    return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
 }
 
 double radicalInverse2(std::uint32_t i) {

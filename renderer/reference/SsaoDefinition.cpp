@@ -10,20 +10,13 @@
 #include "renderer/passes/SsaoPass.h"
 #include "renderer/reference/CameraRays.h"
 #include "renderer/reference/MaterialEvaluator.h"
+#include "renderer/reference/PixelRandom.h"
 #include "renderer/reference/RayScene.h"
 #include "renderer/reference/ReferenceModel.h"
 
 namespace dw::reference {
 
 namespace {
-
-std::uint64_t mix64(std::uint64_t z) {
-    z += 0x9E3779B97F4A7C15ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-double unitFloat(std::uint64_t z) { return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0); }
 
 // A uniform unit vector from two uniform numbers.
 glm::dvec3 unitVector(double u1, double u2) {
