@@ -12,6 +12,7 @@
 #include "renderer/oit/StencilRoutedOit.h"
 #include "renderer/passes/OitPass.h"
 #include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -355,4 +356,71 @@ TEST(Oit, ProbeListsThePixelsFragmentsInDepthOrder) {
                 for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.fragments[i].colour[c], over[i]->emissive[c], 2e-3) << i;
             }
     }
+}
+
+// The ways a material becomes blended: scene JSON "opacity" and glTF
+// alphaMode BLEND with the base colour factor's alpha. An emissive, black
+// square of alpha 0.5 over an emissive wall gives 0.5 E + 0.5 B in the
+// L-buffer (the texture's alpha: AlphaBlendModeTest in image_tests).
+TEST(Oit, SceneJsonOpacityAndGltfBaseColourAlphaBlend) {
+    const glm::dvec3 E(0.75, 0.25, 0.5), expected = 0.5 * E + 0.5 * glm::dvec3(kBackground);
+    auto check = [&](const std::string& path, const char* what) {
+        auto s = test::makeSession(W, H);
+        s->loadScene(path);
+        EXPECT_TRUE(s->scene().hasMaterial(AlphaMode::Blend)) << what;
+        const FrameReport report = s->render({{"lbuffer"}});
+        ASSERT_TRUE(report.find("oit") && report.find("oit")->ran) << what;
+        const FloatImage l = s->readRaw("lbuffer");
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(l.at(W / 2, H / 2, c), expected[c], 2e-3) << what << " channel " << c;
+        EXPECT_NEAR(l.at(4, 4, 0), kBackground.r, 1e-4) << what << ": the wall beside the square";
+    };
+    const nlohmann::json wall = {{"shape", "plane"}, {"size", {100, 0, 100}}, {"pos", {0, 0, -5}}, {"rotate", {90, 0, 0}},
+                                 {"material", {{"diffuse", {0, 0, 0}}, {"specular", {0, 0, 0}},
+                                               {"emissive", {kBackground.r, kBackground.g, kBackground.b}}}}};
+    const nlohmann::json camera = {{"pos", {0, 0, 10}}, {"look-at", {0, 0, 0}}, {"fov", 40}, {"near", 0.5}, {"far", 50}};
+    const nlohmann::json light = {{"type", "directional"}, {"direction", {0, -1, 0}}, {"intensity", {0, 0, 0}}};
+    nlohmann::json scene = {{"camera", camera}, {"ambient", {0, 0, 0}}, {"lights", {light}},
+                            {"objects", {wall, {{"shape", "plane"}, {"size", {4, 0, 4}}, {"rotate", {90, 0, 0}},
+                                                {"material", {{"diffuse", {0, 0, 0}}, {"specular", {0, 0, 0}},
+                                                              {"emissive", {E.x, E.y, E.z}}, {"opacity", 0.5},
+                                                              {"double-sided", true}}}}}}};
+    check(test::writeJson("oit_opacity.json", scene).string(), "scene JSON opacity");
+
+    test::GltfBuilder b;
+    const int pos = b.vec3({-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0});
+    const int nrm = b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int idx = b.indices({0, 1, 2, 0, 2, 3});
+    nlohmann::json g = b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx);
+    g["materials"] = nlohmann::json::array({{{"alphaMode", "BLEND"},
+                                             {"doubleSided", true},
+                                             {"emissiveFactor", {E.x, E.y, E.z}},
+                                             {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 0.5}}, {"metallicFactor", 0}}},
+                                             {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0}}}}}}});
+    g["extensionsUsed"] = {"KHR_materials_specular"};
+    g["meshes"][0]["primitives"][0]["material"] = 0;
+    const std::string gltf = test::writeJson("oit_blend.gltf", g).string();
+    scene["objects"][1] = {{"gltf", gltf}};
+    check(test::writeJson("oit_gltf.json", scene).string(), "glTF BLEND, baseColorFactor alpha");
+}
+
+// Blended surfaces cast no shadow by default; shadows.blended_casters draws
+// them into the maps as if opaque, which darkens the glass scene's floor.
+TEST(Oit, BlendedCastersKnobPutsTheGlassIntoTheShadowMaps) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("glass");
+    s->knobs().setFromString("ssao.enabled", "false");
+    s->render({{"lbuffer"}});
+    const FloatImage off = s->readRaw("lbuffer");
+    s->knobs().setFromString("shadows.blended_casters", "true");
+    s->render({{"lbuffer"}});
+    const FloatImage on = s->readRaw("lbuffer");
+    int darker = 0, brighter = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            darker += on.at(x, y, 1) < 0.8f * off.at(x, y, 1);
+            brighter += on.at(x, y, 1) > 1.01f * off.at(x, y, 1) + 1e-4f;
+        }
+    std::printf("with blended casters: %d pixels darker by over 20%%, %d brighter\n", darker, brighter);
+    EXPECT_GT(darker, 100);
+    EXPECT_EQ(brighter, 0);
 }
