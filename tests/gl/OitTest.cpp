@@ -147,9 +147,12 @@ constexpr double kTolerance = 3e-3;
 // Every pixel's fragments known: the linked list, depth peeling with as many
 // layers as the deepest pixel, and the A-buffer where a pixel holds no more
 // layers than samples give the CPU's sorted premultiplied blend.
-TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
+class OitDepthModes : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(OitDepthModes, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     auto s = test::makeSession(W, H);
     s->setScene(panesScene());
+    s->knobs().setFromString("depth.mode", GetParam());
     const int cap = s->pipeline().pass<OitPass>() ? [&] {
         for (const auto& m : s->pipeline().pass<OitPass>()->methods())
             if (auto* a = dynamic_cast<const StencilRoutedOit*>(m.get())) return a->deviceCap();
@@ -202,6 +205,8 @@ TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     EXPECT_EQ(countWrong, 0);
     EXPECT_EQ(overflowWrong, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Oit, OitDepthModes, ::testing::Values("reversed", "conventional"));
 
 // A node budget smaller than the fragments: the lost ones are counted per
 // pixel, stored + lost = every fragment.
