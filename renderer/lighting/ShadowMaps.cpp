@@ -43,6 +43,9 @@ ShadowMaps::ShadowMaps(KnobRegistry& knobs) {
                                 "(glPolygonOffset factor)");
     pointMethod_ = knobs.addEnum("shadows.point_method", {"cube", "dual_paraboloid"}, 0, "shadows",
                                  "point lights: a cube map (6 renders) or two paraboloids (2 renders; Brabec 2002)", true);
+    blendedCasters_ = knobs.addBool("shadows.blended_casters", false, "shadows",
+                                    "blended (transparent) materials cast shadows as if they were opaque; off: they cast "
+                                    "none (a shadow map holds one depth, not how much light a pane lets through)");
     reuse_ = knobs.addBool("shadows.reuse_map", true, "shadows",
                            "render each light's map just before shading it, reusing one map (seed 002 3.3); off: "
                            "keep one map per light, rendered before the lights are shaded");
@@ -102,6 +105,9 @@ void ShadowMaps::beginFrame(const FrameContext& ctx, const int counts[3], bool r
 }
 
 ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, double radius, int slot) {
+    // Blended surfaces cast no shadow unless shadows.blended_casters (then
+    // as if opaque: a shadow map holds one depth, not a transmittance).
+    const GpuScene::Filter casters = ctx.knobs.get(blendedCasters_) ? GpuScene::Filter::All : GpuScene::Filter::Opaque;
     const KnobRegistry& k = ctx.knobs;
     const Kind kind = kindOf(light, k);
     const int size = mapSize_;
@@ -245,7 +251,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         ctx.gpu.setDrawOrigin(eye);
         depth_->set(2, glm::mat4(proj * glm::translate(lightView, eye)));
         depth_->set(3, glm::vec3(0.0f));
-        ctx.gpu.drawDepthOnly(*depth_, GpuScene::Filter::Opaque);
+        ctx.gpu.drawDepthOnly(*depth_, casters);
         out.matrix = kBias * glm::mat4(proj * lightView * viewToWorld);
     } else if (kind == Cube) {
         // Each face stores the linear distance from the light (distance.frag,
@@ -260,7 +266,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         for (int f = 0; f < 6; ++f) {
             target(6 * slot + f);
             pointDistance_->set(2, proj * glm::lookAt(glm::vec3(0.0f), kFaces[f].dir, kFaces[f].up));
-            ctx.gpu.drawDepthOnly(*pointDistance_, GpuScene::Filter::Opaque);
+            ctx.gpu.drawDepthOnly(*pointDistance_, casters);
         }
         // World-aligned offset from the light, which is how cube maps are indexed.
         out.matrix = glm::mat4(glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);
@@ -280,7 +286,7 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
         for (int h = 0; h < 2; ++h) {
             target(2 * slot + h);
             paraboloid_->set(3, glm::vec4(near, far, h == 0 ? 1.0f : -1.0f, dc.reversed() ? 1.0f : 0.0f));
-            ctx.gpu.drawDepthOnly(*paraboloid_, GpuScene::Filter::Opaque);
+            ctx.gpu.drawDepthOnly(*paraboloid_, casters);
         }
         glDisable(GL_CLIP_DISTANCE0);
         out.matrix = glm::mat4(glm::dmat4(lightView) * glm::translate(glm::dmat4(1.0), -lightPos) * viewToWorld);

@@ -60,7 +60,7 @@ public:
 
 private:
     void ensure(Kind kind, int layers, int size);
-    BoolKnob enabled_, reuse_;
+    BoolKnob enabled_, reuse_, blendedCasters_;
     IntKnob size_, pcf_;
     FloatKnob biasConstant_, biasSlope_, distance_;
     EnumKnob pointMethod_;

@@ -1,5 +1,6 @@
 // The built-in OIT methods, one line each; the first is the default of oit.method.
 #include "renderer/oit/DepthPeelingOit.h"
+#include "renderer/oit/DualDepthPeelingOit.h"
 #include "renderer/oit/LinkedListOit.h"
 #include "renderer/oit/OitMethod.h"
 #include "renderer/oit/SortedForwardOit.h"
@@ -20,6 +21,7 @@ std::vector<OitMethodFactory> builtinOitMethods() {
         make<LinkedListOit>(),
         make<StencilRoutedOit>(),
         make<DepthPeelingOit>(),
+        make<DualDepthPeelingOit>(),
         make<WeightedOit>(),
         make<SortedForwardOit>(),
     };

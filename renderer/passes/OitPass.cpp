@@ -13,10 +13,11 @@ namespace dw {
 
 namespace {
 
-// Whether the instance's box can be seen: not wholly outside one clip plane.
+// Whether the instance's box can be seen: not wholly outside one of the
+// side planes or behind the eye (a conservative test: it only saves draws).
 bool boxInView(const Bounds& b, const glm::dmat4& worldToClip) {
     if (b.empty()) return false;
-    int outside[6] = {0, 0, 0, 0, 0, 0};
+    int outside[5] = {0, 0, 0, 0, 0};
     for (int c = 0; c < 8; ++c) {
         const glm::dvec3 p((c & 1) ? b.max.x : b.min.x, (c & 2) ? b.max.y : b.min.y, (c & 4) ? b.max.z : b.min.z);
         const glm::dvec4 q = worldToClip * glm::dvec4(p, 1.0);
@@ -24,10 +25,9 @@ bool boxInView(const Bounds& b, const glm::dmat4& worldToClip) {
         outside[1] += q.x > q.w;
         outside[2] += q.y < -q.w;
         outside[3] += q.y > q.w;
-        outside[4] += q.w <= 0.0;  // behind the eye (depth conventions differ; the near side is enough)
-        outside[5] += 0;
+        outside[4] += q.w <= 0.0;
     }
-    for (int k = 0; k < 6; ++k)
+    for (int k = 0; k < 5; ++k)
         if (outside[k] == 8) return false;
     return true;
 }

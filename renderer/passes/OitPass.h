@@ -7,7 +7,8 @@
 // see the transparent surfaces). The blended materials, kept out of the
 // G-buffer, shadow maps and SSAO, are forward-shaded with the light table
 // and composited by the method oit.method names (renderer/oit/OitMethod.h:
-// linked_list, abuffer, depth_peeling, weighted, forward_sorted). Writes
+// linked_list, abuffer, depth_peeling, dual_depth_peeling, weighted,
+// forward_sorted). Writes
 // oit.sample_count (every transparent fragment that reached the pixel,
 // stored or lost) and oit.overflow (lost), and each method's own outputs.
 // Skipped, with the reason, when the scene has no blended material.

@@ -10,6 +10,7 @@
 //   RESOLVE_LIST: the pixel's linked list, the nearest OIT_LIST_MAX_FRAGMENTS
 //     kept in a local array and sorted; the rest counted into oit.overflow.
 //   RESOLVE_WEIGHTED: McGuire and Bavoil 2013's composite (their eq. 6).
+//   RESOLVE_DUAL: dual depth peeling's front layers over its back layers;
 //   RESOLVE_PEEL: the layers depth peeling accumulated front to back;
 //     the fragments past the peeled layers counted into oit.overflow.
 #include "../common/camera.glsl"
@@ -33,6 +34,10 @@ layout(binding = 14) uniform sampler2D uRevealage;
 #elif defined(RESOLVE_PEEL)
 layout(binding = 13) uniform sampler2D uPeelAccum;  // (C, T) front to back
 layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;  // oit.peel_layers
+#elif defined(RESOLVE_DUAL)
+layout(binding = 13) uniform sampler2D uFrontAccum;  // (C, T) of the front layers, front to back
+layout(binding = 14) uniform sampler2D uBackAccum;   // (C, T) of the back layers, back to front
+layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
 #endif
 
 void main() {
@@ -116,5 +121,12 @@ void main() {
     imageStore(uLost, px, uvec4(arrived > layers ? arrived - layers : 0u));
     if (layers == 0u) discard;
     outColor = texelFetch(uPeelAccum, px, 0);
+#elif defined(RESOLVE_DUAL)
+    uint arrived = imageLoad(uFragmentCount, px).r;
+    uint layers = imageLoad(uLayers, px).r;
+    imageStore(uLost, px, uvec4(arrived > layers ? arrived - layers : 0u));
+    if (layers == 0u) discard;
+    vec4 front = texelFetch(uFrontAccum, px, 0), back = texelFetch(uBackAccum, px, 0);
+    outColor = vec4(front.rgb + front.a * back.rgb, front.a * back.a);
 #endif
 }

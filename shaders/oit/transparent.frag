@@ -14,6 +14,8 @@
 //   METHOD_ABUFFER: the colour to the stencil-routed sample (the pass sets
 //     the stencil state; depth GL_ALWAYS, written)
 //   METHOD_PEEL: the nearest fragment behind the previous layer (uPrevDepth)
+//   METHOD_DUAL_INIT, METHOD_DUAL: dual depth peeling's depth range and its
+//     nearest and farthest layers (Bavoil and Myers 2008)
 //   METHOD_FORWARD: blended "over" into the L-buffer, sorted on the CPU
 #ifndef OIT_SHADOWED
 #define UNSHADOWED
@@ -44,6 +46,14 @@ layout(location = 1) out vec4 outRevealage;
 #elif defined(METHOD_PEEL)
 layout(binding = 13) uniform sampler2D uPrevDepth;
 layout(location = 0) out vec4 outColor;
+#elif defined(METHOD_DUAL_INIT)
+layout(location = 0) out vec2 outDepth;
+#elif defined(METHOD_DUAL)
+layout(binding = 13) uniform sampler2D uPrevDepth;  // (-nearest, farthest) left, as farness
+layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
+layout(location = 0) out vec2 outDepth;
+layout(location = 1) out vec4 outFront;
+layout(location = 2) out vec4 outBack;
 #else
 layout(location = 0) out vec4 outColor;
 #endif
@@ -65,6 +75,25 @@ float blendWeight(float alpha, float z, float windowDepth) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     if (!nearer(gl_FragCoord.z, texelFetch(uDepth, px, 0).r)) discard;  // behind the opaque surface
+    // Dual depth peeling compares "farness", 0 near .. 1 far in either depth.mode.
+    float farness = depthReversed() ? 1.0 - gl_FragCoord.z : gl_FragCoord.z;
+#ifdef METHOD_DUAL_INIT
+    outDepth = vec2(-farness, farness);  // GL_MAX: (-nearest, farthest)
+    if (oit.countFragments != 0 && !gl_HelperInvocation) imageAtomicAdd(uFragmentCount, px, 1u);
+    return;
+#endif
+#ifdef METHOD_DUAL
+    vec2 prev = texelFetch(uPrevDepth, px, 0).rg;
+    float nearest = -prev.x, farthest = prev.y;
+    outDepth = vec2(-2.0);  // below every farness: no effect under GL_MAX
+    outFront = vec4(0.0);
+    outBack = vec4(0.0);
+    if (farness < nearest || farness > farthest) discard;  // peeled already
+    if (farness > nearest && farness < farthest) {
+        outDepth = vec2(-farness, farness);  // still inside: next pass's range
+        return;
+    }
+#endif
 #ifdef METHOD_PEEL
     if (!nearer(texelFetch(uPrevDepth, px, 0).r, gl_FragCoord.z)) discard;  // peeled already
 #endif
@@ -108,6 +137,13 @@ void main() {
     }
     uint next = imageAtomicExchange(uHeads, px, node + 1u);  // links are index + 1; 0 ends a list
     nodes[node] = uvec4(packHalf2x16(premultiplied.rg), packHalf2x16(premultiplied.ba), floatBitsToUint(gl_FragCoord.z), next);
+#elif defined(METHOD_DUAL_INIT)
+    // (returned above)
+#elif defined(METHOD_DUAL)
+    // The nearest or the farthest layer left (the nearest when they are one).
+    imageAtomicAdd(uLayers, px, 1u);
+    if (farness == nearest) outFront = premultiplied;
+    else outBack = premultiplied;
 #elif defined(METHOD_WEIGHTED)
     float w = blendWeight(alpha, fs.viewPosition.z, gl_FragCoord.z);
     outAccum = premultiplied * w;

@@ -12,6 +12,7 @@
 #include "renderer/oit/StencilRoutedOit.h"
 #include "renderer/passes/OitPass.h"
 #include "renderer/scene/ShapeBuilder.h"
+#include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -146,9 +147,12 @@ constexpr double kTolerance = 3e-3;
 // Every pixel's fragments known: the linked list, depth peeling with as many
 // layers as the deepest pixel, and the A-buffer where a pixel holds no more
 // layers than samples give the CPU's sorted premultiplied blend.
-TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
+class OitDepthModes : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(OitDepthModes, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     auto s = test::makeSession(W, H);
     s->setScene(panesScene());
+    s->knobs().setFromString("depth.mode", GetParam());
     const int cap = s->pipeline().pass<OitPass>() ? [&] {
         for (const auto& m : s->pipeline().pass<OitPass>()->methods())
             if (auto* a = dynamic_cast<const StencilRoutedOit*>(m.get())) return a->deviceCap();
@@ -168,6 +172,11 @@ TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     std::printf("depth_peeling (6 layers): worst error %.2e\n", peelError);
     EXPECT_LT(peelError, kTolerance);
 
+    const MethodResult dual = renderPanes(*s, "dual_depth_peeling", samples, 6);
+    const double dualError = worstError(dual.lbuffer, 6, &checked);
+    std::printf("dual_depth_peeling (6 layers, 4 passes): worst error %.2e\n", dualError);
+    EXPECT_LT(dualError, kTolerance);
+
     const MethodResult abuffer = renderPanes(*s, "abuffer", samples);
     const double abufferError = worstError(abuffer.lbuffer, samples, &checked);
     std::printf("abuffer (%d samples, device cap %d): worst error %.2e over %d pixels with <= %d layers\n", samples, cap,
@@ -180,6 +189,8 @@ TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     const MethodResult peel4 = renderPanes(*s, "depth_peeling", samples, 4);
     const double peel4Error = worstError(peel4.lbuffer, 4, &checked);
     EXPECT_LT(peel4Error, kTolerance);
+    const MethodResult dual4 = renderPanes(*s, "dual_depth_peeling", samples, 4);
+    EXPECT_LT(worstError(dual4.lbuffer, 4, &checked), kTolerance);
     std::vector<const Pane*> over;
     int countWrong = 0, overflowWrong = 0, deep = 0;
     for (int x = 0; x < W; ++x) {
@@ -187,8 +198,9 @@ TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
         if (n < 0) continue;
         for (int y = 5; y < H - 5; y += 7) {
             deep += n > samples ? 1 : 0;
-            for (const MethodResult* r : {&list, &abuffer, &peel4})
+            for (const MethodResult* r : {&list, &abuffer, &peel4, &dual4})
                 countWrong += static_cast<int>(r->count.at(x, y, 0)) != n;
+            overflowWrong += static_cast<int>(dual4.overflow.at(x, y, 0)) != std::max(0, n - 4);
             overflowWrong += static_cast<int>(abuffer.overflow.at(x, y, 0)) != std::max(0, n - samples);
             overflowWrong += static_cast<int>(peel4.overflow.at(x, y, 0)) != std::max(0, n - 4);
             overflowWrong += static_cast<int>(list.overflow.at(x, y, 0)) != 0;
@@ -201,6 +213,8 @@ TEST(Oit, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     EXPECT_EQ(countWrong, 0);
     EXPECT_EQ(overflowWrong, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Oit, OitDepthModes, ::testing::Values("reversed", "conventional"));
 
 // A node budget smaller than the fragments: the lost ones are counted per
 // pixel, stored + lost = every fragment.
@@ -297,6 +311,7 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
     };
     s->knobs().setFromString("oit.peel_layers", "32");
     const Difference peel = difference(run("depth_peeling"), reference, count);
+    const Difference dual = difference(run("dual_depth_peeling"), reference, count);
     s->knobs().setFromString("oit.samples", "4");
     const Difference abuffer = difference(run("abuffer"), reference, count);
     float abufferLost = 0;
@@ -316,6 +331,7 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
         std::printf("%-28s mean %.4f  p99 %.4f  max %.4f  over %d pixels\n", name, d.mean, d.p99, d.max, d.pixels);
     };
     line("depth_peeling (32 layers)", peel);
+    line("dual_depth_peeling (32)", dual);
     line("abuffer (4 samples)", abuffer);
     line("weighted (eq7)", weighted);
     line("forward_sorted", forward);
@@ -325,6 +341,12 @@ TEST(Oit, GlassSceneErrorsAgainstTheLinkedList) {
     // here): 2^-11 relative per layer; measured mean 0.0012, max 0.0056.
     EXPECT_LT(peel.mean, 3e-3);
     EXPECT_LT(peel.max, 1.5e-2);
+    // Dual peeling's worst pixels (0.02) lie where two fragments have the same
+    // depth (the fan's panes meet along their common axis): both are "the
+    // nearest", and GL_MAX merges them channel by channel.
+    EXPECT_LT(dual.mean, 3e-3);
+    EXPECT_LT(dual.p99, 5e-3);
+    EXPECT_LT(dual.max, 5e-2);
     EXPECT_GT(abufferLost, 0.0f);
     // The approximations differ from the reference (the numbers are in the docs).
     EXPECT_GT(weighted.mean, 1e-3);
@@ -355,4 +377,71 @@ TEST(Oit, ProbeListsThePixelsFragmentsInDepthOrder) {
                 for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.fragments[i].colour[c], over[i]->emissive[c], 2e-3) << i;
             }
     }
+}
+
+// The ways a material becomes blended: scene JSON "opacity" and glTF
+// alphaMode BLEND with the base colour factor's alpha. An emissive, black
+// square of alpha 0.5 over an emissive wall gives 0.5 E + 0.5 B in the
+// L-buffer (the texture's alpha: AlphaBlendModeTest in image_tests).
+TEST(Oit, SceneJsonOpacityAndGltfBaseColourAlphaBlend) {
+    const glm::dvec3 E(0.75, 0.25, 0.5), expected = 0.5 * E + 0.5 * glm::dvec3(kBackground);
+    auto check = [&](const std::string& path, const char* what) {
+        auto s = test::makeSession(W, H);
+        s->loadScene(path);
+        EXPECT_TRUE(s->scene().hasMaterial(AlphaMode::Blend)) << what;
+        const FrameReport report = s->render({{"lbuffer"}});
+        ASSERT_TRUE(report.find("oit") && report.find("oit")->ran) << what;
+        const FloatImage l = s->readRaw("lbuffer");
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(l.at(W / 2, H / 2, c), expected[c], 2e-3) << what << " channel " << c;
+        EXPECT_NEAR(l.at(4, 4, 0), kBackground.r, 1e-4) << what << ": the wall beside the square";
+    };
+    const nlohmann::json wall = {{"shape", "plane"}, {"size", {100, 0, 100}}, {"pos", {0, 0, -5}}, {"rotate", {90, 0, 0}},
+                                 {"material", {{"diffuse", {0, 0, 0}}, {"specular", {0, 0, 0}},
+                                               {"emissive", {kBackground.r, kBackground.g, kBackground.b}}}}};
+    const nlohmann::json camera = {{"pos", {0, 0, 10}}, {"look-at", {0, 0, 0}}, {"fov", 40}, {"near", 0.5}, {"far", 50}};
+    const nlohmann::json light = {{"type", "directional"}, {"direction", {0, -1, 0}}, {"intensity", {0, 0, 0}}};
+    nlohmann::json scene = {{"camera", camera}, {"ambient", {0, 0, 0}}, {"lights", {light}},
+                            {"objects", {wall, {{"shape", "plane"}, {"size", {4, 0, 4}}, {"rotate", {90, 0, 0}},
+                                                {"material", {{"diffuse", {0, 0, 0}}, {"specular", {0, 0, 0}},
+                                                              {"emissive", {E.x, E.y, E.z}}, {"opacity", 0.5},
+                                                              {"double-sided", true}}}}}}};
+    check(test::writeJson("oit_opacity.json", scene).string(), "scene JSON opacity");
+
+    test::GltfBuilder b;
+    const int pos = b.vec3({-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0});
+    const int nrm = b.vec3({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+    const int idx = b.indices({0, 1, 2, 0, 2, 3});
+    nlohmann::json g = b.finish({{"POSITION", pos}, {"NORMAL", nrm}}, idx);
+    g["materials"] = nlohmann::json::array({{{"alphaMode", "BLEND"},
+                                             {"doubleSided", true},
+                                             {"emissiveFactor", {E.x, E.y, E.z}},
+                                             {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 0.5}}, {"metallicFactor", 0}}},
+                                             {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0}}}}}}});
+    g["extensionsUsed"] = {"KHR_materials_specular"};
+    g["meshes"][0]["primitives"][0]["material"] = 0;
+    const std::string gltf = test::writeJson("oit_blend.gltf", g).string();
+    scene["objects"][1] = {{"gltf", gltf}};
+    check(test::writeJson("oit_gltf.json", scene).string(), "glTF BLEND, baseColorFactor alpha");
+}
+
+// Blended surfaces cast no shadow by default; shadows.blended_casters draws
+// them into the maps as if opaque, which darkens the glass scene's floor.
+TEST(Oit, BlendedCastersKnobPutsTheGlassIntoTheShadowMaps) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("glass");
+    s->knobs().setFromString("ssao.enabled", "false");
+    s->render({{"lbuffer"}});
+    const FloatImage off = s->readRaw("lbuffer");
+    s->knobs().setFromString("shadows.blended_casters", "true");
+    s->render({{"lbuffer"}});
+    const FloatImage on = s->readRaw("lbuffer");
+    int darker = 0, brighter = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            darker += on.at(x, y, 1) < 0.8f * off.at(x, y, 1);
+            brighter += on.at(x, y, 1) > 1.01f * off.at(x, y, 1) + 1e-4f;
+        }
+    std::printf("with blended casters: %d pixels darker by over 20%%, %d brighter\n", darker, brighter);
+    EXPECT_GT(darker, 100);
+    EXPECT_EQ(brighter, 0);
 }
