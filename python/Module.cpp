@@ -418,6 +418,15 @@ PYBIND11_MODULE(deferred_workbench, m) {
                     for (const auto& v : values) axis.values.push_back(knobText(v));
                     o.grid.knobAxes.push_back(axis);
                 }
+            // Knob names and values with the registry's checks first (KnobError), as Session does.
+            KnobRegistry declared = RunConfig::declaredKnobs();
+            try {
+                for (const std::string& a : o.run.sets) declared.applyAssignment(a);
+                for (const BenchKnobAxis& axis : o.grid.knobAxes)
+                    for (const std::string& v : axis.values) declared.setFromString(axis.knob, v);
+            } catch (const Error& e) {
+                throw KnobError(e.what());
+            }
             if (frames < 1 || warmup < 0 || block < 1 || seed < 0)
                 throw Error("bench: frames and block must be at least 1, warmup and seed not negative");
             o.frames = frames;

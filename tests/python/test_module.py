@@ -255,6 +255,31 @@ class SessionTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             s.reference("nope")
 
+    def test_bench_grid_records_and_csv(self):
+        csv = os.path.join(self.tmp.name, "bench.csv")
+        r = dw.bench(scene="default", sizes=[(64, 36)], sweep={"ssao.samples": [4, 16]}, frames=2, warmup=1,
+                     csv=csv)
+        self.assertEqual([c["knobs"] for c in r["configs"]], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
+        self.assertEqual([c["size"] for c in r["configs"]], [(64, 36), (64, 36)])
+        self.assertIn("4 samples", r["configs"][0]["stats"]["ssao"])
+        self.assertIn("16 samples", r["configs"][1]["stats"]["ssao"])
+        for config in (0, 1):
+            frames = [x for x in r["samples"] if x["config"] == config and x["series"] == "frame"]
+            self.assertEqual(sorted(x["sample"] for x in frames), [0, 1])
+        self.assertEqual(r["settings"]["frames"], "2")
+        self.assertIn("gl_renderer", r["machine"])
+        with open(csv) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(len(lines), len(r["samples"]) + 1)
+        header = lines[0].split(",")
+        first = dict(zip(header, lines[1].split(",")))
+        self.assertEqual(first["pass"], r["samples"][0]["series"])
+        self.assertAlmostEqual(float(first["gpu_ms"]), r["samples"][0]["gpu_ms"], places=4)
+        with self.assertRaises(dw.KnobError):
+            dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
+        with self.assertRaises(dw.KnobError):
+            dw.bench(sweep={"ssao.no_such": [1]}, frames=1)
+
 
 if __name__ == "__main__":
     unittest.main()
