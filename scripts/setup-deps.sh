@@ -10,6 +10,8 @@ packages=(
   # libraries (DESIGN.md: Debian packages only, nothing vendored)
   libimgui-dev libstb-dev libglfw3-dev libglm-dev libtinygltf-dev
   libopenimageio-dev libepoxy-dev nlohmann-json3-dev
+  # sha256 of images and scene files in experiment records (render --record, replay)
+  libssl-dev
   # the CPU reference renderer: Embree 3 ray queries, oneTBB threads
   libembree-dev libtbb-dev
   # RenderDoc's in-app API header (the library is loaded only when asked)
