@@ -7,6 +7,7 @@
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "app/ExperimentRecord.h"
 #include "app/HeadlessGlContext.h"
 #include "app/RenderDocCapture.h"
 #include "renderer/Error.h"
@@ -23,7 +24,7 @@ int runRenderCommand(int argc, char** argv) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE] [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
-                     "                                 [--renderdoc-capture FILE.rdc] [--check-finite]\n"
+                     "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
                      "                                 --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
@@ -38,6 +39,9 @@ int runRenderCommand(int argc, char** argv) {
                      "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n"
                      "  --renderdoc-capture  capture the last frame with RenderDoc (loads librenderdoc.so,\n"
                      "               Debian package librenderdoc); RenderDoc writes FILE_capture.rdc\n"
+                     "  --record     write an experiment record (JSON): scene and the sha256 of its files, camera,\n"
+                     "               every knob, size, frames, build, GL, CPU, each counted frame's timings and\n"
+                     "               the image's sha256; `replay FILE` measures it again\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n";
         return 0;
@@ -56,6 +60,7 @@ int runRenderCommand(int argc, char** argv) {
     const bool verbose = cl.flag("--verbose");
     const auto renderdocCapture = cl.value("--renderdoc-capture");
     const bool checkFinite = cl.flag("--check-finite");
+    const auto record = cl.value("--record");
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
@@ -63,6 +68,7 @@ int runRenderCommand(int argc, char** argv) {
     CommandLine::NamedFiles writes = {{"--out", *out}};
     if (timingsOut) writes.emplace_back("--timings-out", *timingsOut);
     if (dumpKnobs) writes.emplace_back("--dump-knobs", *dumpKnobs);
+    if (record) writes.emplace_back("--record", *record);
     CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
 
     // Bad input fails before any GL work: the preset and --set against the
@@ -110,6 +116,11 @@ int runRenderCommand(int argc, char** argv) {
     std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
                 session.scene().name.c_str());
     if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
+    if (record) {
+        ExperimentRecord::capture(session, run, buffer, firstCounted, context->platform()).write(*record);
+        std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", record->c_str(),
+                    record->c_str());
+    }
     if (checkFinite) {
         // Every produced buffer, not only the one written: the first named is
         // the earliest pass that made a non-finite value.

@@ -10,12 +10,17 @@ packages=(
   # libraries (DESIGN.md: Debian packages only, nothing vendored)
   libimgui-dev libstb-dev libglfw3-dev libglm-dev libtinygltf-dev
   libopenimageio-dev libepoxy-dev nlohmann-json3-dev
+  # sha256 of images and scene files in experiment records (render --record, replay)
+  libssl-dev
   # the CPU reference renderer: Embree 3 ray queries, oneTBB threads
   libembree-dev libtbb-dev
   # RenderDoc's in-app API header (the library is loaded only when asked)
   librenderdoc-dev
   # headless OpenGL through EGL (Mesa llvmpipe where there is no GPU)
   libegl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libgl-dev
+  # the Python module deferred_workbench (python/): pybind11, the headers of
+  # Debian's python3 and numpy, which its arrays are
+  pybind11-dev python3-dev python3-numpy
   # tests
   libgtest-dev xvfb xauth
 )
@@ -29,6 +34,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   packages+=(xdotool)
   # librenderdoc.so, for the frame-capture test (it skips without it)
   packages+=(librenderdoc)
+  # the example notebook (docs/ssao-study.ipynb), run headless by the suite
+  packages+=(python3-nbconvert python3-nbclient python3-ipykernel python3-nbformat)
 fi
 if [[ "${1:-}" == "--fuzz" ]]; then
   # clang 14 and libFuzzer's runtime for the fuzz targets (fuzz/README.md).

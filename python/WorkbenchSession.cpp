@@ -1,0 +1,234 @@
+#include "python/WorkbenchSession.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "app/HeadlessGlContext.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceModel.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+// One EGL context per process, made on the first Session's thread and kept
+// until the process exits (never torn down under Python's finalisation).
+struct ProcessContext {
+    HeadlessGlContext* context = nullptr;
+    std::thread::id thread;
+};
+ProcessContext& processContext() {
+    static ProcessContext pc;
+    if (!pc.context) {
+        pc.context = HeadlessGlContext::create().release();
+        pc.thread = std::this_thread::get_id();
+    }
+    return pc;
+}
+
+std::string describeThread(std::thread::id id) {
+    std::ostringstream s;
+    s << id;
+    return s.str();
+}
+
+}  // namespace
+
+WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::string& preset,
+                                   const std::vector<std::string>& settings) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw Error("size must be between 1x1 and 16384x16384, got " + std::to_string(width) + "x" +
+                    std::to_string(height));
+    run_.scene = scene;
+    run_.setPreset(preset);
+    run_.sets = settings;
+    run_.width = width;
+    run_.height = height;
+    // The settings first, against the declarations: a bad one is the
+    // registry's message, as KnobError.
+    KnobRegistry declared = RunConfig::declaredKnobs();
+    for (const std::string& s : settings) {
+        try {
+            declared.applyAssignment(s);
+        } catch (const Error& e) {
+            throw KnobError(e.what());
+        }
+    }
+    run_.validate();
+    Scene loaded = loadScene(run_.sceneSpec());  // CPU only: a bad file fails before any GL work
+
+    const ProcessContext& pc = processContext();
+    owner_ = pc.thread;
+    requireOwningThread();
+    pc.context->makeCurrent();
+    session_ = std::make_unique<RenderSession>();
+    session_->setScene(std::move(loaded), run_);
+    resize(width, height);
+}
+
+WorkbenchSession::~WorkbenchSession() {
+    if (session_ && std::this_thread::get_id() != owner_) static_cast<void>(session_.release());
+}
+
+BenchResults WorkbenchSession::bench(BenchOptions options) {
+    BenchRunner runner(std::move(options));  // checks everything that fails without GL
+    ProcessContext& pc = processContext();
+    if (std::this_thread::get_id() != pc.thread)
+        throw WrongThreadError("bench must run on the thread that made the GL context (thread " +
+                               describeThread(pc.thread) + ")");
+    pc.context->makeCurrent();
+    BenchResults results = runner.run();
+    results.machine.emplace_back("gl_platform", pc.context->platform());
+    return results;
+}
+
+void WorkbenchSession::requireOwningThread() const {
+    const std::thread::id here = std::this_thread::get_id();
+    if (here != processContext().thread)
+        throw WrongThreadError("the workbench's GL context belongs to thread " + describeThread(processContext().thread) +
+                               "; this call came from thread " + describeThread(here) +
+                               " (use each Session from the thread that made the first one)");
+}
+
+const KnobSpec& WorkbenchSession::spec(const std::string& name) const {
+    const auto id = session_->knobs().find(name);
+    if (!id) {
+        // The registry's own message for an unknown name.
+        KnobRegistry copy = session_->knobs();
+        try {
+            copy.setFromString(name, "0");
+        } catch (const Error& e) {
+            throw KnobError(e.what());
+        }
+        throw KnobError("unknown knob '" + name + "'");
+    }
+    return session_->knobs().spec(*id);
+}
+
+std::string WorkbenchSession::getText(const std::string& name) const {
+    spec(name);
+    return session_->knobs().format(*session_->knobs().find(name));
+}
+
+double WorkbenchSession::value(const std::string& name) const {
+    spec(name);
+    return session_->knobs().value(*session_->knobs().find(name));
+}
+
+void WorkbenchSession::set(const std::string& name, const std::string& text) {
+    requireOwningThread();
+    try {
+        session_->knobs().setFromString(name, text);
+    } catch (const Error& e) {
+        throw KnobError(e.what());
+    }
+}
+
+const KnobRegistry& WorkbenchSession::knobs() const { return session_->knobs(); }
+
+std::vector<BufferInfo> WorkbenchSession::buffers() const {
+    std::vector<BufferInfo> list;
+    for (const PublishedOutput& o : session_->pipeline().outputs().all())
+        list.push_back({o.decl.name, toString(o.decl.kind), o.pass, o.decl.description});
+    return list;
+}
+
+BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int warmup) {
+    requireOwningThread();
+    if (frames < 1) throw Error("frames must be at least 1");
+    if (warmup < 0) throw Error("warmup must not be negative");
+    if (!session_->pipeline().outputs().find(buffer))
+        throw UnknownBufferError("unknown buffer '" + buffer + "' (Session.buffers() lists them)");
+    processContext().context->makeCurrent();
+    FrameRequest request;
+    request.outputs = {buffer};
+    PassTimer& timer = session_->pipeline().timer();
+    timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(warmup + frames)));
+    FrameReport report;
+    std::uint64_t firstCounted = 0;
+    for (int i = 0; i < warmup + frames; ++i) {
+        report = session_->render(request);
+        if (i == warmup) firstCounted = report.frameIndex;
+    }
+    rendered_ = true;
+    timings_ = TimingReport::build(timer, report, firstCounted, warmup);
+
+    // What writeOutput writes: display-ready outputs as their 8-bit values
+    // (.png), everything else raw (.exr).
+    const PublishedOutput* o = session_->pipeline().outputs().find(buffer);
+    BufferImage out;
+    out.eightBit = isDisplayReady(*o);
+    const FloatImage image = session_->readRaw(buffer);
+    out.width = image.width;
+    out.height = image.height;
+    out.channels = image.channels;
+    if (out.eightBit) {
+        // ImageIO's 8-bit conversion (writeImage): clamp, scale, round half up.
+        out.bytes.resize(image.pixels.size());
+        for (size_t i = 0; i < image.pixels.size(); ++i) {
+            const float v = image.pixels[i];
+            const float clamped = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+            out.bytes[i] = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+        }
+    } else {
+        out.floats = image.pixels;
+    }
+    return out;
+}
+
+ProbeResult WorkbenchSession::probe(int x, int y) const {
+    requireOwningThread();
+    if (!rendered_) throw Error("probe needs a rendered frame: call render() first");
+    if (x < 0 || y < 0 || x >= width_ || y >= height_)
+        throw Error("probe (" + std::to_string(x) + ", " + std::to_string(y) + ") lies outside the " +
+                    std::to_string(width_) + "x" + std::to_string(height_) + " frame");
+    return probePixel(session_->pipeline(), x, y);
+}
+
+void WorkbenchSession::writeBuffer(const std::string& buffer, const std::string& path) {
+    requireOwningThread();
+    if (!rendered_) throw Error("write needs a rendered frame: call render() first");
+    if (!session_->pipeline().outputs().find(buffer))
+        throw UnknownBufferError("unknown buffer '" + buffer + "' (Session.buffers() lists them)");
+    session_->writeOutput(buffer, path);
+}
+
+void WorkbenchSession::writeKnobValues(const std::string& path) const { session_->writeKnobValues(path); }
+
+reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options) {
+    if (options.aoRays < 1) throw Error("ao_rays must be at least 1");
+    if (options.seed < 0) throw Error("seed must not be negative");
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session_->knobs(), session_->scene());
+    model.aoRays = options.aoRays;
+    model.seed = static_cast<std::uint32_t>(options.seed);
+    reference::ReferenceRequest request;
+    request.camera = session_->camera();
+    request.width = width_;
+    request.height = height_;
+    request.threads = options.threads;
+    const reference::ReferenceCache cache(options.cacheDirectory.empty() ? std::filesystem::path()
+                                                                        : std::filesystem::path(options.cacheDirectory));
+    const std::string key = reference::referenceKey(session_->scene(), model, request);
+    if (options.useCache)
+        if (auto cached = cache.load(key)) return *cached;
+    reference::ReferenceImages images = reference::renderReference(session_->scene(), model, request);
+    if (options.useCache) cache.store(key, images);
+    return images;
+}
+
+void WorkbenchSession::resize(int width, int height) {
+    requireOwningThread();
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw Error("size must be between 1x1 and 16384x16384, got " + std::to_string(width) + "x" +
+                    std::to_string(height));
+    session_->resize(width, height);
+    width_ = width;
+    height_ = height;
+    rendered_ = false;
+}
+
+const std::string& WorkbenchSession::sceneName() const { return session_->scene().name; }
+
+}  // namespace dw

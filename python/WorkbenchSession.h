@@ -1,0 +1,119 @@
+#pragma once
+// What the Python module's Session is in C++ (python/Module.cpp only converts
+// types): one RenderSession over the process's headless EGL context, the run
+// configuration it was opened with, and the last frame's report and timings.
+// Every call checks that it comes from the thread that made the GL context
+// (a context is current on one thread only): another thread gets a
+// WrongThreadError, never a call into GL without a current context.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "renderer/Error.h"
+#include "renderer/RenderSession.h"
+#include "renderer/RunConfig.h"
+#include "renderer/bench/BenchRunner.h"
+#include "renderer/graph/TimingReport.h"
+#include "renderer/inspect/PixelProbe.h"
+#include "renderer/reference/ReferenceRenderer.h"
+
+namespace dw {
+
+// A knob name or value the registry refuses (Python: KnobError, a ValueError).
+class KnobError : public Error {
+public:
+    using Error::Error;
+};
+// A buffer name the pipeline does not publish (Python: ValueError).
+class UnknownBufferError : public Error {
+public:
+    using Error::Error;
+};
+// A session used from a thread other than the one that made the GL context.
+class WrongThreadError : public Error {
+public:
+    using Error::Error;
+};
+
+// One named output as read back: 8-bit display values (`bytes`) for outputs
+// that hold them (what render --out .png writes unchanged), else raw floats
+// (what --out .exr writes). Rows top-down, channels interleaved.
+struct BufferImage {
+    int width = 0, height = 0, channels = 0;
+    bool eightBit = false;
+    std::vector<std::uint8_t> bytes;
+    std::vector<float> floats;
+};
+
+struct BufferInfo {
+    std::string name, kind, pass, description;
+};
+
+struct ReferenceOptions {
+    int aoRays = 64;
+    int seed = 1;
+    int threads = 0;
+    bool useCache = true;
+    std::string cacheDirectory;  // empty: ReferenceCache's default
+};
+
+class WorkbenchSession {
+public:
+    // `settings`: "name=value" assignments applied after the scene's settings
+    // and the preset (as --set). Throws KnobError for a bad assignment, Error /
+    // FileError for a bad preset or scene, GlUnsupportedError without GL 4.5.
+    WorkbenchSession(const std::string& scene, int width, int height, const std::string& preset,
+                     const std::vector<std::string>& settings);
+    // On another thread (a Session dropped there) the GL objects are left
+    // alone, not deleted without their context.
+    ~WorkbenchSession();
+    WorkbenchSession(const WorkbenchSession&) = delete;
+    WorkbenchSession& operator=(const WorkbenchSession&) = delete;
+
+    // The knob's value as the registry formats it ("true", "16", "0.02", "reinhard").
+    std::string getText(const std::string& name) const;
+    const KnobSpec& spec(const std::string& name) const;
+    double value(const std::string& name) const;
+    // As --set name=text: the registry's parse and checks; throws KnobError.
+    void set(const std::string& name, const std::string& text);
+    const KnobRegistry& knobs() const;
+
+    std::vector<BufferInfo> buffers() const;
+    // Renders `warmup` + `frames` frames asking for `buffer`, keeps their
+    // timings, and reads `buffer` back from the last one.
+    BufferImage render(const std::string& buffer, int frames, int warmup);
+    // What the last render()'s counted frames measured (empty before one).
+    const std::optional<TimingReport>& timings() const { return timings_; }
+    ProbeResult probe(int x, int y) const;
+    // Writes `buffer` of the last frame as render --out does (.png display, .exr raw).
+    void writeBuffer(const std::string& buffer, const std::string& path);
+    // Every knob as render --dump-knobs writes them.
+    void writeKnobValues(const std::string& path) const;
+    // The CPU reference of this view (scene, camera, size, knobs), through the cache.
+    reference::ReferenceImages reference(const ReferenceOptions& options);
+
+    void resize(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const std::string& sceneName() const;
+    const RenderSession& session() const { return *session_; }
+
+    // Throws WrongThreadError unless called on the GL context's thread.
+    void requireOwningThread() const;
+
+    // A bench grid (BenchRunner) on the process's GL context, on its thread:
+    // everything `bench` measures but the host fields and the summary.
+    static BenchResults bench(BenchOptions options);
+
+private:
+    std::thread::id owner_;
+    RunConfig run_;
+    std::unique_ptr<RenderSession> session_;
+    int width_ = 0, height_ = 0;
+    bool rendered_ = false;
+    std::optional<TimingReport> timings_;
+};
+
+}  // namespace dw

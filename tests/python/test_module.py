@@ -1,0 +1,275 @@
+"""The Python module deferred_workbench (issue 24), run by ctest as
+`python3 -m unittest` with PYTHONPATH=<build>/python and DW_WORKBENCH_BINARY
+naming the CLI. Every named output the default pipeline produces comes back
+with its shape and dtype and equals `render --buffer` of the same
+configuration bit for bit; a knob set from Python is what --dump-knobs shows;
+bad input raises (KnobError is a ValueError), never crashes."""
+import concurrent.futures
+import os
+import subprocess
+import tempfile
+import threading
+import unittest
+
+import numpy as np
+
+import deferred_workbench as dw
+
+BINARY = os.environ["DW_WORKBENCH_BINARY"]
+SIZE = (96, 54)
+# Kinds read back raw (float32): the channels each holds (Color outputs that
+# are not 8-bit display images are raw floats too).
+RAW_CHANNELS = {"depth": (1,), "normal-kl": (2,), "hdr": (3, 4), "vector": (3, 4), "scalar": (1, 2, 3, 4),
+                "count": (1, 2, 3, 4), "color": (3, 4)}
+
+
+def cli_render(tmp, buffer, out_name, settings=(), extra=()):
+    out = os.path.join(tmp, out_name)
+    args = [BINARY, "render", "--size", "%dx%d" % SIZE, "--buffer", buffer, "--out", out]
+    for s in settings:
+        args += ["--set", s]
+    args += list(extra)
+    subprocess.run(args, check=True, capture_output=True, text=True)
+    return out
+
+
+class SessionTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.session = dw.Session(scene="default", size=SIZE)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_final_and_lbuffer_equal_the_cli_bit_for_bit(self):
+        # A fresh session: its first frame is the CLI's only frame.
+        s = dw.Session(scene="default", size=SIZE)
+        final = s.render("final")
+        self.assertEqual(final.dtype, np.uint8)
+        self.assertEqual(final.shape[:2], (SIZE[1], SIZE[0]))
+        png = dw.load_image(cli_render(self.tmp.name, "final", "final.png"))
+        self.assertEqual(png.dtype, np.uint8)
+        np.testing.assert_array_equal(final, png)
+        self.assertGreater(int(final.max()), 0)
+
+        lbuffer = s.render("lbuffer")
+        self.assertEqual(lbuffer.dtype, np.float32)
+        exr = dw.load_image(cli_render(self.tmp.name, "lbuffer", "lbuffer.exr"))
+        self.assertEqual(exr.dtype, np.float32)
+        self.assertEqual(lbuffer.shape, exr.shape)
+        self.assertTrue(np.array_equal(lbuffer, exr, equal_nan=True))
+        self.assertGreater(float(np.nanmax(lbuffer[..., :3])), 0.0)
+
+    def test_every_produced_output_has_its_shape_and_dtype_and_equals_the_cli(self):
+        # A fresh session; each buffer rendered as `render --buffer NAME` renders it
+        # (a frame that asks for it), read back as the CLI writes it.
+        s = dw.Session(scene="default", size=SIZE)
+        details = {b["name"]: b for b in s.buffers(details=True)}
+        self.assertEqual(list(details), s.buffers())
+        listed = subprocess.run([BINARY, "list", "buffers"], check=True, capture_output=True, text=True).stdout
+        self.assertEqual([line.split()[0] for line in listed.splitlines() if line.strip()], s.buffers())
+        produced = {}
+        for name, info in details.items():
+            try:
+                image = s.render(name)
+            except dw.Error as e:
+                # Not produced under the default knobs: the pipeline says why.
+                self.assertTrue(any(w in str(e) for w in ("not produced", "written only", "is empty")), str(e))
+                continue
+            produced[name] = image
+            self.assertEqual(image.ndim, 3, name)
+            if image.dtype == np.uint8:
+                self.assertEqual(info["kind"], "color", name)
+                self.assertEqual(image.shape, (SIZE[1], SIZE[0], 4), name)
+            else:
+                self.assertEqual(image.dtype, np.float32, name)
+                self.assertIn(image.shape[2], RAW_CHANNELS[info["kind"]], name)
+        full = ["gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_position", "ssao.blurred",
+                "lbuffer", "lbuffer.depth", "lighting.overlap", "tonemap.result", "final"]
+        for name in full:
+            self.assertIn(name, produced)
+            self.assertEqual(produced[name].shape[:2], (SIZE[1], SIZE[0]), name)
+        self.assertEqual(produced["gbuffer.depth"].shape[2], 1)
+        self.assertEqual(produced["gbuffer.normal"].shape[2], 2)
+        self.assertEqual(produced["ssao.raw"].shape[:2], (SIZE[1] // 2, SIZE[0] // 2))  # ssao.resolution = half
+        for name in ("final", "tonemap.result", "fxaa.result"):
+            self.assertEqual(produced[name].dtype, np.uint8, name)
+
+        # Each one equals `render --buffer NAME` (.png for uint8, .exr for float32) bit for bit.
+        def cli(name):
+            ext = ".png" if produced[name].dtype == np.uint8 else ".exr"
+            return name, dw.load_image(cli_render(self.tmp.name, name, "every-" + name + ext))
+
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+            files = dict(pool.map(cli, produced))
+        for name, image in produced.items():
+            self.assertEqual(image.dtype, files[name].dtype, name)
+            self.assertEqual(image.shape, files[name].shape, name)
+            self.assertTrue(np.array_equal(image, files[name], equal_nan=True), name)
+
+    def test_knob_set_from_python_is_what_dump_knobs_shows(self):
+        s = dw.Session(scene="default", size=SIZE, settings={"ssao.samples": 12})
+        s.set("tonemap.operator", "aces")
+        s.set("shadows.enabled", False)
+        s.set("ssao.radius", 0.75)
+        self.assertEqual(s.get("ssao.samples"), 12)
+        self.assertEqual(s.get("tonemap.operator"), "aces")
+        self.assertIs(s.get("shadows.enabled"), False)
+        self.assertAlmostEqual(s.get("ssao.radius"), 0.75)
+        dump = os.path.join(self.tmp.name, "knobs.txt")
+        cli_render(self.tmp.name, "final", "knobs.png",
+                   settings=["ssao.samples=12", "tonemap.operator=aces", "shadows.enabled=false", "ssao.radius=0.75"],
+                   extra=["--dump-knobs", dump])
+        with open(dump) as f:
+            cli = dict(line.strip().split("=", 1) for line in f if "=" in line and not line.startswith("#"))
+        self.assertEqual(s.knobs(text=True), cli)
+        # and the module's own dump is the CLI's, line for line
+        mine = os.path.join(self.tmp.name, "mine.txt")
+        s.dump_knobs(mine)
+        with open(mine) as a, open(dump) as b:
+            self.assertEqual(a.read().splitlines()[1:], b.read().splitlines()[1:])
+        # the values typed: bool, int, float, enum choice
+        knobs = s.knobs()
+        self.assertIsInstance(knobs["shadows.enabled"], bool)
+        self.assertIsInstance(knobs["ssao.samples"], int)
+        self.assertIsInstance(knobs["ssao.radius"], float)
+        self.assertEqual(knobs["tonemap.operator"], "aces")
+
+    def test_bad_knobs_raise_knob_error_with_the_registry_message(self):
+        s = self.session
+        with self.assertRaises(dw.KnobError) as bad_name:
+            s.set("ssao.no_such_knob", 1)
+        self.assertIsInstance(bad_name.exception, ValueError)
+        self.assertIn("ssao.no_such_knob", str(bad_name.exception))
+        with self.assertRaises(dw.KnobError) as bad_value:
+            s.set("tonemap.operator", "sepia")
+        self.assertIn("sepia", str(bad_value.exception))
+        self.assertIn("reinhard", str(bad_value.exception))  # the accepted values are named
+        with self.assertRaises(ValueError):
+            s.set("ssao.samples", "many")
+        with self.assertRaises(dw.KnobError):
+            s.get("nope")
+        with self.assertRaises(dw.KnobError):
+            dw.Session(scene="default", size=SIZE, settings={"ssao.samples": "lots"})
+        # the registry's message is the CLI's
+        cli = subprocess.run([BINARY, "render", "--size", "8x8", "--set", "tonemap.operator=sepia", "--out",
+                              os.path.join(self.tmp.name, "x.png")], capture_output=True, text=True)
+        self.assertNotEqual(cli.returncode, 0)
+        self.assertIn(str(bad_value.exception), cli.stderr)
+        self.assertEqual(s.get("tonemap.operator"), "reinhard")  # nothing changed
+
+    def test_bad_scene_buffer_and_size_raise(self):
+        bad = os.path.join(self.tmp.name, "broken.json")
+        with open(bad, "w") as f:
+            f.write("{ not json")
+        with self.assertRaises(dw.Error) as e:
+            dw.Session(scene=bad, size=SIZE)
+        self.assertIn("broken.json", str(e.exception))
+        with self.assertRaises(dw.Error):
+            dw.Session(scene=os.path.join(self.tmp.name, "missing.gltf"), size=SIZE)
+        with self.assertRaises(dw.Error):
+            dw.Session(scene="nowhere", size=SIZE)
+        with self.assertRaises(dw.Error):
+            dw.Session(scene="default", size=(0, 10))
+        with self.assertRaises(dw.Error):
+            dw.Session(scene="default", size=SIZE, preset="no-such-preset")
+        with self.assertRaises(ValueError):
+            self.session.render("no.such.buffer")
+        with self.assertRaises(dw.Error):
+            self.session.render("final", frames=0)
+        with self.assertRaises(dw.Error):
+            dw.load_image(os.path.join(self.tmp.name, "absent.png"))
+        with self.assertRaises(dw.Error):
+            dw.compare(np.zeros((4, 4, 3), np.float32), np.zeros((5, 4, 3), np.float32))
+
+    def test_a_second_thread_raises(self):
+        s = self.session
+        caught = []
+
+        def use():
+            try:
+                s.render("final")
+            except dw.ThreadError as e:
+                caught.append(str(e))
+
+        t = threading.Thread(target=use)
+        t.start()
+        t.join()
+        self.assertEqual(len(caught), 1)
+        self.assertIn("thread", caught[0])
+        self.assertEqual(s.render("final").shape, (SIZE[1], SIZE[0], 4))  # still usable here
+
+    def test_timings_probe_and_compare(self):
+        s = self.session
+        s.render("final", frames=3, warmup=1)
+        rows = s.timings()
+        self.assertEqual(rows[-1]["kind"], "total")
+        self.assertEqual(rows[-1]["gpu_ms"]["count"], 3)
+        passes = [r for r in rows if r["kind"] == "pass"]
+        self.assertTrue(any(r["name"] == "geometry" and r["ran"] for r in passes))
+        for r in passes:
+            if r["ran"]:
+                self.assertEqual(r["cpu_ms"]["count"], 3, r["name"])
+                self.assertLessEqual(r["cpu_ms"]["min"], r["cpu_ms"]["median"])
+        p = s.probe(SIZE[0] // 2, SIZE[1] // 2)
+        self.assertTrue(p["inside"])
+        self.assertIn("lbuffer", p["values"])
+        lb = s.render("lbuffer")
+        np.testing.assert_allclose(p["values"]["lbuffer"]["raw"][:3], lb[SIZE[1] // 2, SIZE[0] // 2, :3], rtol=0,
+                                   atol=0)
+        with self.assertRaises(dw.Error):
+            s.probe(-1, 0)
+
+        a = np.zeros((16, 16, 3), np.float32)
+        b = a.copy()
+        b[3, 5, 1] = 0.5
+        r = dw.compare(a, b, maps=True)
+        self.assertAlmostEqual(r["max"], 0.5)
+        self.assertEqual(r["max_pixel"], (5, 3))
+        self.assertEqual(r["max_channel"], 1)
+        self.assertEqual(r["fail_count"], 1)
+        self.assertEqual(r["maps"]["difference"].shape, (16, 16, 3))
+        self.assertAlmostEqual(float(r["maps"]["difference"][3, 5, 1]), 0.5)
+        self.assertEqual(dw.compare(a, a)["fail_count"], 0)
+
+    def test_reference_ao_of_the_view(self):
+        s = dw.Session(scene="default", size=(32, 18))
+        ao, stats = s.reference("ao", ao_rays=8, cache=False, stats=True)
+        self.assertEqual(ao.shape, (18, 32, 1))
+        self.assertEqual(ao.dtype, np.float32)
+        self.assertTrue(np.all((ao >= 0) & (ao <= 1)))
+        self.assertLess(float(ao.min()), 1.0)  # something is occluded
+        self.assertEqual(stats["primary_rays"], 32 * 18)
+        with self.assertRaises(ValueError):
+            s.reference("nope")
+
+    def test_bench_grid_records_and_csv(self):
+        csv = os.path.join(self.tmp.name, "bench.csv")
+        r = dw.bench(scene="default", sizes=[(64, 36)], sweep={"ssao.samples": [4, 16]}, frames=2, warmup=1,
+                     csv=csv)
+        self.assertEqual([c["knobs"] for c in r["configs"]], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
+        self.assertEqual([c["size"] for c in r["configs"]], [(64, 36), (64, 36)])
+        self.assertIn("4 samples", r["configs"][0]["stats"]["ssao"])
+        self.assertIn("16 samples", r["configs"][1]["stats"]["ssao"])
+        for config in (0, 1):
+            frames = [x for x in r["samples"] if x["config"] == config and x["series"] == "frame"]
+            self.assertEqual(sorted(x["sample"] for x in frames), [0, 1])
+        self.assertEqual(r["settings"]["frames"], "2")
+        self.assertIn("gl_renderer", r["machine"])
+        with open(csv) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(len(lines), len(r["samples"]) + 1)
+        header = lines[0].split(",")
+        first = dict(zip(header, lines[1].split(",")))
+        self.assertEqual(first["pass"], r["samples"][0]["series"])
+        self.assertAlmostEqual(float(first["gpu_ms"]), r["samples"][0]["gpu_ms"], places=4)
+        with self.assertRaises(dw.KnobError):
+            dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
+        with self.assertRaises(dw.KnobError):
+            dw.bench(sweep={"ssao.no_such": [1]}, frames=1)
+
+
+if __name__ == "__main__":
+    unittest.main()
