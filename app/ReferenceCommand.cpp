@@ -95,7 +95,7 @@ int runReferenceCommand(int argc, char** argv) {
                "               accessibility), shadow (share of the shadow-casting lights' light that arrives)\n"
                "  --out        .exr writes the raw values; .png the values in [0, 1] (not for lbuffer)\n"
                "  --preset, --set  as for render: the knobs that define the model are honoured (shadows.enabled,\n"
-               "               ssao.enabled/radius/radius_unit/intensity, lighting.attenuation and its window,\n"
+               "               shadows.blended_casters, ssao.enabled/radius/radius_unit/intensity, lighting.attenuation and its window,\n"
                "               lighting.ambient_*, skybox.*, tonemap.*, luminance.*); the rest choose GPU\n"
                "               approximations and are ignored, and the run says which of those were set\n"
                "  --ao-rays    cosine-weighted AO rays per pixel (default 64); the standard error is reported\n"

@@ -223,6 +223,7 @@ Pipeline::Plan Pipeline::makePlan(const FrameRequest& request) const {
     for (size_t i = 0; i < n; ++i) {
         plan.records[i].name = passes_[i]->name();
         skip[i] = scene_ ? passes_[i]->skipReason(knobs_, *scene_) : std::string();
+        if (skip[i].empty() && scene_ && viewKnown_) skip[i] = passes_[i]->viewSkipReason(knobs_, *scene_, camera_);
     }
     for (size_t i = 0; i < n; ++i) {
         if (stages_[i] == PassStage::Tonemap) plan.finalName = passes_[i]->outputs().front().name;
@@ -324,6 +325,9 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
     FrameReport report;
     report.frameIndex = frame_;
+    // The camera first: a pass may skip this frame for what is in view.
+    camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
+    viewKnown_ = true;
     Plan plan = makePlan(request);
     for (size_t i : plan.order) report.passes.push_back(plan.records[i]);
     for (const auto& requested : request.outputs) {
@@ -334,7 +338,6 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
                 throw Error("buffer '" + name + "' is not produced: pass '" + r.name + "' did not run (" + r.reason + ")");
     }
 
-    camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
     cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
     allocateResources(plan);

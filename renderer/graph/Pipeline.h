@@ -132,6 +132,7 @@ private:
     gl::ShaderLibrary* shaders_ = nullptr;
     const Scene* scene_ = nullptr;
     CameraUniforms camera_;
+    bool viewKnown_ = false;  // camera_ holds a frame's camera (passes may skip by view)
     EnumKnob depthMode_;  // depth.mode: 0 reversed, 1 conventional
     int width_ = 0, height_ = 0;
     std::uint64_t frame_ = 0;

@@ -64,6 +64,15 @@ public:
         (void)scene;
         return {};
     }
+    // Like skipReason, for this frame's view (the pipeline asks after
+    // skipReason, with the frame's camera): non-empty when nothing the pass
+    // would draw is in view ("model only what the scene requires").
+    virtual std::string viewSkipReason(const KnobRegistry& knobs, const Scene& scene, const CameraUniforms& camera) const {
+        (void)knobs;
+        (void)scene;
+        (void)camera;
+        return {};
+    }
     // Creates programs and size-independent GL objects. Called once with a context.
     virtual void setup(gl::ShaderLibrary& shaders) = 0;
     // Only for imported outputs (ResourceDesc format 0): (re)creates them and

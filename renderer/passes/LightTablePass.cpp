@@ -1,5 +1,7 @@
 #include "renderer/passes/LightTablePass.h"
 
+#include "renderer/graph/ViewFrustum.h"
+
 #include <array>
 #include <cmath>
 
@@ -7,27 +9,6 @@
 #include "renderer/scene/Scene.h"
 
 namespace dw {
-
-namespace {
-
-// Frustum planes (Gribb & Hartmann) from a world-to-clip matrix, normalised,
-// in double precision (a scene far from the origin); clip depth in [0, 1]
-// (DepthConvention), so the depth planes are z >= 0 and z <= w.
-std::array<glm::dvec4, 6> frustumPlanes(const glm::dmat4& m) {
-    auto row = [&](int r) { return glm::dvec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
-    std::array<glm::dvec4, 6> p = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                   row(3) - row(1), row(2), row(3) - row(2)};
-    for (auto& plane : p) plane /= glm::length(glm::dvec3(plane));
-    return p;
-}
-
-bool sphereOutside(const std::array<glm::dvec4, 6>& planes, const glm::dvec3& c, double r) {
-    for (const auto& p : planes)
-        if (glm::dot(glm::dvec3(p), c) + p.w < -r) return true;
-    return false;
-}
-
-}  // namespace
 
 LightTablePass::LightTablePass(KnobRegistry& knobs) {
     threshold_ = knobs.addFloat("lighting.threshold", 1.0 / 255.0, 1e-5, 0.25, "lighting",
@@ -56,7 +37,7 @@ void LightTablePass::execute(FrameContext& ctx) {
     const double threshold = k.get(threshold_);
     // Camera-relative: view-space values from world ones in double precision.
     const glm::dmat4 view = ctx.camera.worldToView();
-    const auto planes = frustumPlanes(ctx.camera.worldToClip());
+    const ViewFrustum frustum(ctx.camera.worldToClip());
     const bool cull = k.get(frustumCull_);
     table_ = {};
     int perType[3] = {0, 0, 0}, outside = 0;
@@ -86,7 +67,7 @@ void LightTablePass::execute(FrameContext& ctx) {
         e.light = &l;
         e.volume = v;
         const bool bounded = l.type != LightType::Directional && v.shape != VolumeShape::FullScreen;
-        e.inFrustum = !(cull && bounded && sphereOutside(planes, glm::dvec3(l.position), v.radius));
+        e.inFrustum = !(cull && bounded && frustum.sphereOutside(glm::dvec3(l.position), v.radius));
         outside += e.inFrustum ? 0 : 1;
         ++perType[type];
         table_.rows.push_back(g);

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "renderer/Error.h"
+#include "renderer/graph/ViewFrustum.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/ShadowService.h"
 #include "renderer/scene/GpuScene.h"
@@ -107,6 +108,21 @@ std::string OitPass::skipReason(const KnobRegistry& knobs, const Scene& scene) c
             return {};
     }
     return "no blended material in the scene";
+}
+
+std::string OitPass::viewSkipReason(const KnobRegistry&, const Scene& scene, const CameraUniforms& camera) const {
+    const ViewFrustum frustum(camera.worldToClip());
+    for (const auto& inst : scene.instances) {
+        if (inst.mesh < 0 || static_cast<std::size_t>(inst.mesh) >= scene.meshes.size()) continue;
+        const Mesh& mesh = scene.meshes[static_cast<std::size_t>(inst.mesh)];
+        if (mesh.material < 0 || static_cast<std::size_t>(mesh.material) >= scene.materials.size() ||
+            scene.materials[static_cast<std::size_t>(mesh.material)].alphaMode != AlphaMode::Blend)
+            continue;
+        const Bounds b = mesh.bounds.transformed(inst.transform);
+        if (b.empty() || !frustum.sphereOutside(glm::dvec3(b.center()), static_cast<double>(b.radius())))
+            return {};
+    }
+    return "no blended material in view";
 }
 
 void OitPass::setup(gl::ShaderLibrary& shaders) {

@@ -38,6 +38,8 @@ public:
     bool allocates(const OutputDecl& output, const KnobRegistry& knobs) const override;
     void connect(const KnobRegistry& knobs) override;
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    // Skipped when every blended object's bounding sphere is outside the view frustum.
+    std::string viewSkipReason(const KnobRegistry& knobs, const Scene& scene, const CameraUniforms& camera) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }

@@ -35,7 +35,8 @@ void filterHits(const RTCFilterFunctionNArguments* args) {
         }
         // Blended surfaces cast no shadow and occlude no AO (as on the GPU,
         // where they are in neither the shadow maps nor the G-buffer).
-        if (ctx->visibility == Visibility::Secondary && ctx->scene->blended(instance)) {
+        const bool casts = ctx->visibility == Visibility::Shadow && ctx->scene->blendedCastShadows();
+        if (ctx->visibility != Visibility::Camera && !casts && ctx->scene->blended(instance)) {
             args->valid[i] = 0;
             continue;
         }
@@ -78,8 +79,8 @@ struct RayScene::Embree {
     }
 };
 
-RayScene::RayScene(const Scene& scene, const glm::dvec3& origin)
-    : scene_(scene), origin_(origin), embree_(std::make_unique<Embree>()) {
+RayScene::RayScene(const Scene& scene, const glm::dvec3& origin, bool blendedCastShadows)
+    : scene_(scene), origin_(origin), blendedCastShadows_(blendedCastShadows), embree_(std::make_unique<Embree>()) {
     const Bounds b = scene.bounds();
     sceneRadius_ = std::max(b.empty() ? 1.0 : static_cast<double>(b.radius()), 1e-30);
     embree_->device = rtcNewDevice("");
@@ -227,7 +228,7 @@ bool RayScene::occluded(const glm::dvec3& org, const glm::dvec3& dir, double tNe
     QueryContext ctx{};
     rtcInitIntersectContext(&ctx.embree);
     ctx.scene = this;
-    ctx.visibility = Visibility::Secondary;
+    ctx.visibility = Visibility::Shadow;
     RTCRay r = makeRay(org, dir, tNear, tFar);
     rtcOccluded1(embree_->scene, &ctx.embree, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit

@@ -43,7 +43,8 @@ struct InstanceGeometry {
     const std::vector<std::uint32_t>* indices = nullptr;  // the mesh's, three per triangle
 };
 
-enum class Visibility { Camera, Secondary };
+// Camera: primary rays. Secondary: AO rays. Shadow: rays towards a light.
+enum class Visibility { Camera, Secondary, Shadow };
 
 struct RayHit {
     bool hit = false;
@@ -55,7 +56,9 @@ struct RayHit {
 
 class RayScene {
 public:
-    RayScene(const Scene& scene, const glm::dvec3& origin);
+    // `blendedCastShadows`: shadow rays (occluded()) stop at blended surfaces
+    // too, as the GPU's shadows.blended_casters draws them into the maps.
+    RayScene(const Scene& scene, const glm::dvec3& origin, bool blendedCastShadows = false);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
@@ -78,6 +81,7 @@ public:
     bool cutOut(int instance, int triangle, double u, double v) const;
     // Whether the instance's material is blended (AlphaMode::Blend).
     bool blended(int instance) const;
+    bool blendedCastShadows() const { return blendedCastShadows_; }
     // Whether the ray direction meets the triangle's back face (origin-relative geometric normal by winding).
     bool backFacing(int instance, int triangle, const glm::dvec3& dir) const;
 
@@ -86,6 +90,7 @@ private:
     const Scene& scene_;
     glm::dvec3 origin_;
     double sceneRadius_ = 1.0;
+    bool blendedCastShadows_ = false;
     size_t triangles_ = 0;
     std::vector<InstanceGeometry> instances_;
     std::unique_ptr<Embree> embree_;

@@ -25,7 +25,7 @@ std::string choice(const KnobRegistry& k, const std::string& name) {
 
 const std::vector<std::string>& ReferenceModel::honouredKnobs() {
     static const std::vector<std::string> names = {
-        "shadows.enabled",      "ssao.enabled",          "ssao.radius",       "ssao.radius_unit",
+        "shadows.enabled",      "shadows.blended_casters", "ssao.enabled",          "ssao.radius",       "ssao.radius_unit",
         "ssao.intensity",       "lighting.attenuation",  "lighting.window_exponent", "lighting.threshold",
         "lighting.ambient_specular", "lighting.ambient_occlusion", "skybox.mode", "skybox.intensity",
         "skybox.rotation",      "tonemap.operator",      "tonemap.key",       "tonemap.auto_white",
@@ -45,6 +45,7 @@ ReferenceModel ReferenceModel::fromKnobs(const KnobRegistry& k, const Scene& sce
     m.windowExponent = number(k, "lighting.window_exponent");
     m.threshold = number(k, "lighting.threshold");
     m.shadows = flag(k, "shadows.enabled");
+    m.blendedCasters = flag(k, "shadows.blended_casters");
     m.ambientSpecular = flag(k, "lighting.ambient_specular");
     const std::string ao = choice(k, "lighting.ambient_occlusion");
     m.bakedOcclusion = ao == "both" || ao == "baked";
@@ -85,7 +86,7 @@ ReferenceModel ReferenceModel::fromKnobs(const KnobRegistry& k, const Scene& sce
 std::string ReferenceModel::canonical() const {
     std::ostringstream s;
     s.precision(17);
-    s << "attenuation=" << static_cast<int>(attenuation) << ";window=" << windowExponent << ";shadows=" << shadows
+    s << "attenuation=" << static_cast<int>(attenuation) << ";window=" << windowExponent << ";shadows=" << shadows << ";blended_casters=" << blendedCasters
       << ";ambient_specular=" << ambientSpecular << ";baked=" << bakedOcclusion << ";ao=" << rayTracedAo
       << ";sky=" << static_cast<int>(sky) << ";sky_intensity=" << skyIntensity << ";sky_rotation=" << skyRotationDegrees
       << ";op=" << static_cast<int>(toneOperator) << ";key=" << key << ";white=" << white << ";exposure=" << exposure

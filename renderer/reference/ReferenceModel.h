@@ -5,7 +5,7 @@
 // without the approximation.
 //
 // Honoured: shadows.enabled (hard shadows by rays for the lights whose shadow
-// flag is set), ssao.enabled with ssao.radius, ssao.radius_unit and
+// flag is set) and shadows.blended_casters, ssao.enabled with ssao.radius, ssao.radius_unit and
 // ssao.intensity (ambient occlusion by rays), lighting.attenuation,
 // lighting.window_exponent and, for the windowed model only,
 // lighting.threshold (the window's radius is part of that model),
@@ -33,6 +33,7 @@ struct ReferenceModel {
     double windowExponent = 20.0;
     double threshold = 1.0 / 255.0;  // only for AttenuationModel::Windowed (the window's radius)
     bool shadows = true;
+    bool blendedCasters = false;  // shadows.blended_casters: blended materials cast shadows as if opaque
     bool ambientSpecular = true;
     bool bakedOcclusion = true;  // lighting.ambient_occlusion = both or baked
     bool rayTracedAo = true;     // ssao.enabled and lighting.ambient_occlusion = both or ssao

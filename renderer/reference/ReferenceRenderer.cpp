@@ -151,7 +151,7 @@ ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model,
         throw Error("reference: AO needs at least 1 ray per pixel");
     const auto buildStart = Clock::now();
     const glm::dvec3 eye(request.camera.position);
-    const RayScene rays(scene, eye);
+    const RayScene rays(scene, eye, model.blendedCasters);
     ReferenceImages out;
     out.stats.buildSeconds = secondsSince(buildStart);
     out.stats.triangles = rays.triangleCount();
@@ -329,7 +329,7 @@ RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& mod
                                    const ReferenceRequest& request) {
     const int W = request.width, H = request.height;
     const glm::dvec3 eye(request.camera.position);
-    const RayScene rays(scene, eye);
+    const RayScene rays(scene, eye, model.blendedCasters);
     const CameraRays camera(request.camera, W, H);
     const std::vector<LightInView> lights = lightsInView(scene, model, eye, camera.worldToView);
     std::atomic<long long> total{0};

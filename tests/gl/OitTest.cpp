@@ -244,6 +244,22 @@ TEST(Oit, SkippedWithoutBlendedMaterials) {
     EXPECT_EQ(oit->reason, "no blended material in the scene");
 }
 
+// Blended materials in the scene but none in view: skipped for this frame,
+// and run again once one comes into view.
+TEST(Oit, SkippedWhenNoBlendedMaterialIsInView) {
+    auto s = test::makeSession(W, H);
+    s->loadScene("glass");
+    FrameReport report = s->render();
+    ASSERT_NE(report.find("oit"), nullptr);
+    EXPECT_TRUE(report.find("oit")->ran);
+    Camera away = s->camera();
+    away.target = away.position + (away.position - away.target);  // turned round
+    s->camera() = away;
+    report = s->render();
+    EXPECT_FALSE(report.find("oit")->ran);
+    EXPECT_EQ(report.find("oit")->reason, "no blended material in view");
+}
+
 namespace {
 
 struct Difference {
