@@ -27,6 +27,7 @@
 #include <thread>
 
 #include "app/CommandLine.h"
+#include "app/HostInfo.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
@@ -85,30 +86,10 @@ const char* const kBenchUsage =
     "               scripts/bench_plot.py (python3-matplotlib); --plot-size in pixels (default 800x500)\n"
     "  --quiet      no progress lines on stderr\n";
 
-std::string readCpuModel() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) {
-            const size_t colon = line.find(':');
-            if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
-        }
-    return "unknown";
-}
-
-std::string utcNow() {
-    const std::time_t t = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&t, &tm);
-    char text[32];
-    std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return text;
-}
-
 // What the run ran on, besides the GL strings the runner reads.
 BenchFields hostFields() {
     BenchFields f;
-    f.emplace_back("cpu", readCpuModel());
+    f.emplace_back("cpu", cpuModel());
     f.emplace_back("cpu_threads", std::to_string(std::thread::hardware_concurrency()));
     char host[256] = {};
     if (gethostname(host, sizeof(host) - 1) == 0) f.emplace_back("host", host);

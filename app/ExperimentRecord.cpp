@@ -12,6 +12,7 @@
 #include <set>
 #include <thread>
 
+#include "app/HostInfo.h"
 #include "renderer/Error.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/io/JsonGuard.h"
@@ -43,17 +44,6 @@ glm::vec3 readVec3(const nlohmann::json& j, const std::string& path, const char*
     if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
         throw FileError(path, std::string("camera.") + field + ": expected [x, y, z]");
     return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
-}
-
-std::string readCpuModel() {
-    std::ifstream f("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(f, line))
-        if (line.rfind("model name", 0) == 0) {
-            const size_t colon = line.find(':');
-            if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
-        }
-    return "unknown";
 }
 
 }  // namespace
@@ -148,7 +138,7 @@ ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConf
     r.build = buildFields();
     const gl::GlInfo& info = session.glInfo();
     r.gl = {{"vendor", info.vendor}, {"renderer", info.renderer}, {"version", info.version}, {"platform", glPlatform}};
-    r.host.emplace_back("cpu", readCpuModel());
+    r.host.emplace_back("cpu", cpuModel());
     r.host.emplace_back("cpu_threads", std::to_string(std::thread::hardware_concurrency()));
     utsname u{};
     if (uname(&u) == 0) r.host.emplace_back("os", std::string(u.sysname) + " " + u.release + " " + u.machine);
