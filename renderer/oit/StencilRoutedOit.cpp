@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "renderer/gl/DebugOutput.h"
 #include "renderer/gl/DeviceLimits.h"
 
 namespace dw {
@@ -42,6 +43,10 @@ ResourceDesc StencilRoutedOit::resource(const OutputDecl& output, const KnobRegi
 
 void StencilRoutedOit::setup(gl::ShaderLibrary& shaders) {
     cap_ = std::min(gl::maxMultisampleSamples({GL_RGBA16F, GL_DEPTH32F_STENCIL8}), gpu::OIT_MAX_SAMPLES);
+    gl::GlInfo info;
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    info.renderer = renderer ? renderer : "";
+    cpuRasterizer_ = gl::isCpuRasterizer(info);
     resolve_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "oit/resolve.frag", .defines = {"RESOLVE_ABUFFER"}});
     stencilInit_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "oit/stencil_init.frag"});
 }
@@ -85,6 +90,15 @@ void StencilRoutedOit::render(OitFrame& f) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
+    // Routing needs every fragment to cover all samples (one stencil step
+    // per surface in every sample). With GL_MULTISAMPLE off, GL rasterises
+    // with full coverage where the pixel centre is covered, which is what
+    // a GPU gets here. llvmpipe then tests only one sample's stencil, so
+    // there it stays on: where two surfaces' triangles split a pixel's
+    // samples differently (a closed double-sided object's edges), a sample
+    // can take a second fragment of one surface and lose another
+    // (docs/transparency.md, "Known limits").
+    if (!cpuRasterizer_) glDisable(GL_MULTISAMPLE);
     f.drawTransparent(f.transparentProgram("METHOD_ABUFFER"));
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_DEPTH_TEST);

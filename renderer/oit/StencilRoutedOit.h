@@ -39,6 +39,7 @@ public:
 private:
     IntKnob samples_;
     int cap_ = 0;
+    bool cpuRasterizer_ = false;  // llvmpipe: routing with GL_MULTISAMPLE on (see render)
     gl::ShaderLibrary::Handle resolve_, stencilInit_;
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer target_;

@@ -193,8 +193,9 @@ void GltfMaterialImporter::importMaterials() {
         out.model = MaterialModel::MetallicRoughness;
         const auto& pbr = m.pbrMetallicRoughness;
         if (pbr.baseColorFactor.size() == 4)
-            out.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                                      pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+            out.baseColor = glm::clamp(glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                                                 pbr.baseColorFactor[2], pbr.baseColorFactor[3]),
+                                       0.0f, 1.0f);  // the spec's range; a value outside it is named (GltfModelCheck)
         else
             out.baseColor = glm::vec4(1.0f);
         out.baseColorTexture = imageOfTexture(pbr.baseColorTexture.index);

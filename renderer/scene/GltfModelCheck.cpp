@@ -157,6 +157,20 @@ void GltfModelCheck::noteInvalid(std::vector<std::string>& invalid) const {
                                    std::to_string(n.mesh) + " (spec: one weight per morph target)");
         }
     }
+    // Materials (spec: "Materials"): what the workbench does instead is said.
+    for (size_t i = 0; i < model_.materials.size(); ++i) {
+        const auto& mat = model_.materials[i];
+        const std::string what = "materials[" + std::to_string(i) + "]";
+        if (mat.alphaMode != "OPAQUE" && mat.alphaMode != "MASK" && mat.alphaMode != "BLEND")
+            invalid.push_back(what + ".alphaMode: '" + mat.alphaMode + "' is not OPAQUE, MASK or BLEND (drawn as OPAQUE)");
+        const auto& f = mat.pbrMetallicRoughness.baseColorFactor;
+        for (size_t c = 0; c < f.size(); ++c)
+            if (!(f[c] >= 0.0 && f[c] <= 1.0)) {
+                invalid.push_back(what + ".pbrMetallicRoughness.baseColorFactor[" + std::to_string(c) + "]: " +
+                                  std::to_string(f[c]) + " is outside [0, 1] (clamped)");
+                break;
+            }
+    }
 }
 
 void GltfModelCheck::checkNodeGraph() const {

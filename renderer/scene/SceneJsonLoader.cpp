@@ -438,7 +438,10 @@ private:
         Material m;
         m.name = name;
         m.model = MaterialModel::BlinnPhong;
-        m.baseColor = glm::vec4(r_.vec3(j, "diffuse", where, glm::vec3(0.8f)), r_.number(j, "opacity", where, 1.0f));
+        const float opacity = r_.number(j, "opacity", where, 1.0f);
+        if (!(opacity >= 0.0f && opacity <= 1.0f))
+            r_.fail(r_.join(where, "opacity"), "must be between 0 (invisible) and 1 (opaque), got " + std::to_string(opacity));
+        m.baseColor = glm::vec4(r_.vec3(j, "diffuse", where, glm::vec3(0.8f)), opacity);
         m.specularColor = r_.vec3(j, "specular", where, glm::vec3(0.04f));
         m.specularExponent = r_.positive(j, "shininess", where, 32.0f);
         m.emissive = r_.vec3(j, "emissive", where, glm::vec3(0.0f));

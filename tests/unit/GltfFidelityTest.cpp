@@ -440,6 +440,28 @@ TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
     }
 }
 
+// A material outside the spec (found by a new user of transparency): an
+// alphaMode that is none of the three, and a base colour factor outside
+// [0, 1], are named; the material is drawn OPAQUE, the factor clamped.
+TEST(GltfFidelity, MaterialsOutsideTheSpecAreNamedAndClamped) {
+    test::GltfBuilder b;
+    const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    json j = b.finish({{"POSITION", pos}}, -1, {json::object()});
+    j["materials"] = json::array({{{"alphaMode", "blend"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0.5, 0.5, 1.5}}}}}});
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    Scene s;
+    importGltf(test::writeJson("material-out-of-spec.gltf", j).string(), s, glm::mat4(1.0f), false);
+    ASSERT_FALSE(s.warnings.empty());
+    const std::string& w = s.warnings[0];
+    EXPECT_NE(w.find("materials[0].alphaMode: 'blend' is not OPAQUE, MASK or BLEND (drawn as OPAQUE)"), std::string::npos) << w;
+    EXPECT_NE(w.find("materials[0].pbrMetallicRoughness.baseColorFactor[3]: 1.500000 is outside [0, 1] (clamped)"),
+              std::string::npos)
+        << w;
+    ASSERT_EQ(s.materials.size(), 1u);
+    EXPECT_EQ(s.materials[0].alphaMode, AlphaMode::Opaque);
+    EXPECT_FLOAT_EQ(s.materials[0].baseColor.a, 1.0f);
+}
+
 // Issue 25: a file that breaks the spec where the workbench can read past it
 // (skins and morph targets it does not draw) is drawn, and one warning says
 // the file is invalid, naming each rule and object, apart from the valid

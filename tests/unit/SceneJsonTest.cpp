@@ -88,6 +88,16 @@ TEST(SceneJson, ANumberThatBecomes0AsAFloatIsNamedNotReadAs0) {
     EXPECT_EQ(errorOf(R"({"objects": [{"shape": "box", "size": [1e-40, 1, 1]}]})"), "no error") << "a denormal float is a size";
 }
 
+// Found by a new user: 1.5 drew opaque and -0.1 invisible but counted, silently.
+TEST(SceneJson, OpacityOutsideZeroToOneIsNamed) {
+    for (const char* v : {"1.5", "-0.1"}) {
+        const std::string e = errorOf(std::string(R"({"materials": {"glass": {"opacity": )") + v + "}}}", "op.json");
+        EXPECT_NE(e.find("op.json: materials.glass.opacity: must be between 0 (invisible) and 1 (opaque)"), std::string::npos)
+            << e;
+    }
+    EXPECT_EQ(errorOf(R"({"materials": {"glass": {"opacity": 0}}})"), "no error");
+}
+
 TEST(SceneJson, WrongTypesNameTheJsonPath) {
     EXPECT_NE(errorOf(R"({"lights": [{"pos": [0,1,0], "attenuation": {"quadratic": "high"}}]})")
                   .find("lights[0].attenuation.quadratic: expected a number, got string"),
