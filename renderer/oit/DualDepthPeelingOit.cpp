@@ -64,6 +64,9 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     f.uploadParams();
     const gl::Program& program = f.transparentProgram("METHOD_DUAL");
     for (int k = 0; k < passes; ++k) {
+        // An odd layer count: the last pass keeps its nearest layer only, so N layers means N.
+        f.params.frontOnly = k == passes - 1 && layers % 2 == 1 ? 1 : 0;
+        f.uploadParams();
         peel.bind();
         peel.clearColor(0, -2, -2, 0, 0);
         peel.clearColor(1, 0, 0, 0, 0);
@@ -84,6 +87,7 @@ void DualDepthPeelingOit::render(OitFrame& f) {
         triangle_.draw();
         copyRange();
     }
+    f.params.frontOnly = 0;
     glDisable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     ctx.texture("oit.dual_front_accum").bind(13);

@@ -93,6 +93,9 @@ void main() {
         outDepth = vec2(-farness, farness);  // still inside: next pass's range
         return;
     }
+    // The last pass of an odd oit.peel_layers takes one layer, the nearest:
+    // the farthest is left (lost, and counted in oit.overflow).
+    if (oit.frontOnly != 0 && farness != nearest) discard;
 #endif
 #ifdef METHOD_PEEL
     if (!nearer(texelFetch(uPrevDepth, px, 0).r, gl_FragCoord.z)) discard;  // peeled already

@@ -20,7 +20,7 @@ DW_PARAM_CONST(int, OIT_LIST_MAX_FRAGMENTS, 32)
     FIELD(int, countFragments) /* add every fragment that reaches the pixel to oit.sample_count */ \
     FIELD(int, lightCount)     /* rows of the light table */                                \
     FIELD(int, peelLayer)      /* depth peeling: the layer being peeled (0: the nearest) */ \
-    FIELD(int, pad0)                                                                        \
+    FIELD(int, frontOnly)      /* dual peeling: keep the nearest layer only (odd layers' last pass) */ \
     FIELD(int, pad1)
 DW_PARAM_BLOCK_AT(OitParams, oit, OIT_UBO, DW_OIT_PARAMS)
 DW_PARAM_SIZE(OitParams, 32)

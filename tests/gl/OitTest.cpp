@@ -191,6 +191,9 @@ TEST_P(OitDepthModes, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
     EXPECT_LT(peel4Error, kTolerance);
     const MethodResult dual4 = renderPanes(*s, "dual_depth_peeling", samples, 4);
     EXPECT_LT(worstError(dual4.lbuffer, 4, &checked), kTolerance);
+    // An odd layer count peels exactly that many (the last pass keeps its nearest layer only).
+    const MethodResult dual3 = renderPanes(*s, "dual_depth_peeling", samples, 3);
+    EXPECT_LT(worstError(dual3.lbuffer, 3, &checked), kTolerance);
     std::vector<const Pane*> over;
     int countWrong = 0, overflowWrong = 0, deep = 0;
     for (int x = 0; x < W; ++x) {
@@ -201,6 +204,7 @@ TEST_P(OitDepthModes, ExactMethodsMatchTheCpuBlendOfKnownPanes) {
             for (const MethodResult* r : {&list, &abuffer, &peel4, &dual4})
                 countWrong += static_cast<int>(r->count.at(x, y, 0)) != n;
             overflowWrong += static_cast<int>(dual4.overflow.at(x, y, 0)) != std::max(0, n - 4);
+            overflowWrong += static_cast<int>(dual3.overflow.at(x, y, 0)) != std::max(0, n - 3);
             overflowWrong += static_cast<int>(abuffer.overflow.at(x, y, 0)) != std::max(0, n - samples);
             overflowWrong += static_cast<int>(peel4.overflow.at(x, y, 0)) != std::max(0, n - 4);
             overflowWrong += static_cast<int>(list.overflow.at(x, y, 0)) != 0;
