@@ -13,7 +13,7 @@ OitMethodCatalog& OitMethodCatalog::extra() {
 
 void OitFrame::drawTransparent(const gl::Program& program) const {
     program.use();
-    ctx.gpu.drawInOrder(program, draws);
+    ctx.gpu.drawInOrder(program, draws, backFacesFirst);
 }
 
 std::size_t allocatedBytes(const FrameContext& ctx, const std::vector<std::string>& names) {

@@ -46,6 +46,8 @@ struct OitFrame {
     FrameContext& ctx;
     // The blended instances in view (indices into GpuScene::draws()), in scene order.
     std::vector<std::size_t> draws;
+    // forward_sorted: each double-sided object's back faces before its front faces.
+    bool backFacesFirst = false;
     // Every shadow map was kept this frame: the shadowed shader variant.
     bool shadowed = false;
     gpu::OitParams params{};

@@ -33,7 +33,9 @@ void SortedForwardOit::render(OitFrame& f) {
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    f.backFacesFirst = true;  // within an object: its far faces under its near ones
     f.drawTransparent(f.transparentProgram("METHOD_FORWARD"));
+    f.backFacesFirst = false;
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     std::swap(f.draws, sorted);

@@ -242,12 +242,12 @@ void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindText
     drawList(program, order, bindTextures, before);
 }
 
-void GpuScene::drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order) const {
-    drawList(program, order, true, nullptr);
+void GpuScene::drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order, bool backFacesFirst) const {
+    drawList(program, order, true, nullptr, backFacesFirst);
 }
 
 void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
-                        const PerDraw* before) const {
+                        const PerDraw* before, bool backFacesFirst) const {
     if (draws_.empty() || order.empty()) return;
     vao_.bind();
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
@@ -271,8 +271,20 @@ void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_
         glFrontFace(d.mirrored ? GL_CW : GL_CCW);
         program.set(0, relativeModel(d.model));
         program.set(1, d.material);
-        glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
-                                 reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
+        const auto drawIt = [&] {
+            glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,
+                                     reinterpret_cast<const void*>(d.indexOffsetBytes), d.baseVertex);
+        };
+        if (backFacesFirst && d.doubleSided) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            drawIt();
+            glCullFace(GL_BACK);
+            drawIt();
+            glDisable(GL_CULL_FACE);  // as cullOn says for a double-sided draw
+        } else {
+            drawIt();
+        }
     }
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

@@ -68,7 +68,10 @@ public:
     void drawEach(const gl::Program& program, Filter filter, const PerDraw& before) const;
     // Draws the instances `order` lists (indices into draws()), in that
     // order, whatever their alpha mode (the sorted forward transparency pass).
-    void drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order) const;
+    // `backFacesFirst`: a double-sided draw is drawn twice, its back faces
+    // (culling the front) and then its front faces, so a closed double-sided
+    // object blended in one draw composites its far side under its near side.
+    void drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order, bool backFacesFirst = false) const;
     // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
     void drawDepthOnly(const gl::Program& program, Filter filter) const;
     // The world position every draw's model matrix is made relative to, in
@@ -95,7 +98,7 @@ private:
     void bindMaterialTextures(int material) const;
     void drawImpl(const gl::Program& program, Filter filter, bool bindTextures, const PerDraw* before) const;
     void drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
-                  const PerDraw* before) const;
+                  const PerDraw* before, bool backFacesFirst = false) const;
     glm::mat4 relativeModel(const glm::mat4& model) const;
     mutable glm::dvec3 origin_{0.0};
 
