@@ -1,13 +1,17 @@
 // deferred-workbench list scenes|buffers|knobs|passes|presets: needs no GL context.
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <tuple>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/Pipeline.h"
+#include "renderer/graph/RenderPass.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/knobs/Preset.h"
 #include "renderer/scene/BuiltinScenes.h"
+#include "renderer/scene/SceneLoader.h"
 
 namespace dw {
 
@@ -15,18 +19,33 @@ int runListCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench list scenes|buffers|knobs|passes|presets\n"
+                     "       deferred-workbench list passes --scene S [--preset P] [--set k=v]... [--size WxH]\n"
                      "  scenes   the built-in scenes\n"
                      "  buffers  every named output: kind, the pass that writes it, what it holds\n"
                      "  knobs    every knob: default, range, unit, what it does\n"
-                     "  passes   the passes in order, with what each reads and writes\n"
+                     "  passes   the passes in order, with what each reads and writes; with --scene, also\n"
+                     "           which would be skipped for that scene and its camera, and why\n"
                      "  presets  the built-in presets and their knob values\n";
         return 0;
     }
+    RunConfig run = cl.runConfig();
+    const auto size = cl.value("--size");
     cl.finish("list");
     const auto words = cl.positional();
     const std::string what = words.empty() ? "" : words[0];
+    const bool withScene = !run.scene.empty() || run.preset();
+    if ((withScene || size) && what != "passes")
+        throw UsageError("list: --scene, --preset, --set and --size apply to 'list passes' only");
     KnobRegistry knobs;
     Pipeline pipeline(knobs);
+    // list passes --scene: the scene's knobs (settings, preset, --set) and its camera decide the skips.
+    std::optional<Scene> scene;
+    if (withScene) {
+        run.validate(knobs);
+        scene = loadScene(run.sceneSpec());
+        run.applyKnobs(knobs, *scene);
+        std::tie(run.width, run.height) = CommandLine::parseSize(size.value_or("1280x720"));
+    }
     if (what == "scenes") {
         for (const auto& s : builtinScenes()) std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
     } else if (what == "buffers") {
@@ -44,7 +63,16 @@ int runListCommand(int argc, char** argv) {
     } else if (what == "passes") {
         // In pipeline order under the default knobs; the post chain's image resolved.
         for (const PassInfo& p : pipeline.passList()) {
-            std::printf("%s  [%s]\n", p.name.c_str(), toString(p.stage));
+            std::string skipped;
+            if (scene) {
+                const RenderPass* pass = pipeline.findPass(p.name);
+                skipped = pass->skipReason(knobs, *scene);
+                if (skipped.empty())
+                    skipped = pass->viewSkipReason(knobs, *scene,
+                                                   Pipeline::cameraUniforms(run.camera(*scene), run.width, run.height));
+            }
+            std::printf("%s  [%s]%s\n", p.name.c_str(), toString(p.stage),
+                        skipped.empty() ? "" : ("  (skipped: " + skipped + ")").c_str());
             for (const auto& in : p.reads) std::printf("  reads    %s\n", in.c_str());
             for (const auto& in : p.optionalReads) std::printf("  reads    %s (when produced)\n", in.c_str());
             for (const auto& in : p.modifies) std::printf("  modifies %s\n", in.c_str());

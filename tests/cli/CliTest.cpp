@@ -61,6 +61,22 @@ TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
     EXPECT_EQ(run("list widgets").code, 2);
 }
 
+// list passes --scene: which passes that scene (its knobs and camera) skips,
+// and why, as --timings and the inspector say it (a new user found it never could).
+TEST(Cli, ListPassesWithASceneShowsItsSkips) {
+    const Result plain = run("list passes --scene default --set dof.enabled=true");
+    ASSERT_EQ(plain.code, 0) << plain.err;
+    EXPECT_NE(plain.out.find("oit  [lighting]  (skipped: no blended material in the scene)"), std::string::npos) << plain.out;
+    EXPECT_EQ(plain.out.find("dof  [post]  (skipped"), std::string::npos) << plain.out;
+    const Result glass = run("list passes --scene glass");
+    ASSERT_EQ(glass.code, 0) << glass.err;
+    EXPECT_NE(glass.out.find("oit  [lighting]\n"), std::string::npos) << glass.out;
+    EXPECT_NE(glass.out.find("dof  [post]  (skipped: switched off (dof.enabled = false))"), std::string::npos) << glass.out;
+    const Result misplaced = run("list knobs --scene glass");
+    EXPECT_EQ(misplaced.code, 2);
+    EXPECT_NE(misplaced.err.find("apply to 'list passes' only"), std::string::npos) << misplaced.err;
+}
+
 TEST(Cli, RendersPngOfTheRequestedSize) {
     const fs::path out = test::tempDir() / "frame.png";
     const Result r = run("render --scene spheres --size 96x54 --out " + out.string());
