@@ -95,11 +95,7 @@ BenchFields hostFields() {
     if (gethostname(host, sizeof(host) - 1) == 0) f.emplace_back("host", host);
     utsname u{};
     if (uname(&u) == 0) f.emplace_back("os", std::string(u.sysname) + " " + u.release + " " + u.machine);
-#if defined(__clang__)
-    f.emplace_back("compiler", std::string("clang ") + __clang_version__);
-#elif defined(__GNUC__)
-    f.emplace_back("compiler", std::string("gcc ") + __VERSION__);
-#endif
+    f.emplace_back("compiler", compilerName());
 #ifdef DW_BUILD_TYPE
     f.emplace_back("build_type", DW_BUILD_TYPE);
 #endif

@@ -109,11 +109,7 @@ RecordFields ExperimentRecord::buildFields() {
 #else
     f.emplace_back("commit", "unknown");
 #endif
-#if defined(__clang__)
-    f.emplace_back("compiler", std::string("clang ") + __clang_version__);
-#elif defined(__GNUC__)
-    f.emplace_back("compiler", std::string("gcc ") + __VERSION__);
-#endif
+    f.emplace_back("compiler", compilerName());
 #ifdef DW_BUILD_TYPE
     f.emplace_back("build_type", DW_BUILD_TYPE);
 #endif

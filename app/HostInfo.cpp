@@ -16,6 +16,16 @@ std::string cpuModel() {
     return "unknown";
 }
 
+std::string compilerName() {
+#if defined(__clang__)
+    return std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+    return std::string("gcc ") + __VERSION__;
+#else
+    return "unknown";
+#endif
+}
+
 std::string utcNow() {
     const std::time_t t = std::time(nullptr);
     std::tm tm{};
