@@ -38,7 +38,7 @@ void main() {
     MaterialSample ms;
     if (!evaluateMaterial(materials[uMaterial], fs.normal, fs.tangent, fs.uvs, fs.color, gl_FrontFacing, ms)) discard;
     outAlbedo = vec4(clamp(ms.diffuse, 0.0, 1.0), PIXEL_SURFACE / 255.0);
-    outNormal = encodeNormalKL(ms.normal);
+    outNormal = encodeNormal(ms.normal);
     outSpecular = vec4(clamp(ms.specular, 0.0, 1.0), encodeExponent(ms.exponent));
     outEmissive = vec4(clamp(ms.emissive, vec3(0.0), vec3(65000.0)), 0.0);  // R11G11B10F's largest value: stay finite
     outOcclusion = materialOcclusion(materials[uMaterial], fs.uvs);

@@ -10,6 +10,7 @@ CameraUniforms::CameraUniforms() {
     view = projection = viewProjection = inverseProjection = inverseView = glm::mat4(1.0f);
     viewport = clip = glm::vec4(0.0f);
     depth = glm::vec4(1.0f, 0.0f, 1.0f, 0.0f);
+    gbuffer = glm::vec4(0.0f);
 }
 
 glm::dmat4 CameraUniforms::worldToView() const {

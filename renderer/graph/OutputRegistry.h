@@ -21,7 +21,7 @@ enum class OutputKind {
     Color,     // display-ready colour (8-bit, sRGB-encoded)
     HdrColor,  // linear radiance, unbounded
     Depth,     // window-space depth in [0, 1]
-    NormalKL,  // view-space normal, Kircher-Lawrance encoded in 2 SNORM channels
+    NormalKL,  // view-space normal encoded in 2 SNORM channels (gbuffer.normal_encoding: Kircher-Lawrance or octahedral)
     Vector,    // signed vector data (decoded normals, positions)
     Scalar,    // one value per pixel (AO, luminance statistics)
     Count,     // small integer counts (light overlap, A-buffer samples)

@@ -76,6 +76,10 @@ Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
                                   "the display image: the end of the post chain (tonemap.result, then each post pass that ran)"});
     depthMode_ = knobs.requireEnum("depth.mode");
     knobReaders_[static_cast<size_t>(depthMode_.id)].insert("*");  // the camera every pass uses
+    normalEncoding_ = knobs.requireEnum("gbuffer.normal_encoding");
+    octahedral_[0] = knobs.choiceIndex(normalEncoding_, "oct16");
+    octahedral_[1] = knobs.choiceIndex(normalEncoding_, "oct8");
+    knobReaders_[static_cast<size_t>(normalEncoding_.id)].insert("*");  // every reader of gbuffer.normal decodes by it
 }
 
 const std::set<std::string>& Pipeline::knobReaders(int knob) const {
@@ -113,6 +117,7 @@ void Pipeline::setScene(const Scene& scene) {
 
 void Pipeline::bindCamera(const Camera& camera) {
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
+    camera_.gbuffer.x = normalEncodingUniform();
     cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
 }
@@ -149,6 +154,11 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     u.viewport = glm::vec4(width, height, 1.0f / width, 1.0f / height);
     u.clip = glm::vec4(camera.nearPlane, camera.farPlane, std::tan(glm::radians(camera.fovYDegrees) * 0.5f), aspect);
     return u;
+}
+
+float Pipeline::normalEncodingUniform() const {
+    const int e = knobs_.get(normalEncoding_);
+    return e == octahedral_[0] || e == octahedral_[1] ? 1.0f : 0.0f;
 }
 
 std::string Pipeline::resolveFinal() const { return makePlan({{}}).finalName; }
@@ -327,6 +337,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     report.frameIndex = frame_;
     // The camera first: a pass may skip this frame for what is in view.
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
+    camera_.gbuffer.x = normalEncodingUniform();
     viewKnown_ = true;
     Plan plan = makePlan(request);
     for (size_t i : plan.order) report.passes.push_back(plan.records[i]);

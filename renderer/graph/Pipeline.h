@@ -134,6 +134,10 @@ private:
     CameraUniforms camera_;
     bool viewKnown_ = false;  // camera_ holds a frame's camera (passes may skip by view)
     EnumKnob depthMode_;  // depth.mode: 0 reversed, 1 conventional
+    EnumKnob normalEncoding_;  // gbuffer.normal_encoding: kl16, oct16, oct8
+    int octahedral_[2] = {-1, -1};  // its octahedral choices
+    // CameraBlock::gbuffer.x: 0 Kircher-Lawrance, 1 octahedral.
+    float normalEncodingUniform() const;
     int width_ = 0, height_ = 0;
     std::uint64_t frame_ = 0;
     std::vector<std::set<std::string>> knobReaders_;  // by knob id

@@ -162,7 +162,8 @@ ProbeResult probePixel(const Pipeline& pipeline, int x, int y) {
         s.linearDepth = -s.viewPosition.z;
     }
     if (const ProbeValue* n = value("gbuffer.normal"))
-        s.viewNormal = glm::vec3(reference::decodeNormalKL(glm::dvec2(n->raw.x, n->raw.y)));
+        s.viewNormal = glm::vec3(cam.gbuffer.x > 0.5f ? reference::decodeNormalOct(glm::dvec2(n->raw.x, n->raw.y))
+                                                      : reference::decodeNormalKL(glm::dvec2(n->raw.x, n->raw.y)));
     if (const ProbeValue* a = value("gbuffer.albedo")) s.albedo = glm::vec3(a->raw);
     if (const ProbeValue* sp = value("gbuffer.specular")) {
         s.specular = glm::vec3(sp->raw);

@@ -48,10 +48,12 @@ void ViewportOverlay::drawLines(const std::vector<glm::vec3>& points, const glm:
 const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::Texture* depth, const Scene& scene,
                                             const CameraUniforms& camera, const OverlaySettings& s) {
     const int w = base.width(), h = base.height();
-    if (!color_ || color_.width() != w || color_.height() != h) {
+    // The depth copy in the scene depth's format (gbuffer.depth_format).
+    const GLenum depthFormat = depth && depth->internalFormat() == GL_DEPTH24_STENCIL8 ? GL_DEPTH24_STENCIL8 : GL_DEPTH32F_STENCIL8;
+    if (!color_ || color_.width() != w || color_.height() != h || depth_.internalFormat() != depthFormat) {
         color_ = gl::Texture::create2D(GL_RGBA8, w, h);
         color_.setFilter(GL_NEAREST, GL_NEAREST);
-        depth_ = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, w, h);
+        depth_ = gl::Texture::create2D(depthFormat, w, h);
         fbo_ = gl::Framebuffer::create("viewport overlay");
         fbo_.attachColor(0, color_);
         fbo_.attachDepth(depth_);
@@ -59,7 +61,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
         fbo_.checkComplete("viewport overlay");
     }
     glCopyImageSubData(base.id(), GL_TEXTURE_2D, 0, 0, 0, 0, color_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
-    const bool occlusion = depth && depth->width() == w && depth->height() == h && depth->internalFormat() == GL_DEPTH32F_STENCIL8;
+    const bool occlusion = depth && depth->width() == w && depth->height() == h && depth->internalFormat() == depthFormat;
     if (occlusion)
         glCopyImageSubData(depth->id(), GL_TEXTURE_2D, 0, 0, 0, 0, depth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
     else

@@ -35,7 +35,7 @@ struct OverlaySettings {
 class ViewportOverlay {
 public:
     void setup(gl::ShaderLibrary& shaders);
-    // `depth` (same size as `base`, DEPTH32F_STENCIL8) hides lines behind
+    // `depth` (same size as `base`, DEPTH32F_ or DEPTH24_STENCIL8) hides lines behind
     // geometry; pass null to draw everything in front.
     const gl::Texture& compose(const gl::Texture& base, const gl::Texture* depth, const Scene& scene,
                                const CameraUniforms& camera, const OverlaySettings& settings);

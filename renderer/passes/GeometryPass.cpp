@@ -20,6 +20,20 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
         "strategy's unquantised material shows as a mean difference of about 0.6% on a 0.6 diffuse) or unorm16 (8 "
         "bytes each, rounding 256 times finer)",
         true);
+    normalEncoding_ = knobs.addEnum(
+        "gbuffer.normal_encoding", {"kl16", "oct16", "oct8"}, "kl16", "gbuffer",
+        "the storage of gbuffer.normal, a view-space unit vector in two signed channels: kl16 (Kircher-Lawrance, "
+        "RG16_SNORM, seed 000: its error grows towards normals facing straight away from the viewer), oct16 "
+        "(octahedral, RG16_SNORM, Cigolle et al. 2014: about as fine everywhere) or oct8 (octahedral, RG8_SNORM: half "
+        "the bytes, about a degree of error)",
+        true);
+    depthFormat_ = knobs.addEnum(
+        "gbuffer.depth_format", {"float32", "unorm24"}, "float32", "gbuffer",
+        "the storage of gbuffer.depth (and lbuffer.depth): float32 (DEPTH32F_STENCIL8: with depth.mode=reversed "
+        "about 1e-7 relative precision at every distance) or unorm24 (DEPTH24_STENCIL8: 2^-24 steps of window depth, "
+        "so with a far/near ratio of 1e4 or more distant surfaces share depth values and z-fight, more so with "
+        "depth.mode=reversed, whose precision float needs)",
+        true);
     textureFilter_ = knobs.addEnum(
         "gbuffer.texture_filter", {"mipmap", "base_level"}, "mipmap", "gbuffer",
         "how the materials' textures are filtered: mipmap (trilinear, and anisotropic on a GPU, as each glTF sampler "
@@ -43,7 +57,9 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
          "diffuse colour (RGBA16, or sRGB8 with gbuffer.material_format = srgb8); alpha holds the pixel type (0 "
          "background, 1 surface)",
          texture2D(GL_SRGB8_ALPHA8), 4},
-        {"gbuffer.normal", OutputKind::NormalKL, "view-space normal, Kircher-Lawrance encoded in RG16_SNORM",
+        {"gbuffer.normal", OutputKind::NormalKL,
+         "view-space normal, encoded as gbuffer.normal_encoding says (Kircher-Lawrance or octahedral in RG16_SNORM, "
+         "octahedral in RG8_SNORM)",
          texture2D(GL_RG16_SNORM), 2},
         {"gbuffer.specular", OutputKind::Color,
          "specular colour (RGBA16, or sRGB8 with gbuffer.material_format = srgb8); alpha = log2(Blinn-Phong "
@@ -52,7 +68,8 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
         {"gbuffer.emissive", OutputKind::HdrColor, "emitted radiance (R11G11B10F)", texture2D(GL_R11F_G11F_B10F), 3},
         {"gbuffer.occlusion", OutputKind::Scalar,
          "baked ambient accessibility from the material's occlusion texture, 1 without one (R8)", texture2D(GL_R8), 1},
-        {"gbuffer.depth", OutputKind::Depth, "window-space depth (DEPTH32F_STENCIL8)", texture2D(GL_DEPTH32F_STENCIL8), 1},
+        {"gbuffer.depth", OutputKind::Depth,
+         "window-space depth (DEPTH32F_STENCIL8, or DEPTH24_STENCIL8 with gbuffer.depth_format=unorm24)", texture2D(GL_DEPTH32F_STENCIL8), 1},
         {"gbuffer.directional", OutputKind::HdrColor,
          "with lighting.directional_in_gbuffer: the directional lights without a shadow map, shaded in the G-buffer "
          "pass (RGBA32F)",
@@ -65,6 +82,10 @@ ResourceDesc GeometryPass::resource(const OutputDecl& output, const KnobRegistry
     if ((output.name == "gbuffer.albedo" || output.name == "gbuffer.specular") &&
         knobs.get(materialFormat_) == knobs.choiceIndex(materialFormat_, "unorm16"))
         d.format = GL_RGBA16;
+    if (output.name == "gbuffer.normal" && knobs.get(normalEncoding_) == knobs.choiceIndex(normalEncoding_, "oct8"))
+        d.format = GL_RG8_SNORM;
+    if (output.name == "gbuffer.depth" && knobs.get(depthFormat_) == knobs.choiceIndex(depthFormat_, "unorm24"))
+        d.format = GL_DEPTH24_STENCIL8;
     return d;
 }
 

@@ -22,7 +22,8 @@ public:
     // With lighting.directional_in_gbuffer: the light table (and so the
     // shadow pass, which marks the lights with maps) first.
     PassIO inputs(const KnobRegistry& knobs) const override;
-    // gbuffer.albedo and gbuffer.specular as gbuffer.material_format says.
+    // gbuffer.albedo and gbuffer.specular as gbuffer.material_format says,
+    // gbuffer.normal as gbuffer.normal_encoding, gbuffer.depth as gbuffer.depth_format.
     ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
@@ -32,6 +33,8 @@ private:
     BoolKnob directional_;  // lighting.directional_in_gbuffer
     EnumKnob textureFilter_;  // gbuffer.texture_filter
     EnumKnob materialFormat_;  // gbuffer.material_format: srgb8, unorm16
+    EnumKnob normalEncoding_;  // gbuffer.normal_encoding: kl16, oct16, oct8
+    EnumKnob depthFormat_;     // gbuffer.depth_format: float32, unorm24
     gl::ShaderLibrary::Handle program_, directionalProgram_;
     TargetFramebuffer target_, directionalTarget_;
     std::string stats_;

@@ -76,7 +76,8 @@ std::vector<OutputDecl> LightingPass::outputs() const {
          "additively blended",
          texture2D(GL_RGBA32F)},
         {"lbuffer.depth", OutputKind::Depth,
-         "the G-buffer depth copied for the L-buffer, with the stencil the light volumes used (DEPTH32F_STENCIL8)",
+         "the G-buffer depth copied for the L-buffer, with the stencil the light volumes used (DEPTH32F_STENCIL8, "
+         "DEPTH24_STENCIL8 with gbuffer.depth_format=unorm24)",
          texture2D(GL_DEPTH32F_STENCIL8), 1},
         {"lighting.overlap", OutputKind::Count,
          "light-shader invocations per pixel: how many light volumes passed the stencil test, or how many lights "
@@ -87,7 +88,18 @@ std::vector<OutputDecl> LightingPass::outputs() const {
     return out;
 }
 
-void LightingPass::connect(const KnobRegistry& knobs) { directionalInGBuffer_ = knobs.requireBool("lighting.directional_in_gbuffer"); }
+void LightingPass::connect(const KnobRegistry& knobs) {
+    directionalInGBuffer_ = knobs.requireBool("lighting.directional_in_gbuffer");
+    depthFormat_ = knobs.requireEnum("gbuffer.depth_format");
+}
+
+ResourceDesc LightingPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    // A copy of gbuffer.depth (glCopyImageSubData needs the same format).
+    if (output.name == "lbuffer.depth" && knobs.get(depthFormat_) == knobs.choiceIndex(depthFormat_, "unorm24"))
+        d.format = GL_DEPTH24_STENCIL8;
+    return d;
+}
 
 PassIO LightingPass::inputs(const KnobRegistry& knobs) const {
     PassIO io{{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ssao.blurred", "sky"}};

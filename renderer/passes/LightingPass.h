@@ -40,6 +40,8 @@ public:
     std::vector<OutputDecl> outputs() const override;
     PassIO inputs(const KnobRegistry& knobs) const override;
     void connect(const KnobRegistry& knobs) override;
+    // lbuffer.depth in gbuffer.depth's format (gbuffer.depth_format).
+    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
@@ -85,6 +87,7 @@ private:
     int autoChoice_ = 0;  // lighting.strategy's index of "auto"
     FloatKnob autoCoverage_, autoClusterCoverage_;
     BoolKnob directionalInGBuffer_;  // declared by the geometry pass
+    EnumKnob depthFormat_;           // gbuffer.depth_format, declared by the geometry pass
 };
 
 }  // namespace dw

@@ -58,4 +58,23 @@ glm::dvec3 decodeNormalKL(const glm::dvec2& e) {
     return {2.0 * z * e.x, 2.0 * z * e.y, 2.0 * z * z - 1.0};
 }
 
+namespace {
+glm::dvec2 signNotZero(const glm::dvec2& v) { return {v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0}; }
+}  // namespace
+
+glm::dvec2 encodeNormalOct(const glm::dvec3& n) {
+    const glm::dvec2 p = glm::dvec2(n) / (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+    return n.z <= 0.0 ? (1.0 - glm::abs(glm::dvec2(p.y, p.x))) * signNotZero(p) : p;
+}
+
+glm::dvec3 decodeNormalOct(const glm::dvec2& e) {
+    glm::dvec3 v(e, 1.0 - std::abs(e.x) - std::abs(e.y));
+    if (v.z < 0.0) {
+        const glm::dvec2 folded = (1.0 - glm::abs(glm::dvec2(v.y, v.x))) * signNotZero(glm::dvec2(v));
+        v.x = folded.x;
+        v.y = folded.y;
+    }
+    return glm::normalize(v);
+}
+
 }  // namespace dw::reference

@@ -31,5 +31,8 @@ double spotFactor(const Light& light, double cosTheta);
 // Kircher-Lawrance normal transform, exact.
 glm::dvec2 encodeNormalKL(const glm::dvec3& n);
 glm::dvec3 decodeNormalKL(const glm::dvec2& e);
+// Octahedral normal (Cigolle et al. 2014, section 3.3; shaders/common/gbuffer.glsl), exact.
+glm::dvec2 encodeNormalOct(const glm::dvec3& n);
+glm::dvec3 decodeNormalOct(const glm::dvec2& e);
 
 }  // namespace dw::reference

@@ -111,7 +111,7 @@ bool mapFetched(inout vec4 v) {
         if (depthReversed() ? v.r <= 0.0 : v.r >= 1.0) return false;
         if (view.mapping == VIEW_MAP_LINEAR_DEPTH) v = vec4(vec3(linearDepth(v.r)), 1.0);
     } else if (view.klNormal != 0) {
-        v = vec4(decodeNormalKL(v.xy), 1.0);
+        v = vec4(decodeNormal(v.xy), 1.0);
     }
     return !any(isnan(v)) && !any(isinf(v));
 }

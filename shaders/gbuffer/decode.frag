@@ -19,6 +19,6 @@ void main() {
         outPosition = vec4(0.0);
         return;
     }
-    outNormal = vec4(decodeNormalKL(texelFetch(uNormal, px, 0).xy), 1.0);
+    outNormal = vec4(decodeNormal(texelFetch(uNormal, px, 0).xy), 1.0);
     outPosition = vec4(viewPositionAtPixel(px, depth), 1.0);
 }

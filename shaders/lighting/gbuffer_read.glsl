@@ -26,7 +26,7 @@ Surface readSurface(ivec2 px) {
     vec4 spec = texelFetch(uSpecular, px, 0);
     s.pixelType = floor(albedo.a * 255.0 + 0.5);
     s.position = viewPositionAtPixel(px, s.depth);
-    s.normal = decodeNormalKL(texelFetch(uNormal, px, 0).xy);
+    s.normal = decodeNormal(texelFetch(uNormal, px, 0).xy);
     s.diffuse = albedo.rgb;
     s.specular = spec.rgb;
     s.exponent = decodeExponent(spec.a);

@@ -40,7 +40,7 @@ DW_PARAM_CONST(int, VIEW_ARRANGE_TABLE, 3)    // a buffer's words, element 0 in 
     FIELD(int, channel)       /* VIEW_CHANNEL_* */                                                 \
     FIELD(int, autoRange)     /* the range is the view's min/max (AutoRange), not rangeMin/Max */  \
     FIELD(int, mipLevel)      /* of the source texture */                                          \
-    FIELD(int, klNormal)      /* the source is a Kircher-Lawrance encoded normal */                \
+    FIELD(int, klNormal)      /* the source is gbuffer.normal (decoded as camera.gbuffer says) */                \
     FIELD(int, depthKind)     /* VIEW_DEPTH_* */                                                   \
     FIELD(int, srgb)          /* the source is an sRGB texture: linear values shown encoded */     \
     FIELD(int, arrangement)   /* VIEW_ARRANGE_* */                                                 \

@@ -15,8 +15,9 @@
     FIELD(mat4, inverseView)                                                                  \
     FIELD(vec4, viewport) /* width, height, 1/width, 1/height */                              \
     FIELD(vec4, clip)     /* near, far, tan(fovY/2), aspect */                                \
-    FIELD(vec4, depth)    /* x 1 reversed / 0 conventional, y far depth, z near depth */
+    FIELD(vec4, depth)    /* x 1 reversed / 0 conventional, y far depth, z near depth */    \
+    FIELD(vec4, gbuffer)  /* x gbuffer.normal_encoding: 0 Kircher-Lawrance, 1 octahedral */
 DW_PARAM_BLOCK_AT(CameraBlock, camera, CAMERA_UBO, DW_CAMERA_PARAMS)
-DW_PARAM_SIZE(CameraBlock, 368)
+DW_PARAM_SIZE(CameraBlock, 384)
 
 #endif

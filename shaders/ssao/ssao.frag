@@ -50,7 +50,7 @@ void main() {
         return;
     }
     vec3 P = viewPositionAtPixel(px, depth);
-    vec3 N = decodeNormalKL(texelFetch(uNormal, px, 0).xy);
+    vec3 N = decodeNormal(texelFetch(uNormal, px, 0).xy);
     vec3 r = normalize(texelFetch(uNoise, ivec2(gl_FragCoord.xy) & (SSAO_NOISE_SIZE - 1), 0).xyz);
     float radius = ssao.radius;
     float bias = ssao.bias * radius;

@@ -20,7 +20,8 @@ struct ReconstructionError {
     double worst = 0.0, mean = 0.0;
 };
 
-ReconstructionError reconstructionError(const PlaneCase& c, const char* depthMode = "reversed") {
+ReconstructionError reconstructionError(const PlaneCase& c, const char* depthMode = "reversed",
+                                        const char* depthFormat = "float32") {
     const int W = 160, H = 90;
     auto session = test::makeSession(W, H);
     Scene s = test::planeScene(200.0f);
@@ -28,6 +29,7 @@ ReconstructionError reconstructionError(const PlaneCase& c, const char* depthMod
     s.camera = c.camera;
     session->setScene(std::move(s));
     session->knobs().setFromString("depth.mode", depthMode);  // after setScene, which applies the run's knobs
+    session->knobs().setFromString("gbuffer.depth_format", depthFormat);
     session->render({{"gbuffer.view_position"}});
     const FloatImage pos = session->readRaw("gbuffer.view_position");
 
@@ -53,8 +55,8 @@ ReconstructionError reconstructionError(const PlaneCase& c, const char* depthMod
             worst = std::max(worst, e);
             sum += e;
         }
-    std::printf("position reconstruction (%s depth, near %g, far %g): worst relative error %.3g, mean %.3g over %d pixels\n",
-                depthMode, c.camera.nearPlane, c.camera.farPlane, worst, sum / std::max(covered, 1), covered);
+    std::printf("position reconstruction (%s depth, %s, near %g, far %g): worst relative error %.3g, mean %.3g over %d pixels\n",
+                depthMode, depthFormat, c.camera.nearPlane, c.camera.farPlane, worst, sum / std::max(covered, 1), covered);
     EXPECT_GT(covered, W * H / 4);
     return {worst, sum / std::max(covered, 1)};
 }
@@ -108,4 +110,25 @@ TEST(PositionReconstruction, ReversedDepthAtNear1e5Far5000) {
 TEST(PositionReconstruction, ConventionalDepthAtNear1e5Far5000LosesPrecision) {
     const ReconstructionError e = reconstructionError(tinyNearPlane(), "conventional");
     EXPECT_GT(e.mean, 1e-2);
+}
+
+// gbuffer.depth_format (issue 23) at near 1e-2, far 1e5 (ratio 1e7), the
+// floor out to 100 units: 24-bit fixed-point depth with the conventional
+// mapping has steps of 2^-24 in 1 - near/z, a relative step of z / near *
+// 6e-8 = 6e-4 at z = 100: z-fighting level (two surfaces 0.06 apart there
+// share a depth value). Float depth reversed keeps about 1e-7 everywhere.
+TEST(PositionReconstruction, Unorm24ConventionalZFightsWhereFloat32ReversedDoesNot) {
+    PlaneCase c = tinyNearPlane();
+    c.camera.nearPlane = 1e-2f;
+    c.camera.farPlane = 1e5f;
+    const ReconstructionError floatReversed = reconstructionError(c, "reversed", "float32");
+    const ReconstructionError unormConventional = reconstructionError(c, "conventional", "unorm24");
+    const ReconstructionError unormReversed = reconstructionError(c, "reversed", "unorm24");
+    RecordProperty("float32_reversed_worst", std::to_string(floatReversed.worst));
+    RecordProperty("unorm24_conventional_worst", std::to_string(unormConventional.worst));
+    EXPECT_LT(floatReversed.worst, 1e-5);
+    EXPECT_GT(unormConventional.worst, 1e-4);
+    EXPECT_GT(unormConventional.worst, 100.0 * floatReversed.worst);
+    // Reversed mapping into fixed point gains nothing (its precision needs float's exponent).
+    EXPECT_GT(unormReversed.worst, 10.0 * floatReversed.worst);
 }

@@ -290,6 +290,20 @@ TEST(ReferenceModel, HonouredKnobsChangeTheKeyIgnoredOnesDoNot) {
     };
     const std::string base = keyWith({});
     EXPECT_EQ(base, keyWith({"lighting.strategy=tiled", "shadows.map_size=256", "ssao.samples=4"}));
+    // The G-buffer's storage (issue 23): the reference has exact geometry and
+    // an unquantised material, so these change no reference and are ignored.
+    EXPECT_EQ(base, keyWith({"gbuffer.normal_encoding=oct8", "gbuffer.depth_format=unorm24", "gbuffer.material_format=srgb8"}));
+    {
+        KnobRegistry k = RunConfig::declaredKnobs();
+        RunConfig r;
+        r.sets = {"gbuffer.normal_encoding=oct16", "gbuffer.depth_format=unorm24"};
+        r.applyKnobs(k, s);
+        const reference::KnobReport rep = reference::reportKnobs(k, reference::ReferenceModel::fromKnobs(k, s));
+        EXPECT_EQ(rep.ignoredChanged,
+                  (std::vector<std::string>{"gbuffer.normal_encoding=oct16", "gbuffer.depth_format=unorm24"}));
+        for (const char* name : {"gbuffer.normal_encoding", "gbuffer.depth_format", "gbuffer.material_format"})
+            EXPECT_TRUE(k.spec(*k.find(name)).tradeoff) << name << " is not marked speed/quality";
+    }
     EXPECT_NE(base, keyWith({"ssao.intensity=2"}));
     EXPECT_NE(base, keyWith({"shadows.enabled=false"}));
     EXPECT_NE(base, keyWith({"lighting.attenuation=windowed"}));
