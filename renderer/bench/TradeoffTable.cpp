@@ -1,0 +1,287 @@
+#include "renderer/bench/TradeoffTable.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <tuple>
+
+#include "renderer/Error.h"
+#include "renderer/bench/BenchResults.h"
+#include "renderer/bench/CsvLine.h"
+#include "renderer/bench/ParetoFront.h"
+
+namespace dw {
+
+namespace {
+
+const char* const kMiddle[] = {"metric",  "buffer",       "error",           "error_lo",       "error_hi",
+                               "frames",  "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"};
+const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim"};
+const std::string kPassPrefix = "gpu_ms.";
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The shortest text that reads back to the same double; "" for NaN.
+std::string number(double v) {
+    if (std::isnan(v)) return "";
+    char text[64];
+    auto [end, ec] = std::to_chars(text, text + sizeof(text), v);
+    return ec == std::errc() ? std::string(text, end) : std::string();
+}
+
+bool isWholeNumber(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Cameras in order: numbers by value, then other names, "all" last.
+bool cameraBefore(const std::string& a, const std::string& b) {
+    auto rank = [](const std::string& c) { return c == TradeoffTable::kAllCameras ? 2 : isWholeNumber(c) ? 0 : 1; };
+    const int ra = rank(a), rb = rank(b);
+    if (ra != rb) return ra < rb;
+    if (ra == 0 && a.size() != b.size()) return a.size() < b.size();  // no leading zeros are written
+    return a < b;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names) s += (s.empty() ? "" : ",") + csvField(n);
+    return s;
+}
+
+}  // namespace
+
+std::string TradeoffTable::axisValue(const TradeoffRow& row, const std::string& axis) const {
+    for (size_t i = 0; i < axes.size() && i < row.axisValues.size(); ++i)
+        if (axes[i] == axis) return row.axisValues[i];
+    return "";
+}
+
+double TradeoffTable::passGpuMs(const TradeoffRow& row, const std::string& pass) const {
+    for (size_t i = 0; i < passes.size() && i < row.passGpuMs.size(); ++i)
+        if (passes[i] == pass) return row.passGpuMs[i];
+    return kNaN;
+}
+
+bool TradeoffTable::lowerIsBetter(const std::string& metric) { return metric != "psnr" && metric != "ssim"; }
+
+void TradeoffTable::markParetoFront() {
+    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
+    std::map<std::tuple<std::string, std::string, std::string>, std::vector<size_t>> groups;
+    for (size_t i = 0; i < rows.size(); ++i) groups[{rows[i].camera, rows[i].metric, rows[i].buffer}].push_back(i);
+    for (const auto& [key, members] : groups) {
+        const bool lower = lowerIsBetter(std::get<1>(key));
+        std::vector<ParetoPoint> points;
+        points.reserve(members.size());
+        for (size_t i : members) points.push_back({rows[i].frameGpuMs, lower ? rows[i].error : -rows[i].error});
+        const ParetoFront front(points);
+        for (size_t k = 0; k < members.size(); ++k) rows[members[k]].pareto = front.contains(k);
+    }
+}
+
+std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& axes,
+                                                const std::vector<std::string>& passes) {
+    std::vector<std::string> c = {"point"};
+    c.insert(c.end(), axes.begin(), axes.end());
+    c.push_back("camera");
+    c.insert(c.end(), std::begin(kMiddle), std::end(kMiddle));
+    for (const auto& p : passes) c.push_back(kPassPrefix + p);
+    c.push_back("pareto");
+    return c;
+}
+
+std::vector<std::string> TradeoffTable::columns() const { return columns(axes, passes); }
+
+std::string TradeoffTable::csv() const {
+    std::ostringstream out;
+    out << joined(columns()) << "\n";
+    for (const auto& r : rows) {
+        if (r.axisValues.size() != axes.size())
+            throw Error("point " + std::to_string(r.point) + " has " + std::to_string(r.axisValues.size()) +
+                        " axis values for " + std::to_string(axes.size()) + " axes");
+        out << r.point;
+        for (const auto& v : r.axisValues) out << "," << csvField(v);
+        out << "," << csvField(r.camera) << "," << csvField(r.metric) << "," << csvField(r.buffer) << ","
+            << number(r.error) << "," << number(r.errorLo) << "," << number(r.errorHi) << "," << r.frames << ","
+            << number(r.frameGpuMs) << "," << number(r.frameGpuMsLo) << "," << number(r.frameGpuMsHi);
+        for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passGpuMs.size() ? r.passGpuMs[p] : kNaN);
+        out << "," << (r.pareto ? 1 : 0) << "\n";
+    }
+    return out.str();
+}
+
+TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string& path) {
+    std::istringstream in(text);
+    std::string line;
+    auto at = [&](int lineNo, size_t column, const std::string& what) -> FileError {
+        return FileError(path, "line " + std::to_string(lineNo) + ", column " + std::to_string(column + 1) + ": " + what);
+    };
+    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));
+    if (!std::getline(in, line) || line.empty() || line == "\r")
+        throw FileError(path, "line 1: empty (expected the tradeoff CSV header " + expected + ")");
+    const std::vector<std::string> header = splitCsvLine(line);
+    for (size_t i = 0; i < header.size(); ++i) {
+        if (header[i].empty()) throw at(1, i, "a column without a name");
+        for (size_t j = 0; j < i; ++j)
+            if (header[j] == header[i])
+                throw at(1, i, "the column '" + header[i] + "' is there twice (also column " + std::to_string(j + 1) + ")");
+    }
+    if (header[0] != "point")
+        throw at(1, 0, "expected 'point', got '" + header[0] + "' (not a tradeoff CSV; expected " + expected + ")");
+    const auto cameraIt = std::find(header.begin(), header.end(), "camera");
+    if (cameraIt == header.end()) throw at(1, header.size() - 1, "no 'camera' column (expected " + expected + ")");
+    TradeoffTable t;
+    const size_t cameraCol = static_cast<size_t>(cameraIt - header.begin());
+    t.axes.assign(header.begin() + 1, cameraIt);
+    size_t col = cameraCol + 1;
+    for (const char* name : kMiddle) {
+        if (col >= header.size()) throw at(1, col, "expected the column '" + std::string(name) + "', the line ends");
+        if (header[col] != name) throw at(1, col, "expected the column '" + std::string(name) + "', got '" + header[col] + "'");
+        ++col;
+    }
+    if (header.back() != "pareto" || header.size() <= col)
+        throw at(1, header.size() - 1, "expected 'pareto' as the last column, got '" + header.back() + "'");
+    for (; col + 1 < header.size(); ++col) {
+        if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
+            throw at(1, col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
+        t.passes.push_back(header[col].substr(kPassPrefix.size()));
+    }
+    const size_t middle = cameraCol + 1;                       // "metric"
+    const size_t passStart = middle + std::size(kMiddle);      // the first gpu_ms.<pass>
+
+    std::map<int, std::vector<std::string>> pointAxes;         // point -> its axis values and where first seen
+    std::map<int, int> pointLine;
+    std::map<std::tuple<int, std::string, std::string, std::string>, int> seen;  // row key -> line
+    // Every line tradeoff writes ends in a newline: a last line without one was cut.
+    const bool complete = text.back() == '\n';
+    int lineNo = 1;
+    while (std::getline(in, line)) {
+        ++lineNo;
+        if (line.empty() || line == "\r") continue;
+        if (!complete && in.peek() == std::char_traits<char>::eof())
+            throw FileError(path, "line " + std::to_string(lineNo) + ": the last line has no end (is the file cut short?)");
+        const std::vector<std::string> f = splitCsvLine(line);
+        if (f.size() != header.size())
+            throw at(lineNo, std::min(f.size(), header.size()),
+                     "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
+        auto whole = [&](size_t i) {
+            int v = 0;
+            auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+            if (f[i].empty() || ec != std::errc() || p != f[i].data() + f[i].size() || v < 0)
+                throw at(lineNo, i, header[i] + ": expected a whole number, at least 0, got '" + f[i] + "'");
+            return v;
+        };
+        auto real = [&](size_t i, bool time) {
+            if (f[i].empty()) return kNaN;
+            double v = 0.0;
+            auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+            if (ec != std::errc() || p != f[i].data() + f[i].size() || std::isnan(v))
+                throw at(lineNo, i, header[i] + ": expected a number or nothing, got '" + f[i] + "'");
+            if (time && !(std::isfinite(v) && v >= 0.0))
+                throw at(lineNo, i, header[i] + ": expected milliseconds (a finite number, at least 0), got '" + f[i] + "'");
+            return v;
+        };
+        auto named = [&](size_t i) {
+            if (f[i].empty()) throw at(lineNo, i, header[i] + ": empty");
+            return f[i];
+        };
+        TradeoffRow r;
+        r.point = whole(0);
+        r.axisValues.assign(f.begin() + 1, f.begin() + static_cast<std::ptrdiff_t>(cameraCol));
+        for (size_t a = 0; a < r.axisValues.size(); ++a)
+            if (r.axisValues[a].empty()) throw at(lineNo, a + 1, header[a + 1] + ": empty");
+        r.camera = named(cameraCol);
+        r.metric = named(middle);
+        if (std::find(std::begin(kMetrics), std::end(kMetrics), r.metric) == std::end(kMetrics))
+            throw at(lineNo, middle, "metric: expected flip, rms, psnr or ssim, got '" + r.metric + "'");
+        r.buffer = named(middle + 1);
+        r.error = real(middle + 2, false);
+        r.errorLo = real(middle + 3, false);
+        r.errorHi = real(middle + 4, false);
+        r.frames = whole(middle + 5);
+        r.frameGpuMs = real(middle + 6, true);
+        r.frameGpuMsLo = real(middle + 7, true);
+        r.frameGpuMsHi = real(middle + 8, true);
+        for (size_t p = 0; p < t.passes.size(); ++p) r.passGpuMs.push_back(real(passStart + p, true));
+        const size_t last = header.size() - 1;
+        if (f[last] != "0" && f[last] != "1") throw at(lineNo, last, "pareto: expected 0 or 1, got '" + f[last] + "'");
+        r.pareto = f[last] == "1";
+
+        auto [it, first] = pointAxes.emplace(r.point, r.axisValues);
+        if (first) {
+            pointLine[r.point] = lineNo;
+        } else if (it->second != r.axisValues) {
+            size_t a = 0;
+            while (it->second[a] == r.axisValues[a]) ++a;
+            throw at(lineNo, a + 1, "point " + std::to_string(r.point) + " has " + header[a + 1] + " '" + r.axisValues[a] +
+                                        "' here and '" + it->second[a] + "' on line " + std::to_string(pointLine[r.point]));
+        }
+        auto [s, fresh] = seen.emplace(std::make_tuple(r.point, r.camera, r.metric, r.buffer), lineNo);
+        if (!fresh)
+            throw at(lineNo, 0, "point " + std::to_string(r.point) + ", camera " + r.camera + ", " + r.metric + " on " +
+                                    r.buffer + " is there twice (also line " + std::to_string(s->second) +
+                                    "; a file joined twice?)");
+        t.rows.push_back(std::move(r));
+    }
+    return t;
+}
+
+TradeoffTable TradeoffTable::readCsv(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a folder, not a tradeoff CSV");
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw FileError(path, "cannot open the tradeoff CSV");
+    std::stringstream text;
+    text << f.rdbuf();
+    return parseCsv(text.str(), path);
+}
+
+void TradeoffTable::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "tradeoff CSV"); }
+
+TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names) {
+    if (parts.empty()) throw Error("nothing to merge");
+    auto nameOf = [&](size_t p) { return p < names.size() ? names[p] : "part " + std::to_string(p + 1); };
+    TradeoffTable all;
+    all.axes = parts.front().axes;
+    for (const auto& part : parts)
+        for (const auto& pass : part.passes)
+            if (std::find(all.passes.begin(), all.passes.end(), pass) == all.passes.end()) all.passes.push_back(pass);
+    std::map<std::tuple<int, std::string, std::string, std::string>, size_t> owner;
+    std::map<int, std::pair<std::vector<std::string>, size_t>> pointAxes;
+    for (size_t p = 0; p < parts.size(); ++p) {
+        const TradeoffTable& part = parts[p];
+        if (part.axes != all.axes)
+            throw Error(nameOf(p) + " sweeps other axes (" + joined(part.axes) + ") than " + nameOf(0) + " (" +
+                        joined(all.axes) + ")");
+        for (const auto& r : part.rows) {
+            auto [o, fresh] = owner.emplace(std::make_tuple(r.point, r.camera, r.metric, r.buffer), p);
+            if (!fresh)
+                throw Error("point " + std::to_string(r.point) + ", camera " + r.camera + " is in both " + nameOf(o->second) +
+                            " and " + nameOf(p) + (o->second == p ? " twice" : "") +
+                            " (shards of one sweep never share a point)");
+            auto [a, first] = pointAxes.emplace(r.point, std::make_pair(r.axisValues, p));
+            if (!first && a->second.first != r.axisValues)
+                throw Error("point " + std::to_string(r.point) + " is a different configuration in " +
+                            nameOf(a->second.second) + " and " + nameOf(p) + " (not shards of one sweep)");
+            TradeoffRow row = r;
+            row.passGpuMs.assign(all.passes.size(), kNaN);
+            for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k)
+                row.passGpuMs[static_cast<size_t>(
+                    std::find(all.passes.begin(), all.passes.end(), part.passes[k]) - all.passes.begin())] = r.passGpuMs[k];
+            all.rows.push_back(std::move(row));
+        }
+    }
+    std::stable_sort(all.rows.begin(), all.rows.end(), [](const TradeoffRow& a, const TradeoffRow& b) {
+        if (a.point != b.point) return a.point < b.point;
+        if (a.camera != b.camera) return cameraBefore(a.camera, b.camera);
+        return false;
+    });
+    all.markParetoFront();
+    return all;
+}
+
+}  // namespace dw

@@ -1,0 +1,87 @@
+#pragma once
+// What a `tradeoff` run found, in the form it is written and read back (the
+// tradeoff CSV): one row per point of the sweep and camera, with what the
+// point costs (GPU milliseconds, per frame and per pass, with the frame's
+// bootstrap interval) and how far its image is from the one it is measured
+// against (the error and its interval), and whether it is on the Pareto front.
+//
+// Columns, in this order:
+//   point                      the point's number in the sweep (0, 1, ...)
+//   <axis>...                  one per swept axis, under its own name: a knob
+//                              ("ssao.samples"), "preset", "camera.near", "camera.far"
+//   camera                     the camera: "0", "1", ... or "all" (the row over
+//                              every camera of that point)
+//   metric                     flip | rms | psnr | ssim
+//   buffer                     lbuffer | final | ao | shadow (as asked for)
+//   error,error_lo,error_hi    the metric and its interval (empty: not measured)
+//   frames                     counted frames behind the times
+//   frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi
+//                              the median GPU frame time and its interval
+//   gpu_ms.<pass>...           each pass's median GPU time (empty: the pass did
+//                              not run at that point)
+//   pareto                     1 on the front, else 0
+// Numbers are written in the shortest form that reads back to the same double,
+// so a table read back has the same front. Needs no GL.
+#include <string>
+#include <vector>
+
+namespace dw {
+
+struct TradeoffRow {
+    int point = 0;
+    std::vector<std::string> axisValues;  // one per TradeoffTable::axes, as --set / --sweep take them
+    std::string camera;
+    std::string metric;
+    std::string buffer;
+    double error = 0.0, errorLo = 0.0, errorHi = 0.0;  // NaN: not measured
+    int frames = 0;
+    double frameGpuMs = 0.0, frameGpuMsLo = 0.0, frameGpuMsHi = 0.0;  // NaN: not measured
+    std::vector<double> passGpuMs;  // one per TradeoffTable::passes; NaN: not run there
+    bool pareto = false;
+};
+
+class TradeoffTable {
+public:
+    static constexpr const char* kAllCameras = "all";
+
+    std::vector<std::string> axes;    // the swept axes' names, in column order
+    std::vector<std::string> passes;  // the passes of the gpu_ms.<pass> columns, in column order
+    std::vector<TradeoffRow> rows;
+
+    // The value of `axis` in a row ("" when the table has no such axis).
+    std::string axisValue(const TradeoffRow& row, const std::string& axis) const;
+    // A pass's median GPU ms in a row (NaN when not there).
+    double passGpuMs(const TradeoffRow& row, const std::string& pass) const;
+
+    // Whether a smaller value of `metric` is the better one: true for flip
+    // and rms (errors), false for psnr and ssim (similarities).
+    static bool lowerIsBetter(const std::string& metric);
+
+    // Sets every row's `pareto`: the front of time (frame_gpu_ms) against
+    // error, computed (ParetoFront) separately within each group of rows
+    // with the same camera, metric and buffer; the error is minimised, or
+    // maximised for psnr and ssim. Throws dw::Error when there are no rows
+    // ("no points to compare: the sweep is empty").
+    void markParetoFront();
+
+    std::vector<std::string> columns() const;
+    static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes);
+    std::string csv() const;
+    // Reads csv() back. Throws FileError naming the file, the line and the
+    // column of anything wrong: not this header, a column twice, a field that
+    // is not a number where one belongs, a row of the wrong length, a point
+    // with other axis values than its earlier rows, a row twice.
+    static TradeoffTable parseCsv(const std::string& text, const std::string& path);
+    static TradeoffTable readCsv(const std::string& path);
+    // Writes csv() whole or not at all. Throws FileError.
+    void writeCsv(const std::string& path) const;
+
+    // Joins the tables of shards of one sweep (`names` name them in errors):
+    // the same axes, no row (point, camera, metric, buffer) in two parts;
+    // the passes are the union in order of first appearance. Rows sorted by
+    // point, then camera (numbers in order, then "all"); the front recomputed.
+    // Throws dw::Error naming the clash.
+    static TradeoffTable merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names);
+};
+
+}  // namespace dw

@@ -1,0 +1,315 @@
+// The tradeoff CSV (writer, reader, merge) and the Pareto front, without GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "renderer/Error.h"
+#include "renderer/bench/ParetoFront.h"
+#include "renderer/bench/TradeoffTable.h"
+
+using namespace dw;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<size_t> frontOf(const std::vector<ParetoPoint>& points) { return ParetoFront(points).members(); }
+
+// The definition, point against point.
+std::vector<bool> bruteForce(const std::vector<ParetoPoint>& p) {
+    std::vector<bool> on(p.size());
+    for (size_t i = 0; i < p.size(); ++i) {
+        on[i] = std::isfinite(p[i].cost) && std::isfinite(p[i].error);
+        for (size_t j = 0; j < p.size() && on[i]; ++j) {
+            if (!std::isfinite(p[j].cost) || !std::isfinite(p[j].error)) continue;
+            const bool noWorse = p[j].cost <= p[i].cost && p[j].error <= p[i].error;
+            const bool better = p[j].cost < p[i].cost || p[j].error < p[i].error;
+            if (noWorse && better) on[i] = false;
+        }
+    }
+    return on;
+}
+
+TradeoffRow row(int point, std::vector<std::string> axisValues, const std::string& camera, double error, double ms) {
+    TradeoffRow r;
+    r.point = point;
+    r.axisValues = std::move(axisValues);
+    r.camera = camera;
+    r.metric = "rms";
+    r.buffer = "ao";
+    r.error = error;
+    r.errorLo = error * 0.9;
+    r.errorHi = error * 1.1;
+    r.frames = 8;
+    r.frameGpuMs = ms;
+    r.frameGpuMsLo = ms * 0.95;
+    r.frameGpuMsHi = ms * 1.05;
+    r.passGpuMs = {ms * 0.25, ms * 0.5};
+    return r;
+}
+
+// Samples x resolution on two cameras and their "all" rows.
+TradeoffTable study() {
+    TradeoffTable t;
+    t.axes = {"ssao.samples", "ssao.resolution"};
+    t.passes = {"geometry", "ssao"};
+    int point = 0;
+    for (int samples : {8, 16, 32})
+        for (const char* res : {"full", "half"}) {
+            const double ms = samples * (res[0] == 'f' ? 1.0 : 0.3);
+            const double err = (res[0] == 'f' ? 1.0 : 1.6) / std::sqrt(samples);
+            for (const char* cam : {"0", "1", "all"})
+                t.rows.push_back(row(point, {std::to_string(samples), res}, cam, err * (cam[0] == '1' ? 1.2 : 1.0), ms));
+            ++point;
+        }
+    return t;
+}
+
+std::string messageOf(const std::string& csv) {
+    try {
+        TradeoffTable::parseCsv(csv, "t.csv");
+    } catch (const FileError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+const std::string kHeader =
+    "point,ssao.samples,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,"
+    "frame_gpu_ms_hi,gpu_ms.ssao,pareto\n";
+
+}  // namespace
+
+TEST(ParetoFront, EmptySinglePointTiesAndDuplicates) {
+    try {
+        ParetoFront front({});
+        FAIL() << "an empty sweep has no front";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "no points to compare: the sweep is empty");
+    }
+    EXPECT_EQ(frontOf({{3.0, 0.5}}), (std::vector<size_t>{0}));
+
+    // Same cost: only the lower error. Same error: only the lower cost.
+    EXPECT_EQ(frontOf({{2.0, 0.3}, {2.0, 0.1}}), (std::vector<size_t>{1}));
+    EXPECT_EQ(frontOf({{5.0, 0.1}, {2.0, 0.1}}), (std::vector<size_t>{1}));
+    // Exact duplicates dominate neither the other: both on the front, by index.
+    EXPECT_EQ(frontOf({{4.0, 0.2}, {1.0, 0.9}, {4.0, 0.2}, {4.0, 0.2}}), (std::vector<size_t>{1, 0, 2, 3}));
+    // A duplicate of a dominated point stays off.
+    EXPECT_EQ(frontOf({{1.0, 0.1}, {4.0, 0.2}, {4.0, 0.2}}), (std::vector<size_t>{0}));
+    // A staircase, given out of order; members read left to right.
+    const ParetoFront stairs({{3.0, 0.2}, {1.0, 0.8}, {2.0, 0.5}, {2.5, 0.6}, {6.0, 0.05}, {6.0, 0.2}});
+    EXPECT_EQ(stairs.members(), (std::vector<size_t>{1, 2, 0, 4}));
+    EXPECT_TRUE(stairs.contains(4));
+    EXPECT_FALSE(stairs.contains(3));
+    EXPECT_FALSE(stairs.contains(5));
+    EXPECT_FALSE(stairs.contains(99));
+    // A point without a time or an error is off the front and dominates nothing.
+    EXPECT_EQ(frontOf({{kNaN, 0.0}, {1.0, 0.5}, {0.5, kNaN}, {2.0, 0.4}}), (std::vector<size_t>{1, 3}));
+    EXPECT_EQ(ParetoFront({{kNaN, kNaN}}).size(), 0u);
+    // Negative errors (a similarity flipped to be minimised) work as any other.
+    EXPECT_EQ(frontOf({{1.0, -30.0}, {2.0, -40.0}, {3.0, -35.0}}), (std::vector<size_t>{0, 1}));
+}
+
+TEST(ParetoFront, MatchesTheDefinitionOnRandomGridsWithManyTies) {
+    std::mt19937 rng(7);
+    for (int trial = 0; trial < 300; ++trial) {
+        std::uniform_int_distribution<int> n(1, 40), v(0, 6);
+        std::vector<ParetoPoint> p(static_cast<size_t>(n(rng)));
+        for (auto& q : p) q = {double(v(rng)), double(v(rng)) * 0.125};
+        const std::vector<bool> expected = bruteForce(p);
+        const ParetoFront front(p);
+        for (size_t i = 0; i < p.size(); ++i) ASSERT_EQ(front.contains(i), expected[i]) << "trial " << trial << " point " << i;
+        for (size_t k = 1; k < front.members().size(); ++k) {
+            const ParetoPoint &a = p[front.members()[k - 1]], &b = p[front.members()[k]];
+            ASSERT_TRUE(a.cost < b.cost || (a.cost == b.cost && a.error == b.error)) << "left to right";
+        }
+    }
+}
+
+TEST(TradeoffTable, HeaderAndFrontPerCamera) {
+    TradeoffTable t = study();
+    EXPECT_EQ(t.csv().substr(0, t.csv().find('\n')),
+              "point,ssao.samples,ssao.resolution,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,"
+              "frame_gpu_ms_lo,frame_gpu_ms_hi,gpu_ms.geometry,gpu_ms.ssao,pareto");
+    t.markParetoFront();
+    // Camera 0, (ms, error) by cost: 8 half (2.4, .566), 16 half (4.8, .4), 8 full (8, .354),
+    // 32 half (9.6, .283), 16 full (16, .25), 32 full (32, .177): each lowers the error, all on the front.
+    std::vector<int> onFront;
+    for (const auto& r : t.rows)
+        if (r.camera == "0" && r.pareto) onFront.push_back(r.point);
+    EXPECT_EQ(onFront, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    // Make full resolution at 16 samples worse than half at 32 on camera 1 only.
+    for (auto& r : t.rows)
+        if (r.camera == "1" && r.point == 2) r.error = 0.5;
+    t.markParetoFront();
+    for (const auto& r : t.rows) {
+        if (r.point == 2) {
+            EXPECT_EQ(r.pareto, r.camera != "1") << r.camera;
+        }
+    }
+    EXPECT_EQ(t.axisValue(t.rows[3], "ssao.samples"), "8");
+    EXPECT_EQ(t.axisValue(t.rows[3], "ssao.resolution"), "half");
+    EXPECT_EQ(t.axisValue(t.rows[3], "preset"), "");
+    EXPECT_DOUBLE_EQ(t.passGpuMs(t.rows[3], "ssao"), 1.2);
+    EXPECT_TRUE(std::isnan(t.passGpuMs(t.rows[3], "bloom")));
+
+    // PSNR and SSIM: larger is better.
+    TradeoffTable s;
+    s.axes = {"preset"};
+    for (int i = 0; i < 3; ++i) s.rows.push_back(row(i, {"SSAO" + std::to_string(i + 1)}, "0", 0.0, 1.0 + i));
+    s.rows[0].metric = s.rows[1].metric = s.rows[2].metric = "psnr";
+    s.rows[0].error = 30.0;
+    s.rows[1].error = 28.0;
+    s.rows[2].error = 40.0;
+    s.markParetoFront();
+    EXPECT_TRUE(s.rows[0].pareto);
+    EXPECT_FALSE(s.rows[1].pareto);
+    EXPECT_TRUE(s.rows[2].pareto);
+    EXPECT_FALSE(TradeoffTable::lowerIsBetter("ssim"));
+    EXPECT_TRUE(TradeoffTable::lowerIsBetter("flip"));
+
+    TradeoffTable empty;
+    empty.axes = {"ssao.samples"};
+    try {
+        empty.markParetoFront();
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "no points to compare: the sweep is empty");
+    }
+}
+
+TEST(TradeoffTable, ReadsBackExactly) {
+    TradeoffTable t = study();
+    t.axes[1] = "camera.near";
+    for (auto& r : t.rows)
+        if (r.point == 0) r.axisValues[1] = "a,\"quoted\" value";
+    t.rows[1].error = t.rows[1].errorLo = t.rows[1].errorHi = kNaN;  // not measured
+    t.rows[2].passGpuMs[1] = kNaN;                                 // the pass did not run
+    t.rows[3].frameGpuMs = 0.1 + 0.2;                              // needs 17 digits
+    t.rows[4].error = 1e-9;
+    t.markParetoFront();
+    const std::string text = t.csv();
+    const TradeoffTable back = TradeoffTable::parseCsv(text, "t.csv");
+    EXPECT_EQ(back.axes, t.axes);
+    EXPECT_EQ(back.passes, t.passes);
+    ASSERT_EQ(back.rows.size(), t.rows.size());
+    EXPECT_EQ(back.rows[0].axisValues[1], "a,\"quoted\" value");
+    EXPECT_TRUE(std::isnan(back.rows[1].error));
+    EXPECT_TRUE(std::isnan(back.rows[2].passGpuMs[1]));
+    EXPECT_EQ(back.rows[3].frameGpuMs, 0.1 + 0.2);
+    EXPECT_EQ(back.rows[4].error, 1e-9);
+    EXPECT_EQ(back.csv(), text);
+    TradeoffTable again = back;
+    again.markParetoFront();
+    for (size_t i = 0; i < t.rows.size(); ++i) EXPECT_EQ(again.rows[i].pareto, t.rows[i].pareto) << i;
+    // A header alone: an empty table, whose front is the clear error.
+    EXPECT_EQ(TradeoffTable::parseCsv(kHeader, "t.csv").rows.size(), 0u);
+}
+
+TEST(TradeoffTable, BadInputNamesFileLineAndColumn) {
+    const std::string ok = "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n";
+    EXPECT_EQ(messageOf(kHeader + ok), "(no error)");
+    EXPECT_EQ(messageOf(""), "t.csv: line 1: empty (expected the tradeoff CSV header point,<axis>...,camera,metric,"
+                             "buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi,"
+                             "gpu_ms.<pass>...,pareto)");
+    EXPECT_EQ(messageOf("config,size\n").substr(0, 44), "t.csv: line 1, column 1: expected 'point', g");
+    EXPECT_EQ(messageOf("point,a,a,camera\n"), "t.csv: line 1, column 3: the column 'a' is there twice (also column 2)");
+    EXPECT_EQ(messageOf("point,a,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,"
+                        "frame_gpu_ms_hi,lights,pareto\n"),
+              "t.csv: line 1, column 13: expected a pass's column gpu_ms.<pass> or 'pareto', got 'lights'");
+    EXPECT_EQ(messageOf("point,a,camera,metric,buffer,error,frames\n"),
+              "t.csv: line 1, column 7: expected the column 'error_lo', got 'frames'");
+    EXPECT_EQ(messageOf(kHeader + ok + "1,16,0,rms,ao,x,0.4,0.6,8,2.5,2.4,2.6,1.25,0\n"),
+              "t.csv: line 3, column 6: error: expected a number or nothing, got 'x'");
+    EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,-2.5,2.4,2.6,1.25,1\n"),
+              "t.csv: line 2, column 10: frame_gpu_ms: expected milliseconds (a finite number, at least 0), got '-2.5'");
+    EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25\n"),
+              "t.csv: line 2, column 14: expected 14 fields, got 13");
+    EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,yes\n"),
+              "t.csv: line 2, column 14: pareto: expected 0 or 1, got 'yes'");
+    EXPECT_EQ(messageOf(kHeader + "0,8,0,mse,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
+              "t.csv: line 2, column 4: metric: expected flip, rms, psnr or ssim, got 'mse'");
+    EXPECT_EQ(messageOf(kHeader + "-1,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
+              "t.csv: line 2, column 1: point: expected a whole number, at least 0, got '-1'");
+    EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n0,16,1,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
+              "t.csv: line 3, column 2: point 0 has ssao.samples '16' here and '8' on line 2");
+    EXPECT_EQ(messageOf(kHeader + ok + ok),
+              "t.csv: line 3, column 1: point 0, camera 0, rms on ao is there twice (also line 2; a file joined twice?)");
+    EXPECT_EQ(messageOf(kHeader + ok.substr(0, ok.size() - 5)),
+              "t.csv: line 2: the last line has no end (is the file cut short?)");
+    EXPECT_THROW(TradeoffTable::readCsv("/nonexistent/tradeoff.csv"), FileError);
+}
+
+TEST(TradeoffTable, ShardsMergeToOneTable) {
+    TradeoffTable whole = study();
+    whole.markParetoFront();
+    // Two shards: even and odd points, the second without the geometry pass's column.
+    TradeoffTable a, b;
+    a.axes = b.axes = whole.axes;
+    a.passes = whole.passes;
+    b.passes = {"ssao"};
+    for (const auto& r : whole.rows) {
+        TradeoffRow copy = r;
+        copy.pareto = false;
+        if (r.point % 2 == 0) {
+            a.rows.push_back(copy);
+        } else {
+            copy.passGpuMs = {r.passGpuMs[1]};
+            b.rows.insert(b.rows.begin(), copy);  // any order
+        }
+    }
+    const TradeoffTable merged = TradeoffTable::merge({b, a}, {"b.csv", "a.csv"});
+    EXPECT_EQ(merged.passes, (std::vector<std::string>{"ssao", "geometry"}));
+    ASSERT_EQ(merged.rows.size(), whole.rows.size());
+    for (size_t i = 0; i < whole.rows.size(); ++i) {
+        EXPECT_EQ(merged.rows[i].point, whole.rows[i].point);
+        EXPECT_EQ(merged.rows[i].camera, whole.rows[i].camera);
+        EXPECT_EQ(merged.rows[i].pareto, whole.rows[i].pareto);
+        EXPECT_EQ(merged.passGpuMs(merged.rows[i], "ssao"), whole.passGpuMs(whole.rows[i], "ssao"));
+        EXPECT_TRUE(merged.rows[i].point % 2 == 1 ? std::isnan(merged.passGpuMs(merged.rows[i], "geometry"))
+                                                  : merged.passGpuMs(merged.rows[i], "geometry") ==
+                                                        whole.passGpuMs(whole.rows[i], "geometry"));
+    }
+    // Cameras in order: 0, 1, ..., 10, then "all".
+    TradeoffTable c;
+    c.axes = {"k"};
+    for (const char* cam : {"all", "10", "2", "0"}) c.rows.push_back(row(0, {"v"}, cam, 0.1, 1.0));
+    const TradeoffTable ordered = TradeoffTable::merge({c}, {"c.csv"});
+    EXPECT_EQ(ordered.rows[0].camera, "0");
+    EXPECT_EQ(ordered.rows[1].camera, "2");
+    EXPECT_EQ(ordered.rows[2].camera, "10");
+    EXPECT_EQ(ordered.rows[3].camera, "all");
+
+    try {
+        TradeoffTable::merge({a, a}, {"a.csv", "again.csv"});
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "point 0, camera 0 is in both a.csv and again.csv (shards of one sweep never share a point)");
+    }
+    TradeoffTable other = b;
+    other.axes = {"ssao.samples"};
+    for (auto& r : other.rows) r.axisValues.resize(1);
+    try {
+        TradeoffTable::merge({a, other}, {"a.csv", "o.csv"});
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "o.csv sweeps other axes (ssao.samples) than a.csv (ssao.samples,ssao.resolution)");
+    }
+    TradeoffTable moved = b;
+    moved.rows[0].point = 0;
+    moved.rows[0].camera = "7";
+    try {
+        TradeoffTable::merge({a, moved}, {"a.csv", "m.csv"});
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "point 0 is a different configuration in a.csv and m.csv (not shards of one sweep)");
+    }
+    try {
+        TradeoffTable::merge({TradeoffTable{}}, {"empty.csv"});
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "no points to compare: the sweep is empty");
+    }
+}
