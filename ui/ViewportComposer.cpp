@@ -1,0 +1,306 @@
+#include "ui/ViewportComposer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <type_traits>
+
+#include "renderer/inspect/OutputReadback.h"
+#include "renderer/io/ImageHistogram.h"
+#include "renderer/lighting/LightVolume.h"
+#include "renderer/scene/FlameParticles.h"
+
+namespace dw::ui {
+
+ViewportComposer::ViewportComposer(RenderSession& session) : session_(session) {
+    sideView_.setup(session.shaders());
+    forward_.setup(session.shaders());
+    overlay_.setup(session.shaders());
+    nearest_ = gl::Sampler::create(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "workbench pixel zoom");
+}
+
+void ViewportComposer::render(UiState& state) {
+    Pipeline& pipeline = session_.pipeline();
+    // The render size: the viewport panel's, times the resolution scale.
+    if (state.wantedSize.x > 0) {
+        const float scale = state.viewport.scale();
+        const glm::ivec2 target(std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
+                                std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale))));
+        if (target != state.renderSize) {
+            session_.resize(target.x, target.y);
+            state.renderSize = target;
+        }
+    }
+    state.animator.update(session_.mutableScene(), state.frame);
+    // A change being measured: this frame renders the knob values of its
+    // side (one measured frame a UI frame, so the window stays responsive).
+    bool measuring = false;
+    if (state.measure.active()) {
+        if (state.viewport.mode != DisplayMode::Deferred)
+            state.measure.cancel(session_.knobs(), "cancelled: a forward view runs no deferred pass");
+        else
+            measuring = state.measure.prepareFrame(session_.knobs());
+    }
+    // Render only when something the images depend on changed, unless
+    // timings are being captured (every frame then).
+    const std::string signature = frameSignature(state);
+    const bool changed = signature != lastSignature_;
+    const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed;
+    state.forceRender = false;
+    // The probe's values describe the image they were read from: another
+    // image (a scene opened, the camera moved) with the probe neither
+    // hovered nor pinned leaves nothing to show, not the old pixel's values.
+    if (changed && !state.probe.hovering && !state.probe.pinned) state.probe = ProbeState{};
+    if (needed) {
+        lastSignature_ = signature;
+        renderImages(state);
+        ++state.framesRendered;
+        if (measuring) state.measure.frameRendered(state.report.frameIndex);
+        // The first frame of another scene or render size starts the statistics over.
+        const std::string config = session_.scene().source + "|" + std::to_string(state.renderSize.x) + "x" +
+                                   std::to_string(state.renderSize.y);
+        if (config != lastConfig_) {
+            lastConfig_ = config;
+            state.configSince = state.report.frameIndex;
+        }
+        adjustAutoScale(state);
+    } else {
+        // Nothing new to render, but a histogram asked for since the last
+        // frame is taken from the frame on show, not left waiting for the next.
+        refreshHistograms(state);
+    }
+    // The timer results come back a few frames late; an idle window
+    // renders no later frame to pick them up, so poll here every UI frame
+    // (it never waits) until the latest frame's results are in.
+    pipeline.timer().collect(false);
+    if (state.measure.state() == ChangeMeasurement::State::Waiting) {
+        std::vector<std::string> order;
+        for (const auto& rec : state.report.passes) order.push_back(rec.name);
+        order.push_back(PassTimer::kFrameSeries);
+        state.measure.collect(pipeline.timer(), session_.knobs(), order);
+    }
+    state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active();
+    if (state.probe.hovering || state.probe.pinned) {
+        state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
+        probeLights(state);
+    }
+}
+
+// The lights whose volumes contain the probed surface point.
+void ViewportComposer::probeLights(UiState& state) {
+    ProbeState& p = state.probe;
+    p.lights.clear();
+    p.lightLines.clear();
+    p.directionalLights = 0;
+    if (!p.result.inside || p.result.surface.background) return;
+    const Scene& scene = session_.scene();
+    const double threshold = session_.knobs().value(*session_.knobs().find("lighting.threshold"));
+    const glm::vec3 at = p.result.surface.worldPosition;
+    p.lights = lightsCovering(scene.lights, at, threshold,
+                              static_cast<int>(session_.knobs().value(*session_.knobs().find("lighting.volume_subdivisions"))));
+    for (const Light& l : scene.lights) p.directionalLights += l.enabled && l.type == LightType::Directional;
+    for (int i : p.lights) {
+        const Light& l = scene.lights[static_cast<size_t>(i)];
+        char line[200];
+        std::snprintf(line, sizeof(line), "#%d %s (%s), %.3g from it, volume radius %.3g", i, l.name.c_str(), toString(l.type),
+                      static_cast<double>(glm::distance(l.position, at)), computeLightVolume(l, threshold).radius);
+        p.lightLines.push_back(line);
+    }
+}
+
+// Everything a frame's images depend on that the window can change, as bytes.
+std::string ViewportComposer::frameSignature(const UiState& state) const {
+    std::string s;
+    auto put = [&s](const auto& v) {
+        static_assert(std::is_arithmetic_v<std::decay_t<decltype(v)>>);
+        s.append(reinterpret_cast<const char*>(&v), sizeof(v));
+    };
+    auto vec = [&](const glm::vec3& v) { put(v.x), put(v.y), put(v.z); };
+    auto text = [&](const std::string& t) { put(t.size()), s.append(t); };
+    auto view = [&](const BufferViewSettings& b) {
+        put(static_cast<int>(b.mapping)), put(static_cast<int>(b.channel)), put(b.autoRange), put(b.rangeMin), put(b.rangeMax);
+        put(b.exposure), put(b.layer), put(b.sample);
+    };
+    const Camera& c = session_.camera();
+    vec(c.position), vec(c.target), vec(c.up), put(c.fovYDegrees), put(c.nearPlane), put(c.farPlane);
+    put(session_.knobs().generation());
+    const Scene& scene = session_.scene();
+    put(reinterpret_cast<std::uintptr_t>(&scene)), text(scene.source), vec(scene.ambient), vec(scene.background);
+    for (const Light& l : scene.lights) {
+        put(static_cast<int>(l.type)), vec(l.position), vec(l.direction), put(l.cutoffDegrees), put(l.exponent);
+        put(static_cast<int>(l.falloff)), put(l.innerConeDegrees);
+        vec(l.intensity), put(l.attenuation.constant), put(l.attenuation.linear), put(l.attenuation.quadratic);
+        put(l.castShadows), put(l.enabled);
+    }
+    text(state.viewport.output), put(static_cast<int>(state.viewport.mode)), view(state.viewport.settingsOr());
+    const OverlaySettings& o = state.viewport.overlay;
+    put(o.lightVolumes), put(static_cast<int>(state.viewport.volumes)), put(o.selectedLight), put(o.axes);
+    if (o.lightVolumes && state.viewport.volumes == VolumeFilter::AtProbe)
+        for (int i : state.probe.lights) put(i);
+    put(state.panels.sideView), text(state.side.output), view(state.side.settingsOr());
+    put(state.renderSize.x), put(state.renderSize.y), put(state.shaderGeneration);
+    return s;
+}
+
+// Auto resolution: a step towards the frame-time target every few frames
+// rendered, from the newest GPU frame times; frozen while timings are captured.
+void ViewportComposer::adjustAutoScale(UiState& state) {
+    ViewportView& v = state.viewport;
+    if (v.resolution != ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.holdView ||
+        state.framesRendered % 4 != 0)
+        return;
+    const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);
+    if (!total || total->samples.size() < 2) return;
+    std::vector<float> newest;
+    for (auto it = total->samples.rbegin(); it != total->samples.rend() && newest.size() < 3; ++it) newest.push_back(it->gpuMs);
+    v.autoScale = nextAutoScale(v.autoScale, computeStats(newest).median, v.frameTargetMs);
+}
+
+void ViewportComposer::renderImages(UiState& state) {
+    Pipeline& pipeline = session_.pipeline();
+
+    // The final image always; the viewed buffers when they can be produced.
+    FrameRequest request;
+    std::string viewportWhy, sideWhy;
+    const bool deferred = state.viewport.mode == DisplayMode::Deferred;
+    auto tryAdd = [&](const std::string& name, std::string& why) {
+        if (name == "final" || name.empty()) return;
+        FrameRequest probe{{"final", name}};
+        try {
+            for (const auto& r : pipeline.plan(probe))
+                if (r.name == pipeline.outputs().find(name)->pass && !r.ran) {
+                    why = name + " is not produced: pass '" + r.name + "' did not run (" + r.reason + ")";
+                    return;
+                }
+            request.outputs.push_back(name);
+        } catch (const std::exception& e) {
+            why = e.what();
+        }
+    };
+    if (deferred) tryAdd(state.viewport.output, viewportWhy);
+    if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
+    state.flameFrame = state.heldFlameFrame.value_or(pipeline.frameIndex());
+    animateFlameParticles(session_.mutableScene(), state.flameFrame);
+    // The forward preview modes run no deferred pass at all.
+    if (deferred) {
+        state.report = pipeline.render(session_.camera(), request);
+    } else {
+        pipeline.bindCamera(session_.camera());
+        state.report = {};
+    }
+
+    // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
+    const gl::Texture* base = nullptr;
+    const gl::Texture* depth = nullptr;
+    keepHistogram(state.viewportImage);
+    if (!deferred) {
+        const auto mode = state.viewport.mode == DisplayMode::Textured ? ForwardPreview::Mode::Textured
+                                                                          : ForwardPreview::Mode::Wireframe;
+        base = &forward_.render(pipeline.gpuScene(), pipeline.width(), pipeline.height(), mode,
+                                DepthConvention::fromUniform(pipeline.lastCamera().depth));
+        depth = &forward_.depth();
+    } else if (!viewportWhy.empty()) {
+        state.viewportImage.unavailable = viewportWhy;
+    } else {
+        const PublishedOutput* o = pipeline.outputs().find(state.viewport.output);
+        if (isDisplayReady(*o)) {
+            base = o->texture;
+        } else {
+            BufferViewSettings s = state.viewport.settingsOr();
+            s.nearPlane = session_.camera().nearPlane;
+            s.farPlane = session_.camera().farPlane;
+            s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
+            base = &session_.bufferView().render(*o, s);
+            if (BufferView::resolveAutoRange(o->decl.kind, s)) {
+                std::tie(state.viewportImage.autoLo, state.viewportImage.autoHi) = session_.bufferView().lastAutoRange();
+                state.viewportImage.haveAutoRange = true;
+            }
+        }
+        histogram(state.viewport, *o, state.viewportImage, state);
+        depth = pipeline.outputs().find("gbuffer.depth")->texture;
+    }
+    if (base) {
+        const OverlaySettings& ov = state.viewport.overlay;
+        if (ov.lightVolumes || ov.axes) {
+            OverlaySettings s = ov;
+            s.onlySelected = state.viewport.volumes == VolumeFilter::Selected;
+            s.onlySubset = state.viewport.volumes == VolumeFilter::AtProbe;
+            s.subset = state.probe.lights;
+            s.threshold = static_cast<float>(session_.knobs().value(*session_.knobs().find("lighting.threshold")));
+            s.sphereSubdivisions = static_cast<int>(session_.knobs().value(*session_.knobs().find("lighting.volume_subdivisions")));
+            base = &overlay_.compose(*base, depth, session_.scene(), pipeline.lastCamera(), s);
+        }
+        state.viewportImage.texture = base->id();
+        state.viewportImage.width = base->width();
+        state.viewportImage.height = base->height();
+    }
+    keepHistogram(state.sideImage);
+    if (state.panels.sideView) {
+        if (!sideWhy.empty()) {
+            state.sideImage.unavailable = sideWhy;
+        } else if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) {
+            BufferViewSettings s = state.side.settingsOr();
+            s.nearPlane = session_.camera().nearPlane;
+            s.farPlane = session_.camera().farPlane;
+            s.reversedDepth = pipeline.lastCamera().depth.x > 0.5f;
+            const gl::Texture& t = isDisplayReady(*o) ? *o->texture : sideView_.render(*o, s);
+            if (!isDisplayReady(*o) && BufferView::resolveAutoRange(o->decl.kind, s)) {
+                std::tie(state.sideImage.autoLo, state.sideImage.autoHi) = sideView_.lastAutoRange();
+                state.sideImage.haveAutoRange = true;
+            }
+            state.sideImage.texture = t.id();
+            state.sideImage.width = t.width();
+            state.sideImage.height = t.height();
+            histogram(state.side, *o, state.sideImage, state);
+        }
+    }
+}
+
+// A new frame's image, keeping the last histogram (it is recomputed only now and then).
+void ViewportComposer::keepHistogram(ShownImage& img) {
+    ShownImage next;
+    next.histogram = std::move(img.histogram);
+    next.histogramOf = std::move(img.histogramOf);
+    next.histogramFrame = img.histogramFrame;
+    next.histogramUiFrame = img.histogramUiFrame;
+    next.haveNonFinite = img.haveNonFinite;
+    next.nonFinite = std::move(img.nonFinite);
+    img = std::move(next);
+}
+// The raw values of the shown output, binned, when the view asks for it:
+// a read-back of the whole buffer, so at most every 10 frames for the
+// same output.
+void ViewportComposer::histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state) {
+    const bool nonFiniteView =
+        BufferView::resolveMapping(o.decl.kind, view.settingsOr()) == BufferViewSettings::Mapping::NonFinite;
+    if (!view.histogram && !nonFiniteView) return;
+    const std::string key = o.decl.name + "/" + std::to_string(view.settingsOr().layer) + "/" +
+                            std::to_string(view.settingsOr().sample);
+    // The same output of the same frame: nothing new. While frames keep
+    // coming, at most every 10 UI frames for the same output.
+    if (img.histogramOf == key && (img.histogramFrame == state.report.frameIndex || state.frame < img.histogramUiFrame + 10)) return;
+    try {
+        const FloatImage raw = readOutputRaw(o, view.settingsOr().selection());
+        img.histogram = computeHistogram(raw, 128);
+        img.nonFinite = FiniteCheck::count(raw, o.decl.name);
+        img.haveNonFinite = true;
+    } catch (const std::exception&) {
+        img.histogram = {};  // outputs that cannot be read back as an image (tables) have none
+        img.haveNonFinite = false;
+    }
+    img.histogramOf = key;
+    img.histogramFrame = state.report.frameIndex;
+    img.histogramUiFrame = state.frame;
+}
+
+// The histograms of the images on show when a view asks for one between frames.
+void ViewportComposer::refreshHistograms(UiState& state) {
+    Pipeline& pipeline = session_.pipeline();
+    if (state.viewport.mode == DisplayMode::Deferred && state.viewportImage.unavailable.empty() && state.framesRendered > 0)
+        if (const PublishedOutput* o = pipeline.outputs().find(state.viewport.output)) histogram(state.viewport, *o, state.viewportImage, state);
+    if (state.panels.sideView && state.sideImage.unavailable.empty() && state.framesRendered > 0)
+        if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) histogram(state.side, *o, state.sideImage, state);
+}
+
+
+}  // namespace dw::ui
