@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <tuple>
@@ -226,6 +227,40 @@ nlohmann::json referenceReport(RenderSession& session) {
             {"max", e.max}, {"mean_relative", e.meanRelative}};
 }
 
+// The A/B split's state and numbers, as the viewport shows them.
+nlohmann::json abReport(const ui::AbView& ab) {
+    auto median = [](std::vector<double> v) -> nlohmann::json {
+        if (v.empty()) return nullptr;
+        std::sort(v.begin(), v.end());
+        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    };
+    auto side = [&](const ui::AbSide& s) {
+        return nlohmann::json{{"have_error", s.haveError}, {"rms", s.rms}, {"flip", s.flip}, {"gpu_ms_median", median(s.gpuMs)},
+                              {"gpu_frames", s.gpuMs.size()}};
+    };
+    const char* sources[] = {"pinned", "preset", "reference"};
+    const char* displays[] = {"split", "difference", "flip"};
+    nlohmann::json j = {{"enabled", ab.enabled},
+                        {"source", sources[static_cast<int>(ab.source)]},
+                        {"display", displays[static_cast<int>(ab.display)]},
+                        {"preset", ab.preset},
+                        {"divider", ab.divider},
+                        {"divider_x", ab.dividerScreen.x},
+                        {"ready", ab.ready},
+                        {"unavailable", ab.unavailable},
+                        {"describe_b", ab.describeB},
+                        {"size", {ab.width, ab.height}},
+                        {"rms", ab.rms},
+                        {"psnr", std::isfinite(ab.psnr) ? nlohmann::json(ab.psnr) : nlohmann::json(nullptr)},
+                        {"mean", ab.meanAbsolute},
+                        {"flip", ab.haveFlip ? nlohmann::json(ab.flip) : nlohmann::json(nullptr)},
+                        {"a", side(ab.a)},
+                        {"b", side(ab.b)}};
+    if (ab.gpuDifference.valid())
+        j["gpu_difference_ms"] = {ab.gpuDifference.difference, ab.gpuDifference.low, ab.gpuDifference.high};
+    return j;
+}
+
 // --layout-out: where ImGui drew each panel (its own record, not ours), the
 // window size and the probe, for the tests to check.
 void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
@@ -271,6 +306,7 @@ void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const
                               {"scene", {{"name", session.scene().name}, {"source", session.scene().source}}},
                               {"recent_scenes", std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end())},
                               {"active_preset", state.activePreset},
+                              {"ab", abReport(state.ab)},
                               {"axes", state.viewport.overlay.axes},
                               {"timings", ui::timingsReport(timer, state)},
                               {"items", itemsReport()},
@@ -357,6 +393,13 @@ int runGui(const GuiOptions& options, Scene scene) {
                            0.0);
         }
         state.timingCapture = options.record;
+        if (!options.ab.empty()) {
+            state.ab.enabled = true;
+            state.ab.source = options.ab == "pinned"      ? ui::AbSource::Pinned
+                              : options.ab == "reference" ? ui::AbSource::Reference
+                                                          : ui::AbSource::Preset;
+            if (state.ab.source == ui::AbSource::Preset) state.ab.preset = options.ab.substr(7);
+        }
         RenderDocCapture renderdoc = RenderDocCapture::attach(false);
         state.renderdocAvailable = renderdoc.available();
         state.renderdocWhy = renderdoc.why();
@@ -490,6 +533,11 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             if (lastFrame && !options.layoutOut.empty()) {
+                if (state.ab.ready) {
+                    // The two images the A/B numbers were measured on, for `compare FILE.b.png FILE.a.png`.
+                    writeImage(options.layoutOut + ".a.png", frame.abImages().imageA());
+                    writeImage(options.layoutOut + ".b.png", frame.abImages().imageB());
+                }
                 writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
                 std::printf("wrote %s\n", options.layoutOut.c_str());
             }

@@ -26,6 +26,7 @@ struct GuiOptions {
     std::string exportDir;      // screenshots and timing CSVs; empty: <data dir>/deferred-workbench/exports
     std::string view;           // the output the viewport shows at start ("final" when empty)
     std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
+    std::string ab;             // the A/B split at start: "", pinned, reference, preset=NAME
     bool record = false;        // start with timing capture on (every frame rendered and timed)
     bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };

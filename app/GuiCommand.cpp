@@ -20,7 +20,7 @@ int runGuiCommand(int argc, char** argv) {
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--layout FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
-                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR] [--ab pinned|reference|preset=NAME]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
@@ -44,6 +44,10 @@ int runGuiCommand(int argc, char** argv) {
                      "  --renderdoc  run under RenderDoc (starts again with librenderdoc.so preloaded,\n"
                      "               Debian package librenderdoc): Render > Capture frame or F11 saves a\n"
                      "               capture of the next frame to the export folder\n"
+                     "  --ab         start with the viewport's A/B split on, B from: pinned (Pin or p takes the image),\n"
+                     "               reference (the CPU reference, F9), or preset=NAME (a built-in preset or a preset\n"
+                     "               file over the current settings); with --layout-out the report holds its numbers\n"
+                     "               and the two images are written beside it (FILE.a.png, FILE.b.png)\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -67,6 +71,9 @@ int runGuiCommand(int argc, char** argv) {
     o.resolution = cl.value("--resolution").value_or("");
     if (!o.resolution.empty() && o.resolution != "full" && o.resolution != "1/2" && o.resolution != "1/4" && o.resolution != "auto")
         throw UsageError("--resolution takes full, 1/2, 1/4 or auto, not '" + o.resolution + "'");
+    o.ab = cl.value("--ab").value_or("");
+    if (!o.ab.empty() && o.ab != "pinned" && o.ab != "reference" && (o.ab.rfind("preset=", 0) != 0 || o.ab.size() == 7))
+        throw UsageError("--ab takes pinned, reference or preset=NAME, not '" + o.ab + "'");
     o.record = cl.flag("--record");
     o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");

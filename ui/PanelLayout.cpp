@@ -75,7 +75,7 @@ const PanelRect* PanelLayout::Arrangement::find(const std::string& panel) const 
 void PanelLayout::reset() {
     columns_ = {
         {{{{"Scene"}, {1.0f}, 0.34f}, {{"Lights"}, {1.0f}, 0.40f}, {{"Presets"}, {1.0f}, 0.26f}}, 0.18f},
-        {{{{"Viewport", "Side view"}, {0.6f, 0.4f}, 0.64f}, {{"GPU timings", "Pixel probe"}, {0.6f, 0.4f}, 0.36f}}, 0.58f},
+        {{{{"Viewport", "Side view"}, {0.6f, 0.4f}, 0.64f}, {{"GPU timings", "Pixel probe", "Pareto"}, {0.6f, 0.4f, 0.5f}, 0.36f}}, 0.58f},
         {{{{"Pass inspector"}, {1.0f}, 0.40f},
           {{"Parameters"}, {1.0f}, 0.38f},
           {{"Messages"}, {1.0f}, 0.22f},

@@ -20,6 +20,7 @@
 #include "renderer/RunConfig.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
+#include "ui/AbView.h"
 
 namespace dw::gl {
 class Sampler;
@@ -42,6 +43,7 @@ struct PanelFlags {
     bool messages = true;
     bool sideView = false;
     bool keys = false;
+    bool pareto = false;
 };
 
 struct Message {
@@ -223,6 +225,7 @@ struct UiState {
     PanelFlags panels;
     ViewportView viewport;
     SideView side;
+    AbView ab;  // the viewport's A/B split
     ProbeState probe;
     MessageLog log;
     LightAnimator animator;

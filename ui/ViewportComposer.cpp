@@ -8,6 +8,8 @@
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/io/ImageHistogram.h"
 #include "renderer/lighting/LightVolume.h"
+#include "renderer/metrics/ImageComparison.h"
+#include "renderer/passes/ReferencePass.h"
 #include "renderer/scene/FlameParticles.h"
 
 namespace dw::ui {
@@ -41,11 +43,23 @@ void ViewportComposer::render(UiState& state) {
         else
             measuring = state.measure.prepareFrame(session_.knobs());
     }
+    if (state.ab.pinRequest) {
+        state.ab.pinRequest = false;
+        pin(state);
+    }
     // Render only when something the images depend on changed, unless
-    // timings are being captured (every frame then).
+    // timings are being captured (every frame then); the A/B view renders
+    // until each side has its frame times.
     const std::string signature = frameSignature(state);
     const bool changed = signature != lastSignature_;
-    const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed;
+    const bool ab = abActive(state);
+    if (changed) {
+        abFramesA_.clear();
+        abFramesB_.clear();
+    }
+    const bool abMore = ab && !measuring &&
+                        (abFramesA_.size() < kAbFrames || (state.ab.source == AbSource::Preset && abFramesB_.size() < kAbFrames));
+    const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed || abMore;
     state.forceRender = false;
     // The probe's values describe the image they were read from: another
     // image (a scene opened, the camera moved) with the probe neither
@@ -55,6 +69,10 @@ void ViewportComposer::render(UiState& state) {
         lastSignature_ = signature;
         renderImages(state);
         ++state.framesRendered;
+        if (ab && (signature != composedSignature_ || !state.ab.ready)) {
+            composedSignature_ = signature;
+            composeAb(state);
+        }
         if (measuring) state.measure.frameRendered(state.report.frameIndex);
         // The first frame of another scene or render size starts the statistics over.
         const std::string config = session_.scene().source + "|" + std::to_string(state.renderSize.x) + "x" +
@@ -79,7 +97,9 @@ void ViewportComposer::render(UiState& state) {
         order.push_back(PassTimer::kFrameSeries);
         state.measure.collect(pipeline.timer(), session_.knobs(), order);
     }
-    state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active();
+    if (ab) abTimes(state);
+    else state.ab.ready = false;
+    state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active() || abMore;
     if (state.probe.hovering || state.probe.pinned) {
         state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
         probeLights(state);
@@ -123,7 +143,12 @@ std::string ViewportComposer::frameSignature(const UiState& state) const {
     };
     const Camera& c = session_.camera();
     vec(c.position), vec(c.target), vec(c.up), put(c.fovYDegrees), put(c.nearPlane), put(c.farPlane);
-    put(session_.knobs().generation());
+    // The knobs by value, not by generation(): the A/B view's preset side
+    // sets knobs and puts them back every frame it renders.
+    const KnobRegistry& knobs = session_.knobs();
+    for (size_t i = 0; i < knobs.size(); ++i) put(knobs.value(static_cast<int>(i)));
+    const AbView& ab = state.ab;
+    put(ab.enabled), put(static_cast<int>(ab.source)), put(static_cast<int>(ab.display)), text(ab.preset), put(ab.generation);
     const Scene& scene = session_.scene();
     put(reinterpret_cast<std::uintptr_t>(&scene)), text(scene.source), vec(scene.ambient), vec(scene.background);
     for (const Light& l : scene.lights) {
@@ -178,12 +203,27 @@ void ViewportComposer::renderImages(UiState& state) {
         }
     };
     if (deferred) tryAdd(state.viewport.output, viewportWhy);
+    const bool ab = abActive(state);
+    std::string referenceWhy;
+    if (ab) {
+        if (const ReferencePass* r = pipeline.pass<ReferencePass>(); r && r->hasReference()) tryAdd("reference.final", referenceWhy);
+        // B first, so the pipeline's outputs (the probe's, the histograms') are A's.
+        if (state.ab.source == AbSource::Preset) renderPresetSide(state);
+    }
     if (state.panels.sideView) tryAdd(state.side.output, sideWhy);
     state.flameFrame = state.heldFlameFrame.value_or(pipeline.frameIndex());
     animateFlameParticles(session_.mutableScene(), state.flameFrame);
     // The forward preview modes run no deferred pass at all.
     if (deferred) {
         state.report = pipeline.render(session_.camera(), request);
+        if (ab) {
+            abFramesA_.insert(state.report.frameIndex);
+            abA_ = session_.readRaw("final");
+            abReference_ = FloatImage{};
+            if (referenceWhy.empty() && pipeline.outputs().find("reference.final") &&
+                std::find(request.outputs.begin(), request.outputs.end(), "reference.final") != request.outputs.end())
+                abReference_ = session_.readRaw("reference.final");
+        }
     } else {
         pipeline.bindCamera(session_.camera());
         state.report = {};
@@ -302,5 +342,151 @@ void ViewportComposer::refreshHistograms(UiState& state) {
         if (const PublishedOutput* o = pipeline.outputs().find(state.side.output)) histogram(state.side, *o, state.sideImage, state);
 }
 
+bool ViewportComposer::abActive(const UiState& state) {
+    return state.ab.enabled && state.viewport.mode == DisplayMode::Deferred && state.viewport.output == "final";
+}
+
+void ViewportComposer::pin(UiState& state) {
+    if (state.viewport.mode != DisplayMode::Deferred || state.framesRendered == 0) {
+        state.log.error("Pin: only the deferred final image can be pinned", state.time, "pin");
+        return;
+    }
+    try {
+        // The pipeline's last frame is A's (the preset side renders first).
+        pinned_ = session_.readRaw("final");
+    } catch (const std::exception& e) {
+        state.log.error(std::string("Pin: ") + e.what(), state.time, "pin");
+        return;
+    }
+    pinnedMs_ = state.ab.a.gpuMs;
+    pinnedDescribe_ = "pinned at frame " + std::to_string(state.report.frameIndex);
+    state.ab.enabled = true;
+    state.ab.source = AbSource::Pinned;
+    ++state.ab.generation;
+    state.log.done("the current image is pinned as B", state.time, "pin");
+}
+
+void ViewportComposer::renderPresetSide(UiState& state) {
+    AbView& ab = state.ab;
+    abB_ = FloatImage{};
+    presetError_.clear();
+    presetIgnored_ = 0;
+    try {
+        if (ab.preset.empty()) throw Error("no preset chosen for B");
+        if (ab.preset != presetName_ || !preset_) {
+            presetName_.clear();
+            RunConfig run;
+            run.setPreset(ab.preset);  // a built-in name or a file, as --preset takes it
+            preset_ = *run.preset();
+            presetName_ = ab.preset;
+        }
+    } catch (const std::exception& e) {
+        presetError_ = "preset '" + ab.preset + "': " + e.what();
+        return;
+    }
+    KnobRegistry& knobs = session_.knobs();
+    std::vector<double> saved(knobs.size());
+    for (size_t i = 0; i < knobs.size(); ++i) saved[i] = knobs.value(static_cast<int>(i));
+    presetIgnored_ = static_cast<int>(preset_->applyKnobs(knobs).ignored.size());
+    try {
+        const FrameReport r = session_.pipeline().render(session_.camera(), FrameRequest{{"final"}});
+        abFramesB_.insert(r.frameIndex);
+        abB_ = session_.readRaw("final");
+    } catch (const std::exception& e) {
+        presetError_ = "preset '" + ab.preset + "' does not render: " + e.what();
+    }
+    // The current settings back, whatever happened.
+    for (size_t i = 0; i < knobs.size(); ++i)
+        if (knobs.value(static_cast<int>(i)) != saved[i]) knobs.set(static_cast<int>(i), saved[i]);
+}
+
+void ViewportComposer::composeAb(UiState& state) {
+    AbView& ab = state.ab;
+    ab.ready = false;
+    ab.unavailable.clear();
+    const FloatImage* b = nullptr;
+    switch (ab.source) {
+        case AbSource::Pinned:
+            ab.describeB = pinnedDescribe_;
+            if (pinned_.pixels.empty()) ab.unavailable = "nothing pinned yet: Pin (or the p key) takes the current image as B";
+            else b = &pinned_;
+            break;
+        case AbSource::Preset:
+            ab.describeB = "preset " + ab.preset + (presetIgnored_ ? " (" + std::to_string(presetIgnored_) + " keys ignored)" : "");
+            if (!presetError_.empty()) ab.unavailable = presetError_;
+            else b = &abB_;
+            break;
+        case AbSource::Reference:
+            ab.describeB = "CPU reference";
+            if (abReference_.pixels.empty())
+                ab.unavailable = "no CPU reference of this view yet: Render > CPU reference of this view (F9)";
+            else b = &abReference_;
+            break;
+    }
+    if (!b) return;
+    if (abA_.pixels.empty()) {
+        ab.unavailable = "no image of the current settings yet";
+        return;
+    }
+    if (b->width != abA_.width || b->height != abA_.height) {
+        ab.unavailable = "B is " + std::to_string(b->width) + "x" + std::to_string(b->height) + ", the view " +
+                         std::to_string(abA_.width) + "x" + std::to_string(abA_.height) +
+                         (ab.source == AbSource::Pinned ? ": pin again" : "");
+        return;
+    }
+    try {
+        split_.set(abA_, *b);
+        split_.makeHeatMap(ab.display == AbDisplay::Flip ? SplitComparison::Map::Flip : SplitComparison::Map::Difference);
+        const ImageComparison& c = split_.comparison();
+        ab.rms = c.difference.overall.rms;
+        ab.psnr = c.difference.overall.psnr;
+        ab.meanAbsolute = c.difference.overall.mean;
+        ab.haveFlip = c.flip.has_value();
+        ab.flip = c.flip ? c.flip->mean : 0.0;
+        // Each side against the CPU reference, when one is shown.
+        ab.a.haveError = ab.b.haveError = false;
+        if (!abReference_.pixels.empty() && abReference_.width == abA_.width && abReference_.height == abA_.height) {
+            ComparisonSettings ldr;
+            auto against = [&](const FloatImage& img, AbSide& side) {
+                const ImageComparison r = ImageComparison::measure(abReference_, img, ldr, "reference", "image");
+                side.haveError = true;
+                side.rms = r.difference.overall.rms;
+                side.flip = r.flip ? r.flip->mean : 0.0;
+            };
+            against(abA_, ab.a);
+            if (ab.source == AbSource::Reference) {
+                ab.b.haveError = true;
+                ab.b.rms = ab.b.flip = 0.0;
+            } else {
+                against(*b, ab.b);
+            }
+        }
+    } catch (const std::exception& e) {
+        ab.unavailable = std::string("A/B: ") + e.what();
+        return;
+    }
+    ab.textureA = split_.textureA().id();
+    ab.textureB = split_.textureB().id();
+    ab.heatTexture = split_.heatMap().id();
+    ab.heatHigh = split_.heatHigh();
+    ab.width = abA_.width;
+    ab.height = abA_.height;
+    ab.ready = true;
+}
+
+void ViewportComposer::abTimes(UiState& state) {
+    AbView& ab = state.ab;
+    ab.a.gpuMs.clear();
+    ab.b.gpuMs.clear();
+    if (const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries))
+        for (const auto& s : total->samples) {
+            if (abFramesA_.count(s.frame)) ab.a.gpuMs.push_back(s.gpuMs);
+            else if (abFramesB_.count(s.frame)) ab.b.gpuMs.push_back(s.gpuMs);
+        }
+    if (ab.source == AbSource::Pinned) ab.b.gpuMs = pinnedMs_;
+    ab.gpuDifference = ab.a.gpuMs.size() >= 3 && ab.b.gpuMs.size() >= 3
+                           ? bootstrapDifferenceOfMedians(ab.a.gpuMs, ab.b.gpuMs)
+                           : DifferenceInterval{};
+}
 
 }  // namespace dw::ui

@@ -1,17 +1,23 @@
 #pragma once
-// The viewport's composition (DESIGN.md "ui/": images, overlays):
+// The viewport's composition (DESIGN.md "ui/": images, overlays, A/B split):
 // each UI frame, renders the pipeline when something the images depend on
 // changed, and prepares what the viewport and the side view show (the final
 // image, a buffer view, a forward preview, the light-volume overlay), their
 // histograms and the probe. It owns the renderer-side helpers that make those
 // images (BufferView, ForwardPreview, ViewportOverlay); it creates no GL
 // object itself. Moved out of app/GuiApp.cpp (issue 23), unchanged.
+#include <cstdint>
+#include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "renderer/RenderSession.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/ForwardPreview.h"
+#include "renderer/inspect/SplitComparison.h"
+#include "renderer/knobs/Preset.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/UiState.h"
 
@@ -21,6 +27,8 @@ class ViewportComposer {
 public:
     explicit ViewportComposer(RenderSession& session);
     const gl::Sampler& nearestSampler() const { return nearest_; }
+    // The A/B split's last measured pair (UiState::ab says whether it is ready).
+    const SplitComparison& abImages() const { return split_; }
 
     // Once a UI frame, before the panels draw.
     void render(UiState& state);
@@ -35,6 +43,17 @@ private:
     void histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state);
     void refreshHistograms(UiState& state);
 
+    // The A/B split (AbView): on for the deferred final image.
+    static bool abActive(const UiState& state);
+    void pin(UiState& state);
+    // B under a preset: the preset over the current knobs, rendered, read back, the knobs put back.
+    void renderPresetSide(UiState& state);
+    // A against B (SplitComparison), each against the reference, into state.ab.
+    void composeAb(UiState& state);
+    // Each side's GPU frame times since the view changed, and their difference's interval.
+    void abTimes(UiState& state);
+    static constexpr size_t kAbFrames = 10;  // frames per side rendered for the times
+
     RenderSession& session_;
     BufferView sideView_;
     ForwardPreview forward_;
@@ -42,6 +61,15 @@ private:
     gl::Sampler nearest_;
     std::string lastSignature_;
     std::string lastConfig_;
+    SplitComparison split_;
+    FloatImage abA_, abB_, abReference_, pinned_;
+    std::vector<double> pinnedMs_;
+    std::string pinnedDescribe_;
+    std::set<std::uint64_t> abFramesA_, abFramesB_;
+    std::string composedSignature_;
+    std::optional<Preset> preset_;
+    std::string presetName_, presetError_;
+    int presetIgnored_ = 0;
 };
 
 }  // namespace dw::ui

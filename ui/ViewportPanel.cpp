@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "renderer/scene/CameraController.h"
+#include "ui/AbSplitView.h"
 #include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
 
@@ -112,6 +113,8 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // and so change the render size again.
     sameLineIfFits(ImGui::CalcTextSize("| orbit camera | 00000x00000 (x0.00) | recording").x);
     ImGui::TextDisabled("%s", info);
+    // The A/B split's controls and numbers (AbSplitView).
+    if (v.mode == DisplayMode::Deferred) abControls(state);
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
@@ -139,11 +142,14 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     const ImagePlacement placed = drawImageView(v, state.viewportImage, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
                                                 state.nearestSampler, hovered, active);
     const ImVec2 imgMin(placed.min.x, placed.min.y), imgSize(placed.size.x, placed.size.y);
+    // B right of the divider; while the divider has the mouse, the camera and the probe leave it alone.
+    const bool dividerHeld = v.mode == DisplayMode::Deferred && v.output == "final" &&
+                             drawAbSplit(state, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)), placed, hovered);
 
     // Camera from the mouse (Ctrl belongs to the image's zoom and pan).
     ImGuiIO& io = ImGui::GetIO();
     Camera& cam = session.camera();
-    if (active && !io.KeyCtrl) {
+    if (active && !io.KeyCtrl && !dividerHeld) {
         const ImVec2 d = io.MouseDelta;
         if (v.camera == CameraMode::Orbit) {
             if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
@@ -175,7 +181,8 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
             // ImGui tracks how far the mouse went while the button was down;
             // an orbit (a drag past the drag threshold) must not pin the probe.
             const float still = io.MouseDragThreshold * io.MouseDragThreshold;
-            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still) {
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still &&
+                !dividerHeld) {
                 state.probe.pinned = true;
                 state.probe.pixel = px;
                 state.probe.uv = glm::vec2(u, w);
@@ -257,6 +264,11 @@ void handleShortcuts(UiState& state, RenderSession& session, float dt) {
     if (pressed(GLFW_KEY_F12)) state.requestScreenshot = true;
     if (pressed(GLFW_KEY_F11)) state.requestRenderDocCapture = true;
     if (pressed(GLFW_KEY_F9)) state.requestReference = true;
+    if (pressed(GLFW_KEY_B)) {
+        state.ab.enabled = !state.ab.enabled;
+        ++state.ab.generation;
+    }
+    if (pressed(GLFW_KEY_P)) state.ab.pinRequest = true;
     if (pressed(GLFW_KEY_ESCAPE)) state.probe.pinned = false;
 }
 
@@ -267,6 +279,7 @@ const char* shortcutHelp() {
            "d     deferred shading          t  textured (forward)        w  wireframe (forward)\n"
            "a     world axes                 v  light-volume wireframes   l  animate lights\n"
            "click pin the pixel probe        Esc unpin\n"
+           "b     A/B split view (drag its divider)   p  pin the current image as B\n"
            "F5    reload changed shaders (errors show in Messages; the last good program stays)\n"
            "F9    CPU reference of this view, in the background (then reference.* and compare.error)\n"
            "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"

@@ -56,6 +56,7 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::MenuItem("Scene", nullptr, &p.scene);
         ImGui::MenuItem("Lights", nullptr, &p.lights);
         ImGui::MenuItem("GPU timings", nullptr, &p.timings);
+        ImGui::MenuItem("Pareto (tradeoff CSV)", nullptr, &p.pareto);
         ImGui::MenuItem("Parameters", nullptr, &p.knobs);
         ImGui::MenuItem("Presets", nullptr, &p.presets);
         ImGui::MenuItem("Messages", nullptr, &p.messages);
@@ -110,7 +111,7 @@ bool* WorkbenchUi::panelFlag(PanelFlags& p, const std::string& name) {
         {"Viewport", &p.viewport},    {"GPU timings", &p.timings}, {"Pixel probe", &p.probe},
         {"Scene", &p.scene},          {"Lights", &p.lights},       {"Pass inspector", &p.inspector},
         {"Parameters", &p.knobs},     {"Side view", &p.sideView},  {"Presets", &p.presets},
-        {"Messages", &p.messages},    {"Keys", &p.keys}};
+        {"Messages", &p.messages},    {"Keys", &p.keys},           {"Pareto", &p.pareto}};
     for (const auto& [n, f] : flags)
         if (name == n) return f;
     return nullptr;
@@ -194,6 +195,7 @@ void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
         else if (n == "Side view") side_.draw("Side view", open, state, session);
         else if (n == "Presets") presets_.draw("Presets", open, state, session);
         else if (n == "Messages") messages_.draw("Messages", open, state);
+        else if (n == "Pareto") pareto_.draw("Pareto", open, state, session);
         else if (n == "Keys") {
             if (beginPanel("Keys", open)) {
                 ImGui::PushTextWrapPos(0.0f);

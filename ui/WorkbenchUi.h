@@ -7,6 +7,7 @@
 #include "ui/InspectorPanel.h"
 #include "ui/KnobsPanel.h"
 #include "ui/LightsPanel.h"
+#include "ui/ParetoPanel.h"
 #include "ui/PanelLayout.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ProbePanel.h"
@@ -53,6 +54,7 @@ private:
     KnobsPanel knobs_;
     PresetsPanel presets_;
     MessagesPanel messages_;
+    ParetoPanel pareto_;
     ReferenceControls reference_;
 };
 

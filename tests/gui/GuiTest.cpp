@@ -6,16 +6,21 @@
 #include <dlfcn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "renderer/knobs/Preset.h"
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
+#include "renderer/bench/TradeoffTable.h"
+#include "ui/ParetoPanel.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
@@ -852,4 +857,164 @@ TEST(Gui, UnderXvfbTheTransparencySampleCountsShowAsAHeatMapWithItsColourBar) {
     std::printf("heat map: %lld warm, %lld cold pixels\n", warm, coldPixels);
     EXPECT_GT(warm, 200);
     EXPECT_GT(coldPixels, 2000);
+}
+
+// The A/B split (issue 23) as a person uses it: B is a preset over the
+// current settings (two stops brighter), the divider is dragged 150 px left
+// of where it starts; in the window's pixels, left of the divider is A's
+// image and right of it B's; the numbers the view shows are what `compare`
+// prints for the same two images (written beside the report).
+TEST(Gui, UnderXvfbTheAbSplitShowsAOnTheLeftAndBOnTheRightOfItsDividerAndCompareAgrees) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path preset = writeText("ab-bright.json", R"({"name": "bright", "knobs": {"tonemap.exposure": 2.0}})");
+    const std::string ab = "--resolution full --ab preset=" + preset.string();
+    // Where the divider starts (the middle of the image), once both sides are rendered.
+    const LayoutReport start = runScripted("ab-start", "1024x640", 14, "", ab);
+    ASSERT_TRUE(start.items.contains("ab.divider")) << start.items.dump();
+    const auto& d = start.items["ab.divider"];
+    const int dx = static_cast<int>(d["x"].get<float>() + 1.0f), dy = static_cast<int>(d["y"].get<float>() + d["h"].get<float>() * 0.5f);
+    const int target = dx - 150;
+    const fs::path shot = test::tempDir() / "ab-split.png";
+    const LayoutReport moved =
+        runScripted("ab-moved", "1024x640", 24,
+                    "14 drag " + std::to_string(dx) + " " + std::to_string(dy) + " " + std::to_string(target) + " " +
+                        std::to_string(dy) + " 4\n",
+                    ab + " --screenshot " + shot.string());
+    std::ifstream f(test::tempDir() / "ab-moved-layout.json");
+    const nlohmann::json report = nlohmann::json::parse(f);
+    const nlohmann::json& abj = report["ab"];
+    ASSERT_TRUE(abj["ready"].get<bool>()) << abj.dump();
+    EXPECT_EQ(abj["source"], "preset");
+    EXPECT_NEAR(abj["divider_x"].get<float>(), static_cast<float>(target), 1.5f) << abj.dump();
+    EXPECT_FALSE(moved.pinned) << "the divider drag pinned the probe";
+    // A's camera did not move with the drag.
+    EXPECT_LT(glm::length(moved.camera - start.camera), 1e-4f);
+
+    const fs::path aPath = test::tempDir() / "ab-moved-layout.json.a.png", bPath = test::tempDir() / "ab-moved-layout.json.b.png";
+    const FloatImage a = loadImageFloat(aPath.string()), b = loadImageFloat(bPath.string()), window = loadImageFloat(shot.string());
+    ASSERT_EQ(a.width, b.width);
+    const auto& im = moved.items["ab.image"];
+    const float x0 = im["x"].get<float>(), y0 = im["y"].get<float>(), w = im["w"].get<float>(), h = im["h"].get<float>();
+    // Each window pixel over the image: nearer A's value there or B's? (pixels where A and B agree say nothing).
+    long long leftA = 0, leftB = 0, rightA = 0, rightB = 0;
+    const auto& vp = *moved.find("Viewport");
+    for (int sy = static_cast<int>(y0) + 2; sy < static_cast<int>(std::min(y0 + h, vp.y + vp.h)) - 2; ++sy)
+        for (int sx = static_cast<int>(x0) + 2; sx < static_cast<int>(x0 + w) - 2; ++sx) {
+            if (std::abs(sx - target) <= 6) continue;  // the divider line and its handle
+            const int ix = std::clamp(static_cast<int>((sx + 0.5f - x0) / w * a.width), 0, a.width - 1);
+            const int iy = std::clamp(static_cast<int>((sy + 0.5f - y0) / h * a.height), 0, a.height - 1);
+            double da = 0, db = 0, dab = 0;
+            for (int c = 0; c < 3; ++c) {
+                const double s = window.at(sx, sy, c);
+                da += std::fabs(s - a.at(ix, iy, c));
+                db += std::fabs(s - b.at(ix, iy, c));
+                dab += std::fabs(a.at(ix, iy, c) - b.at(ix, iy, c));
+            }
+            if (dab < 0.15) continue;
+            const bool nearerA = da < db;
+            if (sx < target) (nearerA ? leftA : leftB)++;
+            else (nearerA ? rightA : rightB)++;
+        }
+    std::printf("A/B split at x %d: left %lld A / %lld B pixels, right %lld A / %lld B\n", target, leftA, leftB, rightA, rightB);
+    ASSERT_GT(leftA + leftB, 2000);
+    ASSERT_GT(rightA + rightB, 2000);
+    EXPECT_GT(leftA, 50 * leftB);
+    EXPECT_GT(rightB, 50 * rightA);
+
+    // compare B A on the two images gives the numbers shown.
+    const fs::path json = test::tempDir() / "ab-compare.json";
+    const Result c = shell(std::string(DW_WORKBENCH_BINARY) + " compare " + bPath.string() + " " + aPath.string() +
+                           " --json " + json.string());
+    ASSERT_TRUE(fs::exists(json)) << c.out;
+    std::ifstream jf(json);
+    const nlohmann::json cmp = nlohmann::json::parse(jf);
+    EXPECT_GT(abj["rms"].get<double>(), 0.01);
+    EXPECT_NEAR(abj["rms"].get<double>(), cmp["rms"].get<double>(), 1e-9) << cmp.dump();
+    EXPECT_NEAR(abj["flip"].get<double>(), cmp["flip"].get<double>(), 1e-9) << cmp.dump();
+    // Both sides were timed: the interval of their difference is there.
+    EXPECT_GE(abj["a"]["gpu_frames"].get<int>(), 3);
+    EXPECT_GE(abj["b"]["gpu_frames"].get<int>(), 3);
+    EXPECT_TRUE(abj.contains("gpu_difference_ms")) << abj.dump();
+}
+
+// The Pareto panel (issue 23): a tradeoff CSV plotted, the front's points
+// noted where they are drawn; a click on a point applies its settings through
+// the knob registry; a point whose value the registry refuses applies nothing
+// and says why; a file that is not a tradeoff CSV keeps the table loaded before.
+TEST(Gui, TheParetoPanelPlotsATradeoffCsvAndAClickAppliesAPointsSettings) {
+    TradeoffTable t;
+    t.axes = {"ssao.samples", "ssao.resolution"};
+    t.passes = {"ssao"};
+    const std::vector<std::tuple<std::string, std::string, double, double>> points = {
+        {"8", "full", 0.040, 10.0}, {"24", "quarter", 0.020, 14.0}, {"32", "full", 0.010, 22.0}, {"16", "full", 0.030, 25.0},
+        {"bogus", "full", 0.001, 30.0}};
+    for (size_t i = 0; i < points.size(); ++i) {
+        TradeoffRow r;
+        r.point = static_cast<int>(i);
+        r.axisValues = {std::get<0>(points[i]), std::get<1>(points[i])};
+        r.camera = "all";
+        r.metric = "rms";
+        r.buffer = "ao";
+        r.error = std::get<2>(points[i]);
+        r.errorLo = r.error * 0.9;
+        r.errorHi = r.error * 1.1;
+        r.frames = 8;
+        r.frameGpuMs = std::get<3>(points[i]);
+        r.frameGpuMsLo = r.frameGpuMs * 0.95;
+        r.frameGpuMsHi = r.frameGpuMs * 1.05;
+        r.passGpuMs = {r.frameGpuMs * 0.5};
+        t.rows.push_back(r);
+    }
+    t.markParetoFront();
+    const fs::path csv = test::tempDir() / "pareto.csv";
+    t.writeCsv(csv.string());
+
+    auto session = test::makeSession(64, 36);
+    session->loadScene("spheres");
+    HeadlessImGui imgui(ImVec2(800, 600));
+    ui::UiState state;
+    ui::ParetoPanel panel;
+    ASSERT_TRUE(panel.load(csv.string())) << panel.error;
+    ASSERT_EQ(panel.groups(), (std::vector<std::string>{"all | rms | ao"}));
+    bool open = true;
+    auto draw = [&] {
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(800, 600));
+        panel.draw("Pareto", &open, state, *session);
+    };
+    imgui.frame(draw);
+    imgui.frame(draw);
+    // Point 3 (16, full: slower and worse than point 2) is off the front; the others are on it.
+    EXPECT_TRUE(t.rows[1].pareto);
+    EXPECT_FALSE(t.rows[3].pareto);
+    const auto& items = ui::drawnItems();
+    ASSERT_TRUE(items.count("pareto.point.1") && items.count("pareto.point.3"));
+    // Point 1 is left of point 2 (faster) and below point 0 (lower error).
+    EXPECT_LT(items.at("pareto.point.1").x, items.at("pareto.point.2").x);
+    EXPECT_GT(items.at("pareto.point.1").y, items.at("pareto.point.0").y);
+
+    // A click on point 1: ssao.samples=24, ssao.resolution=quarter (the defaults are 16, half).
+    const ImVec2 at(items.at("pareto.point.1").x + 1, items.at("pareto.point.1").y + 1);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = at;
+    imgui.frame(draw);
+    io.MouseDown[0] = true;
+    imgui.frame(draw);
+    io.MouseDown[0] = false;
+    imgui.frame(draw);
+    EXPECT_EQ(knob(*session, "ssao.samples"), 24.0) << panel.error;
+    EXPECT_EQ(session->knobs().format(*session->knobs().find("ssao.resolution")), "quarter");
+    EXPECT_NE(panel.applied.find("point 1"), std::string::npos) << panel.applied;
+
+    // Point 4's "bogus" is refused: nothing of it applied, the error named.
+    EXPECT_FALSE(panel.apply(4, state, *session));
+    EXPECT_NE(panel.error.find("ssao.samples"), std::string::npos) << panel.error;
+    EXPECT_EQ(knob(*session, "ssao.samples"), 24.0);
+    EXPECT_EQ(session->knobs().format(*session->knobs().find("ssao.resolution")), "quarter");
+
+    // Not a tradeoff CSV: said so, the table kept.
+    const fs::path bad = writeText("not-tradeoff.csv", "a,b\n1,2\n");
+    EXPECT_FALSE(panel.load(bad.string()));
+    EXPECT_NE(panel.error.find("not-tradeoff.csv"), std::string::npos) << panel.error;
+    EXPECT_EQ(panel.table.rows.size(), 5u);
 }

@@ -1,0 +1,210 @@
+#include "ui/ParetoPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "renderer/Error.h"
+#include "renderer/knobs/Preset.h"
+#include "ui/Widgets.h"
+
+namespace dw::ui {
+
+namespace {
+
+std::string groupOf(const TradeoffRow& r) { return r.camera + " | " + r.metric + " | " + r.buffer; }
+
+bool finite(double v) { return std::isfinite(v); }
+
+// "ssao.samples=16, ssao.resolution=half"
+std::string label(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string s;
+    for (size_t i = 0; i < t.axes.size() && i < r.axisValues.size(); ++i) {
+        if (!s.empty()) s += ", ";
+        s += t.axes[i] + "=" + r.axisValues[i];
+    }
+    return s.empty() ? "point " + std::to_string(r.point) : s;
+}
+
+}  // namespace
+
+bool ParetoPanel::load(const std::string& file) {
+    try {
+        TradeoffTable t = TradeoffTable::readCsv(file);
+        if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
+        table = std::move(t);
+        loadedPath = file;
+        group = 0;
+        hovered = -1;
+        error.clear();
+        applied.clear();
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+std::vector<std::string> ParetoPanel::groups() const {
+    std::vector<std::string> g;
+    for (const auto& r : table.rows)
+        if (std::find(g.begin(), g.end(), groupOf(r)) == g.end()) g.push_back(groupOf(r));
+    // The row over every camera first, where there is one.
+    std::stable_partition(g.begin(), g.end(), [](const std::string& s) { return s.rfind("all |", 0) == 0; });
+    return g;
+}
+
+bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
+    if (row < 0 || row >= static_cast<int>(table.rows.size())) return false;
+    const TradeoffRow& r = table.rows[static_cast<size_t>(row)];
+    // On a copy first: one refused value applies nothing.
+    KnobRegistry trial = session.knobs();
+    Camera camera = session.camera();
+    try {
+        for (size_t i = 0; i < table.axes.size() && i < r.axisValues.size(); ++i) {
+            const std::string& axis = table.axes[i];
+            const std::string& value = r.axisValues[i];
+            if (axis == "preset") {
+                RunConfig run;
+                run.setPreset(value);
+                const Preset::ApplyReport rep = run.preset()->applyOver(trial, session.scene().settings);
+                if (!rep.ignored.empty()) throw Error("preset " + value + ": " + rep.ignored.front());
+            } else if (axis == "camera.near" || axis == "camera.far") {
+                char* end = nullptr;
+                const float v = std::strtof(value.c_str(), &end);
+                if (!end || *end || !(v > 0.0f)) throw Error(axis + " must be a positive number, not '" + value + "'");
+                (axis == "camera.near" ? camera.nearPlane : camera.farPlane) = v;
+            } else {
+                trial.setFromString(axis, value);
+            }
+        }
+        if (!(camera.nearPlane < camera.farPlane)) throw Error("camera.near must be below camera.far");
+    } catch (const std::exception& e) {
+        error = "point " + std::to_string(r.point) + " not applied: " + e.what();
+        state.log.error(error, state.time, "pareto apply");
+        return false;
+    }
+    session.knobs().copyValues(trial);
+    session.camera() = camera;
+    error.clear();
+    applied = "applied point " + std::to_string(r.point) + ": " + label(table, r);
+    state.log.done(applied, state.time, "pareto apply");
+    return true;
+}
+
+void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    if (!beginPanel(title, open)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 4.0f, 60.0f));
+    const bool enter = ImGui::InputText("##csv", path, sizeof(path), ImGuiInputTextFlags_EnterReturnsTrue);
+    noteItem("pareto.path");
+    ImGui::SameLine();
+    if (ImGui::Button("Load") || enter) load(path);
+    noteItem("pareto.load");
+    if (!error.empty()) wrappedColored(kErrorColor, error);
+    if (table.rows.empty()) {
+        ImGui::TextDisabled("a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
+        ImGui::End();
+        return;
+    }
+    const std::vector<std::string> gs = groups();
+    group = std::clamp(group, 0, static_cast<int>(gs.size()) - 1);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
+    if (ImGui::BeginCombo("camera | metric | buffer", gs[static_cast<size_t>(group)].c_str())) {
+        for (size_t i = 0; i < gs.size(); ++i)
+            if (ImGui::Selectable(gs[i].c_str(), static_cast<int>(i) == group)) group = static_cast<int>(i);
+        ImGui::EndCombo();
+    }
+    if (!applied.empty()) ImGui::TextColored(kOkColor, "%s", applied.c_str());
+
+    // The rows of the group with both numbers.
+    std::vector<int> rows;
+    double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+    std::string metric;
+    for (size_t i = 0; i < table.rows.size(); ++i) {
+        const TradeoffRow& r = table.rows[i];
+        if (groupOf(r) != gs[static_cast<size_t>(group)] || !finite(r.frameGpuMs) || !finite(r.error)) continue;
+        rows.push_back(static_cast<int>(i));
+        metric = r.metric;
+        for (double x : {r.frameGpuMs, r.frameGpuMsLo, r.frameGpuMsHi})
+            if (finite(x)) xlo = std::min(xlo, x), xhi = std::max(xhi, x);
+        for (double y : {r.error, r.errorLo, r.errorHi})
+            if (finite(y)) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+    }
+    if (rows.empty()) {
+        ImGui::TextDisabled("no row of this group has both a time and an error");
+        ImGui::End();
+        return;
+    }
+    if (xhi <= xlo) xlo -= 0.5, xhi += 0.5;
+    if (yhi <= ylo) ylo -= 0.5 * std::max(std::fabs(ylo), 1e-6), yhi += 0.5 * std::max(std::fabs(yhi), 1e-6);
+    const double padX = 0.06 * (xhi - xlo), padY = 0.08 * (yhi - ylo);
+    xlo -= padX, xhi += padX, ylo -= padY, yhi += padY;
+
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 size(std::max(avail.x, 80.0f), std::max(avail.y, 60.0f));
+    ImGui::InvisibleButton("##pareto_plot", size);
+    noteItem("pareto.plot");
+    const bool plotHovered = ImGui::IsItemHovered();
+    const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const float left = origin.x + 56, right = origin.x + size.x - 8, top = origin.y + 6, bottom = origin.y + size.y - 22;
+    auto sx = [&](double x) { return static_cast<float>(left + (x - xlo) / (xhi - xlo) * (right - left)); };
+    auto sy = [&](double y) { return static_cast<float>(bottom - (y - ylo) / (yhi - ylo) * (bottom - top)); };
+    dl->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(24, 24, 28, 255));
+    dl->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(90, 90, 100, 255));
+    char t[96];
+    std::snprintf(t, sizeof(t), "%.3g", yhi);
+    dl->AddText(ImVec2(origin.x, top), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g", ylo);
+    dl->AddText(ImVec2(origin.x, bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g ms", xlo);
+    dl->AddText(ImVec2(left, bottom + 4), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
+    dl->AddText(ImVec2(std::max(left + 60.0f, right - ImGui::CalcTextSize(t).x), bottom + 4), IM_COL32(170, 170, 170, 255), t);
+
+    // The front, joined left to right.
+    std::vector<int> front;
+    for (int i : rows)
+        if (table.rows[static_cast<size_t>(i)].pareto) front.push_back(i);
+    std::sort(front.begin(), front.end(), [&](int a, int b) {
+        return table.rows[static_cast<size_t>(a)].frameGpuMs < table.rows[static_cast<size_t>(b)].frameGpuMs;
+    });
+    for (size_t k = 1; k < front.size(); ++k) {
+        const TradeoffRow &a = table.rows[static_cast<size_t>(front[k - 1])], &b = table.rows[static_cast<size_t>(front[k])];
+        dl->AddLine(ImVec2(sx(a.frameGpuMs), sy(a.error)), ImVec2(sx(b.frameGpuMs), sy(b.error)), IM_COL32(255, 170, 60, 160), 1.5f);
+    }
+    // Points with both intervals; the nearest within 8 px is hovered.
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    hovered = -1;
+    float best = 64.0f;
+    for (int i : rows) {
+        const TradeoffRow& r = table.rows[static_cast<size_t>(i)];
+        const ImVec2 p(sx(r.frameGpuMs), sy(r.error));
+        const ImU32 bar = IM_COL32(150, 150, 160, 200);
+        if (finite(r.frameGpuMsLo) && finite(r.frameGpuMsHi)) dl->AddLine(ImVec2(sx(r.frameGpuMsLo), p.y), ImVec2(sx(r.frameGpuMsHi), p.y), bar);
+        if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, sy(r.errorLo)), ImVec2(p.x, sy(r.errorHi)), bar);
+        dl->AddCircleFilled(p, r.pareto ? 5.0f : 3.5f, r.pareto ? IM_COL32(255, 170, 60, 255) : IM_COL32(110, 160, 230, 255));
+        if (r.pareto) dl->AddText(ImVec2(p.x + 6, p.y - ImGui::GetFontSize() - 2), IM_COL32(255, 200, 130, 255), label(table, r).c_str());
+        const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
+        if (plotHovered && d2 < best) best = d2, hovered = i;
+        noteRect("pareto.point." + std::to_string(r.point), ImVec2(p.x - 1, p.y - 1), ImVec2(p.x + 1, p.y + 1));
+    }
+    if (hovered >= 0) {
+        const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
+        dl->AddCircle(ImVec2(sx(r.frameGpuMs), sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
+        ImGui::SetTooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
+                          label(table, r).c_str(), r.metric.c_str(), r.error, r.errorLo, r.errorHi, r.frameGpuMs,
+                          r.frameGpuMsLo, r.frameGpuMsHi, r.pareto ? "\non the Pareto front" : "");
+        if (clicked) apply(hovered, state, session);
+    }
+    ImGui::End();
+}
+
+}  // namespace dw::ui
