@@ -399,6 +399,9 @@ int runGui(const GuiOptions& options, Scene scene) {
                               : options.ab == "reference" ? ui::AbSource::Reference
                                                           : ui::AbSource::Preset;
             if (state.ab.source == ui::AbSource::Preset) state.ab.preset = options.ab.substr(7);
+            state.ab.display = options.abDisplay == "difference" ? ui::AbDisplay::Difference
+                               : options.abDisplay == "flip"     ? ui::AbDisplay::Flip
+                                                                 : ui::AbDisplay::Split;
         }
         RenderDocCapture renderdoc = RenderDocCapture::attach(false);
         state.renderdocAvailable = renderdoc.available();

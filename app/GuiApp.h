@@ -27,6 +27,7 @@ struct GuiOptions {
     std::string view;           // the output the viewport shows at start ("final" when empty)
     std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
     std::string ab;             // the A/B split at start: "", pinned, reference, preset=NAME
+    std::string abDisplay;      // and what B's side shows: "" (split), split, difference, flip
     bool record = false;        // start with timing capture on (every frame rendered and timed)
     bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };

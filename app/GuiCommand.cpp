@@ -20,7 +20,8 @@ int runGuiCommand(int argc, char** argv) {
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--layout FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
-                     "                          [--dump-knobs FILE] [--export-dir DIR] [--ab pinned|reference|preset=NAME]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
+                     "                          [--ab pinned|reference|preset=NAME [--ab-display split|difference|flip]]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
@@ -48,6 +49,8 @@ int runGuiCommand(int argc, char** argv) {
                      "               reference (the CPU reference, F9), or preset=NAME (a built-in preset or a preset\n"
                      "               file over the current settings); with --layout-out the report holds its numbers\n"
                      "               and the two images are written beside it (FILE.a.png, FILE.b.png)\n"
+                     "  --ab-display what B's side shows: split (B itself, the default), difference (|A-B| heat map)\n"
+                     "               or flip (FLIP heat map)\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -74,6 +77,10 @@ int runGuiCommand(int argc, char** argv) {
     o.ab = cl.value("--ab").value_or("");
     if (!o.ab.empty() && o.ab != "pinned" && o.ab != "reference" && (o.ab.rfind("preset=", 0) != 0 || o.ab.size() == 7))
         throw UsageError("--ab takes pinned, reference or preset=NAME, not '" + o.ab + "'");
+    o.abDisplay = cl.value("--ab-display").value_or("");
+    if (!o.abDisplay.empty() && o.abDisplay != "split" && o.abDisplay != "difference" && o.abDisplay != "flip")
+        throw UsageError("--ab-display takes split, difference or flip, not '" + o.abDisplay + "'");
+    if (!o.abDisplay.empty() && o.ab.empty()) throw UsageError("--ab-display needs --ab");
     o.record = cl.flag("--record");
     o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "renderer/bench/Bootstrap.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/knobs/Preset.h"
 #include "ui/Widgets.h"
 
@@ -30,6 +31,10 @@ const char* displayName(AbDisplay d) {
     }
     return "";
 }
+
+// Pixel level: B's pixels crisp squares, as drawImageView draws A's.
+void bindNearest(const ImDrawList*, const ImDrawCmd* cmd) { static_cast<const gl::Sampler*>(cmd->UserCallbackData)->bind(0); }
+void unbindNearest(const ImDrawList*, const ImDrawCmd*) { gl::Sampler::unbind(0); }
 
 ImTextureID textureOf(unsigned texture) { return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture)); }
 
@@ -133,7 +138,10 @@ bool drawAbSplit(UiState& state, ImVec2 boxMin, ImVec2 boxSize, const ImagePlace
     // B's part (image rows bottom-up, as drawImageView draws A: v from 1 to 0).
     const unsigned right = ab.display == AbDisplay::Split ? ab.textureB : ab.heatTexture;
     dl->PushClipRect(boxMin, boxMax, true);
+    const bool crisp = state.nearestSampler && ab.width > 0 && placed.size.x / static_cast<float>(ab.width) >= 2.0f;
+    if (crisp) dl->AddCallback(bindNearest, const_cast<gl::Sampler*>(state.nearestSampler));
     dl->AddImage(textureOf(right), ImVec2(dx, y0), ImVec2(x1, y1), ImVec2(ab.divider, 1.0f), ImVec2(1.0f, 0.0f));
+    if (crisp) dl->AddCallback(unbindNearest, nullptr);
     const float top = std::max(y0, boxMin.y), bottom = std::min(y1, boxMax.y);
     dl->AddLine(ImVec2(dx, top), ImVec2(dx, bottom), IM_COL32(255, 255, 255, 230), 2.0f);
     const float mid = 0.5f * (top + bottom);
