@@ -9,6 +9,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/knobs/Preset.h"
+#include "renderer/passes/ReferencePass.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -95,11 +96,73 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
     return true;
 }
 
+bool ParetoPanel::startSweep(const std::string& knob, UiState& state, RenderSession& session) {
+    try {
+        FloatImage baseline;
+        std::string name = "the current settings' image";
+        const ReferencePass* ref = session.pipeline().pass<ReferencePass>();
+        if (ref && ref->hasReference() && session.pipeline().outputs().find("reference.final")) {
+            baseline = session.readRaw("reference.final");
+            name = "the CPU reference";
+        }
+        const FloatImage current = session.readRaw("final");
+        if (baseline.width != current.width || baseline.height != current.height) {
+            baseline = current;
+            name = "the current settings' image";
+        }
+        state.sweep.start(session.knobs(), knob, std::move(baseline), name);
+        sweepShown = false;
+        error.clear();
+        return true;
+    } catch (const std::exception& e) {
+        error = "quick sweep of " + knob + ": " + e.what();
+        return false;
+    }
+}
+
 void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     if (!beginPanel(title, open)) {
         ImGui::End();
         return;
     }
+    // The speed/quality knob last pointed at in the Parameters panel (its rows are noted as knob.<name>).
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    for (const auto& [name, item] : drawnItems())
+        if (name.rfind("knob.", 0) == 0 && item.frame >= ImGui::GetFrameCount() - 1 && mouse.x >= item.x &&
+            mouse.x < item.x + item.w && mouse.y >= item.y && mouse.y < item.y + item.h)
+            if (const auto id = session.knobs().find(name.substr(5)); id && session.knobs().spec(*id).tradeoff)
+                sweepKnob = name.substr(5);
+    if (state.sweep.running()) {
+        char label[128];
+        std::snprintf(label, sizeof(label), "sweeping %s: %.0f%%", state.sweep.knob().c_str(), state.sweep.progress() * 100.0);
+        ImGui::ProgressBar(static_cast<float>(state.sweep.progress()), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("cancel")) state.sweep.cancel();
+    } else {
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
+        if (ImGui::BeginCombo("##sweep_knob", sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str())) {
+            for (const KnobSpec& s : session.knobs().specs())
+                if (s.tradeoff && ImGui::Selectable(s.name.c_str(), s.name == sweepKnob)) sweepKnob = s.name;
+            ImGui::EndCombo();
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here");
+        ImGui::SameLine();
+        ImGui::BeginDisabled(sweepKnob.empty());
+        if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
+        ImGui::EndDisabled();
+        noteItem("pareto.sweep");
+        if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
+    }
+    if (!sweepShown && state.sweep.done()) {
+        // The finished sweep replaces the table on show.
+        table = state.sweep.table();
+        loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
+        group = 0;
+        applied.clear();
+        sweepShown = true;
+    }
+    if (!loadedPath.empty()) ImGui::TextDisabled("%s", loadedPath.c_str());
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 4.0f, 60.0f));
     const bool enter = ImGui::InputText("##csv", path, sizeof(path), ImGuiInputTextFlags_EnterReturnsTrue);
     noteItem("pareto.path");
@@ -181,7 +244,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         dl->AddLine(ImVec2(sx(a.frameGpuMs), sy(a.error)), ImVec2(sx(b.frameGpuMs), sy(b.error)), IM_COL32(255, 170, 60, 160), 1.5f);
     }
     // Points with both intervals; the nearest within 8 px is hovered.
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    // (mouse: the cursor, read above)
     hovered = -1;
     float best = 64.0f;
     for (int i : rows) {

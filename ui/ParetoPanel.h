@@ -25,6 +25,12 @@ struct ParetoPanel {
     std::string applied;      // what the last click applied
     int group = 0;            // which (camera, metric, buffer) group is plotted
     int hovered = -1;         // the row under the mouse (index into table.rows)
+    std::string sweepKnob;    // the quick sweep's knob: the speed/quality knob last pointed at in Parameters
+    bool sweepShown = true;   // the finished sweep's table is on show
+
+    // Starts a quick sweep of `knob` (UiState::sweep) against the CPU
+    // reference of the view when one is shown, else the current image.
+    bool startSweep(const std::string& knob, UiState& state, RenderSession& session);
 
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
     // Reads `file`; on an error keeps the table loaded before and says why.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/bench/QuickSweep.h"
 #include "renderer/graph/ChangeCost.h"
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/FiniteCheck.h"
@@ -263,6 +264,10 @@ struct UiState {
     // The cost of a change: the timings panel starts it, the frame loop
     // renders its frames one a UI frame (ChangeMeasurement).
     ChangeMeasurement measure;
+    // The Pareto panel's quick sweep of one knob: the frame loop renders its
+    // frames (one a UI frame, before the view's own, so the viewport never
+    // shows a swept value).
+    QuickSweep sweep;
     // Timer results still in flight or a measurement running: the frame loop
     // must keep polling (never sleep waiting for input) until this is false.
     bool timingsPending = false;

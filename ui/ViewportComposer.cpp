@@ -43,6 +43,11 @@ void ViewportComposer::render(UiState& state) {
         else
             measuring = state.measure.prepareFrame(session_.knobs());
     }
+    // A quick sweep's frame first; the view renders again after it.
+    if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring) {
+        state.sweep.step(session_);
+        state.forceRender = true;
+    }
     if (state.ab.pinRequest) {
         state.ab.pinRequest = false;
         pin(state);

@@ -1017,4 +1017,17 @@ TEST(Gui, TheParetoPanelPlotsATradeoffCsvAndAClickAppliesAPointsSettings) {
     EXPECT_FALSE(panel.load(bad.string()));
     EXPECT_NE(panel.error.find("not-tradeoff.csv"), std::string::npos) << panel.error;
     EXPECT_EQ(panel.table.rows.size(), 5u);
+
+    // The quick sweep of a speed/quality knob: run (here step by step, as the
+    // frame loop does), its table then plotted in place of the file's.
+    session->render({{"final"}});
+    ASSERT_TRUE(panel.startSweep("gbuffer.normal_encoding", state, *session)) << panel.error;
+    int steps = 0;
+    while (state.sweep.step(*session)) ASSERT_LT(++steps, 20);
+    imgui.frame(draw);
+    EXPECT_EQ(panel.table.axes, (std::vector<std::string>{"gbuffer.normal_encoding"}));
+    EXPECT_EQ(panel.table.rows.size(), 3u);
+    EXPECT_NE(panel.loadedPath.find("quick sweep of gbuffer.normal_encoding"), std::string::npos) << panel.loadedPath;
+    EXPECT_NE(panel.loadedPath.find("the current settings' image"), std::string::npos) << panel.loadedPath;
+    EXPECT_EQ(session->knobs().format(*session->knobs().find("gbuffer.normal_encoding")), "kl16");
 }
