@@ -61,9 +61,11 @@ void ViewportComposer::render(UiState& state) {
     if (changed) {
         abFramesA_.clear();
         abFramesB_.clear();
+        abRenders_ = 0;
     }
-    const bool abMore = ab && !measuring &&
-                        (abFramesA_.size() < kAbFrames || (state.ab.source == AbSource::Preset && abFramesB_.size() < kAbFrames));
+    // Counted by attempts, not by frames that worked: a preset that does not
+    // render (or a failing frame) must not keep the window rendering.
+    const bool abMore = ab && !measuring && abRenders_ < kAbFrames;
     const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed || abMore;
     state.forceRender = false;
     // The probe's values describe the image they were read from: another
@@ -72,6 +74,7 @@ void ViewportComposer::render(UiState& state) {
     if (changed && !state.probe.hovering && !state.probe.pinned) state.probe = ProbeState{};
     if (needed) {
         lastSignature_ = signature;
+        if (ab) ++abRenders_;
         renderImages(state);
         ++state.framesRendered;
         if (ab && (signature != composedSignature_ || !state.ab.ready)) {

@@ -66,6 +66,7 @@ private:
     std::vector<double> pinnedMs_;
     std::string pinnedDescribe_;
     std::set<std::uint64_t> abFramesA_, abFramesB_;
+    size_t abRenders_ = 0;  // renders since the view last changed
     std::string composedSignature_;
     std::optional<Preset> preset_;
     std::string presetName_, presetError_;
