@@ -27,6 +27,8 @@ struct GuiOptions {
     std::string view;           // the output the viewport shows at start ("final" when empty)
     std::string resolution;     // full, 1/2, 1/4 or auto ("" : full)
     bool record = false;        // start with timing capture on (every frame rendered and timed)
+    std::string openRecord;     // an experiment record restored at start (scene, camera, knobs)
+    std::string saveRecord;     // the experiment record of the last frame, written at exit
     bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };
 

@@ -20,7 +20,8 @@ int runGuiCommand(int argc, char** argv) {
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--layout FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
-                     "                          [--dump-knobs FILE] [--export-dir DIR]\n"
+                     "                          [--dump-knobs FILE] [--export-dir DIR] [--open-record FILE]\n"
+                     "                          [--save-record FILE]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
                      "               knobs start at defaults, then the scene's settings, the preset, --set\n"
                      "               (again whenever another scene is opened in the window)\n"
@@ -29,7 +30,7 @@ int runGuiCommand(int argc, char** argv) {
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
                      "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
                      "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key [ctrl+]NAME', 'type TEXT', 'drop PATH',\n"
-                     "               'resize W H', 'ctrl down|up' (window pixels)\n"
+                     "               'resize W H', 'ctrl down|up' (window pixels), 'set knob=value'\n"
                      "  --layout-out after the last frame (with --frames) or when the window closes, write each\n"
                      "               open panel's rectangle, the window size, the probe, the scene and errors as JSON\n"
                      "  --layout     start from this layout.json instead of the saved one (also with --frames;\n"
@@ -44,6 +45,10 @@ int runGuiCommand(int argc, char** argv) {
                      "  --renderdoc  run under RenderDoc (starts again with librenderdoc.so preloaded,\n"
                      "               Debian package librenderdoc): Render > Capture frame or F11 saves a\n"
                      "               capture of the next frame to the export folder\n"
+                     "  --open-record restore an experiment record at start (scene, camera, knobs), as File > Open\n"
+                     "               record... does\n"
+                     "  --save-record at exit, write the experiment record of the last frame, as File > Save\n"
+                     "               record... does (`deferred-workbench replay FILE` measures it again)\n"
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
@@ -68,6 +73,8 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.resolution.empty() && o.resolution != "full" && o.resolution != "1/2" && o.resolution != "1/4" && o.resolution != "auto")
         throw UsageError("--resolution takes full, 1/2, 1/4 or auto, not '" + o.resolution + "'");
     o.record = cl.flag("--record");
+    o.openRecord = cl.value("--open-record").value_or("");
+    o.saveRecord = cl.value("--save-record").value_or("");
     o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
@@ -78,6 +85,8 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.screenshot.empty()) writes.emplace_back("--screenshot", o.screenshot);
     if (!o.layoutOut.empty()) writes.emplace_back("--layout-out", o.layoutOut);
     if (!o.dumpKnobs.empty()) writes.emplace_back("--dump-knobs", o.dumpKnobs);
+    if (!o.saveRecord.empty()) writes.emplace_back("--save-record", o.saveRecord);
+    if (!o.openRecord.empty()) reads.emplace_back("--open-record", o.openRecord);
     if (!o.events.empty()) reads.emplace_back("--events", o.events);
     if (!o.layoutIn.empty()) reads.emplace_back("--layout", o.layoutIn);
     CommandLine::requireDistinctFiles(writes, reads);

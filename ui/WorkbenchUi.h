@@ -10,6 +10,7 @@
 #include "ui/PanelLayout.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ProbePanel.h"
+#include "ui/RecordDialog.h"
 #include "ui/ReferenceControls.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
@@ -54,6 +55,7 @@ private:
     PresetsPanel presets_;
     MessagesPanel messages_;
     ReferenceControls reference_;
+    RecordDialog record_;
 };
 
 }  // namespace dw::ui

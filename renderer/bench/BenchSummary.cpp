@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/Error.h"
+#include "renderer/record/ExperimentRecord.h"
 
 namespace dw {
 
@@ -257,7 +258,7 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
     return out;
 }
 
-std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
+nlohmann::ordered_json benchResultsJson(const BenchResults& results, const BenchSummary& summary) {
     Json machine = Json::object(), settings = Json::object();
     for (const auto& [k, v] : results.machine) machine[k] = v;
     for (const auto& [k, v] : results.settings) settings[k] = v;
@@ -310,9 +311,12 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
                         : Json{{"axis", summary.baseline.axis},
                                {"value", summary.baseline.value},
                                {"series", summary.baseline.series}};
-    const Json root = {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
-                       {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
-    return root.dump(2) + "\n";
+    return {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
+            {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
+}
+
+std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
+    return ExperimentRecord::forBenchResults(results, summary).json();
 }
 
 void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary) {
