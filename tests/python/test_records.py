@@ -134,6 +134,21 @@ class RecordTest(unittest.TestCase):
         self.assertIn("nested deeper", r.stderr)
         r = run("replay", os.path.join(self.tmp.name, "absent.json"))
         self.assertEqual(r.returncode, 2)
+        # Fields of the wrong type or shape: refused with the record version and the field, never a crash.
+        broken = {
+            "size-text.json": lambda d: d.__setitem__("size", "64x36"),
+            "camera-path.json": lambda d: d.__setitem__("camera_path", {"mode": 3}),
+            "timings.json": lambda d: d["results"].__setitem__("timings", [{"name": "frame", "gpu_ms": "fast"}]),
+            "bench-no-grid.json": lambda d: d.__setitem__("command", "bench"),
+            "tradeoff.json": lambda d: d.__setitem__("command", "tradeoff"),
+            "v1-bench.json": lambda d: d.update({"version": 1, "command": "bench"}),
+        }
+        for name, change in broken.items():
+            r = run("replay", self.variant(name, change))
+            self.assertEqual(r.returncode, 2, name + ": " + r.stdout + r.stderr)
+            self.assertIn("refused: " + os.path.join(self.tmp.name, name), r.stderr)
+        r = run("replay", self.variant("tradeoff2.json", lambda d: d.__setitem__("command", "tradeoff")))
+        self.assertIn("unknown command 'tradeoff' (render, bench or gui)", r.stderr)
 
     def test_a_version_1_record_still_replays(self):
         # tests/records/v1-render-default.json: what render --record wrote before version 2.
