@@ -275,6 +275,8 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
         list.back()["gpu_ms"][s.series] = rounded(s.gpuMs);
         list.back()["cpu_ms"][s.series] = rounded(s.cpuMs);
     }
+    std::map<std::pair<int, std::string>, std::vector<double>> gpuOf;
+    for (const auto& s : results.samples) gpuOf[{s.config, s.series}].push_back(s.gpuMs);
     Json configs = Json::array();
     for (const auto& c : results.configs) {
         Json knobs = Json::object();
@@ -287,7 +289,14 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
         if (r) {
             const BenchSeriesStats* f = r->frame();
             j["frames"] = f ? f->gpu.count : 0;
-            for (const auto& s : r->series) series[s.series] = {{"gpu_ms", msJson(s.gpu)}, {"cpu_ms", msJson(s.cpu)}};
+            for (const auto& s : r->series) {
+                // The GPU median's bootstrap 95% interval (the records' "timings with intervals").
+                Json gpu = msJson(s.gpu);
+                const MedianInterval m = bootstrapMedian(gpuOf[{c.config.index, s.series}], 1000,
+                                                         12345 + static_cast<std::uint64_t>(c.config.index));
+                if (m.valid()) gpu["ci95"] = {rounded(m.low), rounded(m.high)};
+                series[s.series] = {{"gpu_ms", gpu}, {"cpu_ms", msJson(s.cpu)}};
+            }
             j["series"] = series;
             j["baseline_config"] = r->baseline >= 0 ? Json(r->baseline) : Json(nullptr);
             if (r->baseline == r->config && r->find(summary.baseline.series)) {

@@ -69,7 +69,8 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
 
 // bench's results: {"tool", "machine", "settings", "axes", "baseline"
 // ({axis, value, series} or null), "configs": [{config, size, width, height,
-// lights, knobs, lpp, lpp_lit, frames, series: {name: {gpu_ms, cpu_ms}},
+// lights, knobs, lpp, lpp_lit, frames, series: {name: {gpu_ms: {median, min,
+// max, mean, frames, ci95 (the median's bootstrap 95% interval)}, cpu_ms}},
 // ratio, ci95, baseline_config, stats: {pass: line} (when recorded), samples:
 // [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms: {...}}]}]}: the
 // `results` of a bench experiment record (renderer/record/ExperimentRecord).

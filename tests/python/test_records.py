@@ -232,7 +232,13 @@ class RecordTest(unittest.TestCase):
         self.assertEqual([c["knobs"]["ssao.samples"] for c in configs], ["4", "8"])
         for c in configs:
             self.assertEqual(len(c["samples"]), 3)
-            self.assertIn("median", c["series"]["frame"]["gpu_ms"])
+            gpu = c["series"]["frame"]["gpu_ms"]
+            frames = sorted(x["gpu_ms"]["frame"] for x in c["samples"])
+            self.assertAlmostEqual(gpu["median"], frames[1], places=3)
+            self.assertLessEqual(gpu["ci95"][0], gpu["median"])
+            self.assertGreaterEqual(gpu["ci95"][1], gpu["median"])
+            self.assertGreaterEqual(gpu["ci95"][0], frames[0] - 1e-4)
+            self.assertLessEqual(gpu["ci95"][1], frames[2] + 1e-4)
 
         # Replay: the same grid again, each configuration's frame median old -> new.
         again = os.path.join(self.tmp.name, "b-again.json")
