@@ -423,7 +423,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
         [](const std::string& scene, std::vector<std::pair<int, int>> sizes, std::vector<int> lights,
            std::optional<py::dict> sweep, std::optional<std::string> preset, std::optional<py::dict> settings,
            int frames, int warmup, int block, int seed, std::optional<std::string> csv, std::optional<std::string> json,
-           const std::string& ratioOf, int resamples) {
+           const std::string& ratioOf, int resamples, int orbit, bool walkthrough) {
             BenchOptions o;
             o.run.scene = scene;
             o.run.setPreset(preset.value_or(""));
@@ -454,6 +454,9 @@ PYBIND11_MODULE(deferred_workbench, m) {
             o.block = block;
             o.seed = static_cast<std::uint32_t>(seed);
             if (resamples < 100) throw Error("bench: resamples must be at least 100");
+            if (orbit < 0 || (orbit > 0 && walkthrough)) throw Error("bench: orbit takes a pose count >= 0, not with walkthrough");
+            o.orbit = orbit;
+            o.walkthrough = walkthrough;
             BenchResults results;
             ExperimentRecord record;
             {
@@ -468,11 +471,11 @@ PYBIND11_MODULE(deferred_workbench, m) {
         py::arg("sweep") = py::none(), py::arg("preset") = py::none(), py::arg("settings") = py::none(),
         py::arg("frames") = 10, py::arg("warmup") = 1, py::arg("block") = 1, py::arg("seed") = 1,
         py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("ratio_of") = "frame",
-        py::arg("resamples") = 2000,
+        py::arg("resamples") = 2000, py::arg("orbit") = 0, py::arg("walkthrough") = false,
         "bench's grid (sizes x lights x sweep {knob: [values]}) in this process. Returns the experiment record\n"
-        "bench --json writes, as a dict: scene, knobs, seeds, grid, build, gl, host, and results (configs with\n"
+        "bench --json writes, as a dict: scene, knobs, seeds, camera path, grid, build, gl, host, and results (configs with\n"
         "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and json=PATH also write\n"
-        "bench --csv's and --json's files.");
+        "bench --csv's and --json's files; orbit=N and walkthrough=True move the camera as bench's options do.");
 
     m.def("compare", &compareArrays, py::arg("reference"), py::arg("test"), py::arg("hdr") = false,
           py::arg("warn_threshold") = 1e-6, py::arg("fail_threshold") = 1e-6, py::arg("maps") = false,

@@ -278,6 +278,9 @@ class SessionTest(unittest.TestCase):
         header = lines[0].split(",")
         first = dict(zip(header, lines[1].split(",")))
         self.assertAlmostEqual(float(first["gpu_ms"]), configs[0]["samples"][0]["gpu_ms"][first["pass"]], places=3)
+        orbit = dw.bench(scene="default", sizes=[(32, 18)], frames=2, warmup=0, orbit=2)
+        self.assertEqual(orbit["camera_path"], {"mode": "orbit", "orbit_poses": 2})
+        self.assertEqual(orbit["results"]["settings"]["camera"], "orbit 2")
         with self.assertRaises(dw.KnobError):
             dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
         with self.assertRaises(dw.KnobError):
