@@ -257,8 +257,18 @@ int runReplayCommand(int argc, char** argv) {
     for (const auto& [k, v] : buildFields())
         for (const auto& [ok, ov] : old.build)
             if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
-    if (old.command == "bench") return replayBench(old, sets, newRecord);
-    return replayRender(old, sets, newRecord);
+    // What cannot be restored (a scene file gone, a knob value this build's
+    // checks refuse as a whole configuration) refuses the record too.
+    try {
+        if (old.command == "bench") return replayBench(old, sets, newRecord);
+        return replayRender(old, sets, newRecord);
+    } catch (const GlUnsupportedError&) {
+        throw;
+    } catch (const Error& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "refused: %s: cannot restore it: %s\n", path.c_str(), e.what());
+        return 2;
+    }
 }
 
 }  // namespace dw

@@ -147,6 +147,16 @@ class RecordTest(unittest.TestCase):
             r = run("replay", self.variant(name, change))
             self.assertEqual(r.returncode, 2, name + ": " + r.stdout + r.stderr)
             self.assertIn("refused: " + os.path.join(self.tmp.name, name), r.stderr)
+        # A scene file that is gone: named as changed (unreadable), and the record cannot be restored.
+        gone = self.variant("gone.json", lambda d: d["scene"].update(
+            {"spec": os.path.join(self.tmp.name, "gone-scene.json"),
+             "files": [{"path": os.path.join(self.tmp.name, "gone-scene.json"), "sha256": "ab" * 32}]}))
+        r = run("replay", gone)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("scene file changed: " + os.path.join(self.tmp.name, "gone-scene.json") + " (sha256 abababab", r.stdout)
+        self.assertIn("unreadable", r.stdout)
+        self.assertIn("cannot restore it", r.stderr)
+        self.assertIn("gone-scene.json", r.stderr)
         r = run("replay", self.variant("tradeoff2.json", lambda d: d.__setitem__("command", "tradeoff")))
         self.assertIn("unknown command 'tradeoff' (render, bench or gui)", r.stderr)
 
