@@ -412,9 +412,8 @@ int runMerge(int argc, char** argv) {
             continue;
         }
         // Bounded depth like every JSON the workbench reads; numbers may be any double.
-        const nlohmann::json whole = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
-        // An experiment record holds bench's summary as its results; an older JSON is the summary itself.
-        const nlohmann::json& j = whole.contains("results") && whole["results"].is_object() ? whole["results"] : whole;
+        const nlohmann::json file = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
+        const nlohmann::json& j = benchSummaryOf(file);  // a record's results, or an older summary
         const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
         // Every configuration the shard's JSON lists must be in its CSV.
         if (j.contains("configs") && j["configs"].is_array())

@@ -324,6 +324,11 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
             {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
 }
 
+const nlohmann::json& benchSummaryOf(const nlohmann::json& file) {
+    if (file.is_object() && file.contains("results") && file["results"].is_object()) return file["results"];
+    return file;
+}
+
 std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
     return ExperimentRecord::forBenchResults(results, summary).json();
 }

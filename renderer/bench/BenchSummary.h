@@ -75,6 +75,9 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
 // [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms: {...}}]}]}: the
 // `results` of a bench experiment record (renderer/record/ExperimentRecord).
 nlohmann::ordered_json benchResultsJson(const BenchResults& results, const BenchSummary& summary);
+// The summary a bench JSON holds: an experiment record's `results`, or the
+// file itself when it was written before records (for bench merge's readers).
+const nlohmann::json& benchSummaryOf(const nlohmann::json& file);
 // An experiment record of these results alone (bench merge's JSON; `bench`
 // writes ExperimentRecord::forBench, which adds the grid, knobs and files).
 std::string benchJson(const BenchResults& results, const BenchSummary& summary);

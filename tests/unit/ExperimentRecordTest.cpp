@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "renderer/Error.h"
+#include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"
@@ -172,4 +173,11 @@ TEST(SceneFiles, AGltfNamedByASceneJsonBringsItsBuffersAndImages) {
     EXPECT_EQ(names, (std::vector<std::string>{"scene.json", "model/a.gltf", "model/a.bin", "model/t.png"}));
     EXPECT_EQ(files[2].sha256, sha256Hex(std::string(36, '\0').data(), 36));
     EXPECT_EQ(sha256Hex("abc", 3), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+TEST(ExperimentRecord, BenchMergeReadsTheSummaryOfARecordAndOfAnOlderJson) {
+    const nlohmann::json record = {{"format", "deferred-workbench record"}, {"results", {{"configs", {1, 2}}}}};
+    EXPECT_EQ(benchSummaryOf(record)["configs"].size(), 2u);
+    const nlohmann::json older = {{"tool", "deferred-workbench bench"}, {"configs", {1}}};
+    EXPECT_EQ(&benchSummaryOf(older), &older);
 }
