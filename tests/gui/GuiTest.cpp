@@ -914,4 +914,3 @@ TEST(Gui, UnderXvfbTheTransparencySampleCountsShowAsAHeatMapWithItsColourBar) {
     EXPECT_GT(warm, 200);
     EXPECT_GT(coldPixels, 2000);
 }
-
