@@ -140,7 +140,7 @@ ExperimentRecord ExperimentRecord::forBenchResults(const BenchResults& results, 
     r.sceneSource = r.sceneSpec;
     r.frames = std::atoi(fieldOr(results.settings, "frames", "0").c_str());
     r.warmup = std::atoi(fieldOr(results.settings, "warmup_per_switch", "0").c_str());
-    r.seeds = {{"lights", fieldOr(results.settings, "seed", "1")}, {"bootstrap", "12345"}};
+    r.seeds = {{"lights", fieldOr(results.settings, "seed", "1")}, {"bootstrap", std::to_string(kBootstrapSeed)}};
     if (!results.configs.empty()) {
         r.width = results.configs.front().config.width;
         r.height = results.configs.front().config.height;
@@ -187,7 +187,7 @@ ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Sc
     KnobRegistry knobs = RunConfig::declaredKnobs();
     o.run.applyKnobs(knobs, scene);
     r.knobs = knobFields(knobs);
-    r.seeds = {{"lights", std::to_string(o.seed)}, {"bootstrap", "12345"}};
+    r.seeds = {{"lights", std::to_string(o.seed)}, {"bootstrap", std::to_string(kBootstrapSeed)}};
     r.frames = o.frames;
     r.warmup = o.warmup;
     if (!o.grid.sizes.empty()) std::tie(r.width, r.height) = o.grid.sizes.front();
