@@ -38,6 +38,7 @@
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/knobs/KnobRegistry.h"
+#include "renderer/record/ExperimentRecord.h"
 
 extern char** environ;
 
@@ -411,7 +412,8 @@ int runMerge(int argc, char** argv) {
             continue;
         }
         // Bounded depth like every JSON the workbench reads; numbers may be any double.
-        const nlohmann::json j = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
+        const nlohmann::json file = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
+        const nlohmann::json& j = benchSummaryOf(file);  // a record's results, or an older summary
         const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
         // Every configuration the shard's JSON lists must be in its CSV.
         if (j.contains("configs") && j["configs"].is_array())
@@ -662,6 +664,7 @@ int runBenchCommand(int argc, char** argv) {
 
     // Everything that can fail without GL fails here: knobs, values, the scene, the baseline.
     o.baseline = baselineSpec;
+    const RecordedBench recorded{o, ratioOf, resamples};  // for the record (--json) the run writes
     BenchRunner runner(std::move(o));
     BenchBaseline baseline = runner.baseline();
     baseline.series = ratioOf;
@@ -693,7 +696,10 @@ int runBenchCommand(int argc, char** argv) {
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
                                      : std::string()));
     std::fflush(stdout);
-    writeEach({[&] { results.writeCsv(csv); }, [&] { writeBenchJson(json, results, summary); }});
+    writeEach({[&] { results.writeCsv(csv); }, [&] {
+                  writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(),
+                                 "bench JSON");
+              }});
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     const int plotted = plot ? writePlot(csv, *plot, plotW, plotH) : 0;
     // A pass can be known and still not run (switched off, culled, a span

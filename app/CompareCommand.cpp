@@ -17,6 +17,7 @@
 #include "renderer/io/ImageIO.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ComparisonGates.h"
+#include "renderer/metrics/ComparisonHeatMap.h"
 #include "renderer/metrics/HeatMap.h"
 #include "renderer/metrics/ImageComparison.h"
 
@@ -388,25 +389,12 @@ int compare(int argc, char** argv) {
         std::printf(")\n");
     }
     if (heatMap) {
-        if (c.flip) {
-            writeImage(*heatMap, HeatMap::colour(c.flip->map, 0, 0.0, 1.0));
+        writeImage(*heatMap, ComparisonHeatMap::of(c));
+        if (c.flip)
             std::printf("wrote %s (FLIP through Turbo: 0 dark blue .. 1 dark red)\n", heatMap->c_str());
-        } else {
-            // No FLIP: the largest channel difference per pixel over [0, max].
-            FloatImage m = c.absoluteDifference;
-            FloatImage one;
-            one.width = m.width;
-            one.height = m.height;
-            one.channels = 1;
-            for (size_t p = 0; p < static_cast<size_t>(m.width) * m.height; ++p) {
-                float v = 0;
-                for (int k = 0; k < m.channels; ++k) v = std::fmax(v, m.pixels[p * static_cast<size_t>(m.channels) + static_cast<size_t>(k)]);
-                one.pixels.push_back(v);
-            }
-            const double top = c.difference.overall.max > 0 ? c.difference.overall.max : 1.0;
-            writeImage(*heatMap, HeatMap::colour(one, 0, 0.0, top));
-            std::printf("wrote %s (largest |difference| of the channels through Turbo: 0 .. %g)\n", heatMap->c_str(), top);
-        }
+        else
+            std::printf("wrote %s (largest |difference| of the channels through Turbo: 0 .. %g)\n", heatMap->c_str(),
+                        ComparisonHeatMap::top(c));
     }
     if (json) {
         writeFileAtomically(*json, reportJson(inA, a, inB, b, c, gates, verdict, reasons).dump(2) + "\n");

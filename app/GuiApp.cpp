@@ -26,6 +26,7 @@
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
+#include "ui/RecordDialog.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/RenderSession.h"
@@ -417,6 +418,8 @@ int runGui(const GuiOptions& options, Scene scene) {
                                 0.0);
         }
         int capturesSeen = 0;
+        if (!options.openRecord.empty() && !ui::openRecord(state, session, options.openRecord))
+            throw Error(state.log.banner() ? state.log.banner()->text : "cannot open record " + options.openRecord);
         ui::WorkbenchUi ui;
         if (!options.layoutIn.empty()) loadLayout(options.layoutIn, ui, state, true);
         else if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
@@ -454,6 +457,13 @@ int runGui(const GuiOptions& options, Scene scene) {
                 }
             }
             for (const auto& f : in.drops) droppedFiles().push_back(f);
+            for (const auto& a : in.sets) {
+                try {
+                    session.knobs().applyAssignment(a);
+                } catch (const std::exception& e) {
+                    state.log.error(e.what(), state.time, "set knob");
+                }
+            }
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             state.keyPresses = inputQueue().feed(ImGui::GetIO());
@@ -553,6 +563,11 @@ int runGui(const GuiOptions& options, Scene scene) {
             std::error_code ec;
             fs::create_directories(configDir(), ec);
             saveLayout(layoutPath, ui, state);
+        }
+        if (!options.saveRecord.empty()) {
+            if (!ui::saveRecord(state, session, options.saveRecord))
+                throw Error(state.log.banner() ? state.log.banner()->text : "cannot save record " + options.saveRecord);
+            if (scripted) std::printf("wrote %s\n", options.saveRecord.c_str());
         }
         if (!options.dumpKnobs.empty()) {
             session.writeKnobValues(options.dumpKnobs);

@@ -29,6 +29,8 @@ struct GuiOptions {
     std::string ab;             // the A/B split at start: "", pinned, reference, preset=NAME
     std::string abDisplay;      // and what B's side shows: "" (split), split, difference, flip
     bool record = false;        // start with timing capture on (every frame rendered and timed)
+    std::string openRecord;     // an experiment record restored at start (scene, camera, knobs)
+    std::string saveRecord;     // the experiment record of the last frame, written at exit
     bool renderdoc = false;     // the process runs under RenderDoc (gui --renderdoc relaunched it so)
 };
 

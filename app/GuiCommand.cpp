@@ -20,6 +20,7 @@ int runGuiCommand(int argc, char** argv) {
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--layout FILE]\n"
                      "                          [--view OUTPUT] [--resolution full|1/2|1/4|auto] [--record] [--renderdoc]\n"
+                     "                          [--open-record FILE] [--save-record FILE]\n"
                      "                          [--dump-knobs FILE] [--export-dir DIR]\n"
                      "                          [--ab pinned|reference|preset=NAME [--ab-display split|difference|flip]]\n"
                      "  --scene, --preset, --set, --size as in render: --scene wins over the preset's scene;\n"
@@ -30,12 +31,16 @@ int runGuiCommand(int argc, char** argv) {
                      "  --screenshot with --frames: save the window to a PNG after the last frame\n"
                      "  --events     with --frames: replay input, one action a line: '<frame> move X Y', 'click X Y',\n"
                      "               'drag X0 Y0 X1 Y1 [N]', 'wheel D', 'key [ctrl+]NAME', 'type TEXT', 'drop PATH',\n"
-                     "               'resize W H', 'ctrl down|up' (window pixels)\n"
+                     "               'resize W H', 'ctrl down|up' (window pixels), 'set knob=value'\n"
                      "  --layout-out after the last frame (with --frames) or when the window closes, write each\n"
                      "               open panel's rectangle, the window size, the probe, the scene and errors as JSON\n"
                      "  --layout     start from this layout.json instead of the saved one (also with --frames;\n"
                      "               a file that cannot be used is reported and the default layout shown)\n"
                      "  --dump-knobs at exit, write every knob's value as name=value lines (as render does)\n"
+                     "  --open-record restore an experiment record at start (scene, camera, knobs), as File > Open\n"
+                     "               record... does\n"
+                     "  --save-record at exit, write the experiment record of the last frame, as File > Save\n"
+                     "               record... does (`deferred-workbench replay FILE` measures it again)\n"
                      "  --view NAME  the output the viewport shows at start (see list buffers)\n"
                      "  --resolution full|1/2|1/4|auto  render resolution against the viewport panel\n"
                      "               (auto: steps to keep the GPU frame under 100 ms). Default: full, but on a\n"
@@ -82,6 +87,8 @@ int runGuiCommand(int argc, char** argv) {
         throw UsageError("--ab-display takes split, difference or flip, not '" + o.abDisplay + "'");
     if (!o.abDisplay.empty() && o.ab.empty()) throw UsageError("--ab-display needs --ab");
     o.record = cl.flag("--record");
+    o.openRecord = cl.value("--open-record").value_or("");
+    o.saveRecord = cl.value("--save-record").value_or("");
     o.renderdoc = cl.flag("--renderdoc");
     cl.finish("gui");
     if (!cl.positional().empty()) throw UsageError("gui: unexpected argument '" + cl.positional()[0] + "'");
@@ -92,6 +99,8 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.screenshot.empty()) writes.emplace_back("--screenshot", o.screenshot);
     if (!o.layoutOut.empty()) writes.emplace_back("--layout-out", o.layoutOut);
     if (!o.dumpKnobs.empty()) writes.emplace_back("--dump-knobs", o.dumpKnobs);
+    if (!o.saveRecord.empty()) writes.emplace_back("--save-record", o.saveRecord);
+    if (!o.openRecord.empty()) reads.emplace_back("--open-record", o.openRecord);
     if (!o.events.empty()) reads.emplace_back("--events", o.events);
     if (!o.layoutIn.empty()) reads.emplace_back("--layout", o.layoutIn);
     CommandLine::requireDistinctFiles(writes, reads);

@@ -7,7 +7,7 @@
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "app/ExperimentRecord.h"
+#include "renderer/record/ExperimentRecord.h"
 #include "app/HeadlessGlContext.h"
 #include "app/RenderDocCapture.h"
 #include "renderer/Error.h"

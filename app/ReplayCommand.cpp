@@ -1,20 +1,30 @@
 // deferred-workbench replay RECORD.json: restores the state an experiment
-// record holds (scene, camera, every knob, size, frames, warm-up), renders and
-// measures again, and says what changed: the image (sha256 of its pixels), each
-// scene file, knob and build field by name, and each timing series old
-// against new with the bootstrap interval of the ratio of medians.
-// Exit 0: the image is identical; 1: it differs; 2: the record is refused.
+// record holds and measures again, and says what changed: each scene file,
+// knob and build field by name, and
+//   render / gui records: the image (sha256 of its pixels) and each timing
+//     series old against new with the bootstrap interval of the ratio of medians;
+//   bench records: the same grid (sizes, lights, sweep, frames, warm-up,
+//     seed, camera path) run again, per configuration its lights per pixel
+//     and the ratio series' GPU median old against new with the interval.
+// Exit 0: the same (render: the image is identical; bench: every
+// configuration is there, its lights per pixel equal, and no ratio's 95%
+// interval lies wholly outside [0.8, 1.25]); 1: it differs; 2: the record is
+// refused. docs/records.md.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "app/ExperimentRecord.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
+#include "renderer/record/BuildInfo.h"
+#include "renderer/record/ExperimentRecord.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -23,47 +33,16 @@ namespace {
 
 std::string shortHash(const std::string& h) { return h.empty() ? "unreadable" : h.substr(0, 16); }
 
-}  // namespace
+// A timing ratio (new / old) is reported as a change when its whole 95%
+// interval lies outside this band: run-to-run noise on a shared machine stays inside.
+constexpr double kTimingBandLow = 0.8, kTimingBandHigh = 1.25;
 
-int runReplayCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
-    if (cl.flag("--help")) {
-        std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
-                     "Restores the state of an experiment record (render --record), renders and measures again, and\n"
-                     "prints 'image: identical' or 'image: differs (sha256 old -> new)', each changed scene file,\n"
-                     "knob and build field by name, and old against new timings with the 95% interval of each ratio.\n"
-                     "  --record     write the new run's record too\n"
-                     "Exit 0: the image is identical; 1: it differs; 2: the record is refused.\n";
-        return 0;
-    }
-    const auto newRecord = cl.value("--record");
-    cl.finish("replay");
-    if (cl.positional().size() != 1) throw UsageError("replay needs one record file: deferred-workbench replay RECORD.json");
-    const std::string path = cl.positional()[0];
+bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingBandHigh || r.high < kTimingBandLow); }
 
-    ExperimentRecord old;
-    try {
-        old = ExperimentRecord::read(path);
-    } catch (const Error& e) {
-        std::fprintf(stderr, "refused: %s\n", e.what());
-        return 2;
-    }
-
-    // Scene files by name: the content the record measured against this one's.
-    for (const RecordedFile& f : old.sceneFiles) {
-        const std::string now = ExperimentRecord::sha256OfFile(f.path);
-        if (now != f.sha256)
-            std::printf("scene file changed: %s (sha256 %s -> %s)\n", f.path.c_str(), shortHash(f.sha256).c_str(),
-                        shortHash(now).c_str());
-    }
-    // Knobs: every recorded value restored; those this build lacks or adds are named.
+// The recorded knobs this build takes, as --set assignments; the others are named.
+std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
     const KnobRegistry declared = RunConfig::declaredKnobs();
-    RunConfig run;
-    run.scene = old.sceneSpec;
-    run.width = old.width;
-    run.height = old.height;
-    run.frames = old.frames;
-    run.warmup = old.warmup;
+    std::vector<std::string> sets;
     std::map<std::string, std::string> recorded(old.knobs.begin(), old.knobs.end());
     for (const auto& [name, value] : old.knobs) {
         if (!declared.find(name)) {
@@ -77,18 +56,24 @@ int runReplayCommand(int argc, char** argv) {
             std::printf("knob value refused by this build: %s\n", e.what());
             continue;
         }
-        run.sets.push_back(name + "=" + value);
+        sets.push_back(name + "=" + value);
     }
     for (size_t i = 0; i < declared.size(); ++i) {
         const std::string& name = declared.spec(static_cast<int>(i)).name;
         if (!recorded.count(name))
             std::printf("knob new in this build: %s (default %s)\n", name.c_str(), declared.format(static_cast<int>(i)).c_str());
     }
-    const RecordFields build = ExperimentRecord::buildFields();
-    for (const auto& [k, v] : build)
-        for (const auto& [ok, ov] : old.build)
-            if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
+    return sets;
+}
 
+int replayRender(const ExperimentRecord& old, const std::vector<std::string>& sets, const std::optional<std::string>& newRecord) {
+    RunConfig run;
+    run.scene = old.sceneSpec;
+    run.sets = sets;
+    run.width = old.width;
+    run.height = old.height;
+    run.frames = old.frames;
+    run.warmup = old.warmup;
     Scene loaded = loadScene(run.sceneSpec());
     auto context = HeadlessGlContext::create();
     RenderSession session;
@@ -107,7 +92,8 @@ int runReplayCommand(int argc, char** argv) {
         const FrameReport report = session.render(request);
         if (i == run.warmup) firstCounted = report.frameIndex;
     }
-    const ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
+    ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
+    now.command = old.command;
     if (newRecord) now.write(*newRecord);
 
     // Timings: old against new, per series both have, with the interval of new / old.
@@ -127,6 +113,162 @@ int runReplayCommand(int argc, char** argv) {
     }
     std::printf("image: differs (sha256 %s -> %s)\n", old.imageSha256.c_str(), now.imageSha256.c_str());
     return 1;
+}
+
+std::string fieldOrEmpty(const BenchFields& fields, const std::string& key) {
+    for (const auto& [k, v] : fields)
+        if (k == key) return v;
+    return "";
+}
+
+// One configuration of a bench record's results: its axes, lights per pixel
+// and the ratio series' GPU ms per counted frame.
+struct RecordedConfig {
+    std::string label;
+    double lpp = NAN;
+    std::vector<double> gpuMs;
+};
+
+std::string configLabel(const BenchConfig& c, const std::vector<std::string>& axes) {
+    std::string label = c.size() + ", " + std::to_string(c.lights) + " lights";
+    for (size_t k = 0; k < axes.size() && k < c.knobValues.size(); ++k) label += ", " + axes[k] + "=" + c.knobValues[k];
+    return label;
+}
+
+int replayBench(const ExperimentRecord& old, const std::vector<std::string>& sets, const std::optional<std::string>& newRecord) {
+    const RecordedBench& recorded = *old.bench;
+    const std::string series = recorded.ratioOf;
+    std::map<int, RecordedConfig> before;
+    const nlohmann::ordered_json& res = old.benchResults;
+    if (res.contains("configs") && res["configs"].is_array())
+        for (const auto& c : res["configs"]) {
+            if (!c.is_object() || !c.contains("config") || !c["config"].is_number_integer()) continue;
+            RecordedConfig& r = before[c["config"].get<int>()];
+            if (c.contains("lpp") && c["lpp"].is_number()) r.lpp = c["lpp"].get<double>();
+            if (c.contains("samples") && c["samples"].is_array())
+                for (const auto& s : c["samples"])
+                    if (s.is_object() && s.contains("gpu_ms") && s["gpu_ms"].is_object() && s["gpu_ms"].contains(series) &&
+                        s["gpu_ms"][series].is_number())
+                        r.gpuMs.push_back(s["gpu_ms"][series].get<double>());
+        }
+
+    RecordedBench again = recorded;
+    again.options.run.sets = sets;
+    BenchRunner runner(again.options);
+    auto context = HeadlessGlContext::create();
+    BenchResults results = runner.run();
+    results.machine.emplace_back("gl_platform", context->platform());
+    for (const auto& [k, v] : old.gl)
+        if (k == "renderer" && v != fieldOrEmpty(results.machine, "gl_renderer"))
+            std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(results.machine, "gl_renderer").c_str());
+    BenchBaseline baseline = runner.baseline();
+    baseline.series = series;
+    const BenchSummary summary = summarize(results, baseline, recorded.resamples);
+    if (newRecord) ExperimentRecord::forBench(again, runner.scene(), results, summary).write(*newRecord);
+
+    bool differs = false;
+    int lppDiffer = 0, moved = 0;
+    std::map<int, std::vector<double>> afterMs;
+    for (const auto& s : results.samples)
+        if (s.series == series) afterMs[s.config].push_back(s.gpuMs);
+    for (const auto& c : results.configs) {
+        const int i = c.config.index;
+        const std::string label = configLabel(c.config, results.knobAxes);
+        const auto it = before.find(i);
+        if (it == before.end()) {
+            std::printf("config %d (%s): not in the record\n", i, label.c_str());
+            differs = true;
+            continue;
+        }
+        const RecordedConfig& b = it->second;
+        const std::vector<double>& a = afterMs[i];
+        const RatioInterval r = bootstrapRatioOfMedians(a, b.gpuMs, recorded.resamples);
+        std::printf("config %d (%s): %s gpu median %9.3f -> %9.3f ms", i, label.c_str(), series.c_str(), median(b.gpuMs),
+                    median(a));
+        if (r.valid()) std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, timingMoved(r) ? " (moved)" : "");
+        const bool bothLpp = std::isfinite(b.lpp) && std::isfinite(c.lpp);
+        // The JSON holds LPP rounded to 6 significant digits.
+        const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(c.lpp)) ||
+                             (bothLpp && std::abs(b.lpp - c.lpp) <= 1e-5 * std::max(1.0, std::abs(b.lpp)));
+        if (bothLpp) std::printf("  lpp %.4f -> %.4f", b.lpp, c.lpp);
+        std::printf("\n");
+        if (!sameLpp) ++lppDiffer;
+        if (timingMoved(r)) ++moved;
+        before.erase(it);
+    }
+    for (const auto& [i, b] : before) {
+        std::printf("config %d: in the record, not run again\n", i);
+        differs = true;
+    }
+    differs = differs || lppDiffer > 0 || moved > 0;
+    if (!differs) {
+        std::printf("bench: the same (%zu configurations, lights per pixel equal, no %s timing outside [%.2f, %.2f] "
+                    "with its 95%% interval)\n",
+                    results.configs.size(), series.c_str(), kTimingBandLow, kTimingBandHigh);
+        return 0;
+    }
+    std::printf("bench: differs (%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
+                "[%.2f, %.2f])\n",
+                lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
+    return 1;
+}
+
+}  // namespace
+
+int runReplayCommand(int argc, char** argv) {
+    CommandLine cl(argc, argv, 2);
+    if (cl.flag("--help")) {
+        std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
+                     "Restores the state of an experiment record (render --record, bench --json, the window's\n"
+                     "record), measures again and names each changed scene file, knob and build field.\n"
+                     "  render/window records: prints 'image: identical' or 'image: differs (sha256 old -> new)'\n"
+                     "               and old against new timings with the 95% interval of each ratio\n"
+                     "  bench records: runs the same grid again and prints, per configuration, the ratio series'\n"
+                     "               GPU median old -> new with the interval of the ratio, and lights per pixel\n"
+                     "  --record     write the new run's record too\n"
+                     "Exit 0: the same (the image identical; for bench every configuration there, its lights per\n"
+                     "pixel equal and no timing ratio's interval wholly outside [0.8, 1.25]); 1: it differs;\n"
+                     "2: the record is refused. docs/records.md.\n";
+        return 0;
+    }
+    const auto newRecord = cl.value("--record");
+    cl.finish("replay");
+    if (cl.positional().size() != 1) throw UsageError("replay needs one record file: deferred-workbench replay RECORD.json");
+    const std::string path = cl.positional()[0];
+
+    ExperimentRecord old;
+    try {
+        old = ExperimentRecord::read(path);
+        if (old.bench && old.bench->merged)
+            throw FileError(path, "a bench merge record has no grid to run again; replay each shard's record");
+    } catch (const Error& e) {
+        std::fprintf(stderr, "refused: %s\n", e.what());
+        return 2;
+    }
+    if (old.readVersion < ExperimentRecord::kVersion)
+        std::printf("record version %d, read as version %d (it recorded no camera path, seeds or compiler flags)\n",
+                    old.readVersion, ExperimentRecord::kVersion);
+
+    // Scene files by name: the content the record measured against this one's.
+    for (const auto& [f, now] : old.changedFiles())
+        std::printf("scene file changed: %s (sha256 %s -> %s)\n", f.path.c_str(), shortHash(f.sha256).c_str(),
+                    shortHash(now).c_str());
+    const std::vector<std::string> sets = restoredKnobs(old);
+    for (const auto& [k, v] : buildFields())
+        for (const auto& [ok, ov] : old.build)
+            if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
+    // What cannot be restored (a scene file gone, a knob value this build's
+    // checks refuse as a whole configuration) refuses the record too.
+    try {
+        if (old.command == "bench") return replayBench(old, sets, newRecord);
+        return replayRender(old, sets, newRecord);
+    } catch (const GlUnsupportedError&) {
+        throw;
+    } catch (const Error& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "refused: %s: cannot restore it: %s\n", path.c_str(), e.what());
+        return 2;
+    }
 }
 
 }  // namespace dw

@@ -180,12 +180,17 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
             if (!(words >> w >> h) || w < 64 || h < 64 || w > 16384 || h > 16384)
                 throw bad("resize takes a width and a height from 64 to 16384");
             in.resize = std::make_pair(w, h);
+        } else if (what == "set") {
+            // A knob edited as the Parameters panel edits it (no widget positions to chase).
+            std::string assignment;
+            if (!(words >> assignment) || assignment.find('=') == std::string::npos) throw bad("set takes knob=value");
+            in.sets.push_back(assignment);
         } else if (what == "ctrl") {
             std::string state;
             if (!(words >> state) || (state != "down" && state != "up")) throw bad("ctrl takes down or up");
             in.ctrl = state == "down";
         } else {
-            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, type, drop, resize, ctrl)");
+            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, type, drop, resize, ctrl, set)");
         }
         std::string extra;
         if (words >> extra) throw bad("unexpected '" + extra + "'");
@@ -208,6 +213,7 @@ ScriptedFrameInput ScriptedInput::at(int frame) const {
         out.drops.insert(out.drops.end(), e.input.drops.begin(), e.input.drops.end());
         if (e.input.resize) out.resize = e.input.resize;
         if (e.input.ctrl) out.ctrl = e.input.ctrl;
+        out.sets.insert(out.sets.end(), e.input.sets.begin(), e.input.sets.end());
     }
     return out;
 }

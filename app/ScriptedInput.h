@@ -15,6 +15,7 @@
 //   <frame> drop PATH             drop the file at PATH (the rest of the line) on the window
 //   <frame> resize W H            the window to W x H pixels
 //   <frame> ctrl down|up          hold or release Ctrl (zoom and pan in an image view)
+//   <frame> set KNOB=VALUE        a knob edited, as in the Parameters panel (the registry's checks)
 //
 // Frames count from 0, the first frame the window draws. Keys, text and
 // drops go through the same input queue as the window's own events
@@ -37,6 +38,7 @@ struct ScriptedFrameInput {
     std::vector<std::string> drops;       // files dropped on the window this frame
     std::optional<std::pair<int, int>> resize;
     std::optional<bool> ctrl;             // Ctrl held from this frame on
+    std::vector<std::string> sets;        // knob=value edits this frame
 };
 
 class ScriptedInput {

@@ -11,7 +11,9 @@
 #include <cstring>
 
 #include "python/WorkbenchSession.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/metrics/ImageComparison.h"
+#include "renderer/metrics/ComparisonHeatMap.h"
 
 namespace py = pybind11;
 
@@ -77,6 +79,18 @@ std::string knobText(const py::handle& value) {
     if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) return py::str(value).cast<std::string>();
     // numpy scalars and the like: their str() is what --set would take
     return py::str(value).cast<std::string>();
+}
+
+// A record as Python objects: the JSON it writes, read by Python's json module.
+py::object recordObject(const ExperimentRecord& record) {
+    return py::module_::import("json").attr("loads")(record.json());
+}
+
+// A dict of plain values as indented JSON (Python's json module), whole or not at all.
+void writeJsonObject(const std::string& path, const py::dict& d) {
+    const std::string text = py::module_::import("json").attr("dumps")(d, py::arg("indent") = 2).cast<std::string>() + "\n";
+    py::gil_scoped_release release;
+    writeFileAtomically(path, text);
 }
 
 py::dict statsDict(const TimingStats& s) {
@@ -176,7 +190,10 @@ py::dict referenceStats(const reference::ReferenceStatistics& s) {
 }
 
 py::dict compareArrays(const py::array& reference, const py::array& test, bool hdr, double warnThreshold,
-                       double failThreshold, bool maps) {
+                       double failThreshold, bool maps, std::optional<std::string> errorMap,
+                       std::optional<std::string> heatMap, std::optional<std::string> json) {
+    if (errorMap && !isFloatFormat(*errorMap))
+        throw Error("error_map writes float maps: give it an .exr name, got '" + *errorMap + "'");
     const FloatImage a = toFloatImage(reference, "reference");
     const FloatImage b = toFloatImage(test, "test");
     ComparisonSettings settings;
@@ -197,6 +214,16 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
     d["ssim"] = c.ssim ? py::object(py::float_(c.ssim->mean)) : py::object(py::none());
     d["flip"] = c.flip ? py::object(py::float_(c.flip->mean)) : py::object(py::none());
     d["notes"] = c.notes;
+    {
+        py::gil_scoped_release release;
+        if (errorMap) {
+            std::vector<std::string> names;
+            const FloatImage map = c.errorMap(names);
+            writeImage(*errorMap, map, names);
+        }
+        if (heatMap) writeImage(*heatMap, ComparisonHeatMap::of(c));
+    }
+    if (json) writeJsonObject(*json, d);
     if (maps) {
         py::dict m;
         m["difference"] = toArray(c.absoluteDifference);
@@ -204,48 +231,6 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
         if (c.flip) m["flip"] = toArray(c.flip->map);
         d["maps"] = m;
     }
-    return d;
-}
-
-py::dict fieldsDict(const BenchFields& fields) {
-    py::dict d;
-    for (const auto& [k, v] : fields) d[py::str(k)] = v;
-    return d;
-}
-
-py::dict benchDict(const BenchResults& r) {
-    py::dict d;
-    py::list configs;
-    for (const BenchConfigResult& c : r.configs) {
-        py::dict e;
-        e["index"] = c.config.index;
-        e["size"] = py::make_tuple(c.config.width, c.config.height);
-        e["lights"] = c.config.lights;
-        py::dict knobs;
-        for (size_t i = 0; i < r.knobAxes.size() && i < c.config.knobValues.size(); ++i)
-            knobs[py::str(r.knobAxes[i])] = c.config.knobValues[i];
-        e["knobs"] = knobs;
-        e["lpp"] = c.lpp;
-        e["lpp_lit"] = c.lppLit;
-        e["stats"] = c.stats;
-        configs.append(e);
-    }
-    d["configs"] = configs;
-    py::list samples;
-    for (const BenchSample& s : r.samples) {
-        py::dict e;
-        e["config"] = s.config;
-        e["sample"] = s.sample;
-        e["seq"] = s.seq;
-        e["frame"] = s.frame;
-        e["series"] = s.series;
-        e["gpu_ms"] = s.gpuMs;
-        e["cpu_ms"] = s.cpuMs;
-        samples.append(e);
-    }
-    d["samples"] = samples;
-    d["machine"] = fieldsDict(r.machine);
-    d["settings"] = fieldsDict(r.settings);
     return d;
 }
 
@@ -347,17 +332,32 @@ PYBIND11_MODULE(deferred_workbench, m) {
              },
              py::arg("details") = false, "Every named output (as `list buffers`).")
         .def("render",
-             [](WorkbenchSession& s, const std::string& buffer, int frames, int warmup) {
+             [](WorkbenchSession& s, const std::string& buffer, int frames, int warmup, std::optional<std::string> record) {
                  BufferImage image;
                  {
                      py::gil_scoped_release release;
                      image = s.render(buffer, frames, warmup);
+                     if (record) s.record().write(*record);
                  }
                  return toArray(image);
              },
-             py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0,
+             py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0, py::arg("record") = py::none(),
              "Renders warmup + frames frames and returns `buffer` of the last: H x W x C, top row first;\n"
-             "uint8 for 8-bit display outputs (final, tonemap.result, ...), float32 for the rest.")
+             "uint8 for 8-bit display outputs (final, tonemap.result, ...), float32 for the rest.\n"
+             "record=PATH also writes the experiment record render --record writes (replay measures it again).")
+        .def("record",
+             [](WorkbenchSession& s, const std::string& path) {
+                 ExperimentRecord r;
+                 {
+                     py::gil_scoped_release release;
+                     r = s.record();
+                     r.write(path);
+                 }
+                 return recordObject(r);
+             },
+             py::arg("path"),
+             "Writes the experiment record of the last render() (its buffer, frames, warm-up; the knobs as they are\n"
+             "now) to `path`, as render --record does, and returns it as a dict.")
         .def("timings",
              [](const WorkbenchSession& s) {
                  if (!s.timings()) throw Error("no timings yet: call render() first");
@@ -375,7 +375,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
         .def("dump_knobs", &WorkbenchSession::writeKnobValues, py::arg("path"), "Writes what render --dump-knobs writes.")
         .def("reference",
              [](WorkbenchSession& s, const std::string& buffer, int aoRays, int seed, int threads, bool cache,
-                std::optional<std::string> cacheDir, bool stats) -> py::object {
+                std::optional<std::string> cacheDir, bool stats, std::optional<std::string> out,
+                std::optional<std::string> statsOut) -> py::object {
                  const auto& names = reference::referenceBuffers();
                  if (std::find(names.begin(), names.end(), buffer) == names.end())
                      throw UnknownBufferError("unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
@@ -391,19 +392,38 @@ PYBIND11_MODULE(deferred_workbench, m) {
                      py::gil_scoped_release release;
                      images = s.reference(o);
                  }
+                 if (out) {
+                     py::gil_scoped_release release;
+                     writeImage(*out, *images.buffer(buffer));
+                 }
+                 py::dict statsDict = referenceStats(images.stats);
+                 if (statsOut) {
+                     py::dict file = statsDict;
+                     file["scene"] = s.sceneName();
+                     file["width"] = s.width();
+                     file["height"] = s.height();
+                     file["buffer"] = buffer;
+                     file["ao_rays_per_pixel"] = aoRays;
+                     file["seed"] = seed;
+                     writeJsonObject(*statsOut, file);
+                 }
                  py::array_t<float> a = toArray(*images.buffer(buffer));
                  if (!stats) return a;
-                 return py::make_tuple(a, referenceStats(images.stats));
+                 return py::make_tuple(a, statsDict);
              },
              py::arg("buffer") = "lbuffer", py::arg("ao_rays") = 64, py::arg("seed") = 1, py::arg("threads") = 0,
              py::arg("cache") = true, py::arg("cache_dir") = py::none(), py::arg("stats") = false,
-             "The CPU reference of this view (as `reference`): float32 H x W x C; stats=True: (array, dict).");
+             py::arg("out") = py::none(), py::arg("stats_out") = py::none(),
+             "The CPU reference of this view (as `reference`): float32 H x W x C; stats=True: (array, dict).\n"
+             "out=PATH writes the image as reference --out does (.exr raw, .png in [0, 1]); stats_out=PATH the\n"
+             "statistics as JSON (reference --stats-out's figures under the same keys).");
 
     m.def(
         "bench",
         [](const std::string& scene, std::vector<std::pair<int, int>> sizes, std::vector<int> lights,
            std::optional<py::dict> sweep, std::optional<std::string> preset, std::optional<py::dict> settings,
-           int frames, int warmup, int block, int seed, std::optional<std::string> csv) {
+           int frames, int warmup, int block, int seed, std::optional<std::string> csv, std::optional<std::string> json,
+           const std::string& ratioOf, int resamples, int orbit, bool walkthrough) {
             BenchOptions o;
             o.run.scene = scene;
             o.run.setPreset(preset.value_or(""));
@@ -433,25 +453,36 @@ PYBIND11_MODULE(deferred_workbench, m) {
             o.warmup = warmup;
             o.block = block;
             o.seed = static_cast<std::uint32_t>(seed);
+            if (resamples < 100) throw Error("bench: resamples must be at least 100");
+            if (orbit < 0 || (orbit > 0 && walkthrough)) throw Error("bench: orbit takes a pose count >= 0, not with walkthrough");
+            o.orbit = orbit;
+            o.walkthrough = walkthrough;
             BenchResults results;
+            ExperimentRecord record;
             {
                 py::gil_scoped_release release;
-                results = WorkbenchSession::bench(std::move(o));
+                record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results);
                 if (csv) results.writeCsv(*csv);
+                if (json) writeBenchFile(*json, record.json(), "bench JSON");
             }
-            return benchDict(results);
+            return recordObject(record);
         },
         py::arg("scene") = "", py::arg("sizes") = std::vector<std::pair<int, int>>{}, py::arg("lights") = std::vector<int>{},
         py::arg("sweep") = py::none(), py::arg("preset") = py::none(), py::arg("settings") = py::none(),
         py::arg("frames") = 10, py::arg("warmup") = 1, py::arg("block") = 1, py::arg("seed") = 1,
-        py::arg("csv") = py::none(),
-        "bench's grid (sizes x lights x sweep {knob: [values]}) in this process: a dict of configs, samples (every\n"
-        "counted frame and series, gpu_ms / cpu_ms), machine and settings; csv=PATH also writes bench --csv's file.");
+        py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("ratio_of") = "frame",
+        py::arg("resamples") = 2000, py::arg("orbit") = 0, py::arg("walkthrough") = false,
+        "bench's grid (sizes x lights x sweep {knob: [values]}) in this process. Returns the experiment record\n"
+        "bench --json writes, as a dict: scene, knobs, seeds, camera path, grid, build, gl, host, and results (configs with\n"
+        "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and json=PATH also write\n"
+        "bench --csv's and --json's files; orbit=N and walkthrough=True move the camera as bench's options do.");
 
     m.def("compare", &compareArrays, py::arg("reference"), py::arg("test"), py::arg("hdr") = false,
           py::arg("warn_threshold") = 1e-6, py::arg("fail_threshold") = 1e-6, py::arg("maps") = false,
-          "Every metric of `compare` for two arrays of one shape (uint8 read as v / 255): a dict; maps=True adds "
-          "the per-pixel error maps.");
+          py::arg("error_map") = py::none(), py::arg("heat_map") = py::none(), py::arg("json") = py::none(),
+          "Every metric of `compare` for two arrays of one shape (uint8 read as v / 255): a dict; maps=True adds\n"
+          "the per-pixel error maps. error_map=FILE.exr, heat_map=FILE.png and json=PATH write what compare's\n"
+          "--error-map, --heat-map and --json write (the JSON: this dict's figures, without maps).");
     m.def(
         "load_image",
         [](const std::string& path) -> py::array {

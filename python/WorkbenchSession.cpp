@@ -72,7 +72,23 @@ WorkbenchSession::~WorkbenchSession() {
     if (session_ && std::this_thread::get_id() != owner_) static_cast<void>(session_.release());
 }
 
-BenchResults WorkbenchSession::bench(BenchOptions options) {
+ExperimentRecord WorkbenchSession::record() {
+    requireOwningThread();
+    if (!last_) throw Error("record: nothing rendered yet (call render() first)");
+    processContext().context->makeCurrent();
+    RunConfig run = run_;
+    run.width = width_;
+    run.height = height_;
+    run.frames = last_->frames;
+    run.warmup = last_->warmup;
+    // The knobs as they are now (Session.set included): all of them travel in the record.
+    return ExperimentRecord::capture(*session_, run, last_->buffer, last_->firstCounted,
+                                     processContext().context->platform());
+}
+
+ExperimentRecord WorkbenchSession::benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
+                                               BenchResults* measured) {
+    const RecordedBench recorded{options, ratioOf, resamples};
     BenchRunner runner(std::move(options));  // checks everything that fails without GL
     ProcessContext& pc = processContext();
     if (std::this_thread::get_id() != pc.thread)
@@ -81,7 +97,14 @@ BenchResults WorkbenchSession::bench(BenchOptions options) {
     pc.context->makeCurrent();
     BenchResults results = runner.run();
     results.machine.emplace_back("gl_platform", pc.context->platform());
-    return results;
+    BenchBaseline baseline = runner.baseline();
+    baseline.series = ratioOf;
+    if (!results.configs.empty() && !hasSeries(results, ratioOf))
+        throw Error("ratio_of: no configuration recorded '" + ratioOf + "' (the pass did not run, or has no such span)");
+    const BenchSummary summary = summarize(results, baseline, resamples);
+    ExperimentRecord record = ExperimentRecord::forBench(recorded, runner.scene(), results, summary);
+    if (measured) *measured = std::move(results);
+    return record;
 }
 
 void WorkbenchSession::requireOwningThread() const {
@@ -154,6 +177,7 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     }
     rendered_ = true;
     timings_ = TimingReport::build(timer, report, firstCounted, warmup);
+    last_ = LastRender{buffer, frames, warmup, firstCounted};
 
     // What writeOutput writes: display-ready outputs as their 8-bit values
     // (.png), everything else raw (.exr).

@@ -17,6 +17,7 @@
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/PixelProbe.h"
+#include "renderer/record/ExperimentRecord.h"
 #include "renderer/reference/ReferenceRenderer.h"
 
 namespace dw {
@@ -103,9 +104,14 @@ public:
     // Throws WrongThreadError unless called on the GL context's thread.
     void requireOwningThread() const;
 
-    // A bench grid (BenchRunner) on the process's GL context, on its thread:
-    // everything `bench` measures but the host fields and the summary.
-    static BenchResults bench(BenchOptions options);
+    // A render record (render --record) of the last render(): its buffer,
+    // frames and warm-up, the knobs as they are now. Throws Error before any render().
+    ExperimentRecord record();
+
+    // A bench grid (BenchRunner) on the process's GL context, on its thread,
+    // as the record `bench --json` writes; `measured` gets the samples (for bench --csv's file).
+    static ExperimentRecord benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
+                                        BenchResults* measured = nullptr);
 
 private:
     std::thread::id owner_;
@@ -114,6 +120,12 @@ private:
     int width_ = 0, height_ = 0;
     bool rendered_ = false;
     std::optional<TimingReport> timings_;
+    struct LastRender {
+        std::string buffer;
+        int frames = 1, warmup = 0;
+        std::uint64_t firstCounted = 0;
+    };
+    std::optional<LastRender> last_;
 };
 
 }  // namespace dw

@@ -285,6 +285,7 @@ const char* shortcutHelp() {
            "F11   capture the next frame with RenderDoc (gui --renderdoc)\n"
            "F12   screenshot of the window to PNG\n"
            "Ctrl+O open a scene file (the Scene panel's path field; files dropped on the window open too)\n"
+           "Ctrl+S save an experiment record of this frame   Ctrl+R open one (scene, camera, knobs)\n"
            "Ctrl+Q quit";
 }
 

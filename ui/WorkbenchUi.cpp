@@ -43,6 +43,8 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
             ImGui::EndMenu();
         }
         if (ImGui::MenuItem("Presets...")) p.presets = true;
+        if (ImGui::MenuItem("Save record...", "Ctrl+S")) record_.request(RecordDialog::Mode::Save);
+        if (ImGui::MenuItem("Open record...", "Ctrl+R")) record_.request(RecordDialog::Mode::Open);
         if (ImGui::MenuItem("Screenshot", "F12")) state.requestScreenshot = true;
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.requestQuit = true;
@@ -206,6 +208,7 @@ void WorkbenchUi::draw(UiState& state, RenderSession& session, float dt) {
         }
         drawn_.push_back({n, r});
     }
+    record_.draw(state, session);
     toast(state);
 }
 

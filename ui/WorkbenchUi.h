@@ -11,6 +11,7 @@
 #include "ui/PanelLayout.h"
 #include "ui/PresetsPanel.h"
 #include "ui/ProbePanel.h"
+#include "ui/RecordDialog.h"
 #include "ui/ReferenceControls.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
@@ -56,6 +57,7 @@ private:
     MessagesPanel messages_;
     ParetoPanel pareto_;
     ReferenceControls reference_;
+    RecordDialog record_;
 };
 
 }  // namespace dw::ui

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/Error.h"
+#include "renderer/record/ExperimentRecord.h"
 
 namespace dw {
 
@@ -257,7 +258,7 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
     return out;
 }
 
-std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
+nlohmann::ordered_json benchResultsJson(const BenchResults& results, const BenchSummary& summary) {
     Json machine = Json::object(), settings = Json::object();
     for (const auto& [k, v] : results.machine) machine[k] = v;
     for (const auto& [k, v] : results.settings) settings[k] = v;
@@ -274,6 +275,8 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
         list.back()["gpu_ms"][s.series] = rounded(s.gpuMs);
         list.back()["cpu_ms"][s.series] = rounded(s.cpuMs);
     }
+    std::map<std::pair<int, std::string>, std::vector<double>> gpuOf;
+    for (const auto& s : results.samples) gpuOf[{s.config, s.series}].push_back(s.gpuMs);
     Json configs = Json::array();
     for (const auto& c : results.configs) {
         Json knobs = Json::object();
@@ -286,7 +289,14 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
         if (r) {
             const BenchSeriesStats* f = r->frame();
             j["frames"] = f ? f->gpu.count : 0;
-            for (const auto& s : r->series) series[s.series] = {{"gpu_ms", msJson(s.gpu)}, {"cpu_ms", msJson(s.cpu)}};
+            for (const auto& s : r->series) {
+                // The GPU median's bootstrap 95% interval (the records' "timings with intervals").
+                Json gpu = msJson(s.gpu);
+                const MedianInterval m = bootstrapMedian(gpuOf[{c.config.index, s.series}], 1000,
+                                                         12345 + static_cast<std::uint64_t>(c.config.index));
+                if (m.valid()) gpu["ci95"] = {rounded(m.low), rounded(m.high)};
+                series[s.series] = {{"gpu_ms", gpu}, {"cpu_ms", msJson(s.cpu)}};
+            }
             j["series"] = series;
             j["baseline_config"] = r->baseline >= 0 ? Json(r->baseline) : Json(nullptr);
             if (r->baseline == r->config && r->find(summary.baseline.series)) {
@@ -310,9 +320,17 @@ std::string benchJson(const BenchResults& results, const BenchSummary& summary) 
                         : Json{{"axis", summary.baseline.axis},
                                {"value", summary.baseline.value},
                                {"series", summary.baseline.series}};
-    const Json root = {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
-                       {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
-    return root.dump(2) + "\n";
+    return {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
+            {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
+}
+
+const nlohmann::json& benchSummaryOf(const nlohmann::json& file) {
+    if (file.is_object() && file.contains("results") && file["results"].is_object()) return file["results"];
+    return file;
+}
+
+std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
+    return ExperimentRecord::forBenchResults(results, summary).json();
 }
 
 void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary) {

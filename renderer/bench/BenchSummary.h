@@ -8,6 +8,7 @@
 // interval.
 // Shown as Markdown tables and written as JSON with every sample. Needs no GL.
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -66,12 +67,19 @@ BenchSummary summarize(const BenchResults& results, const BenchBaseline& baselin
 std::string markdownTable(const BenchResults& results, const BenchSummary& summary);
 std::string markdownPassTable(const BenchResults& results, const BenchSummary& summary);
 
-// {"tool", "machine", "settings", "axes", "baseline" ({axis, value, series}
-// or null), "configs": [{config,
-// size, width, height, lights, knobs, lpp, lpp_lit, frames, series: {name:
-// {gpu_ms, cpu_ms}}, ratio, ci95, baseline_config, stats: {pass: line} (when
-// recorded), samples: [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms:
-// {...}}]}]}
+// bench's results: {"tool", "machine", "settings", "axes", "baseline"
+// ({axis, value, series} or null), "configs": [{config, size, width, height,
+// lights, knobs, lpp, lpp_lit, frames, series: {name: {gpu_ms: {median, min,
+// max, mean, frames, ci95 (the median's bootstrap 95% interval)}, cpu_ms}},
+// ratio, ci95, baseline_config, stats: {pass: line} (when recorded), samples:
+// [{sample, seq, frame, gpu_ms: {series: ms}, cpu_ms: {...}}]}]}: the
+// `results` of a bench experiment record (renderer/record/ExperimentRecord).
+nlohmann::ordered_json benchResultsJson(const BenchResults& results, const BenchSummary& summary);
+// The summary a bench JSON holds: an experiment record's `results`, or the
+// file itself when it was written before records (for bench merge's readers).
+const nlohmann::json& benchSummaryOf(const nlohmann::json& file);
+// An experiment record of these results alone (bench merge's JSON; `bench`
+// writes ExperimentRecord::forBench, which adds the grid, knobs and files).
 std::string benchJson(const BenchResults& results, const BenchSummary& summary);
 void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary);
 

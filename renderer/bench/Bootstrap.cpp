@@ -38,6 +38,24 @@ double percentile(const std::vector<double>& sorted, double p) {
 
 double median(std::vector<double> values) { return values.empty() ? 0.0 : medianInPlace(values); }
 
+MedianInterval bootstrapMedian(const std::vector<double>& a, int resamples, std::uint64_t seed, double alpha) {
+    MedianInterval r;
+    if (a.empty() || resamples <= 0) return r;
+    r.median = median(a);
+    std::mt19937_64 rng(seed);
+    std::vector<double> ra(a.size()), medians;
+    medians.reserve(static_cast<size_t>(resamples));
+    for (int i = 0; i < resamples; ++i) {
+        for (auto& v : ra) v = a[draw(rng, a.size())];
+        medians.push_back(medianInPlace(ra));
+    }
+    std::sort(medians.begin(), medians.end());
+    r.low = percentile(medians, alpha / 2.0);
+    r.high = percentile(medians, 1.0 - alpha / 2.0);
+    r.resamples = resamples;
+    return r;
+}
+
 RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::vector<double>& b, int resamples,
                                       std::uint64_t seed, double alpha) {
     RatioInterval r;

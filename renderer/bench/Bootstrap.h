@@ -16,7 +16,19 @@ struct RatioInterval {
     bool valid() const { return resamples > 0; }
 };
 
+// The median of a series with a (1 - alpha) percentile interval (the
+// experiment records' "median and interval" per timing series).
+struct MedianInterval {
+    double median = 0.0, low = 0.0, high = 0.0;
+    int resamples = 0;
+    bool valid() const { return resamples > 0; }
+};
+
 double median(std::vector<double> values);
+
+// median(a) with a (1 - alpha) percentile bootstrap interval; invalid when `a` is empty.
+MedianInterval bootstrapMedian(const std::vector<double>& a, int resamples = 2000, std::uint64_t seed = 12345,
+                               double alpha = 0.05);
 
 // median(a) / median(b) with a (1 - alpha) percentile interval from
 // `resamples` bootstrap draws. Invalid (resamples 0) when a side is empty or

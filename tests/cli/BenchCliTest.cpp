@@ -94,7 +94,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
 
     // JSON: the machine, every configuration with its samples and lights per pixel.
     std::ifstream jf(json);
-    const nlohmann::json j = nlohmann::json::parse(jf);
+    const nlohmann::json j = nlohmann::json::parse(jf)["results"];
     EXPECT_FALSE(j["machine"]["gl_renderer"].get<std::string>().empty());
     EXPECT_FALSE(j["machine"]["cpu"].get<std::string>().empty());
     EXPECT_EQ(j["baseline"]["axis"], "lighting.strategy");
@@ -165,7 +165,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
         EXPECT_EQ(rowsByConfig(readCsv(part)).size(), 4u);
         // A shard runs whole comparison groups: each configuration's baseline ran beside it.
         std::ifstream sj(dir / ("shard" + std::to_string(i) + ".json"));
-        const nlohmann::json shard = nlohmann::json::parse(sj);  // the loop below iterates into it
+        const nlohmann::json shard = nlohmann::json::parse(sj)["results"];  // the loop below iterates into it
         for (const auto& c : shard["configs"]) EXPECT_TRUE(c["ratio"].is_number()) << c["config"];
         shardCsvs += " " + part.string();
     }
@@ -177,7 +177,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     for (size_t i = 1; i < mergedRows.size(); ++i)
         ASSERT_EQ(mergedRows[i][0], rows[i][0]) << "merged rows keep the grid's order, line " << i + 1;
     std::ifstream mj(mergedJson);
-    const nlohmann::json mjson = nlohmann::json::parse(mj);
+    const nlohmann::json mjson = nlohmann::json::parse(mj)["results"];
     EXPECT_EQ(mjson["configs"].size(), 8u);
     EXPECT_EQ(mjson["machine"]["gl_renderer"], j["machine"]["gl_renderer"]);
     EXPECT_NE(m.out.find("95% CI"), std::string::npos);
@@ -191,7 +191,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     ASSERT_EQ(again.code, 0) << again.err;
     {
         std::ifstream aj(againJson);
-        const nlohmann::json a = nlohmann::json::parse(aj);
+        const nlohmann::json a = nlohmann::json::parse(aj)["results"];
         ASSERT_EQ(a["configs"].size(), j["configs"].size());
         for (std::size_t i = 0; i < a["configs"].size(); ++i) {
             EXPECT_EQ(a["configs"][i]["ratio"], j["configs"][i]["ratio"]) << i;
@@ -208,7 +208,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     EXPECT_NE(lit.out.find("| lighting ratio to lighting.strategy=stencil_volumes | 95% CI |"), std::string::npos)
         << lit.out;
     std::ifstream lj(litJson);
-    const nlohmann::json ljson = nlohmann::json::parse(lj);
+    const nlohmann::json ljson = nlohmann::json::parse(lj)["results"];
     EXPECT_EQ(ljson["baseline"]["series"], "lighting");
     int compared = 0;
     for (const auto& c : ljson["configs"]) {
@@ -335,7 +335,7 @@ TEST(BenchCli, LppLitLeavesOutPixelsWithoutASurface) {
                          " --json " + (dir / "f.json").string());
     ASSERT_EQ(r.code, 0) << r.err;
     std::ifstream f(dir / "f.json");
-    const nlohmann::json j = nlohmann::json::parse(f);
+    const nlohmann::json j = nlohmann::json::parse(f)["results"];
     const double lpp = j["configs"][0]["lpp"].get<double>(), lit = j["configs"][0]["lpp_lit"].get<double>();
     EXPECT_GT(lpp, 1.0);
     EXPECT_GT(lit, lpp * 1.1) << "LPP " << lpp << ", LPP lit " << lit;
@@ -350,7 +350,7 @@ TEST(BenchCli, KeptSceneLightsAreCountedInTheTitleAndSettings) {
                          "--quiet --csv " + (dir / "k.csv").string() + " --json " + (dir / "k.json").string());
     ASSERT_EQ(r.code, 0) << r.err;
     std::ifstream f(dir / "k.json");
-    const nlohmann::json j = nlohmann::json::parse(f);
+    const nlohmann::json j = nlohmann::json::parse(f)["results"];
     const std::string lights = j["settings"]["lights"].get<std::string>();
     const std::string prefix = "generated, added to the scene's ";
     ASSERT_EQ(lights.rfind(prefix, 0), 0u) << lights;
@@ -535,7 +535,16 @@ TEST(BenchCli, OrbitAndWalkthroughAverageOverTheirPoses) {
                              " --frames 2 --lpp-poses 2 --csv " + csv.string() + " --json " + json.string());
         ASSERT_EQ(r.code, 0) << camera << ": " << r.err;
         std::ifstream jf(json);
-        const nlohmann::json j = nlohmann::json::parse(jf);
+        const nlohmann::json record = nlohmann::json::parse(jf);
+        const nlohmann::json& j = record["results"];
+        // The record holds the camera path: the orbit's poses, or the walkthrough's keyframes.
+        if (camera == "--orbit 2") {
+            EXPECT_EQ(record["camera_path"], nlohmann::json({{"mode", "orbit"}, {"orbit_poses", 2}}));
+        } else {
+            EXPECT_EQ(record["camera_path"]["mode"], "walkthrough");
+            ASSERT_EQ(record["camera_path"]["keyframes"].size(), 2u);
+            EXPECT_EQ(record["camera_path"]["keyframes"][1]["position"], nlohmann::json({12.0, 4.0, 0.0}));
+        }
         EXPECT_EQ(j["settings"]["camera"].get<std::string>().rfind(camera == "--orbit 2" ? "orbit 2" : "walkthrough", 0), 0u);
         EXPECT_EQ(j["settings"]["lpp_poses"], "2");
         EXPECT_EQ(j["baseline"]["axis"], "lights");

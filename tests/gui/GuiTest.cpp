@@ -22,6 +22,7 @@
 #include "renderer/bench/TradeoffTable.h"
 #include "ui/ParetoPanel.h"
 #include "ui/PresetsPanel.h"
+#include "ui/RecordDialog.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
@@ -376,6 +377,66 @@ TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
     EXPECT_FALSE(ui::applyPreset(state, *session, elsewhere));
     EXPECT_EQ(session->scene().name, "spheres");
     EXPECT_FLOAT_EQ(static_cast<float>(session->knobs().value(*session->knobs().find("tonemap.key"))), 0.25f);
+}
+
+// File > Save record / Open record as a person uses them (Ctrl+S, Ctrl+R, the
+// path typed into the modal): a record saved, a knob changed and the camera
+// orbited, the record opened: the knob and the camera are the saved ones.
+TEST(Gui, UnderXvfbASavedRecordOpensWithItsKnobsAndCamera) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path saved = test::tempDir() / "gui-record-saved.json", mid = test::tempDir() / "gui-record-mid.json",
+                   end = test::tempDir() / "gui-record-end.json", knobs = test::tempDir() / "gui-record-knobs.txt";
+    for (const fs::path& p : {saved, mid, end}) fs::remove(p);
+    const std::string events = "2 key ctrl+s\n4 key ctrl+a\n5 type " + saved.string() + "\n7 key Enter\n" +
+                               "9 set tonemap.key=0.9\n10 drag 700 300 820 330 3\n" +
+                               "18 key ctrl+s\n20 key ctrl+a\n21 type " + mid.string() + "\n23 key Enter\n" +
+                               "26 key ctrl+r\n28 key ctrl+a\n29 type " + saved.string() + "\n31 key Enter\n";
+    runScripted("record", "1600x900", 36, events,
+                "--set tonemap.key=0.3 --dump-knobs " + knobs.string() + " --save-record " + end.string());
+    auto read = [](const fs::path& p) {
+        std::ifstream f(p);
+        EXPECT_TRUE(f.good()) << p << " was not written";
+        return f.good() ? nlohmann::json::parse(f) : nlohmann::json::object();
+    };
+    const nlohmann::json a = read(saved), m = read(mid), e = read(end);
+    ASSERT_TRUE(a.contains("camera") && m.contains("camera") && e.contains("camera"));
+    EXPECT_EQ(a["command"], "gui");
+    EXPECT_EQ(a["knobs"]["tonemap.key"], "0.3");
+    EXPECT_EQ(m["knobs"]["tonemap.key"], "0.9");
+    const glm::vec3 pa(a["camera"]["position"][0].get<float>(), a["camera"]["position"][1].get<float>(),
+                       a["camera"]["position"][2].get<float>());
+    const glm::vec3 pm(m["camera"]["position"][0].get<float>(), m["camera"]["position"][1].get<float>(),
+                       m["camera"]["position"][2].get<float>());
+    EXPECT_GT(glm::length(pm - pa), 0.1f) << "the drag did not orbit the camera";
+    // Opened: the saved record's knob and camera, to the bit.
+    EXPECT_EQ(e["knobs"]["tonemap.key"], "0.3");
+    EXPECT_EQ(e["camera"], a["camera"]);
+    EXPECT_EQ(test::readKnobDump(knobs)["tonemap.key"], "0.3");
+    // And it replays headless to the same pixels: the scene, camera and knobs
+    // at the viewport's render size are all that made the window's frame.
+    const Result replay = shell(std::string(DW_WORKBENCH_BINARY) + " replay " + saved.string());
+    EXPECT_EQ(replay.code, 0) << replay.out;
+    EXPECT_NE(replay.out.find("image: identical"), std::string::npos) << replay.out;
+}
+
+// A record that cannot be opened is a message; the scene, knobs and camera stay.
+TEST(Gui, ABadRecordIsAMessageAndTheStateStays) {
+    auto session = test::makeSession(32, 18);
+    session->loadScene("spheres");
+    ui::UiState state;
+    session->knobs().applyAssignment("tonemap.key=0.25");
+    const Camera before = session->camera();
+    const fs::path newer = writeText("gui-record-v9.json", R"({"format": "deferred-workbench record", "version": 9})");
+    EXPECT_FALSE(ui::openRecord(state, *session, newer.string()));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("record version 9 is newer than this build reads (2)"), std::string::npos)
+        << state.log.banner()->text;
+    const fs::path broken = writeText("gui-record-broken.json", "{ not json");
+    EXPECT_FALSE(ui::openRecord(state, *session, broken.string()));
+    EXPECT_NE(state.log.banner()->text.find("gui-record-broken.json"), std::string::npos);
+    EXPECT_EQ(session->scene().name, "spheres");
+    EXPECT_EQ(knob(*session, "tonemap.key"), 0.25);
+    EXPECT_EQ(session->camera().position, before.position);
 }
 
 // The window starts with the same knob values as render for the same

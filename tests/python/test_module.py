@@ -5,6 +5,8 @@ with its shape and dtype and equals `render --buffer` of the same
 configuration bit for bit; a knob set from Python is what --dump-knobs shows;
 bad input raises (KnobError is a ValueError), never crashes."""
 import concurrent.futures
+import hashlib
+import json
 import os
 import subprocess
 import tempfile
@@ -247,28 +249,92 @@ class SessionTest(unittest.TestCase):
 
     def test_bench_grid_records_and_csv(self):
         csv = os.path.join(self.tmp.name, "bench.csv")
+        path = os.path.join(self.tmp.name, "bench.json")
         r = dw.bench(scene="default", sizes=[(64, 36)], sweep={"ssao.samples": [4, 16]}, frames=2, warmup=1,
-                     csv=csv)
-        self.assertEqual([c["knobs"] for c in r["configs"]], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
-        self.assertEqual([c["size"] for c in r["configs"]], [(64, 36), (64, 36)])
-        self.assertIn("4 samples", r["configs"][0]["stats"]["ssao"])
-        self.assertIn("16 samples", r["configs"][1]["stats"]["ssao"])
-        for config in (0, 1):
-            frames = [x for x in r["samples"] if x["config"] == config and x["series"] == "frame"]
-            self.assertEqual(sorted(x["sample"] for x in frames), [0, 1])
-        self.assertEqual(r["settings"]["frames"], "2")
-        self.assertIn("gl_renderer", r["machine"])
+                     csv=csv, json=path)
+        # The record bench --json writes, as Python objects, and the file holds the same.
+        with open(path) as f:
+            self.assertEqual(json.load(f), r)
+        self.assertEqual((r["format"], r["version"], r["command"]), ("deferred-workbench record", 2, "bench"))
+        self.assertEqual(r["grid"]["sizes"], ["64x36"])
+        self.assertEqual(r["seeds"]["lights"], "1")
+        self.assertIn("renderer", r["gl"])
+        configs = r["results"]["configs"]
+        self.assertEqual([c["knobs"] for c in configs], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
+        self.assertEqual([c["size"] for c in configs], ["64x36", "64x36"])
+        self.assertIn("4 samples", configs[0]["stats"]["ssao"])
+        self.assertIn("16 samples", configs[1]["stats"]["ssao"])
+        for c in configs:
+            self.assertEqual([x["sample"] for x in c["samples"]], [0, 1])
+            self.assertEqual(c["series"]["frame"]["gpu_ms"]["frames"], 2)
+        self.assertEqual(configs[0]["ratio"], 1.0)  # the baseline, ssao.samples=4
+        self.assertEqual(len(configs[1]["ci95"]), 2)
+        self.assertEqual(r["results"]["settings"]["frames"], "2")
+        self.assertIn("gl_renderer", r["results"]["machine"])
         with open(csv) as f:
             lines = f.read().splitlines()
-        self.assertEqual(len(lines), len(r["samples"]) + 1)
+        rows = sum(len(x["gpu_ms"]) for c in configs for x in c["samples"])
+        self.assertEqual(len(lines), rows + 1)
         header = lines[0].split(",")
         first = dict(zip(header, lines[1].split(",")))
-        self.assertEqual(first["pass"], r["samples"][0]["series"])
-        self.assertAlmostEqual(float(first["gpu_ms"]), r["samples"][0]["gpu_ms"], places=4)
+        self.assertAlmostEqual(float(first["gpu_ms"]), configs[0]["samples"][0]["gpu_ms"][first["pass"]], places=3)
+        orbit = dw.bench(scene="default", sizes=[(32, 18)], frames=2, warmup=0, orbit=2)
+        self.assertEqual(orbit["camera_path"], {"mode": "orbit", "orbit_poses": 2})
+        self.assertEqual(orbit["results"]["settings"]["camera"], "orbit 2")
         with self.assertRaises(dw.KnobError):
             dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
         with self.assertRaises(dw.KnobError):
             dw.bench(sweep={"ssao.no_such": [1]}, frames=1)
+
+    def test_render_record_replays_to_the_same_image(self):
+        s = dw.Session(scene="default", size=(48, 27))
+        s.set("ssao.samples", 8)
+        path = os.path.join(self.tmp.name, "py-record.json")
+        image = s.render("final", frames=2, warmup=1, record=path)
+        with open(path) as f:
+            d = json.load(f)
+        self.assertEqual((d["version"], d["command"], d["size"], d["frames"], d["warmup"]), (2, "render", [48, 27], 2, 1))
+        self.assertEqual(d["knobs"]["ssao.samples"], "8")
+        self.assertEqual(d["results"]["image"]["sha256"], hashlib.sha256(image.tobytes()).hexdigest())
+        r = subprocess.run([BINARY, "replay", path], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("image: identical", r.stdout)
+        # Session.record: the knobs as they are now, the last render's buffer.
+        s.render("ssao.raw")
+        s.set("tonemap.key", 0.25)
+        again = s.record(os.path.join(self.tmp.name, "py-record-2.json"))
+        self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ssao.raw", "0.25"))
+        with self.assertRaises(dw.Error):
+            dw.Session(scene="default", size=(8, 8)).record(os.path.join(self.tmp.name, "none.json"))
+
+    def test_reference_and_compare_write_their_files(self):
+        s = dw.Session(scene="default", size=(32, 18))
+        out = os.path.join(self.tmp.name, "ref-ao.exr")
+        stats_out = os.path.join(self.tmp.name, "ref-ao.json")
+        ao = s.reference("ao", ao_rays=4, cache=False, out=out, stats_out=stats_out)
+        self.assertTrue(np.array_equal(dw.load_image(out)[..., :1], ao))
+        with open(stats_out) as f:
+            stats = json.load(f)
+        self.assertEqual((stats["primary_rays"], stats["width"], stats["height"]), (32 * 18, 32, 18))
+        self.assertEqual(stats["ao_rays_per_pixel"], 4)
+
+        a = np.zeros((16, 16, 3), np.float32)
+        b = a.copy()
+        b[3, 5, 1] = 0.5
+        error_map = os.path.join(self.tmp.name, "err.exr")
+        heat_map = os.path.join(self.tmp.name, "err.png")
+        report = os.path.join(self.tmp.name, "err.json")
+        r = dw.compare(a, b, error_map=error_map, heat_map=heat_map, json=report)
+        with open(report) as f:
+            self.assertEqual(json.load(f)["max"], r["max"])
+        err = dw.load_image(error_map)  # absdiff.R/G/B, ssim, flip: one channel holds the 0.5
+        self.assertEqual(err.shape[:2], (16, 16))
+        self.assertIn(0.5, [round(float(v), 6) for v in err[3, 5]])
+        heat = dw.load_image(heat_map)
+        self.assertEqual(heat.shape, (16, 16, 3))
+        self.assertFalse(np.array_equal(heat[3, 5], heat[0, 0]))  # the differing pixel stands out
+        with self.assertRaises(Exception):
+            dw.compare(a, b, error_map=os.path.join(self.tmp.name, "err.png"))
 
 
 if __name__ == "__main__":

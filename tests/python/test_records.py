@@ -1,16 +1,21 @@
-"""Experiment records (issue 24): `render --record` then `replay`, through the
-CLI (DW_WORKBENCH_BINARY). The same record replays to the same image bit for
-bit (exit 0); a changed scene file, knob or build field is named; a record
-of a newer format version is refused with its version named (exit 2)."""
+"""Experiment records (issue 24): `render --record`, `bench --json` and
+`replay`, through the CLI (DW_WORKBENCH_BINARY). The same record replays to
+the same image bit for bit (exit 0); a changed scene file (a glTF's .bin
+included), knob or build field is named; a version 1 record still replays; a
+record of a newer format version is refused with its version named (exit 2);
+a bench record runs its grid again and compares each configuration."""
 import json
 import os
+import re
 import shutil
+import struct
 import subprocess
 import tempfile
 import unittest
 
 BINARY = os.environ["DW_WORKBENCH_BINARY"]
 SCENES = os.path.join(os.path.dirname(__file__), "..", "..", "scenes")
+FIXTURES = os.path.join(os.path.dirname(__file__), "..", "records")
 
 
 def run(*args):
@@ -45,7 +50,11 @@ class RecordTest(unittest.TestCase):
     def test_record_holds_the_run(self):
         d = self.data
         self.assertEqual(d["format"], "deferred-workbench record")
-        self.assertEqual(d["version"], 1)
+        self.assertEqual(d["version"], 2)
+        self.assertEqual(d["command"], "render")
+        self.assertEqual(d["camera_path"], {"mode": "fixed"})
+        self.assertEqual(d["seeds"], {"bootstrap": "12345"})
+        self.assertEqual(d["results"]["metrics"], {})
         self.assertEqual(d["size"], [64, 36])
         self.assertEqual((d["frames"], d["warmup"]), (3, 1))
         self.assertEqual(d["knobs"]["ssao.samples"], "8")
@@ -54,7 +63,14 @@ class RecordTest(unittest.TestCase):
         self.assertEqual(len(d["results"]["image"]["sha256"]), 64)
         frame = next(s for s in d["results"]["timings"] if s["name"] == "frame")
         self.assertEqual(len(frame["gpu_ms"]), 3)
-        for key in ("version", "commit", "compiler"):
+        # The median of the three frames, and a bootstrap interval around it.
+        self.assertAlmostEqual(frame["gpu"]["median"], sorted(frame["gpu_ms"])[1])
+        low, high = frame["gpu"]["ci95"]
+        self.assertLessEqual(low, frame["gpu"]["median"])
+        self.assertGreaterEqual(high, frame["gpu"]["median"])
+        self.assertGreaterEqual(low, min(frame["gpu_ms"]))
+        self.assertLessEqual(high, max(frame["gpu_ms"]))
+        for key in ("version", "commit", "compiler", "build_type", "cxx_flags"):
             self.assertIn(key, d["build"])
         self.assertIn("renderer", d["gl"])
         self.assertIn("cpu", d["host"])
@@ -106,7 +122,7 @@ class RecordTest(unittest.TestCase):
     def test_newer_and_broken_records_are_refused(self):
         r = run("replay", self.variant("v99.json", lambda d: d.__setitem__("version", 99)))
         self.assertEqual(r.returncode, 2)
-        self.assertIn("record version 99 is newer than this build reads (1)", r.stderr)
+        self.assertIn("record version 99 is newer than this build reads (2)", r.stderr)
         r = run("replay", self.variant("nosize.json", lambda d: d.pop("size")))
         self.assertEqual(r.returncode, 2)
         self.assertIn("size", r.stderr)
@@ -118,6 +134,157 @@ class RecordTest(unittest.TestCase):
         self.assertIn("nested deeper", r.stderr)
         r = run("replay", os.path.join(self.tmp.name, "absent.json"))
         self.assertEqual(r.returncode, 2)
+        # Fields of the wrong type or shape: refused with the record version and the field, never a crash.
+        broken = {
+            "size-text.json": lambda d: d.__setitem__("size", "64x36"),
+            "camera-path.json": lambda d: d.__setitem__("camera_path", {"mode": 3}),
+            "timings.json": lambda d: d["results"].__setitem__("timings", [{"name": "frame", "gpu_ms": "fast"}]),
+            "bench-no-grid.json": lambda d: d.__setitem__("command", "bench"),
+            "tradeoff.json": lambda d: d.__setitem__("command", "tradeoff"),
+            "v1-bench.json": lambda d: d.update({"version": 1, "command": "bench"}),
+        }
+        for name, change in broken.items():
+            r = run("replay", self.variant(name, change))
+            self.assertEqual(r.returncode, 2, name + ": " + r.stdout + r.stderr)
+            self.assertIn("refused: " + os.path.join(self.tmp.name, name), r.stderr)
+        # A scene file that is gone: named as changed (unreadable), and the record cannot be restored.
+        gone = self.variant("gone.json", lambda d: d["scene"].update(
+            {"spec": os.path.join(self.tmp.name, "gone-scene.json"),
+             "files": [{"path": os.path.join(self.tmp.name, "gone-scene.json"), "sha256": "ab" * 32}]}))
+        r = run("replay", gone)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("scene file changed: " + os.path.join(self.tmp.name, "gone-scene.json") + " (sha256 abababab", r.stdout)
+        self.assertIn("unreadable", r.stdout)
+        self.assertIn("cannot restore it", r.stderr)
+        self.assertIn("gone-scene.json", r.stderr)
+        r = run("replay", self.variant("tradeoff2.json", lambda d: d.__setitem__("command", "tradeoff")))
+        self.assertIn("unknown command 'tradeoff' (render, bench or gui)", r.stderr)
+
+    def test_a_version_1_record_still_replays(self):
+        # tests/records/v1-render-default.json: what render --record wrote before version 2.
+        fixture = os.path.join(FIXTURES, "v1-render-default.json")
+        new = os.path.join(self.tmp.name, "from-v1.json")
+        r = run("replay", fixture, "--record", new)
+        self.assertIn(r.returncode, (0, 1), r.stdout + r.stderr)
+        self.assertIn("record version 1, read as version 2", r.stdout)
+        self.assertNotIn("knob value refused", r.stdout)
+        self.assertIn("timing frame", r.stdout)
+        with open(fixture) as f:
+            old = json.load(f)
+        with open(new) as f:
+            again = json.load(f)
+        # Migrated: what the record held is what ran (the knobs it recorded, its camera and size).
+        self.assertEqual(again["version"], 2)
+        self.assertEqual(again["camera"], old["camera"])
+        self.assertEqual(again["size"], old["size"])
+        for name, value in old["knobs"].items():
+            self.assertEqual(again["knobs"][name], value, name)
+        self.assertEqual(again["results"]["image"]["width"], old["results"]["image"]["width"])
+
+    def test_a_gltf_scene_records_its_buffers_and_images(self):
+        folder = os.path.join(self.tmp.name, "gltf")
+        os.makedirs(folder, exist_ok=True)
+        # One textured triangle: positions and texture coordinates in tri.bin, the texture a PNG.
+        data = struct.pack("<9f", -1, -1, 0, 1, -1, 0, 0, 1, 0) + struct.pack("<6f", 0, 0, 1, 0, 0.5, 1)
+        with open(os.path.join(folder, "tri.bin"), "wb") as f:
+            f.write(data)
+        shutil.copy(os.path.join(self.tmp.name, "a.png"), os.path.join(folder, "tex.png"))
+        gltf = {
+            "asset": {"version": "2.0"},
+            "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
+            "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+            "textures": [{"source": 0}], "images": [{"uri": "tex.png"}],
+            "buffers": [{"uri": "tri.bin", "byteLength": 60}],
+            "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                            {"buffer": 0, "byteOffset": 36, "byteLength": 24}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [-1, -1, 0], "max": [1, 1, 0]},
+                          {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"}],
+        }
+        with open(os.path.join(folder, "tri.gltf"), "w") as f:
+            json.dump(gltf, f)
+        scene = os.path.join(folder, "scene.json")
+        with open(scene, "w") as f:
+            json.dump({"name": "triangle", "objects": [{"gltf": "tri.gltf"}]}, f)
+        record = os.path.join(folder, "record.json")
+        r = run("render", "--scene", scene, "--size", "32x18", "--out", os.path.join(folder, "t.png"),
+                "--record", record)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(record) as f:
+            files = [x["path"] for x in json.load(f)["scene"]["files"]]
+        self.assertEqual(sorted(os.path.basename(p) for p in files), ["scene.json", "tex.png", "tri.bin", "tri.gltf"])
+        # A changed .bin is named by path, as the scene file is.
+        with open(os.path.join(folder, "tri.bin"), "r+b") as f:
+            f.seek(0)
+            f.write(struct.pack("<f", -0.5))
+        r = run("replay", record)
+        self.assertIn("scene file changed: " + os.path.join(folder, "tri.bin"), r.stdout)
+        self.assertNotIn("scene file changed: " + scene, r.stdout)
+
+    def test_bench_json_is_a_record_and_replays_the_grid(self):
+        csv = os.path.join(self.tmp.name, "b.csv")
+        record = os.path.join(self.tmp.name, "b.json")
+        r = run("bench", "--scene", self.scene, "--size", "32x18", "--sweep", "ssao.samples=4,8", "--frames", "3",
+                "--warmup", "1", "--seed", "7", "--quiet", "--csv", csv, "--json", record)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        self.assertEqual((d["format"], d["version"], d["command"]), ("deferred-workbench record", 2, "bench"))
+        self.assertEqual(d["grid"]["sizes"], ["32x18"])
+        self.assertEqual(d["grid"]["sweep"], [{"knob": "ssao.samples", "values": ["4", "8"]}])
+        self.assertEqual(d["seeds"]["lights"], "7")
+        self.assertEqual((d["frames"], d["warmup"]), (3, 1))
+        self.assertEqual(d["scene"]["files"][0]["path"], self.scene)
+        self.assertIn("ssao.samples", d["knobs"])
+        self.assertIn("cxx_flags", d["build"])
+        configs = d["results"]["configs"]
+        self.assertEqual([c["knobs"]["ssao.samples"] for c in configs], ["4", "8"])
+        for c in configs:
+            self.assertEqual(len(c["samples"]), 3)
+            gpu = c["series"]["frame"]["gpu_ms"]
+            frames = sorted(x["gpu_ms"]["frame"] for x in c["samples"])
+            self.assertAlmostEqual(gpu["median"], frames[1], places=3)
+            self.assertLessEqual(gpu["ci95"][0], gpu["median"])
+            self.assertGreaterEqual(gpu["ci95"][1], gpu["median"])
+            self.assertGreaterEqual(gpu["ci95"][0], frames[0] - 1e-4)
+            self.assertLessEqual(gpu["ci95"][1], frames[2] + 1e-4)
+
+        # Replay: the same grid again, each configuration's frame median old -> new.
+        again = os.path.join(self.tmp.name, "b-again.json")
+        r = run("replay", record, "--record", again)
+        self.assertIn(r.returncode, (0, 1), r.stdout + r.stderr)
+        for c in configs:
+            frames = sorted(s["gpu_ms"]["frame"] for s in c["samples"])
+            m = re.search(r"config %d \(32x18, \d+ lights, ssao\.samples=%s\): frame gpu median +([0-9.]+) ->"
+                          % (c["config"], c["knobs"]["ssao.samples"]), r.stdout)
+            self.assertIsNotNone(m, r.stdout)
+            self.assertAlmostEqual(float(m.group(1)), frames[1], places=3)
+        # Lights per pixel are counted, not timed: equal on the same machine.
+        lpp = re.findall(r"lpp ([0-9.]+) -> ([0-9.]+)", r.stdout)
+        self.assertEqual(len(lpp), 2, r.stdout)
+        for old, new in lpp:
+            self.assertEqual(old, new)
+        self.assertNotIn("not in the record", r.stdout)
+        self.assertRegex(r.stdout, r"bench: (the same|differs \(0 configuration\(s\) with other lights per pixel)")
+        with open(again) as f:
+            a = json.load(f)
+        self.assertEqual(a["grid"], d["grid"])
+        self.assertEqual(a["seeds"], d["seeds"])
+        self.assertEqual(len(a["results"]["configs"]), 2)
+
+        # bench merge reads the record's results (its settings and baseline) and writes a record too.
+        merged_json = os.path.join(self.tmp.name, "merged.json")
+        r = run("bench", "merge", csv, "--out", os.path.join(self.tmp.name, "merged.csv"), "--json", merged_json)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(merged_json) as f:
+            m = json.load(f)
+        self.assertEqual((m["command"], m["grid"]), ("bench", {"merged": True}))
+        self.assertEqual(m["results"]["settings"]["frames"], "3")
+        self.assertEqual(len(m["results"]["configs"]), 2)
+        r = run("replay", merged_json)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("a bench merge record has no grid to run again", r.stderr)
 
 
 if __name__ == "__main__":

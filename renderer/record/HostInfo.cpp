@@ -1,4 +1,4 @@
-#include "app/HostInfo.h"
+#include "renderer/record/HostInfo.h"
 
 #include <ctime>
 #include <fstream>

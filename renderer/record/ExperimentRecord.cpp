@@ -1,0 +1,400 @@
+#include "renderer/record/ExperimentRecord.h"
+
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "renderer/Error.h"
+#include "renderer/bench/Bootstrap.h"
+#include "renderer/bench/BenchSummary.h"
+#include "renderer/inspect/OutputReadback.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/io/TextFile.h"
+#include "renderer/record/BuildInfo.h"
+#include "renderer/record/HostInfo.h"
+#include "renderer/record/SceneFiles.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+const char* const kFormat = "deferred-workbench record";
+
+Json fieldsJson(const RecordFields& fields) {
+    Json j = Json::object();
+    for (const auto& [k, v] : fields) j[k] = v;
+    return j;
+}
+
+RecordFields fieldsOf(const nlohmann::json& j) {
+    RecordFields f;
+    if (!j.is_object()) return f;
+    for (auto it = j.begin(); it != j.end(); ++it)
+        f.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
+    return f;
+}
+
+std::string fieldOr(const RecordFields& f, const std::string& key, const std::string& fallback) {
+    for (const auto& [k, v] : f)
+        if (k == key) return v;
+    return fallback;
+}
+
+Json vec3(const glm::vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+glm::vec3 readVec3(const nlohmann::json& j, const std::string& path, const std::string& field) {
+    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
+        throw FileError(path, field + ": expected [x, y, z]");
+    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+}
+
+// Finite numbers as themselves, anything else as null (JSON has no NaN).
+Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+Json intervalJson(const std::vector<double>& values) {
+    const MedianInterval m = bootstrapMedian(values, 2000, ExperimentRecord::kBootstrapSeed);
+    if (!m.valid()) return Json(nullptr);
+    return {{"median", number(m.median)}, {"ci95", {number(m.low), number(m.high)}}};
+}
+
+RecordFields hostFields() {
+    RecordFields host;
+    host.emplace_back("cpu", cpuModel());
+    host.emplace_back("cpu_threads", std::to_string(std::thread::hardware_concurrency()));
+    utsname u{};
+    if (uname(&u) == 0) host.emplace_back("os", std::string(u.sysname) + " " + u.release + " " + u.machine);
+    host.emplace_back("date", utcNow());
+    return host;
+}
+
+std::string sizeText(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+}  // namespace
+
+RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
+    RecordFields f;
+    for (size_t i = 0; i < knobs.size(); ++i) f.emplace_back(knobs.spec(static_cast<int>(i)).name, knobs.format(static_cast<int>(i)));
+    return f;
+}
+
+std::string ExperimentRecord::hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
+                                         int& channels) {
+    const PublishedOutput* o = session.pipeline().outputs().find(buffer);
+    if (!o) throw Error("unknown buffer '" + buffer + "'");
+    const FloatImage image = session.readRaw(buffer);
+    width = image.width;
+    height = image.height;
+    channels = image.channels;
+    if (!isDisplayReady(*o)) return sha256Hex(image.pixels.data(), image.pixels.size() * sizeof(float));
+    // The 8-bit values a .png of it holds (ImageIO's conversion).
+    std::vector<std::uint8_t> bytes(image.pixels.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+        const float v = image.pixels[i];
+        bytes[i] = static_cast<std::uint8_t>((std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f) * 255.0f + 0.5f);
+    }
+    return sha256Hex(bytes.data(), bytes.size());
+}
+
+ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConfig& run, const std::string& buffer,
+                                           std::uint64_t firstCounted, const std::string& glPlatform) {
+    ExperimentRecord r;
+    r.sceneSpec = run.sceneSpec();
+    r.sceneSource = session.scene().source;
+    r.sceneFiles = sceneFilesOf(session.scene());
+    r.camera = session.camera();
+    r.knobs = knobFields(session.knobs());
+    r.seeds.emplace_back("bootstrap", std::to_string(kBootstrapSeed));
+    r.width = run.width;
+    r.height = run.height;
+    r.frames = run.frames;
+    r.warmup = run.warmup;
+    r.buffer = buffer;
+    r.build = buildFields();
+    const gl::GlInfo& info = session.glInfo();
+    r.gl = {{"vendor", info.vendor}, {"renderer", info.renderer}, {"version", info.version}, {"platform", glPlatform}};
+    r.host = hostFields();
+    PassTimer& timer = session.pipeline().timer();
+    timer.collect(true);
+    for (const PassTimer::Series& s : timer.series()) {
+        RecordedSeries rs{s.name, {}, {}};
+        for (const TimingSample& t : s.samples)
+            if (t.frame >= firstCounted) {
+                rs.gpuMs.push_back(t.gpuMs);
+                rs.cpuMs.push_back(t.cpuMs);
+            }
+        if (!rs.gpuMs.empty()) r.timings.push_back(std::move(rs));
+    }
+    r.imageSha256 = hashBuffer(session, buffer, r.imageWidth, r.imageHeight, r.imageChannels);
+    return r;
+}
+
+ExperimentRecord ExperimentRecord::forBenchResults(const BenchResults& results, const BenchSummary& summary) {
+    ExperimentRecord r;
+    r.command = "bench";
+    r.sceneSpec = fieldOr(results.settings, "scene", "");
+    r.sceneSource = r.sceneSpec;
+    r.frames = std::atoi(fieldOr(results.settings, "frames", "0").c_str());
+    r.warmup = std::atoi(fieldOr(results.settings, "warmup_per_switch", "0").c_str());
+    r.seeds = {{"lights", fieldOr(results.settings, "seed", "1")}, {"bootstrap", std::to_string(kBootstrapSeed)}};
+    if (!results.configs.empty()) {
+        r.width = results.configs.front().config.width;
+        r.height = results.configs.front().config.height;
+    }
+    r.buffer = "";
+    r.build = buildFields();
+    r.gl = {{"vendor", fieldOr(results.machine, "gl_vendor", "")},
+            {"renderer", fieldOr(results.machine, "gl_renderer", "")},
+            {"version", fieldOr(results.machine, "gl_version", "")},
+            {"platform", fieldOr(results.machine, "gl_platform", "")}};
+    r.host = hostFields();
+    for (const auto& key : {"cpu", "cpu_threads", "host", "os"}) {
+        const std::string v = fieldOr(results.machine, key, "");
+        if (v.empty()) continue;
+        bool set = false;
+        for (auto& [k, old] : r.host)
+            if (k == key) old = v, set = true;
+        if (!set) r.host.emplace_back(key, v);
+    }
+    RecordedBench b;
+    b.merged = true;
+    b.ratioOf = summary.baseline.series;
+    r.bench = b;
+    r.benchResults = benchResultsJson(results, summary);
+    return r;
+}
+
+ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Scene& scene, const BenchResults& results,
+                                            const BenchSummary& summary) {
+    ExperimentRecord r = forBenchResults(results, summary);
+    const BenchOptions& o = bench.options;
+    r.sceneSpec = o.run.sceneSpec();
+    r.sceneSource = scene.source;
+    r.sceneFiles = sceneFilesOf(scene);
+    r.camera = o.run.camera(scene);
+    if (o.walkthrough) {
+        r.cameraPath.mode = "walkthrough";
+        r.cameraPath.keyframes = scene.cameraPath;
+    } else if (o.orbit > 0) {
+        r.cameraPath.mode = "orbit";
+        r.cameraPath.orbitPoses = o.orbit;
+    }
+    // The knobs every configuration starts from (its swept values go over them).
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    o.run.applyKnobs(knobs, scene);
+    r.knobs = knobFields(knobs);
+    r.seeds = {{"lights", std::to_string(o.seed)}, {"bootstrap", std::to_string(kBootstrapSeed)}};
+    r.frames = o.frames;
+    r.warmup = o.warmup;
+    if (!o.grid.sizes.empty()) std::tie(r.width, r.height) = o.grid.sizes.front();
+    r.bench = bench;
+    r.bench->merged = false;
+    return r;
+}
+
+std::string ExperimentRecord::json() const {
+    Json j;
+    j["format"] = kFormat;
+    j["version"] = version;
+    j["command"] = command;
+    Json files = Json::array();
+    for (const auto& f : sceneFiles) files.push_back({{"path", f.path}, {"sha256", f.sha256}});
+    j["scene"] = {{"spec", sceneSpec}, {"source", sceneSource}, {"files", files}};
+    j["camera"] = {{"position", vec3(camera.position)}, {"target", vec3(camera.target)}, {"up", vec3(camera.up)},
+                   {"fov_y_degrees", camera.fovYDegrees}, {"near", camera.nearPlane}, {"far", camera.farPlane}};
+    Json path = {{"mode", cameraPath.mode}};
+    if (cameraPath.mode == "orbit") path["orbit_poses"] = cameraPath.orbitPoses;
+    if (!cameraPath.keyframes.empty()) {
+        Json keys = Json::array();
+        for (const auto& k : cameraPath.keyframes)
+            keys.push_back({{"time", k.time}, {"position", vec3(k.position)}, {"target", vec3(k.target)}});
+        path["keyframes"] = keys;
+    }
+    j["camera_path"] = path;
+    j["knobs"] = fieldsJson(knobs);
+    j["seeds"] = fieldsJson(seeds);
+    j["size"] = Json::array({width, height});
+    j["frames"] = frames;
+    j["warmup"] = warmup;
+    if (command != "bench") j["buffer"] = buffer;
+    if (bench) {
+        const BenchOptions& o = bench->options;
+        Json sizes = Json::array(), sweep = Json::array();
+        for (const auto& [w, h] : o.grid.sizes) sizes.push_back(sizeText(w, h));
+        for (const auto& a : o.grid.knobAxes) sweep.push_back({{"knob", a.knob}, {"values", a.values}});
+        if (bench->merged)
+            j["grid"] = {{"merged", true}};
+        else
+            j["grid"] = {{"sizes", sizes},
+                         {"lights", o.grid.lights},
+                         {"sweep", sweep},
+                         {"block", o.block},
+                         {"light_radius", o.lightRadius},
+                         {"keep_scene_lights", o.keepSceneLights},
+                         {"orbit", o.orbit},
+                         {"walkthrough", o.walkthrough},
+                         {"lpp", o.lpp},
+                         {"lpp_poses", o.lppPoses},
+                         {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)},
+                         {"baseline", o.baseline},
+                         {"ratio_of", bench->ratioOf},
+                         {"resamples", bench->resamples}};
+    }
+    j["build"] = fieldsJson(build);
+    j["gl"] = fieldsJson(gl);
+    j["host"] = fieldsJson(host);
+    if (command == "bench") {
+        j["results"] = benchResults.is_null() ? Json::object() : benchResults;
+    } else {
+        Json series = Json::array();
+        for (const auto& s : timings)
+            series.push_back({{"name", s.name}, {"gpu_ms", s.gpuMs}, {"cpu_ms", s.cpuMs}, {"gpu", intervalJson(s.gpuMs)},
+                              {"cpu", intervalJson(s.cpuMs)}});
+        Json m = Json::object();
+        for (const auto& [k, v] : metrics) m[k] = number(v);
+        j["results"] = {{"timings", series},
+                        {"image", {{"buffer", buffer}, {"sha256", imageSha256}, {"width", imageWidth},
+                                   {"height", imageHeight}, {"channels", imageChannels}}},
+                        {"metrics", m}};
+    }
+    return j.dump(2) + "\n";
+}
+
+void ExperimentRecord::write(const std::string& path) const { writeFileAtomically(path, json()); }
+
+ExperimentRecord ExperimentRecord::read(const std::string& path) {
+    JsonGuardOptions options;
+    options.numbersAreFloats = false;
+    return fromJson(readJsonFile(path, options), path);
+}
+
+ExperimentRecord ExperimentRecord::parse(const std::string& text, const std::string& path) {
+    JsonGuardOptions options;
+    options.numbersAreFloats = false;
+    return fromJson(parseJson(text, path, options), path);
+}
+
+ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::string& path) {
+    if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
+        throw FileError(path, std::string("not a deferred-workbench record (no \"format\": \"") + kFormat + "\")");
+    if (!j.contains("version") || !j["version"].is_number_integer())
+        throw FileError(path, "the record has no integer \"version\"");
+    ExperimentRecord r;
+    r.readVersion = j["version"].get<int>();
+    if (r.readVersion > kVersion)
+        throw FileError(path, "record version " + std::to_string(r.readVersion) + " is newer than this build reads (" +
+                                  std::to_string(kVersion) + "); replay it with a newer deferred-workbench");
+    if (r.readVersion < 1) throw FileError(path, "record version " + std::to_string(r.readVersion) + " does not exist");
+    try {
+        r.command = j.at("command").get<std::string>();
+        if (r.command != "render" && r.command != "bench" && r.command != "gui")
+            throw FileError(path, "unknown command '" + r.command + "' (render, bench or gui)");
+        if (r.readVersion == 1 && r.command != "render")
+            throw FileError(path, "a version 1 record is of render only, this one says '" + r.command + "'");
+        const auto& scene = j.at("scene");
+        r.sceneSpec = scene.at("spec").get<std::string>();
+        r.sceneSource = scene.value("source", "");
+        for (const auto& f : scene.value("files", nlohmann::json::array()))
+            r.sceneFiles.push_back({f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
+        const auto& cam = j.at("camera");
+        r.camera.position = readVec3(cam.at("position"), path, "camera.position");
+        r.camera.target = readVec3(cam.at("target"), path, "camera.target");
+        r.camera.up = readVec3(cam.at("up"), path, "camera.up");
+        r.camera.fovYDegrees = cam.at("fov_y_degrees").get<float>();
+        r.camera.nearPlane = cam.at("near").get<float>();
+        r.camera.farPlane = cam.at("far").get<float>();
+        // Version 1 had a fixed camera and no seeds (render used none).
+        if (j.contains("camera_path")) {
+            const auto& p = j["camera_path"];
+            r.cameraPath.mode = p.at("mode").get<std::string>();
+            r.cameraPath.orbitPoses = p.value("orbit_poses", 0);
+            for (const auto& k : p.value("keyframes", nlohmann::json::array()))
+                r.cameraPath.keyframes.push_back({k.at("time").get<float>(),
+                                                  readVec3(k.at("position"), path, "camera_path.keyframes.position"),
+                                                  readVec3(k.at("target"), path, "camera_path.keyframes.target")});
+        }
+        r.knobs = fieldsOf(j.at("knobs"));
+        r.seeds = fieldsOf(j.value("seeds", nlohmann::json::object()));
+        r.width = j.at("size").at(0).get<int>();
+        r.height = j.at("size").at(1).get<int>();
+        r.frames = j.at("frames").get<int>();
+        r.warmup = j.at("warmup").get<int>();
+        r.build = fieldsOf(j.value("build", nlohmann::json::object()));
+        r.gl = fieldsOf(j.value("gl", nlohmann::json::object()));
+        r.host = fieldsOf(j.value("host", nlohmann::json::object()));
+        const auto& results = j.at("results");
+        if (r.command == "bench") {
+            const auto& g = j.at("grid");
+            RecordedBench b;
+            b.merged = g.value("merged", false);
+            BenchOptions& o = b.options;
+            o.run.scene = r.sceneSpec;
+            for (const auto& [k, v] : r.knobs) o.run.sets.push_back(k + "=" + v);
+            o.frames = r.frames;
+            o.warmup = r.warmup;
+            o.seed = static_cast<std::uint32_t>(std::stoul(fieldOr(r.seeds, "lights", "1")));
+            if (!b.merged) {
+                for (const auto& s : g.at("sizes")) {
+                    const std::string t = s.get<std::string>();
+                    const size_t x = t.find('x');
+                    if (x == std::string::npos) throw FileError(path, "grid.sizes: '" + t + "' is not WxH");
+                    o.grid.sizes.emplace_back(std::stoi(t.substr(0, x)), std::stoi(t.substr(x + 1)));
+                }
+                o.grid.lights = g.at("lights").get<std::vector<int>>();
+                for (const auto& a : g.at("sweep"))
+                    o.grid.knobAxes.push_back({a.at("knob").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
+                o.block = g.value("block", 1);
+                o.lightRadius = g.value("light_radius", 0.0f);
+                o.keepSceneLights = g.value("keep_scene_lights", false);
+                o.orbit = g.value("orbit", 0);
+                o.walkthrough = g.value("walkthrough", false);
+                o.lpp = g.value("lpp", true);
+                o.lppPoses = g.value("lpp_poses", 4);
+                o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
+                o.baseline = g.value("baseline", std::string());
+                b.ratioOf = g.value("ratio_of", std::string("frame"));
+                b.resamples = g.value("resamples", 2000);
+            }
+            r.bench = std::move(b);
+            r.benchResults = Json(results);
+        } else {
+            r.buffer = j.at("buffer").get<std::string>();
+            for (const auto& s : results.value("timings", nlohmann::json::array()))
+                r.timings.push_back({s.at("name").get<std::string>(), s.at("gpu_ms").get<std::vector<double>>(),
+                                     s.at("cpu_ms").get<std::vector<double>>()});
+            const auto& image = results.at("image");
+            r.imageSha256 = image.at("sha256").get<std::string>();
+            r.imageWidth = image.value("width", 0);
+            r.imageHeight = image.value("height", 0);
+            r.imageChannels = image.value("channels", 0);
+            for (const auto& [k, v] : results.value("metrics", nlohmann::json::object()).items())
+                if (v.is_number()) r.metrics.emplace_back(k, v.get<double>());
+        }
+    } catch (const nlohmann::json::exception& e) {
+        throw FileError(path, "record version " + std::to_string(r.readVersion) + ": " + jsonErrorText(e));
+    } catch (const std::logic_error& e) {  // std::stoi and friends
+        throw FileError(path, "record version " + std::to_string(r.readVersion) + ": a number does not parse");
+    } catch (const FileError&) {
+        throw;
+    } catch (const Error& e) {
+        throw FileError(path, e.what());
+    }
+    if (r.width < 1 || r.height < 1 || r.width > 16384 || r.height > 16384 || r.frames < 1 || r.warmup < 0)
+        throw FileError(path, "size, frames or warmup out of range");
+    return r;
+}
+
+std::vector<std::pair<RecordedFile, std::string>> ExperimentRecord::changedFiles() const {
+    std::vector<std::pair<RecordedFile, std::string>> changed;
+    for (const RecordedFile& f : sceneFiles) {
+        const std::string now = sha256OfFile(f.path);
+        if (now != f.sha256) changed.emplace_back(f, now);
+    }
+    return changed;
+}
+
+}  // namespace dw

@@ -1,0 +1,112 @@
+#pragma once
+// An experiment record (issue 24): one JSON that holds what made a
+// measurement, so `replay` can restore exactly that state, measure again and
+// say what changed. docs/records.md describes every field. Version 2:
+//   command  render, bench or gui (the window's File > Save record)
+//   scene    the spec, its source and the sha256 of every file it reads: the
+//            scene file, the glTF files a scene JSON names, each glTF's .bin
+//            buffers and images, the sky's files (SceneFiles)
+//   camera, camera_path (fixed, orbit poses, or the walkthrough's keyframes)
+//   knobs    every knob's value as --set takes it (bench: before the sweep)
+//   seeds    every random seed the command used (bench's lights, the
+//            bootstrap's); size, frames, warmup, buffer
+//   grid     bench only: sizes, lights, sweep, block, light radius, orbit ...
+//   build    version, commit at configure time, compiler, flags, build type
+//   gl, host
+//   results  render/gui: per timing series the counted frames' GPU and CPU ms
+//            with the median and its bootstrap 95% interval, the buffer's
+//            pixel sha256, metrics when the command computed any; bench: the
+//            summary bench --json always wrote (machine, settings, axes,
+//            baseline, configs with samples, ratios and intervals)
+// Version 1 (render --record before the bench and window records) still
+// reads: its missing fields take the values a version 1 run had (a fixed
+// camera, no seeds, no flags). A newer version is refused with its version
+// named. Read through the JSON nesting guard (readJsonFile).
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/RenderSession.h"
+#include "renderer/RunConfig.h"
+#include "renderer/bench/BenchRunner.h"
+
+namespace dw {
+
+using RecordFields = std::vector<std::pair<std::string, std::string>>;
+
+struct RecordedFile {
+    std::string path, sha256;  // sha256 empty: the file could not be read
+};
+
+struct RecordedSeries {
+    std::string name;  // a pass, a span ("lighting/shadow maps") or "frame"
+    std::vector<double> gpuMs, cpuMs;  // one per counted frame
+};
+
+struct RecordedCameraPath {
+    std::string mode = "fixed";  // fixed, orbit or walkthrough
+    int orbitPoses = 0;
+    std::vector<CameraKeyframe> keyframes;  // the scene's camera.path (walkthrough)
+};
+
+// What `bench` needs to run the same grid again.
+struct RecordedBench {
+    BenchOptions options;  // run.scene and run.sets (every knob) included
+    std::string ratioOf = "frame";
+    int resamples = 2000;
+    bool merged = false;   // written by bench merge: no grid to run again
+};
+
+struct ExperimentRecord {
+    static constexpr int kVersion = 2;
+    static constexpr std::uint64_t kBootstrapSeed = 12345;
+    int version = kVersion;
+    int readVersion = kVersion;  // the version the file had (1: migrated on reading)
+    std::string command = "render";
+    std::string sceneSpec, sceneSource;
+    std::vector<RecordedFile> sceneFiles;
+    Camera camera;
+    RecordedCameraPath cameraPath;
+    RecordFields knobs;
+    RecordFields seeds;
+    int width = 0, height = 0, frames = 1, warmup = 0;
+    std::string buffer = "final";
+    RecordFields build, gl, host;
+    std::vector<RecordedSeries> timings;
+    std::vector<std::pair<std::string, double>> metrics;
+    std::string imageSha256;
+    int imageWidth = 0, imageHeight = 0, imageChannels = 0;
+    std::optional<RecordedBench> bench;
+    nlohmann::ordered_json benchResults;  // bench: the results object (benchResultsJson)
+
+    // After a run of `run` in `session` whose counted frames start at
+    // `firstCounted` (waits for the timer's outstanding frames).
+    static ExperimentRecord capture(RenderSession& session, const RunConfig& run, const std::string& buffer,
+                                    std::uint64_t firstCounted, const std::string& glPlatform);
+    // A bench run: its options (before the runner took them), the scene it
+    // loaded, and what it measured.
+    static ExperimentRecord forBench(const RecordedBench& bench, const Scene& scene, const BenchResults& results,
+                                     const BenchSummary& summary);
+    // From measured results alone (bench merge): no grid to run again.
+    static ExperimentRecord forBenchResults(const BenchResults& results, const BenchSummary& summary);
+
+    std::string json() const;
+    // Throws FileError naming the file and what is wrong (a newer version, a missing field).
+    static ExperimentRecord read(const std::string& path);
+    static ExperimentRecord parse(const std::string& text, const std::string& path);
+    static ExperimentRecord fromJson(const nlohmann::json& j, const std::string& path);
+    void write(const std::string& path) const;
+
+    // sha256 of `buffer` as written: display bytes or raw floats; sets the shape.
+    static std::string hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
+                                  int& channels);
+    // Every knob of `knobs` as name -> value text.
+    static RecordFields knobFields(const KnobRegistry& knobs);
+    // Each recorded file whose content is not what it was: path, old sha256, new ("" unreadable).
+    std::vector<std::pair<RecordedFile, std::string>> changedFiles() const;
+};
+
+}  // namespace dw

@@ -1,0 +1,113 @@
+#include "renderer/record/SceneFiles.h"
+
+#include <openssl/evp.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "renderer/Error.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/record/ExperimentRecord.h"
+
+namespace dw {
+
+namespace fs = std::filesystem;
+
+std::string sha256Hex(const void* data, size_t size) {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    if (!EVP_Digest(data, size, digest, &length, EVP_sha256(), nullptr)) throw Error("sha256 failed");
+    std::string hex;
+    char byte[3];
+    for (unsigned int i = 0; i < length; ++i) {
+        std::snprintf(byte, sizeof(byte), "%02x", digest[i]);
+        hex += byte;
+    }
+    return hex;
+}
+
+std::string sha256OfFile(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) return "";
+    const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    return sha256Hex(bytes.data(), bytes.size());
+}
+
+namespace {
+
+bool isExternalUri(const nlohmann::json& uri) {
+    if (!uri.is_string()) return false;
+    const std::string u = uri.get<std::string>();
+    return !u.empty() && u.rfind("data:", 0) != 0;
+}
+
+// A relative name as the loaders resolve it: against the folder of the file that names it.
+std::string resolved(const fs::path& from, const std::string& name) {
+    const fs::path p(name);
+    return (p.is_absolute() ? p : from.parent_path() / p).lexically_normal().string();
+}
+
+class SceneFileList {
+public:
+    void add(const std::string& name) {
+        const std::string path = fs::path(name).lexically_normal().string();
+        std::error_code ec;
+        if (path.empty() || !fs::is_regular_file(path, ec) || !seen_.insert(path).second) return;
+        paths_.push_back(path);
+        const std::string ext = fs::path(path).extension().string();
+        // A file that cannot be parsed here was read by the loader all the
+        // same (or refused): its own hash is what the record needs.
+        try {
+            if (ext == ".gltf") addGltfParts(path);
+            else if (ext == ".json") addSceneParts(path);
+        } catch (const Error&) {
+        }
+    }
+    const std::vector<std::string>& paths() const { return paths_; }
+
+private:
+    void addGltfParts(const std::string& path) {
+        const nlohmann::json j = readJsonFile(path, {kMaxJsonDepth, false});
+        for (const char* key : {"buffers", "images"})
+            if (j.contains(key) && j[key].is_array())
+                for (const auto& item : j[key])
+                    if (item.is_object() && item.contains("uri") && isExternalUri(item["uri"]))
+                        add(resolved(path, item["uri"].get<std::string>()));
+    }
+    // Every "gltf" an object names and the sky's "file" / "files".
+    void addSceneParts(const std::string& path) {
+        const nlohmann::json j = readJsonFile(path, {kMaxJsonDepth, false});
+        if (!j.is_object()) return;
+        if (j.contains("objects") && j["objects"].is_array())
+            for (const auto& o : j["objects"])
+                if (o.is_object() && o.contains("gltf") && o["gltf"].is_string())
+                    add(resolved(path, o["gltf"].get<std::string>()));
+        if (j.contains("sky") && j["sky"].is_object()) {
+            const auto& sky = j["sky"];
+            if (sky.contains("file") && sky["file"].is_string()) add(resolved(path, sky["file"].get<std::string>()));
+            if (sky.contains("files") && sky["files"].is_array())
+                for (const auto& f : sky["files"])
+                    if (f.is_string()) add(resolved(path, f.get<std::string>()));
+        }
+    }
+
+    std::set<std::string> seen_;
+    std::vector<std::string> paths_;
+};
+
+}  // namespace
+
+std::vector<RecordedFile> sceneFilesOf(const Scene& scene) {
+    SceneFileList list;
+    if (scene.source.rfind("builtin:", 0) != 0) list.add(scene.source);
+    list.add(scene.sky.environmentSource);
+    for (const Image& image : scene.images) list.add(image.source);
+    std::vector<RecordedFile> files;
+    for (const std::string& p : list.paths()) files.push_back({p, sha256OfFile(p)});
+    return files;
+}
+
+}  // namespace dw
