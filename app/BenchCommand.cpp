@@ -3,9 +3,7 @@
 // the CSVs of shards. docs/bench.md says how to run it and what each column means.
 #include <fcntl.h>
 #include <malloc.h>
-#include <spawn.h>
 #include <sys/utsname.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +19,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -28,6 +27,7 @@
 
 #include "app/CommandLine.h"
 #include "app/HostInfo.h"
+#include "app/PlotScript.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
@@ -39,8 +39,6 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/knobs/KnobRegistry.h"
 
-extern char** environ;
-
 namespace dw {
 
 namespace fs = std::filesystem;
@@ -50,11 +48,11 @@ namespace {
 const char* const kBenchUsage =
     "usage: deferred-workbench bench [--scene NAME|FILE] [--preset NAME|FILE] [--set knob=value]...\n"
     "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
-    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]...\n"
+    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
     "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
     "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
     "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--quiet]\n"
+    "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
     "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
     "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
     "  --size       render sizes (default 640x360); one session per size, all in one process\n"
@@ -64,6 +62,8 @@ const char* const kBenchUsage =
     "  --light-radius  each generated light's volume radius at lighting.threshold (default: a tenth\n"
     "               of the scene bounds' diagonal)\n"
     "  --sweep      a knob axis, e.g. lighting.strategy=stencil_volumes,volumes,fullscreen; repeatable\n"
+    "  --exclude    a corner of the grid left out: every named axis (size, lights, a knob) at one of its\n"
+    "               values, e.g. lighting.strategy=fullscreen,lights=10000; repeatable\n"
     "  --frames     counted frames per configuration (default 10); --warmup frames after each switch\n"
     "               are left out (default 1); --block K counted frames in a row per configuration\n"
     "               (default 1: A B C A B C ...)\n"
@@ -84,6 +84,8 @@ const char* const kBenchUsage =
     "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
     "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
     "               scripts/bench_plot.py (python3-matplotlib); --plot-size in pixels (default 800x500)\n"
+    "  --resume     the CSV of an interrupted run of the same grid (samples are written as they are\n"
+    "               measured): its counted frames are kept, the rest measured\n"
     "  --quiet      no progress lines on stderr\n";
 
 // What the run ran on, besides the GL strings the runner reads.
@@ -106,71 +108,11 @@ BenchFields hostFields() {
     return f;
 }
 
-fs::path locatePlotScript() {
-    std::vector<fs::path> candidates;
-    if (const char* env = std::getenv("DW_BENCH_PLOT_SCRIPT")) candidates.emplace_back(env);
-#ifdef DW_SOURCE_SCRIPTS_DIR
-    candidates.push_back(fs::path(DW_SOURCE_SCRIPTS_DIR) / "bench_plot.py");
-#endif
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        candidates.push_back(exe.parent_path() / "bench_plot.py");
-        candidates.push_back(exe.parent_path().parent_path() / "share/deferred-workbench/bench_plot.py");
-    }
-    for (const auto& c : candidates)
-        if (fs::is_regular_file(c, ec)) return c;
-    return {};
-}
-
-// Runs `python script args...`; its exit code, or -1 when it could not start.
-int runPython(const std::string& python, std::vector<std::string> args) {
-    args.insert(args.begin(), python);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::fflush(nullptr);
-    pid_t pid = 0;
-    if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
-    int status = 0;
-    if (waitpid(pid, &status, 0) != pid) return -1;
-    if (!WIFEXITED(status)) return -1;
-    return WEXITSTATUS(status) == 127 ? -1 : WEXITSTATUS(status);
-}
-
-// Draws the plot with scripts/bench_plot.py; false (after saying why) when it
-// cannot. Interpreters tried: $DW_PYTHON, Debian's /usr/bin/python3 (where
-// python3-matplotlib installs), then python3 on the PATH (which may be
-// another Python without matplotlib); the script exits 3 when matplotlib is missing.
+// Draws the plot with scripts/bench_plot.py (PlotScript); false (after saying why) when it cannot.
 bool drawPlot(const std::string& csv, const std::string& png, int width, int height) {
-    const fs::path script = locatePlotScript();
-    if (script.empty()) {
-        std::fprintf(stderr, "bench: cannot find bench_plot.py (set DW_BENCH_PLOT_SCRIPT to scripts/bench_plot.py)\n");
-        return false;
-    }
-    std::vector<std::string> pythons;
-    if (const char* env = std::getenv("DW_PYTHON")) pythons.emplace_back(env);
-    pythons.emplace_back("/usr/bin/python3");
-    pythons.emplace_back("python3");
-    const std::vector<std::string> args = {script.string(), "--csv", csv, "--out", png,
-                                           "--size", std::to_string(width) + "x" + std::to_string(height)};
-    bool anyPython = false;
-    for (const auto& python : pythons) {
-        const int code = runPython(python, args);
-        if (code == 0) return true;
-        if (code == 3 || code == -1) {  // no matplotlib there, or no such interpreter: try the next
-            anyPython = anyPython || code == 3;
-            continue;
-        }
-        std::fprintf(stderr, "bench: the plot script failed (%s, exit %d); the CSV and JSON are written\n",
-                     script.c_str(), code);
-        return false;
-    }
-    std::fprintf(stderr, "bench: %s; the CSV and JSON are written\n",
-                 anyPython ? "no python3 here has matplotlib (Debian: apt-get install python3-matplotlib, or "
-                             "scripts/setup-deps.sh --tests)"
-                           : "cannot run python3 for the plot (Debian: apt-get install python3-matplotlib)");
-    return false;
+    return runPlotScript("bench_plot.py", "DW_BENCH_PLOT_SCRIPT",
+                         {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
+                         "bench");
 }
 
 // The exit code: 1 when --plot was asked for and could not be drawn (the CSV and JSON are written).
@@ -180,8 +122,9 @@ int writePlot(const std::string& csv, const std::string& png, int width, int hei
     return 0;
 }
 
-void printTables(const BenchResults& results, const BenchSummary& summary, const std::string& title) {
-    std::printf("## %s\n\n%s\nGPU median ms per pass:\n\n%s\n", title.c_str(), markdownTable(results, summary).c_str(),
+void printTables(const BenchResults& results, const BenchSummary& summary, const std::string& title, int resamples) {
+    std::printf("## %s\n\n%s\n\n%s\n%s\n\n%s\n", title.c_str(), mainTableCaption(summary, resamples).c_str(),
+                markdownTable(results, summary).c_str(), passTableCaption().c_str(),
                 markdownPassTable(results, summary).c_str());
 }
 
@@ -307,8 +250,8 @@ std::vector<std::string> shellWords(const std::string& text) {
 }
 
 std::string runOf(const std::string& command) {
-    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",    "--plot",
-                                                  "--plot-size", "--baseline", "--ratio-of", "--resamples"};
+    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",      "--plot",   "--plot-size",
+                                                  "--baseline", "--ratio-of", "--resamples", "--resume"};
     static const std::set<std::string> bare = {"--quiet", "--no-lpp", "--keep-scene-lights", "--walkthrough"};
     const std::vector<std::string> tokens = shellWords(command);
     std::vector<std::string> words0, unordered, ordered;  // the subcommand's words, then the options
@@ -532,7 +475,8 @@ int runMerge(int argc, char** argv) {
     const BenchSummary summary = summarize(all, baseline, resamples);
     printTables(all, summary,
                 "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
-                    std::to_string(inputs.size()) + " shard(s)");
+                    std::to_string(inputs.size()) + " shard(s)",
+                resamples);
     std::fflush(stdout);
     std::vector<std::function<void()>> outputs = {[&] { all.writeCsv(*out); }};
     if (json) outputs.push_back([&] { writeBenchJson(*json, all, summary); });
@@ -594,6 +538,13 @@ int runBenchCommand(int argc, char** argv) {
             if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
         o.grid.knobAxes.push_back(std::move(axis));
     }
+    for (const auto& e : cl.values("--exclude")) {
+        try {
+            o.exclude.add(e);
+        } catch (const Error& err) {
+            throw UsageError(err.what());
+        }
+    }
     o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), 1, 100000);
     o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
     o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
@@ -638,6 +589,7 @@ int runBenchCommand(int argc, char** argv) {
     const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     const bool quiet = cl.flag("--quiet");
+    const auto resumeFrom = cl.value("--resume");
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
     // The outputs are checked before the run, so a long run is never lost to a bad path.
@@ -671,10 +623,35 @@ int runBenchCommand(int argc, char** argv) {
                      shardText.c_str(), runner.gridSize());
     for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
+    // --resume: what an interrupted run of this grid measured (a last line cut short is left out).
+    std::optional<BenchResults> resumed;
+    if (resumeFrom) resumed = BenchResults::readCsv(*resumeFrom, true);
+
+    // The samples go to the CSV as they are measured, so a killed run keeps
+    // them (bench --resume continues from it); the whole file, in order, is
+    // written over it at the end.
+    std::unique_ptr<std::ofstream> live;
+    bool liveFailed = false;
+    const BenchStream stream = [&](const BenchResults& soFar, const std::vector<BenchSample>& fresh) {
+        if (liveFailed) return;
+        if (!live) {
+            live = std::make_unique<std::ofstream>(csv, std::ios::trunc);
+            *live << BenchResults::csvHeader(soFar.knobAxes) << "\n";
+        }
+        *live << soFar.csvRows(fresh);
+        if (!live->flush()) {
+            liveFailed = true;
+            std::fprintf(stderr, "bench: warning: %s: cannot write the samples as they come; they are written at the end\n",
+                         csv.c_str());
+        }
+    };
     auto context = HeadlessGlContext::create();
-    BenchResults results = runner.run([&](const std::string& line) {
-        if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
-    });
+    BenchResults results = runner.run(
+        [&](const std::string& line) {
+            if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
+        },
+        stream, resumed ? &*resumed : nullptr);
+    live.reset();
     BenchFields machine = results.machine;
     machine.emplace_back("gl_platform", context->platform());
     for (auto& f : hostFields()) machine.push_back(std::move(f));
@@ -691,7 +668,8 @@ int runBenchCommand(int argc, char** argv) {
                     (results.configs.empty() ? std::string()
                                              : " on " + fieldOr(results.machine, "gl_renderer", "?")) +
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
-                                     : std::string()));
+                                     : std::string()),
+                resamples);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] { writeBenchJson(json, results, summary); }});
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());

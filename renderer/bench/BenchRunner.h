@@ -21,6 +21,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/bench/GridExclusion.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -39,10 +40,16 @@ struct BenchOptions {
     int lppPoses = 4;               // poses the LPP frame is averaged over on a moving camera
     bool lpp = true;
     BenchShard shard;
+    GridExclusion exclude;  // --exclude: corners of the grid left out (axes size, lights and the knobs)
     std::string baseline;  // --baseline axis=value; empty: chooseBaseline's rule
 };
 
 using BenchProgress = std::function<void(const std::string&)>;
+// Called as the timed rounds go with the frames just harvested (whole
+// frames, their rows in pipeline order); `so far` holds the run's knob axes
+// and configurations with their LPP, to write the samples CSV's rows from
+// (BenchResults::csvRows). So a killed run keeps what it measured.
+using BenchStream = std::function<void(const BenchResults& soFar, const std::vector<BenchSample>& fresh)>;
 
 class BenchRunner {
 public:
@@ -59,7 +66,13 @@ public:
     const Scene& scene() const { return scene_; }
 
     // Needs a current GL 4.5 context. `progress` gets a line now and then.
-    BenchResults run(const BenchProgress& progress = {});
+    // Lights per pixel are measured first (untimed), then the timed rounds.
+    // `resumed`: the samples of an earlier, interrupted run of this grid
+    // (bench --resume): its counted frames with a "frame" row are kept and
+    // not measured again (a frame cut short is measured again); the new
+    // frames' seq continue after its. Throws Error when it is another grid.
+    BenchResults run(const BenchProgress& progress = {}, const BenchStream& stream = {},
+                     const BenchResults* resumed = nullptr);
 
 private:
     BenchOptions o_;

@@ -24,4 +24,23 @@ double median(std::vector<double> values);
 RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::vector<double>& b, int resamples = 2000,
                                       std::uint64_t seed = 12345, double alpha = 0.05);
 
+// A percentile interval of a statistic of resampled data.
+struct Interval {
+    double low = 0.0, high = 0.0;
+    int resamples = 0;
+    bool valid() const { return resamples > 0; }
+};
+
+// The median of `values` resampled with replacement: its (1 - alpha)
+// percentile interval (`tradeoff`'s frame time interval). Invalid when empty.
+Interval bootstrapMedian(const std::vector<double>& values, int resamples = 2000, std::uint64_t seed = 12345,
+                         double alpha = 0.05);
+
+// The weighted mean sum(sums) / sum(weights) over groups resampled with
+// replacement (group i: sums[i], weights[i]; e.g. a tile's summed per-pixel
+// error and its pixel count, or one camera's error with weight 1): its
+// (1 - alpha) percentile interval. Invalid when empty or all weights are 0.
+Interval bootstrapGroupMean(const std::vector<double>& sums, const std::vector<double>& weights, int resamples = 2000,
+                            std::uint64_t seed = 12345, double alpha = 0.05);
+
 }  // namespace dw
