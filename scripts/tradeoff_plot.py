@@ -4,7 +4,10 @@ error, both with their 95% intervals, the Pareto front highlighted and each
 point on it labelled with its settings. With several cameras the rows over
 all cameras ("all") are drawn. `tradeoff --plot FILE.png` runs it; by hand:
 
-    python3 scripts/tradeoff_plot.py --csv tradeoff.csv --out tradeoff.png [--size 800x600]
+    python3 scripts/tradeoff_plot.py --csv tradeoff.csv --out tradeoff.png [--size 800x600] [--overlay presets.csv]
+
+--overlay draws another tradeoff CSV's points (e.g. presets measured the same
+way) over the first, as labelled diamonds.
 
 Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
 (Debian: apt-get install python3-matplotlib).
@@ -61,10 +64,12 @@ def main():
     parser.add_argument("--csv", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--size", default="800x600")
+    parser.add_argument("--overlay", action="append", default=[], help="another tradeoff CSV drawn over it")
     args = parser.parse_args()
     try:
         width, height = (int(v) for v in args.size.split("x"))
         axes, rows = read(args.csv)
+        overlays = [read(path) for path in args.overlay]
     except (ValueError, OSError) as e:
         print(f"tradeoff_plot: {e}", file=sys.stderr)
         return 2
@@ -76,11 +81,15 @@ def main():
         print("tradeoff_plot: matplotlib is missing (Debian: apt-get install python3-matplotlib)", file=sys.stderr)
         return 3
 
-    shown = [r for r in rows if r["camera"] == "all"]
-    if not shown:
-        cameras = sorted({r["camera"] for r in rows})
-        shown = [r for r in rows if r["camera"] == cameras[0]] if cameras else []
-    shown = [r for r in shown if math.isfinite(r["ms"]) and math.isfinite(r["error"])]
+    def shown_rows(rows):
+        """The all-cameras rows when there are any, else the first camera's; with a time and an error."""
+        shown = [r for r in rows if r["camera"] == "all"]
+        if not shown:
+            cameras = sorted({r["camera"] for r in rows})
+            shown = [r for r in rows if r["camera"] == cameras[0]] if cameras else []
+        return [r for r in shown if math.isfinite(r["ms"]) and math.isfinite(r["error"])]
+
+    shown = shown_rows(rows)
     # Only the axes that vary name the points.
     varying = [i for i, _ in enumerate(axes) if len({tuple([r["values"][i]]) for r in shown}) > 1]
 
@@ -108,6 +117,20 @@ def main():
         for r in front:
             ax.annotate(label(r), (r["ms"], r["error"]), textcoords="offset points", xytext=(6, 6), fontsize=8,
                         color="tab:red")
+    for k, (o_axes, o_rows) in enumerate(overlays):
+        points = shown_rows(o_rows)
+        if not points:
+            continue
+        o_vary = [i for i, _ in enumerate(o_axes) if len({r["values"][i] for r in points}) > 1]
+        ax.errorbar([r["ms"] for r in points], [r["error"] for r in points],
+                    xerr=[[max(0.0, r["ms"] - r["ms_lo"]) for r in points], [max(0.0, r["ms_hi"] - r["ms"]) for r in points]],
+                    yerr=[[max(0.0, r["error"] - r["lo"]) for r in points], [max(0.0, r["hi"] - r["error"]) for r in points]],
+                    fmt="D", color=f"C{k}", ecolor=f"C{k}", alpha=0.8, capsize=3, markersize=6,
+                    label=args.overlay[k].rsplit("/", 1)[-1], zorder=4)
+        for r in points:
+            text = ", ".join(r["values"][i] if o_axes[i] == "preset" else f"{o_axes[i]}={r['values'][i]}" for i in o_vary)
+            ax.annotate(text or f"point {r['point']}", (r["ms"], r["error"]), textcoords="offset points",
+                        xytext=(6, -10), fontsize=8, color=f"C{k}")
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
     ax.set_xlabel("GPU frame ms (median, 95% CI)")

@@ -42,6 +42,8 @@ ErrorEstimate ImageError::measure(const FloatImage& reference, const FloatImage&
         throw Error("--metric: expected flip, rms, psnr or ssim, got '" + metric + "'");
     ComparisonSettings settings;
     settings.hdr = hdr;
+    settings.ssim = metric == "ssim";
+    settings.flipMetric = metric == "flip";
     const ImageComparison c = ImageComparison::measure(reference, test, settings);
     ErrorEstimate e;
     std::vector<double> sums, counts;
