@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "renderer/bench/TradeoffRunner.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/io/ImageIO.h"
 #include "tests/support/TestSupport.h"
@@ -84,7 +85,9 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
     EXPECT_EQ(rowOf(t, "16", "half")->point, 3);
 
     // The table on stdout says what its numbers are and marks the front.
-    EXPECT_NE(r.out.find("rms of ao (ssao.blurred) against the CPU reference"), std::string::npos) << r.out;
+    // "ao" is the AO buffer the lighting pass reads (ssao.blurred, or ao.filtered with the AO methods).
+    const std::string ao = TradeoffRunner::gpuOutput("ao");
+    EXPECT_NE(r.out.find("rms of ao (" + ao + ") against the CPU reference"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("**front**"), std::string::npos);
     EXPECT_NE(r.out.find("| point | ssao.samples | ssao.resolution |"), std::string::npos) << r.out;
 
@@ -92,7 +95,7 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
     const nlohmann::json j = nlohmann::json::parse(jf);
     EXPECT_EQ(j["rows"].size(), 6u);
     EXPECT_EQ(j["settings"]["against"], "reference");
-    EXPECT_EQ(j["settings"]["buffer"], "ao (ssao.blurred)");
+    EXPECT_EQ(j["settings"]["buffer"], "ao (" + ao + ")");
     EXPECT_EQ(j["settings"]["references_rendered"].get<std::string>() == "1" ||
                   j["settings"]["references_from_cache"].get<std::string>() == "1",
               true)
