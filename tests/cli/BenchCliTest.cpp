@@ -2,9 +2,13 @@
 // CSV, the JSON and the Markdown table, the plot a PNG of the size asked
 // for, and shards that merge back into the grid. Timings are never asserted.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -605,4 +609,47 @@ TEST(BenchCli, ResumeFromAPartialCsvAndExclude) {
     const Result unknown = run(grid + " --csv /dev/null --json /dev/null --exclude ssao.samples=8");
     EXPECT_NE(unknown.code, 0);
     EXPECT_NE(unknown.err.find("'ssao.samples' is not an axis of this sweep"), std::string::npos) << unknown.err;
+}
+
+// A killed run keeps what it measured: the samples go to the CSV as frames
+// are harvested, so a SIGKILL mid-run leaves whole frames (and maybe half a
+// line) that --resume completes.
+TEST(BenchCli, AKilledRunKeepsItsSamplesAndResumes) {
+    const fs::path dir = test::tempDir() / "bench-killed";
+    fs::create_directories(dir);
+    const fs::path live = dir / "live.csv";
+    fs::remove(live);
+    const std::string grid = "bench --scene default --size 64x36 --lights 1,10 "
+                             "--sweep lighting.strategy=stencil_volumes,fullscreen --frames 40 --quiet --resamples 200";
+    const std::string start = std::string(DW_WORKBENCH_BINARY) + " " + grid + " --csv " + live.string() +
+                              " --json " + (dir / "live.json").string() + " > /dev/null 2>&1 & echo $!";
+    FILE* shell = popen(start.c_str(), "r");
+    ASSERT_NE(shell, nullptr);
+    int pid = 0;
+    ASSERT_EQ(std::fscanf(shell, "%d", &pid), 1);
+    pclose(shell);
+    // Wait until some rounds are on disk, then kill it without warning.
+    auto lines = [&] {
+        std::ifstream f(live);
+        return static_cast<int>(std::count(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>(), '\n'));
+    };
+    for (int i = 0; i < 600 && lines() < 60 && ::kill(pid, 0) == 0; ++i) usleep(100000);
+    const bool running = ::kill(pid, SIGKILL) == 0;
+    for (int i = 0; i < 100 && ::kill(pid, 0) == 0; ++i) usleep(50000);
+    ASSERT_TRUE(running) << "the run ended before it could be killed (" << lines() << " lines)";
+    const int kept = lines();
+    EXPECT_GE(kept, 60);
+    const auto partial = readCsv(live);
+    int frames = 0;
+    for (size_t i = 1; i < partial.size(); ++i) frames += partial[i].size() > 9 && partial[i][9] == "frame";
+    EXPECT_GT(frames, 0) << "whole frames in the killed run's CSV";
+    EXPECT_LT(frames, 160);
+
+    const Result resumed = run(grid + " --csv " + (dir / "done.csv").string() + " --json " +
+                               (dir / "done.json").string() + " --resume " + live.string());
+    ASSERT_EQ(resumed.code, 0) << resumed.err;
+    const auto done = readCsv(dir / "done.csv");
+    int all = 0;
+    for (size_t i = 1; i < done.size(); ++i) all += done[i][9] == "frame";
+    EXPECT_EQ(all, 4 * 40);
 }
