@@ -57,6 +57,21 @@ RenderSession& ConfigurationRunner::capture(int config, int sample, const FrameR
     return session;
 }
 
+double ConfigurationRunner::timeLeft(const std::vector<double>& roundSeconds, const std::vector<int>& roundsLeft) {
+    double known = 0.0, sum = 0.0, unknownRounds = 0.0;
+    int measured = 0;
+    for (size_t c = 0; c < roundSeconds.size() && c < roundsLeft.size(); ++c) {
+        if (roundSeconds[c] >= 0.0) {
+            known += roundSeconds[c];
+            ++measured;
+            sum += roundSeconds[c] * roundsLeft[c];
+        } else {
+            unknownRounds += roundsLeft[c];
+        }
+    }
+    return sum + (measured > 0 ? known / measured * unknownRounds : 0.0);
+}
+
 RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::function<std::string(int)>& describe,
                                            const Progress& progress, const Stream& stream,
                                            const std::function<bool(int, int)>& skip) {
@@ -155,21 +170,6 @@ RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::f
                 }
             roundsLeft[static_cast<size_t>(c)] += any ? 1 : 0;
         }
-    auto timeLeft = [&] {
-        double known = 0.0, sum = 0.0, unknownRounds = 0.0;
-        int measured = 0;
-        for (int c = 0; c < configs; ++c) {
-            const double s = roundSeconds[static_cast<size_t>(c)];
-            if (s >= 0.0) {
-                known += s;
-                ++measured;
-                sum += s * roundsLeft[static_cast<size_t>(c)];
-            } else {
-                unknownRounds += roundsLeft[static_cast<size_t>(c)];
-            }
-        }
-        return sum + (measured > 0 ? known / measured * unknownRounds : 0.0);
-    };
 
     long long seq = 0;
     int previous = -1;
@@ -202,9 +202,18 @@ RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::f
             --roundsLeft[static_cast<size_t>(c)];
             if (elapsed() - lastSaid > 2.0) {
                 lastSaid = elapsed();
+                // Configurations not timed yet count at the mean of those timed: say how many, since
+                // a slow one among them (fullscreen at 10 000 lights) makes the estimate low.
+                int untimed = 0;
+                for (int k = 0; k < configs; ++k)
+                    untimed += roundSeconds[static_cast<size_t>(k)] < 0.0 && roundsLeft[static_cast<size_t>(k)] > 0;
                 say(name + ": frame " + std::to_string(seq) + "/" + std::to_string(total) + " (round " +
                     std::to_string(round + 1) + "/" + std::to_string(roundCount) + "), " + duration(lastSaid) +
-                    " elapsed, about " + duration(timeLeft()) + " left; now " + (describe ? describe(c) : std::to_string(c)));
+                    " elapsed, about " + duration(timeLeft(roundSeconds, roundsLeft)) + " left" +
+                    (untimed > 0 ? " (" + std::to_string(untimed) + " of " + std::to_string(configs) +
+                                       " configurations not timed yet)"
+                                 : std::string()) +
+                    "; now " + (describe ? describe(c) : std::to_string(c)));
             }
         }
         if (stream) harvest(false);

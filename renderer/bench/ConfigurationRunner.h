@@ -68,6 +68,11 @@ public:
                           const Progress& progress = {}, const Stream& stream = {},
                           const std::function<bool(int, int)>& skip = {});
 
+    // Seconds left: each configuration's measured wall seconds per round
+    // (negative: not measured yet) times its rounds left; the ones not
+    // measured yet at the mean of those measured (0 when none is).
+    static double timeLeft(const std::vector<double>& roundSeconds, const std::vector<int>& roundsLeft);
+
     // One untimed frame of `config` at counted frame `sample`'s pose, asking
     // for `request`'s outputs; returns the session to read them from.
     RenderSession& capture(int config, int sample, const FrameRequest& request);

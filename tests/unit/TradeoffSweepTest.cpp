@@ -8,6 +8,7 @@
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/Bootstrap.h"
+#include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/GridExclusion.h"
 #include "renderer/bench/ImageError.h"
 #include "renderer/bench/TradeoffSweep.h"
@@ -140,4 +141,21 @@ TEST(ImageError, MetricsAndTheirIntervals) {
     EXPECT_GE(m.low, 1.0);
     EXPECT_LE(m.high, 100.0);
     EXPECT_FALSE(bootstrapMedian({}).valid());
+}
+
+// bench's time left (issue 23: "about 2:45 left" for a run that took 11:37):
+// each configuration's rounds at its own measured round time (warm-up and
+// block included), not the run's mean time per counted frame; the ones not
+// timed yet at the mean of those timed (the progress line says how many).
+TEST(ConfigurationRunner, TimeLeftFromEachConfigurationsRoundTime) {
+    // Three configurations, 10 rounds each; two fast ones (1 s a round) timed once,
+    // the slow third (10 s a round) not reached yet: it counts at their mean.
+    EXPECT_DOUBLE_EQ(ConfigurationRunner::timeLeft({1.0, 1.0, -1.0}, {9, 9, 10}), 9 + 9 + 10 * 1.0);
+    // Once the slow one is timed, its rounds count at its own time: 9 + 9 + 90.
+    EXPECT_DOUBLE_EQ(ConfigurationRunner::timeLeft({1.0, 1.0, 10.0}, {9, 9, 9}), 108.0);
+    // Resumed or excluded frames: a configuration with no rounds left adds nothing,
+    // however slow (a mean per frame over the run would still weigh it).
+    EXPECT_DOUBLE_EQ(ConfigurationRunner::timeLeft({10.0, 1.0}, {0, 9}), 9.0);
+    EXPECT_DOUBLE_EQ(ConfigurationRunner::timeLeft({-1.0, -1.0}, {3, 3}), 0.0);
+    EXPECT_DOUBLE_EQ(ConfigurationRunner::timeLeft({2.0, 4.0}, {0, 0}), 0.0);
 }
