@@ -6,13 +6,14 @@
 // ready, so a configuration switch is swapping the session's light list (the
 // light table is rebuilt from it every frame; the geometry stays uploaded)
 // and re-applying the knobs in the run configuration's order plus the
-// configuration's own values. Frames are interleaved: round after round,
-// every configuration renders its warm-up frames (left out) and then a block
-// of counted frames, so slow drift of the machine falls on all of them
-// alike. Timings come from PassTimer's timestamps, harvested at the end
-// (collect(true)), never by waiting inside the loop. Lights per pixel come
-// from an extra, untimed frame per configuration that asks for
-// lighting.overlap (the counting variant costs more than plain shading).
+// configuration's own values. The timed rounds are ConfigurationRunner's
+// (shared with tradeoff): interleaved, round after round every configuration
+// renders its warm-up frames (left out) and then a block of counted frames,
+// so slow drift of the machine falls on all of them alike; PassTimer's
+// timestamps are harvested without waiting inside the loop and streamed to
+// the caller as they come. Lights per pixel come first, from an extra,
+// untimed frame per configuration that asks for lighting.overlap (the
+// counting variant costs more than plain shading).
 #include <cstdint>
 #include <functional>
 #include <string>
