@@ -3,9 +3,7 @@
 // the CSVs of shards. docs/bench.md says how to run it and what each column means.
 #include <fcntl.h>
 #include <malloc.h>
-#include <spawn.h>
 #include <sys/utsname.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +19,7 @@
 #include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -28,10 +27,12 @@
 
 #include "app/CommandLine.h"
 #include "app/HostInfo.h"
+#include "app/PlotScript.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BenchMerge.h"
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/graph/Pipeline.h"
@@ -39,8 +40,6 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/record/ExperimentRecord.h"
-
-extern char** environ;
 
 namespace dw {
 
@@ -51,11 +50,11 @@ namespace {
 const char* const kBenchUsage =
     "usage: deferred-workbench bench [--scene NAME|FILE] [--preset NAME|FILE] [--set knob=value]...\n"
     "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
-    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]...\n"
+    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
     "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
     "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
     "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--quiet]\n"
+    "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
     "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
     "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
     "  --size       render sizes (default 640x360); one session per size, all in one process\n"
@@ -65,6 +64,8 @@ const char* const kBenchUsage =
     "  --light-radius  each generated light's volume radius at lighting.threshold (default: a tenth\n"
     "               of the scene bounds' diagonal)\n"
     "  --sweep      a knob axis, e.g. lighting.strategy=stencil_volumes,volumes,fullscreen; repeatable\n"
+    "  --exclude    a corner of the grid left out: every named axis (size, lights, a knob) at one of its\n"
+    "               values, e.g. lighting.strategy=fullscreen,lights=10000; repeatable\n"
     "  --frames     counted frames per configuration (default 10); --warmup frames after each switch\n"
     "               are left out (default 1); --block K counted frames in a row per configuration\n"
     "               (default 1: A B C A B C ...)\n"
@@ -85,6 +86,8 @@ const char* const kBenchUsage =
     "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
     "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
     "               scripts/bench_plot.py (python3-matplotlib); --plot-size in pixels (default 800x500)\n"
+    "  --resume     the CSV of an interrupted run of the same grid (samples are written as they are\n"
+    "               measured): its counted frames are kept, the rest measured\n"
     "  --quiet      no progress lines on stderr\n";
 
 // What the run ran on, besides the GL strings the runner reads.
@@ -107,71 +110,11 @@ BenchFields hostFields() {
     return f;
 }
 
-fs::path locatePlotScript() {
-    std::vector<fs::path> candidates;
-    if (const char* env = std::getenv("DW_BENCH_PLOT_SCRIPT")) candidates.emplace_back(env);
-#ifdef DW_SOURCE_SCRIPTS_DIR
-    candidates.push_back(fs::path(DW_SOURCE_SCRIPTS_DIR) / "bench_plot.py");
-#endif
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        candidates.push_back(exe.parent_path() / "bench_plot.py");
-        candidates.push_back(exe.parent_path().parent_path() / "share/deferred-workbench/bench_plot.py");
-    }
-    for (const auto& c : candidates)
-        if (fs::is_regular_file(c, ec)) return c;
-    return {};
-}
-
-// Runs `python script args...`; its exit code, or -1 when it could not start.
-int runPython(const std::string& python, std::vector<std::string> args) {
-    args.insert(args.begin(), python);
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::fflush(nullptr);
-    pid_t pid = 0;
-    if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
-    int status = 0;
-    if (waitpid(pid, &status, 0) != pid) return -1;
-    if (!WIFEXITED(status)) return -1;
-    return WEXITSTATUS(status) == 127 ? -1 : WEXITSTATUS(status);
-}
-
-// Draws the plot with scripts/bench_plot.py; false (after saying why) when it
-// cannot. Interpreters tried: $DW_PYTHON, Debian's /usr/bin/python3 (where
-// python3-matplotlib installs), then python3 on the PATH (which may be
-// another Python without matplotlib); the script exits 3 when matplotlib is missing.
+// Draws the plot with scripts/bench_plot.py (PlotScript); false (after saying why) when it cannot.
 bool drawPlot(const std::string& csv, const std::string& png, int width, int height) {
-    const fs::path script = locatePlotScript();
-    if (script.empty()) {
-        std::fprintf(stderr, "bench: cannot find bench_plot.py (set DW_BENCH_PLOT_SCRIPT to scripts/bench_plot.py)\n");
-        return false;
-    }
-    std::vector<std::string> pythons;
-    if (const char* env = std::getenv("DW_PYTHON")) pythons.emplace_back(env);
-    pythons.emplace_back("/usr/bin/python3");
-    pythons.emplace_back("python3");
-    const std::vector<std::string> args = {script.string(), "--csv", csv, "--out", png,
-                                           "--size", std::to_string(width) + "x" + std::to_string(height)};
-    bool anyPython = false;
-    for (const auto& python : pythons) {
-        const int code = runPython(python, args);
-        if (code == 0) return true;
-        if (code == 3 || code == -1) {  // no matplotlib there, or no such interpreter: try the next
-            anyPython = anyPython || code == 3;
-            continue;
-        }
-        std::fprintf(stderr, "bench: the plot script failed (%s, exit %d); the CSV and JSON are written\n",
-                     script.c_str(), code);
-        return false;
-    }
-    std::fprintf(stderr, "bench: %s; the CSV and JSON are written\n",
-                 anyPython ? "no python3 here has matplotlib (Debian: apt-get install python3-matplotlib, or "
-                             "scripts/setup-deps.sh --tests)"
-                           : "cannot run python3 for the plot (Debian: apt-get install python3-matplotlib)");
-    return false;
+    return runPlotScript("bench_plot.py", "DW_BENCH_PLOT_SCRIPT",
+                         {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
+                         "bench");
 }
 
 // The exit code: 1 when --plot was asked for and could not be drawn (the CSV and JSON are written).
@@ -181,8 +124,9 @@ int writePlot(const std::string& csv, const std::string& png, int width, int hei
     return 0;
 }
 
-void printTables(const BenchResults& results, const BenchSummary& summary, const std::string& title) {
-    std::printf("## %s\n\n%s\nGPU median ms per pass:\n\n%s\n", title.c_str(), markdownTable(results, summary).c_str(),
+void printTables(const BenchResults& results, const BenchSummary& summary, const std::string& title, int resamples) {
+    std::printf("## %s\n\n%s\n\n%s\n%s\n\n%s\n", title.c_str(), mainTableCaption(summary, resamples).c_str(),
+                markdownTable(results, summary).c_str(), passTableCaption().c_str(),
                 markdownPassTable(results, summary).c_str());
 }
 
@@ -260,87 +204,6 @@ void checkPlotOptions(const std::optional<std::string>& plot, int width, int hei
     CommandLine::requireWritable(*plot, "plot");
 }
 
-// The run a shard's JSON describes, apart from which shard, where its files
-// went and how its tables were made: its command without argv[0], --shard,
-// --csv, --json, --plot, --plot-size, --baseline, --ratio-of, --resamples
-// and --quiet (shards differing only in those measured the same grid; bench
-// merge makes its own tables), its options in any order but --sweep's and
-// --set's among themselves (the order of the axes, and of the assignments,
-// counts). --no-lpp counts: it leaves out a column.
-// An argument as a POSIX shell reads it back: as it is when it holds only
-// safe characters, else in single quotes (a quote inside as '\'').
-std::string shellQuoted(const std::string& arg) {
-    const bool safe = !arg.empty() && std::all_of(arg.begin(), arg.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_-+=.,:/@%", c);
-    });
-    if (safe) return arg;
-    std::string q = "'";
-    for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-// shellQuoted's words, split back.
-std::vector<std::string> shellWords(const std::string& text) {
-    std::vector<std::string> words;
-    std::string word;
-    bool inWord = false, quoted = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (quoted) {
-            if (c == '\'') quoted = false;
-            else word += c;
-        } else if (c == '\'') {
-            quoted = inWord = true;
-        } else if (c == '\\' && i + 1 < text.size()) {
-            word += text[++i];
-            inWord = true;
-        } else if (std::isspace(static_cast<unsigned char>(c))) {
-            if (inWord) words.push_back(word);
-            word.clear();
-            inWord = false;
-        } else {
-            word += c;
-            inWord = true;
-        }
-    }
-    if (inWord) words.push_back(word);
-    return words;
-}
-
-std::string runOf(const std::string& command) {
-    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",    "--plot",
-                                                  "--plot-size", "--baseline", "--ratio-of", "--resamples"};
-    static const std::set<std::string> bare = {"--quiet", "--no-lpp", "--keep-scene-lights", "--walkthrough"};
-    const std::vector<std::string> tokens = shellWords(command);
-    std::vector<std::string> words0, unordered, ordered;  // the subcommand's words, then the options
-    for (std::size_t i = 1; i < tokens.size(); ++i) {     // tokens[0]: argv[0]
-        std::string option = tokens[i];
-        if (option.rfind("--", 0) != 0) {
-            words0.push_back(option);
-            continue;
-        }
-        const std::string flag = option.substr(0, option.find('='));
-        if (flag == option && !bare.count(flag) && i + 1 < tokens.size())
-            option += "=" + tokens[++i];  // "--flag value" as "--flag=value"
-        if (flag == "--quiet" || ignored.count(flag)) continue;
-        (flag == "--sweep" || flag == "--set" ? ordered : unordered).push_back(option);
-    }
-    std::sort(unordered.begin(), unordered.end());
-    std::string run;
-    for (const auto& o : words0) run += (run.empty() ? "" : " ") + o;
-    for (const auto& o : unordered) run += (run.empty() ? "" : " ") + o;
-    for (const auto& o : ordered) run += (run.empty() ? "" : " ") + o;
-    return run;
-}
-
-BenchFields fieldsOf(const nlohmann::json& j) {
-    BenchFields f;
-    if (j.is_object())
-        for (auto it = j.begin(); it != j.end(); ++it)
-            f.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
-    return f;
-}
-
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
     if (cl.flag("--help")) {
@@ -372,169 +235,16 @@ int runMerge(int argc, char** argv) {
     if (json) CommandLine::requireWritable(*json, "merged JSON");
     checkPlotOptions(plot, plotW, plotH);
 
-    std::vector<BenchResults> parts;
-    BenchFields machine, settings;
-    std::string machineNote;
-    // From the shards' JSONs: the run they come from, and which shards of how many.
-    std::string firstRun, firstRunFrom;
-    int shardCount = 0;
-    std::vector<int> shardIndices;
-    // The series the shards' ratios compared and the baseline they divided
-    // by, when all their JSONs agree ("-" when they differ): merge's
-    // defaults for --ratio-of and --baseline.
-    std::string ratioOfFromShards, baselineFromShards;
-    for (const auto& in : inputs) {
-        parts.push_back(BenchResults::readCsv(in));
-        // Every configuration of a run counts the same frames: one with
-        // fewer (or none) was cut short, even at a line's end. How many,
-        // the shard's JSON says; without it, the most any configuration has.
-        std::map<int, int> framesOf;
-        for (const auto& sample : parts.back().samples)
-            if (sample.series == "frame") ++framesOf[sample.config];
-        const fs::path sibling = fs::path(in).replace_extension(".json");
-        auto checkFrames = [&](int expected, const std::string& whence) {
-            for (const auto& c : parts.back().configs) {
-                const int n = framesOf.count(c.config.index) ? framesOf[c.config.index] : 0;
-                if (n == 0)
-                    throw FileError(in, "configuration " + std::to_string(c.config.index) +
-                                            " has no frame samples (is the file cut short?)");
-                if (n != expected)
-                    throw FileError(in, "configuration " + std::to_string(c.config.index) + " has " + std::to_string(n) +
-                                            " frames, " + whence + " " + std::to_string(expected) +
-                                            (n < expected ? " (is the file cut short?)" : " (rows of another run?)"));
-            }
-        };
-        int most = 0;
-        for (const auto& [config, n] : framesOf) most = std::max(most, n);
-        // The machine and settings are in the shard's JSON beside its CSV, when there is one.
-        if (!fs::exists(sibling)) {
-            checkFrames(most, "others have");
-            continue;
-        }
-        // Bounded depth like every JSON the workbench reads; numbers may be any double.
-        const nlohmann::json file = readJsonFile(sibling.string(), {kMaxJsonDepth, false});
-        const nlohmann::json& j = benchSummaryOf(file);  // a record's results, or an older summary
-        const BenchFields s = fieldsOf(j.value("settings", nlohmann::json::object()));
-        // Every configuration the shard's JSON lists must be in its CSV.
-        if (j.contains("configs") && j["configs"].is_array())
-            for (const auto& c : j["configs"])
-                if (c.is_object() && c.contains("config") && c["config"].is_number_integer() &&
-                    !framesOf.count(c["config"].get<int>()) &&
-                    std::none_of(parts.back().configs.begin(), parts.back().configs.end(),
-                                 [&](const auto& r) { return r.config.index == c["config"].get<int>(); }))
-                    throw FileError(in, "configuration " + std::to_string(c["config"].get<int>()) + " of " +
-                                            sibling.string() + " has no samples (is the file cut short?)");
-        auto agree = [](std::string& sofar, const std::string& value) {
-            if (sofar != "-") sofar = sofar.empty() || sofar == value ? value : "-";
-        };
-        if (j.contains("baseline") && j["baseline"].is_object()) {
-            const nlohmann::json& b = j["baseline"];
-            if (b.contains("series") && b["series"].is_string()) agree(ratioOfFromShards, b["series"].get<std::string>());
-            if (b.contains("axis") && b["axis"].is_string() && b.contains("value") && b["value"].is_string())
-                agree(baselineFromShards, b["axis"].get<std::string>() + "=" + b["value"].get<std::string>());
-        }
-        const std::string frames = fieldOr(s, "frames", "");
-        if (!frames.empty() && std::all_of(frames.begin(), frames.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); }))
-            checkFrames(std::stoi(frames), "its JSON (" + sibling.string() + ") says");
-        else
-            checkFrames(most, "others have");
-        if (const std::string command = fieldOr(s, "command", ""); !command.empty()) {
-            const std::string run = runOf(command);
-            if (firstRunFrom.empty()) {
-                firstRun = run;
-                firstRunFrom = sibling.string();
-            } else if (run != firstRun) {
-                throw FileError(sibling.string(), "comes from another bench run than " + firstRunFrom + " ('" + run +
-                                                      "' against '" + firstRun + "'): shards of different runs do "
-                                                      "not merge");
-            }
-        }
-        if (const std::string shard = fieldOr(s, "shard", ""); !shard.empty()) {
-            try {
-                const BenchShard sh = BenchShard::parse(shard);
-                if (shardCount != 0 && sh.count != shardCount)
-                    throw FileError(sibling.string(), "is shard " + shard + ", the others are of " +
-                                                          std::to_string(shardCount) + " shards");
-                shardCount = sh.count;
-                shardIndices.push_back(sh.index);
-            } catch (const FileError&) {
-                throw;
-            } catch (const Error&) {
-                throw FileError(sibling.string(), "its settings.shard '" + shard + "' is not i/n");
-            }
-        }
-        const BenchFields m = fieldsOf(j.value("machine", nlohmann::json::object()));
-        if (machine.empty()) {
-            machine = m;
-            settings = fieldsOf(j.value("settings", nlohmann::json::object()));
-        } else if (fieldOr(m, "gl_renderer", "") != fieldOr(machine, "gl_renderer", "") ||
-                   fieldOr(m, "cpu", "") != fieldOr(machine, "cpu", "")) {
-            machineNote = "the shards ran on different machines; each shard's JSON names its own";
-        }
-    }
-    BenchResults all = BenchResults::merge(std::move(parts), inputs);
-    if (all.configs.empty())
-        throw Error("bench merge: the inputs hold no configuration (empty shards: more shards than the grid's "
-                    "comparison groups)");
-    if (shardCount > 0 && shardIndices.size() == inputs.size()) {
-        std::string missing;
-        for (int i = 0; i < shardCount; ++i)
-            if (std::find(shardIndices.begin(), shardIndices.end(), i) == shardIndices.end())
-                missing += (missing.empty() ? "" : ", ") + std::to_string(i);
-        if (!missing.empty())
-            std::fprintf(stderr, "bench merge: warning: shard(s) %s of %d are not among the inputs; their "
-                                 "configurations are missing from the table\n",
-                         missing.c_str(), shardCount);
-    } else if (shardCount > 0 && inputs.size() < static_cast<std::size_t>(shardCount)) {
-        // Some inputs have no JSON to say which shard they are.
-        std::fprintf(stderr, "bench merge: warning: %zu input(s) of a run of %d shards (%zu without a JSON beside "
-                             "them to say which shard they are): some shards are missing from the table\n",
-                     inputs.size(), shardCount, inputs.size() - shardIndices.size());
-    }
-    all.machine = machine;
-    if (!machineNote.empty()) all.machine.emplace_back("note", machineNote);
-    all.settings.clear();
-    for (const auto& [k, v] : settings)
-        if (k != "shard" && k != "seconds") all.settings.emplace_back(k, v);
-    std::string from;
-    for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
-    all.settings.emplace_back("merged_from", from);
-
-    auto inherited = [](const std::string& fromShards) { return !fromShards.empty() && fromShards != "-"; };
-    const std::string ratioOf = ratioOfGiven               ? *ratioOfGiven
-                                : inherited(ratioOfFromShards) ? ratioOfFromShards
-                                                               : PassTimer::kFrameSeries;
-    const std::string baselineSpec = baselineGiven ? *baselineGiven : inherited(baselineFromShards) ? baselineFromShards : "";
-    if (!ratioOfGiven && ratioOfFromShards == "-")
-        std::fprintf(stderr, "bench merge: note: the shards' JSONs name different --ratio-of series; the ratios are "
-                             "of %s (give --ratio-of to choose)\n", ratioOf.c_str());
-    if (!baselineGiven && baselineFromShards == "-")
-        std::fprintf(stderr, "bench merge: note: the shards' JSONs name different baselines; the ratios use the "
-                             "default one (give --baseline to choose)\n");
-    BenchBaseline baseline = chooseBaseline(all, baselineSpec);
-    baseline.series = ratioOf;
-    // A shard runs whole groups along its run's baseline axis, so each ratio
-    // compares frames of one process; along another axis they come from
-    // different shards (other processes, maybe other machines).
-    const std::string shardAxis =
-        inherited(baselineFromShards) ? baselineFromShards.substr(0, baselineFromShards.find('=')) : "";
-    if (shardCount > 1 && !shardAxis.empty() && !baseline.axis.empty() && baseline.axis != shardAxis)
-        std::fprintf(stderr, "bench merge: warning: the shards were grouped along %s, the ratios are along %s: they "
-                             "compare configurations measured by different shards (other processes, maybe other "
-                             "machines)\n", shardAxis.c_str(), baseline.axis.c_str());
-    if (!hasSeries(all, ratioOf)) {
-        std::set<std::string> seen;
-        for (const auto& sample : all.samples) seen.insert(sample.series);
-        std::string names;
-        for (const auto& n : seen) names += (names.empty() ? "" : ", ") + n;
-        throw Error(std::string("--ratio-of") + (ratioOfGiven ? "" : " (from the shards' JSONs)") +
-                    ": no configuration of these shards has samples of '" + ratioOf + "' (" + names +
-                    "); give --ratio-of frame or a pass they ran");
-    }
+    BenchMerged merged = mergeBenchShards(inputs, baselineGiven, ratioOfGiven,
+                                          [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+    BenchResults& all = merged.results;
+    const BenchBaseline& baseline = merged.baseline;
+    const std::string& ratioOf = baseline.series;
     const BenchSummary summary = summarize(all, baseline, resamples);
     printTables(all, summary,
                 "bench merge: " + std::to_string(all.configs.size()) + " configurations from " +
-                    std::to_string(inputs.size()) + " shard(s)");
+                    std::to_string(inputs.size()) + " shard(s)",
+                resamples);
     std::fflush(stdout);
     std::vector<std::function<void()>> outputs = {[&] { all.writeCsv(*out); }};
     if (json) outputs.push_back([&] { writeBenchJson(*json, all, summary); });
@@ -596,6 +306,13 @@ int runBenchCommand(int argc, char** argv) {
             if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
         o.grid.knobAxes.push_back(std::move(axis));
     }
+    for (const auto& e : cl.values("--exclude")) {
+        try {
+            o.exclude.add(e);
+        } catch (const Error& err) {
+            throw UsageError(err.what());
+        }
+    }
     o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), 1, 100000);
     o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
     o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
@@ -640,6 +357,7 @@ int runBenchCommand(int argc, char** argv) {
     const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
     const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
     const bool quiet = cl.flag("--quiet");
+    const auto resumeFrom = cl.value("--resume");
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
     // The outputs are checked before the run, so a long run is never lost to a bad path.
@@ -674,10 +392,35 @@ int runBenchCommand(int argc, char** argv) {
                      shardText.c_str(), runner.gridSize());
     for (const auto& w : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
+    // --resume: what an interrupted run of this grid measured (a last line cut short is left out).
+    std::optional<BenchResults> resumed;
+    if (resumeFrom) resumed = BenchResults::readCsv(*resumeFrom, true);
+
+    // The samples go to the CSV as they are measured, so a killed run keeps
+    // them (bench --resume continues from it); the whole file, in order, is
+    // written over it at the end.
+    std::unique_ptr<std::ofstream> live;
+    bool liveFailed = false;
+    const BenchStream stream = [&](const BenchResults& soFar, const std::vector<BenchSample>& fresh) {
+        if (liveFailed) return;
+        if (!live) {
+            live = std::make_unique<std::ofstream>(csv, std::ios::trunc);
+            *live << BenchResults::csvHeader(soFar.knobAxes) << "\n";
+        }
+        *live << soFar.csvRows(fresh);
+        if (!live->flush()) {
+            liveFailed = true;
+            std::fprintf(stderr, "bench: warning: %s: cannot write the samples as they come; they are written at the end\n",
+                         csv.c_str());
+        }
+    };
     auto context = HeadlessGlContext::create();
-    BenchResults results = runner.run([&](const std::string& line) {
-        if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
-    });
+    BenchResults results = runner.run(
+        [&](const std::string& line) {
+            if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
+        },
+        stream, resumed ? &*resumed : nullptr);
+    live.reset();
     BenchFields machine = results.machine;
     machine.emplace_back("gl_platform", context->platform());
     for (auto& f : hostFields()) machine.push_back(std::move(f));
@@ -694,7 +437,8 @@ int runBenchCommand(int argc, char** argv) {
                     (results.configs.empty() ? std::string()
                                              : " on " + fieldOr(results.machine, "gl_renderer", "?")) +
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
-                                     : std::string()));
+                                     : std::string()),
+                resamples);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] {
                   writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(),

@@ -13,6 +13,7 @@ int runBenchCommand(int argc, char** argv);
 int runReferenceCommand(int argc, char** argv);
 int runCompareCommand(int argc, char** argv);
 int runReplayCommand(int argc, char** argv);
+int runTradeoffCommand(int argc, char** argv);
 
 struct Command {
     const char* name;
@@ -29,6 +30,7 @@ inline constexpr Command kCommands[] = {
     {"render", "--scene S --out FILE [...]", "render one buffer headless to .png/.exr; time the passes", runRenderCommand},
     {"bench", "--sweep k=a,b --lights N,.. [...]", "time configurations side by side (bench merge: join shards)", runBenchCommand},
     {"reference", "--scene S --out FILE [...]", "the CPU ground truth of a view (Embree, double precision)", runReferenceCommand},
+    {"tradeoff", "--sweep k=a,b | --presets A,B [...]", "GPU ms against error per setting, and the Pareto front (tradeoff merge: join shards)", runTradeoffCommand},
     {"compare", "A B | --a k=v --b k=v [...]", "error of one image against another: statistics, SSIM, FLIP, gates", runCompareCommand},
     {"replay", "RECORD.json [--record FILE]", "restore an experiment record, measure again, say what changed", runReplayCommand},
     {"list", "scenes|buffers|knobs|passes|presets", "the scenes, buffers, knobs, passes or presets there are", runListCommand},

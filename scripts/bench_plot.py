@@ -10,11 +10,19 @@ Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
 """
 import argparse
 import csv
+import random
 import statistics
 import sys
 
 # Columns that are not configuration axes (docs/bench.md, "The samples CSV").
 SAMPLE_COLUMNS = ["lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"]
+
+
+def median_interval(ms, resamples=1000):
+    """The 95% percentile bootstrap interval of the median of `ms` (seeded: the same samples, the same bars)."""
+    rng = random.Random(12345)
+    medians = sorted(statistics.median(rng.choices(ms, k=len(ms))) for _ in range(resamples))
+    return medians[int(0.025 * (resamples - 1))], medians[int(round(0.975 * (resamples - 1)))]
 
 
 def read_medians(path, column):
@@ -42,7 +50,18 @@ def read_medians(path, column):
         values, ms = times[config]
         label = ", ".join(values[axes.index(a)] for a in varying) or "all"
         lines.setdefault(label, {})[int(values[lights_at])] = statistics.median(ms)
+        INTERVALS.setdefault(label, {})[int(values[lights_at])] = median_interval(ms)
     return lines, ", ".join(varying)
+
+
+INTERVALS = {}  # label -> lights -> (low, high) of the median, filled by read_medians
+
+
+def error_bars(label, xs, medians):
+    """Asymmetric error bars (below, above) of the medians at the light counts xs."""
+    lo = [max(0.0, m - INTERVALS[label][n][0]) for n, m in zip(xs, medians)]
+    hi = [max(0.0, INTERVALS[label][n][1] - m) for n, m in zip(xs, medians)]
+    return [lo, hi]
 
 
 def save(fig, path, dpi):
@@ -103,11 +122,13 @@ def main():
         # of points over a single tick, so a bar per configuration instead.
         labels = [label for label in lines if counts[0] in lines[label]]
         values = [lines[label][counts[0]] for label in labels]
-        ax.bar(range(len(labels)), values, color=[f"C{i % 10}" for i in range(len(labels))])
+        bars = [error_bars(label, [counts[0]], [v]) for label, v in zip(labels, values)]
+        ax.bar(range(len(labels)), values, color=[f"C{i % 10}" for i in range(len(labels))],
+               yerr=[[b[0][0] for b in bars], [b[1][0] for b in bars]], capsize=3)
         ax.set_xticks(range(len(labels)))
         ax.set_xticklabels(labels, rotation=30 if len(labels) > 3 else 0, ha="right" if len(labels) > 3 else "center")
         ax.set_xlabel(legend_title or "configuration")
-        ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median)")
+        ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median, 95% CI)")
         ax.set_title(args.title or f"frame time at {counts[0]} lights")
         ax.grid(True, axis="y", alpha=0.3)
         fig.tight_layout()
@@ -118,8 +139,9 @@ def main():
     for label, points in lines.items():
         xs = sorted(n for n in points if n > 0)  # a log axis has no 0
         skipped += len(points) - len(xs)
-        ax.plot(xs, [points[n] for n in xs], marker="o", label=label,
-                markersize=max(2.0, 6.0 * scale), linewidth=max(0.8, 1.5 * scale))
+        medians = [points[n] for n in xs]
+        ax.errorbar(xs, medians, yerr=error_bars(label, xs, medians), marker="o", label=label, capsize=3,
+                    markersize=max(2.0, 6.0 * scale), linewidth=max(0.8, 1.5 * scale))
     ax.set_xscale("log")
     ax.set_yscale("log")
     plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
@@ -130,7 +152,7 @@ def main():
     if values and max(values) / min(values) > 10:
         ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())  # decades are labelled enough
     ax.set_xlabel("lights")
-    ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median)")
+    ax.set_ylabel(f"frame {'CPU' if args.cpu else 'GPU'} ms (median, 95% CI)")
     ax.set_title(args.title or "frame time against light count")
     ax.grid(True, which="both", alpha=0.3)
     if lines:

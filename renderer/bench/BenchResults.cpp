@@ -53,10 +53,11 @@ std::string BenchResults::csvHeader(const std::vector<std::string>& knobAxes) {
     return h;
 }
 
-std::string BenchResults::csv() const {
+std::string BenchResults::csv() const { return csvHeader(knobAxes) + "\n" + csvRows(samples); }
+
+std::string BenchResults::csvRows(const std::vector<BenchSample>& rows) const {
     std::ostringstream out;
-    out << csvHeader(knobAxes) << "\n";
-    for (const auto& s : samples) {
+    for (const auto& s : rows) {
         const BenchConfigResult* c = find(s.config);
         if (!c) throw Error("a sample names configuration " + std::to_string(s.config) + ", which the results do not hold");
         out << c->config.index << "," << c->config.size() << "," << c->config.lights;
@@ -67,7 +68,11 @@ std::string BenchResults::csv() const {
     return out.str();
 }
 
-BenchResults BenchResults::parseCsv(const std::string& text, const std::string& path) {
+BenchResults BenchResults::parseCsv(const std::string& whole, const std::string& path, bool cutLastLine) {
+    const std::string text =
+        cutLastLine && !whole.empty() && whole.back() != '\n' && whole.find('\n') != std::string::npos
+            ? whole.substr(0, whole.rfind('\n') + 1)
+            : whole;
     std::istringstream in(text);
     std::string line;
     if (!std::getline(in, line)) throw FileError(path, "empty file (expected the bench CSV header)");
@@ -155,14 +160,14 @@ BenchResults BenchResults::parseCsv(const std::string& text, const std::string& 
     return r;
 }
 
-BenchResults BenchResults::readCsv(const std::string& path) {
+BenchResults BenchResults::readCsv(const std::string& path, bool cutLastLine) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a folder, not a bench samples CSV");
     std::ifstream f(path);
     if (!f) throw FileError(path, "cannot open the bench CSV");
     std::stringstream text;
     text << f.rdbuf();
-    return parseCsv(text.str(), path);
+    return parseCsv(text.str(), path, cutLastLine);
 }
 
 void writeBenchFile(const std::string& path, const std::string& text, const std::string& what) {

@@ -52,10 +52,14 @@ struct BenchResults {
     std::vector<std::string> seriesOf(int config) const;
 
     std::string csv() const;
+    // The rows of `samples` (configurations from this->configs), without the header line.
+    std::string csvRows(const std::vector<BenchSample>& samples) const;
     static std::string csvHeader(const std::vector<std::string>& knobAxes);
     // Reads csv() back; throws FileError naming the file and line.
-    static BenchResults parseCsv(const std::string& text, const std::string& path);
-    static BenchResults readCsv(const std::string& path);
+    // `cutLastLine`: a last line without its newline (a run killed while
+    // writing it) is left out instead of refused (bench --resume).
+    static BenchResults parseCsv(const std::string& text, const std::string& path, bool cutLastLine = false);
+    static BenchResults readCsv(const std::string& path, bool cutLastLine = false);
     // Writes csv() whole or not at all (writeBenchFile). Throws FileError.
     void writeCsv(const std::string& path) const;
 

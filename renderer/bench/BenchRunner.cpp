@@ -11,6 +11,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/scene/CameraPath.h"
 #include "renderer/scene/LightGenerator.h"
 #include "renderer/scene/SceneLoader.h"
@@ -46,17 +47,9 @@ std::string describe(const BenchConfig& c, const BenchGrid& grid) {
     return d;
 }
 
-// One counted frame, before its timings are harvested.
-struct Counted {
-    int config = 0;
-    int sample = 0;
-    long long seq = 0;
-};
-
 struct SizeSession {
     std::unique_ptr<RenderSession> session;
     int lights = -1;  // the light count whose list the session's scene holds now
-    std::map<std::uint64_t, Counted> counted;  // by frame index
 };
 
 }  // namespace
@@ -121,11 +114,38 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
     gridSize_ = o_.grid.count();
     std::vector<BenchConfig> all = o_.grid.configs(sceneLights);
     const std::vector<int> groups = o_.grid.groupsAlong(all, baseline_.axis);
-    for (size_t i = 0; i < all.size(); ++i)
+    // --exclude: the axes as the table names them, knob values as the knob writes them.
+    GridExclusion::Axes axes;
+    std::vector<std::string> sizes, lightCounts;
+    for (const auto& [w, h] : o_.grid.sizes) sizes.push_back(std::to_string(w) + "x" + std::to_string(h));
+    for (int n : o_.grid.lights) lightCounts.push_back(std::to_string(n));
+    if (o_.grid.lights.empty()) lightCounts.push_back(std::to_string(sceneLights));
+    axes.emplace_back("size", sizes);
+    axes.emplace_back("lights", lightCounts);
+    for (const auto& a : o_.grid.knobAxes) axes.emplace_back(a.knob, a.values);
+    o_.exclude.resolve(axes, [&](const std::string& axis, const std::string& value) {
+        return axis == "size" || axis == "lights" ? value : canonical(axis, value);
+    });
+    size_t kept = 0;
+    for (size_t i = 0; i < all.size(); ++i) {
+        const BenchConfig& c = all[i];
+        const bool excluded = o_.exclude.excludes([&](const std::string& axis) {
+            if (axis == "size") return c.size();
+            if (axis == "lights") return std::to_string(c.lights);
+            for (size_t k = 0; k < o_.grid.knobAxes.size(); ++k)
+                if (o_.grid.knobAxes[k].knob == axis) return c.knobValues[k];
+            return std::string();
+        });
+        if (excluded) continue;
+        ++kept;
         if (o_.shard.takes(groups[i])) configs_.push_back(std::move(all[i]));
+    }
+    if (kept == 0)
+        throw Error("the grid is empty after --exclude: every one of its " + std::to_string(all.size()) +
+                    " configuration(s) is left out");
 }
 
-BenchResults BenchRunner::run(const BenchProgress& progress) {
+BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& stream, const BenchResults* resumed) {
     auto say = [&](const std::string& line) {
         if (progress) progress(line);
     };
@@ -158,10 +178,15 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
         }
 
     // A session per size, all in this context, each with the scene uploaded once.
-    const int rounds = (o_.frames + o_.block - 1) / o_.block;
     std::map<std::string, SizeSession> sessions;
-    size_t framesPerSession = 0;
-    for (const auto& c : configs_) {
+    Camera base = o_.run.camera(scene_);
+    const CameraPath path = o_.walkthrough ? CameraPath::keyframes(base, scene_.cameraPath)
+                            : o_.orbit > 0 ? CameraPath::orbit(base, o_.orbit)
+                                           : CameraPath::still(base);
+
+    // Switching to a configuration: its size's session, its light list, the
+    // run configuration's knobs (defaults, scene, preset, --set), then its own values.
+    auto apply = [&](const BenchConfig& c) -> RenderSession& {
         SizeSession& s = sessions[c.size()];
         if (!s.session) {
             say("bench: setting up " + c.size() + " (compiling shaders, uploading " + scene_.name + ")");
@@ -169,74 +194,35 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
             s.session->setScene(scene_, o_.run);
             s.session->resize(c.width, c.height);
         }
-        framesPerSession += static_cast<size_t>(rounds * o_.warmup + o_.frames + o_.lppPoses);
-    }
-    if (!sessions.empty()) {
-        const gl::GlInfo& gl = sessions.begin()->second.session->glInfo();
-        results.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
-    }
-    for (auto& [size, s] : sessions)  // keep every counted frame's samples until the end
-        s.session->pipeline().timer().setHistoryLength(std::max(PassTimer::kHistory, framesPerSession + 64));
-
-    Camera base = o_.run.camera(scene_);
-    const CameraPath path = o_.walkthrough ? CameraPath::keyframes(base, scene_.cameraPath)
-                            : o_.orbit > 0 ? CameraPath::orbit(base, o_.orbit)
-                                           : CameraPath::still(base);
-
-    auto apply = [&](const BenchConfig& c) -> RenderSession& {
-        SizeSession& s = sessions.at(c.size());
         RenderSession& session = *s.session;
         if (!o_.grid.lights.empty() && s.lights != c.lights) {
             session.mutableScene().lights = lightLists.at(c.lights);
             s.lights = c.lights;
         }
-        // The run configuration's order (defaults, scene, preset, --set), then this configuration's values.
         o_.run.applyKnobs(session.knobs(), session.scene());
         for (size_t k = 0; k < o_.grid.knobAxes.size(); ++k)
             session.knobs().applyAssignment(o_.grid.knobAxes[k].knob + "=" + c.knobValues[k]);
         return session;
     };
+    RunnerPlan plan;
+    plan.configurations = static_cast<int>(configs_.size());
+    plan.frames = o_.frames;
+    plan.warmup = o_.warmup;
+    plan.block = o_.block;
+    ConfigurationRunner runner(
+        plan, [&](int i) -> RenderSession& { return apply(configs_[static_cast<size_t>(i)]); },
+        [&](RenderSession& session, int, int sample) { session.camera() = path.at(sample, o_.frames); });
+    for (const auto& c : configs_) apply(c);  // every size set up before the first line about frames
+    if (!sessions.empty()) {
+        const gl::GlInfo& gl = sessions.begin()->second.session->glInfo();
+        results.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
+    }
 
-    const long long total = static_cast<long long>(configs_.size()) * o_.frames;
     say("bench: " + std::to_string(configs_.size()) + " configuration(s)" +
         (o_.shard.whole() ? "" : " (shard " + std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count) +
                                      " of " + std::to_string(gridSize_) + ")") +
         " x " + std::to_string(o_.frames) + " frame(s), in blocks of " + std::to_string(o_.block) + ", " +
         std::to_string(o_.warmup) + " warm-up frame(s) per switch");
-
-    std::map<int, FrameReport> lastReport;
-    long long seq = 0;
-    int previous = -1;
-    double lastSaid = 0.0;
-    const FrameRequest request;  // the final image, as a user would see it
-    for (int round = 0; round < rounds; ++round) {
-        for (const auto& c : configs_) {
-            RenderSession& session = apply(c);
-            SizeSession& s = sessions.at(c.size());
-            const int first = round * o_.block, count = std::min(o_.block, o_.frames - first);
-            // Warm-up after a switch (every block when there is more than one configuration).
-            if (c.index != previous)
-                for (int w = 0; w < o_.warmup; ++w) {
-                    session.camera() = path.at(first, o_.frames);
-                    session.render(request);
-                }
-            previous = c.index;
-            for (int j = 0; j < count; ++j) {
-                session.camera() = path.at(first + j, o_.frames);
-                FrameReport report = session.render(request);
-                s.counted[report.frameIndex] = {c.index, first + j, seq++};
-                lastReport[c.index] = std::move(report);
-            }
-            if (elapsed() - lastSaid > 2.0) {
-                lastSaid = elapsed();
-                const double left = seq > 0 ? lastSaid / static_cast<double>(seq) * static_cast<double>(total - seq) : 0.0;
-                say("bench: frame " + std::to_string(seq) + "/" + std::to_string(total) + " (round " +
-                    std::to_string(round + 1) + "/" + std::to_string(rounds) + "), " + duration(lastSaid) +
-                    " elapsed, about " + duration(left) + " left; now " + describe(c, o_.grid));
-            }
-        }
-    }
-
     // Lights per pixel, untimed: the counting shader on its own frames.
     if (o_.lpp) {
         say("bench: lights per pixel (untimed frames)");
@@ -245,15 +231,14 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
         // background count towards LPP (a full-screen light's shader runs
         // there too) but not towards LPP lit.
         const FrameRequest counting{{"lighting.overlap", "gbuffer.view_position"}};
-        for (auto& r : results.configs) {
-            RenderSession& session = apply(r.config);
+        for (size_t i = 0; i < results.configs.size(); ++i) {
+            BenchConfigResult& r = results.configs[i];
             double sum = 0.0, pixels = 0.0, lit = 0.0, litSum = 0.0;
             // A strategy that cannot count (a new one, say) costs its LPP, not the run.
             try {
                 for (int p = 0; p < poses; ++p) {
                     const int k = poses > 1 ? static_cast<int>(std::lround(static_cast<double>(p) * (o_.frames - 1) / (poses - 1))) : 0;
-                    session.camera() = path.at(k, o_.frames);
-                    session.render(counting);
+                    RenderSession& session = runner.capture(static_cast<int>(i), k, counting);
                     const FloatImage overlap = session.readRaw("lighting.overlap");
                     const FloatImage position = session.readRaw("gbuffer.view_position");
                     for (int y = 0; y < overlap.height; ++y)
@@ -276,53 +261,51 @@ BenchResults BenchRunner::run(const BenchProgress& progress) {
         }
     }
 
-    // Harvest: wait for every outstanding timestamp once, at the end.
-    std::map<int, std::set<std::string>> seriesOf;
-    for (auto& [size, s] : sessions) {
-        PassTimer& timer = s.session->pipeline().timer();
-        timer.collect(true);
-        for (const auto& series : timer.series())
-            for (const TimingSample& t : series.samples) {
-                auto it = s.counted.find(t.frame);
-                if (it == s.counted.end()) continue;
-                BenchSample b;
-                b.config = it->second.config;
-                b.sample = it->second.sample;
-                b.seq = it->second.seq;
-                b.frame = t.frame;
-                b.series = series.name;
-                // To the CSV's 0.1 µs, so that the tables of this run and of
-                // `bench merge` over its CSV are made from the same numbers.
-                b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
-                b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
-                seriesOf[b.config].insert(b.series);
-                results.samples.push_back(std::move(b));
-            }
-    }
-    for (auto& r : results.configs)
-        if (auto it = lastReport.find(r.config.index); it != lastReport.end())
-            for (const PassRecord& rec : it->second.passes)
-                if (rec.ran && !rec.stats.empty()) r.stats[rec.name] = rec.stats;
-    // Each frame's series in pipeline order (passes, each followed by its spans), the frame total last.
-    std::map<int, std::map<std::string, int>> rank;
-    for (auto& [config, report] : lastReport) {
-        std::map<std::string, int>& order = rank[config];
-        for (const PassRecord& rec : report.passes) {
-            if (!rec.ran) continue;
-            order.emplace(rec.name, static_cast<int>(order.size()));
-            for (const auto& name : seriesOf[config])
-                if (name.rfind(rec.name + "/", 0) == 0) order.emplace(name, static_cast<int>(order.size()));
+    // Frames an interrupted run measured (bench --resume): kept, not measured again.
+    std::set<std::pair<int, int>> measured;  // (grid index, sample) with a "frame" row
+    long long seqBase = 0;
+    if (resumed) {
+        if (resumed->knobAxes != results.knobAxes)
+            throw Error("--resume: the CSV sweeps other knobs (" + BenchResults::csvHeader(resumed->knobAxes) + ")");
+        for (const auto& c : resumed->configs) {
+            const BenchConfigResult* mine = results.find(c.config.index);
+            if (!mine) continue;  // another shard's
+            if (mine->config.size() != c.config.size() || mine->config.lights != c.config.lights ||
+                mine->config.knobValues != c.config.knobValues)
+                throw Error("--resume: configuration " + std::to_string(c.config.index) +
+                            " of the CSV is not this grid's (another run's CSV?)");
         }
-        order.emplace(PassTimer::kFrameSeries, 1 << 20);
+        for (const auto& sample : resumed->samples)
+            if (sample.series == PassTimer::kFrameSeries && sample.sample < o_.frames && results.find(sample.config))
+                measured.insert({sample.config, sample.sample});
+        for (const auto& sample : resumed->samples)
+            if (measured.count({sample.config, sample.sample})) {
+                results.samples.push_back(sample);
+                seqBase = std::max(seqBase, sample.seq + 1);
+            }
+        say("bench: resuming: " + std::to_string(measured.size()) + " counted frame(s) kept from the CSV");
     }
-    std::sort(results.samples.begin(), results.samples.end(), [&](const BenchSample& a, const BenchSample& b) {
-        if (a.config != b.config) return a.config < b.config;
-        if (a.sample != b.sample) return a.sample < b.sample;
-        const auto& order = rank[a.config];
-        auto ra = order.find(a.series), rb = order.find(b.series);
-        const int ia = ra == order.end() ? 1 << 19 : ra->second, ib = rb == order.end() ? 1 << 19 : rb->second;
-        return ia != ib ? ia < ib : a.series < b.series;
+    const std::vector<BenchSample> kept = results.samples;
+    if (stream && !kept.empty()) stream(results, kept);
+
+    // The timed rounds. The runner numbers configurations by position; the results by grid index.
+    auto toGrid = [&](std::vector<BenchSample> samples) {
+        for (auto& sample : samples) {
+            sample.config = configs_[static_cast<size_t>(sample.config)].index;
+            sample.seq += seqBase;
+        }
+        return samples;
+    };
+    RunnerTimings timings = runner.measure(
+        "bench", [&](int i) { return describe(configs_[static_cast<size_t>(i)], o_.grid); }, say,
+        stream ? ConfigurationRunner::Stream([&](const std::vector<BenchSample>& fresh) { stream(results, toGrid(fresh)); })
+               : ConfigurationRunner::Stream(),
+        [&](int i, int sample) { return measured.count({configs_[static_cast<size_t>(i)].index, sample}) > 0; });
+    for (auto& sample : toGrid(std::move(timings.samples))) results.samples.push_back(std::move(sample));
+    std::stable_sort(results.samples.begin(), results.samples.end(), [](const BenchSample& a, const BenchSample& b) {
+        return a.config != b.config ? a.config < b.config : a.sample < b.sample;
     });
+    for (auto& [i, stats] : timings.stats) results.configs[static_cast<size_t>(i)].stats = std::move(stats);
 
     results.settings = {
         {"scene", scene_.source},

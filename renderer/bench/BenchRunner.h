@@ -6,13 +6,14 @@
 // ready, so a configuration switch is swapping the session's light list (the
 // light table is rebuilt from it every frame; the geometry stays uploaded)
 // and re-applying the knobs in the run configuration's order plus the
-// configuration's own values. Frames are interleaved: round after round,
-// every configuration renders its warm-up frames (left out) and then a block
-// of counted frames, so slow drift of the machine falls on all of them
-// alike. Timings come from PassTimer's timestamps, harvested at the end
-// (collect(true)), never by waiting inside the loop. Lights per pixel come
-// from an extra, untimed frame per configuration that asks for
-// lighting.overlap (the counting variant costs more than plain shading).
+// configuration's own values. The timed rounds are ConfigurationRunner's
+// (shared with tradeoff): interleaved, round after round every configuration
+// renders its warm-up frames (left out) and then a block of counted frames,
+// so slow drift of the machine falls on all of them alike; PassTimer's
+// timestamps are harvested without waiting inside the loop and streamed to
+// the caller as they come. Lights per pixel come first, from an extra,
+// untimed frame per configuration that asks for lighting.overlap (the
+// counting variant costs more than plain shading).
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/bench/GridExclusion.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -39,10 +41,16 @@ struct BenchOptions {
     int lppPoses = 4;               // poses the LPP frame is averaged over on a moving camera
     bool lpp = true;
     BenchShard shard;
+    GridExclusion exclude;  // --exclude: corners of the grid left out (axes size, lights and the knobs)
     std::string baseline;  // --baseline axis=value; empty: chooseBaseline's rule
 };
 
 using BenchProgress = std::function<void(const std::string&)>;
+// Called as the timed rounds go with the frames just harvested (whole
+// frames, their rows in pipeline order); `so far` holds the run's knob axes
+// and configurations with their LPP, to write the samples CSV's rows from
+// (BenchResults::csvRows). So a killed run keeps what it measured.
+using BenchStream = std::function<void(const BenchResults& soFar, const std::vector<BenchSample>& fresh)>;
 
 class BenchRunner {
 public:
@@ -59,7 +67,13 @@ public:
     const Scene& scene() const { return scene_; }
 
     // Needs a current GL 4.5 context. `progress` gets a line now and then.
-    BenchResults run(const BenchProgress& progress = {});
+    // Lights per pixel are measured first (untimed), then the timed rounds.
+    // `resumed`: the samples of an earlier, interrupted run of this grid
+    // (bench --resume): its counted frames with a "frame" row are kept and
+    // not measured again (a frame cut short is measured again); the new
+    // frames' seq continue after its. Throws Error when it is another grid.
+    BenchResults run(const BenchProgress& progress = {}, const BenchStream& stream = {},
+                     const BenchResults* resumed = nullptr);
 
 private:
     BenchOptions o_;

@@ -191,46 +191,121 @@ BenchSummary summarize(const BenchResults& results, const BenchBaseline& baselin
             if (r.baseline >= 0 && !compared[r.config].empty() && !compared[r.baseline].empty())
                 r.ratio = bootstrapRatioOfMedians(compared[r.config], compared[r.baseline], resamples,
                                                   seed + static_cast<std::uint64_t>(r.config));
+            if (r.baseline >= 0 && baseline.series != PassTimer::kFrameSeries) {
+                auto frames = [&](int config) {
+                    const auto& bySeriesOf = bySeries[config];
+                    auto it = bySeriesOf.find(PassTimer::kFrameSeries);
+                    std::vector<double> v;
+                    if (it != bySeriesOf.end())
+                        for (float f : it->second.first) v.push_back(f);
+                    return v;
+                };
+                const std::vector<double> mine = frames(r.config), theirs = frames(r.baseline);
+                if (!mine.empty() && !theirs.empty())
+                    r.frameRatio = bootstrapRatioOfMedians(mine, theirs, resamples, seed + static_cast<std::uint64_t>(r.config));
+            }
         }
         summary.rows.push_back(std::move(r));
     }
     return summary;
 }
 
+namespace {
+
+// What lighting.strategy=auto chose, from the lighting pass's statistics line ("... ; auto picked tiled: ...").
+std::string autoPicked(const BenchConfigResult& c) {
+    auto it = c.stats.find("lighting");
+    if (it == c.stats.end()) return {};
+    const std::string key = "auto picked ";
+    const size_t at = it->second.find(key);
+    if (at == std::string::npos) return {};
+    const size_t from = at + key.size();
+    return it->second.substr(from, it->second.find_first_of(":;", from) - from);
+}
+
+}  // namespace
+
+std::string lppText(double lpp) {
+    if (std::isfinite(lpp) && lpp != 0.0 && std::fabs(lpp) < 0.005) {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.2g", lpp);
+        return text;
+    }
+    return fixed(lpp, 2);
+}
+
+std::string mainTableCaption(const BenchSummary& summary, int resamples) {
+    const bool frame = summary.baseline.series == PassTimer::kFrameSeries;
+    std::string c = "Per configuration: LPP = lights per pixel (mean lighting.overlap over all pixels; LPP lit: over "
+                    "the lit surface pixels), frames = counted frames, GPU ms = median/min/max of the whole frame's GPU "
+                    "time over them, CPU ms = median CPU time to issue it";
+    if (!summary.baseline.axis.empty()) {
+        c += frame ? "; ratio = this configuration's median frame GPU ms / its baseline's"
+                   : "; frame ratio = median frame GPU ms / the baseline's; " + summary.baseline.series +
+                         " GPU ms median and ratio = the " + summary.baseline.series + " series' own";
+        c += "; 95% CI = percentile bootstrap interval of the ratio (" + std::to_string(resamples) + " resamples)";
+    }
+    return c + ".";
+}
+
+std::string passTableCaption() {
+    return "GPU median ms per pass and span (PASS/NAME) over the counted frames; frame = the whole frame.";
+}
+
 std::string markdownTable(const BenchResults& results, const BenchSummary& summary) {
     std::vector<std::string> header = {"config", "size", "lights"};
     header.insert(header.end(), results.knobAxes.begin(), results.knobAxes.end());
     const size_t text = header.size();
+    bool anyAuto = false;
+    for (const auto& c : results.configs) anyAuto = anyAuto || !autoPicked(c).empty();
     for (const char* h : {"LPP", "LPP lit", "frames", "GPU ms median", "GPU ms min", "GPU ms max", "CPU ms median"})
         header.emplace_back(h);
-    const std::string series =
-        summary.baseline.series == PassTimer::kFrameSeries ? std::string() : summary.baseline.series + " ";
-    const std::string ratioTitle = summary.baseline.axis.empty()
-                                       ? "ratio"
-                                       : series + "ratio to " + summary.baseline.axis + "=" + summary.baseline.value;
-    header.push_back(ratioTitle);
+    if (anyAuto) header.emplace_back("auto picked");
+    const bool frameSeries = summary.baseline.series == PassTimer::kFrameSeries;
+    const std::string series = frameSeries ? std::string() : summary.baseline.series + " ";
+    const std::string to = summary.baseline.axis.empty() ? "" : " to " + summary.baseline.axis + "=" + summary.baseline.value;
+    if (!frameSeries && !summary.baseline.axis.empty()) {
+        header.push_back("frame ratio" + to);
+        header.emplace_back("frame 95% CI");
+        header.push_back(series + "GPU ms median");
+    }
+    header.push_back(summary.baseline.axis.empty() ? "ratio" : series + "ratio" + to);
     header.emplace_back("95% CI");
     std::string out = row(header) + rule(header, text);
+    auto ratioCells = [](std::vector<std::string>& cells, const BenchSummaryRow* r, const RatioInterval& ratio,
+                         bool isBaseline) {
+        if (isBaseline) {
+            cells.emplace_back("1 (baseline)");
+            cells.emplace_back("-");
+        } else if (r && ratio.valid()) {
+            cells.push_back(fixed(ratio.ratio));
+            cells.push_back("[" + fixed(ratio.low) + ", " + fixed(ratio.high) + "]");
+        } else {
+            cells.emplace_back("-");
+            cells.emplace_back("-");
+        }
+    };
     for (const auto& c : results.configs) {
         const BenchSummaryRow* r = summary.find(c.config.index);
         const BenchSeriesStats* f = r ? r->frame() : nullptr;
         std::vector<std::string> cells = {std::to_string(c.config.index), c.config.size(), std::to_string(c.config.lights)};
         cells.insert(cells.end(), c.config.knobValues.begin(), c.config.knobValues.end());
-        cells.push_back(fixed(c.lpp, 2));
-        cells.push_back(fixed(c.lppLit, 2));
+        cells.push_back(lppText(c.lpp));
+        cells.push_back(lppText(c.lppLit));
         cells.push_back(std::to_string(f ? f->gpu.count : 0));
         for (double v : {f ? f->gpu.median : NAN, f ? f->gpu.min : NAN, f ? f->gpu.max : NAN, f ? f->cpu.median : NAN})
             cells.push_back(fixed(finiteOrNan(v)));
-        if (r && r->baseline == r->config && r->find(summary.baseline.series)) {
-            cells.emplace_back("1 (baseline)");
-            cells.emplace_back("-");
-        } else if (r && r->ratio.valid()) {
-            cells.push_back(fixed(r->ratio.ratio));
-            cells.push_back("[" + fixed(r->ratio.low) + ", " + fixed(r->ratio.high) + "]");
-        } else {
-            cells.emplace_back("-");
-            cells.emplace_back("-");
+        if (anyAuto) {
+            const std::string picked = autoPicked(c);
+            cells.push_back(picked.empty() ? "-" : picked);
         }
+        const bool isBaseline = r && r->baseline == r->config;
+        if (!frameSeries && !summary.baseline.axis.empty()) {
+            ratioCells(cells, r, r ? r->frameRatio : RatioInterval{}, isBaseline && f);
+            const BenchSeriesStats* s = r ? r->find(summary.baseline.series) : nullptr;
+            cells.push_back(s ? fixed(s->gpu.median) : "-");
+        }
+        ratioCells(cells, r, r ? r->ratio : RatioInterval{}, isBaseline && r->find(summary.baseline.series));
         out += row(cells);
     }
     return out;
@@ -240,7 +315,11 @@ std::string markdownPassTable(const BenchResults& results, const BenchSummary& s
     std::vector<std::string> header = {"config", "size", "lights"};
     header.insert(header.end(), results.knobAxes.begin(), results.knobAxes.end());
     const size_t text = header.size();
-    for (const auto& p : summary.passes) header.push_back(p);
+    // A pass named like an axis column (or "frame"): "<name> (pass)", so no two columns share a name.
+    for (const auto& p : summary.passes)
+        header.push_back(std::find(header.begin(), header.end(), p) != header.end() || p == PassTimer::kFrameSeries
+                             ? p + " (pass)"
+                             : p);
     header.emplace_back("frame");
     std::string out = row(header) + rule(header, text);
     for (const auto& c : results.configs) {

@@ -30,6 +30,8 @@ struct BenchSummaryRow {
     const BenchSeriesStats* frame() const { return find(PassTimer::kFrameSeries); }
     int baseline = -1;    // the configuration it is compared with; -1: none in the results
     RatioInterval ratio;  // the ratio series' GPU median / the baseline's (invalid where either has none)
+    // The frame's ratio beside it when the ratio series is not the frame (--ratio-of a pass).
+    RatioInterval frameRatio;
 };
 
 struct BenchBaseline {
@@ -62,10 +64,18 @@ BenchSummary summarize(const BenchResults& results, const BenchBaseline& baselin
 
 // The main table (one row per configuration: its axes, LPP, frames, frame
 // GPU median/min/max, CPU median, ratio and 95% CI; the ratio's column names
-// its series unless it is the frame) and the per-pass table
-// (GPU medians per pass and span).
+// its series unless it is the frame, and then the frame's ratio and the
+// series' own GPU median stand beside it, so the ratio matches a number of
+// the table; "auto picked" when lighting.strategy=auto chose a strategy) and
+// the per-pass table (GPU medians per pass and span; a pass named like an
+// axis column is headed "<name> (pass)", so no two columns share a name).
+// tableCaption says in one line what a table's numbers are.
 std::string markdownTable(const BenchResults& results, const BenchSummary& summary);
 std::string markdownPassTable(const BenchResults& results, const BenchSummary& summary);
+std::string mainTableCaption(const BenchSummary& summary, int resamples);
+std::string passTableCaption();
+// LPP as the tables print it: two decimals, or two significant digits below 0.005 (0.0012, not 0.00).
+std::string lppText(double lpp);
 
 // bench's results: {"tool", "machine", "settings", "axes", "baseline"
 // ({axis, value, series} or null), "configs": [{config, size, width, height,

@@ -80,4 +80,29 @@ RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::v
     return r;
 }
 
+Interval bootstrapGroupMean(const std::vector<double>& sums, const std::vector<double>& weights, int resamples,
+                            std::uint64_t seed, double alpha) {
+    Interval r;
+    const size_t n = std::min(sums.size(), weights.size());
+    if (n == 0 || resamples <= 0) return r;
+    std::mt19937_64 rng(seed);
+    std::vector<double> means;
+    means.reserve(static_cast<size_t>(resamples));
+    for (int i = 0; i < resamples; ++i) {
+        double s = 0.0, w = 0.0;
+        for (size_t k = 0; k < n; ++k) {
+            const size_t j = draw(rng, n);
+            s += sums[j];
+            w += weights[j];
+        }
+        if (w > 0.0) means.push_back(s / w);
+    }
+    if (means.empty()) return r;
+    std::sort(means.begin(), means.end());
+    r.low = percentile(means, alpha / 2.0);
+    r.high = percentile(means, 1.0 - alpha / 2.0);
+    r.resamples = static_cast<int>(means.size());
+    return r;
+}
+
 }  // namespace dw

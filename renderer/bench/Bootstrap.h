@@ -17,7 +17,8 @@ struct RatioInterval {
 };
 
 // The median of a series with a (1 - alpha) percentile interval (the
-// experiment records' "median and interval" per timing series).
+// experiment records' "median and interval" per timing series, `tradeoff`'s
+// frame time interval).
 struct MedianInterval {
     double median = 0.0, low = 0.0, high = 0.0;
     int resamples = 0;
@@ -35,5 +36,19 @@ MedianInterval bootstrapMedian(const std::vector<double>& a, int resamples = 200
 // b's median is not positive.
 RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::vector<double>& b, int resamples = 2000,
                                       std::uint64_t seed = 12345, double alpha = 0.05);
+
+// A percentile interval of a statistic of resampled data.
+struct Interval {
+    double low = 0.0, high = 0.0;
+    int resamples = 0;
+    bool valid() const { return resamples > 0; }
+};
+
+// The weighted mean sum(sums) / sum(weights) over groups resampled with
+// replacement (group i: sums[i], weights[i]; e.g. a tile's summed per-pixel
+// error and its pixel count, or one camera's error with weight 1): its
+// (1 - alpha) percentile interval. Invalid when empty or all weights are 0.
+Interval bootstrapGroupMean(const std::vector<double>& sums, const std::vector<double>& weights, int resamples = 2000,
+                            std::uint64_t seed = 12345, double alpha = 0.05);
 
 }  // namespace dw

@@ -44,15 +44,15 @@ ImageComparison ImageComparison::measure(const FloatImage& reference, const Floa
     c.ssimEncoding = settings.hdr ? SsimEncoding::Reinhard : SsimEncoding::AsStored;
     SsimParameters ssimParameters;
     const int window = 2 * Ssim::windowRadius(ssimParameters) + 1;
-    if (reference.width >= window && reference.height >= window)
+    if (settings.ssim && reference.width >= window && reference.height >= window)
         c.ssim = Ssim::compute(Ssim::encode(refColour, c.ssimEncoding), Ssim::encode(testColour, c.ssimEncoding),
                                ssimParameters);
-    else
+    else if (settings.ssim)
         c.notes.push_back("no SSIM: the images are smaller than its " + std::to_string(window) + "x" +
                           std::to_string(window) + " window");
-    if (refColour.channels == 1 || refColour.channels == 3)
+    if (settings.flipMetric && (refColour.channels == 1 || refColour.channels == 3))
         c.flip = settings.hdr ? Flip::hdr(refColour, testColour, settings.flip) : Flip::ldr(refColour, testColour, settings.flip);
-    else
+    else if (settings.flipMetric)
         c.notes.push_back("no FLIP: it needs 1 (grey), 3 or 4 (RGB) channels, the images have " +
                           std::to_string(reference.channels));
     return c;

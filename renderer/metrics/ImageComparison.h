@@ -32,6 +32,9 @@ struct ComparisonSettings {
     double warnThreshold = 1e-6;  // per-channel |a - b| (idiff's default)
     double failThreshold = 1e-6;
     FlipParameters flip;
+    // SSIM and FLIP cost far more than the difference statistics: a caller
+    // that needs one metric (tradeoff) leaves the others out (absent, no note).
+    bool ssim = true, flipMetric = true;
 };
 
 struct ImageComparison {

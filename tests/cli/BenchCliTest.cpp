@@ -2,9 +2,13 @@
 // CSV, the JSON and the Markdown table, the plot a PNG of the size asked
 // for, and shards that merge back into the grid. Timings are never asserted.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -553,4 +557,108 @@ TEST(BenchCli, OrbitAndWalkthroughAverageOverTheirPoses) {
         EXPECT_GT(j["configs"][1]["lpp"].get<double>(), 0.0);
         for (const auto& c : j["configs"]) EXPECT_EQ(c["samples"].size(), 2u);
     }
+}
+
+// A killed run keeps what it measured (the CSV is written as frames are
+// harvested) and --resume measures the rest: the resumed table has the same
+// configurations and frames as an uninterrupted run, the kept rows as they
+// were. --exclude leaves out exactly the configurations it names.
+TEST(BenchCli, ResumeFromAPartialCsvAndExclude) {
+    const fs::path dir = test::tempDir() / "bench-resume";
+    fs::create_directories(dir);
+    const std::string grid = "bench --scene default --size 64x36 --lights 1,10 "
+                             "--sweep lighting.strategy=stencil_volumes,fullscreen --frames 3 --quiet --resamples 200";
+    const fs::path full = dir / "full.csv", part = dir / "part.csv", resumed = dir / "resumed.csv";
+    const Result whole = run(grid + " --csv " + full.string() + " --json " + (dir / "full.json").string());
+    ASSERT_EQ(whole.code, 0) << whole.err;
+    const auto fullRows = readCsv(full);
+    {
+        // Cut as a kill would: 40 whole lines, then half a line.
+        std::ifstream in(full);
+        std::ofstream out(part);
+        std::string line;
+        for (int i = 0; i < 41 && std::getline(in, line); ++i) out << line << "\n";
+        std::getline(in, line);
+        out << line.substr(0, line.size() / 2);
+    }
+    const Result r = run(grid + " --csv " + resumed.string() + " --json " + (dir / "resumed.json").string() +
+                         " --resume " + part.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto rows = readCsv(resumed);
+    ASSERT_EQ(rows.size(), fullRows.size());
+    EXPECT_EQ(rowsByConfig(rows), rowsByConfig(fullRows)) << "the same configurations, samples and passes";
+    // The frames the partial CSV had whole (a "frame" row) are kept as they were.
+    std::set<std::pair<std::string, std::string>> whole0;
+    for (int i = 1; i <= 40; ++i)
+        if (fullRows[i][9] == "frame") whole0.insert({fullRows[i][0], fullRows[i][6]});
+    ASSERT_FALSE(whole0.empty());
+    int kept = 0;
+    for (int i = 1; i <= 40; ++i)
+        if (whole0.count({fullRows[i][0], fullRows[i][6]})) {
+            ++kept;
+            EXPECT_NE(std::find(rows.begin(), rows.end(), fullRows[i]), rows.end()) << i;
+        }
+    EXPECT_GT(kept, 0);
+    // Same table shape: every configuration's line in both tables.
+    for (const char* c : {"| 0 | 64x36 | 1 | stencil_volumes |", "| 3 | 64x36 | 10 | fullscreen |"}) {
+        EXPECT_NE(whole.out.find(c), std::string::npos);
+        EXPECT_NE(r.out.find(c), std::string::npos);
+    }
+
+    // --exclude: one corner and one slice.
+    const Result ex = run(grid + " --csv " + (dir / "ex.csv").string() + " --json " + (dir / "ex.json").string() +
+                          " --exclude lighting.strategy=fullscreen,lights=10");
+    ASSERT_EQ(ex.code, 0) << ex.err;
+    const auto exRows = rowsByConfig(readCsv(dir / "ex.csv"));
+    EXPECT_EQ(exRows.size(), 3u);
+    EXPECT_EQ(exRows.count({"64x36", "10", "fullscreen"}), 0u);
+    const Result empty = run(grid + " --csv /dev/null --json /dev/null --exclude lights=1,10");
+    EXPECT_NE(empty.code, 0);
+    EXPECT_NE(empty.err.find("the grid is empty after --exclude"), std::string::npos) << empty.err;
+    const Result unknown = run(grid + " --csv /dev/null --json /dev/null --exclude ssao.samples=8");
+    EXPECT_NE(unknown.code, 0);
+    EXPECT_NE(unknown.err.find("'ssao.samples' is not an axis of this sweep"), std::string::npos) << unknown.err;
+}
+
+// A killed run keeps what it measured: the samples go to the CSV as frames
+// are harvested, so a SIGKILL mid-run leaves whole frames (and maybe half a
+// line) that --resume completes.
+TEST(BenchCli, AKilledRunKeepsItsSamplesAndResumes) {
+    const fs::path dir = test::tempDir() / "bench-killed";
+    fs::create_directories(dir);
+    const fs::path live = dir / "live.csv";
+    fs::remove(live);
+    const std::string grid = "bench --scene default --size 64x36 --lights 1,10 "
+                             "--sweep lighting.strategy=stencil_volumes,fullscreen --frames 40 --quiet --resamples 200";
+    const std::string start = std::string(DW_WORKBENCH_BINARY) + " " + grid + " --csv " + live.string() +
+                              " --json " + (dir / "live.json").string() + " > /dev/null 2>&1 & echo $!";
+    FILE* shell = popen(start.c_str(), "r");
+    ASSERT_NE(shell, nullptr);
+    int pid = 0;
+    ASSERT_EQ(std::fscanf(shell, "%d", &pid), 1);
+    pclose(shell);
+    // Wait until some rounds are on disk, then kill it without warning.
+    auto lines = [&] {
+        std::ifstream f(live);
+        return static_cast<int>(std::count(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>(), '\n'));
+    };
+    for (int i = 0; i < 600 && lines() < 60 && ::kill(pid, 0) == 0; ++i) usleep(100000);
+    const bool running = ::kill(pid, SIGKILL) == 0;
+    for (int i = 0; i < 100 && ::kill(pid, 0) == 0; ++i) usleep(50000);
+    ASSERT_TRUE(running) << "the run ended before it could be killed (" << lines() << " lines)";
+    const int kept = lines();
+    EXPECT_GE(kept, 60);
+    const auto partial = readCsv(live);
+    int frames = 0;
+    for (size_t i = 1; i < partial.size(); ++i) frames += partial[i].size() > 9 && partial[i][9] == "frame";
+    EXPECT_GT(frames, 0) << "whole frames in the killed run's CSV";
+    EXPECT_LT(frames, 160);
+
+    const Result resumed = run(grid + " --csv " + (dir / "done.csv").string() + " --json " +
+                               (dir / "done.json").string() + " --resume " + live.string());
+    ASSERT_EQ(resumed.code, 0) << resumed.err;
+    const auto done = readCsv(dir / "done.csv");
+    int all = 0;
+    for (size_t i = 1; i < done.size(); ++i) all += done[i][9] == "frame";
+    EXPECT_EQ(all, 4 * 40);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
@@ -230,4 +231,60 @@ TEST(BenchSummary, RatiosAgainstTheFirstValueOfTheFirstSweptKnob) {
     EXPECT_THROW(chooseBaseline(r, "lights=3"), Error);
     EXPECT_THROW(chooseBaseline(r, "ssao.samples=8"), Error);
     EXPECT_THROW(chooseBaseline(r, "lights"), Error);
+}
+
+// The tables' fixes of issue 23: no two columns named alike, LPP under 0.005
+// with its digits, --ratio-of with the frame's ratio and the series' own
+// median beside its ratio, and what auto picked.
+TEST(BenchSummary, TablesNameEachColumnOnceAndShowWhatTheyCompare) {
+    BenchGrid g;
+    g.sizes = {{64, 36}};
+    g.lights = {10};
+    g.knobAxes = {BenchGrid::parseSweep("lighting.strategy=stencil_volumes,auto")};
+    BenchResults r;
+    r.knobAxes = {"lighting.strategy"};
+    long long seq = 0;
+    for (const auto& c : g.configs()) {
+        r.configs.push_back({c, 0.0012, 0.25});
+        if (c.knobValues[0] == "auto") r.configs.back().stats["lighting"] = "tiled, 10 lights; auto picked tiled: 10 lights";
+        for (int k = 0; k < 20; ++k, ++seq) {
+            const double f = c.index == 1 ? 2.0 : 1.0;
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "lights", 0.5 * f, 0.1});
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "lighting", 3.0 * f, 0.1});
+            r.samples.push_back({c.index, k, seq, static_cast<std::uint64_t>(seq), "frame", 10.0 + k * 0.01, 0.2});
+        }
+    }
+    BenchBaseline b = chooseBaseline(r, "");
+    b.series = "lighting";
+    const BenchSummary s = summarize(r, b, 300);
+    const std::string main = markdownTable(r, s);
+    EXPECT_NE(main.find("| 0.0012 | 0.25 |"), std::string::npos) << main;
+    EXPECT_NE(main.find("| auto picked |"), std::string::npos) << main;
+    EXPECT_NE(main.find("| tiled |"), std::string::npos) << main;
+    EXPECT_NE(main.find("| frame ratio to lighting.strategy=stencil_volumes | frame 95% CI | lighting GPU ms median | "
+                        "lighting ratio to lighting.strategy=stencil_volumes | 95% CI |"),
+              std::string::npos)
+        << main;
+    EXPECT_NE(main.find("| 6.000 | 2.000 |"), std::string::npos) << "the lighting median beside its ratio\n" << main;
+    ASSERT_TRUE(s.find(1)->frameRatio.valid());
+    EXPECT_NEAR(s.find(1)->frameRatio.ratio, 1.0, 0.01);
+    EXPECT_EQ(lppText(0.0012), "0.0012");
+    EXPECT_EQ(lppText(0.25), "0.25");
+    EXPECT_EQ(lppText(0.0), "0.00");
+    EXPECT_NE(mainTableCaption(s, 300).find("lighting GPU ms median and ratio"), std::string::npos);
+
+    // Every header of both tables once.
+    for (const std::string& table : {main, markdownPassTable(r, s)}) {
+        const std::string header = table.substr(0, table.find('\n'));
+        std::vector<std::string> names;
+        for (size_t p = 1; p < header.size();) {
+            const size_t q = header.find('|', p);
+            names.push_back(header.substr(p + 1, q - p - 2));
+            p = q + 1;
+        }
+        std::set<std::string> unique(names.begin(), names.end());
+        EXPECT_EQ(unique.size(), names.size()) << header;
+    }
+    EXPECT_NE(markdownPassTable(r, s).find("| lights (pass) | lighting | frame |"), std::string::npos)
+        << markdownPassTable(r, s);
 }

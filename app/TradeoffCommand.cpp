@@ -1,0 +1,395 @@
+// deferred-workbench tradeoff: what each setting costs in GPU milliseconds
+// and in error against the CPU reference (or a named configuration), and
+// which settings are on the Pareto front; `tradeoff merge` joins shards.
+// docs/tradeoffs.md says how to run it and what each column means.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+
+#include "app/CommandLine.h"
+#include "app/Commands.h"
+#include "app/HeadlessGlContext.h"
+#include "app/HostInfo.h"
+#include "app/PlotScript.h"
+#include "renderer/Error.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/TradeoffRunner.h"
+#include "renderer/bench/TradeoffTable.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+const char* const kTradeoffUsage =
+    "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
+    "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
+    "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
+    "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
+    "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
+    "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+    "                                   [--quiet]\n"
+    "       deferred-workbench tradeoff merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+    "  --sweep      an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; repeatable;\n"
+    "               the full grid of every --sweep and --presets\n"
+    "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
+    "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
+    "               about the current settings (docs/tradeoffs.md says which values)\n"
+    "  --exclude    a corner left out: every named axis at one of its values; repeatable\n"
+    "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
+    "               cache, each camera's rendered once) or the point with these knob values on top\n"
+    "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
+    "               ao = the AO buffer the lighting pass reads, today ssao.blurred; shadow: no GPU\n"
+    "               output yet); --ao-rays the reference's AO rays per pixel (default 64)\n"
+    "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
+    "               scene's camera.path. Several cameras add a row per point over all of them\n"
+    "  --frames     counted frames per point and camera (default 5); --warmup after each switch (default 1);\n"
+    "               --block K counted frames in a row (default 1); --resamples for the 95% intervals (2000)\n"
+    "  --size       the render size (default 640x360)\n"
+    "  --shard i/n  the points whose number % n == i; join the CSVs with tradeoff merge\n"
+    "  --csv, --json, --plot  default tradeoff.csv, tradeoff.json, tradeoff.png (tradeoff-shard-I-of-N.*\n"
+    "               with --shard); the plot by scripts/tradeoff_plot.py (python3-matplotlib)\n"
+    "  --quiet      no progress lines on stderr\n";
+
+using Json = nlohmann::ordered_json;
+
+std::string number(double v, const char* format) {
+    if (!std::isfinite(v)) return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : "-";
+    char text[64];
+    std::snprintf(text, sizeof(text), format, v);
+    return text;
+}
+
+// The rows a summary shows: the all-cameras rows when there are any, else every row.
+std::vector<const TradeoffRow*> shownRows(const TradeoffTable& t) {
+    std::vector<const TradeoffRow*> all, rows;
+    for (const auto& r : t.rows) {
+        rows.push_back(&r);
+        if (r.camera == TradeoffTable::kAllCameras) all.push_back(&r);
+    }
+    return all.empty() ? rows : all;
+}
+
+std::string markdown(const TradeoffTable& t) {
+    const std::vector<const TradeoffRow*> rows = shownRows(t);
+    const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
+    std::set<std::string> cameras;
+    for (const auto& r : t.rows) cameras.insert(r.camera);
+    const bool cameraColumn = !several && cameras.size() > 1;
+    std::string out;
+    std::vector<std::string> header = {"point"};
+    header.insert(header.end(), t.axes.begin(), t.axes.end());
+    if (cameraColumn) header.emplace_back("camera");
+    const std::string metric = t.rows.empty() ? "error" : t.rows.front().metric + " (" + t.rows.front().buffer + ")";
+    for (const std::string& h : std::vector<std::string>{metric, "95% CI", "GPU ms median", "95% CI", "Pareto"})
+        header.push_back(h);
+    auto line = [](const std::vector<std::string>& cells) {
+        std::string s = "|";
+        for (const auto& c : cells) s += " " + c + " |";
+        return s + "\n";
+    };
+    out += line(header);
+    std::string rule = "|";
+    for (size_t i = 0; i < header.size(); ++i) rule += i <= t.axes.size() + (cameraColumn ? 1 : 0) ? " --- |" : " ---: |";
+    out += rule + "\n";
+    for (const TradeoffRow* r : rows) {
+        std::vector<std::string> cells = {std::to_string(r->point)};
+        cells.insert(cells.end(), r->axisValues.begin(), r->axisValues.end());
+        if (cameraColumn) cells.push_back(r->camera);
+        cells.push_back(number(r->error, "%.4g"));
+        cells.push_back("[" + number(r->errorLo, "%.4g") + ", " + number(r->errorHi, "%.4g") + "]");
+        cells.push_back(number(r->frameGpuMs, "%.3f"));
+        cells.push_back("[" + number(r->frameGpuMsLo, "%.3f") + ", " + number(r->frameGpuMsHi, "%.3f") + "]");
+        cells.emplace_back(r->pareto ? "**front**" : "");
+        out += line(cells);
+    }
+    return out;
+}
+
+std::string what(const TradeoffTable& t, const std::string& against) {
+    const std::vector<const TradeoffRow*> rows = shownRows(t);
+    const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
+    const std::string metric = t.rows.empty() ? "?" : t.rows.front().metric;
+    return "Each row: a point of the sweep" + std::string(several ? " over every camera" : "") + ". " + metric +
+           " of the buffer against " + against + " (" +
+           (TradeoffTable::lowerIsBetter(metric) ? "lower" : "higher") + " is better)" +
+           (several ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
+                    : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
+           "; GPU ms: the median frame time over the counted frames, 95% bootstrap interval of the median; "
+           "front: on the Pareto front of GPU ms against error (no other point is as fast and as accurate).\n";
+}
+
+Json tableJson(const TradeoffTable& t, const BenchFields& machine, const BenchFields& settings) {
+    Json m = Json::object(), s = Json::object();
+    for (const auto& [k, v] : machine) m[k] = v;
+    for (const auto& [k, v] : settings) {
+        if (s.contains(k)) {
+            if (!s[k].is_array()) s[k] = Json::array({s[k]});
+            s[k].push_back(v);
+        } else {
+            s[k] = v;
+        }
+    }
+    auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+    Json rows = Json::array();
+    for (const auto& r : t.rows) {
+        Json values = Json::object(), passes = Json::object();
+        for (size_t a = 0; a < t.axes.size(); ++a) values[t.axes[a]] = r.axisValues[a];
+        for (size_t p = 0; p < t.passes.size(); ++p) passes[t.passes[p]] = num(r.passGpuMs[p]);
+        rows.push_back({{"point", r.point}, {"values", values}, {"camera", r.camera}, {"metric", r.metric},
+                        {"buffer", r.buffer}, {"error", num(r.error)}, {"error_ci95", {num(r.errorLo), num(r.errorHi)}},
+                        {"frames", r.frames}, {"frame_gpu_ms", num(r.frameGpuMs)},
+                        {"frame_gpu_ms_ci95", {num(r.frameGpuMsLo), num(r.frameGpuMsHi)}}, {"gpu_ms", passes},
+                        {"pareto", r.pareto}});
+    }
+    const Json root = {{"tool", "deferred-workbench tradeoff"}, {"machine", m}, {"settings", s}, {"axes", t.axes},
+                       {"passes", t.passes}, {"rows", rows}};
+    return root;
+}
+
+void writeJson(const std::string& path, const TradeoffTable& t, const BenchFields& machine, const BenchFields& settings) {
+    writeBenchFile(path, tableJson(t, machine, settings).dump(2) + "\n", "tradeoff JSON");
+}
+
+int writePlot(const std::string& csv, const std::string& png, int width, int height) {
+    if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
+                       {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
+                       "tradeoff"))
+        return 1;
+    std::printf("wrote %s (%dx%d)\n", png.c_str(), width, height);
+    return 0;
+}
+
+void checkPlot(const std::string& plot, int width, int height) {
+    std::string ext = plot.size() >= 4 ? plot.substr(plot.size() - 4) : "";
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
+    if (width < 50 || height < 50)
+        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+std::vector<std::string> listOf(const std::string& flag, const std::string& text) {
+    try {
+        return splitList(text, flag);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+}
+
+int runMerge(int argc, char** argv) {
+    CommandLine cl(argc, argv, 3);
+    if (cl.flag("--help")) {
+        std::cout << kTradeoffUsage;
+        return 0;
+    }
+    const auto out = cl.value("--out");
+    const auto json = cl.value("--json");
+    const auto plot = cl.value("--plot");
+    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
+    cl.finish("tradeoff merge");
+    const std::vector<std::string> inputs = cl.positional();
+    if (inputs.empty()) throw UsageError("tradeoff merge needs the shards' CSV files");
+    if (!out) throw UsageError("tradeoff merge needs --out FILE.csv");
+    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
+    if (json) writes.emplace_back("--json", *json);
+    if (plot) writes.emplace_back("--plot", *plot);
+    for (const auto& in : inputs) reads.emplace_back("the shard " + in, in);
+    CommandLine::requireDistinctFiles(writes, reads);
+    if (plot) checkPlot(*plot, plotW, plotH);
+    CommandLine::requireWritable(*out, "merged CSV");
+    std::vector<TradeoffTable> parts;
+    for (const auto& in : inputs) parts.push_back(TradeoffTable::readCsv(in));
+    const TradeoffTable all = TradeoffTable::merge(parts, inputs);
+    std::string from;
+    for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
+    std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n", all.rows.size(), inputs.size(),
+                what(all, "what the shards measured against").c_str(), markdown(all).c_str());
+    std::fflush(stdout);
+    all.writeCsv(*out);
+    if (json) writeJson(*json, all, {}, {{"merged_from", from}});
+    std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
+    return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+}
+
+}  // namespace
+
+int runTradeoffCommand(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
+    CommandLine cl(argc, argv, 2);
+    if (cl.flag("--help")) {
+        std::cout << kTradeoffUsage;
+        return 0;
+    }
+    TradeoffOptions o;
+    o.run = cl.runConfig();
+    const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
+    o.run.width = w;
+    o.run.height = h;
+    for (const auto& s : cl.values("--sweep")) {
+        BenchKnobAxis axis;
+        try {
+            axis = BenchGrid::parseSweep(s);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+        o.sweep.axes.push_back({axis.knob, axis.values});
+    }
+    if (const auto presets = cl.value("--presets")) {
+        TradeoffAxis axis{"preset", listOf("--presets", *presets)};
+        o.sweep.axes.insert(o.sweep.axes.begin(), std::move(axis));
+    }
+    const auto knobs = cl.value("--knobs");
+    if (knobs && *knobs != "speed/quality")
+        throw UsageError("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
+                         *knobs + "'");
+    if (knobs && !o.sweep.axes.empty()) throw UsageError("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
+    for (const auto& e : cl.values("--exclude")) {
+        try {
+            o.sweep.exclusion.add(e);
+        } catch (const Error& err) {
+            throw UsageError(err.what());
+        }
+    }
+    const std::string against = cl.value("--against").value_or("reference");
+    if (against != "reference") o.against = listOf("--against", against);
+    o.metric = cl.value("--metric").value_or("flip");
+    o.buffer = cl.value("--buffer").value_or("final");
+    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 10000);
+    o.walkthrough = cl.flag("--walkthrough");
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("5"), 1, 100000);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    o.resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    if (const auto shard = cl.value("--shard")) {
+        try {
+            o.shard = BenchShard::parse(*shard);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }
+    const std::string suffix =
+        o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
+    const std::string csv = cl.value("--csv").value_or("tradeoff" + suffix + ".csv");
+    const std::string json = cl.value("--json").value_or("tradeoff" + suffix + ".json");
+    const std::string plot = cl.value("--plot").value_or("tradeoff" + suffix + ".png");
+    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
+    const bool quiet = cl.flag("--quiet");
+    cl.finish("tradeoff");
+    if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");
+    if (o.sweep.axes.empty() && !knobs)
+        throw UsageError("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
+    CommandLine::requireDistinctFiles({{"--csv", csv}, {"--json", json}, {"--plot", plot}}, CommandLine::inputFiles(o.run));
+    checkPlot(plot, plotW, plotH);
+    CommandLine::requireWritable(csv, "tradeoff CSV");
+    CommandLine::requireWritable(json, "tradeoff JSON");
+    CommandLine::requireWritable(plot, "plot");
+    if (knobs) {
+        // About the current settings: the run configuration's knobs on its scene.
+        o.run.validate();
+        const Scene scene = loadScene(o.run.sceneSpec());
+        KnobRegistry current = RunConfig::declaredKnobs();
+        o.run.applyKnobs(current, scene);
+        GridExclusion exclusion = o.sweep.exclusion;
+        o.sweep = TradeoffSweep::aroundCurrent(current);
+        o.sweep.exclusion = exclusion;
+    }
+
+    // Everything that can fail without GL fails here: axes, values, presets, the scene.
+    TradeoffRunner runner(o);
+    for (const auto& wline : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", wline.c_str());
+    auto say = [&](const std::string& line) {
+        if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
+    };
+
+    // References through the shared cache; each distinct one rendered once in this run.
+    const reference::ReferenceCache cache;
+    std::map<std::string, reference::ReferenceImages> rendered;
+    bool noted = false;
+    int references = 0, cachedReferences = 0;
+    double referenceSeconds = 0.0;
+    const TradeoffReference reference = [&](const Scene& scene, const KnobRegistry& k, const Camera& camera, int width,
+                                            int height, const std::string& buffer) {
+        reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
+        model.aoRays = aoRays;
+        reference::ReferenceRequest request;
+        request.camera = camera;
+        request.width = width;
+        request.height = height;
+        const std::string key = reference::referenceKey(scene, model, request);
+        auto it = rendered.find(key);
+        if (it == rendered.end()) {
+            std::optional<reference::ReferenceImages> images = cache.load(key);
+            if (images) {
+                ++cachedReferences;
+            } else {
+                say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
+                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
+                    "; cached for the next run)");
+                images = reference::renderReference(scene, model, request);
+                ++references;
+                referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
+                try {
+                    cache.store(key, *images);
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
+                }
+            }
+            if (!noted && buffer == "final") {
+                const reference::KnobReport report = reference::reportKnobs(k, model);
+                if (!report.unmodelledOn.empty()) {
+                    std::string on;
+                    for (const auto& n : report.unmodelledOn) on += " " + n;
+                    std::fprintf(stderr, "note: the reference's final image has no%s (set them false to measure the "
+                                         "shading alone)\n", on.c_str());
+                }
+                noted = true;
+            }
+            it = rendered.emplace(key, std::move(*images)).first;
+        }
+        const FloatImage* image = it->second.buffer(buffer);
+        if (!image) throw Error("the reference has no buffer '" + buffer + "'");
+        return *image;
+    };
+
+    auto context = HeadlessGlContext::create();
+    TradeoffResult result = runner.run(reference, say);
+    BenchFields machine = result.machine;
+    machine.emplace_back("gl_platform", context->platform());
+    machine.emplace_back("cpu", cpuModel());
+    machine.emplace_back("compiler", compilerName());
+    machine.emplace_back("date", utcNow());
+    if (o.against.empty()) {
+        result.settings.emplace_back("references_rendered", std::to_string(references));
+        result.settings.emplace_back("references_from_cache", std::to_string(cachedReferences));
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.6g", referenceSeconds);
+        result.settings.emplace_back("reference_seconds", text);
+    }
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    result.settings.emplace_back("command", command);
+
+    const TradeoffTable& t = result.table;
+    const std::string againstText = o.against.empty() ? "the CPU reference" : against;
+    std::printf("## tradeoff: %s, %zu point(s) x %zu camera(s), %s of %s (%s) against %s\n\n%s\n%s\n",
+                runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
+                o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
+                what(t, againstText).c_str(), markdown(t).c_str());
+    std::fflush(stdout);
+    t.writeCsv(csv);
+    writeJson(json, t, machine, result.settings);
+    std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
+    if (t.rows.empty()) return 0;
+    return writePlot(csv, plot, plotW, plotH);
+}
+
+}  // namespace dw

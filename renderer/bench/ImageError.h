@@ -1,0 +1,42 @@
+#pragma once
+// One number for how far a test image is from a reference, with an interval:
+// `tradeoff`'s error column. The metric is one of compare's (renderer/metrics:
+// ImageComparison), on the images as compare takes them (HDR: linear
+// buffers such as the L-buffer and the AO; LDR: the final image):
+//   rms   sqrt of the mean over pixels and channels of (reference - test)^2
+//   psnr  OpenImageIO's, as compare prints it (larger is better)
+//   flip  the mean of the FLIP map (LDR- or HDR-FLIP)
+//   ssim  the mean SSIM (larger is better)
+// The interval is a percentile bootstrap over 16x16-pixel tiles (whole tiles
+// are resampled, so neighbouring pixels' correlated errors stay together):
+// the per-pixel quantity behind the metric (squared difference, FLIP value,
+// SSIM value) is summed per tile, tiles are drawn with replacement, and the
+// metric is recomputed from the drawn tiles' mean (for ssim the interval is
+// of the map's mean, moved to sit about the reported mean).
+// Needs no GL.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "renderer/io/ImageIO.h"
+
+namespace dw {
+
+struct ErrorEstimate {
+    double value = 0.0, low = 0.0, high = 0.0;  // NaN: not measured
+};
+
+class ImageError {
+public:
+    static constexpr int kTile = 16;
+    // The metrics known: flip, rms, psnr, ssim.
+    static const std::vector<std::string>& metrics();
+    // Throws Error for an unknown metric, images of different shapes, a
+    // non-finite pixel, or a metric the images cannot have (SSIM under 11x11).
+    static ErrorEstimate measure(const FloatImage& reference, const FloatImage& test, const std::string& metric, bool hdr,
+                                 int resamples = 2000, std::uint64_t seed = 12345);
+    // The mean of per-camera errors with a percentile bootstrap over the cameras.
+    static ErrorEstimate meanOver(const std::vector<double>& values, int resamples = 2000, std::uint64_t seed = 12345);
+};
+
+}  // namespace dw

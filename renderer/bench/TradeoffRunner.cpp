@@ -1,0 +1,368 @@
+#include "renderer/bench/TradeoffRunner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "renderer/Error.h"
+#include "renderer/RenderSession.h"
+#include "renderer/bench/Bootstrap.h"
+#include "renderer/bench/ConfigurationRunner.h"
+#include "renderer/bench/ImageError.h"
+#include "renderer/graph/Pipeline.h"
+#include "renderer/scene/CameraPath.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
+
+// A clip plane's value: a positive, finite number.
+float planeValue(const std::string& axis, const std::string& text) {
+    char* end = nullptr;
+    const float v = std::strtof(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || !(v > 0.0f))
+        throw Error("--sweep " + axis + ": expected a distance above 0, got '" + text + "'");
+    return v;
+}
+
+std::string shortText(double v) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", v);
+    return text;
+}
+
+}  // namespace
+
+std::string TradeoffRunner::gpuOutput(const std::string& buffer) {
+    if (buffer == "final" || buffer == "lbuffer") return buffer;
+    // The AO the lighting pass reads: "ao.filtered" where the pipeline has the
+    // AO methods' shared filter, else SSAO's "ssao.blurred" (the one place
+    // that says which).
+    if (buffer == "ao") {
+        static const std::string ao = [] {
+            KnobRegistry knobs;
+            const Pipeline pipeline(knobs);
+            for (const PassInfo& p : pipeline.passList())
+                for (const auto& w : p.writes)
+                    if (w.name == "ao.filtered") return std::string("ao.filtered");
+            return std::string("ssao.blurred");
+        }();
+        return ao;
+    }
+    if (buffer == "shadow")
+        throw Error("--buffer shadow: no GPU output holds the shadow visibility yet, so there is nothing to compare with "
+                    "the reference's shadow buffer (final, lbuffer or ao)");
+    throw Error("--buffer: expected final, lbuffer, ao or shadow, got '" + buffer + "'");
+}
+
+TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options)) {
+    if (o_.frames < 1) throw Error("tradeoff needs at least one counted frame per point and camera");
+    if (o_.orbit > 0 && o_.walkthrough) throw Error("--orbit and --walkthrough are two camera paths; pick one");
+    gpuOutput(o_.buffer);
+    const auto& metrics = ImageError::metrics();
+    if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
+        throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
+    o_.run.validate();
+    const KnobRegistry declared = RunConfig::declaredKnobs();
+    auto canonical = [&](const std::string& knob, const std::string& value) {
+        KnobRegistry k = declared;
+        k.applyAssignment(knob + "=" + value);
+        return k.format(*k.find(knob));
+    };
+    // Each axis: a knob (values written as the knob writes them), the presets, or a clip plane.
+    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+        TradeoffAxis& axis = o_.sweep.axes[a];
+        for (size_t b = 0; b < a; ++b)
+            if (o_.sweep.axes[b].name == axis.name) throw Error("--sweep " + axis.name + " is given twice");
+        for (size_t i = 0; i < axis.values.size(); ++i) {
+            std::string& v = axis.values[i];
+            const std::string given = v;
+            if (axis.name == "preset") {
+                RunConfig probe;
+                probe.setPreset(v);  // Error naming the built-in presets, or FileError
+            } else if (TradeoffSweep::isCameraAxis(axis.name)) {
+                v = shortText(planeValue(axis.name, v));
+            } else {
+                if (!declared.find(axis.name))
+                    throw Error("--sweep: unknown knob '" + axis.name + "' (see: list knobs; axes that are not knobs: "
+                                "preset, camera.near, camera.far)");
+                v = canonical(axis.name, v);
+            }
+            for (size_t j = 0; j < i; ++j)
+                if (axis.values[j] == v)
+                    throw Error("--sweep " + axis.name + ": '" + given + "' is '" + v + "', which is given before");
+        }
+    }
+    for (const auto& s : o_.against) {
+        const size_t eq = s.find('=');
+        if (eq == std::string::npos || !declared.find(s.substr(0, eq)))
+            throw Error("--against: expected 'reference' or knob=value[,knob=value...] of known knobs, got '" + s + "'");
+        canonical(s.substr(0, eq), s.substr(eq + 1));  // a bad value fails here
+    }
+    GridExclusion::Axes axes;
+    for (const auto& a : o_.sweep.axes) axes.emplace_back(a.name, a.values);
+    o_.sweep.exclusion.resolve(axes, [&](const std::string& axis, const std::string& value) {
+        if (axis == "preset") return value;
+        if (TradeoffSweep::isCameraAxis(axis)) return shortText(planeValue(axis, value));
+        return canonical(axis, value);
+    });
+    sweepSize_ = o_.sweep.count();
+    for (auto& p : o_.sweep.points())
+        if (o_.shard.takes(p.index)) points_.push_back(std::move(p));
+
+    scene_ = loadScene(o_.run.sceneSpec());
+    if (o_.walkthrough && scene_.cameraPath.size() < 2)
+        throw Error("--walkthrough: the scene '" + scene_.name + "' has no camera.path (docs/scene-format.md)");
+    const Camera base = o_.run.camera(scene_);
+    if (o_.walkthrough) {
+        const CameraPath path = CameraPath::keyframes(base, scene_.cameraPath);
+        for (const auto& k : scene_.cameraPath) cameras_.push_back(path.atTime(k.time));
+    } else if (o_.orbit > 0) {
+        const CameraPath path = CameraPath::orbit(base, o_.orbit);
+        for (int k = 0; k < o_.orbit; ++k) cameras_.push_back(path.at(k, o_.orbit));
+    } else {
+        cameras_.push_back(base);
+    }
+    // Each point's run: the run's own, or with the point's preset (its knobs under --set).
+    for (const auto& p : points_) {
+        RunConfig run = o_.run;
+        for (size_t a = 0; a < o_.sweep.axes.size(); ++a)
+            if (o_.sweep.axes[a].name == "preset") run.setPreset(p.values[a]);
+        // The clip planes must keep near < far.
+        Camera c = base;
+        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+            if (o_.sweep.axes[a].name == "camera.near") c.nearPlane = planeValue("camera.near", p.values[a]);
+            if (o_.sweep.axes[a].name == "camera.far") c.farPlane = planeValue("camera.far", p.values[a]);
+        }
+        if (!(c.nearPlane < c.farPlane))
+            throw Error("point " + std::to_string(p.index) + ": camera.near " + shortText(c.nearPlane) +
+                        " is not below camera.far " + shortText(c.farPlane) + " (leave it out with --exclude)");
+        pointRuns_.push_back(std::move(run));
+    }
+}
+
+TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const BenchProgress& progress) {
+    auto say = [&](const std::string& line) {
+        if (progress) progress(line);
+    };
+    const auto start = Clock::now();
+    const int cameraCount = static_cast<int>(cameras_.size());
+    const int configs = static_cast<int>(points_.size()) * cameraCount;
+    say("tradeoff: setting up " + std::to_string(o_.run.width) + "x" + std::to_string(o_.run.height) +
+        " (compiling shaders, uploading " + scene_.name + ")");
+    RenderSession session;
+    session.setScene(scene_, o_.run);
+    session.resize(o_.run.width, o_.run.height);
+
+    auto applyPoint = [&](size_t p) {
+        pointRuns_[p].applyKnobs(session.knobs(), session.scene());
+        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+            const std::string& name = o_.sweep.axes[a].name;
+            if (name != "preset" && !TradeoffSweep::isCameraAxis(name))
+                session.knobs().applyAssignment(name + "=" + points_[p].values[a]);
+        }
+    };
+    auto cameraOf = [&](size_t p, int c) {
+        Camera cam = cameras_[static_cast<size_t>(c)];
+        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+            if (o_.sweep.axes[a].name == "camera.near") cam.nearPlane = planeValue("camera.near", points_[p].values[a]);
+            if (o_.sweep.axes[a].name == "camera.far") cam.farPlane = planeValue("camera.far", points_[p].values[a]);
+        }
+        return cam;
+    };
+    auto pointSeed = [&](size_t p, int camera) {
+        return 12345u + 1000u * static_cast<std::uint64_t>(points_[p].index) + 2u * static_cast<std::uint64_t>(camera);
+    };
+    RunnerPlan plan;
+    plan.configurations = configs;
+    plan.frames = o_.frames;
+    plan.warmup = o_.warmup;
+    plan.block = o_.block;
+    ConfigurationRunner runner(
+        plan,
+        [&](int i) -> RenderSession& {
+            applyPoint(static_cast<size_t>(i / cameraCount));
+            return session;
+        },
+        [&](RenderSession& s, int i, int) { s.camera() = cameraOf(static_cast<size_t>(i / cameraCount), i % cameraCount); });
+    auto describe = [&](int i) {
+        const TradeoffPoint& p = points_[static_cast<size_t>(i / cameraCount)];
+        std::string d = "point " + std::to_string(p.index);
+        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) d += ", " + o_.sweep.axes[a].name + "=" + p.values[a];
+        return d + (cameraCount > 1 ? ", camera " + std::to_string(i % cameraCount) : "");
+    };
+    say("tradeoff: " + std::to_string(points_.size()) + " point(s)" +
+        (o_.shard.whole() ? "" : " (shard " + std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count) +
+                                     " of " + std::to_string(sweepSize_) + ")") +
+        " x " + std::to_string(cameraCount) + " camera(s) x " + std::to_string(o_.frames) + " frame(s), " +
+        std::to_string(o_.warmup) + " warm-up frame(s) per switch");
+    TradeoffResult result;
+    const gl::GlInfo& gl = session.glInfo();
+    result.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
+    const RunnerTimings timings = runner.measure("tradeoff", describe, say);
+    result.timingSeconds = timings.seconds;
+
+    // The errors: an untimed frame per (point, camera) against its counterpart.
+    const auto errorStart = Clock::now();
+    const std::string output = gpuOutput(o_.buffer);
+    const bool hdr = o_.buffer != "final";
+    const FrameRequest request{{output}};
+    auto read = [&](RenderSession& s) {
+        FloatImage image = hdr ? s.readRaw(output) : s.readDisplay(output);
+        if (o_.buffer == "ao" && image.channels > 1) {  // the AO is in the first channel
+            FloatImage one;
+            one.width = image.width;
+            one.height = image.height;
+            one.channels = 1;
+            one.pixels.resize(static_cast<size_t>(image.width) * image.height);
+            for (int y = 0; y < image.height; ++y)
+                for (int x = 0; x < image.width; ++x) one.at(x, y, 0) = image.at(x, y, 0);
+            image = std::move(one);
+        }
+        return image;
+    };
+    std::map<std::string, FloatImage> againstImages;  // by configuration (every knob) and camera
+    std::vector<std::vector<ErrorEstimate>> errors(points_.size(), std::vector<ErrorEstimate>(static_cast<size_t>(cameraCount)));
+    std::vector<std::string> notes;
+    for (size_t p = 0; p < points_.size(); ++p) {
+        for (int c = 0; c < cameraCount; ++c) {
+            const int config = static_cast<int>(p) * cameraCount + c;
+            ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
+            e.value = e.low = e.high = kNaN;
+            try {
+                FloatImage test = read(runner.capture(config, 0, request));
+                FloatImage against;
+                if (o_.against.empty()) {
+                    against = reference(session.scene(), session.knobs(), session.camera(), o_.run.width, o_.run.height,
+                                        o_.buffer);
+                } else {
+                    for (const auto& s : o_.against) session.knobs().applyAssignment(s);
+                    std::string key = std::to_string(c);
+                    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id)
+                        key += "," + session.knobs().format(id);
+                    key += "," + shortText(session.camera().nearPlane) + "," + shortText(session.camera().farPlane);
+                    auto it = againstImages.find(key);
+                    if (it == againstImages.end()) {
+                        session.render(request);
+                        it = againstImages.emplace(key, read(session)).first;
+                    }
+                    against = it->second;
+                }
+                // Seeded by the point's number, so a shard draws what the whole run draws.
+                e = ImageError::measure(against, test, o_.metric, hdr, o_.resamples, pointSeed(p, c));
+            } catch (const Error& err) {
+                notes.push_back("point " + std::to_string(points_[p].index) + ", camera " + std::to_string(c) + ": " +
+                                err.what());
+                say("tradeoff: no error for " + notes.back());
+            }
+        }
+    }
+    result.errorSeconds = seconds(errorStart);
+
+    // The table: per (point, camera), then per point over every camera.
+    TradeoffTable& t = result.table;
+    for (const auto& a : o_.sweep.axes) t.axes.push_back(a.name);
+    std::map<int, std::map<std::string, std::vector<double>>> ms;  // config -> series -> GPU ms
+    for (const auto& s : timings.samples) {
+        if (s.series.find('/') != std::string::npos) continue;  // spans: in the JSON of bench, not here
+        if (s.series != PassTimer::kFrameSeries &&
+            std::find(t.passes.begin(), t.passes.end(), s.series) == t.passes.end())
+            t.passes.push_back(s.series);
+        ms[s.config][s.series].push_back(s.gpuMs);
+    }
+    auto fill = [&](TradeoffRow& row, const std::map<std::string, std::vector<double>>& series, std::uint64_t seed) {
+        auto frame = series.find(PassTimer::kFrameSeries);
+        row.frames = frame == series.end() ? 0 : static_cast<int>(frame->second.size());
+        row.frameGpuMs = row.frameGpuMsLo = row.frameGpuMsHi = kNaN;
+        if (row.frames > 0) {
+            const MedianInterval i = bootstrapMedian(frame->second, o_.resamples, seed);
+            row.frameGpuMs = i.median;
+            row.frameGpuMsLo = i.low;
+            row.frameGpuMsHi = i.high;
+        }
+        for (const auto& pass : t.passes) {
+            auto it = series.find(pass);
+            row.passGpuMs.push_back(it == series.end() ? kNaN : median(it->second));
+        }
+    };
+    for (size_t p = 0; p < points_.size(); ++p) {
+        std::map<std::string, std::vector<double>> pooled;
+        std::vector<double> values;
+        for (int c = 0; c < cameraCount; ++c) {
+            const int config = static_cast<int>(p) * cameraCount + c;
+            TradeoffRow row;
+            row.point = points_[p].index;
+            row.axisValues = points_[p].values;
+            row.camera = std::to_string(c);
+            row.metric = o_.metric;
+            row.buffer = o_.buffer;
+            const ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
+            row.error = e.value;
+            row.errorLo = e.low;
+            row.errorHi = e.high;
+            fill(row, ms[config], pointSeed(p, c) + 1);
+            for (const auto& [series, v] : ms[config]) pooled[series].insert(pooled[series].end(), v.begin(), v.end());
+            values.push_back(e.value);
+            t.rows.push_back(std::move(row));
+        }
+        if (cameraCount > 1) {
+            TradeoffRow row;
+            row.point = points_[p].index;
+            row.axisValues = points_[p].values;
+            row.camera = TradeoffTable::kAllCameras;
+            row.metric = o_.metric;
+            row.buffer = o_.buffer;
+            const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
+            row.error = e.value;
+            row.errorLo = e.low;
+            row.errorHi = e.high;
+            fill(row, pooled, pointSeed(p, cameraCount) + 1);
+            t.rows.push_back(std::move(row));
+        }
+    }
+    if (!t.rows.empty()) t.markParetoFront();
+
+    std::string sets;
+    for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
+    std::string against;
+    for (const auto& s : o_.against) against += (against.empty() ? "" : ",") + s;
+    result.settings = {
+        {"scene", scene_.source},
+        {"preset", o_.run.presetSpec()},
+        {"set", sets},
+        {"size", std::to_string(o_.run.width) + "x" + std::to_string(o_.run.height)},
+        {"frames", std::to_string(o_.frames)},
+        {"warmup_per_switch", std::to_string(o_.warmup)},
+        {"block", std::to_string(o_.block)},
+        {"cameras", o_.walkthrough ? "walkthrough keyframes (" + std::to_string(cameraCount) + ")"
+                    : o_.orbit > 0 ? "orbit " + std::to_string(o_.orbit)
+                                   : "the run's camera"},
+        {"sweep", o_.sweep.oneAtATime ? "one knob at a time about the current settings" : "full grid"},
+        {"metric", o_.metric},
+        {"buffer", o_.buffer + " (" + output + ")"},
+        {"against", o_.against.empty() ? "reference" : against},
+        {"error_interval", "95% percentile bootstrap over " + std::to_string(ImageError::kTile) + "x" +
+                               std::to_string(ImageError::kTile) + "-pixel tiles; the all-cameras row over the cameras"},
+        {"time_interval", "95% percentile bootstrap of the median over the counted frames"},
+        {"resamples", std::to_string(o_.resamples)},
+        {"shard", std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count)},
+        {"sweep_points", std::to_string(sweepSize_)},
+        {"timing_seconds", shortText(result.timingSeconds)},
+        {"error_seconds", shortText(result.errorSeconds)},
+        {"seconds", shortText(seconds(start))},
+    };
+    for (const auto& n : notes) result.settings.emplace_back("note", n);
+    say("tradeoff: timed in " + shortText(result.timingSeconds) + " s, errors in " + shortText(result.errorSeconds) + " s");
+    return result;
+}
+
+}  // namespace dw

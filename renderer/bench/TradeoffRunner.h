@@ -1,0 +1,91 @@
+#pragma once
+// Runs a `tradeoff` sweep in one process and one GL context: at each point
+// of the sweep (TradeoffSweep) and each camera, what it costs and how far it
+// lands from what it is measured against.
+// Reads: the run configuration (scene, preset, --set, size), the sweep, the
+// cameras (the run's camera; --orbit N poses about it; or each keyframe of
+// the scene's camera.path). Writes: a TradeoffTable, one row per point and
+// camera (and an "all" row per point when there are several cameras).
+//   Time: the shared ConfigurationRunner over (point, camera) configurations,
+//     interleaved, with warm-up: the median GPU ms per frame (bootstrap 95%
+//     interval of the median) and per pass.
+//   Error: an untimed frame of each (point, camera), its buffer (--buffer:
+//     final, lbuffer, or ao = the AO buffer the lighting pass reads) against
+//     the reference's same buffer (TradeoffReference: the caller's CPU ground
+//     truth through its cache) or against the point with --against's knob
+//     values on top, rendered here once per distinct configuration and camera.
+//     ImageError: the metric with a tile-bootstrap interval; the "all" row
+//     the mean over cameras with a bootstrap over the cameras.
+// Follows issue 23 ("the speed/accuracy lab").
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "renderer/RunConfig.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BenchResults.h"
+#include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/TradeoffSweep.h"
+#include "renderer/bench/TradeoffTable.h"
+#include "renderer/io/ImageIO.h"
+#include "renderer/scene/Camera.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+struct TradeoffOptions {
+    RunConfig run;  // scene, preset, --set, width x height
+    TradeoffSweep sweep;
+    int frames = 5, warmup = 1, block = 1;
+    int orbit = 0;             // > 0: this many cameras on an orbit about the run's camera
+    bool walkthrough = false;  // the scene's camera.path keyframes as the cameras
+    std::string metric = "rms";
+    std::string buffer = "final";
+    std::vector<std::string> against;  // empty: the reference; else knob=value on top of each point
+    int resamples = 2000;
+    BenchShard shard;  // points whose number % count == index
+};
+
+// The reference image of `buffer` ("final", "lbuffer", "ao") for `camera`
+// at width x height, under the point's knobs (which the reference model reads).
+using TradeoffReference = std::function<FloatImage(const Scene& scene, const KnobRegistry& knobs, const Camera& camera,
+                                                   int width, int height, const std::string& buffer)>;
+
+struct TradeoffResult {
+    TradeoffTable table;
+    BenchFields machine;   // the GL strings
+    BenchFields settings;  // scene, size, frames, cameras, metric, buffer, against, seconds ...
+    double timingSeconds = 0.0, errorSeconds = 0.0;  // the timed rounds; the captures and errors (references included)
+};
+
+class TradeoffRunner {
+public:
+    // Checks every axis value (knobs against their declarations, presets,
+    // clip planes), --against, the metric and the buffer, and loads the
+    // scene: everything that can fail without GL fails here.
+    explicit TradeoffRunner(TradeoffOptions options);
+
+    const std::vector<TradeoffPoint>& points() const { return points_; }  // this shard's
+    size_t sweepSize() const { return sweepSize_; }
+    const Scene& scene() const { return scene_; }
+    const std::vector<Camera>& cameras() const { return cameras_; }
+    const TradeoffOptions& options() const { return o_; }
+
+    // The GPU output a --buffer name reads; "ao" is the AO buffer the lighting
+    // pass reads (this is the one place that says which). Throws Error for
+    // "shadow" (no GPU output holds shadow visibility yet) and unknown names.
+    static std::string gpuOutput(const std::string& buffer);
+
+    // Needs a current GL 4.5 context.
+    TradeoffResult run(const TradeoffReference& reference, const BenchProgress& progress = {});
+
+private:
+    TradeoffOptions o_;
+    Scene scene_;
+    std::vector<TradeoffPoint> points_;
+    size_t sweepSize_ = 0;
+    std::vector<Camera> cameras_;
+    std::vector<RunConfig> pointRuns_;  // per point: the run with the point's preset
+};
+
+}  // namespace dw

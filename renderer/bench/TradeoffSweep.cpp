@@ -1,0 +1,93 @@
+#include "renderer/bench/TradeoffSweep.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+size_t TradeoffSweep::count() const {
+    if (axes.empty()) return 0;
+    size_t n = 1;
+    for (const auto& a : axes) n = oneAtATime ? n + (a.values.size() - 1) : n * a.values.size();
+    return n;
+}
+
+std::vector<TradeoffPoint> TradeoffSweep::points() const {
+    if (axes.empty()) throw Error("tradeoff needs at least one axis (--sweep, --presets or --knobs)");
+    std::vector<std::vector<std::string>> all;
+    if (oneAtATime) {
+        if (centre.size() != axes.size()) throw Error("a one-at-a-time sweep needs a centre value per axis");
+        all.push_back(centre);
+        for (size_t a = 0; a < axes.size(); ++a)
+            for (const auto& v : axes[a].values) {
+                if (v == centre[a]) continue;
+                std::vector<std::string> p = centre;
+                p[a] = v;
+                all.push_back(std::move(p));
+            }
+    } else {
+        std::vector<size_t> at(axes.size(), 0);
+        const size_t n = count();
+        for (size_t i = 0; i < n; ++i) {
+            std::vector<std::string> p;
+            for (size_t a = 0; a < axes.size(); ++a) p.push_back(axes[a].values[at[a]]);
+            all.push_back(std::move(p));
+            for (size_t a = axes.size(); a-- > 0;) {
+                if (++at[a] < axes[a].values.size()) break;
+                at[a] = 0;
+            }
+        }
+    }
+    std::vector<TradeoffPoint> out;
+    for (size_t i = 0; i < all.size(); ++i) {
+        const auto& values = all[i];
+        const bool excluded = exclusion.excludes([&](const std::string& axis) {
+            for (size_t a = 0; a < axes.size(); ++a)
+                if (axes[a].name == axis) return values[a];
+            return std::string();
+        });
+        if (!excluded) out.push_back({static_cast<int>(i), values});
+    }
+    if (out.empty())
+        throw Error("the sweep is empty after --exclude: every one of its " + std::to_string(all.size()) +
+                    " point(s) is left out");
+    return out;
+}
+
+TradeoffSweep TradeoffSweep::aroundCurrent(const KnobRegistry& current) {
+    TradeoffSweep s;
+    s.oneAtATime = true;
+    for (const KnobSpec& spec : current.specs()) {
+        if (!spec.tradeoff) continue;
+        const int id = *current.find(spec.name);
+        const double v = current.value(id);
+        std::vector<double> raw;
+        if (spec.type == KnobType::Bool) {
+            raw = {0.0, 1.0};
+        } else if (spec.type == KnobType::Enum) {
+            for (size_t i = 0; i < spec.choices.size(); ++i) raw.push_back(static_cast<double>(i));
+        } else if (v != 0.0) {
+            for (double f : {0.25, 0.5, 1.0, 2.0, 4.0}) raw.push_back(v * f);
+        } else {
+            for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) raw.push_back(spec.minValue + f * (spec.maxValue - spec.minValue));
+        }
+        TradeoffAxis axis;
+        axis.name = spec.name;
+        for (double r : raw) {
+            r = std::clamp(r, spec.minValue, spec.maxValue);
+            if (spec.type == KnobType::Int) r = std::round(r);
+            const std::string text = current.formatValue(id, r);
+            if (std::find(axis.values.begin(), axis.values.end(), text) == axis.values.end()) axis.values.push_back(text);
+        }
+        const std::string centre = current.format(id);
+        if (std::find(axis.values.begin(), axis.values.end(), centre) == axis.values.end()) axis.values.push_back(centre);
+        if (axis.values.size() < 2) continue;
+        s.centre.push_back(centre);
+        s.axes.push_back(std::move(axis));
+    }
+    return s;
+}
+
+}  // namespace dw

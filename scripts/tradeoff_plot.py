@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Plots a `deferred-workbench tradeoff` CSV: median GPU frame ms against the
+error, both with their 95% intervals, the Pareto front highlighted and each
+point on it labelled with its settings. With several cameras the rows over
+all cameras ("all") are drawn. `tradeoff --plot FILE.png` runs it; by hand:
+
+    python3 scripts/tradeoff_plot.py --csv tradeoff.csv --out tradeoff.png [--size 800x600] [--overlay presets.csv]
+
+--overlay draws another tradeoff CSV's points (e.g. presets measured the same
+way) over the first, as labelled diamonds.
+
+Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
+(Debian: apt-get install python3-matplotlib).
+"""
+import argparse
+import csv
+import math
+import sys
+
+MIDDLE = ["metric", "buffer", "error", "error_lo", "error_hi", "frames",
+          "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"]
+
+
+def number(text):
+    if text == "":
+        return math.nan
+    return float(text)
+
+
+def read(path):
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader, None)
+        if not header or header[0] != "point" or "camera" not in header or header[-1] != "pareto":
+            raise ValueError(f"{path}: not a tradeoff CSV (header {header})")
+        camera = header.index("camera")
+        axes = header[1:camera]
+        if header[camera + 1:camera + 1 + len(MIDDLE)] != MIDDLE:
+            raise ValueError(f"{path}: not a tradeoff CSV (columns after camera: {header[camera + 1:]})")
+        index = {name: i for i, name in enumerate(header)}
+        rows = []
+        for row in reader:
+            if not row:
+                continue
+            rows.append({
+                "point": int(row[0]),
+                "values": row[1:camera],
+                "camera": row[camera],
+                "metric": row[index["metric"]],
+                "buffer": row[index["buffer"]],
+                "error": number(row[index["error"]]),
+                "lo": number(row[index["error_lo"]]),
+                "hi": number(row[index["error_hi"]]),
+                "ms": number(row[index["frame_gpu_ms"]]),
+                "ms_lo": number(row[index["frame_gpu_ms_lo"]]),
+                "ms_hi": number(row[index["frame_gpu_ms_hi"]]),
+                "pareto": row[-1] == "1",
+            })
+    return axes, rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--csv", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--size", default="800x600")
+    parser.add_argument("--overlay", action="append", default=[], help="another tradeoff CSV drawn over it")
+    args = parser.parse_args()
+    try:
+        width, height = (int(v) for v in args.size.split("x"))
+        axes, rows = read(args.csv)
+        overlays = [read(path) for path in args.overlay]
+    except (ValueError, OSError) as e:
+        print(f"tradeoff_plot: {e}", file=sys.stderr)
+        return 2
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("tradeoff_plot: matplotlib is missing (Debian: apt-get install python3-matplotlib)", file=sys.stderr)
+        return 3
+
+    def shown_rows(rows):
+        """The all-cameras rows when there are any, else the first camera's; with a time and an error."""
+        shown = [r for r in rows if r["camera"] == "all"]
+        if not shown:
+            cameras = sorted({r["camera"] for r in rows})
+            shown = [r for r in rows if r["camera"] == cameras[0]] if cameras else []
+        return [r for r in shown if math.isfinite(r["ms"]) and math.isfinite(r["error"])]
+
+    shown = shown_rows(rows)
+    # Only the axes that vary name the points.
+    varying = [i for i, _ in enumerate(axes) if len({tuple([r["values"][i]]) for r in shown}) > 1]
+
+    def label(r):
+        parts = [f"{axes[i]}={r['values'][i]}" if axes[i] != "preset" else r["values"][i] for i in varying]
+        return ", ".join(parts) if parts else f"point {r['point']}"
+
+    dpi = 100
+    fig, ax = plt.subplots(figsize=(width / dpi, height / dpi), dpi=dpi)
+    for front in (False, True):
+        group = [r for r in shown if r["pareto"] == front]
+        if not group:
+            continue
+        xerr = [[max(0.0, r["ms"] - r["ms_lo"]) if math.isfinite(r["ms_lo"]) else 0.0 for r in group],
+                [max(0.0, r["ms_hi"] - r["ms"]) if math.isfinite(r["ms_hi"]) else 0.0 for r in group]]
+        yerr = [[max(0.0, r["error"] - r["lo"]) if math.isfinite(r["lo"]) else 0.0 for r in group],
+                [max(0.0, r["hi"] - r["error"]) if math.isfinite(r["hi"]) else 0.0 for r in group]]
+        ax.errorbar([r["ms"] for r in group], [r["error"] for r in group], xerr=xerr, yerr=yerr,
+                    fmt="o" if front else ".", color="tab:red" if front else "tab:gray",
+                    ecolor="tab:red" if front else "lightgray", capsize=3, markersize=7 if front else 5,
+                    label="Pareto front" if front else "other points", zorder=3 if front else 2)
+    front = sorted((r for r in shown if r["pareto"]), key=lambda r: (r["ms"], r["error"]))
+    if front:
+        ax.plot([r["ms"] for r in front], [r["error"] for r in front], "-", color="tab:red", alpha=0.5, zorder=1)
+        for r in front:
+            ax.annotate(label(r), (r["ms"], r["error"]), textcoords="offset points", xytext=(6, 6), fontsize=8,
+                        color="tab:red")
+    for k, (o_axes, o_rows) in enumerate(overlays):
+        points = shown_rows(o_rows)
+        if not points:
+            continue
+        o_vary = [i for i, _ in enumerate(o_axes) if len({r["values"][i] for r in points}) > 1]
+        ax.errorbar([r["ms"] for r in points], [r["error"] for r in points],
+                    xerr=[[max(0.0, r["ms"] - r["ms_lo"]) for r in points], [max(0.0, r["ms_hi"] - r["ms"]) for r in points]],
+                    yerr=[[max(0.0, r["error"] - r["lo"]) for r in points], [max(0.0, r["hi"] - r["error"]) for r in points]],
+                    fmt="D", color=f"C{k}", ecolor=f"C{k}", alpha=0.8, capsize=3, markersize=6,
+                    label=args.overlay[k].rsplit("/", 1)[-1], zorder=4)
+        for r in points:
+            text = ", ".join(r["values"][i] if o_axes[i] == "preset" else f"{o_axes[i]}={r['values'][i]}" for i in o_vary)
+            ax.annotate(text or f"point {r['point']}", (r["ms"], r["error"]), textcoords="offset points",
+                        xytext=(6, -10), fontsize=8, color=f"C{k}")
+    metric = shown[0]["metric"] if shown else "error"
+    buffer = shown[0]["buffer"] if shown else "?"
+    ax.set_xlabel("GPU frame ms (median, 95% CI)")
+    ax.set_ylabel(f"{metric} of {buffer} (95% CI)")
+    over = " over all cameras" if shown and shown[0]["camera"] == "all" else ""
+    ax.set_title(f"tradeoff: {metric} of {buffer} against GPU time{over}")
+    ax.grid(True, alpha=0.3)
+    if shown:
+        ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.out, format="png")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

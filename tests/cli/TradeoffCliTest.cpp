@@ -1,0 +1,185 @@
+// `tradeoff` as a user runs it, end to end on small grids (160x90, two
+// frames): the CSV's rows and columns, the JSON, the table, the plot a PNG;
+// the error falling where theory says (the AO's RMS against the ray-traced
+// AO from 4 to 64 samples, blur off); shards merging to one run's table; bad
+// input refused in one message. Timings are never asserted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "renderer/bench/TradeoffRunner.h"
+#include "renderer/bench/TradeoffTable.h"
+#include "renderer/io/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Result = test::CommandResult;
+
+fs::path dir() {
+    static const fs::path d = [] {
+        fs::path p = test::tempDir() / "tradeoff";
+        fs::create_directories(p);
+        return p;
+    }();
+    return d;
+}
+
+// The reference cache of these tests: each reference rendered once for all of them.
+Result run(const std::string& args) {
+    return test::runCommand("DW_REFERENCE_CACHE=" + (dir() / "cache").string() + " " + DW_WORKBENCH_BINARY + " " + args);
+}
+
+std::string files(const std::string& name) {
+    const fs::path d = dir();
+    return " --csv " + (d / (name + ".csv")).string() + " --json " + (d / (name + ".json")).string() + " --plot " +
+           (d / (name + ".png")).string() + " --plot-size 320x240";
+}
+
+const std::string kAoGrid =
+    "tradeoff --scene default --size 160x90 --set ssao_blur.mode=off --sweep ssao.samples=4,16,64 "
+    "--sweep ssao.resolution=full,half --metric rms --buffer ao --frames 2 --warmup 1 --resamples 200 --quiet";
+
+const TradeoffRow* rowOf(const TradeoffTable& t, const std::string& samples, const std::string& resolution) {
+    for (const auto& r : t.rows)
+        if (t.axisValue(r, "ssao.samples") == samples && t.axisValue(r, "ssao.resolution") == resolution) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
+    const Result r = run(kAoGrid + files("grid"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "grid.csv").string());
+    EXPECT_EQ(t.axes, (std::vector<std::string>{"ssao.samples", "ssao.resolution"}));
+    ASSERT_EQ(t.rows.size(), 6u);
+    int onFront = 0;
+    for (const auto& row : t.rows) {
+        EXPECT_EQ(row.camera, "0");
+        EXPECT_EQ(row.metric, "rms");
+        EXPECT_EQ(row.buffer, "ao");
+        EXPECT_EQ(row.frames, 2);
+        EXPECT_TRUE(std::isfinite(row.error) && row.error > 0.0) << row.point;
+        EXPECT_LE(row.errorLo, row.error);
+        EXPECT_GE(row.errorHi, row.error);
+        EXPECT_TRUE(std::isfinite(row.frameGpuMs) && row.frameGpuMs > 0.0);
+        EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ssao")));
+        onFront += row.pareto ? 1 : 0;
+    }
+    EXPECT_GE(onFront, 1);
+    // The error falls as theory says: more kernel samples, less noise against the ray-traced AO.
+    for (const char* res : {"full", "half"}) {
+        const TradeoffRow *few = rowOf(t, "4", res), *many = rowOf(t, "64", res);
+        ASSERT_TRUE(few && many);
+        EXPECT_LT(many->error, few->error) << res;
+    }
+    // The same point numbering as the grid: samples outer, resolution inner.
+    EXPECT_EQ(rowOf(t, "16", "half")->point, 3);
+
+    // The table on stdout says what its numbers are and marks the front.
+    // "ao" is the AO buffer the lighting pass reads (ssao.blurred, or ao.filtered with the AO methods).
+    const std::string ao = TradeoffRunner::gpuOutput("ao");
+    EXPECT_NE(r.out.find("rms of ao (" + ao + ") against the CPU reference"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("**front**"), std::string::npos);
+    EXPECT_NE(r.out.find("| point | ssao.samples | ssao.resolution |"), std::string::npos) << r.out;
+
+    std::ifstream jf(dir() / "grid.json");
+    const nlohmann::json j = nlohmann::json::parse(jf);
+    EXPECT_EQ(j["rows"].size(), 6u);
+    EXPECT_EQ(j["settings"]["against"], "reference");
+    EXPECT_EQ(j["settings"]["buffer"], "ao (" + ao + ")");
+    EXPECT_EQ(j["settings"]["references_rendered"].get<std::string>() == "1" ||
+                  j["settings"]["references_from_cache"].get<std::string>() == "1",
+              true)
+        << "one reference for the one camera";
+
+    const FloatImage png = loadImageFloat((dir() / "grid.png").string());
+    EXPECT_EQ(png.width, 320);
+    EXPECT_EQ(png.height, 240);
+}
+
+TEST(TradeoffCli, ShardsMergeToOneRunsTable) {
+    const std::string grid = "tradeoff --scene default --size 160x90 --set ssao_blur.mode=off --sweep ssao.samples=4,64 "
+                             "--sweep ssao.resolution=full,half --metric rms --buffer ao --frames 1 --warmup 0 "
+                             "--resamples 200 --quiet";
+    const Result whole = run(grid + files("whole"));
+    ASSERT_EQ(whole.code, 0) << whole.err;
+    for (int i = 0; i < 2; ++i) {
+        const std::string name = "shard" + std::to_string(i);
+        const Result s = run(grid + " --shard " + std::to_string(i) + "/2" + files(name));
+        ASSERT_EQ(s.code, 0) << s.err;
+    }
+    const Result m = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " + (dir() / "shard1.csv").string() +
+                         " --out " + (dir() / "merged.csv").string());
+    ASSERT_EQ(m.code, 0) << m.err;
+    const TradeoffTable a = TradeoffTable::readCsv((dir() / "whole.csv").string());
+    const TradeoffTable b = TradeoffTable::readCsv((dir() / "merged.csv").string());
+    EXPECT_EQ(a.axes, b.axes);
+    ASSERT_EQ(a.rows.size(), b.rows.size());
+    for (size_t i = 0; i < a.rows.size(); ++i) {
+        EXPECT_EQ(a.rows[i].point, b.rows[i].point);
+        EXPECT_EQ(a.rows[i].axisValues, b.rows[i].axisValues);
+        EXPECT_EQ(a.rows[i].camera, b.rows[i].camera);
+        // Errors are deterministic (the same frames, the same reference); times are not.
+        EXPECT_EQ(a.rows[i].error, b.rows[i].error) << i;
+        EXPECT_EQ(a.rows[i].errorLo, b.rows[i].errorLo) << i;
+    }
+    // Merging a shard twice is refused, naming both.
+    const Result twice = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " + (dir() / "shard0.csv").string() +
+                             " --out " + (dir() / "twice.csv").string());
+    EXPECT_NE(twice.code, 0);
+}
+
+TEST(TradeoffCli, ExcludeAndOrbitAndAgainstAConfiguration) {
+    // Against a named configuration (blur on) with two orbit cameras: rows per camera and over all.
+    const Result r = run("tradeoff --scene default --size 160x90 --sweep ssao.samples=4,16,64 "
+                         "--exclude ssao.samples=16 --against ssao_blur.mode=bilateral --set ssao_blur.mode=off "
+                         "--buffer ao --metric rms --orbit 2 --frames 2 --warmup 0 --resamples 200 --quiet" +
+                         files("orbit"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "orbit.csv").string());
+    ASSERT_EQ(t.rows.size(), 6u);  // 2 points x (2 cameras + all)
+    EXPECT_EQ(t.rows[0].point, 0);
+    EXPECT_EQ(t.rows[3].point, 2);  // point 1 (16 samples) left out; the numbers stay the grid's
+    EXPECT_EQ(t.rows[2].camera, "all");
+    EXPECT_NEAR(t.rows[2].error, 0.5 * (t.rows[0].error + t.rows[1].error), 1e-12);
+    EXPECT_EQ(t.rows[2].frames, 4);
+}
+
+TEST(TradeoffCli, BadInputIsOneClearMessage) {
+    struct Case {
+        std::string args, message;
+    };
+    const std::string base = "tradeoff --scene default --size 160x90 --frames 1 --quiet --csv " +
+                             (dir() / "bad.csv").string() + " --json " + (dir() / "bad.json").string() + " --plot " +
+                             (dir() / "bad.png").string();
+    const Case cases[] = {
+        {" --sweep ssao.nonsense=1,2", "unknown knob 'ssao.nonsense'"},
+        {" --sweep ssao.samples=4,many", "ssao.samples"},
+        {" --sweep ssao.samples=4,8 --exclude ssao.samples=4,8", "the sweep is empty after --exclude"},
+        {" --sweep ssao.samples=4,8 --exclude ssao.radius=1", "'ssao.radius' is not an axis of this sweep"},
+        {" --sweep ssao.samples=4,8 --metric mse", "--metric: expected flip, rms, psnr or ssim, got 'mse'"},
+        {" --sweep ssao.samples=4,8 --buffer shadow", "no GPU output holds the shadow visibility yet"},
+        {" --presets SSAO1,NOPE", "NOPE"},
+        {"", "tradeoff needs axes"},
+    };
+    for (const auto& c : cases) {
+        const Result r = run(base + c.args);
+        EXPECT_NE(r.code, 0) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+        // One message: a single line on stderr (a usage error adds where the options are listed).
+        std::istringstream lines(r.err);
+        int messages = 0;
+        for (std::string line; std::getline(lines, line);)
+            messages += !line.empty() && line.rfind("(deferred-workbench help", 0) != 0;
+        EXPECT_EQ(messages, 1) << c.args << "\n" << r.err;
+    }
+}
