@@ -52,6 +52,7 @@ float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) c
 
 void GtaoMethod::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao.frag"});
+    linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "gtao linear depth");
     params_.create();
 }
 
@@ -72,6 +73,7 @@ void GtaoMethod::run(FrameContext& ctx) {
     p.minPixels = 1.3f;  // XeGTAO's "pixel too close" threshold: never the pixel itself
     params_.upload(p, binding::kPassUbo);
     ctx.texture("gbuffer.depth").bind(0);
+    linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
     ctx.texture("gbuffer.normal").bind(1);
     glViewport(0, 0, p.aoSize.x, p.aoSize.y);
     target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();

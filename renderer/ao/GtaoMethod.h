@@ -12,6 +12,7 @@
 #include "renderer/ao/AoMethod.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ParamBuffer.h"
+#include "renderer/gl/Sampler.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "shaders/params/gtao.h"
@@ -44,6 +45,7 @@ private:
     gl::ShaderLibrary::Handle program_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::GtaoParams> params_;
+    gl::Sampler linearDepth_;
     TargetFramebuffer target_;
     std::string stats_;
 };

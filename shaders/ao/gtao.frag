@@ -29,13 +29,20 @@ out float outVisibility;
 const float PI = 3.14159265358979;
 const float HALF_PI = 1.57079632679490;
 
-// The view-space point at a full-resolution pixel, or false on the sky or off the image.
+// The view-space point at a full-resolution position (in pixels), or false
+// on the sky or off the image. The depth is filtered (the pass binds a
+// linear sampler): depth is affine across a plane in window space, so the
+// point is on the slice's own line; the nearest pixel centre would lie off
+// the slice, and a flat floor would occlude itself at grazing angles.
 bool sampleAt(vec2 fullPx, out vec3 S) {
-    ivec2 q = ivec2(floor(fullPx));
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(camera.viewport.xy)))) return false;
-    float d = texelFetch(uDepth, q, 0).r;
-    if (isFarDepth(d)) return false;
-    S = viewPositionAtPixel(q, d);
+    vec2 size = camera.viewport.xy;
+    if (any(lessThan(fullPx, vec2(0.5))) || any(greaterThan(fullPx, size - 0.5))) return false;
+    vec2 uv = fullPx / size;
+    // A filtered depth between a surface and the sky is no surface.
+    vec4 texels = textureGather(uDepth, uv, 0);
+    if (isFarDepth(texels.x) || isFarDepth(texels.y) || isFarDepth(texels.z) || isFarDepth(texels.w)) return false;
+    float d = textureLod(uDepth, uv, 0.0).r;
+    S = viewPositionFromDepth(uv, d);
     return true;
 }
 
@@ -82,12 +89,18 @@ void main() {
     float visibility = 0.0;
     int slices = clamp(gtao.slices, 1, GTAO_MAX_SLICES);
     int steps = clamp(gtao.steps, 1, GTAO_MAX_STEPS);
+    // The slices' directions are uniform about V (the integral's measure),
+    // not on the screen: off the image's centre the two differ by the
+    // perspective, which biased an open floor by a few per cent.
+    vec3 X = normalize(vec3(V.z, 0.0, -V.x));
+    vec3 Y = cross(V, X);
     for (int i = 0; i < slices; ++i) {
         float phi = (float(i) + sliceNoise) * PI / float(slices);
-        vec2 omega = vec2(cos(phi), sin(phi));
-        vec3 d = vec3(omega, 0.0);
-        vec3 T = normalize(d - V * dot(d, V));  // in the slice, perpendicular to V, towards +omega
-        vec3 A = cross(T, V);                   // the slice plane's normal
+        vec3 T = cos(phi) * X + sin(phi) * Y;  // in the slice, perpendicular to V
+        // The slice's direction on the screen: where P + t T moves as t grows
+        // (the derivative of the projection; pixels are square).
+        vec2 omega = normalize(T.xy * -P.z + P.xy * T.z);
+        vec3 A = cross(T, V);                  // the slice plane's normal
         vec3 Np = N - A * dot(N, A);
         float len = length(Np);
         if (len < 1e-6) continue;  // the normal is the slice's axis: the slice weighs |Np| = 0

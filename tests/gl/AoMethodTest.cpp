@@ -35,7 +35,7 @@ const std::map<std::string, Tolerance> kTolerance = {
     // underside is not in the depth buffer, and its definition is not the
     // cosine-weighted visibility; docs/ao.md).
     {"ssao", {0.20, 0.45}},
-    // GTAO at its defaults: measured 0.051 and 0.054.
+    // GTAO at its defaults (3 slices x 3 steps, full size): measured 0.055 and 0.067.
     {"gtao", {0.08, 0.09}},
 };
 constexpr Tolerance kDefaultTolerance{0.25, 0.25};
