@@ -9,28 +9,28 @@
 namespace dw {
 
 GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
-    slices_ = knobs.addInt("gtao.slices", 3, 1, gpu::GTAO_MAX_SLICES, "ao",
-                           "gtao: screen-space slices (directions) per pixel, rotated per pixel in a 4x4 pattern "
+    slices_ = knobs.addInt("gtao.slices", 3, 1, gpu::GTAO_MAX_SLICES, "gtao",
+                           "screen-space slices (directions) per pixel, rotated per pixel in a 4x4 pattern "
                            "(XeGTAO: 1 low, 2 medium, 3 high, 9 ultra)", "", true);
-    steps_ = knobs.addInt("gtao.steps", 3, 1, gpu::GTAO_MAX_STEPS, "ao",
-                          "gtao: depth samples per side of each slice (XeGTAO: 2 low and medium, 3 high and ultra)", "",
+    steps_ = knobs.addInt("gtao.steps", 3, 1, gpu::GTAO_MAX_STEPS, "gtao",
+                          "depth samples per side of each slice (XeGTAO: 2 low and medium, 3 high and ultra)", "",
                           true);
-    radius_ = knobs.addFloat("gtao.radius", 1.0, 0.01, 20.0, "ao",
-                             "gtao: the world-space radius the horizon search covers, in gtao.radius_unit", "units", false,
+    radius_ = knobs.addFloat("gtao.radius", 1.0, 0.01, 20.0, "gtao",
+                             "the world-space radius the horizon search covers, in gtao.radius_unit", "units", false,
                              true);
-    radiusUnit_ = knobs.addEnum("gtao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ao",
-                                "gtao: world: gtao.radius in world units; scene_fraction: in the scene's power-of-ten "
+    radiusUnit_ = knobs.addEnum("gtao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "gtao",
+                                "world: gtao.radius in world units; scene_fraction: in the scene's power-of-ten "
                                 "unit, as ssao.radius_unit");
-    falloff_ = knobs.addFloat("gtao.falloff", 0.0, 0.0, 1.0, "ao",
-                              "gtao: share of the radius over which a sample's weight falls linearly to 0 at the radius "
+    falloff_ = knobs.addFloat("gtao.falloff", 0.0, 0.0, 1.0, "gtao",
+                              "share of the radius over which a sample's weight falls linearly to 0 at the radius "
                               "(XeGTAO uses 0.615); 0, the default: a hard cut at the radius, as the ray-traced AO has (closest to it, docs/ao.md)");
-    thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "ao",
-                                "gtao: thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
+    thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "gtao",
+                                "thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
                                 "back towards a lower sample per step; 0 takes every occluder as infinitely thick");
-    resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "ao",
-                                "gtao: ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
-    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "off"}, "shared", "ao",
-                             "gtao: spatial denoise of the 4x4 noise pattern: shared (the cross-bilateral filter "
+    resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "gtao",
+                                "ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
+    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "off"}, "shared", "gtao",
+                             "spatial denoise of the 4x4 noise pattern: shared (the cross-bilateral filter "
                              "ssao_blur.*) or off (ao.raw only upsampled)");
     shared_ = knobs.choiceIndex(denoise_, "shared");
 }

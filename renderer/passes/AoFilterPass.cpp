@@ -10,13 +10,13 @@
 namespace dw {
 
 AoFilterPass::AoFilterPass(KnobRegistry& knobs) {
-    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ao_filter",
+    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ssao_blur",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
     off_ = knobs.choiceIndex(mode_, "off");
     defines_ = knobs.choiceDefines(mode_);
-    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ao_filter",
+    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
                           "kernel width in AO pixels (seed 002 uses up to 61); taps = 2 x (width / 2) + 1", "px", true);
-    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ao_filter",
+    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ssao_blur",
                             "delta in the weight 1 / (delta + |d_center - d_current|) (eq. 4.7), in scene units of depth",
                             "units", false, true);
 }
