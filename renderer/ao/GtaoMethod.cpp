@@ -29,10 +29,13 @@ GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
                                 "back towards a lower sample per step; 0 takes every occluder as infinitely thick");
     resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "gtao",
                                 "ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
-    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "off"}, "shared", "gtao",
-                             "spatial denoise of the 4x4 noise pattern: shared (the cross-bilateral filter "
-                             "ssao_blur.*) or off (ao.raw only upsampled)");
+    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "edge_aware", "off"}, "shared", "gtao",
+                             "spatial denoise of the 4x4 rotation pattern: shared (the cross-bilateral filter "
+                             "ssao_blur.*), edge_aware (GTAO's own 5x5 filter weighted by the distance from the "
+                             "pixel's tangent plane and the normals, as XeGTAO's denoiser; gtao.noisy before it) "
+                             "or off (ao.raw only upsampled)");
     shared_ = knobs.choiceIndex(denoise_, "shared");
+    edgeAware_ = knobs.choiceIndex(denoise_, "edge_aware");
 }
 
 std::string GtaoMethod::description() const {
@@ -45,6 +48,18 @@ std::vector<std::string> GtaoMethod::knobNames() const {
             "gtao.resolution", "gtao.denoise"};
 }
 
+std::vector<OutputDecl> GtaoMethod::outputs() const {
+    return {{"gtao.noisy", OutputKind::Scalar,
+             "GTAO's visibility before its edge-aware denoise (gtao.denoise = edge_aware; R16F, at gtao.resolution)",
+             texture2D(GL_R16F), 1}};
+}
+
+ResourceDesc GtaoMethod::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    d.shift = resolutionShift(knobs);
+    return d;
+}
+
 float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
     const float r = knobs.get(radius_);
     return knobs.choice(radiusUnit_) == "world" ? r : r * static_cast<float>(sceneLengthUnit(bounds));
@@ -52,6 +67,7 @@ float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) c
 
 void GtaoMethod::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao.frag"});
+    denoiseProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao_denoise.frag"});
     linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "gtao linear depth");
     params_.create();
 }
@@ -71,14 +87,24 @@ void GtaoMethod::run(FrameContext& ctx) {
     // viewport's height times the projection's y scale.
     p.pixelScale = 0.5f * static_cast<float>(ctx.height) * ctx.camera.projection[1][1];
     p.minPixels = 1.3f;  // XeGTAO's "pixel too close" threshold: never the pixel itself
+    // Edge-aware denoise: a neighbour 2% of the depth off the tangent plane weighs 1/e.
+    p.denoisePlane = 0.02f;
     params_.upload(p, binding::kPassUbo);
     ctx.texture("gbuffer.depth").bind(0);
     linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
     ctx.texture("gbuffer.normal").bind(1);
     glViewport(0, 0, p.aoSize.x, p.aoSize.y);
-    target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
+    const bool edgeAware = k.get(denoise_) == edgeAware_;
+    (edgeAware ? noisyTarget_.get(ctx, {"gtao.noisy"}, {}, "GTAO noisy") : target_.get(ctx, {"ao.raw"}, {}, "GTAO")).bind();
     program_->use();
     triangle_.draw();
+    if (edgeAware) {
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        ctx.texture("gtao.noisy").bind(2);
+        target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
+        denoiseProgram_->use();
+        triangle_.draw();
+    }
     char line[160];
     std::snprintf(line, sizeof line, "%d slices x %d steps per side at %dx%d, radius %.4g world units, %s denoise",
                   p.slices, p.steps, p.aoSize.x, p.aoSize.y, p.radius, k.choice(denoise_).c_str());
