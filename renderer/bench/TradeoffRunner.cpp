@@ -44,20 +44,9 @@ std::string shortText(double v) {
 
 std::string TradeoffRunner::gpuOutput(const std::string& buffer) {
     if (buffer == "final" || buffer == "lbuffer") return buffer;
-    // The AO the lighting pass reads: "ao.filtered" where the pipeline has the
-    // AO methods' shared filter, else SSAO's "ssao.blurred" (the one place
-    // that says which).
-    if (buffer == "ao") {
-        static const std::string ao = [] {
-            KnobRegistry knobs;
-            const Pipeline pipeline(knobs);
-            for (const PassInfo& p : pipeline.passList())
-                for (const auto& w : p.writes)
-                    if (w.name == "ao.filtered") return std::string("ao.filtered");
-            return std::string("ssao.blurred");
-        }();
-        return ao;
-    }
+    // The AO the lighting pass reads, whichever ao.method wrote it (the one
+    // place that says which output `--buffer ao` means).
+    if (buffer == "ao") return "ao.filtered";
     if (buffer == "shadow")
         throw Error("--buffer shadow: no GPU output holds the shadow visibility yet, so there is nothing to compare with "
                     "the reference's shadow buffer (final, lbuffer or ao)");

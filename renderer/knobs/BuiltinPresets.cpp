@@ -1,6 +1,6 @@
 // The presets that ship with the workbench, in knob values: the quality
-// levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4, and
-// light-volume thresholds. Render size is not a knob (it follows the window,
+// levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4,
+// GTAO at XeGTAO's quality levels, and light-volume thresholds. Render size is not a knob (it follows the window,
 // or render --size), so the seed's resolutions are only named in descriptions.
 // The quality levels cover every knob group (what they do not name goes back
 // to its default); the light-volume presets cover only "lighting", so they
@@ -23,13 +23,13 @@ const std::vector<Preset>& builtinPresets() {
         };
         // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
         add("Low", "seed 002: 800x600, SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, one 512^2 sun shadow map",
-            {{"ssao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "21"}, {"shadows.map_size", "512"}});
         add("Medium", "seed 002: 1280x720, SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, a 1024^2 shadow map",
-            {{"ssao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "1024"}});
         add("High", "seed 002: 1920x1080, full-size SSAO with 16 samples and a 61-wide bilateral blur, a 2048^2 shadow map",
-            {{"ssao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "2048"}});
         // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width.
         const char* ssao[5][4] = {{"quarter", "8", "1", "10"}, {"quarter", "16", "1", "15"}, {"half", "16", "1", "20"},
@@ -38,9 +38,20 @@ const std::vector<Preset>& builtinPresets() {
             add("SSAO" + std::to_string(i + 1),
                 std::string("seed 000 table 6.4: ") + ssao[i][0] + " resolution, " + ssao[i][1] + " samples, radius " +
                     ssao[i][2] + ", blur width " + ssao[i][3],
-                {{"ssao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
+                {{"ao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
                  {"ssao.radius", ssao[i][2]}, {"ssao.radius_unit", "world"}, {"ssao_blur.mode", "bilateral"},
                  {"ssao_blur.width", ssao[i][3]}});
+        // GTAO at XeGTAO's quality levels (slices x steps per side: low 1 x 2,
+        // medium 2 x 2, high 3 x 3, ultra 9 x 3), full size. They cover only
+        // the ao and gtao groups, so they combine with a quality level.
+        const char* gtao[4][3] = {{"low", "1", "2"}, {"medium", "2", "2"}, {"high", "3", "3"}, {"ultra", "9", "3"}};
+        for (const auto& g : gtao)
+            add(std::string("GTAO ") + g[0],
+                std::string("GTAO at XeGTAO's ") + g[0] + " level: " + g[1] + " slices x " + g[2] +
+                    " steps per side, full size, the shared bilateral blur",
+                {{"ao.enabled", "true"}, {"ao.method", "gtao"}, {"gtao.slices", g[1]}, {"gtao.steps", g[2]},
+                 {"gtao.resolution", "full"}, {"gtao.denoise", "shared"}},
+                {"ao", "gtao"});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
             {{"lighting.threshold", "0.0009765625"}}, {"lighting"});

@@ -85,7 +85,7 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
     EXPECT_EQ(rowOf(t, "16", "half")->point, 3);
 
     // The table on stdout says what its numbers are and marks the front.
-    // "ao" is the AO buffer the lighting pass reads (ssao.blurred, or ao.filtered with the AO methods).
+    // "ao" is the AO buffer the lighting pass reads (ao.filtered).
     const std::string ao = TradeoffRunner::gpuOutput("ao");
     EXPECT_NE(r.out.find("rms of ao (" + ao + ") against the CPU reference"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("**front**"), std::string::npos);

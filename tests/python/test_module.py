@@ -88,14 +88,14 @@ class SessionTest(unittest.TestCase):
             else:
                 self.assertEqual(image.dtype, np.float32, name)
                 self.assertIn(image.shape[2], RAW_CHANNELS[info["kind"]], name)
-        full = ["gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_position", "ssao.blurred",
+        full = ["gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_position", "ao.filtered",
                 "lbuffer", "lbuffer.depth", "lighting.overlap", "tonemap.result", "final"]
         for name in full:
             self.assertIn(name, produced)
             self.assertEqual(produced[name].shape[:2], (SIZE[1], SIZE[0]), name)
         self.assertEqual(produced["gbuffer.depth"].shape[2], 1)
         self.assertEqual(produced["gbuffer.normal"].shape[2], 2)
-        self.assertEqual(produced["ssao.raw"].shape[:2], (SIZE[1] // 2, SIZE[0] // 2))  # ssao.resolution = half
+        self.assertEqual(produced["ao.raw"].shape[:2], (SIZE[1] // 2, SIZE[0] // 2))  # ssao.resolution = half
         for name in ("final", "tonemap.result", "fxaa.result"):
             self.assertEqual(produced[name].dtype, np.uint8, name)
 
@@ -262,8 +262,8 @@ class SessionTest(unittest.TestCase):
         configs = r["results"]["configs"]
         self.assertEqual([c["knobs"] for c in configs], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
         self.assertEqual([c["size"] for c in configs], ["64x36", "64x36"])
-        self.assertIn("4 samples", configs[0]["stats"]["ssao"])
-        self.assertIn("16 samples", configs[1]["stats"]["ssao"])
+        self.assertIn("4 samples", configs[0]["stats"]["ao"])
+        self.assertIn("16 samples", configs[1]["stats"]["ao"])
         for c in configs:
             self.assertEqual([x["sample"] for x in c["samples"]], [0, 1])
             self.assertEqual(c["series"]["frame"]["gpu_ms"]["frames"], 2)
@@ -300,10 +300,10 @@ class SessionTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertIn("image: identical", r.stdout)
         # Session.record: the knobs as they are now, the last render's buffer.
-        s.render("ssao.raw")
+        s.render("ao.raw")
         s.set("tonemap.key", 0.25)
         again = s.record(os.path.join(self.tmp.name, "py-record-2.json"))
-        self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ssao.raw", "0.25"))
+        self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ao.raw", "0.25"))
         with self.assertRaises(dw.Error):
             dw.Session(scene="default", size=(8, 8)).record(os.path.join(self.tmp.name, "none.json"))
 

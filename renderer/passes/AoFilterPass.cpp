@@ -1,14 +1,15 @@
-#include "renderer/passes/SsaoBlurPass.h"
+#include "renderer/passes/AoFilterPass.h"
 
 #include <algorithm>
 #include <glm/glm.hpp>
 
+#include "renderer/ao/AoMethod.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
-SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
+AoFilterPass::AoFilterPass(KnobRegistry& knobs) {
     mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ssao_blur",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
     off_ = knobs.choiceIndex(mode_, "off");
@@ -20,23 +21,26 @@ SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
                             "units", false, true);
 }
 
-std::string SsaoBlurPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
-    if (!knobs.get(ssaoEnabled_)) return "switched off (ssao.enabled = false)";
+std::string AoFilterPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
+    if (!knobs.get(aoEnabled_)) return "switched off (ao.enabled = false)";
     if (scene.ambient == glm::vec3(0.0f)) return "the scene has no ambient light (AO only scales the ambient term)";
     return {};
 }
 
-void SsaoBlurPass::setup(gl::ShaderLibrary& shaders) {
+void AoFilterPass::setup(gl::ShaderLibrary& shaders) {
     blur_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/blur.frag", .defines = defines_});
     upsample_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/upsample.frag", .defines = defines_});
     params_.create();
 }
 
-void SsaoBlurPass::execute(FrameContext& ctx) {
+void AoFilterPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    const gl::Texture& raw = ctx.texture("ssao.raw");
+    const gl::Texture& raw = ctx.texture("ao.raw");
     const gl::Texture& depth = ctx.texture("gbuffer.depth");
     const int w = raw.width(), h = raw.height();
+    // The method that wrote ao.raw may have denoised it itself (none: the filter run alone).
+    // Either way the upsampling stays depth-aware when ssao_blur.mode is bilateral.
+    const bool blur = !ctx.aoMethod || ctx.aoMethod->sharedBlur(k);
     const int mode = k.get(mode_);
     const int radius = k.get(width_) / 2;
     gpu::SsaoBlurParams p{};
@@ -44,12 +48,12 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
     p.aoSize = {w, h};
     p.delta = k.get(delta_);
     const gl::Texture* source = &raw;
-    if (mode != off_ && radius > 0) {
+    if (blur && mode != off_ && radius > 0) {
         for (int i = 0; i < 2; ++i)
             if (!temp_[i] || temp_[i].width() != w || temp_[i].height() != h) {
                 temp_[i] = gl::Texture::create2D(GL_R16F, w, h);
                 temp_[i].setFilter(GL_NEAREST, GL_NEAREST);
-                tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "SSAO blur");
+                tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "AO blur");
             }
         glViewport(0, 0, w, h);
         depth.bind(1);
@@ -70,11 +74,13 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
     source->bind(0);
     depth.bind(1);
     glViewport(0, 0, ctx.width, ctx.height);
-    full_.get(ctx, {"ssao.blurred"}, {}, "SSAO blurred").bind();
+    full_.get(ctx, {"ao.filtered"}, {}, "AO filtered").bind();
     upsample_->use();
     triangle_.draw();
-    stats_ = (mode == off_ ? std::string("no") : k.choice(mode_)) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
-             (w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "");
+    const std::string upsampled = w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "";
+    if (!blur) stats_ = "no shared blur (the method denoised, or asked for none)" + upsampled;
+    else if (mode == off_ || radius == 0) stats_ = "no blur" + upsampled;
+    else stats_ = k.choice(mode_) + " blur, " + std::to_string(2 * radius + 1) + " taps" + upsampled;
 }
 
 }  // namespace dw
