@@ -32,7 +32,7 @@ constexpr const char* kUsage =
     "       deferred-workbench compare --a k=v[,k=v...] --b k=v[,k=v...] [--scene S] [--preset P] [--set k=v]...\n"
     "                                  [--size WxH] [--buffer final|lbuffer|NAME] [--frames N] [options]\n"
     "       deferred-workbench compare --against reference [--b k=v[,k=v...]] [--scene S] [--preset P] [--set k=v]...\n"
-    "                                  [--size WxH] [--buffer final|lbuffer|ssao.blurred] [--ao-rays N] [options]\n"
+    "                                  [--size WxH] [--buffer final|lbuffer|ao|ao.raw] [--ao-rays N] [options]\n"
     "  Two image files: EXR/HDR/PFM are HDR (linear radiance: HDR-FLIP, SSIM on v/(1+v));\n"
     "  anything else (PNG, JPEG, ...) LDR (display values: LDR-FLIP, SSIM as stored).\n"
     "  Two renders: the scene rendered twice with the same --scene/--preset/--set, then side A's\n"
@@ -43,7 +43,7 @@ constexpr const char* kUsage =
     "  Against the reference: side A is the CPU ground truth (docs/reference.md) of the same\n"
     "  configuration with --b's knobs (the knobs that define the model are the render's), rendered\n"
     "  once and cached; final against its tone-mapped image (no bloom, DoF or FXAA: set them false\n"
-    "  on the render), lbuffer against its L-buffer, ssao.raw/ssao.blurred against its ray-traced AO\n"
+    "  on the render), lbuffer against its L-buffer, ao (= ao.filtered) or ao.raw against its ray-traced AO\n"
     "  (--ao-rays, default 64).\n"
     "options:\n"
     "  --error-map FILE.exr  per-pixel maps: absdiff.<channel>..., ssim (mean of the colour\n"
@@ -302,6 +302,7 @@ int compare(int argc, char** argv) {
             side->kind = CompareInput::Kind::Render;
             side->run = base;
             side->buffer = bufferFlag.value_or("final");
+            if (side->buffer == "ao") side->buffer = "ao.filtered";  // the AO the lighting pass uses
         }
         inA.label = "--a";
         inB.label = "--b";
@@ -313,15 +314,16 @@ int compare(int argc, char** argv) {
             inA.run.sets = inB.run.sets;  // the model's knobs are the render's
             inA.aoRays = CommandLine::parseInt("--ao-rays", aoRaysFlag.value_or("64"), 1, 1 << 20);
             CompareInputs::referenceBufferFor(inA.buffer);  // a buffer without a counterpart fails before rendering
-            if (inA.buffer == "ssao.raw") {
-                // ssao.raw is at the AO resolution; the reference's AO at the frame's.
+            if (inA.buffer == "ao.raw") {
+                // ao.raw is at the method's resolution (<method>.resolution); the reference's AO at the frame's.
                 KnobRegistry knobs = RunConfig::declaredKnobs();
                 for (const std::string& set : inB.run.sets) knobs.applyAssignment(set);
-                if (knobs.choice(knobs.requireEnum("ssao.resolution")) != "full")
-                    throw UsageError("--against reference --buffer ssao.raw: ssao.raw is at ssao.resolution (" +
-                                     knobs.choice(knobs.requireEnum("ssao.resolution")) +
-                                     "), the reference's AO at the frame's size: add --b ssao.resolution=full, or "
-                                     "compare ssao.blurred");
+                const std::string method = knobs.choice(knobs.requireEnum("ao.method"));
+                const std::string knob = method + ".resolution";
+                if (const auto id = knobs.find(knob); id && knobs.format(*id) != "full")
+                    throw UsageError("--against reference --buffer ao.raw: ao.raw is at " + knob + " (" + knobs.format(*id) +
+                                     "), the reference's AO at the frame's size: add --b " + knob +
+                                     "=full, or compare ao (ao.filtered)");
             }
         }
         inA.run.validate();

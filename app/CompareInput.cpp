@@ -60,9 +60,9 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
 
 std::string CompareInputs::referenceBufferFor(const std::string& buffer) {
     if (buffer == "final" || buffer == "lbuffer") return buffer;
-    if (buffer == "ssao.raw" || buffer == "ssao.blurred") return "ao";
+    if (buffer == "ao" || buffer == "ao.raw" || buffer == "ao.filtered") return "ao";
     throw Error("--against reference: the reference has no counterpart of buffer '" + buffer +
-                "' (final, lbuffer, or ssao.raw / ssao.blurred against its ray-traced AO)");
+                "' (final, lbuffer, or ao (ao.filtered) / ao.raw against its ray-traced AO)");
 }
 
 CompareImage CompareInputs::produceReference(const CompareInput& input) {

@@ -18,7 +18,7 @@ class RenderSession;
 
 struct CompareInput {
     // Reference: the CPU ground truth (renderer/reference) of `run`, its
-    // buffer matching `buffer` (final, lbuffer; ssao.raw / ssao.blurred ->
+    // buffer matching `buffer` (final, lbuffer; ao.raw / ao.filtered ->
     // its ray-traced AO), through the reference cache.
     enum class Kind { File, Render, Reference };
     Kind kind = Kind::File;

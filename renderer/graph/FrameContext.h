@@ -11,6 +11,7 @@
 
 namespace dw {
 
+class AoMethod;
 class GpuScene;
 class KnobRegistry;
 class ShadowService;
@@ -72,6 +73,8 @@ struct FrameContext {
     // the light table's CPU side (lights pass) and the shadow maps (shadows pass).
     LightTable* lightTable = nullptr;
     ShadowService* shadows = nullptr;
+    // The AO method that wrote ao.raw (ao pass), for the shared filter.
+    const AoMethod* aoMethod = nullptr;
 
     // Whether an (optional) input was written earlier this frame.
     bool produced(const std::string& name) const {

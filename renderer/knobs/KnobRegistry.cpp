@@ -5,6 +5,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <set>
 #include <sstream>
 
 #include "renderer/Error.h"
@@ -25,6 +28,32 @@ size_t distance(const std::string& a, const std::string& b) {
         std::swap(prev, cur);
     }
     return prev[b.size()];
+}
+
+std::mutex& warningMutex() {
+    static std::mutex m;
+    return m;
+}
+
+KnobRegistry::WarningHandler& warningHandler() {
+    static KnobRegistry::WarningHandler handler;
+    return handler;
+}
+
+void warn(const std::string& text) {
+    KnobRegistry::WarningHandler handler;
+    {
+        std::lock_guard<std::mutex> lock(warningMutex());
+        handler = warningHandler();
+        if (!handler) {
+            // Settings are applied more than once per run (validated, then
+            // applied, per configuration): one line per rename is enough.
+            static std::set<std::string> said;
+            if (said.insert(text).second) std::fprintf(stderr, "warning: %s\n", text.c_str());
+            return;
+        }
+    }
+    handler(text);
 }
 
 std::string trimmed(const std::string& s) {
@@ -50,6 +79,26 @@ double toKnobPrecision(KnobType type, double v) {
 }
 
 }  // namespace
+
+std::string KnobAlias::warning() const {
+    if (knob.empty()) return "knob '" + oldName + "' is now '" + newName + "' (" + note + "); the old name still works";
+    return "knob '" + knob + "': value '" + oldName + "' is now '" + newName + "' (" + note + "); the old value still works";
+}
+
+void KnobRegistry::addAlias(std::string oldName, std::string newName, std::string note) {
+    if (find(oldName)) throw Error("knob alias '" + oldName + "' names a declared knob");
+    aliases_.push_back({{}, std::move(oldName), std::move(newName), std::move(note)});
+}
+
+void KnobRegistry::addValueAlias(std::string knob, std::string oldValue, std::string newValue, std::string note) {
+    aliases_.push_back({std::move(knob), std::move(oldValue), std::move(newValue), std::move(note)});
+}
+
+KnobRegistry::WarningHandler KnobRegistry::setWarningHandler(WarningHandler handler) {
+    std::lock_guard<std::mutex> lock(warningMutex());
+    std::swap(warningHandler(), handler);
+    return handler;
+}
 
 int KnobRegistry::add(KnobSpec spec) {
     if (find(spec.name)) throw Error("knob '" + spec.name + "' is declared twice");
@@ -191,7 +240,20 @@ void KnobRegistry::copyValues(const KnobRegistry& other) {
     for (size_t i = 0; i < specs_.size(); ++i) set(static_cast<int>(i), other.values_[i]);
 }
 
-void KnobRegistry::setFromString(const std::string& name, const std::string& rawText) {
+void KnobRegistry::setFromString(const std::string& givenName, const std::string& givenText) {
+    std::string name = givenName, rawText = givenText;
+    for (const KnobAlias& a : aliases_)
+        if (a.knob.empty() && a.oldName == name) {
+            warn(a.warning());
+            name = a.newName;
+            break;
+        }
+    for (const KnobAlias& a : aliases_)
+        if (a.knob == name && a.oldName == trimmed(rawText)) {
+            warn(a.warning());
+            rawText = a.newName;
+            break;
+        }
     const auto id = find(name);
     if (!id) {
         std::string best;

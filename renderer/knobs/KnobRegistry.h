@@ -4,6 +4,7 @@
 // whether it trades speed for quality. The ImGui widget, the preset field, the
 // CLI override (--set name=value) and the tradeoff sweep axis all come from it.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,17 @@ struct KnobSpec {
     std::string description;  // one sentence, shown as a tooltip and by `list knobs`
     bool tradeoff = false;    // trades speed for quality (a tradeoff sweep axis)
     bool logarithmic = false; // slider and sweep on a log scale
+};
+
+// A renamed knob or value still accepted where knobs are set by name
+// (presets, scene settings, --set), with a warning: `oldName` stands for
+// `newName`; for a value alias, `knob`'s value `oldName` for `newName`.
+struct KnobAlias {
+    std::string knob;     // empty for a knob alias; the knob for a value alias
+    std::string oldName;
+    std::string newName;
+    std::string note;     // why ("renamed in issue 22: ...")
+    std::string warning() const;
 };
 
 struct BoolKnob { int id = -1; };
@@ -85,6 +97,16 @@ public:
     // Parses "true", "16", "0.02", "reinhard" by the knob's type. Throws
     // dw::Error naming the knob and the accepted values; never clamps silently.
     void setFromString(const std::string& name, const std::string& text);
+    // Renames (KnobAlias): setFromString accepts the old knob name or
+    // value for the new one and warns through the warning handler.
+    void addAlias(std::string oldName, std::string newName, std::string note);
+    void addValueAlias(std::string knob, std::string oldValue, std::string newValue, std::string note);
+    const std::vector<KnobAlias>& aliases() const { return aliases_; }
+    // Where alias warnings go (the CLI prints them; a test collects them).
+    // The default prints "warning: TEXT" to stderr, each text once per process.
+    // Returns the previous handler; an empty function restores the default.
+    using WarningHandler = std::function<void(const std::string&)>;
+    static WarningHandler setWarningHandler(WarningHandler handler);
     // "name=value", as --set takes it.
     void applyAssignment(const std::string& assignment);
     std::string format(int id) const { return formatValue(id, values_[id]); }
@@ -103,6 +125,7 @@ private:
     int require(const std::string& name, KnobType type) const;
     std::vector<KnobSpec> specs_;
     std::vector<double> values_;
+    std::vector<KnobAlias> aliases_;
     std::uint64_t generation_ = 0;
     mutable std::vector<int>* readLog_ = nullptr;
 };

@@ -1,8 +1,10 @@
 // The built-in passes, one line each, in seed 002 section 6's order within
-// each stage: G-buffer, SSAO, L-buffer (the sky and the shadow maps feed
+// each stage: G-buffer, ambient occlusion (ao: SSAO, GTAO, ...), L-buffer (the sky and the shadow maps feed
 // it), transparency over the L-buffer (oit), luminance statistics, bloom, tone mapping; then the
 // post chain (depth of field, FXAA) on the tone-mapped image.
 #include "renderer/graph/PassCatalog.h"
+#include "renderer/passes/AoFilterPass.h"
+#include "renderer/passes/AoPass.h"
 #include "renderer/passes/BloomPass.h"
 #include "renderer/passes/DofPass.h"
 #include "renderer/passes/FxaaPass.h"
@@ -15,8 +17,6 @@
 #include "renderer/passes/OitPass.h"
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/passes/SkyboxPass.h"
-#include "renderer/passes/SsaoBlurPass.h"
-#include "renderer/passes/SsaoPass.h"
 #include "renderer/passes/TonemapPass.h"
 
 namespace dw {
@@ -32,8 +32,8 @@ std::vector<PassEntry> builtinPasses() {
     return {
         entry<GeometryPass>(PassStage::GBuffer),
         entry<GBufferDecodePass>(PassStage::GBuffer),
-        entry<SsaoPass>(PassStage::Screen),
-        entry<SsaoBlurPass>(PassStage::Screen),
+        entry<AoPass>(PassStage::Screen),
+        entry<AoFilterPass>(PassStage::Screen),
         entry<SkyboxPass>(PassStage::Screen),
         entry<LightTablePass>(PassStage::Lights),
         entry<ShadowPass>(PassStage::Lights),

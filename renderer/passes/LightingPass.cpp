@@ -54,17 +54,18 @@ LightingPass::LightingPass(KnobRegistry& knobs) {
     ambientSpecular_ = knobs.addBool("lighting.ambient_specular", true, "lighting",
                                      "ambient reflectance = diffuse + specular colour, so metals (no diffuse) still "
                                      "reflect ambient light; off: the seed's k_a = diffuse colour");
-    ambientOcclusion_ = knobs.addEnum("lighting.ambient_occlusion", {"both", "baked", "ssao"}, "both", "lighting",
+    ambientOcclusion_ = knobs.addEnum("lighting.ambient_occlusion", {"both", "baked", "screen"}, "both", "lighting",
                                       "which ambient occlusion scales the ambient term: the materials' baked occlusion "
-                                      "textures (gbuffer.occlusion), screen-space (ssao.blurred, when ssao.enabled), or "
-                                      "their product");
+                                      "textures (gbuffer.occlusion), the screen-space one (ao.filtered, when ao.enabled; the "
+                                      "value was called ssao before), or their product");
     volumeSubdivisions_ = knobs.addInt(
         "lighting.volume_subdivisions", kDefaultSphereSubdivisions, 0, kMaxSphereSubdivisions, "lighting",
         "sphere light volumes: the icosahedron subdivided k times (20, 80, 320 or 1280 faces), circumscribing the "
         "light's sphere. Fewer faces: less vertex work per light; more: fewer pixels marked outside the radius "
         "(which the shader rejects). The image is the same for every k");
     aoBaked_ = knobs.choiceIndex(ambientOcclusion_, "baked");
-    aoSsao_ = knobs.choiceIndex(ambientOcclusion_, "ssao");
+    aoScreen_ = knobs.choiceIndex(ambientOcclusion_, "screen");
+    knobs.addValueAlias("lighting.ambient_occlusion", "ssao", "screen", "the screen-space AO is any ao.method now");
 }
 
 LightingPass::~LightingPass() = default;
@@ -90,7 +91,7 @@ std::vector<OutputDecl> LightingPass::outputs() const {
 void LightingPass::connect(const KnobRegistry& knobs) { directionalInGBuffer_ = knobs.requireBool("lighting.directional_in_gbuffer"); }
 
 PassIO LightingPass::inputs(const KnobRegistry& knobs) const {
-    PassIO io{{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ssao.blurred", "sky"}};
+    PassIO io{{std::begin(kGBufferInputs), std::end(kGBufferInputs)}, {"ao.filtered", "sky"}};
     if (knobs.get(directionalInGBuffer_)) io.inputs.push_back("gbuffer.directional");
     io.inputs.push_back("lights.table");
     io.inputs.push_back("gbuffer.occlusion");
@@ -133,13 +134,13 @@ void LightingPass::execute(FrameContext& ctx) {
     if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
     const LightTable& table = *ctx.lightTable;
 
-    const bool occlusion = ctx.produced("ssao.blurred");
+    const bool occlusion = ctx.produced("ao.filtered");
     const bool sky = ctx.produced("sky");
     gpu::LightingParams params{};
     params.windowed = k.get(attenuation_) == windowed_ ? 1 : 0;
     const int aoMode = k.get(ambientOcclusion_);
     params.occlusion = occlusion && aoMode != aoBaked_ ? 1 : 0;
-    params.bakedOcclusion = aoMode != aoSsao_ ? 1 : 0;
+    params.bakedOcclusion = aoMode != aoScreen_ ? 1 : 0;
     params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     params.sky = sky ? 1 : 0;
     params.windowExponent = k.get(windowExponent_);
@@ -165,7 +166,7 @@ void LightingPass::execute(FrameContext& ctx) {
     // Looked up once: with reused shadow maps the inputs are re-bound after every map.
     const gl::Texture* inputTextures[std::size(kGBufferInputs)];
     for (std::size_t i = 0; i < std::size(kGBufferInputs); ++i) inputTextures[i] = &ctx.texture(kGBufferInputs[i]);
-    const gl::Texture* occlusionTexture = occlusion ? &ctx.texture("ssao.blurred") : &white_;
+    const gl::Texture* occlusionTexture = occlusion ? &ctx.texture("ao.filtered") : &white_;
     const gl::Texture* skyTexture = sky ? &ctx.texture("sky") : nullptr;
     const gl::Texture& bakedOcclusion = ctx.texture("gbuffer.occlusion");
     const gl::Texture* gbufferDirectional = shadedInGBuffer.empty() ? nullptr : &ctx.texture("gbuffer.directional");

@@ -1,7 +1,7 @@
 #pragma once
 // Lighting into the HDR L-buffer (seed 000 sections 3.2 and 5.2.1; seed 002
 // step 4). Reads the G-buffer, the light table (lights.table) and, when they
-// ran, ssao.blurred and sky; writes lbuffer (RGBA32F) by additive blending:
+// ran, ao.filtered and sky; writes lbuffer (RGBA32F) by additive blending:
 // the ambient term, emission and the sky first (shaders/lighting/
 // ambient.glsl), then each directional (and unbounded) light as a
 // full-screen pass, then the bounded point and spot lights by the strategy
@@ -71,8 +71,8 @@ private:
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
     IntKnob volumeSubdivisions_;
-    EnumKnob ambientOcclusion_;  // both, baked, ssao
-    int aoBaked_ = 0, aoSsao_ = 0;
+    EnumKnob ambientOcclusion_;  // both, baked, screen
+    int aoBaked_ = 0, aoScreen_ = 0;
 
     gl::ShaderLibrary::Handle ambientProgram_;
     LightShading shading_;

@@ -25,8 +25,9 @@ std::string choice(const KnobRegistry& k, const std::string& name) {
 
 const std::vector<std::string>& ReferenceModel::honouredKnobs() {
     static const std::vector<std::string> names = {
-        "shadows.enabled",      "shadows.blended_casters", "ssao.enabled",          "ssao.radius",       "ssao.radius_unit",
-        "ssao.intensity",       "lighting.attenuation",  "lighting.window_exponent", "lighting.threshold",
+        "shadows.enabled",      "shadows.blended_casters", "ao.enabled",        "ao.method",
+        "ssao.radius",          "ssao.radius_unit",      "ssao.intensity",    "gtao.radius",
+        "gtao.radius_unit",     "lighting.attenuation",  "lighting.window_exponent", "lighting.threshold",
         "lighting.ambient_specular", "lighting.ambient_occlusion", "skybox.mode", "skybox.intensity",
         "skybox.rotation",      "tonemap.operator",      "tonemap.key",       "tonemap.auto_white",
         "tonemap.white",        "tonemap.exposure",      "tonemap.srgb",      "tonemap.auto_exposure",
@@ -49,10 +50,16 @@ ReferenceModel ReferenceModel::fromKnobs(const KnobRegistry& k, const Scene& sce
     m.ambientSpecular = flag(k, "lighting.ambient_specular");
     const std::string ao = choice(k, "lighting.ambient_occlusion");
     m.bakedOcclusion = ao == "both" || ao == "baked";
-    m.rayTracedAo = flag(k, "ssao.enabled") && (ao == "both" || ao == "ssao");
-    m.aoRadius = number(k, "ssao.radius");
-    if (choice(k, "ssao.radius_unit") != "world") m.aoRadius *= sceneLengthUnit(scene.bounds());
-    m.aoIntensity = number(k, "ssao.intensity");
+    m.rayTracedAo = flag(k, "ao.enabled") && (ao == "both" || ao == "screen");
+    // The radius (and intensity) of the method ao.method names: <method>.radius
+    // in <method>.radius_unit (world when it has none), <method>.intensity (1
+    // when it has none), so the rays see the neighbourhood the method sees.
+    std::string method = choice(k, "ao.method");
+    if (method.empty() || !k.find(method + ".radius")) method = "ssao";
+    m.aoRadius = number(k, method + ".radius");
+    if (k.find(method + ".radius_unit") && choice(k, method + ".radius_unit") != "world")
+        m.aoRadius *= sceneLengthUnit(scene.bounds());
+    m.aoIntensity = k.find(method + ".intensity") ? number(k, method + ".intensity") : 1.0;
 
     const std::string mode = choice(k, "skybox.mode");
     const bool hasEnvironment = scene.sky.equirect.width > 0 || !scene.sky.cubeFaces.empty();

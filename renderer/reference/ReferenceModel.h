@@ -5,8 +5,9 @@
 // without the approximation.
 //
 // Honoured: shadows.enabled (hard shadows by rays for the lights whose shadow
-// flag is set) and shadows.blended_casters, ssao.enabled with ssao.radius, ssao.radius_unit and
-// ssao.intensity (ambient occlusion by rays), lighting.attenuation,
+// flag is set) and shadows.blended_casters, ao.enabled with the radius of the
+// method ao.method names (ssao.radius in ssao.radius_unit and ssao.intensity,
+// gtao.radius in gtao.radius_unit, ...: ambient occlusion by rays), lighting.attenuation,
 // lighting.window_exponent and, for the windowed model only,
 // lighting.threshold (the window's radius is part of that model),
 // lighting.ambient_specular, lighting.ambient_occlusion, skybox.*, tonemap.*
@@ -14,7 +15,7 @@
 // Not modelled: bloom, depth of field and FXAA (effects after the L-buffer;
 // compare a final image with them off).
 // Ignored: every other knob (strategy, threshold under the classic model,
-// G-buffer formats, map sizes, PCF, AO samples and resolution, ...).
+// G-buffer formats, map sizes, PCF, AO samples, slices, steps and resolution, ...).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,8 +37,8 @@ struct ReferenceModel {
     bool blendedCasters = false;  // shadows.blended_casters: blended materials cast shadows as if opaque
     bool ambientSpecular = true;
     bool bakedOcclusion = true;  // lighting.ambient_occlusion = both or baked
-    bool rayTracedAo = true;     // ssao.enabled and lighting.ambient_occlusion = both or ssao
-    double aoRadius = 1.0;       // world units (ssao.radius in ssao.radius_unit)
+    bool rayTracedAo = true;     // ao.enabled and lighting.ambient_occlusion = both or screen
+    double aoRadius = 1.0;       // world units (the ao.method's radius, e.g. ssao.radius in ssao.radius_unit)
     double aoIntensity = 1.0;
     int aoRays = 64;             // cosine-weighted rays per pixel
     std::uint32_t seed = 1;      // the AO sample pattern's

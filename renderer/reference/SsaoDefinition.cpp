@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/passes/SsaoPass.h"
+#include "renderer/ao/SsaoMethod.h"
 #include "renderer/reference/CameraRays.h"
 #include "renderer/reference/MaterialEvaluator.h"
 #include "renderer/reference/PixelRandom.h"
@@ -59,7 +59,7 @@ FloatImage ssaoDefinitionAo(const Scene& scene, const ReferenceRequest& request,
     if (W < 1 || H < 1) throw Error("reference: the size must be at least 1x1");
     const RayScene rays(scene, glm::dvec3(request.camera.position));
     const CameraRays camera(request.camera, W, H);
-    const std::vector<glm::vec4> kernel = SsaoPass::kernel(settings.kernelSize);
+    const std::vector<glm::vec4> kernel = SsaoMethod::kernel(settings.kernelSize);
     const double R = settings.radius, bias = settings.bias * R;
     FloatImage out;
     out.width = W;

@@ -17,7 +17,7 @@
 namespace dw::reference {
 
 struct SsaoDefinitionSettings {
-    int kernelSize = 16;     // ssao.samples: SsaoPass::kernel(kernelSize)
+    int kernelSize = 16;     // ssao.samples: SsaoMethod::kernel(kernelSize)
     int rotations = 16;      // random reflection vectors averaged per pixel
     double radius = 1.0;     // world units (ssao.radius in ssao.radius_unit)
     double intensity = 1.0;  // ssao.intensity

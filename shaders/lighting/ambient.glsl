@@ -3,7 +3,7 @@
 // k_a i_a (seed 000 eq. 2.1; k_a = diffuse, plus specular when
 // lighting.ambient_specular is on) scaled by the ambient-occlusion
 // accessibility, plus emitted radiance. The accessibility is the product of
-// the screen-space one (ssao.blurred, when it ran) and the materials' baked
+// the screen-space one (ao.filtered, when it ran) and the materials' baked
 // one (gbuffer.occlusion), as lighting.ambient_occlusion selects. With
 // lighting.directional_in_gbuffer the directional lights the G-buffer pass
 // shaded (gbuffer.directional) are added here instead of a full-screen pass

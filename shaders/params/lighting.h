@@ -11,7 +11,7 @@
 
 #define DW_LIGHTING_PARAMS(FIELD, ARRAY)                                                  \
     FIELD(int, windowed)         /* lighting.attenuation = windowed */                    \
-    FIELD(int, occlusion)        /* ssao.blurred ran: scale the ambient term by it */     \
+    FIELD(int, occlusion)        /* ao.filtered ran: scale the ambient term by it */      \
     FIELD(int, ambientSpecular)  /* lighting.ambient_specular */                          \
     FIELD(int, sky)              /* the sky pass ran: its texture is the background */    \
     FIELD(float, windowExponent) /* k in the windowed attenuation 1 - (d/r)^k */          \

@@ -1,4 +1,4 @@
-// dw::SsaoPass's parameters (shaders/ssao/ssao.frag); see prelude.h.
+// dw::SsaoMethod's parameters (shaders/ssao/ssao.frag); see prelude.h.
 #ifndef DW_PARAMS_SSAO_H
 #define DW_PARAMS_SSAO_H
 #include "prelude.h"

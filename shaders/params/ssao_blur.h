@@ -1,4 +1,4 @@
-// dw::SsaoBlurPass's parameters, shared by shaders/ssao/blur.frag and
+// dw::AoFilterPass's parameters, shared by shaders/ssao/blur.frag and
 // shaders/ssao/upsample.frag; see prelude.h. `mode` is ssao_blur.mode's
 // choice, compared with SSAO_BLUR_MODE_* (KnobRegistry::choiceDefines).
 #ifndef DW_PARAMS_SSAO_BLUR_H

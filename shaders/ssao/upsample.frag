@@ -34,5 +34,7 @@ void main() {
             sum += w * texelFetch(uAo, q, 0).r;
             weights += w;
         }
-    outOcclusion = sum / weights;
+    // Clamped here, after the blur: a method whose per-pixel estimate is
+    // unbiased only on average (GTAO's slices) leaves values above 1 in ao.raw.
+    outOcclusion = clamp(sum / weights, 0.0, 1.0);
 }

@@ -53,7 +53,7 @@ TEST(Cli, ListsScenesBuffersKnobsAndPasses) {
     EXPECT_NE(knobs.out.find("tonemap.key"), std::string::npos);
     const Result passes = run("list passes");
     EXPECT_EQ(passes.code, 0);
-    EXPECT_NE(passes.out.find("reads    ssao.blurred (when produced)"), std::string::npos) << passes.out;
+    EXPECT_NE(passes.out.find("reads    ao.filtered (when produced)"), std::string::npos) << passes.out;
     EXPECT_NE(passes.out.find("shadows  [lights]\n  modifies lights.table"), std::string::npos) << passes.out;
     const Result presets = run("list presets");
     EXPECT_EQ(presets.code, 0);
@@ -129,19 +129,19 @@ TEST(Cli, TimingsListEveryPassThatRan) {
     EXPECT_NE(r.out.find("skipped: nothing this frame consumes"), std::string::npos);
     // The effect passes, each with its own line, and the shadow maps as a
     // span inside lighting.
-    for (const char* p : {"\nssao ", "\nssao_blur ", "\nskybox ", "\nbloom ", "\nfxaa ", "\n  shadow maps "})
+    for (const char* p : {"\nao ", "\nao_filter ", "\nskybox ", "\nbloom ", "\nfxaa ", "\n  shadow maps "})
         EXPECT_NE(r.out.find(p), std::string::npos) << p << r.out;
     EXPECT_NE(r.out.find("skipped: switched off (dof.enabled = false)"), std::string::npos) << r.out;
-    const Result dof = run("render --scene default --size 64x36 --set dof.enabled=true --set ssao.enabled=false --timings --out " +
+    const Result dof = run("render --scene default --size 64x36 --set dof.enabled=true --set ao.enabled=false --timings --out " +
                            (test::tempDir() / "t.png").string());
     ASSERT_EQ(dof.code, 0) << dof.err;
     EXPECT_NE(dof.out.find("\ndof "), std::string::npos) << dof.out;
-    EXPECT_NE(dof.out.find("skipped: switched off (ssao.enabled = false)"), std::string::npos) << dof.out;
+    EXPECT_NE(dof.out.find("skipped: switched off (ao.enabled = false)"), std::string::npos) << dof.out;
 }
 
 TEST(Cli, WritesEffectBuffers) {
     const fs::path ao = test::tempDir() / "ao.exr";
-    ASSERT_EQ(run("render --scene default --size 64x36 --buffer ssao.blurred --out " + ao.string()).code, 0);
+    ASSERT_EQ(run("render --scene default --size 64x36 --buffer ao.filtered --out " + ao.string()).code, 0);
     const FloatImage aoImg = loadImageFloat(ao.string());
     EXPECT_EQ(aoImg.width, 64);
     const auto aoStats = test::stats(aoImg, 0);

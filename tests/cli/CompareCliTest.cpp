@@ -223,17 +223,17 @@ TEST(CompareCli, ExrInputsUseHdrFlipAndWriteErrorMaps) {
 TEST(CompareCli, TwoRendersOfOneScene) {
     const fs::path dir = test::tempDir() / "compare";
     // An output in a folder that does not exist: refused before anything renders.
-    const Result noFolder = run("compare --scene spheres --a ssao.enabled=true --b ssao.enabled=false --json " +
+    const Result noFolder = run("compare --scene spheres --a ao.enabled=true --b ao.enabled=false --json " +
                                 (dir / "missing-folder" / "r.json").string());
     EXPECT_EQ(noFolder.code, 5);
     EXPECT_NE(noFolder.err.find("cannot write the --json file: no folder"), std::string::npos) << noFolder.err;
     fs::create_directories(dir);
     const std::string scene = " --scene spheres --size 96x54";
-    const Result same = run("compare" + scene + " --a ssao.enabled=true --b ssao.enabled=true --json " +
+    const Result same = run("compare" + scene + " --a ao.enabled=true --b ao.enabled=true --json " +
                             (dir / "same-render.json").string());
     ASSERT_EQ(same.code, 0) << same.out << same.err;
     EXPECT_EQ(readJson(dir / "same-render.json")["flip"].get<double>(), 0.0);
-    const Result differ = run("compare" + scene + " --buffer lbuffer --a ssao.enabled=true --b ssao.enabled=false,shadows.enabled=false" +
+    const Result differ = run("compare" + scene + " --buffer lbuffer --a ao.enabled=true --b ao.enabled=false,shadows.enabled=false" +
                               " --json " + (dir / "render.json").string());
     EXPECT_EQ(differ.code, 2) << differ.out << differ.err;
     const nlohmann::json j = readJson(dir / "render.json");
@@ -243,11 +243,11 @@ TEST(CompareCli, TwoRendersOfOneScene) {
     EXPECT_EQ(j["test"]["buffer"], "lbuffer");
     EXPECT_EQ(j["test"]["set"].size(), 2u);
     // A bad knob is a usage error (5), named before anything renders.
-    const Result bad = run("compare" + scene + " --a ssao.enabled=maybe --b ssao.enabled=true");
+    const Result bad = run("compare" + scene + " --a ao.enabled=maybe --b ao.enabled=true");
     EXPECT_EQ(bad.code, 5);
-    EXPECT_NE(bad.err.find("ssao.enabled"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("ao.enabled"), std::string::npos) << bad.err;
     // A scene or preset that cannot be read: 4 and one line, as for an image.
-    const Result noScene = run("compare --scene " + (dir / "no-scene.json").string() + " --a ssao.enabled=true --b ssao.enabled=false");
+    const Result noScene = run("compare --scene " + (dir / "no-scene.json").string() + " --a ao.enabled=true --b ao.enabled=false");
     EXPECT_EQ(noScene.code, 4);
     EXPECT_EQ(lines(noScene.err), 1) << noScene.err;
     EXPECT_NE(noScene.err.find("no-scene.json: scene file not found"), std::string::npos) << noScene.err;

@@ -91,7 +91,7 @@ TEST(ReferenceCli, CompareAgainstTheReference) {
     fs::create_directories(dir);
     const std::string env = "DW_REFERENCE_CACHE=" + (dir / "cache").string() + " ";
     const std::string accurate =
-        " --b lighting.strategy=fullscreen,lighting.threshold=1e-5,ssao.enabled=false,gbuffer.texture_filter=base_level,"
+        " --b lighting.strategy=fullscreen,lighting.threshold=1e-5,ao.enabled=false,gbuffer.texture_filter=base_level,"
         "shadows.enabled=false";
     auto r = test::runCommand(env + DW_WORKBENCH_BINARY + std::string(" compare --against reference --scene spheres --size 64x36 "
                                                                        "--buffer lbuffer --fail 0.01 --warn 0.01 --json ") +
@@ -116,15 +116,15 @@ TEST(ReferenceCli, CompareAgainstTheReference) {
         std::ifstream ff(dir / "fire.json");
         EXPECT_LT(nlohmann::json::parse(ff)["flip"].get<double>(), 0.03) << "after " << frames << " frames";
     }
-    // ssao.raw is at the AO resolution: said before anything renders.
-    r = run("compare --against reference --scene spheres --size 8x8 --buffer ssao.raw");
+    // ao.raw is at the AO resolution: said before anything renders.
+    r = run("compare --against reference --scene spheres --size 8x8 --buffer ao.raw");
     EXPECT_EQ(r.code, 5);
     EXPECT_NE(r.err.find("add --b ssao.resolution=full"), std::string::npos) << r.err;
     // A buffer with no counterpart: one line, before anything renders.
     r = run("compare --against reference --scene spheres --size 8x8 --buffer gbuffer.normal");
     EXPECT_NE(r.code, 0);
     EXPECT_NE(r.err.find("no counterpart of buffer 'gbuffer.normal'"), std::string::npos) << r.err;
-    r = run("compare --against reference --a ssao.enabled=false --scene spheres --size 8x8");
+    r = run("compare --against reference --a ao.enabled=false --scene spheres --size 8x8");
     EXPECT_NE(r.err.find("give the render's knobs with --b"), std::string::npos) << r.err;
 }
 

@@ -47,7 +47,7 @@ Halo measure(const char* method, float x) {
     auto session = test::makeSession(W, H);
     session->setScene(dotScene(x));
     session->knobs().setFromString("bloom.method", method);
-    session->knobs().setFromString("ssao.enabled", "false");
+    session->knobs().setFromString("ao.enabled", "false");
     session->render({{"bloom.result"}});
     const FloatImage bloom = session->readRaw("bloom.result");  // half resolution
     const glm::vec4 clip(session->pipeline().lastCamera().worldToClip() * glm::dvec4(x, 1.3, 0.0, 1.0));

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/passes/SsaoPass.h"
+#include "renderer/ao/SsaoMethod.h"
 #include "renderer/scene/ShapeBuilder.h"
 #include "tests/support/TestSupport.h"
 
@@ -33,8 +33,8 @@ FloatImage rawAo(float k, const char* unit) {
     auto session = test::makeSession(160, 90);
     session->setScene(creaseScene(k));
     session->knobs().setFromString("ssao.radius_unit", unit);
-    session->render({{"ssao.raw"}});
-    return session->readRaw("ssao.raw");
+    session->render({{"ao.raw"}});
+    return session->readRaw("ao.raw");
 }
 
 // Mean |a - b| over the pixels either image occludes (AO < 0.98): the
@@ -71,10 +71,10 @@ TEST(ScaleAwareSsao, TheSceneUnitIsAPowerOfTenOfTheScenesSize) {
     Bounds b;
     b.add(glm::vec3(-10.0f));
     b.add(glm::vec3(10.0f));  // radius 17.3
-    EXPECT_FLOAT_EQ(SsaoPass::sceneUnit(b), 1.0f);
+    EXPECT_FLOAT_EQ(SsaoMethod::sceneUnit(b), 1.0f);
     Bounds tiny;
     tiny.add(glm::vec3(-0.1f));
     tiny.add(glm::vec3(0.1f));  // a model 0.2 across: radius 0.17
-    EXPECT_NEAR(SsaoPass::sceneUnit(tiny), 0.01f, 1e-6f);
-    EXPECT_FLOAT_EQ(SsaoPass::sceneUnit(Bounds{}), 1.0f);
+    EXPECT_NEAR(SsaoMethod::sceneUnit(tiny), 0.01f, 1e-6f);
+    EXPECT_FLOAT_EQ(SsaoMethod::sceneUnit(Bounds{}), 1.0f);
 }

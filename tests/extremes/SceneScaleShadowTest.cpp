@@ -50,7 +50,7 @@ Scene shadowScene(double k, const std::string& light, bool clipPlanes = true) {
 FloatImage lbuffer(double k, const std::string& light, const std::string& kind, bool shadows) {
     auto session = test::makeSession(160, 90);
     session->setScene(shadowScene(k, light));
-    session->knobs().setFromString("ssao.enabled", "false");
+    session->knobs().setFromString("ao.enabled", "false");
     if (!kind.empty()) session->knobs().setFromString("shadows.point_method", kind);
     if (!shadows) session->knobs().setFromString("shadows.enabled", "false");
     session->render({{"lbuffer"}});
@@ -121,7 +121,7 @@ TEST(SceneScaleShadows, FittedClipPlanesFollowTheScene) {
         auto render = [&](const Scene& scene) {
             auto session = test::makeSession(160, 90);
             session->setScene(scene);
-            session->knobs().setFromString("ssao.enabled", "false");
+            session->knobs().setFromString("ao.enabled", "false");
             session->render({{"lbuffer"}});
             return session->readRaw("lbuffer");
         };

@@ -69,7 +69,7 @@ SeamResult compareWithShadowsOff(const char* light, const char* method, int pcf)
     session->knobs().setFromString("shadows.point_method", method);
     session->knobs().setFromString("shadows.map_size", "256");
     session->knobs().setFromString("shadows.pcf_radius", std::to_string(pcf));
-    session->knobs().setFromString("ssao.enabled", "false");
+    session->knobs().setFromString("ao.enabled", "false");
     session->render({{"lbuffer", "gbuffer.view_position"}});
     const FloatImage shadowed = session->readRaw("lbuffer");
     const FloatImage position = session->readRaw("gbuffer.view_position");

@@ -54,9 +54,9 @@ TEST(SsaoBorder, OpenFloorIsUnoccludedOnEveryBorderRowAtHalfResolution) {
     auto session = test::makeSession(320, 180);
     session->setScene(openFloor(false));
     session->knobs().setFromString("ssao.resolution", "half");
-    session->render({{"ssao.raw", "ssao.blurred"}});
-    const BorderAo raw = borderAo(session->readRaw("ssao.raw"));
-    const BorderAo blurred = borderAo(session->readRaw("ssao.blurred"));
+    session->render({{"ao.raw", "ao.filtered"}});
+    const BorderAo raw = borderAo(session->readRaw("ao.raw"));
+    const BorderAo blurred = borderAo(session->readRaw("ao.filtered"));
     std::printf("open floor at 320x180, half-res AO: border minimum raw %.4f, blurred %.4f\n", raw.minBorder,
                 blurred.minBorder);
     EXPECT_GE(raw.minBorder, 0.99f);
@@ -67,8 +67,8 @@ TEST(SsaoBorder, ACreaseThatLeavesTheImageStaysOccludedAtTheBorder) {
     auto session = test::makeSession(320, 180);
     session->setScene(openFloor(true));
     session->knobs().setFromString("ssao.resolution", "half");
-    session->render({{"ssao.raw"}});
-    const BorderAo raw = borderAo(session->readRaw("ssao.raw"));
+    session->render({{"ao.raw"}});
+    const BorderAo raw = borderAo(session->readRaw("ao.raw"));
     std::printf("wall crease at the left border: minimum raw AO in the left column %.4f\n", raw.minLeftColumn);
     EXPECT_LT(raw.minLeftColumn, 0.9f);  // measured 0.85 (the open floor: 1)
 }

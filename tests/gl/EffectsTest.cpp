@@ -469,7 +469,7 @@ TEST(Fxaa, MovesEdgePixelsTowardsASupersampledReference) {
     auto frame = [](int w, int h, const char* fxaa, const char* quality) {
         auto s = test::makeSession(w, h);
         s->loadScene("spheres");
-        for (const char* k : {"ssao.enabled=false", "bloom.enabled=false", "tonemap.operator=clamp", "tonemap.exposure=-1"})
+        for (const char* k : {"ao.enabled=false", "bloom.enabled=false", "tonemap.operator=clamp", "tonemap.exposure=-1"})
             s->knobs().applyAssignment(k);
         s->knobs().setFromString("fxaa.enabled", fxaa);
         s->knobs().setFromString("fxaa.quality", quality);
@@ -512,7 +512,7 @@ TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {
     auto s = test::makeSession(96, 54);
     s->loadScene("default");
     const auto all = ran(s->render());
-    for (const char* p : {"geometry", "ssao", "ssao_blur", "skybox", "lighting", "luminance", "bloom", "tonemap", "fxaa"})
+    for (const char* p : {"geometry", "ao", "ao_filter", "skybox", "lighting", "luminance", "bloom", "tonemap", "fxaa"})
         EXPECT_TRUE(has(all, p)) << p;
     EXPECT_FALSE(has(all, "dof"));
     struct Toggle {
@@ -520,7 +520,7 @@ TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {
         const char* value;
         std::vector<const char*> gone;
     };
-    for (const Toggle& t : {Toggle{"ssao.enabled", "false", {"ssao", "ssao_blur"}}, Toggle{"bloom.enabled", "false", {"bloom"}},
+    for (const Toggle& t : {Toggle{"ao.enabled", "false", {"ao", "ao_filter"}}, Toggle{"bloom.enabled", "false", {"bloom"}},
                             Toggle{"fxaa.enabled", "false", {"fxaa"}}, Toggle{"skybox.mode", "color", {"skybox"}}}) {
         KnobRegistry saved = s->knobs();
         s->knobs().setFromString(t.knob, t.value);

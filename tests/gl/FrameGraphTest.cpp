@@ -115,13 +115,13 @@ TEST(FrameGraph, UnusedResourcesAreNotAllocated) {
     auto s = test::makeSession(64, 36);
     s->loadScene("default");
     s->render();
-    EXPECT_TRUE(hasResource(s->pipeline(), "ssao.raw"));
-    EXPECT_TRUE(hasResource(s->pipeline(), "ssao.blurred"));
-    s->knobs().setFromString("ssao.enabled", "false");
+    EXPECT_TRUE(hasResource(s->pipeline(), "ao.raw"));
+    EXPECT_TRUE(hasResource(s->pipeline(), "ao.filtered"));
+    s->knobs().setFromString("ao.enabled", "false");
     s->render();
-    EXPECT_FALSE(hasResource(s->pipeline(), "ssao.raw"));
-    EXPECT_FALSE(hasResource(s->pipeline(), "ssao.blurred"));
-    EXPECT_EQ(s->pipeline().outputs().find("ssao.raw")->texture, nullptr);
+    EXPECT_FALSE(hasResource(s->pipeline(), "ao.raw"));
+    EXPECT_FALSE(hasResource(s->pipeline(), "ao.filtered"));
+    EXPECT_EQ(s->pipeline().outputs().find("ao.raw")->texture, nullptr);
     // Inspecting one G-buffer channel allocates the G-buffer and nothing downstream.
     s->render({{"gbuffer.normal"}});
     EXPECT_TRUE(hasResource(s->pipeline(), "gbuffer.normal"));
@@ -146,18 +146,18 @@ TEST(FrameGraph, ResourcesFollowTheirDescriptorsAndKnobs) {
         ADD_FAILURE() << name;
         return ResourceRecord{};
     };
-    EXPECT_EQ(find("ssao.raw").desc.width, 32);  // half resolution by default
+    EXPECT_EQ(find("ao.raw").desc.width, 32);  // half resolution by default
     EXPECT_EQ(find("gbuffer.depth").desc.format, static_cast<GLenum>(GL_DEPTH32F_STENCIL8));
     EXPECT_EQ(find("gbuffer.depth").bytes, 64u * 36u * 5u);
-    const std::uint64_t before = s->pipeline().outputs().find("ssao.raw")->serial;
+    const std::uint64_t before = s->pipeline().outputs().find("ao.raw")->serial;
     s->knobs().setFromString("ssao.resolution", "quarter");
     s->render();
-    EXPECT_EQ(find("ssao.raw").desc.width, 16);
-    EXPECT_NE(s->pipeline().outputs().find("ssao.raw")->serial, before);
+    EXPECT_EQ(find("ao.raw").desc.width, 16);
+    EXPECT_NE(s->pipeline().outputs().find("ao.raw")->serial, before);
     // A frame that changes nothing re-allocates nothing.
-    const std::uint64_t same = s->pipeline().outputs().find("ssao.raw")->serial;
+    const std::uint64_t same = s->pipeline().outputs().find("ao.raw")->serial;
     s->render();
-    EXPECT_EQ(s->pipeline().outputs().find("ssao.raw")->serial, same);
+    EXPECT_EQ(s->pipeline().outputs().find("ao.raw")->serial, same);
 }
 
 TEST(FrameGraph, KnobsReadAcrossPassesAreCheckedOnce) {

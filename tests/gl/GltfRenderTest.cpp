@@ -126,7 +126,7 @@ TEST(GltfRender, NormalMapUnderAMirroringTransformIsTheMirrorImage) {
 
 // A quad under ambient light only, its occlusion texture 50% grey (R = 0.5,
 // strength 1): gbuffer.occlusion holds 0.5 and the ambient term halves with
-// lighting.ambient_occlusion = baked or both, and stays whole with ssao.
+// lighting.ambient_occlusion = baked or both, and stays whole with screen.
 TEST(GltfRender, OcclusionTextureScalesTheAmbientTermAsTheKnobSays) {
     FloatImage grey;
     grey.width = grey.height = 4;
@@ -153,12 +153,12 @@ TEST(GltfRender, OcclusionTextureScalesTheAmbientTermAsTheKnobSays) {
     ambientOnly.lights.clear();
     session->setScene(std::move(ambientOnly));
     auto ambientAt = [&](const char* mode) {
-        session->knobs().setFromString("ssao.enabled", "false");
+        session->knobs().setFromString("ao.enabled", "false");
         session->knobs().setFromString("lighting.ambient_occlusion", mode);
         session->render({{"lbuffer", "gbuffer.occlusion"}});
         return session->readRaw("lbuffer").at(24, 24, 1);
     };
-    const float ssaoOnly = ambientAt("ssao");
+    const float ssaoOnly = ambientAt("screen");
     const float both = ambientAt("both");
     const float occlusion = session->readRaw("gbuffer.occlusion").at(24, 24, 0);
     const float baked = ambientAt("baked");

@@ -477,7 +477,7 @@ TEST(Oit, SceneJsonOpacityAndGltfBaseColourAlphaBlend) {
 TEST(Oit, BlendedCastersKnobPutsTheGlassIntoTheShadowMaps) {
     auto s = test::makeSession(W, H);
     s->loadScene("glass");
-    s->knobs().setFromString("ssao.enabled", "false");
+    s->knobs().setFromString("ao.enabled", "false");
     s->render({{"lbuffer"}});
     const FloatImage off = s->readRaw("lbuffer");
     s->knobs().setFromString("shadows.blended_casters", "true");

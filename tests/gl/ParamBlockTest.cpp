@@ -30,6 +30,7 @@
 #include "shaders/params/sky.h"
 #include "shaders/params/ssao.h"
 #include "shaders/params/ssao_blur.h"
+#include "shaders/params/gtao.h"
 #include "shaders/params/tonemap.h"
 #include "tests/support/TestSupport.h"
 
@@ -64,7 +65,8 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::LuminanceParams>(), describe<gpu::BloomParams>(),
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
-            describe<gpu::CameraBlock>(),     describe<gpu::OitParams>()};
+            describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
+            describe<gpu::GtaoParams>()};
 }
 
 // Builds every variant of the buffer view's programs (BufferView compiles

@@ -21,7 +21,7 @@ TEST(Pipeline, TheFinalImageRunsTheSeedOrderAndSkipsTheDecoder) {
     s->loadScene("default");
     const FrameReport r = s->render();
     // Seed 002 section 6 with the sky, the light table and the shadow maps before the L-buffer and FXAA last.
-    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "ssao", "ssao_blur", "skybox", "lights", "shadows", "lighting", "luminance", "bloom",
+    EXPECT_EQ(ran(r), (std::vector<std::string>{"geometry", "ao", "ao_filter", "skybox", "lights", "shadows", "lighting", "luminance", "bloom",
                                                 "tonemap", "fxaa"}));
     EXPECT_EQ(r.find("gbuffer_decode")->reason, "nothing this frame consumes its outputs");
     EXPECT_EQ(r.find("dof")->reason, "switched off (dof.enabled = false)");
@@ -87,14 +87,14 @@ TEST(Pipeline, ResizeRecreatesEverySizeDependentBuffer) {
     s->render();
     s->resize(80, 50);
     s->render({{"final", "gbuffer.view_normal"}});
-    for (const char* name : {"gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_normal", "ssao.blurred", "sky",
+    for (const char* name : {"gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_normal", "ao.filtered", "sky",
                              "lbuffer", "tonemap.result", "fxaa.result", "final"}) {
         const PublishedOutput* o = s->pipeline().outputs().find(name);
         ASSERT_NE(o->texture, nullptr) << name;
         EXPECT_EQ(o->texture->width(), 80) << name;
         EXPECT_EQ(o->texture->height(), 50) << name;
     }
-    EXPECT_EQ(s->pipeline().outputs().find("ssao.raw")->texture->width(), 40);  // half resolution by default
+    EXPECT_EQ(s->pipeline().outputs().find("ao.raw")->texture->width(), 40);  // half resolution by default
     EXPECT_EQ(s->pipeline().outputs().find("bloom.bright")->texture->width(), 40);
     EXPECT_EQ(s->readRaw("final").width, 80);
 }

@@ -85,7 +85,7 @@ TEST(SpotCone, GltfSpotFollowsTheExtensionsFalloff) {
     s->loadScene(test::writeJson("spot_cone.gltf", spotCaseGltf()).string());
     ASSERT_EQ(s->scene().lights.size(), 1u);
     EXPECT_EQ(s->scene().lights[0].falloff, SpotFalloff::InnerOuterCone);
-    s->knobs().setFromString("ssao.enabled", "false");
+    s->knobs().setFromString("ao.enabled", "false");
     s->render({{"lbuffer", "gbuffer.view_position"}});
     const FloatImage L = s->readRaw("lbuffer"), P = s->readRaw("gbuffer.view_position");
     // The light in view space: 6 in front of the camera, pointing away from it.
@@ -148,7 +148,7 @@ TEST(SpotCone, EveryStrategyAndTheCpuReferenceAgreeForBothFalloffs) {
     cone.innerConeDegrees = 15.0f;
     const std::vector<Light> lights = scene.lights;
     s->setScene(std::move(scene));
-    s->knobs().setFromString("ssao.enabled", "false");
+    s->knobs().setFromString("ao.enabled", "false");
     const double threshold = s->knobs().value(*s->knobs().find("lighting.threshold"));
     FloatImage brute;
     for (const char* strategy : kStrategies) {

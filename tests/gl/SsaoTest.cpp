@@ -9,7 +9,7 @@
 #include "renderer/graph/ResourcePool.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/gl/FullscreenTriangle.h"
-#include "renderer/passes/SsaoBlurPass.h"
+#include "renderer/passes/AoFilterPass.h"
 #include "renderer/scene/ShapeBuilder.h"
 #include "tests/support/TestSupport.h"
 
@@ -29,8 +29,8 @@ TEST(Ssao, AnOpenFlatPlaneIsNotOccluded) {
     s->setScene(withAmbient(test::planeScene(200.0f)));
     for (const char* res : {"full", "half", "quarter"}) {
         s->knobs().setFromString("ssao.resolution", res);
-        s->render({{"ssao.raw", "gbuffer.depth"}});
-        const FloatImage ao = s->readRaw("ssao.raw");
+        s->render({{"ao.raw", "gbuffer.depth"}});
+        const FloatImage ao = s->readRaw("ao.raw");
         const auto st = test::stats(ao, 0);
         EXPECT_GT(st.mean, 0.995) << res;
         EXPECT_GT(st.min, 0.95) << res;
@@ -48,8 +48,8 @@ TEST(Ssao, AConcaveCornerIsDarker) {
     scene.camera.target = {0.0f, 0.0f, 0.0f};
     s->setScene(std::move(scene));
     s->knobs().setFromString("ssao.resolution", "full");
-    s->render({{"ssao.raw", "gbuffer.view_position"}});
-    const FloatImage ao = s->readRaw("ssao.raw");
+    s->render({{"ao.raw", "gbuffer.view_position"}});
+    const FloatImage ao = s->readRaw("ao.raw");
     const FloatImage P = s->readRaw("gbuffer.view_position");
     const glm::mat4 inverseView = glm::inverse(s->camera().view());
     double crease = 0, open = 0, near = 0, farther = 0;
@@ -89,19 +89,19 @@ TEST(Ssao, AConcaveCornerIsDarker) {
 
 namespace {
 
-// Runs SsaoBlurPass alone on a synthetic AO image and depth buffer: the left
+// Runs AoFilterPass alone on a synthetic AO image and depth buffer: the left
 // half near and occluded (AO 0.3), the right half far and open (AO 1).
 FloatImage blurStep(const std::string& mode, int aoDivisor) {
     const int W = 128, H = 32;
     test::initGl();
     gl::ShaderLibrary shaders(gl::ShaderLibrary::locateRoot());
     KnobRegistry knobs;
-    knobs.addBool("ssao.enabled", true, "ssao", "");
-    SsaoBlurPass pass(knobs);
+    knobs.addBool("ao.enabled", true, "ao", "");
+    AoFilterPass pass(knobs);
     knobs.setFromString("ssao_blur.mode", mode);
     knobs.setFromString("ssao_blur.width", "15");
     OutputRegistry outputs;
-    outputs.declare("ssao", {"ssao.raw", OutputKind::Scalar, ""});
+    outputs.declare("ao", {"ao.raw", OutputKind::Scalar, ""});
     outputs.declare("geometry", {"gbuffer.depth", OutputKind::Depth, ""});
     for (const auto& o : pass.outputs()) outputs.declare(pass.name(), o);
     pass.setup(shaders);
@@ -128,7 +128,7 @@ FloatImage blurStep(const std::string& mode, int aoDivisor) {
         for (int x = 0; x < aw; ++x) ao[y * aw + x] = x < aw / 2 ? 0.3f : 1.0f;
     gl::Texture aoTex = gl::Texture::create2D(GL_R32F, aw, ah);
     aoTex.upload(0, aw, ah, GL_RED, GL_FLOAT, ao.data());
-    outputs.bind("ssao.raw", &aoTex, 1);
+    outputs.bind("ao.raw", &aoTex, 1);
     outputs.bind("gbuffer.depth", &depthTex, 1);
 
     gl::Buffer camera = gl::Buffer::create(sizeof(CameraUniforms), &cu, false);
@@ -138,7 +138,7 @@ FloatImage blurStep(const std::string& mode, int aoDivisor) {
     FrameContext ctx{scene, gpu, knobs, outputs, shaders, cu, W, H, 0, {}, nullptr};
     gl::resetPipelineState(W, H);
     pass.execute(ctx);
-    return readOutputRaw(*outputs.find("ssao.blurred"));
+    return readOutputRaw(*outputs.find("ao.filtered"));
 }
 
 // Smallest AO on the far (open) side, within 6 pixels of the depth step.

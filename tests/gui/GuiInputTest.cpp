@@ -39,7 +39,7 @@ nlohmann::json runEvents(const std::string& name, int frames, const std::string&
     const fs::path ev = writeFile(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
     const test::CommandResult r =
         test::runCommand("xvfb-run -a -s '-screen 0 1100x700x24' " + std::string(DW_WORKBENCH_BINARY) +
-                         " --scene spheres --set ssao.enabled=false --size 1024x640 --frames " + std::to_string(frames) +
+                         " --scene spheres --set ao.enabled=false --size 1024x640 --frames " + std::to_string(frames) +
                          " --events " + ev.string() + " --layout-out " + out.string() + " " + extra);
     EXPECT_EQ(r.code, 0) << r.out << r.err;
     return r.code == 0 ? readJson(out) : nlohmann::json();
@@ -159,7 +159,7 @@ xvfb=$!
 for i in $(seq 100); do [ -s "$dir/display" ] && break; sleep 0.1; done
 export DISPLAY=:$(cat "$dir/display")
 export XDG_CONFIG_HOME="$dir/config" XDG_DATA_HOME="$dir/data"
-)" + std::string(DW_WORKBENCH_BINARY) + R"( --scene spheres --set ssao.enabled=false --size 1024x640 --layout-out )" +
+)" + std::string(DW_WORKBENCH_BINARY) + R"( --scene spheres --set ao.enabled=false --size 1024x640 --layout-out )" +
                                report.string() + R"( >"$dir/out.txt" 2>&1 &
 app=$!
 win=$(timeout 60 xdotool search --sync --onlyvisible --name 'Deferred Workbench' | head -1)

@@ -205,7 +205,7 @@ LayoutReport readLayoutReport(const fs::path& p) {
 
 // The workbench under Xvfb at `size`, replaying `events` (ScriptedInput).
 LayoutReport runScripted(const std::string& name, const std::string& size, int frames, const std::string& events,
-                         const std::string& extra = "", const std::string& scene = "spheres --set ssao.enabled=false") {
+                         const std::string& extra = "", const std::string& scene = "spheres --set ao.enabled=false") {
     const fs::path ev = writeText(name + "-events.txt", events), out = test::tempDir() / (name + "-layout.json");
     const Result r = shell("xvfb-run -a -s '-screen 0 1700x1000x24' " + std::string(DW_WORKBENCH_BINARY) +
                            " --scene " + scene + " --size " + size + " --frames " + std::to_string(frames) +
@@ -527,7 +527,7 @@ TEST(Gui, TimingsPanelMeasuresACommittedKnobChangeAndStartsOverOnAnotherScene) {
     // The schedule: turns of 1 settling + 2 counted frames, B then A, 4 counted a side.
     EXPECT_EQ(state.measure.framesScheduled(), 12);
     std::set<std::string> influenced = state.measure.influenced();
-    EXPECT_TRUE(influenced.count("ssao") && influenced.count("ssao_blur") && influenced.count("lighting") && influenced.count("tonemap"));
+    EXPECT_TRUE(influenced.count("ao") && influenced.count("ao_filter") && influenced.count("lighting") && influenced.count("tonemap"));
     EXPECT_FALSE(influenced.count("geometry") || influenced.count("lights") || influenced.count("shadows") || influenced.count("skybox"));
     int frames = 0;
     std::vector<double> samples;
@@ -542,7 +542,7 @@ TEST(Gui, TimingsPanelMeasuresACommittedKnobChangeAndStartsOverOnAnotherScene) {
     ASSERT_EQ(state.measure.state(), ChangeMeasurement::State::Done) << state.measure.status();
     EXPECT_EQ(knob(*session, "ssao.samples"), 64.0) << "the knob did not go back to the value after the change";
     const ChangeVerdict& v = state.measure.verdict();
-    const PassVerdict* ssao = v.find("ssao");
+    const PassVerdict* ssao = v.find("ao");
     const PassVerdict* geometry = v.find("geometry");
     ASSERT_TRUE(ssao && geometry);
     EXPECT_EQ(ssao->beforeFrames, 4);
@@ -673,7 +673,7 @@ TEST(Gui, UnderXvfbAKnobChangeIsMeasuredToTheEndWithoutRecord) {
     EXPECT_EQ(cost["frames_scheduled"].get<int>(), 36);  // 12 a side, turns of 1 settling + 2 counted
     std::map<std::string, nlohmann::json> passes;
     for (const auto& p : cost["passes"]) passes[p["pass"].get<std::string>()] = p;
-    for (const char* upstream : {"geometry", "ssao", "ssao_blur"}) {
+    for (const char* upstream : {"geometry", "ao", "ao_filter"}) {
         ASSERT_TRUE(passes.count(upstream)) << upstream;
         EXPECT_FALSE(passes[upstream]["influenced"].get<bool>()) << upstream;
         EXPECT_FALSE(passes[upstream]["significant"].get<bool>()) << upstream;
@@ -744,7 +744,7 @@ TEST(Gui, UnderXvfbADeeplyNestedLayoutJsonIsNotUsedAndTheWindowStarts) {
     // the Messages panel holds the reason.
     const fs::path shot = test::tempDir() / "deep-layout.png", out = test::tempDir() / "deep-layout-report.json";
     const Result r = shell("xvfb-run -a -s '-screen 0 1024x640x24' " + std::string(DW_WORKBENCH_BINARY) +
-                           " --scene spheres --set ssao.enabled=false --frames 3 --layout " + layout.string() +
+                           " --scene spheres --set ao.enabled=false --frames 3 --layout " + layout.string() +
                            " --screenshot " + shot.string() + " --layout-out " + out.string());
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_TRUE(fs::exists(shot));
@@ -764,7 +764,7 @@ TEST(Gui, UnderXvfbADeeplyNestedLayoutJsonIsNotUsedAndTheWindowStarts) {
     }
     // A missing --layout file is reported the same way.
     const Result missing = shell("xvfb-run -a -s '-screen 0 1024x640x24' " + std::string(DW_WORKBENCH_BINARY) +
-                                 " --scene spheres --set ssao.enabled=false --frames 2 --layout " + (config / "none.json").string() +
+                                 " --scene spheres --set ao.enabled=false --frames 2 --layout " + (config / "none.json").string() +
                                  " --layout-out " + out.string());
     ASSERT_EQ(missing.code, 0) << missing.out;
     EXPECT_EQ(readLayoutReport(out).errors,
@@ -773,7 +773,7 @@ TEST(Gui, UnderXvfbADeeplyNestedLayoutJsonIsNotUsedAndTheWindowStarts) {
     // layout.json): still running after 8 s instead of dying at start (139),
     // then stopped by timeout (124).
     const Result live = shell("XDG_CONFIG_HOME=" + config.string() + " xvfb-run -a -s '-screen 0 1024x640x24' sh -c 'timeout 8 " +
-                              std::string(DW_WORKBENCH_BINARY) + " --scene spheres --set ssao.enabled=false; echo exit=$?'");
+                              std::string(DW_WORKBENCH_BINARY) + " --scene spheres --set ao.enabled=false; echo exit=$?'");
     EXPECT_NE(live.out.find("exit=124"), std::string::npos) << live.out;
 }
 
@@ -824,7 +824,7 @@ TEST(Gui, UnderXvfbTheTransparencySampleCountsShowAsAHeatMapWithItsColourBar) {
     const fs::path shot = test::tempDir() / "oit-heat.png";
     const LayoutReport heat = runScripted("oit-heat", "1024x640", 8, "",
                                           "--view oit.sample_count --screenshot " + shot.string(),
-                                          "glass --set oit.method=abuffer --set ssao.enabled=false");
+                                          "glass --set oit.method=abuffer --set ao.enabled=false");
     ASSERT_TRUE(heat.items.contains("legend.colour_bar")) << heat.items.dump();
     const auto& bar = heat.items["legend.colour_bar"];
     const FloatImage img = loadImageFloat(shot.string());

@@ -39,7 +39,7 @@ TEST(ImageViewer, DisplaySettingsAreKeptPerOutput) {
     v.output = "lbuffer";
     v.settings().channel = BufferViewSettings::Channel::R;
     v.settings().mapping = BufferViewSettings::Mapping::Heatmap;
-    v.output = "ssao.blurred";
+    v.output = "ao.filtered";
     EXPECT_EQ(v.settingsOr().channel, BufferViewSettings::Channel::RGB);
     EXPECT_EQ(v.settingsOr().mapping, BufferViewSettings::Mapping::Auto);
     v.output = "lbuffer";
@@ -52,7 +52,7 @@ TEST(ImageViewer, ZoomPanAndHistogramAreKeptPerOutputToo) {
     v.zoom = 16.0f;
     v.center = {0.25f, 0.75f};
     v.histogram = true;
-    v.show("ssao.blurred");
+    v.show("ao.filtered");
     // Another buffer starts fitted, without the lbuffer's histogram.
     EXPECT_FLOAT_EQ(v.zoom, 1.0f);
     EXPECT_EQ(v.center, glm::vec2(0.5f));
@@ -62,7 +62,7 @@ TEST(ImageViewer, ZoomPanAndHistogramAreKeptPerOutputToo) {
     EXPECT_FLOAT_EQ(v.zoom, 16.0f);
     EXPECT_EQ(v.center, glm::vec2(0.25f, 0.75f));
     EXPECT_TRUE(v.histogram);
-    v.show("ssao.blurred");
+    v.show("ao.filtered");
     EXPECT_FLOAT_EQ(v.zoom, 2.0f);
 }
 

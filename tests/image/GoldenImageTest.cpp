@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Golden{"spotlights", std::string(DW_TEST_SCENES_DIR) + "/spotlights.json", "final"},
                       Golden{"default-normals", "default", "gbuffer.normal"},
                       Golden{"default-depth", "default", "gbuffer.depth"},
-                      Golden{"default-ssao", "default", "ssao.blurred"},
+                      Golden{"default-ssao", "default", "ao.filtered"},
                       Golden{"default-overlap", "default", "lighting.overlap"},
                       Golden{"spheres-cube-shadow-map", "spheres", "shadow.cubes", {"shadows.map_size=128"}},
                       Golden{"street-bloom", "street", "bloom.result"}),

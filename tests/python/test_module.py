@@ -86,14 +86,14 @@ class SessionTest(unittest.TestCase):
             else:
                 self.assertEqual(image.dtype, np.float32, name)
                 self.assertIn(image.shape[2], RAW_CHANNELS[info["kind"]], name)
-        full = ["gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_position", "ssao.blurred",
+        full = ["gbuffer.albedo", "gbuffer.normal", "gbuffer.depth", "gbuffer.view_position", "ao.filtered",
                 "lbuffer", "lbuffer.depth", "lighting.overlap", "tonemap.result", "final"]
         for name in full:
             self.assertIn(name, produced)
             self.assertEqual(produced[name].shape[:2], (SIZE[1], SIZE[0]), name)
         self.assertEqual(produced["gbuffer.depth"].shape[2], 1)
         self.assertEqual(produced["gbuffer.normal"].shape[2], 2)
-        self.assertEqual(produced["ssao.raw"].shape[:2], (SIZE[1] // 2, SIZE[0] // 2))  # ssao.resolution = half
+        self.assertEqual(produced["ao.raw"].shape[:2], (SIZE[1] // 2, SIZE[0] // 2))  # ssao.resolution = half
         for name in ("final", "tonemap.result", "fxaa.result"):
             self.assertEqual(produced[name].dtype, np.uint8, name)
 
@@ -251,8 +251,8 @@ class SessionTest(unittest.TestCase):
                      csv=csv)
         self.assertEqual([c["knobs"] for c in r["configs"]], [{"ssao.samples": "4"}, {"ssao.samples": "16"}])
         self.assertEqual([c["size"] for c in r["configs"]], [(64, 36), (64, 36)])
-        self.assertIn("4 samples", r["configs"][0]["stats"]["ssao"])
-        self.assertIn("16 samples", r["configs"][1]["stats"]["ssao"])
+        self.assertIn("4 samples", r["configs"][0]["stats"]["ao"])
+        self.assertIn("16 samples", r["configs"][1]["stats"]["ao"])
         for config in (0, 1):
             frames = [x for x in r["samples"] if x["config"] == config and x["series"] == "frame"]
             self.assertEqual(sorted(x["sample"] for x in frames), [0, 1])

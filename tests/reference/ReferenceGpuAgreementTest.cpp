@@ -23,7 +23,7 @@ constexpr int kW = 160, kH = 90;
 
 // The most accurate GPU settings (the list).
 const std::vector<std::string> kAccurate = {"lighting.strategy=fullscreen", "lighting.threshold=1e-5",
-                                            "ssao.enabled=false", "gbuffer.material_format=unorm16",
+                                            "ao.enabled=false", "gbuffer.material_format=unorm16",
                                             "gbuffer.texture_filter=base_level", "shadows.enabled=false"};
 
 struct Agreement {
@@ -172,9 +172,9 @@ TEST(GpuAgreesWithReference, SsaoErrorSplitsIntoItsDefinitionAndItsScreenSpaceAp
         auto session = test::makeSession(w, h);
         session->loadScene(sceneName, run);
         FrameRequest request;
-        request.outputs = {"ssao.blurred"};
+        request.outputs = {"ao.filtered"};
         session->render(request);
-        const FloatImage gpu = session->readRaw("ssao.blurred");
+        const FloatImage gpu = session->readRaw("ao.filtered");
         const Scene& scene = session->scene();
         reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session->knobs(), scene);
         model.aoRays = 256;

@@ -1,12 +1,13 @@
 #pragma once
-// Screen-space ambient occlusion (seed 000 sections 4.6.3 and 5.6, seed 002
-// section 5.1; seed 002 step 2). Reads gbuffer.depth and gbuffer.normal;
-// writes ssao.raw at the AO resolution (full, 1/2 or 1/4, seed 000 table 6.4).
+// Screen-space ambient occlusion, ao.method = ssao (seed 000 sections 4.6.3
+// and 5.6, seed 002 section 5.1; seed 002 step 2). Reads gbuffer.depth and
+// gbuffer.normal; writes ao.raw at ssao.resolution (full, 1/2 or 1/4, seed
+// 000 table 6.4).
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "renderer/ao/AoMethod.h"
 #include "renderer/knobs/KnobRegistry.h"
-#include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/gl/ParamBuffer.h"
 #include "renderer/gl/Framebuffer.h"
@@ -20,19 +21,15 @@ namespace dw {
 
 struct Bounds;
 
-class SsaoPass : public RenderPass {
+class SsaoMethod : public AoMethod {
 public:
-    explicit SsaoPass(KnobRegistry& knobs);
+    explicit SsaoMethod(KnobRegistry& knobs);
     const char* name() const override { return "ssao"; }
-    std::vector<OutputDecl> outputs() const override {
-        return {{"ssao.raw", OutputKind::Scalar, "ambient accessibility before blurring, 1 = open (R16F, at the AO resolution)",
-                 texture2D(GL_R16F), 1}};
-    }
-    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
-    PassIO inputs(const KnobRegistry&) const override { return {{"gbuffer.depth", "gbuffer.normal"}, {}}; }
-    std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
+    std::string description() const override;
+    std::vector<std::string> knobNames() const override;
+    int resolutionShift(const KnobRegistry& knobs) const override { return knobs.get(resolution_); }
     void setup(gl::ShaderLibrary& shaders) override;
-    void execute(FrameContext& ctx) override;
+    void run(FrameContext& ctx) override;
     // The scene's unit for ssao.radius_unit = scene_fraction: 10^round(log10(R / 10))
     // for the bounding radius R (1 for an empty scene), so scaling a scene by a
     // power of ten scales its SSAO radius with it.
@@ -47,7 +44,7 @@ public:
     static std::vector<glm::vec4> kernel(int n);
 
 private:
-    BoolKnob enabled_, rangeCheck_;
+    BoolKnob rangeCheck_;
     IntKnob samples_;
     FloatKnob radius_, intensity_, bias_;
     EnumKnob resolution_, radiusUnit_;

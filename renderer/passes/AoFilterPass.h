@@ -1,10 +1,11 @@
 #pragma once
-// Blur of the AO buffer (seed 000 section 4.6.3 eq. 4.7, seed 002 section
-// 5.2): separable cross-bilateral (gaussian x 1/(delta + |depth difference|))
-// or plain gaussian for comparison, then depth-aware upsampling to full
-// resolution when the AO ran smaller. Reads ssao.raw and gbuffer.depth;
-// writes ssao.blurred (full resolution), which the lighting pass multiplies
-// into the ambient term.
+// The shared filter of every AO method (seed 000 section 4.6.3 eq. 4.7, seed
+// 002 section 5.2): separable cross-bilateral blur (gaussian x 1/(delta +
+// |depth difference|)) or plain gaussian for comparison (ssao_blur.*; skipped
+// when the method says it denoised ao.raw itself, AoMethod::sharedBlur), then
+// depth-aware upsampling to full resolution when the AO ran smaller. Reads
+// ao.raw and gbuffer.depth; writes ao.filtered (full resolution), which the
+// lighting pass multiplies into the ambient term.
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
@@ -17,23 +18,24 @@
 
 namespace dw {
 
-class SsaoBlurPass : public RenderPass {
+class AoFilterPass : public RenderPass {
 public:
-    explicit SsaoBlurPass(KnobRegistry& knobs);
-    const char* name() const override { return "ssao_blur"; }
+    explicit AoFilterPass(KnobRegistry& knobs);
+    const char* name() const override { return "ao_filter"; }
     std::vector<OutputDecl> outputs() const override {
-        return {{"ssao.blurred", OutputKind::Scalar, "blurred ambient accessibility at full resolution (R16F)",
+        return {{"ao.filtered", OutputKind::Scalar, "filtered ambient accessibility at full resolution, 1 = open (R16F)",
                  texture2D(GL_R16F), 1}};
     }
-    void connect(const KnobRegistry& knobs) override { ssaoEnabled_ = knobs.requireBool("ssao.enabled"); }
-    PassIO inputs(const KnobRegistry&) const override { return {{"ssao.raw", "gbuffer.depth"}, {}}; }
+    void connect(const KnobRegistry& knobs) override { aoEnabled_ = knobs.requireBool("ao.enabled"); }
+    PassIO inputs(const KnobRegistry&) const override { return {{"ao.raw", "gbuffer.depth"}, {}}; }
+
     std::string skipReason(const KnobRegistry& knobs, const Scene& scene) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
 private:
-    BoolKnob ssaoEnabled_;
+    BoolKnob aoEnabled_;
     EnumKnob mode_;
     int off_ = 0;                       // ssao_blur.mode = off
     std::vector<std::string> defines_;  // SSAO_BLUR_MODE_*

@@ -1,4 +1,4 @@
-#include "renderer/passes/SsaoPass.h"
+#include "renderer/ao/SsaoMethod.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,47 +17,50 @@ float hash01(std::uint32_t x) { return hashToUnit(x); }
 
 }  // namespace
 
-SsaoPass::SsaoPass(KnobRegistry& knobs) {
-    enabled_ = knobs.addBool("ssao.enabled", true, "ssao", "screen-space ambient occlusion on the ambient term");
-    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao",
+SsaoMethod::SsaoMethod(KnobRegistry& knobs) {
+    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ao",
                             "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)", "", true);
-    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao",
+    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ao",
                              "radius of the sampling hemisphere, in ssao.radius_unit (the inspector gives it in world units)",
                              "units", false, true);
-    radiusUnit_ = knobs.addEnum("ssao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ssao",
+    radiusUnit_ = knobs.addEnum("ssao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ao",
                                 "world: ssao.radius in world units (seed 000's SSAO1-5 presets); scene_fraction: in "
                                 "units of the scene's size, 10^round(log10(R / 10)) for a bounding radius R, so a model "
                                 "authored in millimetres or kilometres gets the AO it would get in metres (1 for scenes of "
                                 "radius 3.2 to 32)");
-    intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
-    bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ssao",
+    intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
+    bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ao",
                            "depth tolerance before a sample counts as occluded, as a fraction of the radius");
-    rangeCheck_ = knobs.addBool("ssao.range_check", true, "ssao",
+    rangeCheck_ = knobs.addBool("ssao.range_check", true, "ao",
                                 "fade occluders much nearer the camera than the point (depth discontinuities)");
     // In the order of the shift to the AO size: the choice's index is the shift.
-    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ssao",
+    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ao",
                                 "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
 }
 
-float SsaoPass::sceneUnit(const Bounds& bounds) { return static_cast<float>(sceneLengthUnit(bounds)); }
+float SsaoMethod::sceneUnit(const Bounds& bounds) { return static_cast<float>(sceneLengthUnit(bounds)); }
 
-float SsaoPass::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
+float SsaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
     const float r = knobs.get(radius_);
     return knobs.choice(radiusUnit_) == "world" ? r : r * sceneUnit(bounds);
 }
 
-std::string SsaoPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
-    if (!knobs.get(enabled_)) return "switched off (ssao.enabled = false)";
-    if (scene.ambient == glm::vec3(0.0f)) return "the scene has no ambient light (AO only scales the ambient term)";
-    return {};
+std::string SsaoMethod::description() const {
+    return "screen-space AO (seed 000 section 4.6.3): ssao.samples points of a kernel in the normal's hemisphere "
+           "tested against the depth buffer, falloff 1 / (1 + d^2)";
 }
 
-glm::ivec2 SsaoPass::aoSize(const KnobRegistry& knobs, int width, int height) const {
+std::vector<std::string> SsaoMethod::knobNames() const {
+    return {"ssao.samples", "ssao.radius", "ssao.radius_unit", "ssao.intensity", "ssao.bias", "ssao.range_check",
+            "ssao.resolution"};
+}
+
+glm::ivec2 SsaoMethod::aoSize(const KnobRegistry& knobs, int width, int height) const {
     const int shift = knobs.get(resolution_);  // full, half, quarter: 0, 1, 2
     return {std::max(width >> shift, 1), std::max(height >> shift, 1)};
 }
 
-std::vector<glm::vec4> SsaoPass::kernel(int n) {
+std::vector<glm::vec4> SsaoMethod::kernel(int n) {
     std::vector<glm::vec4> k;
     for (int i = 0; i < n; ++i) {
         // A uniform direction, then a length that puts more samples near the
@@ -72,13 +75,7 @@ std::vector<glm::vec4> SsaoPass::kernel(int n) {
     return k;
 }
 
-ResourceDesc SsaoPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
-    ResourceDesc d = output.resource;
-    d.shift = knobs.get(resolution_);  // full, half, quarter: 0, 1, 2
-    return d;
-}
-
-void SsaoPass::setup(gl::ShaderLibrary& shaders) {
+void SsaoMethod::setup(gl::ShaderLibrary& shaders) {
     linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "ssao linear depth");
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/ssao.frag"});
     params_.create();
@@ -95,7 +92,7 @@ void SsaoPass::setup(gl::ShaderLibrary& shaders) {
     noise_.setFilter(GL_NEAREST, GL_NEAREST);
 }
 
-void SsaoPass::execute(FrameContext& ctx) {
+void SsaoMethod::run(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
     const glm::ivec2 size = aoSize(k, ctx.width, ctx.height);
     gpu::SsaoParams p{};
@@ -115,7 +112,7 @@ void SsaoPass::execute(FrameContext& ctx) {
     ctx.texture("gbuffer.normal").bind(1);
     noise_.bind(2);
     glViewport(0, 0, size.x, size.y);
-    target_.get(ctx, {"ssao.raw"}, {}, "SSAO").bind();
+    target_.get(ctx, {"ao.raw"}, {}, "SSAO").bind();
     program_->use();
     triangle_.draw();
     char r[48];

@@ -1,43 +1,46 @@
-#include "renderer/passes/SsaoBlurPass.h"
+#include "renderer/passes/AoFilterPass.h"
 
 #include <algorithm>
 #include <glm/glm.hpp>
 
+#include "renderer/ao/AoMethod.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
-SsaoBlurPass::SsaoBlurPass(KnobRegistry& knobs) {
-    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ssao_blur",
+AoFilterPass::AoFilterPass(KnobRegistry& knobs) {
+    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ao_filter",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
     off_ = knobs.choiceIndex(mode_, "off");
     defines_ = knobs.choiceDefines(mode_);
-    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
+    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ao_filter",
                           "kernel width in AO pixels (seed 002 uses up to 61); taps = 2 x (width / 2) + 1", "px", true);
-    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ssao_blur",
+    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ao_filter",
                             "delta in the weight 1 / (delta + |d_center - d_current|) (eq. 4.7), in scene units of depth",
                             "units", false, true);
 }
 
-std::string SsaoBlurPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
-    if (!knobs.get(ssaoEnabled_)) return "switched off (ssao.enabled = false)";
+std::string AoFilterPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
+    if (!knobs.get(aoEnabled_)) return "switched off (ao.enabled = false)";
     if (scene.ambient == glm::vec3(0.0f)) return "the scene has no ambient light (AO only scales the ambient term)";
     return {};
 }
 
-void SsaoBlurPass::setup(gl::ShaderLibrary& shaders) {
+void AoFilterPass::setup(gl::ShaderLibrary& shaders) {
     blur_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/blur.frag", .defines = defines_});
     upsample_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ssao/upsample.frag", .defines = defines_});
     params_.create();
 }
 
-void SsaoBlurPass::execute(FrameContext& ctx) {
+void AoFilterPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    const gl::Texture& raw = ctx.texture("ssao.raw");
+    const gl::Texture& raw = ctx.texture("ao.raw");
     const gl::Texture& depth = ctx.texture("gbuffer.depth");
     const int w = raw.width(), h = raw.height();
-    const int mode = k.get(mode_);
+    // The method that wrote ao.raw may have denoised it itself (none: the filter run alone).
+    const bool blur = !ctx.aoMethod || ctx.aoMethod->sharedBlur(k);
+    const int mode = blur ? k.get(mode_) : off_;
     const int radius = k.get(width_) / 2;
     gpu::SsaoBlurParams p{};
     p.mode = mode;
@@ -49,7 +52,7 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
             if (!temp_[i] || temp_[i].width() != w || temp_[i].height() != h) {
                 temp_[i] = gl::Texture::create2D(GL_R16F, w, h);
                 temp_[i].setFilter(GL_NEAREST, GL_NEAREST);
-                tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "SSAO blur");
+                tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "AO blur");
             }
         glViewport(0, 0, w, h);
         depth.bind(1);
@@ -70,10 +73,10 @@ void SsaoBlurPass::execute(FrameContext& ctx) {
     source->bind(0);
     depth.bind(1);
     glViewport(0, 0, ctx.width, ctx.height);
-    full_.get(ctx, {"ssao.blurred"}, {}, "SSAO blurred").bind();
+    full_.get(ctx, {"ao.filtered"}, {}, "AO filtered").bind();
     upsample_->use();
     triangle_.draw();
-    stats_ = (mode == off_ ? std::string("no") : k.choice(mode_)) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
+    stats_ = (mode == off_ ? std::string(blur ? "no" : "no shared (the method's own denoise)") : k.choice(mode_)) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
              (w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "");
 }
 

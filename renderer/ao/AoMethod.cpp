@@ -1,0 +1,10 @@
+#include "renderer/ao/AoMethod.h"
+
+namespace dw {
+
+AoMethodCatalog& AoMethodCatalog::extra() {
+    static AoMethodCatalog catalog;
+    return catalog;
+}
+
+}  // namespace dw

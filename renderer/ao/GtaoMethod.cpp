@@ -1,0 +1,88 @@
+#include "renderer/ao/GtaoMethod.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "renderer/scene/GpuScene.h"
+#include "renderer/scene/Mesh.h"
+
+namespace dw {
+
+GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
+    slices_ = knobs.addInt("gtao.slices", 3, 1, gpu::GTAO_MAX_SLICES, "ao",
+                           "gtao: screen-space slices (directions) per pixel, rotated per pixel in a 4x4 pattern "
+                           "(XeGTAO: 1 low, 2 medium, 3 high, 9 ultra)", "", true);
+    steps_ = knobs.addInt("gtao.steps", 3, 1, gpu::GTAO_MAX_STEPS, "ao",
+                          "gtao: depth samples per side of each slice (XeGTAO: 2 low and medium, 3 high and ultra)", "",
+                          true);
+    radius_ = knobs.addFloat("gtao.radius", 1.0, 0.01, 20.0, "ao",
+                             "gtao: the world-space radius the horizon search covers, in gtao.radius_unit", "units", false,
+                             true);
+    radiusUnit_ = knobs.addEnum("gtao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ao",
+                                "gtao: world: gtao.radius in world units; scene_fraction: in the scene's power-of-ten "
+                                "unit, as ssao.radius_unit");
+    falloff_ = knobs.addFloat("gtao.falloff", 0.0, 0.0, 1.0, "ao",
+                              "gtao: share of the radius over which a sample's weight falls linearly to 0 at the radius "
+                              "(XeGTAO uses 0.615); 0, the default: a hard cut at the radius, as the ray-traced AO has (closest to it, docs/ao.md)");
+    thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "ao",
+                                "gtao: thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
+                                "back towards a lower sample per step; 0 takes every occluder as infinitely thick");
+    resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "ao",
+                                "gtao: ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
+    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "off"}, "shared", "ao",
+                             "gtao: spatial denoise of the 4x4 noise pattern: shared (the cross-bilateral filter "
+                             "ssao_blur.*) or off (ao.raw only upsampled)");
+    shared_ = knobs.choiceIndex(denoise_, "shared");
+}
+
+std::string GtaoMethod::description() const {
+    return "ground-truth AO (Jimenez et al. 2016, XeGTAO): horizons in gtao.slices screen-space slices, the "
+           "closed-form cosine-weighted visibility";
+}
+
+std::vector<std::string> GtaoMethod::knobNames() const {
+    return {"gtao.slices", "gtao.steps", "gtao.radius", "gtao.radius_unit", "gtao.falloff", "gtao.thickness",
+            "gtao.resolution", "gtao.denoise"};
+}
+
+float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
+    const float r = knobs.get(radius_);
+    return knobs.choice(radiusUnit_) == "world" ? r : r * static_cast<float>(sceneLengthUnit(bounds));
+}
+
+void GtaoMethod::setup(gl::ShaderLibrary& shaders) {
+    program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao.frag"});
+    linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "gtao linear depth");
+    params_.create();
+}
+
+void GtaoMethod::run(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    const gl::Texture& raw = ctx.texture("ao.raw");
+    gpu::GtaoParams p{};
+    p.aoSize = {raw.width(), raw.height()};
+    p.shift = resolutionShift(k);
+    p.slices = k.get(slices_);
+    p.steps = k.get(steps_);
+    p.radius = worldRadius(k, ctx.gpu.bounds());
+    p.falloff = k.get(falloff_);
+    p.thickness = k.get(thickness_);
+    // Full-resolution pixels per view-space unit at depth 1: half the
+    // viewport's height times the projection's y scale.
+    p.pixelScale = 0.5f * static_cast<float>(ctx.height) * ctx.camera.projection[1][1];
+    p.minPixels = 1.3f;  // XeGTAO's "pixel too close" threshold: never the pixel itself
+    params_.upload(p, binding::kPassUbo);
+    ctx.texture("gbuffer.depth").bind(0);
+    linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
+    ctx.texture("gbuffer.normal").bind(1);
+    glViewport(0, 0, p.aoSize.x, p.aoSize.y);
+    target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
+    program_->use();
+    triangle_.draw();
+    char line[160];
+    std::snprintf(line, sizeof line, "%d slices x %d steps per side at %dx%d, radius %.4g world units, %s denoise",
+                  p.slices, p.steps, p.aoSize.x, p.aoSize.y, p.radius, k.choice(denoise_).c_str());
+    stats_ = line;
+}
+
+}  // namespace dw

@@ -1,0 +1,53 @@
+#pragma once
+// Ground-truth ambient occlusion, ao.method = gtao (Jimenez, Wu, Pesce and
+// Jarabo, "Practical Real-Time Strategies for Accurate Indirect Occlusion",
+// 2016; Intel's XeGTAO is the reference implementation): horizon search in
+// gtao.slices screen-space slices, gtao.steps depth samples per side, the
+// paper's closed-form cosine-weighted visibility (shaders/ao/gtao.frag).
+// Reads gbuffer.depth and gbuffer.normal; writes ao.raw at gtao.resolution
+// (full or half). Denoised by the shared cross-bilateral filter (ssao_blur.*)
+// or not at all (gtao.denoise).
+#include <glm/glm.hpp>
+
+#include "renderer/ao/AoMethod.h"
+#include "renderer/gl/FullscreenTriangle.h"
+#include "renderer/gl/ParamBuffer.h"
+#include "renderer/gl/Sampler.h"
+#include "renderer/graph/TargetFramebuffer.h"
+#include "renderer/knobs/KnobRegistry.h"
+#include "shaders/params/gtao.h"
+
+namespace dw {
+
+struct Bounds;
+
+class GtaoMethod : public AoMethod {
+public:
+    explicit GtaoMethod(KnobRegistry& knobs);
+    const char* name() const override { return "gtao"; }
+    std::string description() const override;
+    std::vector<std::string> knobNames() const override;
+    int resolutionShift(const KnobRegistry& knobs) const override { return knobs.get(resolution_); }
+    bool sharedBlur(const KnobRegistry& knobs) const override { return knobs.get(denoise_) == shared_; }
+    void setup(gl::ShaderLibrary& shaders) override;
+    void run(FrameContext& ctx) override;
+    std::string stats() const override { return stats_; }
+
+    // gtao.radius in world units under the current knobs (gtao.radius_unit
+    // as ssao.radius_unit: world, or the scene's power-of-ten unit).
+    float worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const;
+
+private:
+    IntKnob slices_, steps_;
+    FloatKnob radius_, falloff_, thickness_;
+    EnumKnob radiusUnit_, resolution_, denoise_;
+    int shared_ = 0;
+    gl::ShaderLibrary::Handle program_;
+    gl::FullscreenTriangle triangle_;
+    gl::ParamBuffer<gpu::GtaoParams> params_;
+    gl::Sampler linearDepth_;
+    TargetFramebuffer target_;
+    std::string stats_;
+};
+
+}  // namespace dw

@@ -1,0 +1,131 @@
+#version 450 core
+// Ground-truth ambient occlusion (Jimenez, Wu, Pesce and Jarabo, "Practical
+// Real-Time Strategies for Accurate Indirect Occlusion", 2016; Intel's
+// XeGTAO is the reference implementation). For each of gtao.slices
+// screen-space directions phi, the slice is the plane through the eye, the
+// point and that direction; gtao.steps depth samples per side along it find
+// the two horizon angles h0 (towards -phi) and h1 (towards +phi), measured
+// from the view vector V in the slice, each clamped to the hemisphere about
+// the normal's projection into the slice (angle n from V, length |Np|). The
+// cosine-weighted visibility of the slice is the paper's closed form (eq. 10)
+//     a(phi) = |Np| / 4 (-cos(2 h0 - n) + cos n + 2 h0 sin n
+//                        -cos(2 h1 - n) + cos n + 2 h1 sin n),
+// averaged over the slices: 1 on an open plane, the cosine-weighted share of
+// the hemisphere the horizons leave open elsewhere. A sample further than
+// (1 - falloff) of the radius fades towards the hemisphere's edge (XeGTAO's
+// linear falloff); the thickness heuristic (the paper's section 4.3) lets a
+// horizon sink back towards a lower sample, so thin occluders do not shadow
+// everything behind them. Runs at the AO resolution; reads the
+// full-resolution G-buffer.
+#include "../common/camera.glsl"
+#include "../common/gbuffer.glsl"
+#include "../params/gtao.h"
+
+layout(binding = 0) uniform sampler2D uDepth;
+layout(binding = 1) uniform sampler2D uNormal;
+
+out float outVisibility;
+
+const float PI = 3.14159265358979;
+const float HALF_PI = 1.57079632679490;
+
+// The view-space point at a full-resolution position (in pixels), or false
+// on the sky or off the image. The depth is filtered (the pass binds a
+// linear sampler): depth is affine across a plane in window space, so the
+// point is on the slice's own line; the nearest pixel centre would lie off
+// the slice, and a flat floor would occlude itself at grazing angles.
+bool sampleAt(vec2 fullPx, out vec3 S) {
+    vec2 size = camera.viewport.xy;
+    if (any(lessThan(fullPx, vec2(0.5))) || any(greaterThan(fullPx, size - 0.5))) return false;
+    vec2 uv = fullPx / size;
+    // A filtered depth between a surface and the sky is no surface.
+    vec4 texels = textureGather(uDepth, uv, 0);
+    if (isFarDepth(texels.x) || isFarDepth(texels.y) || isFarDepth(texels.z) || isFarDepth(texels.w)) return false;
+    float d = textureLod(uDepth, uv, 0.0).r;
+    S = viewPositionFromDepth(uv, d);
+    return true;
+}
+
+// One side's horizon update: the sample's cosine to V, faded towards the
+// side's lowest cosine by the falloff, then the thickness heuristic.
+float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
+    vec3 delta = S - P;
+    float dist = length(delta);
+    if (dist <= 0.0) return horizonCos;
+    float c = dot(delta / dist, V);
+    float weight = gtao.falloff > 0.0 ? clamp((gtao.radius - dist) / (gtao.falloff * gtao.radius), 0.0, 1.0)
+                                      : (dist < gtao.radius ? 1.0 : 0.0);
+    c = mix(lowCos, c, weight);
+    float h = c > horizonCos ? c : mix(horizonCos, c, gtao.thickness);
+    return max(h, lowCos);
+}
+
+void main() {
+    ivec2 aoPx = ivec2(gl_FragCoord.xy);
+    ivec2 px = min(aoPx << gtao.shift, ivec2(camera.viewport.xy) - 1);
+    float depth = texelFetch(uDepth, px, 0).r;
+    if (isFarDepth(depth)) {
+        outVisibility = 1.0;
+        return;
+    }
+    // Moved a little towards the eye (as XeGTAO does): depth quantisation
+    // would otherwise lift plane samples above their own plane's horizon.
+    vec3 P = viewPositionAtPixel(px, depth) * 0.9992;
+    vec3 N = decodeNormalKL(texelFetch(uNormal, px, 0).xy);
+    vec3 V = normalize(-P);
+    // The radius in full-resolution pixels at this depth.
+    float screenRadius = gtao.radius * gtao.pixelScale / max(-P.z, 1e-6);
+    // A 4x4 pattern of slice rotations and step offsets, which the shared
+    // blur averages away (no frame dependence). Every 4 pixels of a row hold
+    // the 4 quarters of the rotations (the column picks the quarter, the row
+    // the offset inside it): on a floor seen at a grazing angle the
+    // bilateral blur hardly mixes rows, whose depths differ, but a row's
+    // pixels share theirs.
+    vec2 cell = vec2(aoPx & 3);
+    float sliceNoise = (cell.x + (cell.y + 0.5) * 0.25) * 0.25;
+    float stepNoise = (cell.y + (cell.x + 0.5) * 0.25) * 0.25;
+    vec2 centre = vec2(px) + 0.5;
+
+    float visibility = 0.0;
+    int slices = clamp(gtao.slices, 1, GTAO_MAX_SLICES);
+    int steps = clamp(gtao.steps, 1, GTAO_MAX_STEPS);
+    // The slices' directions are uniform about V (the integral's measure),
+    // not on the screen: off the image's centre the two differ by the
+    // perspective, which biased an open floor by a few per cent.
+    vec3 X = normalize(vec3(V.z, 0.0, -V.x));
+    vec3 Y = cross(V, X);
+    for (int i = 0; i < slices; ++i) {
+        float phi = (float(i) + sliceNoise) * PI / float(slices);
+        vec3 T = cos(phi) * X + sin(phi) * Y;  // in the slice, perpendicular to V
+        // The slice's direction on the screen: where P + t T moves as t grows
+        // (the derivative of the projection; pixels are square).
+        vec2 omega = normalize(T.xy * -P.z + P.xy * T.z);
+        vec3 A = cross(T, V);                  // the slice plane's normal
+        vec3 Np = N - A * dot(N, A);
+        float len = length(Np);
+        if (len < 1e-6) continue;  // the normal is the slice's axis: the slice weighs |Np| = 0
+        float cosN = clamp(dot(Np, V) / len, -1.0, 1.0);
+        float n = (dot(Np, T) < 0.0 ? -1.0 : 1.0) * acos(cosN);
+        float low1 = cos(n + HALF_PI), low0 = cos(n - HALF_PI);
+        float hc1 = low1, hc0 = low0;
+        for (int j = 0; j < steps; ++j) {
+            float s = (float(j) + stepNoise) / float(steps);
+            float offset = s * s * screenRadius + gtao.minPixels;
+            vec3 S;
+            if (sampleAt(centre + omega * offset, S)) hc1 = updateHorizon(hc1, low1, P, V, S);
+            if (sampleAt(centre - omega * offset, S)) hc0 = updateHorizon(hc0, low0, P, V, S);
+        }
+        float h1 = acos(clamp(hc1, -1.0, 1.0));
+        float h0 = -acos(clamp(hc0, -1.0, 1.0));
+        h1 = n + min(h1 - n, HALF_PI);
+        h0 = n + max(h0 - n, -HALF_PI);
+        float sinN = sin(n);
+        visibility += len * 0.25 * ((cosN + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) +
+                                    (cosN + 2.0 * h1 * sinN - cos(2.0 * h1 - n)));
+    }
+    // Not clamped to 1: a slice's share |Np| a(phi) of an open hemisphere is
+    // cos n + n sin n times |Np|, above 1 for some directions and below for
+    // others, 1 only on average over phi; the shared filter averages the 4x4
+    // rotations and clamps (ssao/upsample.frag).
+    outVisibility = max(visibility / float(slices), 0.0);
+}

@@ -1,0 +1,27 @@
+// dw::GtaoMethod's parameters (shaders/ao/gtao.frag); see prelude.h.
+#ifndef DW_PARAMS_GTAO_H
+#define DW_PARAMS_GTAO_H
+#include "prelude.h"
+
+// The most slices and steps per side: gtao.slices's and gtao.steps's
+// maxima. At both, one pixel runs 16 x (1 + 2 x 32) = 1040 loop iterations,
+// far below Mesa's CPU budget of 65535 per invocation (renderer/gl/ShaderLoopLimit.h).
+DW_PARAM_CONST(int, GTAO_MAX_SLICES, 16)
+DW_PARAM_CONST(int, GTAO_MAX_STEPS, 32)
+
+#define DW_GTAO_PARAMS(FIELD, ARRAY)                                                         \
+    FIELD(ivec2, aoSize)       /* the AO target's size in pixels */                          \
+    FIELD(int, shift)          /* log2(frame size / AO size): 0 full, 1 half */              \
+    FIELD(int, slices)         /* gtao.slices */                                             \
+    FIELD(int, steps)          /* gtao.steps, per side of each slice */                      \
+    FIELD(float, radius)       /* world (view-space) radius */                               \
+    FIELD(float, falloff)      /* gtao.falloff: share of the radius over which a sample fades */ \
+    FIELD(float, thickness)    /* gtao.thickness: blend toward a lower horizon sample */     \
+    FIELD(float, pixelScale)   /* view-space length 1 at depth 1 in full-resolution pixels */ \
+    FIELD(float, minPixels)    /* the first step's least distance, in full-resolution pixels */ \
+    FIELD(float, pad0)                                                                       \
+    FIELD(float, pad1)
+DW_PARAM_BLOCK(GtaoParams, gtao, DW_GTAO_PARAMS)
+DW_PARAM_SIZE(GtaoParams, 48)
+
+#endif

@@ -1,0 +1,53 @@
+// The AO methods from the command line (issue 22): the renamed knob warns
+// and works, --buffer ao compares the filtered AO against the ray-traced AO,
+// and list knobs names every method.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "renderer/io/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+test::CommandResult run(const std::string& args) { return test::runWorkbench(args); }
+}  // namespace
+
+TEST(AoCli, TheOldKnobNameWorksWithAWarning) {
+    const fs::path dir = test::tempDir() / "ao-cli";
+    fs::create_directories(dir);
+    const auto r = run("render --scene spheres --size 32x18 --set ssao.enabled=false --set lighting.ambient_occlusion=ssao "
+                       "--timings --out " + (dir / "a.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: knob 'ssao.enabled' is now 'ao.enabled'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("warning: knob 'lighting.ambient_occlusion': value 'ssao' is now 'screen'"), std::string::npos)
+        << r.err;
+    // Once each, although the settings are applied more than once.
+    EXPECT_EQ(r.err.find("ssao.enabled", r.err.find("ssao.enabled") + 1), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("skipped: switched off (ao.enabled = false)"), std::string::npos) << r.out;
+}
+
+TEST(AoCli, ComparesEachMethodsAoAgainstTheRayTracedAo) {
+    const fs::path dir = test::tempDir() / "ao-cli";
+    fs::create_directories(dir);
+    for (const char* method : {"ssao", "gtao"}) {
+        const fs::path json = dir / (std::string(method) + ".json");
+        const auto r = run(std::string("compare --against reference --scene spheres --size 48x27 --ao-rays 16 --buffer ao "
+                                       "--warn 1 --fail 1 --cache-dir ") +
+                           (dir / "cache").string() + " --json " + json.string() + " --b ao.method=" + method);
+        ASSERT_EQ(r.code, 0) << method << r.err;
+        EXPECT_NE(r.out.find("ao.filtered"), std::string::npos) << r.out;
+        std::ifstream jf(json);
+        const auto j = nlohmann::json::parse(jf);
+        // The AO of spheres on a floor: near the truth, not equal to it.
+        EXPECT_GT(j["rms"].get<double>(), 0.0) << method;
+        EXPECT_LT(j["rms"].get<double>(), 0.25) << method;
+    }
+    const auto knobs = run("list knobs");
+    for (const char* k : {"ao.method", "ao.enabled", "gtao.slices", "gtao.steps", "gtao.radius", "gtao.thickness"})
+        EXPECT_NE(knobs.out.find(k), std::string::npos) << k;
+}

@@ -1,0 +1,81 @@
+// Renamed knobs and values (issue 22): ssao.enabled is ao.enabled and
+// lighting.ambient_occlusion's value ssao is screen; the old spellings still
+// set the new knob from --set, a scene's settings and a preset, each time
+// with a warning that names both. No GL.
+#include <gtest/gtest.h>
+
+#include "renderer/Error.h"
+#include "renderer/RunConfig.h"
+#include "renderer/knobs/Preset.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+// Collects the alias warnings while it lives.
+struct Warnings {
+    std::vector<std::string> said;
+    KnobRegistry::WarningHandler previous;
+    Warnings() {
+        previous = KnobRegistry::setWarningHandler([this](const std::string& w) { said.push_back(w); });
+    }
+    ~Warnings() { KnobRegistry::setWarningHandler(previous); }
+    bool contains(const std::string& text) const {
+        for (const auto& w : said)
+            if (w.find(text) != std::string::npos) return true;
+        return false;
+    }
+};
+
+bool flag(const KnobRegistry& k, const std::string& name) { return k.value(*k.find(name)) != 0.0; }
+
+}  // namespace
+
+TEST(KnobAlias, TheOldKnobNameSetsTheNewOneAndWarns) {
+    KnobRegistry k = RunConfig::declaredKnobs();
+    Warnings w;
+    ASSERT_TRUE(flag(k, "ao.enabled"));
+    k.applyAssignment("ssao.enabled=false");
+    EXPECT_FALSE(flag(k, "ao.enabled"));
+    ASSERT_EQ(w.said.size(), 1u);
+    EXPECT_EQ(w.said[0], "knob 'ssao.enabled' is now 'ao.enabled' (AO has several methods now, chosen by ao.method); "
+                         "the old name still works");
+    EXPECT_FALSE(k.find("ssao.enabled"));  // not a knob of its own
+    // A bad value under the old name is refused under the new one's rules.
+    EXPECT_THROW(k.applyAssignment("ssao.enabled=maybe"), Error);
+}
+
+TEST(KnobAlias, TheOldValueSetsTheNewOneAndWarns) {
+    KnobRegistry k = RunConfig::declaredKnobs();
+    Warnings w;
+    k.applyAssignment("lighting.ambient_occlusion=ssao");
+    EXPECT_EQ(k.format(*k.find("lighting.ambient_occlusion")), "screen");
+    EXPECT_TRUE(w.contains("knob 'lighting.ambient_occlusion': value 'ssao' is now 'screen'"));
+    w.said.clear();
+    k.applyAssignment("lighting.ambient_occlusion=baked");  // no alias, no warning
+    EXPECT_TRUE(w.said.empty());
+}
+
+TEST(KnobAlias, ASceneOrPresetNamingTheOldKnobWorks) {
+    const KnobRegistry declared = RunConfig::declaredKnobs();
+    Warnings w;
+    Scene scene;
+    scene.name = scene.source = "old-names.json";
+    scene.settings = {{"ssao.enabled", "false"}, {"lighting.ambient_occlusion", "ssao"}};
+    KnobRegistry k = declared;
+    RunConfig run;
+    run.applyKnobs(k, scene);
+    EXPECT_FALSE(flag(k, "ao.enabled"));
+    EXPECT_EQ(k.format(*k.find("lighting.ambient_occlusion")), "screen");
+    EXPECT_TRUE(w.contains("'ssao.enabled' is now 'ao.enabled'"));
+
+    const Preset preset = Preset::fromJson(R"({"name": "old", "knobs": {"ssao.enabled": false, "ssao.samples": 8}})",
+                                           "old.json");
+    KnobRegistry p = declared;
+    const Preset::ApplyReport r = preset.applyKnobs(p);
+    EXPECT_TRUE(r.ignored.empty());
+    EXPECT_EQ(r.applied, 2);
+    EXPECT_FALSE(flag(p, "ao.enabled"));
+    EXPECT_EQ(p.value(*p.find("ssao.samples")), 8.0);
+}
