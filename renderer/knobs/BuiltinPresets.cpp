@@ -41,6 +41,14 @@ const std::vector<Preset>& builtinPresets() {
                 {{"ao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
                  {"ssao.radius", ssao[i][2]}, {"ssao.radius_unit", "world"}, {"ssao_blur.mode", "bilateral"},
                  {"ssao_blur.width", ssao[i][3]}});
+        // Seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, at w x h, w/2, w/4.
+        const char* aov[3] = {"full", "half", "quarter"};
+        for (int i = 0; i < 3; ++i)
+            add("AOV" + std::to_string(i + 1),
+                std::string("seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, ") + aov[i] +
+                    " resolution",
+                {{"ao.enabled", "true"}, {"ao.method", "aov"}, {"aov.radius", "1"}, {"aov.falloff", "1"},
+                 {"aov.resolution", aov[i]}});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
             {{"lighting.threshold", "0.0009765625"}}, {"lighting"});

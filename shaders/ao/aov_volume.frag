@@ -121,8 +121,15 @@ float triangleOcclusion(vec3 P, vec3 N) {
     q[0] = gA - P;
     q[1] = gB - P;
     q[2] = gC - P;
+    // A triangle wholly within delta of P (the small triangles of a
+    // tessellated surface, the common case) needs no cut by the disc below.
+    float r2 = delta * delta;
+    bool withinDelta = dot(q[0], q[0]) <= r2 && dot(q[1], q[1]) <= r2 && dot(q[2], q[2]) <= r2;
     // What P can see: the part above its tangent plane.
     int count = clipPolygon(q, 3, N, 0.0);
+    if (count < 3) return 0.0;
+    float weight = pow(planeWeight(h / delta), aov.falloff);
+    if (withinDelta) return polygonFormFactor(q, count, N) * weight;
     // What lies within delta of P: the disc of radius sqrt(delta^2 - h^2) about
     // P's foot on the plane (at -h gN from P), as the octagon of the same area.
     vec3 t1 = normalize(abs(gN.x) < 0.9 ? cross(gN, vec3(1.0, 0.0, 0.0)) : cross(gN, vec3(0.0, 1.0, 0.0)));
@@ -134,7 +141,7 @@ float triangleOcclusion(vec3 P, vec3 N) {
         count = clipPolygon(q, count, -m, -disc);
     }
     if (count < 3) return 0.0;
-    return polygonFormFactor(q, count, N) * pow(planeWeight(h / delta), aov.falloff);
+    return polygonFormFactor(q, count, N) * weight;
 }
 
 void main() {

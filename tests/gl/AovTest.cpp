@@ -91,6 +91,31 @@ TEST(Aov, AnOpenPlaneIsNotOccluded) {
     }
 }
 
+// The transparency issue's rule: blended triangles cast no occlusion volume
+// (the reference's blended surfaces occlude no AO either); the same box as
+// MASK does.
+TEST(Aov, BlendedTrianglesCastNoVolume) {
+    auto s = test::makeSession(kW, kH);
+    for (AlphaMode mode : {AlphaMode::Blend, AlphaMode::Mask}) {
+        Scene scene = withAmbient(test::planeScene(40.0f));
+        Material glass = scene.materials[0];
+        glass.alphaMode = mode;
+        glass.baseColor.a = 0.5f;
+        const int material = scene.addMaterial(glass);
+        Mesh box = shapes::box({2.0f, 1.0f, 2.0f});
+        box.material = material;
+        scene.instances.push_back({scene.addMesh(std::move(box)), glm::translate(glm::mat4(1.0f), {0.0f, 0.8f, 0.0f})});
+        s->setScene(std::move(scene));
+        useAov(*s);
+        s->render({{"ao.raw"}});
+        const auto ao = test::stats(s->readRaw("ao.raw"), 0);
+        if (mode == AlphaMode::Blend)
+            EXPECT_EQ(ao.min, 1.0) << "a blended box occludes nothing";
+        else
+            EXPECT_LT(ao.min, 0.8) << "a MASK box occludes the floor below it";
+    }
+}
+
 // A wall (0.4 x 4 x 20) standing on the floor: the floor at distance x from
 // the wall and the wall at height y above the floor, both within R = 1.
 TEST(Aov, ARightAngleCornerApproachesTheRayTracedValue) {
