@@ -40,6 +40,13 @@ public:
         (void)knobs;
         return output.resource;
     }
+    // Whether an own output exists under the knobs while the method is
+    // chosen (GTAO's gtao.noisy only with its own denoise); by default all.
+    virtual bool allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
+        (void)output;
+        (void)knobs;
+        return true;
+    }
     // What it reads besides nothing: by default gbuffer.depth and gbuffer.normal.
     virtual std::vector<std::string> inputs(const KnobRegistry& knobs) const {
         (void)knobs;

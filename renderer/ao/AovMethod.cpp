@@ -16,16 +16,16 @@ static_assert(GpuScene::kOcclusionUnit < kDepthUnit);
 }  // namespace
 
 AovMethod::AovMethod(KnobRegistry& knobs) {
-    radius_ = knobs.addFloat("aov.radius", 1.0, 0.01, 20.0, "ao",
+    radius_ = knobs.addFloat("aov.radius", 1.0, 0.01, 20.0, "aov",
                              "AOV: how far a triangle's occlusion volume reaches (delta, world units; seed 000 "
                              "table 6.5: 1); larger volumes cover more pixels (overdraw)",
                              "units", true, true);
-    falloff_ = knobs.addFloat("aov.falloff", 1.0, 0.0, 8.0, "ao",
+    falloff_ = knobs.addFloat("aov.falloff", 1.0, 0.0, 8.0, "aov",
                               "AOV: exponent k on the distance weight w^k, w the ray-traced AO's 1 / (1 + (d/R)^2) "
                               "averaged over the triangle's part within aov.radius (seed 000 table 6.5: 1, the "
                               "reference's weight; 0: every direction within the radius counts fully)");
     // In the order of the shift to the AO size: the choice's index is the shift.
-    resolution_ = knobs.addEnum("aov.resolution", {"full", "half", "quarter"}, "half", "ao",
+    resolution_ = knobs.addEnum("aov.resolution", {"full", "half", "quarter"}, "half", "aov",
                                 "AOV: accessibility buffer size, w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.5)", true);
 }
 

@@ -9,30 +9,33 @@
 namespace dw {
 
 GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
-    slices_ = knobs.addInt("gtao.slices", 3, 1, gpu::GTAO_MAX_SLICES, "ao",
-                           "gtao: screen-space slices (directions) per pixel, rotated per pixel in a 4x4 pattern "
+    slices_ = knobs.addInt("gtao.slices", 3, 1, gpu::GTAO_MAX_SLICES, "gtao",
+                           "screen-space slices (directions) per pixel, rotated per pixel in a 4x4 pattern "
                            "(XeGTAO: 1 low, 2 medium, 3 high, 9 ultra)", "", true);
-    steps_ = knobs.addInt("gtao.steps", 3, 1, gpu::GTAO_MAX_STEPS, "ao",
-                          "gtao: depth samples per side of each slice (XeGTAO: 2 low and medium, 3 high and ultra)", "",
+    steps_ = knobs.addInt("gtao.steps", 3, 1, gpu::GTAO_MAX_STEPS, "gtao",
+                          "depth samples per side of each slice (XeGTAO: 2 low and medium, 3 high and ultra)", "",
                           true);
-    radius_ = knobs.addFloat("gtao.radius", 1.0, 0.01, 20.0, "ao",
-                             "gtao: the world-space radius the horizon search covers, in gtao.radius_unit", "units", false,
+    radius_ = knobs.addFloat("gtao.radius", 1.0, 0.01, 20.0, "gtao",
+                             "the world-space radius the horizon search covers, in gtao.radius_unit", "units", false,
                              true);
-    radiusUnit_ = knobs.addEnum("gtao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ao",
-                                "gtao: world: gtao.radius in world units; scene_fraction: in the scene's power-of-ten "
+    radiusUnit_ = knobs.addEnum("gtao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "gtao",
+                                "world: gtao.radius in world units; scene_fraction: in the scene's power-of-ten "
                                 "unit, as ssao.radius_unit");
-    falloff_ = knobs.addFloat("gtao.falloff", 0.0, 0.0, 1.0, "ao",
-                              "gtao: share of the radius over which a sample's weight falls linearly to 0 at the radius "
+    falloff_ = knobs.addFloat("gtao.falloff", 0.0, 0.0, 1.0, "gtao",
+                              "share of the radius over which a sample's weight falls linearly to 0 at the radius "
                               "(XeGTAO uses 0.615); 0, the default: a hard cut at the radius, as the ray-traced AO has (closest to it, docs/ao.md)");
-    thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "ao",
-                                "gtao: thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
+    thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "gtao",
+                                "thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
                                 "back towards a lower sample per step; 0 takes every occluder as infinitely thick");
-    resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "ao",
-                                "gtao: ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
-    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "off"}, "shared", "ao",
-                             "gtao: spatial denoise of the 4x4 noise pattern: shared (the cross-bilateral filter "
-                             "ssao_blur.*) or off (ao.raw only upsampled)");
+    resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "gtao",
+                                "ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
+    denoise_ = knobs.addEnum("gtao.denoise", {"shared", "edge_aware", "off"}, "shared", "gtao",
+                             "spatial denoise of the 4x4 rotation pattern: shared (the cross-bilateral filter "
+                             "ssao_blur.*), edge_aware (GTAO's own 5x5 filter weighted by the distance from the "
+                             "pixel's tangent plane and the normals, as XeGTAO's denoiser; gtao.noisy before it) "
+                             "or off (ao.raw only upsampled)");
     shared_ = knobs.choiceIndex(denoise_, "shared");
+    edgeAware_ = knobs.choiceIndex(denoise_, "edge_aware");
 }
 
 std::string GtaoMethod::description() const {
@@ -45,6 +48,18 @@ std::vector<std::string> GtaoMethod::knobNames() const {
             "gtao.resolution", "gtao.denoise"};
 }
 
+std::vector<OutputDecl> GtaoMethod::outputs() const {
+    return {{"gtao.noisy", OutputKind::Scalar,
+             "GTAO's visibility before its edge-aware denoise (gtao.denoise = edge_aware; R16F, at gtao.resolution)",
+             texture2D(GL_R16F), 1}};
+}
+
+ResourceDesc GtaoMethod::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    d.shift = resolutionShift(knobs);
+    return d;
+}
+
 float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
     const float r = knobs.get(radius_);
     return knobs.choice(radiusUnit_) == "world" ? r : r * static_cast<float>(sceneLengthUnit(bounds));
@@ -52,6 +67,7 @@ float GtaoMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) c
 
 void GtaoMethod::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao.frag"});
+    denoiseProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/gtao_denoise.frag"});
     linearDepth_ = gl::Sampler::create(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, "gtao linear depth");
     params_.create();
 }
@@ -71,14 +87,24 @@ void GtaoMethod::run(FrameContext& ctx) {
     // viewport's height times the projection's y scale.
     p.pixelScale = 0.5f * static_cast<float>(ctx.height) * ctx.camera.projection[1][1];
     p.minPixels = 1.3f;  // XeGTAO's "pixel too close" threshold: never the pixel itself
+    // Edge-aware denoise: a neighbour 2% of the depth off the tangent plane weighs 1/e.
+    p.denoisePlane = 0.02f;
     params_.upload(p, binding::kPassUbo);
     ctx.texture("gbuffer.depth").bind(0);
     linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
     ctx.texture("gbuffer.normal").bind(1);
     glViewport(0, 0, p.aoSize.x, p.aoSize.y);
-    target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
+    const bool edgeAware = k.get(denoise_) == edgeAware_;
+    (edgeAware ? noisyTarget_.get(ctx, {"gtao.noisy"}, {}, "GTAO noisy") : target_.get(ctx, {"ao.raw"}, {}, "GTAO")).bind();
     program_->use();
     triangle_.draw();
+    if (edgeAware) {
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        ctx.texture("gtao.noisy").bind(2);
+        target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
+        denoiseProgram_->use();
+        triangle_.draw();
+    }
     char line[160];
     std::snprintf(line, sizeof line, "%d slices x %d steps per side at %dx%d, radius %.4g world units, %s denoise",
                   p.slices, p.steps, p.aoSize.x, p.aoSize.y, p.radius, k.choice(denoise_).c_str());

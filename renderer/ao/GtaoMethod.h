@@ -5,8 +5,9 @@
 // gtao.slices screen-space slices, gtao.steps depth samples per side, the
 // paper's closed-form cosine-weighted visibility (shaders/ao/gtao.frag).
 // Reads gbuffer.depth and gbuffer.normal; writes ao.raw at gtao.resolution
-// (full or half). Denoised by the shared cross-bilateral filter (ssao_blur.*)
-// or not at all (gtao.denoise).
+// (full or half). Denoised (gtao.denoise) by the shared cross-bilateral
+// filter (ssao_blur.*), by its own edge-aware 5x5 filter
+// (shaders/ao/gtao_denoise.frag, from gtao.noisy into ao.raw), or not at all.
 #include <glm/glm.hpp>
 
 #include "renderer/ao/AoMethod.h"
@@ -29,6 +30,11 @@ public:
     std::vector<std::string> knobNames() const override;
     int resolutionShift(const KnobRegistry& knobs) const override { return knobs.get(resolution_); }
     bool sharedBlur(const KnobRegistry& knobs) const override { return knobs.get(denoise_) == shared_; }
+    std::vector<OutputDecl> outputs() const override;
+    ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
+    bool allocates(const OutputDecl&, const KnobRegistry& knobs) const override {
+        return knobs.get(denoise_) == edgeAware_;
+    }
     void setup(gl::ShaderLibrary& shaders) override;
     void run(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
@@ -41,12 +47,12 @@ private:
     IntKnob slices_, steps_;
     FloatKnob radius_, falloff_, thickness_;
     EnumKnob radiusUnit_, resolution_, denoise_;
-    int shared_ = 0;
-    gl::ShaderLibrary::Handle program_;
+    int shared_ = 0, edgeAware_ = 0;
+    gl::ShaderLibrary::Handle program_, denoiseProgram_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::GtaoParams> params_;
     gl::Sampler linearDepth_;
-    TargetFramebuffer target_;
+    TargetFramebuffer target_, noisyTarget_;
     std::string stats_;
 };
 

@@ -18,23 +18,23 @@ float hash01(std::uint32_t x) { return hashToUnit(x); }
 }  // namespace
 
 SsaoMethod::SsaoMethod(KnobRegistry& knobs) {
-    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ao",
+    samples_ = knobs.addInt("ssao.samples", 16, 4, gpu::SSAO_MAX_SAMPLES, "ssao",
                             "kernel samples per pixel (seed 000: 8 low, 16 average, 32 high)", "", true);
-    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ao",
+    radius_ = knobs.addFloat("ssao.radius", 1.0, 0.01, 20.0, "ssao",
                              "radius of the sampling hemisphere, in ssao.radius_unit (the inspector gives it in world units)",
                              "units", false, true);
-    radiusUnit_ = knobs.addEnum("ssao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ao",
+    radiusUnit_ = knobs.addEnum("ssao.radius_unit", {"world", "scene_fraction"}, "scene_fraction", "ssao",
                                 "world: ssao.radius in world units (seed 000's SSAO1-5 presets); scene_fraction: in "
                                 "units of the scene's size, 10^round(log10(R / 10)) for a bounding radius R, so a model "
                                 "authored in millimetres or kilometres gets the AO it would get in metres (1 for scenes of "
                                 "radius 3.2 to 32)");
-    intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
-    bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ao",
+    intensity_ = knobs.addFloat("ssao.intensity", 1.0, 0.0, 4.0, "ssao", "scale of the occlusion: AO = 1 - intensity x mean occlusion");
+    bias_ = knobs.addFloat("ssao.bias", 0.025, 0.0, 0.5, "ssao",
                            "depth tolerance before a sample counts as occluded, as a fraction of the radius");
-    rangeCheck_ = knobs.addBool("ssao.range_check", true, "ao",
+    rangeCheck_ = knobs.addBool("ssao.range_check", true, "ssao",
                                 "fade occluders much nearer the camera than the point (depth discontinuities)");
     // In the order of the shift to the AO size: the choice's index is the shift.
-    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ao",
+    resolution_ = knobs.addEnum("ssao.resolution", {"full", "half", "quarter"}, "half", "ssao",
                                 "AO buffer size: w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.4)", true);
 }
 

@@ -1,6 +1,6 @@
 // The presets that ship with the workbench, in knob values: the quality
-// levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4, and
-// light-volume thresholds. Render size is not a knob (it follows the window,
+// levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4,
+// GTAO at XeGTAO's quality levels, and light-volume thresholds. Render size is not a knob (it follows the window,
 // or render --size), so the seed's resolutions are only named in descriptions.
 // The quality levels cover every knob group (what they do not name goes back
 // to its default); the light-volume presets cover only "lighting", so they
@@ -41,14 +41,27 @@ const std::vector<Preset>& builtinPresets() {
                 {{"ao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
                  {"ssao.radius", ssao[i][2]}, {"ssao.radius_unit", "world"}, {"ssao_blur.mode", "bilateral"},
                  {"ssao_blur.width", ssao[i][3]}});
+        // GTAO at XeGTAO's quality levels (slices x steps per side: low 1 x 2,
+        // medium 2 x 2, high 3 x 3, ultra 9 x 3), full size. They cover only
+        // the ao and gtao groups, so they combine with a quality level.
+        const char* gtao[4][3] = {{"low", "1", "2"}, {"medium", "2", "2"}, {"high", "3", "3"}, {"ultra", "9", "3"}};
+        for (const auto& g : gtao)
+            add(std::string("GTAO ") + g[0],
+                std::string("GTAO at XeGTAO's ") + g[0] + " level: " + g[1] + " slices x " + g[2] +
+                    " steps per side, full size, the shared bilateral blur",
+                {{"ao.enabled", "true"}, {"ao.method", "gtao"}, {"gtao.slices", g[1]}, {"gtao.steps", g[2]},
+                 {"gtao.resolution", "full"}, {"gtao.denoise", "shared"}},
+                {"ao", "gtao"});
         // Seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, at w x h, w/2, w/4.
+        // Like the GTAO levels they cover only the ao and aov groups.
         const char* aov[3] = {"full", "half", "quarter"};
         for (int i = 0; i < 3; ++i)
             add("AOV" + std::to_string(i + 1),
                 std::string("seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, ") + aov[i] +
                     " resolution",
                 {{"ao.enabled", "true"}, {"ao.method", "aov"}, {"aov.radius", "1"}, {"aov.falloff", "1"},
-                 {"aov.resolution", aov[i]}});
+                 {"aov.resolution", aov[i]}},
+                {"ao", "aov"});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
             {{"lighting.threshold", "0.0009765625"}}, {"lighting"});

@@ -10,13 +10,13 @@
 namespace dw {
 
 AoFilterPass::AoFilterPass(KnobRegistry& knobs) {
-    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ao_filter",
+    mode_ = knobs.addEnum("ssao_blur.mode", {"bilateral", "gaussian", "off"}, "bilateral", "ssao_blur",
                           "cross-bilateral (keeps occlusion from leaking across depth edges), plain gaussian, or none");
     off_ = knobs.choiceIndex(mode_, "off");
     defines_ = knobs.choiceDefines(mode_);
-    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ao_filter",
+    width_ = knobs.addInt("ssao_blur.width", 15, 1, 61, "ssao_blur",
                           "kernel width in AO pixels (seed 002 uses up to 61); taps = 2 x (width / 2) + 1", "px", true);
-    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ao_filter",
+    delta_ = knobs.addFloat("ssao_blur.delta", 0.05, 1e-4, 10.0, "ssao_blur",
                             "delta in the weight 1 / (delta + |d_center - d_current|) (eq. 4.7), in scene units of depth",
                             "units", false, true);
 }
@@ -39,15 +39,16 @@ void AoFilterPass::execute(FrameContext& ctx) {
     const gl::Texture& depth = ctx.texture("gbuffer.depth");
     const int w = raw.width(), h = raw.height();
     // The method that wrote ao.raw may have denoised it itself (none: the filter run alone).
+    // Either way the upsampling stays depth-aware when ssao_blur.mode is bilateral.
     const bool blur = !ctx.aoMethod || ctx.aoMethod->sharedBlur(k);
-    const int mode = blur ? k.get(mode_) : off_;
+    const int mode = k.get(mode_);
     const int radius = k.get(width_) / 2;
     gpu::SsaoBlurParams p{};
     p.mode = mode;
     p.aoSize = {w, h};
     p.delta = k.get(delta_);
     const gl::Texture* source = &raw;
-    if (mode != off_ && radius > 0) {
+    if (blur && mode != off_ && radius > 0) {
         for (int i = 0; i < 2; ++i)
             if (!temp_[i] || temp_[i].width() != w || temp_[i].height() != h) {
                 temp_[i] = gl::Texture::create2D(GL_R16F, w, h);
@@ -76,8 +77,10 @@ void AoFilterPass::execute(FrameContext& ctx) {
     full_.get(ctx, {"ao.filtered"}, {}, "AO filtered").bind();
     upsample_->use();
     triangle_.draw();
-    stats_ = (mode == off_ ? std::string(blur ? "no" : "no shared (the method's own denoise)") : k.choice(mode_)) + " blur, " + std::to_string(2 * radius + 1) + " taps" +
-             (w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "");
+    const std::string upsampled = w != ctx.width ? ", upsampled from " + std::to_string(w) + "x" + std::to_string(h) : "";
+    if (!blur) stats_ = "no shared blur (the method denoised, or asked for none)" + upsampled;
+    else if (mode == off_ || radius == 0) stats_ = "no blur" + upsampled;
+    else stats_ = k.choice(mode_) + " blur, " + std::to_string(2 * radius + 1) + " taps" + upsampled;
 }
 
 }  // namespace dw

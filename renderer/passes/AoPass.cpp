@@ -55,7 +55,7 @@ ResourceDesc AoPass::resource(const OutputDecl& output, const KnobRegistry& knob
 
 bool AoPass::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
     const AoMethod* m = ownerOf(output.name);
-    return !m || m == &method(knobs);
+    return !m || (m == &method(knobs) && m->allocates(output, knobs));
 }
 
 PassIO AoPass::inputs(const KnobRegistry& knobs) const {
@@ -84,7 +84,8 @@ void AoPass::execute(FrameContext& ctx) {
     chosen.run(ctx);
     ctx.aoMethod = &chosen;
     std::set<std::string> written{"ao.raw"};
-    for (const auto& o : chosen.outputs()) written.insert(o.name);
+    for (const auto& o : chosen.outputs())
+        if (chosen.allocates(o, ctx.knobs)) written.insert(o.name);
     ctx.outputs.markProduced(name(), written);
     stats_ = std::string(chosen.name()) + ": " + chosen.stats();
 }

@@ -62,7 +62,9 @@ float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
 
 void main() {
     ivec2 aoPx = ivec2(gl_FragCoord.xy);
-    ivec2 px = min(aoPx << gtao.shift, ivec2(camera.viewport.xy) - 1);
+    // The full-resolution pixel this AO pixel stands for: the one at its
+    // centre, as the upsampling takes it (ssao/upsample.frag).
+    ivec2 px = min((aoPx << gtao.shift) + ((1 << gtao.shift) >> 1), ivec2(camera.viewport.xy) - 1);
     float depth = texelFetch(uDepth, px, 0).r;
     if (isFarDepth(depth)) {
         outVisibility = 1.0;

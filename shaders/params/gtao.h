@@ -19,7 +19,7 @@ DW_PARAM_CONST(int, GTAO_MAX_STEPS, 32)
     FIELD(float, thickness)    /* gtao.thickness: blend toward a lower horizon sample */     \
     FIELD(float, pixelScale)   /* view-space length 1 at depth 1 in full-resolution pixels */ \
     FIELD(float, minPixels)    /* the first step's least distance, in full-resolution pixels */ \
-    FIELD(float, pad0)                                                                       \
+    FIELD(float, denoisePlane) /* edge-aware denoise: plane distance (x depth) of weight 1/e */ \
     FIELD(float, pad1)
 DW_PARAM_BLOCK(GtaoParams, gtao, DW_GTAO_PARAMS)
 DW_PARAM_SIZE(GtaoParams, 48)

@@ -36,9 +36,10 @@ TEST(AoCli, ComparesEachMethodsAoAgainstTheRayTracedAo) {
     fs::create_directories(dir);
     for (const char* method : {"ssao", "gtao"}) {
         const fs::path json = dir / (std::string(method) + ".json");
-        const auto r = run(std::string("compare --against reference --scene spheres --size 48x27 --ao-rays 16 --buffer ao "
-                                       "--warn 1 --fail 1 --cache-dir ") +
-                           (dir / "cache").string() + " --json " + json.string() + " --b ao.method=" + method);
+        const auto r = test::runCommand("DW_REFERENCE_CACHE=" + (dir / "cache").string() + " " + DW_WORKBENCH_BINARY +
+                                        std::string(" compare --against reference --scene spheres --size 48x27 --ao-rays 16 "
+                                                    "--buffer ao --warn 1 --fail 1 --json ") +
+                                        json.string() + " --b ao.method=" + method);
         ASSERT_EQ(r.code, 0) << method << r.err;
         EXPECT_NE(r.out.find("ao.filtered"), std::string::npos) << r.out;
         std::ifstream jf(json);

@@ -222,7 +222,7 @@ TEST(ChangeCost, ThePipelineKnowsWhichPassesReadEachKnob) {
     KnobRegistry knobs;
     Pipeline pipeline(knobs);
     auto readers = [&](const std::string& knob) { return pipeline.knobReaders(*knobs.find(knob)); };
-    EXPECT_EQ(readers("ssao.samples"), std::set<std::string>{"ssao"});
+    EXPECT_EQ(readers("ssao.samples"), std::set<std::string>{"ao"});
     // Declared by the light table pass, though its group is "lighting".
     EXPECT_EQ(readers("lighting.threshold"), std::set<std::string>{"lights"});
     // Looked up by other passes: bloom (upstream of tonemap) reads tonemap.nan_guard.
@@ -233,11 +233,11 @@ TEST(ChangeCost, ThePipelineKnowsWhichPassesReadEachKnob) {
     EXPECT_TRUE(readers("depth.mode").count("*")) << "the camera every pass uses";
     // With the pass edges: an SSAO change cannot reach the geometry or the light table.
     const std::set<std::string> ssao = passesReachedBy(pipeline, {*knobs.find("ssao.samples")});
-    EXPECT_TRUE(ssao.count("ssao") && ssao.count("ssao_blur") && ssao.count("lighting") && ssao.count("tonemap"));
+    EXPECT_TRUE(ssao.count("ao") && ssao.count("ao_filter") && ssao.count("lighting") && ssao.count("tonemap"));
     EXPECT_FALSE(ssao.count("geometry") || ssao.count("lights") || ssao.count("shadows") || ssao.count("skybox"));
     EXPECT_EQ(passesReachedBy(pipeline, {*knobs.find("depth.mode")}).size(), pipeline.passList().size());
     // lighting.threshold reaches the light table and what follows it, not the G-buffer or SSAO.
     const std::set<std::string> threshold = passesReachedBy(pipeline, {*knobs.find("lighting.threshold")});
     EXPECT_TRUE(threshold.count("lights") && threshold.count("shadows") && threshold.count("lighting"));
-    EXPECT_FALSE(threshold.count("geometry") || threshold.count("ssao"));
+    EXPECT_FALSE(threshold.count("geometry") || threshold.count("ao"));
 }
