@@ -43,8 +43,10 @@ std::vector<OutputDecl> AovMethod::outputs() const {
                         texture2D(GL_R32UI), 1};
     overdraw.onDemand = true;
     return {
-        {"aov.depth", OutputKind::Depth, "AOV: gbuffer.depth at the accessibility buffer's size (the volumes' depth test)",
-         texture2D(GL_DEPTH_COMPONENT32F), 1},
+        {"aov.depth", OutputKind::Depth,
+         "AOV: gbuffer.depth at the accessibility buffer's size (the volumes' depth test), stencil 1 on surfaces "
+         "(DEPTH32F_STENCIL8)",
+         texture2D(GL_DEPTH32F_STENCIL8), 1},
         {"aov.occlusion", OutputKind::Scalar,
          "AOV: summed occlusion of the volumes covering the pixel, before 1 - clamp (R32F, at the AO size)",
          texture2D(GL_R32F), 1},
@@ -86,11 +88,18 @@ void AovMethod::run(FrameContext& ctx) {
     const DepthConvention depth = ctx.depth();
     glViewport(0, 0, w, h);
 
-    // 1. gbuffer.depth at the AO size, for the volumes' depth test.
+    // 1. gbuffer.depth at the AO size, for the volumes' depth test, and
+    // stencil 1 where there is a surface: the sky's pixels (cleared to 0)
+    // then shade no volume.
     depthTarget_.get(ctx, {}, "aov.depth", "AOV depth").bind();
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, depth.farDepth(), 0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     ctx.texture("gbuffer.depth").bind(0);
     depthCopy_->use();
     triangle_.draw();
@@ -105,6 +114,9 @@ void AovMethod::run(FrameContext& ctx) {
         overdraw.bindImage(0, GL_READ_WRITE);
     }
     glDepthMask(GL_FALSE);
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0);
     glEnable(GL_DEPTH_CLAMP);  // back faces past the far plane still count
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
@@ -128,6 +140,8 @@ void AovMethod::run(FrameContext& ctx) {
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
     glDepthMask(GL_TRUE);
     if (countOverdraw) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 

@@ -25,7 +25,8 @@
 #include "../common/gbuffer.glsl"
 #include "../params/aov.h"
 
-// Count only fragments that pass the depth test against aov.depth.
+// Count only fragments that pass the depth and stencil tests against aov.depth
+// (the stencil keeps the sky's pixels out).
 layout(early_fragment_tests) in;
 
 // Units 11 and 12: GpuScene::drawEach binds the materials' textures to 0-3 and 10.
