@@ -81,6 +81,9 @@ void AoPass::execute(FrameContext& ctx) {
             for (const auto& o : m->outputs())
                 if (ctx.wants(o.name))
                     throw Error(o.name + " is written only with ao.method=" + m->name() + " (now " + chosen.name() + ")");
+    for (const auto& o : chosen.outputs())
+        if (ctx.wants(o.name) && !chosen.allocates(o, ctx.knobs))
+            throw Error(o.name + " is not written under the current knobs: " + o.description);
     chosen.run(ctx);
     ctx.aoMethod = &chosen;
     std::set<std::string> written{"ao.raw"};

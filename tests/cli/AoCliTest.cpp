@@ -52,3 +52,20 @@ TEST(AoCli, ComparesEachMethodsAoAgainstTheRayTracedAo) {
     for (const char* k : {"ao.method", "ao.enabled", "gtao.slices", "gtao.steps", "gtao.radius", "gtao.thickness"})
         EXPECT_NE(knobs.out.find(k), std::string::npos) << k;
 }
+
+TEST(AoCli, AMethodsOwnBufferIsWrittenOnlyUnderItsKnobs) {
+    const fs::path dir = test::tempDir() / "ao-cli";
+    fs::create_directories(dir);
+    const std::string common = "render --scene spheres --size 32x18 --buffer gtao.noisy --out " + (dir / "n.exr").string();
+    auto r = run(common);
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("gtao.noisy is written only with ao.method=gtao (now ssao)"), std::string::npos) << r.err;
+    r = run(common + " --set ao.method=gtao");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("gtao.noisy is not written under the current knobs"), std::string::npos) << r.err;
+    r = run(common + " --set ao.method=gtao --set gtao.denoise=edge_aware");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const FloatImage noisy = loadImageFloat((dir / "n.exr").string());
+    EXPECT_EQ(noisy.width, 32);  // gtao.resolution = full
+    EXPECT_GT(test::stats(noisy, 0).max, 0.0);
+}
