@@ -1,5 +1,6 @@
 // The built-in AO methods, one line each; the first is the default of ao.method.
 #include "renderer/ao/AoMethod.h"
+#include "renderer/ao/AovMethod.h"
 #include "renderer/ao/GtaoMethod.h"
 #include "renderer/ao/SsaoMethod.h"
 
@@ -16,6 +17,7 @@ std::vector<AoMethodFactory> builtinAoMethods() {
     return {
         make<SsaoMethod>(),
         make<GtaoMethod>(),
+        make<AovMethod>(),
     };
 }
 

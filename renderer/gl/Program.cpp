@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
 
 namespace dw::gl {
@@ -35,6 +37,44 @@ std::string infoLog(GLuint object, bool isProgram) {
     return log;
 }
 
+// A link log names stages ("geometry shader output `vNormal' ..."), not files
+// or lines: each line that names a stage gets that stage's file and, when it
+// quotes an identifier (Mesa's `name'), the line of the identifier's first
+// occurrence in that stage's sources, so a geometry shader's link error is
+// found as its compile errors are.
+std::string mapLinkLog(const std::string& log, const std::vector<ShaderStage>& stages) {
+    std::istringstream in(log);
+    std::ostringstream out;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        const ShaderStage* named = nullptr;
+        size_t at = std::string::npos;
+        for (const auto& stage : stages) {
+            const size_t pos = line.find(std::string(stageName(stage.type)) + " shader");
+            if (pos != std::string::npos && pos < at) {
+                at = pos;
+                named = &stage;
+            }
+        }
+        if (!named) {
+            out << line << "\n";
+            continue;
+        }
+        std::string where = named->source.mainFile().string();
+        static const std::regex quoted(R"([`'"]([A-Za-z_][A-Za-z0-9_]*)')");
+        std::smatch m;
+        if (std::regex_search(line, m, quoted)) {
+            const auto found = named->source.locate(m[1].str());
+            if (found.line > 0) where = found.file.string() + ":" + std::to_string(found.line);
+        }
+        out << where << ": " << line << "\n";
+    }
+    std::string s = out.str();
+    if (!s.empty() && s.back() == '\n') s.pop_back();
+    return s;
+}
+
 }  // namespace
 
 Program Program::link(const std::vector<ShaderStage>& stages) {
@@ -63,7 +103,7 @@ Program Program::link(const std::vector<ShaderStage>& stages) {
     if (!ok) {
         std::string files;
         for (const auto& s : stages) files += (files.empty() ? "" : ", ") + s.source.mainFile().string();
-        throw ShaderError("program (" + files + ") failed to link:\n" + infoLog(p.id(), true));
+        throw ShaderError("program (" + files + ") failed to link:\n" + mapLinkLog(infoLog(p.id(), true), stages));
     }
     return p;
 }

@@ -141,4 +141,25 @@ std::string ShaderSource::mapInfoLog(const std::string& log) const {
     return s;
 }
 
+ShaderSource::Location ShaderSource::locate(const std::string& identifier) const {
+    // Walk the assembled text, following its #line directives back to files.
+    static const std::regex lineRe(R"(^#line\s+(\d+)\s+(\d+)\s*$)");
+    const std::regex word("(^|[^A-Za-z0-9_])" + identifier + "([^A-Za-z0-9_]|$)");
+    std::istringstream in(text);
+    std::string line;
+    int fileIndex = -1, lineNo = 0;  // before the first #line: the #version and defines
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, lineRe)) {
+            lineNo = std::stoi(m[1].str());
+            fileIndex = std::stoi(m[2].str());
+            continue;
+        }
+        if (fileIndex >= 0 && fileIndex < static_cast<int>(files.size()) && std::regex_search(line, word))
+            return {files[static_cast<size_t>(fileIndex)], lineNo};
+        if (fileIndex >= 0) ++lineNo;
+    }
+    return {};
+}
+
 }  // namespace dw::gl

@@ -31,6 +31,15 @@ struct ShaderSource {
     // Maps a driver info log (Mesa "0:12(3): error" or NVIDIA "0(12) : error")
     // to "path:line: error" lines using `files`.
     std::string mapInfoLog(const std::string& log) const;
+
+    // Where `identifier` first occurs as a whole word (the declaration, in
+    // practice): its file and 1-based line, or line 0 when it does not occur.
+    // Link logs name variables, not lines (Program::link).
+    struct Location {
+        std::filesystem::path file;
+        int line = 0;
+    };
+    Location locate(const std::string& identifier) const;
 };
 
 }  // namespace dw::gl

@@ -52,6 +52,16 @@ const std::vector<Preset>& builtinPresets() {
                 {{"ao.enabled", "true"}, {"ao.method", "gtao"}, {"gtao.slices", g[1]}, {"gtao.steps", g[2]},
                  {"gtao.resolution", "full"}, {"gtao.denoise", "shared"}},
                 {"ao", "gtao"});
+        // Seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, at w x h, w/2, w/4.
+        // Like the GTAO levels they cover only the ao and aov groups.
+        const char* aov[3] = {"full", "half", "quarter"};
+        for (int i = 0; i < 3; ++i)
+            add("AOV" + std::to_string(i + 1),
+                std::string("seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, ") + aov[i] +
+                    " resolution",
+                {{"ao.enabled", "true"}, {"ao.method", "aov"}, {"aov.radius", "1"}, {"aov.falloff", "1"},
+                 {"aov.resolution", aov[i]}},
+                {"ao", "aov"});
         // Light-volume cost against accuracy: where volumes end.
         add("lights: exact (threshold 1/1024)", "light volumes end where a light falls to 1/1024",
             {{"lighting.threshold", "0.0009765625"}}, {"lighting"});

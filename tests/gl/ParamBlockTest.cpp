@@ -31,6 +31,7 @@
 #include "shaders/params/ssao.h"
 #include "shaders/params/ssao_blur.h"
 #include "shaders/params/gtao.h"
+#include "shaders/params/aov.h"
 #include "shaders/params/tonemap.h"
 #include "tests/support/TestSupport.h"
 
@@ -66,7 +67,7 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
             describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
-            describe<gpu::GtaoParams>()};
+            describe<gpu::GtaoParams>(),      describe<gpu::AovParams>()};
 }
 
 // Builds every variant of the buffer view's programs (BufferView compiles

@@ -1,0 +1,160 @@
+#include "renderer/ao/AovMethod.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/gl/Texture.h"
+#include "renderer/scene/GpuScene.h"
+
+namespace dw {
+
+namespace {
+// Texture units of shaders/ao/aov_volume.frag, clear of the materials'
+// (GpuScene::drawEach binds 0-3 and kOcclusionUnit).
+constexpr GLuint kDepthUnit = 11, kNormalUnit = 12;
+static_assert(GpuScene::kOcclusionUnit < kDepthUnit);
+}  // namespace
+
+AovMethod::AovMethod(KnobRegistry& knobs) {
+    radius_ = knobs.addFloat("aov.radius", 1.0, 0.01, 20.0, "aov",
+                             "AOV: how far a triangle's occlusion volume reaches (delta, world units; seed 000 "
+                             "table 6.5: 1); larger volumes cover more pixels (overdraw)",
+                             "units", true, true);
+    falloff_ = knobs.addFloat("aov.falloff", 1.0, 0.0, 8.0, "aov",
+                              "AOV: exponent k on the distance weight w^k, w the ray-traced AO's 1 / (1 + (d/R)^2) "
+                              "averaged over the triangle's part within aov.radius (seed 000 table 6.5: 1, the "
+                              "reference's weight; 0: every direction within the radius counts fully)");
+    // In the order of the shift to the AO size: the choice's index is the shift.
+    resolution_ = knobs.addEnum("aov.resolution", {"full", "half", "quarter"}, "half", "aov",
+                                "AOV: accessibility buffer size, w x h, w/2 x h/2 or w/4 x h/4 (seed 000 table 6.5)", true);
+}
+
+std::string AovMethod::description() const {
+    return "Ambient Occlusion Volumes (McGuire 2010; seed 000 4.6.4): each opaque triangle's volume adds its "
+           "analytic form factor, with a falloff, at the G-buffer points it covers";
+}
+
+std::vector<std::string> AovMethod::knobNames() const { return {"aov.radius", "aov.falloff", "aov.resolution"}; }
+
+std::vector<OutputDecl> AovMethod::outputs() const {
+    OutputDecl overdraw{"aov.overdraw", OutputKind::Count,
+                        "AOV: volume fragments shaded per pixel of the accessibility buffer (R32UI; counted only when "
+                        "looked at)",
+                        texture2D(GL_R32UI), 1};
+    overdraw.onDemand = true;
+    return {
+        {"aov.depth", OutputKind::Depth,
+         "AOV: gbuffer.depth at the accessibility buffer's size (the volumes' depth test), stencil 1 on surfaces "
+         "(DEPTH32F_STENCIL8)",
+         texture2D(GL_DEPTH32F_STENCIL8), 1},
+        {"aov.occlusion", OutputKind::Scalar,
+         "AOV: summed occlusion of the volumes covering the pixel, before 1 - clamp (R32F, at the AO size)",
+         texture2D(GL_R32F), 1},
+        overdraw,
+    };
+}
+
+ResourceDesc AovMethod::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
+    ResourceDesc d = output.resource;
+    d.shift = knobs.get(resolution_);  // full, half, quarter: 0, 1, 2
+    return d;
+}
+
+float AovMethod::insideMargin(const CameraUniforms& camera) {
+    const float near = camera.clip.x, tanHalf = camera.clip.z, aspect = camera.clip.w;
+    return near * std::sqrt(1.0f + tanHalf * tanHalf * (1.0f + aspect * aspect));
+}
+
+void AovMethod::setup(gl::ShaderLibrary& shaders) {
+    volume_ = shaders.get({.vertex = "ao/aov_volume.vert", .fragment = "ao/aov_volume.frag",
+                           .geometry = "ao/aov_volume.geom"});
+    depthCopy_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/aov_depth.frag"});
+    resolve_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "ao/aov_resolve.frag"});
+    params_.create();
+}
+
+void AovMethod::run(FrameContext& ctx) {
+    const KnobRegistry& k = ctx.knobs;
+    const gl::Texture& raw = ctx.texture("ao.raw");
+    const int w = raw.width(), h = raw.height();
+    const bool countOverdraw = ctx.wants("aov.overdraw");
+    gpu::AovParams p{};
+    p.aoSize = {w, h};
+    p.radius = k.get(radius_);
+    p.falloff = k.get(falloff_);
+    p.countOverdraw = countOverdraw ? 1 : 0;
+    p.insideMargin = insideMargin(ctx.camera);
+    params_.upload(p, binding::kPassUbo);
+    const DepthConvention depth = ctx.depth();
+    glViewport(0, 0, w, h);
+
+    // 1. gbuffer.depth at the AO size, for the volumes' depth test, and
+    // stencil 1 where there is a surface: the sky's pixels (cleared to 0)
+    // then shade no volume.
+    depthTarget_.get(ctx, {}, "aov.depth", "AOV depth").bind();
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, depth.farDepth(), 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    ctx.texture("gbuffer.depth").bind(0);
+    depthCopy_->use();
+    triangle_.draw();
+
+    // 2. The volumes, their occlusion added up (depth read, not written).
+    volumeTarget_.get(ctx, {"aov.occlusion"}, "aov.depth", "AOV volumes").bind();
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    if (countOverdraw) {
+        const gl::Texture& overdraw = ctx.texture("aov.overdraw");
+        overdraw.clearUint(0u);
+        overdraw.bindImage(0, GL_READ_WRITE);
+    }
+    glDepthMask(GL_FALSE);
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0);
+    glEnable(GL_DEPTH_CLAMP);  // back faces past the far plane still count
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    ctx.texture("gbuffer.depth").bind(kDepthUnit);
+    ctx.texture("gbuffer.normal").bind(kNormalUnit);
+    volume_->use();
+    std::size_t volumes = 0;
+    for (int inside = 0; inside < 2; ++inside) {
+        // Outside: front faces nearer than the surface; inside: back faces behind it.
+        p.insidePass = inside;
+        params_.upload(p, binding::kPassUbo);
+        glDepthFunc(inside ? depth.farther() : depth.nearer());
+        ctx.gpu.drawEach(*volume_, GpuScene::Filter::Opaque, [&](std::size_t, const GpuScene::Draw& d) {
+            const int flags = (d.mirrored ? gpu::AOV_DRAW_MIRRORED : 0) | (d.doubleSided ? gpu::AOV_DRAW_DOUBLE_SIDED : 0);
+            volume_->set(2, flags);
+            if (inside == 0) volumes += static_cast<std::size_t>(d.indexCount / 3) * (d.doubleSided ? 2 : 1);
+            return true;
+        });
+    }
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glDepthMask(GL_TRUE);
+    if (countOverdraw) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+
+    // 3. ao.raw = 1 - clamp(sum).
+    rawTarget_.get(ctx, {"ao.raw"}, {}, "AOV accessibility").bind();
+    ctx.texture("aov.occlusion").bind(0);
+    resolve_->use();
+    triangle_.draw();
+
+    char line[160];
+    std::snprintf(line, sizeof(line), "%zu volumes at %dx%d, radius %.3g, falloff %.3g%s", volumes, w, h, p.radius,
+                  p.falloff, countOverdraw ? ", overdraw counted" : "");
+    stats_ = line;
+}
+
+}  // namespace dw
