@@ -71,7 +71,7 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
         EXPECT_LE(row.errorLo, row.error);
         EXPECT_GE(row.errorHi, row.error);
         EXPECT_TRUE(std::isfinite(row.frameGpuMs) && row.frameGpuMs > 0.0);
-        EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ssao")));
+        EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ao")));
         onFront += row.pareto ? 1 : 0;
     }
     EXPECT_GE(onFront, 1);

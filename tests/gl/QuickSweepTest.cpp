@@ -13,7 +13,7 @@ using namespace dw;
 TEST(QuickSweep, ValuesOfEachKindOfKnob) {
     const KnobRegistry knobs = RunConfig::declaredKnobs();
     EXPECT_EQ(QuickSweep::valuesOf(knobs, "gbuffer.normal_encoding"), (std::vector<std::string>{"kl16", "oct16", "oct8"}));
-    EXPECT_EQ(QuickSweep::valuesOf(knobs, "ssao.enabled"), (std::vector<std::string>{"false", "true"}));
+    EXPECT_EQ(QuickSweep::valuesOf(knobs, "ao.enabled"), (std::vector<std::string>{"false", "true"}));
     const auto samples = QuickSweep::valuesOf(knobs, "ssao.samples");
     const KnobSpec& s = knobs.spec(*knobs.find("ssao.samples"));
     ASSERT_EQ(samples.size(), 5u);

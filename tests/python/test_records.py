@@ -259,7 +259,7 @@ class RecordTest(unittest.TestCase):
             m = re.search(r"config %d \(32x18, \d+ lights, ssao\.samples=%s\): frame gpu median +([0-9.]+) ->"
                           % (c["config"], c["knobs"]["ssao.samples"]), r.stdout)
             self.assertIsNotNone(m, r.stdout)
-            self.assertAlmostEqual(float(m.group(1)), frames[1], places=3)
+            self.assertAlmostEqual(float(m.group(1)), frames[1], delta=0.0006)  # printed with 3 decimals
         # Lights per pixel are counted, not timed: equal on the same machine.
         lpp = re.findall(r"lpp ([0-9.]+) -> ([0-9.]+)", r.stdout)
         self.assertEqual(len(lpp), 2, r.stdout)
