@@ -136,10 +136,13 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
     const Result again = run("replay " + (dir() / "grid.json").string() + " --record " + (dir() / "again.json").string());
     ASSERT_TRUE(again.code == 0 || again.code == 1) << again.err << again.out;
     EXPECT_EQ(again.out.find("(differs)"), std::string::npos) << again.out;
-    EXPECT_EQ(again.out.find("not in"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find(": not in the record"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("not run again"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("knob not in this build"), std::string::npos) << again.out;
     EXPECT_NE(again.out.find("point 3 camera 0, ssao.samples=16, ssao.resolution=half: rms "), std::string::npos) << again.out;
     EXPECT_NE(again.out.find("(same); frame gpu median"), std::string::npos) << again.out;
-    if (again.code == 1) EXPECT_NE(again.out.find("0 row(s) with another error"), std::string::npos) << again.out;
+    // Exit 1 on a busy machine only for a frame time moved beyond the band, never for an error.
+    if (again.code == 1) EXPECT_NE(again.out.find("(0 row(s) with another error"), std::string::npos) << again.out;
     else EXPECT_NE(again.out.find("tradeoff: the same (6 rows"), std::string::npos) << again.out;
     // A changed error is "differs" (exit 1).
     nlohmann::json changed = rec;
