@@ -3,12 +3,16 @@
 // knob and build field by name, and
 //   render / gui records: the image (sha256 of its pixels) and each timing
 //     series old against new with the bootstrap interval of the ratio of medians;
+//   tradeoff records: the same sweep run again, per point and camera the
+//     error old against new (deterministic: any change is "differs") and the
+//     frame's GPU median old against new with the interval of the difference;
 //   bench records: the same grid (sizes, lights, sweep, frames, warm-up,
 //     seed, camera path) run again, per configuration its lights per pixel
 //     and the ratio series' GPU median old against new with the interval.
 // Exit 0: the same (render: the image is identical; bench: every
 // configuration is there, its lights per pixel equal, and no ratio's 95%
-// interval lies wholly outside [0.8, 1.25]); 1: it differs; 2: the record is
+// interval lies wholly outside [0.8, 1.25]; tradeoff: every row there, its
+// error equal, no frame time moved beyond that band); 1: it differs; 2: the record is
 // refused. docs/records.md.
 #include <algorithm>
 #include <cmath>
@@ -16,10 +20,12 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
+#include "app/TradeoffMeasurement.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
@@ -43,8 +49,12 @@ bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingB
 std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
     const KnobRegistry declared = RunConfig::declaredKnobs();
     std::vector<std::string> sets;
-    std::map<std::string, std::string> recorded(old.knobs.begin(), old.knobs.end());
-    for (const auto& [name, value] : old.knobs) {
+    std::map<std::string, std::string> recorded;
+    for (const auto& [recordedName, value] : old.knobs) {
+        // An old name (KnobAlias: ssao.enabled) restores the knob it became.
+        const std::string name = declared.canonicalName(recordedName);
+        if (name != recordedName) std::printf("knob renamed: %s -> %s (recorded %s)\n", recordedName.c_str(), name.c_str(), value.c_str());
+        recorded[name] = value;
         if (!declared.find(name)) {
             std::printf("knob not in this build: %s (recorded %s)\n", name.c_str(), value.c_str());
             continue;
@@ -213,21 +223,103 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
     return 1;
 }
 
+
+std::string pointLabel(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string label = "point " + std::to_string(r.point) + " camera " + r.camera;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a) label += ", " + t.axes[a] + "=" + r.axisValues[a];
+    return label;
+}
+
+// Errors are deterministic on one machine (the same frames, the same
+// reference from the cache): equal to 1e-9 relative, or both not measured.
+bool sameError(double a, double b) {
+    if (!std::isfinite(a) || !std::isfinite(b)) return std::isfinite(a) == std::isfinite(b);
+    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+int replayTradeoff(const ExperimentRecord& old, const std::string& path, const std::vector<std::string>& sets,
+                   const std::optional<std::string>& newRecord) {
+    RecordedTradeoff again = *old.tradeoff;
+    bool presetAxis = false;
+    for (const auto& a : again.options.sweep.axes) presetAxis = presetAxis || a.name == "preset";
+    if (presetAxis) {
+        // Every knob as --set would hide each point's preset: the run's own preset and --set.
+        again.options.run.setPreset(again.runPreset);
+        again.options.run.sets = again.runSets;
+    } else {
+        again.options.run.sets = sets;
+    }
+    const TradeoffTable before = old.tradeoffTable(path);
+    TradeoffRunner runner(again.options);
+    const TradeoffMeasurement m = measureTradeoff(runner, again.aoRays, true);
+    for (const auto& [k, v] : old.gl)
+        if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer"))
+            std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(m.machine, "gl_renderer").c_str());
+    const TradeoffTable& after = m.result.table;
+    if (newRecord)
+        ExperimentRecord::forTradeoff(again, runner.scene(), after, m.machine, m.result.settings).write(*newRecord);
+
+    std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
+    for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
+    int errorDiffer = 0, moved = 0, missing = 0;
+    for (const auto& r : after.rows) {
+        const auto it = recorded.find({r.point, r.camera, r.metric, r.buffer});
+        if (it == recorded.end()) {
+            std::printf("%s: not in the record\n", pointLabel(after, r).c_str());
+            ++missing;
+            continue;
+        }
+        const TradeoffRow& b = *it->second;
+        const bool same = sameError(b.error, r.error);
+        // The difference of the medians, with the interval the two 95%
+        // intervals allow (new low - old high, new high - old low).
+        const double diff = r.frameGpuMs - b.frameGpuMs, lo = r.frameGpuMsLo - b.frameGpuMsHi,
+                     hi = r.frameGpuMsHi - b.frameGpuMsLo;
+        const double ratioLo = b.frameGpuMsHi > 0 ? r.frameGpuMsLo / b.frameGpuMsHi : NAN;
+        const double ratioHi = b.frameGpuMsLo > 0 ? r.frameGpuMsHi / b.frameGpuMsLo : NAN;
+        const bool timeMoved = std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
+                               (ratioLo > kTimingBandHigh || ratioHi < kTimingBandLow);
+        std::printf("%s: %s %.6g -> %.6g (%s); frame gpu median %.3f -> %.3f ms, difference %+.3f [%+.3f, %+.3f]%s\n",
+                    pointLabel(after, r).c_str(), r.metric.c_str(), b.error, r.error, same ? "same" : "differs",
+                    b.frameGpuMs, r.frameGpuMs, diff, lo, hi, timeMoved ? " (moved)" : "");
+        if (!same) ++errorDiffer;
+        if (timeMoved) ++moved;
+        recorded.erase(it);
+    }
+    for (const auto& [key, b] : recorded) {
+        std::printf("%s: in the record, not run again\n", pointLabel(before, *b).c_str());
+        ++missing;
+    }
+    if (errorDiffer == 0 && moved == 0 && missing == 0) {
+        std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
+                    "95%% interval)\n",
+                    after.rows.size(), kTimingBandLow, kTimingBandHigh);
+        return 0;
+    }
+    std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
+                "%d not in both)\n",
+                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, missing);
+    return 1;
+}
 }  // namespace
 
 int runReplayCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
-                     "Restores the state of an experiment record (render --record, bench --json, the window's\n"
+                     "Restores the state of an experiment record (render --record, bench --json, tradeoff --json, the window's\n"
                      "record), measures again and names each changed scene file, knob and build field.\n"
                      "  render/window records: prints 'image: identical' or 'image: differs (sha256 old -> new)'\n"
                      "               and old against new timings with the 95% interval of each ratio\n"
                      "  bench records: runs the same grid again and prints, per configuration, the ratio series'\n"
                      "               GPU median old -> new with the interval of the ratio, and lights per pixel\n"
+                     "  tradeoff records: runs the same sweep again and prints, per point and camera, the error\n"
+                     "               old -> new (any change differs) and the frame time old -> new with the interval\n"
+                     "               of the difference\n"
                      "  --record     write the new run's record too\n"
                      "Exit 0: the same (the image identical; for bench every configuration there, its lights per\n"
-                     "pixel equal and no timing ratio's interval wholly outside [0.8, 1.25]); 1: it differs;\n"
+                     "pixel equal and no timing ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row\n"
+                     "there, its error equal, no frame time moved beyond that band); 1: it differs;\n"
                      "2: the record is refused. docs/records.md.\n";
         return 0;
     }
@@ -241,6 +333,8 @@ int runReplayCommand(int argc, char** argv) {
         old = ExperimentRecord::read(path);
         if (old.bench && old.bench->merged)
             throw FileError(path, "a bench merge record has no grid to run again; replay each shard's record");
+        if (old.tradeoff && old.tradeoff->merged)
+            throw FileError(path, "a tradeoff merge record has no sweep to run again; replay each shard's record");
     } catch (const Error& e) {
         std::fprintf(stderr, "refused: %s\n", e.what());
         return 2;
@@ -261,6 +355,7 @@ int runReplayCommand(int argc, char** argv) {
     // checks refuse as a whole configuration) refuses the record too.
     try {
         if (old.command == "bench") return replayBench(old, sets, newRecord);
+        if (old.command == "tradeoff") return replayTradeoff(old, path, sets, newRecord);
         return replayRender(old, sets, newRecord);
     } catch (const GlUnsupportedError&) {
         throw;

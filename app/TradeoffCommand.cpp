@@ -15,12 +15,12 @@
 #include "app/HeadlessGlContext.h"
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
+#include "app/TradeoffMeasurement.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/bench/TradeoffTable.h"
-#include "renderer/reference/ReferenceCache.h"
-#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/record/ExperimentRecord.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -35,7 +35,7 @@ const char* const kTradeoffUsage =
     "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
     "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
     "                                   [--quiet]\n"
-    "       deferred-workbench tradeoff merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+    "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
     "  --sweep      an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; repeatable;\n"
     "               the full grid of every --sweep and --presets\n"
     "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
@@ -54,10 +54,10 @@ const char* const kTradeoffUsage =
     "  --size       the render size (default 640x360)\n"
     "  --shard i/n  the points whose number % n == i; join the CSVs with tradeoff merge\n"
     "  --csv, --json, --plot  default tradeoff.csv, tradeoff.json, tradeoff.png (tradeoff-shard-I-of-N.*\n"
-    "               with --shard); the plot by scripts/tradeoff_plot.py (python3-matplotlib)\n"
+    "               with --shard); the JSON is an experiment record (deferred-workbench replay runs it again;\n"
+    "               tradeoff merge reads shards' CSVs or records); the plot by scripts/tradeoff_plot.py\n"
+    "               (python3-matplotlib)\n"
     "  --quiet      no progress lines on stderr\n";
-
-using Json = nlohmann::ordered_json;
 
 std::string number(double v, const char* format) {
     if (!std::isfinite(v)) return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : "-";
@@ -125,38 +125,6 @@ std::string what(const TradeoffTable& t, const std::string& against) {
            "front: on the Pareto front of GPU ms against error (no other point is as fast and as accurate).\n";
 }
 
-Json tableJson(const TradeoffTable& t, const BenchFields& machine, const BenchFields& settings) {
-    Json m = Json::object(), s = Json::object();
-    for (const auto& [k, v] : machine) m[k] = v;
-    for (const auto& [k, v] : settings) {
-        if (s.contains(k)) {
-            if (!s[k].is_array()) s[k] = Json::array({s[k]});
-            s[k].push_back(v);
-        } else {
-            s[k] = v;
-        }
-    }
-    auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-    Json rows = Json::array();
-    for (const auto& r : t.rows) {
-        Json values = Json::object(), passes = Json::object();
-        for (size_t a = 0; a < t.axes.size(); ++a) values[t.axes[a]] = r.axisValues[a];
-        for (size_t p = 0; p < t.passes.size(); ++p) passes[t.passes[p]] = num(r.passGpuMs[p]);
-        rows.push_back({{"point", r.point}, {"values", values}, {"camera", r.camera}, {"metric", r.metric},
-                        {"buffer", r.buffer}, {"error", num(r.error)}, {"error_ci95", {num(r.errorLo), num(r.errorHi)}},
-                        {"frames", r.frames}, {"frame_gpu_ms", num(r.frameGpuMs)},
-                        {"frame_gpu_ms_ci95", {num(r.frameGpuMsLo), num(r.frameGpuMsHi)}}, {"gpu_ms", passes},
-                        {"pareto", r.pareto}});
-    }
-    const Json root = {{"tool", "deferred-workbench tradeoff"}, {"machine", m}, {"settings", s}, {"axes", t.axes},
-                       {"passes", t.passes}, {"rows", rows}};
-    return root;
-}
-
-void writeJson(const std::string& path, const TradeoffTable& t, const BenchFields& machine, const BenchFields& settings) {
-    writeBenchFile(path, tableJson(t, machine, settings).dump(2) + "\n", "tradeoff JSON");
-}
-
 int writePlot(const std::string& csv, const std::string& png, int width, int height) {
     if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
                        {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
@@ -172,6 +140,10 @@ void checkPlot(const std::string& plot, int width, int height) {
     if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
     if (width < 50 || height < 50)
         throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+bool isRecordFile(const std::string& path) {
+    return path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
 }
 
 std::vector<std::string> listOf(const std::string& flag, const std::string& text) {
@@ -205,8 +177,21 @@ int runMerge(int argc, char** argv) {
     CommandLine::requireDistinctFiles(writes, reads);
     if (plot) checkPlot(*plot, plotW, plotH);
     CommandLine::requireWritable(*out, "merged CSV");
+    // Each shard as its CSV or its record (tradeoff --json).
     std::vector<TradeoffTable> parts;
-    for (const auto& in : inputs) parts.push_back(TradeoffTable::readCsv(in));
+    BenchFields settings;
+    for (const auto& in : inputs) {
+        if (isRecordFile(in)) {
+            const ExperimentRecord r = ExperimentRecord::read(in);
+            if (r.command != "tradeoff") throw FileError(in, "a " + r.command + " record, not a tradeoff's");
+            parts.push_back(r.tradeoffTable(in));
+            if (settings.empty() && r.tradeoffResults.contains("settings"))
+                for (const auto& [k, v] : r.tradeoffResults["settings"].items())
+                    if (v.is_string() && k != "shard" && k != "command") settings.emplace_back(k, v.get<std::string>());
+        } else {
+            parts.push_back(TradeoffTable::readCsv(in));
+        }
+    }
     const TradeoffTable all = TradeoffTable::merge(parts, inputs);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
@@ -214,7 +199,8 @@ int runMerge(int argc, char** argv) {
                 what(all, "what the shards measured against").c_str(), markdown(all).c_str());
     std::fflush(stdout);
     all.writeCsv(*out);
-    if (json) writeJson(*json, all, {}, {{"merged_from", from}});
+    settings.emplace_back("merged_from", from);
+    if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(), "tradeoff record");
     std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
     return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
 }
@@ -251,7 +237,8 @@ int runTradeoffCommand(int argc, char** argv) {
         throw UsageError("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
                          *knobs + "'");
     if (knobs && !o.sweep.axes.empty()) throw UsageError("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
-    for (const auto& e : cl.values("--exclude")) {
+    const std::vector<std::string> excludes = cl.values("--exclude");
+    for (const auto& e : excludes) {
         try {
             o.sweep.exclusion.add(e);
         } catch (const Error& err) {
@@ -306,74 +293,9 @@ int runTradeoffCommand(int argc, char** argv) {
     // Everything that can fail without GL fails here: axes, values, presets, the scene.
     TradeoffRunner runner(o);
     for (const auto& wline : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", wline.c_str());
-    auto say = [&](const std::string& line) {
-        if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
-    };
-
-    // References through the shared cache; each distinct one rendered once in this run.
-    const reference::ReferenceCache cache;
-    std::map<std::string, reference::ReferenceImages> rendered;
-    bool noted = false;
-    int references = 0, cachedReferences = 0;
-    double referenceSeconds = 0.0;
-    const TradeoffReference reference = [&](const Scene& scene, const KnobRegistry& k, const Camera& camera, int width,
-                                            int height, const std::string& buffer) {
-        reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
-        model.aoRays = aoRays;
-        reference::ReferenceRequest request;
-        request.camera = camera;
-        request.width = width;
-        request.height = height;
-        const std::string key = reference::referenceKey(scene, model, request);
-        auto it = rendered.find(key);
-        if (it == rendered.end()) {
-            std::optional<reference::ReferenceImages> images = cache.load(key);
-            if (images) {
-                ++cachedReferences;
-            } else {
-                say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
-                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
-                    "; cached for the next run)");
-                images = reference::renderReference(scene, model, request);
-                ++references;
-                referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
-                try {
-                    cache.store(key, *images);
-                } catch (const std::exception& e) {
-                    std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
-                }
-            }
-            if (!noted && buffer == "final") {
-                const reference::KnobReport report = reference::reportKnobs(k, model);
-                if (!report.unmodelledOn.empty()) {
-                    std::string on;
-                    for (const auto& n : report.unmodelledOn) on += " " + n;
-                    std::fprintf(stderr, "note: the reference's final image has no%s (set them false to measure the "
-                                         "shading alone)\n", on.c_str());
-                }
-                noted = true;
-            }
-            it = rendered.emplace(key, std::move(*images)).first;
-        }
-        const FloatImage* image = it->second.buffer(buffer);
-        if (!image) throw Error("the reference has no buffer '" + buffer + "'");
-        return *image;
-    };
-
-    auto context = HeadlessGlContext::create();
-    TradeoffResult result = runner.run(reference, say);
-    BenchFields machine = result.machine;
-    machine.emplace_back("gl_platform", context->platform());
-    machine.emplace_back("cpu", cpuModel());
-    machine.emplace_back("compiler", compilerName());
-    machine.emplace_back("date", utcNow());
-    if (o.against.empty()) {
-        result.settings.emplace_back("references_rendered", std::to_string(references));
-        result.settings.emplace_back("references_from_cache", std::to_string(cachedReferences));
-        char text[32];
-        std::snprintf(text, sizeof(text), "%.6g", referenceSeconds);
-        result.settings.emplace_back("reference_seconds", text);
-    }
+    TradeoffMeasurement measured = measureTradeoff(runner, aoRays, quiet);
+    TradeoffResult& result = measured.result;
+    const BenchFields& machine = measured.machine;
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
     result.settings.emplace_back("command", command);
@@ -386,7 +308,15 @@ int runTradeoffCommand(int argc, char** argv) {
                 what(t, againstText).c_str(), markdown(t).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
-    writeJson(json, t, machine, result.settings);
+    // The JSON is the experiment record (docs/records.md): replay runs it again.
+    RecordedTradeoff recorded;
+    recorded.options = o;
+    recorded.exclude = excludes;
+    recorded.aoRays = aoRays;
+    recorded.runPreset = o.run.presetSpec();
+    recorded.runSets = o.run.sets;
+    writeBenchFile(json, ExperimentRecord::forTradeoff(recorded, runner.scene(), t, machine, result.settings).json(),
+                   "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;
     return writePlot(csv, plot, plotW, plotH);

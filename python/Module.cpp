@@ -277,8 +277,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
         .def("resize", [](WorkbenchSession& s, int w, int h) { s.resize(w, h); }, py::arg("width"), py::arg("height"))
         .def("get",
              [](const WorkbenchSession& s, const std::string& name) {
-                 s.spec(name);
-                 return knobValue(s.knobs(), *s.knobs().find(name));
+                 return knobValue(s.knobs(), *s.knobs().find(s.spec(name).name));
              },
              py::arg("name"), "A knob's value: bool, int, float or the enum's choice as a string.")
         .def("set", [](WorkbenchSession& s, const std::string& name, py::handle value) { s.set(name, knobText(value)); },

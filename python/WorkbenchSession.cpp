@@ -115,7 +115,8 @@ void WorkbenchSession::requireOwningThread() const {
                                " (use each Session from the thread that made the first one)");
 }
 
-const KnobSpec& WorkbenchSession::spec(const std::string& name) const {
+const KnobSpec& WorkbenchSession::spec(const std::string& givenName) const {
+    const std::string name = session_->knobs().canonicalName(givenName);  // an old name warns and stands for the new
     const auto id = session_->knobs().find(name);
     if (!id) {
         // The registry's own message for an unknown name.
@@ -131,13 +132,11 @@ const KnobSpec& WorkbenchSession::spec(const std::string& name) const {
 }
 
 std::string WorkbenchSession::getText(const std::string& name) const {
-    spec(name);
-    return session_->knobs().format(*session_->knobs().find(name));
+    return session_->knobs().format(*session_->knobs().find(spec(name).name));
 }
 
 double WorkbenchSession::value(const std::string& name) const {
-    spec(name);
-    return session_->knobs().value(*session_->knobs().find(name));
+    return session_->knobs().value(*session_->knobs().find(spec(name).name));
 }
 
 void WorkbenchSession::set(const std::string& name, const std::string& text) {

@@ -71,7 +71,8 @@ bool openRecord(UiState& state, RenderSession& session, const std::string& path)
         r = ExperimentRecord::read(path);
         // Every value checked before anything changes: a record this build
         // cannot take in part is reported, the rest applied.
-        for (const auto& [name, value] : r.knobs) {
+        for (const auto& [recordedName, value] : r.knobs) {
+            const std::string name = knobs.canonicalName(recordedName);  // an old name: the knob it became
             if (!knobs.find(name)) {
                 skipped.push_back(name + " (not in this build)");
                 continue;
@@ -91,7 +92,7 @@ bool openRecord(UiState& state, RenderSession& session, const std::string& path)
         // The knobs checked above were the old scene's; the record sets every one of them anyway.
         KnobRegistry fresh = session.knobs();
         for (const auto& [name, value] : r.knobs)
-            if (fresh.find(name)) try {
+            if (fresh.find(fresh.canonicalName(name))) try {
                     fresh.setFromString(name, value);
                 } catch (const Error&) {
                 }

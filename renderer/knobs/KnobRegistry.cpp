@@ -90,6 +90,15 @@ void KnobRegistry::addAlias(std::string oldName, std::string newName, std::strin
     aliases_.push_back({{}, std::move(oldName), std::move(newName), std::move(note)});
 }
 
+std::string KnobRegistry::canonicalName(const std::string& name) const {
+    for (const KnobAlias& a : aliases_)
+        if (a.knob.empty() && a.oldName == name) {
+            warn(a.warning());
+            return a.newName;
+        }
+    return name;
+}
+
 void KnobRegistry::addValueAlias(std::string knob, std::string oldValue, std::string newValue, std::string note) {
     aliases_.push_back({std::move(knob), std::move(oldValue), std::move(newValue), std::move(note)});
 }

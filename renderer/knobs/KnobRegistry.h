@@ -102,6 +102,10 @@ public:
     void addAlias(std::string oldName, std::string newName, std::string note);
     void addValueAlias(std::string knob, std::string oldValue, std::string newValue, std::string note);
     const std::vector<KnobAlias>& aliases() const { return aliases_; }
+    // The declared name an old knob name stands for (with the alias's
+    // warning); any other name unchanged. Lets lookups by name (replay, the
+    // window's Open record, Python's Session.get) take the old names too.
+    std::string canonicalName(const std::string& name) const;
     // Where alias warnings go (the CLI prints them; a test collects them).
     // The default prints "warning: TEXT" to stderr, each text once per process.
     // Returns the previous handler; an empty function restores the default.

@@ -10,6 +10,7 @@
 #include "renderer/Error.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/bench/TradeoffTable.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
@@ -196,6 +197,147 @@ ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Sc
     return r;
 }
 
+namespace {
+
+Json settingsJson(const BenchFields& settings) {
+    Json s = Json::object();
+    for (const auto& [k, v] : settings) {
+        if (s.contains(k)) {
+            if (!s[k].is_array()) s[k] = Json::array({s[k]});
+            s[k].push_back(v);
+        } else {
+            s[k] = v;
+        }
+    }
+    return s;
+}
+
+std::string fieldOfBench(const BenchFields& f, const std::string& key) {
+    for (const auto& [k, v] : f)
+        if (k == key) return v;
+    return "";
+}
+
+// A tradeoff table as a record's results: per point and camera the swept
+// knobs, the error with its interval, the times, the front; and `metrics`,
+// the errors alone with what they were measured on and against.
+Json tradeoffResultsJson(const TradeoffTable& t, const BenchFields& machine, const BenchFields& settings) {
+    Json m = Json::object();
+    for (const auto& [k, v] : machine) m[k] = v;
+    const std::string against = fieldOfBench(settings, "against");
+    Json rows = Json::array(), front = Json::array(), metrics = Json::array();
+    for (const auto& r : t.rows) {
+        Json values = Json::object(), passes = Json::object();
+        for (size_t a = 0; a < t.axes.size(); ++a) values[t.axes[a]] = r.axisValues[a];
+        for (size_t p = 0; p < t.passes.size(); ++p) passes[t.passes[p]] = number(r.passGpuMs[p]);
+        rows.push_back({{"point", r.point}, {"values", values}, {"camera", r.camera}, {"metric", r.metric},
+                        {"buffer", r.buffer}, {"error", number(r.error)},
+                        {"error_ci95", {number(r.errorLo), number(r.errorHi)}}, {"frames", r.frames},
+                        {"frame_gpu_ms", number(r.frameGpuMs)},
+                        {"frame_gpu_ms_ci95", {number(r.frameGpuMsLo), number(r.frameGpuMsHi)}}, {"gpu_ms", passes},
+                        {"pareto", r.pareto}});
+        if (r.pareto) front.push_back({{"point", r.point}, {"camera", r.camera}});
+        metrics.push_back({{"point", r.point}, {"camera", r.camera}, {"metric", r.metric}, {"buffer", r.buffer},
+                           {"against", against}, {"value", number(r.error)},
+                           {"ci95", {number(r.errorLo), number(r.errorHi)}}});
+    }
+    return {{"machine", m}, {"settings", settingsJson(settings)}, {"axes", t.axes}, {"passes", t.passes},
+            {"rows", rows}, {"front", front}, {"metrics", metrics}};
+}
+
+double numberOr(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
+
+}  // namespace
+
+ExperimentRecord ExperimentRecord::forTradeoffTable(const TradeoffTable& table, const BenchFields& settings) {
+    ExperimentRecord r;
+    r.command = "tradeoff";
+    r.buffer = "";
+    r.build = buildFields();
+    r.host = hostFields();
+    r.seeds = {{"bootstrap", std::to_string(kBootstrapSeed)}};
+    const std::string size = fieldOfBench(settings, "size");
+    if (const size_t x = size.find('x'); x != std::string::npos) {
+        r.width = std::atoi(size.substr(0, x).c_str());
+        r.height = std::atoi(size.substr(x + 1).c_str());
+    }
+    r.frames = std::max(1, std::atoi(fieldOfBench(settings, "frames").c_str()));
+    r.warmup = std::max(0, std::atoi(fieldOfBench(settings, "warmup_per_switch").c_str()));
+    RecordedTradeoff t;
+    t.merged = true;
+    r.tradeoff = t;
+    r.tradeoffResults = tradeoffResultsJson(table, {}, settings);
+    return r;
+}
+
+ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff, const Scene& scene,
+                                               const TradeoffTable& table, const BenchFields& machine,
+                                               const BenchFields& settings) {
+    ExperimentRecord r = forTradeoffTable(table, settings);
+    const TradeoffOptions& o = tradeoff.options;
+    r.tradeoff = tradeoff;
+    r.tradeoff->merged = false;
+    r.tradeoffResults = tradeoffResultsJson(table, machine, settings);
+    r.sceneSpec = o.run.sceneSpec();
+    r.sceneSource = scene.source;
+    r.sceneFiles = sceneFilesOf(scene);
+    r.camera = o.run.camera(scene);
+    if (o.walkthrough) {
+        r.cameraPath.mode = "walkthrough";
+        r.cameraPath.keyframes = scene.cameraPath;
+    } else if (o.orbit > 0) {
+        r.cameraPath.mode = "orbit";
+        r.cameraPath.orbitPoses = o.orbit;
+    }
+    // The knobs every point starts from (its axis values go over them).
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    o.run.applyKnobs(knobs, scene);
+    r.knobs = knobFields(knobs);
+    r.frames = o.frames;
+    r.warmup = o.warmup;
+    r.width = o.run.width;
+    r.height = o.run.height;
+    r.buffer = o.buffer;
+    r.gl = {{"vendor", fieldOfBench(machine, "gl_vendor")},
+            {"renderer", fieldOfBench(machine, "gl_renderer")},
+            {"version", fieldOfBench(machine, "gl_version")},
+            {"platform", fieldOfBench(machine, "gl_platform")}};
+    return r;
+}
+
+TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
+    TradeoffTable t;
+    try {
+        const Json& res = tradeoffResults;
+        t.axes = res.at("axes").get<std::vector<std::string>>();
+        t.passes = res.at("passes").get<std::vector<std::string>>();
+        for (const auto& row : res.at("rows")) {
+            TradeoffRow r;
+            r.point = row.at("point").get<int>();
+            for (const auto& a : t.axes) r.axisValues.push_back(row.at("values").at(a).get<std::string>());
+            r.camera = row.at("camera").get<std::string>();
+            r.metric = row.at("metric").get<std::string>();
+            r.buffer = row.at("buffer").get<std::string>();
+            r.error = numberOr(row.at("error"));
+            r.errorLo = numberOr(row.at("error_ci95").at(0));
+            r.errorHi = numberOr(row.at("error_ci95").at(1));
+            r.frames = row.value("frames", 0);
+            r.frameGpuMs = numberOr(row.at("frame_gpu_ms"));
+            r.frameGpuMsLo = numberOr(row.at("frame_gpu_ms_ci95").at(0));
+            r.frameGpuMsHi = numberOr(row.at("frame_gpu_ms_ci95").at(1));
+            for (const auto& p : t.passes) {
+                const auto& g = row.at("gpu_ms");
+                r.passGpuMs.push_back(g.contains(p) ? numberOr(g[p]) : NAN);
+            }
+            r.pareto = row.value("pareto", false);
+            t.rows.push_back(std::move(r));
+        }
+    } catch (const nlohmann::json::exception& e) {
+        throw FileError(path, "tradeoff results: " + jsonErrorText(e));
+    }
+    return t;
+}
+
 std::string ExperimentRecord::json() const {
     Json j;
     j["format"] = kFormat;
@@ -220,7 +362,7 @@ std::string ExperimentRecord::json() const {
     j["size"] = Json::array({width, height});
     j["frames"] = frames;
     j["warmup"] = warmup;
-    if (command != "bench") j["buffer"] = buffer;
+    if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
     if (bench) {
         const BenchOptions& o = bench->options;
         Json sizes = Json::array(), sweep = Json::array();
@@ -244,11 +386,37 @@ std::string ExperimentRecord::json() const {
                          {"ratio_of", bench->ratioOf},
                          {"resamples", bench->resamples}};
     }
+    if (tradeoff) {
+        const TradeoffOptions& o = tradeoff->options;
+        if (tradeoff->merged) {
+            j["grid"] = {{"merged", true}};
+        } else {
+            Json axes = Json::array();
+            for (const auto& a : o.sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
+            j["grid"] = {{"axes", axes},
+                         {"one_at_a_time", o.sweep.oneAtATime},
+                         {"centre", o.sweep.centre},
+                         {"exclude", tradeoff->exclude},
+                         {"against", o.against},
+                         {"metric", o.metric},
+                         {"buffer", o.buffer},
+                         {"ao_rays", tradeoff->aoRays},
+                         {"orbit", o.orbit},
+                         {"walkthrough", o.walkthrough},
+                         {"block", o.block},
+                         {"resamples", o.resamples},
+                         {"run_preset", tradeoff->runPreset},
+                         {"run_sets", tradeoff->runSets},
+                         {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
+        }
+    }
     j["build"] = fieldsJson(build);
     j["gl"] = fieldsJson(gl);
     j["host"] = fieldsJson(host);
     if (command == "bench") {
         j["results"] = benchResults.is_null() ? Json::object() : benchResults;
+    } else if (command == "tradeoff") {
+        j["results"] = tradeoffResults.is_null() ? Json::object() : tradeoffResults;
     } else {
         Json series = Json::array();
         for (const auto& s : timings)
@@ -291,8 +459,8 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
     if (r.readVersion < 1) throw FileError(path, "record version " + std::to_string(r.readVersion) + " does not exist");
     try {
         r.command = j.at("command").get<std::string>();
-        if (r.command != "render" && r.command != "bench" && r.command != "gui")
-            throw FileError(path, "unknown command '" + r.command + "' (render, bench or gui)");
+        if (r.command != "render" && r.command != "bench" && r.command != "tradeoff" && r.command != "gui")
+            throw FileError(path, "unknown command '" + r.command + "' (render, bench, tradeoff or gui)");
         if (r.readVersion == 1 && r.command != "render")
             throw FileError(path, "a version 1 record is of render only, this one says '" + r.command + "'");
         const auto& scene = j.at("scene");
@@ -361,6 +529,39 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
             }
             r.bench = std::move(b);
             r.benchResults = Json(results);
+        } else if (r.command == "tradeoff") {
+            const auto& g = j.at("grid");
+            RecordedTradeoff t;
+            t.merged = g.value("merged", false);
+            TradeoffOptions& o = t.options;
+            o.run.scene = r.sceneSpec;
+            o.run.width = r.width;
+            o.run.height = r.height;
+            for (const auto& [k, v] : r.knobs) o.run.sets.push_back(k + "=" + v);
+            o.frames = r.frames;
+            o.warmup = r.warmup;
+            if (!t.merged) {
+                for (const auto& a : g.at("axes"))
+                    o.sweep.axes.push_back({a.at("name").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
+                o.sweep.oneAtATime = g.value("one_at_a_time", false);
+                o.sweep.centre = g.value("centre", std::vector<std::string>{});
+                t.exclude = g.value("exclude", std::vector<std::string>{});
+                for (const auto& e : t.exclude) o.sweep.exclusion.add(e);
+                o.against = g.value("against", std::vector<std::string>{});
+                o.metric = g.at("metric").get<std::string>();
+                o.buffer = g.at("buffer").get<std::string>();
+                t.aoRays = g.value("ao_rays", 64);
+                o.orbit = g.value("orbit", 0);
+                o.walkthrough = g.value("walkthrough", false);
+                o.block = g.value("block", 1);
+                o.resamples = g.value("resamples", 2000);
+                t.runPreset = g.value("run_preset", std::string());
+                t.runSets = g.value("run_sets", std::vector<std::string>{});
+                o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
+            }
+            r.tradeoff = std::move(t);
+            r.tradeoffResults = Json(results);
+            r.tradeoffTable(path);  // the rows are checked here, not when they are needed
         } else {
             r.buffer = j.at("buffer").get<std::string>();
             for (const auto& s : results.value("timings", nlohmann::json::array()))

@@ -2,7 +2,7 @@
 // An experiment record (issue 24): one JSON that holds what made a
 // measurement, so `replay` can restore exactly that state, measure again and
 // say what changed. docs/records.md describes every field. Version 2:
-//   command  render, bench or gui (the window's File > Save record)
+//   command  render, bench, tradeoff or gui (the window's File > Save record)
 //   scene    the spec, its source and the sha256 of every file it reads: the
 //            scene file, the glTF files a scene JSON names, each glTF's .bin
 //            buffers and images, the sky's files (SceneFiles)
@@ -10,14 +10,18 @@
 //   knobs    every knob's value as --set takes it (bench: before the sweep)
 //   seeds    every random seed the command used (bench's lights, the
 //            bootstrap's); size, frames, warmup, buffer
-//   grid     bench only: sizes, lights, sweep, block, light radius, orbit ...
+//   grid     bench: sizes, lights, sweep, block, light radius, orbit ...;
+//            tradeoff: axes, exclusions, against, metric, buffer, cameras ...
 //   build    version, commit at configure time, compiler, flags, build type
 //   gl, host
 //   results  render/gui: per timing series the counted frames' GPU and CPU ms
 //            with the median and its bootstrap 95% interval, the buffer's
 //            pixel sha256, metrics when the command computed any; bench: the
 //            summary bench --json always wrote (machine, settings, axes,
-//            baseline, configs with samples, ratios and intervals)
+//            baseline, configs with samples, ratios and intervals);
+//            tradeoff: per point and camera its knobs, the error with its
+//            interval (also in `metrics`: metric, buffer, against), the GPU
+//            ms with intervals, and the Pareto front
 // Version 1 (render --record before the bench and window records) still
 // reads: its missing fields take the values a version 1 run had (a fixed
 // camera, no seeds, no flags). A newer version is refused with its version
@@ -32,6 +36,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/TradeoffRunner.h"
 
 namespace dw {
 
@@ -60,6 +65,18 @@ struct RecordedBench {
     bool merged = false;   // written by bench merge: no grid to run again
 };
 
+// What `tradeoff` needs to run the same sweep again.
+struct RecordedTradeoff {
+    TradeoffOptions options;           // run.scene and run.sets (every knob) included
+    std::vector<std::string> exclude;  // the --exclude texts
+    int aoRays = 64;
+    // The run's own preset and --set: with a preset axis, replay starts from
+    // these (every knob as --set would hide each point's preset).
+    std::string runPreset;
+    std::vector<std::string> runSets;
+    bool merged = false;  // written by tradeoff merge: no sweep to run again
+};
+
 struct ExperimentRecord {
     static constexpr int kVersion = 2;
     static constexpr std::uint64_t kBootstrapSeed = 12345;
@@ -81,6 +98,8 @@ struct ExperimentRecord {
     int imageWidth = 0, imageHeight = 0, imageChannels = 0;
     std::optional<RecordedBench> bench;
     nlohmann::ordered_json benchResults;  // bench: the results object (benchResultsJson)
+    std::optional<RecordedTradeoff> tradeoff;
+    nlohmann::ordered_json tradeoffResults;  // tradeoff: the results object (tradeoffResultsJson)
 
     // After a run of `run` in `session` whose counted frames start at
     // `firstCounted` (waits for the timer's outstanding frames).
@@ -92,6 +111,15 @@ struct ExperimentRecord {
                                      const BenchSummary& summary);
     // From measured results alone (bench merge): no grid to run again.
     static ExperimentRecord forBenchResults(const BenchResults& results, const BenchSummary& summary);
+
+    // A tradeoff run: its options, the scene it loaded, what it measured;
+    // `machine` the GL strings and platform, `settings` the run's settings.
+    static ExperimentRecord forTradeoff(const RecordedTradeoff& tradeoff, const Scene& scene, const TradeoffTable& table,
+                                        const BenchFields& machine, const BenchFields& settings);
+    // From a table alone (tradeoff merge): no sweep to run again.
+    static ExperimentRecord forTradeoffTable(const TradeoffTable& table, const BenchFields& settings);
+    // A tradeoff record's rows back as a table (merge, replay). Throws FileError naming `path`.
+    TradeoffTable tradeoffTable(const std::string& path) const;
 
     std::string json() const;
     // Throws FileError naming the file and what is wrong (a newer version, a missing field).

@@ -53,6 +53,8 @@ const TradeoffRow* rowOf(const TradeoffTable& t, const std::string& samples, con
     return nullptr;
 }
 
+double row0Error(const nlohmann::json& record) { return record["results"]["rows"][0]["error"].get<double>(); }
+
 }  // namespace
 
 TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
@@ -71,7 +73,7 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
         EXPECT_LE(row.errorLo, row.error);
         EXPECT_GE(row.errorHi, row.error);
         EXPECT_TRUE(std::isfinite(row.frameGpuMs) && row.frameGpuMs > 0.0);
-        EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ao")));
+        EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ao")));  // the AO pass (ao.method)
         onFront += row.pareto ? 1 : 0;
     }
     EXPECT_GE(onFront, 1);
@@ -91,15 +93,66 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
     EXPECT_NE(r.out.find("**front**"), std::string::npos);
     EXPECT_NE(r.out.find("| point | ssao.samples | ssao.resolution |"), std::string::npos) << r.out;
 
+    // --json is an experiment record (docs/records.md), not a format of its own.
     std::ifstream jf(dir() / "grid.json");
-    const nlohmann::json j = nlohmann::json::parse(jf);
-    EXPECT_EQ(j["rows"].size(), 6u);
+    const nlohmann::json rec = nlohmann::json::parse(jf);
+    EXPECT_EQ(rec["format"], "deferred-workbench record");
+    EXPECT_EQ(rec["version"], 2);
+    EXPECT_EQ(rec["command"], "tradeoff");
+    EXPECT_EQ(rec["size"], nlohmann::json::array({160, 90}));
+    EXPECT_EQ(rec["frames"], 2);
+    EXPECT_EQ(rec["knobs"]["ssao_blur.mode"], "off");  // the knobs every point starts from
+    EXPECT_EQ(rec["grid"]["axes"][0]["name"], "ssao.samples");
+    EXPECT_EQ(rec["grid"]["axes"][0]["values"], nlohmann::json::array({"4", "16", "64"}));
+    EXPECT_EQ(rec["grid"]["metric"], "rms");
+    EXPECT_EQ(rec["grid"]["buffer"], "ao");
+    EXPECT_FALSE(rec["gl"]["renderer"].get<std::string>().empty());
+    EXPECT_FALSE(rec["host"]["cpu"].get<std::string>().empty());
+    EXPECT_EQ(rec["seeds"]["bootstrap"], "12345");
+    const nlohmann::json& j = rec["results"];
+    ASSERT_EQ(j["rows"].size(), 6u);
+    ASSERT_EQ(j["metrics"].size(), 6u);
+    for (size_t i = 0; i < 6; ++i) {
+        const TradeoffRow& row = t.rows[i];
+        const nlohmann::json& m = j["metrics"][i];
+        EXPECT_EQ(m["point"], row.point);
+        EXPECT_EQ(m["metric"], "rms");
+        EXPECT_EQ(m["buffer"], "ao");
+        EXPECT_EQ(m["against"], "reference");
+        EXPECT_EQ(m["value"].get<double>(), row.error) << "the record's error is the CSV's";
+        EXPECT_EQ(j["rows"][i]["values"]["ssao.samples"], row.axisValues[0]);
+        EXPECT_EQ(j["rows"][i]["frame_gpu_ms"].get<double>(), row.frameGpuMs);
+    }
+    EXPECT_EQ(static_cast<int>(j["front"].size()), onFront);
     EXPECT_EQ(j["settings"]["against"], "reference");
     EXPECT_EQ(j["settings"]["buffer"], "ao (" + ao + ")");
     EXPECT_EQ(j["settings"]["references_rendered"].get<std::string>() == "1" ||
                   j["settings"]["references_from_cache"].get<std::string>() == "1",
               true)
         << "one reference for the one camera";
+
+    // replay runs the same sweep again: every error the same (deterministic on
+    // one machine), each time old -> new with the interval of the difference.
+    const Result again = run("replay " + (dir() / "grid.json").string() + " --record " + (dir() / "again.json").string());
+    ASSERT_TRUE(again.code == 0 || again.code == 1) << again.err << again.out;
+    EXPECT_EQ(again.out.find("(differs)"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find(": not in the record"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("not run again"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("knob not in this build"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("point 3 camera 0, ssao.samples=16, ssao.resolution=half: rms "), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("(same); frame gpu median"), std::string::npos) << again.out;
+    // Exit 1 on a busy machine only for a frame time moved beyond the band, never for an error.
+    if (again.code == 1) EXPECT_NE(again.out.find("(0 row(s) with another error"), std::string::npos) << again.out;
+    else EXPECT_NE(again.out.find("tradeoff: the same (6 rows"), std::string::npos) << again.out;
+    // A changed error is "differs" (exit 1).
+    nlohmann::json changed = rec;
+    changed["results"]["rows"][0]["error"] = row0Error(changed) * 2.0;
+    std::ofstream((dir() / "changed.json").string()) << changed.dump(2);
+    const Result differs = run("replay " + (dir() / "changed.json").string());
+    EXPECT_EQ(differs.code, 1) << differs.err << differs.out;
+    EXPECT_NE(differs.out.find("point 0 camera 0, ssao.samples=4, ssao.resolution=full: rms "), std::string::npos);
+    EXPECT_NE(differs.out.find("(differs)"), std::string::npos) << differs.out;
+    EXPECT_NE(differs.out.find("1 row(s) with another error"), std::string::npos) << differs.out;
 
     const FloatImage png = loadImageFloat((dir() / "grid.png").string());
     EXPECT_EQ(png.width, 320);
@@ -132,6 +185,30 @@ TEST(TradeoffCli, ShardsMergeToOneRunsTable) {
         EXPECT_EQ(a.rows[i].error, b.rows[i].error) << i;
         EXPECT_EQ(a.rows[i].errorLo, b.rows[i].errorLo) << i;
     }
+    // The shards' records (tradeoff --json) merge to the same table, and the merged record holds it.
+    const Result mj = run("tradeoff merge " + (dir() / "shard0.json").string() + " " + (dir() / "shard1.json").string() +
+                          " --out " + (dir() / "merged-records.csv").string() + " --json " +
+                          (dir() / "merged-records.json").string());
+    ASSERT_EQ(mj.code, 0) << mj.err;
+    const TradeoffTable c = TradeoffTable::readCsv((dir() / "merged-records.csv").string());
+    ASSERT_EQ(c.rows.size(), a.rows.size());
+    for (size_t i = 0; i < a.rows.size(); ++i) {
+        EXPECT_EQ(c.rows[i].point, a.rows[i].point);
+        EXPECT_EQ(c.rows[i].axisValues, a.rows[i].axisValues);
+        EXPECT_EQ(c.rows[i].error, a.rows[i].error) << i;
+        EXPECT_EQ(c.rows[i].frameGpuMs, b.rows[i].frameGpuMs) << i;  // the shards' own times, as the CSV merge
+    }
+    std::ifstream mf(dir() / "merged-records.json");
+    const nlohmann::json merged = nlohmann::json::parse(mf);
+    EXPECT_EQ(merged["command"], "tradeoff");
+    EXPECT_EQ(merged["grid"]["merged"], true);
+    EXPECT_EQ(merged["results"]["rows"].size(), a.rows.size());
+    EXPECT_EQ(merged["size"], nlohmann::json::array({160, 90}));
+    // A merged record has no sweep to run again: replay refuses it (exit 2).
+    const Result refused = run("replay " + (dir() / "merged-records.json").string());
+    EXPECT_EQ(refused.code, 2) << refused.out;
+    EXPECT_NE(refused.err.find("no sweep to run again"), std::string::npos) << refused.err;
+
     // Merging a shard twice is refused, naming both.
     const Result twice = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " + (dir() / "shard0.csv").string() +
                              " --out " + (dir() / "twice.csv").string());

@@ -162,6 +162,16 @@ class SessionTest(unittest.TestCase):
         self.assertIn(str(bad_value.exception), cli.stderr)
         self.assertEqual(s.get("tonemap.operator"), "reinhard")  # nothing changed
 
+    def test_an_old_knob_name_is_the_knob_it_became(self):
+        # KnobRegistry::addAlias: ssao.enabled is now ao.enabled; set and get take either (with a warning).
+        s = dw.Session(scene="default", size=(16, 9))
+        s.set("ssao.enabled", False)
+        self.assertIs(s.get("ao.enabled"), False)
+        self.assertIs(s.get("ssao.enabled"), False)
+        s.set("ao.enabled", True)
+        self.assertIs(s.get("ssao.enabled"), True)
+        self.assertNotIn("ssao.enabled", s.knobs())
+
     def test_bad_scene_buffer_and_size_raise(self):
         bad = os.path.join(self.tmp.name, "broken.json")
         with open(bad, "w") as f:

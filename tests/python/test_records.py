@@ -157,8 +157,9 @@ class RecordTest(unittest.TestCase):
         self.assertIn("unreadable", r.stdout)
         self.assertIn("cannot restore it", r.stderr)
         self.assertIn("gone-scene.json", r.stderr)
-        r = run("replay", self.variant("tradeoff2.json", lambda d: d.__setitem__("command", "tradeoff")))
-        self.assertIn("unknown command 'tradeoff' (render, bench or gui)", r.stderr)
+        r = run("replay", self.variant("paint.json", lambda d: d.__setitem__("command", "paint")))
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("unknown command 'paint' (render, bench, tradeoff or gui)", r.stderr)
 
     def test_a_version_1_record_still_replays(self):
         # tests/records/v1-render-default.json: what render --record wrote before version 2.
@@ -177,9 +178,32 @@ class RecordTest(unittest.TestCase):
         self.assertEqual(again["version"], 2)
         self.assertEqual(again["camera"], old["camera"])
         self.assertEqual(again["size"], old["size"])
+        renamed = {"ssao.enabled": "ao.enabled"}  # KnobRegistry::addAlias
         for name, value in old["knobs"].items():
-            self.assertEqual(again["knobs"][name], value, name)
+            self.assertEqual(again["knobs"][renamed.get(name, name)], value, name)
         self.assertEqual(again["results"]["image"]["width"], old["results"]["image"]["width"])
+
+    def test_an_old_knob_name_in_a_record_restores_the_knob_it_became(self):
+        # The version 1 fixture names ssao.enabled, now ao.enabled (an alias):
+        # replay restores it by its new name instead of calling it missing.
+        fixture = os.path.join(FIXTURES, "v1-render-default.json")
+        with open(fixture) as f:
+            old = json.load(f)
+        self.assertIn("ssao.enabled", old["knobs"])
+        old["knobs"]["ssao.enabled"] = "false"
+        path = os.path.join(self.tmp.name, "v1-ao-off.json")
+        with open(path, "w") as f:
+            json.dump(old, f)
+        new = os.path.join(self.tmp.name, "v1-ao-off-again.json")
+        r = run("replay", path, "--record", new)
+        self.assertIn(r.returncode, (0, 1), r.stdout + r.stderr)
+        self.assertIn("knob renamed: ssao.enabled -> ao.enabled (recorded false)", r.stdout)
+        self.assertNotIn("knob not in this build: ssao.enabled", r.stdout)
+        self.assertNotIn("knob new in this build: ao.enabled", r.stdout)
+        with open(new) as f:
+            again = json.load(f)
+        self.assertEqual(again["knobs"]["ao.enabled"], "false")
+        self.assertNotIn("ssao.enabled", again["knobs"])
 
     def test_a_gltf_scene_records_its_buffers_and_images(self):
         folder = os.path.join(self.tmp.name, "gltf")
@@ -259,7 +283,7 @@ class RecordTest(unittest.TestCase):
             m = re.search(r"config %d \(32x18, \d+ lights, ssao\.samples=%s\): frame gpu median +([0-9.]+) ->"
                           % (c["config"], c["knobs"]["ssao.samples"]), r.stdout)
             self.assertIsNotNone(m, r.stdout)
-            self.assertAlmostEqual(float(m.group(1)), frames[1], delta=0.0006)  # printed with 3 decimals
+            self.assertAlmostEqual(float(m.group(1)), frames[1], delta=0.0006)  # printed with %.3f
         # Lights per pixel are counted, not timed: equal on the same machine.
         lpp = re.findall(r"lpp ([0-9.]+) -> ([0-9.]+)", r.stdout)
         self.assertEqual(len(lpp), 2, r.stdout)
