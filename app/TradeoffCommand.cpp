@@ -172,9 +172,10 @@ void writeJson(const std::string& path, const TradeoffTable& t, const BenchField
     writeBenchFile(path, tableJson(t, machine, settings).dump(2) + "\n", "tradeoff JSON");
 }
 
-int writePlot(const std::string& csv, const std::string& png, int width, int height) {
+int writePlot(const std::string& csv, const std::string& png, int width, int height, const std::string& time) {
     if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
-                       {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
+                       {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height),
+                        "--time", time},
                        "tradeoff"))
         return 1;
     std::printf("wrote %s (%dx%d)\n", png.c_str(), width, height);
@@ -232,7 +233,7 @@ int runMerge(int argc, char** argv) {
     all.writeCsv(*out);
     if (json) writeJson(*json, all, {}, {{"merged_from", from}});
     std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+    return plot ? writePlot(*out, *plot, plotW, plotH, time) : 0;
 }
 
 }  // namespace
@@ -407,7 +408,7 @@ int runTradeoffCommand(int argc, char** argv) {
     writeJson(json, t, machine, result.settings);
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;
-    return writePlot(csv, plot, plotW, plotH);
+    return writePlot(csv, plot, plotW, plotH, o.time);
 }
 
 }  // namespace dw
