@@ -203,6 +203,21 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     const gl::GlInfo& gl = session.glInfo();
     result.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
     const RunnerTimings timings = runner.measure("tradeoff", describe, say);
+    // --time PASS: refused before the error captures and references when no
+    // configuration timed that pass.
+    if (o_.time != "frame") {
+        std::vector<std::string> timed;
+        for (const auto& s : timings.samples)
+            if (s.series.find('/') == std::string::npos && s.series != PassTimer::kFrameSeries &&
+                std::find(timed.begin(), timed.end(), s.series) == timed.end())
+                timed.push_back(s.series);
+        if (std::find(timed.begin(), timed.end(), o_.time) == timed.end()) {
+            std::string list;
+            for (const auto& n : timed) list += (list.empty() ? "" : ",") + n;
+            throw Error("--time " + o_.time + ": no pass of that name was timed (expected frame or one of: " +
+                        (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
     result.timingSeconds = timings.seconds;
 
     // The errors: an untimed frame per (point, camera) against its counterpart.
