@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "       deferred-workbench compare --a k=v[,k=v...] --b k=v[,k=v...] [--scene S] [--preset P] [--set k=v]...\n"
     "                                  [--size WxH] [--buffer final|lbuffer|NAME] [--frames N] [options]\n"
     "       deferred-workbench compare --against reference [--b k=v[,k=v...]] [--scene S] [--preset P] [--set k=v]...\n"
-    "                                  [--size WxH] [--buffer final|lbuffer|ao|ao.raw] [--ao-rays N] [options]\n"
+    "                                  [--size WxH] [--buffer final|lbuffer|ao|ao.raw|shadow] [--ao-rays N] [options]\n"
     "  Two image files: EXR/HDR/PFM are HDR (linear radiance: HDR-FLIP, SSIM on v/(1+v));\n"
     "  anything else (PNG, JPEG, ...) LDR (display values: LDR-FLIP, SSIM as stored).\n"
     "  Two renders: the scene rendered twice with the same --scene/--preset/--set, then side A's\n"
@@ -44,7 +44,8 @@ constexpr const char* kUsage =
     "  Against the reference: side A is the CPU ground truth (docs/reference.md) of the same\n"
     "  configuration with --b's knobs (the knobs that define the model are the render's), rendered\n"
     "  once and cached; final against its tone-mapped image (no bloom, DoF or FXAA: set them false\n"
-    "  on the render), lbuffer against its L-buffer, ao (= ao.filtered) or ao.raw against its ray-traced AO\n"
+    "  on the render), lbuffer against its L-buffer, ao (= ao.filtered) or ao.raw against its ray-traced AO,\n"
+    "  shadow (= lighting.shadow, the shadow factor) against its shadow rays\n"
     "  (--ao-rays, default 64).\n"
     "options:\n"
     "  --error-map FILE.exr  per-pixel maps: absdiff.<channel>..., ssim (mean of the colour\n"
@@ -304,6 +305,7 @@ int compare(int argc, char** argv) {
             side->run = base;
             side->buffer = bufferFlag.value_or("final");
             if (side->buffer == "ao") side->buffer = "ao.filtered";  // the AO the lighting pass uses
+            if (side->buffer == "shadow") side->buffer = "lighting.shadow";  // the reference's shadow factor
         }
         inA.label = "--a";
         inB.label = "--b";

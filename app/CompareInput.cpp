@@ -61,8 +61,10 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
 std::string CompareInputs::referenceBufferFor(const std::string& buffer) {
     if (buffer == "final" || buffer == "lbuffer") return buffer;
     if (buffer == "ao" || buffer == "ao.raw" || buffer == "ao.filtered") return "ao";
+    if (buffer == "shadow" || buffer == "lighting.shadow") return "shadow";
     throw Error("--against reference: the reference has no counterpart of buffer '" + buffer +
-                "' (final, lbuffer, or ao (ao.filtered) / ao.raw against its ray-traced AO)");
+                "' (final, lbuffer, ao (ao.filtered) / ao.raw against its ray-traced AO, or shadow "
+                "(lighting.shadow) against its shadow rays)");
 }
 
 CompareImage CompareInputs::produceReference(const CompareInput& input) {

@@ -32,10 +32,12 @@ const char* const kTradeoffUsage =
     "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
     "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
     "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
+    "                                   [--mask shadow_edges] [--time frame|PASS]\n"
     "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
     "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
     "                                   [--quiet]\n"
     "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+    "                                   [--time frame|PASS]\n"
     "  --sweep      an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; repeatable;\n"
     "               the full grid of every --sweep and --presets\n"
     "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
@@ -45,8 +47,13 @@ const char* const kTradeoffUsage =
     "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
     "               cache, each camera's rendered once) or the point with these knob values on top\n"
     "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
-    "               ao = the AO buffer the lighting pass reads, today ssao.blurred; shadow: no GPU\n"
-    "               output yet); --ao-rays the reference's AO rays per pixel (default 64)\n"
+    "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
+    "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
+    "               rays per pixel (default 64)\n"
+    "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
+    "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
+    "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
+    "               since on llvmpipe the frame time drowns a small pass's\n"
     "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
     "               scene's camera.path. Several cameras add a row per point over all of them\n"
     "  --frames     counted frames per point and camera (default 5); --warmup after each switch (default 1);\n"
@@ -76,7 +83,7 @@ std::vector<const TradeoffRow*> shownRows(const TradeoffTable& t) {
     return all.empty() ? rows : all;
 }
 
-std::string markdown(const TradeoffTable& t) {
+std::string markdown(const TradeoffTable& t, const std::string& time = "frame") {
     const std::vector<const TradeoffRow*> rows = shownRows(t);
     const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
     std::set<std::string> cameras;
@@ -87,8 +94,10 @@ std::string markdown(const TradeoffTable& t) {
     header.insert(header.end(), t.axes.begin(), t.axes.end());
     if (cameraColumn) header.emplace_back("camera");
     const std::string metric = t.rows.empty() ? "error" : t.rows.front().metric + " (" + t.rows.front().buffer + ")";
-    for (const std::string& h : std::vector<std::string>{metric, "95% CI", "GPU ms median", "95% CI", "Pareto"})
+    for (const std::string& h : std::vector<std::string>{metric, "95% CI", "GPU ms median", "95% CI"})
         header.push_back(h);
+    if (time != "frame") header.push_back(time + " GPU ms median");
+    header.emplace_back(time == "frame" ? "Pareto" : "Pareto (" + time + " ms)");
     auto line = [](const std::vector<std::string>& cells) {
         std::string s = "|";
         for (const auto& c : cells) s += " " + c + " |";
@@ -106,13 +115,14 @@ std::string markdown(const TradeoffTable& t) {
         cells.push_back("[" + number(r->errorLo, "%.4g") + ", " + number(r->errorHi, "%.4g") + "]");
         cells.push_back(number(r->frameGpuMs, "%.3f"));
         cells.push_back("[" + number(r->frameGpuMsLo, "%.3f") + ", " + number(r->frameGpuMsHi, "%.3f") + "]");
+        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f"));
         cells.emplace_back(r->pareto ? "**front**" : "");
         out += line(cells);
     }
     return out;
 }
 
-std::string what(const TradeoffTable& t, const std::string& against) {
+std::string what(const TradeoffTable& t, const std::string& against, const std::string& time = "frame") {
     const std::vector<const TradeoffRow*> rows = shownRows(t);
     const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
     const std::string metric = t.rows.empty() ? "?" : t.rows.front().metric;
@@ -122,12 +132,18 @@ std::string what(const TradeoffTable& t, const std::string& against) {
            (several ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
                     : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
            "; GPU ms: the median frame time over the counted frames, 95% bootstrap interval of the median; "
-           "front: on the Pareto front of GPU ms against error (no other point is as fast and as accurate).\n";
+           "front: on the Pareto front of " + (time == "frame" ? std::string("frame") : "the " + time + " pass's median") +
+           " GPU ms against error (no other point is as fast and as accurate)" +
+           (!t.rows.empty() && t.rows.front().buffer.find(":shadow_edges") != std::string::npos
+                ? "; the error only over the pixels within 2 px of an edge of the reference's shadow buffer"
+                : "") +
+           ".\n";
 }
 
-int writePlot(const std::string& csv, const std::string& png, int width, int height) {
+int writePlot(const std::string& csv, const std::string& png, int width, int height, const std::string& time) {
     if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
-                       {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height)},
+                       {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height),
+                        "--time", time},
                        "tradeoff"))
         return 1;
     std::printf("wrote %s (%dx%d)\n", png.c_str(), width, height);
@@ -166,6 +182,7 @@ int runMerge(int argc, char** argv) {
     const auto json = cl.value("--json");
     const auto plot = cl.value("--plot");
     const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
+    const std::string time = cl.value("--time").value_or("frame");
     cl.finish("tradeoff merge");
     const std::vector<std::string> inputs = cl.positional();
     if (inputs.empty()) throw UsageError("tradeoff merge needs the shards' CSV files");
@@ -192,17 +209,17 @@ int runMerge(int argc, char** argv) {
             parts.push_back(TradeoffTable::readCsv(in));
         }
     }
-    const TradeoffTable all = TradeoffTable::merge(parts, inputs);
+    const TradeoffTable all = TradeoffTable::merge(parts, inputs, time);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n", all.rows.size(), inputs.size(),
-                what(all, "what the shards measured against").c_str(), markdown(all).c_str());
+                what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str());
     std::fflush(stdout);
     all.writeCsv(*out);
     settings.emplace_back("merged_from", from);
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(), "tradeoff record");
     std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+    return plot ? writePlot(*out, *plot, plotW, plotH, time) : 0;
 }
 
 }  // namespace
@@ -249,6 +266,8 @@ int runTradeoffCommand(int argc, char** argv) {
     if (against != "reference") o.against = listOf("--against", against);
     o.metric = cl.value("--metric").value_or("flip");
     o.buffer = cl.value("--buffer").value_or("final");
+    o.mask = cl.value("--mask").value_or("");
+    o.time = cl.value("--time").value_or("frame");
     const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
     if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 10000);
     o.walkthrough = cl.flag("--walkthrough");
@@ -305,7 +324,7 @@ int runTradeoffCommand(int argc, char** argv) {
     std::printf("## tradeoff: %s, %zu point(s) x %zu camera(s), %s of %s (%s) against %s\n\n%s\n%s\n",
                 runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
                 o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
-                what(t, againstText).c_str(), markdown(t).c_str());
+                what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
     // The JSON is the experiment record (docs/records.md): replay runs it again.
@@ -319,7 +338,7 @@ int runTradeoffCommand(int argc, char** argv) {
                    "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;
-    return writePlot(csv, plot, plotW, plotH);
+    return writePlot(csv, plot, plotW, plotH, o.time);
 }
 
 }  // namespace dw

@@ -27,7 +27,7 @@ def number(text):
     return float(text)
 
 
-def read(path):
+def read(path, time="frame"):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader, None)
@@ -38,6 +38,12 @@ def read(path):
         if header[camera + 1:camera + 1 + len(MIDDLE)] != MIDDLE:
             raise ValueError(f"{path}: not a tradeoff CSV (columns after camera: {header[camera + 1:]})")
         index = {name: i for i, name in enumerate(header)}
+        # --time PASS: the pass's median on the x axis (no interval in the CSV).
+        ms = "frame_gpu_ms" if time == "frame" else "gpu_ms." + time
+        if ms not in index:
+            raise ValueError(f"{path}: no column {ms} (--time {time})")
+        ms_lo = "frame_gpu_ms_lo" if time == "frame" else ms
+        ms_hi = "frame_gpu_ms_hi" if time == "frame" else ms
         rows = []
         for row in reader:
             if not row:
@@ -51,9 +57,9 @@ def read(path):
                 "error": number(row[index["error"]]),
                 "lo": number(row[index["error_lo"]]),
                 "hi": number(row[index["error_hi"]]),
-                "ms": number(row[index["frame_gpu_ms"]]),
-                "ms_lo": number(row[index["frame_gpu_ms_lo"]]),
-                "ms_hi": number(row[index["frame_gpu_ms_hi"]]),
+                "ms": number(row[index[ms]]),
+                "ms_lo": number(row[index[ms_lo]]),
+                "ms_hi": number(row[index[ms_hi]]),
                 "pareto": row[-1] == "1",
             })
     return axes, rows
@@ -65,11 +71,12 @@ def main():
     parser.add_argument("--out", required=True)
     parser.add_argument("--size", default="800x600")
     parser.add_argument("--overlay", action="append", default=[], help="another tradeoff CSV drawn over it")
+    parser.add_argument("--time", default="frame", help="the x axis: frame (frame_gpu_ms) or a pass (gpu_ms.PASS)")
     args = parser.parse_args()
     try:
         width, height = (int(v) for v in args.size.split("x"))
-        axes, rows = read(args.csv)
-        overlays = [read(path) for path in args.overlay]
+        axes, rows = read(args.csv, args.time)
+        overlays = [read(path, args.time) for path in args.overlay]
     except (ValueError, OSError) as e:
         print(f"tradeoff_plot: {e}", file=sys.stderr)
         return 2
@@ -133,7 +140,8 @@ def main():
                         xytext=(6, -10), fontsize=8, color=f"C{k}")
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
-    ax.set_xlabel("GPU frame ms (median, 95% CI)")
+    ax.set_xlabel("GPU frame ms (median, 95% CI)" if args.time == "frame"
+                  else f"GPU ms of the {args.time} pass (median)")
     ax.set_ylabel(f"{metric} of {buffer} (95% CI)")
     over = " over all cameras" if shown and shown[0]["camera"] == "all" else ""
     ax.set_title(f"tradeoff: {metric} of {buffer} against GPU time{over}")

@@ -33,8 +33,13 @@ public:
     static const std::vector<std::string>& metrics();
     // Throws Error for an unknown metric, images of different shapes, a
     // non-finite pixel, or a metric the images cannot have (SSIM under 11x11).
+    // With `mask` (width x height x 1, a pixel counts when > 0.5: ShadowEdgeMask),
+    // the metric over the masked pixels only (MaskedMetrics: rms and psnr from
+    // the masked pixels' squared differences, flip and ssim the mean of their
+    // map over the mask) and the tiles' sums over their masked pixels; Error
+    // when the mask's shape differs or it selects no pixel.
     static ErrorEstimate measure(const FloatImage& reference, const FloatImage& test, const std::string& metric, bool hdr,
-                                 int resamples = 2000, std::uint64_t seed = 12345);
+                                 int resamples = 2000, std::uint64_t seed = 12345, const FloatImage* mask = nullptr);
     // The mean of per-camera errors with a percentile bootstrap over the cameras.
     static ErrorEstimate meanOver(const std::vector<double>& values, int resamples = 2000, std::uint64_t seed = 12345);
 };

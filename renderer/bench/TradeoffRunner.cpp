@@ -1,17 +1,21 @@
 #include "renderer/bench/TradeoffRunner.h"
 
+#include <optional>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/ImageError.h"
+#include "renderer/metrics/ShadowEdgeMask.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/scene/CameraPath.h"
 #include "renderer/scene/SceneLoader.h"
@@ -47,9 +51,7 @@ std::string TradeoffRunner::gpuOutput(const std::string& buffer) {
     // The AO the lighting pass reads, whichever ao.method wrote it (the one
     // place that says which output `--buffer ao` means).
     if (buffer == "ao") return "ao.filtered";
-    if (buffer == "shadow")
-        throw Error("--buffer shadow: no GPU output holds the shadow visibility yet, so there is nothing to compare with "
-                    "the reference's shadow buffer (final, lbuffer or ao)");
+    if (buffer == "shadow") return "lighting.shadow";
     throw Error("--buffer: expected final, lbuffer, ao or shadow, got '" + buffer + "'");
 }
 
@@ -57,6 +59,9 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     if (o_.frames < 1) throw Error("tradeoff needs at least one counted frame per point and camera");
     if (o_.orbit > 0 && o_.walkthrough) throw Error("--orbit and --walkthrough are two camera paths; pick one");
     gpuOutput(o_.buffer);
+    if (!o_.mask.empty() && o_.mask != "shadow_edges")
+        throw Error("--mask: expected shadow_edges, got '" + o_.mask + "'");
+    if (o_.time.empty()) throw Error("--time: expected frame or a pass's name");
     const auto& metrics = ImageError::metrics();
     if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
         throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
@@ -198,6 +203,21 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     const gl::GlInfo& gl = session.glInfo();
     result.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
     const RunnerTimings timings = runner.measure("tradeoff", describe, say);
+    // --time PASS: refused before the error captures and references when no
+    // configuration timed that pass.
+    if (o_.time != "frame") {
+        std::vector<std::string> timed;
+        for (const auto& s : timings.samples)
+            if (s.series.find('/') == std::string::npos && s.series != PassTimer::kFrameSeries &&
+                std::find(timed.begin(), timed.end(), s.series) == timed.end())
+                timed.push_back(s.series);
+        if (std::find(timed.begin(), timed.end(), o_.time) == timed.end()) {
+            std::string list;
+            for (const auto& n : timed) list += (list.empty() ? "" : ",") + n;
+            throw Error("--time " + o_.time + ": no pass of that name was timed (expected frame or one of: " +
+                        (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
     result.timingSeconds = timings.seconds;
 
     // The errors: an untimed frame per (point, camera) against its counterpart.
@@ -246,8 +266,14 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
                     }
                     against = it->second;
                 }
+                // The edges of the reference's shadows (whatever --against says).
+                std::optional<FloatImage> mask;
+                if (o_.mask == "shadow_edges")
+                    mask = ShadowEdgeMask::fromShadow(reference(session.scene(), session.knobs(), session.camera(),
+                                                                o_.run.width, o_.run.height, "shadow"));
                 // Seeded by the point's number, so a shard draws what the whole run draws.
-                e = ImageError::measure(against, test, o_.metric, hdr, o_.resamples, pointSeed(p, c));
+                e = ImageError::measure(against, test, o_.metric, hdr, o_.resamples, pointSeed(p, c),
+                                        mask ? &*mask : nullptr);
             } catch (const Error& err) {
                 notes.push_back("point " + std::to_string(points_[p].index) + ", camera " + std::to_string(c) + ": " +
                                 err.what());
@@ -283,6 +309,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             row.passGpuMs.push_back(it == series.end() ? kNaN : median(it->second));
         }
     };
+    const std::string bufferColumn = o_.buffer + (o_.mask.empty() ? "" : ":" + o_.mask);
     for (size_t p = 0; p < points_.size(); ++p) {
         std::map<std::string, std::vector<double>> pooled;
         std::vector<double> values;
@@ -293,7 +320,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             row.axisValues = points_[p].values;
             row.camera = std::to_string(c);
             row.metric = o_.metric;
-            row.buffer = o_.buffer;
+            row.buffer = bufferColumn;
             const ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
             row.error = e.value;
             row.errorLo = e.low;
@@ -309,7 +336,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             row.axisValues = points_[p].values;
             row.camera = TradeoffTable::kAllCameras;
             row.metric = o_.metric;
-            row.buffer = o_.buffer;
+            row.buffer = bufferColumn;
             const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
             row.error = e.value;
             row.errorLo = e.low;
@@ -318,7 +345,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             t.rows.push_back(std::move(row));
         }
     }
-    if (!t.rows.empty()) t.markParetoFront();
+    if (!t.rows.empty()) t.markParetoFront(o_.time);
 
     std::string sets;
     for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
@@ -338,6 +365,8 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
         {"sweep", o_.sweep.oneAtATime ? "one knob at a time about the current settings" : "full grid"},
         {"metric", o_.metric},
         {"buffer", o_.buffer + " (" + output + ")"},
+        {"mask", o_.mask.empty() ? "none: every pixel" : o_.mask + ": pixels within 2 px of an edge of the reference's shadow buffer"},
+        {"front_time", o_.time == "frame" ? "frame_gpu_ms" : "gpu_ms." + o_.time},
         {"against", o_.against.empty() ? "reference" : against},
         {"error_interval", "95% percentile bootstrap over " + std::to_string(ImageError::kTile) + "x" +
                                std::to_string(ImageError::kTile) + "-pixel tiles; the all-cameras row over the cameras"},

@@ -41,12 +41,17 @@ struct TradeoffOptions {
     bool walkthrough = false;  // the scene's camera.path keyframes as the cameras
     std::string metric = "rms";
     std::string buffer = "final";
+    // "" or "shadow_edges": the error over the pixels within 2 px of an edge of
+    // the reference's shadow buffer only (ShadowEdgeMask, MaskedMetrics); the
+    // rows' buffer reads "<buffer>:shadow_edges".
+    std::string mask;
+    std::string time = "frame";  // what the front ranks by: "frame" or a pass's gpu_ms (TradeoffTable::markParetoFront)
     std::vector<std::string> against;  // empty: the reference; else knob=value on top of each point
     int resamples = 2000;
     BenchShard shard;  // points whose number % count == index
 };
 
-// The reference image of `buffer` ("final", "lbuffer", "ao") for `camera`
+// The reference image of `buffer` ("final", "lbuffer", "ao", "shadow") for `camera`
 // at width x height, under the point's knobs (which the reference model reads).
 using TradeoffReference = std::function<FloatImage(const Scene& scene, const KnobRegistry& knobs, const Camera& camera,
                                                    int width, int height, const std::string& buffer)>;
@@ -72,8 +77,9 @@ public:
     const TradeoffOptions& options() const { return o_; }
 
     // The GPU output a --buffer name reads; "ao" is the AO buffer the lighting
-    // pass reads (this is the one place that says which). Throws Error for
-    // "shadow" (no GPU output holds shadow visibility yet) and unknown names.
+    // pass reads (this is the one place that says which); "shadow" is the
+    // lighting pass's on-demand lighting.shadow (the reference's shadow
+    // factor). Throws Error for unknown names.
     static std::string gpuOutput(const std::string& buffer);
 
     // Needs a current GL 4.5 context.

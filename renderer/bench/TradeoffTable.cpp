@@ -69,15 +69,22 @@ double TradeoffTable::passGpuMs(const TradeoffRow& row, const std::string& pass)
 
 bool TradeoffTable::lowerIsBetter(const std::string& metric) { return metric != "psnr" && metric != "ssim"; }
 
-void TradeoffTable::markParetoFront() {
+double TradeoffTable::timeOf(const TradeoffRow& row, const std::string& time) const {
+    return time == "frame" ? row.frameGpuMs : passGpuMs(row, time);
+}
+
+void TradeoffTable::markParetoFront(const std::string& time) {
     if (rows.empty()) throw Error("no points to compare: the sweep is empty");
+    if (time != "frame" && std::find(passes.begin(), passes.end(), time) == passes.end())
+        throw Error("--time " + time + ": no pass of that name was timed (expected frame or one of: " +
+                    (passes.empty() ? std::string("none") : joined(passes)) + ")");
     std::map<std::tuple<std::string, std::string, std::string>, std::vector<size_t>> groups;
     for (size_t i = 0; i < rows.size(); ++i) groups[{rows[i].camera, rows[i].metric, rows[i].buffer}].push_back(i);
     for (const auto& [key, members] : groups) {
         const bool lower = lowerIsBetter(std::get<1>(key));
         std::vector<ParetoPoint> points;
         points.reserve(members.size());
-        for (size_t i : members) points.push_back({rows[i].frameGpuMs, lower ? rows[i].error : -rows[i].error});
+        for (size_t i : members) points.push_back({timeOf(rows[i], time), lower ? rows[i].error : -rows[i].error});
         const ParetoFront front(points);
         for (size_t k = 0; k < members.size(); ++k) rows[members[k]].pareto = front.contains(k);
     }
@@ -242,7 +249,8 @@ TradeoffTable TradeoffTable::readCsv(const std::string& path) {
 
 void TradeoffTable::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "tradeoff CSV"); }
 
-TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names) {
+TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names,
+                                   const std::string& time) {
     if (parts.empty()) throw Error("nothing to merge");
     auto nameOf = [&](size_t p) { return p < names.size() ? names[p] : "part " + std::to_string(p + 1); };
     TradeoffTable all;
@@ -280,7 +288,7 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
         if (a.camera != b.camera) return cameraBefore(a.camera, b.camera);
         return false;
     });
-    all.markParetoFront();
+    all.markParetoFront(time);
     return all;
 }
 

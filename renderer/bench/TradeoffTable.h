@@ -12,7 +12,9 @@
 //   camera                     the camera: "0", "1", ... or "all" (the row over
 //                              every camera of that point)
 //   metric                     flip | rms | psnr | ssim
-//   buffer                     lbuffer | final | ao | shadow (as asked for)
+//   buffer                     lbuffer | final | ao | shadow (as asked for); with
+//                              --mask shadow_edges "<buffer>:shadow_edges" (the
+//                              error over the pixels near a reference shadow edge)
 //   error,error_lo,error_hi    the metric and its interval (empty: not measured)
 //   frames                     counted frames behind the times
 //   frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi
@@ -57,12 +59,18 @@ public:
     // and rms (errors), false for psnr and ssim (similarities).
     static bool lowerIsBetter(const std::string& metric);
 
-    // Sets every row's `pareto`: the front of time (frame_gpu_ms) against
-    // error, computed (ParetoFront) separately within each group of rows
-    // with the same camera, metric and buffer; the error is minimised, or
-    // maximised for psnr and ssim. Throws dw::Error when there are no rows
-    // ("no points to compare: the sweep is empty").
-    void markParetoFront();
+    // Sets every row's `pareto`: the front of time against error, computed
+    // (ParetoFront) separately within each group of rows with the same
+    // camera, metric and buffer; the error is minimised, or maximised for
+    // psnr and ssim. `time` is "frame" (frame_gpu_ms) or a pass whose
+    // gpu_ms.<pass> column ranks instead (`tradeoff --time`: on llvmpipe the
+    // frame time drowns a small pass's); a row where that pass did not run
+    // has no time, so is off the front. Throws dw::Error when there are no
+    // rows ("no points to compare: the sweep is empty") or the pass has no
+    // column (the message lists the passes).
+    void markParetoFront(const std::string& time = "frame");
+    // The time a front ranks by in a row: frameGpuMs, or passGpuMs(row, time).
+    double timeOf(const TradeoffRow& row, const std::string& time) const;
 
     std::vector<std::string> columns() const;
     static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes);
@@ -81,7 +89,8 @@ public:
     // the passes are the union in order of first appearance. Rows sorted by
     // point, then camera (numbers in order, then "all"); the front recomputed.
     // Throws dw::Error naming the clash.
-    static TradeoffTable merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names);
+    static TradeoffTable merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names,
+                               const std::string& time = "frame");
 };
 
 }  // namespace dw

@@ -83,7 +83,11 @@ std::vector<OutputDecl> LightingPass::outputs() const {
         {"lighting.overlap", OutputKind::Count,
          "light-shader invocations per pixel: how many light volumes passed the stencil test, or how many lights "
          "of its tile or cluster list a pixel evaluated (R32F)", texture2D(GL_R32F), 1,
-         true}};
+         true},
+        {"lighting.shadow", OutputKind::Scalar,
+         "the shadow factor: luminance of the shadow-mapped lights' radiance with their shadow lookups over that "
+         "without them, 1 where none reaches and on the sky (the reference's shadow buffer, R32F)",
+         texture2D(GL_R32F), 1, true}};
     for (const auto& s : strategies_)
         for (auto& o : s->outputs()) out.push_back(o);
     return out;
@@ -115,9 +119,44 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
     shading_.setup(shaders);
     for (auto& s : strategies_) s->setup(shaders);
     params_.create();
+    shadowSumsProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/shadow_sums.frag"});
+    shadowResolveProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/shadow_resolve.frag"});
     white_ = gl::Texture::create2D(GL_R8, 1, 1);
     const std::uint8_t one = 255;
     white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
+}
+
+void LightingPass::writeShadowFactor(FrameContext& ctx, const LightTable& table, const std::function<void()>& bindInputs) {
+    if (!shadowSums_ || shadowSumsWidth_ != ctx.width || shadowSumsHeight_ != ctx.height) {
+        shadowSums_ = gl::Texture::create2D(GL_RG32F, ctx.width, ctx.height);
+        shadowSumsTarget_ = gl::Framebuffer::forColor(shadowSums_, "lighting.shadow sums");
+        shadowSumsWidth_ = ctx.width;
+        shadowSumsHeight_ = ctx.height;
+    }
+    gl::resetPipelineState(ctx.width, ctx.height);
+    shadowSumsTarget_.bind();
+    shadowSumsTarget_.clearColor(0, 0, 0, 0, 0);
+    if (ctx.shadows) {
+        for (const LightTableEntry& e : table.entries) {
+            if (!e.shadowed) continue;
+            if (ctx.shadows->prepare(ctx, e)) bindInputs();
+            gl::resetPipelineState(ctx.width, ctx.height);
+            ctx.shadows->bind();
+            shadowSumsTarget_.bind();
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE);
+            shadowSumsProgram_->use();
+            shadowSumsProgram_->set(0, e.row);
+            triangle_.draw();
+        }
+    }
+    gl::resetPipelineState(ctx.width, ctx.height);
+    shadowTarget_.get(ctx, {"lighting.shadow"}, {}, "lighting.shadow").bind();
+    shadowSums_.bind(0);
+    shadowResolveProgram_->use();
+    triangle_.draw();
+    bindInputs();  // unit 0 again
 }
 
 LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights) {
@@ -262,6 +301,7 @@ void LightingPass::execute(FrameContext& ctx) {
     counts_.gridWhere = sc.gridWhere;
     counts_.fullscreen += sc.fullscreen;
     counts_.frustumCulled = sc.culled;
+    if (ctx.wants("lighting.shadow")) writeShadowFactor(ctx, table, bindInputs);
     gl::resetPipelineState(ctx.width, ctx.height);
     fbo.bind();
     fbo.setDrawBuffers({0});

@@ -17,6 +17,13 @@
 // used; forward passes after lighting test against it, seed 003) and, when
 // asked for, lighting.overlap: light-shader invocations per pixel, and the
 // strategies' own outputs (lighting.tile_counts, lighting.cluster_counts).
+// On demand, lighting.shadow (R32F): the shadow factor as the CPU reference's
+// shadow buffer defines it (ReferenceRenderer.h: the luminance of the
+// shadow-mapped lights' radiance with their shadow lookups over that without
+// them; 1 where none reaches and on the sky), one additive full-screen draw
+// per shadow-mapped light (its map rendered again when maps are reused) into
+// a pass-owned RG32F sum, then divided (shaders/lighting/shadow_*.frag).
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -65,6 +72,8 @@ private:
     // The strategy lighting.strategy names, or under auto the one
     // chooseLightingStrategy picks from `lights` (the frame's bounded lights);
     // sets autoWhy_.
+    // lighting.shadow, after the lights (see the header's opening).
+    void writeShadowFactor(FrameContext& ctx, const LightTable& table, const std::function<void()>& bindInputs);
     LightingStrategy& pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights);
 
     std::vector<std::unique_ptr<LightingStrategy>> strategies_;
@@ -81,6 +90,11 @@ private:
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::LightingParams> params_;
     gl::Texture white_;
+    gl::ShaderLibrary::Handle shadowSumsProgram_, shadowResolveProgram_;
+    gl::Texture shadowSums_;  // RG32F: lit and unshadowed luminance (lighting.shadow)
+    gl::Framebuffer shadowSumsTarget_;
+    int shadowSumsWidth_ = 0, shadowSumsHeight_ = 0;
+    TargetFramebuffer shadowTarget_;
     TargetFramebuffer target_, countingTarget_;
     Counts counts_;
     std::string stats_, autoWhy_, lastStrategy_;

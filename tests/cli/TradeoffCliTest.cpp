@@ -231,6 +231,41 @@ TEST(TradeoffCli, ExcludeAndOrbitAndAgainstAConfiguration) {
     EXPECT_EQ(t.rows[2].frames, 4);
 }
 
+// Issue 23's shadow check: with the error restricted to the pixels near the
+// reference's shadow edges, a larger shadow map has the smaller error.
+TEST(TradeoffCli, ShadowEdgeErrorFallsAsTheMapGrows) {
+    const Result r = run("tradeoff --scene spheres --size 160x90 --set shadows.pcf_radius=0 --sweep "
+                         "shadows.map_size=128,1024 --buffer shadow --mask shadow_edges --metric rms --frames 1 "
+                         "--warmup 0 --resamples 200 --time lighting --quiet" + files("shadow"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "shadow.csv").string());
+    ASSERT_EQ(t.rows.size(), 2u);
+    for (const auto& row : t.rows) {
+        EXPECT_EQ(row.buffer, "shadow:shadow_edges");
+        EXPECT_TRUE(std::isfinite(row.error) && row.error > 0.0) << row.point;
+    }
+    // Measured: 0.168 (128) and 0.075 (1024) at pcf_radius 1, 160x90.
+    EXPECT_LT(t.rows[1].error, 0.75 * t.rows[0].error);
+    EXPECT_NE(r.out.find("rms of shadow (lighting.shadow)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| Pareto (lighting ms) |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("within 2 px of an edge of the reference's shadow buffer"), std::string::npos) << r.out;
+}
+
+// compare --against reference --buffer shadow: lighting.shadow against the
+// reference's shadow rays, one channel, close but not equal (the map's edges).
+TEST(TradeoffCli, CompareAgainstTheReferenceShadowBuffer) {
+    const fs::path json = dir() / "compare-shadow.json";
+    const Result r = run("compare --against reference --scene spheres --size 160x90 --buffer shadow --fail 2 --warn 2 --json " +
+                         json.string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    std::ifstream jf(json);
+    const nlohmann::json j = nlohmann::json::parse(jf);
+    EXPECT_EQ(j["channels"].get<int>(), 1);
+    // Measured: RMS 0.042 (map 1024, PCF 1, 160x90); 1.0 everywhere would miss the shadows by far more.
+    EXPECT_GT(j["rms"].get<double>(), 0.0);
+    EXPECT_LT(j["rms"].get<double>(), 0.08);
+}
+
 TEST(TradeoffCli, BadInputIsOneClearMessage) {
     struct Case {
         std::string args, message;
@@ -244,7 +279,9 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
         {" --sweep ssao.samples=4,8 --exclude ssao.samples=4,8", "the sweep is empty after --exclude"},
         {" --sweep ssao.samples=4,8 --exclude ssao.radius=1", "'ssao.radius' is not an axis of this sweep"},
         {" --sweep ssao.samples=4,8 --metric mse", "--metric: expected flip, rms, psnr or ssim, got 'mse'"},
-        {" --sweep ssao.samples=4,8 --buffer shadow", "no GPU output holds the shadow visibility yet"},
+        {" --sweep ssao.samples=4,8 --buffer shade", "--buffer: expected final, lbuffer, ao or shadow, got 'shade'"},
+        {" --sweep ssao.samples=4,8 --mask edges", "--mask: expected shadow_edges, got 'edges'"},
+        {" --sweep ssao.samples=4 --time bogus", "--time bogus: no pass of that name was timed (expected frame or one of: "},
         {" --presets SSAO1,NOPE", "NOPE"},
         {"", "tradeoff needs axes"},
     };

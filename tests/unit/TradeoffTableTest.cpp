@@ -180,6 +180,47 @@ TEST(TradeoffTable, HeaderAndFrontPerCamera) {
     }
 }
 
+// --time PASS: the front of one pass's time against the error, which can
+// differ from the frame's front; a pass not in the table is refused.
+TEST(TradeoffTable, FrontByOnePassTime) {
+    TradeoffTable t;
+    t.axes = {"shadows.map_size"};
+    t.passes = {"shadows", "lighting"};
+    // (frame ms, shadows ms, error): the frame time is noise that hides the pass's cost.
+    const double data[][3] = {{50.0, 1.0, 0.30}, {40.0, 2.0, 0.20}, {45.0, 4.0, 0.10}, {60.0, 4.0, 0.10}, {30.0, 8.0, 0.05}};
+    for (int i = 0; i < 5; ++i) {
+        TradeoffRow r = row(i, {std::to_string(128 << i)}, "0", data[i][2], data[i][0]);
+        r.passGpuMs = {data[i][1], 10.0};
+        t.rows.push_back(r);
+    }
+    t.rows[4].passGpuMs[0] = kNaN;  // the pass did not run at point 4: no time, off its front
+    auto front = [&] {
+        std::vector<int> on;
+        for (const auto& r : t.rows)
+            if (r.pareto) on.push_back(r.point);
+        return on;
+    };
+    t.markParetoFront();
+    EXPECT_EQ(front(), (std::vector<int>{4}));  // frame: 30 ms with the least error beats everything
+    t.markParetoFront("shadows");
+    // shadows ms: 1 (.3), 2 (.2), 4 (.1) twice (exact duplicates both stay), point 4 has none.
+    EXPECT_EQ(front(), (std::vector<int>{0, 1, 2, 3}));
+    EXPECT_DOUBLE_EQ(t.timeOf(t.rows[2], "shadows"), 4.0);
+    EXPECT_DOUBLE_EQ(t.timeOf(t.rows[2], "frame"), 45.0);
+    try {
+        t.markParetoFront("ssao");
+        FAIL() << "no ssao column";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--time ssao: no pass of that name was timed (expected frame or one of: "
+                                             "shadows"),
+                  std::string::npos)
+            << e.what();
+    }
+    // merge ranks by the same time.
+    const TradeoffTable merged = TradeoffTable::merge({t}, {"a.csv"}, "shadows");
+    for (size_t i = 0; i < merged.rows.size(); ++i) EXPECT_EQ(merged.rows[i].pareto, i < 4) << i;
+}
+
 TEST(TradeoffTable, ReadsBackExactly) {
     TradeoffTable t = study();
     t.axes[1] = "camera.near";
