@@ -67,5 +67,31 @@ class AoMethodsPlotTest(unittest.TestCase):
         self.assertIn("bad.csv", r.stderr)
 
 
+class BenchPassBarsTest(unittest.TestCase):
+    """scripts/bench_pass_bars.py: draws a bench JSON's pass medians; a file that is not one is refused (2)."""
+
+    def test_draws_and_refuses(self):
+        import json
+        script = os.path.join(os.path.dirname(SCRIPT), "bench_pass_bars.py")
+        with tempfile.TemporaryDirectory() as d:
+            good, bad, out = (os.path.join(d, n) for n in ("b.json", "x.json", "b.png"))
+            configs = [{"size": size, "knobs": {"tonemap.operator": op},
+                        "series": {"tonemap": {"gpu_ms": {"median": 1.0}}, "luminance": {"gpu_ms": {"median": 3.0}}}}
+                       for size in ("160x90", "320x180") for op in ("simple", "reinhard")]
+            with open(good, "w") as f:
+                json.dump({"results": {"configs": configs}}, f)
+            with open(bad, "w") as f:
+                f.write("{}")
+            r = subprocess.run([sys.executable, script, "--json", good, "--passes", "tonemap,luminance", "--out", out],
+                               capture_output=True, text=True)
+            self.assertIn(r.returncode, (0, 3), r.stderr)
+            if r.returncode == 0:
+                self.assertGreater(os.path.getsize(out), 1000)
+            r = subprocess.run([sys.executable, script, "--json", bad, "--passes", "ao", "--out", out],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("x.json", r.stderr)
+
+
 if __name__ == "__main__":
     unittest.main()
