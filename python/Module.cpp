@@ -429,12 +429,21 @@ PYBIND11_MODULE(deferred_workbench, m) {
             if (settings)
                 for (const auto& [k, v] : *settings) o.run.sets.push_back(py::str(k).cast<std::string>() + "=" + knobText(v));
             o.grid.sizes = sizes.empty() ? std::vector<std::pair<int, int>>{{160, 90}} : sizes;
+            for (int n : lights)
+                if (n < 0 || n > 1000000)
+                    throw py::value_error("bench: lights must be between 0 and 1000000, got " + std::to_string(n));
             o.grid.lights = lights;
             if (sweep)
                 for (const auto& [k, values] : *sweep) {
                     BenchKnobAxis axis;
                     axis.knob = py::str(k).cast<std::string>();
+                    // As the CLI's --sweep: a list of values, at least one (an empty axis is an empty grid).
+                    if (py::isinstance<py::str>(values) || !py::isinstance<py::sequence>(values))
+                        throw py::value_error("bench: sweep['" + axis.knob + "'] must be a list of values, got " +
+                                              py::str(py::type::of(values).attr("__name__")).cast<std::string>());
                     for (const auto& v : values) axis.values.push_back(knobText(v));
+                    if (axis.values.empty())
+                        throw py::value_error("bench: sweep['" + axis.knob + "'] has no values (an empty axis leaves no configuration)");
                     o.grid.knobAxes.push_back(axis);
                 }
             // Knob names and values with the registry's checks first (KnobError), as Session does.

@@ -291,6 +291,11 @@ class SessionTest(unittest.TestCase):
         orbit = dw.bench(scene="default", sizes=[(32, 18)], frames=2, warmup=0, orbit=2)
         self.assertEqual(orbit["camera_path"], {"mode": "orbit", "orbit_poses": 2})
         self.assertEqual(orbit["results"]["settings"]["camera"], "orbit 2")
+        # An empty or non-list axis and an impossible light count raise (an empty axis crashed once).
+        for bad in ({"sweep": {"ssao.samples": []}}, {"sweep": {"ssao.samples": [4], "ssao.radius": []}},
+                    {"sweep": {"ssao.samples": "4,8"}}, {"sweep": {"ssao.samples": 4}}, {"lights": [10**9]}):
+            with self.assertRaises(ValueError, msg=str(bad)):
+                dw.bench(scene="default", sizes=[(32, 18)], frames=1, **bad)
         with self.assertRaises(dw.KnobError):
             dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
         with self.assertRaises(dw.KnobError):
