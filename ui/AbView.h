@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/bench/DifferenceInterval.h"
+#include "renderer/bench/Bootstrap.h"
 
 namespace dw::ui {
 

@@ -80,6 +80,26 @@ RatioInterval bootstrapRatioOfMedians(const std::vector<double>& a, const std::v
     return r;
 }
 
+DifferenceInterval bootstrapDifferenceOfMedians(const std::vector<double>& a, const std::vector<double>& b,
+                                                int resamples, std::uint64_t seed, double alpha) {
+    DifferenceInterval r;
+    if (a.empty() || b.empty() || resamples <= 0) return r;
+    r.difference = median(a) - median(b);
+    std::mt19937_64 rng(seed);
+    std::vector<double> ra(a.size()), rb(b.size()), differences;
+    differences.reserve(static_cast<size_t>(resamples));
+    for (int i = 0; i < resamples; ++i) {
+        for (auto& v : ra) v = a[draw(rng, a.size())];
+        for (auto& v : rb) v = b[draw(rng, b.size())];
+        differences.push_back(medianInPlace(ra) - medianInPlace(rb));
+    }
+    std::sort(differences.begin(), differences.end());
+    r.low = percentile(differences, alpha / 2.0);
+    r.high = percentile(differences, 1.0 - alpha / 2.0);
+    r.resamples = resamples;
+    return r;
+}
+
 Interval bootstrapGroupMean(const std::vector<double>& sums, const std::vector<double>& weights, int resamples,
                             std::uint64_t seed, double alpha) {
     Interval r;

@@ -178,21 +178,21 @@ RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::f
     for (int round = 0; round < roundCount; ++round) {
         for (int c = 0; c < configs; ++c) {
             const int first = round * plan_.block, count = std::min(plan_.block, plan_.frames - first);
-            std::vector<int> todo;
+            std::vector<int> pending;
             for (int j = 0; j < count; ++j)
-                if (!skipped(c, first + j)) todo.push_back(first + j);
-            if (todo.empty()) continue;
+                if (!skipped(c, first + j)) pending.push_back(first + j);
+            if (pending.empty()) continue;
             const auto roundStart = Clock::now();
             RenderSession& session = select_(c);
             SessionFrames& frames = sessions.at(&session);
             // Warm-up after a switch (every block when there is more than one configuration).
             if (c != previous)
                 for (int w = 0; w < plan_.warmup; ++w) {
-                    pose_(session, c, todo.front());
+                    pose_(session, c, pending.front());
                     session.render(request);
                 }
             previous = c;
-            for (int k : todo) {
+            for (int k : pending) {
                 pose_(session, c, k);
                 FrameReport report = session.render(request);
                 frames.counted[report.frameIndex] = {c, k, seq++};
