@@ -196,11 +196,7 @@ void checkRatioSeriesNamesAPass(const std::string& series) {
 // least), in a folder that can be written.
 void checkPlotOptions(const std::optional<std::string>& plot, int width, int height) {
     if (!plot) return;
-    std::string ext = fs::path(*plot).extension().string();
-    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + *plot + "'");
-    if (width < 50 || height < 50)
-        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
+    checkPlotFile(*plot, width, height);
     CommandLine::requireWritable(*plot, "plot");
 }
 

@@ -4,9 +4,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+
+#include "app/CommandLine.h"
 
 extern char** environ;
 
@@ -81,6 +84,14 @@ bool runPlotScript(const std::string& script, const std::string& scriptEnv, cons
                              "scripts/setup-deps.sh --tests)"
                            : "cannot run python3 for the plot (Debian: apt-get install python3-matplotlib)");
     return false;
+}
+
+void checkPlotFile(const std::string& plot, int width, int height) {
+    std::string ext = fs::path(plot).extension().string();
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
+    if (width < 50 || height < 50)
+        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
 }
 
 }  // namespace dw

@@ -16,4 +16,9 @@ namespace dw {
 bool runPlotScript(const std::string& script, const std::string& scriptEnv, const std::vector<std::string>& args,
                    const std::string& who);
 
+// A plot bench and tradeoff can draw: `plot` names a .png (the scripts write
+// PNG only; any case), at least 50x50 pixels (the scripts' least). Throws
+// UsageError naming --plot or --plot-size.
+void checkPlotFile(const std::string& plot, int width, int height);
+
 }  // namespace dw

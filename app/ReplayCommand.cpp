@@ -25,10 +25,10 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
-#include "app/TradeoffMeasurement.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
+#include "renderer/bench/TradeoffStudy.h"
 #include "renderer/record/BuildInfo.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/scene/SceneLoader.h"
@@ -251,7 +251,10 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     }
     const TradeoffTable before = old.tradeoffTable(path);
     TradeoffRunner runner(again.options);
-    const TradeoffMeasurement m = measureTradeoff(runner, again.aoRays, true);
+    auto context = HeadlessGlContext::create();
+    TradeoffStudyProgress progress;
+    progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress);
     for (const auto& [k, v] : old.gl)
         if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer"))
             std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(m.machine, "gl_renderer").c_str());

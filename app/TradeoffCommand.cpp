@@ -2,6 +2,7 @@
 // and in error against the CPU reference (or a named configuration), and
 // which settings are on the Pareto front; `tradeoff merge` joins shards.
 // docs/tradeoffs.md says how to run it and what each column means.
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -15,10 +16,10 @@
 #include "app/HeadlessGlContext.h"
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
-#include "app/TradeoffMeasurement.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
+#include "renderer/bench/TradeoffStudy.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/scene/SceneLoader.h"
@@ -231,93 +232,73 @@ int runTradeoffCommand(int argc, char** argv) {
         std::cout << kTradeoffUsage;
         return 0;
     }
-    TradeoffOptions o;
-    o.run = cl.runConfig();
+    // The options as the CLI gives them; TradeoffStudy checks them (as it does the Python module's).
+    TradeoffStudyOptions s;
+    s.run = cl.runConfig();
     const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
-    o.run.width = w;
-    o.run.height = h;
-    for (const auto& s : cl.values("--sweep")) {
-        BenchKnobAxis axis;
-        try {
-            axis = BenchGrid::parseSweep(s);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-        o.sweep.axes.push_back({axis.knob, axis.values});
-    }
-    if (const auto presets = cl.value("--presets")) {
-        TradeoffAxis axis{"preset", listOf("--presets", *presets)};
-        o.sweep.axes.insert(o.sweep.axes.begin(), std::move(axis));
-    }
-    const auto knobs = cl.value("--knobs");
-    if (knobs && *knobs != "speed/quality")
-        throw UsageError("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
-                         *knobs + "'");
-    if (knobs && !o.sweep.axes.empty()) throw UsageError("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
-    const std::vector<std::string> excludes = cl.values("--exclude");
-    for (const auto& e : excludes) {
-        try {
-            o.sweep.exclusion.add(e);
-        } catch (const Error& err) {
-            throw UsageError(err.what());
-        }
-    }
-    const std::string against = cl.value("--against").value_or("reference");
-    if (against != "reference") o.against = listOf("--against", against);
-    o.metric = cl.value("--metric").value_or("flip");
-    o.buffer = cl.value("--buffer").value_or("final");
-    o.mask = cl.value("--mask").value_or("");
-    o.time = cl.value("--time").value_or("frame");
-    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 10000);
-    o.walkthrough = cl.flag("--walkthrough");
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("5"), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
-    o.resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
-    if (const auto shard = cl.value("--shard")) {
-        try {
-            o.shard = BenchShard::parse(*shard);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-    }
-    const std::string suffix =
-        o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
-    const std::string csv = cl.value("--csv").value_or("tradeoff" + suffix + ".csv");
-    const std::string json = cl.value("--json").value_or("tradeoff" + suffix + ".json");
-    const std::string plot = cl.value("--plot").value_or("tradeoff" + suffix + ".png");
+    s.run.width = w;
+    s.run.height = h;
+    s.sweep = cl.values("--sweep");
+    if (const auto presets = cl.value("--presets")) s.presets = listOf("--presets", *presets);
+    s.knobs = cl.value("--knobs").value_or("");
+    s.exclude = cl.values("--exclude");
+    s.against = cl.value("--against").value_or("reference");
+    s.metric = cl.value("--metric").value_or("flip");
+    s.buffer = cl.value("--buffer").value_or("final");
+    s.mask = cl.value("--mask").value_or("");
+    s.time = cl.value("--time").value_or("frame");
+    // Whole numbers here; their ranges are TradeoffStudy::check's.
+    auto whole = [&](const char* flag, const char* fallback) {
+        return CommandLine::parseInt(flag, cl.value(flag).value_or(fallback), INT_MIN, INT_MAX);
+    };
+    s.aoRays = whole("--ao-rays", "64");
+    if (cl.value("--orbit")) s.orbit = whole("--orbit", "");
+    s.walkthrough = cl.flag("--walkthrough");
+    s.frames = whole("--frames", "5");
+    s.warmup = whole("--warmup", "1");
+    s.block = whole("--block", "1");
+    s.resamples = whole("--resamples", "2000");
+    s.shard = cl.value("--shard").value_or("");
+    const std::optional<std::string> csvFlag = cl.value("--csv"), jsonFlag = cl.value("--json"), plotFlag = cl.value("--plot");
     const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
     const bool quiet = cl.flag("--quiet");
     cl.finish("tradeoff");
     if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");
-    if (o.sweep.axes.empty() && !knobs)
-        throw UsageError("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
-    CommandLine::requireDistinctFiles({{"--csv", csv}, {"--json", json}, {"--plot", plot}}, CommandLine::inputFiles(o.run));
-    checkPlot(plot, plotW, plotH);
+    TradeoffOptions checked;
+    try {
+        checked = TradeoffStudy::check(s);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    const std::string suffix = checked.shard.whole() ? ""
+                                                     : "-shard-" + std::to_string(checked.shard.index) + "-of-" +
+                                                           std::to_string(checked.shard.count);
+    const std::string csv = csvFlag.value_or("tradeoff" + suffix + ".csv");
+    const std::string json = jsonFlag.value_or("tradeoff" + suffix + ".json");
+    const std::string plot = plotFlag.value_or("tradeoff" + suffix + ".png");
+    CommandLine::requireDistinctFiles({{"--csv", csv}, {"--json", json}, {"--plot", plot}}, CommandLine::inputFiles(s.run));
+    checkPlotFile(plot, plotW, plotH);
     CommandLine::requireWritable(csv, "tradeoff CSV");
     CommandLine::requireWritable(json, "tradeoff JSON");
     CommandLine::requireWritable(plot, "plot");
-    if (knobs) {
-        // About the current settings: the run configuration's knobs on its scene.
-        o.run.validate();
-        const Scene scene = loadScene(o.run.sceneSpec());
-        KnobRegistry current = RunConfig::declaredKnobs();
-        o.run.applyKnobs(current, scene);
-        GridExclusion exclusion = o.sweep.exclusion;
-        o.sweep = TradeoffSweep::aroundCurrent(current);
-        o.sweep.exclusion = exclusion;
-    }
+    const TradeoffOptions o = TradeoffStudy::runnerOptions(s);  // --knobs speed/quality: its axes, from the scene
 
     // Everything that can fail without GL fails here: axes, values, presets, the scene.
     TradeoffRunner runner(o);
     for (const auto& wline : runner.scene().warnings) std::fprintf(stderr, "warning: %s\n", wline.c_str());
-    TradeoffMeasurement measured = measureTradeoff(runner, aoRays, quiet);
-    TradeoffResult& result = measured.result;
-    const BenchFields& machine = measured.machine;
+    auto context = HeadlessGlContext::create();
+    TradeoffStudyProgress progress;
+    if (!quiet) progress.line = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    TradeoffMeasurement measured = TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress);
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-    result.settings.emplace_back("command", command);
+    // The JSON is the experiment record (docs/records.md): replay runs it again.
+    const ExperimentRecord record = TradeoffStudy::record(s, o, runner, measured, command);
+    const TradeoffResult& result = measured.result;
+    const std::string against = s.against;
 
     const TradeoffTable& t = result.table;
     const std::string againstText = o.against.empty() ? "the CPU reference" : against;
@@ -327,15 +308,7 @@ int runTradeoffCommand(int argc, char** argv) {
                 what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
-    // The JSON is the experiment record (docs/records.md): replay runs it again.
-    RecordedTradeoff recorded;
-    recorded.options = o;
-    recorded.exclude = excludes;
-    recorded.aoRays = aoRays;
-    recorded.runPreset = o.run.presetSpec();
-    recorded.runSets = o.run.sets;
-    writeBenchFile(json, ExperimentRecord::forTradeoff(recorded, runner.scene(), t, machine, result.settings).json(),
-                   "tradeoff record");
+    writeBenchFile(json, record.json(), "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;
     return writePlot(csv, plot, plotW, plotH, o.time);

@@ -1,0 +1,176 @@
+#include "renderer/bench/TradeoffStudy.h"
+
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include "renderer/Error.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/record/HostInfo.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+// As CommandLine::parseInt says a number out of its range.
+int inRange(const std::string& flag, int v, int min, int max) {
+    if (v < min || v > max)
+        throw Error(flag + " must be between " + std::to_string(min) + " and " + std::to_string(max));
+    return v;
+}
+
+}  // namespace
+
+TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
+    TradeoffOptions o;
+    o.run = s.run;
+    inRange("--size width", s.run.width, 1, 16384);
+    inRange("--size height", s.run.height, 1, 16384);
+    for (const auto& text : s.sweep) {
+        const BenchKnobAxis axis = BenchGrid::parseSweep(text);
+        o.sweep.axes.push_back({axis.knob, axis.values});
+    }
+    if (!s.presets.empty()) {
+        for (const auto& p : s.presets)
+            if (p.empty()) throw Error("--presets: an empty preset name");
+        o.sweep.axes.insert(o.sweep.axes.begin(), TradeoffAxis{"preset", s.presets});
+    }
+    if (!s.knobs.empty() && s.knobs != "speed/quality")
+        throw Error("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
+                    s.knobs + "'");
+    if (!s.knobs.empty() && !o.sweep.axes.empty())
+        throw Error("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
+    for (const auto& e : s.exclude) o.sweep.exclusion.add(e);
+    if (s.against != "reference") o.against = splitList(s.against, "--against");
+    o.metric = s.metric;
+    o.buffer = s.buffer;
+    o.mask = s.mask;
+    o.time = s.time;
+    inRange("--ao-rays", s.aoRays, 1, 1 << 20);
+    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, 1, 10000);
+    o.walkthrough = s.walkthrough;
+    o.frames = inRange("--frames", s.frames, 1, 100000);
+    o.warmup = inRange("--warmup", s.warmup, 0, 100000);
+    o.block = inRange("--block", s.block, 1, 100000);
+    o.resamples = inRange("--resamples", s.resamples, 100, 1000000);
+    if (!s.shard.empty()) o.shard = BenchShard::parse(s.shard);
+    if (o.sweep.axes.empty() && s.knobs.empty())
+        throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
+    return o;
+}
+
+TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& s) {
+    TradeoffOptions o = check(s);
+    if (!s.knobs.empty()) {
+        // About the current settings: the run configuration's knobs on its scene.
+        o.run.validate();
+        const Scene scene = loadScene(o.run.sceneSpec());
+        KnobRegistry current = RunConfig::declaredKnobs();
+        o.run.applyKnobs(current, scene);
+        GridExclusion exclusion = o.sweep.exclusion;
+        o.sweep = TradeoffSweep::aroundCurrent(current);
+        o.sweep.exclusion = exclusion;
+    }
+    return o;
+}
+
+TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
+                                           const TradeoffStudyProgress& progress) {
+    auto stopIfAsked = [&] {
+        if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
+    };
+    auto say = [&](const std::string& line) {
+        stopIfAsked();
+        if (progress.line) progress.line(line);
+    };
+    auto warn = [&](const std::string& line) {
+        if (progress.warning) progress.warning(line);
+    };
+    // References through the shared cache; each distinct one rendered once in this run.
+    const reference::ReferenceCache cache;
+    std::map<std::string, reference::ReferenceImages> rendered;
+    bool noted = false;
+    int references = 0, cachedReferences = 0;
+    double referenceSeconds = 0.0;
+    const TradeoffReference reference = [&](const Scene& scene, const KnobRegistry& k, const Camera& camera, int width,
+                                            int height, const std::string& buffer) {
+        reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
+        model.aoRays = aoRays;
+        reference::ReferenceRequest request;
+        request.camera = camera;
+        request.width = width;
+        request.height = height;
+        const std::string key = reference::referenceKey(scene, model, request);
+        auto it = rendered.find(key);
+        if (it == rendered.end()) {
+            stopIfAsked();
+            std::optional<reference::ReferenceImages> images = cache.load(key);
+            if (images) {
+                ++cachedReferences;
+            } else {
+                say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
+                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
+                    "; cached for the next run)");
+                images = reference::renderReference(scene, model, request);
+                ++references;
+                referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
+                try {
+                    cache.store(key, *images);
+                } catch (const std::exception& e) {
+                    warn(std::string("warning: the reference is not cached: ") + e.what());
+                }
+            }
+            if (!noted && buffer == "final") {
+                const reference::KnobReport report = reference::reportKnobs(k, model);
+                if (!report.unmodelledOn.empty()) {
+                    std::string on;
+                    for (const auto& n : report.unmodelledOn) on += " " + n;
+                    warn("note: the reference's final image has no" + on +
+                         " (set them false to measure the shading alone)");
+                }
+                noted = true;
+            }
+            it = rendered.emplace(key, std::move(*images)).first;
+        }
+        const FloatImage* image = it->second.buffer(buffer);
+        if (!image) throw Error("the reference has no buffer '" + buffer + "'");
+        return *image;
+    };
+
+    TradeoffMeasurement m;
+    m.result = runner.run(reference, say);
+    TradeoffResult& result = m.result;
+    BenchFields& machine = m.machine;
+    machine = result.machine;
+    machine.emplace_back("gl_platform", glPlatform);
+    machine.emplace_back("cpu", cpuModel());
+    machine.emplace_back("compiler", compilerName());
+    machine.emplace_back("date", utcNow());
+    if (runner.options().against.empty()) {
+        result.settings.emplace_back("references_rendered", std::to_string(references));
+        result.settings.emplace_back("references_from_cache", std::to_string(cachedReferences));
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.6g", referenceSeconds);
+        result.settings.emplace_back("reference_seconds", text);
+    }
+    return m;
+}
+
+ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, const TradeoffOptions& given,
+                                       const TradeoffRunner& runner, TradeoffMeasurement measured,
+                                       const std::string& command) {
+    measured.result.settings.emplace_back("command", command);
+    RecordedTradeoff recorded;
+    recorded.options = given;
+    recorded.exclude = options.exclude;
+    recorded.aoRays = options.aoRays;
+    recorded.runPreset = options.run.presetSpec();
+    recorded.runSets = options.run.sets;
+    return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result.table, measured.machine,
+                                         measured.result.settings);
+}
+
+}  // namespace dw
