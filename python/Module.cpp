@@ -8,9 +8,15 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 
+#include "app/CommandLine.h"
+#include "app/PlotScript.h"
 #include "python/WorkbenchSession.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/TradeoffStudy.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ImageComparison.h"
 #include "renderer/metrics/ComparisonHeatMap.h"
@@ -234,6 +240,213 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
     return d;
 }
 
+
+// A sweep {knob: [values]} as bench's and tradeoff's axes, each value as
+// --sweep writes it; `command` names the function in the messages. As the
+// CLI's --sweep: a list of values, at least one (an empty axis is an empty grid).
+std::vector<BenchKnobAxis> sweepAxes(const std::string& command, const std::optional<py::dict>& sweep) {
+    std::vector<BenchKnobAxis> axes;
+    if (!sweep) return axes;
+    for (const auto& [k, values] : *sweep) {
+        BenchKnobAxis axis;
+        axis.knob = py::str(k).cast<std::string>();
+        if (py::isinstance<py::str>(values) || !py::isinstance<py::sequence>(values))
+            throw py::value_error(command + ": sweep['" + axis.knob + "'] must be a list of values, got " +
+                                  py::str(py::type::of(values).attr("__name__")).cast<std::string>());
+        for (const auto& v : values) axis.values.push_back(knobText(v));
+        if (axis.values.empty())
+            throw py::value_error(command + ": sweep['" + axis.knob + "'] has no values (an empty axis leaves no configuration)");
+        axes.push_back(axis);
+    }
+    return axes;
+}
+
+// {knob: value} as --set assignments.
+std::vector<std::string> assignments(const std::optional<py::dict>& settings) {
+    std::vector<std::string> sets;
+    if (settings)
+        for (const auto& [k, v] : *settings) sets.push_back(py::str(k).cast<std::string>() + "=" + knobText(v));
+    return sets;
+}
+
+// Knob names and values with the registry's checks first (KnobError), as
+// Session does: the settings, and each axis that is a knob (tradeoff's
+// preset and clip-plane axes are checked by its runner).
+void checkKnobs(const std::vector<std::string>& sets, const std::vector<BenchKnobAxis>& axes) {
+    KnobRegistry declared = RunConfig::declaredKnobs();
+    try {
+        for (const std::string& a : sets) declared.applyAssignment(a);
+        for (const BenchKnobAxis& axis : axes) {
+            if (axis.knob == "preset" || TradeoffSweep::isCameraAxis(axis.knob)) continue;
+            for (const std::string& v : axis.values) declared.setFromString(axis.knob, v);
+        }
+    } catch (const Error& e) {
+        throw KnobError(e.what());
+    }
+}
+
+// A str ("A,B", as the CLI's flag takes it) or a list of str.
+std::vector<std::string> textList(const std::string& what, const py::handle& value) {
+    if (value.is_none()) return {};
+    if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+    if (!py::isinstance<py::sequence>(value))
+        throw py::value_error("tradeoff: " + what + " must be a str or a list of str, got " +
+                              py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+    std::vector<std::string> items;
+    for (const auto& v : value) {
+        if (!py::isinstance<py::str>(v))
+            throw py::value_error("tradeoff: " + what + " must hold str, got " +
+                                  py::str(py::type::of(v).attr("__name__")).cast<std::string>());
+        items.push_back(v.cast<std::string>());
+    }
+    return items;
+}
+
+// The table's rows as tradeoff --csv writes them: one dict a row, its keys
+// the CSV's columns in order (point, each axis, camera, metric, buffer,
+// error, error_lo, error_hi, frames, frame_gpu_ms, frame_gpu_ms_lo,
+// frame_gpu_ms_hi, gpu_ms.<pass>..., pareto); NaN where the CSV is empty.
+py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
+    py::list rows;
+    for (const TradeoffRow& r : t.rows) {
+        if (frontOnly && !r.pareto) continue;
+        py::dict d;
+        d["point"] = r.point;
+        for (size_t a = 0; a < t.axes.size(); ++a) d[py::str(t.axes[a])] = r.axisValues[a];
+        d["camera"] = r.camera;
+        d["metric"] = r.metric;
+        d["buffer"] = r.buffer;
+        d["error"] = r.error;
+        d["error_lo"] = r.errorLo;
+        d["error_hi"] = r.errorHi;
+        d["frames"] = r.frames;
+        d["frame_gpu_ms"] = r.frameGpuMs;
+        d["frame_gpu_ms_lo"] = r.frameGpuMsLo;
+        d["frame_gpu_ms_hi"] = r.frameGpuMsHi;
+        for (size_t p = 0; p < t.passes.size(); ++p) d[py::str("gpu_ms." + t.passes[p])] = r.passGpuMs[p];
+        d["pareto"] = r.pareto;
+        rows.append(d);
+    }
+    return rows;
+}
+
+// Runs `f`, a check whose dw::Error is a bad argument: ValueError (FileError stays dw.Error).
+template <typename F>
+auto asValueError(F&& f) {
+    try {
+        return f();
+    } catch (const FileError&) {
+        throw;
+    } catch (const KnobError&) {
+        throw;
+    } catch (const Error& e) {
+        throw py::value_error(e.what());
+    }
+}
+
+py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sweep, const py::object& presets,
+                       const py::object& exclude, std::optional<std::string> csv, std::optional<std::string> json,
+                       std::optional<std::string> plot, std::pair<int, int> plotSize, bool quiet,
+                       const py::object& progressFn) {
+    const std::vector<BenchKnobAxis> axes = sweepAxes("tradeoff", sweep);
+    for (const auto& a : axes) {
+        std::string text = a.knob + "=";
+        for (size_t i = 0; i < a.values.size(); ++i) text += (i ? "," : "") + a.values[i];
+        s.sweep.push_back(text);
+    }
+    s.presets = textList("presets", presets);
+    if (s.presets.size() == 1 && s.presets[0].find(',') != std::string::npos)
+        s.presets = asValueError([&] { return splitList(s.presets[0], "--presets"); });
+    s.exclude = textList("exclude", exclude);
+    if (!progressFn.is_none() && !PyCallable_Check(progressFn.ptr()))
+        throw py::value_error("tradeoff: progress must be a callable taking a line of text, or None");
+    checkKnobs(s.run.sets, axes);
+    asValueError([&] { return TradeoffStudy::check(s); });
+    // The files, checked before anything is measured (as the CLI's are).
+    CommandLine::NamedFiles writes;
+    if (csv) writes.emplace_back("csv", *csv);
+    if (json) writes.emplace_back("json", *json);
+    if (plot) writes.emplace_back("plot", *plot);
+    asValueError([&] {
+        CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(s.run));
+        if (plot) checkPlotFile(*plot, plotSize.first, plotSize.second);
+        return 0;
+    });
+    if (csv) CommandLine::requireWritable(*csv, "tradeoff CSV");
+    if (json) CommandLine::requireWritable(*json, "tradeoff JSON");
+    if (plot) CommandLine::requireWritable(*plot, "plot");
+
+    // Progress lines and warnings: to `progress` when given, else to stderr as
+    // the CLI writes them (lines not when quiet). Ctrl-C or an exception in
+    // `progress` stops the run at its next line.
+    bool stopped = false;
+    TradeoffStudyProgress progress;
+    auto emit = [&](const std::string& line, bool warning) {
+        py::gil_scoped_acquire acquire;
+        if (stopped) return;
+        if (progressFn.is_none()) {
+            if (warning || !quiet) std::fprintf(stderr, "%s\n", line.c_str());
+            return;
+        }
+        try {
+            progressFn(line);
+        } catch (py::error_already_set& e) {
+            e.restore();
+            stopped = true;
+        }
+    };
+    progress.line = [&](const std::string& line) { emit(line, false); };
+    progress.warning = [&](const std::string& line) { emit(line, true); };
+    progress.cancelled = [&] {
+        py::gil_scoped_acquire acquire;
+        if (!stopped && PyErr_CheckSignals() != 0) stopped = true;
+        return stopped;
+    };
+
+    ExperimentRecord record;
+    TradeoffTable table;
+    std::string timeAxis;
+    bool plotDrawn = true;
+    try {
+        py::gil_scoped_release release;
+        // The scene, --knobs' axes and every axis value: a bad one is ValueError (a missing file dw.Error).
+        const TradeoffOptions o = asValueError([&] { return TradeoffStudy::runnerOptions(s); });
+        std::unique_ptr<TradeoffRunner> runner = asValueError([&] { return std::make_unique<TradeoffRunner>(o); });
+        for (const auto& w : runner->scene().warnings) progress.warning("warning: " + w);
+        TradeoffMeasurement measured = WorkbenchSession::tradeoff(*runner, s.aoRays, progress);
+        if (progress.cancelled()) throw TradeoffCancelled();  // asked to stop after the last line: nothing written
+        table = measured.result.table;
+        timeAxis = o.time;
+        record = TradeoffStudy::record(s, o, *runner, std::move(measured), "deferred_workbench.tradeoff (Python)");
+        if (csv) table.writeCsv(*csv);
+        if (json) writeBenchFile(*json, record.json(), "tradeoff record");
+        if (plot && !table.rows.empty()) {
+            // The plot is drawn from a CSV: the one asked for, else a file of its own beside the plot.
+            const std::string from = csv ? *csv : *plot + ".csv";
+            if (!csv) table.writeCsv(from);
+            plotDrawn = runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
+                                      {"--csv", from, "--out", *plot, "--size",
+                                       std::to_string(plotSize.first) + "x" + std::to_string(plotSize.second),
+                                       "--time", timeAxis},
+                                      "tradeoff");
+            if (!csv) {
+                std::error_code ec;
+                std::filesystem::remove(from, ec);
+            }
+        }
+    } catch (const TradeoffCancelled&) {
+        if (PyErr_Occurred()) throw py::error_already_set();  // KeyboardInterrupt, or what progress raised
+        throw Error("tradeoff: cancelled");
+    }
+    if (!plotDrawn && PyErr_WarnEx(PyExc_RuntimeWarning,
+                                   ("tradeoff: the plot " + *plot + " was not drawn (stderr says why)").c_str(), 1) != 0)
+        throw py::error_already_set();
+    py::dict d = recordObject(record);
+    d["rows"] = tradeoffRows(table, false);
+    d["front"] = tradeoffRows(table, true);
+    return d;
+}
+
 }  // namespace
 }  // namespace dw
 
@@ -262,9 +475,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
                                  "One scene rendered headless (EGL) at one size; knobs as the registry declares them.")
         .def(py::init([](const std::string& scene, std::pair<int, int> size, std::optional<std::string> preset,
                          std::optional<py::dict> settings) {
-                 std::vector<std::string> sets;
-                 if (settings)
-                     for (const auto& [k, v] : *settings) sets.push_back(py::str(k).cast<std::string>() + "=" + knobText(v));
+                 const std::vector<std::string> sets = assignments(settings);
                  py::gil_scoped_release release;
                  return std::make_unique<WorkbenchSession>(scene, size.first, size.second, preset.value_or(""), sets);
              }),
@@ -294,7 +505,9 @@ PYBIND11_MODULE(deferred_workbench, m) {
                  return d;
              },
              py::arg("text") = false,
-             "Every knob's value; text=True: as --dump-knobs writes it.")
+             "Every knob as a dict {name: value}, in the registry's order: bool, int, float or the enum's choice as a\n"
+             "str (what get() returns); text=True: each value as a str, as the registry writes it (what follows\n"
+             "'name=' on --dump-knobs' lines: 'true', '16', '0.02', 'reinhard').")
         .def("knob_info",
              [](const WorkbenchSession& s, const std::string& name) {
                  const KnobSpec& k = s.spec(name);
@@ -426,35 +639,14 @@ PYBIND11_MODULE(deferred_workbench, m) {
             BenchOptions o;
             o.run.scene = scene;
             o.run.setPreset(preset.value_or(""));
-            if (settings)
-                for (const auto& [k, v] : *settings) o.run.sets.push_back(py::str(k).cast<std::string>() + "=" + knobText(v));
+            o.run.sets = assignments(settings);
             o.grid.sizes = sizes.empty() ? std::vector<std::pair<int, int>>{{160, 90}} : sizes;
             for (int n : lights)
                 if (n < 0 || n > 1000000)
                     throw py::value_error("bench: lights must be between 0 and 1000000, got " + std::to_string(n));
             o.grid.lights = lights;
-            if (sweep)
-                for (const auto& [k, values] : *sweep) {
-                    BenchKnobAxis axis;
-                    axis.knob = py::str(k).cast<std::string>();
-                    // As the CLI's --sweep: a list of values, at least one (an empty axis is an empty grid).
-                    if (py::isinstance<py::str>(values) || !py::isinstance<py::sequence>(values))
-                        throw py::value_error("bench: sweep['" + axis.knob + "'] must be a list of values, got " +
-                                              py::str(py::type::of(values).attr("__name__")).cast<std::string>());
-                    for (const auto& v : values) axis.values.push_back(knobText(v));
-                    if (axis.values.empty())
-                        throw py::value_error("bench: sweep['" + axis.knob + "'] has no values (an empty axis leaves no configuration)");
-                    o.grid.knobAxes.push_back(axis);
-                }
-            // Knob names and values with the registry's checks first (KnobError), as Session does.
-            KnobRegistry declared = RunConfig::declaredKnobs();
-            try {
-                for (const std::string& a : o.run.sets) declared.applyAssignment(a);
-                for (const BenchKnobAxis& axis : o.grid.knobAxes)
-                    for (const std::string& v : axis.values) declared.setFromString(axis.knob, v);
-            } catch (const Error& e) {
-                throw KnobError(e.what());
-            }
+            o.grid.knobAxes = sweepAxes("bench", sweep);
+            checkKnobs(o.run.sets, o.grid.knobAxes);
             if (frames < 1 || warmup < 0 || block < 1 || seed < 0)
                 throw Error("bench: frames and block must be at least 1, warmup and seed not negative");
             o.frames = frames;
@@ -484,6 +676,57 @@ PYBIND11_MODULE(deferred_workbench, m) {
         "bench --json writes, as a dict: scene, knobs, seeds, camera path, grid, build, gl, host, and results (configs with\n"
         "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and json=PATH also write\n"
         "bench --csv's and --json's files; orbit=N and walkthrough=True move the camera as bench's options do.");
+
+    m.def(
+        "tradeoff",
+        [](const std::string& scene, std::pair<int, int> size, std::optional<std::string> preset,
+           std::optional<py::dict> settings, std::optional<py::dict> sweep, py::object presets,
+           std::optional<std::string> knobs, py::object exclude, const std::string& against, const std::string& metric,
+           const std::string& buffer, int aoRays, std::optional<std::string> mask, const std::string& time, int orbit,
+           bool walkthrough, int frames, int warmup, int block, int resamples, std::optional<std::string> shard,
+           std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
+           std::pair<int, int> plotSize, bool quiet, py::object progress) {
+            TradeoffStudyOptions s;
+            s.run.scene = scene;
+            s.run.setPreset(preset.value_or(""));
+            s.run.sets = assignments(settings);
+            s.run.width = size.first;
+            s.run.height = size.second;
+            s.knobs = knobs.value_or("");
+            s.against = against;
+            s.metric = metric;
+            s.buffer = buffer;
+            s.aoRays = aoRays;
+            s.mask = mask.value_or("");
+            s.time = time;
+            s.orbit = orbit;
+            s.walkthrough = walkthrough;
+            s.frames = frames;
+            s.warmup = warmup;
+            s.block = block;
+            s.resamples = resamples;
+            s.shard = shard.value_or("");
+            return tradeoffStudy(std::move(s), sweep, presets, exclude, csv, json, plot, plotSize, quiet, progress);
+        },
+        py::arg("scene") = "", py::arg("size") = std::make_pair(640, 360), py::arg("preset") = py::none(),
+        py::arg("settings") = py::none(), py::arg("sweep") = py::none(), py::arg("presets") = py::none(),
+        py::arg("knobs") = py::none(), py::arg("exclude") = py::none(), py::arg("against") = "reference",
+        py::arg("metric") = "flip", py::arg("buffer") = "final", py::arg("ao_rays") = 64, py::arg("mask") = py::none(),
+        py::arg("time") = "frame", py::arg("orbit") = 0, py::arg("walkthrough") = false, py::arg("frames") = 5,
+        py::arg("warmup") = 1, py::arg("block") = 1, py::arg("resamples") = 2000, py::arg("shard") = py::none(),
+        py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("plot") = py::none(),
+        py::arg("plot_size") = std::make_pair(800, 600), py::arg("quiet") = false, py::arg("progress") = py::none(),
+        "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
+        "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
+        "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
+        "presets=[...] (an axis), knobs=\"speed/quality\", exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
+        "time, orbit, walkthrough, frames, warmup, block, resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
+        "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
+        "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
+        "its interval, gpu_ms.<pass>, pareto; NaN where the CSV is empty) and front (the rows on the Pareto front).\n"
+        "csv=, json= and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only those asked for.\n"
+        "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"
+        "A bad argument raises ValueError (KnobError for a knob) with the CLI's message, naming its flag.");
 
     m.def("compare", &compareArrays, py::arg("reference"), py::arg("test"), py::arg("hdr") = false,
           py::arg("warn_threshold") = 1e-6, py::arg("fail_threshold") = 1e-6, py::arg("maps") = false,

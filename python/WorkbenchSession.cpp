@@ -107,6 +107,15 @@ ExperimentRecord WorkbenchSession::benchRecord(BenchOptions options, const std::
     return record;
 }
 
+TradeoffMeasurement WorkbenchSession::tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress) {
+    ProcessContext& pc = processContext();
+    if (std::this_thread::get_id() != pc.thread)
+        throw WrongThreadError("tradeoff must run on the thread that made the GL context (thread " +
+                               describeThread(pc.thread) + ")");
+    pc.context->makeCurrent();
+    return TradeoffStudy::measure(runner, aoRays, pc.context->platform(), progress);
+}
+
 void WorkbenchSession::requireOwningThread() const {
     const std::thread::id here = std::this_thread::get_id();
     if (here != processContext().thread)

@@ -15,6 +15,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/TradeoffStudy.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/record/ExperimentRecord.h"
@@ -112,6 +113,9 @@ public:
     // as the record `bench --json` writes; `measured` gets the samples (for bench --csv's file).
     static ExperimentRecord benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
                                         BenchResults* measured = nullptr);
+    // A tradeoff sweep (TradeoffStudy::measure) on the process's GL context,
+    // on its thread (WrongThreadError elsewhere), as tradeoff measures it.
+    static TradeoffMeasurement tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress);
 
 private:
     std::thread::id owner_;
