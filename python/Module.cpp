@@ -240,7 +240,6 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
     return d;
 }
 
-
 // A sweep {knob: [values]} as bench's and tradeoff's axes, each value as
 // --sweep writes it; `command` names the function in the messages. As the
 // CLI's --sweep: a list of values, at least one (an empty axis is an empty grid).

@@ -124,6 +124,20 @@ class TradeoffTest(unittest.TestCase):
         self.assertEqual(len(r["rows"]), 2)
         self.assertEqual(os.listdir(folder), ["p.png"])
 
+    def test_presets_axis_exclude_and_against_a_configuration(self):
+        # presets and exclude as the flags write them (one str), the error against ssao.samples=64.
+        r = dw.tradeoff(scene="default", size=(32, 18), presets="SSAO1,SSAO2", sweep={"ssao.samples": [4, 8]},
+                        exclude="preset=SSAO2,ssao.samples=8", against="ssao.samples=64", metric="rms", buffer="ao",
+                        frames=1, warmup=0, resamples=100, quiet=True)
+        self.assertEqual([(x["point"], x["preset"], x["ssao.samples"]) for x in r["rows"]],
+                         [(0, "SSAO1", "4"), (1, "SSAO1", "8"), (2, "SSAO2", "4")])  # point 3 left out
+        self.assertEqual(list(r["rows"][0])[:4], ["point", "preset", "ssao.samples", "camera"])
+        self.assertEqual(r["grid"]["against"], ["ssao.samples=64"])
+        self.assertEqual(r["grid"]["exclude"], ["preset=SSAO2,ssao.samples=8"])
+        self.assertNotIn("references_rendered", r["results"]["settings"])  # no CPU reference needed
+        for x in r["rows"]:
+            self.assertGreater(x["error"], 0.0)
+
     def test_bad_arguments_raise_with_the_cli_messages(self):
         base = dict(scene="default", size=(32, 18), frames=1, quiet=True)
         cases = [
