@@ -15,6 +15,7 @@
 #include "app/HeadlessGlContext.h"
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
+#include "app/SweepOptions.h"
 #include "app/TradeoffMeasurement.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
@@ -27,44 +28,51 @@ namespace dw {
 
 namespace {
 
-const char* const kTradeoffUsage =
-    "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
-    "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
-    "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
-    "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
-    "                                   [--mask shadow_edges] [--time frame|PASS]\n"
-    "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
-    "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
-    "                                   [--quiet]\n"
-    "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
-    "                                   [--time frame|PASS]\n"
-    "  --sweep      an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; repeatable;\n"
-    "               the full grid of every --sweep and --presets\n"
-    "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
-    "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
-    "               about the current settings (docs/tradeoffs.md says which values)\n"
-    "  --exclude    a corner left out: every named axis at one of its values; repeatable\n"
-    "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
-    "               cache, each camera's rendered once) or the point with these knob values on top\n"
-    "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
-    "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
-    "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
-    "               rays per pixel (default 64)\n"
-    "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
-    "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
-    "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
-    "               since on llvmpipe the frame time drowns a small pass's\n"
-    "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
-    "               scene's camera.path. Several cameras add a row per point over all of them\n"
-    "  --frames     counted frames per point and camera (default 5); --warmup after each switch (default 1);\n"
-    "               --block K counted frames in a row (default 1); --resamples for the 95% intervals (2000)\n"
-    "  --size       the render size (default 640x360)\n"
-    "  --shard i/n  the points whose number % n == i; join the CSVs with tradeoff merge\n"
-    "  --csv, --json, --plot  default tradeoff.csv, tradeoff.json, tradeoff.png (tradeoff-shard-I-of-N.*\n"
-    "               with --shard); the JSON is an experiment record (deferred-workbench replay runs it again;\n"
-    "               tradeoff merge reads shards' CSVs or records); the plot by scripts/tradeoff_plot.py\n"
-    "               (python3-matplotlib)\n"
-    "  --quiet      no progress lines on stderr\n";
+// What tradeoff's shared options (SweepOptions) mean here.
+const SweepCommand kTradeoff = [] {
+    SweepCommand c;
+    c.name = "tradeoff";
+    c.frames = 5;
+    c.plotSize = "800x600";
+    c.plotByDefault = true;
+    c.sweepWhat = "an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; the full\n"
+                  "               grid of every --sweep and --presets";
+    c.camerasWhat = "several cameras add a row per point over all of them";
+    c.shardWhat = "the points whose number % n == i";
+    c.filesWhat = "the table, and an experiment record (deferred-workbench replay runs it again;\n"
+                  "               tradeoff merge reads shards' CSVs or records)";
+    c.plotWhat = "time against error with both intervals, the front labelled, by scripts/tradeoff_plot.py\n"
+                 "               (python3-matplotlib); default tradeoff.png";
+    return c;
+}();
+
+std::string tradeoffUsage() {
+    return "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
+           "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
+           "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
+           "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
+           "                                   [--mask shadow_edges] [--time frame|PASS]\n"
+           "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
+           "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+           "                                   [--quiet]\n"
+           "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+           "                                   [--time frame|PASS]\n"
+           "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
+           "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
+           "               about the current settings (docs/tradeoffs.md says which values)\n"
+           "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
+           "               cache, each camera's rendered once) or the point with these knob values on top\n"
+           "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
+           "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
+           "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
+           "               rays per pixel (default 64)\n"
+           "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
+           "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
+           "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
+           "               since on llvmpipe the frame time drowns a small pass's\n"
+           "  --size       the render size (default 640x360)\n" +
+           SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff);
+}
 
 std::string number(double v, const char* format) {
     if (!std::isfinite(v)) return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : "-";
@@ -150,14 +158,6 @@ int writePlot(const std::string& csv, const std::string& png, int width, int hei
     return 0;
 }
 
-void checkPlot(const std::string& plot, int width, int height) {
-    std::string ext = plot.size() >= 4 ? plot.substr(plot.size() - 4) : "";
-    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
-    if (width < 50 || height < 50)
-        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
-}
-
 bool isRecordFile(const std::string& path) {
     return path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
 }
@@ -175,25 +175,18 @@ std::vector<std::string> listOf(const std::string& flag, const std::string& text
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
     if (cl.flag("--help")) {
-        std::cout << kTradeoffUsage;
+        std::cout << tradeoffUsage();
         return 0;
     }
-    const auto out = cl.value("--out");
-    const auto json = cl.value("--json");
-    const auto plot = cl.value("--plot");
-    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
+    SweepMergeOptions m = SweepMergeOptions::read(cl, kTradeoff);
     const std::string time = cl.value("--time").value_or("frame");
     cl.finish("tradeoff merge");
-    const std::vector<std::string> inputs = cl.positional();
-    if (inputs.empty()) throw UsageError("tradeoff merge needs the shards' CSV files");
-    if (!out) throw UsageError("tradeoff merge needs --out FILE.csv");
-    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
-    if (json) writes.emplace_back("--json", *json);
-    if (plot) writes.emplace_back("--plot", *plot);
-    for (const auto& in : inputs) reads.emplace_back("the shard " + in, in);
-    CommandLine::requireDistinctFiles(writes, reads);
-    if (plot) checkPlot(*plot, plotW, plotH);
-    CommandLine::requireWritable(*out, "merged CSV");
+    m.check(cl, kTradeoff);
+    const std::vector<std::string>& inputs = m.inputs;
+    const std::string& out = *m.out;
+    const std::optional<std::string>& json = m.json;
+    const std::optional<std::string>& plot = m.plot;
+    const int plotW = m.plotWidth, plotH = m.plotHeight;
     // Each shard as its CSV or its record (tradeoff --json).
     std::vector<TradeoffTable> parts;
     BenchFields settings;
@@ -215,11 +208,11 @@ int runMerge(int argc, char** argv) {
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n", all.rows.size(), inputs.size(),
                 what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str());
     std::fflush(stdout);
-    all.writeCsv(*out);
+    all.writeCsv(out);
     settings.emplace_back("merged_from", from);
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(), "tradeoff record");
-    std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(*out, *plot, plotW, plotH, time) : 0;
+    std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
+    return plot ? writePlot(out, *plot, plotW, plotH, time) : 0;
 }
 
 }  // namespace
@@ -228,23 +221,16 @@ int runTradeoffCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
-        std::cout << kTradeoffUsage;
+        std::cout << tradeoffUsage();
         return 0;
     }
     TradeoffOptions o;
     o.run = cl.runConfig();
-    const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
+    const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     o.run.width = w;
     o.run.height = h;
-    for (const auto& s : cl.values("--sweep")) {
-        BenchKnobAxis axis;
-        try {
-            axis = BenchGrid::parseSweep(s);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-        o.sweep.axes.push_back({axis.knob, axis.values});
-    }
+    const SweepOptions so = SweepOptions::read(cl, kTradeoff);
+    for (const auto& axis : so.sweeps) o.sweep.axes.push_back({axis.knob, axis.values});
     if (const auto presets = cl.value("--presets")) {
         TradeoffAxis axis{"preset", listOf("--presets", *presets)};
         o.sweep.axes.insert(o.sweep.axes.begin(), std::move(axis));
@@ -254,14 +240,8 @@ int runTradeoffCommand(int argc, char** argv) {
         throw UsageError("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
                          *knobs + "'");
     if (knobs && !o.sweep.axes.empty()) throw UsageError("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
-    const std::vector<std::string> excludes = cl.values("--exclude");
-    for (const auto& e : excludes) {
-        try {
-            o.sweep.exclusion.add(e);
-        } catch (const Error& err) {
-            throw UsageError(err.what());
-        }
-    }
+    o.sweep.exclusion = so.exclusion;
+    const std::vector<std::string>& excludes = so.excludes;
     const std::string against = cl.value("--against").value_or("reference");
     if (against != "reference") o.against = listOf("--against", against);
     o.metric = cl.value("--metric").value_or("flip");
@@ -269,35 +249,23 @@ int runTradeoffCommand(int argc, char** argv) {
     o.mask = cl.value("--mask").value_or("");
     o.time = cl.value("--time").value_or("frame");
     const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 10000);
-    o.walkthrough = cl.flag("--walkthrough");
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("5"), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
-    o.resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
-    if (const auto shard = cl.value("--shard")) {
-        try {
-            o.shard = BenchShard::parse(*shard);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-    }
-    const std::string suffix =
-        o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
-    const std::string csv = cl.value("--csv").value_or("tradeoff" + suffix + ".csv");
-    const std::string json = cl.value("--json").value_or("tradeoff" + suffix + ".json");
-    const std::string plot = cl.value("--plot").value_or("tradeoff" + suffix + ".png");
-    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
-    const bool quiet = cl.flag("--quiet");
+    o.orbit = so.orbit;
+    o.walkthrough = so.walkthrough;
+    o.frames = so.frames;
+    o.warmup = so.warmup;
+    o.block = so.block;
+    o.resamples = so.resamples;
+    o.shard = so.shard;
+    const std::string& csv = so.csv;
+    const std::string& json = so.json;
+    const std::string& plot = *so.plot;
+    const int plotW = so.plotWidth, plotH = so.plotHeight;
+    const bool quiet = so.quiet;
     cl.finish("tradeoff");
     if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");
     if (o.sweep.axes.empty() && !knobs)
         throw UsageError("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
-    CommandLine::requireDistinctFiles({{"--csv", csv}, {"--json", json}, {"--plot", plot}}, CommandLine::inputFiles(o.run));
-    checkPlot(plot, plotW, plotH);
-    CommandLine::requireWritable(csv, "tradeoff CSV");
-    CommandLine::requireWritable(json, "tradeoff JSON");
-    CommandLine::requireWritable(plot, "plot");
+    so.checkOutputs(kTradeoff, CommandLine::inputFiles(o.run));
     if (knobs) {
         // About the current settings: the run configuration's knobs on its scene.
         o.run.validate();
