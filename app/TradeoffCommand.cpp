@@ -69,7 +69,8 @@ std::string tradeoffUsage() {
            "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
            "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
            "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
-           "               since on llvmpipe the frame time drowns a small pass's\n"
+           "               since on llvmpipe the frame time drowns a small pass's; with shadows.reuse_map on\n"
+           "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them\n"
            "  --size       the render size (default 640x360)\n" +
            SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff);
 }
@@ -89,6 +90,19 @@ std::vector<const TradeoffRow*> shownRows(const TradeoffTable& t) {
         if (r.camera == TradeoffTable::kAllCameras) all.push_back(&r);
     }
     return all.empty() ? rows : all;
+}
+
+// With shadows.reuse_map on the shadows pass draws no map (each is drawn
+// just before its light is shaded, in that pass's span PASS/shadow maps):
+// its near-zero time is true, and said where it is shown.
+std::string reusedMaps(const TradeoffTable& t, const TradeoffRow& r, const std::string& time) {
+    if (time != "shadows") return "";
+    static const std::string kMaps = "/shadow maps";
+    for (const auto& p : t.passes)
+        if (p.size() > kMaps.size() && p.compare(p.size() - kMaps.size(), std::string::npos, kMaps) == 0 &&
+            p.rfind("shadows/", 0) != 0 && std::isfinite(t.passGpuMs(r, p)))
+            return " (reused: maps in " + p + ", " + number(t.passGpuMs(r, p), "%.3f") + ")";
+    return "";
 }
 
 std::string markdown(const TradeoffTable& t, const std::string& time = "frame") {
@@ -123,7 +137,7 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
         cells.push_back("[" + number(r->errorLo, "%.4g") + ", " + number(r->errorHi, "%.4g") + "]");
         cells.push_back(number(r->frameGpuMs, "%.3f"));
         cells.push_back("[" + number(r->frameGpuMsLo, "%.3f") + ", " + number(r->frameGpuMsHi, "%.3f") + "]");
-        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f"));
+        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f") + reusedMaps(t, *r, time));
         cells.emplace_back(r->pareto ? "**front**" : "");
         out += line(cells);
     }
