@@ -28,6 +28,7 @@
 #include "app/CommandLine.h"
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
+#include "app/SweepOptions.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
@@ -47,48 +48,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kBenchUsage =
-    "usage: deferred-workbench bench [--scene NAME|FILE] [--preset NAME|FILE] [--set knob=value]...\n"
-    "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
-    "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
-    "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
-    "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
-    "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
-    "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
-    "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
-    "  --size       render sizes (default 640x360); one session per size, all in one process\n"
-    "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
-    "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"
-    "               scene's own lights\n"
-    "  --light-radius  each generated light's volume radius at lighting.threshold (default: a tenth\n"
-    "               of the scene bounds' diagonal)\n"
-    "  --sweep      a knob axis, e.g. lighting.strategy=stencil_volumes,volumes,fullscreen; repeatable\n"
-    "  --exclude    a corner of the grid left out: every named axis (size, lights, a knob) at one of its\n"
-    "               values, e.g. lighting.strategy=fullscreen,lights=10000; repeatable\n"
-    "  --frames     counted frames per configuration (default 10); --warmup frames after each switch\n"
-    "               are left out (default 1); --block K counted frames in a row per configuration\n"
-    "               (default 1: A B C A B C ...)\n"
-    "  --orbit N    the camera circles the scene through N poses; --walkthrough follows the scene\n"
-    "               JSON's camera.path; the table averages over them (medians over all frames)\n"
-    "  --lpp-poses  poses the untimed lights-per-pixel frame averages on a moving camera (default 4)\n"
-    "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
-    "               knob); default: the first value of the first swept knob (else lights, else size)\n"
-    "  --ratio-of   the series each ratio and its interval compare: frame (the default), a pass\n"
-    "               (e.g. lighting: the strategies alone) or a span PASS/NAME; list passes names\n"
-    "               the passes; a series no configuration recorded is an error after the run\n"
-    "  --resamples  bootstrap resamples for the 95% interval of each ratio (default 2000)\n"
-    "  --shard i/n  run the i-th of n slices of the grid: the configurations compared with each\n"
-    "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
-    "               the groups whose number % n == i; join the CSVs with bench merge, which takes\n"
-    "               --baseline and --ratio-of from the shards' JSONs unless it is given its own\n"
-    "  --csv, --json  the samples (every counted frame, every pass) and the summary with the machine;\n"
-    "               default bench.csv and bench.json (bench-shard-I-of-N.* with --shard)\n"
-    "  --plot       frame ms against light count per configuration, log-log, drawn by\n"
-    "               scripts/bench_plot.py (python3-matplotlib); --plot-size in pixels (default 800x500)\n"
-    "  --resume     the CSV of an interrupted run of the same grid (samples are written as they are\n"
-    "               measured): its counted frames are kept, the rest measured\n"
-    "  --quiet      no progress lines on stderr\n";
+// What bench's shared options (SweepOptions) mean here.
+const SweepCommand kBench = [] {
+    SweepCommand c;
+    c.name = "bench";
+    c.frames = 10;
+    c.plotSize = "800x500";
+    c.plotByDefault = false;
+    c.sweepWhat = "a knob axis, e.g. lighting.strategy=stencil_volumes,volumes,fullscreen";
+    c.camerasWhat = "the table averages over them (medians over all frames)";
+    c.shardWhat =
+        "run the i-th of n slices of the grid: the configurations compared with each\n"
+        "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
+        "               the groups whose number % n == i; bench merge takes --baseline and --ratio-of\n"
+        "               from the shards' JSONs unless it is given its own";
+    c.filesWhat = "the samples (every counted frame, every pass) and the summary with the machine";
+    c.plotWhat = "frame ms against light count per configuration, log-log, drawn by\n"
+                 "               scripts/bench_plot.py (python3-matplotlib); only with --plot";
+    return c;
+}();
+
+std::string benchUsage() {
+    return "usage: deferred-workbench bench [--scene NAME|FILE] [--preset NAME|FILE] [--set knob=value]...\n"
+           "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
+           "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
+           "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
+           "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
+           "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
+           "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
+           "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
+           "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
+           "  --size       render sizes (default 640x360); one session per size, all in one process\n"
+           "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
+           "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"
+           "               scene's own lights\n"
+           "  --light-radius  each generated light's volume radius at lighting.threshold (default: a tenth\n"
+           "               of the scene bounds' diagonal)\n"
+           "  --lpp-poses  poses the untimed lights-per-pixel frame averages on a moving camera (default 4)\n"
+           "  --baseline   the configuration each ratio divides by, as axis=value (size, lights or a swept\n"
+           "               knob); default: the first value of the first swept knob (else lights, else size)\n"
+           "  --ratio-of   the series each ratio and its interval compare: frame (the default), a pass\n"
+           "               (e.g. lighting: the strategies alone) or a span PASS/NAME; list passes names\n"
+           "               the passes; a series no configuration recorded is an error after the run\n"
+           "  --resume     the CSV of an interrupted run of the same grid (samples are written as they are\n"
+           "               measured): its counted frames are kept, the rest measured\n" +
+           SweepOptions::help(kBench) + SweepMergeOptions::help(kBench);
+}
 
 // What the run ran on, besides the GL strings the runner reads.
 BenchFields hostFields() {
@@ -134,10 +139,6 @@ std::string fieldOr(const BenchFields& f, const std::string& key, const std::str
     for (const auto& [k, v] : f)
         if (k == key) return v;
     return fallback;
-}
-
-std::pair<int, int> plotSize(CommandLine& cl) {
-    return CommandLine::parseSize(cl.value("--plot-size").value_or("800x500"), "--plot-size");
 }
 
 
@@ -192,44 +193,26 @@ void checkRatioSeriesNamesAPass(const std::string& series) {
     throw Error("--ratio-of: '" + series + "' is not frame, a pass (" + names + ") or a span PASS/NAME of one");
 }
 
-// --plot: a .png (the script writes PNG only) at least 50x50 (the script's
-// least), in a folder that can be written.
-void checkPlotOptions(const std::optional<std::string>& plot, int width, int height) {
-    if (!plot) return;
-    checkPlotFile(*plot, width, height);
-    CommandLine::requireWritable(*plot, "plot");
-}
-
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
     if (cl.flag("--help")) {
-        std::cout << kBenchUsage;
+        std::cout << benchUsage();
         return 0;
     }
-    const auto out = cl.value("--out");
-    const auto json = cl.value("--json");
-    const auto plot = cl.value("--plot");
-    const auto [plotW, plotH] = plotSize(cl);
-    if (!plot && cl.value("--plot-size"))
-        std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
+    SweepMergeOptions m = SweepMergeOptions::read(cl, kBench);
     const std::optional<std::string> baselineGiven = cl.value("--baseline");
     const std::optional<std::string> ratioOfGiven = cl.value("--ratio-of");
-    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    const int resamples = SweepOptions::readResamples(cl);
     cl.finish("bench merge");
-    const std::vector<std::string> inputs = cl.positional();
-    if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
-    if (!out) throw UsageError("bench merge needs --out FILE.csv");
-    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
-    if (json) writes.emplace_back("--json", *json);
-    if (plot) writes.emplace_back("--plot", *plot);
-    for (const auto& in : inputs) {
-        reads.emplace_back("the shard " + in, in);
-        reads.emplace_back("the shard's JSON", fs::path(in).replace_extension(".json").string());
-    }
-    CommandLine::requireDistinctFiles(writes, reads);
-    CommandLine::requireWritable(*out, "merged CSV");
-    if (json) CommandLine::requireWritable(*json, "merged JSON");
-    checkPlotOptions(plot, plotW, plotH);
+    CommandLine::NamedFiles shardJsons;
+    for (const auto& in : cl.positional())
+        shardJsons.emplace_back("the shard's JSON", fs::path(in).replace_extension(".json").string());
+    m.check(cl, kBench, shardJsons);
+    const std::vector<std::string>& inputs = m.inputs;
+    const std::string& out = *m.out;
+    const std::optional<std::string>& json = m.json;
+    const std::optional<std::string>& plot = m.plot;
+    const int plotW = m.plotWidth, plotH = m.plotHeight;
 
     BenchMerged merged = mergeBenchShards(inputs, baselineGiven, ratioOfGiven,
                                           [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
@@ -242,11 +225,11 @@ int runMerge(int argc, char** argv) {
                     std::to_string(inputs.size()) + " shard(s)",
                 resamples);
     std::fflush(stdout);
-    std::vector<std::function<void()>> outputs = {[&] { all.writeCsv(*out); }};
+    std::vector<std::function<void()>> outputs = {[&] { all.writeCsv(out); }};
     if (json) outputs.push_back([&] { writeBenchJson(*json, all, summary); });
     writeEach(outputs);
-    std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    const int plotted = plot ? writePlot(*out, *plot, plotW, plotH) : 0;
+    std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
+    const int plotted = plot ? writePlot(out, *plot, plotW, plotH) : 0;
     checkRatiosMade(summary, ratioOf);
     return plotted;
 }
@@ -279,39 +262,22 @@ int runBenchCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
-        std::cout << kBenchUsage;
+        std::cout << benchUsage();
         return 0;
     }
     BenchOptions o;
     o.run = cl.runConfig();
-    for (const auto& s : flagList("--size", cl.value("--size").value_or("640x360"))) {
-        const auto size = CommandLine::parseSize(s);
-        if (std::find(o.grid.sizes.begin(), o.grid.sizes.end(), size) != o.grid.sizes.end())
-            throw UsageError("--size: '" + s + "' is given twice");
-        o.grid.sizes.push_back(size);
-    }
+    o.grid.sizes = SweepOptions::readSizes(cl, true);
     if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, 0, 1000000);
-    for (const auto& s : cl.values("--sweep")) {
-        BenchKnobAxis axis;
-        try {
-            axis = BenchGrid::parseSweep(s);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-        for (const auto& a : o.grid.knobAxes)
-            if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
-        o.grid.knobAxes.push_back(std::move(axis));
-    }
-    for (const auto& e : cl.values("--exclude")) {
-        try {
-            o.exclude.add(e);
-        } catch (const Error& err) {
-            throw UsageError(err.what());
-        }
-    }
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    const SweepOptions so = SweepOptions::read(cl, kBench);
+    o.grid.knobAxes = so.sweeps;
+    o.exclude = so.exclusion;
+    o.frames = so.frames;
+    o.warmup = so.warmup;
+    o.block = so.block;
+    o.orbit = so.orbit;
+    o.walkthrough = so.walkthrough;
+    o.shard = so.shard;
     o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647));
     if (const auto r = cl.value("--light-radius")) {
         char* end = nullptr;
@@ -329,40 +295,22 @@ int runBenchCommand(int argc, char** argv) {
                              "own lights are used and it changes nothing\n");
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
-    o.walkthrough = cl.flag("--walkthrough");
     o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), 1, 1000);
     o.lpp = !cl.flag("--no-lpp");
-    if (const auto shard = cl.value("--shard")) {
-        try {
-            o.shard = BenchShard::parse(*shard);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-    }
-    const std::string suffix =
-        o.shard.whole() ? "" : "-shard-" + std::to_string(o.shard.index) + "-of-" + std::to_string(o.shard.count);
-    const std::string shardText = std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count);
-    const std::string csv = cl.value("--csv").value_or("bench" + suffix + ".csv");
-    const std::string json = cl.value("--json").value_or("bench" + suffix + ".json");
-    const auto plot = cl.value("--plot");
-    const auto [plotW, plotH] = plotSize(cl);
-    if (!plot && cl.value("--plot-size"))
-        std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
+    const std::string shardText = so.shardText();
+    const std::string& csv = so.csv;
+    const std::string& json = so.json;
+    const std::optional<std::string>& plot = so.plot;
+    const int plotW = so.plotWidth, plotH = so.plotHeight;
     const std::string baselineSpec = cl.value("--baseline").value_or("");
     const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
-    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
-    const bool quiet = cl.flag("--quiet");
+    const int resamples = so.resamples;
+    const bool quiet = so.quiet;
     const auto resumeFrom = cl.value("--resume");
     cl.finish("bench");
     if (!cl.positional().empty()) throw UsageError("bench: unexpected argument '" + cl.positional()[0] + "'");
     // The outputs are checked before the run, so a long run is never lost to a bad path.
-    CommandLine::NamedFiles writes = {{"--csv", csv}, {"--json", json}};
-    if (plot) writes.emplace_back("--plot", *plot);
-    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(o.run));
-    checkPlotOptions(plot, plotW, plotH);
-    CommandLine::requireWritable(csv, "bench CSV");
-    CommandLine::requireWritable(json, "bench JSON");
+    so.checkOutputs(kBench, CommandLine::inputFiles(o.run));
     checkRatioSeriesNamesAPass(ratioOf);
     if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);

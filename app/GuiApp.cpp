@@ -181,10 +181,21 @@ void loadLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
         // Guarded like every JSON the workbench reads (150 000 levels overflowed the stack).
         const nlohmann::json j = readJsonFile(path, {kMaxJsonDepth, false});
         if (!j.is_object()) throw std::runtime_error("expected an object");
-        if (j.contains("layout")) ui.layout().fromJson(j["layout"]);
+        // An older layout loads what it has (a panel added since keeps its
+        // default); what it has and this version cannot use is said, once.
+        std::vector<std::string> dropped;
+        if (j.contains("layout")) dropped = ui.layout().fromJson(j["layout"]);
         if (j.contains("open") && j["open"].is_object())
-            for (auto it = j["open"].begin(); it != j["open"].end(); ++it)
-                if (bool* f = ui::WorkbenchUi::panelFlag(state.panels, it.key()); f && it.value().is_boolean()) *f = it.value().get<bool>();
+            for (auto it = j["open"].begin(); it != j["open"].end(); ++it) {
+                bool* f = ui::WorkbenchUi::panelFlag(state.panels, it.key());
+                if (f && it.value().is_boolean()) *f = it.value().get<bool>();
+                else dropped.push_back("open." + it.key() + (f ? " is not true or false" : ": no such panel"));
+            }
+        if (!dropped.empty()) {
+            std::string what;
+            for (const auto& d : dropped) what += (what.empty() ? "" : "; ") + d;
+            state.log.info(path + ": saved layout used in part, dropped: " + what + "; the rest is the default", 0.0);
+        }
         if (j.contains("recent_scenes") && j["recent_scenes"].is_array())
             for (const auto& r : j["recent_scenes"])
                 if (r.is_string() && state.recentScenes.size() < ui::UiState::kRecentScenes) state.recentScenes.push_back(r.get<std::string>());

@@ -16,6 +16,7 @@
 #include "app/HeadlessGlContext.h"
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
+#include "app/SweepOptions.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
@@ -28,44 +29,52 @@ namespace dw {
 
 namespace {
 
-const char* const kTradeoffUsage =
-    "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
-    "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
-    "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
-    "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
-    "                                   [--mask shadow_edges] [--time frame|PASS]\n"
-    "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
-    "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
-    "                                   [--quiet]\n"
-    "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
-    "                                   [--time frame|PASS]\n"
-    "  --sweep      an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; repeatable;\n"
-    "               the full grid of every --sweep and --presets\n"
-    "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
-    "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
-    "               about the current settings (docs/tradeoffs.md says which values)\n"
-    "  --exclude    a corner left out: every named axis at one of its values; repeatable\n"
-    "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
-    "               cache, each camera's rendered once) or the point with these knob values on top\n"
-    "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
-    "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
-    "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
-    "               rays per pixel (default 64)\n"
-    "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
-    "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
-    "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
-    "               since on llvmpipe the frame time drowns a small pass's\n"
-    "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
-    "               scene's camera.path. Several cameras add a row per point over all of them\n"
-    "  --frames     counted frames per point and camera (default 5); --warmup after each switch (default 1);\n"
-    "               --block K counted frames in a row (default 1); --resamples for the 95% intervals (2000)\n"
-    "  --size       the render size (default 640x360)\n"
-    "  --shard i/n  the points whose number % n == i; join the CSVs with tradeoff merge\n"
-    "  --csv, --json, --plot  default tradeoff.csv, tradeoff.json, tradeoff.png (tradeoff-shard-I-of-N.*\n"
-    "               with --shard); the JSON is an experiment record (deferred-workbench replay runs it again;\n"
-    "               tradeoff merge reads shards' CSVs or records); the plot by scripts/tradeoff_plot.py\n"
-    "               (python3-matplotlib)\n"
-    "  --quiet      no progress lines on stderr\n";
+// What tradeoff's shared options (SweepOptions) mean here.
+const SweepCommand kTradeoff = [] {
+    SweepCommand c;
+    c.name = "tradeoff";
+    c.frames = 5;
+    c.plotSize = "800x600";
+    c.plotByDefault = true;
+    c.sweepWhat = "an axis: a knob (ssao.samples=8,16,32), camera.near=... or camera.far=...; the full\n"
+                  "               grid of every --sweep and --presets";
+    c.camerasWhat = "several cameras add a row per point over all of them";
+    c.shardWhat = "the points whose number % n == i";
+    c.filesWhat = "the table, and an experiment record (deferred-workbench replay runs it again;\n"
+                  "               tradeoff merge reads shards' CSVs or records)";
+    c.plotWhat = "time against error with both intervals, the front labelled, by scripts/tradeoff_plot.py\n"
+                 "               (python3-matplotlib); default tradeoff.png";
+    return c;
+}();
+
+std::string tradeoffUsage() {
+    return "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
+           "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
+           "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
+           "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
+           "                                   [--mask shadow_edges] [--time frame|PASS]\n"
+           "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
+           "                                   [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+           "                                   [--quiet]\n"
+           "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH]\n"
+           "                                   [--time frame|PASS]\n"
+           "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
+           "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
+           "               about the current settings (docs/tradeoffs.md says which values)\n"
+           "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
+           "               cache, each camera's rendered once) or the point with these knob values on top\n"
+           "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
+           "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
+           "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
+           "               rays per pixel (default 64)\n"
+           "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
+           "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
+           "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
+           "               since on llvmpipe the frame time drowns a small pass's; with shadows.reuse_map on\n"
+           "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them\n"
+           "  --size       the render size (default 640x360)\n" +
+           SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff);
+}
 
 std::string number(double v, const char* format) {
     if (!std::isfinite(v)) return std::isinf(v) ? (v > 0 ? "inf" : "-inf") : "-";
@@ -82,6 +91,19 @@ std::vector<const TradeoffRow*> shownRows(const TradeoffTable& t) {
         if (r.camera == TradeoffTable::kAllCameras) all.push_back(&r);
     }
     return all.empty() ? rows : all;
+}
+
+// With shadows.reuse_map on the shadows pass draws no map (each is drawn
+// just before its light is shaded, in that pass's span PASS/shadow maps):
+// its near-zero time is true, and said where it is shown.
+std::string reusedMaps(const TradeoffTable& t, const TradeoffRow& r, const std::string& time) {
+    if (time != "shadows") return "";
+    static const std::string kMaps = "/shadow maps";
+    for (const auto& p : t.passes)
+        if (p.size() > kMaps.size() && p.compare(p.size() - kMaps.size(), std::string::npos, kMaps) == 0 &&
+            p.rfind("shadows/", 0) != 0 && std::isfinite(t.passGpuMs(r, p)))
+            return " (reused: maps in " + p + ", " + number(t.passGpuMs(r, p), "%.3f") + ")";
+    return "";
 }
 
 std::string markdown(const TradeoffTable& t, const std::string& time = "frame") {
@@ -116,7 +138,7 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
         cells.push_back("[" + number(r->errorLo, "%.4g") + ", " + number(r->errorHi, "%.4g") + "]");
         cells.push_back(number(r->frameGpuMs, "%.3f"));
         cells.push_back("[" + number(r->frameGpuMsLo, "%.3f") + ", " + number(r->frameGpuMsHi, "%.3f") + "]");
-        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f"));
+        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f") + reusedMaps(t, *r, time));
         cells.emplace_back(r->pareto ? "**front**" : "");
         out += line(cells);
     }
@@ -151,14 +173,6 @@ int writePlot(const std::string& csv, const std::string& png, int width, int hei
     return 0;
 }
 
-void checkPlot(const std::string& plot, int width, int height) {
-    std::string ext = plot.size() >= 4 ? plot.substr(plot.size() - 4) : "";
-    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
-    if (width < 50 || height < 50)
-        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
-}
-
 bool isRecordFile(const std::string& path) {
     return path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
 }
@@ -176,25 +190,18 @@ std::vector<std::string> listOf(const std::string& flag, const std::string& text
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
     if (cl.flag("--help")) {
-        std::cout << kTradeoffUsage;
+        std::cout << tradeoffUsage();
         return 0;
     }
-    const auto out = cl.value("--out");
-    const auto json = cl.value("--json");
-    const auto plot = cl.value("--plot");
-    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
+    SweepMergeOptions m = SweepMergeOptions::read(cl, kTradeoff);
     const std::string time = cl.value("--time").value_or("frame");
     cl.finish("tradeoff merge");
-    const std::vector<std::string> inputs = cl.positional();
-    if (inputs.empty()) throw UsageError("tradeoff merge needs the shards' CSV files");
-    if (!out) throw UsageError("tradeoff merge needs --out FILE.csv");
-    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
-    if (json) writes.emplace_back("--json", *json);
-    if (plot) writes.emplace_back("--plot", *plot);
-    for (const auto& in : inputs) reads.emplace_back("the shard " + in, in);
-    CommandLine::requireDistinctFiles(writes, reads);
-    if (plot) checkPlot(*plot, plotW, plotH);
-    CommandLine::requireWritable(*out, "merged CSV");
+    m.check(cl, kTradeoff);
+    const std::vector<std::string>& inputs = m.inputs;
+    const std::string& out = *m.out;
+    const std::optional<std::string>& json = m.json;
+    const std::optional<std::string>& plot = m.plot;
+    const int plotW = m.plotWidth, plotH = m.plotHeight;
     // Each shard as its CSV or its record (tradeoff --json).
     std::vector<TradeoffTable> parts;
     BenchFields settings;
@@ -216,11 +223,11 @@ int runMerge(int argc, char** argv) {
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n", all.rows.size(), inputs.size(),
                 what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str());
     std::fflush(stdout);
-    all.writeCsv(*out);
+    all.writeCsv(out);
     settings.emplace_back("merged_from", from);
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(), "tradeoff record");
-    std::printf("wrote %s%s\n", out->c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(*out, *plot, plotW, plotH, time) : 0;
+    std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
+    return plot ? writePlot(out, *plot, plotW, plotH, time) : 0;
 }
 
 }  // namespace
@@ -229,60 +236,53 @@ int runTradeoffCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
-        std::cout << kTradeoffUsage;
+        std::cout << tradeoffUsage();
         return 0;
     }
-    // The options as the CLI gives them; TradeoffStudy checks them (as it does the Python module's).
+    // The shared options as bench reads them (SweepOptions), the rest here; then
+    // TradeoffStudy checks them all, as it does the Python module's.
+    const SweepOptions so = SweepOptions::read(cl, kTradeoff);
     TradeoffStudyOptions s;
     s.run = cl.runConfig();
-    const auto [w, h] = CommandLine::parseSize(cl.value("--size").value_or("640x360"));
+    const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     s.run.width = w;
     s.run.height = h;
-    s.sweep = cl.values("--sweep");
+    for (const auto& axis : so.sweeps) {
+        std::string text = axis.knob + "=";
+        for (size_t i = 0; i < axis.values.size(); ++i) text += (i ? "," : "") + axis.values[i];
+        s.sweep.push_back(text);
+    }
     if (const auto presets = cl.value("--presets")) s.presets = listOf("--presets", *presets);
     s.knobs = cl.value("--knobs").value_or("");
-    s.exclude = cl.values("--exclude");
+    s.exclude = so.excludes;
     s.against = cl.value("--against").value_or("reference");
     s.metric = cl.value("--metric").value_or("flip");
     s.buffer = cl.value("--buffer").value_or("final");
     s.mask = cl.value("--mask").value_or("");
     s.time = cl.value("--time").value_or("frame");
-    // Whole numbers here; their ranges are TradeoffStudy::check's.
-    auto whole = [&](const char* flag, const char* fallback) {
-        return CommandLine::parseInt(flag, cl.value(flag).value_or(fallback), INT_MIN, INT_MAX);
-    };
-    s.aoRays = whole("--ao-rays", "64");
-    if (cl.value("--orbit")) s.orbit = whole("--orbit", "");
-    s.walkthrough = cl.flag("--walkthrough");
-    s.frames = whole("--frames", "5");
-    s.warmup = whole("--warmup", "1");
-    s.block = whole("--block", "1");
-    s.resamples = whole("--resamples", "2000");
-    s.shard = cl.value("--shard").value_or("");
-    const std::optional<std::string> csvFlag = cl.value("--csv"), jsonFlag = cl.value("--json"), plotFlag = cl.value("--plot");
-    const auto [plotW, plotH] = CommandLine::parseSize(cl.value("--plot-size").value_or("800x600"), "--plot-size");
-    const bool quiet = cl.flag("--quiet");
+    s.aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), INT_MIN, INT_MAX);
+    s.orbit = so.orbit;
+    s.walkthrough = so.walkthrough;
+    s.frames = so.frames;
+    s.warmup = so.warmup;
+    s.block = so.block;
+    s.resamples = so.resamples;
+    s.shard = so.shard.whole() ? "" : so.shardText();
+    const std::string& csv = so.csv;
+    const std::string& json = so.json;
+    const std::string& plot = *so.plot;
+    const int plotW = so.plotWidth, plotH = so.plotHeight;
+    const bool quiet = so.quiet;
     cl.finish("tradeoff");
     if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");
-    TradeoffOptions checked;
     try {
-        checked = TradeoffStudy::check(s);
+        (void)TradeoffStudy::check(s);
     } catch (const UsageError&) {
         throw;
     } catch (const Error& e) {
         throw UsageError(e.what());
     }
-    const std::string suffix = checked.shard.whole() ? ""
-                                                     : "-shard-" + std::to_string(checked.shard.index) + "-of-" +
-                                                           std::to_string(checked.shard.count);
-    const std::string csv = csvFlag.value_or("tradeoff" + suffix + ".csv");
-    const std::string json = jsonFlag.value_or("tradeoff" + suffix + ".json");
-    const std::string plot = plotFlag.value_or("tradeoff" + suffix + ".png");
-    CommandLine::requireDistinctFiles({{"--csv", csv}, {"--json", json}, {"--plot", plot}}, CommandLine::inputFiles(s.run));
-    checkPlotFile(plot, plotW, plotH);
-    CommandLine::requireWritable(csv, "tradeoff CSV");
-    CommandLine::requireWritable(json, "tradeoff JSON");
-    CommandLine::requireWritable(plot, "plot");
+    so.checkOutputs(kTradeoff, CommandLine::inputFiles(s.run));
     const TradeoffOptions o = TradeoffStudy::runnerOptions(s);  // --knobs speed/quality: its axes, from the scene
 
     // Everything that can fail without GL fails here: axes, values, presets, the scene.

@@ -9,6 +9,10 @@ all cameras ("all") are drawn. `tradeoff --plot FILE.png` runs it; by hand:
 --overlay draws another tradeoff CSV's points (e.g. presets measured the same
 way) over the first, as labelled diamonds.
 
+Labels are placed one by one where they overlap no label placed before, no
+point and not the legend (place_labels: the nearest free offset around the
+point, stepping outwards), with a thin line to a point they had to move away from.
+
 Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
 (Debian: apt-get install python3-matplotlib).
 """
@@ -65,6 +69,72 @@ def read(path, time="frame"):
     return axes, rows
 
 
+def place_labels(ax, fig, labels, points):
+    """Annotates each (x, y, text, color) of `labels` where its text box
+    overlaps no label placed before it, no point of `points` (data x, y) and
+    stays inside the axes: a greedy search over offsets around the point,
+    stepping outwards ring by ring (8 directions per ring); a label moved
+    away from its point gets a thin leader line. Where no free spot exists
+    the one with the least overlap is kept."""
+    if not labels:
+        return
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    area = ax.get_window_extent(renderer)
+    to_px = ax.transData.transform
+    pad = 3.0 * fig.dpi / 72.0  # a marker's half size, in pixels
+    markers = []
+    for x, y in points:
+        px, py = to_px((x, y))
+        markers.append((px - pad, py - pad, px + pad, py + pad))
+    placed = []
+    legend = ax.get_legend()
+    if legend is not None:
+        e = legend.get_window_extent(renderer)
+        placed.append((e.x0, e.y0, e.x1, e.y1))
+
+    def overlap(a, b):
+        w = min(a[2], b[2]) - max(a[0], b[0])
+        h = min(a[3], b[3]) - max(a[1], b[1])
+        return w * h if w > 0 and h > 0 else 0.0
+
+    def outside(box):
+        return (max(0.0, area.x0 - box[0]) + max(0.0, box[2] - area.x1)) * (box[3] - box[1]) + \
+               (max(0.0, area.y0 - box[1]) + max(0.0, box[3] - area.y1)) * (box[2] - box[0])
+
+    # Offsets in points: right-above first (the usual place), then the other
+    # seven directions, then the same at 2, 3, ... times the distance.
+    directions = [(1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
+    for x, y, text, color in labels:
+        best = None
+        for ring in range(1, 7):
+            for dx, dy in directions:
+                ox, oy = 6 * ring * dx, 6 * ring * dy
+                ha = "left" if dx > 0 else "right" if dx < 0 else "center"
+                va = "bottom" if dy > 0 else "top" if dy < 0 else "center"
+                note = ax.annotate(text, (x, y), textcoords="offset points", xytext=(ox, oy), fontsize=8,
+                                   color=color, ha=ha, va=va, zorder=5)
+                e = note.get_window_extent(renderer)
+                box = (e.x0, e.y0, e.x1, e.y1)
+                cost = sum(overlap(box, b) for b in placed) + sum(overlap(box, m) for m in markers) + outside(box)
+                if best is None or cost < best[0]:
+                    if best is not None:
+                        best[1].remove()
+                    best = (cost, note, box, ring)
+                else:
+                    note.remove()
+                if cost == 0:
+                    break
+            if best[0] == 0:
+                break
+        _, note, box, ring = best
+        if ring > 1:
+            ax.annotate("", (x, y), xytext=((box[0] + box[2]) / 2, (box[1] + box[3]) / 2), textcoords="figure pixels",
+                        arrowprops=dict(arrowstyle="-", color=color, alpha=0.5, lw=0.6, shrinkA=0, shrinkB=2),
+                        zorder=4)
+        placed.append(box)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--csv", required=True)
@@ -119,25 +189,25 @@ def main():
                     ecolor="tab:red" if front else "lightgray", capsize=3, markersize=7 if front else 5,
                     label="Pareto front" if front else "other points", zorder=3 if front else 2)
     front = sorted((r for r in shown if r["pareto"]), key=lambda r: (r["ms"], r["error"]))
+    labels = [(r["ms"], r["error"], label(r), "tab:red") for r in front]
+    points = [(r["ms"], r["error"]) for r in shown]
+    overlay_points = []
     if front:
         ax.plot([r["ms"] for r in front], [r["error"] for r in front], "-", color="tab:red", alpha=0.5, zorder=1)
-        for r in front:
-            ax.annotate(label(r), (r["ms"], r["error"]), textcoords="offset points", xytext=(6, 6), fontsize=8,
-                        color="tab:red")
     for k, (o_axes, o_rows) in enumerate(overlays):
-        points = shown_rows(o_rows)
-        if not points:
+        o_points = shown_rows(o_rows)
+        if not o_points:
             continue
-        o_vary = [i for i, _ in enumerate(o_axes) if len({r["values"][i] for r in points}) > 1]
-        ax.errorbar([r["ms"] for r in points], [r["error"] for r in points],
-                    xerr=[[max(0.0, r["ms"] - r["ms_lo"]) for r in points], [max(0.0, r["ms_hi"] - r["ms"]) for r in points]],
-                    yerr=[[max(0.0, r["error"] - r["lo"]) for r in points], [max(0.0, r["hi"] - r["error"]) for r in points]],
+        o_vary = [i for i, _ in enumerate(o_axes) if len({r["values"][i] for r in o_points}) > 1]
+        ax.errorbar([r["ms"] for r in o_points], [r["error"] for r in o_points],
+                    xerr=[[max(0.0, r["ms"] - r["ms_lo"]) for r in o_points], [max(0.0, r["ms_hi"] - r["ms"]) for r in o_points]],
+                    yerr=[[max(0.0, r["error"] - r["lo"]) for r in o_points], [max(0.0, r["hi"] - r["error"]) for r in o_points]],
                     fmt="D", color=f"C{k}", ecolor=f"C{k}", alpha=0.8, capsize=3, markersize=6,
                     label=args.overlay[k].rsplit("/", 1)[-1], zorder=4)
-        for r in points:
+        for r in o_points:
             text = ", ".join(r["values"][i] if o_axes[i] == "preset" else f"{o_axes[i]}={r['values'][i]}" for i in o_vary)
-            ax.annotate(text or f"point {r['point']}", (r["ms"], r["error"]), textcoords="offset points",
-                        xytext=(6, -10), fontsize=8, color=f"C{k}")
+            labels.append((r["ms"], r["error"], text or f"point {r['point']}", f"C{k}"))
+        overlay_points += [(r["ms"], r["error"]) for r in o_points]
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
     ax.set_xlabel("GPU frame ms (median, 95% CI)" if args.time == "frame"
@@ -149,6 +219,8 @@ def main():
     if shown:
         ax.legend(loc="best", fontsize=8)
     fig.tight_layout()
+    # The labels last, once the axes' limits and the layout are final.
+    place_labels(ax, fig, labels, points + overlay_points)
     fig.savefig(args.out, format="png")
     return 0
 

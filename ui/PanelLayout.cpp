@@ -197,38 +197,93 @@ nlohmann::json PanelLayout::toJson() const {
     return {{"columns", cols}};
 }
 
-void PanelLayout::fromJson(const nlohmann::json& j) {
-    // Same panels in the same places as the default, other weights: a file
-    // from another version, or edited by hand into another shape, is refused.
+std::vector<std::string> PanelLayout::fromJson(const nlohmann::json& j) {
+    // What the file has is taken where this version has the same place: a
+    // column by its index, a row by its index in the column, a panel's width
+    // by the panel's name in that row (a file without "panels" lists the
+    // widths in this version's order). The rest keeps the default: a panel
+    // this version added (Pareto, next to the timings and the probe) gets its
+    // default width beside the saved ones. What the file has and this
+    // version cannot place, or a weight that is not one, is dropped and said.
     PanelLayout shape;
-    auto weight = [](const nlohmann::json& v, const std::string& what) {
-        if (!v.is_number()) throw std::runtime_error(what + " is not a number");
+    std::vector<std::string> dropped;
+    auto weight = [&](const nlohmann::json& v, const std::string& what, float& into) {
+        if (v.is_null()) return;  // not in the file: the default
+        if (!v.is_number()) {
+            dropped.push_back(what + " is not a number");
+            return;
+        }
         const double d = v.get<double>();
-        if (!std::isfinite(d) || d <= 0.0 || d > 1e6) throw std::runtime_error(what + " must be a positive weight");
-        return static_cast<float>(d);
+        if (!std::isfinite(d) || d <= 0.0 || d > 1e6) {
+            dropped.push_back(what + " is not a positive weight");
+            return;
+        }
+        into = static_cast<float>(d);
     };
-    if (!j.is_object() || !j.contains("columns") || !j["columns"].is_array() || j["columns"].size() != shape.columns_.size())
-        throw std::runtime_error("expected \"columns\": an array of " + std::to_string(shape.columns_.size()));
-    for (size_t c = 0; c < shape.columns_.size(); ++c) {
-        const nlohmann::json& jc = j["columns"][c];
+    if (!j.is_object() || !j.contains("columns") || !j["columns"].is_array())
+        throw std::runtime_error("expected an object with \"columns\": an array");
+    const nlohmann::json& jcols = j["columns"];
+    if (jcols.size() > shape.columns_.size())
+        dropped.push_back("columns past the " + std::to_string(shape.columns_.size()) + " this version has");
+    for (size_t c = 0; c < std::min(jcols.size(), shape.columns_.size()); ++c) {
+        const nlohmann::json& jc = jcols[c];
         Column& col = shape.columns_[c];
         const std::string at = "columns[" + std::to_string(c) + "]";
-        if (!jc.is_object() || !jc.contains("rows") || !jc["rows"].is_array() || jc["rows"].size() != col.rows.size())
-            throw std::runtime_error(at + ": expected " + std::to_string(col.rows.size()) + " rows");
-        col.width = weight(jc.value("width", nlohmann::json()), at + ".width");
-        for (size_t r = 0; r < col.rows.size(); ++r) {
-            const nlohmann::json& jr = jc["rows"][r];
+        if (!jc.is_object()) {
+            dropped.push_back(at + " is not an object");
+            continue;
+        }
+        weight(jc.value("width", nlohmann::json()), at + ".width", col.width);
+        const nlohmann::json& jrows = jc.value("rows", nlohmann::json::array());
+        if (!jrows.is_array()) {
+            dropped.push_back(at + ".rows is not an array");
+            continue;
+        }
+        if (jrows.size() > col.rows.size())
+            dropped.push_back(at + ": rows past the " + std::to_string(col.rows.size()) + " this version has");
+        for (size_t r = 0; r < std::min(jrows.size(), col.rows.size()); ++r) {
+            const nlohmann::json& jr = jrows[r];
             Row& row = col.rows[r];
             const std::string rat = at + ".rows[" + std::to_string(r) + "]";
-            if (!jr.is_object() || jr.value("panels", nlohmann::json()) != nlohmann::json(row.panels))
-                throw std::runtime_error(rat + ": not the panels this version places there");
-            row.height = weight(jr.value("height", nlohmann::json()), rat + ".height");
+            if (!jr.is_object()) {
+                dropped.push_back(rat + " is not an object");
+                continue;
+            }
+            weight(jr.value("height", nlohmann::json()), rat + ".height", row.height);
             const nlohmann::json& jw = jr.value("widths", nlohmann::json());
-            if (!jw.is_array() || jw.size() != row.widths.size()) throw std::runtime_error(rat + ".widths: wrong length");
-            for (size_t i = 0; i < row.widths.size(); ++i) row.widths[i] = weight(jw[i], rat + ".widths");
+            const nlohmann::json& jp = jr.value("panels", nlohmann::json());
+            if (jw.is_null()) continue;
+            if (!jw.is_array()) {
+                dropped.push_back(rat + ".widths is not an array");
+                continue;
+            }
+            if (jp.is_null()) {
+                if (jw.size() != row.widths.size()) {
+                    dropped.push_back(rat + ".widths: " + std::to_string(jw.size()) + " without \"panels\", this row has " +
+                                      std::to_string(row.widths.size()));
+                    continue;
+                }
+                for (size_t i = 0; i < row.widths.size(); ++i) weight(jw[i], rat + ".widths[" + std::to_string(i) + "]", row.widths[i]);
+                continue;
+            }
+            if (!jp.is_array() || jp.size() != jw.size()) {
+                dropped.push_back(rat + ": \"panels\" and \"widths\" do not pair up");
+                continue;
+            }
+            for (size_t k = 0; k < jp.size(); ++k) {
+                const auto it = jp[k].is_string() ? std::find(row.panels.begin(), row.panels.end(), jp[k].get<std::string>())
+                                                  : row.panels.end();
+                if (it == row.panels.end()) {
+                    dropped.push_back(rat + ": " + (jp[k].is_string() ? "the panel '" + jp[k].get<std::string>() + "'" : "a panel name") +
+                                      " this version does not place there");
+                    continue;
+                }
+                weight(jw[k], rat + ".widths[" + std::to_string(k) + "]", row.widths[static_cast<size_t>(it - row.panels.begin())]);
+            }
         }
     }
     columns_ = std::move(shape.columns_);
+    return dropped;
 }
 
 }  // namespace dw::ui

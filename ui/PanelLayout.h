@@ -60,8 +60,15 @@ public:
     std::vector<std::string> panels() const;
 
     nlohmann::json toJson() const;
-    // Throws std::runtime_error naming what is wrong; the layout is then unchanged.
-    void fromJson(const nlohmann::json& j);
+    // Reads a saved layout (toJson's, or an older version's): every weight
+    // that has a place in this version is taken, the rest stays the default
+    // (a panel added since keeps its default width beside the saved ones).
+    // Returns what was dropped, one line each naming where (columns[1].rows[0]...):
+    // weights that are not positive numbers, columns, rows or panels this
+    // version does not have; empty when everything was used. Throws
+    // std::runtime_error, the layout unchanged, when `j` is not an object with
+    // a "columns" array.
+    std::vector<std::string> fromJson(const nlohmann::json& j);
 
 private:
     struct Row {

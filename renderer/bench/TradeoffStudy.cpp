@@ -31,6 +31,8 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     inRange("--size height", s.run.height, 1, 16384);
     for (const auto& text : s.sweep) {
         const BenchKnobAxis axis = BenchGrid::parseSweep(text);
+        for (const auto& a : o.sweep.axes)
+            if (a.name == axis.knob) throw Error("--sweep " + axis.knob + " is given twice");
         o.sweep.axes.push_back({axis.knob, axis.values});
     }
     if (!s.presets.empty()) {
@@ -50,7 +52,7 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.mask = s.mask;
     o.time = s.time;
     inRange("--ao-rays", s.aoRays, 1, 1 << 20);
-    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, 1, 10000);
+    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, 1, 100000);
     o.walkthrough = s.walkthrough;
     o.frames = inRange("--frames", s.frames, 1, 100000);
     o.warmup = inRange("--warmup", s.warmup, 0, 100000);

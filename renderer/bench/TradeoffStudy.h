@@ -34,7 +34,7 @@ struct TradeoffStudyOptions {
     std::string mask;                    // "" or shadow_edges
     std::string time = "frame";          // frame or a pass's name
     int aoRays = 64;                     // the reference's AO rays per pixel, 1 .. 2^20
-    int orbit = 0;                       // 0: the run's camera; 1 .. 10000 cameras on an orbit
+    int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
     bool walkthrough = false;            // the scene's camera.path keyframes
     int frames = 5, warmup = 1, block = 1, resamples = 2000;
     std::string shard;                   // "" (the whole sweep) or i/n

@@ -20,7 +20,10 @@
 //   frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi
 //                              the median GPU frame time and its interval
 //   gpu_ms.<pass>...           each pass's median GPU time (empty: the pass did
-//                              not run at that point)
+//                              not run at that point); also gpu_ms.<pass>/shadow maps,
+//                              the shadow maps drawn inside the pass that shades
+//                              their light when shadows.reuse_map is on (the
+//                              shadows pass then draws none: its time is ~0)
 //   pareto                     1 on the front, else 0
 // Numbers are written in the shortest form that reads back to the same double,
 // so a table read back has the same front. Needs no GL.

@@ -662,3 +662,19 @@ TEST(BenchCli, AKilledRunKeepsItsSamplesAndResumes) {
     for (size_t i = 1; i < done.size(); ++i) all += done[i][9] == "frame";
     EXPECT_EQ(all, 4 * 40);
 }
+
+// With shadows.reuse_map on the shadows pass draws no map: its cell in the
+// per-pass table says where the maps were drawn instead; with it off, none.
+TEST(BenchCli, ReusedShadowMapsAreMarkedInThePassTable) {
+    const Result r = run("bench --scene spheres --size 32x18 --frames 1 --warmup 0 --no-lpp --set ao.enabled=false "
+                         "--sweep shadows.reuse_map=true,false --csv /dev/null --json /dev/null --quiet");
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const size_t reused = r.out.find("| 0 | 32x18 |", r.out.find("GPU median ms per pass"));
+    ASSERT_NE(reused, std::string::npos) << r.out;
+    const std::string row0 = r.out.substr(reused, r.out.find('\n', reused) - reused);
+    const size_t kept = r.out.find("| 1 | 32x18 |", reused);
+    ASSERT_NE(kept, std::string::npos) << r.out;
+    const std::string row1 = r.out.substr(kept, r.out.find('\n', kept) - kept);
+    EXPECT_NE(row0.find("(reused: maps in lighting/shadow maps)"), std::string::npos) << row0;
+    EXPECT_EQ(row1.find("reused"), std::string::npos) << row1;
+}

@@ -5,6 +5,7 @@
 // input refused in one message. Timings are never asserted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -249,6 +250,51 @@ TEST(TradeoffCli, ShadowEdgeErrorFallsAsTheMapGrows) {
     EXPECT_NE(r.out.find("rms of shadow (lighting.shadow)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("| Pareto (lighting ms) |"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("within 2 px of an edge of the reference's shadow buffer"), std::string::npos) << r.out;
+}
+
+// Issue 23's normal-encoding check, on normals the view actually shows near
+// -z (Kircher-Lawrance's worst case): scenes/normals-minus-z.json's floor
+// seen from a steep, 178-degree camera, its view-space normal 10, 7, 4 and
+// 2 degrees from -z along the path. The octahedral encoding's L-buffer error
+// is a fraction of KL's over the cameras.
+TEST(TradeoffCli, OctahedralNormalsBeatKircherLawranceNearMinusZ) {
+    const Result r = run("tradeoff --scene " + (test::scenesDir() / "normals-minus-z.json").string() +
+                         " --size 160x90 --walkthrough --set ao.enabled=false --set shadows.enabled=false "
+                         "--set gbuffer.texture_filter=base_level --sweep gbuffer.normal_encoding=kl16,oct16 "
+                         "--buffer lbuffer --metric rms --frames 1 --warmup 0 --resamples 200 --quiet" +
+                         files("normals-minus-z"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "normals-minus-z.csv").string());
+    ASSERT_EQ(t.rows.size(), 10u);  // 2 points x (4 cameras + all)
+    auto error = [&](const std::string& encoding, const std::string& camera) {
+        for (const auto& row : t.rows)
+            if (t.axisValue(row, "gbuffer.normal_encoding") == encoding && row.camera == camera) return row.error;
+        return std::nan("");
+    };
+    // Measured at 160x90: kl16 4.6e-5, oct16 6.7e-6 over the cameras; at
+    // the first camera (10 degrees from -z) 1.1e-4 against 7.4e-6.
+    EXPECT_GT(error("kl16", "all"), 0.0);
+    EXPECT_LT(error("oct16", "all"), 0.5 * error("kl16", "all"));
+    EXPECT_LT(error("oct16", "0"), 0.25 * error("kl16", "0"));
+}
+
+// With shadows.reuse_map on, the shadows pass draws no map (each is drawn
+// just before its light is shaded, in the lighting pass): its ~0 ms is true.
+// The maps' time is the column gpu_ms.lighting/shadow maps, and --time
+// shadows marks the rows where the maps were reused.
+TEST(TradeoffCli, ReusedShadowMapsAreTimedInTheLightingPassAndMarked) {
+    const Result r = run("tradeoff --scene spheres --size 64x36 --set ao.enabled=false --sweep shadows.reuse_map=true,false "
+                         "--buffer lbuffer --metric rms --time shadows --frames 1 --warmup 0 --resamples 200 --quiet" +
+                         files("reuse"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "reuse.csv").string());
+    ASSERT_EQ(t.rows.size(), 2u);
+    ASSERT_NE(std::find(t.passes.begin(), t.passes.end(), "lighting/shadow maps"), t.passes.end());
+    EXPECT_EQ(std::find(t.passes.begin(), t.passes.end(), "shadows/shadow maps"), t.passes.end());
+    EXPECT_TRUE(std::isfinite(t.passGpuMs(t.rows[0], "lighting/shadow maps")));  // reused: drawn while lighting
+    EXPECT_FALSE(std::isfinite(t.passGpuMs(t.rows[1], "lighting/shadow maps")));  // kept: drawn by the shadows pass
+    EXPECT_NE(r.out.find("(reused: maps in lighting/shadow maps, "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("(reused"), r.out.rfind("(reused")) << "only the reused row is marked\n" << r.out;
 }
 
 // compare --against reference --buffer shadow: lighting.shadow against the

@@ -788,6 +788,37 @@ TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
     EXPECT_GT(fs::file_size(r.renderdocCaptures[0]), 10000u);
 }
 
+// A layout.json saved before the Pareto panel joined the timings and the
+// probe (only splitter weights, the timings row two panels wide) was refused
+// whole. Now its weights are used, the Pareto panel keeps its default, and
+// nothing is reported (nothing was dropped).
+TEST(Gui, UnderXvfbALayoutJsonFromAnOlderVersionLoadsItsWeights) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path layout = test::tempDir() / "old-layout.json";
+    std::ofstream(layout) << R"({"layout": {"columns": [
+        {"width": 0.18, "rows": [{"panels": ["Scene"], "widths": [1], "height": 0.34},
+                                 {"panels": ["Lights"], "widths": [1], "height": 0.40},
+                                 {"panels": ["Presets"], "widths": [1], "height": 0.26}]},
+        {"width": 0.58, "rows": [{"panels": ["Viewport", "Side view"], "widths": [0.6, 0.4], "height": 0.64},
+                                 {"panels": ["GPU timings", "Pixel probe"], "widths": [0.4, 0.6], "height": 0.36}]},
+        {"width": 0.24, "rows": [{"panels": ["Pass inspector"], "widths": [1], "height": 0.40},
+                                 {"panels": ["Parameters"], "widths": [1], "height": 0.38},
+                                 {"panels": ["Messages"], "widths": [1], "height": 0.22},
+                                 {"panels": ["Keys"], "widths": [1], "height": 0.25}]}]}})";
+    const fs::path out = test::tempDir() / "old-layout-report.json";
+    const Result r = shell("xvfb-run -a -s '-screen 0 1600x900x24' " + std::string(DW_WORKBENCH_BINARY) +
+                           " --scene spheres --set ao.enabled=false --frames 2 --layout " + layout.string() +
+                           " --layout-out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const LayoutReport rep = readLayoutReport(out);
+    EXPECT_EQ(rep.errors, std::vector<std::string>{});
+    const ui::PanelRect* timings = rep.find("GPU timings");
+    const ui::PanelRect* probe = rep.find("Pixel probe");
+    ASSERT_TRUE(timings && probe);
+    // The saved 0.4 : 0.6 (the default is 0.6 : 0.4).
+    EXPECT_NEAR(probe->w / timings->w, 1.5f, 0.03f);
+}
+
 // The window's own layout.json is read through the same JSON guard as every
 // other file: 150 000 levels of nesting overflowed the stack at start-up
 // (exit 139). Now the window starts, shows the default layout, and says why.

@@ -111,16 +111,58 @@ TEST(PanelLayout, DraggingASplitterMovesRoomBetweenNeighboursAndStopsAtTheMinimu
     for (size_t i = 0; i < c.panels.size(); ++i) EXPECT_EQ(c.panels[i].rect.w, d.panels[i].rect.w) << c.panels[i].panel;
 }
 
-TEST(PanelLayout, ASavedLayoutOfAnotherShapeIsRefusedAndChangesNothing) {
+// A layout saved by an older version (before the Pareto panel joined the
+// timings and the probe) loads what it has: its weights where this version
+// has the same place, the new panel at its default width, nothing said.
+TEST(PanelLayout, AnOlderLayoutLoadsWhatItHasAndDefaultsTheRest) {
+    PanelLayout layout;
+    nlohmann::json j = layout.toJson();
+    j["columns"][0]["width"] = 0.3;
+    j["columns"][1]["rows"][1] =
+        nlohmann::json::parse(R"({"panels": ["GPU timings", "Pixel probe"], "widths": [0.4, 0.6], "height": 0.5})");
+    EXPECT_TRUE(layout.fromJson(j).empty());
+    const nlohmann::json got = layout.toJson();
+    EXPECT_FLOAT_EQ(got["columns"][0]["width"].get<float>(), 0.3f);
+    const nlohmann::json& row = got["columns"][1]["rows"][1];
+    EXPECT_EQ(row["panels"], nlohmann::json({"GPU timings", "Pixel probe", "Pareto"}));
+    EXPECT_EQ(row["widths"], nlohmann::json({0.4f, 0.6f, 0.5f}));
+    EXPECT_FLOAT_EQ(row["height"].get<float>(), 0.5f);
+    // Arranged, the saved proportions of the two old panels hold.
+    auto open = [](const std::string&) { return true; };
+    const auto a = layout.arrange(1600, 900, 19, open);
+    EXPECT_NEAR(a.find("Pixel probe")->w / a.find("GPU timings")->w, 1.5f, 0.02f);
+    // Only weights (no "panels"): taken in this version's order when the count matches.
+    PanelLayout bare;
+    const nlohmann::json w = nlohmann::json::parse(R"({"columns": [{"width": 0.25}, {"rows": [{"widths": [0.5, 0.5]}]}]})");
+    EXPECT_TRUE(bare.fromJson(w).empty());
+    EXPECT_FLOAT_EQ(bare.toJson()["columns"][0]["width"].get<float>(), 0.25f);
+    EXPECT_EQ(bare.toJson()["columns"][1]["rows"][0]["widths"], nlohmann::json({0.5f, 0.5f}));
+    EXPECT_EQ(bare.toJson()["columns"][2], PanelLayout().toJson()["columns"][2]);
+}
+
+// What cannot be placed is dropped and named, the rest is still taken; only a
+// file that is no layout at all is refused, and then nothing changes.
+TEST(PanelLayout, WhatALayoutCannotPlaceIsDroppedAndNamed) {
     PanelLayout layout;
     nlohmann::json j = layout.toJson();
     j["columns"][0]["width"] = -1;
-    EXPECT_THROW(layout.fromJson(j), std::runtime_error);
-    j = layout.toJson();
-    j["columns"][1]["rows"][0]["panels"] = {"Viewport", "Something else"};
-    EXPECT_THROW(layout.fromJson(j), std::runtime_error);
-    EXPECT_THROW(layout.fromJson(nlohmann::json::array()), std::runtime_error);
-    EXPECT_EQ(layout.toJson(), PanelLayout().toJson());
+    j["columns"][1]["rows"][0]["panels"] = nlohmann::json::parse(R"(["Viewport", "Something else"])");
+    j["columns"][1]["rows"][0]["widths"] = nlohmann::json::parse("[0.9, 0.1]");
+    j["columns"][2]["width"] = 0.4;
+    j["columns"].push_back(nlohmann::json::parse(R"({"width": 1})"));
+    const std::vector<std::string> dropped = layout.fromJson(j);
+    EXPECT_EQ(dropped, (std::vector<std::string>{"columns past the 3 this version has",
+                                                 "columns[0].width is not a positive weight",
+                                                 "columns[1].rows[0]: the panel 'Something else' this version does not place there"}));
+    const nlohmann::json got = layout.toJson();
+    const nlohmann::json def = PanelLayout().toJson();
+    EXPECT_EQ(got["columns"][0]["width"], def["columns"][0]["width"]);
+    EXPECT_EQ(got["columns"][1]["rows"][0]["widths"], nlohmann::json({0.9f, 0.4f}));
+    EXPECT_FLOAT_EQ(got["columns"][2]["width"].get<float>(), 0.4f);
+    PanelLayout untouched;
+    EXPECT_THROW(untouched.fromJson(nlohmann::json::array()), std::runtime_error);
+    EXPECT_THROW(untouched.fromJson(nlohmann::json{{"columns", 3}}), std::runtime_error);
+    EXPECT_EQ(untouched.toJson(), PanelLayout().toJson());
 }
 
 TEST(ScriptedInput, ParsesActionsIntoFramesAndNamesTheLineOfABadOne) {

@@ -1,0 +1,173 @@
+#include "app/SweepOptions.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace {
+
+// A comma list of a flag; an empty item is a usage error.
+std::vector<std::string> flagList(const std::string& flag, const std::string& text) {
+    try {
+        return splitList(text, flag);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+}
+
+std::pair<int, int> readPlotSize(CommandLine& cl, const SweepCommand& c) {
+    return CommandLine::parseSize(cl.value("--plot-size").value_or(c.plotSize), "--plot-size");
+}
+
+// --plot: a .png (the scripts write PNG only) at least 50x50 (the scripts' least).
+void checkPlot(const std::string& plot, int width, int height) {
+    std::string ext = std::filesystem::path(plot).extension().string();
+    for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".png") throw UsageError("--plot writes a PNG; give a file name ending in .png, got '" + plot + "'");
+    if (width < 50 || height < 50)
+        throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+// --plot-size without --plot changes nothing: said, not ignored.
+void notePlotSizeAlone(CommandLine& cl, const SweepCommand& c, bool plot) {
+    if (!plot && cl.value("--plot-size"))
+        std::fprintf(stderr, "%s: note: --plot-size sizes the plot; without --plot none is drawn\n", c.name.c_str());
+}
+
+}  // namespace
+
+int SweepOptions::readResamples(CommandLine& cl) {
+    return CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+}
+
+std::vector<std::pair<int, int>> SweepOptions::readSizes(CommandLine& cl, bool several) {
+    const std::string text = cl.value("--size").value_or("640x360");
+    if (!several) return {CommandLine::parseSize(text)};
+    std::vector<std::pair<int, int>> sizes;
+    for (const auto& s : flagList("--size", text)) {
+        const auto size = CommandLine::parseSize(s);
+        if (std::find(sizes.begin(), sizes.end(), size) != sizes.end())
+            throw UsageError("--size: '" + s + "' is given twice");
+        sizes.push_back(size);
+    }
+    return sizes;
+}
+
+SweepOptions SweepOptions::read(CommandLine& cl, const SweepCommand& c) {
+    SweepOptions o;
+    for (const auto& s : cl.values("--sweep")) {
+        BenchKnobAxis axis;
+        try {
+            axis = BenchGrid::parseSweep(s);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+        for (const auto& a : o.sweeps)
+            if (a.knob == axis.knob) throw UsageError("--sweep " + axis.knob + " is given twice");
+        o.sweeps.push_back(std::move(axis));
+    }
+    o.excludes = cl.values("--exclude");
+    for (const auto& e : o.excludes) {
+        try {
+            o.exclusion.add(e);
+        } catch (const Error& err) {
+            throw UsageError(err.what());
+        }
+    }
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or(std::to_string(c.frames)), 1, 100000);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    o.resamples = readResamples(cl);
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
+    o.walkthrough = cl.flag("--walkthrough");
+    if (const auto shard = cl.value("--shard")) {
+        try {
+            o.shard = BenchShard::parse(*shard);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }
+    const std::string stem = c.name + o.shardSuffix();
+    o.csv = cl.value("--csv").value_or(stem + ".csv");
+    o.json = cl.value("--json").value_or(stem + ".json");
+    o.plot = cl.value("--plot");
+    if (!o.plot && c.plotByDefault) o.plot = stem + ".png";
+    std::tie(o.plotWidth, o.plotHeight) = readPlotSize(cl, c);
+    notePlotSizeAlone(cl, c, o.plot.has_value());
+    o.quiet = cl.flag("--quiet");
+    return o;
+}
+
+std::string SweepOptions::shardSuffix() const {
+    return shard.whole() ? "" : "-shard-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count);
+}
+
+std::string SweepOptions::shardText() const { return std::to_string(shard.index) + "/" + std::to_string(shard.count); }
+
+void SweepOptions::checkOutputs(const SweepCommand& c, const CommandLine::NamedFiles& inputs) const {
+    CommandLine::NamedFiles writes = {{"--csv", csv}, {"--json", json}};
+    if (plot) writes.emplace_back("--plot", *plot);
+    CommandLine::requireDistinctFiles(writes, inputs);
+    if (plot) checkPlot(*plot, plotWidth, plotHeight);
+    CommandLine::requireWritable(csv, c.name + " CSV");
+    CommandLine::requireWritable(json, c.name + " JSON");
+    if (plot) CommandLine::requireWritable(*plot, "plot");
+}
+
+std::string SweepOptions::help(const SweepCommand& c) {
+    const std::string stem = c.name;
+    return "  --sweep      " + c.sweepWhat + "; repeatable, each knob once\n"
+           "  --exclude    a corner of the grid left out: every named axis at one of its values, e.g.\n"
+           "               lighting.strategy=fullscreen,lights=10000; repeatable\n"
+           "  --frames     counted frames per configuration (default " + std::to_string(c.frames) + "); --warmup frames after each\n"
+           "               switch are left out (default 1); --block K counted frames in a row (default 1:\n"
+           "               A B C A B C ...); --resamples for the 95% bootstrap intervals (default 2000)\n"
+           "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
+           "               scene JSON's camera.path; " + c.camerasWhat + "\n"
+           "  --shard i/n  " + c.shardWhat + "; join the shards with " + stem + " merge\n"
+           "  --csv, --json  " + c.filesWhat + ";\n"
+           "               default " + stem + ".csv and " + stem + ".json (" + stem + "-shard-I-of-N.* with --shard)\n"
+           "  --plot       " + c.plotWhat + "; --plot-size in pixels (default " + c.plotSize + ")\n"
+           "  --quiet      no progress lines on stderr\n";
+}
+
+SweepMergeOptions SweepMergeOptions::read(CommandLine& cl, const SweepCommand& c) {
+    SweepMergeOptions m;
+    m.out = cl.value("--out");
+    m.json = cl.value("--json");
+    m.plot = cl.value("--plot");
+    std::tie(m.plotWidth, m.plotHeight) = readPlotSize(cl, c);
+    notePlotSizeAlone(cl, c, m.plot.has_value());
+    return m;
+}
+
+void SweepMergeOptions::check(const CommandLine& cl, const SweepCommand& c, const CommandLine::NamedFiles& moreReads) {
+    inputs = cl.positional();
+    if (inputs.empty()) throw UsageError(c.name + " merge needs the shards' CSV files");
+    if (!out) throw UsageError(c.name + " merge needs --out FILE.csv");
+    CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
+    if (json) writes.emplace_back("--json", *json);
+    if (plot) writes.emplace_back("--plot", *plot);
+    for (const auto& in : inputs) reads.emplace_back("the shard " + in, in);
+    reads.insert(reads.end(), moreReads.begin(), moreReads.end());
+    CommandLine::requireDistinctFiles(writes, reads);
+    if (plot) checkPlot(*plot, plotWidth, plotHeight);
+    CommandLine::requireWritable(*out, "merged CSV");
+    if (json) CommandLine::requireWritable(*json, "merged JSON");
+    if (plot) CommandLine::requireWritable(*plot, "plot");
+}
+
+std::string SweepMergeOptions::help(const SweepCommand& c) {
+    return "  merge        joins the shards' files into --out (and --json, --plot as a run writes them)\n"
+           "               into one table, as one run of the whole grid would have; --plot-size as above (default " +
+           c.plotSize + ")\n";
+}
+
+}  // namespace dw
