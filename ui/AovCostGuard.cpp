@@ -87,19 +87,24 @@ void AovCostGuard::draw(UiState& state, RenderSession& session) {
     ImGui::TextUnformatted(message_.c_str());
     ImGui::TextUnformatted("The previous settings are kept.");
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("Render AOV anyway")) {
-        restore(session, refused_);
-        confirmed_ = refused_;
-        refused_.clear();
-        state.log.succeeded("aov cost");
-        state.log.info("AOV: rendering the state over the cost limit, as asked", state.time);
-    }
+    if (ImGui::Button("Render AOV anyway")) confirm(state, session);
     ImGui::SameLine();
-    if (ImGui::Button("Keep the previous settings")) {
-        refused_.clear();
-        state.log.succeeded("aov cost");
-    }
+    if (ImGui::Button("Keep the previous settings")) dismiss(state);
     ImGui::End();
+}
+
+void AovCostGuard::confirm(UiState& state, RenderSession& session) {
+    if (refused_.empty()) return;
+    restore(session, refused_);
+    confirmed_ = refused_;
+    refused_.clear();
+    state.log.succeeded("aov cost");
+    state.log.info("AOV: rendering the state over the cost limit, as asked", state.time);
+}
+
+void AovCostGuard::dismiss(UiState& state) {
+    refused_.clear();
+    state.log.succeeded("aov cost");
 }
 
 }  // namespace dw::ui

@@ -31,6 +31,10 @@ public:
     // The confirmation window (inside an ImGui frame), when a state was refused.
     void draw(UiState& state, RenderSession& session);
     bool refusing() const { return !refused_.empty(); }
+    // The window's buttons: render the refused state anyway (kept until the
+    // knobs change), or keep the previous one.
+    void confirm(UiState& state, RenderSession& session);
+    void dismiss(UiState& state);
     const std::string& message() const { return message_; }
 
 private:
