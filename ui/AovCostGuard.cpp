@@ -33,7 +33,7 @@ void AovCostGuard::restore(RenderSession& session, const std::vector<double>& v)
 
 void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
     const Camera& cam = session.camera();
-    const bool sceneChanged = checkedScene_ != &session.scene();
+    const bool sceneChanged = checkedScene_ != &session.scene() || checkedSource_ != session.scene().source;
     const bool knobsChanged = checkedGeneration_ != session.knobs().generation();
     const bool cameraChanged =
         cam.position != checkedEye_ || cam.target != checkedTarget_ || cam.fovYDegrees != checkedFov_;
@@ -43,6 +43,7 @@ void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
         confirmed_.clear();
     }
     checkedScene_ = &session.scene();
+    checkedSource_ = session.scene().source;
     checkedEye_ = cam.position;
     checkedTarget_ = cam.target;
     checkedFov_ = cam.fovYDegrees;

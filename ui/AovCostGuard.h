@@ -45,7 +45,8 @@ private:
     std::vector<double> refused_;    // the state put back, until confirmed or dismissed
     std::vector<double> confirmed_;  // a state the user chose to render anyway
     std::uint64_t checkedGeneration_ = ~0ull;
-    const void* checkedScene_ = nullptr;
+    const void* checkedScene_ = nullptr;  // with its source: a new scene may reuse the address
+    std::string checkedSource_;
     glm::vec3 checkedEye_{0.0f}, checkedTarget_{0.0f};
     float checkedFov_ = 0.0f;
     double checkedAt_ = -1e9;
