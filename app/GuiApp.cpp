@@ -26,6 +26,7 @@
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
+#include "ui/AovCostGuard.h"
 #include "ui/RecordDialog.h"
 #include "renderer/inspect/ForwardPreview.h"
 #include "renderer/inspect/OutputReadback.h"
@@ -387,6 +388,7 @@ int runGui(const GuiOptions& options, Scene scene) {
         state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
 
         ui::ViewportComposer frame(session);
+        ui::AovCostGuard aovGuard;
         state.nearestSampler = &frame.nearestSampler();
         if (!options.view.empty()) {
             if (!session.pipeline().outputs().find(options.view))
@@ -492,6 +494,8 @@ int runGui(const GuiOptions& options, Scene scene) {
                 io.KeyCtrl = io.KeyCtrl || scriptCtrl;
             }
             ImGui::NewFrame();
+            // An AOV state that would take minutes a frame is refused before it renders (issue 22).
+            aovGuard.beforeFrame(state, session);
             try {
                 frame.render(state);
                 state.log.succeeded("render");
@@ -500,6 +504,7 @@ int runGui(const GuiOptions& options, Scene scene) {
             }
             state.cameraPosition = session.camera().position;
             ui.draw(state, session, dt);
+            aovGuard.draw(state, session);
 
             for (ui::ImageView* view : {static_cast<ui::ImageView*>(&state.viewport), static_cast<ui::ImageView*>(&state.side)})
                 if (!view->saveRequest.empty()) saveShownOutput(*view, state, session);

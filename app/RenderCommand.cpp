@@ -1,5 +1,6 @@
 // deferred-workbench render: one scene, one buffer, one image file.
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "app/RenderDocCapture.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/FiniteCheck.h"
 #include "renderer/scene/SceneLoader.h"
@@ -95,6 +97,18 @@ int runRenderCommand(int argc, char** argv) {
     session.setScene(std::move(loaded), run);
     for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     session.resize(run.width, run.height);
+    // AOV's cost estimated from the triangles before the first frame (issue 22).
+    const auto estimateStart = std::chrono::steady_clock::now();
+    if (const auto e = AovCostEstimate::forKnobs(session.knobs(), session.scene(), session.camera(), run.width,
+                                                 run.height)) {
+        if (verbose)
+            std::fprintf(stderr, "aov: estimated %.2f volume fragments per pixel (%zu volumes, %zu culled, %zu reaching "
+                                 "the near plane, radius %.4g; estimated in %.3f s)\n",
+                         e->meanOverdraw, e->volumes, e->culled, e->nearCamera, e->radius,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - estimateStart).count());
+        if (const std::string w = AovCostEstimate::warning(*e, session.knobs(), run.width, run.height); !w.empty())
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+    }
     FrameRequest request;
     request.outputs = {buffer};
     // Keep every counted frame's sample, however many there are.

@@ -1,10 +1,13 @@
 #include "renderer/ao/AovMethod.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "renderer/gl/Texture.h"
 #include "renderer/scene/GpuScene.h"
+#include "renderer/scene/Mesh.h"
 
 namespace dw {
 
@@ -20,6 +23,10 @@ AovMethod::AovMethod(KnobRegistry& knobs) {
                              "AOV: how far a triangle's occlusion volume reaches (delta, world units; seed 000 "
                              "table 6.5: 1); larger volumes cover more pixels (overdraw)",
                              "units", true, true);
+    radiusUnit_ = knobs.addEnum("aov.radius_unit", {"world", "scene_fraction"}, "world", "aov",
+                                "world: aov.radius in world units (seed 000 and McGuire 2010; the AOV1-3 presets); "
+                                "scene_fraction: in the scene's power-of-ten unit, as ssao.radius_unit (the same "
+                                "volumes relative to a model whatever its scale)");
     falloff_ = knobs.addFloat("aov.falloff", 1.0, 0.0, 8.0, "aov",
                               "AOV: exponent k on the distance weight w^k, w the ray-traced AO's 1 / (1 + (d/R)^2) "
                               "averaged over the triangle's part within aov.radius (seed 000 table 6.5: 1, the "
@@ -34,7 +41,14 @@ std::string AovMethod::description() const {
            "analytic form factor, with a falloff, at the G-buffer points it covers";
 }
 
-std::vector<std::string> AovMethod::knobNames() const { return {"aov.radius", "aov.falloff", "aov.resolution"}; }
+std::vector<std::string> AovMethod::knobNames() const {
+    return {"aov.radius", "aov.radius_unit", "aov.falloff", "aov.resolution"};
+}
+
+float AovMethod::worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const {
+    const float r = knobs.get(radius_);
+    return knobs.choice(radiusUnit_) == "world" ? r : r * static_cast<float>(sceneLengthUnit(bounds));
+}
 
 std::vector<OutputDecl> AovMethod::outputs() const {
     OutputDecl overdraw{"aov.overdraw", OutputKind::Count,
@@ -80,7 +94,7 @@ void AovMethod::run(FrameContext& ctx) {
     const bool countOverdraw = ctx.wants("aov.overdraw");
     gpu::AovParams p{};
     p.aoSize = {w, h};
-    p.radius = k.get(radius_);
+    p.radius = worldRadius(k, ctx.gpu.bounds());
     p.falloff = k.get(falloff_);
     p.countOverdraw = countOverdraw ? 1 : 0;
     p.insideMargin = insideMargin(ctx.camera);
@@ -151,10 +165,26 @@ void AovMethod::run(FrameContext& ctx) {
     resolve_->use();
     triangle_.draw();
 
-    char line[160];
-    std::snprintf(line, sizeof(line), "%zu volumes at %dx%d, radius %.3g, falloff %.3g%s", volumes, w, h, p.radius,
-                  p.falloff, countOverdraw ? ", overdraw counted" : "");
+    char line[200];
+    std::snprintf(line, sizeof(line), "%zu volumes at %dx%d, radius %.3g, falloff %.3g", volumes, w, h, p.radius,
+                  p.falloff);
     stats_ = line;
+    if (countOverdraw) {
+        // Read back only when counted (a stall): the mean and the most volume
+        // fragments shaded per AO pixel, for bench's stats and --timings.
+        const gl::Texture& overdraw = ctx.texture("aov.overdraw");
+        std::vector<GLuint> counts(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+        glGetTextureImage(overdraw.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                          static_cast<GLsizei>(counts.size() * sizeof(GLuint)), counts.data());
+        double sum = 0.0;
+        GLuint most = 0;
+        for (GLuint c : counts) {
+            sum += c;
+            most = std::max(most, c);
+        }
+        std::snprintf(line, sizeof(line), ", overdraw mean %.2f max %u", sum / static_cast<double>(counts.size()), most);
+        stats_ += line;
+    }
 }
 
 }  // namespace dw

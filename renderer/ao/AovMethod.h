@@ -16,7 +16,10 @@
 // the derivation). Volumes the camera is
 // inside of (within the near plane's reach) are drawn as back faces with the
 // depth test reversed, in a second draw, so the image stays right there;
-// docs/ao.md has the measured cost.
+// docs/ao.md has the measured cost. The geometry shader drops volumes
+// wholly outside the view frustum; aov.radius is in aov.radius_unit (world,
+// or the scene's power-of-ten unit). What a frame will cost is estimated on
+// the CPU by AovCostEstimate (docs/aov.md, "Cost on a large model").
 #include <string>
 #include <vector>
 
@@ -29,6 +32,8 @@
 #include "shaders/params/aov.h"
 
 namespace dw {
+
+struct Bounds;
 
 class AovMethod : public AoMethod {
 public:
@@ -49,10 +54,13 @@ public:
     // planes all lie within this of the camera may be cut by the near plane
     // and is drawn by its back faces.
     static float insideMargin(const CameraUniforms& camera);
+    // aov.radius in world units: as given (aov.radius_unit = world) or times
+    // the scene's power-of-ten length unit (scene_fraction; sceneLengthUnit).
+    float worldRadius(const KnobRegistry& knobs, const Bounds& bounds) const;
 
 private:
     FloatKnob radius_, falloff_;
-    EnumKnob resolution_;
+    EnumKnob radiusUnit_, resolution_;
     gl::ShaderLibrary::Handle volume_, depthCopy_, resolve_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::AovParams> params_;

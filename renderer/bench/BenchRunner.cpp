@@ -11,6 +11,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/scene/CameraPath.h"
 #include "renderer/scene/LightGenerator.h"
@@ -213,6 +214,14 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
         plan, [&](int i) -> RenderSession& { return apply(configs_[static_cast<size_t>(i)]); },
         [&](RenderSession& session, int, int sample) { session.camera() = path.at(sample, o_.frames); });
     for (const auto& c : configs_) apply(c);  // every size set up before the first line about frames
+    // AOV's cost estimated from the triangles before any frame (issue 22: a
+    // large model at the default radius ran for minutes with no word).
+    for (const auto& c : configs_) {
+        RenderSession& s = apply(c);
+        const std::string w = AovCostEstimate::check(s.knobs(), s.scene(), path.at(0, o_.frames), c.width, c.height);
+        if (!w.empty())
+            std::fprintf(stderr, "bench: warning: configuration %d (%s): %s\n", c.index, c.size().c_str(), w.c_str());
+    }
     if (!sessions.empty()) {
         const gl::GlInfo& gl = sessions.begin()->second.session->glInfo();
         results.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <memory>
@@ -12,6 +13,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/ImageError.h"
@@ -187,6 +189,17 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     auto pointSeed = [&](size_t p, int camera) {
         return 12345u + 1000u * static_cast<std::uint64_t>(points_[p].index) + 2u * static_cast<std::uint64_t>(camera);
     };
+    // AOV's cost estimated from the triangles before any frame (issue 22).
+    for (size_t p = 0; p < points_.size(); ++p) {
+        applyPoint(p);
+        for (int c = 0; c < cameraCount; ++c) {
+            const std::string w = AovCostEstimate::check(session.knobs(), session.scene(), cameraOf(p, c),
+                                                         o_.run.width, o_.run.height);
+            if (!w.empty())
+                std::fprintf(stderr, "tradeoff: warning: point %d%s: %s\n", points_[p].index,
+                             cameraCount > 1 ? (", camera " + std::to_string(c)).c_str() : "", w.c_str());
+        }
+    }
     RunnerPlan plan;
     plan.configurations = configs;
     plan.frames = o_.frames;

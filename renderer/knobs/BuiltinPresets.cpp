@@ -59,7 +59,7 @@ const std::vector<Preset>& builtinPresets() {
             add("AOV" + std::to_string(i + 1),
                 std::string("seed 000 table 6.5: Ambient Occlusion Volumes, radius 1, falloff 1, ") + aov[i] +
                     " resolution",
-                {{"ao.enabled", "true"}, {"ao.method", "aov"}, {"aov.radius", "1"}, {"aov.falloff", "1"},
+                {{"ao.enabled", "true"}, {"ao.method", "aov"}, {"aov.radius", "1"}, {"aov.radius_unit", "world"}, {"aov.falloff", "1"},
                  {"aov.resolution", aov[i]}},
                 {"ao", "aov"});
         // Light-volume cost against accuracy: where volumes end.

@@ -80,6 +80,25 @@ void emitVolume(vec3 a, vec3 b, vec3 c, vec3 n, bool mirrored) {
         corner[i] = v[i] + delta * (ep + en) / max(1.0 + dot(ep, en), 0.1);
         corner[i + 3] = corner[i] + delta * n;
     }
+    // Frustum culling: a volume whose six corners all lie outside one side
+    // plane of the view frustum, or all behind the camera (view z >= 0), is
+    // convex and so holds no visible G-buffer point: it would shade nothing.
+    // Dropped here it costs no clipping or rasterisation (the near and far
+    // planes do not clip with depth clamping on, so without this a volume
+    // behind the camera still went through the rasteriser's setup).
+    bvec4 allOut = bvec4(true);
+    bool allBehind = true;
+    for (int i = 0; i < 6; ++i) {
+        vec4 clip = camera.projection * vec4(corner[i], 1.0);
+        // Each test is a half-space through the eye (linear in the view-space
+        // position), so it holds for corners behind the camera too.
+        allOut.x = allOut.x && clip.x > clip.w;
+        allOut.y = allOut.y && clip.x < -clip.w;
+        allOut.z = allOut.z && clip.y > clip.w;
+        allOut.w = allOut.w && clip.y < -clip.w;
+        allBehind = allBehind && corner[i].z >= 0.0;
+    }
+    if (any(allOut) || allBehind) return;
     // Inside (with the margin): the camera (the origin) behind every face plane, or nearly.
     float margin = aov.insideMargin;
     bool inside = dot(corner[0], n) <= margin && dot(-corner[3], n) <= margin;

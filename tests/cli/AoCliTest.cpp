@@ -69,3 +69,28 @@ TEST(AoCli, AMethodsOwnBufferIsWrittenOnlyUnderItsKnobs) {
     EXPECT_EQ(noisy.width, 32);  // gtao.resolution = full
     EXPECT_GT(test::stats(noisy, 0).max, 0.0);
 }
+
+// Issue 22: render, bench and tradeoff estimate AOV's volume fragments per
+// pixel from the triangles before the first frame and warn, naming the knob,
+// above AovCostEstimate's limits. At aov.radius 20 every volume of the
+// courtyard covers most of the screen (about 34 a pixel at the default 1: no
+// warning). An 8x4 accessibility buffer keeps the frames short.
+TEST(AoCli, AovWarnsAboutAFrameThatWouldTakeMinutes) {
+    const fs::path dir = test::tempDir() / "ao-cli";
+    fs::create_directories(dir);
+    const std::string common = "--scene default --size 32x18 --set ao.method=aov --set aov.resolution=quarter ";
+    auto r = run("render " + common + "--set aov.radius=20 --out " + (dir / "aov.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: aov: about "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("lower aov.radius"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("at aov.radius 20 world units"), std::string::npos) << r.err;
+    r = run("render " + common + "--out " + (dir / "aov1.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning: aov"), std::string::npos) << r.err;
+    // bench names the configuration over the limit, not the one under it.
+    r = run("bench " + common + "--sweep aov.radius=1,20 --frames 1 --warmup 0 --no-lpp --csv " +
+            (dir / "aov.csv").string() + " --json " + (dir / "aov.json").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("bench: warning: configuration 1 (32x18): aov: about "), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("bench: warning: configuration 0"), std::string::npos) << r.err;
+}

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/ShapeBuilder.h"
 #include "tests/support/TestSupport.h"
@@ -320,4 +321,41 @@ TEST(Aov, ACameraInsideManyVolumesGivesTheSameImage) {
     // Every surface pixel of B lies inside the floor's volumes, drawn by their back faces.
     EXPECT_EQ(shadedOnce, surface);
     EXPECT_GT(overdrawB.mean, 1.0);
+}
+
+// Frustum culling (issue 22): a box wholly outside the view adds no volume
+// fragment (the geometry shader drops its volumes; clipping would too, after
+// the rasteriser's setup), and the CPU estimate counts its volumes as culled
+// and stays above the fragments counted (it counts them before the depth and
+// stencil tests).
+TEST(Aov, VolumesOutsideTheViewAddNoOverdraw) {
+    auto s = test::makeSession(kW, kH);
+    auto overdrawOf = [&](bool withBox, AovCostEstimate& estimate) {
+        Scene scene = withAmbient(test::planeScene(80.0f));
+        addBox(scene, {1.0f, 1.0f, 1.0f}, {0.0f, 0.5f, -2.0f});  // in view
+        if (withBox) addBox(scene, {2.0f, 2.0f, 2.0f}, {-30.0f, 1.0f, 0.0f});  // far left of the view
+        scene.camera.position = {0.0f, 3.0f, 8.0f};
+        scene.camera.target = {0.0f, 0.0f, 0.0f};
+        s->setScene(std::move(scene));
+        useAov(*s);
+        s->render({{"aov.overdraw"}});
+        estimate = AovCostEstimate::compute(s->scene(), s->camera().view(),
+                                            s->camera().projection(static_cast<float>(kW) / kH),
+                                            s->camera().nearPlane, 1.0f);
+        return test::stats(s->readRaw("aov.overdraw"), 0);
+    };
+    AovCostEstimate without, with;
+    const auto a = overdrawOf(false, without);
+    const auto b = overdrawOf(true, with);
+    std::printf("overdraw mean without the box %.4f, with it %.4f (max %.0f, %.0f); estimate %.4f, %.4f; "
+                "volumes %zu, %zu, culled %zu, %zu\n",
+                a.mean, b.mean, a.max, b.max, without.meanOverdraw, with.meanOverdraw, without.volumes, with.volumes,
+                without.culled, with.culled);
+    EXPECT_GT(a.mean, 1.0);
+    EXPECT_EQ(a.mean, b.mean);
+    EXPECT_EQ(a.max, b.max);
+    EXPECT_EQ(with.volumes, without.volumes + 12);
+    EXPECT_EQ(with.culled, without.culled + 12);
+    EXPECT_DOUBLE_EQ(with.meanOverdraw, without.meanOverdraw);
+    EXPECT_GE(without.meanOverdraw, a.mean);
 }

@@ -1,0 +1,56 @@
+#pragma once
+// Keeps the window from freezing on an Ambient Occlusion Volumes frame that
+// would take minutes (issue 22): before each frame, when the knobs, the scene
+// or the camera changed, it estimates AOV's volume fragments per pixel on the
+// CPU (AovCostEstimate, O(triangles)). Above AovCostEstimate::kWarnOverdraw
+// it puts the knobs back to the last state that was under the limit (or, if
+// that one is over it too with this camera, switches ao.method back to its
+// default), says so in the message log (the banner over the viewport), and
+// shows a small window with the estimate and two buttons: render the new
+// state anyway (it is then kept until the knobs change again) or keep the
+// previous one. The A/B split's preset side and the Pareto panel's sweeps
+// render knob states of their own and are not guarded.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace dw {
+class RenderSession;
+}
+
+namespace dw::ui {
+
+struct UiState;
+
+class AovCostGuard {
+public:
+    // Before the frame renders; may change the session's knobs.
+    void beforeFrame(UiState& state, RenderSession& session);
+    // The confirmation window (inside an ImGui frame), when a state was refused.
+    void draw(UiState& state, RenderSession& session);
+    bool refusing() const { return !refused_.empty(); }
+    // The window's buttons: render the refused state anyway (kept until the
+    // knobs change), or keep the previous one.
+    void confirm(UiState& state, RenderSession& session);
+    void dismiss(UiState& state);
+    const std::string& message() const { return message_; }
+
+private:
+    std::vector<double> values(const RenderSession& session) const;
+    void restore(RenderSession& session, const std::vector<double>& v) const;
+
+    std::vector<double> lastGood_;   // knob values last seen under the limit
+    std::vector<double> refused_;    // the state put back, until confirmed or dismissed
+    std::vector<double> confirmed_;  // a state the user chose to render anyway
+    std::uint64_t checkedGeneration_ = ~0ull;
+    const void* checkedScene_ = nullptr;  // with its source: a new scene may reuse the address
+    std::string checkedSource_;
+    glm::vec3 checkedEye_{0.0f}, checkedTarget_{0.0f};
+    float checkedFov_ = 0.0f;
+    double checkedAt_ = -1e9;
+    std::string message_;
+};
+
+}  // namespace dw::ui
