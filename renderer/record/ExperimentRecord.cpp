@@ -1,4 +1,5 @@
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/graph/RenamedOutputs.h"
 
 #include <sys/utsname.h>
 
@@ -86,7 +87,7 @@ RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
 std::string ExperimentRecord::hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                          int& channels) {
     const PublishedOutput* o = session.pipeline().outputs().find(buffer);
-    if (!o) throw Error("unknown buffer '" + buffer + "'");
+    if (!o) throw Error(unknownBufferMessage(buffer));
     const FloatImage image = session.readRaw(buffer);
     width = image.width;
     height = image.height;
