@@ -333,6 +333,7 @@ int runTradeoffCommand(int argc, char** argv) {
     recorded.exclude = excludes;
     recorded.aoRays = aoRays;
     recorded.runPreset = o.run.presetSpec();
+    recorded.runPresets = o.run.presetSpecs();
     recorded.runSets = o.run.sets;
     writeBenchFile(json, ExperimentRecord::forTradeoff(recorded, runner.scene(), t, machine, result.settings).json(),
                    "tradeoff record");

@@ -407,6 +407,7 @@ std::string ExperimentRecord::json() const {
                          {"block", o.block},
                          {"resamples", o.resamples},
                          {"run_preset", tradeoff->runPreset},
+                         {"run_presets", tradeoff->runPresets},
                          {"run_sets", tradeoff->runSets},
                          {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
         }
@@ -557,6 +558,9 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
                 o.block = g.value("block", 1);
                 o.resamples = g.value("resamples", 2000);
                 t.runPreset = g.value("run_preset", std::string());
+                // Records before repeated --preset hold the one preset only.
+                t.runPresets = g.value("run_presets", std::vector<std::string>{});
+                if (t.runPresets.empty() && !t.runPreset.empty()) t.runPresets = {t.runPreset};
                 t.runSets = g.value("run_sets", std::vector<std::string>{});
                 o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
             }
