@@ -71,11 +71,14 @@ bool CommandLine::flag(const std::string& flag) {
 
 RunConfig CommandLine::runConfig() {
     RunConfig run;
-    const std::optional<std::string> scene = value("--scene"), preset = value("--preset");
+    const std::optional<std::string> scene = value("--scene");
+    const std::vector<std::string> presets = values("--preset");
     if (scene && scene->empty()) throw UsageError("--scene needs a built-in scene's name or a file, got an empty one");
-    if (preset && preset->empty()) throw UsageError("--preset needs a built-in preset's name or a file, got an empty one");
+    for (const auto& p : presets)
+        if (p.empty()) throw UsageError("--preset needs a built-in preset's name or a file, got an empty one");
     run.scene = scene.value_or("");
-    run.setPreset(preset.value_or(""));
+    // Repeated --preset: each in the order given, a later one's knobs over an earlier one's.
+    for (const auto& p : presets) run.addPreset(p);
     run.sets = values("--set");
     return run;
 }
@@ -132,8 +135,8 @@ CommandLine::NamedFiles CommandLine::inputFiles(const RunConfig& run) {
     std::error_code ec;
     const std::string scene = run.sceneSpec();
     if (fs::is_regular_file(scene, ec)) files.emplace_back("the scene", scene);
-    if (!run.presetSpec().empty() && fs::is_regular_file(run.presetSpec(), ec))
-        files.emplace_back("the preset", run.presetSpec());
+    for (const auto& p : run.presetSpecs())
+        if (fs::is_regular_file(p, ec)) files.emplace_back("the preset", p);
     return files;
 }
 

@@ -34,6 +34,7 @@
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/inspect/ViewportOverlay.h"
 #include "ui/InputQueue.h"
+#include "ui/PresetsPanel.h"
 #include "ui/ViewportComposer.h"
 #include "ui/Widgets.h"
 #include "ui/WorkbenchUi.h"
@@ -377,8 +378,11 @@ int runGui(const GuiOptions& options, Scene scene) {
         // The same rules as render (RunConfig), and again for every scene opened later.
         state.run = options.run;
         session.setScene(std::move(scene), state.run);
-        if (const Preset* p = state.run.preset())
+        if (const Preset* p = state.run.preset()) {
             state.log.info("preset '" + p->name + "': " + std::to_string(p->knobs.size()) + " knobs set", 0.0);
+            // The Presets panel shows it (with --set over it, the start-up values).
+            ui::rememberPreset(state, session, p->name);
+        }
         for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, 0.0);
         state.log.info("GL: " + session.glInfo().renderer + " | " + session.glInfo().version, 0.0);
         state.log.info("shaders: " + session.shaders().root().string() +

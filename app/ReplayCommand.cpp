@@ -244,7 +244,8 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     for (const auto& a : again.options.sweep.axes) presetAxis = presetAxis || a.name == "preset";
     if (presetAxis) {
         // Every knob as --set would hide each point's preset: the run's own preset and --set.
-        again.options.run.setPreset(again.runPreset);
+        again.options.run.setPreset("");
+        for (const auto& p : again.runPresets) again.options.run.addPreset(p);
         again.options.run.sets = again.runSets;
     } else {
         again.options.run.sets = sets;

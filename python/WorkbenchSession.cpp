@@ -1,4 +1,5 @@
 #include "python/WorkbenchSession.h"
+#include "renderer/graph/RenamedOutputs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,7 +172,7 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     if (frames < 1) throw Error("frames must be at least 1");
     if (warmup < 0) throw Error("warmup must not be negative");
     if (!session_->pipeline().outputs().find(buffer))
-        throw UnknownBufferError("unknown buffer '" + buffer + "' (Session.buffers() lists them)");
+        throw UnknownBufferError(unknownBufferMessage(buffer) + " (Session.buffers() lists them)");
     processContext().context->makeCurrent();
     FrameRequest request;
     request.outputs = {buffer};
@@ -223,7 +224,7 @@ void WorkbenchSession::writeBuffer(const std::string& buffer, const std::string&
     requireOwningThread();
     if (!rendered_) throw Error("write needs a rendered frame: call render() first");
     if (!session_->pipeline().outputs().find(buffer))
-        throw UnknownBufferError("unknown buffer '" + buffer + "' (Session.buffers() lists them)");
+        throw UnknownBufferError(unknownBufferMessage(buffer) + " (Session.buffers() lists them)");
     session_->writeOutput(buffer, path);
 }
 

@@ -1,4 +1,5 @@
 #include "renderer/RenderSession.h"
+#include "renderer/graph/RenamedOutputs.h"
 
 #include <fstream>
 
@@ -36,13 +37,13 @@ FrameReport RenderSession::render(const FrameRequest& request) {
 
 FloatImage RenderSession::readRaw(const std::string& output, ViewSelection selection) const {
     const PublishedOutput* o = pipeline_.outputs().find(output);
-    if (!o) throw Error("unknown buffer '" + output + "'");
+    if (!o) throw Error(unknownBufferMessage(output));
     return readOutputRaw(*o, selection);
 }
 
 FloatImage RenderSession::readDisplay(const std::string& output, BufferViewSettings settings) {
     const PublishedOutput* o = pipeline_.outputs().find(output);
-    if (!o) throw Error("unknown buffer '" + output + "'");
+    if (!o) throw Error(unknownBufferMessage(output));
     if (isDisplayReady(*o)) return readOutputRaw(*o);
     settings.nearPlane = camera_.nearPlane;
     settings.farPlane = camera_.farPlane;
@@ -61,7 +62,7 @@ void RenderSession::writeKnobValues(const std::string& path) const {
 
 void RenderSession::writeOutput(const std::string& output, const std::string& path, const BufferViewSettings& settings) {
     const PublishedOutput* o = pipeline_.outputs().find(output);
-    if (!o) throw Error("unknown buffer '" + output + "'");
+    if (!o) throw Error(unknownBufferMessage(output));
     if (isFloatFormat(path)) writeImage(path, readRaw(output, settings.selection()), rawChannelNames(*o));
     else writeImage(path, readDisplay(output, settings));
 }

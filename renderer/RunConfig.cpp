@@ -1,5 +1,6 @@
 #include "renderer/RunConfig.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "renderer/Error.h"
@@ -10,31 +11,66 @@ namespace dw {
 namespace fs = std::filesystem;
 
 void RunConfig::setPreset(const std::string& spec) {
-    if (spec.empty()) {
-        presetSpec_.clear();
-        preset_.reset();
-        return;
-    }
+    presetSpecs_.clear();
+    presets_.clear();
+    combined_.reset();
+    if (!spec.empty()) addPreset(spec);
+}
+
+void RunConfig::addPreset(const std::string& spec) {
     if (const Preset* builtin = findBuiltinPreset(spec)) {
-        preset_ = *builtin;
+        presets_.push_back(*builtin);
     } else if (!fs::exists(spec)) {
         std::string names;
         for (const auto& b : builtinPresets()) names += (names.empty() ? "" : ", ") + b.name;
         throw Error("--preset '" + spec + "' is neither a built-in preset (" + names + ") nor an existing file");
     } else {
-        preset_ = Preset::load(spec);
+        presets_.push_back(Preset::load(spec));
     }
-    presetSpec_ = spec;
+    presetSpecs_.push_back(spec);
+    combine();
 }
 
 void RunConfig::setPreset(Preset preset) {
-    presetSpec_ = preset.name;
-    preset_ = std::move(preset);
+    presetSpecs_ = {preset.name};
+    presets_ = {std::move(preset)};
+    combine();
+}
+
+std::string RunConfig::presetSpec() const {
+    std::string all;
+    for (const auto& s : presetSpecs_) all += (all.empty() ? "" : " + ") + s;
+    return all;
+}
+
+void RunConfig::combine() {
+    if (presets_.empty()) {
+        combined_.reset();
+        return;
+    }
+    if (presets_.size() == 1) {
+        combined_ = presets_.front();
+        return;
+    }
+    Preset c;
+    bool everyGroup = false;
+    for (const Preset& p : presets_) {
+        c.name += (c.name.empty() ? "" : " + ") + p.name;
+        if (!p.description.empty()) c.description += (c.description.empty() ? "" : "\n") + p.name + ": " + p.description;
+        if (!p.scene.empty()) c.scene = p.scene;
+        if (p.camera) c.camera = p.camera;
+        c.knobs.insert(c.knobs.end(), p.knobs.begin(), p.knobs.end());
+        if (p.groups.empty()) everyGroup = true;
+        for (const auto& g : p.groups)
+            if (std::find(c.groups.begin(), c.groups.end(), g) == c.groups.end()) c.groups.push_back(g);
+    }
+    if (everyGroup) c.groups.clear();
+    combined_ = std::move(c);
 }
 
 std::string RunConfig::sceneSpec() const {
     if (!scene.empty()) return scene;
-    if (preset_ && !preset_->scene.empty()) return preset_->scene;
+    if (combined_ && !combined_->scene.empty()) return combined_->scene;
     return "default";
 }
 
@@ -42,13 +78,13 @@ void RunConfig::validate() const { validate(declaredKnobs()); }
 
 void RunConfig::validate(const KnobRegistry& declared) const {
     KnobRegistry knobs = declared;
-    if (preset_) {
+    for (std::size_t p = 0; p < presets_.size(); ++p) {
         // Every key must be valid: a script should not silently run something else.
-        const Preset::ApplyReport r = preset_->applyKnobs(knobs);
+        const Preset::ApplyReport r = presets_[p].applyKnobs(knobs);
         if (!r.ignored.empty()) {
             std::string all;
             for (const auto& i : r.ignored) all += (all.empty() ? "" : " | ") + i;
-            throw FileError(presetSpec_, all);
+            throw FileError(presetSpecs_[p], all);
         }
     }
     for (const auto& s : sets) knobs.applyAssignment(s);
@@ -63,17 +99,17 @@ void RunConfig::applyKnobs(KnobRegistry& knobs, const Scene& loaded) const {
             throw FileError(loaded.source, std::string("settings: ") + e.what());
         }
     }
-    if (preset_) {
-        const Preset::ApplyReport r = preset_->applyKnobs(knobs);
-        if (!r.ignored.empty()) throw FileError(presetSpec_, r.ignored.front());
+    for (std::size_t p = 0; p < presets_.size(); ++p) {
+        const Preset::ApplyReport r = presets_[p].applyKnobs(knobs);
+        if (!r.ignored.empty()) throw FileError(presetSpecs_[p], r.ignored.front());
     }
     for (const auto& s : sets) knobs.applyAssignment(s);
 }
 
 Camera RunConfig::camera(const Scene& loaded) const {
-    // The preset's camera was saved looking at its own scene.
-    if (preset_ && preset_->camera && (preset_->scene.empty() || namesScene(preset_->scene, loaded)))
-        return *preset_->camera;
+    // A preset's camera was saved looking at its own scene; the last one that fits.
+    for (auto p = presets_.rbegin(); p != presets_.rend(); ++p)
+        if (p->camera && (p->scene.empty() || namesScene(p->scene, loaded))) return *p->camera;
     return loaded.camera;
 }
 

@@ -4,11 +4,14 @@
 // alike"): the scene, the preset, the --set overrides, the size and the frame
 // counts, and one rule for how they combine, so a scene never keeps the knobs
 // of the one before it and a command line means the same everywhere:
-//   scene   --scene, else the preset's scene, else "default";
+//   presets --preset may be given several times (a GTAO or AOV preset with
+//           Low, Medium or High): they apply in the order given, a later
+//           one's knob over an earlier one's, knob by knob;
+//   scene   --scene, else the last preset's scene that names one, else "default";
 //   knobs   at every scene load: defaults, then the scene's own settings,
-//           then the preset's knobs, then --set, each over the one before;
-//   camera  the preset's when it has one and names the loaded scene (or no
-//           scene at all), else the scene's.
+//           then each preset's knobs in order, then --set, each over the one before;
+//   camera  the last preset's that has one and names the loaded scene (or
+//           no scene at all), else the scene's.
 // Needs no GL. validate() checks the preset and --set up front, so a typo in
 // a script fails before anything renders.
 #include <optional>
@@ -31,14 +34,22 @@ public:
     int warmup = 0;   // frames rendered before counting starts, left out of timings
 
     // --preset: a built-in preset's name, else a preset file. Throws Error when
-    // it is neither, FileError when the file is not a preset. "" clears it.
+    // it is neither, FileError when the file is not a preset. setPreset
+    // replaces the presets with this one ("" clears them); addPreset puts
+    // one more after them (a repeated --preset).
     void setPreset(const std::string& spec);
+    void addPreset(const std::string& spec);
     // A preset made in code (tests; the window's start-up preset re-applied).
     void setPreset(Preset preset);
-    const Preset* preset() const { return preset_ ? &*preset_ : nullptr; }
-    const std::string& presetSpec() const { return presetSpec_; }
+    // The presets as one (null when there are none): name "A + B", the knobs
+    // of each in order (applied in order, the later wins), the last scene
+    // and camera given, the groups of all.
+    const Preset* preset() const { return combined_ ? &*combined_ : nullptr; }
+    // Each --preset as given, in order; presetSpec() joins them with " + ".
+    const std::vector<std::string>& presetSpecs() const { return presetSpecs_; }
+    std::string presetSpec() const;
 
-    // The scene to open: --scene beats the preset's scene; "default" if neither names one.
+    // The scene to open: --scene beats the presets' scene; "default" if neither names one.
     std::string sceneSpec() const;
 
     // Every preset key and every --set against the knob declarations: throws
@@ -63,8 +74,10 @@ public:
     static KnobRegistry declaredKnobs();
 
 private:
-    std::string presetSpec_;
-    std::optional<Preset> preset_;
+    void combine();
+    std::vector<std::string> presetSpecs_;
+    std::vector<Preset> presets_;
+    std::optional<Preset> combined_;
 };
 
 }  // namespace dw

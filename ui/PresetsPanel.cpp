@@ -12,15 +12,11 @@ namespace dw::ui {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 void rememberPreset(UiState& state, const RenderSession& session, const std::string& name) {
     state.activePreset = name;
     state.activePresetKnobs.clear();
     for (size_t i = 0; i < session.knobs().size(); ++i) state.activePresetKnobs.push_back(session.knobs().value(static_cast<int>(i)));
 }
-
-}  // namespace
 
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset) {
     // Another scene opens as any scene does (start-up knobs first); this

@@ -26,6 +26,10 @@ bool presetModified(const UiState& state, const RenderSession& session);
 // so the result does not depend on what was loaded before.
 // Returns false (and changes nothing) when the preset's scene cannot be opened.
 bool applyPreset(UiState& state, RenderSession& session, const Preset& preset);
+// Names `name` the active preset, with the session's knob values now as the
+// ones "(modified since)" compares with: after a load or save, and at start-up
+// for the --preset ones ("AOV1 + Low" when several).
+void rememberPreset(UiState& state, const RenderSession& session, const std::string& name);
 bool loadPresetFile(UiState& state, RenderSession& session, const std::string& path);
 
 }  // namespace dw::ui

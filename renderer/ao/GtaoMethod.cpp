@@ -34,6 +34,15 @@ GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
                              "ssao_blur.*), edge_aware (GTAO's own 5x5 filter weighted by the distance from the "
                              "pixel's tangent plane and the normals, as XeGTAO's denoiser; gtao.noisy before it) "
                              "or off (ao.raw only upsampled)");
+    multibounce_ = knobs.addBool("gtao.multibounce", false, "gtao",
+                                 "the lighting pass lifts the ambient term's accessibility x per colour channel by "
+                                 "Jimenez et al. 2016's fit of interreflections, max(x, ((a x + b) x + c) x) with "
+                                 "a, b, c linear in the G-buffer albedo; off, the default: single bounce, as the "
+                                 "ray-traced reference has (docs/ao.md)");
+    bentNormals_ = knobs.addBool("gtao.bent_normals", false, "gtao",
+                                 "also write gtao.bent_normal, the cosine-weighted mean unoccluded direction from "
+                                 "the horizon search (view space); the ambient term here has no normal to replace, "
+                                 "so the image does not change (docs/ao.md)");
     shared_ = knobs.choiceIndex(denoise_, "shared");
     edgeAware_ = knobs.choiceIndex(denoise_, "edge_aware");
 }
@@ -45,13 +54,22 @@ std::string GtaoMethod::description() const {
 
 std::vector<std::string> GtaoMethod::knobNames() const {
     return {"gtao.slices", "gtao.steps", "gtao.radius", "gtao.radius_unit", "gtao.falloff", "gtao.thickness",
-            "gtao.resolution", "gtao.denoise"};
+            "gtao.resolution", "gtao.denoise", "gtao.multibounce", "gtao.bent_normals"};
 }
 
 std::vector<OutputDecl> GtaoMethod::outputs() const {
     return {{"gtao.noisy", OutputKind::Scalar,
              "GTAO's visibility before its edge-aware denoise (gtao.denoise = edge_aware; R16F, at gtao.resolution)",
-             texture2D(GL_R16F), 1}};
+             texture2D(GL_R16F), 1},
+            {"gtao.bent_normal", OutputKind::Vector,
+             "GTAO's bent normal (gtao.bent_normals on): the cosine-weighted mean unoccluded direction, a unit "
+             "view-space vector in xyz, 0 on the sky (RGBA16F, at gtao.resolution, not denoised)",
+             texture2D(GL_RGBA16F), 3}};
+}
+
+bool GtaoMethod::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
+    if (output.name == "gtao.bent_normal") return knobs.get(bentNormals_);
+    return knobs.get(denoise_) == edgeAware_;
 }
 
 ResourceDesc GtaoMethod::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
@@ -89,13 +107,21 @@ void GtaoMethod::run(FrameContext& ctx) {
     p.minPixels = 1.3f;  // XeGTAO's "pixel too close" threshold: never the pixel itself
     // Edge-aware denoise: a neighbour 2% of the depth off the tangent plane weighs 1/e.
     p.denoisePlane = 0.02f;
+    const bool bent = k.get(bentNormals_);
+    p.bentNormals = bent ? 1 : 0;
     params_.upload(p, binding::kPassUbo);
     ctx.texture("gbuffer.depth").bind(0);
     linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
     ctx.texture("gbuffer.normal").bind(1);
     glViewport(0, 0, p.aoSize.x, p.aoSize.y);
     const bool edgeAware = k.get(denoise_) == edgeAware_;
-    (edgeAware ? noisyTarget_.get(ctx, {"gtao.noisy"}, {}, "GTAO noisy") : target_.get(ctx, {"ao.raw"}, {}, "GTAO")).bind();
+    // The bent normal, when asked for, is the first draw's second attachment.
+    if (bent)
+        (edgeAware ? bentNoisyTarget_.get(ctx, {"gtao.noisy", "gtao.bent_normal"}, {}, "GTAO noisy, bent normal")
+                   : bentTarget_.get(ctx, {"ao.raw", "gtao.bent_normal"}, {}, "GTAO, bent normal"))
+            .bind();
+    else
+        (edgeAware ? noisyTarget_.get(ctx, {"gtao.noisy"}, {}, "GTAO noisy") : target_.get(ctx, {"ao.raw"}, {}, "GTAO")).bind();
     program_->use();
     triangle_.draw();
     if (edgeAware) {
@@ -106,8 +132,9 @@ void GtaoMethod::run(FrameContext& ctx) {
         triangle_.draw();
     }
     char line[160];
-    std::snprintf(line, sizeof line, "%d slices x %d steps per side at %dx%d, radius %.4g world units, %s denoise",
-                  p.slices, p.steps, p.aoSize.x, p.aoSize.y, p.radius, k.choice(denoise_).c_str());
+    std::snprintf(line, sizeof line, "%d slices x %d steps per side at %dx%d, radius %.4g world units, %s denoise%s%s",
+                  p.slices, p.steps, p.aoSize.x, p.aoSize.y, p.radius, k.choice(denoise_).c_str(),
+                  bent ? ", bent normals" : "", k.get(multibounce_) ? ", multi-bounce in the lighting" : "");
     stats_ = line;
 }
 

@@ -8,6 +8,10 @@
 // (full or half). Denoised (gtao.denoise) by the shared cross-bilateral
 // filter (ssao_blur.*), by its own edge-aware 5x5 filter
 // (shaders/ao/gtao_denoise.frag, from gtao.noisy into ao.raw), or not at all.
+// gtao.bent_normals: also writes gtao.bent_normal, the cosine-weighted mean
+// unoccluded direction (view space, unit length; the paper's bent normal,
+// derived in docs/ao.md). gtao.multibounce is read by the lighting pass,
+// which applies the paper's multi-bounce fit with the G-buffer albedo.
 #include <glm/glm.hpp>
 
 #include "renderer/ao/AoMethod.h"
@@ -32,9 +36,7 @@ public:
     bool sharedBlur(const KnobRegistry& knobs) const override { return knobs.get(denoise_) == shared_; }
     std::vector<OutputDecl> outputs() const override;
     ResourceDesc resource(const OutputDecl& output, const KnobRegistry& knobs) const override;
-    bool allocates(const OutputDecl&, const KnobRegistry& knobs) const override {
-        return knobs.get(denoise_) == edgeAware_;
-    }
+    bool allocates(const OutputDecl& output, const KnobRegistry& knobs) const override;
     void setup(gl::ShaderLibrary& shaders) override;
     void run(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
@@ -47,12 +49,13 @@ private:
     IntKnob slices_, steps_;
     FloatKnob radius_, falloff_, thickness_;
     EnumKnob radiusUnit_, resolution_, denoise_;
+    BoolKnob multibounce_, bentNormals_;
     int shared_ = 0, edgeAware_ = 0;
     gl::ShaderLibrary::Handle program_, denoiseProgram_;
     gl::FullscreenTriangle triangle_;
     gl::ParamBuffer<gpu::GtaoParams> params_;
     gl::Sampler linearDepth_;
-    TargetFramebuffer target_, noisyTarget_;
+    TargetFramebuffer target_, noisyTarget_, bentTarget_, bentNoisyTarget_;
     std::string stats_;
 };
 

@@ -139,11 +139,12 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     } else {
         cameras_.push_back(base);
     }
-    // Each point's run: the run's own, or with the point's preset (its knobs under --set).
+    // Each point's run: the run's own, with the point's preset after the
+    // run's --preset ones (its knobs over theirs, under --set).
     for (const auto& p : points_) {
         RunConfig run = o_.run;
         for (size_t a = 0; a < o_.sweep.axes.size(); ++a)
-            if (o_.sweep.axes[a].name == "preset") run.setPreset(p.values[a]);
+            if (o_.sweep.axes[a].name == "preset") run.addPreset(p.values[a]);
         // The clip planes must keep near < far.
         Camera c = base;
         for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {

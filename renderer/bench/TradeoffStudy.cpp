@@ -170,6 +170,7 @@ ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, cons
     recorded.exclude = options.exclude;
     recorded.aoRays = options.aoRays;
     recorded.runPreset = options.run.presetSpec();
+    recorded.runPresets = options.run.presetSpecs();
     recorded.runSets = options.run.sets;
     return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result.table, measured.machine,
                                          measured.result.settings);

@@ -1,4 +1,5 @@
 #include "renderer/graph/Pipeline.h"
+#include "renderer/graph/RenamedOutputs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -222,7 +223,7 @@ std::vector<size_t> Pipeline::orderPasses(const std::vector<PassIO>& io) const {
 Pipeline::Plan Pipeline::makePlan(const FrameRequest& request) const {
     for (const auto& name : request.outputs)
         if (!outputs_.find(name))
-            throw Error("unknown buffer '" + name + "'; 'deferred-workbench list buffers' lists them");
+            throw Error(unknownBufferMessage(name) + "; 'deferred-workbench list buffers' lists them");
     const size_t n = passes_.size();
     Plan plan;
     plan.records.resize(n);

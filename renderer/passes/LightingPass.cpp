@@ -96,6 +96,9 @@ std::vector<OutputDecl> LightingPass::outputs() const {
 void LightingPass::connect(const KnobRegistry& knobs) {
     directionalInGBuffer_ = knobs.requireBool("lighting.directional_in_gbuffer");
     depthFormat_ = knobs.requireEnum("gbuffer.depth_format");
+    aoMethod_ = knobs.requireEnum("ao.method");
+    aoGtao_ = knobs.choiceIndex(aoMethod_, "gtao");
+    gtaoMultibounce_ = knobs.requireBool("gtao.multibounce");
 }
 
 ResourceDesc LightingPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
@@ -192,6 +195,8 @@ void LightingPass::execute(FrameContext& ctx) {
     const int aoMode = k.get(ambientOcclusion_);
     params.occlusion = occlusion && aoMode != aoBaked_ ? 1 : 0;
     params.bakedOcclusion = aoMode != aoScreen_ ? 1 : 0;
+    // GTAO's multi-bounce fit, on whatever accessibility the ambient term uses.
+    params.multiBounce = params.occlusion && k.get(aoMethod_) == aoGtao_ && k.get(gtaoMultibounce_) ? 1 : 0;
     params.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     params.sky = sky ? 1 : 0;
     params.windowExponent = k.get(windowExponent_);

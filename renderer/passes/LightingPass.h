@@ -84,6 +84,9 @@ private:
     IntKnob volumeSubdivisions_;
     EnumKnob ambientOcclusion_;  // both, baked, screen
     int aoBaked_ = 0, aoScreen_ = 0;
+    EnumKnob aoMethod_;         // ao.method (AoPass's)
+    int aoGtao_ = 0;            // its choice gtao
+    BoolKnob gtaoMultibounce_;  // gtao.multibounce (GtaoMethod's): applied here, where the albedo is
 
     gl::ShaderLibrary::Handle ambientProgram_;
     LightShading shading_;

@@ -1,4 +1,5 @@
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/graph/RenamedOutputs.h"
 
 #include <sys/utsname.h>
 
@@ -86,7 +87,7 @@ RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
 std::string ExperimentRecord::hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                          int& channels) {
     const PublishedOutput* o = session.pipeline().outputs().find(buffer);
-    if (!o) throw Error("unknown buffer '" + buffer + "'");
+    if (!o) throw Error(unknownBufferMessage(buffer));
     const FloatImage image = session.readRaw(buffer);
     width = image.width;
     height = image.height;
@@ -406,6 +407,7 @@ std::string ExperimentRecord::json() const {
                          {"block", o.block},
                          {"resamples", o.resamples},
                          {"run_preset", tradeoff->runPreset},
+                         {"run_presets", tradeoff->runPresets},
                          {"run_sets", tradeoff->runSets},
                          {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
         }
@@ -556,6 +558,9 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
                 o.block = g.value("block", 1);
                 o.resamples = g.value("resamples", 2000);
                 t.runPreset = g.value("run_preset", std::string());
+                // Records before repeated --preset hold the one preset only.
+                t.runPresets = g.value("run_presets", std::vector<std::string>{});
+                if (t.runPresets.empty() && !t.runPreset.empty()) t.runPresets = {t.runPreset};
                 t.runSets = g.value("run_sets", std::vector<std::string>{});
                 o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
             }

@@ -72,7 +72,8 @@ struct RecordedTradeoff {
     int aoRays = 64;
     // The run's own preset and --set: with a preset axis, replay starts from
     // these (every knob as --set would hide each point's preset).
-    std::string runPreset;
+    std::string runPreset;                // the --preset specs joined by " + " (as shown)
+    std::vector<std::string> runPresets;  // each --preset, in order
     std::vector<std::string> runSets;
     bool merged = false;  // written by tradeoff merge: no sweep to run again
 };

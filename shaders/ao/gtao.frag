@@ -17,6 +17,17 @@
 // horizon sink back towards a lower sample, so thin occluders do not shadow
 // everything behind them. Runs at the AO resolution; reads the
 // full-resolution G-buffer.
+//
+// Bent normal (gtao.bent_normals; docs/ao.md derives it): the
+// cosine-weighted mean unoccluded direction B = Int V(w) w (N.w) dw. In a
+// slice a direction is d(t) = sin t T + cos t V (t from V, towards T), its
+// cosine to N is |Np| cos(t - n) and the measure |sin t| dt, so the slice
+// adds |Np| (bT T + bV V) with, per side of horizon h (the same expression
+// for both sides, h < 0 on the T- side):
+//     bT(h) = cos n sin^3 h / 3 + sin n (2/3 - cos h + cos^3 h / 3)
+//     bV(h) = cos n (1 - cos^3 h) / 3 + sin n sin^3 h / 3
+// normalised at the end. On an open plane this is N exactly for any set of
+// slices (the test checks it).
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 #include "../params/gtao.h"
@@ -24,7 +35,8 @@
 layout(binding = 0) uniform sampler2D uDepth;
 layout(binding = 1) uniform sampler2D uNormal;
 
-out float outVisibility;
+layout(location = 0) out float outVisibility;
+layout(location = 1) out vec4 outBentNormal;  // only attached with gtao.bent_normals
 
 const float PI = 3.14159265358979;
 const float HALF_PI = 1.57079632679490;
@@ -44,6 +56,13 @@ bool sampleAt(vec2 fullPx, out vec3 S) {
     float d = textureLod(uDepth, uv, 0.0).r;
     S = viewPositionFromDepth(uv, d);
     return true;
+}
+
+// One side's share of a slice's bent normal, in the slice's (T, V) basis.
+vec2 bentSide(float h, float cosN, float sinN) {
+    float c = cos(h), s = sin(h);
+    float s3 = s * s * s, c3 = c * c * c;
+    return vec2(cosN * s3 / 3.0 + sinN * (2.0 / 3.0 - c + c3 / 3.0), cosN * (1.0 - c3) / 3.0 + sinN * s3 / 3.0);
 }
 
 // One side's horizon update: the sample's cosine to V, faded towards the
@@ -68,6 +87,7 @@ void main() {
     float depth = texelFetch(uDepth, px, 0).r;
     if (isFarDepth(depth)) {
         outVisibility = 1.0;
+        outBentNormal = vec4(0.0);
         return;
     }
     // Moved a little towards the eye (as XeGTAO does): depth quantisation
@@ -89,6 +109,7 @@ void main() {
     vec2 centre = vec2(px) + 0.5;
 
     float visibility = 0.0;
+    vec3 bent = vec3(0.0);
     int slices = clamp(gtao.slices, 1, GTAO_MAX_SLICES);
     int steps = clamp(gtao.steps, 1, GTAO_MAX_STEPS);
     // The slices' directions are uniform about V (the integral's measure),
@@ -124,7 +145,13 @@ void main() {
         float sinN = sin(n);
         visibility += len * 0.25 * ((cosN + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) +
                                     (cosN + 2.0 * h1 * sinN - cos(2.0 * h1 - n)));
+        if (gtao.bentNormals != 0) {
+            vec2 b = bentSide(h0, cosN, sinN) + bentSide(h1, cosN, sinN);
+            bent += len * (b.x * T + b.y * V);
+        }
     }
+    // Fully occluded (no open direction): the surface normal.
+    outBentNormal = vec4(dot(bent, bent) > 1e-12 ? normalize(bent) : N, 0.0);
     // Not clamped to 1: a slice's share |Np| a(phi) of an open hemisphere is
     // cos n + n sin n times |Np|, above 1 for some directions and below for
     // others, 1 only on average over phi; the shared filter averages the 4x4

@@ -20,7 +20,7 @@ DW_PARAM_CONST(int, GTAO_MAX_STEPS, 32)
     FIELD(float, pixelScale)   /* view-space length 1 at depth 1 in full-resolution pixels */ \
     FIELD(float, minPixels)    /* the first step's least distance, in full-resolution pixels */ \
     FIELD(float, denoisePlane) /* edge-aware denoise: plane distance (x depth) of weight 1/e */ \
-    FIELD(float, pad1)
+    FIELD(int, bentNormals)    /* gtao.bent_normals: write gtao.bent_normal (colour attachment 1) */
 DW_PARAM_BLOCK(GtaoParams, gtao, DW_GTAO_PARAMS)
 DW_PARAM_SIZE(GtaoParams, 48)
 

@@ -17,7 +17,7 @@
     FIELD(float, windowExponent) /* k in the windowed attenuation 1 - (d/r)^k */          \
     FIELD(int, bakedOcclusion)   /* lighting.ambient_occlusion uses gbuffer.occlusion */  \
     FIELD(int, gbufferDirectional) /* add gbuffer.directional (lighting.directional_in_gbuffer) */ \
-    FIELD(float, pad1)                                                                    \
+    FIELD(int, multiBounce)      /* gtao.multibounce with ao.method = gtao: Jimenez et al.'s fit */ \
     FIELD(vec4, ambient)         /* rgb: the scene's ambient intensity i_a */             \
     FIELD(vec4, background)      /* rgb: where no geometry is and the sky did not run */
 DW_PARAM_BLOCK(LightingParams, lightingParams, DW_LIGHTING_PARAMS)

@@ -94,3 +94,20 @@ TEST(AoCli, AovWarnsAboutAFrameThatWouldTakeMinutes) {
     EXPECT_NE(r.err.find("bench: warning: configuration 1 (32x18): aov: about "), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("bench: warning: configuration 0"), std::string::npos) << r.err;
 }
+
+TEST(AoCli, TheOldBufferNamesSayWhatTheyAreCalledNow) {
+    const fs::path dir = test::tempDir() / "ao-cli";
+    fs::create_directories(dir);
+    for (const auto& [was, is] : {std::pair{"ssao.raw", "ao.raw"}, std::pair{"ssao.blurred", "ao.filtered"}}) {
+        const auto r = run(std::string("render --scene spheres --size 32x18 --buffer ") + was + " --out " +
+                           (dir / "old.exr").string());
+        EXPECT_NE(r.code, 0) << was;
+        EXPECT_NE(r.err.find(std::string("unknown buffer '") + was + "': renamed to '" + is + "'"), std::string::npos)
+            << r.err;
+    }
+    // Any other unknown name is only unknown.
+    const auto r = run("render --scene spheres --size 32x18 --buffer ssao.nothing --out " + (dir / "old.exr").string());
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("unknown buffer 'ssao.nothing'"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("renamed"), std::string::npos) << r.err;
+}

@@ -283,3 +283,17 @@ TEST(GuiInput, TheProbesCopyHoldsEveryValueItShowsAsLabelTabValueLines) {
     EXPECT_NE(t.find("\ngbuffer.normal\t"), std::string::npos) << t;
     EXPECT_NE(t.find("\nlbuffer\t"), std::string::npos) << t;
 }
+
+TEST(GuiInput, ThePresetsGivenAtStartUpAreTheActiveOnes) {
+    // gui --preset: the Presets panel names it (it said "no preset loaded").
+    const nlohmann::json one = runEvents("startup-preset", 2, "", "--preset AOV1");
+    ASSERT_FALSE(one.is_null());
+    EXPECT_EQ(one["active_preset"].get<std::string>(), "AOV1");
+    // Several, in the order given.
+    const nlohmann::json two = runEvents("startup-presets", 2, "", "--preset AOV1 --preset Low");
+    ASSERT_FALSE(two.is_null());
+    EXPECT_EQ(two["active_preset"].get<std::string>(), "AOV1 + Low");
+    const nlohmann::json none = runEvents("startup-no-preset", 2, "");
+    ASSERT_FALSE(none.is_null());
+    EXPECT_EQ(none["active_preset"].get<std::string>(), "");
+}

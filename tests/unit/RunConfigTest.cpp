@@ -163,3 +163,45 @@ TEST(RunConfig, PresetsByBuiltinNameOrFile) {
     EXPECT_EQ(run.preset(), nullptr);
     EXPECT_EQ(run.sceneSpec(), "default");
 }
+
+TEST(RunConfig, RepeatedPresetsApplyInOrderKnobByKnob) {
+    const fs::path dir = test::tempDir() / "run-config-presets";
+    fs::create_directories(dir);
+    Preset first = presetWith("street", {{"a.preset", "3"}, {"a.set", "y"}});
+    first.name = "first";
+    first.groups = {"a"};
+    Preset second = presetWith("", {{"a.preset", "4"}});
+    second.name = "second";
+    second.camera.reset();
+    second.groups = {"b"};
+    first.save((dir / "first.json").string());
+    second.save((dir / "second.json").string());
+    RunConfig run;
+    run.addPreset((dir / "first.json").string());
+    run.addPreset((dir / "second.json").string());
+    ASSERT_NE(run.preset(), nullptr);
+    EXPECT_EQ(run.preset()->name, "first + second");
+    EXPECT_EQ(run.presetSpecs().size(), 2u);
+    EXPECT_EQ(run.presetSpec(), (dir / "first.json").string() + " + " + (dir / "second.json").string());
+    EXPECT_EQ(run.preset()->groups, (std::vector<std::string>{"a", "b"}));
+    // The scene and camera: the last preset that has one.
+    EXPECT_EQ(run.sceneSpec(), "street");
+    KnobRegistry knobs = fourKnobs();
+    run.applyKnobs(knobs, sceneWith("builtin:street", {}));
+    EXPECT_EQ(value(knobs, "a.preset"), 4.0);  // the later preset's
+    EXPECT_EQ(value(knobs, "a.set"), 1.0);     // y, only the first sets it
+    EXPECT_EQ(run.camera(sceneWith("builtin:street", {})).position, glm::vec3(7.0f, 8.0f, 9.0f));
+    // The other way round the first one's a.preset wins.
+    RunConfig reversed;
+    reversed.addPreset((dir / "second.json").string());
+    reversed.addPreset((dir / "first.json").string());
+    KnobRegistry again = fourKnobs();
+    reversed.applyKnobs(again, sceneWith("builtin:street", {}));
+    EXPECT_EQ(value(again, "a.preset"), 3.0);
+    // setPreset replaces them all; "" clears.
+    run.setPreset((dir / "second.json").string());
+    EXPECT_EQ(run.preset()->name, "second");
+    run.setPreset("");
+    EXPECT_EQ(run.preset(), nullptr);
+    EXPECT_TRUE(run.presetSpecs().empty());
+}
