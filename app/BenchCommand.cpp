@@ -218,7 +218,7 @@ int runMerge(int argc, char** argv) {
         std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
     const std::optional<std::string> baselineGiven = cl.value("--baseline");
     const std::optional<std::string> ratioOfGiven = cl.value("--ratio-of");
-    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), limits::kResamples.min, limits::kResamples.max);
     cl.finish("bench merge");
     const std::vector<std::string> inputs = cl.positional();
     if (inputs.empty()) throw UsageError("bench merge needs the shards' CSV files");
@@ -294,7 +294,7 @@ int runBenchCommand(int argc, char** argv) {
             throw UsageError("--size: '" + s + "' is given twice");
         o.grid.sizes.push_back(size);
     }
-    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, 0, 1000000);
+    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, limits::kBenchLights.min, limits::kBenchLights.max);
     for (const auto& s : cl.values("--sweep")) {
         BenchKnobAxis axis;
         try {
@@ -313,9 +313,9 @@ int runBenchCommand(int argc, char** argv) {
             throw UsageError(err.what());
         }
     }
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("10"), limits::kFrames.min, limits::kFrames.max);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), limits::kWarmup.min, limits::kWarmup.max);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), limits::kBlock.min, limits::kBlock.max);
     o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647));
     if (const auto r = cl.value("--light-radius")) {
         char* end = nullptr;
@@ -333,9 +333,9 @@ int runBenchCommand(int argc, char** argv) {
                              "own lights are used and it changes nothing\n");
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, limits::kBenchOrbit.min, limits::kBenchOrbit.max);
     o.walkthrough = cl.flag("--walkthrough");
-    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), 1, 1000);
+    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), limits::kLppPoses.min, limits::kLppPoses.max);
     o.lpp = !cl.flag("--no-lpp");
     if (const auto shard = cl.value("--shard")) {
         try {
@@ -355,7 +355,7 @@ int runBenchCommand(int argc, char** argv) {
         std::fprintf(stderr, "bench: note: --plot-size sizes the plot; without --plot none is drawn\n");
     const std::string baselineSpec = cl.value("--baseline").value_or("");
     const std::string ratioOf = cl.value("--ratio-of").value_or(PassTimer::kFrameSeries);
-    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    const int resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), limits::kResamples.min, limits::kResamples.max);
     const bool quiet = cl.flag("--quiet");
     const auto resumeFrom = cl.value("--resume");
     cl.finish("bench");
@@ -441,7 +441,7 @@ int runBenchCommand(int argc, char** argv) {
                 resamples);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] {
-                  writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(),
+                  writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(json),
                                  "bench JSON");
               }});
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());

@@ -268,13 +268,13 @@ int runTradeoffCommand(int argc, char** argv) {
     o.buffer = cl.value("--buffer").value_or("final");
     o.mask = cl.value("--mask").value_or("");
     o.time = cl.value("--time").value_or("frame");
-    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 10000);
+    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), limits::kAoRays.min, limits::kAoRays.max);
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, limits::kTradeoffOrbit.min, limits::kTradeoffOrbit.max);
     o.walkthrough = cl.flag("--walkthrough");
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("5"), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
-    o.resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("5"), limits::kFrames.min, limits::kFrames.max);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), limits::kWarmup.min, limits::kWarmup.max);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), limits::kBlock.min, limits::kBlock.max);
+    o.resamples = CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), limits::kResamples.min, limits::kResamples.max);
     if (const auto shard = cl.value("--shard")) {
         try {
             o.shard = BenchShard::parse(*shard);
@@ -334,7 +334,7 @@ int runTradeoffCommand(int argc, char** argv) {
     recorded.aoRays = aoRays;
     recorded.runPreset = o.run.presetSpec();
     recorded.runSets = o.run.sets;
-    writeBenchFile(json, ExperimentRecord::forTradeoff(recorded, runner.scene(), t, machine, result.settings).json(),
+    writeBenchFile(json, ExperimentRecord::forTradeoff(recorded, runner.scene(), t, machine, result.settings).json(json),
                    "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;

@@ -471,7 +471,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
                 py::gil_scoped_release release;
                 record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results);
                 if (csv) results.writeCsv(*csv);
-                if (json) writeBenchFile(*json, record.json(), "bench JSON");
+                if (json) writeBenchFile(*json, record.json(*json), "bench JSON");
             }
             return recordObject(record);
         },
