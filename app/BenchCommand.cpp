@@ -29,6 +29,7 @@
 #include "app/HostInfo.h"
 #include "app/PlotScript.h"
 #include "app/SweepOptions.h"
+#include "renderer/OptionLimits.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
@@ -268,7 +269,7 @@ int runBenchCommand(int argc, char** argv) {
     BenchOptions o;
     o.run = cl.runConfig();
     o.grid.sizes = SweepOptions::readSizes(cl, true);
-    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, 0, 1000000);
+    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, limits::kBenchLights.min, limits::kBenchLights.max);
     const SweepOptions so = SweepOptions::read(cl, kBench);
     o.grid.knobAxes = so.sweeps;
     o.exclude = so.exclusion;
@@ -295,7 +296,7 @@ int runBenchCommand(int argc, char** argv) {
                              "own lights are used and it changes nothing\n");
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
-    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), 1, 1000);
+    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), limits::kLppPoses.min, limits::kLppPoses.max);
     o.lpp = !cl.flag("--no-lpp");
     const std::string shardText = so.shardText();
     const std::string& csv = so.csv;
@@ -385,7 +386,7 @@ int runBenchCommand(int argc, char** argv) {
                 resamples);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] {
-                  writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(),
+                  writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(json),
                                  "bench JSON");
               }});
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());

@@ -101,7 +101,8 @@ int CommandLine::parseInt(const std::string& flag, const std::string& text, int 
 std::pair<int, int> CommandLine::parseSize(const std::string& text, const std::string& flag) {
     const auto x = text.find('x');
     if (x == std::string::npos) throw UsageError(flag + " expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
-    return {parseInt(flag + " width", text.substr(0, x), 1, 16384), parseInt(flag + " height", text.substr(x + 1), 1, 16384)};
+    return {parseInt(flag + " width", text.substr(0, x), limits::kSize.min, limits::kSize.max),
+            parseInt(flag + " height", text.substr(x + 1), limits::kSize.min, limits::kSize.max)};
 }
 
 void CommandLine::requireDistinctFiles(const NamedFiles& writes, const NamedFiles& reads) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
 #include "renderer/RunConfig.h"
 
 namespace dw {

@@ -50,7 +50,7 @@ int runRenderCommand(int argc, char** argv) {
     }
     RunConfig run = cl.runConfig();
     std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
-    run.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("1"), 1, 100000);
+    run.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("1"), limits::kFrames.min, limits::kFrames.max);
     const std::string buffer = cl.value("--buffer").value_or("final");
     const auto out = cl.value("--out");
     const auto dumpKnobs = cl.value("--dump-knobs");
@@ -58,7 +58,7 @@ int runRenderCommand(int argc, char** argv) {
     const auto timingsOut = cl.value("--timings-out");
     // Only counted frames are measured, so warm-up matters only when timing.
     const bool timed = timings || timingsOut;
-    run.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or(timed ? "1" : "0"), 0, 100000);
+    run.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or(timed ? "1" : "0"), limits::kWarmup.min, limits::kWarmup.max);
     const bool verbose = cl.flag("--verbose");
     const auto renderdocCapture = cl.value("--renderdoc-capture");
     const bool checkFinite = cl.flag("--check-finite");

@@ -31,6 +31,7 @@
 #include "renderer/bench/TradeoffStudy.h"
 #include "renderer/record/BuildInfo.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/record/SceneFiles.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -45,10 +46,24 @@ constexpr double kTimingBandLow = 0.8, kTimingBandHigh = 1.25;
 
 bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingBandHigh || r.high < kTimingBandLow); }
 
-// The recorded knobs this build takes, as --set assignments; the others are named.
+// new / old of two series' medians with its interval, or (below
+// kMinIntervalSamples frames on a side) no interval: printed as such.
+RatioInterval ratioOf(const std::vector<double>& now, const std::vector<double>& old, int resamples = 2000) {
+    if (!enoughForInterval(now.size()) || !enoughForInterval(old.size())) return {};
+    return bootstrapRatioOfMedians(now, old, resamples);
+}
+
+void printTooFew(size_t now, size_t old) {
+    std::printf("  %s (%zu and %zu frames, %zu needed on each side)", kTooFewForInterval.c_str(), old, now,
+                kMinIntervalSamples);
+}
+
+// The recorded knobs this build takes, as --set assignments; the others are
+// named. A value the registry refuses (as --set would) refuses the record:
+// throws Error naming each such knob (knobs.NAME: the registry's message).
 std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
     const KnobRegistry declared = RunConfig::declaredKnobs();
-    std::vector<std::string> sets;
+    std::vector<std::string> sets, refused;
     std::map<std::string, std::string> recorded;
     for (const auto& [recordedName, value] : old.knobs) {
         // An old name (KnobAlias: ssao.enabled) restores the knob it became.
@@ -63,7 +78,7 @@ std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
         try {
             probe.setFromString(name, value);
         } catch (const Error& e) {
-            std::printf("knob value refused by this build: %s\n", e.what());
+            refused.push_back("knobs." + recordedName + ": " + e.what());
             continue;
         }
         sets.push_back(name + "=" + value);
@@ -73,10 +88,16 @@ std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
         if (!recorded.count(name))
             std::printf("knob new in this build: %s (default %s)\n", name.c_str(), declared.format(static_cast<int>(i)).c_str());
     }
+    if (!refused.empty()) {
+        std::string all;
+        for (const auto& r : refused) all += (all.empty() ? "" : "; ") + r;
+        throw Error(all);
+    }
     return sets;
 }
 
-int replayRender(const ExperimentRecord& old, const std::vector<std::string>& sets, const std::optional<std::string>& newRecord) {
+int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<std::string>& sets,
+                 const std::optional<std::string>& newRecord) {
     RunConfig run;
     run.scene = old.sceneSpec;
     run.sets = sets;
@@ -84,7 +105,6 @@ int replayRender(const ExperimentRecord& old, const std::vector<std::string>& se
     run.height = old.height;
     run.frames = old.frames;
     run.warmup = old.warmup;
-    Scene loaded = loadScene(run.sceneSpec());
     auto context = HeadlessGlContext::create();
     RenderSession session;
     for (const auto& [k, v] : old.gl)
@@ -112,9 +132,10 @@ int replayRender(const ExperimentRecord& old, const std::vector<std::string>& se
     for (const auto& s : now.timings) {
         const auto it = oldSeries.find(s.name);
         if (it == oldSeries.end()) continue;
-        const RatioInterval r = bootstrapRatioOfMedians(s.gpuMs, it->second->gpuMs);
+        const RatioInterval r = ratioOf(s.gpuMs, it->second->gpuMs);
         std::printf("timing %-28s gpu median %9.3f -> %9.3f ms", s.name.c_str(), median(it->second->gpuMs), median(s.gpuMs));
         if (r.valid()) std::printf("  x%.3f [%.3f, %.3f]", r.ratio, r.low, r.high);
+        else printTooFew(s.gpuMs.size(), it->second->gpuMs.size());
         std::printf("\n");
     }
     if (now.imageSha256 == old.imageSha256) {
@@ -192,10 +213,11 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
         }
         const RecordedConfig& b = it->second;
         const std::vector<double>& a = afterMs[i];
-        const RatioInterval r = bootstrapRatioOfMedians(a, b.gpuMs, recorded.resamples);
+        const RatioInterval r = ratioOf(a, b.gpuMs, recorded.resamples);
         std::printf("config %d (%s): %s gpu median %9.3f -> %9.3f ms", i, label.c_str(), series.c_str(), median(b.gpuMs),
                     median(a));
         if (r.valid()) std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, timingMoved(r) ? " (moved)" : "");
+        else printTooFew(a.size(), b.gpuMs.size());
         const bool bothLpp = std::isfinite(b.lpp) && std::isfinite(c.lpp);
         // The JSON holds LPP rounded to 6 significant digits.
         const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(c.lpp)) ||
@@ -281,11 +303,17 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
                      hi = r.frameGpuMsHi - b.frameGpuMsLo;
         const double ratioLo = b.frameGpuMsHi > 0 ? r.frameGpuMsLo / b.frameGpuMsHi : NAN;
         const double ratioHi = b.frameGpuMsLo > 0 ? r.frameGpuMsHi / b.frameGpuMsLo : NAN;
-        const bool timeMoved = std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
+        // Rows of a record without "frames" counted the record's frames.
+        const size_t framesBefore = static_cast<size_t>(b.frames > 0 ? b.frames : old.frames);
+        const size_t framesAfter = static_cast<size_t>(r.frames > 0 ? r.frames : again.options.frames);
+        const bool interval = enoughForInterval(framesBefore) && enoughForInterval(framesAfter);
+        const bool timeMoved = interval && std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
                                (ratioLo > kTimingBandHigh || ratioHi < kTimingBandLow);
-        std::printf("%s: %s %.6g -> %.6g (%s); frame gpu median %.3f -> %.3f ms, difference %+.3f [%+.3f, %+.3f]%s\n",
-                    pointLabel(after, r).c_str(), r.metric.c_str(), b.error, r.error, same ? "same" : "differs",
-                    b.frameGpuMs, r.frameGpuMs, diff, lo, hi, timeMoved ? " (moved)" : "");
+        std::printf("%s: %s %.6g -> %.6g (%s); frame gpu median %.3f -> %.3f ms, difference %+.3f", pointLabel(after, r).c_str(),
+                    r.metric.c_str(), b.error, r.error, same ? "same" : "differs", b.frameGpuMs, r.frameGpuMs, diff);
+        if (interval) std::printf(" [%+.3f, %+.3f]%s", lo, hi, timeMoved ? " (moved)" : "");
+        else printTooFew(framesAfter, framesBefore);
+        std::printf("\n");
         if (!same) ++errorDiffer;
         if (timeMoved) ++moved;
         recorded.erase(it);
@@ -321,6 +349,10 @@ int runReplayCommand(int argc, char** argv) {
                      "               old -> new (any change differs) and the frame time old -> new with the interval\n"
                      "               of the difference\n"
                      "  --record     write the new run's record too\n"
+                     "Scene paths in the record are relative to its folder; the scene's files as it loads now are\n"
+                     "compared with the record's (changed, added, removed by name). Fields are held to the ranges of\n"
+                     "the options they stand for, the camera to scene/CameraCheck, knob values to the registry.\n"
+                     "Intervals need 6 frames a side; fewer print 'too few frames for an interval'.\n"
                      "Exit 0: the same (the image identical; for bench every configuration there, its lights per\n"
                      "pixel equal and no timing ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row\n"
                      "there, its error equal, no frame time moved beyond that band); 1: it differs;\n"
@@ -347,20 +379,32 @@ int runReplayCommand(int argc, char** argv) {
         std::printf("record version %d, read as version %d (it recorded no camera path, seeds or compiler flags)\n",
                     old.readVersion, ExperimentRecord::kVersion);
 
-    // Scene files by name: the content the record measured against this one's.
-    for (const auto& [f, now] : old.changedFiles())
-        std::printf("scene file changed: %s (sha256 %s -> %s)\n", f.path.c_str(), shortHash(f.sha256).c_str(),
-                    shortHash(now).c_str());
-    const std::vector<std::string> sets = restoredKnobs(old);
-    for (const auto& [k, v] : buildFields())
-        for (const auto& [ok, ov] : old.build)
-            if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
-    // What cannot be restored (a scene file gone, a knob value this build's
-    // checks refuse as a whole configuration) refuses the record too.
+    // What cannot be restored (a scene that does not load, a knob value the
+    // registry refuses, a configuration this build's checks refuse) refuses
+    // the record too.
     try {
+        // The scene as it loads now; the files it reads against the record's,
+        // by name. Only the loader's files are read: a path the record alone
+        // names is reported, never opened.
+        Scene loaded = loadScene(old.sceneSpec);
+        for (const SceneFileChange& c : compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source)) {
+            if (c.kind == SceneFileChange::Kind::Changed)
+                std::printf("scene file changed: %s (sha256 %s -> %s)\n", c.path.c_str(), shortHash(c.oldSha256).c_str(),
+                            shortHash(c.newSha256).c_str());
+            else if (c.kind == SceneFileChange::Kind::Added)
+                std::printf("scene file added: %s (sha256 %s; the record does not list it)\n", c.path.c_str(),
+                            shortHash(c.newSha256).c_str());
+            else
+                std::printf("scene file removed: %s (recorded sha256 %s; the scene no longer reads it)\n",
+                            c.path.c_str(), shortHash(c.oldSha256).c_str());
+        }
+        const std::vector<std::string> sets = restoredKnobs(old);
+        for (const auto& [k, v] : buildFields())
+            for (const auto& [ok, ov] : old.build)
+                if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
         if (old.command == "bench") return replayBench(old, sets, newRecord);
         if (old.command == "tradeoff") return replayTradeoff(old, path, sets, newRecord);
-        return replayRender(old, sets, newRecord);
+        return replayRender(old, std::move(loaded), sets, newRecord);
     } catch (const GlUnsupportedError&) {
         throw;
     } catch (const Error& e) {

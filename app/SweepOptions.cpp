@@ -1,4 +1,5 @@
 #include "app/SweepOptions.h"
+#include "renderer/OptionLimits.h"
 
 #include <algorithm>
 #include <cctype>
@@ -44,7 +45,7 @@ void notePlotSizeAlone(CommandLine& cl, const SweepCommand& c, bool plot) {
 }  // namespace
 
 int SweepOptions::readResamples(CommandLine& cl) {
-    return CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), 100, 1000000);
+    return CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), limits::kResamples.min, limits::kResamples.max);
 }
 
 std::vector<std::pair<int, int>> SweepOptions::readSizes(CommandLine& cl, bool several) {
@@ -81,11 +82,11 @@ SweepOptions SweepOptions::read(CommandLine& cl, const SweepCommand& c) {
             throw UsageError(err.what());
         }
     }
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or(std::to_string(c.frames)), 1, 100000);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), 0, 100000);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), 1, 100000);
+    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or(std::to_string(c.frames)), limits::kFrames.min, limits::kFrames.max);
+    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), limits::kWarmup.min, limits::kWarmup.max);
+    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), limits::kBlock.min, limits::kBlock.max);
     o.resamples = readResamples(cl);
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, 1, 100000);
+    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, limits::kOrbit.min, limits::kOrbit.max);
     o.walkthrough = cl.flag("--walkthrough");
     if (const auto shard = cl.value("--shard")) {
         try {

@@ -225,7 +225,7 @@ int runMerge(int argc, char** argv) {
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
-    if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(), "tradeoff record");
+    if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(*json), "tradeoff record");
     std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
     return plot ? writePlot(out, *plot, plotW, plotH, time) : 0;
 }
@@ -308,7 +308,7 @@ int runTradeoffCommand(int argc, char** argv) {
                 what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
-    writeBenchFile(json, record.json(), "tradeoff record");
+    writeBenchFile(json, record.json(json), "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty()) return 0;
     return writePlot(csv, plot, plotW, plotH, o.time);

@@ -418,7 +418,7 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
         timeAxis = o.time;
         record = TradeoffStudy::record(s, o, *runner, std::move(measured), "deferred_workbench.tradeoff (Python)");
         if (csv) table.writeCsv(*csv);
-        if (json) writeBenchFile(*json, record.json(), "tradeoff record");
+        if (json) writeBenchFile(*json, record.json(*json), "tradeoff record");
         if (plot && !table.rows.empty()) {
             // The plot is drawn from a CSV: the one asked for, else a file of its own beside the plot.
             const std::string from = csv ? *csv : *plot + ".csv";
@@ -662,7 +662,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
                 py::gil_scoped_release release;
                 record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results);
                 if (csv) results.writeCsv(*csv);
-                if (json) writeBenchFile(*json, record.json(), "bench JSON");
+                if (json) writeBenchFile(*json, record.json(*json), "bench JSON");
             }
             return recordObject(record);
         },

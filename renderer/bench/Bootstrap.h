@@ -4,10 +4,23 @@
 // resamples' medians, and read the 2.5th and 97.5th percentiles of those
 // ratios. `bench` uses it for "configuration / baseline" frame times. The
 // resampling is seeded, so the same samples always give the same interval.
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace dw {
+
+// The fewest samples per side from which the experiment records and
+// `replay` state an interval of a median (or of a ratio or difference of
+// medians). Below 6 no interval of a median reaches 95% from the samples
+// alone: the widest, the range of n samples, holds the median with
+// probability 1 - 2^(1-n) (75% for 3, 94% for 5, 97% for 6), and a bootstrap
+// of so few values only repeats them. Fewer frames are recorded and printed
+// as kTooFewForInterval, the median alone.
+constexpr std::size_t kMinIntervalSamples = 6;
+inline const std::string kTooFewForInterval = "too few frames for an interval";
+inline bool enoughForInterval(std::size_t samples) { return samples >= kMinIntervalSamples; }
 
 struct RatioInterval {
     double ratio = 0.0;  // median(a) / median(b) of the samples themselves

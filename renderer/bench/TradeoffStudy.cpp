@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/record/HostInfo.h"
 #include "renderer/reference/ReferenceCache.h"
@@ -16,9 +17,9 @@ namespace dw {
 namespace {
 
 // As CommandLine::parseInt says a number out of its range.
-int inRange(const std::string& flag, int v, int min, int max) {
-    if (v < min || v > max)
-        throw Error(flag + " must be between " + std::to_string(min) + " and " + std::to_string(max));
+int inRange(const std::string& flag, int v, OptionRange range) {
+    if (!range.holds(v))
+        throw Error(flag + " must be between " + std::to_string(range.min) + " and " + std::to_string(range.max));
     return v;
 }
 
@@ -27,8 +28,8 @@ int inRange(const std::string& flag, int v, int min, int max) {
 TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     TradeoffOptions o;
     o.run = s.run;
-    inRange("--size width", s.run.width, 1, 16384);
-    inRange("--size height", s.run.height, 1, 16384);
+    inRange("--size width", s.run.width, limits::kSize);
+    inRange("--size height", s.run.height, limits::kSize);
     for (const auto& text : s.sweep) {
         const BenchKnobAxis axis = BenchGrid::parseSweep(text);
         for (const auto& a : o.sweep.axes)
@@ -51,13 +52,13 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.buffer = s.buffer;
     o.mask = s.mask;
     o.time = s.time;
-    inRange("--ao-rays", s.aoRays, 1, 1 << 20);
-    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, 1, 100000);
+    inRange("--ao-rays", s.aoRays, limits::kAoRays);
+    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
     o.walkthrough = s.walkthrough;
-    o.frames = inRange("--frames", s.frames, 1, 100000);
-    o.warmup = inRange("--warmup", s.warmup, 0, 100000);
-    o.block = inRange("--block", s.block, 1, 100000);
-    o.resamples = inRange("--resamples", s.resamples, 100, 1000000);
+    o.frames = inRange("--frames", s.frames, limits::kFrames);
+    o.warmup = inRange("--warmup", s.warmup, limits::kWarmup);
+    o.block = inRange("--block", s.block, limits::kBlock);
+    o.resamples = inRange("--resamples", s.resamples, limits::kResamples);
     if (!s.shard.empty()) o.shard = BenchShard::parse(s.shard);
     if (o.sweep.axes.empty() && s.knobs.empty())
         throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/TradeoffTable.h"
@@ -18,6 +20,8 @@
 #include "renderer/record/BuildInfo.h"
 #include "renderer/record/HostInfo.h"
 #include "renderer/record/SceneFiles.h"
+#include "renderer/scene/BuiltinScenes.h"
+#include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -25,7 +29,72 @@ namespace dw {
 namespace {
 
 using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
 const char* const kFormat = "deferred-workbench record";
+
+// A scene spec, source or file that names a file (not a built-in scene).
+bool namesFile(const std::string& p) {
+    return !p.empty() && !isBuiltinScene(p) && p.rfind("builtin:", 0) != 0;
+}
+
+// A path relative to the working directory, as written into a record in
+// `recordDir` (absolute): relative to that folder. Absolute paths and
+// built-in names stay.
+std::string relativeToRecord(const std::string& p, const fs::path& recordDir) {
+    if (!namesFile(p) || fs::path(p).is_absolute()) return p;
+    std::error_code ec;
+    const fs::path abs = fs::absolute(p, ec).lexically_normal();
+    if (ec) return p;
+    const fs::path rel = abs.lexically_relative(recordDir);
+    return rel.empty() ? abs.string() : rel.string();
+}
+
+// A relative path read from a record in `recordDir`: against that folder;
+// when nothing is there but the path names a file from the working
+// directory, that one (records written before paths were kept relative to
+// the record). Otherwise the record's folder, so an error names where it looked.
+std::string resolvedFromRecord(const std::string& p, const fs::path& recordDir) {
+    if (!namesFile(p) || fs::path(p).is_absolute()) return p;
+    const std::string there = (recordDir / p).lexically_normal().string();
+    std::error_code ec;
+    if (fs::exists(there, ec)) return there;
+    if (fs::exists(p, ec)) return p;
+    return there;
+}
+
+// A whole number field held to the range of the option it stands for.
+int wholeNumber(const nlohmann::json& v, const std::string& path, const std::string& field, OptionRange range,
+                const std::string& option) {
+    if (!v.is_number_integer())
+        throw FileError(path, field + ": expects a whole number (as " + option + " does), got " + v.dump());
+    const long long n = v.is_number_unsigned() && v.get<unsigned long long>() > 9223372036854775807ull
+                            ? 9223372036854775807ll
+                            : v.get<long long>();
+    if (!range.holds(n))
+        throw FileError(path, field + ": " + std::to_string(n) + " is outside " + option + "'s range " +
+                                  std::to_string(range.min) + ".." + std::to_string(range.max));
+    return static_cast<int>(n);
+}
+
+// "WxH" with both sides in --size's range.
+std::pair<int, int> sizeField(const std::string& t, const std::string& path, const std::string& field) {
+    const size_t x = t.find('x');
+    if (x == std::string::npos) throw FileError(path, field + ": '" + t + "' is not WxH");
+    auto side = [&](const std::string& s, const char* which) {
+        const nlohmann::json n = nlohmann::json::parse(s, nullptr, false);
+        if (n.is_discarded()) throw FileError(path, field + ": '" + t + "' is not WxH");
+        return wholeNumber(n, path, field + " " + which, limits::kSize, "--size");
+    };
+    return {side(t.substr(0, x), "width"), side(t.substr(x + 1), "height")};
+}
+
+// CameraCheck's field names as the record names them.
+std::string recordCameraField(const std::string& field) {
+    if (field == "fov") return "camera.fov_y_degrees";
+    if (field == "pos") return "camera.position";
+    if (field == "look-at") return "camera.target";
+    return "camera." + field;  // near, far, up
+}
 
 Json fieldsJson(const RecordFields& fields) {
     Json j = Json::object();
@@ -58,7 +127,15 @@ glm::vec3 readVec3(const nlohmann::json& j, const std::string& path, const std::
 // Finite numbers as themselves, anything else as null (JSON has no NaN).
 Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
+// The median with its bootstrap 95% interval; below kMinIntervalSamples
+// frames the median with "ci95": null and why.
 Json intervalJson(const std::vector<double>& values) {
+    if (values.empty()) return Json(nullptr);
+    if (!enoughForInterval(values.size()))
+        return {{"median", number(median(values))},
+                {"ci95", nullptr},
+                {"interval", kTooFewForInterval + " (" + std::to_string(values.size()) + " counted, " +
+                                 std::to_string(kMinIntervalSamples) + " needed)"}};
     const MedianInterval m = bootstrapMedian(values, 2000, ExperimentRecord::kBootstrapSeed);
     if (!m.valid()) return Json(nullptr);
     return {{"median", number(m.median)}, {"ci95", {number(m.low), number(m.high)}}};
@@ -339,14 +416,17 @@ TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
     return t;
 }
 
-std::string ExperimentRecord::json() const {
+std::string ExperimentRecord::json(const std::string& recordPath) const {
+    std::error_code ec;
+    const fs::path recordDir = recordPath.empty() ? fs::path() : fs::absolute(recordPath, ec).parent_path().lexically_normal();
+    auto placed = [&](const std::string& p) { return recordPath.empty() || ec ? p : relativeToRecord(p, recordDir); };
     Json j;
     j["format"] = kFormat;
     j["version"] = version;
     j["command"] = command;
     Json files = Json::array();
-    for (const auto& f : sceneFiles) files.push_back({{"path", f.path}, {"sha256", f.sha256}});
-    j["scene"] = {{"spec", sceneSpec}, {"source", sceneSource}, {"files", files}};
+    for (const auto& f : sceneFiles) files.push_back({{"path", placed(f.path)}, {"sha256", f.sha256}});
+    j["scene"] = {{"spec", placed(sceneSpec)}, {"source", placed(sceneSource)}, {"files", files}};
     j["camera"] = {{"position", vec3(camera.position)}, {"target", vec3(camera.target)}, {"up", vec3(camera.up)},
                    {"fov_y_degrees", camera.fovYDegrees}, {"near", camera.nearPlane}, {"far", camera.farPlane}};
     Json path = {{"mode", cameraPath.mode}};
@@ -434,7 +514,7 @@ std::string ExperimentRecord::json() const {
     return j.dump(2) + "\n";
 }
 
-void ExperimentRecord::write(const std::string& path) const { writeFileAtomically(path, json()); }
+void ExperimentRecord::write(const std::string& path) const { writeFileAtomically(path, json(path)); }
 
 ExperimentRecord ExperimentRecord::read(const std::string& path) {
     JsonGuardOptions options;
@@ -470,6 +550,11 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         r.sceneSource = scene.value("source", "");
         for (const auto& f : scene.value("files", nlohmann::json::array()))
             r.sceneFiles.push_back({f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
+        // Relative paths: against the record's folder (then the working directory).
+        const fs::path recordDir = fs::path(path).parent_path();
+        r.sceneSpec = resolvedFromRecord(r.sceneSpec, recordDir);
+        r.sceneSource = resolvedFromRecord(r.sceneSource, recordDir);
+        for (auto& f : r.sceneFiles) f.path = resolvedFromRecord(f.path, recordDir);
         const auto& cam = j.at("camera");
         r.camera.position = readVec3(cam.at("position"), path, "camera.position");
         r.camera.target = readVec3(cam.at("target"), path, "camera.target");
@@ -489,10 +574,16 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         }
         r.knobs = fieldsOf(j.at("knobs"));
         r.seeds = fieldsOf(j.value("seeds", nlohmann::json::object()));
-        r.width = j.at("size").at(0).get<int>();
-        r.height = j.at("size").at(1).get<int>();
-        r.frames = j.at("frames").get<int>();
-        r.warmup = j.at("warmup").get<int>();
+        // Held to the ranges of --size, --frames and --warmup.
+        const auto& size = j.at("size");
+        if (!size.is_array() || size.size() != 2) throw FileError(path, "size: expected [width, height]");
+        r.width = wholeNumber(size.at(0), path, "size width", limits::kSize, "--size");
+        r.height = wholeNumber(size.at(1), path, "size height", limits::kSize, "--size");
+        r.frames = wholeNumber(j.at("frames"), path, "frames", limits::kFrames, "--frames");
+        r.warmup = wholeNumber(j.at("warmup"), path, "warmup", limits::kWarmup, "--warmup");
+        // The one definition of a usable camera (a zero up vector renders nothing useful).
+        if (const auto problem = findCameraProblem(r.camera, 0.0f))
+            throw FileError(path, recordCameraField(problem->field) + ": " + problem->what);
         r.build = fieldsOf(j.value("build", nlohmann::json::object()));
         r.gl = fieldsOf(j.value("gl", nlohmann::json::object()));
         r.host = fieldsOf(j.value("host", nlohmann::json::object()));
@@ -508,26 +599,26 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
             o.warmup = r.warmup;
             o.seed = static_cast<std::uint32_t>(std::stoul(fieldOr(r.seeds, "lights", "1")));
             if (!b.merged) {
-                for (const auto& s : g.at("sizes")) {
-                    const std::string t = s.get<std::string>();
-                    const size_t x = t.find('x');
-                    if (x == std::string::npos) throw FileError(path, "grid.sizes: '" + t + "' is not WxH");
-                    o.grid.sizes.emplace_back(std::stoi(t.substr(0, x)), std::stoi(t.substr(x + 1)));
-                }
-                o.grid.lights = g.at("lights").get<std::vector<int>>();
+                for (const auto& s : g.at("sizes")) o.grid.sizes.push_back(sizeField(s.get<std::string>(), path, "grid.sizes"));
+                for (const auto& n : g.at("lights"))
+                    o.grid.lights.push_back(wholeNumber(n, path, "grid.lights", limits::kBenchLights, "--lights"));
                 for (const auto& a : g.at("sweep"))
                     o.grid.knobAxes.push_back({a.at("knob").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
-                o.block = g.value("block", 1);
+                if (g.contains("block")) o.block = wholeNumber(g["block"], path, "grid.block", limits::kBlock, "--block");
                 o.lightRadius = g.value("light_radius", 0.0f);
                 o.keepSceneLights = g.value("keep_scene_lights", false);
-                o.orbit = g.value("orbit", 0);
+                // 0: no orbit (the option is absent).
+                if (g.contains("orbit") && g["orbit"] != 0)
+                    o.orbit = wholeNumber(g["orbit"], path, "grid.orbit", limits::kOrbit, "--orbit");
                 o.walkthrough = g.value("walkthrough", false);
                 o.lpp = g.value("lpp", true);
-                o.lppPoses = g.value("lpp_poses", 4);
+                if (g.contains("lpp_poses"))
+                    o.lppPoses = wholeNumber(g["lpp_poses"], path, "grid.lpp_poses", limits::kLppPoses, "--lpp-poses");
                 o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
                 o.baseline = g.value("baseline", std::string());
                 b.ratioOf = g.value("ratio_of", std::string("frame"));
-                b.resamples = g.value("resamples", 2000);
+                if (g.contains("resamples"))
+                    b.resamples = wholeNumber(g["resamples"], path, "grid.resamples", limits::kResamples, "--resamples");
             }
             r.bench = std::move(b);
             r.benchResults = Json(results);
@@ -552,11 +643,13 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
                 o.against = g.value("against", std::vector<std::string>{});
                 o.metric = g.at("metric").get<std::string>();
                 o.buffer = g.at("buffer").get<std::string>();
-                t.aoRays = g.value("ao_rays", 64);
-                o.orbit = g.value("orbit", 0);
+                if (g.contains("ao_rays")) t.aoRays = wholeNumber(g["ao_rays"], path, "grid.ao_rays", limits::kAoRays, "--ao-rays");
+                if (g.contains("orbit") && g["orbit"] != 0)
+                    o.orbit = wholeNumber(g["orbit"], path, "grid.orbit", limits::kOrbit, "--orbit");
                 o.walkthrough = g.value("walkthrough", false);
-                o.block = g.value("block", 1);
-                o.resamples = g.value("resamples", 2000);
+                if (g.contains("block")) o.block = wholeNumber(g["block"], path, "grid.block", limits::kBlock, "--block");
+                if (g.contains("resamples"))
+                    o.resamples = wholeNumber(g["resamples"], path, "grid.resamples", limits::kResamples, "--resamples");
                 t.runPreset = g.value("run_preset", std::string());
                 // Records before repeated --preset hold the one preset only.
                 t.runPresets = g.value("run_presets", std::vector<std::string>{});
@@ -589,18 +682,7 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
     } catch (const Error& e) {
         throw FileError(path, e.what());
     }
-    if (r.width < 1 || r.height < 1 || r.width > 16384 || r.height > 16384 || r.frames < 1 || r.warmup < 0)
-        throw FileError(path, "size, frames or warmup out of range");
     return r;
-}
-
-std::vector<std::pair<RecordedFile, std::string>> ExperimentRecord::changedFiles() const {
-    std::vector<std::pair<RecordedFile, std::string>> changed;
-    for (const RecordedFile& f : sceneFiles) {
-        const std::string now = sha256OfFile(f.path);
-        if (now != f.sha256) changed.emplace_back(f, now);
-    }
-    return changed;
 }
 
 }  // namespace dw

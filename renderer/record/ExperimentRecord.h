@@ -122,8 +122,18 @@ struct ExperimentRecord {
     // A tradeoff record's rows back as a table (merge, replay). Throws FileError naming `path`.
     TradeoffTable tradeoffTable(const std::string& path) const;
 
-    std::string json() const;
-    // Throws FileError naming the file and what is wrong (a newer version, a missing field).
+    // The record as JSON. With `recordPath` (where it will be written), a
+    // relative scene path (spec, source, files; relative to the working
+    // directory) is written relative to the record's folder, so the record
+    // and its scene can move together and replay from any directory; an
+    // absolute path or a built-in scene's name stays as it is.
+    std::string json(const std::string& recordPath = {}) const;
+    // Throws FileError naming the file and what is wrong (a newer version, a
+    // missing field, a field outside the range of the option it stands for:
+    // size, frames, warm-up, bench's and tradeoff's grid, a camera scene/CameraCheck
+    // refuses). A relative scene path is resolved against the record's
+    // folder; when nothing is there, against the working directory (what a
+    // record written before paths were kept relative to the record meant).
     static ExperimentRecord read(const std::string& path);
     static ExperimentRecord parse(const std::string& text, const std::string& path);
     static ExperimentRecord fromJson(const nlohmann::json& j, const std::string& path);
@@ -134,8 +144,6 @@ struct ExperimentRecord {
                                   int& channels);
     // Every knob of `knobs` as name -> value text.
     static RecordFields knobFields(const KnobRegistry& knobs);
-    // Each recorded file whose content is not what it was: path, old sha256, new ("" unreadable).
-    std::vector<std::pair<RecordedFile, std::string>> changedFiles() const;
 };
 
 }  // namespace dw

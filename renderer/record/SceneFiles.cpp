@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 #include "renderer/Error.h"
@@ -108,6 +109,42 @@ std::vector<RecordedFile> sceneFilesOf(const Scene& scene) {
     std::vector<RecordedFile> files;
     for (const std::string& p : list.paths()) files.push_back({p, sha256OfFile(p)});
     return files;
+}
+
+namespace {
+
+// `file` relative to the folder of `scene` (both made absolute against the working directory, lexically).
+std::string keyOf(const std::string& file, const std::string& scene) {
+    std::error_code ec;
+    const fs::path f = fs::absolute(file, ec).lexically_normal();
+    const fs::path base = fs::absolute(scene, ec).lexically_normal().parent_path();
+    const fs::path rel = f.lexically_relative(base);
+    return rel.empty() ? f.string() : rel.string();
+}
+
+}  // namespace
+
+std::vector<SceneFileChange> compareSceneFiles(const std::vector<RecordedFile>& recorded, const std::string& recordedScene,
+                                               const std::vector<RecordedFile>& now, const std::string& nowScene) {
+    std::map<std::string, const RecordedFile*> current;
+    for (const RecordedFile& f : now) current.emplace(keyOf(f.path, nowScene), &f);
+    std::vector<SceneFileChange> changes;
+    std::set<std::string> matched;
+    for (const RecordedFile& f : recorded) {
+        const std::string key = keyOf(f.path, recordedScene);
+        const auto it = current.find(key);
+        if (it == current.end()) {
+            changes.push_back({SceneFileChange::Kind::Removed, f.path, f.sha256, ""});
+            continue;
+        }
+        matched.insert(key);
+        if (it->second->sha256 != f.sha256 || f.sha256.empty())
+            changes.push_back({SceneFileChange::Kind::Changed, it->second->path, f.sha256, it->second->sha256});
+    }
+    for (const RecordedFile& f : now)
+        if (!matched.count(keyOf(f.path, nowScene)))
+            changes.push_back({SceneFileChange::Kind::Added, f.path, "", f.sha256});
+    return changes;
 }
 
 }  // namespace dw

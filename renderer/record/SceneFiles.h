@@ -21,4 +21,20 @@ std::string sha256OfFile(const std::string& path);
 // The files `scene` read, each with its current sha256.
 std::vector<RecordedFile> sceneFilesOf(const Scene& scene);
 
+// A difference between the files a record lists and those its scene reads now.
+struct SceneFileChange {
+    enum class Kind { Changed, Added, Removed };
+    Kind kind = Kind::Changed;
+    std::string path;                // the file now (Changed, Added), as recorded (Removed)
+    std::string oldSha256, newSha256;  // empty where that side has none (or could not read it)
+};
+
+// `recorded`: a record's list, the files of the scene `recordedScene`;
+// `now`: sceneFilesOf the scene loaded now from `nowScene`. Files match by
+// their path relative to their scene file's folder (a scene folder moved with
+// its record still matches). Reads no file: `now` holds the hashes, and a
+// path only the record names is reported, never opened.
+std::vector<SceneFileChange> compareSceneFiles(const std::vector<RecordedFile>& recorded, const std::string& recordedScene,
+                                               const std::vector<RecordedFile>& now, const std::string& nowScene);
+
 }  // namespace dw

@@ -439,6 +439,39 @@ TEST(Gui, ABadRecordIsAMessageAndTheStateStays) {
     EXPECT_EQ(session->camera().position, before.position);
 }
 
+// gui --open-record of a record that names a knob by its old name
+// (ssao.enabled, now ao.enabled) and its scene by a path relative to the
+// record's folder, opened from another working directory: the window opens
+// that scene and sets ao.enabled (the knob dump at exit says so).
+TEST(Gui, UnderXvfbOpenRecordTakesAnOldKnobNameAndAScenePathRelativeToTheRecord) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path folder = test::tempDir() / "gui-old-record";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "boxes.json") << R"({"name": "old boxes", "objects": [{"shape": "box"}]})";
+    // Written from the record's folder: the scene path in it is "boxes.json".
+    const Result made = shell("cd " + folder.string() + " && " + std::string(DW_WORKBENCH_BINARY) +
+                              " render --scene boxes.json --size 32x18 --out boxes.png --record written.json");
+    ASSERT_EQ(made.code, 0) << made.out;
+    std::ifstream in(folder / "written.json");
+    nlohmann::json record = nlohmann::json::parse(in);
+    EXPECT_EQ(record["scene"]["spec"], "boxes.json");
+    ASSERT_EQ(record["knobs"]["ao.enabled"], "true");
+    // As a build from before the rename wrote it.
+    record["knobs"].erase("ao.enabled");
+    record["knobs"]["ssao.enabled"] = "true";
+    std::ofstream(folder / "old-name.json") << record.dump(2);
+    const fs::path knobs = test::tempDir() / "gui-old-record-knobs.txt";
+    fs::remove(knobs);
+    // The window starts on spheres with ao.enabled=false (runScripted's scene), from the test's directory.
+    runScripted("old-record", "1024x640", 3, "",
+                "--open-record " + (folder / "old-name.json").string() + " --dump-knobs " + knobs.string());
+    const auto dump = test::readKnobDump(knobs);
+    ASSERT_TRUE(dump.count("ao.enabled")) << "no knob dump";
+    EXPECT_EQ(dump.at("ao.enabled"), "true");
+    EXPECT_FALSE(dump.count("ssao.enabled"));
+}
+
 // The window starts with the same knob values as render for the same
 // --scene, --preset and --set (RunConfig), in the real binary under Xvfb.
 TEST(Gui, StartsWithTheKnobValuesRenderUses) {

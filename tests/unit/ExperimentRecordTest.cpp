@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "renderer/Error.h"
 #include "renderer/bench/BenchSummary.h"
@@ -131,6 +132,139 @@ TEST(ExperimentRecord, VersionOneReadsWithTheFieldsItLacked) {
     EXPECT_EQ(j["version"], 2);
     EXPECT_EQ(j["results"]["timings"][0]["gpu"]["median"], 2.0);
     EXPECT_EQ(j["camera_path"]["mode"], "fixed");
+    // Two frames give a median but no interval: said, not printed as numbers.
+    EXPECT_TRUE(j["results"]["timings"][0]["gpu"]["ci95"].is_null());
+    EXPECT_EQ(j["results"]["timings"][0]["gpu"]["interval"], "too few frames for an interval (2 counted, 6 needed)");
+}
+
+namespace {
+
+// A render record as text, with `change` applied to its JSON.
+std::string renderRecord(const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json j = nlohmann::json::parse(R"({"format": "deferred-workbench record", "version": 2, "command": "render",
+        "scene": {"spec": "default", "source": "builtin:default", "files": []},
+        "camera": {"position": [0, 2, 8], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_degrees": 60, "near": 0.1, "far": 100},
+        "knobs": {"ssao.samples": "8"}, "size": [32, 18], "frames": 6, "warmup": 1, "buffer": "final",
+        "results": {"timings": [], "image": {"buffer": "final", "sha256": "00"}}})");
+    change(j);
+    return j.dump();
+}
+
+std::string refusal(const std::string& text) {
+    try {
+        ExperimentRecord::parse(text, "r.json");
+    } catch (const FileError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+}  // namespace
+
+TEST(ExperimentRecord, FieldsAreHeldToTheRangesOfTheOptionsTheyStandFor) {
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json&) {})), "accepted");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["frames"] = 100000; })), "accepted");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["frames"] = 100001; })),
+              "r.json: frames: 100001 is outside --frames's range 1..100000");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["frames"] = 4294967297LL; })),
+              "r.json: frames: 4294967297 is outside --frames's range 1..100000");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["frames"] = 2.5; })),
+              "r.json: frames: expects a whole number (as --frames does), got 2.5");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["warmup"] = -1; })),
+              "r.json: warmup: -1 is outside --warmup's range 0..100000");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["size"] = {16385, 18}; })),
+              "r.json: size width: 16385 is outside --size's range 1..16384");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["size"] = {32, 0}; })),
+              "r.json: size height: 0 is outside --size's range 1..16384");
+    // A bench record's grid: its sizes, light counts, block, orbit.
+    auto bench = [](nlohmann::json& j) {
+        j["command"] = "bench";
+        j["grid"] = {{"sizes", {"32x18"}}, {"lights", {0, 10}}, {"sweep", nlohmann::json::array()}, {"block", 1}, {"orbit", 0}};
+        j["results"] = nlohmann::json::object();
+    };
+    EXPECT_EQ(refusal(renderRecord(bench)), "accepted");
+    EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { bench(j); j["grid"]["sizes"] = {"32x99999"}; })),
+              "r.json: grid.sizes height: 99999 is outside --size's range 1..16384");
+    EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { bench(j); j["grid"]["lights"] = {-3}; })),
+              "r.json: grid.lights: -3 is outside --lights's range 0..1000000");
+    EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { bench(j); j["grid"]["block"] = 0; })),
+              "r.json: grid.block: 0 is outside --block's range 1..100000");
+    EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { bench(j); j["grid"]["orbit"] = 200000; })),
+              "r.json: grid.orbit: 200000 is outside --orbit's range 1..100000");
+}
+
+TEST(ExperimentRecord, ACameraCameraCheckRefusesIsRefusedWithItsField) {
+    const std::string up = refusal(renderRecord([](nlohmann::json& j) { j["camera"]["up"] = {0, 0, 0}; }));
+    EXPECT_EQ(up.rfind("r.json: camera.up: ", 0), 0u) << up;
+    const std::string fov = refusal(renderRecord([](nlohmann::json& j) { j["camera"]["fov_y_degrees"] = 0; }));
+    EXPECT_EQ(fov.rfind("r.json: camera.fov_y_degrees: ", 0), 0u) << fov;
+    const std::string at = refusal(renderRecord([](nlohmann::json& j) { j["camera"]["target"] = {0, 2, 8}; }));
+    EXPECT_EQ(at.rfind("r.json: camera.", 0), 0u) << at;
+    const std::string far = refusal(renderRecord([](nlohmann::json& j) { j["camera"]["far"] = 0.05; }));
+    EXPECT_EQ(far.rfind("r.json: camera.far: ", 0), 0u) << far;
+}
+
+// Paths in a record are relative to its folder: written so, read so (then
+// the working directory, for records written before).
+TEST(ExperimentRecord, ScenePathsAreRelativeToTheRecordsFolder) {
+    const fs::path dir = test::tempDir() / "record-paths";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "scenes");
+    fs::create_directories(dir / "out");
+    writeFile(dir / "scenes" / "s.json", R"({"objects": [{"shape": "box"}]})");
+    ExperimentRecord r;
+    r.sceneSpec = (dir / "scenes" / "s.json").lexically_relative(fs::current_path()).string();
+    ASSERT_FALSE(fs::path(r.sceneSpec).is_absolute());
+    r.sceneSource = r.sceneSpec;
+    r.sceneFiles = {{r.sceneSpec, "ab"}};
+    r.width = 32;
+    r.height = 18;
+    const nlohmann::json j = nlohmann::json::parse(r.json((dir / "out" / "r.json").string()));
+    EXPECT_EQ(j["scene"]["spec"], "../scenes/s.json");
+    EXPECT_EQ(j["scene"]["source"], "../scenes/s.json");
+    EXPECT_EQ(j["scene"]["files"][0]["path"], "../scenes/s.json");
+    // Built-in scenes and absolute paths stay as they are; without a destination nothing moves.
+    ExperimentRecord b = r;
+    b.sceneSpec = "street";
+    b.sceneSource = "builtin:street";
+    b.sceneFiles = {{(dir / "scenes" / "s.json").string(), "ab"}};
+    const nlohmann::json jb = nlohmann::json::parse(b.json((dir / "out" / "r.json").string()));
+    EXPECT_EQ(jb["scene"]["spec"], "street");
+    EXPECT_EQ(jb["scene"]["source"], "builtin:street");
+    EXPECT_EQ(jb["scene"]["files"][0]["path"], (dir / "scenes" / "s.json").string());
+    EXPECT_EQ(nlohmann::json::parse(r.json())["scene"]["spec"], r.sceneSpec);
+
+    // Read back from wherever the record is: against its folder.
+    r.write((dir / "out" / "r.json").string());
+    const ExperimentRecord back = ExperimentRecord::read((dir / "out" / "r.json").string());
+    EXPECT_TRUE(fs::equivalent(back.sceneSpec, dir / "scenes" / "s.json")) << back.sceneSpec;
+    EXPECT_TRUE(fs::equivalent(back.sceneFiles[0].path, dir / "scenes" / "s.json")) << back.sceneFiles[0].path;
+    // A record whose relative path only makes sense from the working directory still finds it there.
+    fs::create_directories(dir / "out" / "a" / "b");
+    std::ofstream(dir / "out" / "a" / "b" / "legacy.json") << r.json();
+    const ExperimentRecord old = ExperimentRecord::read((dir / "out" / "a" / "b" / "legacy.json").string());
+    EXPECT_EQ(old.sceneSpec, r.sceneSpec);
+    EXPECT_TRUE(fs::equivalent(old.sceneSpec, dir / "scenes" / "s.json"));
+}
+
+TEST(SceneFiles, TheRecordsListIsComparedWithTheLoadersByNameWithoutReadingIt) {
+    const std::vector<RecordedFile> recorded = {
+        {"/old/place/scene.json", "s1"}, {"/old/place/model/a.bin", "b1"}, {"/etc/not-a-scene-file", "x1"}};
+    const std::vector<RecordedFile> now = {
+        {"/new/place/scene.json", "s1"}, {"/new/place/model/a.bin", "b2"}, {"/new/place/model/t.png", "t2"}};
+    const std::vector<SceneFileChange> c =
+        compareSceneFiles(recorded, "/old/place/scene.json", now, "/new/place/scene.json");
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_EQ(c[0].kind, SceneFileChange::Kind::Changed);
+    EXPECT_EQ(c[0].path, "/new/place/model/a.bin");
+    EXPECT_EQ(c[0].oldSha256, "b1");
+    EXPECT_EQ(c[0].newSha256, "b2");
+    EXPECT_EQ(c[1].kind, SceneFileChange::Kind::Removed);
+    EXPECT_EQ(c[1].path, "/etc/not-a-scene-file");
+    EXPECT_EQ(c[1].newSha256, "");
+    EXPECT_EQ(c[2].kind, SceneFileChange::Kind::Added);
+    EXPECT_EQ(c[2].path, "/new/place/model/t.png");
+    EXPECT_TRUE(compareSceneFiles(now, "/new/place/scene.json", now, "/new/place/scene.json").empty());
 }
 
 TEST(ExperimentRecord, RefusesNewerVersionsOtherFormatsAndBadFieldsByName) {
