@@ -16,6 +16,7 @@
 #include "app/PlotScript.h"
 #include "python/WorkbenchSession.h"
 #include "renderer/bench/BenchGrid.h"
+#include "renderer/OptionLimits.h"
 #include "renderer/bench/TradeoffStudy.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ImageComparison.h"
@@ -260,6 +261,22 @@ std::vector<BenchKnobAxis> sweepAxes(const std::string& command, const std::opti
     return axes;
 }
 
+// preset=: None, a preset's name or file, or a list of them (applied in
+// order, as repeated --preset). Anything else is ValueError.
+std::vector<std::string> presetList(const py::object& preset) {
+    if (preset.is_none()) return {};
+    if (py::isinstance<py::str>(preset)) return {preset.cast<std::string>()};
+    if (py::isinstance<py::list>(preset) || py::isinstance<py::tuple>(preset)) {
+        std::vector<std::string> out;
+        for (const auto& item : preset) {
+            if (!py::isinstance<py::str>(item)) throw py::value_error("preset: a list holds presets' names or files (str)");
+            out.push_back(item.cast<std::string>());
+        }
+        return out;
+    }
+    throw py::value_error("preset: a preset's name or file, or a list of them");
+}
+
 // {knob: value} as --set assignments.
 std::vector<std::string> assignments(const std::optional<py::dict>& settings) {
     std::vector<std::string> sets;
@@ -472,16 +489,17 @@ PYBIND11_MODULE(deferred_workbench, m) {
 
     py::class_<WorkbenchSession>(m, "Session",
                                  "One scene rendered headless (EGL) at one size; knobs as the registry declares them.")
-        .def(py::init([](const std::string& scene, std::pair<int, int> size, std::optional<std::string> preset,
+        .def(py::init([](const std::string& scene, std::pair<int, int> size, py::object preset,
                          std::optional<py::dict> settings) {
                  const std::vector<std::string> sets = assignments(settings);
+                 const std::vector<std::string> presets = presetList(preset);
                  py::gil_scoped_release release;
-                 return std::make_unique<WorkbenchSession>(scene, size.first, size.second, preset.value_or(""), sets);
+                 return std::make_unique<WorkbenchSession>(scene, size.first, size.second, presets, sets);
              }),
              py::arg("scene") = "", py::arg("size") = std::make_pair(1280, 720), py::arg("preset") = py::none(),
              py::arg("settings") = py::none(),
              "scene: a built-in name, a scene .json or a .gltf/.glb ('' : the preset's, else 'default'); size: (w, h);\n"
-             "preset: a built-in preset or a preset file; settings: {knob: value} applied last (as --set).")
+             "preset: a built-in preset or a preset file, or a list of them applied in order (as repeated --preset); settings: {knob: value} applied last (as --set).")
         .def_property_readonly("size", [](const WorkbenchSession& s) { return py::make_tuple(s.width(), s.height()); })
         .def_property_readonly("scene", &WorkbenchSession::sceneName)
         .def("resize", [](WorkbenchSession& s, int w, int h) { s.resize(w, h); }, py::arg("width"), py::arg("height"))
@@ -632,12 +650,12 @@ PYBIND11_MODULE(deferred_workbench, m) {
     m.def(
         "bench",
         [](const std::string& scene, std::vector<std::pair<int, int>> sizes, std::vector<int> lights,
-           std::optional<py::dict> sweep, std::optional<std::string> preset, std::optional<py::dict> settings,
+           std::optional<py::dict> sweep, py::object preset, std::optional<py::dict> settings,
            int frames, int warmup, int block, int seed, std::optional<std::string> csv, std::optional<std::string> json,
            const std::string& ratioOf, int resamples, int orbit, bool walkthrough) {
             BenchOptions o;
             o.run.scene = scene;
-            o.run.setPreset(preset.value_or(""));
+            for (const auto& p : presetList(preset)) o.run.addPreset(p);
             o.run.sets = assignments(settings);
             o.grid.sizes = sizes.empty() ? std::vector<std::pair<int, int>>{{160, 90}} : sizes;
             for (int n : lights)
@@ -646,13 +664,13 @@ PYBIND11_MODULE(deferred_workbench, m) {
             o.grid.lights = lights;
             o.grid.knobAxes = sweepAxes("bench", sweep);
             checkKnobs(o.run.sets, o.grid.knobAxes);
-            if (frames < 1 || warmup < 0 || block < 1 || seed < 0)
-                throw Error("bench: frames and block must be at least 1, warmup and seed not negative");
+            if (!limits::kFrames.holds(frames) || !limits::kWarmup.holds(warmup) || !limits::kBlock.holds(block) || seed < 0)
+                throw Error("bench: frames and block must be between 1 and 100000, warmup between 0 and 100000, seed not negative");
             o.frames = frames;
             o.warmup = warmup;
             o.block = block;
             o.seed = static_cast<std::uint32_t>(seed);
-            if (resamples < 100) throw Error("bench: resamples must be at least 100");
+            if (!limits::kResamples.holds(resamples)) throw Error("bench: resamples must be between 100 and 1000000");
             if (orbit < 0 || (orbit > 0 && walkthrough)) throw Error("bench: orbit takes a pose count >= 0, not with walkthrough");
             o.orbit = orbit;
             o.walkthrough = walkthrough;
@@ -678,7 +696,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
 
     m.def(
         "tradeoff",
-        [](const std::string& scene, std::pair<int, int> size, std::optional<std::string> preset,
+        [](const std::string& scene, std::pair<int, int> size, py::object preset,
            std::optional<py::dict> settings, std::optional<py::dict> sweep, py::object presets,
            std::optional<std::string> knobs, py::object exclude, const std::string& against, const std::string& metric,
            const std::string& buffer, int aoRays, std::optional<std::string> mask, const std::string& time, int orbit,
@@ -687,7 +705,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
            std::pair<int, int> plotSize, bool quiet, py::object progress) {
             TradeoffStudyOptions s;
             s.run.scene = scene;
-            s.run.setPreset(preset.value_or(""));
+            for (const auto& p : presetList(preset)) s.run.addPreset(p);
             s.run.sets = assignments(settings);
             s.run.width = size.first;
             s.run.height = size.second;

@@ -1,11 +1,12 @@
 #include "python/WorkbenchSession.h"
-#include "renderer/graph/RenamedOutputs.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "app/HeadlessGlContext.h"
+#include "renderer/OptionLimits.h"
+#include "renderer/graph/RenamedOutputs.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceModel.h"
 #include "renderer/scene/SceneLoader.h"
@@ -37,13 +38,13 @@ std::string describeThread(std::thread::id id) {
 
 }  // namespace
 
-WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::string& preset,
+WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::vector<std::string>& presets,
                                    const std::vector<std::string>& settings) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         throw Error("size must be between 1x1 and 16384x16384, got " + std::to_string(width) + "x" +
                     std::to_string(height));
     run_.scene = scene;
-    run_.setPreset(preset);
+    for (const std::string& p : presets) run_.addPreset(p);
     run_.sets = settings;
     run_.width = width;
     run_.height = height;
@@ -169,8 +170,12 @@ std::vector<BufferInfo> WorkbenchSession::buffers() const {
 
 BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int warmup) {
     requireOwningThread();
-    if (frames < 1) throw Error("frames must be at least 1");
-    if (warmup < 0) throw Error("warmup must not be negative");
+    if (!limits::kFrames.holds(frames))
+        throw Error("frames must be between " + std::to_string(limits::kFrames.min) + " and " +
+                    std::to_string(limits::kFrames.max) + " (as render --frames), got " + std::to_string(frames));
+    if (!limits::kWarmup.holds(warmup))
+        throw Error("warmup must be between " + std::to_string(limits::kWarmup.min) + " and " +
+                    std::to_string(limits::kWarmup.max) + " (as render --warmup), got " + std::to_string(warmup));
     if (!session_->pipeline().outputs().find(buffer))
         throw UnknownBufferError(unknownBufferMessage(buffer) + " (Session.buffers() lists them)");
     processContext().context->makeCurrent();

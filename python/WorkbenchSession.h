@@ -63,10 +63,11 @@ struct ReferenceOptions {
 
 class WorkbenchSession {
 public:
-    // `settings`: "name=value" assignments applied after the scene's settings
-    // and the preset (as --set). Throws KnobError for a bad assignment, Error /
+    // `presets`: applied in order, a later one winning knob by knob (as
+    // repeated --preset); `settings`: "name=value" assignments applied after
+    // the scene's settings and the presets (as --set). Throws KnobError for a bad assignment, Error /
     // FileError for a bad preset or scene, GlUnsupportedError without GL 4.5.
-    WorkbenchSession(const std::string& scene, int width, int height, const std::string& preset,
+    WorkbenchSession(const std::string& scene, int width, int height, const std::vector<std::string>& presets,
                      const std::vector<std::string>& settings);
     // On another thread (a Session dropped there) the GL objects are left
     // alone, not deleted without their context.

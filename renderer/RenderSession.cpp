@@ -1,9 +1,9 @@
 #include "renderer/RenderSession.h"
-#include "renderer/graph/RenamedOutputs.h"
 
 #include <fstream>
 
 #include "renderer/Error.h"
+#include "renderer/graph/RenamedOutputs.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/scene/SceneLoader.h"
 

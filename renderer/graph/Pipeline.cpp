@@ -1,5 +1,4 @@
 #include "renderer/graph/Pipeline.h"
-#include "renderer/graph/RenamedOutputs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <set>
 
 #include "renderer/Error.h"
+#include "renderer/graph/RenamedOutputs.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/scene/Scene.h"

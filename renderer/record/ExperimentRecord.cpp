@@ -1,9 +1,10 @@
 #include "renderer/record/ExperimentRecord.h"
-#include "renderer/graph/RenamedOutputs.h"
 
 #include <sys/utsname.h>
 
 #include <algorithm>
+#include <charconv>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/TradeoffTable.h"
+#include "renderer/graph/RenamedOutputs.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
@@ -81,9 +83,12 @@ std::pair<int, int> sizeField(const std::string& t, const std::string& path, con
     const size_t x = t.find('x');
     if (x == std::string::npos) throw FileError(path, field + ": '" + t + "' is not WxH");
     auto side = [&](const std::string& s, const char* which) {
-        const nlohmann::json n = nlohmann::json::parse(s, nullptr, false);
-        if (n.is_discarded()) throw FileError(path, field + ": '" + t + "' is not WxH");
-        return wholeNumber(n, path, field + " " + which, limits::kSize, "--size");
+        long long n = 0;
+        const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+        if (s.empty() || ec == std::errc::invalid_argument || end != s.data() + s.size())
+            throw FileError(path, field + ": '" + t + "' is not WxH");
+        if (ec == std::errc::result_out_of_range) n = s[0] == '-' ? LLONG_MIN : LLONG_MAX;
+        return wholeNumber(nlohmann::json(n), path, field + " " + which, limits::kSize, "--size");
     };
     return {side(t.substr(0, x), "width"), side(t.substr(x + 1), "height")};
 }

@@ -192,9 +192,26 @@ class SessionTest(unittest.TestCase):
         with self.assertRaises(dw.Error):
             self.session.render("final", frames=0)
         with self.assertRaises(dw.Error):
+            self.session.render("final", frames=100001)  # render --frames' range, 1..100000
+        with self.assertRaises(ValueError):
+            dw.Session(scene="default", size=SIZE, preset=["Low", 3])
+        with self.assertRaises(dw.Error):
             dw.load_image(os.path.join(self.tmp.name, "absent.png"))
         with self.assertRaises(dw.Error):
             dw.compare(np.zeros((4, 4, 3), np.float32), np.zeros((5, 4, 3), np.float32))
+
+    def test_presets_apply_in_order_as_repeated_preset(self):
+        # Low sets the SSAO knobs, GTAO high only the ao and gtao groups: both
+        # apply, the later one winning where they meet (ao.method).
+        both = dw.Session(scene="default", size=SIZE, preset=["Low", "GTAO high"])
+        low = dw.Session(scene="default", size=SIZE, preset="Low")
+        self.assertEqual(both.get("ao.method"), "gtao")
+        self.assertEqual(both.get("shadows.map_size"), low.get("shadows.map_size"))
+        self.assertEqual(both.get("ssao.samples"), low.get("ssao.samples"))
+        self.assertEqual(low.get("shadows.map_size"), 512)
+        # Where two presets set the same knob, the later wins.
+        self.assertEqual(dw.Session(scene="default", size=SIZE, preset=("Low", "High")).get("shadows.map_size"), 2048)
+        self.assertEqual(dw.Session(scene="default", size=SIZE, preset=["High", "Low"]).get("shadows.map_size"), 512)
 
     def test_a_second_thread_raises(self):
         s = self.session
