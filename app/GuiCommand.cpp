@@ -15,7 +15,7 @@ int runGuiCommand(int argc, char** argv) {
     const int first = argc > 1 && std::string(argv[1]) == "gui" ? 2 : 1;
     CommandLine cl(argc, argv, first);
     if (cl.flag("--help")) {
-        std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE] [--presets DIR]\n"
+        std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE]... [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
                      "                          [--frames N [--screenshot out.png] [--events FILE]] [--layout-out FILE]\n"
                      "                          [--layout FILE]\n"

@@ -24,13 +24,14 @@ int runRenderCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
-                     "                                 [--preset NAME|FILE] [--set knob=value]... [--dump-knobs FILE]\n"
+                     "                                 [--preset NAME|FILE]... [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
                      "                                 --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
-                     "               the scene's settings and before --set; its scene is used without --scene\n"
+                     "               the scene's settings and before --set; its scene is used without --scene;\n"
+                     "               repeated, each applies in the order given, a later one's knobs winning\n"
                      "  --buffer     any named output (list buffers); default: final\n"
                      "  --out        .png writes the displayed (8-bit) view; .exr the raw float values\n"
                      "  --frames     frames counted (timings are medians over them); default 1\n"
