@@ -99,6 +99,12 @@ std::string KnobRegistry::canonicalName(const std::string& name) const {
     return name;
 }
 
+std::string KnobRegistry::aliasTarget(const std::string& name) const {
+    for (const KnobAlias& a : aliases_)
+        if (a.knob.empty() && a.oldName == name) return a.newName;
+    return {};
+}
+
 void KnobRegistry::addValueAlias(std::string knob, std::string oldValue, std::string newValue, std::string note) {
     aliases_.push_back({std::move(knob), std::move(oldValue), std::move(newValue), std::move(note)});
 }

@@ -106,6 +106,9 @@ public:
     // warning); any other name unchanged. Lets lookups by name (replay, the
     // window's Open record, Python's Session.get) take the old names too.
     std::string canonicalName(const std::string& name) const;
+    // The declared name an old knob name stands for, without a warning;
+    // empty for any other name.
+    std::string aliasTarget(const std::string& name) const;
     // Where alias warnings go (the CLI prints them; a test collects them).
     // The default prints "warning: TEXT" to stderr, each text once per process.
     // Returns the previous handler; an empty function restores the default.

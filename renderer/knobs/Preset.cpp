@@ -180,6 +180,17 @@ Preset::ApplyReport Preset::applyOver(KnobRegistry& registry,
 
 Preset::ApplyReport Preset::applyKnobs(KnobRegistry& registry) const {
     ApplyReport r;
+    // An old name beside the new one sets one knob twice, and the file's
+    // order would decide which wins: refused, both named.
+    for (const auto& [n, v] : knobs) {
+        const std::string target = registry.aliasTarget(n);
+        if (target.empty()) continue;
+        for (const auto& [other, ov] : knobs)
+            if (other == target)
+                r.ignored.push_back("knobs." + n + " and knobs." + target + " set the same knob ('" + n +
+                                    "' is the old name of '" + target + "'); give only '" + target + "'");
+    }
+    if (!r.ignored.empty()) return r;
     for (const auto& [n, v] : knobs) {
         try {
             registry.setFromString(n, v);

@@ -79,3 +79,21 @@ TEST(KnobAlias, ASceneOrPresetNamingTheOldKnobWorks) {
     EXPECT_FALSE(flag(p, "ao.enabled"));
     EXPECT_EQ(p.value(*p.find("ssao.samples")), 8.0);
 }
+
+// A preset naming a knob by its old and its new name would be decided by the
+// file's key order: refused, in either order, both names said (a new user's find).
+TEST(KnobAlias, APresetGivingTheOldAndTheNewNameIsRefusedInEitherOrder) {
+    const KnobRegistry declared = RunConfig::declaredKnobs();
+    for (const char* text : {R"({"name": "both", "knobs": {"ssao.enabled": false, "ao.enabled": true}})",
+                             R"({"name": "both", "knobs": {"ao.enabled": true, "ssao.enabled": false}})"}) {
+        const Preset preset = Preset::fromJson(text, "both.json");
+        KnobRegistry k = declared;
+        const double before = k.value(*k.find("ao.enabled"));
+        const Preset::ApplyReport r = preset.applyKnobs(k);
+        ASSERT_EQ(r.ignored.size(), 1u) << text;
+        EXPECT_NE(r.ignored[0].find("knobs.ssao.enabled and knobs.ao.enabled set the same knob"), std::string::npos)
+            << r.ignored[0];
+        EXPECT_EQ(r.applied, 0);
+        EXPECT_EQ(k.value(*k.find("ao.enabled")), before);  // nothing applied
+    }
+}
