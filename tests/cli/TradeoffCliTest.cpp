@@ -210,6 +210,29 @@ TEST(TradeoffCli, ShardsMergeToOneRunsTable) {
     EXPECT_EQ(refused.code, 2) << refused.out;
     EXPECT_NE(refused.err.find("no sweep to run again"), std::string::npos) << refused.err;
 
+    // A missing shard is said (the shards' records beside their CSVs say which they are).
+    const Result one = run("tradeoff merge " + (dir() / "shard0.csv").string() + " --out " + (dir() / "one.csv").string());
+    ASSERT_EQ(one.code, 0) << one.err;
+    EXPECT_NE(one.err.find("tradeoff merge: warning: shard(s) 1 of 2 are not among the inputs"), std::string::npos)
+        << one.err;
+    EXPECT_EQ(m.err.find("warning"), std::string::npos) << m.err;
+    // A shard of another run (here: another metric) is refused, naming both files and the field.
+    {
+        std::ifstream in(dir() / "shard1.csv");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string csv = text.str();
+        for (size_t at = csv.find(",rms,"); at != std::string::npos; at = csv.find(",rms,", at)) csv.replace(at, 5, ",flip,");
+        std::ofstream(dir() / "other-run.csv") << csv;
+    }
+    const Result other = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " +
+                             (dir() / "other-run.csv").string() + " --out " + (dir() / "other.csv").string());
+    EXPECT_NE(other.code, 0);
+    EXPECT_NE(other.err.find("other-run.csv: comes from another tradeoff run than " + (dir() / "shard0.csv").string() +
+                             " (metric 'flip' against 'rms')"),
+              std::string::npos)
+        << other.err;
+
     // Merging a shard twice is refused, naming both.
     const Result twice = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " + (dir() / "shard0.csv").string() +
                              " --out " + (dir() / "twice.csv").string());
