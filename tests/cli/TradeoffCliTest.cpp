@@ -320,6 +320,23 @@ TEST(TradeoffCli, ReusedShadowMapsAreTimedInTheLightingPassAndMarked) {
     EXPECT_EQ(r.out.find("(reused"), r.out.rfind("(reused")) << "only the reused row is marked\n" << r.out;
 }
 
+// Issue 23: --mask shadow_edges on a scene without a shadow edge (the
+// normals-minus-z floor, lit by point lights that cast none) leaves every
+// camera without an error: the run fails with the reason, even with --quiet,
+// instead of writing an empty plot.
+TEST(TradeoffCli, NoErrorOnAnyCameraFailsClearly) {
+    const Result r = run("tradeoff --scene " + (test::scenesDir() / "normals-minus-z.json").string() +
+                         " --size 64x36 --orbit 2 --sweep ssao.samples=4,8 --mask shadow_edges --buffer shadow "
+                         "--metric rms --frames 1 --warmup 0 --resamples 100 --quiet" +
+                         files("no-error"));
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.err.find("no camera of any point has an error, so there is no front to plot (point 0, camera 0: the "
+                         "mask selects no pixel; and 3 more like it)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir() / "no-error.png"));
+}
+
 // compare --against reference --buffer shadow: lighting.shadow against the
 // reference's shadow rays, one channel, close but not equal (the map's edges).
 TEST(TradeoffCli, CompareAgainstTheReferenceShadowBuffer) {
