@@ -3,6 +3,7 @@
 // which settings are on the Pareto front; `tradeoff merge` joins shards.
 // docs/tradeoffs.md says how to run it and what each column means.
 #include <climits>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -20,8 +21,10 @@
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
+#include "renderer/bench/TradeoffShards.h"
 #include "renderer/bench/TradeoffStudy.h"
 #include "renderer/bench/TradeoffTable.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -187,6 +190,52 @@ std::vector<std::string> listOf(const std::string& flag, const std::string& text
     }
 }
 
+// What an input of `tradeoff merge` says of the run it comes from
+// (TradeoffShards): the fields its rows hold, and its record's grid (the
+// input itself, or <name>.json beside a CSV) when there is one.
+TradeoffShardInput shardInput(const std::string& name, const TradeoffTable& t) {
+    TradeoffShardInput in;
+    in.name = name;
+    std::set<std::string> metrics, buffers, cameras;
+    for (const auto& r : t.rows) {
+        metrics.insert(r.metric);
+        buffers.insert(r.buffer);
+        if (r.camera != TradeoffTable::kAllCameras) cameras.insert(r.camera);
+    }
+    auto joined = [](const std::set<std::string>& s) {
+        std::string text;
+        for (const auto& v : s) text += (text.empty() ? "" : ",") + v;
+        return text;
+    };
+    std::string axes;
+    for (const auto& a : t.axes) axes += (axes.empty() ? "" : ",") + a;
+    in.fields.emplace_back("axes", axes);
+    if (!t.rows.empty()) {
+        in.fields.emplace_back("metric", joined(metrics));
+        in.fields.emplace_back("buffer", joined(buffers));
+        in.fields.emplace_back("cameras", std::to_string(cameras.size()) + " (" + joined(cameras) + ")");
+    }
+    const std::string record =
+        isRecordFile(name) ? name : std::filesystem::path(name).replace_extension(".json").string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(record, ec)) return in;
+    const nlohmann::json j = readJsonFile(record, {kMaxJsonDepth, false});
+    if (!j.is_object() || j.value("command", std::string()) != "tradeoff") return in;
+    if (j.contains("size") && j["size"].is_array() && j["size"].size() == 2)
+        in.fields.emplace_back("size", j["size"][0].dump() + "x" + j["size"][1].dump());
+    if (!j.contains("grid") || !j["grid"].is_object() || j["grid"].contains("merged")) return in;
+    const nlohmann::json& g = j["grid"];
+    auto text = [&](const char* key) { return g.contains(key) ? (g[key].is_string() ? g[key].get<std::string>() : g[key].dump()) : ""; };
+    if (g.contains("against")) in.fields.emplace_back("against", text("against").empty() || text("against") == "[]" ? "reference" : text("against"));
+    nlohmann::json grid = nlohmann::json::object();
+    for (const char* key : {"axes", "one_at_a_time", "centre", "exclude"})
+        if (g.contains(key)) grid[key] = g[key];
+    in.fields.emplace_back("grid", grid.dump());
+    in.fields.emplace_back("camera path", "orbit " + text("orbit") + ", walkthrough " + text("walkthrough"));
+    in.shard = text("shard");
+    return in;
+}
+
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3);
     if (cl.flag("--help")) {
@@ -217,6 +266,10 @@ int runMerge(int argc, char** argv) {
             parts.push_back(TradeoffTable::readCsv(in));
         }
     }
+    // Shards of other runs are refused, missing shards said (as bench merge does).
+    std::vector<TradeoffShardInput> described;
+    for (size_t i = 0; i < inputs.size(); ++i) described.push_back(shardInput(inputs[i], parts[i]));
+    for (const auto& w : TradeoffShards::check(described)) std::fprintf(stderr, "tradeoff merge: warning: %s\n", w.c_str());
     const TradeoffTable all = TradeoffTable::merge(parts, inputs, time);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;

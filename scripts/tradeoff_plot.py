@@ -164,15 +164,32 @@ def main():
         if not shown:
             cameras = sorted({r["camera"] for r in rows})
             shown = [r for r in rows if r["camera"] == cameras[0]] if cameras else []
-        return [r for r in shown if math.isfinite(r["ms"]) and math.isfinite(r["error"])]
+        # A PSNR of inf (an image identical to the one measured against) is the best error
+        # there is: kept, and drawn at the top (place_infinite).
+        return [r for r in shown if math.isfinite(r["ms"])
+                and (math.isfinite(r["error"]) or (r["error"] == math.inf and r["metric"] == "psnr"))]
+
+    def place_infinite(groups):
+        """Puts the rows with a PSNR of inf at a finite height above every finite one; returns it (None: none)."""
+        all_rows = [r for g in groups for r in g]
+        if not any(r["error"] == math.inf for r in all_rows):
+            return None
+        finite = [v for r in all_rows for v in (r["error"], r["lo"], r["hi"]) if math.isfinite(v)]
+        top = max(finite) + max(1.0, 0.1 * abs(max(finite))) if finite else 100.0
+        for r in all_rows:
+            if r["error"] == math.inf:
+                r["error"], r["lo"], r["hi"], r["inf"] = top, math.nan, math.nan, True
+        return top
 
     shown = shown_rows(rows)
+    infinite_at = place_infinite([shown] + [shown_rows(o_rows) for _, o_rows in overlays])
     # Only the axes that vary name the points.
     varying = [i for i, _ in enumerate(axes) if len({tuple([r["values"][i]]) for r in shown}) > 1]
 
     def label(r):
         parts = [f"{axes[i]}={r['values'][i]}" if axes[i] != "preset" else r["values"][i] for i in varying]
-        return ", ".join(parts) if parts else f"point {r['point']}"
+        text = ", ".join(parts) if parts else f"point {r['point']}"
+        return text + " (PSNR inf)" if r.get("inf") else text
 
     dpi = 100
     fig, ax = plt.subplots(figsize=(width / dpi, height / dpi), dpi=dpi)
@@ -194,8 +211,15 @@ def main():
     overlay_points = []
     if front:
         ax.plot([r["ms"] for r in front], [r["error"] for r in front], "-", color="tab:red", alpha=0.5, zorder=1)
+    if infinite_at is not None:
+        ax.axhline(infinite_at, color="tab:blue", linestyle=":", linewidth=1, zorder=0)
+        ax.annotate("PSNR inf (identical image)", xy=(0.01, infinite_at), xycoords=("axes fraction", "data"),
+                    xytext=(0, -3), textcoords="offset points", va="top", fontsize=7, color="tab:blue")
     for k, (o_axes, o_rows) in enumerate(overlays):
         o_points = shown_rows(o_rows)
+        for r in o_points:
+            if r["error"] == math.inf:
+                r["error"], r["lo"], r["hi"] = infinite_at, math.nan, math.nan
         if not o_points:
             continue
         o_vary = [i for i, _ in enumerate(o_axes) if len({r["values"][i] for r in o_points}) > 1]

@@ -76,7 +76,13 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
         k.applyAssignment(knob + "=" + value);
         return k.format(*k.find(knob));
     };
-    for (auto& axis : o_.grid.knobAxes) {
+    for (size_t a = 0; a < o_.grid.knobAxes.size(); ++a) {
+        auto& axis = o_.grid.knobAxes[a];
+        // An old knob name (KnobRegistry::addAlias) sweeps the new knob, with --set's warning;
+        // the column is named by the new name.
+        axis.knob = declared.canonicalName(axis.knob);
+        for (size_t b = 0; b < a; ++b)
+            if (o_.grid.knobAxes[b].knob == axis.knob) throw Error("--sweep " + axis.knob + " is given twice");
         if (!declared.find(axis.knob)) throw Error("--sweep: unknown knob '" + axis.knob + "' (see: list knobs)");
         for (size_t i = 0; i < axis.values.size(); ++i) {
             const std::string given = axis.values[i];

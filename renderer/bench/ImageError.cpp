@@ -116,16 +116,21 @@ ErrorEstimate ImageError::measure(const FloatImage& reference, const FloatImage&
 
 ErrorEstimate ImageError::meanOver(const std::vector<double>& values, int resamples, std::uint64_t seed) {
     ErrorEstimate e;
+    // The cameras with an error (NaN: that camera has none, e.g. no masked pixel).
     std::vector<double> finite;
     for (double v : values)
-        if (std::isfinite(v)) finite.push_back(v);
-    if (finite.size() != values.size() || finite.empty()) {
+        if (!std::isnan(v)) finite.push_back(v);
+    if (finite.empty()) {
         e.value = e.low = e.high = kNaN;
         return e;
     }
     double sum = 0.0;
     for (double v : finite) sum += v;
     e.value = sum / static_cast<double>(finite.size());
+    if (!std::isfinite(e.value)) {  // a PSNR of inf on a camera: the mean is inf, with no interval
+        e.low = e.high = kNaN;
+        return e;
+    }
     const Interval i = bootstrapGroupMean(finite, std::vector<double>(finite.size(), 1.0), resamples, seed);
     e.low = i.low;
     e.high = i.high;

@@ -40,7 +40,10 @@ public:
     // when the mask's shape differs or it selects no pixel.
     static ErrorEstimate measure(const FloatImage& reference, const FloatImage& test, const std::string& metric, bool hdr,
                                  int resamples = 2000, std::uint64_t seed = 12345, const FloatImage* mask = nullptr);
-    // The mean of per-camera errors with a percentile bootstrap over the cameras.
+    // The mean of per-camera errors with a percentile bootstrap over the
+    // cameras that have one: NaN values (a camera without an error) are left
+    // out; all NaN (or none given) gives NaN. A mean that is infinite (a PSNR
+    // of inf on a camera) has no interval (NaN low and high).
     static ErrorEstimate meanOver(const std::vector<double>& values, int resamples = 2000, std::uint64_t seed = 12345);
 };
 

@@ -12,7 +12,10 @@ ParetoFront::ParetoFront(const std::vector<ParetoPoint>& points) : onFront_(poin
     std::vector<size_t> order;
     order.reserve(points.size());
     for (size_t i = 0; i < points.size(); ++i)
-        if (std::isfinite(points[i].cost) && std::isfinite(points[i].error)) order.push_back(i);
+        // An error of -inf is the best there is (PSNR inf, flipped: the image is identical), so
+        // such a point is ranked like any other; NaN and +inf errors are not errors measured.
+        if (std::isfinite(points[i].cost) && !std::isnan(points[i].error) && points[i].error != HUGE_VAL)
+            order.push_back(i);
     // Left to right: cost ascending, then error, then index (a stable order for duplicates).
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
         if (points[a].cost != points[b].cost) return points[a].cost < points[b].cost;

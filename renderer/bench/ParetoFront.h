@@ -9,8 +9,10 @@
 //   strictly lower on at least one of the two.
 // So of two points with the same cost the one with the larger error is off
 // the front; exact duplicates dominate neither the other and are both on it;
-// a single point is its own front. A point with a coordinate that is not a
-// finite number is never on the front and dominates nothing.
+// a single point is its own front. An error of -inf is the lowest error
+// there is (a PSNR of inf, flipped: an image identical to the one measured
+// against) and ranks as such. A point whose cost is not a finite number, or
+// whose error is NaN or +inf, is never on the front and dominates nothing.
 // Needs no GL.
 #include <cstddef>
 #include <vector>

@@ -88,6 +88,9 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     // Each axis: a knob (values written as the knob writes them), the presets, or a clip plane.
     for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
         TradeoffAxis& axis = o_.sweep.axes[a];
+        // An old knob name (KnobRegistry::addAlias) sweeps the new knob, with --set's warning;
+        // the column is named by the new name.
+        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name)) axis.name = declared.canonicalName(axis.name);
         for (size_t b = 0; b < a; ++b)
             if (o_.sweep.axes[b].name == axis.name) throw Error("--sweep " + axis.name + " is given twice");
         for (size_t i = 0; i < axis.values.size(); ++i) {
@@ -363,6 +366,14 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             row.metric = o_.metric;
             row.buffer = bufferColumn;
             const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
+            // The mean over the cameras that have an error, saying so when some have none.
+            const auto measured = std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); });
+            if (measured > 0 && measured < cameraCount) {
+                notes.push_back("point " + std::to_string(points_[p].index) + ": the all-cameras error is the mean over " +
+                                std::to_string(measured) + " of " + std::to_string(cameraCount) +
+                                " cameras (the others have no error)");
+                say("tradeoff: " + notes.back());
+            }
             row.error = e.value;
             row.errorLo = e.low;
             row.errorHi = e.high;
@@ -370,6 +381,12 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             t.rows.push_back(std::move(row));
         }
     }
+    // No error anywhere: no front and nothing to plot, so the study fails (the notes say why).
+    if (!t.rows.empty() &&
+        std::none_of(t.rows.begin(), t.rows.end(), [](const TradeoffRow& r) { return !std::isnan(r.error); }))
+        throw Error("tradeoff: no camera of any point has an error, so there is no front to plot (" +
+                    (notes.empty() ? std::string("no note") : notes.front()) +
+                    (notes.size() > 1 ? "; and " + std::to_string(notes.size() - 1) + " more like it" : "") + ")");
     if (!t.rows.empty()) t.markParetoFront(o_.time);
 
     std::string sets;

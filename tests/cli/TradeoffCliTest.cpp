@@ -210,6 +210,29 @@ TEST(TradeoffCli, ShardsMergeToOneRunsTable) {
     EXPECT_EQ(refused.code, 2) << refused.out;
     EXPECT_NE(refused.err.find("no sweep to run again"), std::string::npos) << refused.err;
 
+    // A missing shard is said (the shards' records beside their CSVs say which they are).
+    const Result one = run("tradeoff merge " + (dir() / "shard0.csv").string() + " --out " + (dir() / "one.csv").string());
+    ASSERT_EQ(one.code, 0) << one.err;
+    EXPECT_NE(one.err.find("tradeoff merge: warning: shard(s) 1 of 2 are not among the inputs"), std::string::npos)
+        << one.err;
+    EXPECT_EQ(m.err.find("warning"), std::string::npos) << m.err;
+    // A shard of another run (here: another metric) is refused, naming both files and the field.
+    {
+        std::ifstream in(dir() / "shard1.csv");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string csv = text.str();
+        for (size_t at = csv.find(",rms,"); at != std::string::npos; at = csv.find(",rms,", at)) csv.replace(at, 5, ",flip,");
+        std::ofstream(dir() / "other-run.csv") << csv;
+    }
+    const Result other = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " +
+                             (dir() / "other-run.csv").string() + " --out " + (dir() / "other.csv").string());
+    EXPECT_NE(other.code, 0);
+    EXPECT_NE(other.err.find("other-run.csv: comes from another tradeoff run than " + (dir() / "shard0.csv").string() +
+                             " (metric 'flip' against 'rms')"),
+              std::string::npos)
+        << other.err;
+
     // Merging a shard twice is refused, naming both.
     const Result twice = run("tradeoff merge " + (dir() / "shard0.csv").string() + " " + (dir() / "shard0.csv").string() +
                              " --out " + (dir() / "twice.csv").string());
@@ -295,6 +318,23 @@ TEST(TradeoffCli, ReusedShadowMapsAreTimedInTheLightingPassAndMarked) {
     EXPECT_FALSE(std::isfinite(t.passGpuMs(t.rows[1], "lighting/shadow maps")));  // kept: drawn by the shadows pass
     EXPECT_NE(r.out.find("(reused: maps in lighting/shadow maps, "), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("(reused"), r.out.rfind("(reused")) << "only the reused row is marked\n" << r.out;
+}
+
+// Issue 23: --mask shadow_edges on a scene without a shadow edge (the
+// normals-minus-z floor, lit by point lights that cast none) leaves every
+// camera without an error: the run fails with the reason, even with --quiet,
+// instead of writing an empty plot.
+TEST(TradeoffCli, NoErrorOnAnyCameraFailsClearly) {
+    const Result r = run("tradeoff --scene " + (test::scenesDir() / "normals-minus-z.json").string() +
+                         " --size 64x36 --orbit 2 --sweep ssao.samples=4,8 --mask shadow_edges --buffer shadow "
+                         "--metric rms --frames 1 --warmup 0 --resamples 100 --quiet" +
+                         files("no-error"));
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.err.find("no camera of any point has an error, so there is no front to plot (point 0, camera 0: the "
+                         "mask selects no pixel; and 3 more like it)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir() / "no-error.png"));
 }
 
 // compare --against reference --buffer shadow: lighting.shadow against the

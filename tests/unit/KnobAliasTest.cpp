@@ -6,6 +6,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
+#include "renderer/bench/TradeoffRunner.h"
 #include "renderer/knobs/Preset.h"
 #include "tests/support/TestSupport.h"
 
@@ -96,4 +97,22 @@ TEST(KnobAlias, APresetGivingTheOldAndTheNewNameIsRefusedInEitherOrder) {
         EXPECT_EQ(r.applied, 0);
         EXPECT_EQ(k.value(*k.find("ao.enabled")), before);  // nothing applied
     }
+}
+
+// Issue 23: --sweep (and a Python sweep dict) takes the old knob name: the
+// axis is the new knob, named by the new name, with --set's warning.
+TEST(KnobAlias, ASweepOfTheOldKnobNameSweepsTheNewOne) {
+    Warnings w;
+    TradeoffOptions o;
+    o.run.width = 64;
+    o.run.height = 48;
+    o.sweep.axes = {{"ssao.enabled", {"true", "false"}}};
+    const TradeoffRunner runner(o);
+    ASSERT_EQ(runner.options().sweep.axes.size(), 1u);
+    EXPECT_EQ(runner.options().sweep.axes[0].name, "ao.enabled");
+    EXPECT_EQ(runner.points().size(), 2u);
+    EXPECT_TRUE(w.contains("knob 'ssao.enabled' is now 'ao.enabled'"));
+    // The old and the new name together are one axis given twice.
+    o.sweep.axes = {{"ssao.enabled", {"true"}}, {"ao.enabled", {"false"}}};
+    EXPECT_THROW(TradeoffRunner{o}, Error);
 }

@@ -134,7 +134,9 @@ TEST(ImageError, MetricsAndTheirIntervals) {
     EXPECT_DOUBLE_EQ(mean.value, 2.0);
     EXPECT_GE(mean.low, 1.0);
     EXPECT_LE(mean.high, 3.0);
-    EXPECT_TRUE(std::isnan(ImageError::meanOver({1.0, NAN}).value));
+    // A camera without an error is left out of the mean (issue 23), not the whole mean lost.
+    EXPECT_DOUBLE_EQ(ImageError::meanOver({1.0, NAN}).value, 1.0);
+    EXPECT_TRUE(std::isnan(ImageError::meanOver({NAN, NAN}).value));
 
     const MedianInterval m = bootstrapMedian({1.0, 2.0, 3.0, 4.0, 100.0}, 500);
     EXPECT_TRUE(m.valid());

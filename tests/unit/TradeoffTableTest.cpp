@@ -6,7 +6,9 @@
 #include <random>
 
 #include "renderer/Error.h"
+#include "renderer/bench/ImageError.h"
 #include "renderer/bench/ParetoFront.h"
+#include "renderer/bench/TradeoffShards.h"
 #include "renderer/bench/TradeoffTable.h"
 
 using namespace dw;
@@ -353,4 +355,70 @@ TEST(TradeoffTable, ShardsMergeToOneTable) {
     } catch (const Error& e) {
         EXPECT_STREQ(e.what(), "no points to compare: the sweep is empty");
     }
+}
+
+// Issue 23: a PSNR of inf (an image identical to the one measured against) is
+// the best error there is, so it is on the front; NaN and +inf errors are not.
+TEST(ParetoFront, InfinitePsnrIsOnTheFront) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    // Flipped PSNR: -inf is the lowest error. The slow identical point is on the front.
+    EXPECT_EQ(frontOf({{1.0, -30.0}, {5.0, -kInf}, {6.0, -kInf}, {2.0, -35.0}}), (std::vector<size_t>{0, 3, 1}));
+    EXPECT_EQ(frontOf({{1.0, kInf}, {2.0, 0.5}, {0.5, kNaN}}), (std::vector<size_t>{1}));
+
+    TradeoffTable t;
+    t.axes = {"ssao.samples"};
+    for (int p = 0; p < 3; ++p) {
+        TradeoffRow r = row(p, {std::to_string(8 << p)}, "0", p == 2 ? kInf : 20.0 + p, 1.0 + p);
+        r.metric = "psnr";
+        t.rows.push_back(r);
+    }
+    t.markParetoFront();
+    EXPECT_TRUE(t.rows[0].pareto);
+    EXPECT_TRUE(t.rows[1].pareto);
+    EXPECT_TRUE(t.rows[2].pareto);  // the most expensive, but PSNR inf: nothing beats it on error
+    const TradeoffTable back = TradeoffTable::parseCsv(t.csv(), "t.csv");
+    EXPECT_EQ(back.rows[2].error, kInf);
+}
+
+// Issue 23: tradeoff merge refuses shards of other runs, naming both files and
+// the field, and says which shards are missing.
+TEST(TradeoffShards, OtherRunsAreRefusedAndMissingShardsSaid) {
+    auto input = [](const std::string& name, const std::string& metric, const std::string& shard) {
+        TradeoffShardInput in;
+        in.name = name;
+        in.fields = {{"axes", "ssao.samples"}, {"metric", metric}, {"buffer", "ao"}, {"cameras", "2 (0,1)"}};
+        in.shard = shard;
+        return in;
+    };
+    EXPECT_TRUE(TradeoffShards::check({input("a.csv", "rms", "0/2"), input("b.csv", "rms", "1/2")}).empty());
+    try {
+        TradeoffShards::check({input("a.csv", "rms", "0/2"), input("b.csv", "flip", "1/2")});
+        FAIL() << "shards of two runs merged";
+    } catch (const FileError& e) {
+        EXPECT_STREQ(e.what(), "b.csv: comes from another tradeoff run than a.csv (metric 'flip' against 'rms'): shards of "
+                               "different runs do not merge");
+    }
+    TradeoffShardInput sized = input("c.json", "rms", "");
+    sized.fields.emplace_back("size", "64x48");
+    TradeoffShardInput other = input("d.json", "rms", "");
+    other.fields.emplace_back("size", "96x54");
+    EXPECT_THROW(TradeoffShards::check({sized, other}), FileError);
+    // A field only one input holds is not compared.
+    EXPECT_NO_THROW(TradeoffShards::check({sized, input("e.csv", "rms", "")}));
+
+    const auto warnings = TradeoffShards::check({input("a.json", "rms", "0/3"), input("c.json", "rms", "2/3")});
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "shard(s) 1 of 3 are not among the inputs; their points are missing from the table");
+    EXPECT_THROW(TradeoffShards::check({input("a.json", "rms", "0/3"), input("b.json", "rms", "1/2")}), FileError);
+}
+
+// Issue 23: the all-cameras error is the mean over the cameras that have one.
+TEST(ImageError, MeanOverTheCamerasWithAnError) {
+    const ErrorEstimate e = ImageError::meanOver({0.2, kNaN, 0.4}, 200, 1);
+    EXPECT_DOUBLE_EQ(e.value, 0.3);
+    EXPECT_GE(e.high, e.low);
+    EXPECT_TRUE(std::isnan(ImageError::meanOver({kNaN, kNaN}, 200, 1).value));
+    EXPECT_TRUE(std::isnan(ImageError::meanOver({}, 200, 1).value));
+    EXPECT_EQ(ImageError::meanOver({30.0, std::numeric_limits<double>::infinity()}, 200, 1).value,
+              std::numeric_limits<double>::infinity());
 }
