@@ -21,13 +21,18 @@ ViewportComposer::ViewportComposer(RenderSession& session) : session_(session) {
     nearest_ = gl::Sampler::create(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "workbench pixel zoom");
 }
 
+glm::ivec2 ViewportComposer::targetSize(const UiState& state) {
+    if (state.wantedSize.x <= 0) return state.renderSize;
+    const float scale = state.viewport.scale();
+    return {std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
+            std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale)))};
+}
+
 void ViewportComposer::render(UiState& state) {
     Pipeline& pipeline = session_.pipeline();
     // The render size: the viewport panel's, times the resolution scale.
     if (state.wantedSize.x > 0) {
-        const float scale = state.viewport.scale();
-        const glm::ivec2 target(std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
-                                std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale))));
+        const glm::ivec2 target = targetSize(state);
         if (target != state.renderSize) {
             session_.resize(target.x, target.y);
             state.renderSize = target;

@@ -66,3 +66,66 @@ TEST(AovCostGuard, RefusesAStateOverTheLimitKeepsTheLastGoodOneAndRendersItWhenC
     EXPECT_TRUE(fresh.refusing());
     EXPECT_EQ(method(), "ssao");
 }
+
+// The estimate is taken at the size the frame renders at (the viewport
+// panel's size times the resolution scale), from the first frame on, and again
+// whenever that size changes: AOV at radius 1 on the courtyard passes at
+// 160x90 (0.12 million at 80x45) and is refused at 2560x1440 (about 31
+// million at 1280x720). A confirmation holds at its size and smaller ones.
+TEST(AovCostGuard, EstimatesAtTheSizeTheFrameRendersAtAndAgainWhenItChanges) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    KnobRegistry& k = session->knobs();
+    auto method = [&] { return k.spec(*k.find("ao.method")).choices[static_cast<size_t>(k.value(*k.find("ao.method")))]; };
+    k.setFromString("ao.method", "aov");
+
+    // The first frame: nothing rendered yet (renderSize 0x0), the panel wants 2560x1440.
+    {
+        ui::AovCostGuard guard;
+        state.renderSize = {0, 0};
+        state.wantedSize = {2560, 1440};
+        guard.beforeFrame(state, *session);
+        EXPECT_TRUE(guard.refusing());
+        EXPECT_NE(guard.message().find("at 1280x720"), std::string::npos) << guard.message();
+        EXPECT_EQ(method(), "ssao");
+    }
+
+    // Passes at 160x90; the same knobs, camera and scene at 2560x1440 are estimated again and refused.
+    k.setFromString("ao.method", "aov");
+    ui::AovCostGuard guard;
+    state.renderSize = {160, 90};
+    state.wantedSize = {160, 90};
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+    state.wantedSize = {2560, 1440};
+    guard.beforeFrame(state, *session);
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_NE(guard.message().find("at 1280x720"), std::string::npos) << guard.message();
+    EXPECT_EQ(method(), "ssao");
+
+    // Confirmed at 2560x1440: kept there and at a smaller size; a larger one asks again.
+    guard.confirm(state, *session);
+    EXPECT_EQ(method(), "aov");
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    state.wantedSize = {1280, 720};
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+    state.wantedSize = {3840, 2160};
+    guard.beforeFrame(state, *session);
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_EQ(method(), "ssao");
+
+    // The resolution scale is part of the size: quarter of 2560x1440 is 640x360, 2 million at 320x180.
+    guard.dismiss(state);
+    k.setFromString("ao.method", "aov");
+    state.wantedSize = {2560, 1440};
+    state.viewport.resolution = ui::ResolutionScale::Quarter;
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+}
+
