@@ -11,7 +11,8 @@
 // banner over the viewport), and shows a small window with the estimate and
 // two buttons: render the new state anyway (it is then kept until the knobs
 // change again or the frame grows past the size it was confirmed at) or keep
-// the previous one. The A/B split's preset side and the Pareto panel's sweeps
+// the previous one. The A/B split's preset side is estimated where it
+// renders (ViewportComposer: B refused, A kept); the Pareto panel's sweeps
 // render knob states of their own and are not guarded.
 #include <cstdint>
 #include <string>

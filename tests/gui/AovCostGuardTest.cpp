@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/TestSupport.h"
+#include "ui/ViewportComposer.h"
 #include "ui/AovCostGuard.h"
 #include "ui/UiState.h"
 
@@ -129,3 +130,29 @@ TEST(AovCostGuard, EstimatesAtTheSizeTheFrameRendersAtAndAgainWhenItChanges) {
     EXPECT_EQ(method(), "aov");
 }
 
+// The A/B split's preset side renders a knob state of its own: over the
+// limits (AOV1 on the spheres: radius 1 world unit, about 2600 a pixel) B
+// is not rendered, the numbers line says why, and A renders as before.
+TEST(AovCostGuard, TheAbPresetSideOverTheLimitIsRefusedAndAIsKept) {
+    auto session = test::makeSession(32, 18);
+    ui::UiState state;
+    session->loadScene("spheres", state.run);
+    state.wantedSize = {32, 18};
+    state.ab.enabled = true;
+    state.ab.source = ui::AbSource::Preset;
+    state.ab.preset = "AOV1";
+    ui::ViewportComposer composer(*session);
+    const std::uint64_t before = state.framesRendered;
+    composer.render(state);
+    EXPECT_GT(state.framesRendered, before);
+    EXPECT_NE(state.ab.unavailable.find("preset 'AOV1' not rendered: aov: about "), std::string::npos)
+        << state.ab.unavailable;
+    EXPECT_NE(state.ab.unavailable.find("a frame on llvmpipe"), std::string::npos) << state.ab.unavailable;
+    // A's knobs are untouched.
+    const KnobRegistry& k = session->knobs();
+    EXPECT_EQ(k.spec(*k.find("ao.method")).choices[static_cast<size_t>(k.value(*k.find("ao.method")))], "ssao");
+    // The same preset on the courtyard at this size is under the limits: B renders.
+    session->loadScene("default", state.run);
+    composer.render(state);
+    EXPECT_EQ(state.ab.unavailable.find("not rendered"), std::string::npos) << state.ab.unavailable;
+}
