@@ -85,6 +85,7 @@ void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
     }
     lastGood_ = values(session);
     checkedGeneration_ = session.knobs().generation();
+    ++state.knobsPutBack;
     state.log.error(message_ + ". The previous settings are kept; 'Render AOV anyway' in the window 'AOV cost' "
                                "renders it",
                     state.time, "aov cost");

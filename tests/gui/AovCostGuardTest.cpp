@@ -4,7 +4,9 @@
 // kept until the knobs change; a state under the limits passes.
 #include <gtest/gtest.h>
 
+#include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
+#include "ui/TimingsPanel.h"
 #include "ui/ViewportComposer.h"
 #include "ui/AovCostGuard.h"
 #include "ui/UiState.h"
@@ -128,6 +130,65 @@ TEST(AovCostGuard, EstimatesAtTheSizeTheFrameRendersAtAndAgainWhenItChanges) {
     guard.beforeFrame(state, *session);
     EXPECT_FALSE(guard.refusing());
     EXPECT_EQ(method(), "aov");
+}
+
+// The guard's own undo is no change of the user's: the timings panel shows
+// the change before the refused one, and forgets a refused change (measure
+// would render the refused state).
+TEST(AovCostGuard, PuttingTheKnobsBackIsNoMeasurableChange) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    state.renderSize = {160, 90};
+    test::HeadlessImGui imgui;
+    ui::TimingsPanel panel;
+    ui::AovCostGuard guard;
+    bool open = true;
+    KnobRegistry& k = session->knobs();
+    // The window's order: the guard, then the panels (where the user edits).
+    auto frame = [&] {
+        guard.beforeFrame(state, *session);
+        imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    };
+    frame();
+    k.setFromString("ssao.samples", "64");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ssao.samples 16 -> 64");
+
+    // A change the guard lets through is the user's.
+    k.setFromString("ao.method", "aov");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ao.method ssao -> aov");
+
+    // Refused (radius 20): committed in the panel as the user's, then put back by the guard.
+    k.setFromString("aov.radius", "20");
+    imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 20");
+    frame();
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_EQ(k.value(*k.find("aov.radius")), 1.0);
+    EXPECT_FALSE(panel.change) << panel.change->what;  // neither "aov.radius 20 -> 1" nor the refused change
+    panel.startMeasure(state, *session);
+    EXPECT_FALSE(state.measure.active());
+    frame();
+    EXPECT_FALSE(panel.change);
+
+    // Refused in the same frame it was set (a scripted --set): the earlier change stays, and no undo shows.
+    guard.dismiss(state);
+    k.setFromString("aov.radius", "2");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
+    k.setFromString("aov.radius", "20");
+    frame();
+    EXPECT_TRUE(guard.refusing());
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
+    frame();
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
 }
 
 // The A/B split's preset side renders a knob state of its own: over the
