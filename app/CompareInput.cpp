@@ -8,6 +8,7 @@
 #include "app/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/FlameParticles.h"
@@ -47,6 +48,11 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
     session_ = std::make_unique<RenderSession>();
     session_->setScene(*loaded_, input.run);
     session_->resize(input.run.width, input.run.height);
+    // AOV's cost estimated from the triangles before the side's first frame, as render does (issue 22).
+    if (const std::string w = AovCostEstimate::check(session_->knobs(), session_->scene(), session_->camera(),
+                                                     input.run.width, input.run.height);
+        !w.empty())
+        std::fprintf(stderr, "compare: warning: side %s: %s\n", input.label.c_str(), w.c_str());
     FrameRequest request;
     request.outputs = {input.buffer};
     for (int i = 0; i < input.run.warmup + input.run.frames; ++i) session_->render(request);

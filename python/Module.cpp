@@ -27,6 +27,12 @@ namespace py = pybind11;
 namespace dw {
 namespace {
 
+// A warning as Python reports one (warnings.warn, RuntimeWarning); with the
+// warnings filter set to "error" it is raised. Needs the GIL.
+void warnPython(const std::string& line) {
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 py::array toArray(const BufferImage& image) {
     const std::vector<py::ssize_t> shape = {image.height, image.width, image.channels};
     if (image.eightBit) {
@@ -562,6 +568,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
              py::arg("details") = false, "Every named output (as `list buffers`).")
         .def("render",
              [](WorkbenchSession& s, const std::string& buffer, int frames, int warmup, std::optional<std::string> record) {
+                 // AOV's cost, estimated before the first frame (issue 22), as render prints it.
+                 if (const std::string w = s.aovCostWarning(); !w.empty()) warnPython(w);
                  BufferImage image;
                  {
                      py::gil_scoped_release release;
@@ -678,7 +686,12 @@ PYBIND11_MODULE(deferred_workbench, m) {
             ExperimentRecord record;
             {
                 py::gil_scoped_release release;
-                record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results);
+                // AOV's cost warnings (issue 22) as RuntimeWarning, before the frames.
+                record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results,
+                                                       [](const std::string& line) {
+                                                           py::gil_scoped_acquire acquire;
+                                                           warnPython(line);
+                                                       });
                 if (csv) results.writeCsv(*csv);
                 if (json) writeBenchFile(*json, record.json(*json), "bench JSON");
             }

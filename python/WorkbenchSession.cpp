@@ -6,6 +6,7 @@
 
 #include "app/HeadlessGlContext.h"
 #include "renderer/OptionLimits.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceModel.h"
@@ -89,9 +90,11 @@ ExperimentRecord WorkbenchSession::record() {
 }
 
 ExperimentRecord WorkbenchSession::benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
-                                               BenchResults* measured) {
+                                               BenchResults* measured,
+                                               const std::function<void(const std::string&)>& costWarning) {
     const RecordedBench recorded{options, ratioOf, resamples};
     BenchRunner runner(std::move(options));  // checks everything that fails without GL
+    if (costWarning) runner.setCostWarning(costWarning);
     ProcessContext& pc = processContext();
     if (std::this_thread::get_id() != pc.thread)
         throw WrongThreadError("bench must run on the thread that made the GL context (thread " +
@@ -166,6 +169,10 @@ std::vector<BufferInfo> WorkbenchSession::buffers() const {
     for (const PublishedOutput& o : session_->pipeline().outputs().all())
         list.push_back({o.decl.name, toString(o.decl.kind), o.pass, o.decl.description});
     return list;
+}
+
+std::string WorkbenchSession::aovCostWarning() const {
+    return AovCostEstimate::check(session_->knobs(), session_->scene(), session_->camera(), width_, height_);
 }
 
 BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int warmup) {

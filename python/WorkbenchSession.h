@@ -6,6 +6,7 @@
 // (a context is current on one thread only): another thread gets a
 // WrongThreadError, never a call into GL without a current context.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <thread>
@@ -87,6 +88,11 @@ public:
     // Renders `warmup` + `frames` frames asking for `buffer`, keeps their
     // timings, and reads `buffer` back from the last one.
     BufferImage render(const std::string& buffer, int frames, int warmup);
+    // AOV's cost warning for the knobs, scene and camera as they are now at
+    // the session's size (AovCostEstimate::check, as render prints it);
+    // empty when under the limits or AOV is off. render() does not print it:
+    // the module warns (warnings.warn) before it renders.
+    std::string aovCostWarning() const;
     // What the last render()'s counted frames measured (empty before one).
     const std::optional<TimingReport>& timings() const { return timings_; }
     ProbeResult probe(int x, int y) const;
@@ -112,8 +118,10 @@ public:
 
     // A bench grid (BenchRunner) on the process's GL context, on its thread,
     // as the record `bench --json` writes; `measured` gets the samples (for bench --csv's file).
+    // `costWarning`: where AOV's cost warnings go (BenchRunner::setCostWarning; stderr when unset).
     static ExperimentRecord benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
-                                        BenchResults* measured = nullptr);
+                                        BenchResults* measured = nullptr,
+                                        const std::function<void(const std::string&)>& costWarning = {});
     // A tradeoff sweep (TradeoffStudy::measure) on the process's GL context,
     // on its thread (WrongThreadError elsewhere), as tradeoff measures it.
     static TradeoffMeasurement tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress);

@@ -8,6 +8,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "ui/UiState.h"
+#include "ui/ViewportComposer.h"
 
 namespace dw::ui {
 
@@ -37,18 +38,26 @@ void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
     const bool knobsChanged = checkedGeneration_ != session.knobs().generation();
     const bool cameraChanged =
         cam.position != checkedEye_ || cam.target != checkedTarget_ || cam.fovYDegrees != checkedFov_;
-    if (!sceneChanged && !knobsChanged && !(cameraChanged && state.time - checkedAt_ >= kCameraRecheckSeconds)) return;
+    // The size this frame renders at (ViewportComposer resizes to it after
+    // this call), not the last frame's: the first frames and every resize
+    // (the panel, the resolution scale) are estimated at the size they render.
+    const glm::ivec2 size = ViewportComposer::targetSize(state);
+    const int w = std::max(size.x, 16), h = std::max(size.y, 16);
+    const bool sizeChanged = glm::ivec2(w, h) != checkedSize_;
+    if (!sceneChanged && !knobsChanged && !sizeChanged &&
+        !(cameraChanged && state.time - checkedAt_ >= kCameraRecheckSeconds))
+        return;
     if (sceneChanged) {
         lastGood_.clear();
         confirmed_.clear();
     }
+    checkedSize_ = {w, h};
     checkedScene_ = &session.scene();
     checkedSource_ = session.scene().source;
     checkedEye_ = cam.position;
     checkedTarget_ = cam.target;
     checkedFov_ = cam.fovYDegrees;
     checkedAt_ = state.time;
-    const int w = std::max(state.renderSize.x, 16), h = std::max(state.renderSize.y, 16);
     const std::vector<double> now = values(session);
     auto over = [&](const KnobRegistry& knobs) -> std::optional<AovCostEstimate> {
         auto e = AovCostEstimate::forKnobs(knobs, session.scene(), cam, w, h);
@@ -57,7 +66,10 @@ void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
         return std::nullopt;
     };
     const auto estimate = over(session.knobs());
-    if (!estimate || now == confirmed_) {
+    // A confirmed state stays confirmed at its size and smaller ones; a
+    // larger frame costs more and is asked about again.
+    const bool confirmedHere = now == confirmed_ && static_cast<double>(w) * h <= confirmedPixels_;
+    if (!estimate || confirmedHere) {
         if (!estimate) lastGood_ = now;
         checkedGeneration_ = session.knobs().generation();
         return;
@@ -66,12 +78,14 @@ void AovCostGuard::beforeFrame(UiState& state, RenderSession& session) {
     // that one is over the limit too from here, to ao.method's default.
     message_ = AovCostEstimate::warning(*estimate, session.knobs(), w, h);
     refused_ = now;
+    refusedPixels_ = static_cast<double>(w) * h;
     if (!lastGood_.empty() && lastGood_ != now) restore(session, lastGood_);
     if (over(session.knobs())) {
         if (const auto m = session.knobs().find("ao.method")) session.knobs().reset(*m);
     }
     lastGood_ = values(session);
     checkedGeneration_ = session.knobs().generation();
+    ++state.knobsPutBack;
     state.log.error(message_ + ". The previous settings are kept; 'Render AOV anyway' in the window 'AOV cost' "
                                "renders it",
                     state.time, "aov cost");
@@ -98,6 +112,7 @@ void AovCostGuard::confirm(UiState& state, RenderSession& session) {
     if (refused_.empty()) return;
     restore(session, refused_);
     confirmed_ = refused_;
+    confirmedPixels_ = refusedPixels_;
     refused_.clear();
     state.log.succeeded("aov cost");
     state.log.info("AOV: rendering the state over the cost limit, as asked", state.time);

@@ -1,14 +1,18 @@
 #pragma once
 // Keeps the window from freezing on an Ambient Occlusion Volumes frame that
-// would take minutes (issue 22): before each frame, when the knobs, the scene
-// or the camera changed, it estimates AOV's volume fragments per pixel on the
-// CPU (AovCostEstimate, O(triangles)). Above AovCostEstimate::kWarnOverdraw
-// it puts the knobs back to the last state that was under the limit (or, if
-// that one is over it too with this camera, switches ao.method back to its
-// default), says so in the message log (the banner over the viewport), and
-// shows a small window with the estimate and two buttons: render the new
-// state anyway (it is then kept until the knobs change again) or keep the
-// previous one. The A/B split's preset side and the Pareto panel's sweeps
+// would take minutes (issue 22): before each frame, when the knobs, the
+// scene, the camera or the render size changed (ViewportComposer::targetSize:
+// the size this frame renders at, so the first frames and every resize of the
+// panel or step of the resolution scale), it estimates AOV's volume fragments
+// per pixel on the CPU (AovCostEstimate, O(triangles)). Above either limit
+// (AovCostEstimate::exceeds) it puts the knobs back to the last state that was
+// under it (or, if that one is over it too with this camera and size,
+// switches ao.method back to its default), says so in the message log (the
+// banner over the viewport), and shows a small window with the estimate and
+// two buttons: render the new state anyway (it is then kept until the knobs
+// change again or the frame grows past the size it was confirmed at) or keep
+// the previous one. The A/B split's preset side is estimated where it
+// renders (ViewportComposer: B refused, A kept); the Pareto panel's sweeps
 // render knob states of their own and are not guarded.
 #include <cstdint>
 #include <string>
@@ -49,6 +53,9 @@ private:
     std::string checkedSource_;
     glm::vec3 checkedEye_{0.0f}, checkedTarget_{0.0f};
     float checkedFov_ = 0.0f;
+    glm::ivec2 checkedSize_{0, 0};     // the render size last estimated at
+    double refusedPixels_ = 0.0;       // the refused state's frame size (pixels)
+    double confirmedPixels_ = 0.0;     // the largest frame the confirmation covers
     double checkedAt_ = -1e9;
     std::string message_;
 };

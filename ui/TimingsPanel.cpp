@@ -80,6 +80,21 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
             return;
         }
     }
+    // The AOV cost guard put the knobs back: no change of the user's (the
+    // refused one is not measurable either: measure would render it).
+    if (state.knobsPutBack != putBackSeen) {
+        putBackSeen = state.knobsPutBack;
+        if (state.measure.active()) state.measure.cancel(knobs, "cancelled: the AOV cost guard put the knobs back");
+        // The last change stays measurable only if its values still hold.
+        if (change)
+            for (size_t i = 0; i < change->knobs.size(); ++i)
+                if (knobs.value(change->knobs[i]) != change->after[i]) {
+                    change.reset();
+                    break;
+                }
+        watcher.reset(knobs);
+        return;
+    }
     // While a measurement runs it sets the knobs itself.
     if (state.measure.active()) return;
     // A value is committed when no widget is being edited (a slider let go,

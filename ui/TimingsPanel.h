@@ -35,6 +35,7 @@ struct TimingsPanel {
     std::optional<KnobChange> change;
     ChangeMeasurement::Settings measureSettings;
     std::uint64_t configSeen = ~0ull;  // UiState::configSince when last looked at
+    std::uint64_t putBackSeen = 0;     // UiState::knobsPutBack when last looked at
     std::string sceneSource;
 
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);

@@ -264,6 +264,11 @@ struct UiState {
     // The cost of a change: the timings panel starts it, the frame loop
     // renders its frames one a UI frame (ChangeMeasurement).
     ChangeMeasurement measure;
+    // Bumped each time AovCostGuard puts the knobs back (a refused state):
+    // the timings panel takes the values put back as committed, not as a
+    // change of the user's, and forgets the refused change (measure would
+    // render it).
+    std::uint64_t knobsPutBack = 0;
     // The Pareto panel's quick sweep of one knob: the frame loop renders its
     // frames (one a UI frame, before the view's own, so the viewport never
     // shows a swept value).

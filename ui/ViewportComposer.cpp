@@ -5,6 +5,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/io/ImageHistogram.h"
 #include "renderer/lighting/LightVolume.h"
@@ -21,13 +22,18 @@ ViewportComposer::ViewportComposer(RenderSession& session) : session_(session) {
     nearest_ = gl::Sampler::create(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, "workbench pixel zoom");
 }
 
+glm::ivec2 ViewportComposer::targetSize(const UiState& state) {
+    if (state.wantedSize.x <= 0) return state.renderSize;
+    const float scale = state.viewport.scale();
+    return {std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
+            std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale)))};
+}
+
 void ViewportComposer::render(UiState& state) {
     Pipeline& pipeline = session_.pipeline();
     // The render size: the viewport panel's, times the resolution scale.
     if (state.wantedSize.x > 0) {
-        const float scale = state.viewport.scale();
-        const glm::ivec2 target(std::max(16, static_cast<int>(std::lround(state.wantedSize.x * scale))),
-                                std::max(16, static_cast<int>(std::lround(state.wantedSize.y * scale))));
+        const glm::ivec2 target = targetSize(state);
         if (target != state.renderSize) {
             session_.resize(target.x, target.y);
             state.renderSize = target;
@@ -396,12 +402,21 @@ void ViewportComposer::renderPresetSide(UiState& state) {
     std::vector<double> saved(knobs.size());
     for (size_t i = 0; i < knobs.size(); ++i) saved[i] = knobs.value(static_cast<int>(i));
     presetIgnored_ = static_cast<int>(preset_->applyKnobs(knobs).ignored.size());
-    try {
-        const FrameReport r = session_.pipeline().render(session_.camera(), FrameRequest{{"final"}});
-        abFramesB_.insert(r.frameIndex);
-        abB_ = session_.readRaw("final");
-    } catch (const std::exception& e) {
-        presetError_ = "preset '" + ab.preset + "' does not render: " + e.what();
+    // B's own AOV cost (issue 22): a preset whose AOV frame would take minutes
+    // is not rendered (the window would freeze); A is kept and the numbers
+    // line says why. The estimate is AovCostGuard's, at the same size.
+    const std::string costly =
+        AovCostEstimate::check(knobs, session_.scene(), session_.camera(), state.renderSize.x, state.renderSize.y);
+    if (!costly.empty()) {
+        presetError_ = "preset '" + ab.preset + "' not rendered: " + costly;
+    } else {
+        try {
+            const FrameReport r = session_.pipeline().render(session_.camera(), FrameRequest{{"final"}});
+            abFramesB_.insert(r.frameIndex);
+            abB_ = session_.readRaw("final");
+        } catch (const std::exception& e) {
+            presetError_ = "preset '" + ab.preset + "' does not render: " + e.what();
+        }
     }
     // The current settings back, whatever happened.
     for (size_t i = 0; i < knobs.size(); ++i)

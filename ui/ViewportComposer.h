@@ -32,6 +32,10 @@ public:
 
     // Once a UI frame, before the panels draw.
     void render(UiState& state);
+    // The size (pixels, at least 16 x 16) this frame renders at: the viewport
+    // panel's wanted size times the resolution scale; state.renderSize until
+    // the panel has a size.
+    static glm::ivec2 targetSize(const UiState& state);
     // The lights whose volumes contain the probed surface point.
     void probeLights(UiState& state);
 

@@ -163,6 +163,27 @@ std::pair<int, int> AovCostEstimate::aoSize(const KnobRegistry& knobs, int width
     return {std::max(1, width >> shift), std::max(1, height >> shift)};
 }
 
+namespace {
+std::string duration(double seconds) {
+    char text[64];
+    if (seconds < 10.0) std::snprintf(text, sizeof(text), "%.2g s", seconds);
+    else if (seconds < 90.0) std::snprintf(text, sizeof(text), "%.0f s", seconds);
+    else if (seconds < 90.0 * 60.0) std::snprintf(text, sizeof(text), "%.0f minutes", seconds / 60.0);
+    else if (seconds < 48.0 * 3600.0) std::snprintf(text, sizeof(text), "%.*f hours", seconds < 36000.0 ? 1 : 0, seconds / 3600.0);
+    else std::snprintf(text, sizeof(text), "%.0f days", seconds / 86400.0);
+    return text;
+}
+}  // namespace
+
+std::string AovCostEstimate::timeRange(double fragments) {
+    std::string low = duration(fragments * kSecondsPerFragmentLow);
+    const std::string high = duration(fragments * kSecondsPerFragmentHigh);
+    // "10 to 60 minutes" when both are in the same unit.
+    const auto lowUnit = low.find(' '), highUnit = high.find(' ');
+    if (low.substr(lowUnit) == high.substr(highUnit)) low.resize(lowUnit);
+    return "about " + low + " to " + high;
+}
+
 std::string AovCostEstimate::warning(const AovCostEstimate& e, const KnobRegistry& knobs, int width, int height) {
     const auto [aw, ah] = aoSize(knobs, width, height);
     if (!exceeds(e, aw, ah)) return {};
@@ -176,10 +197,11 @@ std::string AovCostEstimate::warning(const AovCostEstimate& e, const KnobRegistr
     std::snprintf(line, sizeof(line),
                   "aov: about %.0f volume fragments per pixel expected, %.*f million at %dx%d (aov.resolution %s; "
                   "estimated from the scene's %zu volumes, %zu in view, %zu reaching the near plane, at aov.radius "
-                  "%.4g world units); over the limit of %.0f a pixel or %.3g million "
-                  "a frame (10 s to a minute a frame on llvmpipe): lower aov.radius%s, or aov.resolution",
+                  "%.4g world units), %s a frame on llvmpipe; over the limit of %.0f a pixel or %.3g "
+                  "million a frame: lower aov.radius%s, or aov.resolution",
                   e.meanOverdraw, millions >= 10.0 ? 0 : 2, millions, aw, ah, resolution.c_str(), e.volumes,
-                  e.volumes - e.culled, e.nearCamera, e.radius, kWarnOverdraw, kWarnFragments / 1e6,
+                  e.volumes - e.culled, e.nearCamera, e.radius, timeRange(e.fragments(aw, ah)).c_str(),
+                  kWarnOverdraw, kWarnFragments / 1e6,
                   unit == "world" ? " (aov.radius_unit=scene_fraction makes it relative to the scene's size)" : "");
     return line;
 }

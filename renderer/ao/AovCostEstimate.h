@@ -57,6 +57,13 @@ struct AovCostEstimate {
     // full-screen passes" whatever the size.
     static constexpr double kWarnOverdraw = 1000.0;
     static constexpr double kWarnFragments = 4e6;
+    // The measured time per estimated volume fragment on llvmpipe (seconds),
+    // lightly and heavily loaded: the warning's time range for a frame.
+    static constexpr double kSecondsPerFragmentLow = 2.5e-6;
+    static constexpr double kSecondsPerFragmentHigh = 15e-6;
+    // "about 10 s to 1 minute": the frame's time range from its fragments
+    // at the two rates above (seconds, minutes or hours, each rounded).
+    static std::string timeRange(double fragments);
     // Whether `e` at an accessibility buffer of w x h pixels exceeds either limit.
     static bool exceeds(const AovCostEstimate& e, int aoWidth, int aoHeight) {
         return e.meanOverdraw > kWarnOverdraw || e.fragments(aoWidth, aoHeight) > kWarnFragments;
@@ -69,7 +76,8 @@ struct AovCostEstimate {
                                                    const Camera& camera, int width, int height);
     // The accessibility buffer's size for a w x h frame under aov.resolution.
     static std::pair<int, int> aoSize(const KnobRegistry& knobs, int width, int height);
-    // One line naming the estimate and the knobs that lower it, when it
+    // One line naming the estimate, this frame's time range on llvmpipe
+    // (timeRange) and the knobs that lower it, when it
     // exceeds a limit at the frame's accessibility buffer (`width` x
     // `height` the frame); empty otherwise.
     static std::string warning(const AovCostEstimate& e, const KnobRegistry& knobs, int width, int height);

@@ -225,8 +225,10 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     for (const auto& c : configs_) {
         RenderSession& s = apply(c);
         const std::string w = AovCostEstimate::check(s.knobs(), s.scene(), path.at(0, o_.frames), c.width, c.height);
-        if (!w.empty())
-            std::fprintf(stderr, "bench: warning: configuration %d (%s): %s\n", c.index, c.size().c_str(), w.c_str());
+        if (w.empty()) continue;
+        const std::string line = "bench: warning: configuration " + std::to_string(c.index) + " (" + c.size() + "): " + w;
+        if (costWarning_) costWarning_(line);
+        else std::fprintf(stderr, "%s\n", line.c_str());
     }
     if (!sessions.empty()) {
         const gl::GlInfo& gl = sessions.begin()->second.session->glInfo();

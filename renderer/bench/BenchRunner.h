@@ -74,8 +74,13 @@ public:
     // frames' seq continue after its. Throws Error when it is another grid.
     BenchResults run(const BenchProgress& progress = {}, const BenchStream& stream = {},
                      const BenchResults* resumed = nullptr);
+    // Where run() sends AOV's cost warning (one line a configuration over
+    // AovCostEstimate's limits, before any frame): stderr when unset (the
+    // CLI); the Python module turns it into a warnings.warn.
+    void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
 
 private:
+    std::function<void(const std::string&)> costWarning_;
     BenchOptions o_;
     Scene scene_;
     std::vector<BenchConfig> configs_;

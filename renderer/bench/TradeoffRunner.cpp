@@ -199,9 +199,11 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
         for (int c = 0; c < cameraCount; ++c) {
             const std::string w = AovCostEstimate::check(session.knobs(), session.scene(), cameraOf(p, c),
                                                          o_.run.width, o_.run.height);
-            if (!w.empty())
-                std::fprintf(stderr, "tradeoff: warning: point %d%s: %s\n", points_[p].index,
-                             cameraCount > 1 ? (", camera " + std::to_string(c)).c_str() : "", w.c_str());
+            if (w.empty()) continue;
+            const std::string line = "tradeoff: warning: point " + std::to_string(points_[p].index) +
+                                     (cameraCount > 1 ? ", camera " + std::to_string(c) : std::string()) + ": " + w;
+            if (costWarning_) costWarning_(line);
+            else std::fprintf(stderr, "%s\n", line.c_str());
         }
     }
     RunnerPlan plan;

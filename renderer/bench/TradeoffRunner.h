@@ -84,8 +84,13 @@ public:
 
     // Needs a current GL 4.5 context.
     TradeoffResult run(const TradeoffReference& reference, const BenchProgress& progress = {});
+    // Where run() sends AOV's cost warning (one line a point and camera over
+    // AovCostEstimate's limits, before any frame): stderr when unset (the
+    // CLI); TradeoffStudy::measure sends it to its progress' warning.
+    void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
 
 private:
+    std::function<void(const std::string&)> costWarning_;
     TradeoffOptions o_;
     Scene scene_;
     std::vector<TradeoffPoint> points_;

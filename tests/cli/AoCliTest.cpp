@@ -93,6 +93,12 @@ TEST(AoCli, AovWarnsAboutAFrameThatWouldTakeMinutes) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("bench: warning: configuration 1 (32x18): aov: about "), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("bench: warning: configuration 0"), std::string::npos) << r.err;
+    // compare warns for the rendered side over the limit (--b), not for the one under it.
+    r = run("compare --scene default --size 32x18 --a ao.method=aov,aov.resolution=quarter "
+            "--b ao.method=aov,aov.resolution=quarter,aov.radius=20");
+    EXPECT_NE(r.err.find("compare: warning: side --b: aov: about "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("a frame on llvmpipe"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("side --a:"), std::string::npos) << r.err;
 }
 
 TEST(AoCli, TheOldBufferNamesSayWhatTheyAreCalledNow) {

@@ -4,7 +4,10 @@
 // kept until the knobs change; a state under the limits passes.
 #include <gtest/gtest.h>
 
+#include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
+#include "ui/TimingsPanel.h"
+#include "ui/ViewportComposer.h"
 #include "ui/AovCostGuard.h"
 #include "ui/UiState.h"
 
@@ -65,4 +68,152 @@ TEST(AovCostGuard, RefusesAStateOverTheLimitKeepsTheLastGoodOneAndRendersItWhenC
     fresh.beforeFrame(state, *session);
     EXPECT_TRUE(fresh.refusing());
     EXPECT_EQ(method(), "ssao");
+}
+
+// The estimate is taken at the size the frame renders at (the viewport
+// panel's size times the resolution scale), from the first frame on, and again
+// whenever that size changes: AOV at radius 1 on the courtyard passes at
+// 160x90 (0.12 million at 80x45) and is refused at 2560x1440 (about 31
+// million at 1280x720). A confirmation holds at its size and smaller ones.
+TEST(AovCostGuard, EstimatesAtTheSizeTheFrameRendersAtAndAgainWhenItChanges) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    KnobRegistry& k = session->knobs();
+    auto method = [&] { return k.spec(*k.find("ao.method")).choices[static_cast<size_t>(k.value(*k.find("ao.method")))]; };
+    k.setFromString("ao.method", "aov");
+
+    // The first frame: nothing rendered yet (renderSize 0x0), the panel wants 2560x1440.
+    {
+        ui::AovCostGuard guard;
+        state.renderSize = {0, 0};
+        state.wantedSize = {2560, 1440};
+        guard.beforeFrame(state, *session);
+        EXPECT_TRUE(guard.refusing());
+        EXPECT_NE(guard.message().find("at 1280x720"), std::string::npos) << guard.message();
+        EXPECT_EQ(method(), "ssao");
+    }
+
+    // Passes at 160x90; the same knobs, camera and scene at 2560x1440 are estimated again and refused.
+    k.setFromString("ao.method", "aov");
+    ui::AovCostGuard guard;
+    state.renderSize = {160, 90};
+    state.wantedSize = {160, 90};
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+    state.wantedSize = {2560, 1440};
+    guard.beforeFrame(state, *session);
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_NE(guard.message().find("at 1280x720"), std::string::npos) << guard.message();
+    EXPECT_EQ(method(), "ssao");
+
+    // Confirmed at 2560x1440: kept there and at a smaller size; a larger one asks again.
+    guard.confirm(state, *session);
+    EXPECT_EQ(method(), "aov");
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    state.wantedSize = {1280, 720};
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+    state.wantedSize = {3840, 2160};
+    guard.beforeFrame(state, *session);
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_EQ(method(), "ssao");
+
+    // The resolution scale is part of the size: quarter of 2560x1440 is 640x360, 2 million at 320x180.
+    guard.dismiss(state);
+    k.setFromString("ao.method", "aov");
+    state.wantedSize = {2560, 1440};
+    state.viewport.resolution = ui::ResolutionScale::Quarter;
+    guard.beforeFrame(state, *session);
+    EXPECT_FALSE(guard.refusing());
+    EXPECT_EQ(method(), "aov");
+}
+
+// The guard's own undo is no change of the user's: the timings panel shows
+// the change before the refused one, and forgets a refused change (measure
+// would render the refused state).
+TEST(AovCostGuard, PuttingTheKnobsBackIsNoMeasurableChange) {
+    auto session = test::makeSession(32, 32);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    state.renderSize = {160, 90};
+    test::HeadlessImGui imgui;
+    ui::TimingsPanel panel;
+    ui::AovCostGuard guard;
+    bool open = true;
+    KnobRegistry& k = session->knobs();
+    // The window's order: the guard, then the panels (where the user edits).
+    auto frame = [&] {
+        guard.beforeFrame(state, *session);
+        imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    };
+    frame();
+    k.setFromString("ssao.samples", "64");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ssao.samples 16 -> 64");
+
+    // A change the guard lets through is the user's.
+    k.setFromString("ao.method", "aov");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "ao.method ssao -> aov");
+
+    // Refused (radius 20): committed in the panel as the user's, then put back by the guard.
+    k.setFromString("aov.radius", "20");
+    imgui.frame([&] { panel.draw("GPU timings", &open, state, *session); });
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 20");
+    frame();
+    EXPECT_TRUE(guard.refusing());
+    EXPECT_EQ(k.value(*k.find("aov.radius")), 1.0);
+    EXPECT_FALSE(panel.change) << panel.change->what;  // neither "aov.radius 20 -> 1" nor the refused change
+    panel.startMeasure(state, *session);
+    EXPECT_FALSE(state.measure.active());
+    frame();
+    EXPECT_FALSE(panel.change);
+
+    // Refused in the same frame it was set (a scripted --set): the earlier change stays, and no undo shows.
+    guard.dismiss(state);
+    k.setFromString("aov.radius", "2");
+    frame();
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
+    k.setFromString("aov.radius", "20");
+    frame();
+    EXPECT_TRUE(guard.refusing());
+    ASSERT_TRUE(panel.change);
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
+    frame();
+    EXPECT_EQ(panel.change->what, "aov.radius 1 -> 2");
+}
+
+// The A/B split's preset side renders a knob state of its own: over the
+// limits (AOV1 on the spheres: radius 1 world unit, about 2600 a pixel) B
+// is not rendered, the numbers line says why, and A renders as before.
+TEST(AovCostGuard, TheAbPresetSideOverTheLimitIsRefusedAndAIsKept) {
+    auto session = test::makeSession(32, 18);
+    ui::UiState state;
+    session->loadScene("spheres", state.run);
+    state.wantedSize = {32, 18};
+    state.ab.enabled = true;
+    state.ab.source = ui::AbSource::Preset;
+    state.ab.preset = "AOV1";
+    ui::ViewportComposer composer(*session);
+    const std::uint64_t before = state.framesRendered;
+    composer.render(state);
+    EXPECT_GT(state.framesRendered, before);
+    EXPECT_NE(state.ab.unavailable.find("preset 'AOV1' not rendered: aov: about "), std::string::npos)
+        << state.ab.unavailable;
+    EXPECT_NE(state.ab.unavailable.find("a frame on llvmpipe"), std::string::npos) << state.ab.unavailable;
+    // A's knobs are untouched.
+    const KnobRegistry& k = session->knobs();
+    EXPECT_EQ(k.spec(*k.find("ao.method")).choices[static_cast<size_t>(k.value(*k.find("ao.method")))], "ssao");
+    // The same preset on the courtyard at this size is under the limits: B renders.
+    session->loadScene("default", state.run);
+    composer.render(state);
+    EXPECT_EQ(state.ab.unavailable.find("not rendered"), std::string::npos) << state.ab.unavailable;
 }

@@ -12,6 +12,7 @@ import subprocess
 import tempfile
 import threading
 import unittest
+import warnings
 
 import numpy as np
 
@@ -317,6 +318,29 @@ class SessionTest(unittest.TestCase):
             dw.bench(sweep={"ssao.samples": ["many"]}, frames=1)
         with self.assertRaises(dw.KnobError):
             dw.bench(sweep={"ssao.no_such": [1]}, frames=1)
+
+    def test_an_aov_frame_over_the_cost_limit_warns_before_it_renders(self):
+        # Issue 22: the courtyard at aov.radius 20 is over AovCostEstimate's limits; at 1 it is not.
+        s = dw.Session(scene="default", size=(32, 18),
+                       settings={"ao.method": "aov", "aov.resolution": "quarter", "aov.radius": 20})
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            s.render()
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        self.assertTrue(any(l.startswith("aov: about ") and "a frame on llvmpipe" in l for l in lines), lines)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with self.assertRaises(RuntimeWarning):
+                s.render()
+            s.set("aov.radius", 1)
+            s.render()  # under the limit: no warning (it would raise here)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            dw.bench(scene="default", sizes=[(32, 18)], sweep={"aov.radius": [1, 20]}, frames=1, warmup=0,
+                     settings={"ao.method": "aov", "aov.resolution": "quarter"})
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        self.assertEqual(len(lines), 1, lines)
+        self.assertIn("bench: warning: configuration 1 (32x18): aov: about ", lines[0])
 
     def test_render_record_replays_to_the_same_image(self):
         s = dw.Session(scene="default", size=(48, 27))

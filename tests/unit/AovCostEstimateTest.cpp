@@ -109,6 +109,8 @@ TEST(AovCostEstimate, TheWarningNamesTheKnobAndTheLimits) {
     const std::string w = AovCostEstimate::warning(e, knobs, 160, 90);
     EXPECT_NE(w.find("about 2500 volume fragments per pixel"), std::string::npos) << w;
     EXPECT_NE(w.find("36 million at 160x90"), std::string::npos) << w;
+    // This frame's time at 2.5-15 us a fragment: 90 to 540 s.
+    EXPECT_NE(w.find("about 2 to 9 minutes a frame on llvmpipe"), std::string::npos) << w;
     e.meanOverdraw = 100.0;  // 1.44 million: two decimals below 10 million
     EXPECT_EQ(AovCostEstimate::warning(e, knobs, 160, 90), "");
     e.meanOverdraw = 1500.0;
@@ -121,4 +123,14 @@ TEST(AovCostEstimate, TheWarningNamesTheKnobAndTheLimits) {
     EXPECT_EQ(AovCostEstimate::warning(e, knobs, 80, 45), "");
     EXPECT_TRUE(AovCostEstimate::exceeds(e, 160, 90));
     EXPECT_FALSE(AovCostEstimate::exceeds(e, 80, 45));
+}
+
+// The warning's time range: the frame's fragments at 2.5 and 15 us each,
+// each end in its own unit, the unit said once when they share it.
+TEST(AovCostEstimate, TheTimeRangeIsTheFramesFragmentsAtTheMeasuredRates) {
+    EXPECT_EQ(AovCostEstimate::timeRange(4e6), "about 10 to 60 s");
+    EXPECT_EQ(AovCostEstimate::timeRange(36e6), "about 2 to 9 minutes");
+    EXPECT_EQ(AovCostEstimate::timeRange(240e6), "about 10 to 60 minutes");
+    EXPECT_EQ(AovCostEstimate::timeRange(933e6), "about 39 minutes to 3.9 hours");
+    EXPECT_EQ(AovCostEstimate::timeRange(1e5), "about 0.25 to 1.5 s");
 }
