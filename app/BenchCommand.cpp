@@ -235,20 +235,9 @@ int runMerge(int argc, char** argv) {
     return plotted;
 }
 
-// A comma list of a flag; an empty item is a usage error.
-std::vector<std::string> flagList(const std::string& flag, const std::string& text) {
-    try {
-        return splitList(text, flag);
-    } catch (const UsageError&) {
-        throw;
-    } catch (const Error& e) {
-        throw UsageError(e.what());
-    }
-}
-
 std::vector<int> parseIntList(const std::string& flag, const std::string& text, int min, int max) {
     std::vector<int> values;
-    for (const auto& item : flagList(flag, text)) {
+    for (const auto& item : CommandLine::parseList(flag, text)) {
         const int v = CommandLine::parseInt(flag, item, min, max);
         if (std::find(values.begin(), values.end(), v) != values.end())
             throw UsageError(flag + ": '" + item + "' is given twice");

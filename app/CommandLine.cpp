@@ -9,6 +9,8 @@
 #include <charconv>
 #include <filesystem>
 
+#include "renderer/bench/BenchGrid.h"
+
 namespace dw {
 
 CommandLine::CommandLine(int argc, char** argv, int first) {
@@ -86,6 +88,16 @@ RunConfig CommandLine::runConfig() {
 void CommandLine::finish(const std::string& command) const {
     for (const auto& a : args_)
         if (!a.used) throw UsageError("'" + command + "' does not take " + a.name);
+}
+
+std::vector<std::string> CommandLine::parseList(const std::string& flag, const std::string& text) {
+    try {
+        return splitList(text, flag);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
 }
 
 int CommandLine::parseInt(const std::string& flag, const std::string& text, int min, int max) {

@@ -47,6 +47,8 @@ public:
     // behind: a file it creates to find out is removed; `what` names it.
     static void requireWritable(const std::string& path, const std::string& what);
     static int parseInt(const std::string& flag, const std::string& text, int min, int max);
+    // "a,b,c" -> {a, b, c}; an empty item is a UsageError naming `flag`.
+    static std::vector<std::string> parseList(const std::string& flag, const std::string& text);
     // "1280x720" -> (1280, 720); errors name `flag`.
     static std::pair<int, int> parseSize(const std::string& text, const std::string& flag = "--size");
 

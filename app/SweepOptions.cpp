@@ -12,17 +12,6 @@ namespace dw {
 
 namespace {
 
-// A comma list of a flag; an empty item is a usage error.
-std::vector<std::string> flagList(const std::string& flag, const std::string& text) {
-    try {
-        return splitList(text, flag);
-    } catch (const UsageError&) {
-        throw;
-    } catch (const Error& e) {
-        throw UsageError(e.what());
-    }
-}
-
 std::pair<int, int> readPlotSize(CommandLine& cl, const SweepCommand& c) {
     return CommandLine::parseSize(cl.value("--plot-size").value_or(c.plotSize), "--plot-size");
 }
@@ -52,7 +41,7 @@ std::vector<std::pair<int, int>> SweepOptions::readSizes(CommandLine& cl, bool s
     const std::string text = cl.value("--size").value_or("640x360");
     if (!several) return {CommandLine::parseSize(text)};
     std::vector<std::pair<int, int>> sizes;
-    for (const auto& s : flagList("--size", text)) {
+    for (const auto& s : CommandLine::parseList("--size", text)) {
         const auto size = CommandLine::parseSize(s);
         if (std::find(sizes.begin(), sizes.end(), size) != sizes.end())
             throw UsageError("--size: '" + s + "' is given twice");

@@ -180,16 +180,6 @@ bool isRecordFile(const std::string& path) {
     return path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
 }
 
-std::vector<std::string> listOf(const std::string& flag, const std::string& text) {
-    try {
-        return splitList(text, flag);
-    } catch (const UsageError&) {
-        throw;
-    } catch (const Error& e) {
-        throw UsageError(e.what());
-    }
-}
-
 // What an input of `tradeoff merge` says of the run it comes from
 // (TradeoffShards): the fields its rows hold, and its record's grid (the
 // input itself, or <name>.json beside a CSV) when there is one.
@@ -305,7 +295,7 @@ int runTradeoffCommand(int argc, char** argv) {
         for (size_t i = 0; i < axis.values.size(); ++i) text += (i ? "," : "") + axis.values[i];
         s.sweep.push_back(text);
     }
-    if (const auto presets = cl.value("--presets")) s.presets = listOf("--presets", *presets);
+    if (const auto presets = cl.value("--presets")) s.presets = CommandLine::parseList("--presets", *presets);
     s.knobs = cl.value("--knobs").value_or("");
     s.exclude = so.excludes;
     s.against = cl.value("--against").value_or("reference");
