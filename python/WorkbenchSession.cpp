@@ -78,13 +78,23 @@ WorkbenchSession::~WorkbenchSession() {
 ExperimentRecord WorkbenchSession::record() {
     requireOwningThread();
     if (!last_) throw Error("record: nothing rendered yet (call render() first)");
+    // The record's knobs and image hash must come from the same frames: a
+    // set() since the render would pair new knobs with the old image.
+    const KnobRegistry& k = session_->knobs();
+    std::string changed;
+    for (size_t i = 0; i < k.size() && i < last_->knobs.size(); ++i)
+        if (k.format(static_cast<int>(i)) != last_->knobs[i])
+            changed += (changed.empty() ? "" : ", ") + k.spec(static_cast<int>(i)).name;
+    if (!changed.empty())
+        throw Error("record: knobs changed since the last render() (" + changed +
+                    "); render() again, then record(), so the record's knobs are the ones that made its image");
     processContext().context->makeCurrent();
     RunConfig run = run_;
     run.width = width_;
     run.height = height_;
     run.frames = last_->frames;
     run.warmup = last_->warmup;
-    // The knobs as they are now (Session.set included): all of them travel in the record.
+    // The knobs as they rendered (Session.set included): all of them travel in the record.
     return ExperimentRecord::capture(*session_, run, last_->buffer, last_->firstCounted,
                                      processContext().context->platform());
 }
@@ -198,7 +208,9 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     }
     rendered_ = true;
     timings_ = TimingReport::build(timer, report, firstCounted, warmup);
-    last_ = LastRender{buffer, frames, warmup, firstCounted};
+    last_ = LastRender{buffer, frames, warmup, firstCounted, {}};
+    const KnobRegistry& k = session_->knobs();
+    for (size_t i = 0; i < k.size(); ++i) last_->knobs.push_back(k.format(static_cast<int>(i)));
 
     // What writeOutput writes: display-ready outputs as their 8-bit values
     // (.png), everything else raw (.exr).

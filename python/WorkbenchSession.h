@@ -137,6 +137,7 @@ private:
         std::string buffer;
         int frames = 1, warmup = 0;
         std::uint64_t firstCounted = 0;
+        std::vector<std::string> knobs;  // every knob's value as text when it rendered
     };
     std::optional<LastRender> last_;
 };

@@ -355,9 +355,14 @@ class SessionTest(unittest.TestCase):
         r = subprocess.run([BINARY, "replay", path], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertIn("image: identical", r.stdout)
-        # Session.record: the knobs as they are now, the last render's buffer.
+        # Session.record: the last render's buffer and knobs; a set() since the
+        # render is refused by name (the knobs would not be the image's).
         s.render("ao.raw")
         s.set("tonemap.key", 0.25)
+        with self.assertRaises(dw.Error) as e:
+            s.record(os.path.join(self.tmp.name, "py-record-2.json"))
+        self.assertIn("tonemap.key", str(e.exception))
+        s.render("ao.raw")
         again = s.record(os.path.join(self.tmp.name, "py-record-2.json"))
         self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ao.raw", "0.25"))
         with self.assertRaises(dw.Error):
