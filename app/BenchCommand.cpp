@@ -268,7 +268,7 @@ int runBenchCommand(int argc, char** argv) {
     o.orbit = so.orbit;
     o.walkthrough = so.walkthrough;
     o.shard = so.shard;
-    o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647));
+    o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), limits::kSeed.min, limits::kSeed.max));
     if (const auto r = cl.value("--light-radius")) {
         char* end = nullptr;
         o.lightRadius = std::strtof(r->c_str(), &end);

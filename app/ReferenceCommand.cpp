@@ -113,9 +113,10 @@ int runReferenceCommand(int argc, char** argv) {
     std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
     const std::string buffer = cl.value("--buffer").value_or("lbuffer");
     const auto out = cl.value("--out");
-    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), 1, 1 << 20);
-    const int seed = CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), 0, 2147483647);
-    const int requestedThreads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"), 0, 4096);
+    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), limits::kAoRays.min, limits::kAoRays.max);
+    const int seed = CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), limits::kSeed.min, limits::kSeed.max);
+    const int requestedThreads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"),
+                                                       limits::kReferenceThreads.min, limits::kReferenceThreads.max);
     // oneTBB runs at most as many threads as the machine has cores; more are not asked for.
     const int threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
     if (requestedThreads > threads && threads > 0)

@@ -7,10 +7,17 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
+#include <future>
+#include <limits>
+#include <thread>
+#include <tuple>
 
 #include "app/CommandLine.h"
 #include "app/PlotScript.h"
@@ -31,6 +38,130 @@ namespace {
 // warnings filter set to "error" it is raised. Needs the GIL.
 void warnPython(const std::string& line) {
     if (PyErr_WarnEx(PyExc_RuntimeWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+std::string typeName(const py::handle& value) {
+    return py::str(py::type::of(value).attr("__name__")).cast<std::string>();
+}
+
+// An integer argument held to `range`, the range of the CLI option it stands
+// for (renderer/OptionLimits.h; `flag` names that option). A Python int of
+// any size or what has __index__ (numpy's integers) is range-checked before
+// it is narrowed: outside the range, however large, is ValueError naming the
+// argument and the range. None, bool, float, str and the rest are TypeError.
+int intArg(const py::handle& value, const std::string& name, OptionRange range, const std::string& flag = {}) {
+    const std::string expected = name + " must be an integer between " + std::to_string(range.min) + " and " +
+                                 std::to_string(range.max) + (flag.empty() ? "" : " (as " + flag + ")");
+    if (value.is_none() || PyBool_Check(value.ptr()) || !PyIndex_Check(value.ptr()))
+        throw py::type_error(expected + ", got " + typeName(value));
+    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+    if (!index) throw py::error_already_set();
+    int overflow = 0;
+    const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+    if (overflow == 0 && v == -1 && PyErr_Occurred()) throw py::error_already_set();
+    if (overflow != 0) throw py::value_error(expected + ", got an integer beyond 64 bits");
+    if (!range.holds(v)) throw py::value_error(expected + ", got " + std::to_string(v));
+    return static_cast<int>(v);
+}
+
+// A finite number (int or float, not bool) of at least `min`: ValueError
+// naming the argument when it is NaN, infinite, too large for a double or
+// below `min`; TypeError for anything that is not a number.
+double numberArg(const py::handle& value, const std::string& name, double min) {
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%g", min);
+    const std::string expected = name + " must be a finite number of at least " + bound;
+    if (value.is_none() || PyBool_Check(value.ptr()) || PyUnicode_Check(value.ptr()) || PyBytes_Check(value.ptr()))
+        throw py::type_error(expected + ", got " + typeName(value));
+    const double v = PyFloat_AsDouble(value.ptr());
+    if (v == -1.0 && PyErr_Occurred()) {
+        const bool overflow = PyErr_ExceptionMatches(PyExc_OverflowError) != 0;
+        PyErr_Clear();
+        if (overflow) throw py::value_error(expected + ", got a number beyond a double's range");
+        throw py::type_error(expected + ", got " + typeName(value));
+    }
+    if (!std::isfinite(v) || v < min) throw py::value_error(expected + ", got " + py::repr(value).cast<std::string>());
+    return v;
+}
+
+// (width, height): a tuple or list of two integers, each in `range` (--size's).
+std::pair<int, int> sizeArg(const py::handle& value, const std::string& name, OptionRange range = limits::kSize,
+                            const std::string& flag = {}) {
+    if (!(py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) || py::len(value) != 2)
+        throw py::type_error(name + " must be (width, height), two integers, got " +
+                             (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)
+                                  ? std::to_string(py::len(value)) + " items"
+                                  : typeName(value)));
+    const py::sequence pair = py::reinterpret_borrow<py::sequence>(value);
+    return {intArg(py::object(pair[0]), name + " width", range, flag), intArg(py::object(pair[1]), name + " height", range, flag)};
+}
+
+// A file argument: an empty path names no file (ValueError naming the argument).
+void requirePath(const std::optional<std::string>& path, const std::string& name) {
+    if (path && path->empty()) throw py::value_error(name + " is an empty path: name a file");
+}
+
+// A callable or None (progress=).
+void requireCallable(const py::object& f, const std::string& name) {
+    if (!f.is_none() && !PyCallable_Check(f.ptr()))
+        throw py::type_error(name + " must be a callable or None, got " + typeName(f));
+}
+
+// The CPU reference's options (reference's --ao-rays, --seed, --threads, --no-cache, --cache-dir).
+ReferenceOptions referenceOptions(const std::string& function, const py::handle& aoRays, const py::handle& seed,
+                                  const py::handle& threads, bool cache, const std::optional<std::string>& cacheDir) {
+    ReferenceOptions o;
+    o.aoRays = intArg(aoRays, function + ": ao_rays", limits::kAoRays, "reference --ao-rays");
+    o.seed = intArg(seed, function + ": seed", limits::kSeed, "reference --seed");
+    o.threads = intArg(threads, function + ": threads", limits::kReferenceThreads, "reference --threads; 0: every core");
+    o.useCache = cache;
+    o.cacheDirectory = cacheDir.value_or("");
+    return o;
+}
+
+// Traces the CPU reference (`trace`, CPU only) on a worker thread while this
+// one waits with the GIL released; every 0.2 s it takes the GIL to see
+// Ctrl-C and to call progress(fraction done). KeyboardInterrupt, or what
+// progress raised, cancels the trace and is raised; progress(1.0) last.
+reference::ReferenceImages traceReference(const py::object& progressFn,
+                                          const std::function<reference::ReferenceImages(reference::ReferenceProgress*)>& trace) {
+    reference::ReferenceProgress progress;
+    reference::ReferenceImages images;
+    std::exception_ptr failure;
+    bool raised = false;
+    {
+        py::gil_scoped_release release;
+        std::promise<void> finished;
+        std::future<void> done = finished.get_future();
+        std::thread worker([&] {
+            try {
+                images = trace(&progress);
+            } catch (...) {
+                failure = std::current_exception();
+            }
+            finished.set_value();
+        });
+        while (done.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
+            py::gil_scoped_acquire acquire;
+            if (raised) continue;
+            if (PyErr_CheckSignals() != 0) {
+                raised = true;
+            } else if (!progressFn.is_none()) {
+                try {
+                    progressFn(progress.fraction());
+                } catch (py::error_already_set& e) {
+                    e.restore();
+                    raised = true;
+                }
+            }
+            if (raised) progress.cancel.store(true);
+        }
+        worker.join();
+    }
+    if (raised) throw py::error_already_set();
+    if (failure) std::rethrow_exception(failure);
+    if (!progressFn.is_none()) progressFn(1.0);
+    return images;
 }
 
 py::array toArray(const BufferImage& image) {
@@ -57,6 +188,12 @@ FloatImage toFloatImage(const py::array& input, const char* what) {
     if (input.ndim() != 2 && input.ndim() != 3)
         throw Error(std::string(what) + ": expected an H x W or H x W x C array, got " + std::to_string(input.ndim()) +
                     " dimensions");
+    // Every side at least 1 (an image without pixels or channels has no error to measure), each within an int.
+    for (py::ssize_t d = 0; d < input.ndim(); ++d)
+        if (input.shape(d) < 1 || input.shape(d) > std::numeric_limits<int>::max())
+            throw py::value_error(std::string(what) + ": an H x W (x C) array with every side from 1 to " +
+                                  std::to_string(std::numeric_limits<int>::max()) + ", got " +
+                                  py::str(py::tuple(input.attr("shape"))).cast<std::string>());
     FloatImage image;
     image.height = static_cast<int>(input.shape(0));
     image.width = static_cast<int>(input.shape(1));
@@ -202,9 +339,15 @@ py::dict referenceStats(const reference::ReferenceStatistics& s) {
     return d;
 }
 
-py::dict compareArrays(const py::array& reference, const py::array& test, bool hdr, double warnThreshold,
-                       double failThreshold, bool maps, std::optional<std::string> errorMap,
+py::dict compareArrays(const py::array& reference, const py::array& test, bool hdr, const py::object& warnObject,
+                       const py::object& failObject, bool maps, std::optional<std::string> errorMap,
                        std::optional<std::string> heatMap, std::optional<std::string> json) {
+    // compare's --warn and --fail: finite, at least 0.
+    requirePath(errorMap, "compare: error_map");
+    requirePath(heatMap, "compare: heat_map");
+    requirePath(json, "compare: json");
+    const double warnThreshold = numberArg(warnObject, "compare: warn_threshold", 0.0);
+    const double failThreshold = numberArg(failObject, "compare: fail_threshold", 0.0);
     if (errorMap && !isFloatFormat(*errorMap))
         throw Error("error_map writes float maps: give it an .exr name, got '" + *errorMap + "'");
     const FloatImage a = toFloatImage(reference, "reference");
@@ -370,6 +513,9 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
                        const py::object& exclude, std::optional<std::string> csv, std::optional<std::string> json,
                        std::optional<std::string> plot, std::pair<int, int> plotSize, bool quiet,
                        const py::object& progressFn) {
+    requirePath(csv, "tradeoff: csv");
+    requirePath(json, "tradeoff: json");
+    requirePath(plot, "tradeoff: plot");
     const std::vector<BenchKnobAxis> axes = sweepAxes("tradeoff", sweep);
     for (const auto& a : axes) {
         std::string text = a.knob + "=";
@@ -384,6 +530,7 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
         throw py::value_error("tradeoff: progress must be a callable taking a line of text, or None");
     checkKnobs(s.run.sets, axes);
     asValueError([&] { return TradeoffStudy::check(s); });
+    refuseRecordAsScene(s.run.sceneSpec());
     // The files, checked before anything is measured (as the CLI's are).
     CommandLine::NamedFiles writes;
     if (csv) writes.emplace_back("csv", *csv);
@@ -495,8 +642,9 @@ PYBIND11_MODULE(deferred_workbench, m) {
 
     py::class_<WorkbenchSession>(m, "Session",
                                  "One scene rendered headless (EGL) at one size; knobs as the registry declares them.")
-        .def(py::init([](const std::string& scene, std::pair<int, int> size, py::object preset,
+        .def(py::init([](const std::string& scene, const py::object& sizeObject, py::object preset,
                          std::optional<py::dict> settings) {
+                 const auto size = sizeArg(sizeObject, "Session: size", limits::kSize, "--size");
                  const std::vector<std::string> sets = assignments(settings);
                  const std::vector<std::string> presets = presetList(preset);
                  py::gil_scoped_release release;
@@ -508,7 +656,11 @@ PYBIND11_MODULE(deferred_workbench, m) {
              "preset: a built-in preset or a preset file, or a list of them applied in order (as repeated --preset); settings: {knob: value} applied last (as --set).")
         .def_property_readonly("size", [](const WorkbenchSession& s) { return py::make_tuple(s.width(), s.height()); })
         .def_property_readonly("scene", &WorkbenchSession::sceneName)
-        .def("resize", [](WorkbenchSession& s, int w, int h) { s.resize(w, h); }, py::arg("width"), py::arg("height"))
+        .def("resize",
+             [](WorkbenchSession& s, const py::object& w, const py::object& h) {
+                 s.resize(intArg(w, "resize: width", limits::kSize, "--size"), intArg(h, "resize: height", limits::kSize, "--size"));
+             },
+             py::arg("width"), py::arg("height"))
         .def("get",
              [](const WorkbenchSession& s, const std::string& name) {
                  return knobValue(s.knobs(), *s.knobs().find(s.spec(name).name));
@@ -567,23 +719,52 @@ PYBIND11_MODULE(deferred_workbench, m) {
              },
              py::arg("details") = false, "Every named output (as `list buffers`).")
         .def("render",
-             [](WorkbenchSession& s, const std::string& buffer, int frames, int warmup, std::optional<std::string> record) {
+             [](WorkbenchSession& s, const std::string& buffer, const py::object& framesObject,
+                const py::object& warmupObject, std::optional<std::string> record, const py::object& aoRays,
+                const py::object& seed, const py::object& threads, bool cache, std::optional<std::string> cacheDir,
+                const py::object& progress) {
+                 const int frames = intArg(framesObject, "render: frames", limits::kFrames, "render --frames");
+                 const int warmup = intArg(warmupObject, "render: warmup", limits::kWarmup, "render --warmup");
+                 ReferenceOptions ro = referenceOptions("render", aoRays, seed, threads, cache, cacheDir);
+                 requireCallable(progress, "render: progress");
+                 requirePath(record, "render: record");
+                 s.checkRender(buffer, frames, warmup);
+                 const bool needsReference = s.isReferenceOutput(buffer);
+                 if (needsReference && record)
+                     throw py::value_error("render: record= is for the GPU's outputs: replay renders a record with "
+                                           "the CLI's render, which has no CPU reference ('" + buffer + "')");
                  // AOV's cost, estimated before the first frame (issue 22), as render prints it.
                  if (const std::string w = s.aovCostWarning(); !w.empty()) warnPython(w);
+                 // The reference pass's outputs: the CPU reference of the view as the last frame will have it,
+                 // traced (or read from the cache) as `reference` does, then handed to the pass for these frames.
+                 std::optional<reference::ReferenceImages> traced;
+                 if (needsReference) {
+                     const std::uint64_t frame = s.lastFrameOf(frames, warmup);
+                     traced = traceReference(progress, [&](reference::ReferenceProgress* p) {
+                         ro.progress = p;
+                         return s.reference(ro, frame);
+                     });
+                 }
                  BufferImage image;
                  {
                      py::gil_scoped_release release;
-                     image = s.render(buffer, frames, warmup);
+                     image = s.render(buffer, frames, warmup, traced ? &*traced : nullptr);
                      if (record) s.record().write(*record);
                  }
                  return toArray(image);
              },
              py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0, py::arg("record") = py::none(),
+             py::arg("ao_rays") = 64, py::arg("seed") = 1, py::arg("threads") = 0, py::arg("cache") = true,
+             py::arg("cache_dir") = py::none(), py::arg("progress") = py::none(),
              "Renders warmup + frames frames and returns `buffer` of the last: H x W x C, top row first;\n"
              "uint8 for 8-bit display outputs (final, tonemap.result, ...), float32 for the rest.\n"
-             "record=PATH also writes the experiment record render --record writes (replay measures it again).")
+             "record=PATH also writes the experiment record render --record writes (replay measures it again).\n"
+             "reference.lbuffer, reference.final, reference.ao and compare.error: the CPU reference of the view is\n"
+             "traced first (as `reference`, through its cache; ao_rays, seed, threads, cache, cache_dir as reference()'s)\n"
+             "and handed to the reference pass; progress(fraction) is called while it traces, Ctrl-C cancels.\n")
         .def("record",
              [](WorkbenchSession& s, const std::string& path) {
+                 requirePath(path, "record: path");
                  ExperimentRecord r;
                  {
                      py::gil_scoped_release release;
@@ -601,34 +782,46 @@ PYBIND11_MODULE(deferred_workbench, m) {
                  return timingList(*s.timings());
              },
              "Per pass and span of the last render()'s counted frames: gpu_ms and cpu_ms {median, mean, min, max, count}.")
-        .def("probe", [](const WorkbenchSession& s, int x, int y) { return probeDict(s.probe(x, y)); }, py::arg("x"),
-             py::arg("y"), "Every output and the decoded G-buffer at pixel (x, y), y = 0 at the top.")
+        .def("probe",
+             [](const WorkbenchSession& s, const py::object& x, const py::object& y) {
+                 const int px = intArg(x, "probe: x (a column of the " + std::to_string(s.width()) + "x" + std::to_string(s.height()) + " frame)",
+                                         OptionRange{0, s.width() - 1});
+                 const int py_ = intArg(y, "probe: y (a row of the " + std::to_string(s.width()) + "x" + std::to_string(s.height()) + " frame, 0 at the top)",
+                                         OptionRange{0, s.height() - 1});
+                 return probeDict(s.probe(px, py_));
+             },
+             py::arg("x"), py::arg("y"), "Every output and the decoded G-buffer at pixel (x, y), y = 0 at the top.")
         .def("write",
              [](WorkbenchSession& s, const std::string& buffer, const std::string& path) {
+                 requirePath(path, "write: path");
                  py::gil_scoped_release release;
                  s.writeBuffer(buffer, path);
              },
              py::arg("buffer"), py::arg("path"), "Writes the last frame's `buffer` as render --out does (.png, .exr).")
-        .def("dump_knobs", &WorkbenchSession::writeKnobValues, py::arg("path"), "Writes what render --dump-knobs writes.")
+        .def("dump_knobs",
+             [](const WorkbenchSession& s, const std::string& path) {
+                 requirePath(path, "dump_knobs: path");
+                 s.writeKnobValues(path);
+             },
+             py::arg("path"), "Writes what render --dump-knobs writes.")
         .def("reference",
-             [](WorkbenchSession& s, const std::string& buffer, int aoRays, int seed, int threads, bool cache,
-                std::optional<std::string> cacheDir, bool stats, std::optional<std::string> out,
-                std::optional<std::string> statsOut) -> py::object {
+             [](WorkbenchSession& s, const std::string& buffer, const py::object& aoRaysObject, const py::object& seedObject,
+                const py::object& threadsObject, bool cache, std::optional<std::string> cacheDir, bool stats,
+                std::optional<std::string> out, std::optional<std::string> statsOut,
+                const py::object& progress) -> py::object {
                  const auto& names = reference::referenceBuffers();
                  if (std::find(names.begin(), names.end(), buffer) == names.end())
                      throw UnknownBufferError("unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
+                 ReferenceOptions o = referenceOptions("reference", aoRaysObject, seedObject, threadsObject, cache, cacheDir);
+                 const int aoRays = o.aoRays, seed = o.seed;
+                 requireCallable(progress, "reference: progress");
+                 requirePath(out, "reference: out");
+                 requirePath(statsOut, "reference: stats_out");
                  s.requireOwningThread();
-                 ReferenceOptions o;
-                 o.aoRays = aoRays;
-                 o.seed = seed;
-                 o.threads = threads;
-                 o.useCache = cache;
-                 o.cacheDirectory = cacheDir.value_or("");
-                 reference::ReferenceImages images;
-                 {
-                     py::gil_scoped_release release;
-                     images = s.reference(o);
-                 }
+                 const reference::ReferenceImages images = traceReference(progress, [&](reference::ReferenceProgress* p) {
+                     o.progress = p;
+                     return s.reference(o);
+                 });
                  if (out) {
                      py::gil_scoped_release release;
                      writeImage(*out, *images.buffer(buffer));
@@ -650,36 +843,57 @@ PYBIND11_MODULE(deferred_workbench, m) {
              },
              py::arg("buffer") = "lbuffer", py::arg("ao_rays") = 64, py::arg("seed") = 1, py::arg("threads") = 0,
              py::arg("cache") = true, py::arg("cache_dir") = py::none(), py::arg("stats") = false,
-             py::arg("out") = py::none(), py::arg("stats_out") = py::none(),
+             py::arg("out") = py::none(), py::arg("stats_out") = py::none(), py::arg("progress") = py::none(),
              "The CPU reference of this view (as `reference`): float32 H x W x C; stats=True: (array, dict).\n"
+             "progress(fraction) is called while it traces; Ctrl-C, or an exception in progress, cancels it.\n"
              "out=PATH writes the image as reference --out does (.exr raw, .png in [0, 1]); stats_out=PATH the\n"
              "statistics as JSON (reference --stats-out's figures under the same keys).");
 
     m.def(
         "bench",
-        [](const std::string& scene, std::vector<std::pair<int, int>> sizes, std::vector<int> lights,
+        [](const std::string& scene, const py::object& sizesObject, const py::object& lightsObject,
            std::optional<py::dict> sweep, py::object preset, std::optional<py::dict> settings,
-           int frames, int warmup, int block, int seed, std::optional<std::string> csv, std::optional<std::string> json,
-           const std::string& ratioOf, int resamples, int orbit, bool walkthrough) {
+           const py::object& framesObject, const py::object& warmupObject, const py::object& blockObject,
+           const py::object& seedObject, std::optional<std::string> csv, std::optional<std::string> json,
+           const std::string& ratioOf, const py::object& resamplesObject, const py::object& orbitObject, bool walkthrough) {
             BenchOptions o;
             o.run.scene = scene;
             for (const auto& p : presetList(preset)) o.run.addPreset(p);
             o.run.sets = assignments(settings);
-            o.grid.sizes = sizes.empty() ? std::vector<std::pair<int, int>>{{160, 90}} : sizes;
-            for (int n : lights)
-                if (n < 0 || n > 1000000)
-                    throw py::value_error("bench: lights must be between 0 and 1000000, got " + std::to_string(n));
-            o.grid.lights = lights;
+            // sizes: None is bench's default, 160x90; a list of (w, h), at least one (as --sizes).
+            if (sizesObject.is_none()) {
+                o.grid.sizes = {{160, 90}};
+            } else {
+                if (!py::isinstance<py::list>(sizesObject) && !py::isinstance<py::tuple>(sizesObject))
+                    throw py::type_error("bench: sizes must be a list of (width, height), got " + typeName(sizesObject));
+                for (const auto& size : sizesObject) o.grid.sizes.push_back(sizeArg(size, "bench: sizes[]", limits::kSize, "--sizes"));
+                if (o.grid.sizes.empty())
+                    throw py::value_error("bench: sizes is empty (an empty grid measures nothing); None is 160x90");
+            }
+            // lights: None or []: the scene's own lights; else each count once (as --lights).
+            if (!lightsObject.is_none()) {
+                if (!py::isinstance<py::list>(lightsObject) && !py::isinstance<py::tuple>(lightsObject))
+                    throw py::type_error("bench: lights must be a list of light counts, got " + typeName(lightsObject));
+                for (const auto& n : lightsObject) {
+                    const int count = intArg(n, "bench: lights[]", limits::kBenchLights, "--lights");
+                    if (std::find(o.grid.lights.begin(), o.grid.lights.end(), count) != o.grid.lights.end())
+                        throw py::value_error("bench: lights: " + std::to_string(count) + " is given twice (as --lights)");
+                    o.grid.lights.push_back(count);
+                }
+            }
             o.grid.knobAxes = sweepAxes("bench", sweep);
             checkKnobs(o.run.sets, o.grid.knobAxes);
-            if (!limits::kFrames.holds(frames) || !limits::kWarmup.holds(warmup) || !limits::kBlock.holds(block) || seed < 0)
-                throw Error("bench: frames and block must be between 1 and 100000, warmup between 0 and 100000, seed not negative");
-            o.frames = frames;
-            o.warmup = warmup;
-            o.block = block;
-            o.seed = static_cast<std::uint32_t>(seed);
-            if (!limits::kResamples.holds(resamples)) throw Error("bench: resamples must be between 100 and 1000000");
-            if (orbit < 0 || (orbit > 0 && walkthrough)) throw Error("bench: orbit takes a pose count >= 0, not with walkthrough");
+            refuseRecordAsScene(o.run.sceneSpec());
+            o.frames = intArg(framesObject, "bench: frames", limits::kFrames, "bench --frames");
+            o.warmup = intArg(warmupObject, "bench: warmup", limits::kWarmup, "bench --warmup");
+            o.block = intArg(blockObject, "bench: block", limits::kBlock, "bench --block");
+            o.seed = static_cast<std::uint32_t>(intArg(seedObject, "bench: seed", limits::kSeed, "bench --seed"));
+            const int resamples = intArg(resamplesObject, "bench: resamples", limits::kResamples, "bench --resamples");
+            // orbit: 0 is a fixed camera, else --orbit's pose count.
+            const int orbit = intArg(orbitObject, "bench: orbit", OptionRange{0, limits::kOrbit.max}, "bench --orbit; 0: fixed");
+            requirePath(csv, "bench: csv");
+            requirePath(json, "bench: json");
+            if (orbit > 0 && walkthrough) throw py::value_error("bench: orbit and walkthrough move the camera two ways: give one");
             o.orbit = orbit;
             o.walkthrough = walkthrough;
             BenchResults results;
@@ -697,7 +911,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
             }
             return recordObject(record);
         },
-        py::arg("scene") = "", py::arg("sizes") = std::vector<std::pair<int, int>>{}, py::arg("lights") = std::vector<int>{},
+        py::arg("scene") = "", py::arg("sizes") = py::none(), py::arg("lights") = py::none(),
         py::arg("sweep") = py::none(), py::arg("preset") = py::none(), py::arg("settings") = py::none(),
         py::arg("frames") = 10, py::arg("warmup") = 1, py::arg("block") = 1, py::arg("seed") = 1,
         py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("ratio_of") = "frame",
@@ -709,33 +923,35 @@ PYBIND11_MODULE(deferred_workbench, m) {
 
     m.def(
         "tradeoff",
-        [](const std::string& scene, std::pair<int, int> size, py::object preset,
+        [](const std::string& scene, const py::object& size, py::object preset,
            std::optional<py::dict> settings, std::optional<py::dict> sweep, py::object presets,
            std::optional<std::string> knobs, py::object exclude, const std::string& against, const std::string& metric,
-           const std::string& buffer, int aoRays, std::optional<std::string> mask, const std::string& time, int orbit,
-           bool walkthrough, int frames, int warmup, int block, int resamples, std::optional<std::string> shard,
+           const std::string& buffer, const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
+           const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
+           const py::object& block, const py::object& resamples, std::optional<std::string> shard,
            std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
-           std::pair<int, int> plotSize, bool quiet, py::object progress) {
+           const py::object& plotSizeObject, bool quiet, py::object progress) {
             TradeoffStudyOptions s;
             s.run.scene = scene;
             for (const auto& p : presetList(preset)) s.run.addPreset(p);
             s.run.sets = assignments(settings);
-            s.run.width = size.first;
-            s.run.height = size.second;
+            std::tie(s.run.width, s.run.height) = sizeArg(size, "tradeoff: size", limits::kSize, "tradeoff --size");
             s.knobs = knobs.value_or("");
             s.against = against;
             s.metric = metric;
             s.buffer = buffer;
-            s.aoRays = aoRays;
+            s.aoRays = intArg(aoRays, "tradeoff: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
             s.mask = mask.value_or("");
             s.time = time;
-            s.orbit = orbit;
+            s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
             s.walkthrough = walkthrough;
-            s.frames = frames;
-            s.warmup = warmup;
-            s.block = block;
-            s.resamples = resamples;
+            s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");
+            s.warmup = intArg(warmup, "tradeoff: warmup", limits::kWarmup, "tradeoff --warmup");
+            s.block = intArg(block, "tradeoff: block", limits::kBlock, "tradeoff --block");
+            s.resamples = intArg(resamples, "tradeoff: resamples", limits::kResamples, "tradeoff --resamples");
             s.shard = shard.value_or("");
+            const std::pair<int, int> plotSize = sizeArg(plotSizeObject, "tradeoff: plot_size", limits::kSize,
+                                                         "tradeoff --plot-size");
             return tradeoffStudy(std::move(s), sweep, presets, exclude, csv, json, plot, plotSize, quiet, progress);
         },
         py::arg("scene") = "", py::arg("size") = std::make_pair(640, 360), py::arg("preset") = py::none(),
@@ -767,6 +983,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
     m.def(
         "load_image",
         [](const std::string& path) -> py::array {
+            requirePath(path, "load_image: path");
             FloatImage image;
             {
                 py::gil_scoped_release release;

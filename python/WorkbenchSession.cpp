@@ -8,8 +8,11 @@
 #include "renderer/OptionLimits.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"
+#include "renderer/io/JsonGuard.h"
+#include "renderer/passes/ReferencePass.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceModel.h"
+#include "renderer/scene/FlameParticles.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -39,6 +42,30 @@ std::string describeThread(std::thread::id id) {
 
 }  // namespace
 
+void refuseRecordAsScene(const std::string& spec) {
+    const std::filesystem::path p(spec);
+    std::error_code ec;
+    if (p.extension() != ".json" || !std::filesystem::is_regular_file(p, ec)) return;
+    nlohmann::json j;
+    try {
+        JsonGuardOptions options;
+        options.numbersAreFloats = false;
+        j = readJsonFile(spec, options);
+    } catch (const Error&) {
+        return;  // the scene loader says what is wrong with it
+    }
+    const auto format = j.is_object() ? j.find("format") : j.end();
+    if (format == j.end() || !format->is_string() || format->get<std::string>() != "deferred-workbench record") return;
+    throw FileError(spec, "this is an experiment record (\"format\": \"deferred-workbench record\"), not a scene: "
+                          "`deferred-workbench replay " + spec + "` renders it again and compares; to open its scene "
+                          "in a Session, pass the record's scene.spec (" +
+                          (j.contains("scene") && j["scene"].is_object() && j["scene"].contains("spec") &&
+                                   j["scene"]["spec"].is_string()
+                               ? "here '" + j["scene"]["spec"].get<std::string>() + "'"
+                               : std::string("missing here")) +
+                          ") and its knobs as settings");
+}
+
 WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::vector<std::string>& presets,
                                    const std::vector<std::string>& settings) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
@@ -60,6 +87,7 @@ WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int heig
         }
     }
     run_.validate();
+    refuseRecordAsScene(run_.sceneSpec());
     Scene loaded = loadScene(run_.sceneSpec());  // CPU only: a bad file fails before any GL work
 
     const ProcessContext& pc = processContext();
@@ -78,6 +106,9 @@ WorkbenchSession::~WorkbenchSession() {
 ExperimentRecord WorkbenchSession::record() {
     requireOwningThread();
     if (!last_) throw Error("record: nothing rendered yet (call render() first)");
+    if (isReferenceOutput(last_->buffer))
+        throw Error("record: the last render() was of '" + last_->buffer + "', an output of the CPU reference: replay "
+                    "renders a record with the CLI's render, which has none; render a GPU buffer, then record()");
     // The record's knobs and image hash must come from the same frames: a
     // set() since the render would pair new knobs with the old image.
     const KnobRegistry& k = session_->knobs();
@@ -185,7 +216,7 @@ std::string WorkbenchSession::aovCostWarning() const {
     return AovCostEstimate::check(session_->knobs(), session_->scene(), session_->camera(), width_, height_);
 }
 
-BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int warmup) {
+void WorkbenchSession::checkRender(const std::string& buffer, int frames, int warmup) const {
     requireOwningThread();
     if (!limits::kFrames.holds(frames))
         throw Error("frames must be between " + std::to_string(limits::kFrames.min) + " and " +
@@ -195,7 +226,38 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
                     std::to_string(limits::kWarmup.max) + " (as render --warmup), got " + std::to_string(warmup));
     if (!session_->pipeline().outputs().find(buffer))
         throw UnknownBufferError(unknownBufferMessage(buffer) + " (Session.buffers() lists them)");
+}
+
+bool WorkbenchSession::isReferenceOutput(const std::string& buffer) const {
+    const PublishedOutput* o = session_->pipeline().outputs().find(buffer);
+    return o && o->pass == "reference";
+}
+
+std::uint64_t WorkbenchSession::lastFrameOf(int frames, int warmup) const {
+    return session_->pipeline().frameIndex() + static_cast<std::uint64_t>(warmup + frames - 1);
+}
+
+BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int warmup,
+                                     const reference::ReferenceImages* reference) {
+    checkRender(buffer, frames, warmup);
+    if (isReferenceOutput(buffer) && !reference)
+        throw Error("'" + buffer + "' needs the CPU reference of the view (render() traces it)");
     processContext().context->makeCurrent();
+    // The reference pass shows the reference handed over for these frames
+    // (what the workbench's F9 hands it), or none: a reference of an earlier
+    // view never shows.
+    if (auto* pass = session_->pipeline().pass<ReferencePass>()) {
+        if (reference) {
+            auto shown = std::make_shared<ReferencePass::Images>();
+            shown->lbuffer = reference->lbuffer;
+            shown->final = reference->final;
+            shown->ao = reference->ao;
+            shown->describe = "CPU reference (" + std::to_string(reference->stats.primaryRays) + " primary rays)";
+            pass->setReference(std::move(shown));
+        } else if (pass->hasReference()) {
+            pass->setReference(nullptr, "no CPU reference of this view: Session.render(\"reference.*\") traces one");
+        }
+    }
     FrameRequest request;
     request.outputs = {buffer};
     PassTimer& timer = session_->pipeline().timer();
@@ -254,23 +316,32 @@ void WorkbenchSession::writeBuffer(const std::string& buffer, const std::string&
 
 void WorkbenchSession::writeKnobValues(const std::string& path) const { session_->writeKnobValues(path); }
 
-reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options) {
-    if (options.aoRays < 1) throw Error("ao_rays must be at least 1");
-    if (options.seed < 0) throw Error("seed must not be negative");
-    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session_->knobs(), session_->scene());
+reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options,
+                                                       std::optional<std::uint64_t> frame) const {
+    if (!limits::kAoRays.holds(options.aoRays) || !limits::kSeed.holds(options.seed) ||
+        !limits::kReferenceThreads.holds(options.threads))
+        throw Error("reference: ao_rays, seed or threads outside reference's ranges (renderer/OptionLimits.h)");
+    std::optional<Scene> animated;
+    if (frame) {
+        animated = session_->scene();
+        animateFlameParticles(*animated, *frame);
+    }
+    const Scene& scene = animated ? *animated : session_->scene();
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session_->knobs(), scene);
     model.aoRays = options.aoRays;
     model.seed = static_cast<std::uint32_t>(options.seed);
     reference::ReferenceRequest request;
     request.camera = session_->camera();
     request.width = width_;
     request.height = height_;
-    request.threads = options.threads;
+    // oneTBB runs at most as many threads as the machine has cores (as reference --threads).
+    request.threads = options.threads > 0 ? std::min(options.threads, reference::availableThreads()) : 0;
     const reference::ReferenceCache cache(options.cacheDirectory.empty() ? std::filesystem::path()
                                                                         : std::filesystem::path(options.cacheDirectory));
-    const std::string key = reference::referenceKey(session_->scene(), model, request);
+    const std::string key = reference::referenceKey(scene, model, request);
     if (options.useCache)
         if (auto cached = cache.load(key)) return *cached;
-    reference::ReferenceImages images = reference::renderReference(session_->scene(), model, request);
+    reference::ReferenceImages images = reference::renderReference(scene, model, request, options.progress);
     if (options.useCache) cache.store(key, images);
     return images;
 }

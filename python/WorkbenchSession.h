@@ -54,13 +54,21 @@ struct BufferInfo {
     std::string name, kind, pass, description;
 };
 
+// The CPU reference's options, as `reference`'s flags (ranges: renderer/OptionLimits.h).
 struct ReferenceOptions {
-    int aoRays = 64;
-    int seed = 1;
-    int threads = 0;
+    int aoRays = 64;   // --ao-rays
+    int seed = 1;      // --seed
+    int threads = 0;   // --threads; 0: every core
     bool useCache = true;
     std::string cacheDirectory;  // empty: ReferenceCache's default
+    // Counts finished pixels; its `cancel` stops the trace (ReferenceCancelled).
+    reference::ReferenceProgress* progress = nullptr;
 };
+
+// Throws FileError when `sceneSpec` names an experiment record (a .json whose
+// "format" is a record's), saying how to replay it: the scene loader would
+// read it as an empty scene with only a warning. Anything else passes.
+void refuseRecordAsScene(const std::string& sceneSpec);
 
 class WorkbenchSession {
 public:
@@ -85,9 +93,21 @@ public:
     const KnobRegistry& knobs() const;
 
     std::vector<BufferInfo> buffers() const;
+    // Throws what render() would throw for these arguments before any frame:
+    // Error for frames or warm-up outside render's ranges, UnknownBufferError.
+    void checkRender(const std::string& buffer, int frames, int warmup) const;
+    // An output of the `reference` pass (reference.lbuffer, reference.final,
+    // reference.ao, compare.error): render() needs the CPU reference of the view for it.
+    bool isReferenceOutput(const std::string& buffer) const;
+    // The index of the last frame render(..., frames, warmup) renders next.
+    std::uint64_t lastFrameOf(int frames, int warmup) const;
     // Renders `warmup` + `frames` frames asking for `buffer`, keeps their
-    // timings, and reads `buffer` back from the last one.
-    BufferImage render(const std::string& buffer, int frames, int warmup);
+    // timings, and reads `buffer` back from the last one. `reference`: the
+    // CPU reference of the view, handed to the `reference` pass for these
+    // frames (as the workbench's F9 hands it over), which a reference output
+    // needs (Error without it); without one the pass holds none.
+    BufferImage render(const std::string& buffer, int frames, int warmup,
+                       const reference::ReferenceImages* reference = nullptr);
     // AOV's cost warning for the knobs, scene and camera as they are now at
     // the session's size (AovCostEstimate::check, as render prints it);
     // empty when under the limits or AOV is off. render() does not print it:
@@ -100,8 +120,12 @@ public:
     void writeBuffer(const std::string& buffer, const std::string& path);
     // Every knob as render --dump-knobs writes them.
     void writeKnobValues(const std::string& path) const;
-    // The CPU reference of this view (scene, camera, size, knobs), through the cache.
-    reference::ReferenceImages reference(const ReferenceOptions& options);
+    // The CPU reference of this view (scene, camera, size, knobs), through
+    // the cache; the scene as frame `frame` has it (flame particles move with
+    // the frame index), none: as the last frame had it. CPU only, reads the
+    // session without changing it: runs on any thread while the owning one waits.
+    reference::ReferenceImages reference(const ReferenceOptions& options,
+                                         std::optional<std::uint64_t> frame = std::nullopt) const;
 
     void resize(int width, int height);
     int width() const { return width_; }

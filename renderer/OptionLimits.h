@@ -1,6 +1,7 @@
 #pragma once
 // The ranges of the numeric command-line options, in one place: the commands
-// that parse the options (render, bench, tradeoff) and the experiment-record
+// that parse the options (render, bench, tradeoff, reference), the Python
+// module's keyword arguments (python/Module.cpp) and the experiment-record
 // reader (a record is held to the limits of the options its fields stand
 // for: renderer/record/ExperimentRecord) take them from here. Inclusive.
 namespace dw {
@@ -19,7 +20,9 @@ constexpr OptionRange kResamples{100, 1000000};  // bench/tradeoff --resamples
 constexpr OptionRange kBenchLights{0, 1000000};  // bench --lights, each count
 constexpr OptionRange kOrbit{1, 100000};       // bench/tradeoff --orbit poses
 constexpr OptionRange kLppPoses{1, 1000};      // bench --lpp-poses
-constexpr OptionRange kAoRays{1, 1 << 20};     // tradeoff --ao-rays
+constexpr OptionRange kAoRays{1, 1 << 20};     // reference/compare/tradeoff --ao-rays
+constexpr OptionRange kSeed{0, 2147483647};    // reference/bench --seed
+constexpr OptionRange kReferenceThreads{0, 4096};  // reference --threads (0: every core)
 }  // namespace limits
 
 }  // namespace dw

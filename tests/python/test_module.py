@@ -75,6 +75,8 @@ class SessionTest(unittest.TestCase):
         self.assertEqual([line.split()[0] for line in listed.splitlines() if line.strip()], s.buffers())
         produced = {}
         for name, info in details.items():
+            if info["pass"] == "reference":
+                continue  # the CPU reference's outputs: test_reference_outputs_equal_the_cli_reference
             try:
                 image = s.render(name)
             except dw.Error as e:
@@ -184,15 +186,15 @@ class SessionTest(unittest.TestCase):
             dw.Session(scene=os.path.join(self.tmp.name, "missing.gltf"), size=SIZE)
         with self.assertRaises(dw.Error):
             dw.Session(scene="nowhere", size=SIZE)
-        with self.assertRaises(dw.Error):
+        with self.assertRaises(ValueError):
             dw.Session(scene="default", size=(0, 10))
         with self.assertRaises(dw.Error):
             dw.Session(scene="default", size=SIZE, preset="no-such-preset")
         with self.assertRaises(ValueError):
             self.session.render("no.such.buffer")
-        with self.assertRaises(dw.Error):
+        with self.assertRaises(ValueError):
             self.session.render("final", frames=0)
-        with self.assertRaises(dw.Error):
+        with self.assertRaises(ValueError):
             self.session.render("final", frames=100001)  # render --frames' range, 1..100000
         with self.assertRaises(ValueError):
             dw.Session(scene="default", size=SIZE, preset=["Low", 3])
@@ -249,7 +251,7 @@ class SessionTest(unittest.TestCase):
         lb = s.render("lbuffer")
         np.testing.assert_allclose(p["values"]["lbuffer"]["raw"][:3], lb[SIZE[1] // 2, SIZE[0] // 2, :3], rtol=0,
                                    atol=0)
-        with self.assertRaises(dw.Error):
+        with self.assertRaises(ValueError):
             s.probe(-1, 0)
 
         a = np.zeros((16, 16, 3), np.float32)
@@ -367,6 +369,204 @@ class SessionTest(unittest.TestCase):
         self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ao.raw", "0.25"))
         with self.assertRaises(dw.Error):
             dw.Session(scene="default", size=(8, 8)).record(os.path.join(self.tmp.name, "none.json"))
+
+    def test_reference_outputs_equal_the_cli_reference(self):
+        # reference.lbuffer, reference.final and reference.ao are `reference --buffer lbuffer|final|ao`'s
+        # images of the session's view bit for bit; compare.error is the reference pass's per-pixel
+        # |L - L_ref| / (L_ref + 0.001) of this frame's lbuffer (L the luminance), as the workbench shows it.
+        size = (48, 27)
+        s = dw.Session(scene="default", size=size)
+        self.assertTrue({"reference.lbuffer", "reference.final", "reference.ao", "compare.error"} <= set(s.buffers()))
+        files = {}
+        for name in ("lbuffer", "final", "ao"):
+            out = os.path.join(self.tmp.name, "cli-reference-%s.exr" % name)
+            subprocess.run([BINARY, "reference", "--size", "%dx%d" % size, "--buffer", name, "--ao-rays", "8",
+                            "--seed", "3", "--no-cache", "--quiet", "--out", out], check=True, capture_output=True)
+            files[name] = dw.load_image(out)
+        seen = []
+        for name in ("lbuffer", "final", "ao"):
+            image = s.render("reference." + name, ao_rays=8, seed=3, threads=1, cache=False, progress=seen.append)
+            self.assertEqual(image.dtype, np.float32, name)
+            self.assertEqual(image.shape, files[name].shape, name)
+            self.assertEqual(image.shape[:2], (size[1], size[0]), name)
+            self.assertTrue(np.array_equal(image, files[name], equal_nan=True), name)
+        self.assertEqual(seen[-1], 1.0)
+        self.assertTrue(all(0.0 <= f <= 1.0 for f in seen), seen)
+        self.assertLess(float(files["ao"].min()), 1.0)  # something is occluded
+
+        error = s.render("compare.error", ao_rays=8, seed=3, cache=False)
+        self.assertEqual((error.dtype, error.shape), (np.float32, (size[1], size[0], 1)))
+
+        def luminance(p):
+            p = p.astype(np.float64)
+            return (0.2126 * p[..., 0] + 0.7152 * p[..., 1] + 0.0722 * p[..., 2]).astype(np.float32).astype(np.float64)
+
+        frame, ref = luminance(s.render("lbuffer")), luminance(files["lbuffer"])
+        expected = (np.abs(frame - ref) / (ref + 1e-3)).astype(np.float32)
+        self.assertTrue(np.array_equal(error[..., 0], expected))
+        self.assertGreater(float(error.max()), 0.0)
+
+        # A knob of the model changes the reference (the view's, not an earlier one's).
+        s.set("ao.enabled", False)
+        self.assertFalse(np.array_equal(s.render("reference.lbuffer", ao_rays=8, seed=3, cache=False), files["lbuffer"]))
+        s.set("ao.enabled", True)
+
+        # An exception in progress (or Ctrl-C) stops the trace and is raised; the session stays usable.
+        class Stop(Exception):
+            pass
+
+        def stop(fraction):
+            raise Stop()
+
+        with self.assertRaises(Stop):
+            s.render("reference.ao", ao_rays=4096, cache=False, progress=stop)
+        with self.assertRaises(Stop):
+            s.reference("ao", ao_rays=4096, cache=False, progress=stop)
+        self.assertEqual(s.render("final").shape, (size[1], size[0], 4))
+        # A record is replayed by the CLI's render, which has no CPU reference: refused, by name.
+        with self.assertRaises(ValueError) as e:
+            s.render("reference.ao", ao_rays=8, record=os.path.join(self.tmp.name, "ref-record.json"))
+        self.assertIn("reference.ao", str(e.exception))
+        s.render("reference.ao", ao_rays=8, seed=3)
+        with self.assertRaises(dw.Error) as e:
+            s.record(os.path.join(self.tmp.name, "ref-record.json"))
+        self.assertIn("reference.ao", str(e.exception))
+
+    def test_numeric_arguments_are_held_to_the_cli_ranges(self):
+        # renderer/OptionLimits.h's ranges: outside them, however large, ValueError naming the
+        # argument and the range; a value that is no integer is TypeError naming it.
+        s = self.session
+        s.render("final")
+        small = {"sizes": [(8, 8)], "frames": 1, "warmup": 0}
+        cases = [
+            ("render: frames", lambda v: s.render("final", frames=v), [0, 100001, 10**12, -1], "between 1 and 100000"),
+            ("render: warmup", lambda v: s.render("final", warmup=v), [-1, 100001, 2**70], "between 0 and 100000"),
+            ("render: ao_rays", lambda v: s.render("final", ao_rays=v), [0, 2**20 + 1], "between 1 and 1048576"),
+            ("render: threads", lambda v: s.render("final", threads=v), [-2, 4097], "between 0 and 4096"),
+            ("probe: x", lambda v: s.probe(v, 0), [-1, SIZE[0], 2**40], "between 0 and %d" % (SIZE[0] - 1)),
+            ("probe: y", lambda v: s.probe(0, v), [-1, SIZE[1], -2**40], "between 0 and %d" % (SIZE[1] - 1)),
+            ("resize: width", lambda v: s.resize(v, 8), [0, 16385, 10**30], "between 1 and 16384"),
+            ("Session: size height", lambda v: dw.Session(size=(8, v)), [0, 16385, 2**64], "between 1 and 16384"),
+            ("reference: threads", lambda v: s.reference("ao", threads=v), [-2, 5000], "between 0 and 4096"),
+            ("reference: ao_rays", lambda v: s.reference("ao", ao_rays=v), [0, 2**31], "between 1 and 1048576"),
+            ("reference: seed", lambda v: s.reference("ao", seed=v), [-1, 2**31], "between 0 and 2147483647"),
+            ("bench: frames", lambda v: dw.bench(**dict(small, frames=v)), [0, 10**12], "between 1 and 100000"),
+            ("bench: warmup", lambda v: dw.bench(**dict(small, warmup=v)), [-1], "between 0 and 100000"),
+            ("bench: block", lambda v: dw.bench(block=v, **small), [0, 100001], "between 1 and 100000"),
+            ("bench: seed", lambda v: dw.bench(seed=v, **small), [-1, 2**31], "between 0 and 2147483647"),
+            ("bench: resamples", lambda v: dw.bench(resamples=v, **small), [99, 1000001], "between 100 and 1000000"),
+            ("bench: orbit", lambda v: dw.bench(orbit=v, **small), [-1, 100001], "between 0 and 100000"),
+            ("bench: lights[]", lambda v: dw.bench(lights=[v], **small), [-1, 1000001], "between 0 and 1000000"),
+            ("bench: sizes[] width", lambda v: dw.bench(**dict(small, sizes=[(v, 8)])), [0, 16385], "between 1 and 16384"),
+            ("tradeoff: size width", lambda v: dw.tradeoff(size=(v, 8)), [0, 2**63], "between 1 and 16384"),
+            ("tradeoff: ao_rays", lambda v: dw.tradeoff(ao_rays=v), [0, 2**20 + 1], "between 1 and 1048576"),
+            ("tradeoff: frames", lambda v: dw.tradeoff(frames=v), [0, 10**12], "between 1 and 100000"),
+            ("tradeoff: warmup", lambda v: dw.tradeoff(warmup=v), [-1], "between 0 and 100000"),
+            ("tradeoff: block", lambda v: dw.tradeoff(block=v), [0], "between 1 and 100000"),
+            ("tradeoff: resamples", lambda v: dw.tradeoff(resamples=v), [10], "between 100 and 1000000"),
+            ("tradeoff: orbit", lambda v: dw.tradeoff(orbit=v), [-1, 100001], "between 0 and 100000"),
+            ("tradeoff: plot_size width", lambda v: dw.tradeoff(plot_size=(v, 600)), [0, 10**9], "between 1 and 16384"),
+        ]
+        for name, call, values, text in cases:
+            for v in values:
+                with self.assertRaises(ValueError, msg="%s=%r" % (name, v)) as e:
+                    call(v)
+                self.assertNotIsInstance(e.exception, dw.KnobError)
+                self.assertIn(name, str(e.exception))
+                self.assertIn(text, str(e.exception))
+            for v in (None, 1.5, "3", True, float("nan")):
+                with self.assertRaises(TypeError, msg="%s=%r" % (name, v)) as e:
+                    call(v)
+                self.assertIn(name, str(e.exception))
+        # numpy's integers are integers; floats are thresholds: finite, at least 0 (compare --warn, --fail).
+        self.assertEqual(s.render("final", frames=np.int64(2), warmup=np.uint8(0)).shape, (SIZE[1], SIZE[0], 4))
+        a = np.zeros((4, 4, 3), np.float32)
+        for v in (-1e-9, float("nan"), float("inf"), 10**400):
+            for key in ("warn_threshold", "fail_threshold"):
+                with self.assertRaises(ValueError, msg="%s=%r" % (key, v)) as e:
+                    dw.compare(a, a, **{key: v})
+                self.assertIn("compare: " + key, str(e.exception))
+        with self.assertRaises(TypeError):
+            dw.compare(a, a, fail_threshold="0.1")
+        self.assertEqual(dw.compare(a, a, warn_threshold=0, fail_threshold=np.float32(0.5))["fail_count"], 0)
+        # Lists: an empty size list measures nothing, a light count given twice is one axis value.
+        with self.assertRaises(ValueError) as e:
+            dw.bench(sizes=[], frames=1)
+        self.assertIn("sizes", str(e.exception))
+        with self.assertRaises(ValueError):
+            dw.bench(lights=[4, 4], **small)
+        with self.assertRaises(ValueError):
+            dw.bench(orbit=2, walkthrough=True, **small)
+        for v in ((8,), (8, 8, 8), "8x8", 8):
+            with self.assertRaises(TypeError, msg=repr(v)):
+                dw.Session(size=v)
+        self.assertEqual(s.size, SIZE)  # nothing above changed the session
+
+    def test_an_experiment_record_is_refused_as_a_scene(self):
+        s = dw.Session(scene="default", size=(16, 9))
+        s.render("final")
+        path = os.path.join(self.tmp.name, "as-scene-record.json")
+        s.record(path)
+        for call in (lambda: dw.Session(scene=path, size=(16, 9)), lambda: dw.bench(scene=path, sizes=[(8, 8)])):
+            with self.assertRaises(dw.Error) as e:
+                call()
+            self.assertIn("experiment record", str(e.exception))
+            self.assertIn("deferred-workbench replay", str(e.exception))
+
+    def test_bad_values_raise_and_never_crash(self):
+        # None, wrong types, NaN, infinities, negative sizes, empty strings and missing files
+        # through every function: each raises TypeError or ValueError (KnobError) or dw.Error with
+        # a message, and the interpreter and the session go on.
+        s = dw.Session(scene="default", size=(16, 9))
+        s.render("final")
+        missing = os.path.join(self.tmp.name, "missing", "file.exr")
+        a = np.zeros((4, 4, 3), np.float32)
+        bad = [None, "", float("nan"), float("inf"), -1, -2**70, (-4, -4), [], {}, b"x", missing]
+        calls = {
+            "Session(scene)": lambda v: dw.Session(scene=v, size=(8, 8)),
+            "Session(size)": lambda v: dw.Session(size=v),
+            "Session(preset)": lambda v: dw.Session(size=(8, 8), preset=v),
+            "Session(settings)": lambda v: dw.Session(size=(8, 8), settings={"ssao.radius": v}),
+            "set": lambda v: s.set("ssao.radius", v),
+            "set(name)": lambda v: s.set(v, 1),
+            "get": lambda v: s.get(v),
+            "knob_info": lambda v: s.knob_info(v),
+            "render": lambda v: s.render(v),
+            "render(record)": lambda v: s.render("final", record=v),
+            "write": lambda v: s.write("final", v),
+            "dump_knobs": lambda v: s.dump_knobs(v),
+            "record": lambda v: s.record(v),
+            "probe": lambda v: s.probe(v, v),
+            "resize": lambda v: s.resize(v, v),
+            "reference": lambda v: s.reference(v),
+            "reference(out)": lambda v: s.reference("ao", ao_rays=1, out=v),
+            "reference(progress)": lambda v: s.reference("ao", ao_rays=1, progress=v),
+            "load_image": lambda v: dw.load_image(v),
+            "compare": lambda v: dw.compare(v, a),
+            "compare(json)": lambda v: dw.compare(a, a, json=v),
+            "bench(sizes)": lambda v: dw.bench(sizes=v, frames=1, warmup=0),
+            "bench(scene)": lambda v: dw.bench(scene=v, sizes=[(8, 8)], frames=1, warmup=0),
+            "tradeoff(size)": lambda v: dw.tradeoff(size=v, quiet=True),
+            "tradeoff(metric)": lambda v: dw.tradeoff(size=(8, 8), metric=v, quiet=True),
+        }
+        allowed = (TypeError, ValueError, dw.Error)
+        for name, call in calls.items():
+            for v in bad:
+                try:
+                    call(v)
+                except allowed as e:
+                    self.assertTrue(str(e), "%s(%r): an empty message" % (name, v))
+                    self.assertNotIn("Success", str(e), "%s(%r): %s" % (name, v, e))  # errno 0 as a reason
+        # Arrays without pixels or channels (a division by zero once), NaN and 1-D arrays.
+        for arr in (np.zeros((0, 0, 3), np.float32), np.zeros((4, 4, 0), np.float32), np.zeros((4,), np.float32),
+                    np.full((4, 4, 3), np.nan, np.float32), np.array([[None]], object)):
+            with self.assertRaises(allowed, msg=str(arr.shape)):
+                dw.compare(arr, arr.copy())
+        for empty in ("", None):
+            for call in (lambda: s.write("final", empty), lambda: s.dump_knobs(empty), lambda: dw.load_image(empty)):
+                with self.assertRaises((TypeError, ValueError)):
+                    call()
+        self.assertEqual(s.render("final").shape, (9, 16, 4))
 
     def test_reference_and_compare_write_their_files(self):
         s = dw.Session(scene="default", size=(32, 18))
