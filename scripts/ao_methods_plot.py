@@ -10,7 +10,17 @@ one SSAO reaches at 16 samples, half size), the cheapest point of each
 method at or below it.
 
     python3 scripts/ao_methods_plot.py --out ao.png ssao=a.csv gtao=b.csv aov=c.csv \
-        [--target-method ssao --target ssao.samples=16,ssao.resolution=half] [--only aov.radius=1] [--title T]
+        [--target-method ssao --target ssao.samples=16,ssao.resolution=half] [--only aov.radius=1] [--title T] \
+        [--errors ssao=a-flip-ao.csv ...] [--plot-error flip:ao]
+
+--errors METHOD=FILE.csv (repeatable): another tradeoff CSV of the same sweep
+measuring another error (e.g. `--metric flip --buffer final` with `--frames 1`);
+each point keeps the time of the METHOD=FILE.csv it came from (the timed run)
+and gains this error, matched by the sweep's values. With any --errors the
+script prints, per method, a table of every point's AO ms and all its errors
+(one column per metric and buffer). --plot-error METRIC:BUFFER (e.g. flip:final)
+puts that error on the plot, the front and the target table instead of the
+main CSV's; a point without that error is left out.
 
 Rows: the `all` camera rows when there are several cameras, else camera 0.
 Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing.
@@ -54,6 +64,14 @@ def read(label, path):
     return points
 
 
+def read_errors(path):
+    """A tradeoff CSV as {settings: error} (the same rows as read), with its metric and buffer."""
+    points = read("", path)
+    if not points:
+        raise ValueError(f"{path}: no rows")
+    return f'{points[0]["metric"]}:{points[0]["buffer"]}', {p["settings"]: p["error"] for p in points}
+
+
 def front(points):
     """Points no other point beats: at most as slow and as wrong, better in one."""
     out = []
@@ -78,6 +96,10 @@ def main():
     parser.add_argument("--target", default="ssao.samples=16,ssao.resolution=half",
                         help="the target method's point whose error is the target")
     parser.add_argument("--size", default="800x560")
+    parser.add_argument("--errors", action="append", default=[],
+                        help="METHOD=FILE.csv: another error of METHOD's sweep, matched by settings (repeatable)")
+    parser.add_argument("--plot-error", default="",
+                        help="METRIC:BUFFER (e.g. flip:final): the error the plot, front and target table use")
     parser.add_argument("--only", action="append", default=[],
                         help="axis=value: of the rows that have this axis, keep those at this value (repeatable); "
                              "e.g. aov.radius=1, so every method is measured against the same ray-traced AO")
@@ -90,6 +112,28 @@ def main():
                 raise ValueError(f"{item}: give METHOD=FILE.csv")
             label, path = item.split("=", 1)
             points += read(label, path)
+        for p in points:
+            p["errors"] = {f'{p["metric"]}:{p["buffer"]}': p["error"]}
+        kinds = list(dict.fromkeys(f'{p["metric"]}:{p["buffer"]}' for p in points))
+        for item in args.errors:
+            if "=" not in item:
+                raise ValueError(f"--errors {item}: give METHOD=FILE.csv")
+            label, path = item.split("=", 1)
+            mine = [p for p in points if p["method"] == label]
+            if not mine:
+                raise ValueError(f"--errors {item}: no main CSV for method '{label}'")
+            kind, errors = read_errors(path)
+            unmatched = [p["settings"] for p in mine if p["settings"] not in errors]
+            if len(unmatched) == len(mine):
+                raise ValueError(f"{path}: none of its rows has the settings of {label}'s points "
+                                 f"(e.g. {mine[0]['settings']})")
+            for p in mine:
+                if p["settings"] in errors:
+                    p["errors"][kind] = errors[p["settings"]]
+            if kind not in kinds:
+                kinds.append(kind)
+        if args.plot_error and args.plot_error not in kinds:
+            raise ValueError(f"--plot-error {args.plot_error}: not among the errors read ({', '.join(kinds)})")
     except (OSError, ValueError, KeyError) as e:
         print(f"ao_methods_plot: {e}", file=sys.stderr)
         return 2
@@ -99,6 +143,27 @@ def main():
     if not points:
         print("ao_methods_plot: no rows", file=sys.stderr)
         return 2
+
+    if args.errors:
+        print(f"Every point's errors (AO passes ms from the METHOD=FILE.csv runs):\n")
+        for label in dict.fromkeys(p["method"] for p in points):
+            mine = [p for p in points if p["method"] == label]
+            names = list(mine[0]["values"].keys())
+            print(f"{label}:\n")
+            print("| " + " | ".join(names + ["AO passes ms"] + [k.replace(":", " (") + ")" for k in kinds]) + " |")
+            print("| " + " | ".join(["---"] * len(names) + ["---:"] * (1 + len(kinds))) + " |")
+            for p in mine:
+                errs = [f'{p["errors"][k]:.4f}' if k in p["errors"] else "" for k in kinds]
+                print("| " + " | ".join([p["values"][n] for n in names] + [f'{p["ao_ms"]:.2f}'] + errs) + " |")
+            print()
+    if args.plot_error:
+        points = [p for p in points if args.plot_error in p["errors"]]
+        for p in points:
+            p["error"] = p["errors"][args.plot_error]
+            p["metric"], p["buffer"] = args.plot_error.split(":", 1)
+        if not points:
+            print("ao_methods_plot: no rows", file=sys.stderr)
+            return 2
 
     wanted = dict(kv.split("=", 1) for kv in args.target.split(",") if kv)
     target = [p for p in points if p["method"] == args.target_method

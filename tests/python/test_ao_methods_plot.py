@@ -13,13 +13,13 @@ HEAD = ("point,{axes},camera,metric,buffer,error,error_lo,error_hi,frames,frame_
         "frame_gpu_ms_hi,gpu_ms.ao,gpu_ms.ao_filter,pareto\n")
 
 
-def write(folder, name, axes, rows):
+def write(folder, name, axes, rows, metric="rms", buffer="ao"):
     path = os.path.join(folder, name)
     with open(path, "w") as f:
         f.write(HEAD.format(axes=",".join(axes)))
         for i, (values, error, ao, filt) in enumerate(rows):
             for cam in ("0", "all"):
-                f.write(f"{i},{','.join(values)},{cam},rms,ao,{error},,,3,100,90,110,{ao},{filt},0\n")
+                f.write(f"{i},{','.join(values)},{cam},{metric},{buffer},{error},,,3,100,90,110,{ao},{filt},0\n")
     return path
 
 
@@ -57,6 +57,33 @@ class AoMethodsPlotTest(unittest.TestCase):
         self.assertIn("| 0.71 |", target)  # 5 ms / the target's 7 ms
         if r.returncode == 0:
             self.assertGreater(os.path.getsize(out), 1000)
+
+    def test_errors_table_and_plot_error(self):
+        # FLIP of the final image from an untimed run (its ms are not used): the order of the errors reversed,
+        # and one point (8,quarter) missing.
+        flip = write(self.tmp.name, "ssao-flip-final.csv", ["ssao.samples", "ssao.resolution"],
+                     [(("16", "half"), 0.02, 900, 900), (("4", "half"), 0.03, 900, 900)], "flip", "final")
+        r, _ = self.run_script(f"ssao={self.ssao}", f"gtao={self.gtao}", "--errors", f"ssao={flip}",
+                               "--plot-error", "flip:final")
+        self.assertIn(r.returncode, (0, 3), r.stderr)
+        table, _, rest = r.stdout.partition("Joint Pareto front")
+        self.assertIn("| ssao.samples | ssao.resolution | AO passes ms | rms (ao) | flip (final) |", table)
+        self.assertIn("| 16 | half | 7.00 | 0.0600 | 0.0200 |", table)
+        self.assertIn("| 8 | quarter | 1.50 | 0.0700 |  |", table)
+        self.assertIn("against the flip of final", rest)
+        # Only ssao's two points with a FLIP: 4,half (4 ms, 0.03) and 16,half (7 ms, 0.02) both on the front,
+        # timed by the main CSV; gtao has no flip:final and is left out.
+        front = [line for line in rest.partition("At the error")[0].splitlines() if line.startswith("| ssao")
+                 or line.startswith("| gtao")]
+        self.assertEqual([row.split("|")[2].strip() for row in front],
+                         ["ssao.samples=4,ssao.resolution=half", "ssao.samples=16,ssao.resolution=half"])
+        self.assertIn("| 7.00 |", front[1])
+        r, _ = self.run_script(f"ssao={self.ssao}", "--errors", f"ssao={flip}", "--plot-error", "flip:ao")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("flip:ao", r.stderr)
+        r, _ = self.run_script(f"ssao={self.ssao}", "--errors", f"aov={flip}")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("'aov'", r.stderr)
 
     def test_bad_csv_is_refused(self):
         bad = os.path.join(self.tmp.name, "bad.csv")
