@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "renderer/Error.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
 #include "ui/Widgets.h"
@@ -96,8 +97,45 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
     return true;
 }
 
-bool ParetoPanel::startSweep(const std::string& knob, UiState& state, RenderSession& session) {
+std::vector<std::pair<std::string, std::string>> ParetoPanel::overAovCost(const std::string& knob,
+                                                                           RenderSession& session, int width,
+                                                                           int height) {
+    std::vector<std::pair<std::string, std::string>> over;
+    const int w = std::max(width, 16), h = std::max(height, 16);
+    const Camera& camera = session.camera();  // the sweep renders with it
+    for (const std::string& value : QuickSweep::valuesOf(session.knobs(), knob)) {
+        KnobRegistry trial = session.knobs();
+        trial.setFromString(knob, value);
+        const auto e = AovCostEstimate::forKnobs(trial, session.scene(), camera, w, h);
+        if (!e) continue;
+        const auto [aw, ah] = AovCostEstimate::aoSize(trial, w, h);
+        if (AovCostEstimate::exceeds(*e, aw, ah)) over.emplace_back(value, AovCostEstimate::warning(*e, trial, w, h));
+    }
+    return over;
+}
+
+bool ParetoPanel::startSweep(std::string knob, UiState& state, RenderSession& session, bool confirmed) {
+    // By value: `knob` may be askedKnob, cleared below.
+    askedKnob.clear();
+    askedCost.clear();
     try {
+        if (!confirmed) {
+            // The live view's AOV guard covers the states the view renders; a
+            // sweep renders states of its own, so it asks here, before any.
+            const auto over = overAovCost(knob, session, session.pipeline().width(), session.pipeline().height());
+            if (!over.empty()) {
+                std::string values;
+                for (const auto& [v, w] : over) values += (values.empty() ? "" : ", ") + v;
+                askedKnob = knob;
+                askedCost = "quick sweep of " + knob + " not started: " + std::to_string(over.size()) + " of " +
+                            std::to_string(QuickSweep::valuesOf(session.knobs(), knob).size()) +
+                            " values over the AOV cost limit (" + values + "); " + knob + "=" + over.front().first +
+                            ": " + over.front().second;
+                state.log.error(askedCost + ". 'sweep anyway' in the Pareto panel renders them", state.time,
+                                "quick sweep");
+                return false;
+            }
+        }
         FloatImage baseline;
         std::string name = "the current settings' image";
         const ReferencePass* ref = session.pipeline().pass<ReferencePass>();
@@ -113,6 +151,8 @@ bool ParetoPanel::startSweep(const std::string& knob, UiState& state, RenderSess
         state.sweep.start(session.knobs(), knob, std::move(baseline), name);
         sweepShown = false;
         error.clear();
+        state.log.succeeded("quick sweep");
+        if (confirmed) state.log.info("quick sweep of " + knob + ": rendering values over the AOV cost limit, as asked", state.time);
         return true;
     } catch (const std::exception& e) {
         error = "quick sweep of " + knob + ": " + e.what();
@@ -147,12 +187,25 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here");
-        ImGui::SameLine();
+        sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + ImGui::GetStyle().FramePadding.x * 2.0f);
         ImGui::BeginDisabled(sweepKnob.empty());
         if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
         ImGui::EndDisabled();
         noteItem("pareto.sweep");
         if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
+        if (!askedCost.empty()) {
+            // Asked first, as the live view's AOV guard asks.
+            wrappedColored(kErrorColor, askedCost);
+            if (ImGui::Button("sweep anyway")) startSweep(askedKnob, state, session, true);
+            noteItem("pareto.sweep_anyway");
+            sameLineIfFits(ImGui::CalcTextSize("cancel").x + ImGui::GetStyle().FramePadding.x * 2.0f);
+            if (ImGui::Button("cancel##aov")) {
+                askedKnob.clear();
+                askedCost.clear();
+                state.log.succeeded("quick sweep");
+            }
+            noteItem("pareto.sweep_cancel");
+        }
     }
     if (!sweepShown && state.sweep.done()) {
         // The finished sweep replaces the table on show.
