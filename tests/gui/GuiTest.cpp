@@ -305,6 +305,58 @@ TEST(Gui, AtTheDefaultSizesTheExportButtonIsInItsPanelAndTheLightsKeepTheirNames
     }
 }
 
+// At 1024x640 and 1600x900, with the Pareto panel open and the A/B split's
+// numbers in: the quick-sweep button and each of
+// the numbers' lines lie inside the visible part of their panel (at 1024x640
+// the button goes under the knob's combo and the numbers take two lines).
+TEST(Gui, AtTheDefaultSizesTheQuickSweepButtonAndTheAbNumbersFitTheirPanels) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("default");
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}}) {
+        const std::string size = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h));
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;
+        state.panels.pareto = true;
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        ui::AbView& ab = state.ab;
+        ab.enabled = true;
+        ab.source = ui::AbSource::Preset;
+        ab.preset = "Low";
+        ab.ready = true;
+        ab.describeB = "preset Low";
+        ab.rms = 0.00587;
+        ab.flip = 0.0202;
+        ab.haveFlip = true;
+        ab.a.gpuMs = {141.2, 139.9, 140.8};
+        ab.b.gpuMs = {104.1, 103.5, 104.9};
+        ab.gpuDifference = {37.25, -0.32, 56.27, 2000};
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            ++state.framesRendered;
+            state.renderSize = {64, 36};
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        const auto& items = ui::drawnItems();
+        auto inside = [&](const std::string& name, const std::string& panel) {
+            ASSERT_TRUE(items.count(name)) << name << " " << size;
+            const ui::DrawnItem& e = items.at(name);
+            EXPECT_EQ(e.frame, ImGui::GetFrameCount()) << name << " " << size;
+            EXPECT_EQ(e.window, panel) << name << " " << size;
+            EXPECT_GE(e.x, e.clipX) << name << " " << size;
+            EXPECT_LE(e.x + e.w, e.clipX + e.clipW + 0.5f) << name << " " << size << ": cut at the panel's right";
+            EXPECT_GE(e.y, e.clipY) << name << " " << size;
+            EXPECT_LE(e.y + e.h, e.clipY + e.clipH + 0.5f) << name << " " << size << ": cut at the panel's bottom";
+        };
+        inside("pareto.sweep", "Pareto");
+        inside("ab.numbers", "Viewport");
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        EXPECT_NEAR(items.at("ab.numbers").h, (w < 1100.0f ? 2.0f : 1.0f) * line - ImGui::GetStyle().ItemSpacing.y, 1.5f) << size;
+    }
+}
+
 TEST(Gui, UnderXvfbTheLayoutFollowsAResizeDownAndBackAndADragOrbitsWithoutPinningTheProbe) {
     ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
     const LayoutReport small = runScripted("layout-1024", "1024x640", 3, "");
