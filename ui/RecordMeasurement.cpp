@@ -101,8 +101,10 @@ bool RecordMeasurement::step(UiState& state, RenderSession& session) {
     }
     knobs.copyValues(current);
     session.camera() = currentCamera;
-    // The view shows the pipeline's outputs: after a frame of another state it renders its own again.
-    if (differs) state.forceRender = true;
+    // The view shows the pipeline's outputs: after a frame of another state,
+    // or one that produced fewer outputs than the view asks for (a buffer
+    // alone, no side view, no A/B images), it renders its own again.
+    if (differs || buffer_ != "final" || state.panels.sideView || state.ab.enabled) state.forceRender = true;
     if (!running_) stop(state, session);
     return running_;
 }
