@@ -435,8 +435,11 @@ int runGui(const GuiOptions& options, Scene scene) {
                                 0.0);
         }
         int capturesSeen = 0;
+        // A record that cannot be opened is a message on screen (Messages and the
+        // banner) over the start-up scene, as File > Open record... has it.
         if (!options.openRecord.empty() && !ui::openRecord(state, session, options.openRecord))
-            throw Error(state.log.banner() ? state.log.banner()->text : "cannot open record " + options.openRecord);
+            std::fprintf(stderr, "gui: --open-record: %s\n",
+                         state.log.banner() ? state.log.banner()->text.c_str() : options.openRecord.c_str());
         ui::WorkbenchUi ui;
         if (!options.layoutIn.empty()) loadLayout(options.layoutIn, ui, state, true);
         else if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
@@ -585,7 +588,9 @@ int runGui(const GuiOptions& options, Scene scene) {
             saveLayout(layoutPath, ui, state);
         }
         if (!options.saveRecord.empty()) {
-            if (!ui::saveRecord(state, session, options.saveRecord))
+            // Measured here, the window's last state (one Save record... left running stops).
+            state.recordRun.cancel(state, session, "the window closed");
+            if (!state.recordRun.runNow(state, session, options.saveRecord))
                 throw Error(state.log.banner() ? state.log.banner()->text : "cannot save record " + options.saveRecord);
             if (scripted) std::printf("wrote %s\n", options.saveRecord.c_str());
         }

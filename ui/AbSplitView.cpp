@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/gl/Sampler.h"
@@ -91,26 +93,56 @@ void abControls(UiState& state) {
     if (ImGui::SmallButton("Pin")) ab.pinRequest = true;
     noteItem("ab.pin");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the current image becomes B (p)");
-    // The numbers: one line, so the render size does not jump with their width.
-    char line[512];
+    // The numbers, in parts (B, A against B, against the reference, the GPU
+    // times) laid out on as many lines as the panel's width asks for: one
+    // where a usual line fits, else two. The count follows the width alone,
+    // never the text, so the image below (and the render size) does not jump
+    // when the numbers come in; what does not fit is cut with "..." and shown
+    // whole in a tooltip.
+    std::vector<std::string> parts;
+    bool error = false;
     if (!ab.ready) {
-        std::snprintf(line, sizeof(line), "B: %s", ab.unavailable.empty() ? "rendering..." : ab.unavailable.c_str());
-        ImGui::TextColored(ab.unavailable.empty() ? kDimColor : kErrorColor, "%s", line);
+        parts.push_back("B: " + (ab.unavailable.empty() ? std::string("rendering...") : ab.unavailable));
+        error = !ab.unavailable.empty();
     } else {
-        int n = std::snprintf(line, sizeof(line), "A current | B %s | A vs B: RMS %.5f, FLIP %.4f", ab.describeB.c_str(),
-                              ab.rms, ab.haveFlip ? ab.flip : 0.0);
-        if (ab.a.haveError && n > 0 && n < static_cast<int>(sizeof(line)))
-            n += std::snprintf(line + n, sizeof(line) - static_cast<size_t>(n),
-                               " | vs reference RMS/FLIP: A %.5f/%.4f, B %.5f/%.4f", ab.a.rms, ab.a.flip, ab.b.rms, ab.b.flip);
-        if (n > 0 && n < static_cast<int>(sizeof(line))) {
-            n += std::snprintf(line + n, sizeof(line) - static_cast<size_t>(n), " | GPU A %s, B %s", msText(ab.a.gpuMs).c_str(),
-                               ab.source == AbSource::Reference ? "- (CPU)" : msText(ab.b.gpuMs).c_str());
+        char t[256];
+        parts.push_back("A current | B " + ab.describeB);
+        std::snprintf(t, sizeof(t), "A vs B: RMS %.5f, FLIP %.4f", ab.rms, ab.haveFlip ? ab.flip : 0.0);
+        parts.emplace_back(t);
+        if (ab.a.haveError) {
+            std::snprintf(t, sizeof(t), "vs reference RMS/FLIP: A %.5f/%.4f, B %.5f/%.4f", ab.a.rms, ab.a.flip, ab.b.rms,
+                          ab.b.flip);
+            parts.emplace_back(t);
         }
-        if (ab.gpuDifference.valid() && n > 0 && n < static_cast<int>(sizeof(line)))
-            std::snprintf(line + n, sizeof(line) - static_cast<size_t>(n), ", A-B %+.2f ms [%+.2f, %+.2f]",
-                          ab.gpuDifference.difference, ab.gpuDifference.low, ab.gpuDifference.high);
-        clippedText(line, ImGui::GetContentRegionAvail().x);
+        std::string gpu = "GPU A " + msText(ab.a.gpuMs) + ", B " +
+                          (ab.source == AbSource::Reference ? std::string("- (CPU)") : msText(ab.b.gpuMs));
+        if (ab.gpuDifference.valid()) {
+            std::snprintf(t, sizeof(t), ", A-B %+.2f ms [%+.2f, %+.2f]", ab.gpuDifference.difference, ab.gpuDifference.low,
+                          ab.gpuDifference.high);
+            gpu += t;
+        }
+        parts.push_back(gpu);
     }
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const char* usual = "A current | B preset SSAO1 | A vs B: RMS 0.00000, FLIP 0.0000 | GPU A 000.0 ms, B 000.0 ms, "
+                        "A-B +00.00 ms [+00.00, +00.00]";
+    const int lines = ImGui::CalcTextSize(usual).x <= avail ? 1 : 2;
+    std::vector<std::string> text(static_cast<size_t>(lines));
+    size_t line = 0;
+    for (const std::string& part : parts) {
+        std::string& cur = text[line];
+        const std::string joined = cur.empty() ? part : cur + " | " + part;
+        if (cur.empty() || ImGui::CalcTextSize(joined.c_str()).x <= avail || line + 1 == text.size()) cur = joined;
+        else text[++line] = part;
+    }
+    ImGui::BeginGroup();
+    for (const std::string& l : text) {
+        if (error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+        else if (!ab.ready) ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+        clippedText(l, avail);
+        if (error || !ab.ready) ImGui::PopStyleColor();
+    }
+    ImGui::EndGroup();
     noteItem("ab.numbers");
 }
 

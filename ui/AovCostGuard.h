@@ -12,8 +12,9 @@
 // two buttons: render the new state anyway (it is then kept until the knobs
 // change again or the frame grows past the size it was confirmed at) or keep
 // the previous one. The A/B split's preset side is estimated where it
-// renders (ViewportComposer: B refused, A kept); the Pareto panel's sweeps
-// render knob states of their own and are not guarded.
+// renders (ViewportComposer: B refused, A kept); the Pareto panel's quick
+// sweep estimates each of its values before it starts and asks first
+// (ParetoPanel::startSweep).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "renderer/Error.h"
+#include "renderer/ao/AovCostEstimate.h"
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
 #include "ui/Widgets.h"
@@ -96,8 +97,45 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
     return true;
 }
 
-bool ParetoPanel::startSweep(const std::string& knob, UiState& state, RenderSession& session) {
+std::vector<std::pair<std::string, std::string>> ParetoPanel::overAovCost(const std::string& knob,
+                                                                           RenderSession& session, int width,
+                                                                           int height) {
+    std::vector<std::pair<std::string, std::string>> over;
+    const int w = std::max(width, 16), h = std::max(height, 16);
+    const Camera& camera = session.camera();  // the sweep renders with it
+    for (const std::string& value : QuickSweep::valuesOf(session.knobs(), knob)) {
+        KnobRegistry trial = session.knobs();
+        trial.setFromString(knob, value);
+        const auto e = AovCostEstimate::forKnobs(trial, session.scene(), camera, w, h);
+        if (!e) continue;
+        const auto [aw, ah] = AovCostEstimate::aoSize(trial, w, h);
+        if (AovCostEstimate::exceeds(*e, aw, ah)) over.emplace_back(value, AovCostEstimate::warning(*e, trial, w, h));
+    }
+    return over;
+}
+
+bool ParetoPanel::startSweep(std::string knob, UiState& state, RenderSession& session, bool confirmed) {
+    // By value: `knob` may be askedKnob, cleared below.
+    askedKnob.clear();
+    askedCost.clear();
     try {
+        if (!confirmed) {
+            // The live view's AOV guard covers the states the view renders; a
+            // sweep renders states of its own, so it asks here, before any.
+            const auto over = overAovCost(knob, session, session.pipeline().width(), session.pipeline().height());
+            if (!over.empty()) {
+                std::string values;
+                for (const auto& [v, w] : over) values += (values.empty() ? "" : ", ") + v;
+                askedKnob = knob;
+                askedCost = "quick sweep of " + knob + " not started: " + std::to_string(over.size()) + " of " +
+                            std::to_string(QuickSweep::valuesOf(session.knobs(), knob).size()) +
+                            " values over the AOV cost limit (" + values + "); " + knob + "=" + over.front().first +
+                            ": " + over.front().second;
+                state.log.error(askedCost + ". 'sweep anyway' in the Pareto panel renders them", state.time,
+                                "quick sweep");
+                return false;
+            }
+        }
         FloatImage baseline;
         std::string name = "the current settings' image";
         const ReferencePass* ref = session.pipeline().pass<ReferencePass>();
@@ -113,6 +151,8 @@ bool ParetoPanel::startSweep(const std::string& knob, UiState& state, RenderSess
         state.sweep.start(session.knobs(), knob, std::move(baseline), name);
         sweepShown = false;
         error.clear();
+        state.log.succeeded("quick sweep");
+        if (confirmed) state.log.info("quick sweep of " + knob + ": rendering values over the AOV cost limit, as asked", state.time);
         return true;
     } catch (const std::exception& e) {
         error = "quick sweep of " + knob + ": " + e.what();
@@ -147,12 +187,25 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here");
-        ImGui::SameLine();
+        sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + ImGui::GetStyle().FramePadding.x * 2.0f);
         ImGui::BeginDisabled(sweepKnob.empty());
         if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
         ImGui::EndDisabled();
         noteItem("pareto.sweep");
         if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
+        if (!askedCost.empty()) {
+            // Asked first, as the live view's AOV guard asks.
+            wrappedColored(kErrorColor, askedCost);
+            if (ImGui::Button("sweep anyway")) startSweep(askedKnob, state, session, true);
+            noteItem("pareto.sweep_anyway");
+            sameLineIfFits(ImGui::CalcTextSize("cancel").x + ImGui::GetStyle().FramePadding.x * 2.0f);
+            if (ImGui::Button("cancel##aov")) {
+                askedKnob.clear();
+                askedCost.clear();
+                state.log.succeeded("quick sweep");
+            }
+            noteItem("pareto.sweep_cancel");
+        }
     }
     if (!sweepShown && state.sweep.done()) {
         // The finished sweep replaces the table on show.
@@ -162,7 +215,12 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         applied.clear();
         sweepShown = true;
     }
-    if (!loadedPath.empty()) ImGui::TextDisabled("%s", loadedPath.c_str());
+    if (!loadedPath.empty()) {
+        // Cut to the panel's width (the whole text as a tooltip): a narrow panel keeps its plot.
+        ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+        clippedText(loadedPath, ImGui::GetContentRegionAvail().x);
+        ImGui::PopStyleColor();
+    }
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 4.0f, 60.0f));
     const bool enter = ImGui::InputText("##csv", path, sizeof(path), ImGuiInputTextFlags_EnterReturnsTrue);
     noteItem("pareto.path");
@@ -171,17 +229,27 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     noteItem("pareto.load");
     if (!error.empty()) wrappedColored(kErrorColor, error);
     if (table.rows.empty()) {
-        ImGui::TextDisabled("a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
+        wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
         ImGui::End();
         return;
     }
     const std::vector<std::string> gs = groups();
     group = std::clamp(group, 0, static_cast<int>(gs.size()) - 1);
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
-    if (ImGui::BeginCombo("camera | metric | buffer", gs[static_cast<size_t>(group)].c_str())) {
+    // The combo as wide as the panel allows; its label beside it only where it fits.
+    const char* groupLabel = "camera | metric | buffer";
+    ImGui::SetNextItemWidth(std::min(ImGui::GetFontSize() * 14.0f, ImGui::GetContentRegionAvail().x));
+    if (ImGui::BeginCombo("##group", gs[static_cast<size_t>(group)].c_str())) {
         for (size_t i = 0; i < gs.size(); ++i)
             if (ImGui::Selectable(gs[i].c_str(), static_cast<int>(i) == group)) group = static_cast<int>(i);
         ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", groupLabel);
+    noteItem("pareto.group");
+    const float labelWidth = ImGui::CalcTextSize(groupLabel).x;
+    if (ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x >=
+        labelWidth + ImGui::GetStyle().ItemSpacing.x) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", groupLabel);
     }
     if (!applied.empty()) ImGui::TextColored(kOkColor, "%s", applied.c_str());
 
@@ -209,6 +277,18 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     const double padX = 0.06 * (xhi - xlo), padY = 0.08 * (yhi - ylo);
     xlo -= padX, xhi += padX, ylo -= padY, yhi += padY;
 
+    {
+        // A narrow panel has no room for the axes' names under the plot: a line above it says them.
+        char lo[96], whole[160];
+        std::snprintf(lo, sizeof(lo), "%.3g ms", xlo);
+        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
+        const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
+        if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+            clippedText("across: GPU frame ms (median); up: " + metric, ImGui::GetContentRegionAvail().x);
+            ImGui::PopStyleColor();
+        }
+    }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size(std::max(avail.x, 80.0f), std::max(avail.y, 60.0f));
@@ -229,8 +309,12 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     dl->AddText(ImVec2(origin.x, bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
     std::snprintf(t, sizeof(t), "%.3g ms", xlo);
     dl->AddText(ImVec2(left, bottom + 4), IM_COL32(170, 170, 170, 255), t);
+    const float loWidth = ImGui::CalcTextSize(t).x;
+    // The axes' names after the upper end where they fit, else the end alone (the caption line above says them).
     std::snprintf(t, sizeof(t), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
-    dl->AddText(ImVec2(std::max(left + 60.0f, right - ImGui::CalcTextSize(t).x), bottom + 4), IM_COL32(170, 170, 170, 255), t);
+    if (ImGui::CalcTextSize(t).x > right - left - loWidth - 8.0f) std::snprintf(t, sizeof(t), "%.3g ms", xhi);
+    dl->AddText(ImVec2(std::max(left + loWidth + 8.0f, right - ImGui::CalcTextSize(t).x), bottom + 4),
+                IM_COL32(170, 170, 170, 255), t);
 
     // The front, joined left to right.
     std::vector<int> front;

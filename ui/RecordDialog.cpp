@@ -3,10 +3,15 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
+#include "renderer/OptionLimits.h"
+#include "renderer/bench/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "ui/ScenePanel.h"
+#include "ui/Widgets.h"
 
 namespace dw::ui {
 
@@ -35,32 +40,8 @@ int growString(ImGuiInputTextCallbackData* data) {
 
 }  // namespace
 
-bool saveRecord(UiState& state, RenderSession& session, const std::string& path) {
-    std::error_code ec;
-    const std::string shown = fs::absolute(path, ec).string();
-    try {
-        // The output the viewport shows, as the last frame rendered it; a
-        // preview mode (textured, wireframe) is no pipeline output: final then.
-        std::string buffer = state.viewport.mode == DisplayMode::Deferred ? state.viewport.output : "final";
-        if (buffer.empty() || !session.pipeline().outputs().find(buffer)) buffer = "final";
-        if (!session.pipeline().outputs().find(buffer))
-            throw Error("no frame rendered yet: nothing to record");
-        RunConfig run = state.run;
-        run.width = session.pipeline().width();
-        run.height = session.pipeline().height();
-        run.frames = 1;
-        run.warmup = 0;
-        ExperimentRecord r = ExperimentRecord::capture(session, run, buffer, state.report.frameIndex, "window");
-        r.command = "gui";
-        r.sceneSpec = session.scene().source;  // what is open now, not what the window started with
-        r.write(path);
-        state.log.done("saved record " + shown + " (deferred-workbench replay measures it again)", state.time,
-                       "save record");
-        return true;
-    } catch (const std::exception& e) {
-        state.log.error(std::string("cannot save record: ") + e.what(), state.time, "save record");
-        return false;
-    }
+bool saveRecord(UiState& state, RenderSession& session, const std::string& path, int frames, int warmup) {
+    return state.recordRun.start(state, session, path, frames, warmup);
 }
 
 bool openRecord(UiState& state, RenderSession& session, const std::string& path) {
@@ -88,7 +69,12 @@ bool openRecord(UiState& state, RenderSession& session, const std::string& path)
         return false;
     }
     if (!RunConfig::namesScene(r.sceneSpec, session.scene())) {
-        if (!openScene(state, session, r.sceneSpec)) return false;
+        if (!openScene(state, session, r.sceneSpec)) {
+            // openScene said why; the record's own message names the record too.
+            const std::string why = state.log.banner() ? state.log.banner()->text : "cannot open scene " + r.sceneSpec;
+            state.log.error("cannot open record " + path + ": " + why + "; nothing changed", state.time, "open record");
+            return false;
+        }
         // The knobs checked above were the old scene's; the record sets every one of them anyway.
         KnobRegistry fresh = session.knobs();
         for (const auto& [name, value] : r.knobs)
@@ -124,18 +110,31 @@ void RecordDialog::draw(UiState& state, RenderSession& session) {
         ImGui::OpenPopup(kPopup);
     }
     if (!ImGui::BeginPopupModal(kPopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::TextUnformatted(mode_ == Mode::Save ? "Save the experiment record of this frame to:"
+    ImGui::TextUnformatted(mode_ == Mode::Save ? "Measure this view and save its experiment record to:"
                                                : "Open the experiment record (scene, camera, knobs) from:");
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(520.0f);
     const bool enter = ImGui::InputText("##record path", path_.data(), path_.capacity() + 1,
                                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackResize,
                                         growString, &path_);
+    if (mode_ == Mode::Save) {
+        // The frames replay times again; bench's defaults give each timing an interval (6 frames at least).
+        ImGui::SetNextItemWidth(110.0f);
+        ImGui::InputInt("counted frames", &frames_);
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(110.0f);
+        ImGui::InputInt("warm-up", &warmup_);
+        frames_ = std::clamp(frames_, limits::kFrames.min, limits::kFrames.max);
+        warmup_ = std::clamp(warmup_, limits::kWarmup.min, limits::kWarmup.max);
+        if (frames_ < static_cast<int>(kMinIntervalSamples))
+            ImGui::TextColored(kErrorColor, "under %d counted frames the timings get no interval", static_cast<int>(kMinIntervalSamples));
+        if (state.recordRun.running()) ImGui::TextColored(kErrorColor, "a record is being measured: cancel it first");
+    }
     const bool go = ImGui::Button(mode_ == Mode::Save ? "Save" : "Open") || enter;
     ImGui::SameLine();
     const bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
     if (go) {
-        if (mode_ == Mode::Save) saveRecord(state, session, path_);
+        if (mode_ == Mode::Save) saveRecord(state, session, path_, frames_, warmup_);
         else openRecord(state, session, path_);
     }
     if (go || cancel) {
@@ -143,6 +142,19 @@ void RecordDialog::draw(UiState& state, RenderSession& session) {
         ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
+}
+
+void RecordDialog::progressBar(UiState& state, RenderSession& session) {
+    RecordMeasurement& m = state.recordRun;
+    if (!m.running()) return;
+    char text[96];
+    std::snprintf(text, sizeof text, "record %d/%d frames", m.rendered(), m.total());
+    ImGui::ProgressBar(static_cast<float>(m.progress()), ImVec2(170, 0), text);
+    noteItem("record.progress");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("measuring %s (File > Save record...)", m.path().c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("cancel##record")) m.cancel(state, session);
+    noteItem("record.cancel");
 }
 
 }  // namespace dw::ui

@@ -22,6 +22,7 @@
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
 #include "ui/AbView.h"
+#include "ui/RecordMeasurement.h"
 
 namespace dw::gl {
 class Sampler;
@@ -273,6 +274,10 @@ struct UiState {
     // frames (one a UI frame, before the view's own, so the viewport never
     // shows a swept value).
     QuickSweep sweep;
+    // File > Save record's measurement of the state on show: the frame loop
+    // renders its frames (one a UI frame, before the view's own) and writes
+    // the record after the last (RecordMeasurement).
+    RecordMeasurement recordRun;
     // Timer results still in flight or a measurement running: the frame loop
     // must keep polling (never sleep waiting for input) until this is false.
     bool timingsPending = false;

@@ -54,6 +54,8 @@ void ViewportComposer::render(UiState& state) {
         state.sweep.step(session_);
         state.forceRender = true;
     }
+    // File > Save record's measured frame, of the state saved (it puts the current one back).
+    if (state.recordRun.running() && !measuring) state.recordRun.step(state, session_);
     if (state.ab.pinRequest) {
         state.ab.pinRequest = false;
         pin(state);
@@ -113,7 +115,8 @@ void ViewportComposer::render(UiState& state) {
     }
     if (ab) abTimes(state);
     else state.ab.ready = false;
-    state.timingsPending = pipeline.timer().pendingFrames() > 0 || state.measure.active() || abMore;
+    state.timingsPending =
+        pipeline.timer().pendingFrames() > 0 || state.measure.active() || abMore || state.recordRun.running();
     if (state.probe.hovering || state.probe.pinned) {
         state.probe.result = probePixel(pipeline, state.probe.pixel.x, state.probe.pixel.y);
         probeLights(state);

@@ -98,6 +98,7 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::EndMenu();
     }
     reference_.progressBar();
+    RecordDialog::progressBar(state, session);
     // Frame facts at the right of the bar: the GPU time of the latest
     // rendered frame (or which frame's it is while that one's is in flight).
     char info[256];

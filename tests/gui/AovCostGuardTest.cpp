@@ -6,7 +6,9 @@
 
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
+#include "ui/ParetoPanel.h"
 #include "ui/TimingsPanel.h"
+#include "ui/Widgets.h"
 #include "ui/ViewportComposer.h"
 #include "ui/AovCostGuard.h"
 #include "ui/UiState.h"
@@ -216,4 +218,74 @@ TEST(AovCostGuard, TheAbPresetSideOverTheLimitIsRefusedAndAIsKept) {
     session->loadScene("default", state.run);
     composer.render(state);
     EXPECT_EQ(state.ab.unavailable.find("not rendered"), std::string::npos) << state.ab.unavailable;
+}
+
+// The Pareto panel's quick sweep renders knob states of its own, which the
+// live view's guard never sees: on the spheres at radius 1 (about 2600
+// volume fragments a pixel) a sweep of ao.method has one value, aov, over
+// the limits. The sweep asks before it renders anything (the message in the
+// panel and as the banner, the knobs untouched); *sweep anyway* starts it; a
+// sweep whose values are all under the limits starts at once.
+TEST(AovCostGuard, AQuickSweepWithAValueOverTheLimitAsksFirstAndStartsWhenConfirmed) {
+    auto session = test::makeSession(32, 18);
+    ui::UiState state;
+    session->loadScene("spheres", state.run);
+    session->render({{"final"}});
+    const KnobRegistry& k = session->knobs();
+    auto method = [&] { return k.spec(*k.find("ao.method")).choices[static_cast<size_t>(k.value(*k.find("ao.method")))]; };
+    ASSERT_EQ(method(), "ssao");
+    const size_t methods = k.spec(*k.find("ao.method")).choices.size();
+
+    const auto over = ui::ParetoPanel::overAovCost("ao.method", *session, 32, 18);
+    ASSERT_EQ(over.size(), 1u);
+    EXPECT_EQ(over[0].first, "aov");
+    EXPECT_NE(over[0].second.find("aov: about "), std::string::npos) << over[0].second;
+    // A sweep that touches no AOV state is under the limits.
+    EXPECT_TRUE(ui::ParetoPanel::overAovCost("gbuffer.normal_encoding", *session, 32, 18).empty());
+
+    ui::ParetoPanel panel;
+    EXPECT_FALSE(panel.startSweep("ao.method", state, *session));
+    EXPECT_FALSE(state.sweep.running());
+    EXPECT_EQ(panel.askedKnob, "ao.method");
+    EXPECT_NE(panel.askedCost.find("1 of " + std::to_string(methods) + " values over the AOV cost limit (aov)"),
+              std::string::npos)
+        << panel.askedCost;
+    EXPECT_NE(panel.askedCost.find("ao.method=aov: aov: about "), std::string::npos) << panel.askedCost;
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("quick sweep of ao.method not started"), std::string::npos)
+        << state.log.banner()->text;
+    EXPECT_EQ(method(), "ssao");
+
+    // The panel shows the question; a click on *sweep anyway* starts the sweep.
+    test::HeadlessImGui imgui(ImVec2(800, 600));
+    bool open = true;
+    auto draw = [&] {
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(800, 600));
+        panel.draw("Pareto", &open, state, *session);
+    };
+    imgui.frame(draw);
+    imgui.frame(draw);
+    const auto& items = ui::drawnItems();
+    ASSERT_TRUE(items.count("pareto.sweep_anyway"));
+    const ui::DrawnItem& b = items.at("pareto.sweep_anyway");
+    EXPECT_EQ(b.frame, ImGui::GetFrameCount());
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
+    imgui.frame(draw);
+    io.MouseDown[0] = true;
+    imgui.frame(draw);
+    io.MouseDown[0] = false;
+    imgui.frame(draw);
+    EXPECT_TRUE(state.sweep.running()) << panel.error << " | " << panel.askedCost;
+    EXPECT_EQ(state.sweep.knob(), "ao.method");
+    EXPECT_TRUE(panel.askedCost.empty());
+    EXPECT_EQ(state.log.banner(), nullptr);
+    state.sweep.cancel();
+
+    // Under the limits: no question.
+    EXPECT_TRUE(panel.startSweep("gbuffer.normal_encoding", state, *session));
+    EXPECT_TRUE(state.sweep.running());
+    EXPECT_TRUE(panel.askedCost.empty());
+    state.sweep.cancel();
 }

@@ -20,6 +20,7 @@
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
 #include "renderer/bench/TradeoffTable.h"
+#include "renderer/record/ExperimentRecord.h"
 #include "ui/ParetoPanel.h"
 #include "ui/PresetsPanel.h"
 #include "ui/RecordDialog.h"
@@ -304,6 +305,58 @@ TEST(Gui, AtTheDefaultSizesTheExportButtonIsInItsPanelAndTheLightsKeepTheirNames
     }
 }
 
+// At 1024x640 and 1600x900, with the Pareto panel open and the A/B split's
+// numbers in: the quick-sweep button and each of
+// the numbers' lines lie inside the visible part of their panel (at 1024x640
+// the button goes under the knob's combo and the numbers take two lines).
+TEST(Gui, AtTheDefaultSizesTheQuickSweepButtonAndTheAbNumbersFitTheirPanels) {
+    auto session = test::makeSession(64, 36);
+    session->loadScene("default");
+    for (auto [w, h] : {std::pair{1024.0f, 640.0f}, {1600.0f, 900.0f}}) {
+        const std::string size = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h));
+        HeadlessImGui imgui;
+        ImGui::GetIO().DisplaySize = ImVec2(w, h);
+        ui::UiState state;
+        state.panels.pareto = true;
+        state.presetsDir = (test::tempDir() / "ui-presets").string();
+        ui::AbView& ab = state.ab;
+        ab.enabled = true;
+        ab.source = ui::AbSource::Preset;
+        ab.preset = "Low";
+        ab.ready = true;
+        ab.describeB = "preset Low";
+        ab.rms = 0.00587;
+        ab.flip = 0.0202;
+        ab.haveFlip = true;
+        ab.a.gpuMs = {141.2, 139.9, 140.8};
+        ab.b.gpuMs = {104.1, 103.5, 104.9};
+        ab.gpuDifference = {37.25, -0.32, 56.27, 2000};
+        ui::WorkbenchUi workbench;
+        for (int i = 0; i < 3; ++i) {
+            state.report = session->render();
+            ++state.framesRendered;
+            state.renderSize = {64, 36};
+            imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+            ++state.frame;
+        }
+        const auto& items = ui::drawnItems();
+        auto inside = [&](const std::string& name, const std::string& panel) {
+            ASSERT_TRUE(items.count(name)) << name << " " << size;
+            const ui::DrawnItem& e = items.at(name);
+            EXPECT_EQ(e.frame, ImGui::GetFrameCount()) << name << " " << size;
+            EXPECT_EQ(e.window, panel) << name << " " << size;
+            EXPECT_GE(e.x, e.clipX) << name << " " << size;
+            EXPECT_LE(e.x + e.w, e.clipX + e.clipW + 0.5f) << name << " " << size << ": cut at the panel's right";
+            EXPECT_GE(e.y, e.clipY) << name << " " << size;
+            EXPECT_LE(e.y + e.h, e.clipY + e.clipH + 0.5f) << name << " " << size << ": cut at the panel's bottom";
+        };
+        inside("pareto.sweep", "Pareto");
+        inside("ab.numbers", "Viewport");
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        EXPECT_NEAR(items.at("ab.numbers").h, (w < 1100.0f ? 2.0f : 1.0f) * line - ImGui::GetStyle().ItemSpacing.y, 1.5f) << size;
+    }
+}
+
 TEST(Gui, UnderXvfbTheLayoutFollowsAResizeDownAndBackAndADragOrbitsWithoutPinningTheProbe) {
     ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
     const LayoutReport small = runScripted("layout-1024", "1024x640", 3, "");
@@ -382,6 +435,8 @@ TEST(Gui, PresetsThroughTheUiReportIgnoredKeysAndKeepStateOnCorruptFiles) {
 // File > Save record / Open record as a person uses them (Ctrl+S, Ctrl+R, the
 // path typed into the modal): a record saved, a knob changed and the camera
 // orbited, the record opened: the knob and the camera are the saved ones.
+// Each save measures 11 frames in the background (RecordMeasurement); the
+// knob set and the drag while the first one runs do not reach its record.
 TEST(Gui, UnderXvfbASavedRecordOpensWithItsKnobsAndCamera) {
     ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
     const fs::path saved = test::tempDir() / "gui-record-saved.json", mid = test::tempDir() / "gui-record-mid.json",
@@ -391,7 +446,7 @@ TEST(Gui, UnderXvfbASavedRecordOpensWithItsKnobsAndCamera) {
                                "9 set tonemap.key=0.9\n10 drag 700 300 820 330 3\n" +
                                "18 key ctrl+s\n20 key ctrl+a\n21 type " + mid.string() + "\n23 key Enter\n" +
                                "26 key ctrl+r\n28 key ctrl+a\n29 type " + saved.string() + "\n31 key Enter\n";
-    runScripted("record", "1600x900", 36, events,
+    runScripted("record", "1600x900", 40, events,
                 "--set tonemap.key=0.3 --dump-knobs " + knobs.string() + " --save-record " + end.string());
     auto read = [](const fs::path& p) {
         std::ifstream f(p);
@@ -417,6 +472,160 @@ TEST(Gui, UnderXvfbASavedRecordOpensWithItsKnobsAndCamera) {
     const Result replay = shell(std::string(DW_WORKBENCH_BINARY) + " replay " + saved.string());
     EXPECT_EQ(replay.code, 0) << replay.out;
     EXPECT_NE(replay.out.find("image: identical"), std::string::npos) << replay.out;
+}
+
+// File > Save record measures a series (bench's 1 warm-up and 10 counted
+// frames, one a UI frame), so the record's timings have intervals and
+// `replay` compares them (no "too few frames") and gets the same image.
+TEST(Gui, UnderXvfbSaveRecordMeasuresASeriesThatReplaysWithIntervals) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path saved = test::tempDir() / "gui-record-series.json";
+    fs::remove(saved);
+    const std::string events = "2 key ctrl+s\n4 key ctrl+a\n5 type " + saved.string() + "\n7 key Enter\n";
+    const LayoutReport r = runScripted("record-series", "1024x640", 24, events, "--resolution 1/4");
+    EXPECT_TRUE(r.errors.empty()) << r.errors.front();
+    std::ifstream in(saved);
+    ASSERT_TRUE(in.good()) << saved << " was not written";
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["command"], "gui");
+    EXPECT_EQ(j["frames"], 10);
+    EXPECT_EQ(j["warmup"], 1);
+    EXPECT_EQ(j["size"][0], r.renderSize.x);
+    EXPECT_EQ(j["size"][1], r.renderSize.y);
+    bool frameSeries = false;
+    for (const auto& t : j["results"]["timings"])
+        if (t["name"] == "frame") {
+            frameSeries = true;
+            EXPECT_EQ(t["gpu_ms"].size(), 10u);
+            ASSERT_TRUE(t["gpu"]["ci95"].is_array()) << t.dump();
+            EXPECT_LE(t["gpu"]["ci95"][0].get<double>(), t["gpu"]["median"].get<double>());
+            EXPECT_GE(t["gpu"]["ci95"][1].get<double>(), t["gpu"]["median"].get<double>());
+        }
+    EXPECT_TRUE(frameSeries) << j["results"].dump();
+    const Result replay = shell(std::string(DW_WORKBENCH_BINARY) + " replay " + saved.string());
+    EXPECT_EQ(replay.code, 0) << replay.out;
+    EXPECT_NE(replay.out.find("image: identical"), std::string::npos) << replay.out;
+    EXPECT_EQ(replay.out.find("too few frames"), std::string::npos) << replay.out;
+    EXPECT_NE(replay.out.find("frame"), std::string::npos) << replay.out;
+}
+
+// The measurement headless: it measures the state on show when it started
+// (a knob and the camera changed meanwhile are put back after each of its
+// frames and reach neither its record nor its frames), cancel writes
+// nothing, and a change of the render size stops it with a message.
+TEST(Gui, ARecordMeasurementKeepsTheSavedStateAndStopsWhenTheSizeChanges) {
+    auto session = test::makeSession(32, 18);
+    session->loadScene("spheres");
+    ui::UiState state;
+    session->knobs().applyAssignment("tonemap.key=0.25");
+    session->render({{"final"}});
+    const Camera saved = session->camera();
+    const fs::path path = test::tempDir() / "gui-record-measured.json";
+    fs::remove(path);
+    ASSERT_TRUE(ui::saveRecord(state, *session, path.string(), 6, 2));
+    EXPECT_TRUE(state.recordRun.running());
+    // A second save while one runs is refused.
+    EXPECT_FALSE(ui::saveRecord(state, *session, (test::tempDir() / "gui-record-second.json").string()));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("a record is being measured"), std::string::npos) << state.log.banner()->text;
+    session->knobs().applyAssignment("tonemap.key=0.9");
+    const double changed = knob(*session, "tonemap.key");
+    session->camera().position += glm::vec3(1.0f, 0.5f, 0.0f);
+    int steps = 0;
+    while (state.recordRun.step(state, *session)) ASSERT_LT(++steps, 20);
+    EXPECT_EQ(steps + 1, 8);
+    EXPECT_TRUE(state.recordRun.wrote());
+    // The current state is the one put back.
+    EXPECT_EQ(knob(*session, "tonemap.key"), changed);
+    EXPECT_NE(session->camera().position, saved.position);
+    std::ifstream in(path);
+    ASSERT_TRUE(in.good());
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["knobs"]["tonemap.key"], "0.25");
+    EXPECT_FLOAT_EQ(j["camera"]["position"][0].get<float>(), saved.position.x);
+    EXPECT_EQ(j["frames"], 6);
+    EXPECT_EQ(j["warmup"], 2);
+    for (const auto& t : j["results"]["timings"])
+        if (t["name"] == "frame") {
+            EXPECT_EQ(t["gpu_ms"].size(), 6u);
+        }
+    // Its image is the saved state's: render it again here and hash it.
+    {
+        KnobRegistry now = session->knobs();
+        const Camera camera = session->camera();
+        session->knobs().applyAssignment("tonemap.key=0.25");
+        session->camera() = saved;
+        session->render({{"final"}});
+        int w = 0, h = 0, c = 0;
+        EXPECT_EQ(j["results"]["image"]["sha256"], ExperimentRecord::hashBuffer(*session, "final", w, h, c));
+        session->knobs().copyValues(now);
+        session->camera() = camera;
+    }
+
+    // Cancelled: nothing written, said so.
+    const fs::path cancelled = test::tempDir() / "gui-record-cancelled.json";
+    fs::remove(cancelled);
+    ASSERT_TRUE(ui::saveRecord(state, *session, cancelled.string()));
+    state.recordRun.step(state, *session);
+    state.recordRun.cancel(state, *session);
+    EXPECT_FALSE(state.recordRun.running());
+    EXPECT_FALSE(fs::exists(cancelled));
+    EXPECT_NE(state.log.all().back().text.find("not saved: cancelled after 1 of 11 frames"), std::string::npos)
+        << state.log.all().back().text;
+
+    // Another render size: stopped with a message, nothing written.
+    ASSERT_TRUE(ui::saveRecord(state, *session, cancelled.string()));
+    state.recordRun.step(state, *session);
+    session->resize(40, 20);
+    EXPECT_FALSE(state.recordRun.step(state, *session));
+    EXPECT_FALSE(fs::exists(cancelled));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("the view changed size (32x18 -> 40x20)"), std::string::npos)
+        << state.log.banner()->text;
+}
+
+// gui --open-record of a record that cannot be opened (not JSON, a newer
+// version, a scene that is not there, a JSON of another kind) opens the
+// window on its own scene with the record's error in Messages and the
+// banner (the rule for the window: a message on screen, the last good state
+// kept), as File > Open record... does; exit 0.
+TEST(Gui, UnderXvfbABadOpenRecordIsAMessageOverTheStartUpScene) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path folder = test::tempDir() / "gui-bad-records";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    // A real record whose scene file is gone.
+    std::ofstream(folder / "gone.json") << R"({"name": "gone", "objects": [{"shape": "box"}]})";
+    const Result made = shell("cd " + folder.string() + " && " + std::string(DW_WORKBENCH_BINARY) +
+                              " render --scene gone.json --size 16x9 --out gone.png --record missing-scene.json");
+    ASSERT_EQ(made.code, 0) << made.out;
+    fs::remove(folder / "gone.json");
+    std::ofstream(folder / "broken.json") << "{ not json";
+    std::ofstream(folder / "newer.json") << R"({"format": "deferred-workbench record", "version": 9})";
+    std::ofstream(folder / "preset.json") << R"({"name": "mine", "knobs": {"ssao.samples": 8}})";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"broken.json", "broken.json"},
+        {"newer.json", "record version 9 is newer than this build reads (2)"},
+        {"missing-scene.json", "gone.json"},
+        {"preset.json", "not a deferred-workbench record"}};
+    for (const auto& [file, says] : cases) {
+        const std::string name = "bad-record-" + file.substr(0, file.find('.'));
+        const fs::path shot = test::tempDir() / (name + ".png");
+        fs::remove(shot);
+        const LayoutReport r = runScripted(name, "1024x640", 3, "",
+                                           "--open-record " + (folder / file).string() + " --screenshot " + shot.string());
+        EXPECT_TRUE(fs::exists(shot)) << file;
+        std::ifstream in(test::tempDir() / (name + "-layout.json"));
+        ASSERT_TRUE(in.good()) << file;
+        const nlohmann::json j = nlohmann::json::parse(in);
+        EXPECT_EQ(j["scene"]["name"], "spheres") << file;  // runScripted's --scene
+        const std::string banner = j["banner"].get<std::string>();
+        EXPECT_NE(banner.find("cannot open record"), std::string::npos) << file << ": " << banner;
+        EXPECT_NE(banner.find(says), std::string::npos) << file << ": " << banner;
+        bool inMessages = false;
+        for (const auto& e : r.errors) inMessages = inMessages || e == banner;
+        EXPECT_TRUE(inMessages) << file;
+    }
 }
 
 // A record that cannot be opened is a message; the scene, knobs and camera stay.

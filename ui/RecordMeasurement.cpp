@@ -1,0 +1,176 @@
+#include "ui/RecordMeasurement.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
+#include "renderer/record/ExperimentRecord.h"
+#include "ui/UiState.h"
+
+namespace dw::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kAction = "save record";
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovYDegrees == b.fovYDegrees &&
+           a.nearPlane == b.nearPlane && a.farPlane == b.farPlane;
+}
+}  // namespace
+
+bool RecordMeasurement::start(UiState& state, RenderSession& session, const std::string& path, int frames, int warmup) {
+    std::error_code ec;
+    const std::string shown = fs::absolute(path, ec).string();
+    try {
+        if (running_) throw Error("a record is being measured (" + shownPath_ + "); cancel it first");
+        if (path.empty()) throw Error("no file named");
+        auto range = [](const OptionRange& r) { return std::to_string(r.min) + ".." + std::to_string(r.max); };
+        if (!limits::kFrames.holds(frames))
+            throw Error("frames: " + std::to_string(frames) + " is outside --frames's range " + range(limits::kFrames));
+        if (!limits::kWarmup.holds(warmup))
+            throw Error("warm-up: " + std::to_string(warmup) + " is outside --warmup's range " + range(limits::kWarmup));
+        // The output the viewport shows; a preview mode (textured, wireframe)
+        // is no pipeline output: final then.
+        std::string buffer = state.viewport.mode == DisplayMode::Deferred ? state.viewport.output : "final";
+        if (buffer.empty() || !session.pipeline().outputs().find(buffer)) buffer = "final";
+        if (!session.pipeline().outputs().find(buffer)) throw Error("no frame rendered yet: nothing to record");
+        buffer_ = buffer;
+    } catch (const std::exception& e) {
+        state.log.error("cannot save record " + shown + ": " + e.what(), state.time, kAction);
+        return false;
+    }
+    path_ = path;
+    shownPath_ = shown;
+    frames_ = frames;
+    warmup_ = warmup;
+    rendered_ = 0;
+    counted_.clear();
+    knobs_ = session.knobs();
+    camera_ = session.camera();
+    width_ = session.pipeline().width();
+    height_ = session.pipeline().height();
+    scene_ = &session.scene();
+    sceneSource_ = session.scene().source;
+    PassTimer& timer = session.pipeline().timer();
+    // Every counted frame's sample kept, with room for the view's frames between them.
+    timer.setHistoryLength(std::max(timer.historyLength(), static_cast<size_t>(2 * (frames + warmup) + 64)));
+    resumePause_ = timer.paused();
+    timer.setPaused(false);  // paused, the counted frames' times would never be recorded
+    running_ = true;
+    wrote_ = false;
+    state.log.info("measuring the record " + shownPath_ + ": " + std::to_string(warmup) + " warm-up and " +
+                       std::to_string(frames) + " counted frames of " + buffer_ + " at " + std::to_string(width_) + "x" +
+                       std::to_string(height_),
+                   state.time);
+    return true;
+}
+
+bool RecordMeasurement::step(UiState& state, RenderSession& session) {
+    if (!running_) return false;
+    if (&session.scene() != scene_ || session.scene().source != sceneSource_) {
+        cancel(state, session, "stopped: another scene was opened");
+        return false;
+    }
+    if (session.pipeline().width() != width_ || session.pipeline().height() != height_) {
+        cancel(state, session,
+               "stopped: the view changed size (" + std::to_string(width_) + "x" + std::to_string(height_) + " -> " +
+                   std::to_string(session.pipeline().width()) + "x" + std::to_string(session.pipeline().height()) +
+                   "), so its frames would not be of one state");
+        return false;
+    }
+    // The saved state for this frame, the current one put back after it.
+    KnobRegistry& knobs = session.knobs();
+    const KnobRegistry current = knobs;
+    const Camera currentCamera = session.camera();
+    knobs.copyValues(*knobs_);
+    session.camera() = camera_;
+    const bool differs = knobs.generation() != current.generation() || !sameCamera(currentCamera, camera_);
+    try {
+        const FrameReport r = session.pipeline().render(session.camera(), FrameRequest{{buffer_}});
+        if (rendered_ >= warmup_) counted_.insert(r.frameIndex);
+        ++rendered_;
+        if (rendered_ >= total()) finish(state, session);
+    } catch (const std::exception& e) {
+        running_ = false;
+        state.log.error("cannot save record " + shownPath_ + ": frame " + std::to_string(rendered_ + 1) + " failed: " +
+                            e.what(),
+                        state.time, kAction);
+    }
+    knobs.copyValues(current);
+    session.camera() = currentCamera;
+    // The view shows the pipeline's outputs: after a frame of another state,
+    // or one that produced fewer outputs than the view asks for (a buffer
+    // alone, no side view, no A/B images), it renders its own again.
+    if (differs || buffer_ != "final" || state.panels.sideView || state.ab.enabled) state.forceRender = true;
+    if (!running_) stop(state, session);
+    return running_;
+}
+
+void RecordMeasurement::finish(UiState& state, RenderSession& session) {
+    running_ = false;
+    try {
+        RunConfig run = state.run;
+        run.width = width_;
+        run.height = height_;
+        run.frames = frames_;
+        run.warmup = warmup_;
+        const std::uint64_t first = counted_.empty() ? 0 : *counted_.begin();
+        ExperimentRecord r = ExperimentRecord::capture(session, run, buffer_, first, "window");
+        // Only the measured frames: the view may have rendered frames of its own between them.
+        r.timings.clear();
+        for (const PassTimer::Series& s : session.pipeline().timer().series()) {
+            RecordedSeries rs{s.name, {}, {}};
+            for (const TimingSample& t : s.samples)
+                if (counted_.count(t.frame)) {
+                    rs.gpuMs.push_back(t.gpuMs);
+                    rs.cpuMs.push_back(t.cpuMs);
+                }
+            if (!rs.gpuMs.empty()) r.timings.push_back(std::move(rs));
+        }
+        r.command = "gui";
+        r.sceneSpec = session.scene().source;  // what is open now, not what the window started with
+        r.write(path_);
+        wrote_ = true;
+        size_t timed = 0;
+        for (const RecordedSeries& s : r.timings)
+            if (s.name == PassTimer::kFrameSeries) timed = s.gpuMs.size();
+        std::string note;
+        if (timed < static_cast<size_t>(frames_))
+            note = "; " + std::to_string(timed) + " of " + std::to_string(frames_) + " frames timed";
+        state.log.done("saved record " + shownPath_ + " (" + std::to_string(frames_) + " frames at " +
+                           std::to_string(width_) + "x" + std::to_string(height_) + note +
+                           "; deferred-workbench replay measures it again)",
+                       state.time, kAction);
+        state.log.succeeded(kAction);
+    } catch (const std::exception& e) {
+        state.log.error("cannot save record " + shownPath_ + ": " + e.what(), state.time, kAction);
+    }
+}
+
+void RecordMeasurement::stop(UiState&, RenderSession& session) {
+    running_ = false;
+    if (resumePause_) session.pipeline().timer().setPaused(true);
+    resumePause_ = false;
+    knobs_.reset();
+}
+
+void RecordMeasurement::cancel(UiState& state, RenderSession& session, const std::string& why) {
+    if (!running_) return;
+    stop(state, session);
+    const std::string text = "record " + shownPath_ + " not saved: " + why + " after " + std::to_string(rendered_) + " of " +
+                             std::to_string(total()) + " frames";
+    if (why == "cancelled") state.log.info(text, state.time);
+    else state.log.error(text, state.time, kAction);
+}
+
+bool RecordMeasurement::runNow(UiState& state, RenderSession& session, const std::string& path, int frames, int warmup) {
+    if (!start(state, session, path, frames, warmup)) return false;
+    while (step(state, session)) {
+    }
+    return wrote_;
+}
+
+}  // namespace dw::ui
