@@ -22,13 +22,25 @@ script prints, per method, a table of every point's AO ms and all its errors
 puts that error on the plot, the front and the target table instead of the
 main CSV's; a point without that error is left out.
 
+The front's points are labelled with their settings' values, each label
+where it covers no point, no other label and not the legend, crossing the
+front's line and the target's as little as it can (place_labels of
+scripts/plot_labels.py, shared with tradeoff_plot.py; a label moved away from
+its point gets a thin line to it).
+
 Rows: the `all` camera rows when there are several cameras, else camera 0.
-Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing.
+Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing, 4
+plot_labels.py is not beside the script.
 """
 import argparse
 import csv
 import math
 import sys
+
+try:
+    from plot_labels import place_labels  # beside this script (scripts/, share/deferred-workbench/)
+except ImportError:
+    place_labels = None
 
 PASSES = ["gpu_ms.ao", "gpu_ms.ao_filter"]
 
@@ -199,6 +211,10 @@ def main():
     except ImportError:
         print("ao_methods_plot: matplotlib is missing (apt-get install python3-matplotlib)", file=sys.stderr)
         return 3
+    if place_labels is None:
+        print(f"ao_methods_plot: cannot import plot_labels.py, which places the labels; it belongs beside {__file__}",
+              file=sys.stderr)
+        return 4
     w, h = (int(v) for v in args.size.split("x"))
     fig, ax = plt.subplots(figsize=(w / 100, h / 100), dpi=100)
     colours = ["tab:blue", "tab:green", "tab:orange", "tab:purple", "tab:brown"]
@@ -208,9 +224,6 @@ def main():
                    label=label, zorder=3)
     ax.plot([p["ao_ms"] for p in joint], [p["error"] for p in joint], "-", color="red", lw=1, zorder=2,
             label="front (all methods)")
-    for p in joint:
-        ax.annotate(f'{p["method"]} ' + ",".join(v for v in p["values"].values()), (p["ao_ms"], p["error"]),
-                    fontsize=7, xytext=(4, 3), textcoords="offset points")
     if target:
         ax.axhline(target_error, color="grey", ls="--", lw=0.8, label=f"{args.target_method} default's error")
     ax.set_xscale("log")
@@ -220,6 +233,15 @@ def main():
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
+    # The front's labels last, once the limits and the layout are final: each where it covers no point,
+    # no other label and not the legend, crossing the front and the target's line as little as it can
+    # (scripts/plot_labels.py, shared with tradeoff_plot.py).
+    labels = [(p["ao_ms"], p["error"], f'{p["method"]} ' + ",".join(v for v in p["values"].values()), "black")
+              for p in joint]
+    lines = [[(p["ao_ms"], p["error"]) for p in joint]]
+    if target:
+        lines.append([(x, target_error) for x in ax.get_xlim()])
+    place_labels(ax, fig, labels, [(p["ao_ms"], p["error"]) for p in points], lines, fontsize=7, marker=2.5)
     fig.savefig(args.out)
     return 0
 

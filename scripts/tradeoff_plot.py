@@ -10,16 +10,25 @@ all cameras ("all") are drawn. `tradeoff --plot FILE.png` runs it; by hand:
 way) over the first, as labelled diamonds.
 
 Labels are placed one by one where they overlap no label placed before, no
-point and not the legend (place_labels: the nearest free offset around the
-point, stepping outwards), with a thin line to a point they had to move away from.
+point and not the legend, crossing the front's line as little as they can
+(place_labels of scripts/plot_labels.py, which
+ao_methods_plot.py shares: the nearest free offset around the point, stepping
+outwards), with a thin line to a point they had to move away from. The script
+imports plot_labels.py from its own folder (installed beside it).
 
 Exit codes: 0 drawn, 2 bad arguments or CSV, 3 matplotlib is missing
-(Debian: apt-get install python3-matplotlib).
+(Debian: apt-get install python3-matplotlib), 4 plot_labels.py is not beside
+the script.
 """
 import argparse
 import csv
 import math
 import sys
+
+try:
+    from plot_labels import place_labels  # beside this script (scripts/, share/deferred-workbench/)
+except ImportError:
+    place_labels = None
 
 MIDDLE = ["metric", "buffer", "error", "error_lo", "error_hi", "frames",
           "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"]
@@ -69,72 +78,6 @@ def read(path, time="frame"):
     return axes, rows
 
 
-def place_labels(ax, fig, labels, points):
-    """Annotates each (x, y, text, color) of `labels` where its text box
-    overlaps no label placed before it, no point of `points` (data x, y) and
-    stays inside the axes: a greedy search over offsets around the point,
-    stepping outwards ring by ring (8 directions per ring); a label moved
-    away from its point gets a thin leader line. Where no free spot exists
-    the one with the least overlap is kept."""
-    if not labels:
-        return
-    fig.canvas.draw()
-    renderer = fig.canvas.get_renderer()
-    area = ax.get_window_extent(renderer)
-    to_px = ax.transData.transform
-    pad = 3.0 * fig.dpi / 72.0  # a marker's half size, in pixels
-    markers = []
-    for x, y in points:
-        px, py = to_px((x, y))
-        markers.append((px - pad, py - pad, px + pad, py + pad))
-    placed = []
-    legend = ax.get_legend()
-    if legend is not None:
-        e = legend.get_window_extent(renderer)
-        placed.append((e.x0, e.y0, e.x1, e.y1))
-
-    def overlap(a, b):
-        w = min(a[2], b[2]) - max(a[0], b[0])
-        h = min(a[3], b[3]) - max(a[1], b[1])
-        return w * h if w > 0 and h > 0 else 0.0
-
-    def outside(box):
-        return (max(0.0, area.x0 - box[0]) + max(0.0, box[2] - area.x1)) * (box[3] - box[1]) + \
-               (max(0.0, area.y0 - box[1]) + max(0.0, box[3] - area.y1)) * (box[2] - box[0])
-
-    # Offsets in points: right-above first (the usual place), then the other
-    # seven directions, then the same at 2, 3, ... times the distance.
-    directions = [(1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1)]
-    for x, y, text, color in labels:
-        best = None
-        for ring in range(1, 7):
-            for dx, dy in directions:
-                ox, oy = 6 * ring * dx, 6 * ring * dy
-                ha = "left" if dx > 0 else "right" if dx < 0 else "center"
-                va = "bottom" if dy > 0 else "top" if dy < 0 else "center"
-                note = ax.annotate(text, (x, y), textcoords="offset points", xytext=(ox, oy), fontsize=8,
-                                   color=color, ha=ha, va=va, zorder=5)
-                e = note.get_window_extent(renderer)
-                box = (e.x0, e.y0, e.x1, e.y1)
-                cost = sum(overlap(box, b) for b in placed) + sum(overlap(box, m) for m in markers) + outside(box)
-                if best is None or cost < best[0]:
-                    if best is not None:
-                        best[1].remove()
-                    best = (cost, note, box, ring)
-                else:
-                    note.remove()
-                if cost == 0:
-                    break
-            if best[0] == 0:
-                break
-        _, note, box, ring = best
-        if ring > 1:
-            ax.annotate("", (x, y), xytext=((box[0] + box[2]) / 2, (box[1] + box[3]) / 2), textcoords="figure pixels",
-                        arrowprops=dict(arrowstyle="-", color=color, alpha=0.5, lw=0.6, shrinkA=0, shrinkB=2),
-                        zorder=4)
-        placed.append(box)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--csv", required=True)
@@ -157,6 +100,10 @@ def main():
     except ImportError:
         print("tradeoff_plot: matplotlib is missing (Debian: apt-get install python3-matplotlib)", file=sys.stderr)
         return 3
+    if place_labels is None:
+        print(f"tradeoff_plot: cannot import plot_labels.py, which places the labels; it belongs beside {__file__}",
+              file=sys.stderr)
+        return 4
 
     def shown_rows(rows):
         """The all-cameras rows when there are any, else the first camera's; with a time and an error."""
@@ -244,7 +191,7 @@ def main():
         ax.legend(loc="best", fontsize=8)
     fig.tight_layout()
     # The labels last, once the axes' limits and the layout are final.
-    place_labels(ax, fig, labels, points + overlay_points)
+    place_labels(ax, fig, labels, points + overlay_points, [[(r["ms"], r["error"]) for r in front]])
     fig.savefig(args.out, format="png")
     return 0
 

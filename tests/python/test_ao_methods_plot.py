@@ -1,7 +1,10 @@
 """scripts/ao_methods_plot.py (issue 22's AO Pareto study): the joint front
 over several methods' tradeoff CSVs on the AO passes' time, the cheapest
 point of each method at the target's error, --only, and a bad CSV refused
-with exit 2. Synthetic CSVs; no GL."""
+with exit 2; the labels of scripts/plot_labels.py (shared with
+tradeoff_plot.py) overlapping no other label, no point and no line, in the
+AO plot too. Synthetic CSVs; no GL."""
+import importlib.util
 import os
 import subprocess
 import sys
@@ -9,6 +12,8 @@ import tempfile
 import unittest
 
 SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "ao_methods_plot.py")
+sys.path.insert(0, os.path.dirname(SCRIPT))  # plot_labels and ao_methods_plot as modules
+HAVE_MATPLOTLIB = importlib.util.find_spec("matplotlib") is not None
 HEAD = ("point,{axes},camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,"
         "frame_gpu_ms_hi,gpu_ms.ao,gpu_ms.ao_filter,pareto\n")
 
@@ -118,6 +123,125 @@ class BenchPassBarsTest(unittest.TestCase):
                                capture_output=True, text=True)
             self.assertEqual(r.returncode, 2)
             self.assertIn("x.json", r.stderr)
+
+
+def overlap(a, b):
+    """Area (square pixels) two (x0, y0, x1, y1) boxes share."""
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return w * h if w > 0 and h > 0 else 0.0
+
+
+@unittest.skipUnless(HAVE_MATPLOTLIB, "matplotlib is missing (apt-get install python3-matplotlib)")
+class PlotLabelsTest(unittest.TestCase):
+    """place_labels: a cluster of points whose labels, each right above its point, would cover each other and
+    the neighbours' points gets labels that cover nothing, inside the axes, and avoid a line."""
+
+    def setUp(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        self.plt = plt
+        self.fig, self.ax = plt.subplots(figsize=(4, 3), dpi=100)
+        # Three points 6 pixels apart (the bunny's ssao 4,full / gtao 4,4,full / gtao 2,4,full) and one alone.
+        self.points = [(10.0, 1.0), (10.2, 0.98), (10.4, 0.96), (2.0, 0.2)]
+        self.ax.scatter([p[0] for p in self.points], [p[1] for p in self.points], s=22)
+        self.ax.set_xlim(0, 20)
+        self.ax.set_ylim(0, 2)
+        self.fig.tight_layout()
+        self.labels = [(x, y, f"method {i},settings", "black") for i, (x, y) in enumerate(self.points)]
+
+    def tearDown(self):
+        self.plt.close(self.fig)
+
+    def px(self, point):
+        return self.ax.transData.transform(point)
+
+    def test_the_cluster_would_collide_and_does_not(self):
+        from plot_labels import place_labels
+        # Right above each point, 6 points away (the old fixed offset): the cluster's labels overlap.
+        self.fig.canvas.draw()
+        renderer = self.fig.canvas.get_renderer()
+        naive = []
+        for x, y, text, _ in self.labels[:3]:
+            e = self.ax.annotate(text, (x, y), xytext=(6, 6), textcoords="offset points", fontsize=8).get_window_extent(renderer)
+            naive.append((e.x0, e.y0, e.x1, e.y1))
+        self.assertGreater(overlap(naive[0], naive[1]), 0)
+        for t in list(self.ax.texts):
+            t.remove()
+
+        boxes = place_labels(self.ax, self.fig, self.labels, self.points)
+        self.assertEqual(len(boxes), 4)
+        area = self.ax.get_window_extent(renderer)
+        pad = 3.0 * self.fig.dpi / 72.0
+        for i, box in enumerate(boxes):
+            self.assertTrue(area.x0 <= box[0] and box[2] <= area.x1 and area.y0 <= box[1] and box[3] <= area.y1, box)
+            for other in boxes[:i]:
+                self.assertEqual(overlap(box, other), 0.0, (box, other))
+            for p in self.points:
+                px, py = self.px(p)
+                self.assertEqual(overlap(box, (px - pad, py - pad, px + pad, py + pad)), 0.0, (box, p))
+        # The lone point keeps the usual place: right above it, about 6 points away.
+        px, py = self.px(self.points[3])
+        self.assertAlmostEqual(boxes[3][0] - px, 6 * self.fig.dpi / 72.0, delta=1.0)
+        self.assertAlmostEqual(boxes[3][1] - py, 6 * self.fig.dpi / 72.0, delta=1.0)
+        # Moved labels get a leader line each (annotations without text), the lone one none.
+        leaders = [t for t in self.ax.texts if t.get_text() == ""]
+        self.assertGreaterEqual(len(leaders), 1)
+        self.assertLessEqual(len(leaders), 3)
+
+    def test_a_line_is_avoided(self):
+        from plot_labels import place_labels
+        # A line through where the lone point's label would go (right above it).
+        x, y = self.points[3]
+        line = [(x, y + 0.1), (x + 6, y + 0.1)]
+        box = place_labels(self.ax, self.fig, self.labels[3:], self.points, [line])[0]
+        (x0, ly), (x1, _) = self.px(line[0]), self.px(line[1])
+        self.assertFalse(box[1] <= ly <= box[3] and box[0] < x1 and box[2] > x0, (box, ly))
+
+
+@unittest.skipUnless(HAVE_MATPLOTLIB, "matplotlib is missing (apt-get install python3-matplotlib)")
+class AoMethodsPlotLabelsTest(unittest.TestCase):
+    """ao_methods_plot.py labels its front through place_labels: with a cluster of front points its labels
+    overlap neither each other nor any point."""
+
+    def test_front_labels_do_not_collide(self):
+        import ao_methods_plot
+        import plot_labels
+        calls = []
+
+        def recording(ax, fig, labels, points, lines=(), **kw):
+            boxes = plot_labels.place_labels(ax, fig, labels, points, lines, **kw)
+            calls.append((labels, points, boxes, fig.dpi, ax.transData.transform))
+            return boxes
+
+        with tempfile.TemporaryDirectory() as d:
+            # Three points on the front within 10% of each other's time and error, as on the bunny.
+            ssao = write(d, "ssao.csv", ["ssao.samples"], [(("4",), 0.0111, 15, 1), (("8",), 0.0122, 20, 1)])
+            gtao = write(d, "gtao.csv", ["gtao.slices"], [(("2",), 0.0108, 17, 1), (("4",), 0.0107, 18, 1)])
+            argv, place = sys.argv, ao_methods_plot.place_labels
+            sys.argv = ["ao_methods_plot.py", "--out", os.path.join(d, "p.png"), f"ssao={ssao}", f"gtao={gtao}"]
+            ao_methods_plot.place_labels = recording
+            try:
+                with open(os.devnull, "w") as null:
+                    stdout, sys.stdout = sys.stdout, null
+                    try:
+                        self.assertEqual(ao_methods_plot.main(), 0)
+                    finally:
+                        sys.stdout = stdout
+            finally:
+                sys.argv, ao_methods_plot.place_labels = argv, place
+        self.assertEqual(len(calls), 1)
+        labels, points, boxes, dpi, to_px = calls[0]
+        self.assertEqual([t for _, _, t, _ in labels], ["ssao 4", "gtao 2", "gtao 4"])
+        self.assertEqual(len(points), 4)
+        pad = 2.5 * dpi / 72.0
+        for i, box in enumerate(boxes):
+            for other in boxes[:i]:
+                self.assertEqual(overlap(box, other), 0.0)
+            for p in points:
+                px, py = to_px(p)
+                self.assertEqual(overlap(box, (px - pad, py - pad, px + pad, py + pad)), 0.0)
 
 
 if __name__ == "__main__":
