@@ -1,20 +1,16 @@
 // deferred-workbench reference: the CPU ground truth of one view, headless,
 // with no GL at all (renderer/reference/ReferenceRenderer.h).
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
-#include <thread>
 #include <tuple>
 
 #include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "app/ReferenceProgressLine.h"
 #include "renderer/Error.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
@@ -24,58 +20,16 @@ namespace dw {
 
 namespace {
 
-reference::ReferenceProgress* gProgress = nullptr;
-
-extern "C" void cancelOnSignal(int) {
-    if (gProgress) gProgress->cancel.store(true);
-}
-
 // Renders on a worker thread while this one reports progress on stderr
-// (a line rewritten in place on a terminal, a line each 10% otherwise);
-// Ctrl+C (SIGINT) or SIGTERM cancels.
+// (app/ReferenceProgressLine.h); Ctrl+C (SIGINT) or SIGTERM cancels.
 reference::ReferenceImages renderWithProgress(const Scene& scene, const reference::ReferenceModel& model,
                                               const reference::ReferenceRequest& request, bool quiet) {
-    reference::ReferenceProgress progress;
-    gProgress = &progress;
-    struct sigaction action{}, oldInt{}, oldTerm{};
-    action.sa_handler = cancelOnSignal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &oldInt);
-    sigaction(SIGTERM, &action, &oldTerm);
     reference::ReferenceImages result;
-    std::exception_ptr failure;
-    std::atomic<bool> done{false};
-    std::thread worker([&] {
-        try {
-            result = reference::renderReference(scene, model, request, &progress);
-        } catch (...) {
-            failure = std::current_exception();
-        }
-        done = true;
-    });
-    const bool tty = isatty(STDERR_FILENO) != 0;
-    const auto start = std::chrono::steady_clock::now();
-    int lastDecile = 0;
-    while (!done.load()) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(200));
-        if (quiet || done.load()) continue;
-        const double f = progress.fraction();
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (tty) {
-            std::fprintf(stderr, "\rreference: %5.1f%% of %dx%d, %.1f s (Ctrl+C cancels)", 100.0 * f, request.width,
-                         request.height, elapsed);
-        } else if (static_cast<int>(f * 10.0) > lastDecile) {
-            lastDecile = static_cast<int>(f * 10.0);
-            std::fprintf(stderr, "reference: %d%% of %dx%d, %.1f s\n", lastDecile * 10, request.width, request.height,
-                         elapsed);
-        }
-    }
-    worker.join();
-    if (tty && !quiet) std::fprintf(stderr, "\n");
-    sigaction(SIGINT, &oldInt, nullptr);
-    sigaction(SIGTERM, &oldTerm, nullptr);
-    gProgress = nullptr;
-    if (failure) std::rethrow_exception(failure);
+    traceWithProgressLine(
+        [&](reference::ReferenceProgress* progress) {
+            result = reference::renderReference(scene, model, request, progress);
+        },
+        request.width, request.height, quiet);
     return result;
 }
 

@@ -10,12 +10,14 @@
 #include "app/Commands.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "app/HeadlessGlContext.h"
+#include "app/ReferenceProgressLine.h"
 #include "app/RenderDocCapture.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/FiniteCheck.h"
+#include "renderer/reference/ViewReference.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -27,12 +29,18 @@ int runRenderCommand(int argc, char** argv) {
                      "                                 [--preset NAME|FILE]... [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
+                     "                                 [--ao-rays N] [--seed N] [--threads N] [--no-cache] [--cache-dir DIR]\n"
                      "                                 --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
                      "               the scene's settings and before --set; its scene is used without --scene;\n"
                      "               repeated, each applies in the order given, a later one's knobs winning\n"
-                     "  --buffer     any named output (list buffers); default: final\n"
+                     "  --buffer     any named output (list buffers); default: final. reference.lbuffer,\n"
+                     "               reference.final, reference.ao and compare.error first trace the CPU reference of\n"
+                     "               the view as `reference` does (the scene as the last frame has it; progress on\n"
+                     "               stderr, Ctrl+C cancels with exit 130) and hand it to the reference pass\n"
+                     "  --ao-rays, --seed, --threads, --no-cache, --cache-dir  that trace's options, as `reference`\n"
+                     "               takes them (defaults 64, 1, every core, the cache); only with those buffers\n"
                      "  --out        .png writes the displayed (8-bit) view; .exr the raw float values\n"
                      "  --frames     frames counted (timings are medians over them); default 1\n"
                      "  --warmup     frames rendered first and left out of the timings; default 1 when\n"
@@ -44,7 +52,8 @@ int runRenderCommand(int argc, char** argv) {
                      "               Debian package librenderdoc); RenderDoc writes FILE_capture.rdc\n"
                      "  --record     write an experiment record (JSON): scene and the sha256 of its files, camera,\n"
                      "               every knob, size, frames, build, GL, CPU, each counted frame's timings and\n"
-                     "               the image's sha256; `replay FILE` measures it again\n"
+                     "               the image's sha256; `replay FILE` measures it again (not for the CPU reference's\n"
+                     "               buffers: a record holds no --ao-rays or --seed to trace it again)\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n";
         return 0;
@@ -64,6 +73,23 @@ int runRenderCommand(int argc, char** argv) {
     const auto renderdocCapture = cl.value("--renderdoc-capture");
     const bool checkFinite = cl.flag("--check-finite");
     const auto record = cl.value("--record");
+    // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
+    const auto aoRaysText = cl.value("--ao-rays");
+    const auto seedText = cl.value("--seed");
+    const auto threadsText = cl.value("--threads");
+    const bool noCache = cl.flag("--no-cache");
+    const auto cacheDir = cl.value("--cache-dir");
+    reference::ViewReferenceOptions referenceOptions;
+    referenceOptions.aoRays = CommandLine::parseInt("--ao-rays", aoRaysText.value_or("64"), limits::kAoRays.min, limits::kAoRays.max);
+    referenceOptions.seed = CommandLine::parseInt("--seed", seedText.value_or("1"), limits::kSeed.min, limits::kSeed.max);
+    referenceOptions.threads = CommandLine::parseInt("--threads", threadsText.value_or("0"), limits::kReferenceThreads.min,
+                                                     limits::kReferenceThreads.max);
+    referenceOptions.useCache = !noCache;
+    referenceOptions.cacheDirectory = cacheDir.value_or("");
+    referenceOptions.cacheWarning = [](const std::string& why) {
+        std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str());
+    };
+    const bool referenceOptionGiven = aoRaysText || seedText || threadsText || noCache || cacheDir;
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
@@ -98,6 +124,15 @@ int runRenderCommand(int argc, char** argv) {
     session.setScene(std::move(loaded), run);
     for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     session.resize(run.width, run.height);
+    const bool needsReference = reference::isReferenceOutput(session, buffer);
+    if (!needsReference && referenceOptionGiven)
+        throw UsageError("render: --ao-rays, --seed, --threads, --no-cache and --cache-dir are the CPU reference's "
+                         "options, for reference.lbuffer, reference.final, reference.ao and compare.error; --buffer " +
+                         buffer + " has no reference");
+    if (needsReference && record)
+        throw UsageError("render: --record with --buffer " + buffer + ": '" + buffer + "' is an output of the CPU "
+                         "reference, and a record holds no --ao-rays or --seed, so replay could not trace it again; "
+                         "record a GPU buffer");
     // AOV's cost estimated from the triangles before the first frame (issue 22).
     const auto estimateStart = std::chrono::steady_clock::now();
     if (const auto e = AovCostEstimate::forKnobs(session.knobs(), session.scene(), session.camera(), run.width,
@@ -109,6 +144,37 @@ int runRenderCommand(int argc, char** argv) {
                          std::chrono::duration<double>(std::chrono::steady_clock::now() - estimateStart).count());
         if (const std::string w = AovCostEstimate::warning(*e, session.knobs(), run.width, run.height); !w.empty())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
+    }
+    if (needsReference) {
+        // A trace can take minutes: an output that cannot be written fails now, not after it.
+        for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
+        if (referenceOptions.threads > reference::availableThreads())
+            std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", referenceOptions.threads,
+                         reference::availableThreads(), reference::availableThreads());
+        // The reference of the view as the last frame has it (flame particles move with the frame
+        // index), traced as `reference` does, then handed to the reference pass for these frames:
+        // what Python's Session.render(buffer) does, so both give the same image bit for bit.
+        const std::uint64_t lastFrame =
+            session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
+        reference::ViewReference traced;
+        try {
+            traceWithProgressLine(
+                [&](reference::ReferenceProgress* progress) {
+                    reference::ViewReferenceOptions o = referenceOptions;
+                    o.progress = progress;
+                    traced = reference::traceViewReference(session, run.width, run.height, o, lastFrame);
+                },
+                run.width, run.height, false);
+        } catch (const reference::ReferenceCancelled&) {
+            std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
+            return 130;
+        }
+        const reference::ReferenceStatistics& s = traced.images.stats;
+        std::printf("CPU reference of the view: %d AO rays per pixel, seed %d; %s %.2f s on %d threads (cache key %s)\n",
+                    traced.model.rayTracedAo ? traced.model.aoRays : 0, referenceOptions.seed,
+                    traced.cached ? "from the cache, rendered earlier in" : "rendered in", s.seconds, s.threads,
+                    traced.key.c_str());
+        reference::showViewReference(session, &traced.images);
     }
     FrameRequest request;
     request.outputs = {buffer};

@@ -731,8 +731,9 @@ PYBIND11_MODULE(deferred_workbench, m) {
                  s.checkRender(buffer, frames, warmup);
                  const bool needsReference = s.isReferenceOutput(buffer);
                  if (needsReference && record)
-                     throw py::value_error("render: record= is for the GPU's outputs: replay renders a record with "
-                                           "the CLI's render, which has no CPU reference ('" + buffer + "')");
+                     throw py::value_error("render: record= with '" + buffer + "', an output of the CPU reference: "
+                                           "a record holds no ao_rays or seed, so replay could not trace it again "
+                                           "(render --record refuses it too); record a GPU buffer");
                  // AOV's cost, estimated before the first frame (issue 22), as render prints it.
                  if (const std::string w = s.aovCostWarning(); !w.empty()) warnPython(w);
                  // The reference pass's outputs: the CPU reference of the view as the last frame will have it,

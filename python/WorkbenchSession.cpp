@@ -9,10 +9,6 @@
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"
 #include "renderer/io/JsonGuard.h"
-#include "renderer/passes/ReferencePass.h"
-#include "renderer/reference/ReferenceCache.h"
-#include "renderer/reference/ReferenceModel.h"
-#include "renderer/scene/FlameParticles.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -107,8 +103,9 @@ ExperimentRecord WorkbenchSession::record() {
     requireOwningThread();
     if (!last_) throw Error("record: nothing rendered yet (call render() first)");
     if (isReferenceOutput(last_->buffer))
-        throw Error("record: the last render() was of '" + last_->buffer + "', an output of the CPU reference: replay "
-                    "renders a record with the CLI's render, which has none; render a GPU buffer, then record()");
+        throw Error("record: the last render() was of '" + last_->buffer + "', an output of the CPU reference: a "
+                    "record holds no ao_rays or seed, so replay could not trace it again (render --record refuses it "
+                    "too); render a GPU buffer, then record()");
     // The record's knobs and image hash must come from the same frames: a
     // set() since the render would pair new knobs with the old image.
     const KnobRegistry& k = session_->knobs();
@@ -229,8 +226,7 @@ void WorkbenchSession::checkRender(const std::string& buffer, int frames, int wa
 }
 
 bool WorkbenchSession::isReferenceOutput(const std::string& buffer) const {
-    const PublishedOutput* o = session_->pipeline().outputs().find(buffer);
-    return o && o->pass == "reference";
+    return reference::isReferenceOutput(*session_, buffer);
 }
 
 std::uint64_t WorkbenchSession::lastFrameOf(int frames, int warmup) const {
@@ -246,18 +242,8 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     // The reference pass shows the reference handed over for these frames
     // (what the workbench's F9 hands it), or none: a reference of an earlier
     // view never shows.
-    if (auto* pass = session_->pipeline().pass<ReferencePass>()) {
-        if (reference) {
-            auto shown = std::make_shared<ReferencePass::Images>();
-            shown->lbuffer = reference->lbuffer;
-            shown->final = reference->final;
-            shown->ao = reference->ao;
-            shown->describe = "CPU reference (" + std::to_string(reference->stats.primaryRays) + " primary rays)";
-            pass->setReference(std::move(shown));
-        } else if (pass->hasReference()) {
-            pass->setReference(nullptr, "no CPU reference of this view: Session.render(\"reference.*\") traces one");
-        }
-    }
+    reference::showViewReference(*session_, reference,
+                                 "no CPU reference of this view: Session.render(\"reference.*\") traces one");
     FrameRequest request;
     request.outputs = {buffer};
     PassTimer& timer = session_->pipeline().timer();
@@ -318,32 +304,7 @@ void WorkbenchSession::writeKnobValues(const std::string& path) const { session_
 
 reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options,
                                                        std::optional<std::uint64_t> frame) const {
-    if (!limits::kAoRays.holds(options.aoRays) || !limits::kSeed.holds(options.seed) ||
-        !limits::kReferenceThreads.holds(options.threads))
-        throw Error("reference: ao_rays, seed or threads outside reference's ranges (renderer/OptionLimits.h)");
-    std::optional<Scene> animated;
-    if (frame) {
-        animated = session_->scene();
-        animateFlameParticles(*animated, *frame);
-    }
-    const Scene& scene = animated ? *animated : session_->scene();
-    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session_->knobs(), scene);
-    model.aoRays = options.aoRays;
-    model.seed = static_cast<std::uint32_t>(options.seed);
-    reference::ReferenceRequest request;
-    request.camera = session_->camera();
-    request.width = width_;
-    request.height = height_;
-    // oneTBB runs at most as many threads as the machine has cores (as reference --threads).
-    request.threads = options.threads > 0 ? std::min(options.threads, reference::availableThreads()) : 0;
-    const reference::ReferenceCache cache(options.cacheDirectory.empty() ? std::filesystem::path()
-                                                                        : std::filesystem::path(options.cacheDirectory));
-    const std::string key = reference::referenceKey(scene, model, request);
-    if (options.useCache)
-        if (auto cached = cache.load(key)) return *cached;
-    reference::ReferenceImages images = reference::renderReference(scene, model, request, options.progress);
-    if (options.useCache) cache.store(key, images);
-    return images;
+    return reference::traceViewReference(*session_, width_, height_, options, frame).images;
 }
 
 void WorkbenchSession::resize(int width, int height) {

@@ -21,6 +21,7 @@
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/reference/ViewReference.h"
 
 namespace dw {
 
@@ -54,16 +55,8 @@ struct BufferInfo {
     std::string name, kind, pass, description;
 };
 
-// The CPU reference's options, as `reference`'s flags (ranges: renderer/OptionLimits.h).
-struct ReferenceOptions {
-    int aoRays = 64;   // --ao-rays
-    int seed = 1;      // --seed
-    int threads = 0;   // --threads; 0: every core
-    bool useCache = true;
-    std::string cacheDirectory;  // empty: ReferenceCache's default
-    // Counts finished pixels; its `cancel` stops the trace (ReferenceCancelled).
-    reference::ReferenceProgress* progress = nullptr;
-};
+// The CPU reference's options, as `reference`'s flags (renderer/reference/ViewReference.h).
+using ReferenceOptions = reference::ViewReferenceOptions;
 
 // Throws FileError when `sceneSpec` names an experiment record (a .json whose
 // "format" is a record's), saying how to replay it: the scene loader would

@@ -2,6 +2,9 @@
 // the knobs it reports, the cache, and one clear line for bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -126,6 +129,90 @@ TEST(ReferenceCli, CompareAgainstTheReference) {
     EXPECT_NE(r.err.find("no counterpart of buffer 'gbuffer.normal'"), std::string::npos) << r.err;
     r = run("compare --against reference --a ao.enabled=false --scene spheres --size 8x8");
     EXPECT_NE(r.err.find("give the render's knobs with --b"), std::string::npos) << r.err;
+}
+
+// render --buffer reference.* traces the view's reference as `reference` does and hands it to the
+// reference pass: the same images bit for bit; compare.error is the pass's per-pixel
+// |L - L_ref| / (L_ref + 0.001) of the frame's lbuffer against it (L the luminance).
+bool sameBits(const FloatImage& a, const FloatImage& b) {
+    return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+TEST(ReferenceCli, RenderBufferOfTheReferenceIsReferencesImage) {
+    const fs::path dir = test::tempDir() / "reference-render-buffer";
+    fs::remove_all(dir / "cache");  // the seed-4 trace below must miss it
+    fs::create_directories(dir);
+    const std::string view = " --scene default --size 32x18 --ao-rays 4 --seed 3";
+    const std::string cache = " --cache-dir " + (dir / "cache").string();
+    for (const std::string name : {"lbuffer", "final", "ao"}) {
+        const fs::path ref = dir / ("ref-" + name + ".exr"), ren = dir / ("render-" + name + ".exr");
+        auto r = run("reference" + view + " --no-cache --quiet --buffer " + name + " --out " + ref.string());
+        ASSERT_EQ(r.code, 0) << r.err;
+        r = run("render" + view + cache + " --buffer reference." + name + " --out " + ren.string());
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("CPU reference of the view: 4 AO rays per pixel, seed 3"), std::string::npos) << r.out;
+        const FloatImage a = loadImageFloat(ref.string()), b = loadImageFloat(ren.string());
+        EXPECT_EQ(b.width, 32);
+        EXPECT_EQ(b.channels, name == "ao" ? 1 : 4) << name;
+        EXPECT_TRUE(sameBits(a, b)) << name;
+    }
+    // The first trace was cached in --cache-dir; a seed of its own is traced again and differs.
+    auto r = run("render" + view + cache + " --buffer reference.ao --out " + (dir / "again.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("from the cache"), std::string::npos) << r.out;
+    r = run("render --scene default --size 32x18 --ao-rays 4 --seed 4" + cache + " --buffer reference.ao --out " +
+            (dir / "seed4.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out.find("from the cache"), std::string::npos) << r.out;
+    EXPECT_FALSE(sameBits(loadImageFloat((dir / "seed4.exr").string()), loadImageFloat((dir / "ref-ao.exr").string())));
+
+    // compare.error against the formula on the frame's lbuffer and the reference's.
+    r = run("render" + view + cache + " --buffer compare.error --out " + (dir / "error.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run("render --scene default --size 32x18 --buffer lbuffer --out " + (dir / "frame.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const FloatImage error = loadImageFloat((dir / "error.exr").string());
+    const FloatImage frame = loadImageFloat((dir / "frame.exr").string());
+    const FloatImage ref = loadImageFloat((dir / "ref-lbuffer.exr").string());
+    ASSERT_EQ(error.channels, 1);
+    ASSERT_EQ(error.width * error.height, frame.width * frame.height);
+    const auto luminance = [](const FloatImage& i, size_t p) {
+        const float* c = &i.pixels[p * static_cast<size_t>(i.channels)];
+        return static_cast<double>(static_cast<float>(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]));
+    };
+    double largest = 0.0;
+    for (size_t p = 0; p < error.pixels.size(); ++p) {
+        const double l = luminance(frame, p), lr = luminance(ref, p);
+        const float expected = static_cast<float>(std::abs(l - lr) / (lr + 1e-3));
+        ASSERT_EQ(error.pixels[p], expected) << "pixel " << p;
+        largest = std::max(largest, static_cast<double>(error.pixels[p]));
+    }
+    EXPECT_GT(largest, 0.0);
+}
+
+TEST(ReferenceCli, RenderBufferOfTheReferenceBadInput) {
+    const fs::path dir = test::tempDir() / "reference-render-bad";
+    fs::create_directories(dir);
+    // A record holds no --ao-rays or --seed: replay could not trace it again.
+    auto r = run("render --scene default --size 8x8 --buffer reference.ao --record " + (dir / "r.json").string() +
+                 " --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--record with --buffer reference.ao"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+    // The reference's options with a GPU buffer: said, not ignored.
+    r = run("render --scene default --size 8x8 --buffer final --ao-rays 8 --out " + (dir / "x.png").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--buffer final has no reference"), std::string::npos) << r.err;
+    r = run("render --scene default --size 8x8 --buffer reference.ao --ao-rays 0 --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--ao-rays"), std::string::npos) << r.err;
+    // An output that cannot be written fails before the trace.
+    r = run("render --scene default --size 8x8 --buffer reference.ao --no-cache --out " +
+            (dir / "no-such-folder" / "x.exr").string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("cannot write the --out file"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("CPU reference of the view"), std::string::npos) << r.out;
 }
 
 }  // namespace

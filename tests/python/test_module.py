@@ -423,7 +423,7 @@ class SessionTest(unittest.TestCase):
         with self.assertRaises(Stop):
             s.reference("ao", ao_rays=4096, cache=False, progress=stop)
         self.assertEqual(s.render("final").shape, (size[1], size[0], 4))
-        # A record is replayed by the CLI's render, which has no CPU reference: refused, by name.
+        # A record holds no ao_rays or seed, so replay could not trace the reference again: refused, by name.
         with self.assertRaises(ValueError) as e:
             s.render("reference.ao", ao_rays=8, record=os.path.join(self.tmp.name, "ref-record.json"))
         self.assertIn("reference.ao", str(e.exception))
@@ -431,6 +431,26 @@ class SessionTest(unittest.TestCase):
         with self.assertRaises(dw.Error) as e:
             s.record(os.path.join(self.tmp.name, "ref-record.json"))
         self.assertIn("reference.ao", str(e.exception))
+
+    def test_reference_outputs_equal_render_buffer_of_the_cli(self):
+        # Session.render("reference.ao" / "compare.error") and `render --buffer` of the same view and
+        # reference options trace the same reference (renderer/reference/ViewReference) and hand it
+        # to the reference pass the same way: bit for bit.
+        size = (32, 18)
+        s = dw.Session(scene="default", size=size)
+        images = {}
+        for name in ("reference.ao", "compare.error"):
+            out = os.path.join(self.tmp.name, "cli-%s.exr" % name)
+            r = subprocess.run([BINARY, "render", "--size", "%dx%d" % size, "--buffer", name, "--ao-rays", "4",
+                                "--seed", "2", "--no-cache", "--out", out], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            cli = dw.load_image(out)
+            image = s.render(name, ao_rays=4, seed=2, cache=False)
+            self.assertEqual((image.dtype, image.shape), (np.float32, (size[1], size[0], 1)), name)
+            self.assertTrue(np.array_equal(image, cli, equal_nan=True), name)
+            images[name] = image
+        self.assertLess(float(images["reference.ao"].min()), 1.0)  # something is occluded
+        self.assertGreater(float(images["compare.error"].max()), 0.0)
 
     def test_numeric_arguments_are_held_to_the_cli_ranges(self):
         # renderer/OptionLimits.h's ranges: outside them, however large, ValueError naming the

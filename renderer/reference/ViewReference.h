@@ -1,0 +1,63 @@
+#pragma once
+// The CPU reference of one view, traced as `reference` traces it (issue 24):
+// the scene (as frame N has it: flame particles move with the frame index),
+// the knobs that define the model (ReferenceModel::fromKnobs), the camera,
+// the size, and `reference`'s options (--ao-rays, --seed, --threads, the
+// cache). One function used by `render --buffer reference.*|compare.error`
+// (app/RenderCommand.cpp) and by the Python module's Session.render and
+// Session.reference (python/WorkbenchSession.cpp), so both trace the same
+// image bit for bit. CPU only (Embree, oneTBB); no GL.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "renderer/RenderSession.h"
+#include "renderer/reference/ReferenceRenderer.h"
+
+namespace dw::reference {
+
+// `reference`'s options (ranges: renderer/OptionLimits.h, kAoRays, kSeed,
+// kReferenceThreads; checked here, Error outside them).
+struct ViewReferenceOptions {
+    int aoRays = 64;   // --ao-rays: cosine-weighted AO rays per pixel
+    int seed = 1;      // --seed: the AO sample pattern's seed
+    int threads = 0;   // --threads; 0: every core; more than the machine's cores: its cores (same image for any)
+    bool useCache = true;        // false: --no-cache (trace, and store nothing)
+    std::string cacheDirectory;  // --cache-dir; empty: ReferenceCache's default ($DW_REFERENCE_CACHE, ~/.cache/...)
+    // Counts finished pixels; its `cancel` stops the trace (ReferenceCancelled is thrown).
+    ReferenceProgress* progress = nullptr;
+    // A cache that cannot be written: when set, called with the reason and the
+    // images are still returned (as `reference` warns); when empty, Error is thrown.
+    std::function<void(const std::string&)> cacheWarning;
+};
+
+struct ViewReference {
+    ReferenceImages images;  // W x H, rows top-down (ReferenceRenderer.h's buffers)
+    ReferenceModel model;    // what was traced (fromKnobs, with aoRays and seed)
+    std::string key;         // the cache key
+    bool cached = false;     // read from the cache, not traced
+};
+
+// The reference of `session`'s view at `width` x `height` pixels: its knobs
+// and camera as they are now, its scene as frame `frame` has it (none: as the
+// session holds it). Reads the session without changing it (no GL call), so
+// it runs on any thread while the session's own waits. Throws Error (options
+// out of range, Embree failures, a size below 1x1, an unwritable cache without
+// cacheWarning) or ReferenceCancelled.
+ViewReference traceViewReference(RenderSession& session, int width, int height, const ViewReferenceOptions& options,
+                                 std::optional<std::uint64_t> frame = std::nullopt);
+
+// Hands `images` to the session's `reference` pass for the frames rendered
+// next (what the workbench's F9 hands it): reference.lbuffer, reference.final,
+// reference.ao and compare.error then show it. nullptr takes an earlier one
+// away, with `staleReason` as the pass's skip reason. No effect on a pipeline
+// without the pass.
+void showViewReference(RenderSession& session, const ReferenceImages* images, const std::string& staleReason = {});
+
+// Whether `buffer` is an output of the `reference` pass (reference.lbuffer,
+// reference.final, reference.ao, compare.error): a frame needs the view's
+// reference handed over to produce it.
+bool isReferenceOutput(RenderSession& session, const std::string& buffer);
+
+}  // namespace dw::reference
