@@ -63,7 +63,8 @@ const SweepCommand kBench = [] {
         "               other (differing only in the baseline's axis) form a group, and shard i runs\n"
         "               the groups whose number % n == i; bench merge takes --baseline and --ratio-of\n"
         "               from the shards' JSONs unless it is given its own";
-    c.filesWhat = "the samples (every counted frame, every pass) and the summary with the machine";
+    c.filesWhat = "the samples (every counted frame, every pass), and an experiment record whose results are\n"
+                  "               the summary with the machine (deferred-workbench replay runs it again)";
     c.plotWhat = "frame ms against light count per configuration, log-log, drawn by\n"
                  "               scripts/bench_plot.py (python3-matplotlib); only with --plot";
     return c;
@@ -75,9 +76,9 @@ std::string benchUsage() {
            "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
            "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
            "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
-           "                                [--resamples N] [--shard i/n] [--csv FILE] [--json FILE] [--plot FILE.png]\n"
+           "                                [--resamples N] [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png]\n"
            "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
-           "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--json FILE] [--plot FILE.png]\n"
+           "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--record FILE] [--plot FILE.png]\n"
            "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
            "  --size       render sizes (default 640x360); one session per size, all in one process\n"
            "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"

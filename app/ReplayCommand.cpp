@@ -1,6 +1,8 @@
 // deferred-workbench replay RECORD.json: restores the state an experiment
 // record holds and measures again, and says what changed: each scene file,
-// knob and build field by name, and
+// shader file (compiled from the folder this build finds: $DW_SHADER_DIR
+// first), knob and build field by name, then "inputs changed (N): ..." (or
+// "inputs changed: none"), and
 //   render / gui records: the image (sha256 of its pixels) and each timing
 //     series old against new with the bootstrap interval of the ratio of medians;
 //   tradeoff records: the same sweep run again, per point and camera the
@@ -9,7 +11,8 @@
 //   bench records: the same grid (sizes, lights, sweep, frames, warm-up,
 //     seed, camera path) run again, per configuration its lights per pixel
 //     and the ratio series' GPU median old against new with the interval.
-// Exit 0: the same (render: the image is identical; bench: every
+// The result decides the exit code, never the inputs: changed inputs with an
+// identical image exit 0. Exit 0: the same (render: the image is identical; bench: every
 // configuration is there, its lights per pixel equal, and no ratio's 95%
 // interval lies wholly outside [0.8, 1.25]; tradeoff: every row there, its
 // error equal, no frame time moved beyond that band); 1: it differs; 2: the record is
@@ -29,9 +32,12 @@
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/bench/TradeoffStudy.h"
+#include "renderer/gl/ShaderLibrary.h"
+#include "renderer/gl/ShaderSource.h"
 #include "renderer/record/BuildInfo.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"
+#include "renderer/record/ShaderFiles.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -46,22 +52,95 @@ constexpr double kTimingBandLow = 0.8, kTimingBandHigh = 1.25;
 
 bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingBandHigh || r.high < kTimingBandLow); }
 
-// new / old of two series' medians with its interval, or (below
-// kMinIntervalSamples frames on a side) no interval: printed as such.
-RatioInterval ratioOf(const std::vector<double>& now, const std::vector<double>& old, int resamples = 2000) {
-    if (!enoughForInterval(now.size()) || !enoughForInterval(old.size())) return {};
-    return bootstrapRatioOfMedians(now, old, resamples);
-}
-
 void printTooFew(size_t now, size_t old) {
     std::printf("  %s (%zu and %zu frames, %zu needed on each side)", kTooFewForInterval.c_str(), old, now,
                 kMinIntervalSamples);
 }
 
+// Below this a median prints as 0.000 ms: the timer's noise, not a time to divide by.
+constexpr double kZeroMs = 0.0005;
+
+// Prints the ratio new / old of two series' GPU medians with its interval,
+// or why there is none, and returns the interval (invalid when none: such a
+// timing never counts as moved). An old median that prints as 0.000 ms has
+// no ratio ("n/a (0 ms)"; 0/0 when both are); an old series whose resamples
+// reach a 0 ms median has a ratio but no upper bound, so no interval.
+// `markMoved`: say "(moved)" after an interval wholly outside the band
+// (bench, where that decides; a render record's timings decide nothing).
+RatioInterval printRatio(const std::vector<double>& now, const std::vector<double>& old, int resamples = 2000,
+                         bool markMoved = false) {
+    if (old.empty() || now.empty()) {
+        std::printf("  n/a (no frames)");
+        return {};
+    }
+    const double before = median(old), after = median(now);
+    if (!(before >= kZeroMs)) {
+        std::printf("  n/a (0 ms)");
+        return {};
+    }
+    if (!enoughForInterval(now.size()) || !enoughForInterval(old.size())) {
+        printTooFew(now.size(), old.size());
+        return {};
+    }
+    const RatioInterval r = bootstrapRatioOfMedians(now, old, resamples);
+    if (!r.valid() || r.resamples < resamples || !std::isfinite(r.low) || !std::isfinite(r.high)) {
+        std::printf("  x%.3f, no interval (0 ms medians among the old frames' resamples)", after / before);
+        return {};
+    }
+    std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, markMoved && timingMoved(r) ? " (moved)" : "");
+    return r;
+}
+
+// "a, b, c and N more": at most `shown` names.
+std::string someOf(const std::vector<std::string>& names, size_t shown = 3) {
+    std::string out;
+    for (size_t i = 0; i < names.size() && i < shown; ++i) out += (i ? ", " : "") + names[i];
+    if (names.size() > shown) out += " and " + std::to_string(names.size() - shown) + " more";
+    return out;
+}
+
+// The inputs replay finds changed (scene files, shader files, knobs the
+// build lacks or adds, build fields, the GL renderer), each named, for the
+// "inputs changed (N): ..." line. They never decide the exit code: the
+// image (or bench's and tradeoff's rules) does.
+struct ChangedInputs {
+    std::vector<std::string> names;
+    void add(const std::string& name) { names.push_back(name); }
+    void print() const {
+        if (names.empty()) {
+            std::printf("inputs changed: none\n");
+            return;
+        }
+        std::string all;
+        for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+        std::printf("inputs changed (%zu): %s\n", names.size(), all.c_str());
+    }
+};
+
+// The record's shader files against those the replay compiled (`now`).
+void reportShaders(const ExperimentRecord& old, const RecordedShaders& now, ChangedInputs& inputs) {
+    if (!old.shaders.present) {
+        std::printf("record holds no shader hashes (written before records kept them)\n");
+        return;
+    }
+    for (const SceneFileChange& c : compareShaderFiles(old.shaders, now)) {
+        if (c.kind == SceneFileChange::Kind::Changed)
+            std::printf("shader file changed: %s (sha256 %s -> %s)\n", c.path.c_str(), shortHash(c.oldSha256).c_str(),
+                        shortHash(c.newSha256).c_str());
+        else if (c.kind == SceneFileChange::Kind::Added)
+            std::printf("shader file added: %s (sha256 %s; the record does not list it)\n", c.path.c_str(),
+                        shortHash(c.newSha256).c_str());
+        else
+            std::printf("shader file removed: %s (recorded sha256 %s; not in %s)\n", c.path.c_str(),
+                        shortHash(c.oldSha256).c_str(), now.folder.c_str());
+        inputs.add("shader file " + c.path);
+    }
+}
+
 // The recorded knobs this build takes, as --set assignments; the others are
 // named. A value the registry refuses (as --set would) refuses the record:
 // throws Error naming each such knob (knobs.NAME: the registry's message).
-std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
+std::vector<std::string> restoredKnobs(const ExperimentRecord& old, ChangedInputs& inputs) {
     const KnobRegistry declared = RunConfig::declaredKnobs();
     std::vector<std::string> sets, refused;
     std::map<std::string, std::string> recorded;
@@ -72,6 +151,7 @@ std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
         recorded[name] = value;
         if (!declared.find(name)) {
             std::printf("knob not in this build: %s (recorded %s)\n", name.c_str(), value.c_str());
+            inputs.add("knob " + name);
             continue;
         }
         KnobRegistry probe = declared;
@@ -85,8 +165,10 @@ std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
     }
     for (size_t i = 0; i < declared.size(); ++i) {
         const std::string& name = declared.spec(static_cast<int>(i)).name;
-        if (!recorded.count(name))
+        if (!recorded.count(name)) {
             std::printf("knob new in this build: %s (default %s)\n", name.c_str(), declared.format(static_cast<int>(i)).c_str());
+            inputs.add("knob " + name);
+        }
     }
     if (!refused.empty()) {
         std::string all;
@@ -97,7 +179,7 @@ std::vector<std::string> restoredKnobs(const ExperimentRecord& old) {
 }
 
 int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<std::string>& sets,
-                 const std::optional<std::string>& newRecord) {
+                 const std::optional<std::string>& newRecord, ChangedInputs& inputs) {
     RunConfig run;
     run.scene = old.sceneSpec;
     run.sets = sets;
@@ -108,8 +190,10 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     auto context = HeadlessGlContext::create();
     RenderSession session;
     for (const auto& [k, v] : old.gl)
-        if (k == "renderer" && v != session.glInfo().renderer)
+        if (k == "renderer" && v != session.glInfo().renderer) {
             std::printf("gl renderer: %s -> %s\n", v.c_str(), session.glInfo().renderer.c_str());
+            inputs.add("gl renderer");
+        }
     session.setScene(std::move(loaded), run);
     session.camera() = old.camera;
     session.resize(run.width, run.height);
@@ -132,12 +216,12 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     for (const auto& s : now.timings) {
         const auto it = oldSeries.find(s.name);
         if (it == oldSeries.end()) continue;
-        const RatioInterval r = ratioOf(s.gpuMs, it->second->gpuMs);
         std::printf("timing %-28s gpu median %9.3f -> %9.3f ms", s.name.c_str(), median(it->second->gpuMs), median(s.gpuMs));
-        if (r.valid()) std::printf("  x%.3f [%.3f, %.3f]", r.ratio, r.low, r.high);
-        else printTooFew(s.gpuMs.size(), it->second->gpuMs.size());
+        printRatio(s.gpuMs, it->second->gpuMs);
         std::printf("\n");
     }
+    reportShaders(old, now.shaders, inputs);
+    inputs.print();
     if (now.imageSha256 == old.imageSha256) {
         std::printf("image: identical\n");
         return 0;
@@ -166,7 +250,8 @@ std::string configLabel(const BenchConfig& c, const std::vector<std::string>& ax
     return label;
 }
 
-int replayBench(const ExperimentRecord& old, const std::vector<std::string>& sets, const std::optional<std::string>& newRecord) {
+int replayBench(const ExperimentRecord& old, const std::vector<std::string>& sets, const std::optional<std::string>& newRecord,
+                ChangedInputs& inputs) {
     const RecordedBench& recorded = *old.bench;
     const std::string series = recorded.ratioOf;
     std::map<int, RecordedConfig> before;
@@ -190,15 +275,17 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
     BenchResults results = runner.run();
     results.machine.emplace_back("gl_platform", context->platform());
     for (const auto& [k, v] : old.gl)
-        if (k == "renderer" && v != fieldOrEmpty(results.machine, "gl_renderer"))
+        if (k == "renderer" && v != fieldOrEmpty(results.machine, "gl_renderer")) {
             std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(results.machine, "gl_renderer").c_str());
+            inputs.add("gl renderer");
+        }
     BenchBaseline baseline = runner.baseline();
     baseline.series = series;
     const BenchSummary summary = summarize(results, baseline, recorded.resamples);
     if (newRecord) ExperimentRecord::forBench(again, runner.scene(), results, summary).write(*newRecord);
 
-    bool differs = false;
     int lppDiffer = 0, moved = 0;
+    std::vector<std::string> notInRecord, notRunAgain;
     std::map<int, std::vector<double>> afterMs;
     for (const auto& s : results.samples)
         if (s.series == series) afterMs[s.config].push_back(s.gpuMs);
@@ -208,16 +295,14 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
         const auto it = before.find(i);
         if (it == before.end()) {
             std::printf("config %d (%s): not in the record\n", i, label.c_str());
-            differs = true;
+            notInRecord.push_back("config " + std::to_string(i) + " (" + label + ")");
             continue;
         }
         const RecordedConfig& b = it->second;
         const std::vector<double>& a = afterMs[i];
-        const RatioInterval r = ratioOf(a, b.gpuMs, recorded.resamples);
         std::printf("config %d (%s): %s gpu median %9.3f -> %9.3f ms", i, label.c_str(), series.c_str(), median(b.gpuMs),
                     median(a));
-        if (r.valid()) std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, timingMoved(r) ? " (moved)" : "");
-        else printTooFew(a.size(), b.gpuMs.size());
+        const RatioInterval r = printRatio(a, b.gpuMs, recorded.resamples, true);
         const bool bothLpp = std::isfinite(b.lpp) && std::isfinite(c.lpp);
         // The JSON holds LPP rounded to 6 significant digits.
         const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(c.lpp)) ||
@@ -230,18 +315,26 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
     }
     for (const auto& [i, b] : before) {
         std::printf("config %d: in the record, not run again\n", i);
-        differs = true;
+        notRunAgain.push_back("config " + std::to_string(i));
     }
-    differs = differs || lppDiffer > 0 || moved > 0;
+    reportShaders(old, shaderFilesOf(results.shaders), inputs);
+    inputs.print();
+    const bool differs = !notInRecord.empty() || !notRunAgain.empty() || lppDiffer > 0 || moved > 0;
     if (!differs) {
         std::printf("bench: the same (%zu configurations, lights per pixel equal, no %s timing outside [%.2f, %.2f] "
                     "with its 95%% interval)\n",
                     results.configs.size(), series.c_str(), kTimingBandLow, kTimingBandHigh);
         return 0;
     }
-    std::printf("bench: differs (%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
+    // A record cut short (its results lack configurations of the grid it declares) names them.
+    std::string missing;
+    if (!notInRecord.empty())
+        missing += std::to_string(notInRecord.size()) + " configuration(s) not in the record: " + someOf(notInRecord) + "; ";
+    if (!notRunAgain.empty())
+        missing += std::to_string(notRunAgain.size()) + " in the record, not run again: " + someOf(notRunAgain) + "; ";
+    std::printf("bench: differs (%s%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
                 "[%.2f, %.2f])\n",
-                lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
+                missing.c_str(), lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
     return 1;
 }
 
@@ -260,7 +353,7 @@ bool sameError(double a, double b) {
 }
 
 int replayTradeoff(const ExperimentRecord& old, const std::string& path, const std::vector<std::string>& sets,
-                   const std::optional<std::string>& newRecord) {
+                   const std::optional<std::string>& newRecord, ChangedInputs& inputs) {
     RecordedTradeoff again = *old.tradeoff;
     bool presetAxis = false;
     for (const auto& a : again.options.sweep.axes) presetAxis = presetAxis || a.name == "preset";
@@ -279,11 +372,13 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress);
     for (const auto& [k, v] : old.gl)
-        if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer"))
+        if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer")) {
             std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(m.machine, "gl_renderer").c_str());
+            inputs.add("gl renderer");
+        }
     const TradeoffTable& after = m.result.table;
     if (newRecord)
-        ExperimentRecord::forTradeoff(again, runner.scene(), after, m.machine, m.result.settings).write(*newRecord);
+        ExperimentRecord::forTradeoff(again, runner.scene(), m.result, m.machine).write(*newRecord);
 
     std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
     for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
@@ -322,6 +417,8 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
         std::printf("%s: in the record, not run again\n", pointLabel(before, *b).c_str());
         ++missing;
     }
+    reportShaders(old, shaderFilesOf(m.result.shaders), inputs);
+    inputs.print();
     if (errorDiffer == 0 && moved == 0 && missing == 0) {
         std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
                     "95%% interval)\n",
@@ -339,8 +436,8 @@ int runReplayCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2);
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
-                     "Restores the state of an experiment record (render --record, bench --json, tradeoff --json, the window's\n"
-                     "record), measures again and names each changed scene file, knob and build field.\n"
+                     "Restores the state of an experiment record (render, bench and tradeoff --record, the window's\n"
+                     "record), measures again and names each changed scene file, shader file, knob and build field.\n"
                      "  render/window records: prints 'image: identical' or 'image: differs (sha256 old -> new)'\n"
                      "               and old against new timings with the 95% interval of each ratio\n"
                      "  bench records: runs the same grid again and prints, per configuration, the ratio series'\n"
@@ -350,12 +447,18 @@ int runReplayCommand(int argc, char** argv) {
                      "               of the difference\n"
                      "  --record     write the new run's record too\n"
                      "Scene paths in the record are relative to its folder; the scene's files as it loads now are\n"
-                     "compared with the record's (changed, added, removed by name). Fields are held to the ranges of\n"
+                     "compared with the record's (changed, added, removed by name). Shaders are compiled from the\n"
+                     "folder this build finds ($DW_SHADER_DIR, else the source tree's shaders/, else one beside the\n"
+                     "binary); every shader file the run compiled is compared with the record's by its path in that\n"
+                     "folder (shader file changed/added/removed). Fields are held to the ranges of\n"
                      "the options they stand for, the camera to scene/CameraCheck, knob values to the registry.\n"
                      "Intervals need 6 frames a side; fewer print 'too few frames for an interval'.\n"
-                     "Exit 0: the same (the image identical; for bench every configuration there, its lights per\n"
-                     "pixel equal and no timing ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row\n"
-                     "there, its error equal, no frame time moved beyond that band); 1: it differs;\n"
+                     "Then 'inputs changed (N): ...' names every changed input (scene file, shader file, knob the\n"
+                     "build lacks or adds, build field, GL renderer), or 'inputs changed: none'.\n"
+                     "Exit codes: the result decides, not the inputs. 0: the same (the image identical, even when\n"
+                     "inputs changed; for bench every configuration there, its lights per pixel equal and no timing\n"
+                     "ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row there, its error equal, no\n"
+                     "frame time moved beyond that band); 1: it differs (even when no input changed);\n"
                      "2: the record is refused. docs/records.md.\n";
         return 0;
     }
@@ -387,6 +490,7 @@ int runReplayCommand(int argc, char** argv) {
         // by name. Only the loader's files are read: a path the record alone
         // names is reported, never opened.
         Scene loaded = loadScene(old.sceneSpec);
+        ChangedInputs inputs;
         for (const SceneFileChange& c : compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source)) {
             if (c.kind == SceneFileChange::Kind::Changed)
                 std::printf("scene file changed: %s (sha256 %s -> %s)\n", c.path.c_str(), shortHash(c.oldSha256).c_str(),
@@ -397,17 +501,32 @@ int runReplayCommand(int argc, char** argv) {
             else
                 std::printf("scene file removed: %s (recorded sha256 %s; the scene no longer reads it)\n",
                             c.path.c_str(), shortHash(c.oldSha256).c_str());
+            inputs.add("scene file " + c.path);
         }
-        const std::vector<std::string> sets = restoredKnobs(old);
+        const std::vector<std::string> sets = restoredKnobs(old, inputs);
         for (const auto& [k, v] : buildFields())
             for (const auto& [ok, ov] : old.build)
-                if (k == ok && v != ov) std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
-        if (old.command == "bench") return replayBench(old, sets, newRecord);
-        if (old.command == "tradeoff") return replayTradeoff(old, path, sets, newRecord);
-        return replayRender(old, std::move(loaded), sets, newRecord);
+                if (k == ok && v != ov) {
+                    std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
+                    inputs.add("build " + k);
+                }
+        if (old.command == "bench") return replayBench(old, sets, newRecord, inputs);
+        if (old.command == "tradeoff") return replayTradeoff(old, path, sets, newRecord, inputs);
+        return replayRender(old, std::move(loaded), sets, newRecord, inputs);
     } catch (const GlUnsupportedError&) {
         throw;
     } catch (const Error& e) {
+        // A shader that no longer compiles: which shader files changed since
+        // the record (those it names, looked up in the folder used now).
+        if (dynamic_cast<const gl::ShaderError*>(&e) && old.shaders.present) {
+            RecordedShaders now;
+            try {
+                now.folder = gl::ShaderLibrary::locateRoot().string();
+            } catch (const Error&) {
+            }
+            ChangedInputs unused;
+            reportShaders(old, now, unused);
+        }
         std::fflush(stdout);
         std::fprintf(stderr, "refused: %s: cannot restore it: %s\n", path.c_str(), e.what());
         return 2;

@@ -25,6 +25,19 @@ void checkPlot(const std::string& plot, int width, int height) {
         throw UsageError("--plot-size expects at least 50x50, got " + std::to_string(width) + "x" + std::to_string(height));
 }
 
+// The run's record: --record FILE, or --json FILE (its older name: bench's
+// and tradeoff's JSON became the record, one format). Both given must name
+// one file. Returns the flag given (for messages) and the file, if any.
+std::pair<std::string, std::optional<std::string>> readRecordFlag(CommandLine& cl) {
+    const auto record = cl.value("--record");
+    const auto json = cl.value("--json");
+    if (record && json && *record != *json)
+        throw UsageError("--record and --json are one option (the run's experiment record; --json is its older name): "
+                         "give one, got --record " + *record + " and --json " + *json);
+    if (record) return {"--record", record};
+    return {"--json", json};
+}
+
 // --plot-size without --plot changes nothing: said, not ignored.
 void notePlotSizeAlone(CommandLine& cl, const SweepCommand& c, bool plot) {
     if (!plot && cl.value("--plot-size"))
@@ -86,7 +99,9 @@ SweepOptions SweepOptions::read(CommandLine& cl, const SweepCommand& c) {
     }
     const std::string stem = c.name + o.shardSuffix();
     o.csv = cl.value("--csv").value_or(stem + ".csv");
-    o.json = cl.value("--json").value_or(stem + ".json");
+    const auto [recordFlag, record] = readRecordFlag(cl);
+    o.jsonFlag = recordFlag;
+    o.json = record.value_or(stem + ".json");
     o.plot = cl.value("--plot");
     if (!o.plot && c.plotByDefault) o.plot = stem + ".png";
     std::tie(o.plotWidth, o.plotHeight) = readPlotSize(cl, c);
@@ -102,7 +117,7 @@ std::string SweepOptions::shardSuffix() const {
 std::string SweepOptions::shardText() const { return std::to_string(shard.index) + "/" + std::to_string(shard.count); }
 
 void SweepOptions::checkOutputs(const SweepCommand& c, const CommandLine::NamedFiles& inputs) const {
-    CommandLine::NamedFiles writes = {{"--csv", csv}, {"--json", json}};
+    CommandLine::NamedFiles writes = {{"--csv", csv}, {jsonFlag, json}};
     if (plot) writes.emplace_back("--plot", *plot);
     CommandLine::requireDistinctFiles(writes, inputs);
     if (plot) checkPlot(*plot, plotWidth, plotHeight);
@@ -122,8 +137,9 @@ std::string SweepOptions::help(const SweepCommand& c) {
            "  --orbit N    N cameras on a circle about the run's camera; --walkthrough: each keyframe of the\n"
            "               scene JSON's camera.path; " + c.camerasWhat + "\n"
            "  --shard i/n  " + c.shardWhat + "; join the shards with " + stem + " merge\n"
-           "  --csv, --json  " + c.filesWhat + ";\n"
-           "               default " + stem + ".csv and " + stem + ".json (" + stem + "-shard-I-of-N.* with --shard)\n"
+           "  --csv, --record  " + c.filesWhat + ";\n"
+           "               default " + stem + ".csv and " + stem + ".json (" + stem + "-shard-I-of-N.* with --shard);\n"
+           "               --json FILE is the same option as --record (its older name)\n"
            "  --plot       " + c.plotWhat + "; --plot-size in pixels (default " + c.plotSize + ")\n"
            "  --quiet      no progress lines on stderr\n";
 }
@@ -131,7 +147,7 @@ std::string SweepOptions::help(const SweepCommand& c) {
 SweepMergeOptions SweepMergeOptions::read(CommandLine& cl, const SweepCommand& c) {
     SweepMergeOptions m;
     m.out = cl.value("--out");
-    m.json = cl.value("--json");
+    std::tie(m.jsonFlag, m.json) = readRecordFlag(cl);
     m.plot = cl.value("--plot");
     std::tie(m.plotWidth, m.plotHeight) = readPlotSize(cl, c);
     notePlotSizeAlone(cl, c, m.plot.has_value());
@@ -143,7 +159,7 @@ void SweepMergeOptions::check(const CommandLine& cl, const SweepCommand& c, cons
     if (inputs.empty()) throw UsageError(c.name + " merge needs the shards' CSV files");
     if (!out) throw UsageError(c.name + " merge needs --out FILE.csv");
     CommandLine::NamedFiles writes = {{"--out", *out}}, reads;
-    if (json) writes.emplace_back("--json", *json);
+    if (json) writes.emplace_back(jsonFlag, *json);
     if (plot) writes.emplace_back("--plot", *plot);
     for (const auto& in : inputs) reads.emplace_back("the shard " + in, in);
     reads.insert(reads.end(), moreReads.begin(), moreReads.end());
@@ -155,7 +171,7 @@ void SweepMergeOptions::check(const CommandLine& cl, const SweepCommand& c, cons
 }
 
 std::string SweepMergeOptions::help(const SweepCommand& c) {
-    return "  merge        joins the shards' files into --out (and --json, --plot as a run writes them)\n"
+    return "  merge        joins the shards' files into --out (and --record (or --json), --plot as a run writes them)\n"
            "               into one table, as one run of the whole grid would have; --plot-size as above (default " +
            c.plotSize + ")\n";
 }

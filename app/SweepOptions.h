@@ -1,8 +1,10 @@
 #pragma once
 // The options `bench` and `tradeoff` share, read, checked and explained in one
 // place: --sweep, --exclude, --frames/--warmup/--block, --resamples,
-// --orbit/--walkthrough, --shard, --csv/--json/--plot/--plot-size, --quiet,
-// and their `merge` subcommands' --out/--json/--plot/--plot-size and shards.
+// --orbit/--walkthrough, --shard, --csv/--record/--plot/--plot-size, --quiet,
+// and their `merge` subcommands' --out/--record/--plot/--plot-size and shards.
+// --record FILE is the run's experiment record (docs/records.md); --json FILE
+// is the same option under its older name (both given must name one file).
 // What differs between the two commands (the file stem, the default frame
 // count, whether a plot is drawn without --plot, the plot's size, what a
 // shard holds) is a SweepCommand. Errors: UsageError naming the flag (exit
@@ -41,7 +43,8 @@ struct SweepOptions {
     int orbit = 0;  // --orbit N; 0: none
     bool walkthrough = false;
     BenchShard shard;
-    std::string csv, json;           // NAME[-shard-I-of-N].csv/.json unless given
+    std::string csv, json;           // NAME[-shard-I-of-N].csv/.json unless given; json: the record
+    std::string jsonFlag = "--json";  // the flag that named it: --record, or --json (its older name)
     std::optional<std::string> plot;  // always set when plotByDefault
     int plotWidth = 0, plotHeight = 0;
     bool quiet = false;
@@ -68,7 +71,8 @@ struct SweepOptions {
 // NAME merge SHARD... --out ALL.csv [--json FILE] [--plot FILE.png] [--plot-size WxH].
 struct SweepMergeOptions {
     std::vector<std::string> inputs;  // the shards, as given
-    std::optional<std::string> out, json, plot;
+    std::optional<std::string> out, json, plot;  // json: the merged record (--record or --json)
+    std::string jsonFlag = "--json";
     int plotWidth = 0, plotHeight = 0;
 
     // Declares and reads the flags (before cl.finish()).

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "renderer/bench/BenchGrid.h"
+#include "renderer/gl/CompiledShaders.h"
 
 namespace dw {
 
@@ -46,6 +47,7 @@ struct BenchResults {
     std::vector<BenchSample> samples;         // by config, then sample, then series in pipeline order
     BenchFields machine;                      // GL renderer, CPU, compiler, build ...
     BenchFields settings;                     // scene, frames, warm-up, seed ...
+    gl::CompiledShaders shaders;              // the shader files the run compiled (none when read from a CSV)
 
     const BenchConfigResult* find(int config) const;
     // The series of a configuration's frames in the order they were recorded.

@@ -345,6 +345,8 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     std::string sets;
     for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
     results.settings.emplace_back("set", sets);
+    for (const auto& [size, s] : sessions)
+        if (s.session) results.shaders.add(s.session->shaders().compiled());
     say("bench: done in " + duration(elapsed()));
     return results;
 }

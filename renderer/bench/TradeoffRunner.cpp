@@ -424,6 +424,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     };
     for (const auto& n : notes) result.settings.emplace_back("note", n);
     say("tradeoff: timed in " + shortText(result.timingSeconds) + " s, errors in " + shortText(result.errorSeconds) + " s");
+    result.shaders = session.shaders().compiled();
     return result;
 }
 

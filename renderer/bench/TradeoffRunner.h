@@ -27,6 +27,7 @@
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/TradeoffSweep.h"
 #include "renderer/bench/TradeoffTable.h"
+#include "renderer/gl/CompiledShaders.h"
 #include "renderer/io/ImageIO.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/Scene.h"
@@ -61,6 +62,7 @@ struct TradeoffResult {
     BenchFields machine;   // the GL strings
     BenchFields settings;  // scene, size, frames, cameras, metric, buffer, against, seconds ...
     double timingSeconds = 0.0, errorSeconds = 0.0;  // the timed rounds; the captures and errors (references included)
+    gl::CompiledShaders shaders;  // the shader files the run compiled (the record hashes them)
 };
 
 class TradeoffRunner {

@@ -174,8 +174,7 @@ ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, cons
     recorded.runPreset = options.run.presetSpec();
     recorded.runPresets = options.run.presetSpecs();
     recorded.runSets = options.run.sets;
-    return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result.table, measured.machine,
-                                         measured.result.settings);
+    return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result, measured.machine);
 }
 
 }  // namespace dw

@@ -14,7 +14,7 @@ std::string ProgramDesc::key() const {
     return k;
 }
 
-ShaderLibrary::ShaderLibrary(fs::path root) : root_(std::move(root)) {}
+ShaderLibrary::ShaderLibrary(fs::path root) : root_(std::move(root)) { compiled_.root = root_; }
 
 void ShaderLibrary::build(Entry& e) {
     std::vector<ShaderStage> stages;
@@ -38,6 +38,9 @@ void ShaderLibrary::build(Entry& e) {
         e.stamps.push_back(fs::last_write_time(f, ec));
     }
     e.error.clear();
+    for (const auto& s : stages)
+        for (size_t i = 0; i < s.source.files.size() && i < s.source.texts.size(); ++i)
+            compiled_.texts[s.source.files[i]] = s.source.texts[i];
 }
 
 ShaderLibrary::Handle ShaderLibrary::get(const ProgramDesc& desc) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/gl/CompiledShaders.h"
 #include "renderer/gl/Program.h"
 
 namespace dw::gl {
@@ -54,6 +55,9 @@ public:
     // Every program compiled so far, in key order (tests inspect their blocks).
     std::vector<const Entry*> programs() const;
 
+    // Every file compiled so far with the text of its last successful compile.
+    const CompiledShaders& compiled() const { return compiled_; }
+
     // Finds the shader directory: $DW_SHADER_DIR, the source tree, or next to
     // the executable. Throws dw::Error listing where it looked.
     static std::filesystem::path locateRoot();
@@ -62,6 +66,7 @@ private:
     void build(Entry& e);
     std::filesystem::path root_;
     std::map<std::string, std::unique_ptr<Entry>> entries_;
+    CompiledShaders compiled_;
 };
 
 }  // namespace dw::gl

@@ -20,6 +20,7 @@ std::string readFile(const fs::path& path) {
 struct Assembler {
     fs::path root;
     std::vector<fs::path> files;
+    std::vector<std::string> texts;  // parallel to files
     std::ostringstream out;
 
     int fileIndex(const fs::path& p) {
@@ -49,6 +50,8 @@ struct Assembler {
     // handled by the caller.
     void emit(const fs::path& path, const std::string& text, int firstLine) {
         const int index = fileIndex(path);
+        if (texts.size() <= static_cast<size_t>(index)) texts.resize(static_cast<size_t>(index) + 1);
+        texts[static_cast<size_t>(index)] = text;
         static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
         std::istringstream in(text);
         std::string line;
@@ -101,6 +104,8 @@ ShaderSource assemble(const fs::path& root, const fs::path& mainPath, const std:
     ShaderSource s;
     s.text = a.out.str();
     s.files = a.files;
+    s.texts = a.texts;
+    s.texts.resize(s.files.size());
     return s;
 }
 

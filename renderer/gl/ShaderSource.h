@@ -19,6 +19,7 @@ public:
 struct ShaderSource {
     std::string text;                            // assembled source handed to GL
     std::vector<std::filesystem::path> files;    // index = GLSL source-string number
+    std::vector<std::string> texts;              // each file's text as read (the same index)
     std::filesystem::path mainFile() const { return files.empty() ? std::filesystem::path{} : files[0]; }
 
     // Loads `relativePath` under `root`; `defines` are NAME or NAME=VALUE.

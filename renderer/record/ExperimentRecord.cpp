@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <climits>
+#include <limits>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,7 @@
 #include "renderer/record/BuildInfo.h"
 #include "renderer/record/HostInfo.h"
 #include "renderer/record/SceneFiles.h"
+#include "renderer/record/ShaderFiles.h"
 #include "renderer/scene/BuiltinScenes.h"
 #include "renderer/scene/CameraCheck.h"
 #include "renderer/scene/SceneLoader.h"
@@ -65,13 +67,14 @@ std::string resolvedFromRecord(const std::string& p, const fs::path& recordDir) 
 }
 
 // A whole number field held to the range of the option it stands for.
-int wholeNumber(const nlohmann::json& v, const std::string& path, const std::string& field, OptionRange range,
+template <typename J>
+int wholeNumber(const J& v, const std::string& path, const std::string& field, OptionRange range,
                 const std::string& option) {
     if (!v.is_number_integer())
         throw FileError(path, field + ": expects a whole number (as " + option + " does), got " + v.dump());
-    const long long n = v.is_number_unsigned() && v.get<unsigned long long>() > 9223372036854775807ull
+    const long long n = v.is_number_unsigned() && v.template get<unsigned long long>() > 9223372036854775807ull
                             ? 9223372036854775807ll
-                            : v.get<long long>();
+                            : v.template get<long long>();
     if (!range.holds(n))
         throw FileError(path, field + ": " + std::to_string(n) + " is outside " + option + "'s range " +
                                   std::to_string(range.min) + ".." + std::to_string(range.max));
@@ -107,13 +110,6 @@ Json fieldsJson(const RecordFields& fields) {
     return j;
 }
 
-RecordFields fieldsOf(const nlohmann::json& j) {
-    RecordFields f;
-    if (!j.is_object()) return f;
-    for (auto it = j.begin(); it != j.end(); ++it)
-        f.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>() : it.value().dump());
-    return f;
-}
 
 std::string fieldOr(const RecordFields& f, const std::string& key, const std::string& fallback) {
     for (const auto& [k, v] : f)
@@ -123,10 +119,140 @@ std::string fieldOr(const RecordFields& f, const std::string& key, const std::st
 
 Json vec3(const glm::vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
-glm::vec3 readVec3(const nlohmann::json& j, const std::string& path, const std::string& field) {
-    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
-        throw FileError(path, field + ": expected [x, y, z]");
-    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+
+// A value of the record with its path in it ("scene.files[2].path"): every
+// refusal names the field it is about, whatever is wrong with it (missing,
+// of another type, out of range).
+template <typename J>
+class Field {
+public:
+    Field(const J& j, std::string where, const std::string& file) : j_(j), where_(std::move(where)), file_(file) {}
+
+    const J& json() const { return j_; }
+    const std::string& where() const { return where_; }
+    [[noreturn]] void refuse(const std::string& what) const { throw FileError(file_, where_ + ": " + what); }
+
+    bool has(const std::string& key) const { return j_.is_object() && j_.contains(key); }
+    Field at(const std::string& key) const {
+        object();
+        if (!j_.contains(key)) throw FileError(file_, child(key) + ": missing");
+        return Field(j_[key], child(key), file_);
+    }
+    Field at(size_t i) const {
+        array();
+        if (i >= j_.size()) throw FileError(file_, where_ + "[" + std::to_string(i) + "]: missing");
+        return Field(j_[i], where_ + "[" + std::to_string(i) + "]", file_);
+    }
+    const Field& object() const {
+        if (!j_.is_object()) refuse("expects an object, got " + shown());
+        return *this;
+    }
+    const Field& array() const {
+        if (!j_.is_array()) refuse("expects an array, got " + shown());
+        return *this;
+    }
+    std::vector<Field> items() const {
+        array();
+        std::vector<Field> out;
+        for (size_t i = 0; i < j_.size(); ++i) out.push_back(at(i));
+        return out;
+    }
+    std::string str() const {
+        if (!j_.is_string()) refuse("expects a string, got " + shown());
+        return j_.template get<std::string>();
+    }
+    bool boolean() const {
+        if (!j_.is_boolean()) refuse("expects true or false, got " + shown());
+        return j_.template get<bool>();
+    }
+    // A finite number that fits a 32-bit float (what the renderer stores).
+    float number32() const {
+        if (!j_.is_number()) refuse("expects a number, got " + shown());
+        const double v = j_.template get<double>();
+        if (!std::isfinite(v) || std::abs(v) > static_cast<double>(std::numeric_limits<float>::max()))
+            refuse(shown() + " does not fit a 32-bit float");
+        return static_cast<float>(v);
+    }
+    std::vector<std::string> strings() const {
+        std::vector<std::string> out;
+        for (const auto& item : items()) out.push_back(item.str());
+        return out;
+    }
+    // The value of `key` when present, else `fallback`.
+    std::string str(const std::string& key, const std::string& fallback) const {
+        return has(key) ? at(key).str() : fallback;
+    }
+    bool boolean(const std::string& key, bool fallback) const { return has(key) ? at(key).boolean() : fallback; }
+    float number32(const std::string& key, float fallback) const { return has(key) ? at(key).number32() : fallback; }
+    std::vector<std::string> strings(const std::string& key) const {
+        return has(key) ? at(key).strings() : std::vector<std::string>{};
+    }
+    // The value as the text it stands for: a string, or a number or true/false as written.
+    std::string text() const {
+        if (j_.is_string()) return j_.template get<std::string>();
+        if (j_.is_number() || j_.is_boolean()) return j_.dump();
+        refuse("expects a string, got " + shown());
+    }
+    // An object of name: text (knobs, seeds, build, gl, host).
+    RecordFields fields() const {
+        object();
+        RecordFields f;
+        for (auto it = j_.begin(); it != j_.end(); ++it) f.emplace_back(it.key(), at(it.key()).text());
+        return f;
+    }
+    // A whole number held to the range of the option it stands for.
+    int whole(OptionRange range, const std::string& option) const {
+        return wholeNumber(j_, file_, where_, range, option);
+    }
+    std::string shown() const {
+        std::string d = j_.dump();
+        if (d.size() > 60) d = d.substr(0, 57) + "...";
+        return j_.is_null() ? "null" : d;
+    }
+
+private:
+    std::string child(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
+    const J& j_;
+    std::string where_;
+    const std::string& file_;
+};
+
+using RecordField = Field<nlohmann::json>;
+
+glm::vec3 readVec3(const RecordField& f) {
+    const auto& j = f.json();
+    if (!j.is_array() || j.size() != 3) f.refuse("expected [x, y, z], got " + f.shown());
+    return {f.at(0).number32(), f.at(1).number32(), f.at(2).number32()};
+}
+
+// Per-frame milliseconds: an array of numbers.
+std::vector<double> numbers(const RecordField& f) {
+    std::vector<double> out;
+    for (const auto& item : f.items()) {
+        if (!item.json().is_number()) item.refuse("expects a number (milliseconds), got " + item.shown());
+        out.push_back(item.json().get<double>());
+    }
+    return out;
+}
+
+// seeds.NAME as a 32-bit unsigned seed (--seed), `1` when absent.
+std::uint32_t seedField(const RecordFields& seeds, const std::string& name, const std::string& path) {
+    const std::string text = fieldOr(seeds, name, "1");
+    std::uint32_t n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+        throw FileError(path, "seeds." + name + ": expects a whole number 0..4294967295 (as --seed takes), got '" + text + "'");
+    return n;
+}
+
+// grid.shard "i/n" as --shard takes it.
+BenchShard shardField(const RecordField& grid, const std::string& fallback) {
+    const std::string text = grid.str("shard", fallback);
+    try {
+        return BenchShard::parse(text);
+    } catch (const Error& e) {
+        grid.at("shard").refuse(e.what());
+    }
 }
 
 // Finite numbers as themselves, anything else as null (JSON has no NaN).
@@ -190,6 +316,7 @@ ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConf
     r.sceneSpec = run.sceneSpec();
     r.sceneSource = session.scene().source;
     r.sceneFiles = sceneFilesOf(session.scene());
+    r.shaders = shaderFilesOf(session.shaders().compiled());
     r.camera = session.camera();
     r.knobs = knobFields(session.knobs());
     r.seeds.emplace_back("bootstrap", std::to_string(kBootstrapSeed));
@@ -259,6 +386,7 @@ ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Sc
     r.sceneSpec = o.run.sceneSpec();
     r.sceneSource = scene.source;
     r.sceneFiles = sceneFilesOf(scene);
+    r.shaders = shaderFilesOf(results.shaders);
     r.camera = o.run.camera(scene);
     if (o.walkthrough) {
         r.cameraPath.mode = "walkthrough";
@@ -328,7 +456,6 @@ Json tradeoffResultsJson(const TradeoffTable& t, const BenchFields& machine, con
             {"rows", rows}, {"front", front}, {"metrics", metrics}};
 }
 
-double numberOr(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
 
 }  // namespace
 
@@ -354,8 +481,9 @@ ExperimentRecord ExperimentRecord::forTradeoffTable(const TradeoffTable& table, 
 }
 
 ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff, const Scene& scene,
-                                               const TradeoffTable& table, const BenchFields& machine,
-                                               const BenchFields& settings) {
+                                               const TradeoffResult& result, const BenchFields& machine) {
+    const TradeoffTable& table = result.table;
+    const BenchFields& settings = result.settings;
     ExperimentRecord r = forTradeoffTable(table, settings);
     const TradeoffOptions& o = tradeoff.options;
     r.tradeoff = tradeoff;
@@ -364,6 +492,7 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
     r.sceneSpec = o.run.sceneSpec();
     r.sceneSource = scene.source;
     r.sceneFiles = sceneFilesOf(scene);
+    r.shaders = shaderFilesOf(result.shaders);
     r.camera = o.run.camera(scene);
     if (o.walkthrough) {
         r.cameraPath.mode = "walkthrough";
@@ -389,34 +518,38 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
 }
 
 TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
+    using F = Field<Json>;
+    const F res(tradeoffResults, "results", path);
     TradeoffTable t;
     try {
-        const Json& res = tradeoffResults;
-        t.axes = res.at("axes").get<std::vector<std::string>>();
-        t.passes = res.at("passes").get<std::vector<std::string>>();
-        for (const auto& row : res.at("rows")) {
+        t.axes = res.at("axes").strings();
+        t.passes = res.at("passes").strings();
+        for (const F& row : res.at("rows").items()) {
             TradeoffRow r;
-            r.point = row.at("point").get<int>();
-            for (const auto& a : t.axes) r.axisValues.push_back(row.at("values").at(a).get<std::string>());
-            r.camera = row.at("camera").get<std::string>();
-            r.metric = row.at("metric").get<std::string>();
-            r.buffer = row.at("buffer").get<std::string>();
-            r.error = numberOr(row.at("error"));
-            r.errorLo = numberOr(row.at("error_ci95").at(0));
-            r.errorHi = numberOr(row.at("error_ci95").at(1));
-            r.frames = row.value("frames", 0);
-            r.frameGpuMs = numberOr(row.at("frame_gpu_ms"));
-            r.frameGpuMsLo = numberOr(row.at("frame_gpu_ms_ci95").at(0));
-            r.frameGpuMsHi = numberOr(row.at("frame_gpu_ms_ci95").at(1));
-            for (const auto& p : t.passes) {
-                const auto& g = row.at("gpu_ms");
-                r.passGpuMs.push_back(g.contains(p) ? numberOr(g[p]) : NAN);
-            }
-            r.pareto = row.value("pareto", false);
+            r.point = row.at("point").whole(OptionRange{0, std::numeric_limits<int>::max()}, "a point's index");
+            for (const auto& a : t.axes) r.axisValues.push_back(row.at("values").at(a).text());
+            r.camera = row.at("camera").text();
+            r.metric = row.at("metric").str();
+            r.buffer = row.at("buffer").str();
+            auto optional = [](const F& f) {
+                if (f.json().is_null()) return static_cast<double>(NAN);
+                if (!f.json().is_number()) f.refuse("expects a number or null, got " + f.shown());
+                return f.json().template get<double>();
+            };
+            r.error = optional(row.at("error"));
+            r.errorLo = optional(row.at("error_ci95").at(0));
+            r.errorHi = optional(row.at("error_ci95").at(1));
+            if (row.has("frames")) r.frames = row.at("frames").whole(OptionRange{0, limits::kFrames.max}, "--frames");
+            r.frameGpuMs = optional(row.at("frame_gpu_ms"));
+            r.frameGpuMsLo = optional(row.at("frame_gpu_ms_ci95").at(0));
+            r.frameGpuMsHi = optional(row.at("frame_gpu_ms_ci95").at(1));
+            const F g = row.at("gpu_ms").object();
+            for (const auto& p : t.passes) r.passGpuMs.push_back(g.has(p) ? optional(g.at(p)) : NAN);
+            r.pareto = row.boolean("pareto", false);
             t.rows.push_back(std::move(r));
         }
     } catch (const nlohmann::json::exception& e) {
-        throw FileError(path, "tradeoff results: " + jsonErrorText(e));
+        throw FileError(path, "results: " + jsonErrorText(e));
     }
     return t;
 }
@@ -432,6 +565,11 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     Json files = Json::array();
     for (const auto& f : sceneFiles) files.push_back({{"path", placed(f.path)}, {"sha256", f.sha256}});
     j["scene"] = {{"spec", placed(sceneSpec)}, {"source", placed(sceneSource)}, {"files", files}};
+    if (shaders.present) {
+        Json shaderFiles = Json::array();
+        for (const auto& f : shaders.files) shaderFiles.push_back({{"path", f.path}, {"sha256", f.sha256}});
+        j["shaders"] = {{"folder", shaders.folder}, {"files", shaderFiles}};
+    }
     j["camera"] = {{"position", vec3(camera.position)}, {"target", vec3(camera.target)}, {"up", vec3(camera.up)},
                    {"fov_y_degrees", camera.fovYDegrees}, {"near", camera.nearPlane}, {"far", camera.farPlane}};
     Json path = {{"mode", cameraPath.mode}};
@@ -534,154 +672,180 @@ ExperimentRecord ExperimentRecord::parse(const std::string& text, const std::str
 }
 
 ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::string& path) {
-    if (!j.is_object() || !j.contains("format") || j["format"] != kFormat)
-        throw FileError(path, std::string("not a deferred-workbench record (no \"format\": \"") + kFormat + "\")");
-    if (!j.contains("version") || !j["version"].is_number_integer())
-        throw FileError(path, "the record has no integer \"version\"");
+    using F = Field<nlohmann::json>;
+    const F root(j, "", path);
+    if (!j.is_object())
+        throw FileError(path, std::string("not a deferred-workbench record (expects an object with \"format\": \"") +
+                                  kFormat + "\", got " + root.shown() + ")");
+    if (!j.contains("format") || j["format"] != kFormat)
+        throw FileError(path, std::string("format: not a deferred-workbench record (expects \"") + kFormat + "\", got " +
+                                  (j.contains("format") ? root.at("format").shown() : std::string("none")) + ")");
+    if (!j.contains("version")) throw FileError(path, "version: missing (every record says its format version)");
+    const nlohmann::json& v = j["version"];
     ExperimentRecord r;
-    r.readVersion = j["version"].get<int>();
-    if (r.readVersion > kVersion)
-        throw FileError(path, "record version " + std::to_string(r.readVersion) + " is newer than this build reads (" +
-                                  std::to_string(kVersion) + "); replay it with a newer deferred-workbench");
-    if (r.readVersion < 1) throw FileError(path, "record version " + std::to_string(r.readVersion) + " does not exist");
+    const std::string newer = " is newer than this build reads (" + std::to_string(kVersion) +
+                              "); replay it with a newer deferred-workbench";
+    if (v.is_number_integer()) {
+        if (v.is_number_unsigned() ? v.get<unsigned long long>() > static_cast<unsigned long long>(kVersion)
+                                   : v.get<long long>() > kVersion)
+            throw FileError(path, "version: record version " + v.dump() + newer);
+        if (v.get<long long>() < 1) throw FileError(path, "version: record version " + v.dump() + " does not exist");
+    } else if (v.is_number_float() && std::floor(v.get<double>()) == v.get<double>() && v.get<double>() > kVersion) {
+        // 2**70: beyond 64-bit whole numbers, JSON numbers parse as floating point.
+        throw FileError(path, "version: record version " + v.dump() + newer + " (it is beyond any 64-bit whole number)");
+    } else {
+        throw FileError(path, "version: expects a whole number (1.." + std::to_string(kVersion) + "), got " +
+                                  root.at("version").shown());
+    }
+    r.readVersion = static_cast<int>(v.get<long long>());
     try {
-        r.command = j.at("command").get<std::string>();
+        r.command = root.at("command").str();
         if (r.command != "render" && r.command != "bench" && r.command != "tradeoff" && r.command != "gui")
-            throw FileError(path, "unknown command '" + r.command + "' (render, bench, tradeoff or gui)");
+            throw FileError(path, "command: unknown command '" + r.command + "' (render, bench, tradeoff or gui)");
         if (r.readVersion == 1 && r.command != "render")
-            throw FileError(path, "a version 1 record is of render only, this one says '" + r.command + "'");
-        const auto& scene = j.at("scene");
-        r.sceneSpec = scene.at("spec").get<std::string>();
-        r.sceneSource = scene.value("source", "");
-        for (const auto& f : scene.value("files", nlohmann::json::array()))
-            r.sceneFiles.push_back({f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
+            throw FileError(path, "command: a version 1 record is of render only, this one says '" + r.command + "'");
+        const F scene = root.at("scene").object();
+        r.sceneSpec = scene.at("spec").str();
+        r.sceneSource = scene.str("source", "");
+        if (scene.has("files"))
+            for (const F& f : scene.at("files").items())
+                r.sceneFiles.push_back({f.at("path").str(), f.at("sha256").str()});
         // Relative paths: against the record's folder (then the working directory).
         const fs::path recordDir = fs::path(path).parent_path();
         r.sceneSpec = resolvedFromRecord(r.sceneSpec, recordDir);
         r.sceneSource = resolvedFromRecord(r.sceneSource, recordDir);
         for (auto& f : r.sceneFiles) f.path = resolvedFromRecord(f.path, recordDir);
-        const auto& cam = j.at("camera");
-        r.camera.position = readVec3(cam.at("position"), path, "camera.position");
-        r.camera.target = readVec3(cam.at("target"), path, "camera.target");
-        r.camera.up = readVec3(cam.at("up"), path, "camera.up");
-        r.camera.fovYDegrees = cam.at("fov_y_degrees").get<float>();
-        r.camera.nearPlane = cam.at("near").get<float>();
-        r.camera.farPlane = cam.at("far").get<float>();
-        // Version 1 had a fixed camera and no seeds (render used none).
-        if (j.contains("camera_path")) {
-            const auto& p = j["camera_path"];
-            r.cameraPath.mode = p.at("mode").get<std::string>();
-            r.cameraPath.orbitPoses = p.value("orbit_poses", 0);
-            for (const auto& k : p.value("keyframes", nlohmann::json::array()))
-                r.cameraPath.keyframes.push_back({k.at("time").get<float>(),
-                                                  readVec3(k.at("position"), path, "camera_path.keyframes.position"),
-                                                  readVec3(k.at("target"), path, "camera_path.keyframes.target")});
+        // Version 2 records written before shader hashes have none: replay says so.
+        if (root.has("shaders")) {
+            const F shaders = root.at("shaders").object();
+            r.shaders.present = true;
+            r.shaders.folder = shaders.at("folder").str();
+            for (const F& f : shaders.at("files").items()) r.shaders.files.push_back({f.at("path").str(), f.at("sha256").str()});
         }
-        r.knobs = fieldsOf(j.at("knobs"));
-        r.seeds = fieldsOf(j.value("seeds", nlohmann::json::object()));
+        const F cam = root.at("camera").object();
+        r.camera.position = readVec3(cam.at("position"));
+        r.camera.target = readVec3(cam.at("target"));
+        r.camera.up = readVec3(cam.at("up"));
+        r.camera.fovYDegrees = cam.at("fov_y_degrees").number32();
+        r.camera.nearPlane = cam.at("near").number32();
+        r.camera.farPlane = cam.at("far").number32();
+        // Version 1 had a fixed camera and no seeds (render used none).
+        if (root.has("camera_path")) {
+            const F p = root.at("camera_path").object();
+            r.cameraPath.mode = p.at("mode").str();
+            if (r.cameraPath.mode != "fixed" && r.cameraPath.mode != "orbit" && r.cameraPath.mode != "walkthrough")
+                p.at("mode").refuse("expects fixed, orbit or walkthrough, got '" + r.cameraPath.mode + "'");
+            if (p.has("orbit_poses") && p.at("orbit_poses").json() != 0)
+                r.cameraPath.orbitPoses = p.at("orbit_poses").whole(limits::kOrbit, "--orbit");
+            if (p.has("keyframes"))
+                for (const F& k : p.at("keyframes").items())
+                    r.cameraPath.keyframes.push_back(
+                        {k.at("time").number32(), readVec3(k.at("position")), readVec3(k.at("target"))});
+        }
+        r.knobs = root.at("knobs").fields();
+        if (root.has("seeds")) r.seeds = root.at("seeds").fields();
         // Held to the ranges of --size, --frames and --warmup.
-        const auto& size = j.at("size");
-        if (!size.is_array() || size.size() != 2) throw FileError(path, "size: expected [width, height]");
-        r.width = wholeNumber(size.at(0), path, "size width", limits::kSize, "--size");
-        r.height = wholeNumber(size.at(1), path, "size height", limits::kSize, "--size");
-        r.frames = wholeNumber(j.at("frames"), path, "frames", limits::kFrames, "--frames");
-        r.warmup = wholeNumber(j.at("warmup"), path, "warmup", limits::kWarmup, "--warmup");
+        const F size = root.at("size");
+        if (!size.json().is_array() || size.json().size() != 2) size.refuse("expected [width, height], got " + size.shown());
+        r.width = wholeNumber(size.json()[0], path, "size width", limits::kSize, "--size");
+        r.height = wholeNumber(size.json()[1], path, "size height", limits::kSize, "--size");
+        r.frames = root.at("frames").whole(limits::kFrames, "--frames");
+        r.warmup = root.at("warmup").whole(limits::kWarmup, "--warmup");
         // The one definition of a usable camera (a zero up vector renders nothing useful).
         if (const auto problem = findCameraProblem(r.camera, 0.0f))
             throw FileError(path, recordCameraField(problem->field) + ": " + problem->what);
-        r.build = fieldsOf(j.value("build", nlohmann::json::object()));
-        r.gl = fieldsOf(j.value("gl", nlohmann::json::object()));
-        r.host = fieldsOf(j.value("host", nlohmann::json::object()));
-        const auto& results = j.at("results");
+        if (root.has("build")) r.build = root.at("build").fields();
+        if (root.has("gl")) r.gl = root.at("gl").fields();
+        if (root.has("host")) r.host = root.at("host").fields();
+        const F results = root.at("results").object();
         if (r.command == "bench") {
-            const auto& g = j.at("grid");
+            const F g = root.at("grid").object();
             RecordedBench b;
-            b.merged = g.value("merged", false);
+            b.merged = g.boolean("merged", false);
             BenchOptions& o = b.options;
             o.run.scene = r.sceneSpec;
-            for (const auto& [k, v] : r.knobs) o.run.sets.push_back(k + "=" + v);
+            for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
             o.frames = r.frames;
             o.warmup = r.warmup;
-            o.seed = static_cast<std::uint32_t>(std::stoul(fieldOr(r.seeds, "lights", "1")));
+            o.seed = seedField(r.seeds, "lights", path);
             if (!b.merged) {
-                for (const auto& s : g.at("sizes")) o.grid.sizes.push_back(sizeField(s.get<std::string>(), path, "grid.sizes"));
-                for (const auto& n : g.at("lights"))
-                    o.grid.lights.push_back(wholeNumber(n, path, "grid.lights", limits::kBenchLights, "--lights"));
-                for (const auto& a : g.at("sweep"))
-                    o.grid.knobAxes.push_back({a.at("knob").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
-                if (g.contains("block")) o.block = wholeNumber(g["block"], path, "grid.block", limits::kBlock, "--block");
-                o.lightRadius = g.value("light_radius", 0.0f);
-                o.keepSceneLights = g.value("keep_scene_lights", false);
+                for (const F& s : g.at("sizes").items()) o.grid.sizes.push_back(sizeField(s.str(), path, s.where()));
+                for (const F& n : g.at("lights").items()) o.grid.lights.push_back(n.whole(limits::kBenchLights, "--lights"));
+                for (const F& a : g.at("sweep").items()) o.grid.knobAxes.push_back({a.at("knob").str(), a.at("values").strings()});
+                if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
+                o.lightRadius = g.number32("light_radius", 0.0f);
+                o.keepSceneLights = g.boolean("keep_scene_lights", false);
                 // 0: no orbit (the option is absent).
-                if (g.contains("orbit") && g["orbit"] != 0)
-                    o.orbit = wholeNumber(g["orbit"], path, "grid.orbit", limits::kOrbit, "--orbit");
-                o.walkthrough = g.value("walkthrough", false);
-                o.lpp = g.value("lpp", true);
-                if (g.contains("lpp_poses"))
-                    o.lppPoses = wholeNumber(g["lpp_poses"], path, "grid.lpp_poses", limits::kLppPoses, "--lpp-poses");
-                o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
-                o.baseline = g.value("baseline", std::string());
-                b.ratioOf = g.value("ratio_of", std::string("frame"));
-                if (g.contains("resamples"))
-                    b.resamples = wholeNumber(g["resamples"], path, "grid.resamples", limits::kResamples, "--resamples");
+                if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+                o.walkthrough = g.boolean("walkthrough", false);
+                o.lpp = g.boolean("lpp", true);
+                if (g.has("lpp_poses")) o.lppPoses = g.at("lpp_poses").whole(limits::kLppPoses, "--lpp-poses");
+                o.shard = shardField(g, "0/1");
+                o.baseline = g.str("baseline", "");
+                b.ratioOf = g.str("ratio_of", "frame");
+                if (g.has("resamples")) b.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
             }
             r.bench = std::move(b);
-            r.benchResults = Json(results);
+            r.benchResults = Json(results.json());
         } else if (r.command == "tradeoff") {
-            const auto& g = j.at("grid");
+            const F g = root.at("grid").object();
             RecordedTradeoff t;
-            t.merged = g.value("merged", false);
+            t.merged = g.boolean("merged", false);
             TradeoffOptions& o = t.options;
             o.run.scene = r.sceneSpec;
             o.run.width = r.width;
             o.run.height = r.height;
-            for (const auto& [k, v] : r.knobs) o.run.sets.push_back(k + "=" + v);
+            for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
             o.frames = r.frames;
             o.warmup = r.warmup;
             if (!t.merged) {
-                for (const auto& a : g.at("axes"))
-                    o.sweep.axes.push_back({a.at("name").get<std::string>(), a.at("values").get<std::vector<std::string>>()});
-                o.sweep.oneAtATime = g.value("one_at_a_time", false);
-                o.sweep.centre = g.value("centre", std::vector<std::string>{});
-                t.exclude = g.value("exclude", std::vector<std::string>{});
-                for (const auto& e : t.exclude) o.sweep.exclusion.add(e);
-                o.against = g.value("against", std::vector<std::string>{});
-                o.metric = g.at("metric").get<std::string>();
-                o.buffer = g.at("buffer").get<std::string>();
-                if (g.contains("ao_rays")) t.aoRays = wholeNumber(g["ao_rays"], path, "grid.ao_rays", limits::kAoRays, "--ao-rays");
-                if (g.contains("orbit") && g["orbit"] != 0)
-                    o.orbit = wholeNumber(g["orbit"], path, "grid.orbit", limits::kOrbit, "--orbit");
-                o.walkthrough = g.value("walkthrough", false);
-                if (g.contains("block")) o.block = wholeNumber(g["block"], path, "grid.block", limits::kBlock, "--block");
-                if (g.contains("resamples"))
-                    o.resamples = wholeNumber(g["resamples"], path, "grid.resamples", limits::kResamples, "--resamples");
-                t.runPreset = g.value("run_preset", std::string());
+                for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
+                o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
+                o.sweep.centre = g.strings("centre");
+                t.exclude = g.strings("exclude");
+                for (size_t i = 0; i < t.exclude.size(); ++i) {
+                    try {
+                        o.sweep.exclusion.add(t.exclude[i]);
+                    } catch (const Error& e) {
+                        g.at("exclude").at(i).refuse(e.what());
+                    }
+                }
+                o.against = g.strings("against");
+                o.metric = g.at("metric").str();
+                o.buffer = g.at("buffer").str();
+                if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+                if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+                o.walkthrough = g.boolean("walkthrough", false);
+                if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
+                if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
+                t.runPreset = g.str("run_preset", "");
                 // Records before repeated --preset hold the one preset only.
-                t.runPresets = g.value("run_presets", std::vector<std::string>{});
+                t.runPresets = g.strings("run_presets");
                 if (t.runPresets.empty() && !t.runPreset.empty()) t.runPresets = {t.runPreset};
-                t.runSets = g.value("run_sets", std::vector<std::string>{});
-                o.shard = BenchShard::parse(g.value("shard", std::string("0/1")));
+                t.runSets = g.strings("run_sets");
+                o.shard = shardField(g, "0/1");
             }
             r.tradeoff = std::move(t);
-            r.tradeoffResults = Json(results);
+            r.tradeoffResults = Json(results.json());
             r.tradeoffTable(path);  // the rows are checked here, not when they are needed
         } else {
-            r.buffer = j.at("buffer").get<std::string>();
-            for (const auto& s : results.value("timings", nlohmann::json::array()))
-                r.timings.push_back({s.at("name").get<std::string>(), s.at("gpu_ms").get<std::vector<double>>(),
-                                     s.at("cpu_ms").get<std::vector<double>>()});
-            const auto& image = results.at("image");
-            r.imageSha256 = image.at("sha256").get<std::string>();
-            r.imageWidth = image.value("width", 0);
-            r.imageHeight = image.value("height", 0);
-            r.imageChannels = image.value("channels", 0);
-            for (const auto& [k, v] : results.value("metrics", nlohmann::json::object()).items())
-                if (v.is_number()) r.metrics.emplace_back(k, v.get<double>());
+            r.buffer = root.at("buffer").str();
+            if (results.has("timings"))
+                for (const F& s : results.at("timings").items())
+                    r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms"))});
+            const F image = results.at("image").object();
+            r.imageSha256 = image.at("sha256").str();
+            // 0: no image was written.
+            const OptionRange side{0, limits::kSize.max};
+            if (image.has("width")) r.imageWidth = image.at("width").whole(side, "--size");
+            if (image.has("height")) r.imageHeight = image.at("height").whole(side, "--size");
+            if (image.has("channels")) r.imageChannels = image.at("channels").whole(OptionRange{0, 4}, "a buffer's channels");
+            if (results.has("metrics"))
+                for (const auto& [k, m] : results.at("metrics").object().json().items())
+                    if (m.is_number()) r.metrics.emplace_back(k, m.get<double>());
         }
     } catch (const nlohmann::json::exception& e) {
         throw FileError(path, "record version " + std::to_string(r.readVersion) + ": " + jsonErrorText(e));
-    } catch (const std::logic_error& e) {  // std::stoi and friends
-        throw FileError(path, "record version " + std::to_string(r.readVersion) + ": a number does not parse");
     } catch (const FileError&) {
         throw;
     } catch (const Error& e) {

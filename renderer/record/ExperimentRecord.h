@@ -12,6 +12,8 @@
 //            bootstrap's); size, frames, warmup, buffer
 //   grid     bench: sizes, lights, sweep, block, light radius, orbit ...;
 //            tradeoff: axes, exclusions, against, metric, buffer, cameras ...
+//   shaders  the shader folder and the sha256 of every shader file the run
+//            compiled (stage files, their #includes, params/ headers)
 //   build    version, commit at configure time, compiler, flags, build type
 //   gl, host
 //   results  render/gui: per timing series the counted frames' GPU and CPU ms
@@ -37,14 +39,12 @@
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
 #include "renderer/bench/TradeoffRunner.h"
+#include "renderer/record/RecordedFile.h"
+#include "renderer/record/ShaderFiles.h"
 
 namespace dw {
 
 using RecordFields = std::vector<std::pair<std::string, std::string>>;
-
-struct RecordedFile {
-    std::string path, sha256;  // sha256 empty: the file could not be read
-};
 
 struct RecordedSeries {
     std::string name;  // a pass, a span ("lighting/shadow maps") or "frame"
@@ -86,6 +86,7 @@ struct ExperimentRecord {
     std::string command = "render";
     std::string sceneSpec, sceneSource;
     std::vector<RecordedFile> sceneFiles;
+    RecordedShaders shaders;  // the shader folder and every shader file the run compiled (ShaderFiles)
     Camera camera;
     RecordedCameraPath cameraPath;
     RecordFields knobs;
@@ -113,10 +114,11 @@ struct ExperimentRecord {
     // From measured results alone (bench merge): no grid to run again.
     static ExperimentRecord forBenchResults(const BenchResults& results, const BenchSummary& summary);
 
-    // A tradeoff run: its options, the scene it loaded, what it measured;
-    // `machine` the GL strings and platform, `settings` the run's settings.
-    static ExperimentRecord forTradeoff(const RecordedTradeoff& tradeoff, const Scene& scene, const TradeoffTable& table,
-                                        const BenchFields& machine, const BenchFields& settings);
+    // A tradeoff run: its options, the scene it loaded, what it measured
+    // (the table, the run's settings, the shader files it compiled);
+    // `machine` the GL strings and platform.
+    static ExperimentRecord forTradeoff(const RecordedTradeoff& tradeoff, const Scene& scene, const TradeoffResult& result,
+                                        const BenchFields& machine);
     // From a table alone (tradeoff merge): no sweep to run again.
     static ExperimentRecord forTradeoffTable(const TradeoffTable& table, const BenchFields& settings);
     // A tradeoff record's rows back as a table (merge, replay). Throws FileError naming `path`.

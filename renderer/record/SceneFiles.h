@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "renderer/record/RecordedFile.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
 
-struct RecordedFile;
 
 // Hex sha256 of bytes (OpenSSL's EVP).
 std::string sha256Hex(const void* data, size_t size);

@@ -4,6 +4,7 @@ the same image bit for bit (exit 0); a changed scene file (a glTF's .bin
 included), knob or build field is named; a version 1 record still replays; a
 record of a newer format version is refused with its version named (exit 2);
 a bench record runs its grid again and compares each configuration."""
+import hashlib
 import json
 import os
 import re
@@ -18,8 +19,12 @@ SCENES = os.path.join(os.path.dirname(__file__), "..", "..", "scenes")
 FIXTURES = os.path.join(os.path.dirname(__file__), "..", "records")
 
 
-def run(*args, cwd=None, timeout=None):
-    return subprocess.run([BINARY] + list(args), capture_output=True, text=True, cwd=cwd, timeout=timeout)
+SHADERS = os.path.join(os.path.dirname(__file__), "..", "..", "shaders")
+
+
+def run(*args, cwd=None, timeout=None, env=None):
+    return subprocess.run([BINARY] + list(args), capture_output=True, text=True, cwd=cwd, timeout=timeout,
+                          env=None if env is None else dict(os.environ, **env))
 
 
 class RecordTest(unittest.TestCase):
@@ -407,6 +412,120 @@ class RecordTest(unittest.TestCase):
         r = run("replay", merged_json)
         self.assertEqual(r.returncode, 2)
         self.assertIn("a bench merge record has no grid to run again", r.stderr)
+
+
+    def test_shader_files_are_recorded_and_a_changed_one_is_named(self):
+        d = self.data
+        shaders = {f["path"]: f["sha256"] for f in d["shaders"]["files"]}
+        self.assertEqual(os.path.realpath(d["shaders"]["folder"]), os.path.realpath(SHADERS))
+        # The stage files and what they include (params/ headers), not a glob of the folder.
+        for name in ("ssao/ssao.frag", "params/ssao.h", "common/gbuffer.glsl", "tonemap/tonemap.frag"):
+            self.assertIn(name, shaders)
+            with open(os.path.join(SHADERS, name), "rb") as f:
+                self.assertEqual(shaders[name], hashlib.sha256(f.read()).hexdigest(), name)
+        # An unchanged copy of the folder: no shader line, the same image.
+        copy = os.path.join(self.tmp.name, "shaders-copy")
+        if not os.path.exists(copy):
+            shutil.copytree(SHADERS, copy)
+        r = run("replay", self.record, env={"DW_SHADER_DIR": copy})
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertNotIn("shader", r.stdout)
+        self.assertIn("inputs changed: none\nimage: identical", r.stdout)
+        # One comment edited: that file is named, before the image line;
+        # the image is the same, so the exit code is 0 (the image decides).
+        edited = os.path.join(self.tmp.name, "shaders-edited")
+        shutil.copytree(SHADERS, edited)
+        with open(os.path.join(edited, "ssao", "ssao.frag"), "a") as f:
+            f.write("// a comment added after the record\n")
+        r = run("replay", self.record, env={"DW_SHADER_DIR": edited})
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        lines = r.stdout.splitlines()
+        changed = [l for l in lines if l.startswith("shader file")]
+        self.assertEqual(len(changed), 1, r.stdout)
+        self.assertTrue(changed[0].startswith("shader file changed: ssao/ssao.frag (sha256 " +
+                                              shaders["ssao/ssao.frag"][:16] + " -> "), changed[0])
+        self.assertIn("inputs changed (1): shader file ssao/ssao.frag", lines)
+        self.assertLess(lines.index(changed[0]), lines.index("image: identical"))
+        # A line changed in the tonemap shader: named, and the image differs (exit 1).
+        with open(os.path.join(SHADERS, "tonemap", "tonemap.frag")) as f:
+            tonemap = f.read()
+        with open(os.path.join(edited, "tonemap", "tonemap.frag"), "w") as f:
+            f.write(tonemap.rstrip().rsplit("}", 1)[0] + "    outColor.rgb *= 0.5;\n}\n")
+        r = run("replay", self.record, env={"DW_SHADER_DIR": edited})
+        self.assertIn("shader file changed: tonemap/tonemap.frag", r.stdout, r.stderr)
+        self.assertIn("inputs changed (2): shader file ssao/ssao.frag, shader file tonemap/tonemap.frag", r.stdout)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("image: differs", r.stdout)
+        # A record without the field (written before shader hashes) still replays, and says so once.
+        r = run("replay", self.variant("no-shaders.json", lambda d: d.pop("shaders")))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertEqual(r.stdout.count("record holds no shader hashes"), 1, r.stdout)
+
+    def test_the_image_decides_the_exit_code_and_changed_inputs_are_listed(self):
+        # Changed inputs, the same image: exit 0, every changed input named on one line.
+        def change(d):
+            d["build"]["commit"] = "0123abc"
+            d["knobs"]["ssao.retired_knob"] = "3"
+        r = run("replay", self.variant("inputs.json", change))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        line = next(l for l in r.stdout.splitlines() if l.startswith("inputs changed"))
+        self.assertEqual(line, "inputs changed (2): knob ssao.retired_knob, build commit")
+        self.assertTrue(r.stdout.endswith(line + "\nimage: identical\n"), r.stdout)
+        # No input changed, another image (the record's value is restored, not the build's): exit 1.
+        r = run("replay", self.variant("image.json", lambda d: d["results"]["image"].__setitem__("sha256", "ab" * 32)))
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("inputs changed: none\nimage: differs (sha256 " + "ab" * 32 + " -> ", r.stdout)
+        r = run("help", "replay")
+        self.assertIn("Exit codes: the result decides, not the inputs", r.stdout + r.stderr)
+
+    def test_zero_ms_medians_print_no_ratio(self):
+        # Series whose recorded frames are all 0 ms (a pass the timer saw no
+        # time in): no ratio, no inf or nan, and never "too few frames".
+        def change(d):
+            for s in d["results"]["timings"]:
+                if s["name"] in ("ao", "tonemap"):
+                    s["gpu_ms"] = [0.0] * len(s["gpu_ms"])
+        r = run("replay", self.variant("zero.json", change))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        for name in ("ao", "tonemap"):
+            line = next(l for l in r.stdout.splitlines() if re.match(r"timing %s +gpu" % name, l))
+            self.assertRegex(line, r"gpu median +0\.000 -> +[0-9.]+ ms  n/a \(0 ms\)$")
+        self.assertNotRegex(r.stdout.lower(), r"\binf\b|\bnan\b")
+        self.assertNotIn("too few frames", r.stdout)
+
+
+    def test_bench_record_flag_and_a_record_cut_short(self):
+        # bench --record FILE writes the record (--json is its older name); replay accepts it.
+        record = os.path.join(self.tmp.name, "br.json")
+        r = run("bench", "--scene", self.scene, "--size", "32x18", "--sweep", "ssao.samples=4,8,16,32,64", "--frames", "2",
+                "--warmup", "0", "--no-lpp", "--quiet", "--csv", os.path.join(self.tmp.name, "br.csv"), "--record", record)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        self.assertEqual((d["format"], d["command"]), ("deferred-workbench record", "bench"))
+        self.assertIn("ssao/ssao.frag", [f["path"] for f in d["shaders"]["files"]])
+        r = run("replay", record)
+        self.assertIn(r.returncode, (0, 1), r.stdout + r.stderr)
+        self.assertEqual(len(re.findall(r"^config \d \(32x18, \d+ lights, ssao\.samples=\d+\): frame gpu median", r.stdout,
+                                        re.M)), 5, r.stdout)
+        self.assertNotIn("shader file", r.stdout)
+        self.assertIn("inputs changed: none", r.stdout)
+        # --record and --json naming two files: refused, both named.
+        r = run("bench", "--scene", self.scene, "--size", "32x18", "--frames", "1", "--record", "a.json", "--json", "b.json")
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("--record and --json are one option", r.stderr)
+        # Cut short: the results lack configurations 1..4 of the sweep it declares, and config 0's
+        # frames are 0 ms: the summary names the missing ones, the 0 ms median has no ratio.
+        def cut(d):
+            d["results"]["configs"] = d["results"]["configs"][:1]
+            for s in d["results"]["configs"][0]["samples"]:
+                s["gpu_ms"]["frame"] = 0.0
+        r = run("replay", self.variant("cut.json", lambda x: (x.update(d), cut(x))))
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertRegex(r.stdout, r"config 0 \(32x18, \d+ lights, ssao\.samples=4\): frame gpu median +0\.000 -> +[0-9.]+ ms  n/a \(0 ms\)")
+        summary = r.stdout.strip().splitlines()[-1]
+        self.assertRegex(summary, r"^bench: differs \(4 configuration\(s\) not in the record: config 1 \(32x18, \d+ lights, "
+                                  r"ssao\.samples=8\), config 2 \(.*ssao\.samples=16\), config 3 \(.*ssao\.samples=32\) and 1 more; ")
 
 
 if __name__ == "__main__":
