@@ -23,13 +23,13 @@ const std::vector<Preset>& builtinPresets() {
         };
         // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
         add("Low", "seed 002: 800x600, SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, one 512^2 sun shadow map",
-            {{"ao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "21"}, {"shadows.map_size", "512"}});
         add("Medium", "seed 002: 1280x720, SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, a 1024^2 shadow map",
-            {{"ao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "1024"}});
         add("High", "seed 002: 1920x1080, full-size SSAO with 16 samples and a 61-wide bilateral blur, a 2048^2 shadow map",
-            {{"ao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "2048"}});
         // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width.
         const char* ssao[5][4] = {{"quarter", "8", "1", "10"}, {"quarter", "16", "1", "15"}, {"half", "16", "1", "20"},
@@ -38,7 +38,7 @@ const std::vector<Preset>& builtinPresets() {
             add("SSAO" + std::to_string(i + 1),
                 std::string("seed 000 table 6.4: ") + ssao[i][0] + " resolution, " + ssao[i][1] + " samples, radius " +
                     ssao[i][2] + ", blur width " + ssao[i][3],
-                {{"ao.enabled", "true"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
+                {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", ssao[i][0]}, {"ssao.samples", ssao[i][1]},
                  {"ssao.radius", ssao[i][2]}, {"ssao.radius_unit", "world"}, {"ssao_blur.mode", "bilateral"},
                  {"ssao_blur.width", ssao[i][3]}});
         // GTAO at XeGTAO's quality levels (slices x steps per side: low 1 x 2,

@@ -218,3 +218,25 @@ TEST(Preset, LoadingAPresetGivesTheSameKnobsWhateverWasLoadedBefore) {
     EXPECT_FALSE(coarse->covers("ssao.samples"));
     EXPECT_TRUE(coarse->covers("lighting.strategy"));
 }
+
+// A preset named for an AO method renders that method, whatever the scene's
+// settings or an earlier preset chose (SSAO3 over a scene with ao.method=gtao
+// rendered GTAO, and --preset AOV3 --preset SSAO3 rendered AOV).
+TEST(Preset, EveryBuiltinPresetOfAnAoMethodPinsThatMethod) {
+    const std::vector<std::pair<std::string, std::string>> sceneSettings = {{"ao.method", "gtao"}};
+    for (const Preset& p : builtinPresets()) {
+        std::string family;
+        for (const auto& [n, v] : p.knobs)
+            for (const char* prefix : {"ssao.", "gtao.", "aov."})
+                if (n.rfind(prefix, 0) == 0) family = std::string(prefix).substr(0, std::string(prefix).size() - 1);
+        if (family.empty()) continue;
+        for (const char* before : {"AOV3", "GTAO high", "SSAO1"}) {
+            KnobRegistry k;
+            Pipeline declarations(k);
+            for (const auto& [n, v] : sceneSettings) k.setFromString(n, v);
+            findBuiltinPreset(before)->applyOver(k, sceneSettings);
+            p.applyOver(k, sceneSettings);
+            EXPECT_EQ(k.format(*k.find("ao.method")), family) << p.name << " after " << before;
+        }
+    }
+}
