@@ -22,16 +22,19 @@ const std::vector<Preset>& builtinPresets() {
             v.push_back(std::move(p));
         };
         // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
+        // Quality levels, not AO methods: they leave ao.method as it is, so a
+        // GTAO or AOV level combines with them either way round.
         add("Low", "seed 002: 800x600, SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, one 512^2 sun shadow map",
-            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "21"}, {"shadows.map_size", "512"}});
         add("Medium", "seed 002: 1280x720, SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, a 1024^2 shadow map",
-            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "1024"}});
         add("High", "seed 002: 1920x1080, full-size SSAO with 16 samples and a 61-wide bilateral blur, a 2048^2 shadow map",
-            {{"ao.enabled", "true"}, {"ao.method", "ssao"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
+            {{"ao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
              {"ssao_blur.width", "61"}, {"shadows.map_size", "2048"}});
-        // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width.
+        // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width. Named
+        // for SSAO, they render SSAO whatever the scene or an earlier preset chose.
         const char* ssao[5][4] = {{"quarter", "8", "1", "10"}, {"quarter", "16", "1", "15"}, {"half", "16", "1", "20"},
                                   {"half", "32", "1", "20"}, {"full", "32", "1", "30"}};
         for (int i = 0; i < 5; ++i)

@@ -27,7 +27,7 @@ const std::vector<std::string>& ReferenceModel::honouredKnobs() {
     static const std::vector<std::string> names = {
         "shadows.enabled",      "shadows.blended_casters", "ao.enabled",        "ao.method",
         "ssao.radius",          "ssao.radius_unit",      "ssao.intensity",    "gtao.radius",
-        "gtao.radius_unit",     "aov.radius",            "lighting.attenuation",  "lighting.window_exponent", "lighting.threshold",
+        "gtao.radius_unit",     "aov.radius",            "aov.radius_unit",       "lighting.attenuation",  "lighting.window_exponent", "lighting.threshold",
         "lighting.ambient_specular", "lighting.ambient_occlusion", "skybox.mode", "skybox.intensity",
         "skybox.rotation",      "tonemap.operator",      "tonemap.key",       "tonemap.auto_white",
         "tonemap.white",        "tonemap.exposure",      "tonemap.srgb",      "tonemap.auto_exposure",

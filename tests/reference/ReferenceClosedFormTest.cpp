@@ -325,6 +325,41 @@ TEST(ReferenceModel, HonouredKnobsChangeTheKeyIgnoredOnesDoNot) {
     EXPECT_TRUE(reference::reportKnobs(knobs, model, false).unmodelledOn.empty());
 }
 
+// Every knob that changes the reference is one the run reports as honoured:
+// a knob the model reads but the report calls ignored misleads ("the
+// reference ignores ... aov.radius_unit=scene_fraction" while it changed
+// the radius). Each knob moved alone, under each AO method.
+TEST(ReferenceModel, EveryKnobThatChangesTheKeyIsReportedHonoured) {
+    // street: its scene length unit is not 1, so a radius unit changes the radius.
+    const Scene s = builtin("street");
+    const auto& honoured = reference::ReferenceModel::honouredKnobs();
+    for (const char* method : {"ssao", "gtao", "aov"}) {
+        KnobRegistry base = RunConfig::declaredKnobs();
+        RunConfig run;
+        run.sets = {"ao.enabled=true", std::string("ao.method=") + method, "lighting.attenuation=windowed"};
+        run.applyKnobs(base, s);
+        const std::string baseKey =
+            reference::referenceKey(s, reference::ReferenceModel::fromKnobs(base, s), requestFor(s, 32, 18));
+        for (size_t i = 0; i < base.size(); ++i) {
+            KnobRegistry k = base;
+            const int id = static_cast<int>(i);
+            const KnobSpec& spec = k.spec(id);
+            const double v = k.value(id);
+            if (spec.type == KnobType::Bool || spec.type == KnobType::Enum)
+                k.set(id, v == spec.maxValue ? spec.minValue : v + 1);
+            else
+                k.set(id, v == spec.maxValue ? spec.minValue : (v + spec.maxValue) * 0.5 + (spec.type == KnobType::Int ? 1 : 0));
+            if (k.value(id) == v) continue;
+            const std::string key =
+                reference::referenceKey(s, reference::ReferenceModel::fromKnobs(k, s), requestFor(s, 32, 18));
+            if (key == baseKey) continue;
+            EXPECT_NE(std::find(honoured.begin(), honoured.end(), spec.name), honoured.end())
+                << spec.name << " changes the reference under ao.method=" << method
+                << " but ReferenceModel::honouredKnobs() does not list it";
+        }
+    }
+}
+
 TEST(ReferenceCache, StoresAndLoadsAnEntry) {
     const Scene s = builtin("spheres");
     reference::ReferenceModel m = plainModel();

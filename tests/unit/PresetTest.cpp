@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cctype>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -225,11 +227,13 @@ TEST(Preset, LoadingAPresetGivesTheSameKnobsWhateverWasLoadedBefore) {
 TEST(Preset, EveryBuiltinPresetOfAnAoMethodPinsThatMethod) {
     const std::vector<std::pair<std::string, std::string>> sceneSettings = {{"ao.method", "gtao"}};
     for (const Preset& p : builtinPresets()) {
+        // Named for a method (SSAO1-5, GTAO low..ultra, AOV1-3); the quality
+        // levels Low/Medium/High leave the method alone (PresetOrderCli).
         std::string family;
-        for (const auto& [n, v] : p.knobs)
-            for (const char* prefix : {"ssao.", "gtao.", "aov."})
-                if (n.rfind(prefix, 0) == 0) family = std::string(prefix).substr(0, std::string(prefix).size() - 1);
+        for (const char* m : {"SSAO", "GTAO", "AOV"})
+            if (p.name.rfind(m, 0) == 0) family = m;
         if (family.empty()) continue;
+        for (char& c : family) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         for (const char* before : {"AOV3", "GTAO high", "SSAO1"}) {
             KnobRegistry k;
             Pipeline declarations(k);
