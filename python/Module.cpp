@@ -236,6 +236,16 @@ py::object recordObject(const ExperimentRecord& record) {
     return py::module_::import("json").attr("loads")(record.json());
 }
 
+// record=PATH and json=PATH are one keyword of bench and tradeoff (the CLI's
+// --record FILE and its older name --json FILE): the experiment record.
+std::optional<std::string> recordPath(const std::string& function, std::optional<std::string> json,
+                                      std::optional<std::string> record) {
+    if (json && record && *json != *record)
+        throw py::value_error(function + ": record='" + *record + "' and json='" + *json +
+                              "' name two files: give one (json= is record='s older name)");
+    return record ? record : json;
+}
+
 // A dict of plain values as indented JSON (Python's json module), whole or not at all.
 void writeJsonObject(const std::string& path, const py::dict& d) {
     const std::string text = py::module_::import("json").attr("dumps")(d, py::arg("indent") = 2).cast<std::string>() + "\n";
@@ -856,7 +866,9 @@ PYBIND11_MODULE(deferred_workbench, m) {
            std::optional<py::dict> sweep, py::object preset, std::optional<py::dict> settings,
            const py::object& framesObject, const py::object& warmupObject, const py::object& blockObject,
            const py::object& seedObject, std::optional<std::string> csv, std::optional<std::string> json,
-           const std::string& ratioOf, const py::object& resamplesObject, const py::object& orbitObject, bool walkthrough) {
+           const std::string& ratioOf, const py::object& resamplesObject, const py::object& orbitObject, bool walkthrough,
+           std::optional<std::string> recordFile) {
+            json = recordPath("bench", json, recordFile);
             BenchOptions o;
             o.run.scene = scene;
             for (const auto& p : presetList(preset)) o.run.addPreset(p);
@@ -916,11 +928,11 @@ PYBIND11_MODULE(deferred_workbench, m) {
         py::arg("sweep") = py::none(), py::arg("preset") = py::none(), py::arg("settings") = py::none(),
         py::arg("frames") = 10, py::arg("warmup") = 1, py::arg("block") = 1, py::arg("seed") = 1,
         py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("ratio_of") = "frame",
-        py::arg("resamples") = 2000, py::arg("orbit") = 0, py::arg("walkthrough") = false,
+        py::arg("resamples") = 2000, py::arg("orbit") = 0, py::arg("walkthrough") = false, py::arg("record") = py::none(),
         "bench's grid (sizes x lights x sweep {knob: [values]}) in this process. Returns the experiment record\n"
         "bench --json writes, as a dict: scene, knobs, seeds, camera path, grid, build, gl, host, and results (configs with\n"
-        "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and json=PATH also write\n"
-        "bench --csv's and --json's files; orbit=N and walkthrough=True move the camera as bench's options do.");
+        "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and record=PATH (or json=PATH,\n"
+        "its older name) also write bench --csv's and --record's files; orbit=N and walkthrough=True move the camera as bench's options do.");
 
     m.def(
         "tradeoff",
@@ -931,7 +943,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
            const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
            const py::object& block, const py::object& resamples, std::optional<std::string> shard,
            std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
-           const py::object& plotSizeObject, bool quiet, py::object progress) {
+           const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile) {
+            json = recordPath("tradeoff", json, recordFile);
             TradeoffStudyOptions s;
             s.run.scene = scene;
             for (const auto& p : presetList(preset)) s.run.addPreset(p);
@@ -963,6 +976,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
         py::arg("warmup") = 1, py::arg("block") = 1, py::arg("resamples") = 2000, py::arg("shard") = py::none(),
         py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("plot") = py::none(),
         py::arg("plot_size") = std::make_pair(800, 600), py::arg("quiet") = false, py::arg("progress") = py::none(),
+        py::arg("record") = py::none(),
         "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
         "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
         "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
@@ -971,7 +985,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
         "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
         "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
         "its interval, gpu_ms.<pass>, pareto; NaN where the CSV is empty) and front (the rows on the Pareto front).\n"
-        "csv=, json= and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only those asked for.\n"
+        "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
+        "those asked for.\n"
         "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"
         "A bad argument raises ValueError (KnobError for a knob) with the CLI's message, naming its flag.");
 

@@ -165,6 +165,7 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, presets=["NO_SUCH"]), ValueError, "NO_SUCH"),
             (dict(sweep={"ssao.samples": [4, 8]}, plot="p.jpg"), ValueError, "--plot writes a PNG"),
             (dict(sweep={"ssao.samples": [4, 8]}, csv="same.csv", json="same.csv"), ValueError, "same.csv"),
+            (dict(sweep={"ssao.samples": [4, 8]}, record="a.json", json="b.json"), ValueError, "name two files"),
             (dict(sweep={"ssao.samples": [4, 8]}, progress=3), ValueError, "progress must be a callable"),
             (dict(sweep={"ssao.samples": [4, 8]}, scene=os.path.join(self.tmp.name, "missing.gltf")), dw.Error,
              "missing.gltf"),
@@ -177,6 +178,26 @@ class TradeoffTest(unittest.TestCase):
         with self.assertRaises(dw.Error) as e:
             dw.tradeoff(**dict(base, sweep={"ssao.samples": [4]}, time="bogus", against="ssao.samples=8"))
         self.assertIn("--time bogus: no pass of that name was timed", str(e.exception))
+
+    def test_record_keyword_writes_the_record(self):
+        # record= is the CLI's --record (json= its older name): the experiment record, one format.
+        path = os.path.join(self.tmp.name, "kw-tradeoff.json")
+        dw.tradeoff(scene="default", size=(32, 18), sweep={"ssao.samples": [4, 8]}, against="ssao.samples=16",
+                    metric="rms", buffer="ao", frames=1, warmup=0, resamples=200, quiet=True, record=path)
+        with open(path) as f:
+            record = json.load(f)
+        self.assertEqual(record["command"], "tradeoff")
+        self.assertEqual(len(record["results"]["rows"]), 2)
+        path = os.path.join(self.tmp.name, "kw-bench.json")
+        dw.bench(scene="default", sizes=[(32, 18)], sweep={"ssao.samples": [4, 8]}, frames=1, warmup=0,
+                 resamples=200, record=path, json=path)
+        with open(path) as f:
+            record = json.load(f)
+        self.assertEqual(record["command"], "bench")
+        self.assertEqual(len(record["results"]["configs"]), 2)
+        with self.assertRaises(ValueError) as e:
+            dw.bench(scene="default", sizes=[(32, 18)], frames=1, record=path, json=path + ".other")
+        self.assertIn("name two files", str(e.exception))
 
     def test_progress_that_raises_stops_the_run(self):
         def stop(line):
