@@ -39,6 +39,7 @@ bool ParetoPanel::load(const std::string& file) {
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
         loadedPath = file;
+        tableBaseline.clear();
         group = 0;
         hovered = -1;
         error.clear();
@@ -114,10 +115,20 @@ std::vector<std::pair<std::string, std::string>> ParetoPanel::overAovCost(const 
     return over;
 }
 
+namespace {
+constexpr const char* kCurrentImage = "the current image (chosen: the current value scores 0)";
+constexpr const char* kReference = "the CPU reference";
+}  // namespace
+
 bool ParetoPanel::startSweep(std::string knob, UiState& state, RenderSession& session, bool confirmed) {
     // By value: `knob` may be askedKnob, cleared below.
     askedKnob.clear();
     askedCost.clear();
+    askedCostHeadline.clear();
+    askedCostDetail.clear();
+    askedReference.clear();
+    askedConfirmed = false;
+    waitingKnob.clear();
     try {
         if (!confirmed) {
             // The live view's AOV guard covers the states the view renders; a
@@ -127,26 +138,40 @@ bool ParetoPanel::startSweep(std::string knob, UiState& state, RenderSession& se
                 std::string values;
                 for (const auto& [v, w] : over) values += (values.empty() ? "" : ", ") + v;
                 askedKnob = knob;
+                askedCostHeadline = knob + ": " + std::to_string(over.size()) + " of " +
+                                    std::to_string(QuickSweep::valuesOf(session.knobs(), knob).size()) +
+                                    " values over the AOV cost limit (" + values + ")";
+                askedCostDetail = knob + "=" + over.front().first + ": " + over.front().second;
                 askedCost = "quick sweep of " + knob + " not started: " + std::to_string(over.size()) + " of " +
                             std::to_string(QuickSweep::valuesOf(session.knobs(), knob).size()) +
-                            " values over the AOV cost limit (" + values + "); " + knob + "=" + over.front().first +
-                            ": " + over.front().second;
+                            " values over the AOV cost limit (" + values + "); " + askedCostDetail;
                 state.log.error(askedCost + ". 'sweep anyway' in the Pareto panel renders them", state.time,
                                 "quick sweep");
                 return false;
             }
         }
-        FloatImage baseline;
-        std::string name = "the current settings' image";
-        const ReferencePass* ref = session.pipeline().pass<ReferencePass>();
-        if (ref && ref->hasReference() && session.pipeline().outputs().find("reference.final")) {
-            baseline = session.readRaw("reference.final");
-            name = "the CPU reference";
-        }
         const FloatImage current = session.readRaw("final");
-        if (baseline.width != current.width || baseline.height != current.height) {
+        FloatImage baseline;
+        std::string name;
+        if (againstCurrent) {
             baseline = current;
-            name = "the current settings' image";
+            name = kCurrentImage;
+        } else {
+            // The CPU reference of this very view, at the frame's size; never
+            // the current image in its place (its value would score 0).
+            if (const ReferencePass* ref = session.pipeline().pass<ReferencePass>(); ref && ref->reference())
+                baseline = ref->reference()->final;
+            if (baseline.width != current.width || baseline.height != current.height || current.width == 0) {
+                askedKnob = knob;
+                askedConfirmed = confirmed;
+                askedReference = "no CPU reference of this view to measure FLIP against";
+                state.log.error("quick sweep of " + knob + " not started: " + askedReference +
+                                    ". 'trace reference' in the Pareto panel traces it (as F9 does) and "
+                                    "then sweeps, or 'use current image' measures against the image on show",
+                                state.time, "quick sweep");
+                return false;
+            }
+            name = kReference;
         }
         state.sweep.start(session.knobs(), knob, std::move(baseline), name);
         sweepShown = false;
@@ -160,7 +185,42 @@ bool ParetoPanel::startSweep(std::string knob, UiState& state, RenderSession& se
     }
 }
 
+void ParetoPanel::traceReferenceThenSweep(std::string knob, UiState& state, bool confirmed) {
+    askedKnob.clear();
+    askedReference.clear();
+    askedConfirmed = false;
+    waitingKnob = std::move(knob);
+    waitingConfirmed = confirmed;
+    waitingJobsEnded = state.referenceJobsEnded;
+    state.requestReference = true;
+    state.log.succeeded("quick sweep");
+    state.log.info("quick sweep of " + waitingKnob + ": tracing the CPU reference of the view first", state.time);
+}
+
+void ParetoPanel::updateWaiting(UiState& state, RenderSession& session) {
+    if (waitingKnob.empty()) return;
+    const ReferencePass* ref = session.pipeline().pass<ReferencePass>();
+    if (!ref) {
+        error = "quick sweep of " + waitingKnob + " not started: this pipeline has no reference pass";
+        waitingKnob.clear();
+        return;
+    }
+    if (ref->hasReference()) {
+        const std::string knob = waitingKnob;
+        waitingKnob.clear();
+        startSweep(knob, state, session, waitingConfirmed);
+        return;
+    }
+    if (state.referenceJobsEnded != waitingJobsEnded && state.referenceProgress < 0.0 && !state.requestReference) {
+        error = "quick sweep of " + waitingKnob +
+                " not started: the CPU reference did not come (cancelled, failed or the view changed; see Messages)";
+        state.log.error(error, state.time, "quick sweep");
+        waitingKnob.clear();
+    }
+}
+
 void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    updateWaiting(state, session);  // also while the panel is collapsed
     if (!beginPanel(title, open)) {
         ImGui::End();
         return;
@@ -172,12 +232,27 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             mouse.x < item.x + item.w && mouse.y >= item.y && mouse.y < item.y + item.h)
             if (const auto id = session.knobs().find(name.substr(5)); id && session.knobs().spec(*id).tradeoff)
                 sweepKnob = name.substr(5);
+    const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
     if (state.sweep.running()) {
         char label[128];
         std::snprintf(label, sizeof(label), "sweeping %s: %.0f%%", state.sweep.knob().c_str(), state.sweep.progress() * 100.0);
         ImGui::ProgressBar(static_cast<float>(state.sweep.progress()), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
         ImGui::SameLine();
         if (ImGui::SmallButton("cancel")) state.sweep.cancel();
+    } else if (!waitingKnob.empty()) {
+        // Tracing the reference the sweep asked for (the menu bar shows it too).
+        char label[160];
+        const double p = std::max(state.referenceProgress, 0.0);
+        std::snprintf(label, sizeof(label), "CPU reference for %s: %.0f%%", waitingKnob.c_str(), p * 100.0);
+        ImGui::ProgressBar(static_cast<float>(p), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
+        noteItem("pareto.reference_progress");
+        sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
+        if (ImGui::SmallButton("cancel##waiting")) {
+            state.requestReferenceCancel = true;
+            state.log.info("quick sweep of " + waitingKnob + " cancelled while its CPU reference was traced", state.time);
+            waitingKnob.clear();
+        }
+        noteItem("pareto.reference_cancel");
     } else {
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
         if (ImGui::BeginCombo("##sweep_knob", sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str())) {
@@ -187,30 +262,72 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here");
-        sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + ImGui::GetStyle().FramePadding.x * 2.0f);
+        sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + spacing);
         ImGui::BeginDisabled(sweepKnob.empty());
         if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
         ImGui::EndDisabled();
         noteItem("pareto.sweep");
+        // What each value's FLIP is measured against: a choice, shown on the plot.
+        const char* against[] = {"vs CPU reference", "vs current image"};
+        const float againstWidth = ImGui::CalcTextSize(against[1]).x + ImGui::GetFrameHeight() + spacing;
+        sameLineIfFits(againstWidth);
+        ImGui::SetNextItemWidth(againstWidth);
+        int choice = againstCurrent ? 1 : 0;
+        if (ImGui::Combo("##sweep_against", &choice, against, 2)) againstCurrent = choice == 1;
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("what each swept value's FLIP is measured against: the CPU reference of this view "
+                              "(ray-traced, F9; traced first if none is shown), or the current settings' image "
+                              "(no reference needed; the current value then scores 0)");
+        noteItem("pareto.against");
         if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
         if (!askedCost.empty()) {
-            // Asked first, as the live view's AOV guard asks.
-            wrappedColored(kErrorColor, askedCost);
+            // Asked first, as the live view's AOV guard asks; the buttons
+            // above the text, so a narrow, short panel still shows them.
             if (ImGui::Button("sweep anyway")) startSweep(askedKnob, state, session, true);
             noteItem("pareto.sweep_anyway");
-            sameLineIfFits(ImGui::CalcTextSize("cancel").x + ImGui::GetStyle().FramePadding.x * 2.0f);
+            sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
             if (ImGui::Button("cancel##aov")) {
                 askedKnob.clear();
                 askedCost.clear();
                 state.log.succeeded("quick sweep");
             }
             noteItem("pareto.sweep_cancel");
+            if (!askedCost.empty()) {
+                wrappedColored(kErrorColor, askedCostHeadline);
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", askedCost.c_str());
+                wrappedColored(kDimColor, askedCostDetail);
+            }
+        } else if (!askedReference.empty()) {
+            if (ImGui::Button("trace reference"))
+                traceReferenceThenSweep(askedKnob, state, askedConfirmed);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("traces the CPU reference of this view in the background (as F9 does, with its "
+                                  "progress and cancel), then sweeps against it");
+            noteItem("pareto.trace_reference");
+            sameLineIfFits(ImGui::CalcTextSize("use current image").x + spacing);
+            if (ImGui::Button("use current image")) {
+                againstCurrent = true;
+                startSweep(askedKnob, state, session, askedConfirmed);
+            }
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("measures each value against the image on show: the current value scores 0");
+            noteItem("pareto.against_current");
+            sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
+            if (ImGui::Button("cancel##reference")) {
+                askedKnob.clear();
+                askedReference.clear();
+                state.log.succeeded("quick sweep");
+            }
+            noteItem("pareto.reference_ask_cancel");
+            if (!askedReference.empty())
+                wrappedColored(kErrorColor, "quick sweep of " + askedKnob + ": " + askedReference + " (F9)");
         }
     }
     if (!sweepShown && state.sweep.done()) {
         // The finished sweep replaces the table on show.
         table = state.sweep.table();
         loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
+        tableBaseline = state.sweep.baselineName();
         group = 0;
         applied.clear();
         sweepShown = true;
@@ -272,10 +389,23 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         ImGui::End();
         return;
     }
+    // Padded around the data, but never below 0 where the data are not (a
+    // time or an error of 0 sits on the axis, not over a negative range).
+    const bool xPositive = xlo >= 0.0, yPositive = ylo >= 0.0;
     if (xhi <= xlo) xlo -= 0.5, xhi += 0.5;
     if (yhi <= ylo) ylo -= 0.5 * std::max(std::fabs(ylo), 1e-6), yhi += 0.5 * std::max(std::fabs(yhi), 1e-6);
     const double padX = 0.06 * (xhi - xlo), padY = 0.08 * (yhi - ylo);
     xlo -= padX, xhi += padX, ylo -= padY, yhi += padY;
+    if (xPositive) xlo = std::max(xlo, 0.0);
+    if (yPositive) ylo = std::max(ylo, 0.0);
+    plotAxes = {xlo, xhi, ylo, yhi};
+
+    if (!tableBaseline.empty()) {
+        // What the errors are measured against, over the plot (wrapped, never cut).
+        const bool self = tableBaseline != kReference;
+        wrappedColored(self ? kErrorColor : kDimColor, metric + " against " + tableBaseline);
+        noteItem("pareto.baseline");
+    }
 
     {
         // A narrow panel has no room for the axes' names under the plot: a line above it says them.

@@ -8,7 +8,12 @@
 // Presets panel loads one, camera.near / camera.far on the camera. A value
 // the registry refuses is named on screen and nothing is applied (the last
 // good state is kept). Its quick sweep asks before it renders a value whose
-// AOV frame is over the cost limit (ParetoPanel::startSweep).
+// AOV frame is over the cost limit, and measures FLIP against the CPU
+// reference of the view: with none shown it does not start, and offers to
+// trace it first (as F9 does) or, as an explicit choice the plot then names,
+// to measure against the current image (ParetoPanel::startSweep). The plot's
+// axes are clamped to the data's sign: no negative time or error range.
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,18 +34,52 @@ struct ParetoPanel {
     int hovered = -1;         // the row under the mouse (index into table.rows)
     std::string sweepKnob;    // the quick sweep's knob: the speed/quality knob last pointed at in Parameters
     bool sweepShown = true;   // the finished sweep's table is on show
-    // A sweep held back by its AOV cost: the knob and what the estimate says
-    // (shown with *sweep anyway* and *cancel*); empty when none is asked about.
-    std::string askedKnob, askedCost;
+    // The quick sweep's baseline, an explicit choice: false measures FLIP
+    // against the CPU reference of the view (F9), true against the current
+    // settings' image (where the current value scores 0; the plot says so).
+    bool againstCurrent = false;
+    // A sweep held back by its AOV cost: the knob, the whole message (as the
+    // log has it), its first part (shown under *sweep anyway* and *cancel*)
+    // and the estimate (wrapped below); empty when none is asked about.
+    std::string askedKnob, askedCost, askedCostHeadline, askedCostDetail;
+    // A sweep held back for want of a CPU reference (against the reference,
+    // none shown): why, with *trace reference*, *use current image* and
+    // *cancel*; askedConfirmed: its AOV question was answered.
+    std::string askedReference;
+    bool askedConfirmed = false;
+    // A sweep waiting for the CPU reference it asked for: the knob (empty when
+    // none), whether its AOV question was answered, UiState::referenceJobsEnded
+    // when it asked.
+    std::string waitingKnob;
+    bool waitingConfirmed = false;
+    std::uint64_t waitingJobsEnded = 0;
+    // What the errors of the table on show are measured against (a quick
+    // sweep's baseline; empty for a loaded CSV).
+    std::string tableBaseline;
+    // The plot's ranges as last drawn: GPU ms across, error up (after padding
+    // and clamping: never below 0 when the data are not).
+    struct Axes {
+        double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
+    } plotAxes;
 
     // Starts a quick sweep of `knob` (UiState::sweep) against the CPU
-    // reference of the view when one is shown, else the current image.
-    // Unless `confirmed`, a sweep with a value whose AOV frame is over
-    // AovCostEstimate's limits at the view's render size (the live view's
-    // guard, ui/AovCostGuard, for the states a sweep renders) does not start:
-    // askedKnob / askedCost say why, the Messages panel and the banner too,
-    // and false is returned.
+    // reference of the view (ReferencePass's final image, at the frame's
+    // size), or, with
+    // againstCurrent, against the current image. Unless `confirmed`, a sweep
+    // with a value whose AOV frame is over AovCostEstimate's limits at the
+    // view's render size (the live view's guard, ui/AovCostGuard, for the
+    // states a sweep renders) does not start: askedKnob / askedCost say why,
+    // the Messages panel and the banner too, and false is returned. Against
+    // the reference with none shown it does not start either: askedReference
+    // says why (and the banner), and false is returned.
     bool startSweep(std::string knob, UiState& state, RenderSession& session, bool confirmed = false);
+    // *trace reference*: asks for the CPU reference of the
+    // view (UiState::requestReference, as F9) and starts the sweep of `knob`
+    // when it is shown; a reference that does not come (cancelled, failed,
+    // the view changed) ends the wait with a message.
+    void traceReferenceThenSweep(std::string knob, UiState& state, bool confirmed);
+    // Every frame (from draw): starts a waiting sweep once its reference is shown.
+    void updateWaiting(UiState& state, RenderSession& session);
     // The values of a quick sweep of `knob` (QuickSweep::valuesOf) over the
     // current knobs whose AOV frame at w x h exceeds AovCostEstimate's
     // limits, each with the estimate's warning line.

@@ -59,10 +59,13 @@ void ReferenceControls::progressBar() {
 void ReferenceControls::update(UiState& state, RenderSession& session) {
     auto* pass = session.pipeline().pass<ReferencePass>();
     if (!pass) return;
+    if (state.requestReferenceCancel && job_.running()) job_.cancel();
+    state.requestReferenceCancel = false;
     if (state.requestReference && !job_.running()) start(state, session);
     state.requestReference = false;
     std::string key;
     if (auto images = job_.takeResult(&key)) {
+        ++state.referenceJobsEnded;
         auto shown = std::make_shared<ReferencePass::Images>();
         shown->lbuffer = images->lbuffer;
         shown->final = images->final;
@@ -82,6 +85,7 @@ void ReferenceControls::update(UiState& state, RenderSession& session) {
         }
     }
     if (const std::string e = job_.takeError(); !e.empty()) {
+        ++state.referenceJobsEnded;
         if (e == "cancelled") state.log.info("CPU reference cancelled", state.time);
         else state.log.error("CPU reference failed: " + e, state.time, "reference");
     }
@@ -92,6 +96,7 @@ void ReferenceControls::update(UiState& state, RenderSession& session) {
         state.forceRender = true;
     }
     state.holdView = job_.running() || !shownKey_.empty();
+    state.referenceProgress = job_.running() ? job_.progress() : -1.0;
     if (!state.holdView) state.heldFlameFrame.reset();
 }
 

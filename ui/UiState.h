@@ -300,6 +300,13 @@ struct UiState {
     bool requestScreenshot = false;
     bool requestRenderDocCapture = false;
     bool requestReference = false;  // F9, Render > CPU reference of this view
+    bool requestReferenceCancel = false;  // cancel the CPU reference being traced (the Pareto panel's wait)
+    // The CPU reference's job as ReferenceControls::update left it this frame:
+    // its progress (0..1) while one is traced, else -1; and how many jobs have
+    // ended (a result taken, shown or not, or an error), so a panel waiting for
+    // one knows when it is over.
+    double referenceProgress = -1.0;
+    std::uint64_t referenceJobsEnded = 0;
     // While the CPU reference is rendered or shown (ReferenceControls), the
     // view holds still: the auto resolution scale keeps its step, and the
     // fire scene's flames stay where they were for frame heldFlameFrame.

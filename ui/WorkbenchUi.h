@@ -38,6 +38,7 @@ public:
     // The panel's open flag in `flags`, by its window title; nullptr if none.
     static bool* panelFlag(PanelFlags& flags, const std::string& name);
     const std::vector<DrawnPanel>& drawnPanels() const { return drawn_; }
+    ParetoPanel& pareto() { return pareto_; }
 
 private:
     void menuBar(UiState& state, RenderSession& session);

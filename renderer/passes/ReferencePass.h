@@ -36,6 +36,8 @@ public:
     // nullptr clears it (the view changed); `staleReason` is then the skip reason shown.
     void setReference(std::shared_ptr<const Images> images, std::string staleReason = {});
     bool hasReference() const { return images_ != nullptr; }
+    // The images handed over (nullptr when none): what the outputs show, on the CPU.
+    const Images* reference() const { return images_.get(); }
 
     // The frame's error against the reference (L-buffer luminance), as the statistics line states it.
     struct Errors {

@@ -244,6 +244,7 @@ TEST(AovCostGuard, AQuickSweepWithAValueOverTheLimitAsksFirstAndStartsWhenConfir
     EXPECT_TRUE(ui::ParetoPanel::overAovCost("gbuffer.normal_encoding", *session, 32, 18).empty());
 
     ui::ParetoPanel panel;
+    panel.againstCurrent = true;  // the reference's question is Gui.AQuickSweepWithoutACpuReference...
     EXPECT_FALSE(panel.startSweep("ao.method", state, *session));
     EXPECT_FALSE(state.sweep.running());
     EXPECT_EQ(panel.askedKnob, "ao.method");

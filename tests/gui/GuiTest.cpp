@@ -8,15 +8,18 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <tuple>
 
 #include "renderer/knobs/Preset.h"
+#include "renderer/passes/ReferencePass.h"
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/support/TestSupport.h"
 #include "renderer/bench/TradeoffTable.h"
@@ -24,6 +27,7 @@
 #include "ui/ParetoPanel.h"
 #include "ui/PresetsPanel.h"
 #include "ui/RecordDialog.h"
+#include "ui/ReferenceControls.h"
 #include "ui/ScenePanel.h"
 #include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
@@ -354,6 +358,39 @@ TEST(Gui, AtTheDefaultSizesTheQuickSweepButtonAndTheAbNumbersFitTheirPanels) {
         inside("ab.numbers", "Viewport");
         const float line = ImGui::GetTextLineHeightWithSpacing();
         EXPECT_NEAR(items.at("ab.numbers").h, (w < 1100.0f ? 2.0f : 1.0f) * line - ImGui::GetStyle().ItemSpacing.y, 1.5f) << size;
+
+        // The sweep's questions: their buttons above their text, on show
+        // without scrolling and inside the window. First the AOV cost
+        // (ao.method with aov.radius 20: every volume covers the frame), then,
+        // answered, the missing CPU reference.
+        auto frames = [&] {
+            for (int i = 0; i < 2; ++i) {
+                imgui.frame([&] { workbench.draw(state, *session, 1.0f / 60.0f); });
+                ++state.frame;
+            }
+        };
+        auto inWindow = [&](const std::string& name) {
+            inside(name, "Pareto");
+            const ui::DrawnItem& e = items.at(name);
+            EXPECT_LE(e.y + e.h, h) << name << " " << size << ": below the window";
+            EXPECT_LE(e.x + e.w, w) << name << " " << size << ": right of the window";
+        };
+        ui::ParetoPanel& pareto = workbench.pareto();
+        session->knobs().setFromString("aov.radius", "20");
+        EXPECT_FALSE(pareto.startSweep("ao.method", state, *session));
+        ASSERT_FALSE(pareto.askedCost.empty()) << size;
+        frames();
+        inWindow("pareto.sweep_anyway");
+        inWindow("pareto.sweep_cancel");
+        EXPECT_LT(items.at("pareto.sweep_anyway").y, items.at("pareto.against").y + 3.0f * line) << size;
+        EXPECT_FALSE(pareto.startSweep("ao.method", state, *session, true));
+        ASSERT_FALSE(pareto.askedReference.empty()) << size;
+        EXPECT_FALSE(state.sweep.running());
+        frames();
+        inWindow("pareto.trace_reference");
+        inWindow("pareto.against_current");
+        inWindow("pareto.reference_ask_cancel");
+        session->knobs().reset(*session->knobs().find("aov.radius"));
     }
 }
 
@@ -1355,6 +1392,7 @@ TEST(Gui, TheParetoPanelPlotsATradeoffCsvAndAClickAppliesAPointsSettings) {
     // The quick sweep of a speed/quality knob: run (here step by step, as the
     // frame loop does), its table then plotted in place of the file's.
     session->render({{"final"}});
+    panel.againstCurrent = true;  // no CPU reference here: the current image, chosen
     ASSERT_TRUE(panel.startSweep("gbuffer.normal_encoding", state, *session)) << panel.error;
     int steps = 0;
     while (state.sweep.step(*session)) ASSERT_LT(++steps, 20);
@@ -1362,6 +1400,186 @@ TEST(Gui, TheParetoPanelPlotsATradeoffCsvAndAClickAppliesAPointsSettings) {
     EXPECT_EQ(panel.table.axes, (std::vector<std::string>{"gbuffer.normal_encoding"}));
     EXPECT_EQ(panel.table.rows.size(), 3u);
     EXPECT_NE(panel.loadedPath.find("quick sweep of gbuffer.normal_encoding"), std::string::npos) << panel.loadedPath;
-    EXPECT_NE(panel.loadedPath.find("the current settings' image"), std::string::npos) << panel.loadedPath;
+    EXPECT_NE(panel.loadedPath.find("the current image"), std::string::npos) << panel.loadedPath;
     EXPECT_EQ(session->knobs().format(*session->knobs().find("gbuffer.normal_encoding")), "kl16");
+}
+
+// Issue 22's trial: a quick sweep of ao.method with no CPU reference shown
+// measured FLIP against the current image (the current method scored 0) and
+// the plot's axes ran below 0. Now: against the reference (the default) it
+// does not start, says why and offers to trace it; *trace reference*
+// asks for it as F9 does and the sweep starts when it is shown, its
+// errors against the reference (the current method's well above 0); a
+// reference that does not come (the view changed) ends the wait with a
+// message; against the current image is a choice the plot names; the axes
+// start at 0, not below.
+TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurrentImageByChoice) {
+    const fs::path cache = test::tempDir() / "pareto-reference-cache";
+    fs::remove_all(cache);
+    setenv("DW_REFERENCE_CACHE", cache.string().c_str(), 1);
+    auto session = test::makeSession(32, 18);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    session->render({{"final"}});
+    KnobRegistry& k = session->knobs();
+    auto method = [&] { return k.format(*k.find("ao.method")); };
+    ASSERT_EQ(method(), "ssao");
+    HeadlessImGui imgui(ImVec2(800, 600));
+    ui::ParetoPanel panel;
+    ui::ReferenceControls reference;
+    reference.aoRays = 16;
+    bool open = true;
+    // The window's order: the reference's update, then the panel.
+    auto frame = [&] {
+        imgui.frame([&] {
+            reference.update(state, *session);
+            ImGui::SetNextWindowPos(ImVec2(0, 0));
+            ImGui::SetNextWindowSize(ImVec2(800, 600));
+            panel.draw("Pareto", &open, state, *session);
+        });
+    };
+    auto click = [&](const std::string& name) {
+        frame();
+        const auto& items = ui::drawnItems();
+        ASSERT_TRUE(items.count(name)) << name;
+        const ui::DrawnItem& b = items.at(name);
+        ASSERT_EQ(b.frame, ImGui::GetFrameCount()) << name;
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(-1000, -1000);
+    };
+    auto runSweep = [&] {
+        int steps = 0;
+        while (state.sweep.step(*session)) ASSERT_LT(++steps, 40);
+        frame();
+    };
+    auto errorOf = [&](const std::string& value) {
+        for (const TradeoffRow& r : panel.table.rows)
+            if (r.axisValues.size() == 1 && r.axisValues[0] == value) return r.error;
+        return -1.0;
+    };
+
+    // No reference: not started, said in the panel and the banner, nothing rendered.
+    EXPECT_FALSE(panel.startSweep("ao.method", state, *session));
+    EXPECT_FALSE(state.sweep.running());
+    EXPECT_EQ(panel.askedKnob, "ao.method");
+    EXPECT_NE(panel.askedReference.find("no CPU reference"), std::string::npos) << panel.askedReference;
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("quick sweep of ao.method not started: no CPU reference"), std::string::npos)
+        << state.log.banner()->text;
+
+    // Trace it, but the view changes before it is shown: the wait ends, said so, no sweep.
+    click("pareto.trace_reference");
+    EXPECT_EQ(panel.waitingKnob, "ao.method");
+    EXPECT_TRUE(panel.askedReference.empty());
+    EXPECT_EQ(state.log.banner(), nullptr);
+    frame();  // the reference's update starts the trace, of this view
+    EXPECT_TRUE(state.referenceProgress >= 0.0 || state.referenceJobsEnded > 0);
+    session->camera().position += glm::vec3(0.5f, 0.0f, 0.0f);
+    for (int i = 0; i < 6000 && !panel.waitingKnob.empty(); ++i) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_TRUE(panel.waitingKnob.empty());
+    EXPECT_FALSE(state.sweep.running());
+    EXPECT_NE(panel.error.find("the CPU reference did not come"), std::string::npos) << panel.error;
+
+    // Again, the view still: the reference is traced and the sweep starts against it.
+    EXPECT_FALSE(panel.startSweep("ao.method", state, *session));
+    click("pareto.trace_reference");
+    for (int i = 0; i < 6000 && !state.sweep.running() && !panel.waitingKnob.empty(); ++i) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(state.sweep.running()) << panel.error;
+    const ReferencePass* pass = session->pipeline().pass<ReferencePass>();
+    ASSERT_TRUE(pass && pass->hasReference());
+    EXPECT_EQ(state.sweep.baselineName(), "the CPU reference");
+    runSweep();
+    ASSERT_EQ(panel.table.rows.size(), k.spec(*k.find("ao.method")).choices.size());
+    EXPECT_EQ(panel.tableBaseline, "the CPU reference");
+    EXPECT_NE(panel.loadedPath.find("FLIP against the CPU reference"), std::string::npos) << panel.loadedPath;
+    // The current method is measured, not scored 0 against itself.
+    EXPECT_GT(errorOf("ssao"), 0.001);
+    EXPECT_EQ(method(), "ssao");
+    EXPECT_GE(panel.plotAxes.xlo, 0.0);
+    EXPECT_GE(panel.plotAxes.ylo, 0.0);
+
+    // Against the current image, chosen: the current method scores exactly 0,
+    // the plot says what it is measured against, the error axis starts at 0.
+    panel.againstCurrent = true;
+    session->render({{"final"}});  // the view's own frame after the sweep's, as the window renders it
+    ASSERT_TRUE(panel.startSweep("ao.method", state, *session)) << panel.error;
+    runSweep();
+    frame();
+    EXPECT_EQ(errorOf("ssao"), 0.0);
+    EXPECT_GT(errorOf("gtao"), 0.0);
+    EXPECT_NE(panel.tableBaseline.find("the current image (chosen"), std::string::npos) << panel.tableBaseline;
+    const auto& items = ui::drawnItems();
+    ASSERT_TRUE(items.count("pareto.baseline"));
+    const ui::DrawnItem& label = items.at("pareto.baseline");
+    EXPECT_EQ(label.frame, ImGui::GetFrameCount());
+    EXPECT_LE(label.x + label.w, label.clipX + label.clipW + 0.5f) << "the label is cut";
+    EXPECT_LT(label.y, items.at("pareto.plot").y);
+    EXPECT_EQ(panel.plotAxes.ylo, 0.0);
+    EXPECT_GE(panel.plotAxes.xlo, 0.0);
+    // The point at 0 sits on the plot's bottom edge, inside it.
+    const ui::DrawnItem& plot = items.at("pareto.plot");
+    for (const TradeoffRow& r : panel.table.rows) {
+        const std::string name = "pareto.point." + std::to_string(r.point);
+        ASSERT_TRUE(items.count(name)) << name;
+        EXPECT_LE(items.at(name).y, plot.y + plot.h) << name;
+        EXPECT_GE(items.at(name).y, plot.y) << name;
+    }
+    unsetenv("DW_REFERENCE_CACHE");
+}
+
+// The plot's ranges follow the data: times and errors of 0 and up give axes
+// from 0, never a negative range (the trial's -85.3 ms and -0.00717).
+TEST(Gui, TheParetoPlotsAxesStartAtZeroForDataThatDoNotGoBelowIt) {
+    TradeoffTable t;
+    t.axes = {"ao.method"};
+    const std::vector<std::tuple<std::string, double, double>> points = {{"ssao", 0.0, 40.0}, {"gtao", 0.03, 60.0}, {"aov", 0.01, 1400.0}};
+    for (size_t i = 0; i < points.size(); ++i) {
+        TradeoffRow r;
+        r.point = static_cast<int>(i);
+        r.axisValues = {std::get<0>(points[i])};
+        r.camera = "0";
+        r.metric = "flip";
+        r.buffer = "final";
+        r.error = std::get<1>(points[i]);
+        r.frames = 3;
+        r.frameGpuMs = std::get<2>(points[i]);
+        r.frameGpuMsLo = r.frameGpuMs * 0.5;
+        r.frameGpuMsHi = r.frameGpuMs * 1.1;
+        t.rows.push_back(r);
+    }
+    t.markParetoFront();
+    const fs::path csv = test::tempDir() / "pareto-zero.csv";
+    t.writeCsv(csv.string());
+    auto session = test::makeSession(32, 18);
+    HeadlessImGui imgui(ImVec2(1024, 640));
+    ui::UiState state;
+    ui::ParetoPanel panel;
+    ASSERT_TRUE(panel.load(csv.string())) << panel.error;
+    bool open = true;
+    for (int i = 0; i < 2; ++i)
+        imgui.frame([&] {
+            ImGui::SetNextWindowPos(ImVec2(0, 0));
+            ImGui::SetNextWindowSize(ImVec2(600, 300));
+            panel.draw("Pareto", &open, state, *session);
+        });
+    EXPECT_EQ(panel.plotAxes.xlo, 0.0);  // 20 ms less a 6% pad of 1520 would be -71
+    EXPECT_EQ(panel.plotAxes.ylo, 0.0);
+    EXPECT_GT(panel.plotAxes.xhi, 1540.0);
+    EXPECT_GT(panel.plotAxes.yhi, 0.03);
+    const auto& items = ui::drawnItems();
+    const ui::DrawnItem& plot = items.at("pareto.plot");
+    EXPECT_LE(items.at("pareto.point.0").y, plot.y + plot.h);
+    EXPECT_FALSE(items.count("pareto.baseline") && items.at("pareto.baseline").frame == ImGui::GetFrameCount());
 }
