@@ -88,7 +88,16 @@ std::vector<std::string> ShaderLibrary::pendingErrors() const {
 
 fs::path ShaderLibrary::locateRoot() {
     std::vector<fs::path> candidates;
-    if (const char* env = std::getenv("DW_SHADER_DIR")) candidates.emplace_back(env);
+    // A folder named by DW_SHADER_DIR is used or refused, never passed over:
+    // falling back to the build's shaders would measure (or replay) other
+    // shaders than the ones asked for, and say nothing.
+    if (const char* env = std::getenv("DW_SHADER_DIR"); env && *env) {
+        if (!fs::exists(fs::path(env) / "common"))
+            throw Error(std::string("DW_SHADER_DIR=") + env +
+                        " is not a shader folder (it has no common/ in it); name a copy of the project's shaders/, "
+                        "or unset it for the build's own");
+        return fs::weakly_canonical(fs::path(env));
+    }
 #ifdef DW_SOURCE_SHADER_DIR
     candidates.emplace_back(DW_SOURCE_SHADER_DIR);
 #endif

@@ -431,6 +431,15 @@ class RecordTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertNotIn("shader", r.stdout)
         self.assertIn("inputs changed: none\nimage: identical", r.stdout)
+        # A mistyped or empty folder is refused, never passed over for the build's own shaders
+        # (which replayed "identical" with no word of the folder asked for).
+        empty = os.path.join(self.tmp.name, "shaders-empty")
+        os.makedirs(empty, exist_ok=True)
+        for folder in (os.path.join(self.tmp.name, "no-such-shaders"), empty):
+            r = run("replay", self.record, env={"DW_SHADER_DIR": folder})
+            self.assertNotEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertIn("DW_SHADER_DIR=" + folder + " is not a shader folder", r.stderr)
+            self.assertNotIn("image: identical", r.stdout)
         # One comment edited: that file is named, before the image line;
         # the image is the same, so the exit code is 0 (the image decides).
         edited = os.path.join(self.tmp.name, "shaders-edited")
