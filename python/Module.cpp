@@ -739,6 +739,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
                  requireCallable(progress, "render: progress");
                  requirePath(record, "render: record");
                  s.checkRender(buffer, frames, warmup);
+                 if (record) s.checkRecordStart(std::nullopt, "this render()");
                  const bool needsReference = s.isReferenceOutput(buffer);
                  if (needsReference && record)
                      throw py::value_error("render: record= with '" + buffer + "', an output of the CPU reference: "

@@ -99,6 +99,15 @@ WorkbenchSession::~WorkbenchSession() {
     if (session_ && std::this_thread::get_id() != owner_) static_cast<void>(session_.release());
 }
 
+void WorkbenchSession::checkRecordStart(std::optional<std::uint64_t> firstFrame, const std::string& what) const {
+    const std::uint64_t frame = firstFrame.value_or(session_->pipeline().frameIndex());
+    if (!session_->scene().flames.empty() && frame != 0)
+        throw Error("record: '" + session_->scene().name + "' animates (its flame particles move with the frame index) "
+                    "and " + what + " began at frame " + std::to_string(frame) +
+                    "; replay renders from frame 0, as render --frames does: record the first render() of a Session "
+                    "(a new Session starts at frame 0)");
+}
+
 ExperimentRecord WorkbenchSession::record() {
     requireOwningThread();
     if (!last_) throw Error("record: nothing rendered yet (call render() first)");
@@ -116,6 +125,10 @@ ExperimentRecord WorkbenchSession::record() {
     if (!changed.empty())
         throw Error("record: knobs changed since the last render() (" + changed +
                     "); render() again, then record(), so the record's knobs are the ones that made its image");
+    // An animated scene (flame particles move with the frame index) looks as
+    // its frame index says; replay renders from frame 0, as the CLI's render
+    // does, so only a render() that began at frame 0 can be recorded.
+    checkRecordStart(last_->firstCounted - static_cast<std::uint64_t>(last_->warmup), "the last render()");
     processContext().context->makeCurrent();
     RunConfig run = run_;
     run.width = width_;

@@ -132,6 +132,11 @@ public:
     // A render record (render --record) of the last render(): its buffer,
     // frames and warm-up, the knobs as they are now. Throws Error before any render().
     ExperimentRecord record();
+    // Throws Error when a record of frames beginning at `firstFrame` (none:
+    // the next render()'s) could not replay: an animated scene (flame
+    // particles move with the frame index) begun at another frame than 0,
+    // where replay, as the CLI's render, begins.
+    void checkRecordStart(std::optional<std::uint64_t> firstFrame, const std::string& what) const;
 
     // A bench grid (BenchRunner) on the process's GL context, on its thread,
     // as the record `bench --json` writes; `measured` gets the samples (for bench --csv's file).

@@ -369,6 +369,22 @@ class SessionTest(unittest.TestCase):
         self.assertEqual((again["buffer"], again["knobs"]["tonemap.key"]), ("ao.raw", "0.25"))
         with self.assertRaises(dw.Error):
             dw.Session(scene="default", size=(8, 8)).record(os.path.join(self.tmp.name, "none.json"))
+        # An animated scene: only the first render() of a Session (frame 0, as the CLI's) is recorded; a
+        # later one began at another frame index and replayed 'differs' with no input named.
+        fire = dw.Session(scene="fire", size=(32, 18))
+        first = os.path.join(self.tmp.name, "py-fire-1.json")
+        fire.render("final", frames=6, warmup=1, record=first)
+        r = subprocess.run([BINARY, "replay", first], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("image: identical", r.stdout)
+        with self.assertRaises(dw.Error) as e:
+            fire.render("final", frames=6, warmup=1, record=os.path.join(self.tmp.name, "py-fire-2.json"))
+        self.assertIn("this render() began at frame 7", str(e.exception))
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "py-fire-2.json")))
+        fire.render("final", frames=2)
+        with self.assertRaises(dw.Error) as e:
+            fire.record(os.path.join(self.tmp.name, "py-fire-3.json"))
+        self.assertIn("the last render() began at frame 7", str(e.exception))
 
     def test_reference_outputs_equal_the_cli_reference(self):
         # reference.lbuffer, reference.final and reference.ao are `reference --buffer lbuffer|final|ao`'s
