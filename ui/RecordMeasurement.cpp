@@ -6,6 +6,7 @@
 #include "renderer/Error.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/scene/SceneLoader.h"
 #include "ui/UiState.h"
 
 namespace dw::ui {
@@ -19,6 +20,42 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.target == b.target && a.up == b.up && a.fovYDegrees == b.fovYDegrees &&
            a.nearPlane == b.nearPlane && a.farPlane == b.farPlane;
 }
+bool sameLight(const Light& a, const Light& b) {
+    return a.name == b.name && a.type == b.type && a.position == b.position && a.direction == b.direction &&
+           a.cutoffDegrees == b.cutoffDegrees && a.exponent == b.exponent && a.falloff == b.falloff &&
+           a.innerConeDegrees == b.innerConeDegrees && a.intensity == b.intensity &&
+           a.attenuation.constant == b.attenuation.constant && a.attenuation.linear == b.attenuation.linear &&
+           a.attenuation.quadratic == b.attenuation.quadratic && a.castShadows == b.castShadows &&
+           a.enabled == b.enabled;
+}
+
+// A record holds the scene file (its path and hashes), not the window's
+// edits of it: what makes the image but cannot be replayed is refused by
+// name before any frame (a record of it replayed 'differs' naming nothing).
+void requireReplayableScene(const UiState& state, const Scene& scene) {
+    if (!scene.flames.empty())
+        throw Error("'" + scene.name + "' animates (its flame particles move with the frame index) and replay "
+                    "begins at frame 0, as render --frames does: record it with render --record");
+    if (state.animator.running())
+        throw Error("the lights are animated (Lights > animate): a record holds the scene file's lights; stop the "
+                    "animation, put the lights back, then save");
+    if (scene.source.empty()) return;
+    const Scene file = loadScene(scene.source);
+    std::string edited;
+    size_t count = 0;
+    if (file.lights.size() != scene.lights.size()) {
+        edited = std::to_string(scene.lights.size()) + " lights where the file has " + std::to_string(file.lights.size());
+    } else {
+        for (size_t i = 0; i < file.lights.size(); ++i)
+            if (!sameLight(file.lights[i], scene.lights[i]) && ++count <= 3)
+                edited += (edited.empty() ? "" : ", ") + scene.lights[i].name;
+        if (count > 3) edited += " and " + std::to_string(count - 3) + " more";
+    }
+    if (!edited.empty())
+        throw Error("the lights differ from the scene file's (" + edited + ", edited in the Lights panel): a record "
+                    "holds the scene file, not edits of it; put them back, or write them into a scene JSON and open "
+                    "that, then save");
+}
 }  // namespace
 
 bool RecordMeasurement::start(UiState& state, RenderSession& session, const std::string& path, int frames, int warmup) {
@@ -27,6 +64,7 @@ bool RecordMeasurement::start(UiState& state, RenderSession& session, const std:
     try {
         if (running_) throw Error("a record is being measured (" + shownPath_ + "); cancel it first");
         if (path.empty()) throw Error("no file named");
+        requireReplayableScene(state, session.scene());
         auto range = [](const OptionRange& r) { return std::to_string(r.min) + ".." + std::to_string(r.max); };
         if (!limits::kFrames.holds(frames))
             throw Error("frames: " + std::to_string(frames) + " is outside --frames's range " + range(limits::kFrames));
@@ -38,6 +76,9 @@ bool RecordMeasurement::start(UiState& state, RenderSession& session, const std:
         if (buffer.empty() || !session.pipeline().outputs().find(buffer)) buffer = "final";
         if (!session.pipeline().outputs().find(buffer)) throw Error("no frame rendered yet: nothing to record");
         buffer_ = buffer;
+        if (state.viewport.mode != DisplayMode::Deferred)
+            state.log.info("the view shows a preview (not a pipeline output): the record holds the deferred 'final'",
+                           state.time);
     } catch (const std::exception& e) {
         state.log.error("cannot save record " + shown + ": " + e.what(), state.time, kAction);
         return false;

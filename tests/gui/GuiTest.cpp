@@ -550,6 +550,48 @@ TEST(Gui, UnderXvfbSaveRecordMeasuresASeriesThatReplaysWithIntervals) {
 // (a knob and the camera changed meanwhile are put back after each of its
 // frames and reach neither its record nor its frames), cancel writes
 // nothing, and a change of the render size stops it with a message.
+// What makes the image but a record cannot hold is refused before any frame,
+// named on screen (a record of it replayed 'differs' naming nothing): lights
+// edited in the Lights panel, animated lights, an animated scene.
+TEST(Gui, SaveRecordRefusesWhatARecordCannotHold) {
+    auto session = test::makeSession(32, 18);
+    session->loadScene("spheres");
+    session->render({{"final"}});
+    const fs::path path = test::tempDir() / "gui-record-refused.json";
+    fs::remove(path);
+    auto refused = [&](ui::UiState& state, const std::string& words) {
+        EXPECT_FALSE(ui::saveRecord(state, *session, path.string(), 6, 1));
+        EXPECT_FALSE(state.recordRun.running());
+        ASSERT_NE(state.log.banner(), nullptr);
+        EXPECT_NE(state.log.banner()->text.find(words), std::string::npos) << state.log.banner()->text;
+        EXPECT_FALSE(fs::exists(path));
+    };
+    {
+        ui::UiState state;
+        ASSERT_FALSE(session->scene().lights.empty());
+        session->mutableScene().lights[0].enabled = false;  // the Lights panel's checkbox
+        refused(state, "the lights differ from the scene file's (" + session->scene().lights[0].name);
+        session->mutableScene().lights[0].enabled = true;
+    }
+    {
+        ui::UiState state;
+        state.animator.start(session->mutableScene());
+        refused(state, "the lights are animated");
+        state.animator.stop(session->mutableScene());
+    }
+    {
+        // Put back, it saves.
+        ui::UiState state;
+        ASSERT_TRUE(ui::saveRecord(state, *session, path.string(), 6, 1));
+        state.recordRun.cancel(state, *session);
+        fs::remove(path);
+    }
+    session->loadScene("fire");
+    session->render({{"final"}});
+    ui::UiState state;
+    refused(state, "animates (its flame particles move with the frame index)");
+}
+
 TEST(Gui, ARecordMeasurementKeepsTheSavedStateAndStopsWhenTheSizeChanges) {
     auto session = test::makeSession(32, 18);
     session->loadScene("spheres");
