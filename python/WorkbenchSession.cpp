@@ -181,6 +181,7 @@ void WorkbenchSession::requireOwningThread() const {
 }
 
 const KnobSpec& WorkbenchSession::spec(const std::string& givenName) const {
+    requireOwningThread();
     const std::string name = session_->knobs().canonicalName(givenName);  // an old name warns and stands for the new
     const auto id = session_->knobs().find(name);
     if (!id) {
@@ -213,9 +214,13 @@ void WorkbenchSession::set(const std::string& name, const std::string& text) {
     }
 }
 
-const KnobRegistry& WorkbenchSession::knobs() const { return session_->knobs(); }
+const KnobRegistry& WorkbenchSession::knobs() const {
+    requireOwningThread();
+    return session_->knobs();
+}
 
 std::vector<BufferInfo> WorkbenchSession::buffers() const {
+    requireOwningThread();
     std::vector<BufferInfo> list;
     for (const PublishedOutput& o : session_->pipeline().outputs().all())
         list.push_back({o.decl.name, toString(o.decl.kind), o.pass, o.decl.description});

@@ -220,16 +220,20 @@ class SessionTest(unittest.TestCase):
         s = self.session
         caught = []
 
+        calls = [lambda: s.render("final"), lambda: s.get("ssao.samples"), lambda: s.set("ssao.samples", 8),
+                 lambda: s.knobs(), lambda: s.buffers()]
+
         def use():
-            try:
-                s.render("final")
-            except dw.ThreadError as e:
-                caught.append(str(e))
+            for call in calls:
+                try:
+                    call()
+                except dw.ThreadError as e:
+                    caught.append(str(e))
 
         t = threading.Thread(target=use)
         t.start()
         t.join()
-        self.assertEqual(len(caught), 1)
+        self.assertEqual(len(caught), len(calls))
         self.assertIn("thread", caught[0])
         self.assertEqual(s.render("final").shape, (SIZE[1], SIZE[0], 4))  # still usable here
 
