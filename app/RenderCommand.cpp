@@ -99,6 +99,9 @@ int runRenderCommand(int argc, char** argv) {
     if (dumpKnobs) writes.emplace_back("--dump-knobs", *dumpKnobs);
     if (record) writes.emplace_back("--record", *record);
     CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
+    // An output that cannot be written fails now, not after the frames (a
+    // --record in a missing folder used to fail after --out was written).
+    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
 
     // Bad input fails before any GL work: the preset and --set against the
     // knob declarations, then the scene (CPU only).
@@ -146,8 +149,6 @@ int runRenderCommand(int argc, char** argv) {
             std::fprintf(stderr, "warning: %s\n", w.c_str());
     }
     if (needsReference) {
-        // A trace can take minutes: an output that cannot be written fails now, not after it.
-        for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
         if (referenceOptions.threads > reference::availableThreads())
             std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", referenceOptions.threads,
                          reference::availableThreads(), reference::availableThreads());

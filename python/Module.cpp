@@ -869,6 +869,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
            const py::object& seedObject, std::optional<std::string> csv, std::optional<std::string> json,
            const std::string& ratioOf, const py::object& resamplesObject, const py::object& orbitObject, bool walkthrough,
            std::optional<std::string> recordFile) {
+            requirePath(recordFile, "bench: record");
             json = recordPath("bench", json, recordFile);
             BenchOptions o;
             o.run.scene = scene;
@@ -945,6 +946,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
            const py::object& block, const py::object& resamples, std::optional<std::string> shard,
            std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
            const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile) {
+            requirePath(recordFile, "tradeoff: record");
             json = recordPath("tradeoff", json, recordFile);
             TradeoffStudyOptions s;
             s.run.scene = scene;

@@ -92,10 +92,13 @@ fs::path ShaderLibrary::locateRoot() {
     // falling back to the build's shaders would measure (or replay) other
     // shaders than the ones asked for, and say nothing.
     if (const char* env = std::getenv("DW_SHADER_DIR"); env && *env) {
-        if (!fs::exists(fs::path(env) / "common"))
-            throw Error(std::string("DW_SHADER_DIR=") + env +
-                        " is not a shader folder (it has no common/ in it); name a copy of the project's shaders/, "
-                        "or unset it for the build's own");
+        std::error_code ec;
+        if (!fs::exists(fs::path(env) / "common", ec))
+            throw Error(std::string("DW_SHADER_DIR=") + env + " is not a shader folder (" +
+                        (!fs::exists(fs::path(env), ec)         ? "it does not exist"
+                         : !fs::is_directory(fs::path(env), ec) ? "it is not a folder"
+                                                                : "it has no common/ in it") +
+                        "); name a copy of the project's shaders/, or unset it for the build's own");
         return fs::weakly_canonical(fs::path(env));
     }
 #ifdef DW_SOURCE_SHADER_DIR

@@ -87,6 +87,18 @@ TEST(Cli, RendersPngOfTheRequestedSize) {
     EXPECT_EQ(img.height, 54);
 }
 
+// Every output render writes is checked before the frames: a --record in a
+// missing folder failed after --out was written.
+TEST(Cli, RenderRefusesAnUnwritableOutputBeforeItRenders) {
+    const fs::path out = test::tempDir() / "unwritable-record.png";
+    fs::remove(out);
+    const fs::path missing = test::tempDir() / "no-such-folder" / "r.json";
+    const Result r = run("render --scene spheres --size 16x9 --out " + out.string() + " --record " + missing.string());
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.err.find("cannot write the --record file: no folder"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 // render --check-finite (issue 10): every buffer the frame produced is read
 // back; a clean frame says how many and exits 0. (The non-zero exit naming
 // the first bad buffer is FiniteCheck's, tested in extremes_tests.)

@@ -438,7 +438,8 @@ class RecordTest(unittest.TestCase):
         for folder in (os.path.join(self.tmp.name, "no-such-shaders"), empty):
             r = run("replay", self.record, env={"DW_SHADER_DIR": folder})
             self.assertNotEqual(r.returncode, 0, r.stdout + r.stderr)
-            self.assertIn("DW_SHADER_DIR=" + folder + " is not a shader folder", r.stderr)
+            self.assertIn("DW_SHADER_DIR=" + folder + " is not a shader folder (" +
+                          ("it has no common/ in it" if folder == empty else "it does not exist"), r.stderr)
             self.assertNotIn("image: identical", r.stdout)
         # One comment edited: that file is named, before the image line;
         # the image is the same, so the exit code is 0 (the image decides).

@@ -166,6 +166,7 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, plot="p.jpg"), ValueError, "--plot writes a PNG"),
             (dict(sweep={"ssao.samples": [4, 8]}, csv="same.csv", json="same.csv"), ValueError, "same.csv"),
             (dict(sweep={"ssao.samples": [4, 8]}, record="a.json", json="b.json"), ValueError, "name two files"),
+            (dict(sweep={"ssao.samples": [4, 8]}, record=""), ValueError, "tradeoff: record"),
             (dict(sweep={"ssao.samples": [4, 8]}, progress=3), ValueError, "progress must be a callable"),
             (dict(sweep={"ssao.samples": [4, 8]}, scene=os.path.join(self.tmp.name, "missing.gltf")), dw.Error,
              "missing.gltf"),
