@@ -117,24 +117,32 @@ struct ChangedInputs {
     }
 };
 
+// Each changed, added or removed file (a scene's or a shader), named on a
+// line of its own and counted as a changed input; `removedWhy` ends the
+// removed file's line.
+void reportFileChanges(const std::string& what, const std::vector<SceneFileChange>& changes,
+                       const std::string& removedWhy, ChangedInputs& inputs) {
+    for (const SceneFileChange& c : changes) {
+        if (c.kind == SceneFileChange::Kind::Changed)
+            std::printf("%s changed: %s (sha256 %s -> %s)\n", what.c_str(), c.path.c_str(),
+                        shortHash(c.oldSha256).c_str(), shortHash(c.newSha256).c_str());
+        else if (c.kind == SceneFileChange::Kind::Added)
+            std::printf("%s added: %s (sha256 %s; the record does not list it)\n", what.c_str(), c.path.c_str(),
+                        shortHash(c.newSha256).c_str());
+        else
+            std::printf("%s removed: %s (recorded sha256 %s; %s)\n", what.c_str(), c.path.c_str(),
+                        shortHash(c.oldSha256).c_str(), removedWhy.c_str());
+        inputs.add(what + " " + c.path);
+    }
+}
+
 // The record's shader files against those the replay compiled (`now`).
 void reportShaders(const ExperimentRecord& old, const RecordedShaders& now, ChangedInputs& inputs) {
     if (!old.shaders.present) {
         std::printf("record holds no shader hashes (written before records kept them)\n");
         return;
     }
-    for (const SceneFileChange& c : compareShaderFiles(old.shaders, now)) {
-        if (c.kind == SceneFileChange::Kind::Changed)
-            std::printf("shader file changed: %s (sha256 %s -> %s)\n", c.path.c_str(), shortHash(c.oldSha256).c_str(),
-                        shortHash(c.newSha256).c_str());
-        else if (c.kind == SceneFileChange::Kind::Added)
-            std::printf("shader file added: %s (sha256 %s; the record does not list it)\n", c.path.c_str(),
-                        shortHash(c.newSha256).c_str());
-        else
-            std::printf("shader file removed: %s (recorded sha256 %s; not in %s)\n", c.path.c_str(),
-                        shortHash(c.oldSha256).c_str(), now.folder.c_str());
-        inputs.add("shader file " + c.path);
-    }
+    reportFileChanges("shader file", compareShaderFiles(old.shaders, now), "not in " + now.folder, inputs);
 }
 
 // The recorded knobs this build takes, as --set assignments; the others are
@@ -491,18 +499,9 @@ int runReplayCommand(int argc, char** argv) {
         // names is reported, never opened.
         Scene loaded = loadScene(old.sceneSpec);
         ChangedInputs inputs;
-        for (const SceneFileChange& c : compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source)) {
-            if (c.kind == SceneFileChange::Kind::Changed)
-                std::printf("scene file changed: %s (sha256 %s -> %s)\n", c.path.c_str(), shortHash(c.oldSha256).c_str(),
-                            shortHash(c.newSha256).c_str());
-            else if (c.kind == SceneFileChange::Kind::Added)
-                std::printf("scene file added: %s (sha256 %s; the record does not list it)\n", c.path.c_str(),
-                            shortHash(c.newSha256).c_str());
-            else
-                std::printf("scene file removed: %s (recorded sha256 %s; the scene no longer reads it)\n",
-                            c.path.c_str(), shortHash(c.oldSha256).c_str());
-            inputs.add("scene file " + c.path);
-        }
+        reportFileChanges("scene file",
+                          compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source),
+                          "the scene no longer reads it", inputs);
         const std::vector<std::string> sets = restoredKnobs(old, inputs);
         for (const auto& [k, v] : buildFields())
             for (const auto& [ok, ov] : old.build)
