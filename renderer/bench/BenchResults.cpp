@@ -20,11 +20,15 @@ namespace dw {
 
 namespace {
 
-std::string number(double v, const char* format = "%.4f") {
+// The shortest text that reads back as the same double: a CSV read back (by
+// bench merge, --resume) holds the run's numbers to the last digit, so merged
+// shards give the unsharded run's figures exactly (%.4f rounded the lights
+// per pixel and the timings).
+std::string number(double v) {
     if (!std::isfinite(v)) return "";
     char text[64];
-    std::snprintf(text, sizeof(text), format, v);
-    return text;
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : "";
 }
 
 const char* const kLeading[] = {"config", "size", "lights"};
@@ -163,11 +167,7 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
 BenchResults BenchResults::readCsv(const std::string& path, bool cutLastLine) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a folder, not a bench samples CSV");
-    std::ifstream f(path);
-    if (!f) throw FileError(path, "cannot open the bench CSV");
-    std::stringstream text;
-    text << f.rdbuf();
-    return parseCsv(text.str(), path, cutLastLine);
+    return parseCsv(readWholeFile(path, "cannot open the bench CSV", "cannot open the bench CSV"), path, cutLastLine);
 }
 
 void writeBenchFile(const std::string& path, const std::string& text, const std::string& what) {

@@ -1,4 +1,5 @@
 #include "renderer/bench/TradeoffTable.h"
+#include "renderer/io/TextFile.h"
 
 #include <algorithm>
 #include <charconv>
@@ -240,11 +241,7 @@ TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string
 TradeoffTable TradeoffTable::readCsv(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a folder, not a tradeoff CSV");
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw FileError(path, "cannot open the tradeoff CSV");
-    std::stringstream text;
-    text << f.rdbuf();
-    return parseCsv(text.str(), path);
+    return parseCsv(readWholeFile(path, "cannot open the tradeoff CSV", "cannot open the tradeoff CSV"), path);
 }
 
 void TradeoffTable::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "tradeoff CSV"); }

@@ -57,8 +57,16 @@ std::string oneLine(const std::string& text) {
         line.clear();
     };
     for (char c : text) {
-        if (c == '\n' || c == '\r') flush();
-        else line += c;
+        if (c == '\n' || c == '\r') {
+            flush();
+        } else if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f) {
+            // A control byte (a damaged file's attribute name, quoted by the decoder) as \xNN.
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned char>(c));
+            line += hex;
+        } else {
+            line += c;
+        }
     }
     flush();
     return out;
@@ -176,6 +184,27 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
     });
 }
 
+namespace {
+
+// Why a decode failed when the decoder says nothing (OIIO's PFM reader on a
+// file cut short): the file's size against what its pixels need.
+std::string decodeFailure(OIIO::ImageInput& in, const std::string& path) {
+    const std::string said = oneLine(in.geterror());
+    if (!said.empty()) return said;
+    const OIIO::ImageSpec& spec = in.spec();
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    const std::uint64_t pixelBytes = static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) *
+                                     static_cast<std::uint64_t>(spec.nchannels) * spec.format.size();
+    if (!ec && size < pixelBytes)
+        return "the file is cut short: it is " + std::to_string(size) + " bytes, and its " + std::to_string(spec.width) +
+               " x " + std::to_string(spec.height) + " pixels of " + std::to_string(spec.nchannels) + " channel(s) take " +
+               std::to_string(pixelBytes) + " bytes after the header";
+    return std::string("the ") + in.format_name() + " decoder failed without saying why (a damaged or cut-short file)";
+}
+
+}  // namespace
+
 FloatImage loadImageFloat(const std::string& path) {
     if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
     checkExrFile(path, 4);  // before OpenEXR allocates from the header
@@ -192,8 +221,22 @@ FloatImage loadImageFloat(const std::string& path) {
         img.channels = spec.nchannels;
         img.pixels.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
         if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-            throw FileError(path, "cannot decode image: " + oneLine(in->geterror()));
+            throw FileError(path, "cannot decode image: " + decodeFailure(*in, path));
         return img;
+    });
+}
+
+ImageShape readImageShape(const std::string& path) {
+    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    checkExrFile(path, 4);  // a damaged OpenEXR header is refused before OpenEXR allocates from it
+    applyLimits();
+    StderrCapture quiet;
+    return guarded(path, [&] {
+        auto in = OIIO::ImageInput::open(path);
+        if (!in) throw FileError(path, "cannot read image: " + openError(OIIO::geterror()));
+        const OIIO::ImageSpec& spec = in->spec();
+        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) throw FileError(path, "image has no pixels");
+        return ImageShape{spec.width, spec.height, spec.nchannels};
     });
 }
 

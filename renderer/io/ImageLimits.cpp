@@ -26,6 +26,24 @@ std::string limitText(std::uint64_t limit) {
            "=MB to raise it)";
 }
 
+// A name read from a damaged header, fit for a one-line message: bytes
+// outside printable ASCII (and the backslash) as \xNN. A damaged EXR's
+// attribute "name" is any bytes up to a zero; printed raw it broke the
+// terminal's line (and the CLI's one-line promise).
+std::string escaped(const std::string& raw) {
+    std::string out;
+    for (unsigned char c : raw) {
+        if (c >= 0x20 && c < 0x7f && c != '\\') {
+            out.push_back(static_cast<char>(c));
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
 // The header's bytes ran out before its end: in the part of the file read so
 // far (read more), or in the whole file (cut short).
 struct NeedMore {};
@@ -169,8 +187,9 @@ std::size_t checkExrHeader(const std::uint8_t* bytes, std::size_t size, std::uin
                 const std::string attr = c.text(maxName, "an attribute name");
                 if (attr.empty()) break;
                 empty = false;
-                const std::string where = "attribute '" + attr + "'";
+                const std::string where = "attribute '" + escaped(attr) + "'";
                 const std::string type = c.text(maxName, "the type of " + where);
+                const std::string typeShown = escaped(type);
                 const std::int32_t length = c.i32("the size of " + where);
                 if (length < 0)
                     throw FileError(name, "the OpenEXR header is damaged: " + where + " has a negative size (" +
@@ -180,7 +199,7 @@ std::size_t checkExrHeader(const std::uint8_t* bytes, std::size_t size, std::uin
                 auto value = [&](std::size_t want) {
                     if (static_cast<std::size_t>(length) < want)
                         throw FileError(name, "the OpenEXR header is damaged: " + where + " is " + std::to_string(length) +
-                                                  " bytes, too short for a " + type);
+                                                  " bytes, too short for a " + typeShown);
                 };
                 if ((attr == "dataWindow" || attr == "displayWindow") && type == "box2i") {
                     value(16);
@@ -195,8 +214,9 @@ std::size_t checkExrHeader(const std::uint8_t* bytes, std::size_t size, std::uin
                     for (;;) {
                         if (c.at() >= start + static_cast<std::size_t>(length))
                             throw FileError(name, "the OpenEXR header is damaged: the channel list runs past its attribute");
-                        const std::string ch = c.text(maxName, "a channel name");
-                        if (ch.empty()) break;
+                        const std::string rawName = c.text(maxName, "a channel name");
+                        if (rawName.empty()) break;
+                        const std::string ch = escaped(rawName);
                         const std::int32_t pixelType = c.i32("channel '" + ch + "'");
                         c.skip(4, "channel '" + ch + "'");
                         const std::int32_t xs = c.i32("channel '" + ch + "'"), ys = c.i32("channel '" + ch + "'");

@@ -28,6 +28,15 @@ std::uint64_t imageMemoryLimit();
 void checkImageBudget(std::uint64_t width, std::uint64_t height, int channels, std::uint64_t bytesPerPixel,
                       const std::string& name, const std::string& what = "the image");
 
+// An image file's width, height and channel count from its header alone (no
+// pixel is decoded: a caller checks what decoding and working on it would
+// take first; compare does, app/CompareInput). Throws FileError (missing,
+// unreadable, a damaged header). Defined with the decoders, renderer/io/ImageIO.cpp.
+struct ImageShape {
+    int width = 0, height = 0, channels = 0;
+};
+ImageShape readImageShape(const std::string& path);
+
 // True when the bytes start with OpenEXR's magic number.
 bool isExr(const std::uint8_t* bytes, std::size_t size);
 

@@ -1,6 +1,11 @@
 #include "renderer/io/TextFile.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <cstdio>
 #include <filesystem>
@@ -11,12 +16,54 @@
 
 namespace dw {
 
-std::string readWholeFile(const std::string& path, const std::string& notFound, const std::string& unreadable) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path, std::filesystem::exists(path) ? unreadable : notFound);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+namespace {
+
+// "2000 bytes", "300.0 MB".
+std::string sizeText(std::uint64_t bytes) {
+    if (bytes < (1u << 20)) return std::to_string(bytes) + " bytes";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return buf;
+}
+
+// Closes the descriptor on every path out.
+struct Descriptor {
+    int fd;
+    ~Descriptor() {
+        if (fd >= 0) ::close(fd);
+    }
+};
+
+}  // namespace
+
+std::string readWholeFile(const std::string& path, const std::string& notFound, const std::string& unreadable,
+                          std::uint64_t limit) {
+    // O_NONBLOCK: opening a FIFO without a writer would wait for one forever.
+    const Descriptor in{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+    if (in.fd < 0) throw FileError(path, errno == ENOENT ? notFound : unreadable + " (" + std::strerror(errno) + ")");
+    struct stat st {};
+    if (::fstat(in.fd, &st) != 0) throw FileError(path, unreadable + " (" + std::strerror(errno) + ")");
+    if (S_ISDIR(st.st_mode)) throw FileError(path, unreadable + ": it is a folder, not a file");
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+        throw FileError(path, unreadable + ": it is a device, not a file (a device such as /dev/zero never ends)");
+    const std::string limitText = "over the limit of " + sizeText(limit) + " for a file read whole";
+    if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > limit)
+        throw FileError(path, unreadable + ": it is " + sizeText(static_cast<std::uint64_t>(st.st_size)) + ", " + limitText);
+    // Blocking reads from here: a pipe's writer is waited for, but a pipe
+    // with none reads as its end.
+    ::fcntl(in.fd, F_SETFL, ::fcntl(in.fd, F_GETFL) & ~O_NONBLOCK);
+    std::string bytes;
+    if (S_ISREG(st.st_mode)) bytes.reserve(static_cast<std::size_t>(st.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(in.fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw FileError(path, unreadable + " (" + std::strerror(errno) + ")");
+        if (n == 0) return bytes;
+        if (bytes.size() + static_cast<std::uint64_t>(n) > limit)
+            throw FileError(path, unreadable + ": it holds more than " + sizeText(limit) + ", " + limitText);
+        bytes.append(buffer, static_cast<std::size_t>(n));
+    }
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {

@@ -2,14 +2,27 @@
 // Whole-file reads and JSON error positions, shared by the scene, glTF,
 // preset and shader loaders so their errors read alike.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace dw {
 
-// The file's bytes. Throws FileError(path, notFound) when it does not exist,
-// FileError(path, unreadable) when it cannot be opened.
-std::string readWholeFile(const std::string& path, const std::string& notFound, const std::string& unreadable);
+// The most a text file read whole may hold (scene JSON, presets, records,
+// shaders, CSVs, events): 256 MiB. Its parse takes several times as much.
+constexpr std::uint64_t kTextFileLimit = 256ull << 20;
+// A glTF binary (.glb) declares its length in 32 bits: at most 4 GiB.
+constexpr std::uint64_t kBinaryFileLimit = 4ull << 30;
+
+// The file's bytes, at most `limit` of them. Throws FileError(path, notFound)
+// when it does not exist, FileError(path, unreadable) when it cannot be
+// opened, and FileError(path, "... is a folder" / "... is a device" / "...
+// over the limit of N MB") for a folder, a device (/dev/zero, a terminal:
+// never ends or never answers), a file larger than `limit` (refused from its
+// size before it is read) or a pipe that gives more than `limit`. A pipe
+// with no writer reads as empty; nothing blocks on opening.
+std::string readWholeFile(const std::string& path, const std::string& notFound, const std::string& unreadable,
+                          std::uint64_t limit = kTextFileLimit);
 
 // Replaces `path` with `text` without ever leaving it half written: a
 // temporary file in the same folder, flushed and synced, then renamed over

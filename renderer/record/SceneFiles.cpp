@@ -11,6 +11,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/io/JsonGuard.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/record/ExperimentRecord.h"
 
 namespace dw {
@@ -31,9 +32,13 @@ std::string sha256Hex(const void* data, size_t size) {
 }
 
 std::string sha256OfFile(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) return "";
-    const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    // Bounded as the loaders' reads are: a device or an endless pipe is no scene file.
+    std::string bytes;
+    try {
+        bytes = readWholeFile(path, "not found", "cannot read", kBinaryFileLimit);
+    } catch (const FileError&) {
+        return "";
+    }
     return sha256Hex(bytes.data(), bytes.size());
 }
 

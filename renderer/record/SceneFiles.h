@@ -15,7 +15,7 @@ namespace dw {
 
 // Hex sha256 of bytes (OpenSSL's EVP).
 std::string sha256Hex(const void* data, size_t size);
-// "" when the file cannot be read.
+// "" when the file cannot be read (a device, or more than kBinaryFileLimit bytes).
 std::string sha256OfFile(const std::string& path);
 
 // The files `scene` read, each with its current sha256.

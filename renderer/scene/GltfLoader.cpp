@@ -117,7 +117,7 @@ public:
     }
 
     void load() {
-        const std::string bytes = precheck(readWholeFile(path_, "file not found", "cannot open file"));
+        const std::string bytes = precheck(readWholeFile(path_, "file not found", "cannot open file", kBinaryFileLimit));
         tinygltf::TinyGLTF loader;
         loader.SetImageLoader(&GltfMaterialImporter::decodeImageCallback, &materials_);
         std::string err, warn;

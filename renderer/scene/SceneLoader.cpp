@@ -1,4 +1,5 @@
 #include "renderer/scene/SceneLoader.h"
+#include "renderer/scene/SceneFileKind.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -42,7 +43,10 @@ Scene loadScene(const std::string& spec) {
     if (spec.rfind("builtin:", 0) == 0 && isBuiltinScene(spec.substr(8))) return makeBuiltinScene(spec.substr(8));
     std::string ext = fs::path(spec).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    if (ext == ".json") return loadSceneJson(spec);
+    if (ext == ".json") {
+        refuseNonSceneFile(spec);  // a record or a preset would load as an empty scene
+        return loadSceneJson(spec);
+    }
     if (ext == ".gltf" || ext == ".glb") {
         Scene scene;
         scene.source = spec;

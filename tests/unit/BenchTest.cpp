@@ -288,3 +288,37 @@ TEST(BenchSummary, TablesNameEachColumnOnceAndShowWhatTheyCompare) {
     EXPECT_NE(markdownPassTable(r, s).find("| lights (pass) | lighting | frame |"), std::string::npos)
         << markdownPassTable(r, s);
 }
+
+TEST(BenchResults, CsvKeepsEveryDigitSoMergedShardsEqualTheUnshardedRun) {
+    // Lights per pixel and timings as a run measures them: not 4-decimal numbers.
+    const BenchGrid g = smallGrid();
+    BenchResults all = synthetic(g, 3, [](const BenchConfig& c) { return 1.0 + c.lights / 7.0; });
+    for (auto& c : all.configs) {
+        c.lpp = c.config.lights / 3.0 + 1e-9;
+        c.lppLit = c.config.lights * 0.123456789012345;
+    }
+    const BenchResults back = BenchResults::parseCsv(all.csv(), "all.csv");
+    ASSERT_EQ(back.configs.size(), all.configs.size());
+    for (std::size_t i = 0; i < all.configs.size(); ++i) {
+        EXPECT_EQ(back.configs[i].lpp, all.configs[i].lpp) << i;  // bit for bit, not 0.3333
+        EXPECT_EQ(back.configs[i].lppLit, all.configs[i].lppLit) << i;
+    }
+    ASSERT_EQ(back.samples.size(), all.samples.size());
+    for (std::size_t i = 0; i < all.samples.size(); ++i) {
+        EXPECT_EQ(back.samples[i].gpuMs, all.samples[i].gpuMs) << i;
+        EXPECT_EQ(back.samples[i].cpuMs, all.samples[i].cpuMs) << i;
+    }
+    // Two shards through their CSVs merge to the unsharded run's values, digit for digit.
+    BenchResults parts[2];
+    for (int i = 0; i < 2; ++i) {
+        parts[i].knobAxes = all.knobAxes;
+        for (const auto& c : all.configs)
+            if (c.config.index % 2 == i) parts[i].configs.push_back(c);
+        for (const auto& s : all.samples)
+            if (s.config % 2 == i) parts[i].samples.push_back(s);
+    }
+    const BenchResults merged = BenchResults::merge(
+        {BenchResults::parseCsv(parts[0].csv(), "a.csv"), BenchResults::parseCsv(parts[1].csv(), "b.csv")}, {"a.csv", "b.csv"});
+    for (std::size_t i = 0; i < all.configs.size(); ++i) EXPECT_EQ(merged.configs[i].lpp, all.configs[i].lpp) << i;
+    for (std::size_t i = 0; i < all.samples.size(); ++i) EXPECT_EQ(merged.samples[i].gpuMs, all.samples[i].gpuMs) << i;
+}
