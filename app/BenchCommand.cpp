@@ -94,7 +94,8 @@ std::string benchUsage() {
            "               the passes; a series no configuration recorded is an error after the run\n"
            "  --resume     the CSV of an interrupted run of the same grid (samples are written as they are\n"
            "               measured): its counted frames are kept, the rest measured\n" +
-           SweepOptions::help(kBench) + SweepMergeOptions::help(kBench);
+           SweepOptions::help(kBench) + SweepMergeOptions::help(kBench) + CommandLine::rangesHelp("bench") +
+           CommandLine::rangesHelp("bench merge");
 }
 
 // What the run ran on, besides the GL strings the runner reads.
@@ -196,7 +197,7 @@ void checkRatioSeriesNamesAPass(const std::string& series) {
 }
 
 int runMerge(int argc, char** argv) {
-    CommandLine cl(argc, argv, 3);
+    CommandLine cl(argc, argv, 3, "bench merge");
     if (cl.flag("--help")) {
         std::cout << benchUsage();
         return 0;
@@ -236,22 +237,11 @@ int runMerge(int argc, char** argv) {
     return plotted;
 }
 
-std::vector<int> parseIntList(const std::string& flag, const std::string& text, int min, int max) {
-    std::vector<int> values;
-    for (const auto& item : CommandLine::parseList(flag, text)) {
-        const int v = CommandLine::parseInt(flag, item, min, max);
-        if (std::find(values.begin(), values.end(), v) != values.end())
-            throw UsageError(flag + ": '" + item + "' is given twice");
-        values.push_back(v);
-    }
-    return values;
-}
-
 }  // namespace
 
 int runBenchCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "bench");
     if (cl.flag("--help")) {
         std::cout << benchUsage();
         return 0;
@@ -259,7 +249,7 @@ int runBenchCommand(int argc, char** argv) {
     BenchOptions o;
     o.run = cl.runConfig();
     o.grid.sizes = SweepOptions::readSizes(cl, true);
-    if (const auto lights = cl.value("--lights")) o.grid.lights = parseIntList("--lights", *lights, limits::kBenchLights.min, limits::kBenchLights.max);
+    o.grid.lights = cl.wholeList("--lights");
     const SweepOptions so = SweepOptions::read(cl, kBench);
     o.grid.knobAxes = so.sweeps;
     o.exclude = so.exclusion;
@@ -269,24 +259,22 @@ int runBenchCommand(int argc, char** argv) {
     o.orbit = so.orbit;
     o.walkthrough = so.walkthrough;
     o.shard = so.shard;
-    o.seed = static_cast<std::uint32_t>(CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), limits::kSeed.min, limits::kSeed.max));
-    if (const auto r = cl.value("--light-radius")) {
-        char* end = nullptr;
-        o.lightRadius = std::strtof(r->c_str(), &end);
-        if (end != r->c_str() + r->size() || r->empty())
-            throw UsageError("--light-radius expects a positive number, got '" + *r + "'");
-        if (!std::isfinite(o.lightRadius))
-            throw UsageError("--light-radius " + *r + " does not fit a 32-bit float (largest about 3.4e38)");
+    o.seed = static_cast<std::uint32_t>(cl.whole("--seed", 1));
+    const std::optional<double> lightRadius = cl.real("--light-radius");
+    if (lightRadius) {
+        o.lightRadius = static_cast<float>(*lightRadius);
+        // Above 0 as a double, but below the smallest 32-bit float it is 0.
         if (!(o.lightRadius > 0.0f))
-            throw UsageError("--light-radius must be above 0 (and at least the smallest 32-bit float), got '" + *r + "'");
+            throw UsageError("--light-radius must be at least the smallest 32-bit float (about 1.4e-45), got '" +
+                             *cl.value("--light-radius") + "'");
     }
     // Options that change nothing without another one: said, not ignored.
-    if (cl.value("--light-radius") && !cl.value("--lights"))
+    if (lightRadius && o.grid.lights.empty())
         std::fprintf(stderr, "bench: note: --light-radius sizes the generated lights; without --lights the scene's "
                              "own lights are used and it changes nothing\n");
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
-    o.lppPoses = CommandLine::parseInt("--lpp-poses", cl.value("--lpp-poses").value_or("4"), limits::kLppPoses.min, limits::kLppPoses.max);
+    o.lppPoses = cl.whole("--lpp-poses", 4);
     o.lpp = !cl.flag("--no-lpp");
     const std::string shardText = so.shardText();
     const std::string& csv = so.csv;

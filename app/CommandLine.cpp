@@ -3,17 +3,20 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <stdexcept>
 #include <cstring>
 
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 
 #include "renderer/bench/BenchGrid.h"
 
 namespace dw {
 
-CommandLine::CommandLine(int argc, char** argv, int first) {
+CommandLine::CommandLine(int argc, char** argv, int first, std::string command) : command_(std::move(command)) {
     for (int i = first; i < argc; ++i) {
         std::string a = argv[i];
         if (a.rfind("--", 0) == 0 && a.size() > 2) {
@@ -22,16 +25,30 @@ CommandLine::CommandLine(int argc, char** argv, int first) {
             if (eq != std::string::npos) {
                 arg.name = a.substr(0, eq);
                 arg.value = a.substr(eq + 1);
+                arg.inlineValue = true;
             } else {
                 arg.name = a;
-                // Takes the next word as its value unless that is another flag.
-                if (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) arg.value = argv[++i];
+                // Takes the next word as its value unless that is another flag;
+                // flag() gives it back in its place when the flag is bare.
+                if (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) {
+                    arg.value = argv[++i];
+                    arg.valueIndex = i;
+                }
             }
             args_.push_back(arg);
         } else {
-            positional_.push_back(a);
+            positional_.emplace_back(i, a);
         }
     }
+}
+
+std::vector<std::string> CommandLine::positional() const {
+    positionalRead_ = true;
+    auto sorted = positional_;
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::string> words;
+    for (auto& [index, word] : sorted) words.push_back(std::move(word));
+    return words;
 }
 
 std::optional<std::string> CommandLine::value(const std::string& flag) {
@@ -60,9 +77,12 @@ bool CommandLine::flag(const std::string& flag) {
     bool seen = false;
     for (auto& a : args_)
         if (a.name == flag) {
-            // A bare flag may have swallowed a positional word: give it back.
+            if (a.value && a.inlineValue) throw UsageError(flag + " takes no value, got '" + a.name + "=" + *a.value + "'");
+            // A bare flag may have taken a positional word: give it back where it stood.
             if (a.value) {
-                positional_.push_back(*a.value);
+                if (positionalRead_)
+                    throw std::logic_error("CommandLine: " + flag + " declared after positional() was read");
+                positional_.emplace_back(a.valueIndex, *a.value);
                 a.value.reset();
             }
             a.used = true;
@@ -100,21 +120,132 @@ std::vector<std::string> CommandLine::parseList(const std::string& flag, const s
     }
 }
 
-int CommandLine::parseInt(const std::string& flag, const std::string& text, int min, int max) {
-    int v = 0;
-    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || p != text.data() + text.size())
-        throw UsageError(flag + " expects a whole number, got '" + text + "'");
-    if (v < min || v > max)
-        throw UsageError(flag + " must be between " + std::to_string(min) + " and " + std::to_string(max));
+namespace {
+
+std::string numberText(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+// "a whole number from 1 to 100000 (counted frames)".
+std::string rangeText(const NumericOption& o) {
+    std::string s = o.whole() ? "a whole number " : "a number ";
+    s += o.minOpen ? "above " + numberText(o.min) + " and at most " + numberText(o.max)
+                   : "from " + numberText(o.min) + " to " + numberText(o.max);
+    return s + " (" + std::string(o.what) + ")";
+}
+
+// One whole number of `o`'s range; `flag` names it in the message (e.g. "--size width").
+int parseWhole(const NumericOption& o, const std::string& flag, const std::string& text, const std::string& given) {
+    long long v = 0;
+    const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec == std::errc::result_out_of_range || (ec == std::errc() && p == text.data() + text.size() && !o.holds(static_cast<double>(v))))
+        throw UsageError(flag + " must be " + rangeText(o) + ", got '" + given + "'");
+    if (ec != std::errc() || p != text.data() + text.size() || text.empty())
+        throw UsageError(flag + " expects " + rangeText(o) + ", got '" + given + "'");
+    return static_cast<int>(v);
+}
+
+std::pair<int, int> parseSizeText(const NumericOption& o, const std::string& flag, const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos)
+        throw UsageError(flag + " expects WIDTHxHEIGHT (e.g. 1280x720), each " + rangeText(o) + ", got '" + text + "'");
+    return {parseWhole(o, flag + " width", text.substr(0, x), text), parseWhole(o, flag + " height", text.substr(x + 1), text)};
+}
+
+}  // namespace
+
+const NumericOption& CommandLine::numeric(const std::string& flag, OptionForm form) const {
+    const NumericOption* o = findNumericOption(command_, flag);
+    if (!o || o->form != form)
+        throw std::logic_error("CommandLine: " + command_ + " " + flag + " is not declared in limits::kNumericOptions as read");
+    return *o;
+}
+
+std::optional<int> CommandLine::whole(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::Whole);
+    const auto text = value(flag);
+    if (!text) return std::nullopt;
+    return parseWhole(o, flag, *text, *text);
+}
+
+std::optional<double> CommandLine::real(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::Real);
+    const auto text = value(flag);
+    if (!text) return std::nullopt;
+    double v = 0;
+    const auto [p, ec] = std::from_chars(text->data(), text->data() + text->size(), v);
+    const bool parsed = !text->empty() && p == text->data() + text->size() &&
+                        (ec == std::errc() || ec == std::errc::result_out_of_range);
+    if (!parsed) throw UsageError(flag + " expects " + rangeText(o) + ", got '" + *text + "'");
+    if (ec != std::errc() || !o.holds(v)) throw UsageError(flag + " must be " + rangeText(o) + ", got '" + *text + "'");
     return v;
 }
 
-std::pair<int, int> CommandLine::parseSize(const std::string& text, const std::string& flag) {
-    const auto x = text.find('x');
-    if (x == std::string::npos) throw UsageError(flag + " expects WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
-    return {parseInt(flag + " width", text.substr(0, x), limits::kSize.min, limits::kSize.max),
-            parseInt(flag + " height", text.substr(x + 1), limits::kSize.min, limits::kSize.max)};
+std::optional<std::pair<int, int>> CommandLine::size(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::Size);
+    const auto text = value(flag);
+    if (!text) return std::nullopt;
+    return parseSizeText(o, flag, *text);
+}
+
+std::vector<int> CommandLine::wholeList(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::WholeList);
+    std::vector<int> values;
+    const auto text = value(flag);
+    if (!text) return values;
+    for (const auto& item : parseList(flag, *text)) {
+        const int v = parseWhole(o, flag, item, item);
+        if (std::find(values.begin(), values.end(), v) != values.end())
+            throw UsageError(flag + ": '" + item + "' is given twice");
+        values.push_back(v);
+    }
+    return values;
+}
+
+std::vector<std::pair<int, int>> CommandLine::sizeList(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::SizeList);
+    std::vector<std::pair<int, int>> sizes;
+    const auto text = value(flag);
+    if (!text) return sizes;
+    for (const auto& item : parseList(flag, *text)) {
+        const auto size = parseSizeText(o, flag, item);
+        if (std::find(sizes.begin(), sizes.end(), size) != sizes.end())
+            throw UsageError(flag + ": '" + item + "' is given twice");
+        sizes.push_back(size);
+    }
+    return sizes;
+}
+
+std::optional<std::pair<int, int>> CommandLine::shard(const std::string& flag) {
+    const NumericOption& o = numeric(flag, OptionForm::Shard);
+    const auto text = value(flag);
+    if (!text) return std::nullopt;
+    const auto slash = text->find('/');
+    const std::string form = flag + " expects i/n with 0 <= i < n (e.g. 0/4), n " + rangeText(o) + ", got '" + *text + "'";
+    if (slash == std::string::npos) throw UsageError(form);
+    const int n = parseWhole(o, flag + " n", text->substr(slash + 1), *text);
+    const NumericOption index{o.command, o.flag, OptionForm::Whole, OptionRange{0, n - 1}, "shard index, below n"};
+    return std::pair{parseWhole(index, flag + " i", text->substr(0, slash), *text), n};
+}
+
+std::string CommandLine::rangesHelp(const std::string& command) {
+    std::string s;
+    for (const NumericOption& o : limits::kNumericOptions) {
+        if (o.command != command) continue;
+        char line[160];
+        const std::string range = o.minOpen ? "> " + numberText(o.min) + " .. " + numberText(o.max)
+                                            : numberText(o.min) + " .. " + numberText(o.max);
+        std::snprintf(line, sizeof line, "  %-14s %s%s (%s)\n", std::string(o.flag).c_str(), range.c_str(),
+                      o.form == OptionForm::Size || o.form == OptionForm::SizeList ? " each of WxH"
+                      : o.form == OptionForm::Shard                                 ? " for n of i/n"
+                      : o.form == OptionForm::WholeList                             ? " each"
+                                                                                    : "",
+                      std::string(o.what).c_str());
+        s += line;
+    }
+    return s.empty() ? s : command + "'s numeric options (outside its range, or not a number: a usage error naming it):\n" + s;
 }
 
 void CommandLine::requireDistinctFiles(const NamedFiles& writes, const NamedFiles& reads) {

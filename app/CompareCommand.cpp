@@ -67,21 +67,6 @@ constexpr const char* kUsage =
     "exit: 0 pass, 1 warn, 2 fail, 3 the images differ in size or channels (or HDR/LDR kind),\n"
     "      4 a file cannot be read (one line naming it), 5 any other error (usage, a non-finite pixel)\n";
 
-double parseNumber(const std::string& flag, const std::string& text, double min) {
-    double v = 0;
-    const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
-        throw UsageError(flag + " expects a number, got '" + text + "'");
-    if (v < min) throw UsageError(flag + " must be at least " + std::to_string(min) + ", got '" + text + "'");
-    return v;
-}
-
-std::optional<double> optionalNumber(CommandLine& cl, const std::string& flag, double min) {
-    const auto v = cl.value(flag);
-    if (!v) return std::nullopt;
-    return parseNumber(flag, *v, min);
-}
-
 // "a=1,b=2" -> {"a=1", "b=2"}; a piece without '=' continues the value before
 // it (a knob value with a comma in it).
 std::vector<std::string> splitSets(const std::string& flag, const std::vector<std::string>& values) {
@@ -240,9 +225,9 @@ nlohmann::json reportJson(const CompareInput& inA, const CompareImage& a, const 
 }
 
 int compare(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "compare");
     if (cl.flag("--help")) {
-        std::cout << kUsage;
+        std::cout << kUsage << CommandLine::rangesHelp("compare");
         return 0;
     }
     // An input file that cannot be read (here: the preset) exits 4, as an image does.
@@ -256,30 +241,28 @@ int compare(int argc, char** argv) {
     } catch (const FileError& e) {
         return unreadable(e);
     }
-    const auto size = cl.value("--size");
+    const auto size = cl.size();
     const auto bufferFlag = cl.value("--buffer");
-    const auto framesFlag = cl.value("--frames");
+    const auto framesFlag = cl.whole("--frames");
     const std::vector<std::string> aSets = splitSets("--a", cl.values("--a"));
     const std::vector<std::string> bSets = splitSets("--b", cl.values("--b"));
     const auto against = cl.value("--against");
-    const auto aoRaysFlag = cl.value("--ao-rays");
+    const auto aoRaysFlag = cl.whole("--ao-rays");
     const auto errorMap = cl.value("--error-map");
     auto heatMap = cl.value("--heat-map");
     const auto json = cl.value("--json");
     ComparisonSettings settings;
-    settings.failThreshold = optionalNumber(cl, "--fail", 0).value_or(1e-6);
-    settings.warnThreshold = optionalNumber(cl, "--warn", 0).value_or(1e-6);
+    // Each held to its range in limits::kNumericOptions (renderer/OptionLimits.h).
+    settings.failThreshold = cl.real("--fail").value_or(1e-6);
+    settings.warnThreshold = cl.real("--warn").value_or(1e-6);
     ComparisonGates gates;
-    gates.failPercent = optionalNumber(cl, "--failpercent", 0).value_or(0);
-    gates.warnPercent = optionalNumber(cl, "--warnpercent", 0).value_or(0);
-    gates.hardFail = optionalNumber(cl, "--hardfail", 0).value_or(gates.hardFail);
-    gates.hardWarn = optionalNumber(cl, "--hardwarn", 0).value_or(gates.hardWarn);
-    gates.failFlip = optionalNumber(cl, "--fail-flip", 0);
-    gates.failSsim = optionalNumber(cl, "--fail-ssim", -1);
-    if (const auto ppd = optionalNumber(cl, "--ppd", 0)) {
-        if (*ppd <= 0) throw UsageError("--ppd must be greater than 0");
-        settings.flip.pixelsPerDegree = *ppd;
-    }
+    gates.failPercent = cl.real("--failpercent").value_or(0);
+    gates.warnPercent = cl.real("--warnpercent").value_or(0);
+    gates.hardFail = cl.real("--hardfail").value_or(gates.hardFail);
+    gates.hardWarn = cl.real("--hardwarn").value_or(gates.hardWarn);
+    gates.failFlip = cl.real("--fail-flip");
+    gates.failSsim = cl.real("--fail-ssim");
+    if (const auto ppd = cl.real("--ppd")) settings.flip.pixelsPerDegree = *ppd;
     const bool forceHdr = cl.flag("--hdr"), forceLdr = cl.flag("--ldr");
     cl.finish("compare");
     if (forceHdr && forceLdr) throw UsageError("--hdr and --ldr cannot both be given");
@@ -298,8 +281,11 @@ int compare(int argc, char** argv) {
         } catch (const FileError& e) {
             return unreadable(e);
         }
-        std::tie(base.width, base.height) = CommandLine::parseSize(size.value_or("1280x720"));
-        base.frames = CommandLine::parseInt("--frames", framesFlag.value_or("1"), 1, 1000);
+        std::tie(base.width, base.height) = size.value_or(std::pair{1280, 720});
+        // Renders are held to the image memory budget as files are (RGBA read back).
+        if (const std::string why = CompareInputs::memoryRefusal(base.width, base.height, 4); !why.empty())
+            throw UsageError("--size " + std::to_string(base.width) + "x" + std::to_string(base.height) + ": " + why);
+        base.frames = framesFlag.value_or(1);
         for (auto* side : {&inA, &inB}) {
             side->kind = CompareInput::Kind::Render;
             side->run = base;
@@ -315,7 +301,7 @@ int compare(int argc, char** argv) {
             inA.kind = CompareInput::Kind::Reference;
             inA.label = "reference";
             inA.run.sets = inB.run.sets;  // the model's knobs are the render's
-            inA.aoRays = CommandLine::parseInt("--ao-rays", aoRaysFlag.value_or("64"), 1, 1 << 20);
+            inA.aoRays = aoRaysFlag.value_or(64);
             CompareInputs::referenceBufferFor(inA.buffer);  // a buffer without a counterpart fails before rendering
             if (inA.buffer == "ao.raw") {
                 // ao.raw is at the method's resolution (<method>.resolution); the reference's AO at the frame's.
@@ -380,6 +366,8 @@ int compare(int argc, char** argv) {
         return kExitShape;
     }
     settings.hdr = a.hdr;
+    // HDR-FLIP's exposures at once: as many as the image memory budget holds.
+    settings.flip.maxThreads = CompareInputs::flipThreadsWithin(a.image.width, a.image.height, a.image.channels);
     const ImageComparison c = ImageComparison::measure(a.image, b.image, settings, a.label, b.label);
     std::vector<std::string> reasons;
     const Verdict verdict = gates.judge(c, reasons);

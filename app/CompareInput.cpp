@@ -9,6 +9,7 @@
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
+#include "renderer/io/ImageLimits.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/FlameParticles.h"
@@ -25,10 +26,52 @@ bool CompareInputs::isHdrFile(const std::string& path) {
     return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
 }
 
+namespace {
+
+std::string megabytes(long double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0Lf", bytes / (1024.0L * 1024.0L));
+    return text;
+}
+
+// The bytes comparing an image of `pixels` x `channels` takes with
+// `evaluations` FLIP evaluations at once (renderer/metrics/Flip).
+long double compareBytes(long double pixels, int channels, unsigned evaluations) {
+    return pixels * (CompareInputs::kBytesPerPixel + CompareInputs::kBytesPerChannel * channels +
+                     FlipParameters::kBytesPerEvaluation * evaluations);
+}
+
+}  // namespace
+
+std::string CompareInputs::memoryRefusal(int width, int height, int channels) {
+    const std::uint64_t limit = imageMemoryLimit();
+    const long double bytes = compareBytes(static_cast<long double>(width) * height, channels, 1);
+    if (bytes <= static_cast<long double>(limit)) return "";
+    return std::to_string(width) + " x " + std::to_string(height) + " pixels of " + std::to_string(channels) + " channel" +
+           (channels == 1 ? "" : "s") + ": comparing it takes about " + megabytes(bytes) +
+           " MB (both images, their differences, SSIM and FLIP), over the image memory limit of " +
+           std::to_string(limit / (1024 * 1024)) + " MB (set " + kImageLimitVariable + "=MB to raise it)";
+}
+
+void CompareInputs::checkMemory(const std::string& path) {
+    const ImageShape shape = readImageShape(path);  // the header only
+    if (const std::string why = memoryRefusal(shape.width, shape.height, shape.channels); !why.empty())
+        throw FileError(path, "the image is " + why);
+}
+
+unsigned CompareInputs::flipThreadsWithin(int width, int height, int channels) {
+    const long double limit = static_cast<long double>(imageMemoryLimit());
+    const long double pixels = static_cast<long double>(width) * height;
+    unsigned threads = 4;
+    while (threads > 1 && compareBytes(pixels, channels, threads) > limit) --threads;
+    return threads;
+}
+
 CompareImage CompareInputs::produce(const CompareInput& input) {
     CompareImage out;
     out.label = input.label;
     if (input.kind == CompareInput::Kind::File) {
+        checkMemory(input.path);                 // before a pixel is decoded
         out.image = loadImageFloat(input.path);  // FileError names the file and why
         out.hdr = isHdrFile(input.path);
         out.describe = "file " + input.path + (out.hdr ? " (HDR)" : " (LDR)");

@@ -13,7 +13,7 @@ namespace dw {
 
 int runGuiCommand(int argc, char** argv) {
     const int first = argc > 1 && std::string(argv[1]) == "gui" ? 2 : 1;
-    CommandLine cl(argc, argv, first);
+    CommandLine cl(argc, argv, first, "gui");
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench [gui] [--scene NAME|FILE] [--preset NAME|FILE]... [--presets DIR]\n"
                      "                          [--set knob=value]... [--size WxH]\n"
@@ -60,15 +60,16 @@ int runGuiCommand(int argc, char** argv) {
                      "  --export-dir where screenshots and timing CSVs go\n"
                      "               (default ~/.local/share/deferred-workbench/exports)\n"
                      "The panel layout and which panels are open are saved at exit in\n"
-                     "~/.config/deferred-workbench/layout.json (not in scripted runs).\n";
+                     "~/.config/deferred-workbench/layout.json (not in scripted runs).\n"
+                  << CommandLine::rangesHelp("gui");
         return 0;
     }
     GuiOptions o;
     o.run = cl.runConfig();
     o.run.width = 1600;
     o.run.height = 900;
-    if (auto s = cl.value("--size")) std::tie(o.run.width, o.run.height) = CommandLine::parseSize(*s);
-    o.run.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("0"), 0, 1000000);
+    if (auto s = cl.size()) std::tie(o.run.width, o.run.height) = *s;
+    o.run.frames = cl.whole("--frames", 0);
     o.presetsDir = cl.value("--presets").value_or("");
     o.screenshot = cl.value("--screenshot").value_or("");
     o.dumpKnobs = cl.value("--dump-knobs").value_or("");

@@ -16,7 +16,7 @@
 namespace dw {
 
 int runListCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "list");
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench list scenes|buffers|knobs|passes|presets\n"
                      "       deferred-workbench list passes --scene S [--preset P] [--set k=v]... [--size WxH]\n"
@@ -25,11 +25,12 @@ int runListCommand(int argc, char** argv) {
                      "  knobs    every knob: default, range, unit, what it does\n"
                      "  passes   the passes in order, with what each reads and writes; with --scene, also\n"
                      "           which would be skipped for that scene and its camera, and why\n"
-                     "  presets  the built-in presets and their knob values\n";
+                     "  presets  the built-in presets and their knob values\n"
+                  << CommandLine::rangesHelp("list");
         return 0;
     }
     RunConfig run = cl.runConfig();
-    const auto size = cl.value("--size");
+    const auto size = cl.size();
     cl.finish("list");
     const auto words = cl.positional();
     const std::string what = words.empty() ? "" : words[0];
@@ -44,7 +45,7 @@ int runListCommand(int argc, char** argv) {
         run.validate(knobs);
         scene = loadScene(run.sceneSpec());
         run.applyKnobs(knobs, *scene);
-        std::tie(run.width, run.height) = CommandLine::parseSize(size.value_or("1280x720"));
+        std::tie(run.width, run.height) = size.value_or(std::pair{1280, 720});
     }
     if (what == "scenes") {
         for (const auto& s : builtinScenes()) std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());

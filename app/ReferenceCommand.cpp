@@ -36,7 +36,7 @@ reference::ReferenceImages renderWithProgress(const Scene& scene, const referenc
 }  // namespace
 
 int runReferenceCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "reference");
     if (cl.flag("--help")) {
         std::cout
             << "usage: deferred-workbench reference [--scene NAME|FILE] [--size WxH] [--buffer lbuffer|final|ao|shadow]\n"
@@ -61,17 +61,17 @@ int runReferenceCommand(int argc, char** argv) {
                "  --cache-dir  the cache (default $DW_REFERENCE_CACHE, else ~/.cache/deferred-workbench/reference)\n"
                "  --stats-out  write the render's statistics as JSON\n"
                "  --throughput also trace the same rays with Embree alone and print the ratio of rays per second\n"
-               "Progress goes to stderr; Ctrl+C cancels (exit 130, nothing cached).\n";
+               "Progress goes to stderr; Ctrl+C cancels (exit 130, nothing cached).\n"
+                  << CommandLine::rangesHelp("reference");
         return 0;
     }
     RunConfig run = cl.runConfig();
-    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
+    std::tie(run.width, run.height) = cl.size().value_or(std::pair{1280, 720});
     const std::string buffer = cl.value("--buffer").value_or("lbuffer");
     const auto out = cl.value("--out");
-    const int aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), limits::kAoRays.min, limits::kAoRays.max);
-    const int seed = CommandLine::parseInt("--seed", cl.value("--seed").value_or("1"), limits::kSeed.min, limits::kSeed.max);
-    const int requestedThreads = CommandLine::parseInt("--threads", cl.value("--threads").value_or("0"),
-                                                       limits::kReferenceThreads.min, limits::kReferenceThreads.max);
+    const int aoRays = cl.whole("--ao-rays", 64);
+    const int seed = cl.whole("--seed", 1);
+    const int requestedThreads = cl.whole("--threads", 0);
     // oneTBB runs at most as many threads as the machine has cores; more are not asked for.
     const int threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
     if (requestedThreads > threads && threads > 0)

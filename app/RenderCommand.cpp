@@ -23,7 +23,7 @@
 namespace dw {
 
 int runRenderCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "render");
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE]... [--set knob=value]... [--dump-knobs FILE]\n"
@@ -55,12 +55,13 @@ int runRenderCommand(int argc, char** argv) {
                      "               the image's sha256; `replay FILE` measures it again (not for the CPU reference's\n"
                      "               buffers: a record holds no --ao-rays or --seed to trace it again)\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
-                     "               naming the first that holds a NaN or an infinity (and its first pixel)\n";
+                     "               naming the first that holds a NaN or an infinity (and its first pixel)\n"
+                  << CommandLine::rangesHelp("render");
         return 0;
     }
     RunConfig run = cl.runConfig();
-    std::tie(run.width, run.height) = CommandLine::parseSize(cl.value("--size").value_or("1280x720"));
-    run.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or("1"), limits::kFrames.min, limits::kFrames.max);
+    std::tie(run.width, run.height) = cl.size().value_or(std::pair{1280, 720});
+    run.frames = cl.whole("--frames", 1);
     const std::string buffer = cl.value("--buffer").value_or("final");
     const auto out = cl.value("--out");
     const auto dumpKnobs = cl.value("--dump-knobs");
@@ -68,28 +69,27 @@ int runRenderCommand(int argc, char** argv) {
     const auto timingsOut = cl.value("--timings-out");
     // Only counted frames are measured, so warm-up matters only when timing.
     const bool timed = timings || timingsOut;
-    run.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or(timed ? "1" : "0"), limits::kWarmup.min, limits::kWarmup.max);
+    run.warmup = cl.whole("--warmup", timed ? 1 : 0);
     const bool verbose = cl.flag("--verbose");
     const auto renderdocCapture = cl.value("--renderdoc-capture");
     const bool checkFinite = cl.flag("--check-finite");
     const auto record = cl.value("--record");
     // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
-    const auto aoRaysText = cl.value("--ao-rays");
-    const auto seedText = cl.value("--seed");
-    const auto threadsText = cl.value("--threads");
+    const auto aoRaysGiven = cl.whole("--ao-rays");
+    const auto seedGiven = cl.whole("--seed");
+    const auto threadsGiven = cl.whole("--threads");
     const bool noCache = cl.flag("--no-cache");
     const auto cacheDir = cl.value("--cache-dir");
     reference::ViewReferenceOptions referenceOptions;
-    referenceOptions.aoRays = CommandLine::parseInt("--ao-rays", aoRaysText.value_or("64"), limits::kAoRays.min, limits::kAoRays.max);
-    referenceOptions.seed = CommandLine::parseInt("--seed", seedText.value_or("1"), limits::kSeed.min, limits::kSeed.max);
-    referenceOptions.threads = CommandLine::parseInt("--threads", threadsText.value_or("0"), limits::kReferenceThreads.min,
-                                                     limits::kReferenceThreads.max);
+    referenceOptions.aoRays = aoRaysGiven.value_or(64);
+    referenceOptions.seed = seedGiven.value_or(1);
+    referenceOptions.threads = threadsGiven.value_or(0);
     referenceOptions.useCache = !noCache;
     referenceOptions.cacheDirectory = cacheDir.value_or("");
     referenceOptions.cacheWarning = [](const std::string& why) {
         std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str());
     };
-    const bool referenceOptionGiven = aoRaysText || seedText || threadsText || noCache || cacheDir;
+    const bool referenceOptionGiven = aoRaysGiven || seedGiven || threadsGiven || noCache || cacheDir;
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");

@@ -441,7 +441,7 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
 }  // namespace
 
 int runReplayCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "replay");
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
                      "Restores the state of an experiment record (render, bench and tradeoff --record, the window's\n"

@@ -12,8 +12,11 @@ namespace dw {
 
 namespace {
 
+// --plot-size, else the command's default (c.plotSize, "WxH").
 std::pair<int, int> readPlotSize(CommandLine& cl, const SweepCommand& c) {
-    return CommandLine::parseSize(cl.value("--plot-size").value_or(c.plotSize), "--plot-size");
+    if (const auto size = cl.size("--plot-size")) return *size;
+    const auto x = c.plotSize.find('x');
+    return {std::stoi(c.plotSize.substr(0, x)), std::stoi(c.plotSize.substr(x + 1))};
 }
 
 // --plot: a .png (the scripts write PNG only) at least 50x50 (the scripts' least).
@@ -47,19 +50,13 @@ void notePlotSizeAlone(CommandLine& cl, const SweepCommand& c, bool plot) {
 }  // namespace
 
 int SweepOptions::readResamples(CommandLine& cl) {
-    return CommandLine::parseInt("--resamples", cl.value("--resamples").value_or("2000"), limits::kResamples.min, limits::kResamples.max);
+    return cl.whole("--resamples", 2000);
 }
 
 std::vector<std::pair<int, int>> SweepOptions::readSizes(CommandLine& cl, bool several) {
-    const std::string text = cl.value("--size").value_or("640x360");
-    if (!several) return {CommandLine::parseSize(text)};
-    std::vector<std::pair<int, int>> sizes;
-    for (const auto& s : CommandLine::parseList("--size", text)) {
-        const auto size = CommandLine::parseSize(s);
-        if (std::find(sizes.begin(), sizes.end(), size) != sizes.end())
-            throw UsageError("--size: '" + s + "' is given twice");
-        sizes.push_back(size);
-    }
+    if (!several) return {cl.size().value_or(std::pair{640, 360})};
+    std::vector<std::pair<int, int>> sizes = cl.sizeList();
+    if (sizes.empty()) sizes.emplace_back(640, 360);
     return sizes;
 }
 
@@ -84,19 +81,13 @@ SweepOptions SweepOptions::read(CommandLine& cl, const SweepCommand& c) {
             throw UsageError(err.what());
         }
     }
-    o.frames = CommandLine::parseInt("--frames", cl.value("--frames").value_or(std::to_string(c.frames)), limits::kFrames.min, limits::kFrames.max);
-    o.warmup = CommandLine::parseInt("--warmup", cl.value("--warmup").value_or("1"), limits::kWarmup.min, limits::kWarmup.max);
-    o.block = CommandLine::parseInt("--block", cl.value("--block").value_or("1"), limits::kBlock.min, limits::kBlock.max);
+    o.frames = cl.whole("--frames", c.frames);
+    o.warmup = cl.whole("--warmup", 1);
+    o.block = cl.whole("--block", 1);
     o.resamples = readResamples(cl);
-    if (const auto orbit = cl.value("--orbit")) o.orbit = CommandLine::parseInt("--orbit", *orbit, limits::kOrbit.min, limits::kOrbit.max);
+    o.orbit = cl.whole("--orbit", 0);
     o.walkthrough = cl.flag("--walkthrough");
-    if (const auto shard = cl.value("--shard")) {
-        try {
-            o.shard = BenchShard::parse(*shard);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-    }
+    if (const auto shard = cl.shard()) std::tie(o.shard.index, o.shard.count) = *shard;
     const std::string stem = c.name + o.shardSuffix();
     o.csv = cl.value("--csv").value_or(stem + ".csv");
     const auto [recordFlag, record] = readRecordFlag(cl);

@@ -76,7 +76,8 @@ std::string tradeoffUsage() {
            "               since on llvmpipe the frame time drowns a small pass's; with shadows.reuse_map on\n"
            "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them\n"
            "  --size       the render size (default 640x360)\n" +
-           SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff);
+           SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff) + CommandLine::rangesHelp("tradeoff") +
+           CommandLine::rangesHelp("tradeoff merge");
 }
 
 std::string number(double v, const char* format) {
@@ -227,7 +228,7 @@ TradeoffShardInput shardInput(const std::string& name, const TradeoffTable& t) {
 }
 
 int runMerge(int argc, char** argv) {
-    CommandLine cl(argc, argv, 3);
+    CommandLine cl(argc, argv, 3, "tradeoff merge");
     if (cl.flag("--help")) {
         std::cout << tradeoffUsage();
         return 0;
@@ -277,7 +278,7 @@ int runMerge(int argc, char** argv) {
 
 int runTradeoffCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
-    CommandLine cl(argc, argv, 2);
+    CommandLine cl(argc, argv, 2, "tradeoff");
     if (cl.flag("--help")) {
         std::cout << tradeoffUsage();
         return 0;
@@ -303,7 +304,7 @@ int runTradeoffCommand(int argc, char** argv) {
     s.buffer = cl.value("--buffer").value_or("final");
     s.mask = cl.value("--mask").value_or("");
     s.time = cl.value("--time").value_or("frame");
-    s.aoRays = CommandLine::parseInt("--ao-rays", cl.value("--ao-rays").value_or("64"), INT_MIN, INT_MAX);
+    s.aoRays = cl.whole("--ao-rays", 64);
     s.orbit = so.orbit;
     s.walkthrough = so.walkthrough;
     s.frames = so.frames;

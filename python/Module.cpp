@@ -64,13 +64,14 @@ int intArg(const py::handle& value, const std::string& name, OptionRange range, 
     return static_cast<int>(v);
 }
 
-// A finite number (int or float, not bool) of at least `min`: ValueError
+// A finite number (int or float, not bool) in `range`, the range of the CLI
+// option it stands for (renderer/OptionLimits.h; `flag` names it): ValueError
 // naming the argument when it is NaN, infinite, too large for a double or
-// below `min`; TypeError for anything that is not a number.
-double numberArg(const py::handle& value, const std::string& name, double min) {
-    char bound[32];
-    std::snprintf(bound, sizeof bound, "%g", min);
-    const std::string expected = name + " must be a finite number of at least " + bound;
+// outside the range; TypeError for anything that is not a number.
+double numberArg(const py::handle& value, const std::string& name, RealRange range, const std::string& flag) {
+    char bound[96];
+    std::snprintf(bound, sizeof bound, range.minOpen ? "above %g and at most %g" : "from %g to %g", range.min, range.max);
+    const std::string expected = name + " must be a finite number " + bound + " (as " + flag + ")";
     if (value.is_none() || PyBool_Check(value.ptr()) || PyUnicode_Check(value.ptr()) || PyBytes_Check(value.ptr()))
         throw py::type_error(expected + ", got " + typeName(value));
     const double v = PyFloat_AsDouble(value.ptr());
@@ -80,7 +81,7 @@ double numberArg(const py::handle& value, const std::string& name, double min) {
         if (overflow) throw py::value_error(expected + ", got a number beyond a double's range");
         throw py::type_error(expected + ", got " + typeName(value));
     }
-    if (!std::isfinite(v) || v < min) throw py::value_error(expected + ", got " + py::repr(value).cast<std::string>());
+    if (!range.holds(v)) throw py::value_error(expected + ", got " + py::repr(value).cast<std::string>());
     return v;
 }
 
@@ -356,8 +357,8 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
     requirePath(errorMap, "compare: error_map");
     requirePath(heatMap, "compare: heat_map");
     requirePath(json, "compare: json");
-    const double warnThreshold = numberArg(warnObject, "compare: warn_threshold", 0.0);
-    const double failThreshold = numberArg(failObject, "compare: fail_threshold", 0.0);
+    const double warnThreshold = numberArg(warnObject, "compare: warn_threshold", limits::kThreshold, "compare --warn");
+    const double failThreshold = numberArg(failObject, "compare: fail_threshold", limits::kThreshold, "compare --fail");
     if (errorMap && !isFloatFormat(*errorMap))
         throw Error("error_map writes float maps: give it an .exr name, got '" + *errorMap + "'");
     const FloatImage a = toFloatImage(reference, "reference");
@@ -967,7 +968,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
             s.block = intArg(block, "tradeoff: block", limits::kBlock, "tradeoff --block");
             s.resamples = intArg(resamples, "tradeoff: resamples", limits::kResamples, "tradeoff --resamples");
             s.shard = shard.value_or("");
-            const std::pair<int, int> plotSize = sizeArg(plotSizeObject, "tradeoff: plot_size", limits::kSize,
+            const std::pair<int, int> plotSize = sizeArg(plotSizeObject, "tradeoff: plot_size", limits::kPlotSize,
                                                          "tradeoff --plot-size");
             return tradeoffStudy(std::move(s), sweep, presets, exclude, csv, json, plot, plotSize, quiet, progress);
         },

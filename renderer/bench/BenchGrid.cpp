@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
 
 namespace dw {
 
@@ -29,8 +30,9 @@ BenchShard BenchShard::parse(const std::string& text) {
     };
     BenchShard s;
     if (slash == std::string::npos || !number(text.substr(0, slash), s.index) || !number(text.substr(slash + 1), s.count) ||
-        s.count < 1 || s.index < 0 || s.index >= s.count)
-        throw Error("--shard expects i/n with 0 <= i < n (e.g. 0/4), got '" + text + "'");
+        !limits::kShards.holds(s.count) || s.index < 0 || s.index >= s.count)
+        throw Error("--shard expects i/n with 0 <= i < n (e.g. 0/4), n from " + std::to_string(limits::kShards.min) + " to " +
+                    std::to_string(limits::kShards.max) + ", got '" + text + "'");
     return s;
 }
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <thread>
 #include <vector>
 
 #include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
 #include "renderer/metrics/DifferenceStatistics.h"
 
 namespace dw {
@@ -287,10 +289,17 @@ FlipResult toResult(const std::vector<double>& values, int w, int h) {
     return r;
 }
 
+// Held to limits::kPixelsPerDegree (compare --ppd's range) for every caller:
+// the filters' radius grows with it and overflows an int past about 1e9.
 double resolvePpd(const FlipParameters& p) {
-    if (p.pixelsPerDegree < 0 || !std::isfinite(p.pixelsPerDegree))
-        throw Error("FLIP: pixels per degree must be a positive number");
-    return p.pixelsPerDegree > 0 ? p.pixelsPerDegree : Flip::defaultPixelsPerDegree();
+    if (p.pixelsPerDegree == 0) return Flip::defaultPixelsPerDegree();
+    if (!limits::kPixelsPerDegree.holds(p.pixelsPerDegree)) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "FLIP: pixels per degree must be from %g to %g (0: the default), got %g",
+                      limits::kPixelsPerDegree.min, limits::kPixelsPerDegree.max, p.pixelsPerDegree);
+        throw Error(buf);
+    }
+    return p.pixelsPerDegree;
 }
 
 // The ACES fit's coefficients: (A x^2 + B x + C) / (D x^2 + E x + F), with
@@ -372,7 +381,8 @@ FlipResult Flip::hdr(const FloatImage& reference, const FloatImage& test, const 
     // The exposures are independent: a few threads each take every k-th one
     // and keep their own per-pixel maximum; the maxima are merged (the same
     // result for any thread count).
-    const unsigned threads = std::max(1u, std::min({std::thread::hardware_concurrency(), 4u, static_cast<unsigned>(count)}));
+    const unsigned threads = std::max(
+        1u, std::min({std::thread::hardware_concurrency(), 4u, parameters.maxThreads, static_cast<unsigned>(count)}));
     std::vector<std::vector<double>> worstOf(threads, std::vector<double>(n, 0.0));
     std::vector<std::exception_ptr> errors(threads);
     auto work = [&](unsigned t) {

@@ -52,11 +52,17 @@
 namespace dw {
 
 struct FlipParameters {
-    double pixelsPerDegree = 0;  // 0: the default viewing condition (pixelsPerDegree(0.7, 3840, 0.7))
+    double pixelsPerDegree = 0;  // 0: the default viewing condition (pixelsPerDegree(0.7, 3840, 0.7)); else 1..1000 (limits::kPixelsPerDegree), Error outside
     // HDR-FLIP only: the exposure range (stops); NaN: from the reference, as above.
     double startExposure = std::numeric_limits<double>::quiet_NaN();
     double stopExposure = std::numeric_limits<double>::quiet_NaN();
     int exposureCount = 0;  // 0: max(2, ceil(stop - start))
+    // HDR-FLIP: how many exposures are evaluated at once (threads, at most 4;
+    // each holds about kBytesPerEvaluation per pixel): a caller bounded in
+    // memory (compare, DW_IMAGE_LIMIT_MB) asks for fewer. The result is the
+    // same for any number.
+    unsigned maxThreads = 4;
+    static constexpr double kBytesPerEvaluation = 270;  // measured: docs/metrics.md
 };
 
 struct FlipResult {

@@ -505,7 +505,7 @@ class SessionTest(unittest.TestCase):
             ("tradeoff: block", lambda v: dw.tradeoff(block=v), [0], "between 1 and 100000"),
             ("tradeoff: resamples", lambda v: dw.tradeoff(resamples=v), [10], "between 100 and 1000000"),
             ("tradeoff: orbit", lambda v: dw.tradeoff(orbit=v), [-1, 100001], "between 0 and 100000"),
-            ("tradeoff: plot_size width", lambda v: dw.tradeoff(plot_size=(v, 600)), [0, 10**9], "between 1 and 16384"),
+            ("tradeoff: plot_size width", lambda v: dw.tradeoff(plot_size=(v, 600)), [0, 49, 10**9], "between 50 and 16384"),
         ]
         for name, call, values, text in cases:
             for v in values:
@@ -521,11 +521,17 @@ class SessionTest(unittest.TestCase):
         # numpy's integers are integers; floats are thresholds: finite, at least 0 (compare --warn, --fail).
         self.assertEqual(s.render("final", frames=np.int64(2), warmup=np.uint8(0)).shape, (SIZE[1], SIZE[0], 4))
         a = np.zeros((4, 4, 3), np.float32)
-        for v in (-1e-9, float("nan"), float("inf"), 10**400):
+        # Held to compare --warn/--fail's range: 0 to the largest 32-bit float (renderer/OptionLimits.h).
+        for v in (-1e-9, float("nan"), float("inf"), 10**400, 1e39, -1):
             for key in ("warn_threshold", "fail_threshold"):
                 with self.assertRaises(ValueError, msg="%s=%r" % (key, v)) as e:
                     dw.compare(a, a, **{key: v})
                 self.assertIn("compare: " + key, str(e.exception))
+                self.assertIn("from 0 to 3.40282e+38", str(e.exception))
+        # shard=i/n: n held to --shard's range.
+        with self.assertRaises(ValueError) as e:
+            dw.tradeoff(shard="0/1000001")
+        self.assertIn("--shard", str(e.exception))
         with self.assertRaises(TypeError):
             dw.compare(a, a, fail_threshold="0.1")
         self.assertEqual(dw.compare(a, a, warn_threshold=0, fail_threshold=np.float32(0.5))["fail_count"], 0)
