@@ -106,6 +106,10 @@ int runGuiCommand(int argc, char** argv) {
     if (!o.events.empty()) reads.emplace_back("--events", o.events);
     if (!o.layoutIn.empty()) reads.emplace_back("--layout", o.layoutIn);
     CommandLine::requireDistinctFiles(writes, reads);
+    // Every file the window writes at the end is checked before the first
+    // frame, as render does: a --save-record into a missing folder failed
+    // after the measured frames.
+    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
 #ifdef DW_SCENES_DIR
     if (std::filesystem::is_directory(DW_SCENES_DIR)) o.scenesDir = DW_SCENES_DIR;
 #endif

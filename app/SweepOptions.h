@@ -45,7 +45,7 @@ struct SweepOptions {
     BenchShard shard;
     std::string csv, json;           // NAME[-shard-I-of-N].csv/.json unless given; json: the record
     std::string jsonFlag = "--json";  // the flag that named it: --record, or --json (its older name)
-    std::optional<std::string> plot;  // always set when plotByDefault
+    std::optional<std::string> plot;  // set when plotByDefault, unless --plot none
     int plotWidth = 0, plotHeight = 0;
     bool quiet = false;
 

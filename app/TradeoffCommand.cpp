@@ -314,7 +314,7 @@ int runTradeoffCommand(int argc, char** argv) {
     s.shard = so.shard.whole() ? "" : so.shardText();
     const std::string& csv = so.csv;
     const std::string& json = so.json;
-    const std::string& plot = *so.plot;
+    const std::optional<std::string>& plot = so.plot;  // none with --plot none
     const int plotW = so.plotWidth, plotH = so.plotHeight;
     const bool quiet = so.quiet;
     cl.finish("tradeoff");
@@ -354,8 +354,8 @@ int runTradeoffCommand(int argc, char** argv) {
     t.writeCsv(csv);
     writeBenchFile(json, record.json(json), "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
-    if (t.rows.empty()) return 0;
-    return writePlot(csv, plot, plotW, plotH, o.time);
+    if (t.rows.empty() || !plot) return 0;
+    return writePlot(csv, *plot, plotW, plotH, o.time);
 }
 
 }  // namespace dw

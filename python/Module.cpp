@@ -541,7 +541,7 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
         throw py::value_error("tradeoff: progress must be a callable taking a line of text, or None");
     checkKnobs(s.run.sets, axes);
     asValueError([&] { return TradeoffStudy::check(s); });
-    refuseRecordAsScene(s.run.sceneSpec());
+    refuseNonSceneFile(s.run.sceneSpec());
     // The files, checked before anything is measured (as the CLI's are).
     CommandLine::NamedFiles writes;
     if (csv) writes.emplace_back("csv", *csv);
@@ -899,7 +899,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
             }
             o.grid.knobAxes = sweepAxes("bench", sweep);
             checkKnobs(o.run.sets, o.grid.knobAxes);
-            refuseRecordAsScene(o.run.sceneSpec());
+            refuseNonSceneFile(o.run.sceneSpec());
             o.frames = intArg(framesObject, "bench: frames", limits::kFrames, "bench --frames");
             o.warmup = intArg(warmupObject, "bench: warmup", limits::kWarmup, "bench --warmup");
             o.block = intArg(blockObject, "bench: block", limits::kBlock, "bench --block");

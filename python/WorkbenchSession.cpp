@@ -8,7 +8,6 @@
 #include "renderer/OptionLimits.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"
-#include "renderer/io/JsonGuard.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -38,30 +37,6 @@ std::string describeThread(std::thread::id id) {
 
 }  // namespace
 
-void refuseRecordAsScene(const std::string& spec) {
-    const std::filesystem::path p(spec);
-    std::error_code ec;
-    if (p.extension() != ".json" || !std::filesystem::is_regular_file(p, ec)) return;
-    nlohmann::json j;
-    try {
-        JsonGuardOptions options;
-        options.numbersAreFloats = false;
-        j = readJsonFile(spec, options);
-    } catch (const Error&) {
-        return;  // the scene loader says what is wrong with it
-    }
-    const auto format = j.is_object() ? j.find("format") : j.end();
-    if (format == j.end() || !format->is_string() || format->get<std::string>() != "deferred-workbench record") return;
-    throw FileError(spec, "this is an experiment record (\"format\": \"deferred-workbench record\"), not a scene: "
-                          "`deferred-workbench replay " + spec + "` renders it again and compares; to open its scene "
-                          "in a Session, pass the record's scene.spec (" +
-                          (j.contains("scene") && j["scene"].is_object() && j["scene"].contains("spec") &&
-                                   j["scene"]["spec"].is_string()
-                               ? "here '" + j["scene"]["spec"].get<std::string>() + "'"
-                               : std::string("missing here")) +
-                          ") and its knobs as settings");
-}
-
 WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::vector<std::string>& presets,
                                    const std::vector<std::string>& settings) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
@@ -83,7 +58,7 @@ WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int heig
         }
     }
     run_.validate();
-    refuseRecordAsScene(run_.sceneSpec());
+    refuseNonSceneFile(run_.sceneSpec());
     Scene loaded = loadScene(run_.sceneSpec());  // CPU only: a bad file fails before any GL work
 
     const ProcessContext& pc = processContext();

@@ -22,6 +22,7 @@
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/reference/ViewReference.h"
+#include "renderer/scene/SceneFileKind.h"  // refuseNonSceneFile: a record or preset given as the scene
 
 namespace dw {
 
@@ -58,10 +59,6 @@ struct BufferInfo {
 // The CPU reference's options, as `reference`'s flags (renderer/reference/ViewReference.h).
 using ReferenceOptions = reference::ViewReferenceOptions;
 
-// Throws FileError when `sceneSpec` names an experiment record (a .json whose
-// "format" is a record's), saying how to replay it: the scene loader would
-// read it as an empty scene with only a warning. Anything else passes.
-void refuseRecordAsScene(const std::string& sceneSpec);
 
 class WorkbenchSession {
 public:

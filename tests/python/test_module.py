@@ -558,6 +558,15 @@ class SessionTest(unittest.TestCase):
                 call()
             self.assertIn("experiment record", str(e.exception))
             self.assertIn("deferred-workbench replay", str(e.exception))
+        # A preset as the scene: the same one definition (renderer/scene/SceneFileKind) names preset=.
+        preset = os.path.join(self.tmp.name, "as-scene-preset.json")
+        with open(preset, "w") as f:
+            json.dump({"format": "deferred-workbench preset", "knobs": {"ssao.samples": 8}}, f)
+        for call in (lambda: dw.Session(scene=preset, size=(16, 9)), lambda: dw.bench(scene=preset, sizes=[(8, 8)])):
+            with self.assertRaises(dw.Error) as e:
+                call()
+            self.assertIn("this is a preset (knobs), not a scene", str(e.exception))
+            self.assertIn("(preset= in Python)", str(e.exception))
 
     def test_bad_values_raise_and_never_crash(self):
         # None, wrong types, NaN, infinities, negative sizes, empty strings and missing files
