@@ -225,9 +225,14 @@ std::optional<std::pair<int, int>> CommandLine::shard(const std::string& flag) {
     const auto slash = text->find('/');
     const std::string form = flag + " expects i/n with 0 <= i < n (e.g. 0/4), n " + rangeText(o) + ", got '" + *text + "'";
     if (slash == std::string::npos) throw UsageError(form);
-    const int n = parseWhole(o, flag + " n", text->substr(slash + 1), *text);
-    const NumericOption index{o.command, o.flag, OptionForm::Whole, OptionRange{0, n - 1}, "shard index, below n"};
-    return std::pair{parseWhole(index, flag + " i", text->substr(0, slash), *text), n};
+    // One message for every way i/n is wrong: the form and both ranges in one line.
+    try {
+        const int n = parseWhole(o, flag + " n", text->substr(slash + 1), *text);
+        const NumericOption index{o.command, o.flag, OptionForm::Whole, OptionRange{0, n - 1}, "shard index, below n"};
+        return std::pair{parseWhole(index, flag + " i", text->substr(0, slash), *text), n};
+    } catch (const UsageError&) {
+        throw UsageError(form);
+    }
 }
 
 std::string CommandLine::rangesHelp(const std::string& command) {
