@@ -340,7 +340,7 @@ TEST(ExperimentRecord, EveryRefusalNamesTheFieldPath) {
               })),
               "r.json: results.rows[0].error: expects a number or null, got \"small\"");
     EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["shard"] = "5/2"; })),
-              "r.json: grid.shard: --shard expects i/n with 0 <= i < n (e.g. 0/4), got '5/2'");
+              "r.json: grid.shard: --shard expects i/n with 0 <= i < n (e.g. 0/4), n from 1 to 100000, got '5/2'");
     // A bench record's sweep values, seed and sizes.
     auto bench = [](nlohmann::json& j) {
         j["command"] = "bench";
