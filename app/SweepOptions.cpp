@@ -95,7 +95,8 @@ SweepOptions SweepOptions::read(CommandLine& cl, const SweepCommand& c) {
     o.json = record.value_or(stem + ".json");
     o.plot = cl.value("--plot");
     // --plot none: no plot (tradeoff draws one by default; drawing it costs a
-    // Python start and matplotlib, about 0.4 CPU s, on every short sweep).
+    // Python start and matplotlib, about half of a short sweep's CPU time:
+    // docs/tradeoffs.md).
     if (o.plot == "none") o.plot.reset();
     else if (!o.plot && c.plotByDefault) o.plot = stem + ".png";
     std::tie(o.plotWidth, o.plotHeight) = readPlotSize(cl, c);
