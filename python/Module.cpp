@@ -763,6 +763,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
                      image = s.render(buffer, frames, warmup, traced ? &*traced : nullptr);
                      if (record) s.record().write(*record);
                  }
+                 // What the last frame lost (the oit pass's fragments), the lines render prints.
+                 for (const auto& w : s.frameWarnings()) warnPython(w);
                  return toArray(image);
              },
              py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0, py::arg("record") = py::none(),

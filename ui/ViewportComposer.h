@@ -46,6 +46,9 @@ private:
     static void keepHistogram(ShownImage& img);
     void histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state);
     void refreshHistograms(UiState& state);
+    // The passes' warnings about the frame (the oit pass's lost fragments)
+    // into Messages, once each time they change (not every frame they hold).
+    void logFrameWarnings(UiState& state);
 
     // The A/B split (AbView): on for the deferred final image.
     static bool abActive(const UiState& state);
@@ -65,6 +68,7 @@ private:
     gl::Sampler nearest_;
     std::string lastSignature_;
     std::string lastConfig_;
+    std::string lastFrameWarnings_;
     SplitComparison split_;
     FloatImage abA_, abB_, abReference_, pinned_;
     std::vector<double> pinnedMs_;

@@ -13,14 +13,14 @@ std::vector<OutputDecl> DualDepthPeelingOit::outputs() const {
          texture2D(GL_RG32F), 2},
         {"oit.dual_prev_depth", OutputKind::Vector, "dual_depth_peeling: the range the last pass peeled (RG32F)",
          texture2D(GL_RG32F), 2},
-        {"oit.dual_front", OutputKind::HdrColor, "dual_depth_peeling: the last pass's nearest layer (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
-        {"oit.dual_back", OutputKind::HdrColor, "dual_depth_peeling: the last pass's farthest layer (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
+        {"oit.dual_front", OutputKind::HdrColor, "dual_depth_peeling: the last pass's nearest layer (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
+        {"oit.dual_back", OutputKind::HdrColor, "dual_depth_peeling: the last pass's farthest layer (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
         {"oit.dual_front_accum", OutputKind::HdrColor,
-         "dual_depth_peeling: the front layers, front to back: rgb colour, a transmittance (RGBA16F)", texture2D(GL_RGBA16F), 4},
+         "dual_depth_peeling: the front layers, front to back: rgb colour, a transmittance (RGBA32F)", texture2D(GL_RGBA32F), 4},
         {"oit.dual_back_accum", OutputKind::HdrColor,
-         "dual_depth_peeling: the back layers, back to front: rgb colour, a transmittance (RGBA16F)", texture2D(GL_RGBA16F), 4},
+         "dual_depth_peeling: the back layers, back to front: rgb colour, a transmittance (RGBA32F)", texture2D(GL_RGBA32F), 4},
         {"oit.dual_count", OutputKind::Count, "dual_depth_peeling: layers found per pixel (R32UI)", texture2D(GL_R32UI), 1},
     };
 }
@@ -93,6 +93,8 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     ctx.texture("oit.dual_front_accum").bind(13);
     ctx.texture("oit.dual_back_accum").bind(14);
     f.compositeOverLBuffer(*resolve_);
+    lossCause_ = "dual_depth_peeling peels " + std::to_string(layers) +
+                 " layers (oit.peel_layers); a fragment between them, or at exactly the depth of another, is lost";
     stats_ = std::to_string(layers) + " layers in " + std::to_string(passes + 1) + " geometry passes; memory " +
              mebibytes(allocatedBytes(ctx, {"oit.dual_depth", "oit.dual_prev_depth", "oit.dual_front", "oit.dual_back",
                                             "oit.dual_front_accum", "oit.dual_back_accum", "oit.dual_count",

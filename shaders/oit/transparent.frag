@@ -9,7 +9,7 @@
 // A-buffer's stencil routing must see only the fragments it stores). Then
 // one method stores it:
 //   METHOD_LIST: a node of the per-pixel linked list (head image, node SSBO,
-//     atomic counter; past oit.nodeBudget counted in oit.overflow)
+//     atomic counter; past oit.nodeBudget lost, counted by the resolve)
 //   METHOD_WEIGHTED: McGuire and Bavoil 2013's accumulation and revealage
 //   METHOD_ABUFFER: the colour to the stencil-routed sample (the pass sets
 //     the stencil state; depth GL_ALWAYS, written)
@@ -37,8 +37,8 @@ in VertexData {
 layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
 #if defined(METHOD_LIST)
 layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
-layout(binding = 2, r32ui) uniform coherent uimage2D uLost;  // oit.overflow
-layout(std430, binding = 5) buffer ListNodes { uvec4 nodes[]; };
+// OIT_LIST_NODE_WORDS words a node: premultiplied RGBA (32-bit floats), window depth, next + 1.
+layout(std430, binding = 5) buffer ListNodes { uint nodeWords[]; };
 layout(std430, binding = 6) buffer ListCounter { uint usedNodes; };
 #elif defined(METHOD_WEIGHTED)
 layout(location = 0) out vec4 outAccum;
@@ -116,7 +116,10 @@ void main() {
     s.specular = clamp(ms.specular, 0.0, 1.0);
     s.exponent = clamp(ms.exponent, 1.0, 2048.0);
     vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
-    vec3 c = lightingParams.ambient.rgb * reflectance + ms.emissive;
+    // Emission clamped as the G-buffer pass clamps it (R11G11B10F's largest
+    // value; SceneCheck.h kMaxEmission): opaque and blended surfaces and the
+    // CPU reference follow one rule.
+    vec3 c = lightingParams.ambient.rgb * reflectance + clamp(ms.emissive, vec3(0.0), vec3(65000.0));
     for (int i = 0; i < oit.lightCount; ++i) c += lightRadiance(shadingLight(i), s);
     vec4 premultiplied = vec4(c * alpha, alpha);
 
@@ -133,13 +136,14 @@ void main() {
 #endif
     if (oit.countFragments != 0 && counted) imageAtomicAdd(uFragmentCount, px, 1u);
 #if defined(METHOD_LIST)
+    // Past the budget the fragment is lost; the resolve counts it (oit.sample_count - kept).
     uint node = atomicAdd(usedNodes, 1u);
-    if (node >= oit.nodeBudget) {
-        imageAtomicAdd(uLost, px, 1u);
-        return;
-    }
+    if (node >= oit.nodeBudget) return;
     uint next = imageAtomicExchange(uHeads, px, node + 1u);  // links are index + 1; 0 ends a list
-    nodes[node] = uvec4(packHalf2x16(premultiplied.rg), packHalf2x16(premultiplied.ba), floatBitsToUint(gl_FragCoord.z), next);
+    uint at = node * uint(OIT_LIST_NODE_WORDS);
+    for (int i = 0; i < 4; ++i) nodeWords[at + uint(i)] = floatBitsToUint(premultiplied[i]);
+    nodeWords[at + 4u] = floatBitsToUint(gl_FragCoord.z);
+    nodeWords[at + 5u] = next;
 #elif defined(METHOD_DUAL_INIT)
     // (returned above)
 #elif defined(METHOD_DUAL)

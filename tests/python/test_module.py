@@ -348,6 +348,29 @@ class SessionTest(unittest.TestCase):
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("bench: warning: configuration 1 (32x18): aov: about ", lines[0])
 
+    def test_render_warns_when_transparency_loses_fragments(self):
+        # Issue 32: the line `render` prints when the oit pass lost fragments
+        # (the 4-sample A-buffer on the glass scene), as a RuntimeWarning
+        # whose count is what oit.overflow sums to; the exact list says nothing.
+        s = dw.Session(scene="glass", size=(160, 90), settings={"oit.method": "abuffer", "oit.samples": 4})
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            overflow = s.render("oit.overflow")
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            counts = s.render("oit.sample_count")
+        lost = int(overflow.astype("int64").sum())
+        self.assertGreater(lost, 0)
+        self.assertEqual([l for l in lines if l.startswith("oit: ")],
+                         ["oit: lost %d of %d transparent fragments this frame (abuffer keeps 4 per pixel "
+                          "(oit.samples = 4), the first to arrive); oit.overflow shows where"
+                          % (lost, int(counts.astype("int64").sum()))], lines)
+        s.set("oit.method", "linked_list")
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            s.render()  # nothing lost: no warning (it would raise here)
+
     def test_render_record_replays_to_the_same_image(self):
         s = dw.Session(scene="default", size=(48, 27))
         s.set("ssao.samples", 8)
