@@ -34,6 +34,7 @@ constexpr GLuint kFragmentCount = 0;  // oit.sample_count
 constexpr GLuint kListHeads = 1;
 constexpr GLuint kOverflow = 2;       // oit.overflow
 constexpr GLuint kPeelLayers = 3;
+constexpr GLuint kDualClaims = 4;     // oit.dual_claims
 }  // namespace oit_unit
 // Shader storage bindings of the linked list, and of the frame's lost
 // fragments summed (one uint, added to by shaders/oit/resolve.frag).

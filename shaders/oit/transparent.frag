@@ -51,6 +51,8 @@ layout(location = 0) out vec2 outDepth;
 #elif defined(METHOD_DUAL)
 layout(binding = 13) uniform sampler2D uPrevDepth;  // (-nearest, farthest) left, as farness
 layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
+// This pass's claims: bit 0 the nearest layer taken, bit 1 the farthest.
+layout(binding = 4, r32ui) uniform coherent uimage2D uClaims;
 layout(location = 0) out vec2 outDepth;
 layout(location = 1) out vec4 outFront;
 layout(location = 2) out vec4 outBack;
@@ -75,8 +77,11 @@ float blendWeight(float alpha, float z, float windowDepth) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     if (!nearer(gl_FragCoord.z, texelFetch(uDepth, px, 0).r)) discard;  // behind the opaque surface
-    // Dual depth peeling compares "farness", 0 near .. 1 far in either depth.mode.
-    float farness = depthReversed() ? 1.0 - gl_FragCoord.z : gl_FragCoord.z;
+    // Dual depth peeling compares "farness", larger farther in either
+    // depth.mode: z, or -z when reversed (-1 near .. 0 far). Not 1 - z: that
+    // rounds distinct reversed depths near 0 to one farness, which then
+    // counted as equal depths (a loss) on the glass scene's fan.
+    float farness = depthReversed() ? -gl_FragCoord.z : gl_FragCoord.z;
 #ifdef METHOD_DUAL_INIT
     outDepth = vec2(-farness, farness);  // GL_MAX: (-nearest, farthest)
     if (oit.countFragments != 0 && !gl_HelperInvocation) imageAtomicAdd(uFragmentCount, px, 1u);
@@ -85,7 +90,7 @@ void main() {
 #ifdef METHOD_DUAL
     vec2 prev = texelFetch(uPrevDepth, px, 0).rg;
     float nearest = -prev.x, farthest = prev.y;
-    outDepth = vec2(-2.0);  // below every farness: no effect under GL_MAX
+    outDepth = vec2(-2.0);  // below every farness and its negation (both in [-1, 1]): no effect under GL_MAX
     outFront = vec4(0.0);
     outBack = vec4(0.0);
     if (farness < nearest || farness > farthest) discard;  // peeled already
@@ -148,6 +153,11 @@ void main() {
     // (returned above)
 #elif defined(METHOD_DUAL)
     // The nearest or the farthest layer left (the nearest when they are one).
+    // A second fragment at exactly that depth would be merged with the first
+    // by GL_MAX: it is lost instead, so oit.overflow (fragments - layers)
+    // counts it.
+    uint side = farness == nearest ? 1u : 2u;
+    if ((imageAtomicOr(uClaims, px, side) & side) != 0u) discard;
     imageAtomicAdd(uLayers, px, 1u);
     if (farness == nearest) outFront = premultiplied;
     else outBack = premultiplied;
