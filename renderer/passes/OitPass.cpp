@@ -64,8 +64,9 @@ std::vector<OutputDecl> OitPass::outputs() const {
          "oit.overflow; R32UI)",
          texture2D(GL_R32UI), 1},
         {"oit.overflow", OutputKind::Count,
-         "transparent fragments lost per pixel: past the A-buffer's samples, the peeled layers or the list's budget "
-         "(R32UI)",
+         "transparent fragments lost per pixel: past the A-buffer's samples, past (or at exactly the depth of) the "
+         "peeled layers, or past the list's budget, its 32 nearest or its walk's bound; the frame's total is warned "
+         "about (R32UI)",
          texture2D(GL_R32UI), 1},
     };
     for (const auto& m : methods_)
