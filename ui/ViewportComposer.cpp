@@ -521,7 +521,12 @@ void ViewportComposer::logFrameWarnings(UiState& state) {
     const std::vector<std::string> warnings = state.report.warnings();
     for (const auto& w : warnings) joined += w + "\n";
     if (joined == lastFrameWarnings_) return;
+    // A loss that changes every frame (an animated scene, a moving camera) is
+    // logged at most every kFrameWarningSeconds, so Messages is not flooded.
+    const bool appeared = lastFrameWarnings_.empty();
+    if (!appeared && !joined.empty() && state.time - lastFrameWarningTime_ < kFrameWarningSeconds) return;
     lastFrameWarnings_ = joined;
+    lastFrameWarningTime_ = state.time;
     for (const auto& w : warnings) state.log.info("warning: " + w, state.time);
 }
 
