@@ -370,6 +370,21 @@ class SessionTest(unittest.TestCase):
         with warnings.catch_warnings():
             warnings.simplefilter("error")
             s.render()  # nothing lost: no warning (it would raise here)
+        # A blended pane of emission 1e30: the loader's clamp is warned about
+        # when the session opens, and the L-buffer is finite (0.5 x 65000 + ...).
+        path = os.path.join(tempfile.mkdtemp(), "hot.json")
+        with open(path, "w") as f:
+            f.write('{"camera": {"pos": [0, 0, 10], "look-at": [0, 0, 0]}, "objects": [{"shape": "plane", '
+                    '"size": [40, 0, 40], "rotate": [90, 0, 0], "material": {"diffuse": [0.5, 0.5, 0.5], '
+                    '"emissive": [1e30, 1e30, 1e30], "opacity": 0.5}}]}')
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            hot = dw.Session(scene=path, size=(32, 18))
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        self.assertTrue(any(path + ": material 'objects[0]': emissive 1e+30 is beyond 65000" in l for l in lines), lines)
+        lbuffer = hot.render("lbuffer")
+        self.assertTrue(np.isfinite(lbuffer).all())
+        self.assertGreater(float(lbuffer[..., :3].max()), 32000.0)
 
     def test_render_record_replays_to_the_same_image(self):
         s = dw.Session(scene="default", size=(48, 27))
