@@ -197,6 +197,8 @@ int runRenderCommand(int argc, char** argv) {
     session.writeOutput(buffer, *out);
     std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
                 session.scene().name.c_str());
+    // What a pass lost in the frame written (the oit pass's fragments), one line each.
+    for (const auto& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
     if (record) {
         ExperimentRecord::capture(session, run, buffer, firstCounted, context->platform()).write(*record);

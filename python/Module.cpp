@@ -658,8 +658,15 @@ PYBIND11_MODULE(deferred_workbench, m) {
                  const auto size = sizeArg(sizeObject, "Session: size", limits::kSize, "--size");
                  const std::vector<std::string> sets = assignments(settings);
                  const std::vector<std::string> presets = presetList(preset);
-                 py::gil_scoped_release release;
-                 return std::make_unique<WorkbenchSession>(scene, size.first, size.second, presets, sets);
+                 std::unique_ptr<WorkbenchSession> session;
+                 {
+                     py::gil_scoped_release release;
+                     session = std::make_unique<WorkbenchSession>(scene, size.first, size.second, presets, sets);
+                 }
+                 // The loader's warnings (an emission clamped to 65000, unknown keys,
+                 // ignored glTF features), the lines render prints, as RuntimeWarnings.
+                 for (const auto& w : session->session().scene().warnings) warnPython(w);
+                 return session;
              }),
              py::arg("scene") = "", py::arg("size") = std::make_pair(1280, 720), py::arg("preset") = py::none(),
              py::arg("settings") = py::none(),
@@ -764,6 +771,8 @@ PYBIND11_MODULE(deferred_workbench, m) {
                      image = s.render(buffer, frames, warmup, traced ? &*traced : nullptr);
                      if (record) s.record().write(*record);
                  }
+                 // What the last frame lost (the oit pass's fragments), the lines render prints.
+                 for (const auto& w : s.frameWarnings()) warnPython(w);
                  return toArray(image);
              },
              py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0, py::arg("record") = py::none(),

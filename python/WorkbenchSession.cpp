@@ -249,6 +249,7 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     }
     rendered_ = true;
     timings_ = TimingReport::build(timer, report, firstCounted, warmup);
+    frameWarnings_ = report.warnings();
     last_ = LastRender{buffer, frames, warmup, firstCounted, {}};
     const KnobRegistry& k = session_->knobs();
     for (size_t i = 0; i < k.size(); ++i) last_->knobs.push_back(k.format(static_cast<int>(i)));

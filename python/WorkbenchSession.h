@@ -105,6 +105,10 @@ public:
     std::string aovCostWarning() const;
     // What the last render()'s counted frames measured (empty before one).
     const std::optional<TimingReport>& timings() const { return timings_; }
+    // The passes' warnings about the last render()'s last frame ("oit: lost N
+    // of M transparent fragments ..."), the lines `render` prints; render() in
+    // Module.cpp raises each as a RuntimeWarning.
+    const std::vector<std::string>& frameWarnings() const { return frameWarnings_; }
     ProbeResult probe(int x, int y) const;
     // Writes `buffer` of the last frame as render --out does (.png display, .exr raw).
     void writeBuffer(const std::string& buffer, const std::string& path);
@@ -152,6 +156,7 @@ private:
     int width_ = 0, height_ = 0;
     bool rendered_ = false;
     std::optional<TimingReport> timings_;
+    std::vector<std::string> frameWarnings_;
     struct LastRender {
         std::string buffer;
         int frames = 1, warmup = 0;

@@ -233,6 +233,7 @@ void ViewportComposer::renderImages(UiState& state) {
     // The forward preview modes run no deferred pass at all.
     if (deferred) {
         state.report = pipeline.render(session_.camera(), request);
+        logFrameWarnings(state);
         if (ab) {
             abFramesA_.insert(state.report.frameIndex);
             abA_ = session_.readRaw("final");
@@ -513,6 +514,20 @@ void ViewportComposer::abTimes(UiState& state) {
     ab.gpuDifference = ab.a.gpuMs.size() >= 3 && ab.b.gpuMs.size() >= 3
                            ? bootstrapDifferenceOfMedians(ab.a.gpuMs, ab.b.gpuMs)
                            : DifferenceInterval{};
+}
+
+void ViewportComposer::logFrameWarnings(UiState& state) {
+    std::string joined;
+    const std::vector<std::string> warnings = state.report.warnings();
+    for (const auto& w : warnings) joined += w + "\n";
+    if (joined == lastFrameWarnings_) return;
+    // A loss that changes every frame (an animated scene, a moving camera) is
+    // logged at most every kFrameWarningSeconds, so Messages is not flooded.
+    const bool appeared = lastFrameWarnings_.empty();
+    if (!appeared && !joined.empty() && state.time - lastFrameWarningTime_ < kFrameWarningSeconds) return;
+    lastFrameWarnings_ = joined;
+    lastFrameWarningTime_ = state.time;
+    for (const auto& w : warnings) state.log.info("warning: " + w, state.time);
 }
 
 }  // namespace dw::ui

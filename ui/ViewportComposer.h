@@ -46,6 +46,11 @@ private:
     static void keepHistogram(ShownImage& img);
     void histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state);
     void refreshHistograms(UiState& state);
+    // The passes' warnings about the frame (the oit pass's lost fragments)
+    // into Messages, once each time they change (not every frame they hold;
+    // at most every kFrameWarningSeconds while they keep changing).
+    void logFrameWarnings(UiState& state);
+    static constexpr double kFrameWarningSeconds = 2.0;
 
     // The A/B split (AbView): on for the deferred final image.
     static bool abActive(const UiState& state);
@@ -65,6 +70,8 @@ private:
     gl::Sampler nearest_;
     std::string lastSignature_;
     std::string lastConfig_;
+    std::string lastFrameWarnings_;
+    double lastFrameWarningTime_ = 0.0;
     SplitComparison split_;
     FloatImage abA_, abB_, abReference_, pinned_;
     std::vector<double> pinnedMs_;

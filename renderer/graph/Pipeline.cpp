@@ -24,6 +24,13 @@ const PassRecord* FrameReport::find(const std::string& name) const {
     return nullptr;
 }
 
+std::vector<std::string> FrameReport::warnings() const {
+    std::vector<std::string> out;
+    for (const auto& p : passes)
+        if (p.ran && !p.warning.empty()) out.push_back(p.name + ": " + p.warning);
+    return out;
+}
+
 Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
     // Built-in passes first, then any registered from outside; within a stage
     // in registration order (seed 002 section 6 for the built-in ones).
@@ -379,6 +386,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             glPopDebugGroup();
             outputs_.markProduced(p.name(), ctx.wanted);
             report.passes[reportIndex].stats = p.stats();
+            report.passes[reportIndex].warning = p.frameWarning();
         }
     } catch (...) {
         // A failed frame leaves nothing half-recorded for the next one.

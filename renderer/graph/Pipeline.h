@@ -31,12 +31,15 @@ struct PassRecord {
     bool ran = false;
     std::string reason;  // why it did not run
     std::string stats;   // the pass's own line about what it did
+    std::string warning; // the pass's frameWarning(): what it lost this frame, or empty
 };
 
 struct FrameReport {
     std::uint64_t frameIndex = 0;
     std::vector<PassRecord> passes;
     const PassRecord* find(const std::string& name) const;
+    // The passes' warnings this frame, "pass: line" in pipeline order.
+    std::vector<std::string> warnings() const;
 };
 
 struct FrameRequest {

@@ -85,6 +85,10 @@ public:
     virtual void execute(FrameContext& ctx) = 0;
     // A line for the inspector about the last execution ("36 lights: 30 volumes, 6 culled").
     virtual std::string stats() const { return {}; }
+    // A line the user must be told about the last execution, or empty: what
+    // it silently got wrong otherwise (the oit pass's lost fragments). The
+    // render command prints it, Python warns, the window shows it in Messages.
+    virtual std::string frameWarning() const { return {}; }
 };
 
 }  // namespace dw

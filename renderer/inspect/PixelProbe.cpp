@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <glm/gtc/packing.hpp>
 
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/reference/LuminanceReference.h"
 #include "renderer/reference/ShadingReference.h"
+#include "shaders/params/oit.h"
 
 namespace dw {
 
@@ -65,15 +65,16 @@ void transparentFragments(const Pipeline& pipeline, ProbeResult& r, int x, int y
         (void)yGl;
         r.fragmentsFrom = "linked_list";
         auto link = static_cast<std::uint32_t>(head->raw.x);
-        const std::size_t count = nodes->buffer->size() / 16;
+        // A node: premultiplied RGBA as 32-bit floats, window depth, next + 1 (LinkedListOit.h).
+        constexpr std::size_t kWords = gpu::OIT_LIST_NODE_WORDS, kBytes = kWords * 4;
+        const std::size_t count = nodes->buffer->size() / kBytes;
         for (int guard = 0; link != 0 && link <= count && guard < 4096; ++guard) {
-            std::uint32_t node[4];
-            nodes->buffer->read((link - 1) * 16ull, sizeof node, node);
-            const glm::vec2 rg = glm::unpackHalf2x16(node[0]), ba = glm::unpackHalf2x16(node[1]);
-            float depth;
-            std::memcpy(&depth, &node[2], 4);
-            r.fragments.push_back(fragmentOf(glm::vec4(rg, ba), depth));
-            link = node[3];
+            std::uint32_t node[kWords];
+            nodes->buffer->read((link - 1) * kBytes, sizeof node, node);
+            float values[5];
+            std::memcpy(values, node, sizeof values);
+            r.fragments.push_back(fragmentOf(glm::vec4(values[0], values[1], values[2], values[3]), values[4]));
+            link = node[5];
         }
     } else if (const ProbeValue* colour = findValue(r, "oit.abuffer")) {
         const ProbeValue* depth = findValue(r, "oit.abuffer_depth");

@@ -1,7 +1,7 @@
 // The presets that ship with the workbench, in knob values: the quality
 // levels of seed 002 section 7, the SSAO settings of seed 000 table 6.4,
 // GTAO at XeGTAO's quality levels, and light-volume thresholds. Render size is not a knob (it follows the window,
-// or render --size), so the seed's resolutions are only named in descriptions.
+// or render --size), so the seed's resolutions are only named in descriptions, which say a preset cannot set them.
 // The quality levels cover every knob group (what they do not name goes back
 // to its default); the light-volume presets cover only "lighting", so they
 // can be combined with a quality level.
@@ -21,18 +21,26 @@ const std::vector<Preset>& builtinPresets() {
             p.groups = std::move(groups);
             v.push_back(std::move(p));
         };
-        // Seed 002 section 7 (its A-buffer sample counts wait for the transparency pass).
+        // Seed 002 section 7: SSAO, the stencil-routed A-buffer's samples (4 / 8 / 8;
+        // oit.samples is capped by the device, 4 on llvmpipe, and the oit
+        // pass's statistics say so) and the sun's shadow map. The seed's
+        // resolutions are render sizes, which no preset sets (--size, the
+        // window): the descriptions say so.
         // Quality levels, not AO methods: they leave ao.method as it is, so a
         // GTAO or AOV level combines with them either way round.
-        add("Low", "seed 002: 800x600, SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, one 512^2 sun shadow map",
+        const std::string size = " (render size, not set by a preset: --size or the window)";
+        add("Low", "seed 002: 800x600" + size + ", SSAO at 1/16 size with 16 samples and a 21-wide bilateral blur, the "
+                   "stencil-routed A-buffer with 4 samples, one 512^2 sun shadow map",
             {{"ao.enabled", "true"}, {"ssao.resolution", "quarter"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
-             {"ssao_blur.width", "21"}, {"shadows.map_size", "512"}});
-        add("Medium", "seed 002: 1280x720, SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, a 1024^2 shadow map",
+             {"ssao_blur.width", "21"}, {"oit.method", "abuffer"}, {"oit.samples", "4"}, {"shadows.map_size", "512"}});
+        add("Medium", "seed 002: 1280x720" + size + ", SSAO at 1/4 size with 16 samples and a 61-wide bilateral blur, the "
+                      "stencil-routed A-buffer with 8 samples, a 1024^2 shadow map",
             {{"ao.enabled", "true"}, {"ssao.resolution", "half"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
-             {"ssao_blur.width", "61"}, {"shadows.map_size", "1024"}});
-        add("High", "seed 002: 1920x1080, full-size SSAO with 16 samples and a 61-wide bilateral blur, a 2048^2 shadow map",
+             {"ssao_blur.width", "61"}, {"oit.method", "abuffer"}, {"oit.samples", "8"}, {"shadows.map_size", "1024"}});
+        add("High", "seed 002: 1920x1080" + size + ", full-size SSAO with 16 samples and a 61-wide bilateral blur, the "
+                    "stencil-routed A-buffer with 8 samples, a 2048^2 shadow map",
             {{"ao.enabled", "true"}, {"ssao.resolution", "full"}, {"ssao.samples", "16"}, {"ssao_blur.mode", "bilateral"},
-             {"ssao_blur.width", "61"}, {"shadows.map_size", "2048"}});
+             {"ssao_blur.width", "61"}, {"oit.method", "abuffer"}, {"oit.samples", "8"}, {"shadows.map_size", "2048"}});
         // Seed 000 table 6.4: occlusion buffer, samples, radius, blur width. Named
         // for SSAO, they render SSAO whatever the scene or an earlier preset chose.
         const char* ssao[5][4] = {{"quarter", "8", "1", "10"}, {"quarter", "16", "1", "15"}, {"half", "16", "1", "20"},

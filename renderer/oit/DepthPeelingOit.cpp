@@ -16,15 +16,15 @@ std::string DepthPeelingOit::description() const {
 
 std::vector<OutputDecl> DepthPeelingOit::outputs() const {
     return {
-        {"oit.peel_color", OutputKind::HdrColor, "depth_peeling: the last layer peeled, premultiplied (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
+        {"oit.peel_color", OutputKind::HdrColor, "depth_peeling: the last layer peeled, premultiplied (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
         {"oit.peel_depth", OutputKind::Depth, "depth_peeling: the last layer's depth (DEPTH32F)",
          texture2D(GL_DEPTH_COMPONENT32F), 1},
         {"oit.peel_prev_depth", OutputKind::Depth, "depth_peeling: the layer before's depth, peeled against (DEPTH32F)",
          texture2D(GL_DEPTH_COMPONENT32F), 1},
         {"oit.peel_accum", OutputKind::HdrColor,
-         "depth_peeling: the layers so far, front to back: rgb premultiplied colour, a transmittance (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
+         "depth_peeling: the layers so far, front to back: rgb premultiplied colour, a transmittance (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
         {"oit.peel_count", OutputKind::Count, "depth_peeling: layers found per pixel (R32UI)", texture2D(GL_R32UI), 1},
     };
 }
@@ -80,6 +80,8 @@ void DepthPeelingOit::render(OitFrame& f) {
     }
     ctx.texture("oit.peel_accum").bind(13);
     f.compositeOverLBuffer(*resolve_);
+    lossCause_ = "depth_peeling peels " + std::to_string(layers) +
+                 " layers (oit.peel_layers); a fragment behind them, or at exactly the depth of one peeled, is lost";
     stats_ = std::to_string(layers) + " layers peeled (" + std::to_string(layers) + " geometry passes); memory " +
              mebibytes(allocatedBytes(ctx, {"oit.peel_color", "oit.peel_depth", "oit.peel_prev_depth", "oit.peel_accum",
                                             "oit.peel_count", "oit.sample_count", "oit.overflow"}));

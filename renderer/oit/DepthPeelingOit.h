@@ -22,6 +22,7 @@ public:
     bool needsFragmentCount() const override { return true; }
     void render(OitFrame& frame) override;
     std::string stats() const override { return stats_; }
+    std::string lossCause() const override { return lossCause_; }
 
 private:
     IntKnob layers_;
@@ -29,6 +30,7 @@ private:
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer layerTarget_, accumTarget_, prevTarget_;
     std::string stats_;
+    std::string lossCause_;
 };
 
 }  // namespace dw

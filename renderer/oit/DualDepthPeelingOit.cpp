@@ -13,15 +13,19 @@ std::vector<OutputDecl> DualDepthPeelingOit::outputs() const {
          texture2D(GL_RG32F), 2},
         {"oit.dual_prev_depth", OutputKind::Vector, "dual_depth_peeling: the range the last pass peeled (RG32F)",
          texture2D(GL_RG32F), 2},
-        {"oit.dual_front", OutputKind::HdrColor, "dual_depth_peeling: the last pass's nearest layer (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
-        {"oit.dual_back", OutputKind::HdrColor, "dual_depth_peeling: the last pass's farthest layer (RGBA16F)",
-         texture2D(GL_RGBA16F), 4},
+        {"oit.dual_front", OutputKind::HdrColor, "dual_depth_peeling: the last pass's nearest layer (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
+        {"oit.dual_back", OutputKind::HdrColor, "dual_depth_peeling: the last pass's farthest layer (RGBA32F)",
+         texture2D(GL_RGBA32F), 4},
         {"oit.dual_front_accum", OutputKind::HdrColor,
-         "dual_depth_peeling: the front layers, front to back: rgb colour, a transmittance (RGBA16F)", texture2D(GL_RGBA16F), 4},
+         "dual_depth_peeling: the front layers, front to back: rgb colour, a transmittance (RGBA32F)", texture2D(GL_RGBA32F), 4},
         {"oit.dual_back_accum", OutputKind::HdrColor,
-         "dual_depth_peeling: the back layers, back to front: rgb colour, a transmittance (RGBA16F)", texture2D(GL_RGBA16F), 4},
+         "dual_depth_peeling: the back layers, back to front: rgb colour, a transmittance (RGBA32F)", texture2D(GL_RGBA32F), 4},
         {"oit.dual_count", OutputKind::Count, "dual_depth_peeling: layers found per pixel (R32UI)", texture2D(GL_R32UI), 1},
+        {"oit.dual_claims", OutputKind::Scalar,
+         "dual_depth_peeling: the last pass's claims per pixel (bit 0 the nearest layer taken, bit 1 the farthest; a "
+         "second fragment at exactly a taken depth is lost, not merged; R32UI)",
+         texture2D(GL_R32UI), 1},
     };
 }
 
@@ -63,7 +67,10 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     f.params.countFragments = 0;
     f.uploadParams();
     const gl::Program& program = f.transparentProgram("METHOD_DUAL");
+    const gl::Texture& claims = ctx.texture("oit.dual_claims");
+    claims.bindImage(oit_unit::kDualClaims, GL_READ_WRITE);
     for (int k = 0; k < passes; ++k) {
+        claims.clearUint(0);
         // An odd layer count: the last pass keeps its nearest layer only, so N layers means N.
         f.params.frontOnly = k == passes - 1 && layers % 2 == 1 ? 1 : 0;
         f.uploadParams();
@@ -75,7 +82,7 @@ void DualDepthPeelingOit::render(OitFrame& f) {
         glBlendEquation(GL_MAX);
         prev.bind(13);
         f.drawTransparent(program);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 
         accum.bind();
         glBlendEquation(GL_FUNC_ADD);
@@ -93,9 +100,11 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     ctx.texture("oit.dual_front_accum").bind(13);
     ctx.texture("oit.dual_back_accum").bind(14);
     f.compositeOverLBuffer(*resolve_);
+    lossCause_ = "dual_depth_peeling peels " + std::to_string(layers) +
+                 " layers (oit.peel_layers); a fragment between them, or at exactly the depth of one peeled, is lost";
     stats_ = std::to_string(layers) + " layers in " + std::to_string(passes + 1) + " geometry passes; memory " +
              mebibytes(allocatedBytes(ctx, {"oit.dual_depth", "oit.dual_prev_depth", "oit.dual_front", "oit.dual_back",
-                                            "oit.dual_front_accum", "oit.dual_back_accum", "oit.dual_count",
+                                            "oit.dual_front_accum", "oit.dual_back_accum", "oit.dual_count", "oit.dual_claims",
                                             "oit.sample_count", "oit.overflow"}));
 }
 

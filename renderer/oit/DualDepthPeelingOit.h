@@ -25,6 +25,7 @@ public:
     bool needsFragmentCount() const override { return true; }
     void render(OitFrame& frame) override;
     std::string stats() const override { return stats_; }
+    std::string lossCause() const override { return lossCause_; }
 
 private:
     IntKnob layers_;
@@ -32,6 +33,7 @@ private:
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer initTarget_, peelTarget_, accumTarget_;
     std::string stats_;
+    std::string lossCause_;
 };
 
 }  // namespace dw

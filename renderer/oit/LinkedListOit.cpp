@@ -2,13 +2,14 @@
 
 #include <algorithm>
 
+#include "renderer/gl/ShaderLoopLimit.h"
 #include "renderer/graph/PassTimer.h"
 
 namespace dw {
 
 LinkedListOit::LinkedListOit(KnobRegistry& knobs) {
     nodes_ = knobs.addInt("oit.list_nodes", 1 << 22, 1, 1 << 26, "oit",
-                          "linked_list: the node buffer's size in nodes (16 bytes each; the default 4 Mi nodes is 64 MiB). "
+                          "linked_list: the node buffer's size in nodes (24 bytes each; the default 4 Mi nodes is 96 MiB). "
                           "Fragments past it are lost and counted in oit.overflow",
                           "nodes", true);
 }
@@ -23,7 +24,7 @@ std::vector<OutputDecl> LinkedListOit::outputs() const {
         {"oit.list_heads", OutputKind::Scalar, "linked_list: each pixel's first node + 1 (R32UI; 0: none)",
          texture2D(GL_R32UI), 1},
         {"oit.list_nodes", OutputKind::Scalar,
-         "linked_list: the node buffer (uvec4: premultiplied RG and BA as halves, window depth, next node + 1 (0: the end))",
+         "linked_list: the node buffer (6 words: premultiplied RGBA as 32-bit floats, window depth, next node + 1 (0: the end))",
          bufferFixed(kNodeBytes, kNodeBytes), 1},
         {"oit.list_counter", OutputKind::Count, "linked_list: nodes taken this frame (one word, the atomic counter)",
          bufferFixed(16, 4), 1},
@@ -34,6 +35,14 @@ ResourceDesc LinkedListOit::resource(const OutputDecl& output, const KnobRegistr
     if (output.name == "oit.list_nodes")
         return bufferFixed(static_cast<std::size_t>(knobs.get(nodes_)) * kNodeBytes, kNodeBytes);
     return output.resource;
+}
+
+unsigned LinkedListOit::walkLimit(int loopLimit) {
+    if (loopLimit <= 0) return 0;
+    const int kept = gpu::OIT_LIST_MAX_FRAGMENTS;
+    // The sort (kept^2 / 2 steps and their exit tests) and the blend, with room to spare.
+    const int setAside = kept * kept + 4 * kept + 1024;
+    return static_cast<unsigned>(std::max(kept, (loopLimit - setAside) / (kept + 3)));
 }
 
 void LinkedListOit::setup(gl::ShaderLibrary& shaders) {
@@ -52,6 +61,8 @@ void LinkedListOit::render(OitFrame& f) {
     counter.bindBase(GL_SHADER_STORAGE_BUFFER, kOitCounterSsbo);
     const unsigned budget = static_cast<unsigned>(ctx.knobs.get(nodes_));
     f.params.nodeBudget = budget;
+    const unsigned walk = walkLimit(gl::shaderLoopIterationLimit());
+    f.params.walkLimit = walk;
     f.uploadParams();
 
     // No colour or depth writes: the fragments go to the list.
@@ -71,9 +82,15 @@ void LinkedListOit::render(OitFrame& f) {
     unsigned taken = 0;
     counter.read(0, sizeof taken, &taken);
     const unsigned used = std::min(taken, budget);
+    f.params.walkLimit = 0;
+    lossCause_ = (taken > budget ? std::to_string(taken - budget) + " over oit.list_nodes = " + std::to_string(budget) + "; "
+                                 : std::string()) +
+                 "linked_list keeps the " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " nearest per pixel" +
+                 (walk > 0 ? " of the first " + std::to_string(walk) + " it walks (this driver's loop limit)" : "");
     stats_ = std::to_string(used) + " of " + std::to_string(budget) + " nodes" +
              (taken > budget ? ", " + std::to_string(taken - budget) + " fragments over the budget (oit.overflow)" : "") +
-             "; resolve sorts up to " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " per pixel; memory " +
+             "; resolve sorts up to " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " per pixel" +
+             (walk > 0 ? " of at most " + std::to_string(walk) + " walked (the driver's loop limit)" : "") + "; memory " +
              mebibytes(allocatedBytes(ctx, {"oit.list_heads", "oit.list_nodes", "oit.list_counter", "oit.sample_count",
                                             "oit.overflow"}));
 }

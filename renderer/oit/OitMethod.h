@@ -34,9 +34,11 @@ constexpr GLuint kFragmentCount = 0;  // oit.sample_count
 constexpr GLuint kListHeads = 1;
 constexpr GLuint kOverflow = 2;       // oit.overflow
 constexpr GLuint kPeelLayers = 3;
+constexpr GLuint kDualClaims = 4;     // oit.dual_claims
 }  // namespace oit_unit
-// Shader storage bindings of the linked list.
-constexpr GLuint kOitNodeSsbo = 5, kOitCounterSsbo = 6;
+// Shader storage bindings of the linked list, and of the frame's lost
+// fragments summed (one uint, added to by shaders/oit/resolve.frag).
+constexpr GLuint kOitNodeSsbo = 5, kOitCounterSsbo = 6, kOitLostSsbo = 7;
 
 // One frame of a method's work, set up by the oit pass: the lighting
 // block, the light table, gbuffer.depth (unit 4), the shadow maps when
@@ -81,6 +83,11 @@ public:
     virtual void render(OitFrame& frame) = 0;
     // What the last frame did, with the method's GPU memory at the current size.
     virtual std::string stats() const = 0;
+    // Where the last frame's lost fragments went (the limits that dropped
+    // them, with their knob values), for the warning the oit pass gives when
+    // any were lost; methods that keep every fragment (weighted,
+    // forward_sorted) say nothing.
+    virtual std::string lossCause() const { return {}; }
 };
 
 using OitMethodFactory = std::function<std::unique_ptr<OitMethod>(KnobRegistry&)>;

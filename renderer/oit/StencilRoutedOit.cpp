@@ -10,7 +10,7 @@ namespace dw {
 StencilRoutedOit::StencilRoutedOit(KnobRegistry& knobs) {
     samples_ = knobs.addInt("oit.samples", 8, 1, gpu::OIT_MAX_SAMPLES, "oit",
                             "abuffer: samples per pixel, the layers the stencil-routed A-buffer holds; capped by what the "
-                            "device offers for RGBA16F and DEPTH32F_STENCIL8 (4 on llvmpipe, 8 or more on GPUs)",
+                            "device offers for RGBA32F and DEPTH32F_STENCIL8 (4 on llvmpipe, 8 or more on GPUs)",
                             "samples", true);
 }
 
@@ -22,8 +22,8 @@ std::string StencilRoutedOit::description() const {
 std::vector<OutputDecl> StencilRoutedOit::outputs() const {
     return {
         {"oit.abuffer", OutputKind::HdrColor,
-         "abuffer: each sample one layer, premultiplied colour and alpha in arrival order (RGBA16F x oit.samples)",
-         textureMultisample(GL_RGBA16F, 4), 4},
+         "abuffer: each sample one layer, premultiplied colour and alpha in arrival order (RGBA32F x oit.samples)",
+         textureMultisample(GL_RGBA32F, 4), 4},
         {"oit.abuffer_depth", OutputKind::Depth,
          "abuffer: each sample's window depth and routing stencil (DEPTH32F_STENCIL8 x oit.samples)",
          textureMultisample(GL_DEPTH32F_STENCIL8, 4), 1},
@@ -42,7 +42,7 @@ ResourceDesc StencilRoutedOit::resource(const OutputDecl& output, const KnobRegi
 }
 
 void StencilRoutedOit::setup(gl::ShaderLibrary& shaders) {
-    cap_ = std::min(gl::maxMultisampleSamples({GL_RGBA16F, GL_DEPTH32F_STENCIL8}), gpu::OIT_MAX_SAMPLES);
+    cap_ = std::min(gl::maxMultisampleSamples({GL_RGBA32F, GL_DEPTH32F_STENCIL8}), gpu::OIT_MAX_SAMPLES);
     gl::GlInfo info;
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     info.renderer = renderer ? renderer : "";
@@ -109,9 +109,11 @@ void StencilRoutedOit::render(OitFrame& f) {
     ctx.texture("oit.abuffer_depth").bind(14);
     f.compositeOverLBuffer(*resolve_);
     const int want = ctx.knobs.get(samples_);
+    lossCause_ = "abuffer keeps " + std::to_string(n) + " per pixel (oit.samples = " + std::to_string(want) +
+                 (want > n ? ", capped by the device" : "") + "), the first to arrive";
     stats_ = std::to_string(n) + " samples" +
              (want > n ? " (oit.samples = " + std::to_string(want) + " capped: the device offers " + std::to_string(cap_) +
-                             " for RGBA16F and DEPTH32F_STENCIL8)"
+                             " for RGBA32F and DEPTH32F_STENCIL8)"
                        : "") +
              "; memory " + mebibytes(allocatedBytes(ctx, {"oit.abuffer", "oit.abuffer_depth", "oit.sample_count", "oit.overflow"}));
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The stencil-routed A-buffer (seed 000 sections 3.5.2 and 5.9; Myers and
-// Bavoil 2007): a multisample colour (RGBA16F) and depth-stencil
+// Bavoil 2007): a multisample colour (RGBA32F) and depth-stencil
 // (DEPTH32F_STENCIL8) target of N samples, N = oit.samples capped by what
 // the device lists for both formats (glGetInternalformativ GL_SAMPLES: 4 on
 // llvmpipe). Each sample's stencil is set to 2 + its index through the
@@ -31,9 +31,10 @@ public:
     bool needsFragmentCount() const override { return true; }
     void render(OitFrame& frame) override;
     std::string stats() const override { return stats_; }
+    std::string lossCause() const override { return lossCause_; }
     // The samples the target gets under `knobs`: oit.samples capped by the device.
     int samples(const KnobRegistry& knobs) const;
-    // What the device offers for RGBA16F and DEPTH32F_STENCIL8 (0 before setup).
+    // What the device offers for RGBA32F and DEPTH32F_STENCIL8 (0 before setup).
     int deviceCap() const { return cap_; }
 
 private:
@@ -44,6 +45,7 @@ private:
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer target_;
     std::string stats_;
+    std::string lossCause_;
 };
 
 }  // namespace dw

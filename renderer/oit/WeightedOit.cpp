@@ -15,14 +15,14 @@ WeightedOit::WeightedOit(KnobRegistry& knobs) {
 }
 
 std::string WeightedOit::description() const {
-    return "weighted blended OIT (McGuire and Bavoil 2013): one unsorted pass into RGBA16F accumulation and R8 "
+    return "weighted blended OIT (McGuire and Bavoil 2013): one unsorted pass into RGBA32F accumulation and R8 "
            "revealage, an approximation";
 }
 
 std::vector<OutputDecl> WeightedOit::outputs() const {
     return {
-        {"oit.accum", OutputKind::HdrColor, "weighted: sum of w * premultiplied colour (rgb) and w * alpha (a), RGBA16F",
-         texture2D(GL_RGBA16F), 4},
+        {"oit.accum", OutputKind::HdrColor, "weighted: sum of w * premultiplied colour (rgb) and w * alpha (a), RGBA32F",
+         texture2D(GL_RGBA32F), 4},
         {"oit.revealage", OutputKind::Scalar, "weighted: product of (1 - alpha), R8", texture2D(GL_R8), 1},
     };
 }

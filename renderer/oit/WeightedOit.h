@@ -1,8 +1,9 @@
 #pragma once
 // Weighted blended order-independent transparency (McGuire and Bavoil,
 // "Weighted Blended Order-Independent Transparency", JCGT 2(2), 2013): one
-// pass accumulates sum(w C_i) and sum(w a_i) in oit.accum (RGBA16F, the
-// paper's format; GL_ONE, GL_ONE) and prod(1 - a_i) in oit.revealage (R8,
+// pass accumulates sum(w C_i) and sum(w a_i) in oit.accum (RGBA32F; the
+// paper's RGBA16F overflowed at 65504 once colour x weight, up to 3e3,
+// passed it; GL_ONE, GL_ONE) and prod(1 - a_i) in oit.revealage (R8,
 // the paper's; GL_ZERO, GL_ONE_MINUS_SRC_COLOR); the composite is their
 // eq. 6. The weight w(z, a) is the paper's eq. 7, 8, 9 or 10
 // (oit.weight_function). No sorting and a fixed cost, but an approximation:

@@ -64,8 +64,9 @@ std::vector<OutputDecl> OitPass::outputs() const {
          "oit.overflow; R32UI)",
          texture2D(GL_R32UI), 1},
         {"oit.overflow", OutputKind::Count,
-         "transparent fragments lost per pixel: past the A-buffer's samples, the peeled layers or the list's budget "
-         "(R32UI)",
+         "transparent fragments lost per pixel: past the A-buffer's samples, past (or at exactly the depth of) the "
+         "peeled layers, or past the list's budget, its 32 nearest or its walk's bound; the frame's total is warned "
+         "about (R32UI)",
          texture2D(GL_R32UI), 1},
     };
     for (const auto& m : methods_)
@@ -130,6 +131,7 @@ void OitPass::setup(gl::ShaderLibrary& shaders) {
     for (auto& m : methods_) m->setup(shaders);
     lighting_.create();
     params_.create();
+    lostTotal_ = gl::Buffer::create(2 * sizeof(std::uint32_t), nullptr, true, "oit lost fragments");
 }
 
 const gl::Program& OitPass::transparentProgram(const std::string& method, bool shadowed) {
@@ -137,6 +139,17 @@ const gl::Program& OitPass::transparentProgram(const std::string& method, bool s
     if (shadowed) defines.emplace_back("OIT_SHADOWED");
     // The library caches programs by description.
     return *shaders_->get({.vertex = "geometry.vert", .fragment = "oit/transparent.frag", .defines = defines});
+}
+
+void OitPass::readLostTotal(const OitMethod& method) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t totals[2] = {0, 0};
+    lostTotal_.read(0, sizeof totals, totals);
+    lastLost_ = totals[0];
+    lastArrived_ = totals[1];
+    if (lastLost_ == 0) return;
+    warning_ = "lost " + std::to_string(lastLost_) + " of " + std::to_string(lastArrived_) +
+               " transparent fragments this frame (" + method.lossCause() + "); oit.overflow shows where";
 }
 
 void OitPass::execute(FrameContext& ctx) {
@@ -154,6 +167,10 @@ void OitPass::execute(FrameContext& ctx) {
     const gl::Texture& overflow = ctx.texture("oit.overflow");
     count.clearUint(0);
     overflow.clearUint(0);
+    warning_.clear();
+    lastLost_ = lastArrived_ = 0;
+    lostTotal_.clearUint(0);
+    lostTotal_.bindBase(GL_SHADER_STORAGE_BUFFER, kOitLostSsbo);
 
     OitFrame f{ctx};
     const glm::dmat4 worldToClip = ctx.camera.worldToClip();
@@ -205,6 +222,7 @@ void OitPass::execute(FrameContext& ctx) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     };
     method.render(f);
+    readLostTotal(method);
     // The method's own outputs and the overflow are written every frame, so
     // the probe and the inspector can read them although nothing asked for
     // them; the count only when it was counted.

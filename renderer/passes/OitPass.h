@@ -12,6 +12,7 @@
 // oit.sample_count (every transparent fragment that reached the pixel,
 // stored or lost) and oit.overflow (lost), and each method's own outputs.
 // Skipped, with the reason, when the scene has no blended material.
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -43,15 +44,24 @@ public:
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
+    // "lost N of M transparent fragments (where: the method's limits)" when
+    // the last frame's method lost any; empty otherwise.
+    std::string frameWarning() const override { return warning_; }
 
     const std::vector<std::unique_ptr<OitMethod>>& methods() const { return methods_; }
     // The blended instances the last frame drew.
     std::size_t lastDraws() const { return lastDraws_; }
+    // The last frame's transparent fragments lost (summed oit.overflow) and
+    // counted (summed oit.sample_count; 0 where the method counts none).
+    std::uint64_t lastLost() const { return lastLost_; }
+    std::uint64_t lastArrived() const { return lastArrived_; }
 
 private:
     // The method that declares `output`, or null for the shared outputs.
     const OitMethod* ownerOf(const std::string& output) const;
     const gl::Program& transparentProgram(const std::string& method, bool shadowed);
+    // The method's lost and arrived fragments, summed on the GPU, read back; the warning when any were lost.
+    void readLostTotal(const OitMethod& method);
 
     std::vector<std::unique_ptr<OitMethod>> methods_;
     EnumKnob method_;
@@ -64,8 +74,10 @@ private:
     gl::ParamBuffer<gpu::OitParams> params_;
     gl::FullscreenTriangle triangle_;
     TargetFramebuffer composite_;
-    std::string stats_;
+    gl::Buffer lostTotal_;  // (lost, arrived), summed by shaders/oit/resolve.frag
+    std::string stats_, warning_;
     std::size_t lastDraws_ = 0;
+    std::uint64_t lastLost_ = 0, lastArrived_ = 0;
 };
 
 }  // namespace dw

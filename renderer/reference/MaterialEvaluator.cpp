@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "renderer/reference/TextureSampler.h"
+#include "renderer/scene/SceneCheck.h"
 
 namespace dw::reference {
 
@@ -109,7 +110,7 @@ SurfaceSample evaluateSurface(const RayScene& rays, const RayHit& hit, const glm
     s.exponent = std::clamp(std::isfinite(exponent) ? exponent : 1.0, 1.0, 2048.0);
     glm::dvec3 emissive(m.emissive);
     if (m.emissiveTexture >= 0) emissive *= glm::dvec3(sample(m.emissiveTexture, Material::EmissiveSlot, true));
-    s.emissive = glm::clamp(emissive, 0.0, 65000.0);
+    s.emissive = glm::clamp(emissive, 0.0, double(kMaxEmission));  // as the GPU clamps it, opaque or blended
     if (m.occlusionTexture >= 0) {
         const double r = sample(m.occlusionTexture, Material::OcclusionSlot, false).r;
         s.occlusion = std::clamp(1.0 + m.occlusionStrength * (r - 1.0), 0.0, 1.0);

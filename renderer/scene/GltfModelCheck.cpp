@@ -74,6 +74,13 @@ void GltfModelCheck::validate() const {
         checkIndex(m.normalTexture.index, model_.textures, what + ".normalTexture");
         checkIndex(m.emissiveTexture.index, model_.textures, what + ".emissiveTexture");
         checkIndex(m.occlusionTexture.index, model_.textures, what + ".occlusionTexture");
+        // Alpha has one rule in every scene format: scene JSON refuses an
+        // opacity outside [0, 1], so glTF does too (clamping it would silently
+        // turn 1.5 into opaque and -0.5 into invisible).
+        const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+        if (f.size() == 4 && !(f[3] >= 0.0 && f[3] <= 1.0))
+            fail(what + ".pbrMetallicRoughness.baseColorFactor[3] (alpha): must be between 0 (invisible) and 1 (opaque), got " +
+                 std::to_string(f[3]));
     });
     for (size_t i = 0; i < model_.nodes.size(); ++i) collect(problems, [&] {
         const auto& n = model_.nodes[i];
@@ -164,7 +171,7 @@ void GltfModelCheck::noteInvalid(std::vector<std::string>& invalid) const {
         if (mat.alphaMode != "OPAQUE" && mat.alphaMode != "MASK" && mat.alphaMode != "BLEND")
             invalid.push_back(what + ".alphaMode: '" + mat.alphaMode + "' is not OPAQUE, MASK or BLEND (drawn as OPAQUE)");
         const auto& f = mat.pbrMetallicRoughness.baseColorFactor;
-        for (size_t c = 0; c < f.size(); ++c)
+        for (size_t c = 0; c < f.size() && c < 3; ++c)  // alpha (3) outside [0, 1] is refused above
             if (!(f[c] >= 0.0 && f[c] <= 1.0)) {
                 invalid.push_back(what + ".pbrMetallicRoughness.baseColorFactor[" + std::to_string(c) + "]: " +
                                   std::to_string(f[c]) + " is outside [0, 1] (clamped)");

@@ -15,6 +15,18 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 }  // namespace
 
+void warnClampedEmission(Scene& scene) {
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        const float peak = std::max({m.emissive.x, m.emissive.y, m.emissive.z});
+        if (!(peak > kMaxEmission)) continue;
+        const std::string name = m.name.empty() ? "materials[" + std::to_string(i) + "]" : m.name;
+        scene.warnings.push_back(scene.source + ": material '" + name + "': emissive " + shortNumber(peak) +
+                                 " is beyond 65000, the largest emission the G-buffer holds (R11G11B10F); clamped to "
+                                 "65000 on opaque and blended surfaces and in the CPU reference");
+    }
+}
+
 void checkSceneValues(const Scene& scene) {
     auto fail = [&](const std::string& what) { throw FileError(scene.source, what); };
     const Bounds b = scene.bounds();

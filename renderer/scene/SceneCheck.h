@@ -14,4 +14,16 @@ namespace dw {
 // and the camera (CameraCheck.h, relative to the scene's extent).
 void checkSceneValues(const Scene& scene);
 
+// The largest emission any surface carries (R11F_G11F_B10F's largest value,
+// less a margin): the G-buffer's emissive target cannot hold more, so
+// shaders/geometry.frag, shaders/oit/transparent.frag (blended surfaces,
+// every oit.method) and the CPU reference (MaterialEvaluator) all clamp
+// emission to it: one rule for opaque and blended surfaces alike.
+inline constexpr float kMaxEmission = 65000.0f;
+
+// Adds to scene.warnings one line per material whose emissive factor
+// (glTF: times KHR_materials_emissive_strength) is beyond kMaxEmission,
+// naming the scene file, the material and the value: it is clamped, not refused.
+void warnClampedEmission(Scene& scene);
+
 }  // namespace dw

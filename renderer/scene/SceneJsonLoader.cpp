@@ -544,6 +544,7 @@ Scene parseSceneJson(const std::string& text, const std::string& path) {
     SceneJsonParser parser(path, scene);
     parser.parse(root);
     checkSceneValues(scene);  // what the fields combine into (extent, transforms, framed camera)
+    warnClampedEmission(scene);
     return scene;
 }
 

@@ -63,6 +63,7 @@ Scene loadScene(const std::string& spec) {
         if (!imported.hasCamera) scene.camera = Camera::framing(imported.bounds);
         if (imported.lightCount == 0) addDefaultLightRig(scene);
         checkSceneValues(scene);  // what the nodes combine into (extent, transforms, framed camera)
+        warnClampedEmission(scene);
         return scene;
     }
     if (!fs::exists(spec)) {

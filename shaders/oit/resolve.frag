@@ -8,7 +8,8 @@
 //     section 5.9), sorted by depth; the fragments past the samples counted
 //     into oit.overflow (oit.sample_count - samples).
 //   RESOLVE_LIST: the pixel's linked list, the nearest OIT_LIST_MAX_FRAGMENTS
-//     kept in a local array and sorted; the rest counted into oit.overflow.
+//     kept in a local array and sorted; the rest counted into oit.overflow
+//     (oit.sample_count - kept).
 //   RESOLVE_WEIGHTED: McGuire and Bavoil 2013's composite (their eq. 6).
 //   RESOLVE_DUAL: dual depth peeling's front layers over its back layers;
 //   RESOLVE_PEEL: the layers depth peeling accumulated front to back;
@@ -19,6 +20,16 @@
 layout(location = 0) out vec4 outColor;
 layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
 layout(binding = 2, r32ui) uniform coherent uimage2D uLost;           // oit.overflow
+// The frame's fragments lost and arrived, summed over the pixels: the pass
+// reads them back for its one-line warning (OitPass::frameWarning).
+layout(std430, binding = 7) buffer LostTotal { uint lostTotal; uint arrivedTotal; };
+
+// Stores a pixel's lost fragments into oit.overflow and adds them to the totals.
+void countLost(ivec2 px, uint arrived, uint lost) {
+    imageStore(uLost, px, uvec4(lost));
+    if (arrived > 0u) atomicAdd(arrivedTotal, arrived);
+    if (lost > 0u) atomicAdd(lostTotal, lost);
+}
 
 bool farther(float a, float b) { return depthReversed() ? a < b : a > b; }
 
@@ -27,7 +38,7 @@ layout(binding = 13) uniform sampler2DMS uSamples;
 layout(binding = 14) uniform sampler2DMS uSampleDepth;
 #elif defined(RESOLVE_LIST)
 layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
-layout(std430, binding = 5) readonly buffer ListNodes { uvec4 nodes[]; };
+layout(std430, binding = 5) readonly buffer ListNodes { uint nodeWords[]; };  // OIT_LIST_NODE_WORDS a node
 #elif defined(RESOLVE_WEIGHTED)
 layout(binding = 13) uniform sampler2D uAccum;
 layout(binding = 14) uniform sampler2D uRevealage;
@@ -54,7 +65,7 @@ void main() {
 #if defined(RESOLVE_ABUFFER)
     uint arrived = imageLoad(uFragmentCount, px).r;
     n = int(min(arrived, uint(oit.samples)));
-    imageStore(uLost, px, uvec4(arrived - uint(n)));
+    countLost(px, arrived, arrived - uint(n));
     for (int i = 0; i < n; ++i) {
         colour[i] = texelFetch(uSamples, px, i);
         depth[i] = texelFetch(uSampleDepth, px, i).r;
@@ -63,30 +74,37 @@ void main() {
     // Links are node index + 1, 0 ending the list: a lane whose loads are
     // masked (llvmpipe returns 0 for them) stops instead of walking node 0's
     // list until the driver's loop limit (2.5 s a frame at 320x180).
+    // The walk reads at most oit.walkLimit nodes (0: all): the driver ends a
+    // shader's loops silently past its iteration budget, so the bound keeps
+    // the walk, the sort and the blend inside it. What is not kept (over the
+    // node budget, past the kMax nearest, past the walk's bound) is
+    // oit.sample_count - kept, every fragment having been counted.
     uint link = imageLoad(uHeads, px).r;
-    uint dropped = 0u;
-    while (link != 0u) {
-        uvec4 v = nodes[link - 1u];
-        vec4 c = vec4(unpackHalf2x16(v.x), unpackHalf2x16(v.y));
-        float z = uintBitsToFloat(v.z);
+    uint walked = 0u;
+    int far = 0;  // the farthest kept, once the array is full
+    while (link != 0u && (oit.walkLimit == 0u || walked < oit.walkLimit)) {
+        uint at = (link - 1u) * uint(OIT_LIST_NODE_WORDS);
+        vec4 c = vec4(uintBitsToFloat(nodeWords[at]), uintBitsToFloat(nodeWords[at + 1u]),
+                      uintBitsToFloat(nodeWords[at + 2u]), uintBitsToFloat(nodeWords[at + 3u]));
+        float z = uintBitsToFloat(nodeWords[at + 4u]);
+        link = nodeWords[at + 5u];
+        ++walked;
         if (n < kMax) {
             colour[n] = c;
             depth[n] = z;
+            if (n == 0 || farther(z, depth[far])) far = n;
             ++n;
-        } else {
-            // Full: keep the nearest kMax, drop the farthest.
-            int far = 0;
+        } else if (farther(depth[far], z)) {
+            // Full: keep the nearest kMax; the farthest makes room, then the new farthest is found.
+            colour[far] = c;
+            depth[far] = z;
+            far = 0;
             for (int i = 1; i < kMax; ++i)
                 if (farther(depth[i], depth[far])) far = i;
-            if (farther(depth[far], z)) {
-                colour[far] = c;
-                depth[far] = z;
-            }
-            ++dropped;
         }
-        link = v.w;
     }
-    if (dropped > 0u) imageAtomicAdd(uLost, px, dropped);
+    uint arrived = imageLoad(uFragmentCount, px).r;
+    countLost(px, arrived, arrived > uint(n) ? arrived - uint(n) : 0u);
 #endif
     if (n == 0) discard;
     // Insertion sort, farthest first.
@@ -113,18 +131,19 @@ void main() {
     vec4 accum = texelFetch(uAccum, px, 0);
     float revealage = texelFetch(uRevealage, px, 0).r;
     if (revealage >= 1.0) discard;  // nothing transparent here
-    vec3 average = accum.rgb / clamp(accum.a, 1e-4, 5e4);
+    // RGBA32F accumulation: no upper clamp (the paper's 5e4 guarded RGBA16F).
+    vec3 average = accum.rgb / max(accum.a, 1e-4);
     outColor = vec4(average * (1.0 - revealage), revealage);
 #elif defined(RESOLVE_PEEL)
     uint arrived = imageLoad(uFragmentCount, px).r;
     uint layers = imageLoad(uLayers, px).r;
-    imageStore(uLost, px, uvec4(arrived > layers ? arrived - layers : 0u));
+    countLost(px, arrived, arrived > layers ? arrived - layers : 0u);
     if (layers == 0u) discard;
     outColor = texelFetch(uPeelAccum, px, 0);
 #elif defined(RESOLVE_DUAL)
     uint arrived = imageLoad(uFragmentCount, px).r;
     uint layers = imageLoad(uLayers, px).r;
-    imageStore(uLost, px, uvec4(arrived > layers ? arrived - layers : 0u));
+    countLost(px, arrived, arrived > layers ? arrived - layers : 0u);
     if (layers == 0u) discard;
     vec4 front = texelFetch(uFrontAccum, px, 0), back = texelFetch(uBackAccum, px, 0);
     outColor = vec4(front.rgb + front.a * back.rgb, front.a * back.a);

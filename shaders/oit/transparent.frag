@@ -9,7 +9,7 @@
 // A-buffer's stencil routing must see only the fragments it stores). Then
 // one method stores it:
 //   METHOD_LIST: a node of the per-pixel linked list (head image, node SSBO,
-//     atomic counter; past oit.nodeBudget counted in oit.overflow)
+//     atomic counter; past oit.nodeBudget lost, counted by the resolve)
 //   METHOD_WEIGHTED: McGuire and Bavoil 2013's accumulation and revealage
 //   METHOD_ABUFFER: the colour to the stencil-routed sample (the pass sets
 //     the stencil state; depth GL_ALWAYS, written)
@@ -37,8 +37,8 @@ in VertexData {
 layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
 #if defined(METHOD_LIST)
 layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
-layout(binding = 2, r32ui) uniform coherent uimage2D uLost;  // oit.overflow
-layout(std430, binding = 5) buffer ListNodes { uvec4 nodes[]; };
+// OIT_LIST_NODE_WORDS words a node: premultiplied RGBA (32-bit floats), window depth, next + 1.
+layout(std430, binding = 5) buffer ListNodes { uint nodeWords[]; };
 layout(std430, binding = 6) buffer ListCounter { uint usedNodes; };
 #elif defined(METHOD_WEIGHTED)
 layout(location = 0) out vec4 outAccum;
@@ -51,6 +51,8 @@ layout(location = 0) out vec2 outDepth;
 #elif defined(METHOD_DUAL)
 layout(binding = 13) uniform sampler2D uPrevDepth;  // (-nearest, farthest) left, as farness
 layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
+// This pass's claims: bit 0 the nearest layer taken, bit 1 the farthest.
+layout(binding = 4, r32ui) uniform coherent uimage2D uClaims;
 layout(location = 0) out vec2 outDepth;
 layout(location = 1) out vec4 outFront;
 layout(location = 2) out vec4 outBack;
@@ -75,8 +77,11 @@ float blendWeight(float alpha, float z, float windowDepth) {
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     if (!nearer(gl_FragCoord.z, texelFetch(uDepth, px, 0).r)) discard;  // behind the opaque surface
-    // Dual depth peeling compares "farness", 0 near .. 1 far in either depth.mode.
-    float farness = depthReversed() ? 1.0 - gl_FragCoord.z : gl_FragCoord.z;
+    // Dual depth peeling compares "farness", larger farther in either
+    // depth.mode: z, or -z when reversed (-1 near .. 0 far). Not 1 - z: that
+    // rounds distinct reversed depths near 0 to one farness, which then
+    // counted as equal depths (a loss) on the glass scene's fan.
+    float farness = depthReversed() ? -gl_FragCoord.z : gl_FragCoord.z;
 #ifdef METHOD_DUAL_INIT
     outDepth = vec2(-farness, farness);  // GL_MAX: (-nearest, farthest)
     if (oit.countFragments != 0 && !gl_HelperInvocation) imageAtomicAdd(uFragmentCount, px, 1u);
@@ -85,7 +90,7 @@ void main() {
 #ifdef METHOD_DUAL
     vec2 prev = texelFetch(uPrevDepth, px, 0).rg;
     float nearest = -prev.x, farthest = prev.y;
-    outDepth = vec2(-2.0);  // below every farness: no effect under GL_MAX
+    outDepth = vec2(-2.0);  // below every farness and its negation (both in [-1, 1]): no effect under GL_MAX
     outFront = vec4(0.0);
     outBack = vec4(0.0);
     if (farness < nearest || farness > farthest) discard;  // peeled already
@@ -116,7 +121,10 @@ void main() {
     s.specular = clamp(ms.specular, 0.0, 1.0);
     s.exponent = clamp(ms.exponent, 1.0, 2048.0);
     vec3 reflectance = s.diffuse + (lightingParams.ambientSpecular != 0 ? s.specular : vec3(0.0));
-    vec3 c = lightingParams.ambient.rgb * reflectance + ms.emissive;
+    // Emission clamped as the G-buffer pass clamps it (R11G11B10F's largest
+    // value; SceneCheck.h kMaxEmission): opaque and blended surfaces and the
+    // CPU reference follow one rule.
+    vec3 c = lightingParams.ambient.rgb * reflectance + clamp(ms.emissive, vec3(0.0), vec3(65000.0));
     for (int i = 0; i < oit.lightCount; ++i) c += lightRadiance(shadingLight(i), s);
     vec4 premultiplied = vec4(c * alpha, alpha);
 
@@ -133,17 +141,23 @@ void main() {
 #endif
     if (oit.countFragments != 0 && counted) imageAtomicAdd(uFragmentCount, px, 1u);
 #if defined(METHOD_LIST)
+    // Past the budget the fragment is lost; the resolve counts it (oit.sample_count - kept).
     uint node = atomicAdd(usedNodes, 1u);
-    if (node >= oit.nodeBudget) {
-        imageAtomicAdd(uLost, px, 1u);
-        return;
-    }
+    if (node >= oit.nodeBudget) return;
     uint next = imageAtomicExchange(uHeads, px, node + 1u);  // links are index + 1; 0 ends a list
-    nodes[node] = uvec4(packHalf2x16(premultiplied.rg), packHalf2x16(premultiplied.ba), floatBitsToUint(gl_FragCoord.z), next);
+    uint at = node * uint(OIT_LIST_NODE_WORDS);
+    for (int i = 0; i < 4; ++i) nodeWords[at + uint(i)] = floatBitsToUint(premultiplied[i]);
+    nodeWords[at + 4u] = floatBitsToUint(gl_FragCoord.z);
+    nodeWords[at + 5u] = next;
 #elif defined(METHOD_DUAL_INIT)
     // (returned above)
 #elif defined(METHOD_DUAL)
     // The nearest or the farthest layer left (the nearest when they are one).
+    // A second fragment at exactly that depth would be merged with the first
+    // by GL_MAX: it is lost instead, so oit.overflow (fragments - layers)
+    // counts it.
+    uint side = farness == nearest ? 1u : 2u;
+    if ((imageAtomicOr(uClaims, px, side) & side) != 0u) discard;
     imageAtomicAdd(uLayers, px, 1u);
     if (farness == nearest) outFront = premultiplied;
     else outBack = premultiplied;

@@ -463,3 +463,43 @@ TEST(Cli, WritesTransparencySampleCounts) {
     EXPECT_NE(wrong.code, 0);
     EXPECT_NE(wrong.err.find("oit.abuffer is written only with oit.method=abuffer"), std::string::npos) << wrong.err;
 }
+
+// Issue 32: a plain render says in one line when the oit pass lost
+// fragments (the 4-sample A-buffer on the glass scene), with the count that
+// oit.overflow sums to; the exact list loses none there and says nothing.
+// A blended pane of emission 1e30 is clamped (65000, the G-buffer's bound,
+// as for opaque surfaces and the reference) with a warning naming the file
+// and the material: the L-buffer stays finite.
+TEST(Cli, RenderSaysWhenTransparencyLosesFragments) {
+    const fs::path overflow = test::tempDir() / "oit_lost.exr";
+    const Result r = run("render --scene glass --size 160x90 --set oit.method=abuffer --set oit.samples=4 --buffer "
+                         "oit.overflow --out " + overflow.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const FloatImage o = loadImageFloat(overflow.string());
+    double lost = 0;
+    for (float v : o.pixels) lost += v;
+    ASSERT_GT(lost, 0.0);
+    const std::string line = "warning: oit: lost " + std::to_string(static_cast<long long>(lost)) + " of ";
+    const size_t at = r.err.find(line);
+    ASSERT_NE(at, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("warning: oit:", at + 1), std::string::npos) << "one line: " << r.err;
+    const std::string rest = r.err.substr(at, r.err.find('\n', at) - at);
+    EXPECT_NE(rest.find(" transparent fragments this frame (abuffer keeps 4 per pixel (oit.samples = 4), the first to "
+                        "arrive); oit.overflow shows where"),
+              std::string::npos)
+        << rest;
+    const Result exact = run("render --scene glass --size 160x90 --out " + (test::tempDir() / "oit_exact.png").string());
+    ASSERT_EQ(exact.code, 0) << exact.err;
+    EXPECT_EQ(exact.err.find("oit:"), std::string::npos) << exact.err;
+
+    const fs::path hot = test::tempDir() / "oit_hot.json";
+    std::ofstream(hot) << R"({"camera": {"pos": [0, 0, 10], "look-at": [0, 0, 0]},
+        "objects": [{"shape": "plane", "size": [40, 0, 40], "rotate": [90, 0, 0], "name": "hot",
+                     "material": {"diffuse": [0.5, 0.5, 0.5], "emissive": [1e30, 1e30, 1e30], "opacity": 0.5}}]})";
+    const Result clamped = run("render --scene " + hot.string() + " --size 32x18 --check-finite --buffer lbuffer --out " +
+                               (test::tempDir() / "oit_hot.exr").string());
+    ASSERT_EQ(clamped.code, 0) << clamped.err;
+    EXPECT_NE(clamped.err.find(hot.string() + ": material 'objects[0]': emissive 1e+30 is beyond 65000"), std::string::npos)
+        << clamped.err;
+    EXPECT_NE(clamped.out.find("no NaN or infinity"), std::string::npos) << clamped.out;
+}

@@ -32,7 +32,9 @@
 #include "ui/TimingsPanel.h"
 #include "ui/PanelLayout.h"
 #include "ui/Widgets.h"
+#include "ui/ViewportComposer.h"
 #include "ui/WorkbenchUi.h"
+#include "renderer/passes/OitPass.h"
 
 #include <nlohmann/json.hpp>
 
@@ -1624,4 +1626,34 @@ TEST(Gui, TheParetoPlotsAxesStartAtZeroForDataThatDoNotGoBelowIt) {
     const ui::DrawnItem& plot = items.at("pareto.plot");
     EXPECT_LE(items.at("pareto.point.0").y, plot.y + plot.h);
     EXPECT_FALSE(items.count("pareto.baseline") && items.at("pareto.baseline").frame == ImGui::GetFrameCount());
+}
+
+// Issue 32: the window says in Messages when the oit pass lost transparent
+// fragments (the glass scene under the 4-sample A-buffer), the line render
+// prints; once while the same loss holds, not every frame; and nothing
+// when the exact list loses none.
+TEST(Gui, LostTransparentFragmentsAreSaidInMessages) {
+    auto session = test::makeSession(64, 36);
+    ui::UiState state;
+    session->loadScene("glass", state.run);
+    state.wantedSize = {64, 36};
+    ui::ViewportComposer composer(*session);
+    auto lostLines = [&] {
+        int n = 0;
+        for (const auto& m : state.log.all()) n += m.text.rfind("warning: oit: lost ", 0) == 0 ? 1 : 0;
+        return n;
+    };
+    composer.render(state);
+    EXPECT_EQ(lostLines(), 0) << "linked_list loses nothing on glass";
+    session->knobs().setFromString("oit.method", "abuffer");
+    session->knobs().setFromString("oit.samples", "4");
+    composer.render(state);
+    ASSERT_EQ(lostLines(), 1);
+    const std::string& line = state.log.all().back().text;
+    EXPECT_NE(line.find("transparent fragments this frame (abuffer keeps 4 per pixel"), std::string::npos) << line;
+    const std::uint64_t lost = session->pipeline().pass<OitPass>()->lastLost();
+    EXPECT_EQ(line.rfind("warning: oit: lost " + std::to_string(lost) + " of ", 0), 0u) << line;
+    session->camera().position += glm::vec3(0.0f, 0.0f, 1e-4f);  // another frame, the same loss
+    composer.render(state);
+    EXPECT_EQ(lostLines(), 1);
 }

@@ -348,6 +348,44 @@ class SessionTest(unittest.TestCase):
         self.assertEqual(len(lines), 1, lines)
         self.assertIn("bench: warning: configuration 1 (32x18): aov: about ", lines[0])
 
+    def test_render_warns_when_transparency_loses_fragments(self):
+        # Issue 32: the line `render` prints when the oit pass lost fragments
+        # (the 4-sample A-buffer on the glass scene), as a RuntimeWarning
+        # whose count is what oit.overflow sums to; the exact list says nothing.
+        s = dw.Session(scene="glass", size=(160, 90), settings={"oit.method": "abuffer", "oit.samples": 4})
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            overflow = s.render("oit.overflow")
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            counts = s.render("oit.sample_count")
+        lost = int(overflow.astype("int64").sum())
+        self.assertGreater(lost, 0)
+        self.assertEqual([l for l in lines if l.startswith("oit: ")],
+                         ["oit: lost %d of %d transparent fragments this frame (abuffer keeps 4 per pixel "
+                          "(oit.samples = 4), the first to arrive); oit.overflow shows where"
+                          % (lost, int(counts.astype("int64").sum()))], lines)
+        s.set("oit.method", "linked_list")
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            s.render()  # nothing lost: no warning (it would raise here)
+        # A blended pane of emission 1e30: the loader's clamp is warned about
+        # when the session opens, and the L-buffer is finite (0.5 x 65000 + ...).
+        path = os.path.join(tempfile.mkdtemp(), "hot.json")
+        with open(path, "w") as f:
+            f.write('{"camera": {"pos": [0, 0, 10], "look-at": [0, 0, 0]}, "objects": [{"shape": "plane", '
+                    '"size": [40, 0, 40], "rotate": [90, 0, 0], "material": {"diffuse": [0.5, 0.5, 0.5], '
+                    '"emissive": [1e30, 1e30, 1e30], "opacity": 0.5}}]}')
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            hot = dw.Session(scene=path, size=(32, 18))
+        lines = [str(w.message) for w in caught if issubclass(w.category, RuntimeWarning)]
+        self.assertTrue(any(path + ": material 'objects[0]': emissive 1e+30 is beyond 65000" in l for l in lines), lines)
+        lbuffer = hot.render("lbuffer")
+        self.assertTrue(np.isfinite(lbuffer).all())
+        self.assertGreater(float(lbuffer[..., :3].max()), 32000.0)
+
     def test_render_record_replays_to_the_same_image(self):
         s = dw.Session(scene="default", size=(48, 27))
         s.set("ssao.samples", 8)

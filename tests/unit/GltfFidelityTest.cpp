@@ -441,25 +441,52 @@ TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
 }
 
 // A material outside the spec (found by a new user of transparency): an
-// alphaMode that is none of the three, and a base colour factor outside
-// [0, 1], are named; the material is drawn OPAQUE, the factor clamped.
+// alphaMode that is none of the three, and a base colour factor's colour
+// outside [0, 1], are named; the material is drawn OPAQUE, the colour clamped.
 TEST(GltfFidelity, MaterialsOutsideTheSpecAreNamedAndClamped) {
     test::GltfBuilder b;
     const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
     json j = b.finish({{"POSITION", pos}}, -1, {json::object()});
-    j["materials"] = json::array({{{"alphaMode", "blend"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0.5, 0.5, 1.5}}}}}});
+    j["materials"] = json::array({{{"alphaMode", "blend"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1.5, 0.5, 0.5, 1}}}}}});
     j["meshes"][0]["primitives"][0]["material"] = 0;
     Scene s;
     importGltf(test::writeJson("material-out-of-spec.gltf", j).string(), s, glm::mat4(1.0f), false);
     ASSERT_FALSE(s.warnings.empty());
     const std::string& w = s.warnings[0];
     EXPECT_NE(w.find("materials[0].alphaMode: 'blend' is not OPAQUE, MASK or BLEND (drawn as OPAQUE)"), std::string::npos) << w;
-    EXPECT_NE(w.find("materials[0].pbrMetallicRoughness.baseColorFactor[3]: 1.500000 is outside [0, 1] (clamped)"),
+    EXPECT_NE(w.find("materials[0].pbrMetallicRoughness.baseColorFactor[0]: 1.500000 is outside [0, 1] (clamped)"),
               std::string::npos)
         << w;
     ASSERT_EQ(s.materials.size(), 1u);
     EXPECT_EQ(s.materials[0].alphaMode, AlphaMode::Opaque);
-    EXPECT_FLOAT_EQ(s.materials[0].baseColor.a, 1.0f);
+    EXPECT_FLOAT_EQ(s.materials[0].baseColor.r, 1.0f);
+}
+
+// Issue 32: alpha has one rule in every scene format. Scene JSON refuses an
+// opacity outside [0, 1]; a glTF base colour factor's alpha outside it is
+// refused too, naming the file, the material and the value (it was clamped:
+// 1.5 drew opaque, -0.5 invisible).
+TEST(GltfFidelity, BaseColourAlphaOutsideZeroOneIsRefusedAsSceneJsonOpacityIs) {
+    for (double alpha : {1.5, -0.5}) {
+        test::GltfBuilder b;
+        const int pos = b.vec3({0, 0, 0, 1, 0, 0, 0, 1, 0});
+        json j = b.finish({{"POSITION", pos}}, -1, {json::object()});
+        j["materials"] = json::array({{{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, alpha}}}}}});
+        j["meshes"][0]["primitives"][0]["material"] = 0;
+        const std::string path = test::writeJson("material-alpha-out-of-range.gltf", j).string();
+        Scene s;
+        try {
+            importGltf(path, s, glm::mat4(1.0f), false);
+            ADD_FAILURE() << "alpha " << alpha << " was accepted";
+        } catch (const FileError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("material-alpha-out-of-range.gltf"), std::string::npos) << what;
+            EXPECT_NE(what.find("material[0].pbrMetallicRoughness.baseColorFactor[3] (alpha): must be between 0 "
+                                "(invisible) and 1 (opaque), got " + std::to_string(alpha)),
+                      std::string::npos)
+                << what;
+        }
+    }
 }
 
 // Issue 25: a file that breaks the spec where the workbench can read past it

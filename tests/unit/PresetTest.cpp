@@ -244,3 +244,22 @@ TEST(Preset, EveryBuiltinPresetOfAnAoMethodPinsThatMethod) {
         }
     }
 }
+
+// Issue 32: the quality levels follow seed 002 section 7's list, its
+// stencil-routed A-buffer included (4 / 8 / 8 samples per pixel), and say
+// that its resolutions are render sizes, which a preset cannot set.
+TEST(Preset, QualityLevelsSetTheSeedsABufferAndSayTheyCannotSetTheRenderSize) {
+    const std::pair<const char*, double> levels[] = {{"Low", 4}, {"Medium", 8}, {"High", 8}};
+    for (const auto& [name, samples] : levels) {
+        const Preset* p = findBuiltinPreset(name);
+        ASSERT_TRUE(p) << name;
+        KnobRegistry k;
+        Pipeline declarations(k);
+        k.setFromString("oit.method", "weighted");
+        EXPECT_TRUE(p->applyOver(k, {}).ignored.empty()) << name;
+        EXPECT_EQ(k.format(*k.find("oit.method")), "abuffer") << name;
+        EXPECT_EQ(k.value(*k.find("oit.samples")), samples) << name;
+        EXPECT_NE(p->description.find("render size, not set by a preset: --size or the window"), std::string::npos)
+            << p->description;
+    }
+}
