@@ -15,7 +15,8 @@
 // (1 - falloff) of the radius fades towards the hemisphere's edge (XeGTAO's
 // linear falloff); the thickness heuristic (the paper's section 4.3) lets a
 // horizon sink back towards a lower sample, so thin occluders do not shadow
-// everything behind them. Runs at the AO resolution; reads the
+// everything behind them; gtao.thin_occluders lowers a sample that looks
+// thin (looksThin below). Runs at the AO resolution; reads the
 // full-resolution G-buffer.
 //
 // Bent normal (gtao.bent_normals; docs/ao.md derives it): the
@@ -65,9 +66,31 @@ vec2 bentSide(float h, float cosN, float sinN) {
     return vec2(cosN * s3 / 3.0 + sinN * (2.0 / 3.0 - c + c3 / 3.0), cosN * (1.0 - c3) / 3.0 + sinN * s3 / 3.0);
 }
 
+// The thin-occluder test (gtao.thin_occluders; docs/ao.md). The depth
+// buffer holds an occluder's front only, and the horizon takes it as
+// infinitely thick: a pole before a wall shades the wall as a wall would
+// (2.3x the ray-traced occlusion). What the screen does show is the
+// occluder's width along the slice, and solids are about as wide as they
+// stand out: a sample S standing `gap` in front of P (view depth) is thin
+// when, `gap` further out along the slice (in pixels at S's depth), P's own
+// surface is back: the probe Q is within (-gap/2, gap/4) of P's depth and
+// within 1.6 gap of S (a pole's probe lands on the wall sqrt(2) gap away; a
+// box's top seen at a grazing angle spans few pixels, and a probe that
+// jumped across it to the floor behind lands much further, so it stays
+// solid). The constants were chosen by the sweep in docs/ao.md.
+bool looksThin(vec3 P, vec3 S, vec2 samplePx, vec2 outward) {
+    float gap = S.z - P.z;  // view space looks down -z: S nearer the eye has the larger z
+    if (gap <= 0.0) return false;
+    float px = max(gap * gtao.pixelScale / max(-S.z, 1e-6), 1.0);
+    vec3 Q;
+    if (!sampleAt(samplePx + outward * px, Q)) return false;  // off the image or sky: no evidence
+    return Q.z < P.z + 0.25 * gap && Q.z > P.z - 0.5 * gap && length(Q - S) < 1.6 * gap;
+}
+
 // One side's horizon update: the sample's cosine to V, faded towards the
-// side's lowest cosine by the falloff, then the thickness heuristic.
-float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
+// side's lowest cosine by the falloff, and by gtao.thin_occluders when it
+// would raise the horizon and looks thin, then the thickness heuristic.
+float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S, vec2 samplePx, vec2 outward) {
     vec3 delta = S - P;
     float dist = length(delta);
     if (dist <= 0.0) return horizonCos;
@@ -75,6 +98,8 @@ float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
     float weight = gtao.falloff > 0.0 ? clamp((gtao.radius - dist) / (gtao.falloff * gtao.radius), 0.0, 1.0)
                                       : (dist < gtao.radius ? 1.0 : 0.0);
     c = mix(lowCos, c, weight);
+    if (gtao.thinOccluders > 0.0 && c > horizonCos && looksThin(P, S, samplePx, outward))
+        c = mix(c, lowCos, gtao.thinOccluders);
     float h = c > horizonCos ? c : mix(horizonCos, c, gtao.thickness);
     return max(h, lowCos);
 }
@@ -135,8 +160,9 @@ void main() {
             float s = (float(j) + stepNoise) / float(steps);
             float offset = s * s * screenRadius + gtao.minPixels;
             vec3 S;
-            if (sampleAt(centre + omega * offset, S)) hc1 = updateHorizon(hc1, low1, P, V, S);
-            if (sampleAt(centre - omega * offset, S)) hc0 = updateHorizon(hc0, low0, P, V, S);
+            vec2 px1 = centre + omega * offset, px0 = centre - omega * offset;
+            if (sampleAt(px1, S)) hc1 = updateHorizon(hc1, low1, P, V, S, px1, omega);
+            if (sampleAt(px0, S)) hc0 = updateHorizon(hc0, low0, P, V, S, px0, -omega);
         }
         float h1 = acos(clamp(hc1, -1.0, 1.0));
         float h0 = -acos(clamp(hc0, -1.0, 1.0));

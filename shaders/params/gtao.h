@@ -17,11 +17,15 @@ DW_PARAM_CONST(int, GTAO_MAX_STEPS, 32)
     FIELD(float, radius)       /* world (view-space) radius */                               \
     FIELD(float, falloff)      /* gtao.falloff: share of the radius over which a sample fades */ \
     FIELD(float, thickness)    /* gtao.thickness: blend toward a lower horizon sample */     \
+    FIELD(float, thinOccluders) /* gtao.thin_occluders: share of a thin occluder's horizon dropped */ \
     FIELD(float, pixelScale)   /* view-space length 1 at depth 1 in full-resolution pixels */ \
     FIELD(float, minPixels)    /* the first step's least distance, in full-resolution pixels */ \
     FIELD(float, denoisePlane) /* edge-aware denoise: plane distance (x depth) of weight 1/e */ \
-    FIELD(int, bentNormals)    /* gtao.bent_normals: write gtao.bent_normal (colour attachment 1) */
+    FIELD(int, bentNormals)    /* gtao.bent_normals: write gtao.bent_normal (colour attachment 1) */ \
+    FIELD(float, pad0)                                                                      \
+    FIELD(float, pad1)                                                                      \
+    FIELD(float, pad2)
 DW_PARAM_BLOCK(GtaoParams, gtao, DW_GTAO_PARAMS)
-DW_PARAM_SIZE(GtaoParams, 48)
+DW_PARAM_SIZE(GtaoParams, 64)
 
 #endif
