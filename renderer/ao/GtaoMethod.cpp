@@ -27,13 +27,15 @@ GtaoMethod::GtaoMethod(KnobRegistry& knobs) {
     thickness_ = knobs.addFloat("gtao.thickness", 0.0, 0.0, 1.0, "gtao",
                                 "thickness heuristic (Jimenez et al. 2016 section 4.3): how far a horizon sinks "
                                 "back towards a lower sample per step; 0 takes every occluder as infinitely thick");
-    // 0.5: the least summed error against the ray-traced AO over a thin pole
-    // before a wall, a crease and the floor under a raised box (docs/ao.md).
-    thinOccluders_ = knobs.addFloat("gtao.thin_occluders", 0.5, 0.0, 1.0, "gtao",
-                                    "thin-occluder compensation: the share of its rise of the horizon a sample loses "
-                                    "when, as far beyond it along the slice as it stands before the shaded point, "
-                                    "the point's own surface is back (a pole before a wall, not a box, a crease or "
-                                    "a sphere; docs/ao.md); 0: every occluder infinitely thick");
+    // 1: with 0.8 and 0.9 the least summed error against the ray-traced AO
+    // over a thin pole before a wall, a crease and the floor under a raised
+    // box, and the least over other poles (docs/ao.md, "Thin occluders").
+    thinOccluders_ = knobs.addFloat("gtao.thin_occluders", 1.0, 0.0, 1.0, "gtao",
+                                    "thin-occluder compensation: a sample beyond which, as far along the slice as it "
+                                    "stands before the shaded point, the point's own surface is back (a pole before "
+                                    "a wall; not a box, a crease or a sphere) loses this share of its rise of the "
+                                    "horizon and shades that share of the angle it subtends instead (docs/ao.md); "
+                                    "0: every occluder infinitely thick");
     resolution_ = knobs.addEnum("gtao.resolution", {"full", "half"}, "full", "gtao",
                                 "ao.raw's size, w x h or w/2 x h/2 (upsampled by the shared filter)", true);
     denoise_ = knobs.addEnum("gtao.denoise", {"shared", "edge_aware", "off"}, "shared", "gtao",

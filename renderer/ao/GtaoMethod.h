@@ -7,8 +7,9 @@
 // Reads gbuffer.depth and gbuffer.normal; writes ao.raw at gtao.resolution
 // (full or half). gtao.thin_occluders: a sample that looks thin (the
 // shaded point's own surface is back just beyond it along the slice, as
-// beside a pole before a wall) counts for less than an infinitely thick one
-// (shaders/ao/gtao.frag looksThin, docs/ao.md "Thin occluders"). Denoised (gtao.denoise) by the shared cross-bilateral
+// beside a pole before a wall) shades the angle it subtends, its measured
+// width over its distance, instead of raising the horizon as an infinitely
+// thick one (shaders/ao/gtao.frag thinWidth, docs/ao.md "Thin occluders"). Denoised (gtao.denoise) by the shared cross-bilateral
 // filter (ssao_blur.*), by its own edge-aware 5x5 filter
 // (shaders/ao/gtao_denoise.frag, from gtao.noisy into ao.raw), or not at all.
 // gtao.bent_normals: also writes gtao.bent_normal, the cosine-weighted mean
