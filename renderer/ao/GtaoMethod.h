@@ -5,7 +5,11 @@
 // gtao.slices screen-space slices, gtao.steps depth samples per side, the
 // paper's closed-form cosine-weighted visibility (shaders/ao/gtao.frag).
 // Reads gbuffer.depth and gbuffer.normal; writes ao.raw at gtao.resolution
-// (full or half). Denoised (gtao.denoise) by the shared cross-bilateral
+// (full or half). gtao.thin_occluders: a sample that looks thin (the
+// shaded point's own surface is back just beyond it along the slice, as
+// beside a pole before a wall) shades the angle it subtends, its measured
+// width over its distance, instead of raising the horizon as an infinitely
+// thick one (shaders/ao/gtao.frag thinWidth, docs/ao.md "Thin occluders"). Denoised (gtao.denoise) by the shared cross-bilateral
 // filter (ssao_blur.*), by its own edge-aware 5x5 filter
 // (shaders/ao/gtao_denoise.frag, from gtao.noisy into ao.raw), or not at all.
 // gtao.bent_normals: also writes gtao.bent_normal, the cosine-weighted mean
@@ -47,7 +51,7 @@ public:
 
 private:
     IntKnob slices_, steps_;
-    FloatKnob radius_, falloff_, thickness_;
+    FloatKnob radius_, falloff_, thickness_, thinOccluders_;
     EnumKnob radiusUnit_, resolution_, denoise_;
     BoolKnob multibounce_, bentNormals_;
     int shared_ = 0, edgeAware_ = 0;

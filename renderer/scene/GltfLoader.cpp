@@ -197,6 +197,13 @@ private:
 
     // The primitive as a triangle mesh with normals and tangents; false (with
     // a warning) when it has none: points, lines, or too few indices.
+    // Every per-vertex attribute (TEXCOORD_n, COLOR_0, TANGENT) is read into
+    // out.vertices, and its count checked against POSITION's, before any step
+    // that adds vertices: splitting a corner whose normal faces away, flat
+    // normals and tangent generation copy whole Vertex records, so an added
+    // vertex carries every attribute of the one it came from. (Tangents read
+    // after the split were counted against the grown vertex list and the
+    // file refused.) An attribute added to Vertex later is read here too.
     bool buildPrimitive(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
@@ -205,13 +212,16 @@ private:
         }
         const size_t n = readPositions(prim, what, out);
         readTexCoordsAndColour(prim, what, out);
+        const bool fileTangents = readTangents(prim, what, out);
         toTriangleList(mode, readIndices(prim, what, n), out);
         if (out.indices.empty()) {
             scene_.warnings.push_back(path_ + ": " + what + " has no triangles; skipped");
             return false;
         }
-        readNormals(prim, what, out);
-        readTangents(prim, what, out);
+        const bool fileNormals = readNormals(prim, what, out);
+        // glTF 2.0 3.7.2.1: without NORMAL the flat normals are computed and
+        // "the provided tangents (if present) MUST be ignored".
+        if (!fileTangents || !fileNormals) generateTangents(out, UvConvention::GltfVDown);
         out.computeBounds();
         return true;
     }
@@ -222,9 +232,11 @@ private:
         return it == prim.attributes.end() ? -1 : it->second;
     }
 
-    // Every attribute has as many elements as POSITION (spec 3.7.2.1).
-    void requireVertexCount(int accessor, const char* name, const std::string& what, const Mesh& out) const {
-        const size_t n = out.vertices.size();
+    // Every attribute has as many elements as POSITION (spec 3.7.2.1): the
+    // accessors' counts, whatever vertices the importer has added since.
+    void requireVertexCount(int accessor, const char* name, const std::string& what,
+                            const tinygltf::Primitive& prim) const {
+        const size_t n = model_.accessors[static_cast<size_t>(attribute(prim, "POSITION"))].count;
         if (model_.accessors[accessor].count != n)
             fail(what + " " + name + " has " + std::to_string(model_.accessors[accessor].count) +
                  " elements but POSITION has " + std::to_string(n));
@@ -247,18 +259,18 @@ private:
         const int uvAcc = attribute(prim, "TEXCOORD_0"), uv1Acc = attribute(prim, "TEXCOORD_1");
         const int colorAcc = attribute(prim, "COLOR_0");
         if (uvAcc >= 0) {
-            requireVertexCount(uvAcc, "TEXCOORD_0", what, out);
+            requireVertexCount(uvAcc, "TEXCOORD_0", what, prim);
             const auto uv = accessors_.read(uvAcc, 2, what + " TEXCOORD_0");
             for (size_t i = 0; i < n; ++i) out.vertices[i].uv = glm::vec2(uv[2 * i], uv[2 * i + 1]);
         }
         if (uv1Acc >= 0) {
-            requireVertexCount(uv1Acc, "TEXCOORD_1", what, out);
+            requireVertexCount(uv1Acc, "TEXCOORD_1", what, prim);
             const auto uv = accessors_.read(uv1Acc, 2, what + " TEXCOORD_1");
             for (size_t i = 0; i < n; ++i) out.vertices[i].uv1 = glm::vec2(uv[2 * i], uv[2 * i + 1]);
         }
         if (colorAcc >= 0) {
             // VEC3 or VEC4, float or normalised unsigned byte / short (spec 3.7.2.1); alpha 1 for VEC3.
-            requireVertexCount(colorAcc, "COLOR_0", what, out);
+            requireVertexCount(colorAcc, "COLOR_0", what, prim);
             const int comps = model_.accessors[colorAcc].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
             const auto c = accessors_.read(colorAcc, comps, what + " COLOR_0");
             for (size_t i = 0; i < n; ++i)
@@ -310,15 +322,16 @@ private:
         }
     }
 
-    // NORMAL, repaired where broken (with warnings), or flat normals without it.
-    void readNormals(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
+    // NORMAL, repaired where broken (with warnings), or flat normals without
+    // it; returns whether the file has NORMAL. May add vertices (copies).
+    bool readNormals(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
         const size_t n = out.vertices.size();
         const int nrmAcc = attribute(prim, "NORMAL");
         if (nrmAcc >= 0) {
             // Normals that are not finite or have no length are regenerated
             // (one warning): real files ship a few, and refusing the file for
             // them helps nobody; non-finite positions stay an error.
-            requireVertexCount(nrmAcc, "NORMAL", what, out);
+            requireVertexCount(nrmAcc, "NORMAL", what, prim);
             const auto nrm = accessors_.read(nrmAcc, 3, what + " NORMAL", true);
             std::vector<bool> broken(n, false);
             for (size_t i = 0; i < n; ++i) {
@@ -340,18 +353,20 @@ private:
             if (corners > 0)
                 scene_.warnings.push_back(path_ + ": " + what + " has " + std::to_string(corners) +
                                           " triangle corner(s) whose normal points away from the triangle; given the face normal");
-        } else {
-            generateFlatNormals(out);
+            return true;
         }
+        generateFlatNormals(out);
+        return false;
     }
 
-    // TANGENT when all of it is usable, else generated (with a warning when broken).
-    void readTangents(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
+    // TANGENT into out.vertices when all of it is usable; false when the
+    // primitive has none or a broken one (with a warning), to be generated.
+    bool readTangents(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
         const size_t n = out.vertices.size();
         const int tanAcc = attribute(prim, "TANGENT");
         bool haveTangents = false;
         if (tanAcc >= 0) {
-            requireVertexCount(tanAcc, "TANGENT", what, out);
+            requireVertexCount(tanAcc, "TANGENT", what, prim);
             const auto t = accessors_.read(tanAcc, 4, what + " TANGENT", true);
             size_t broken = 0;
             for (size_t i = 0; i < n; ++i) {
@@ -369,7 +384,7 @@ private:
                 haveTangents = true;
             }
         }
-        if (!haveTangents) generateTangents(out, UvConvention::GltfVDown);
+        return haveTangents;
     }
 
     // ---- node hierarchy

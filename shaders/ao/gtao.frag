@@ -15,7 +15,9 @@
 // (1 - falloff) of the radius fades towards the hemisphere's edge (XeGTAO's
 // linear falloff); the thickness heuristic (the paper's section 4.3) lets a
 // horizon sink back towards a lower sample, so thin occluders do not shadow
-// everything behind them. Runs at the AO resolution; reads the
+// everything behind them; with gtao.thin_occluders a sample that looks
+// thin shades only the angle it subtends (thinWidth below). Runs at the AO
+// resolution; reads the
 // full-resolution G-buffer.
 //
 // Bent normal (gtao.bent_normals; docs/ao.md derives it): the
@@ -65,9 +67,47 @@ vec2 bentSide(float h, float cosN, float sinN) {
     return vec2(cosN * s3 / 3.0 + sinN * (2.0 / 3.0 - c + c3 / 3.0), cosN * (1.0 - c3) / 3.0 + sinN * s3 / 3.0);
 }
 
+// Thin occluders (gtao.thin_occluders; docs/ao.md "Thin occluders"). The
+// depth buffer holds an occluder's front only, and the horizon takes it as
+// infinitely thick: a pole before a wall shaded the wall as a wall would
+// (2.8x the ray-traced occlusion). What the screen does show is the
+// occluder's width along the slice, and solids are about as wide as they
+// stand out. A sample S standing `gap` in front of P (view depth) looks thin
+// when, `gap` further out along the slice (in pixels at S's depth), P's own
+// surface is back: the probe Q within (-gap/2, gap/4) of P's depth and within
+// 1.6 gap of S (a pole's probe lands on the wall about 1.41 gap away; a box's
+// top seen at a grazing angle spans few pixels, and a probe that jumped
+// across it to the floor behind lands much further, so the box stays solid).
+bool backToP(vec3 P, vec3 Q, float gap) { return Q.z < P.z + 0.25 * gap && Q.z > P.z - 0.5 * gap; }
+
+// The width beyond S along the slice (world units) of an occluder that looks
+// thin, or 0 when it does not. Probes 1, 2, 4, ... pixels out find the first
+// one where P's surface is back; the edge lies between it and the one before
+// (d/2 and d): 0.75 d. The width beyond S, not the whole width: probing back
+// towards P as well over-shaded poles a few pixels wide, whose 1-pixel
+// probes overstate them (docs/ao.md). At most 16 probes.
+float thinWidth(vec3 P, vec3 S, vec2 samplePx, vec2 outward) {
+    float gap = S.z - P.z;  // view space looks down -z: S nearer the eye has the larger z
+    if (gap <= 0.0) return 0.0;
+    float pxPerUnit = gtao.pixelScale / max(-S.z, 1e-6);
+    float px = max(gap * pxPerUnit, 1.0);
+    vec3 Q;
+    if (!sampleAt(samplePx + outward * px, Q)) return 0.0;  // off the image or sky: no evidence
+    if (!backToP(P, Q, gap) || length(Q - S) >= 1.6 * gap) return 0.0;
+    float d = 1.0;
+    for (int k = 0; k < GTAO_MAX_WIDTH_PROBES && d < px; ++k, d *= 2.0)
+        if (sampleAt(samplePx + outward * d, Q) && backToP(P, Q, gap)) return 0.75 * d / pxPerUnit;
+    return 0.75 * px / pxPerUnit;
+}
+
 // One side's horizon update: the sample's cosine to V, faded towards the
-// side's lowest cosine by the falloff, then the thickness heuristic.
-float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
+// side's lowest cosine by the falloff; a thin-looking sample raises it by
+// (1 - gtao.thin_occluders) of its rise only, and the side keeps the highest
+// such sample in `thin` (its cosine, and the angle it subtends from P,
+// width / distance) for main() to shade that angle alone; then the
+// thickness heuristic.
+float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S, vec2 samplePx, vec2 outward,
+                    inout vec2 thin) {
     vec3 delta = S - P;
     float dist = length(delta);
     if (dist <= 0.0) return horizonCos;
@@ -75,9 +115,20 @@ float updateHorizon(float horizonCos, float lowCos, vec3 P, vec3 V, vec3 S) {
     float weight = gtao.falloff > 0.0 ? clamp((gtao.radius - dist) / (gtao.falloff * gtao.radius), 0.0, 1.0)
                                       : (dist < gtao.radius ? 1.0 : 0.0);
     c = mix(lowCos, c, weight);
+    if (gtao.thinOccluders > 0.0 && c > horizonCos) {
+        float w = thinWidth(P, S, samplePx, outward);
+        if (w > 0.0) {
+            if (c > thin.x) thin = vec2(c, w / dist);
+            c = mix(c, lowCos, gtao.thinOccluders);
+        }
+    }
     float h = c > horizonCos ? c : mix(horizonCos, c, gtao.thickness);
     return max(h, lowCos);
 }
+
+// 4 / |Np| times the slice's cosine-weighted visibility between V and the
+// horizon angle h (either side; Jimenez et al. eq. 10, one side of it).
+float sideVisibility(float h, float n, float cosN, float sinN) { return cosN + 2.0 * h * sinN - cos(2.0 * h - n); }
 
 void main() {
     ivec2 aoPx = ivec2(gl_FragCoord.xy);
@@ -131,20 +182,33 @@ void main() {
         float n = (dot(Np, T) < 0.0 ? -1.0 : 1.0) * acos(cosN);
         float low1 = cos(n + HALF_PI), low0 = cos(n - HALF_PI);
         float hc1 = low1, hc0 = low0;
+        vec2 thin1 = vec2(-2.0, 0.0), thin0 = vec2(-2.0, 0.0);  // no thin occluder yet
         for (int j = 0; j < steps; ++j) {
             float s = (float(j) + stepNoise) / float(steps);
             float offset = s * s * screenRadius + gtao.minPixels;
             vec3 S;
-            if (sampleAt(centre + omega * offset, S)) hc1 = updateHorizon(hc1, low1, P, V, S);
-            if (sampleAt(centre - omega * offset, S)) hc0 = updateHorizon(hc0, low0, P, V, S);
+            vec2 px1 = centre + omega * offset, px0 = centre - omega * offset;
+            if (sampleAt(px1, S)) hc1 = updateHorizon(hc1, low1, P, V, S, px1, omega, thin1);
+            if (sampleAt(px0, S)) hc0 = updateHorizon(hc0, low0, P, V, S, px0, -omega, thin0);
         }
         float h1 = acos(clamp(hc1, -1.0, 1.0));
         float h0 = -acos(clamp(hc0, -1.0, 1.0));
         h1 = n + min(h1 - n, HALF_PI);
         h0 = n + max(h0 - n, -HALF_PI);
         float sinN = sin(n);
-        visibility += len * 0.25 * ((cosN + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) +
-                                    (cosN + 2.0 * h1 * sinN - cos(2.0 * h1 - n)));
+        float open = sideVisibility(h0, n, cosN, sinN) + sideVisibility(h1, n, cosN, sinN);
+        // A thin occluder shades the angle it subtends, from its front towards
+        // the hemisphere's edge, where the horizon left that open; weighted
+        // by gtao.thin_occluders, the share of its rise the horizon lost.
+        if (thin1.x > -2.0) {
+            float a = acos(clamp(thin1.x, -1.0, 1.0)), b = min(a + thin1.y, h1);
+            if (a < b) open -= gtao.thinOccluders * (sideVisibility(b, n, cosN, sinN) - sideVisibility(a, n, cosN, sinN));
+        }
+        if (thin0.x > -2.0) {
+            float a = -acos(clamp(thin0.x, -1.0, 1.0)), b = max(a - thin0.y, h0);
+            if (b < a) open -= gtao.thinOccluders * (sideVisibility(b, n, cosN, sinN) - sideVisibility(a, n, cosN, sinN));
+        }
+        visibility += len * 0.25 * open;
         if (gtao.bentNormals != 0) {
             vec2 b = bentSide(h0, cosN, sinN) + bentSide(h1, cosN, sinN);
             bent += len * (b.x * T + b.y * V);

@@ -36,9 +36,11 @@ const std::map<std::string, Tolerance> kTolerance = {
     // underside is not in the depth buffer, and its definition is not the
     // cosine-weighted visibility; docs/ao.md).
     {"ssao", {0.20, 0.45}},
-    // GTAO at its defaults (3 slices x 3 steps, full size): measured 0.055 and 0.067.
+    // GTAO at its defaults (3 slices x 3 steps, full size): measured 0.055 and
+    // 0.074 (0.067 with gtao.thin_occluders=0: a few slices take a box edge
+    // for a thin occluder; docs/ao.md, "Thin occluders").
     {"gtao", {0.08, 0.09}},
-    // With its own 5x5 edge-aware denoise instead of the shared blur: measured 0.043 and 0.071.
+    // With its own 5x5 edge-aware denoise instead of the shared blur: measured 0.043 and 0.060.
     {"gtao gtao.denoise=edge_aware", {0.08, 0.09}},
     // AOV at full size (radius 1, falloff 1): measured 0.026 and 0.008 (the
     // box's underside is a plane facing the floor, AOV's exact case; docs/aov.md).
@@ -182,4 +184,66 @@ TEST(AoMethods, ACreaseAndTheFloorUnderABoxApproachTheRayTracedAo) {
         EXPECT_LT(r.gpuBox / r.nBox, r.gpuOpen / r.nOpen - 0.05) << method;
         EXPECT_GT(r.gpuOpen / r.nOpen, 0.97) << method;
     }
+}
+
+// tests/data/ao/thin_pole_before_wall.json (a user's case): a pole 0.06 wide
+// 0.3 in front of a wall, at 240x180 as reported. The horizon takes the pole
+// as infinitely thick and, before gtao.thin_occluders, shaded the wall beside
+// it as a wall would: 0.802 against the ray-traced 0.929 within 6 px of the
+// pole (0.799 against 0.913 in the report's region). At the defaults the
+// region's mean is within 0.03 of the rays' (measured 0.913 against 0.929;
+// scripts/gtao_thin_occluder_sweep.py, docs/ao.md); the compensation off,
+// the old error is back (above 0.1), so the region does see the pole.
+TEST(AoMethods, GtaoBesideAThinPoleStaysNearTheRayTracedAo) {
+    constexpr int PW = 240, PH = 180;
+    auto s = test::makeSession(PW, PH);
+    s->loadScene(std::string(DW_TEST_AO_DIR) + "/thin_pole_before_wall.json");
+    ASSERT_EQ(s->knobs().format(*s->knobs().find("ao.method")), "gtao");  // the scene's setting
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(s->knobs(), s->scene());
+    model.aoRays = 64;
+    model.bakedOcclusion = false;
+    ASSERT_NEAR(model.aoRadius, 1.0, 1e-9);
+    reference::ReferenceRequest request;
+    request.camera = s->camera();
+    request.width = PW;
+    request.height = PH;
+    const reference::ReferenceImages ref = reference::renderReference(s->scene(), model, request);
+    s->render({{"gbuffer.view_position"}});
+    const FloatImage P = s->readRaw("gbuffer.view_position");
+    const glm::mat4 inverseView = glm::inverse(s->camera().view());
+    // The wall (world z = 0) within 6 px, in the same row, of the pole (z > 0.1).
+    auto worldZ = [&](int x, int y) {
+        if (P.at(x, y, 3) == 0.0f) return -1e9f;
+        return (inverseView * glm::vec4(P.at(x, y, 0), P.at(x, y, 1), P.at(x, y, 2), 1.0f)).z;
+    };
+    std::vector<std::pair<int, int>> region;
+    for (int y = 0; y < PH; ++y)
+        for (int x = 0; x < PW; ++x) {
+            if (std::abs(worldZ(x, y)) > 0.05f) continue;
+            for (int dx = -6; dx <= 6; ++dx)
+                if (x + dx >= 0 && x + dx < PW && worldZ(x + dx, y) > 0.1f) {
+                    region.emplace_back(x, y);
+                    break;
+                }
+        }
+    ASSERT_GT(region.size(), 500u);
+    const int thin = *s->knobs().find("gtao.thin_occluders");
+    auto meanAo = [&](bool compensated) {
+        if (compensated) s->knobs().reset(thin);  // the default
+        else s->knobs().setFromString("gtao.thin_occluders", "0");
+        s->render({{"ao.filtered"}});
+        const FloatImage ao = s->readRaw("ao.filtered");
+        double gpu = 0.0, rays = 0.0;
+        for (const auto& [x, y] : region) {
+            gpu += ao.at(x, y, 0);
+            rays += ref.ao.pixels[static_cast<size_t>(y) * PW + x];
+        }
+        return std::pair{gpu / region.size(), rays / region.size()};
+    };
+    const auto [off, truth] = meanAo(false);
+    const double atDefault = meanAo(true).first;
+    std::printf("wall beside the pole (%zu px): ray-traced %.3f; GTAO %.3f at gtao.thin_occluders=0, %.3f at the default\n",
+                region.size(), truth, off, atDefault);
+    EXPECT_NEAR(atDefault, truth, 0.03);
+    EXPECT_GT(truth - off, 0.1);
 }

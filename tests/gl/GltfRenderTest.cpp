@@ -168,3 +168,42 @@ TEST(GltfRender, OcclusionTextureScalesTheAmbientTermAsTheKnobSays) {
     EXPECT_NEAR(baked / ssaoOnly, occlusion, 0.01f);
     EXPECT_NEAR(both / ssaoOnly, occlusion, 0.01f);
 }
+
+// tests/data/gltf/split_corner_tangents.gltf (make_split_corners.py): a 2 x 2
+// grid of quads facing +Z whose centre vertex's normal faces away from its six
+// triangles; TANGENT is +Y everywhere but (0, -1, 0) at the centre. With a
+// normal map tilted towards +U (+T), each pixel's normal tilts along its
+// interpolated tangent: -Y around the centre only if the split corners kept
+// the centre's tangent (+X if they got a generated one, +Y a neighbour's).
+// The file was refused before ("TANGENT has 9 elements but POSITION has 15").
+TEST(GltfRender, SplitCornersRenderWithTheirOwnTangent) {
+    FloatImage tilt;
+    tilt.width = tilt.height = 4;
+    tilt.channels = 4;
+    for (int i = 0; i < 16; ++i) tilt.pixels.insert(tilt.pixels.end(), {0.75f, 0.5f, 0.933f, 1.0f});
+    writeImage((test::tempDir() / "split_tilt.png").string(), tilt);
+    json j;
+    std::ifstream(fs::path(DW_TEST_GLTF_DIR) / "split_corner_tangents.gltf") >> j;
+    j["images"] = json::array({{{"uri", "split_tilt.png"}}});
+    j["textures"] = json::array({{{"source", 0}}});
+    j["materials"] = json::array({{{"normalTexture", {{"index", 0}}}}});
+    j["meshes"][0]["primitives"][0]["material"] = 0;
+    j["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}, {"zfar", 20}}}}});
+    j["nodes"].push_back({{"translation", {1, 1, 3}}, {"camera", 0}});
+    j["scenes"][0]["nodes"].push_back(1);
+    auto session = test::makeSession(64, 64);
+    session->loadScene(test::writeJson("split_corner_tilt.gltf", j).string());
+    session->render({{"gbuffer.view_normal"}});
+    const FloatImage n = session->readRaw("gbuffer.view_normal");
+    // The grid spans about 12..52 in both axes; its centre vertex is at (32, 32).
+    const glm::vec3 centre(n.at(32, 32, 0), n.at(32, 32, 1), n.at(32, 32, 2));
+    std::printf("view normal at the split centre (%.3f, %.3f, %.3f)\n", centre.x, centre.y, centre.z);
+    EXPECT_LT(centre.y, -0.4f);  // tilted along the centre's own tangent, -Y
+    EXPECT_NEAR(centre.x, 0.0f, 0.05f);
+    EXPECT_GT(centre.z, 0.8f);
+    // Near the grid's outer corners the tangent is the others' +Y.
+    for (const auto& [x, y] : {std::pair{15, 15}, std::pair{48, 15}, std::pair{15, 48}, std::pair{48, 48}}) {
+        EXPECT_GT(n.at(x, y, 1), 0.4f) << x << ", " << y;
+        EXPECT_NEAR(n.at(x, y, 0), 0.0f, 0.05f) << x << ", " << y;
+    }
+}

@@ -424,6 +424,106 @@ TEST(GltfFidelity, CornersFacingAwayAndTrianglesWoundAgainstTheirNormalsAreRepai
     EXPECT_NE(s.warnings[1].find("1 triangle corner(s)"), std::string::npos) << s.warnings[1];
 }
 
+// tests/data/gltf (make_split_corners.py): a 2 x 2 grid of quads facing +Z
+// whose centre vertex (1, 1, 0) has a normal facing away from its six
+// triangles. Each of those corners gets the face normal on a vertex of its
+// own, and every other attribute of the centre vertex goes with it. Before,
+// TANGENT was read after the split and refused ("TANGENT has 9 elements but
+// POSITION has 15"), as Khronos' BoomBoxWithAxes and FlightHelmet were.
+namespace {
+
+const fs::path kSplitCornerDir = DW_TEST_GLTF_DIR;
+
+// The loaded mesh's corners at the grid's centre vertex, and the rest.
+struct SplitCorners {
+    std::vector<Vertex> centre, others;
+};
+
+SplitCorners splitCornersOf(const Scene& s) {
+    SplitCorners out;
+    const Mesh& m = s.meshes.at(0);
+    for (uint32_t i : m.indices) {
+        const Vertex& v = m.vertices.at(i);
+        (glm::distance(v.position, glm::vec3(1, 1, 0)) < 1e-6f ? out.centre : out.others).push_back(v);
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(GltfFidelity, SplitCornersKeepTheirTangentTexcoordAndColour) {
+    Scene s;
+    importGltf((kSplitCornerDir / "split_corner_tangents.gltf").string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("6 triangle corner(s) whose normal points away"), std::string::npos) << s.warnings[0];
+    EXPECT_EQ(s.meshes[0].vertices.size(), 15u);  // 9 + one per split corner
+    const SplitCorners c = splitCornersOf(s);
+    ASSERT_EQ(c.centre.size(), 6u);
+    for (const Vertex& v : c.centre) {
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);  // the face normal
+        // The file's tangent of that vertex, not the others' and not a generated one (+X).
+        EXPECT_EQ(v.tangent, glm::vec4(0, -1, 0, -1));
+        EXPECT_EQ(v.uv, glm::vec2(0.5f, 0.5f));
+        EXPECT_EQ(v.color, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+    }
+    for (const Vertex& v : c.others) {
+        EXPECT_EQ(v.tangent, glm::vec4(0, 1, 0, 1));
+        EXPECT_EQ(v.color, glm::vec4(1.0f));
+    }
+}
+
+TEST(GltfFidelity, SplitCornersWithoutTangentsKeepTexcoordAndColourAndGetGeneratedTangents) {
+    Scene s;
+    importGltf((kSplitCornerDir / "split_corner_no_tangents.gltf").string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const SplitCorners c = splitCornersOf(s);
+    ASSERT_EQ(c.centre.size(), 6u);
+    for (const Vertex& v : c.centre) {
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
+        EXPECT_EQ(v.uv, glm::vec2(0.5f, 0.5f));
+        EXPECT_EQ(v.color, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+    }
+    for (const auto* group : {&c.centre, &c.others})
+        for (const Vertex& v : *group) {
+            // Generated: dP/du is +X; v grows along -Y and glTF's bitangent is
+            // -dP/dv = +Y = w cross(N, T): w = +1.
+            EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);
+            EXPECT_NEAR(v.tangent.y, 0.0f, 1e-5f);
+            EXPECT_EQ(v.tangent.w, 1.0f);
+        }
+}
+
+// glTF 2.0 3.7.2.1: without NORMAL the normals are flat (the primitive is
+// unwelded, every corner a vertex) and TANGENT MUST be ignored; it was
+// counted against the unwelded corners and the file refused.
+TEST(GltfFidelity, TangentsWithoutNormalsAreIgnoredAndTheFileLoads) {
+    Scene s;
+    importGltf((kSplitCornerDir / "tangents_without_normals.gltf").string(), s, glm::mat4(1.0f), false);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].vertices.size(), 24u);  // 8 triangles, unwelded
+    for (const Vertex& v : s.meshes[0].vertices) {
+        EXPECT_NEAR(v.normal.z, 1.0f, 1e-6f);
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);  // generated from the UVs, not the file's +-Y
+    }
+}
+
+// An attribute whose count differs from POSITION's is still refused, naming
+// both counts as the file has them.
+TEST(GltfFidelity, AnAttributeCountOtherThanPositionsIsStillRefused) {
+    json j;
+    std::ifstream((kSplitCornerDir / "split_corner_tangents.gltf").string()) >> j;
+    const int tangent = j["meshes"][0]["primitives"][0]["attributes"]["TANGENT"].get<int>();
+    j["accessors"][static_cast<size_t>(tangent)]["count"] = 8;
+    Scene s;
+    try {
+        importGltf(test::writeJson("tangent-count.gltf", j).string(), s, glm::mat4(1.0f), false);
+        FAIL() << "a TANGENT of 8 elements for 9 positions was accepted";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("TANGENT has 8 elements but POSITION has 9"), std::string::npos) << e.what();
+    }
+}
+
 // A file of only points: refused, saying what was skipped.
 TEST(GltfFidelity, AFileOfOnlyPointsIsRefusedNamingWhatWasSkipped) {
     test::GltfBuilder b;
