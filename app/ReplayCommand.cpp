@@ -40,6 +40,7 @@
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"
 #include "renderer/record/ShaderFiles.h"
+#include "renderer/reference/ViewReference.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -118,6 +119,17 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     session.setScene(std::move(loaded), run);
     session.camera() = old.camera;
     session.resize(run.width, run.height);
+    // A reference buffer: the same trace (rays, seed) of the view as the last frame has it, as render does.
+    std::optional<reference::ViewReference> traced;
+    if (old.referenceAoRays) {
+        reference::ViewReferenceOptions o;
+        o.aoRays = *old.referenceAoRays;
+        o.seed = static_cast<int>(old.referenceSeed);
+        o.cacheWarning = [](const std::string& why) { std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str()); };
+        const std::uint64_t lastFrame = session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
+        traced = reference::traceViewReference(session, run.width, run.height, o, lastFrame);
+        reference::showViewReference(session, &traced->images);
+    }
     FrameRequest request;
     request.outputs = {old.buffer};
     PassTimer& timer = session.pipeline().timer();
@@ -129,6 +141,7 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     }
     ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
     now.command = old.command;
+    if (old.referenceAoRays) now.setReference(*old.referenceAoRays, old.referenceSeed);
     if (newRecord) now.write(*newRecord);
 
     // Timings: old against new, per series both have, with the interval of new / old.

@@ -293,6 +293,13 @@ RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
     return f;
 }
 
+void ExperimentRecord::setReference(int aoRays, std::uint32_t seed) {
+    referenceAoRays = aoRays;
+    referenceSeed = seed;
+    std::erase_if(seeds, [](const auto& f) { return f.first == "reference"; });
+    seeds.emplace_back("reference", std::to_string(seed));
+}
+
 std::string ExperimentRecord::hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                          int& channels) {
     const PublishedOutput* o = session.pipeline().outputs().find(buffer);
@@ -590,6 +597,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["frames"] = frames;
     j["warmup"] = warmup;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
+    if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}};
     if (bench) {
         const BenchOptions& o = bench->options;
         Json sizes = Json::array(), sweep = Json::array();
@@ -770,10 +778,17 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
     r.tradeoffTable(path);  // the rows are checked here, not when they are needed
 }
 
-// A render or window record's buffer, timings and image.
-void readRenderResults(ExperimentRecord& r, const RecordField& root, const RecordField& results) {
+// A render or window record's buffer, the reference it traced, timings and image.
+void readRenderResults(ExperimentRecord& r, const RecordField& root, const RecordField& results, const std::string& path) {
     using F = RecordField;
     r.buffer = root.at("buffer").str();
+    if (root.has("reference")) {
+        r.referenceAoRays = root.at("reference").object().at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        r.referenceSeed = seedField(r.seeds, "reference", path);
+        if (r.referenceSeed > static_cast<std::uint32_t>(limits::kSeed.max))
+            throw FileError(path, "seeds.reference: " + std::to_string(r.referenceSeed) + " is outside --seed's range " +
+                                      std::to_string(limits::kSeed.min) + ".." + std::to_string(limits::kSeed.max));
+    }
     if (results.has("timings"))
         for (const F& s : results.at("timings").items())
             r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms"))});
@@ -904,7 +919,7 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         else if (r.command == "tradeoff")
             readTradeoffGrid(r, root, results, path);
         else
-            readRenderResults(r, root, results);
+            readRenderResults(r, root, results, path);
     } catch (const nlohmann::json::exception& e) {
         throw FileError(path, "record version " + std::to_string(r.readVersion) + ": " + jsonErrorText(e));
     } catch (const FileError&) {

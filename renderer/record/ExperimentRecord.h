@@ -97,6 +97,11 @@ struct ExperimentRecord {
     RecordFields seeds;
     int width = 0, height = 0, frames = 1, warmup = 0;
     std::string buffer = "final";
+    // render of a CPU reference buffer (reference.*, compare.error): the
+    // trace's AO rays per pixel ("reference": {"ao_rays"}) and seed
+    // (seeds.reference), so replay traces the same reference; unset otherwise.
+    std::optional<int> referenceAoRays;
+    std::uint32_t referenceSeed = 1;
     RecordFields build, gl, host;
     std::vector<RecordedSeries> timings;
     std::vector<std::pair<std::string, double>> metrics;
@@ -164,6 +169,9 @@ struct ExperimentRecord {
     // sha256 of `buffer` as written: display bytes or raw floats; sets the shape.
     static std::string hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                   int& channels);
+    // Marks a render record as one of a CPU reference buffer traced with
+    // `aoRays` rays per pixel and AO pattern seed `seed` (reference's --ao-rays, --seed).
+    void setReference(int aoRays, std::uint32_t seed);
     // Every knob of `knobs` as name -> value text.
     static RecordFields knobFields(const KnobRegistry& knobs);
 };

@@ -627,6 +627,33 @@ class RecordTest(unittest.TestCase):
         r = run("replay", "--diff", record, seeded)
         self.assertIn("seed reference: 1 -> 2", r.stdout.splitlines())
 
+    def test_a_render_of_a_reference_buffer_records_its_rays_and_seed_and_replays_with_them(self):
+        record = os.path.join(self.tmp.name, "ref.json")
+        env = {"DW_REFERENCE_CACHE": os.path.join(self.tmp.name, "refcache-render")}
+        r = run("render", "--scene", "default", "--size", "32x18", "--buffer", "reference.ao", "--ao-rays", "8", "--seed",
+                "3", "--out", os.path.join(self.tmp.name, "ref.exr"), "--record", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        self.assertEqual((d["buffer"], d["reference"], d["seeds"]["reference"]), ("reference.ao", {"ao_rays": 8}, "3"))
+        r = run("replay", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertTrue(r.stdout.endswith("inputs changed: none\nimage: identical\n"), r.stdout)
+        # Another seed traces another AO pattern: the image differs (the seed is used, not only kept).
+        d["seeds"]["reference"] = "4"
+        other = os.path.join(self.tmp.name, "ref4.json")
+        with open(other, "w") as f:
+            json.dump(d, f)
+        r = run("replay", other, env=env, timeout=600)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("image: differs", r.stdout)
+        d["seeds"]["reference"] = "4294967295"
+        with open(other, "w") as f:
+            json.dump(d, f)
+        r = run("replay", other, env=env)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("seeds.reference: 4294967295 is outside --seed's range 0..2147483647", r.stderr)
+
     def test_zero_ms_medians_print_no_ratio(self):
         # Series whose recorded frames are all 0 ms (a pass the timer saw no
         # time in): no ratio, no inf or nan, and never "too few frames".
