@@ -52,8 +52,8 @@ int runRenderCommand(int argc, char** argv) {
                      "               Debian package librenderdoc); RenderDoc writes FILE_capture.rdc\n"
                      "  --record     write an experiment record (JSON): scene and the sha256 of its files, camera,\n"
                      "               every knob, size, frames, build, GL, CPU, each counted frame's timings and\n"
-                     "               the image's sha256; `replay FILE` measures it again (not for the CPU reference's\n"
-                     "               buffers: a record holds no --ao-rays or --seed to trace it again)\n"
+                     "               the image's sha256; `replay FILE` measures it again (a CPU reference buffer:\n"
+                     "               with the record's --ao-rays and --seed, traced again through the cache)\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n"
                   << CommandLine::rangesHelp("render");
@@ -132,10 +132,6 @@ int runRenderCommand(int argc, char** argv) {
         throw UsageError("render: --ao-rays, --seed, --threads, --no-cache and --cache-dir are the CPU reference's "
                          "options, for reference.lbuffer, reference.final, reference.ao and compare.error; --buffer " +
                          buffer + " has no reference");
-    if (needsReference && record)
-        throw UsageError("render: --record with --buffer " + buffer + ": '" + buffer + "' is an output of the CPU "
-                         "reference, and a record holds no --ao-rays or --seed, so replay could not trace it again; "
-                         "record a GPU buffer");
     // AOV's cost estimated from the triangles before the first frame (issue 22).
     const auto estimateStart = std::chrono::steady_clock::now();
     if (const auto e = AovCostEstimate::forKnobs(session.knobs(), session.scene(), session.camera(), run.width,
@@ -201,7 +197,10 @@ int runRenderCommand(int argc, char** argv) {
     for (const auto& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
     if (record) {
-        ExperimentRecord::capture(session, run, buffer, firstCounted, context->platform()).write(*record);
+        ExperimentRecord r = ExperimentRecord::capture(session, run, buffer, firstCounted, context->platform());
+        // A reference buffer: the trace's rays and seed, so replay traces the same reference.
+        if (needsReference) r.setReference(referenceOptions.aoRays, static_cast<std::uint32_t>(referenceOptions.seed));
+        r.write(*record);
         std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", record->c_str(),
                     record->c_str());
     }

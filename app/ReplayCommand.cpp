@@ -28,6 +28,8 @@
 #include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/HeadlessGlContext.h"
+#include "app/ReplayDiff.h"
+#include "app/ReplayReport.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/Bootstrap.h"
@@ -38,103 +40,15 @@
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"
 #include "renderer/record/ShaderFiles.h"
+#include "renderer/reference/ViewReference.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
 
 namespace {
 
-std::string shortHash(const std::string& h) { return h.empty() ? "unreadable" : h.substr(0, 16); }
-
-// A timing ratio (new / old) is reported as a change when its whole 95%
-// interval lies outside this band: run-to-run noise on a shared machine stays inside.
-constexpr double kTimingBandLow = 0.8, kTimingBandHigh = 1.25;
-
-bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingBandHigh || r.high < kTimingBandLow); }
-
-void printTooFew(size_t now, size_t old) {
-    std::printf("  %s (%zu and %zu frames, %zu needed on each side)", kTooFewForInterval.c_str(), old, now,
-                kMinIntervalSamples);
-}
-
-// Below this a median prints as 0.000 ms: the timer's noise, not a time to divide by.
-constexpr double kZeroMs = 0.0005;
-
-// Prints the ratio new / old of two series' GPU medians with its interval,
-// or why there is none, and returns the interval (invalid when none: such a
-// timing never counts as moved). An old median that prints as 0.000 ms has
-// no ratio ("n/a (0 ms)"; 0/0 when both are); an old series whose resamples
-// reach a 0 ms median has a ratio but no upper bound, so no interval.
-// `markMoved`: say "(moved)" after an interval wholly outside the band
-// (bench, where that decides; a render record's timings decide nothing).
-RatioInterval printRatio(const std::vector<double>& now, const std::vector<double>& old, int resamples = 2000,
-                         bool markMoved = false) {
-    if (old.empty() || now.empty()) {
-        std::printf("  n/a (no frames)");
-        return {};
-    }
-    const double before = median(old), after = median(now);
-    if (!(before >= kZeroMs)) {
-        std::printf("  n/a (0 ms)");
-        return {};
-    }
-    if (!enoughForInterval(now.size()) || !enoughForInterval(old.size())) {
-        printTooFew(now.size(), old.size());
-        return {};
-    }
-    const RatioInterval r = bootstrapRatioOfMedians(now, old, resamples);
-    if (!r.valid() || r.resamples < resamples || !std::isfinite(r.low) || !std::isfinite(r.high)) {
-        std::printf("  x%.3f, no interval (0 ms medians among the old frames' resamples)", after / before);
-        return {};
-    }
-    std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, markMoved && timingMoved(r) ? " (moved)" : "");
-    return r;
-}
-
-// "a, b, c and N more": at most `shown` names.
-std::string someOf(const std::vector<std::string>& names, size_t shown = 3) {
-    std::string out;
-    for (size_t i = 0; i < names.size() && i < shown; ++i) out += (i ? ", " : "") + names[i];
-    if (names.size() > shown) out += " and " + std::to_string(names.size() - shown) + " more";
-    return out;
-}
-
-// The inputs replay finds changed (scene files, shader files, knobs the
-// build lacks or adds, build fields, the GL renderer), each named, for the
-// "inputs changed (N): ..." line. They never decide the exit code: the
-// image (or bench's and tradeoff's rules) does.
-struct ChangedInputs {
-    std::vector<std::string> names;
-    void add(const std::string& name) { names.push_back(name); }
-    void print() const {
-        if (names.empty()) {
-            std::printf("inputs changed: none\n");
-            return;
-        }
-        std::string all;
-        for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-        std::printf("inputs changed (%zu): %s\n", names.size(), all.c_str());
-    }
-};
-
-// Each changed, added or removed file (a scene's or a shader), named on a
-// line of its own and counted as a changed input; `removedWhy` ends the
-// removed file's line.
-void reportFileChanges(const std::string& what, const std::vector<SceneFileChange>& changes,
-                       const std::string& removedWhy, ChangedInputs& inputs) {
-    for (const SceneFileChange& c : changes) {
-        if (c.kind == SceneFileChange::Kind::Changed)
-            std::printf("%s changed: %s (sha256 %s -> %s)\n", what.c_str(), c.path.c_str(),
-                        shortHash(c.oldSha256).c_str(), shortHash(c.newSha256).c_str());
-        else if (c.kind == SceneFileChange::Kind::Added)
-            std::printf("%s added: %s (sha256 %s; the record does not list it)\n", what.c_str(), c.path.c_str(),
-                        shortHash(c.newSha256).c_str());
-        else
-            std::printf("%s removed: %s (recorded sha256 %s; %s)\n", what.c_str(), c.path.c_str(),
-                        shortHash(c.oldSha256).c_str(), removedWhy.c_str());
-        inputs.add(what + " " + c.path);
-    }
-}
+using replay::ChangedInputs;
+using replay::reportFileChanges;
 
 // The record's shader files against those the replay compiled (`now`).
 void reportShaders(const ExperimentRecord& old, const RecordedShaders& now, ChangedInputs& inputs) {
@@ -205,6 +119,17 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     session.setScene(std::move(loaded), run);
     session.camera() = old.camera;
     session.resize(run.width, run.height);
+    // A reference buffer: the same trace (rays, seed) of the view as the last frame has it, as render does.
+    std::optional<reference::ViewReference> traced;
+    if (old.referenceAoRays) {
+        reference::ViewReferenceOptions o;
+        o.aoRays = *old.referenceAoRays;
+        o.seed = static_cast<int>(old.referenceSeed);
+        o.cacheWarning = [](const std::string& why) { std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str()); };
+        const std::uint64_t lastFrame = session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
+        traced = reference::traceViewReference(session, run.width, run.height, o, lastFrame);
+        reference::showViewReference(session, &traced->images);
+    }
     FrameRequest request;
     request.outputs = {old.buffer};
     PassTimer& timer = session.pipeline().timer();
@@ -216,26 +141,14 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     }
     ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
     now.command = old.command;
+    if (old.referenceAoRays) now.setReference(*old.referenceAoRays, old.referenceSeed);
     if (newRecord) now.write(*newRecord);
 
     // Timings: old against new, per series both have, with the interval of new / old.
-    std::map<std::string, const RecordedSeries*> oldSeries;
-    for (const auto& s : old.timings) oldSeries[s.name] = &s;
-    for (const auto& s : now.timings) {
-        const auto it = oldSeries.find(s.name);
-        if (it == oldSeries.end()) continue;
-        std::printf("timing %-28s gpu median %9.3f -> %9.3f ms", s.name.c_str(), median(it->second->gpuMs), median(s.gpuMs));
-        printRatio(s.gpuMs, it->second->gpuMs);
-        std::printf("\n");
-    }
+    replay::compareTimings(old.timings, now.timings);
     reportShaders(old, now.shaders, inputs);
     inputs.print();
-    if (now.imageSha256 == old.imageSha256) {
-        std::printf("image: identical\n");
-        return 0;
-    }
-    std::printf("image: differs (sha256 %s -> %s)\n", old.imageSha256.c_str(), now.imageSha256.c_str());
-    return 1;
+    return replay::imageVerdict(old.imageSha256, now.imageSha256);
 }
 
 std::string fieldOrEmpty(const BenchFields& fields, const std::string& key) {
@@ -243,14 +156,6 @@ std::string fieldOrEmpty(const BenchFields& fields, const std::string& key) {
         if (k == key) return v;
     return "";
 }
-
-// One configuration of a bench record's results: its axes, lights per pixel
-// and the ratio series' GPU ms per counted frame.
-struct RecordedConfig {
-    std::string label;
-    double lpp = NAN;
-    std::vector<double> gpuMs;
-};
 
 std::string configLabel(const BenchConfig& c, const std::vector<std::string>& axes) {
     std::string label = c.size() + ", " + std::to_string(c.lights) + " lights";
@@ -262,19 +167,7 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
                 ChangedInputs& inputs) {
     const RecordedBench& recorded = *old.bench;
     const std::string series = recorded.ratioOf;
-    std::map<int, RecordedConfig> before;
-    const nlohmann::ordered_json& res = old.benchResults;
-    if (res.contains("configs") && res["configs"].is_array())
-        for (const auto& c : res["configs"]) {
-            if (!c.is_object() || !c.contains("config") || !c["config"].is_number_integer()) continue;
-            RecordedConfig& r = before[c["config"].get<int>()];
-            if (c.contains("lpp") && c["lpp"].is_number()) r.lpp = c["lpp"].get<double>();
-            if (c.contains("samples") && c["samples"].is_array())
-                for (const auto& s : c["samples"])
-                    if (s.is_object() && s.contains("gpu_ms") && s["gpu_ms"].is_object() && s["gpu_ms"].contains(series) &&
-                        s["gpu_ms"][series].is_number())
-                        r.gpuMs.push_back(s["gpu_ms"][series].get<double>());
-        }
+    const std::map<int, replay::RecordedConfig> before = replay::recordedConfigs(old.benchResults, series);
 
     RecordedBench again = recorded;
     again.options.run.sets = sets;
@@ -292,72 +185,16 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
     const BenchSummary summary = summarize(results, baseline, recorded.resamples);
     if (newRecord) ExperimentRecord::forBench(again, runner.scene(), results, summary).write(*newRecord);
 
-    int lppDiffer = 0, moved = 0;
-    std::vector<std::string> notInRecord, notRunAgain;
     std::map<int, std::vector<double>> afterMs;
-    for (const auto& s : results.samples)
-        if (s.series == series) afterMs[s.config].push_back(s.gpuMs);
-    for (const auto& c : results.configs) {
-        const int i = c.config.index;
-        const std::string label = configLabel(c.config, results.knobAxes);
-        const auto it = before.find(i);
-        if (it == before.end()) {
-            std::printf("config %d (%s): not in the record\n", i, label.c_str());
-            notInRecord.push_back("config " + std::to_string(i) + " (" + label + ")");
-            continue;
-        }
-        const RecordedConfig& b = it->second;
-        const std::vector<double>& a = afterMs[i];
-        std::printf("config %d (%s): %s gpu median %9.3f -> %9.3f ms", i, label.c_str(), series.c_str(), median(b.gpuMs),
-                    median(a));
-        const RatioInterval r = printRatio(a, b.gpuMs, recorded.resamples, true);
-        const bool bothLpp = std::isfinite(b.lpp) && std::isfinite(c.lpp);
-        // The JSON holds LPP rounded to 6 significant digits.
-        const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(c.lpp)) ||
-                             (bothLpp && std::abs(b.lpp - c.lpp) <= 1e-5 * std::max(1.0, std::abs(b.lpp)));
-        if (bothLpp) std::printf("  lpp %.4f -> %.4f", b.lpp, c.lpp);
-        std::printf("\n");
-        if (!sameLpp) ++lppDiffer;
-        if (timingMoved(r)) ++moved;
-        before.erase(it);
-    }
-    for (const auto& [i, b] : before) {
-        std::printf("config %d: in the record, not run again\n", i);
-        notRunAgain.push_back("config " + std::to_string(i));
-    }
+    for (const auto& sample : results.samples)
+        if (sample.series == series) afterMs[sample.config].push_back(sample.gpuMs);
+    std::vector<std::pair<int, replay::RecordedConfig>> after;
+    for (const auto& c : results.configs)
+        after.push_back({c.config.index, {configLabel(c.config, results.knobAxes), c.lpp, afterMs[c.config.index]}});
+    const replay::BenchComparison compared = replay::compareBench(before, after, series, recorded.resamples);
     reportShaders(old, shaderFilesOf(results.shaders), inputs);
     inputs.print();
-    const bool differs = !notInRecord.empty() || !notRunAgain.empty() || lppDiffer > 0 || moved > 0;
-    if (!differs) {
-        std::printf("bench: the same (%zu configurations, lights per pixel equal, no %s timing outside [%.2f, %.2f] "
-                    "with its 95%% interval)\n",
-                    results.configs.size(), series.c_str(), kTimingBandLow, kTimingBandHigh);
-        return 0;
-    }
-    // A record cut short (its results lack configurations of the grid it declares) names them.
-    std::string missing;
-    if (!notInRecord.empty())
-        missing += std::to_string(notInRecord.size()) + " configuration(s) not in the record: " + someOf(notInRecord) + "; ";
-    if (!notRunAgain.empty())
-        missing += std::to_string(notRunAgain.size()) + " in the record, not run again: " + someOf(notRunAgain) + "; ";
-    std::printf("bench: differs (%s%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
-                "[%.2f, %.2f])\n",
-                missing.c_str(), lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
-    return 1;
-}
-
-
-std::string pointLabel(const TradeoffTable& t, const TradeoffRow& r) {
-    std::string label = "point " + std::to_string(r.point) + " camera " + r.camera;
-    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a) label += ", " + t.axes[a] + "=" + r.axisValues[a];
-    return label;
-}
-
-// Errors are deterministic on one machine (the same frames, the same
-// reference from the cache): equal to 1e-9 relative, or both not measured.
-bool sameError(double a, double b) {
-    if (!std::isfinite(a) || !std::isfinite(b)) return std::isfinite(a) == std::isfinite(b);
-    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+    return compared.verdict();
 }
 
 int replayTradeoff(const ExperimentRecord& old, const std::string& path, const std::vector<std::string>& sets,
@@ -378,7 +215,7 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     auto context = HeadlessGlContext::create();
     TradeoffStudyProgress progress;
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-    const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress);
+    const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress, again.referenceSeed);
     for (const auto& [k, v] : old.gl)
         if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer")) {
             std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(m.machine, "gl_renderer").c_str());
@@ -388,62 +225,64 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     if (newRecord)
         ExperimentRecord::forTradeoff(again, runner.scene(), m.result, m.machine).write(*newRecord);
 
-    std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
-    for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
-    int errorDiffer = 0, moved = 0, missing = 0;
-    for (const auto& r : after.rows) {
-        const auto it = recorded.find({r.point, r.camera, r.metric, r.buffer});
-        if (it == recorded.end()) {
-            std::printf("%s: not in the record\n", pointLabel(after, r).c_str());
-            ++missing;
-            continue;
-        }
-        const TradeoffRow& b = *it->second;
-        const bool same = sameError(b.error, r.error);
-        // The difference of the medians, with the interval the two 95%
-        // intervals allow (new low - old high, new high - old low).
-        const double diff = r.frameGpuMs - b.frameGpuMs, lo = r.frameGpuMsLo - b.frameGpuMsHi,
-                     hi = r.frameGpuMsHi - b.frameGpuMsLo;
-        const double ratioLo = b.frameGpuMsHi > 0 ? r.frameGpuMsLo / b.frameGpuMsHi : NAN;
-        const double ratioHi = b.frameGpuMsLo > 0 ? r.frameGpuMsHi / b.frameGpuMsLo : NAN;
-        // Rows of a record without "frames" counted the record's frames.
-        const size_t framesBefore = static_cast<size_t>(b.frames > 0 ? b.frames : old.frames);
-        const size_t framesAfter = static_cast<size_t>(r.frames > 0 ? r.frames : again.options.frames);
-        const bool interval = enoughForInterval(framesBefore) && enoughForInterval(framesAfter);
-        const bool timeMoved = interval && std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
-                               (ratioLo > kTimingBandHigh || ratioHi < kTimingBandLow);
-        std::printf("%s: %s %.6g -> %.6g (%s); frame gpu median %.3f -> %.3f ms, difference %+.3f", pointLabel(after, r).c_str(),
-                    r.metric.c_str(), b.error, r.error, same ? "same" : "differs", b.frameGpuMs, r.frameGpuMs, diff);
-        if (interval) std::printf(" [%+.3f, %+.3f]%s", lo, hi, timeMoved ? " (moved)" : "");
-        else printTooFew(framesAfter, framesBefore);
-        std::printf("\n");
-        if (!same) ++errorDiffer;
-        if (timeMoved) ++moved;
-        recorded.erase(it);
-    }
-    for (const auto& [key, b] : recorded) {
-        std::printf("%s: in the record, not run again\n", pointLabel(before, *b).c_str());
-        ++missing;
-    }
+    const replay::TradeoffComparison compared =
+        replay::compareTradeoff(before, after, old.frames, again.options.frames);
     reportShaders(old, shaderFilesOf(m.result.shaders), inputs);
     inputs.print();
-    if (errorDiffer == 0 && moved == 0 && missing == 0) {
-        std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
-                    "95%% interval)\n",
-                    after.rows.size(), kTimingBandLow, kTimingBandHigh);
-        return 0;
-    }
-    std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
-                "%d not in both)\n",
-                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, missing);
-    return 1;
+    return compared.verdict();
 }
+// The scene as it loads now: the files it reads (a built-in's content)
+// against the record's, by name. Only the loader's files are read: a path the
+// record alone names is reported, never opened.
+void reportSceneFiles(const ExperimentRecord& old, const Scene& loaded, ChangedInputs& inputs) {
+    std::vector<SceneFileChange> changes =
+        compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source);
+    // A record of a built-in scene written before built-ins were hashed has no entry for its content.
+    const bool recordedContent = std::any_of(old.sceneFiles.begin(), old.sceneFiles.end(),
+                                             [](const RecordedFile& f) { return isBuiltinSceneContent(f.path); });
+    if (!recordedContent && isBuiltinSceneContent(loaded.source)) {
+        std::erase_if(changes, [](const SceneFileChange& c) {
+            return c.kind == SceneFileChange::Kind::Added && isBuiltinSceneContent(c.path);
+        });
+        std::printf("record holds no content hash of the built-in scene (written before records kept one)\n");
+    }
+    reportFileChanges("scene file", changes, "the scene no longer reads it", inputs);
+}
+
+// Each build field that differs from the record's ("build commit: OLD -> NEW").
+void reportBuild(const ExperimentRecord& old, ChangedInputs& inputs) {
+    for (const auto& [k, v] : buildFields())
+        for (const auto& [ok, ov] : old.build)
+            if (k == ok && v != ov) {
+                std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
+                inputs.add("build " + k);
+            }
+}
+
+// A record whose state cannot be restored: the reason on stderr; for a
+// shader that no longer compiles, first the shader files changed since the
+// record (those it names, looked up in the folder used now).
+void refuseUnrestorable(const ExperimentRecord& old, const std::string& path, const Error& e) {
+    if (dynamic_cast<const gl::ShaderError*>(&e) && old.shaders.present) {
+        RecordedShaders now;
+        try {
+            now.folder = gl::ShaderLibrary::locateRoot().string();
+        } catch (const Error&) {
+        }
+        ChangedInputs unused;
+        reportShaders(old, now, unused);
+    }
+    std::fflush(stdout);
+    std::fprintf(stderr, "refused: %s: cannot restore it: %s\n", path.c_str(), e.what());
+}
+
 }  // namespace
 
 int runReplayCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2, "replay");
     if (cl.flag("--help")) {
         std::cout << "usage: deferred-workbench replay RECORD.json [--record FILE]\n"
+                     "       deferred-workbench replay --diff A.json B.json\n"
                      "Restores the state of an experiment record (render, bench and tradeoff --record, the window's\n"
                      "record), measures again and names each changed scene file, shader file, knob and build field.\n"
                      "  render/window records: prints 'image: identical' or 'image: differs (sha256 old -> new)'\n"
@@ -461,8 +300,14 @@ int runReplayCommand(int argc, char** argv) {
                      "folder (shader file changed/added/removed). Fields are held to the ranges of\n"
                      "the options they stand for, the camera to scene/CameraCheck, knob values to the registry.\n"
                      "Intervals need 6 frames a side; fewer print 'too few frames for an interval'.\n"
-                     "Then 'inputs changed (N): ...' names every changed input (scene file, shader file, knob the\n"
-                     "build lacks or adds, build field, GL renderer), or 'inputs changed: none'.\n"
+                     "A built-in scene is compared by the sha256 of its content (scene file changed: builtin:NAME).\n"
+                     "A record edited since it was written (its fields against the record_sha256 written with them)\n"
+                     "says 'record edited: its inputs ...' or '... its results ...' first.\n"
+                     "Then 'inputs changed (N): ...' names every changed input (record inputs/results edited, scene\n"
+                     "file, shader file, knob the build lacks or adds, build field, GL renderer), or 'inputs changed: none'.\n"
+                     "  --diff A B   measures nothing: prints the inputs, knobs, build and results that differ\n"
+                     "               between two records in the same words, then the verdict of B's results against\n"
+                     "               A's (exit 0 the same, 1 they differ, 2 a record is refused)\n"
                      "Exit codes: the result decides, not the inputs. 0: the same (the image identical, even when\n"
                      "inputs changed; for bench every configuration there, its lights per pixel equal and no timing\n"
                      "ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row there, its error equal, no\n"
@@ -470,8 +315,19 @@ int runReplayCommand(int argc, char** argv) {
                      "2: the record is refused. docs/records.md.\n";
         return 0;
     }
+    const bool diff = cl.flag("--diff");
     const auto newRecord = cl.value("--record");
     cl.finish("replay");
+    if (diff) {
+        if (newRecord) throw UsageError("replay --diff compares two records and measures nothing: it takes no --record");
+        if (cl.positional().size() != 2)
+            throw UsageError("replay --diff needs two record files: deferred-workbench replay --diff A.json B.json");
+        // In the order given (CommandLine hands back the word a bare flag took last).
+        std::vector<std::string> files;
+        for (int i = 2; i < argc; ++i)
+            if (std::string(argv[i]) != "--diff") files.push_back(argv[i]);
+        return runReplayDiff(files.at(0), files.at(1));
+    }
     if (cl.positional().size() != 1) throw UsageError("replay needs one record file: deferred-workbench replay RECORD.json");
     const std::string path = cl.positional()[0];
 
@@ -489,45 +345,26 @@ int runReplayCommand(int argc, char** argv) {
     if (old.readVersion < ExperimentRecord::kVersion)
         std::printf("record version %d, read as version %d (it recorded no camera path, seeds or compiler flags)\n",
                     old.readVersion, ExperimentRecord::kVersion);
+    ChangedInputs inputs;
+    // An edited record is named before anything is measured: its results
+    // then say nothing about the machine.
+    replay::reportSelfCheck(old, "", inputs);
 
     // What cannot be restored (a scene that does not load, a knob value the
     // registry refuses, a configuration this build's checks refuse) refuses
     // the record too.
     try {
-        // The scene as it loads now; the files it reads against the record's,
-        // by name. Only the loader's files are read: a path the record alone
-        // names is reported, never opened.
         Scene loaded = loadScene(old.sceneSpec);
-        ChangedInputs inputs;
-        reportFileChanges("scene file",
-                          compareSceneFiles(old.sceneFiles, old.sceneSpec, sceneFilesOf(loaded), loaded.source),
-                          "the scene no longer reads it", inputs);
+        reportSceneFiles(old, loaded, inputs);
         const std::vector<std::string> sets = restoredKnobs(old, inputs);
-        for (const auto& [k, v] : buildFields())
-            for (const auto& [ok, ov] : old.build)
-                if (k == ok && v != ov) {
-                    std::printf("build %s: %s -> %s\n", k.c_str(), ov.c_str(), v.c_str());
-                    inputs.add("build " + k);
-                }
+        reportBuild(old, inputs);
         if (old.command == "bench") return replayBench(old, sets, newRecord, inputs);
         if (old.command == "tradeoff") return replayTradeoff(old, path, sets, newRecord, inputs);
         return replayRender(old, std::move(loaded), sets, newRecord, inputs);
     } catch (const GlUnsupportedError&) {
         throw;
     } catch (const Error& e) {
-        // A shader that no longer compiles: which shader files changed since
-        // the record (those it names, looked up in the folder used now).
-        if (dynamic_cast<const gl::ShaderError*>(&e) && old.shaders.present) {
-            RecordedShaders now;
-            try {
-                now.folder = gl::ShaderLibrary::locateRoot().string();
-            } catch (const Error&) {
-            }
-            ChangedInputs unused;
-            reportShaders(old, now, unused);
-        }
-        std::fflush(stdout);
-        std::fprintf(stderr, "refused: %s: cannot restore it: %s\n", path.c_str(), e.what());
+        refuseUnrestorable(old, path, e);
         return 2;
     }
 }

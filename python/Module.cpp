@@ -21,6 +21,7 @@
 
 #include "app/CommandLine.h"
 #include "app/PlotScript.h"
+#include "python/ModuleInit.h"
 #include "python/WorkbenchSession.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/OptionLimits.h"
@@ -633,6 +634,9 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
 PYBIND11_MODULE(deferred_workbench, m) {
     using namespace dw;
     m.doc() = "Deferred Workbench: render a scene headless and read any named output as a numpy array";
+    requireNumpy();  // fail at import, not at the first render
+    m.attr("__version__") = moduleVersion();
+    m.attr("__commit__") = moduleCommit();
 
     static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
     static py::exception<KnobError> knobError(m, "KnobError", PyExc_ValueError);

@@ -81,7 +81,7 @@ TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& s) {
 }
 
 TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
-                                           const TradeoffStudyProgress& progress) {
+                                           const TradeoffStudyProgress& progress, std::uint32_t referenceSeed) {
     auto stopIfAsked = [&] {
         if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
     };
@@ -102,6 +102,7 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
                                             int height, const std::string& buffer) {
         reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
         model.aoRays = aoRays;
+        model.seed = referenceSeed;
         reference::ReferenceRequest request;
         request.camera = camera;
         request.width = width;

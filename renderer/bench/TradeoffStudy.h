@@ -9,6 +9,7 @@
 // Only measure() needs GL: a current 4.5 context, the caller's (the CLI's
 // HeadlessGlContext, the module's process context).
 // Follows issue 23 (tradeoff) and issue 24 (records, Python).
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -79,10 +80,12 @@ public:
 
     // The runner's sweep with the references through the shared cache
     // (ReferenceCache: each distinct one rendered once in this run, with
-    // `aoRays` AO rays per pixel). Needs a current GL 4.5 context, whose EGL
-    // platform is `glPlatform`. Throws TradeoffCancelled when asked to stop.
+    // `aoRays` AO rays per pixel, their pattern seeded by `referenceSeed`, as
+    // reference --seed; a record holds it as seeds.reference). Needs a current
+    // GL 4.5 context, whose EGL platform is `glPlatform`. Throws
+    // TradeoffCancelled when asked to stop.
     static TradeoffMeasurement measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
-                                       const TradeoffStudyProgress& progress = {});
+                                       const TradeoffStudyProgress& progress = {}, std::uint32_t referenceSeed = 1);
 
     // The experiment record tradeoff --json writes (replay runs it again):
     // `given` the options the runner was made from; `command` goes into its settings.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <tuple>
 
 #include "renderer/Error.h"
 #include "renderer/OptionLimits.h"
@@ -292,6 +293,13 @@ RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
     return f;
 }
 
+void ExperimentRecord::setReference(int aoRays, std::uint32_t seed) {
+    referenceAoRays = aoRays;
+    referenceSeed = seed;
+    std::erase_if(seeds, [](const auto& f) { return f.first == "reference"; });
+    seeds.emplace_back("reference", std::to_string(seed));
+}
+
 std::string ExperimentRecord::hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                          int& channels) {
     const PublishedOutput* o = session.pipeline().outputs().find(buffer);
@@ -510,6 +518,8 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
     r.width = o.run.width;
     r.height = o.run.height;
     r.buffer = o.buffer;
+    // Against the CPU reference: the seed of its AO samples, so replay traces the same reference.
+    if (o.against.empty()) r.seeds.emplace_back("reference", std::to_string(tradeoff.referenceSeed));
     r.gl = {{"vendor", fieldOfBench(machine, "gl_vendor")},
             {"renderer", fieldOfBench(machine, "gl_renderer")},
             {"version", fieldOfBench(machine, "gl_version")},
@@ -587,6 +597,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["frames"] = frames;
     j["warmup"] = warmup;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
+    if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}};
     if (bench) {
         const BenchOptions& o = bench->options;
         Json sizes = Json::array(), sweep = Json::array();
@@ -654,7 +665,20 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
                                    {"height", imageHeight}, {"channels", imageChannels}}},
                         {"metrics", m}};
     }
+    const auto [inputsSha, resultsSha] = contentSha256(nlohmann::json::parse(j.dump()));
+    j["record_sha256"] = {{"inputs", inputsSha}, {"results", resultsSha}};
     return j.dump(2) + "\n";
+}
+
+std::pair<std::string, std::string> ExperimentRecord::contentSha256(const nlohmann::json& record) {
+    nlohmann::json inputs = record;
+    const std::string results = record.is_object() && record.contains("results") ? record["results"].dump() : "null";
+    if (inputs.is_object()) {
+        inputs.erase("results");
+        inputs.erase("record_sha256");
+    }
+    const std::string text = inputs.dump();
+    return {sha256Hex(text.data(), text.size()), sha256Hex(results.data(), results.size())};
 }
 
 void ExperimentRecord::write(const std::string& path) const { writeFileAtomically(path, json(path)); }
@@ -671,18 +695,119 @@ ExperimentRecord ExperimentRecord::parse(const std::string& text, const std::str
     return fromJson(parseJson(text, path, options), path);
 }
 
-ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::string& path) {
-    using F = Field<nlohmann::json>;
-    const F root(j, "", path);
-    if (!j.is_object())
-        throw FileError(path, std::string("not a deferred-workbench record (expects an object with \"format\": \"") +
-                                  kFormat + "\", got " + root.shown() + ")");
-    if (!j.contains("format") || j["format"] != kFormat)
-        throw FileError(path, std::string("format: not a deferred-workbench record (expects \"") + kFormat + "\", got " +
-                                  (j.contains("format") ? root.at("format").shown() : std::string("none")) + ")");
-    if (!j.contains("version")) throw FileError(path, "version: missing (every record says its format version)");
+
+namespace {
+
+// A bench record's grid (what replay runs again) and results.
+void readBenchGrid(ExperimentRecord& r, const RecordField& root, const RecordField& results, const std::string& path) {
+    using F = RecordField;
+    const F g = root.at("grid").object();
+    RecordedBench b;
+    b.merged = g.boolean("merged", false);
+    BenchOptions& o = b.options;
+    o.run.scene = r.sceneSpec;
+    for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
+    o.frames = r.frames;
+    o.warmup = r.warmup;
+    o.seed = seedField(r.seeds, "lights", path);
+    if (!b.merged) {
+        for (const F& s : g.at("sizes").items()) o.grid.sizes.push_back(sizeField(s.str(), path, s.where()));
+        for (const F& n : g.at("lights").items()) o.grid.lights.push_back(n.whole(limits::kBenchLights, "--lights"));
+        for (const F& a : g.at("sweep").items()) o.grid.knobAxes.push_back({a.at("knob").str(), a.at("values").strings()});
+        if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
+        o.lightRadius = g.number32("light_radius", 0.0f);
+        o.keepSceneLights = g.boolean("keep_scene_lights", false);
+        // 0: no orbit (the option is absent).
+        if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+        o.walkthrough = g.boolean("walkthrough", false);
+        o.lpp = g.boolean("lpp", true);
+        if (g.has("lpp_poses")) o.lppPoses = g.at("lpp_poses").whole(limits::kLppPoses, "--lpp-poses");
+        o.shard = shardField(g, "0/1");
+        o.baseline = g.str("baseline", "");
+        b.ratioOf = g.str("ratio_of", "frame");
+        if (g.has("resamples")) b.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
+    }
+    r.bench = std::move(b);
+    r.benchResults = Json(results.json());
+}
+
+// A tradeoff record's sweep (what replay runs again) and its rows, checked here.
+void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const RecordField& results, const std::string& path) {
+    using F = RecordField;
+    const F g = root.at("grid").object();
+    RecordedTradeoff t;
+    t.merged = g.boolean("merged", false);
+    TradeoffOptions& o = t.options;
+    o.run.scene = r.sceneSpec;
+    o.run.width = r.width;
+    o.run.height = r.height;
+    for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
+    o.frames = r.frames;
+    o.warmup = r.warmup;
+    if (!t.merged) {
+        for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
+        o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
+        o.sweep.centre = g.strings("centre");
+        t.exclude = g.strings("exclude");
+        for (size_t i = 0; i < t.exclude.size(); ++i) {
+            try {
+                o.sweep.exclusion.add(t.exclude[i]);
+            } catch (const Error& e) {
+                g.at("exclude").at(i).refuse(e.what());
+            }
+        }
+        o.against = g.strings("against");
+        o.metric = g.at("metric").str();
+        o.buffer = g.at("buffer").str();
+        if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+        o.walkthrough = g.boolean("walkthrough", false);
+        if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
+        if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
+        t.runPreset = g.str("run_preset", "");
+        // Records before repeated --preset hold the one preset only.
+        t.runPresets = g.strings("run_presets");
+        if (t.runPresets.empty() && !t.runPreset.empty()) t.runPresets = {t.runPreset};
+        t.runSets = g.strings("run_sets");
+        o.shard = shardField(g, "0/1");
+    }
+    // The CPU reference's AO sample seed; records before it was kept ran with 1.
+    t.referenceSeed = seedField(r.seeds, "reference", path);
+    r.tradeoff = std::move(t);
+    r.tradeoffResults = Json(results.json());
+    r.tradeoffTable(path);  // the rows are checked here, not when they are needed
+}
+
+// A render or window record's buffer, the reference it traced, timings and image.
+void readRenderResults(ExperimentRecord& r, const RecordField& root, const RecordField& results, const std::string& path) {
+    using F = RecordField;
+    r.buffer = root.at("buffer").str();
+    if (root.has("reference")) {
+        r.referenceAoRays = root.at("reference").object().at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        r.referenceSeed = seedField(r.seeds, "reference", path);
+        if (r.referenceSeed > static_cast<std::uint32_t>(limits::kSeed.max))
+            throw FileError(path, "seeds.reference: " + std::to_string(r.referenceSeed) + " is outside --seed's range " +
+                                      std::to_string(limits::kSeed.min) + ".." + std::to_string(limits::kSeed.max));
+    }
+    if (results.has("timings"))
+        for (const F& s : results.at("timings").items())
+            r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms"))});
+    const F image = results.at("image").object();
+    r.imageSha256 = image.at("sha256").str();
+    // 0: no image was written.
+    const OptionRange side{0, limits::kSize.max};
+    if (image.has("width")) r.imageWidth = image.at("width").whole(side, "--size");
+    if (image.has("height")) r.imageHeight = image.at("height").whole(side, "--size");
+    if (image.has("channels")) r.imageChannels = image.at("channels").whole(OptionRange{0, 4}, "a buffer's channels");
+    if (results.has("metrics"))
+        for (const auto& [k, m] : results.at("metrics").object().json().items())
+            if (m.is_number()) r.metrics.emplace_back(k, m.get<double>());
+}
+
+// The record's format version, refused when this build cannot read it.
+int recordVersion(const nlohmann::json& j, const RecordField& root, const std::string& path) {
+    constexpr int kVersion = ExperimentRecord::kVersion;
     const nlohmann::json& v = j["version"];
-    ExperimentRecord r;
     const std::string newer = " is newer than this build reads (" + std::to_string(kVersion) +
                               "); replay it with a newer deferred-workbench";
     if (v.is_number_integer()) {
@@ -697,7 +822,38 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         throw FileError(path, "version: expects a whole number (1.." + std::to_string(kVersion) + "), got " +
                                   root.at("version").shown());
     }
-    r.readVersion = static_cast<int>(v.get<long long>());
+    return static_cast<int>(v.get<long long>());
+}
+
+// The record's own sha256s against its fields as read.
+ExperimentRecord::SelfCheck readSelfCheck(const nlohmann::json& j, const RecordField& root) {
+    ExperimentRecord::SelfCheck c;
+    if (!root.has("record_sha256")) return c;
+    const RecordField written = root.at("record_sha256").object();
+    c.hashed = true;
+    c.writtenInputs = written.at("inputs").str();
+    c.writtenResults = written.at("results").str();
+    std::tie(c.nowInputs, c.nowResults) = ExperimentRecord::contentSha256(j);
+    c.inputsEdited = c.nowInputs != c.writtenInputs;
+    c.resultsEdited = c.nowResults != c.writtenResults;
+    return c;
+}
+
+}  // namespace
+
+ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::string& path) {
+    using F = Field<nlohmann::json>;
+    const F root(j, "", path);
+    if (!j.is_object())
+        throw FileError(path, std::string("not a deferred-workbench record (expects an object with \"format\": \"") +
+                                  kFormat + "\", got " + root.shown() + ")");
+    if (!j.contains("format") || j["format"] != kFormat)
+        throw FileError(path, std::string("format: not a deferred-workbench record (expects \"") + kFormat + "\", got " +
+                                  (j.contains("format") ? root.at("format").shown() : std::string("none")) + ")");
+    if (!j.contains("version")) throw FileError(path, "version: missing (every record says its format version)");
+    ExperimentRecord r;
+    r.readVersion = recordVersion(j, root, path);
+    r.selfCheck = readSelfCheck(j, root);
     try {
         r.command = root.at("command").str();
         if (r.command != "render" && r.command != "bench" && r.command != "tradeoff" && r.command != "gui")
@@ -758,92 +914,12 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         if (root.has("gl")) r.gl = root.at("gl").fields();
         if (root.has("host")) r.host = root.at("host").fields();
         const F results = root.at("results").object();
-        if (r.command == "bench") {
-            const F g = root.at("grid").object();
-            RecordedBench b;
-            b.merged = g.boolean("merged", false);
-            BenchOptions& o = b.options;
-            o.run.scene = r.sceneSpec;
-            for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
-            o.frames = r.frames;
-            o.warmup = r.warmup;
-            o.seed = seedField(r.seeds, "lights", path);
-            if (!b.merged) {
-                for (const F& s : g.at("sizes").items()) o.grid.sizes.push_back(sizeField(s.str(), path, s.where()));
-                for (const F& n : g.at("lights").items()) o.grid.lights.push_back(n.whole(limits::kBenchLights, "--lights"));
-                for (const F& a : g.at("sweep").items()) o.grid.knobAxes.push_back({a.at("knob").str(), a.at("values").strings()});
-                if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
-                o.lightRadius = g.number32("light_radius", 0.0f);
-                o.keepSceneLights = g.boolean("keep_scene_lights", false);
-                // 0: no orbit (the option is absent).
-                if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
-                o.walkthrough = g.boolean("walkthrough", false);
-                o.lpp = g.boolean("lpp", true);
-                if (g.has("lpp_poses")) o.lppPoses = g.at("lpp_poses").whole(limits::kLppPoses, "--lpp-poses");
-                o.shard = shardField(g, "0/1");
-                o.baseline = g.str("baseline", "");
-                b.ratioOf = g.str("ratio_of", "frame");
-                if (g.has("resamples")) b.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
-            }
-            r.bench = std::move(b);
-            r.benchResults = Json(results.json());
-        } else if (r.command == "tradeoff") {
-            const F g = root.at("grid").object();
-            RecordedTradeoff t;
-            t.merged = g.boolean("merged", false);
-            TradeoffOptions& o = t.options;
-            o.run.scene = r.sceneSpec;
-            o.run.width = r.width;
-            o.run.height = r.height;
-            for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
-            o.frames = r.frames;
-            o.warmup = r.warmup;
-            if (!t.merged) {
-                for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
-                o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
-                o.sweep.centre = g.strings("centre");
-                t.exclude = g.strings("exclude");
-                for (size_t i = 0; i < t.exclude.size(); ++i) {
-                    try {
-                        o.sweep.exclusion.add(t.exclude[i]);
-                    } catch (const Error& e) {
-                        g.at("exclude").at(i).refuse(e.what());
-                    }
-                }
-                o.against = g.strings("against");
-                o.metric = g.at("metric").str();
-                o.buffer = g.at("buffer").str();
-                if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
-                if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
-                o.walkthrough = g.boolean("walkthrough", false);
-                if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
-                if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");
-                t.runPreset = g.str("run_preset", "");
-                // Records before repeated --preset hold the one preset only.
-                t.runPresets = g.strings("run_presets");
-                if (t.runPresets.empty() && !t.runPreset.empty()) t.runPresets = {t.runPreset};
-                t.runSets = g.strings("run_sets");
-                o.shard = shardField(g, "0/1");
-            }
-            r.tradeoff = std::move(t);
-            r.tradeoffResults = Json(results.json());
-            r.tradeoffTable(path);  // the rows are checked here, not when they are needed
-        } else {
-            r.buffer = root.at("buffer").str();
-            if (results.has("timings"))
-                for (const F& s : results.at("timings").items())
-                    r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms"))});
-            const F image = results.at("image").object();
-            r.imageSha256 = image.at("sha256").str();
-            // 0: no image was written.
-            const OptionRange side{0, limits::kSize.max};
-            if (image.has("width")) r.imageWidth = image.at("width").whole(side, "--size");
-            if (image.has("height")) r.imageHeight = image.at("height").whole(side, "--size");
-            if (image.has("channels")) r.imageChannels = image.at("channels").whole(OptionRange{0, 4}, "a buffer's channels");
-            if (results.has("metrics"))
-                for (const auto& [k, m] : results.at("metrics").object().json().items())
-                    if (m.is_number()) r.metrics.emplace_back(k, m.get<double>());
-        }
+        if (r.command == "bench")
+            readBenchGrid(r, root, results, path);
+        else if (r.command == "tradeoff")
+            readTradeoffGrid(r, root, results, path);
+        else
+            readRenderResults(r, root, results, path);
     } catch (const nlohmann::json::exception& e) {
         throw FileError(path, "record version " + std::to_string(r.readVersion) + ": " + jsonErrorText(e));
     } catch (const FileError&) {

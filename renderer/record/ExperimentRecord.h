@@ -16,6 +16,9 @@
 //            compiled (stage files, their #includes, params/ headers)
 //   build    version, commit at configure time, compiler, flags, build type
 //   gl, host
+//   record_sha256  {inputs, results}: the sha256 of every field but results
+//            (and itself), and of results (contentSha256), written with the
+//            record; replay says "record edited" when they no longer match
 //   results  render/gui: per timing series the counted frames' GPU and CPU ms
 //            with the median and its bootstrap 95% interval, the buffer's
 //            pixel sha256, metrics when the command computed any; bench: the
@@ -70,6 +73,7 @@ struct RecordedTradeoff {
     TradeoffOptions options;           // run.scene and run.sets (every knob) included
     std::vector<std::string> exclude;  // the --exclude texts
     int aoRays = 64;
+    std::uint32_t referenceSeed = 1;  // the CPU reference's AO sample seed (seeds.reference)
     // The run's own preset and --set: with a preset axis, replay starts from
     // these (every knob as --set would hide each point's preset).
     std::string runPreset;                // the --preset specs joined by " + " (as shown)
@@ -93,6 +97,11 @@ struct ExperimentRecord {
     RecordFields seeds;
     int width = 0, height = 0, frames = 1, warmup = 0;
     std::string buffer = "final";
+    // render of a CPU reference buffer (reference.*, compare.error): the
+    // trace's AO rays per pixel ("reference": {"ao_rays"}) and seed
+    // (seeds.reference), so replay traces the same reference; unset otherwise.
+    std::optional<int> referenceAoRays;
+    std::uint32_t referenceSeed = 1;
     RecordFields build, gl, host;
     std::vector<RecordedSeries> timings;
     std::vector<std::pair<std::string, double>> metrics;
@@ -102,6 +111,22 @@ struct ExperimentRecord {
     nlohmann::ordered_json benchResults;  // bench: the results object (benchResultsJson)
     std::optional<RecordedTradeoff> tradeoff;
     nlohmann::ordered_json tradeoffResults;  // tradeoff: the results object (tradeoffResultsJson)
+
+    // What the record's own sha256s (record_sha256, written with it) say when
+    // it is read: `hashed` false for a record written before records kept
+    // them; `inputsEdited` / `resultsEdited` when the fields no longer match
+    // (edited since it was written), so replay tells an edited record from a
+    // changed machine.
+    struct SelfCheck {
+        bool hashed = false, inputsEdited = false, resultsEdited = false;
+        std::string writtenInputs, writtenResults, nowInputs, nowResults;  // hex sha256s
+    };
+    SelfCheck selfCheck;
+    // The sha256 of a record's JSON without `results` and `record_sha256`
+    // (its inputs, build, GL and host: "inputs"), and of its `results`
+    // ("results"), each over nlohmann::json's compact dump with sorted keys,
+    // so indentation and key order do not count.
+    static std::pair<std::string, std::string> contentSha256(const nlohmann::json& record);
 
     // After a run of `run` in `session` whose counted frames start at
     // `firstCounted` (waits for the timer's outstanding frames).
@@ -144,6 +169,9 @@ struct ExperimentRecord {
     // sha256 of `buffer` as written: display bytes or raw floats; sets the shape.
     static std::string hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                   int& channels);
+    // Marks a render record as one of a CPU reference buffer traced with
+    // `aoRays` rays per pixel and AO pattern seed `seed` (reference's --ao-rays, --seed).
+    void setReference(int aoRays, std::uint32_t seed);
     // Every knob of `knobs` as name -> value text.
     static RecordFields knobFields(const KnobRegistry& knobs);
 };

@@ -13,6 +13,7 @@
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/record/SceneContent.h"
 
 namespace dw {
 
@@ -106,20 +107,27 @@ private:
 
 }  // namespace
 
+bool isBuiltinSceneContent(const std::string& path) { return path.rfind("builtin:", 0) == 0; }
+
 std::vector<RecordedFile> sceneFilesOf(const Scene& scene) {
     SceneFileList list;
-    if (scene.source.rfind("builtin:", 0) != 0) list.add(scene.source);
+    const bool builtin = isBuiltinSceneContent(scene.source);
+    if (!builtin) list.add(scene.source);
     list.add(scene.sky.environmentSource);
     for (const Image& image : scene.images) list.add(image.source);
     std::vector<RecordedFile> files;
+    // A built-in scene reads no file: what it generates is its content.
+    if (builtin) files.push_back({scene.source, sceneContentSha256(scene)});
     for (const std::string& p : list.paths()) files.push_back({p, sha256OfFile(p)});
     return files;
 }
 
 namespace {
 
-// `file` relative to the folder of `scene` (both made absolute against the working directory, lexically).
+// `file` relative to the folder of `scene` (both made absolute against the
+// working directory, lexically); a built-in scene's content by its name.
 std::string keyOf(const std::string& file, const std::string& scene) {
+    if (isBuiltinSceneContent(file)) return file;
     std::error_code ec;
     const fs::path f = fs::absolute(file, ec).lexically_normal();
     const fs::path base = fs::absolute(scene, ec).lexically_normal().parent_path();

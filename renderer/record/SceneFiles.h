@@ -3,7 +3,7 @@
 // scene JSON every glTF its objects name and the sky's image files; for each
 // glTF (.gltf) its external .bin buffers and images (data: URIs are inside
 // the file already); and every image the loaded scene names. Each once, with
-// the sha256 of its content. Needs no GL.
+// the sha256 of its content; a built-in scene's content by its hash. Needs no GL.
 #include <string>
 #include <vector>
 
@@ -18,8 +18,13 @@ std::string sha256Hex(const void* data, size_t size);
 // "" when the file cannot be read (a device, or more than kBinaryFileLimit bytes).
 std::string sha256OfFile(const std::string& path);
 
-// The files `scene` read, each with its current sha256.
+// The files `scene` read, each with its current sha256; for a built-in scene
+// first an entry named by its source ("builtin:default") with the sha256 of
+// its content (renderer/record/SceneContent), so a built-in that a new build
+// generates differently replays as "scene file changed: builtin:default".
 std::vector<RecordedFile> sceneFilesOf(const Scene& scene);
+// A list entry that stands for a built-in scene's content ("builtin:NAME"), not a file.
+bool isBuiltinSceneContent(const std::string& path);
 
 // A difference between the files a record lists and those its scene reads now.
 struct SceneFileChange {

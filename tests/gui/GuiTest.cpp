@@ -1098,6 +1098,7 @@ TEST(Gui, UnderXvfbF11WithRenderDocSavesACaptureOfTheNextFrame) {
     void* lib = dlopen("librenderdoc.so", RTLD_LAZY | RTLD_LOCAL);
     if (!lib) GTEST_SKIP() << "librenderdoc.so is not installed (Debian package librenderdoc)";
     dlclose(lib);
+    if (const std::string why = test::renderDocCaptureUnavailable(); !why.empty()) GTEST_SKIP() << why;
     const fs::path dir = test::tempDir() / "renderdoc-gui";
     fs::remove_all(dir);
     const LayoutReport r = runScripted("renderdoc", "1024x640", 8, "2 key F11\n", "--renderdoc --export-dir " + dir.string());

@@ -479,14 +479,180 @@ class RecordTest(unittest.TestCase):
         r = run("replay", self.variant("inputs.json", change))
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         line = next(l for l in r.stdout.splitlines() if l.startswith("inputs changed"))
-        self.assertEqual(line, "inputs changed (2): knob ssao.retired_knob, build commit")
+        # The record was edited to change them: said first, and named among the inputs.
+        self.assertIn("record edited: its inputs no longer match the sha256 written with them", r.stdout)
+        self.assertEqual(line, "inputs changed (3): record inputs edited, knob ssao.retired_knob, build commit")
         self.assertTrue(r.stdout.endswith(line + "\nimage: identical\n"), r.stdout)
         # No input changed, another image (the record's value is restored, not the build's): exit 1.
         r = run("replay", self.variant("image.json", lambda d: d["results"]["image"].__setitem__("sha256", "ab" * 32)))
         self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        # An edited result is told from a changed machine: "record edited", not "inputs changed: none".
+        self.assertIn("record edited: its results no longer match the sha256 written with them", r.stdout)
+        self.assertNotIn("record edited: its inputs", r.stdout)
+        self.assertIn("inputs changed (1): record results edited\nimage: differs (sha256 " + "ab" * 32 + " -> ", r.stdout)
+        # Without its own sha256s (a record written before them) the same edit reads as before, and replay says why.
+        r = run("replay", self.variant("image-unhashed.json", lambda d: (
+            d["results"]["image"].__setitem__("sha256", "ab" * 32), d.pop("record_sha256"))))
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("record holds no sha256 of its own (written before records kept one)", r.stdout)
         self.assertIn("inputs changed: none\nimage: differs (sha256 " + "ab" * 32 + " -> ", r.stdout)
         r = run("help", "replay")
         self.assertIn("Exit codes: the result decides, not the inputs", r.stdout + r.stderr)
+
+    def test_a_record_holds_its_own_sha256s_and_an_unedited_one_replays_unflagged(self):
+        self.assertRegex(self.data["record_sha256"]["inputs"], r"^[0-9a-f]{64}$")
+        self.assertRegex(self.data["record_sha256"]["results"], r"^[0-9a-f]{64}$")
+        # Re-indented and keys reordered (another JSON writer) is not an edit.
+        path = os.path.join(self.tmp.name, "reindented.json")
+        with open(path, "w") as f:
+            json.dump(dict(reversed(list(self.data.items()))), f, indent=7)
+        r = run("replay", path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertNotIn("record edited", r.stdout)
+        self.assertNotIn("holds no sha256", r.stdout)
+        self.assertIn("inputs changed: none\nimage: identical", r.stdout)
+        # A wrong type is refused by its path.
+        r = run("replay", self.variant("badsha.json", lambda d: d["record_sha256"].__setitem__("inputs", 3)))
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("record_sha256.inputs: expects a string, got 3", r.stderr)
+
+    def test_a_built_in_scene_records_its_content_hash(self):
+        record = os.path.join(self.tmp.name, "builtin.json")
+        r = run("render", "--scene", "default", "--size", "32x18", "--out", os.path.join(self.tmp.name, "b.png"),
+                "--record", record)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        entry = dict(d["scene"]["files"][0])
+        self.assertEqual(entry["path"], "builtin:default")
+        self.assertRegex(entry["sha256"], r"^[0-9a-f]{64}$")
+        # Another built-in has another content hash; the same one the same.
+        other = os.path.join(self.tmp.name, "builtin-spheres.json")
+        self.assertEqual(run("render", "--scene", "spheres", "--size", "32x18", "--out",
+                             os.path.join(self.tmp.name, "c.png"), "--record", other).returncode, 0)
+        with open(other) as f:
+            self.assertNotEqual(json.load(f)["scene"]["files"][0]["sha256"], entry["sha256"])
+        r = run("replay", record)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("inputs changed: none\nimage: identical", r.stdout)
+        # A built-in generated differently than when recorded (its recorded hash another one): named as a scene input.
+        changed = os.path.join(self.tmp.name, "builtin-changed.json")
+        d["scene"]["files"][0]["sha256"] = "cd" * 32
+        with open(changed, "w") as f:
+            json.dump(d, f)
+        r = run("replay", changed)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("scene file changed: builtin:default (sha256 cdcdcdcdcdcdcdcd -> %s)" % entry["sha256"][:16], r.stdout)
+        self.assertIn("inputs changed (2): record inputs edited, scene file builtin:default", r.stdout)
+        # A record of a built-in written before the content hash: said once, not an added file.
+        d["scene"]["files"] = []
+        d.pop("record_sha256")
+        with open(changed, "w") as f:
+            json.dump(d, f)
+        r = run("replay", changed)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("record holds no content hash of the built-in scene (written before records kept one)", r.stdout)
+        self.assertIn("inputs changed: none\nimage: identical", r.stdout)
+
+    def test_replay_diff_names_what_differs_between_two_records(self):
+        other = os.path.join(self.tmp.name, "r16.json")
+        r = run("render", "--scene", self.scene, "--size", "64x36", "--frames", "6", "--warmup", "1", "--set",
+                "ssao.samples=16", "--out", os.path.join(self.tmp.name, "a16.png"), "--record", other)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = run("replay", "--diff", self.record, other)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        lines = r.stdout.splitlines()
+        self.assertIn("knob ssao.samples: 8 -> 16", lines)
+        self.assertIn("inputs changed (1): knob ssao.samples", lines)
+        self.assertRegex(r.stdout, r"timing frame +gpu median +[0-9.]+ -> +[0-9.]+ ms  x[0-9.]+ \[[0-9.]+, [0-9.]+\]")
+        with open(other) as f:
+            other_sha = json.load(f)["results"]["image"]["sha256"]
+        self.assertEqual(lines[-1], "image: differs (sha256 %s -> %s)" % (self.data["results"]["image"]["sha256"], other_sha))
+        # A record against itself: nothing differs, exit 0.
+        r = run("replay", "--diff", self.record, self.record)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("inputs changed: none", r.stdout.splitlines())
+        self.assertEqual(r.stdout.splitlines()[-1], "image: identical")
+        self.assertNotIn("record edited", r.stdout)
+        # Build, GL, seeds and camera fields in replay's words; an edited side named.
+        def change(d):
+            d["build"]["commit"] = "0123abc"
+            d["gl"]["renderer"] = "another GPU"
+            d["seeds"]["bootstrap"] = "7"
+            d["camera"]["fov_y_degrees"] = 33.0
+        edited = self.variant("diff-edited.json", change)
+        r = run("replay", "--diff", self.record, edited)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        lines = r.stdout.splitlines()
+        self.assertIn("diff-edited.json: record edited: its inputs no longer match the sha256 written with them "
+                      "(record_sha256.inputs %s, now " % self.data["record_sha256"]["inputs"][:16], r.stdout)
+        self.assertIn("build commit: %s -> 0123abc" % self.data["build"]["commit"], lines)
+        self.assertIn("gl renderer: %s -> another GPU" % self.data["gl"]["renderer"], lines)
+        self.assertIn("seed bootstrap: 12345 -> 7", lines)
+        self.assertIn("camera.fov_y_degrees: %s -> 33.0" % json.dumps(self.data["camera"]["fov_y_degrees"]), lines)
+        self.assertIn("inputs changed (5): diff-edited.json: record inputs edited, seed bootstrap, "
+                      "camera.fov_y_degrees, build commit, gl renderer", lines)
+        # Bad input: exit 2 naming the file; usage errors.
+        r = run("replay", "--diff", self.record, os.path.join(self.tmp.name, "missing.json"))
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("missing.json", r.stderr)
+        r = run("replay", "--diff", self.record)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("replay --diff needs two record files", r.stderr)
+
+    def test_a_tradeoff_against_the_reference_records_its_seed_and_replays_with_it(self):
+        record = os.path.join(self.tmp.name, "seed-t.json")
+        env = {"DW_REFERENCE_CACHE": os.path.join(self.tmp.name, "refcache")}
+        r = run("tradeoff", "--scene", "default", "--size", "32x18", "--sweep", "ssao.samples=4,8", "--metric", "rms",
+                "--buffer", "ao", "--ao-rays", "8", "--frames", "1", "--warmup", "0", "--quiet", "--csv",
+                os.path.join(self.tmp.name, "seed-t.csv"), "--record", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        self.assertEqual(d["seeds"]["reference"], "1")
+        r = run("replay", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertEqual(len(re.findall(r"^point \d camera 0, ssao\.samples=\d: rms \S+ -> \S+ \(same\)", r.stdout, re.M)),
+                         2, r.stdout)
+        # Another seed traces another reference: every error differs (the seed is used, not only kept).
+        seeded = os.path.join(self.tmp.name, "seed-t2.json")
+        d["seeds"]["reference"] = "2"
+        with open(seeded, "w") as f:
+            json.dump(d, f)
+        r = run("replay", seeded, env=env, timeout=600)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertEqual(len(re.findall(r"\(differs\);", r.stdout)), 2, r.stdout)
+        self.assertIn("tradeoff: differs (2 row(s) with another error", r.stdout)
+        # --diff of the two records names the seed.
+        r = run("replay", "--diff", record, seeded)
+        self.assertIn("seed reference: 1 -> 2", r.stdout.splitlines())
+
+    def test_a_render_of_a_reference_buffer_records_its_rays_and_seed_and_replays_with_them(self):
+        record = os.path.join(self.tmp.name, "ref.json")
+        env = {"DW_REFERENCE_CACHE": os.path.join(self.tmp.name, "refcache-render")}
+        r = run("render", "--scene", "default", "--size", "32x18", "--buffer", "reference.ao", "--ao-rays", "8", "--seed",
+                "3", "--out", os.path.join(self.tmp.name, "ref.exr"), "--record", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(record) as f:
+            d = json.load(f)
+        self.assertEqual((d["buffer"], d["reference"], d["seeds"]["reference"]), ("reference.ao", {"ao_rays": 8}, "3"))
+        r = run("replay", record, env=env, timeout=600)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertTrue(r.stdout.endswith("inputs changed: none\nimage: identical\n"), r.stdout)
+        # Another seed traces another AO pattern: the image differs (the seed is used, not only kept).
+        d["seeds"]["reference"] = "4"
+        other = os.path.join(self.tmp.name, "ref4.json")
+        with open(other, "w") as f:
+            json.dump(d, f)
+        r = run("replay", other, env=env, timeout=600)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("image: differs", r.stdout)
+        d["seeds"]["reference"] = "4294967295"
+        with open(other, "w") as f:
+            json.dump(d, f)
+        r = run("replay", other, env=env)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("seeds.reference: 4294967295 is outside --seed's range 0..2147483647", r.stderr)
 
     def test_zero_ms_medians_print_no_ratio(self):
         # Series whose recorded frames are all 0 ms (a pass the timer saw no

@@ -83,4 +83,25 @@ double maxAbsDifference(const FloatImage& a, const FloatImage& b, int channels, 
 // relative * |a| + absolute (the invariance bound of the extremes tests).
 double fractionOff(const FloatImage& a, const FloatImage& b, float relative = 0.02f, float absolute = 0.002f);
 
+// Why this test binary cannot run a RenderDoc capture, or "" when it can.
+// Under AddressSanitizer (scripts/test.sh --sanitize) the workbench starts
+// again with librenderdoc.so in LD_PRELOAD, ahead of ASan's runtime, and ASan
+// stops the process at start-up ("ASan runtime does not come first in initial
+// library list"): the capture cannot be tested there, only in the plain build.
+inline std::string renderDocCaptureUnavailable() {
+#if defined(__SANITIZE_ADDRESS__)
+    return "AddressSanitizer build: librenderdoc.so, preloaded ahead of ASan's runtime, stops the process at start-up "
+           "(the capture is tested in the plain build)";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return "AddressSanitizer build: librenderdoc.so, preloaded ahead of ASan's runtime, stops the process at start-up "
+           "(the capture is tested in the plain build)";
+#else
+    return "";
+#endif
+#else
+    return "";
+#endif
+}
+
 }  // namespace dw::test

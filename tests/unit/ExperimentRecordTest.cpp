@@ -12,8 +12,11 @@
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/record/SceneContent.h"
 #include "renderer/record/SceneFiles.h"
 #include "renderer/record/ShaderFiles.h"
+#include "renderer/scene/BuiltinScenes.h"
+#include "renderer/scene/FlameParticles.h"
 #include "renderer/scene/SceneLoader.h"
 #include "tests/support/TestSupport.h"
 
@@ -456,4 +459,77 @@ TEST(ShaderFiles, RecordedByPathInTheFolderAndComparedByName) {
     EXPECT_EQ(c[0].path, "gone.frag");
     EXPECT_EQ(c[1].kind, SceneFileChange::Kind::Removed);
     EXPECT_EQ(c[1].path, "../outside.frag");
+}
+
+// Issue 32: a built-in scene reads no file, so its record holds the sha256 of
+// what it generates. The hash follows the content (a vertex, a light, a
+// material, a setting moved changes it), is the same for the same built-in
+// made twice, and is not moved by the fire's particles, which move each frame.
+TEST(SceneContent, TheHashOfABuiltInFollowsItsContentAndNotItsFrame) {
+    const Scene base = makeBuiltinScene("default");
+    const std::string hash = sceneContentSha256(base);
+    EXPECT_EQ(hash.size(), 64u);
+    EXPECT_EQ(sceneContentSha256(makeBuiltinScene("default")), hash);
+    EXPECT_NE(sceneContentSha256(makeBuiltinScene("spheres")), hash);
+    const std::vector<std::function<void(Scene&)>> edits = {
+        [](Scene& s) { s.meshes[0].vertices[0].position.x += 1e-3f; },
+        [](Scene& s) { s.meshes[0].indices[0] ^= 1u; },
+        [](Scene& s) { s.lights[0].intensity *= 1.01f; },
+        [](Scene& s) { s.lights.pop_back(); },
+        [](Scene& s) { s.materials[0].roughness += 0.01f; },
+        [](Scene& s) { s.settings.emplace_back("tonemap.key", "0.3"); },
+        [](Scene& s) { s.ambient.y += 0.01f; },
+    };
+    for (size_t i = 0; i < edits.size(); ++i) {
+        Scene edited = base;
+        edits[i](edited);
+        EXPECT_NE(sceneContentSha256(edited), hash) << "edit " << i;
+    }
+    // sceneFilesOf lists the content first, by the scene's source.
+    const std::vector<RecordedFile> files = sceneFilesOf(base);
+    ASSERT_FALSE(files.empty());
+    EXPECT_EQ(files[0].path, "builtin:default");
+    EXPECT_EQ(files[0].sha256, hash);
+    // The fire: its particle lights move with the frame, its hash does not; its emitters count.
+    Scene fire = makeBuiltinScene("fire");
+    ASSERT_FALSE(fire.flames.empty());
+    const std::string fireHash = sceneContentSha256(fire);
+    const glm::vec3 before = fire.lights[fire.flames.firstLight].position;
+    animateFlameParticles(fire, 37);
+    EXPECT_NE(fire.lights[fire.flames.firstLight].position, before);
+    EXPECT_EQ(sceneContentSha256(fire), fireHash);
+    fire.flames.emitters[0].brightness *= 2.0f;
+    EXPECT_NE(sceneContentSha256(fire), fireHash);
+}
+
+// Issue 32: a record holds the sha256 of its own inputs and results, and
+// reading it says whether either was edited since; key order and
+// indentation are not edits.
+TEST(ExperimentRecord, ItsOwnSha256sTellAnEditedRecord) {
+    ExperimentRecord r;
+    r.sceneSpec = "default";
+    r.width = 16;
+    r.height = 9;
+    r.knobs = {{"ssao.samples", "16"}};
+    r.imageSha256 = std::string(64, 'a');
+    const std::string text = r.json();
+    const ExperimentRecord back = ExperimentRecord::parse(text, "r.json");
+    EXPECT_TRUE(back.selfCheck.hashed);
+    EXPECT_FALSE(back.selfCheck.inputsEdited);
+    EXPECT_FALSE(back.selfCheck.resultsEdited);
+    nlohmann::json j = nlohmann::json::parse(text);
+    EXPECT_EQ(j["record_sha256"]["inputs"], back.selfCheck.nowInputs);
+    const ExperimentRecord compact = ExperimentRecord::parse(j.dump(), "r.json");
+    EXPECT_FALSE(compact.selfCheck.inputsEdited || compact.selfCheck.resultsEdited);
+    j["knobs"]["ssao.samples"] = "32";
+    const ExperimentRecord knob = ExperimentRecord::parse(j.dump(), "r.json");
+    EXPECT_TRUE(knob.selfCheck.inputsEdited);
+    EXPECT_FALSE(knob.selfCheck.resultsEdited);
+    j = nlohmann::json::parse(text);
+    j["results"]["image"]["sha256"] = std::string(64, 'b');
+    const ExperimentRecord image = ExperimentRecord::parse(j.dump(), "r.json");
+    EXPECT_FALSE(image.selfCheck.inputsEdited);
+    EXPECT_TRUE(image.selfCheck.resultsEdited);
+    j.erase("record_sha256");
+    EXPECT_FALSE(ExperimentRecord::parse(j.dump(), "r.json").selfCheck.hashed);
 }

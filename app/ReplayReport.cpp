@@ -1,0 +1,277 @@
+#include "app/ReplayReport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+namespace dw::replay {
+
+namespace {
+
+void printTooFew(size_t now, size_t old) {
+    std::printf("  %s (%zu and %zu frames, %zu needed on each side)", kTooFewForInterval.c_str(), old, now,
+                kMinIntervalSamples);
+}
+
+// Below this a median prints as 0.000 ms: the timer's noise, not a time to divide by.
+constexpr double kZeroMs = 0.0005;
+
+// "a, b, c and N more": at most `shown` names.
+std::string someOf(const std::vector<std::string>& names, size_t shown = 3) {
+    std::string out;
+    for (size_t i = 0; i < names.size() && i < shown; ++i) out += (i ? ", " : "") + names[i];
+    if (names.size() > shown) out += " and " + std::to_string(names.size() - shown) + " more";
+    return out;
+}
+
+std::string pointLabel(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string label = "point " + std::to_string(r.point) + " camera " + r.camera;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a) label += ", " + t.axes[a] + "=" + r.axisValues[a];
+    return label;
+}
+
+// Errors are deterministic on one machine (the same frames, the same
+// reference from the cache): equal to 1e-9 relative, or both not measured.
+bool sameError(double a, double b) {
+    if (!std::isfinite(a) || !std::isfinite(b)) return std::isfinite(a) == std::isfinite(b);
+    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+// One row old against new; returns whether the time moved (`same` the error).
+bool printRowComparison(const std::string& label, const TradeoffRow& b, const TradeoffRow& r, size_t framesBefore,
+                        size_t framesAfter, bool& same) {
+    same = sameError(b.error, r.error);
+    // The difference of the medians, with the interval the two 95%
+    // intervals allow (new low - old high, new high - old low).
+    const double diff = r.frameGpuMs - b.frameGpuMs, lo = r.frameGpuMsLo - b.frameGpuMsHi,
+                 hi = r.frameGpuMsHi - b.frameGpuMsLo;
+    const double ratioLo = b.frameGpuMsHi > 0 ? r.frameGpuMsLo / b.frameGpuMsHi : NAN;
+    const double ratioHi = b.frameGpuMsLo > 0 ? r.frameGpuMsHi / b.frameGpuMsLo : NAN;
+    const bool interval = enoughForInterval(framesBefore) && enoughForInterval(framesAfter);
+    const bool timeMoved = interval && std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
+                           (ratioLo > kTimingBandHigh || ratioHi < kTimingBandLow);
+    std::printf("%s: %s %.6g -> %.6g (%s); frame gpu median %.3f -> %.3f ms, difference %+.3f", label.c_str(),
+                r.metric.c_str(), b.error, r.error, same ? "same" : "differs", b.frameGpuMs, r.frameGpuMs, diff);
+    if (interval)
+        std::printf(" [%+.3f, %+.3f]%s", lo, hi, timeMoved ? " (moved)" : "");
+    else
+        printTooFew(framesAfter, framesBefore);
+    std::printf("\n");
+    return timeMoved;
+}
+
+}  // namespace
+
+std::string shortHash(const std::string& h) { return h.empty() ? "unreadable" : h.substr(0, 16); }
+
+void ChangedInputs::print() const {
+    if (names.empty()) {
+        std::printf("inputs changed: none\n");
+        return;
+    }
+    std::string all;
+    for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+    std::printf("inputs changed (%zu): %s\n", names.size(), all.c_str());
+}
+
+void reportFileChanges(const std::string& what, const std::vector<SceneFileChange>& changes,
+                       const std::string& removedWhy, ChangedInputs& inputs, const std::string& addedWhy) {
+    for (const SceneFileChange& c : changes) {
+        if (c.kind == SceneFileChange::Kind::Changed)
+            std::printf("%s changed: %s (sha256 %s -> %s)\n", what.c_str(), c.path.c_str(),
+                        shortHash(c.oldSha256).c_str(), shortHash(c.newSha256).c_str());
+        else if (c.kind == SceneFileChange::Kind::Added)
+            std::printf("%s added: %s (sha256 %s; %s)\n", what.c_str(), c.path.c_str(), shortHash(c.newSha256).c_str(),
+                        addedWhy.c_str());
+        else
+            std::printf("%s removed: %s (recorded sha256 %s; %s)\n", what.c_str(), c.path.c_str(),
+                        shortHash(c.oldSha256).c_str(), removedWhy.c_str());
+        inputs.add(what + " " + c.path);
+    }
+}
+
+void reportSelfCheck(const ExperimentRecord& record, const std::string& who, ChangedInputs& inputs) {
+    const ExperimentRecord::SelfCheck& c = record.selfCheck;
+    if (!c.hashed) {
+        std::printf("%srecord holds no sha256 of its own (written before records kept one)\n", who.c_str());
+        return;
+    }
+    if (c.inputsEdited) {
+        std::printf("%srecord edited: its inputs no longer match the sha256 written with them (record_sha256.inputs "
+                    "%s, now %s)\n",
+                    who.c_str(), shortHash(c.writtenInputs).c_str(), shortHash(c.nowInputs).c_str());
+        inputs.add(who + "record inputs edited");
+    }
+    if (c.resultsEdited) {
+        std::printf("%srecord edited: its results no longer match the sha256 written with them "
+                    "(record_sha256.results %s, now %s)\n",
+                    who.c_str(), shortHash(c.writtenResults).c_str(), shortHash(c.nowResults).c_str());
+        inputs.add(who + "record results edited");
+    }
+}
+
+bool timingMoved(const RatioInterval& r) { return r.valid() && (r.low > kTimingBandHigh || r.high < kTimingBandLow); }
+
+// An old median that prints as 0.000 ms has no ratio ("n/a (0 ms)"); an old
+// series whose resamples reach a 0 ms median has a ratio but no upper bound.
+RatioInterval printRatio(const std::vector<double>& now, const std::vector<double>& old, int resamples, bool markMoved) {
+    if (old.empty() || now.empty()) {
+        std::printf("  n/a (no frames)");
+        return {};
+    }
+    const double before = median(old), after = median(now);
+    if (!(before >= kZeroMs)) {
+        std::printf("  n/a (0 ms)");
+        return {};
+    }
+    if (!enoughForInterval(now.size()) || !enoughForInterval(old.size())) {
+        printTooFew(now.size(), old.size());
+        return {};
+    }
+    const RatioInterval r = bootstrapRatioOfMedians(now, old, resamples);
+    if (!r.valid() || r.resamples < resamples || !std::isfinite(r.low) || !std::isfinite(r.high)) {
+        std::printf("  x%.3f, no interval (0 ms medians among the old frames' resamples)", after / before);
+        return {};
+    }
+    std::printf("  x%.3f [%.3f, %.3f]%s", r.ratio, r.low, r.high, markMoved && timingMoved(r) ? " (moved)" : "");
+    return r;
+}
+
+void compareTimings(const std::vector<RecordedSeries>& old, const std::vector<RecordedSeries>& now) {
+    std::map<std::string, const RecordedSeries*> oldSeries;
+    for (const auto& s : old) oldSeries[s.name] = &s;
+    for (const auto& s : now) {
+        const auto it = oldSeries.find(s.name);
+        if (it == oldSeries.end()) continue;
+        std::printf("timing %-28s gpu median %9.3f -> %9.3f ms", s.name.c_str(), median(it->second->gpuMs), median(s.gpuMs));
+        printRatio(s.gpuMs, it->second->gpuMs);
+        std::printf("\n");
+    }
+}
+
+int imageVerdict(const std::string& oldSha, const std::string& newSha) {
+    if (newSha == oldSha) {
+        std::printf("image: identical\n");
+        return 0;
+    }
+    std::printf("image: differs (sha256 %s -> %s)\n", oldSha.c_str(), newSha.c_str());
+    return 1;
+}
+
+std::map<int, RecordedConfig> recordedConfigs(const nlohmann::ordered_json& res, const std::string& series) {
+    std::map<int, RecordedConfig> out;
+    if (!res.contains("configs") || !res["configs"].is_array()) return out;
+    for (const auto& c : res["configs"]) {
+        if (!c.is_object() || !c.contains("config") || !c["config"].is_number_integer()) continue;
+        RecordedConfig& r = out[c["config"].get<int>()];
+        if (c.contains("size") && c["size"].is_string()) r.label = c["size"].get<std::string>();
+        if (c.contains("lights") && c["lights"].is_number_integer())
+            r.label += ", " + std::to_string(c["lights"].get<long long>()) + " lights";
+        if (c.contains("knobs") && c["knobs"].is_object())
+            for (const auto& [k, v] : c["knobs"].items()) r.label += ", " + k + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
+        if (c.contains("lpp") && c["lpp"].is_number()) r.lpp = c["lpp"].get<double>();
+        if (c.contains("samples") && c["samples"].is_array())
+            for (const auto& s : c["samples"])
+                if (s.is_object() && s.contains("gpu_ms") && s["gpu_ms"].is_object() && s["gpu_ms"].contains(series) &&
+                    s["gpu_ms"][series].is_number())
+                    r.gpuMs.push_back(s["gpu_ms"][series].get<double>());
+    }
+    return out;
+}
+
+BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::vector<std::pair<int, RecordedConfig>>& after,
+                             const std::string& series, int resamples) {
+    BenchComparison out;
+    out.series = series;
+    for (const auto& [i, a] : after) {
+        const auto it = before.find(i);
+        if (it == before.end()) {
+            std::printf("config %d (%s): not in the record\n", i, a.label.c_str());
+            out.notInRecord.push_back("config " + std::to_string(i) + " (" + a.label + ")");
+            continue;
+        }
+        const RecordedConfig& b = it->second;
+        std::printf("config %d (%s): %s gpu median %9.3f -> %9.3f ms", i, a.label.c_str(), series.c_str(),
+                    median(b.gpuMs), median(a.gpuMs));
+        const RatioInterval r = printRatio(a.gpuMs, b.gpuMs, resamples, true);
+        const bool bothLpp = std::isfinite(b.lpp) && std::isfinite(a.lpp);
+        // The JSON holds LPP rounded to 6 significant digits.
+        const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(a.lpp)) ||
+                             (bothLpp && std::abs(b.lpp - a.lpp) <= 1e-5 * std::max(1.0, std::abs(b.lpp)));
+        if (bothLpp) std::printf("  lpp %.4f -> %.4f", b.lpp, a.lpp);
+        std::printf("\n");
+        if (!sameLpp) ++out.lppDiffer;
+        if (timingMoved(r)) ++out.moved;
+        ++out.compared;
+        before.erase(it);
+    }
+    for (const auto& [i, b] : before) {
+        std::printf("config %d: in the record, not run again\n", i);
+        out.notRunAgain.push_back("config " + std::to_string(i));
+    }
+    return out;
+}
+
+int BenchComparison::verdict() const {
+    if (notInRecord.empty() && notRunAgain.empty() && lppDiffer == 0 && moved == 0) {
+        std::printf("bench: the same (%zu configurations, lights per pixel equal, no %s timing outside [%.2f, %.2f] "
+                    "with its 95%% interval)\n",
+                    compared, series.c_str(), kTimingBandLow, kTimingBandHigh);
+        return 0;
+    }
+    // A record cut short (its results lack configurations of the grid it declares) names them.
+    std::string missing;
+    if (!notInRecord.empty())
+        missing += std::to_string(notInRecord.size()) + " configuration(s) not in the record: " + someOf(notInRecord) + "; ";
+    if (!notRunAgain.empty())
+        missing += std::to_string(notRunAgain.size()) + " in the record, not run again: " + someOf(notRunAgain) + "; ";
+    std::printf("bench: differs (%s%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
+                "[%.2f, %.2f])\n",
+                missing.c_str(), lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
+    return 1;
+}
+
+TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTable& after, int framesBefore,
+                                   int framesAfter) {
+    std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
+    for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
+    TradeoffComparison out;
+    out.rows = after.rows.size();
+    for (const auto& r : after.rows) {
+        const auto it = recorded.find({r.point, r.camera, r.metric, r.buffer});
+        if (it == recorded.end()) {
+            std::printf("%s: not in the record\n", pointLabel(after, r).c_str());
+            ++out.missing;
+            continue;
+        }
+        const TradeoffRow& b = *it->second;
+        // Rows of a record without "frames" counted the record's frames.
+        const size_t nBefore = static_cast<size_t>(b.frames > 0 ? b.frames : framesBefore);
+        const size_t nAfter = static_cast<size_t>(r.frames > 0 ? r.frames : framesAfter);
+        bool same = true;
+        if (printRowComparison(pointLabel(after, r), b, r, nBefore, nAfter, same)) ++out.moved;
+        if (!same) ++out.errorDiffer;
+        recorded.erase(it);
+    }
+    for (const auto& [key, b] : recorded) {
+        std::printf("%s: in the record, not run again\n", pointLabel(before, *b).c_str());
+        ++out.missing;
+    }
+    return out;
+}
+
+int TradeoffComparison::verdict() const {
+    if (errorDiffer == 0 && moved == 0 && missing == 0) {
+        std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
+                    "95%% interval)\n",
+                    rows, kTimingBandLow, kTimingBandHigh);
+        return 0;
+    }
+    std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
+                "%d not in both)\n",
+                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, missing);
+    return 1;
+}
+
+}  // namespace dw::replay
