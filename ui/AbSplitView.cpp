@@ -49,14 +49,14 @@ std::string msText(const std::vector<double>& ms) {
 
 }  // namespace
 
-void abControls(UiState& state) {
+float abControls(UiState& state) {
     AbView& ab = state.ab;
     if (ImGui::Checkbox("A/B", &ab.enabled)) ++ab.generation;
     noteItem("ab.toggle");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A/B split (b): the current settings left of the divider (A), and right of it (B) a pinned\n"
                           "snapshot, a preset over the current settings, or the CPU reference; drag the divider");
-    if (!ab.enabled) return;
+    if (!ab.enabled) return 0.0f;
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.5f);
     if (ImGui::BeginCombo("##ab_source", sourceName(ab.source))) {
@@ -135,6 +135,7 @@ void abControls(UiState& state) {
         if (cur.empty() || ImGui::CalcTextSize(joined.c_str()).x <= avail || line + 1 == text.size()) cur = joined;
         else text[++line] = part;
     }
+    const float top = ImGui::GetCursorPosY();
     ImGui::BeginGroup();
     for (const std::string& l : text) {
         if (error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
@@ -144,6 +145,7 @@ void abControls(UiState& state) {
     }
     ImGui::EndGroup();
     noteItem("ab.numbers");
+    return ImGui::GetCursorPosY() - top;
 }
 
 bool drawAbSplit(UiState& state, ImVec2 boxMin, ImVec2 boxSize, const ImagePlacement& placed, bool hovered) {

@@ -113,12 +113,15 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // and so change the render size again.
     sameLineIfFits(ImGui::CalcTextSize("| orbit camera | 00000x00000 (x0.00) | recording").x);
     ImGui::TextDisabled("%s", info);
-    // The A/B split's controls and numbers (AbSplitView).
-    if (v.mode == DisplayMode::Deferred) abControls(state);
+    // The A/B split's controls and numbers (AbSplitView). The numbers' lines
+    // take room from the image box, not from the render: turning the split on
+    // once shrank the frame by a few rows, which withdrew a CPU reference just
+    // traced and failed the frame that asked for it.
+    const float abNumbers = v.mode == DisplayMode::Deferred ? abControls(state) : 0.0f;
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
-    const float belowToolbar = ImGui::GetContentRegionAvail().y;
+    const float belowToolbar = ImGui::GetContentRegionAvail().y + abNumbers;
     imageViewControls(v, shownOutput, state.viewportImage, "viewport");
     // The render size is the room below the toolbar and one row of the
     // viewer's controls (a buffer's combos are taller than the final image's
