@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include "app/CommandLine.h"
+#include "app/FrameWait.h"
 #include "app/RenderDocCapture.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
@@ -116,18 +117,48 @@ std::vector<std::string>& droppedFiles() {
     return files;
 }
 
+// Input and window events seen by the callbacks: the frame loop sleeps
+// (FrameWait) only when none came since its last frame.
+std::uint64_t& windowEvents() {
+    static std::uint64_t count = 0;
+    return count;
+}
+
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    ++windowEvents();
     if (action != GLFW_REPEAT) inputQueue().key(key, action == GLFW_PRESS, mods);
 }
-void onChar(GLFWwindow*, unsigned codepoint) { inputQueue().character(codepoint); }
+void onChar(GLFWwindow*, unsigned codepoint) {
+    ++windowEvents();
+    inputQueue().character(codepoint);
+}
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
+    ++windowEvents();
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
     inputQueue().button(button, action == GLFW_PRESS, static_cast<float>(x), static_cast<float>(y));
 }
 void onDrop(GLFWwindow*, int count, const char** paths) {
+    ++windowEvents();
     for (int i = 0; i < count; ++i) droppedFiles().emplace_back(paths[i]);
 }
+// The rest only count; ImGui's backend reads the cursor itself (1.86) and
+// gets the wheel, focus and enter/leave from its own callbacks, called on.
+void onCursorPos(GLFWwindow*, double, double) { ++windowEvents(); }
+void onScroll(GLFWwindow* window, double x, double y) {
+    ++windowEvents();
+    ImGui_ImplGlfw_ScrollCallback(window, x, y);
+}
+void onFocus(GLFWwindow* window, int focused) {
+    ++windowEvents();
+    ImGui_ImplGlfw_WindowFocusCallback(window, focused);
+}
+void onCursorEnter(GLFWwindow* window, int entered) {
+    ++windowEvents();
+    ImGui_ImplGlfw_CursorEnterCallback(window, entered);
+}
+void onWindowChange(GLFWwindow*, int, int) { ++windowEvents(); }
+void onRefresh(GLFWwindow*) { ++windowEvents(); }
 
 class ImGuiLayer {
 public:
@@ -151,6 +182,13 @@ public:
         glfwSetCharCallback(window, onChar);
         glfwSetMouseButtonCallback(window, onMouseButton);
         glfwSetDropCallback(window, onDrop);
+        glfwSetCursorPosCallback(window, onCursorPos);
+        glfwSetScrollCallback(window, onScroll);
+        glfwSetWindowFocusCallback(window, onFocus);
+        glfwSetCursorEnterCallback(window, onCursorEnter);
+        glfwSetWindowSizeCallback(window, onWindowChange);
+        glfwSetFramebufferSizeCallback(window, onWindowChange);
+        glfwSetWindowRefreshCallback(window, onRefresh);
         ImGui_ImplOpenGL3_Init("#version 450 core");
     }
     ~ImGuiLayer() {
@@ -355,6 +393,27 @@ void saveShownOutput(ui::ImageView& view, ui::UiState& state, RenderSession& ses
     }
 }
 
+// What the frame just drawn leaves to do, for FrameWait.
+FrameActivity activityAfterFrame(const ui::UiState& state, bool scripted, bool input, bool rendered) {
+    FrameActivity a;
+    a.scripted = scripted;
+    a.input = input;
+    a.rendered = rendered;
+    a.busy = state.timingCapture || state.animator.running() || state.measure.active() || state.sweep.running() ||
+             state.recordRun.running() || state.timingsPending || state.forceRender || state.requestScreenshot ||
+             state.requestRenderDocCapture || state.requestReference || state.requestReloadShaders ||
+             state.requestOpenScene || state.requestQuit || !droppedFiles().empty() ||
+             inputQueue().pending() > 0;  // fast input handed over a frame at a time (InputQueue)
+    a.background = state.referenceProgress >= 0.0;
+    const ImGuiIO& io = ImGui::GetIO();
+    for (bool down : io.MouseDown) a.held = a.held || down;
+    for (bool down : io.KeysDown) a.held = a.held || down;
+    a.typing = io.WantTextInput;
+    if (const ui::Message* toast = state.log.toast(state.time))
+        a.toastLeft = std::max(0.0, toast->time + ui::MessageLog::kToastSeconds - state.time);
+    return a;
+}
+
 }  // namespace
 
 int runGui(const GuiOptions& options, Scene scene) {
@@ -447,14 +506,23 @@ int runGui(const GuiOptions& options, Scene scene) {
         bool scriptLeft = false, scriptCtrl = false;
         const auto start = std::chrono::steady_clock::now();
         auto last = start;
+        FrameWait frameWait;
+        double waitSeconds = 0.0;
+        std::uint64_t eventsSeen = windowEvents();
         while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
+            // Asleep until an event or the timeout when nothing needs a frame (FrameWait).
+            if (waitSeconds > 0.0) glfwWaitEventsTimeout(waitSeconds);
+            else glfwPollEvents();
             const auto t0 = std::chrono::steady_clock::now();
             const float dt = std::min(std::chrono::duration<float>(t0 - last).count(), 0.1f);
             last = t0;
             state.time = std::chrono::duration<double>(t0 - start).count();
             const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
-            if (in.resize) glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
-            glfwPollEvents();
+            if (in.resize) {
+                glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
+                glfwPollEvents();
+            }
+            const std::uint64_t renderedBefore = state.framesRendered;
             // Scripted keys and text go through the queue as a person's would.
             for (const auto& [key, mods] : in.keys) {
                 for (const auto& [bit, modKey] : kModifierKeys)
@@ -579,6 +647,9 @@ int runGui(const GuiOptions& options, Scene scene) {
             }
             ++state.frame;
             if (lastFrame) break;
+            waitSeconds = frameWait.timeout(activityAfterFrame(state, scripted, windowEvents() != eventsSeen,
+                                                               state.framesRendered != renderedBefore));
+            eventsSeen = windowEvents();
             if (!scripted && !options.layoutOut.empty() && (glfwWindowShouldClose(window.get()) || state.requestQuit))
                 writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
         }
