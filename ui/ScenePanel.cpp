@@ -8,6 +8,9 @@
 
 #include "renderer/Error.h"
 #include "renderer/scene/BuiltinScenes.h"
+#include "ui/PresetsPanel.h"
+#include "ui/RecordDialog.h"
+#include "ui/SceneFileKind.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -30,7 +33,46 @@ void rememberRecent(UiState& state, const std::string& spec) {
 
 }  // namespace
 
+namespace {
+
+// Opening a record's or a preset's own scene goes through openScene again;
+// there a record or a preset is an error, not another redirect (a record
+// naming itself as its scene would never end).
+int& redirectDepth() {
+    static int depth = 0;
+    return depth;
+}
+
+// A record or a preset handed over as a scene opens as what it is; false when it is a scene.
+bool openAsWhatItIs(UiState& state, RenderSession& session, const std::string& spec, bool& opened) {
+    const SceneFileKind kind = classifySceneFile(spec);
+    if (kind == SceneFileKind::Scene) return false;
+    const char* what = kind == SceneFileKind::Record ? "an experiment record" : "a preset";
+    if (redirectDepth() > 0) {
+        state.log.error("cannot open scene " + spec + ": it is " + what + ", not a scene", state.time, "open scene");
+        opened = false;
+        return true;
+    }
+    ++redirectDepth();
+    if (kind == SceneFileKind::Record) {
+        state.log.info(spec + " is an experiment record, not a scene: opened as a record (its scene, camera and knobs, "
+                              "as File > Open record...; `deferred-workbench replay " + spec + "` measures it again)",
+                       state.time);
+        opened = openRecord(state, session, spec);
+    } else {
+        state.log.info(spec + " is a preset, not a scene: loaded as in the Presets panel (--preset on the command line)",
+                       state.time);
+        opened = loadPresetFile(state, session, spec);
+    }
+    --redirectDepth();
+    if (opened) state.log.succeeded("open scene");
+    return true;
+}
+
+}  // namespace
+
 bool openScene(UiState& state, RenderSession& session, const std::string& spec) {
+    if (bool opened = false; openAsWhatItIs(state, session, spec, opened)) return opened;
     try {
         if (state.animator.running()) state.animator.stop(session.mutableScene());
         session.loadScene(spec, state.run);

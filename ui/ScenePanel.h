@@ -17,7 +17,9 @@ struct ScenePanel {
 // Loads a scene into the session with knobs and camera as at start-up
 // (state.run: defaults, the scene's settings, the start-up preset, --set);
 // on failure logs the error and keeps the old scene and knobs. A file
-// opened goes to the front of state.recentScenes.
+// opened goes to the front of state.recentScenes. An experiment record or a
+// preset given as the scene (the path field, browser, recent list, a drop)
+// opens as a record (openRecord) or a preset (loadPresetFile), said in Messages.
 bool openScene(UiState& state, RenderSession& session, const std::string& spec);
 // The scene files the Scene panel and the file browser offer.
 extern const std::vector<std::string> kSceneExtensions;

@@ -224,3 +224,39 @@ TEST(WindowJourney, TheFrameLoopSleepsOnlyWhenNothingNeedsAFrame) {
     toast.toastLeft = 0.3;
     EXPECT_NEAR(wait.timeout(toast), 0.32, 1e-9);
 }
+
+// An experiment record or a preset handed to the window as a scene (dropped
+// on it, or typed into the Scene panel's path field after Ctrl+O; the file
+// browser and the recent list open through the same call) once rendered an
+// empty scene with "unknown key" warnings. Now a record opens as a record
+// (its scene, camera and knobs) and a preset as a preset, and Messages says so.
+TEST(WindowJourney, ARecordOrAPresetGivenAsASceneOpensAsWhatItIs) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path record = test::tempDir() / "as-scene-record.json", preset = test::tempDir() / "as-scene-preset.json";
+    const test::CommandResult made = test::runWorkbench("render --scene spheres --size 32x18 --set ssao.samples=8 --out " +
+                                                        (test::tempDir() / "as-scene.png").string() + " --record " + record.string());
+    ASSERT_EQ(made.code, 0) << made.out << made.err;
+    std::ofstream(preset) << R"({"format": "deferred-workbench preset", "version": 1, "name": "as-scene",
+                                 "knobs": {"ssao.samples": 24, "bloom.enabled": false}})";
+    const std::string args = "--scene default --set ao.enabled=false --size 1024x640";
+    for (const auto& [file, how] : {std::pair{record, std::string("drop")}, {preset, "field"}, {record, "field"}}) {
+        const std::string name = "as-scene-" + file.stem().string() + "-" + how;
+        const fs::path knobs = test::tempDir() / (name + "-knobs.txt");
+        const std::string events = how == "drop" ? "2 drop " + file.string() + "\n"
+                                                 : "2 key ctrl+o\n4 type " + file.string() + "\n6 key Enter\n";
+        const nlohmann::json j = runWindow(name, args + " --dump-knobs " + knobs.string(), 10, events);
+        ASSERT_FALSE(j.is_null()) << name;
+        EXPECT_EQ(j["errors"], nlohmann::json::array()) << name;
+        const auto values = test::readKnobDump(knobs);
+        if (file == record) {
+            EXPECT_EQ(j["scene"]["source"], "builtin:spheres") << name << ": the record's scene";
+            EXPECT_EQ(values.at("ssao.samples"), "8") << name;
+        } else {
+            EXPECT_EQ(j["scene"]["source"], "builtin:default") << name << ": a preset keeps the scene";
+            EXPECT_EQ(j["active_preset"], "as-scene") << name;
+            EXPECT_EQ(values.at("ssao.samples"), "24") << name;
+            EXPECT_EQ(values.at("bloom.enabled"), "false") << name;
+        }
+        EXPECT_EQ(j["recent_scenes"], nlohmann::json::array()) << name << ": not a scene, not a recent scene";
+    }
+}
