@@ -108,20 +108,31 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
         state.requestOpenScene = false;
     }
     if (ImGui::CollapsingHeader("open", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The buttons wrap to the panel's width (a row of them was cut: "fir").
+        const float padding = 2.0f * ImGui::GetStyle().FramePadding.x;
+        bool first = true;
         for (const auto& b : builtinScenes()) {
+            if (!first) sameLineIfFits(ImGui::CalcTextSize(b.name.c_str()).x + padding);
+            first = false;
             if (ImGui::Button(b.name.c_str())) openScene(state, session, b.name);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.description.c_str());
-            ImGui::SameLine();
+            noteItem("scene.builtin." + b.name);
+            if (ImGui::IsItemHovered()) tooltip("%s", b.description.c_str());
         }
-        ImGui::NewLine();
         std::error_code ec;
         if (!state.scenesDir.empty() && fs::is_directory(state.scenesDir, ec)) {
-            for (const auto& e : fs::directory_iterator(state.scenesDir, ec)) {
-                if (e.path().extension() != ".json") continue;
-                if (ImGui::SmallButton(e.path().filename().c_str())) openScene(state, session, e.path().string());
-                ImGui::SameLine();
+            std::vector<fs::path> examples;
+            for (const auto& e : fs::directory_iterator(state.scenesDir, ec))
+                if (e.path().extension() == ".json") examples.push_back(e.path());
+            std::sort(examples.begin(), examples.end());
+            first = true;
+            for (const fs::path& e : examples) {
+                const std::string name = e.filename().string();
+                if (!first) sameLineIfFits(ImGui::CalcTextSize(name.c_str()).x + padding);
+                first = false;
+                if (ImGui::SmallButton(name.c_str())) openScene(state, session, e.string());
+                noteItem("scene.example." + name);
+                if (ImGui::IsItemHovered()) tooltip("%s", e.string().c_str());
             }
-            ImGui::NewLine();
         }
         // The field has the panel's whole width (paths are long), the buttons the next line.
         ImGui::SetNextItemWidth(-1.0f);
@@ -131,7 +142,7 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
                                           ImGuiInputTextFlags_AutoSelectAll);
         noteItem("scene.path");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("a scene file's path (relative to %s); Enter opens it. Files dropped on the window open too.",
+            tooltip("a scene file's path (relative to %s); Enter opens it. Files dropped on the window open too.",
                               fs::current_path().c_str());
         const bool openClicked = ImGui::Button("open##path");  // not "open": the header above has that ID
         noteItem("scene.open");
@@ -151,7 +162,7 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
                     std::snprintf(path, sizeof(path), "%s", r.c_str());
                     openScene(state, session, r);
                 }
-                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.c_str());
+                if (ImGui::IsItemHovered()) tooltip("%s", r.c_str());
             }
             ImGui::TreePop();
         }

@@ -71,7 +71,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
     if (ImGui::Combo("##volumes", &filter, filters, 3)) v.volumes = static_cast<VolumeFilter>(filter);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
+        tooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
                           "every light's, or the one selected in the Lights panel");
     sameLineIfFits(checkboxWidth("axes"));
     ImGui::Checkbox("axes", &v.overlay.axes);
@@ -87,7 +87,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
     if (ImGui::Combo("##resolution", &scale, scales, 4)) v.resolution = static_cast<ResolutionScale>(scale);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
+        tooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
                           "to keep the GPU frame under %.0f ms (frozen while timings are recorded)",
                           static_cast<double>(v.frameTargetMs));
     if (autoScale) {
@@ -99,7 +99,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::SameLine();
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "software GL: reduced");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s rasterises on the CPU: a full-resolution frame takes seconds, so the viewport\n"
+            tooltip("%s rasterises on the CPU: a full-resolution frame takes seconds, so the viewport\n"
                               "renders at a scale that keeps a frame under %.0f ms. 'full' renders every pixel.",
                               v.softwareStart.c_str(), static_cast<double>(v.frameTargetMs));
         ImGui::SameLine();

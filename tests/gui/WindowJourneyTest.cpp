@@ -15,7 +15,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <imgui.h>
+#include <imgui_internal.h>
+
 #include "app/FrameWait.h"
+#include "tests/gui/HeadlessImGui.h"
+#include "ui/Widgets.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -71,6 +76,10 @@ TEST(WindowJourney, TheAbSplitAfterAReferenceKeepsTheRenderSizeAndTheReference) 
     EXPECT_TRUE(on["ab"]["ready"].get<bool>()) << on["ab"].dump();
     EXPECT_EQ(on["ab"]["unavailable"].get<std::string>(), "");
     EXPECT_EQ(on["ab"]["size"], on["render_size"]);
+    // The numbers with the reference's errors, read whole at 1600x900 (the line was cut).
+    const nlohmann::json& numbers = on["items"]["ab.numbers"];
+    EXPECT_LE(numbers["x"].get<float>() + numbers["w"].get<float>(), numbers["clip"][0].get<float>() + numbers["clip"][2].get<float>() + 0.5f)
+        << numbers.dump();
     // B is the reference, not A again: the two differ by the approximations.
     EXPECT_GT(on["ab"]["rms"].get<double>(), 1e-4);
 
@@ -259,4 +268,121 @@ TEST(WindowJourney, ARecordOrAPresetGivenAsASceneOpensAsWhatItIs) {
         }
         EXPECT_EQ(j["recent_scenes"], nlohmann::json::array()) << name << ": not a scene, not a recent scene";
     }
+}
+
+namespace {
+
+bool inside(const nlohmann::json& item) {
+    const float right = item["clip"][0].get<float>() + item["clip"][2].get<float>();
+    return item["x"].get<float>() >= item["clip"][0].get<float>() - 0.5f && item["x"].get<float>() + item["w"].get<float>() <= right + 0.5f;
+}
+
+// Drawn on show: its top inside its panel's visible part.
+bool onShow(const nlohmann::json& item) {
+    return item["y"].get<float>() >= item["clip"][1].get<float>() &&
+           item["y"].get<float>() < item["clip"][1].get<float>() + item["clip"][3].get<float>();
+}
+
+}  // namespace
+
+// Reset layout (View menu, clicked) puts back the default set of panels: the
+// Pareto panel, closed by default, stayed open.
+TEST(WindowJourney, ResetLayoutClosesTheParetoPanelAsByDefault) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path layout = writeFile("reset-pareto.json", R"({"open": {"Pareto": true}})");
+    const std::string args = "--scene spheres --set ao.enabled=false --size 1024x640 --layout " + layout.string();
+    auto names = [](const nlohmann::json& j) {
+        std::vector<std::string> n;
+        for (const auto& p : j["panels"]) n.push_back(p["name"].get<std::string>());
+        return n;
+    };
+    const nlohmann::json before = runWindow("reset-before", args, 3, "");
+    ASSERT_FALSE(before.is_null());
+    const auto open = names(before);
+    ASSERT_NE(std::find(open.begin(), open.end(), "Pareto"), open.end());
+    // View (62, 9), then its last item, Reset layout, at y 223 at this size.
+    const nlohmann::json after = runWindow("reset-after", args, 8, "2 click 62 9\n5 click 95 223\n");
+    ASSERT_FALSE(after.is_null());
+    const auto shown = names(after);
+    EXPECT_EQ(std::find(shown.begin(), shown.end(), "Pareto"), shown.end()) << after["panels"].dump();
+    EXPECT_EQ(shown.size(), open.size() - 1);
+}
+
+// At 1024x640 and 1600x900, with the Pareto panel open and a quick sweep
+// run (the knob pointed at in Parameters, against the current image, by
+// clicks): the names and numbers the issue found cut are whole. A knob's
+// name ends before its widget (they were cut: "material_", "directional_in_gb"),
+// an output's label before its 'side' button (".specul"), every scene button
+// lies inside the Scene panel (a row of them was cut: "fir"), the probe's
+// copy button inside its panel, and the sweep's plot has room to be read
+// (about 90x40 px at 1024x640). The screenshots were looked at too.
+TEST(WindowJourney, AtBothSizesNamesAndNumbersAreReadWholeInTheirPanels) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const fs::path layout = writeFile("whole-pareto.json", R"({"open": {"Pareto": true}})");
+    for (const std::string size : {"1024x640", "1600x900"}) {
+        const std::string args = "--scene default --set ao.enabled=false --resolution 1/4 --size " + size + " --layout " + layout.string();
+        // Where the normal_encoding widget is, then (pointed at) the sweep's controls.
+        const nlohmann::json first = runWindow("whole-where-" + size, args, 2, "");
+        ASSERT_FALSE(first.is_null()) << size;
+        auto at = [](const nlohmann::json& item, float dy = 0.0f) {
+            return std::to_string(static_cast<int>(item["x"].get<float>() + 10)) + " " +
+                   std::to_string(static_cast<int>(item["y"].get<float>() + item["h"].get<float>() / 2 + dy));
+        };
+        const std::string point = "2 move " + at(first["items"]["knob.gbuffer.normal_encoding"]) + "\n";
+        const nlohmann::json pointed = runWindow("whole-pointed-" + size, args, 5, point + "4 move 5 630\n");
+        ASSERT_FALSE(pointed.is_null()) << size;
+        const nlohmann::json& against = pointed["items"]["pareto.against"];
+        // The 'against' combo, its second choice (a row under it), then 'quick sweep'.
+        const std::string events = point + "4 move 5 630\n5 click " + at(against) + "\n8 click " + at(against, 36.0f) +
+                                   "\n11 click " + at(pointed["items"]["pareto.sweep"]) + "\n";
+        const nlohmann::json j = runWindow("whole-" + size, args, 40, events);
+        ASSERT_FALSE(j.is_null()) << size;
+        const nlohmann::json& items = j["items"];
+        int knobs = 0, outputs = 0, scenes = 0;
+        for (const auto& [name, item] : items.items()) {
+            if (name.rfind("knob_name.", 0) == 0 && onShow(item)) {
+                const nlohmann::json& widget = items["knob." + name.substr(10)];
+                EXPECT_LE(item["x"].get<float>() + item["w"].get<float>(), widget["x"].get<float>()) << size << " " << name;
+                ++knobs;
+            }
+            if (name.rfind("inspector_label.", 0) == 0 && onShow(item)) {
+                const nlohmann::json& side = items["inspector_side." + name.substr(16)];
+                EXPECT_LE(item["x"].get<float>() + item["w"].get<float>(), side["x"].get<float>()) << size << " " << name;
+                ++outputs;
+            }
+            if (name.rfind("scene.builtin.", 0) == 0 || name.rfind("scene.example.", 0) == 0) {
+                EXPECT_TRUE(inside(item)) << size << " " << name << " " << item.dump();
+                ++scenes;
+            }
+        }
+        EXPECT_GE(knobs, 4) << size;
+        EXPECT_GE(outputs, 4) << size;
+        EXPECT_GE(scenes, 5) << size;
+        ASSERT_TRUE(items.contains("pareto.plot")) << size << ": no sweep plotted";
+        EXPECT_GE(items["pareto.plot"]["h"].get<float>(), 140.0f) << size;
+        EXPECT_GE(items["pareto.plot"]["w"].get<float>(), 150.0f) << size;
+        EXPECT_TRUE(inside(items["pareto.loaded"])) << size << " " << items["pareto.loaded"].dump();
+        EXPECT_EQ(j["errors"], nlohmann::json::array()) << size;
+    }
+}
+
+// Every tooltip goes through ui::tooltip: however long its text, it wraps
+// and stays inside the window, here with the cursor at the bottom right
+// corner of a 1024x640 window (one long line ran off the window's edge).
+TEST(WindowJourney, ALongTooltipStaysInsideTheWindow) {
+    test::HeadlessImGui imgui;
+    ImGui::GetIO().DisplaySize = ImVec2(1024, 640);
+    std::string text;
+    for (int i = 0; i < 12; ++i) text += "A current | B CPU reference | A vs B: RMS 0.03382, FLIP 0.0723 | ";
+    for (int i = 0; i < 3; ++i) {
+        ImGui::GetIO().MousePos = ImVec2(1010, 630);
+        imgui.frame([&] { ui::tooltip("%s", text.c_str()); });
+    }
+    const ImGuiWindow* tip = ImGui::FindWindowByName("##Tooltip_00");
+    ASSERT_NE(tip, nullptr);
+    EXPECT_GT(tip->Size.y, 3.0f * ImGui::GetTextLineHeight()) << "not wrapped";
+    EXPECT_GE(tip->Pos.x, 0.0f);
+    EXPECT_GE(tip->Pos.y, 0.0f);
+    EXPECT_LE(tip->Pos.x + tip->Size.x, 1024.0f);
+    EXPECT_LE(tip->Pos.y + tip->Size.y, 640.0f);
 }
