@@ -45,7 +45,7 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
     }
     const ProbeState& p = state.probe;
     if (!p.result.inside) {
-        ImGui::TextDisabled("Hover over the viewport to read a pixel; click to pin it.");
+        wrappedColored(kDimColor, "Hover over the viewport to read a pixel; click to pin it.");
         ImGui::End();
         return;
     }

@@ -505,6 +505,7 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
         const std::string d = c.describe();
         if (c.significant) ImGui::TextColored(c.afterMs > c.beforeMs ? kErrorColor : kOkColor, "%s", d.c_str());
         else ImGui::TextDisabled("%s (%s)", d.c_str(), c.influenced ? "n.s." : "not reached");
+        noteItem("timings.cost_change." + c.pass);
         if (ImGui::IsItemHovered())
             tooltip("%s: %s%s", c.pass.c_str(), d.c_str(),
                               c.significant ? ""
@@ -529,6 +530,7 @@ void TimingsPanel::changeCostLines(const ChangeVerdict& v) {
         const std::string d = c.describe() + (c.significant ? "" : c.influenced ? " (n.s.)" : " (not reached)");
         ImGui::Indent(ImGui::GetFontSize());
         wrappedColored(c.significant ? (c.afterMs > c.beforeMs ? kErrorColor : kOkColor) : kDimColor, d);
+        noteItem("timings.cost_change." + c.pass);
         ImGui::Unindent(ImGui::GetFontSize());
     }
     ImGui::EndGroup();

@@ -386,3 +386,28 @@ TEST(WindowJourney, ALongTooltipStaysInsideTheWindow) {
     EXPECT_LE(tip->Pos.x + tip->Size.x, 1024.0f);
     EXPECT_LE(tip->Pos.y + tip->Size.y, 640.0f);
 }
+
+// At 1024x640 the cost of a change (lighting.frustum_cull true -> false,
+// measured by a click on *measure*) had its numbers in a table wider than the
+// timings panel, cut to a digit until scrolled sideways: now each pass's
+// before, after and change lie inside the panel's width.
+TEST(WindowJourney, AtTheMinimumSizeTheCostVerdictIsReadWithoutScrollingSideways) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const std::string args = "--scene spheres --resolution 1/4 --set ao.enabled=false --size 1024x640";
+    const nlohmann::json changed = runWindow("verdict-changed", args, 6, "2 set lighting.frustum_cull=false\n");
+    ASSERT_FALSE(changed.is_null());
+    ASSERT_TRUE(changed["items"].contains("timings.measure"));
+    const nlohmann::json& b = changed["items"]["timings.measure"];
+    const std::string at = std::to_string(static_cast<int>(b["x"].get<float>() + 10)) + " " +
+                           std::to_string(static_cast<int>(b["y"].get<float>() + b["h"].get<float>() / 2));
+    const nlohmann::json j = runWindow("verdict", args, 76, "2 set lighting.frustum_cull=false\n6 click " + at + "\n");
+    ASSERT_FALSE(j.is_null());
+    ASSERT_EQ(j["timings"]["cost"]["state"], "done") << j["timings"]["cost"].dump();
+    int passes = 0;
+    for (const auto& [name, item] : j["items"].items())
+        if (name.rfind("timings.cost_change.", 0) == 0) {
+            EXPECT_TRUE(inside(item)) << name << " " << item.dump();
+            ++passes;
+        }
+    EXPECT_GE(passes, 5);
+}
