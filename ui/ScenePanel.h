@@ -12,6 +12,10 @@ struct ScenePanel {
     char path[1024] = {};
     FileBrowser browser;
     void draw(const char* title, bool* open, UiState& state, RenderSession& session);
+
+private:
+    // The path field, open and browse, the recent files, then the built-in and example scenes.
+    void openSection(UiState& state, RenderSession& session, bool focusPath);
 };
 
 // Loads a scene into the session with knobs and camera as at start-up

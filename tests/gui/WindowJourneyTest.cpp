@@ -358,6 +358,8 @@ TEST(WindowJourney, AtBothSizesNamesAndNumbersAreReadWholeInTheirPanels) {
         EXPECT_GE(knobs, 4) << size;
         EXPECT_GE(outputs, 4) << size;
         EXPECT_GE(scenes, 5) << size;
+        // The path field and its open button stay on show above the wrapped buttons.
+        EXPECT_TRUE(onShow(items["scene.open"])) << size << " " << items["scene.open"].dump();
         ASSERT_TRUE(items.contains("pareto.plot")) << size << ": no sweep plotted";
         EXPECT_GE(items["pareto.plot"]["h"].get<float>(), 140.0f) << size;
         EXPECT_GE(items["pareto.plot"]["w"].get<float>(), 150.0f) << size;
