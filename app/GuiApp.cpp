@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include "app/CommandLine.h"
+#include "app/FrameWait.h"
 #include "app/RenderDocCapture.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
@@ -116,18 +117,48 @@ std::vector<std::string>& droppedFiles() {
     return files;
 }
 
+// Input and window events seen by the callbacks: the frame loop sleeps
+// (FrameWait) only when none came since its last frame.
+std::uint64_t& windowEvents() {
+    static std::uint64_t count = 0;
+    return count;
+}
+
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    ++windowEvents();
     if (action != GLFW_REPEAT) inputQueue().key(key, action == GLFW_PRESS, mods);
 }
-void onChar(GLFWwindow*, unsigned codepoint) { inputQueue().character(codepoint); }
+void onChar(GLFWwindow*, unsigned codepoint) {
+    ++windowEvents();
+    inputQueue().character(codepoint);
+}
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
+    ++windowEvents();
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
     inputQueue().button(button, action == GLFW_PRESS, static_cast<float>(x), static_cast<float>(y));
 }
 void onDrop(GLFWwindow*, int count, const char** paths) {
+    ++windowEvents();
     for (int i = 0; i < count; ++i) droppedFiles().emplace_back(paths[i]);
 }
+// The rest only count; ImGui's backend reads the cursor itself (1.86) and
+// gets the wheel, focus and enter/leave from its own callbacks, called on.
+void onCursorPos(GLFWwindow*, double, double) { ++windowEvents(); }
+void onScroll(GLFWwindow* window, double x, double y) {
+    ++windowEvents();
+    ImGui_ImplGlfw_ScrollCallback(window, x, y);
+}
+void onFocus(GLFWwindow* window, int focused) {
+    ++windowEvents();
+    ImGui_ImplGlfw_WindowFocusCallback(window, focused);
+}
+void onCursorEnter(GLFWwindow* window, int entered) {
+    ++windowEvents();
+    ImGui_ImplGlfw_CursorEnterCallback(window, entered);
+}
+void onWindowChange(GLFWwindow*, int, int) { ++windowEvents(); }
+void onRefresh(GLFWwindow*) { ++windowEvents(); }
 
 class ImGuiLayer {
 public:
@@ -151,6 +182,13 @@ public:
         glfwSetCharCallback(window, onChar);
         glfwSetMouseButtonCallback(window, onMouseButton);
         glfwSetDropCallback(window, onDrop);
+        glfwSetCursorPosCallback(window, onCursorPos);
+        glfwSetScrollCallback(window, onScroll);
+        glfwSetWindowFocusCallback(window, onFocus);
+        glfwSetCursorEnterCallback(window, onCursorEnter);
+        glfwSetWindowSizeCallback(window, onWindowChange);
+        glfwSetFramebufferSizeCallback(window, onWindowChange);
+        glfwSetWindowRefreshCallback(window, onRefresh);
         ImGui_ImplOpenGL3_Init("#version 450 core");
     }
     ~ImGuiLayer() {
@@ -355,6 +393,228 @@ void saveShownOutput(ui::ImageView& view, ui::UiState& state, RenderSession& ses
     }
 }
 
+// What the frame just drawn leaves to do, for FrameWait.
+FrameActivity activityAfterFrame(const ui::UiState& state, bool scripted, bool input, bool rendered) {
+    FrameActivity a;
+    a.scripted = scripted;
+    a.input = input;
+    a.rendered = rendered;
+    a.busy = state.timingCapture || state.animator.running() || state.measure.active() || state.sweep.running() ||
+             state.recordRun.running() || state.timingsPending || state.forceRender || state.requestScreenshot ||
+             state.requestRenderDocCapture || state.requestReference || state.requestReloadShaders ||
+             state.requestOpenScene || state.requestQuit || !droppedFiles().empty() ||
+             inputQueue().pending() > 0;  // fast input handed over a frame at a time (InputQueue)
+    a.background = state.referenceProgress >= 0.0;
+    const ImGuiIO& io = ImGui::GetIO();
+    for (bool down : io.MouseDown) a.held = a.held || down;
+    for (bool down : io.KeysDown) a.held = a.held || down;
+    a.typing = io.WantTextInput;
+    if (const ui::Message* toast = state.log.toast(state.time))
+        a.toastLeft = std::max(0.0, toast->time + ui::MessageLog::kToastSeconds - state.time);
+    return a;
+}
+
+// The window's state at start-up from the options (gui's command line): the
+// scene with the run's knobs, the folders, the view, the resolution, the A/B split.
+void setUpState(const GuiOptions& options, Scene scene, bool scripted, RenderSession& session, ui::UiState& state) {
+    state.presetsDir = options.presetsDir.empty() ? configDir() + "/presets" : options.presetsDir;
+    state.scenesDir = options.scenesDir;
+    state.exportDir = fs::absolute(options.exportDir.empty() ? exportDirDefault() : options.exportDir).string();
+    // The same rules as render (RunConfig), and again for every scene opened later.
+    state.run = options.run;
+    session.setScene(std::move(scene), state.run);
+    if (const Preset* p = state.run.preset()) {
+        state.log.info("preset '" + p->name + "': " + std::to_string(p->knobs.size()) + " knobs set", 0.0);
+        // The Presets panel shows it (with --set over it, the start-up values).
+        ui::rememberPreset(state, session, p->name);
+    }
+    for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, 0.0);
+    state.log.info("GL: " + session.glInfo().renderer + " | " + session.glInfo().version, 0.0);
+    state.log.info("shaders: " + session.shaders().root().string() +
+                       " (edit and press F5 to reload; DW_SHADER_DIR=FOLDER picks another folder)",
+                   0.0);
+    // Until the viewport panel reports its size, render at a guess of it.
+    state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
+    if (!options.view.empty()) {
+        if (!session.pipeline().outputs().find(options.view))
+            throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
+        state.viewport.show(options.view);
+    }
+    const ui::StartResolution startScale = ui::startResolution(options.resolution, gl::isCpuRasterizer(session.glInfo()), scripted);
+    state.viewport.resolution = startScale.scale;
+    state.viewport.autoScale = startScale.autoScale;
+    state.viewport.frameTargetMs = startScale.frameTargetMs;
+    if (startScale.softwareDefault) {
+        state.viewport.softwareStart = session.glInfo().renderer;
+        state.log.info("software OpenGL (" + session.glInfo().renderer +
+                           "): the viewport starts at auto resolution (1/4, then stepping to keep a frame under 150 ms); "
+                           "the toolbar's 'full' button or --resolution full renders every pixel",
+                       0.0);
+    }
+    state.timingCapture = options.record;
+    if (!options.ab.empty()) {
+        state.ab.enabled = true;
+        state.ab.source = options.ab == "pinned"      ? ui::AbSource::Pinned
+                          : options.ab == "reference" ? ui::AbSource::Reference
+                                                      : ui::AbSource::Preset;
+        if (state.ab.source == ui::AbSource::Preset) state.ab.preset = options.ab.substr(7);
+        state.ab.display = options.abDisplay == "difference" ? ui::AbDisplay::Difference
+                           : options.abDisplay == "flip"     ? ui::AbDisplay::Flip
+                                                             : ui::AbDisplay::Split;
+    }
+}
+
+// RenderDoc's in-app API when the process runs under it, its captures going to the export folder.
+RenderDocCapture attachRenderDoc(ui::UiState& state, const Window& window) {
+    RenderDocCapture renderdoc = RenderDocCapture::attach(false);
+    state.renderdocAvailable = renderdoc.available();
+    state.renderdocWhy = renderdoc.why();
+    if (renderdoc.available()) {
+        std::error_code ec;
+        fs::create_directories(state.exportDir, ec);
+        renderdoc.setPathTemplate(state.exportDir + "/workbench");
+        state.log.info("RenderDoc: F11 or Render > Capture frame saves the next frame to " + state.exportDir, 0.0);
+        if (!window.eglFailed().empty())
+            state.log.error("RenderDoc: no EGL context for the window (" + window.eglFailed() +
+                                "), so it runs on GLX, where RenderDoc 1.24 reports the G-buffer incomplete",
+                            0.0);
+    }
+    return renderdoc;
+}
+
+// A frame's scripted keys, text, drops and knob edits: keys and text go
+// through the input queue as a person's would.
+void feedScriptedInput(const ScriptedFrameInput& in, RenderSession& session, ui::UiState& state) {
+    for (const auto& [key, mods] : in.keys) {
+        for (const auto& [bit, modKey] : kModifierKeys)
+            if (mods & bit) inputQueue().key(modKey, true, mods);
+        inputQueue().key(key, true, mods);
+        inputQueue().key(key, false, mods);
+        for (const auto& [bit, modKey] : kModifierKeys)
+            if (mods & bit) inputQueue().key(modKey, false, 0);
+    }
+    for (const char32_t c : in.text) {
+        const ScriptedKey k = scriptedKeyForChar(c);
+        if (k.key >= 0) {
+            if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, true, k.mods);
+            inputQueue().key(k.key, true, k.mods);
+        }
+        inputQueue().character(static_cast<unsigned>(c));
+        if (k.key >= 0) {
+            inputQueue().key(k.key, false, k.mods);
+            if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, false, 0);
+        }
+    }
+    for (const auto& f : in.drops) droppedFiles().push_back(f);
+    for (const auto& a : in.sets) {
+        try {
+            session.knobs().applyAssignment(a);
+        } catch (const std::exception& e) {
+            state.log.error(e.what(), state.time, "set knob");
+        }
+    }
+}
+
+// The scripted pointer, over what the backend read from the (idle) window.
+struct ScriptedPointer {
+    std::optional<ImVec2> pos;
+    bool left = false, ctrl = false;
+    void apply(const ScriptedFrameInput& in) {
+        if (in.mouseX && in.mouseY) pos = ImVec2(*in.mouseX, *in.mouseY);
+        if (in.leftDown) left = *in.leftDown;
+        if (in.ctrl) ctrl = *in.ctrl;
+        if (!pos) return;
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = *pos;
+        io.MouseDown[ImGuiMouseButton_Left] = left;
+        io.MouseWheel += in.wheel;
+        io.KeyCtrl = io.KeyCtrl || ctrl;
+    }
+};
+
+// What the panels asked for this frame that needs the session: buffer saves, a shader reload.
+void carryOutRequests(ui::UiState& state, RenderSession& session) {
+    for (ui::ImageView* view : {static_cast<ui::ImageView*>(&state.viewport), static_cast<ui::ImageView*>(&state.side)})
+        if (!view->saveRequest.empty()) saveShownOutput(*view, state, session);
+    if (state.requestReloadShaders) {
+        state.requestReloadShaders = false;
+        const auto errors = session.shaders().reloadChanged();
+        ++state.shaderGeneration;
+        if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
+        for (const auto& e : errors)
+            state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");
+    }
+}
+
+// The UI drawn into the window; F12's screenshot (or --screenshot's after
+// the last scripted frame); RenderDoc's capture triggered and, after the
+// swap, noted. Returns the framebuffer's size.
+glm::ivec2 presentFrame(GLFWwindow* window, const GuiOptions& options, bool scripted, bool lastFrame, ui::UiState& state,
+                        RenderDocCapture& renderdoc, int& capturesSeen) {
+    ImGui::Render();
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window, &fbw, &fbh);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbw, fbh);
+    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
+        state.requestScreenshot = false;
+        const bool scriptedShot = lastFrame && !options.screenshot.empty();
+        std::error_code ec;
+        if (!scriptedShot) fs::create_directories(state.exportDir, ec);
+        const std::string path = scriptedShot ? options.screenshot
+                                              : state.exportDir + "/screenshot-" + std::to_string(state.frame) + ".png";
+        try {
+            writeImage(path, readWindowFramebuffer(fbw, fbh));
+            state.log.done("screenshot saved to " + fs::absolute(path).string(), state.time, "screenshot");
+            if (scripted) std::printf("wrote %s (%dx%d)\n", path.c_str(), fbw, fbh);
+        } catch (const std::exception& e) {
+            state.log.error(e.what(), state.time, "screenshot");
+            if (scripted) throw;
+        }
+    }
+    if (state.requestRenderDocCapture) {
+        state.requestRenderDocCapture = false;
+        if (renderdoc.available()) {
+            renderdoc.triggerCapture();
+            state.forceRender = true;  // the captured frame renders every pass, changed or not
+        }
+        else state.log.error("no RenderDoc capture: " + renderdoc.why(), state.time, "renderdoc");
+    }
+    glfwSwapBuffers(window);
+    // RenderDoc writes a triggered capture at the swap.
+    if (renderdoc.available() && renderdoc.captureCount() > capturesSeen) {
+        capturesSeen = renderdoc.captureCount();
+        state.renderdocCaptures.push_back(renderdoc.lastCapturePath());
+        state.log.done("RenderDoc capture saved to " + state.renderdocCaptures.back(), state.time, "renderdoc");
+        if (scripted) std::printf("wrote %s (RenderDoc capture)\n", state.renderdocCaptures.back().c_str());
+    }
+    return {fbw, fbh};
+}
+
+// At exit: the layout saved (not in scripted runs), --save-record measured, --dump-knobs written.
+void finishRun(const GuiOptions& options, bool scripted, const std::string& layoutPath, ui::WorkbenchUi& ui,
+               ui::UiState& state, RenderSession& session) {
+    if (!layoutPath.empty()) {
+        std::error_code ec;
+        fs::create_directories(configDir(), ec);
+        saveLayout(layoutPath, ui, state);
+    }
+    if (!options.saveRecord.empty()) {
+        // Measured here, the window's last state (one Save record... left running stops).
+        state.recordRun.cancel(state, session, "the window closed");
+        if (!state.recordRun.runNow(state, session, options.saveRecord))
+            throw Error(state.log.banner() ? state.log.banner()->text : "cannot save record " + options.saveRecord);
+        if (scripted) std::printf("wrote %s\n", options.saveRecord.c_str());
+    }
+    if (!options.dumpKnobs.empty()) {
+        session.writeKnobValues(options.dumpKnobs);
+        if (scripted) std::printf("wrote %s\n", options.dumpKnobs.c_str());
+    }
+}
+
 }  // namespace
 
 int runGui(const GuiOptions& options, Scene scene) {
@@ -372,68 +632,11 @@ int runGui(const GuiOptions& options, Scene scene) {
     {
         RenderSession session;
         ui::UiState state;
-        state.presetsDir = options.presetsDir.empty() ? configDir() + "/presets" : options.presetsDir;
-        state.scenesDir = options.scenesDir;
-        state.exportDir = fs::absolute(options.exportDir.empty() ? exportDirDefault() : options.exportDir).string();
-        // The same rules as render (RunConfig), and again for every scene opened later.
-        state.run = options.run;
-        session.setScene(std::move(scene), state.run);
-        if (const Preset* p = state.run.preset()) {
-            state.log.info("preset '" + p->name + "': " + std::to_string(p->knobs.size()) + " knobs set", 0.0);
-            // The Presets panel shows it (with --set over it, the start-up values).
-            ui::rememberPreset(state, session, p->name);
-        }
-        for (const auto& w : session.scene().warnings) state.log.info("warning: " + w, 0.0);
-        state.log.info("GL: " + session.glInfo().renderer + " | " + session.glInfo().version, 0.0);
-        state.log.info("shaders: " + session.shaders().root().string() +
-                           " (edit and press F5 to reload; DW_SHADER_DIR=FOLDER picks another folder)",
-                       0.0);
-        // Until the viewport panel reports its size, render at a guess of it.
-        state.wantedSize = {static_cast<int>(options.run.width * 0.58f), static_cast<int>(options.run.height * 0.6f)};
-
+        setUpState(options, std::move(scene), scripted, session, state);
         ui::ViewportComposer frame(session);
         ui::AovCostGuard aovGuard;
         state.nearestSampler = &frame.nearestSampler();
-        if (!options.view.empty()) {
-            if (!session.pipeline().outputs().find(options.view))
-                throw UsageError("--view: no output '" + options.view + "'; 'deferred-workbench list buffers' lists them");
-            state.viewport.show(options.view);
-        }
-        const ui::StartResolution startScale = ui::startResolution(options.resolution, gl::isCpuRasterizer(session.glInfo()), scripted);
-        state.viewport.resolution = startScale.scale;
-        state.viewport.autoScale = startScale.autoScale;
-        state.viewport.frameTargetMs = startScale.frameTargetMs;
-        if (startScale.softwareDefault) {
-            state.viewport.softwareStart = session.glInfo().renderer;
-            state.log.info("software OpenGL (" + session.glInfo().renderer +
-                               "): the viewport starts at auto resolution (1/4, then stepping to keep a frame under 150 ms); "
-                               "the toolbar's 'full' button or --resolution full renders every pixel",
-                           0.0);
-        }
-        state.timingCapture = options.record;
-        if (!options.ab.empty()) {
-            state.ab.enabled = true;
-            state.ab.source = options.ab == "pinned"      ? ui::AbSource::Pinned
-                              : options.ab == "reference" ? ui::AbSource::Reference
-                                                          : ui::AbSource::Preset;
-            if (state.ab.source == ui::AbSource::Preset) state.ab.preset = options.ab.substr(7);
-            state.ab.display = options.abDisplay == "difference" ? ui::AbDisplay::Difference
-                               : options.abDisplay == "flip"     ? ui::AbDisplay::Flip
-                                                                 : ui::AbDisplay::Split;
-        }
-        RenderDocCapture renderdoc = RenderDocCapture::attach(false);
-        state.renderdocAvailable = renderdoc.available();
-        state.renderdocWhy = renderdoc.why();
-        if (renderdoc.available()) {
-            std::error_code ec;
-            fs::create_directories(state.exportDir, ec);
-            renderdoc.setPathTemplate(state.exportDir + "/workbench");
-            state.log.info("RenderDoc: F11 or Render > Capture frame saves the next frame to " + state.exportDir, 0.0);
-            if (!window.eglFailed().empty())
-                state.log.error("RenderDoc: no EGL context for the window (" + window.eglFailed() +
-                                    "), so it runs on GLX, where RenderDoc 1.24 reports the G-buffer incomplete",
-                                0.0);
-        }
+        RenderDocCapture renderdoc = attachRenderDoc(state, window);
         int capturesSeen = 0;
         // A record that cannot be opened is a message on screen (Messages and the
         // banner) over the start-up scene, as File > Open record... has it.
@@ -443,63 +646,33 @@ int runGui(const GuiOptions& options, Scene scene) {
         ui::WorkbenchUi ui;
         if (!options.layoutIn.empty()) loadLayout(options.layoutIn, ui, state, true);
         else if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
-        std::optional<ImVec2> scriptMouse;
-        bool scriptLeft = false, scriptCtrl = false;
+        ScriptedPointer pointer;
         const auto start = std::chrono::steady_clock::now();
         auto last = start;
+        FrameWait frameWait;
+        double waitSeconds = 0.0;
+        std::uint64_t eventsSeen = windowEvents();
         while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
+            // Asleep until an event or the timeout when nothing needs a frame (FrameWait).
+            if (waitSeconds > 0.0) glfwWaitEventsTimeout(waitSeconds);
+            else glfwPollEvents();
             const auto t0 = std::chrono::steady_clock::now();
             const float dt = std::min(std::chrono::duration<float>(t0 - last).count(), 0.1f);
             last = t0;
             state.time = std::chrono::duration<double>(t0 - start).count();
             const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
-            if (in.resize) glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
-            glfwPollEvents();
-            // Scripted keys and text go through the queue as a person's would.
-            for (const auto& [key, mods] : in.keys) {
-                for (const auto& [bit, modKey] : kModifierKeys)
-                    if (mods & bit) inputQueue().key(modKey, true, mods);
-                inputQueue().key(key, true, mods);
-                inputQueue().key(key, false, mods);
-                for (const auto& [bit, modKey] : kModifierKeys)
-                    if (mods & bit) inputQueue().key(modKey, false, 0);
+            if (in.resize) {
+                glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
+                glfwPollEvents();
             }
-            for (const char32_t c : in.text) {
-                const ScriptedKey k = scriptedKeyForChar(c);
-                if (k.key >= 0) {
-                    if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, true, k.mods);
-                    inputQueue().key(k.key, true, k.mods);
-                }
-                inputQueue().character(static_cast<unsigned>(c));
-                if (k.key >= 0) {
-                    inputQueue().key(k.key, false, k.mods);
-                    if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, false, 0);
-                }
-            }
-            for (const auto& f : in.drops) droppedFiles().push_back(f);
-            for (const auto& a : in.sets) {
-                try {
-                    session.knobs().applyAssignment(a);
-                } catch (const std::exception& e) {
-                    state.log.error(e.what(), state.time, "set knob");
-                }
-            }
+            const std::uint64_t renderedBefore = state.framesRendered;
+            feedScriptedInput(in, session, state);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             state.keyPresses = inputQueue().feed(ImGui::GetIO());
             state.droppedFiles.swap(droppedFiles());
             droppedFiles().clear();
-            // Scripted input over what the backend read from the (idle) window.
-            if (in.mouseX && in.mouseY) scriptMouse = ImVec2(*in.mouseX, *in.mouseY);
-            if (in.leftDown) scriptLeft = *in.leftDown;
-            if (in.ctrl) scriptCtrl = *in.ctrl;
-            if (scriptMouse) {
-                ImGuiIO& io = ImGui::GetIO();
-                io.MousePos = *scriptMouse;
-                io.MouseDown[ImGuiMouseButton_Left] = scriptLeft;
-                io.MouseWheel += in.wheel;
-                io.KeyCtrl = io.KeyCtrl || scriptCtrl;
-            }
+            pointer.apply(in);
             ImGui::NewFrame();
             // An AOV state that would take minutes a frame is refused before it renders (issue 22).
             aovGuard.beforeFrame(state, session);
@@ -512,60 +685,9 @@ int runGui(const GuiOptions& options, Scene scene) {
             state.cameraPosition = session.camera().position;
             ui.draw(state, session, dt);
             aovGuard.draw(state, session);
-
-            for (ui::ImageView* view : {static_cast<ui::ImageView*>(&state.viewport), static_cast<ui::ImageView*>(&state.side)})
-                if (!view->saveRequest.empty()) saveShownOutput(*view, state, session);
-            if (state.requestReloadShaders) {
-                state.requestReloadShaders = false;
-                const auto errors = session.shaders().reloadChanged();
-                ++state.shaderGeneration;
-                if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
-                for (const auto& e : errors)
-                    state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");
-            }
-
-            ImGui::Render();
-            int fbw = 0, fbh = 0;
-            glfwGetFramebufferSize(window.get(), &fbw, &fbh);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, fbw, fbh);
-            glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
+            carryOutRequests(state, session);
             const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.run.frames;
-            if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
-                state.requestScreenshot = false;
-                const bool scriptedShot = lastFrame && !options.screenshot.empty();
-                std::error_code ec;
-                if (!scriptedShot) fs::create_directories(state.exportDir, ec);
-                const std::string path = scriptedShot ? options.screenshot
-                                                      : state.exportDir + "/screenshot-" + std::to_string(state.frame) + ".png";
-                try {
-                    writeImage(path, readWindowFramebuffer(fbw, fbh));
-                    state.log.done("screenshot saved to " + fs::absolute(path).string(), state.time, "screenshot");
-                    if (scripted) std::printf("wrote %s (%dx%d)\n", path.c_str(), fbw, fbh);
-                } catch (const std::exception& e) {
-                    state.log.error(e.what(), state.time, "screenshot");
-                    if (scripted) throw;
-                }
-            }
-            if (state.requestRenderDocCapture) {
-                state.requestRenderDocCapture = false;
-                if (renderdoc.available()) {
-                    renderdoc.triggerCapture();
-                    state.forceRender = true;  // the captured frame renders every pass, changed or not
-                }
-                else state.log.error("no RenderDoc capture: " + renderdoc.why(), state.time, "renderdoc");
-            }
-            glfwSwapBuffers(window.get());
-            // RenderDoc writes a triggered capture at the swap.
-            if (renderdoc.available() && renderdoc.captureCount() > capturesSeen) {
-                capturesSeen = renderdoc.captureCount();
-                state.renderdocCaptures.push_back(renderdoc.lastCapturePath());
-                state.log.done("RenderDoc capture saved to " + state.renderdocCaptures.back(), state.time, "renderdoc");
-                if (scripted) std::printf("wrote %s (RenderDoc capture)\n", state.renderdocCaptures.back().c_str());
-            }
+            const glm::ivec2 fb = presentFrame(window.get(), options, scripted, lastFrame, state, renderdoc, capturesSeen);
             state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
             if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
             if (lastFrame && !options.layoutOut.empty()) {
@@ -574,30 +696,18 @@ int runGui(const GuiOptions& options, Scene scene) {
                     writeImage(options.layoutOut + ".a.png", frame.abImages().imageA());
                     writeImage(options.layoutOut + ".b.png", frame.abImages().imageB());
                 }
-                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
+                writeLayoutReport(options.layoutOut, ui, state, fb.x, fb.y, session);
                 std::printf("wrote %s\n", options.layoutOut.c_str());
             }
             ++state.frame;
             if (lastFrame) break;
+            waitSeconds = frameWait.timeout(activityAfterFrame(state, scripted, windowEvents() != eventsSeen,
+                                                               state.framesRendered != renderedBefore));
+            eventsSeen = windowEvents();
             if (!scripted && !options.layoutOut.empty() && (glfwWindowShouldClose(window.get()) || state.requestQuit))
-                writeLayoutReport(options.layoutOut, ui, state, fbw, fbh, session);
+                writeLayoutReport(options.layoutOut, ui, state, fb.x, fb.y, session);
         }
-        if (!layoutPath.empty()) {
-            std::error_code ec;
-            fs::create_directories(configDir(), ec);
-            saveLayout(layoutPath, ui, state);
-        }
-        if (!options.saveRecord.empty()) {
-            // Measured here, the window's last state (one Save record... left running stops).
-            state.recordRun.cancel(state, session, "the window closed");
-            if (!state.recordRun.runNow(state, session, options.saveRecord))
-                throw Error(state.log.banner() ? state.log.banner()->text : "cannot save record " + options.saveRecord);
-            if (scripted) std::printf("wrote %s\n", options.saveRecord.c_str());
-        }
-        if (!options.dumpKnobs.empty()) {
-            session.writeKnobValues(options.dumpKnobs);
-            if (scripted) std::printf("wrote %s\n", options.dumpKnobs.c_str());
-        }
+        finishRun(options, scripted, layoutPath, ui, state, session);
     }
     return 0;
 }

@@ -49,16 +49,17 @@ std::string msText(const std::vector<double>& ms) {
 
 }  // namespace
 
-void abControls(UiState& state) {
+float abControls(UiState& state) {
     AbView& ab = state.ab;
     if (ImGui::Checkbox("A/B", &ab.enabled)) ++ab.generation;
     noteItem("ab.toggle");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A/B split (b): the current settings left of the divider (A), and right of it (B) a pinned\n"
+        tooltip("A/B split (b): the current settings left of the divider (A), and right of it (B) a pinned\n"
                           "snapshot, a preset over the current settings, or the CPU reference; drag the divider");
-    if (!ab.enabled) return;
+    if (!ab.enabled) return 0.0f;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.5f);
+    // As wide as its longest choice ("CPU referer" was cut).
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("CPU reference").x + ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().FramePadding.x);
     if (ImGui::BeginCombo("##ab_source", sourceName(ab.source))) {
         for (AbSource s : {AbSource::Pinned, AbSource::Preset, AbSource::Reference})
             if (ImGui::Selectable(sourceName(s), ab.source == s)) {
@@ -92,13 +93,10 @@ void abControls(UiState& state) {
     ImGui::SameLine();
     if (ImGui::SmallButton("Pin")) ab.pinRequest = true;
     noteItem("ab.pin");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the current image becomes B (p)");
+    if (ImGui::IsItemHovered()) tooltip("the current image becomes B (p)");
     // The numbers, in parts (B, A against B, against the reference, the GPU
-    // times) laid out on as many lines as the panel's width asks for: one
-    // where a usual line fits, else two. The count follows the width alone,
-    // never the text, so the image below (and the render size) does not jump
-    // when the numbers come in; what does not fit is cut with "..." and shown
-    // whole in a tooltip.
+    // times); a part wider than the panel is cut with "..." and shown whole
+    // in a tooltip.
     std::vector<std::string> parts;
     bool error = false;
     if (!ab.ready) {
@@ -123,18 +121,19 @@ void abControls(UiState& state) {
         }
         parts.push_back(gpu);
     }
+    // Packed on as many lines as the panel's width asks for (they take room
+    // from the image box, not the render: abControls' caller). At 1600x900 a
+    // single line with the reference's errors was cut, and its tooltip ran
+    // off the window.
     const float avail = ImGui::GetContentRegionAvail().x;
-    const char* usual = "A current | B preset SSAO1 | A vs B: RMS 0.00000, FLIP 0.0000 | GPU A 000.0 ms, B 000.0 ms, "
-                        "A-B +00.00 ms [+00.00, +00.00]";
-    const int lines = ImGui::CalcTextSize(usual).x <= avail ? 1 : 2;
-    std::vector<std::string> text(static_cast<size_t>(lines));
-    size_t line = 0;
+    std::vector<std::string> text(1);
     for (const std::string& part : parts) {
-        std::string& cur = text[line];
+        std::string& cur = text.back();
         const std::string joined = cur.empty() ? part : cur + " | " + part;
-        if (cur.empty() || ImGui::CalcTextSize(joined.c_str()).x <= avail || line + 1 == text.size()) cur = joined;
-        else text[++line] = part;
+        if (cur.empty() || ImGui::CalcTextSize(joined.c_str()).x <= avail) cur = joined;
+        else text.push_back(part);
     }
+    const float top = ImGui::GetCursorPosY();
     ImGui::BeginGroup();
     for (const std::string& l : text) {
         if (error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
@@ -144,6 +143,7 @@ void abControls(UiState& state) {
     }
     ImGui::EndGroup();
     noteItem("ab.numbers");
+    return ImGui::GetCursorPosY() - top;
 }
 
 bool drawAbSplit(UiState& state, ImVec2 boxMin, ImVec2 boxSize, const ImagePlacement& placed, bool hovered) {

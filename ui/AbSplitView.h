@@ -11,8 +11,11 @@
 
 namespace dw::ui {
 
-// The two rows, at the cursor (above the image: they take room from the render).
-void abControls(UiState& state);
+// The two rows, at the cursor. Returns the height in pixels the numbers took
+// (0 while the split is off): they take room from the image box, not from the
+// render size, so turning the split on keeps the frame (and a CPU reference
+// of it) as it was.
+float abControls(UiState& state);
 // Over the image placed at `placed` in the box: B's part, the divider and its
 // drag. Returns true while the divider has the mouse (the caller's camera and
 // probe leave it alone). `hovered`: the viewport box is hovered.

@@ -88,7 +88,7 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
             s.channel = static_cast<C>(c);
             changed = true;
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("channel shown (kept for %s)", view.output.c_str());
+        if (ImGui::IsItemHovered()) tooltip("channel shown (kept for %s)", view.output.c_str());
         ImGui::SameLine();
         int m = static_cast<int>(s.mapping) + 1;
         const M resolved = BufferView::resolveMapping(output->decl.kind, s);
@@ -98,7 +98,7 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
             changed = true;
         }
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("mapping to colours; auto is %s for this output", kMappings[static_cast<int>(resolved) + 1]);
+            tooltip("mapping to colours; auto is %s for this output", kMappings[static_cast<int>(resolved) + 1]);
         if (resolved == M::NonFinite) {
             // NaN magenta, +Inf red, -Inf blue over a dim picture of the rest; counted from a read-back.
             ImGui::SameLine();
@@ -142,10 +142,10 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
         view.zoom = 1.0f;
         view.center = glm::vec2(0.5f);
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the whole image in the view (Ctrl+wheel zooms at the cursor, Ctrl+drag pans)");
+    if (ImGui::IsItemHovered()) tooltip("the whole image in the view (Ctrl+wheel zooms at the cursor, Ctrl+drag pans)");
     ImGui::SameLine();
     if (ImGui::SmallButton("1:1") && view.fitScale > 0.0f) view.zoom = 1.0f / view.fitScale;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("one image pixel per screen pixel");
+    if (ImGui::IsItemHovered()) tooltip("one image pixel per screen pixel");
     ImGui::SameLine();
     ImGui::TextDisabled("x%.1f", view.zoom);
     // The shown output at its own resolution (F12 saves the whole window).
@@ -153,12 +153,12 @@ bool imageViewControls(ImageView& view, const PublishedOutput* output, const Sho
     if (ImGui::SmallButton("save EXR")) view.saveRequest = "exr";
     if (!prefix.empty()) noteItem(prefix + ".save_exr");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s's raw values at its own resolution to an OpenEXR file in the export folder", view.output.c_str());
+        tooltip("%s's raw values at its own resolution to an OpenEXR file in the export folder", view.output.c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("save PNG")) view.saveRequest = "png";
     if (!prefix.empty()) noteItem(prefix + ".save_png");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s as shown (channel, mapping, range) at its own resolution to a PNG in the export folder",
+        tooltip("%s as shown (channel, mapping, range) at its own resolution to a PNG in the export folder",
                           view.output.c_str());
     return changed;
 }

@@ -3,12 +3,94 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "renderer/inspect/OutputReadback.h"
 #include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
+
+namespace {
+
+// A pass's row: its tree node, GPU ms, and what it did (under the name when narrow). True when open.
+bool passRow(const PassRecord& rec, PassTimer& timer, bool narrow) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const bool openNode = ImGui::TreeNodeEx(rec.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth,
+                                            "%s %s", rec.ran ? "+" : "-", rec.name.c_str());
+    if (ImGui::IsItemHovered()) tooltip("%s: %s", rec.name.c_str(), rec.ran ? "ran" : ("skipped: " + rec.reason).c_str());
+    if (narrow) {
+        ImGui::Indent(ImGui::GetFontSize());
+        wrappedColored(kDimColor, rec.ran ? (rec.stats.empty() ? "ran" : rec.stats) : "skipped: " + rec.reason);
+        ImGui::Unindent(ImGui::GetFontSize());
+    }
+    ImGui::TableNextColumn();
+    if (rec.ran) ImGui::Text("%.3f", timer.gpuStats(rec.name, 60).median);
+    else ImGui::TextDisabled("-");
+    if (!narrow) {
+        ImGui::TableNextColumn();
+        if (rec.ran) ImGui::TextWrapped("%s", rec.stats.empty() ? "ran" : rec.stats.c_str());
+        else wrappedColored(kDimColor, "skipped: " + rec.reason);
+    }
+    return openNode;
+}
+
+// "color  584x279", "(not this frame)" when it was not produced this frame; "" for an unallocated output.
+std::string outputFacts(const PublishedOutput& o) {
+    char t[160] = "";
+    if (o.texture && resourceKind(o) == ResourceKind::Texture2D)
+        std::snprintf(t, sizeof(t), "%s  %dx%d%s", toString(o.decl.kind), o.texture->width(o.level), o.texture->height(o.level),
+                      o.producedThisFrame ? "" : "  (not this frame)");
+    else if (o.allocated())
+        std::snprintf(t, sizeof(t), "%s  %s%s", toString(o.decl.kind), describe(o.desc, o.desc.width, o.desc.height).c_str(),
+                      o.producedThisFrame ? "" : "  (not this frame)");
+    return t;
+}
+
+// An output's row: its name (a click shows it in the viewport), 'side', and its kind and size.
+void outputRow(const PublishedOutput& o, UiState& state, bool narrow) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::PushID(o.decl.name.c_str());
+    const bool selected = state.viewport.output == o.decl.name && state.viewport.mode == DisplayMode::Deferred;
+    ImGui::Indent(8.0f);
+    // In a narrow column the part that tells outputs apart (".albedo",
+    // not "gbuffer" eight times); the whole name is the tooltip.
+    std::string label = o.decl.name;
+    if (const size_t dot = label.find('.');
+        dot != std::string::npos && ImGui::CalcTextSize(label.c_str()).x > ImGui::GetContentRegionAvail().x)
+        label = label.substr(dot);
+    if (ImGui::Selectable((label + "###" + o.decl.name).c_str(), selected, ImGuiSelectableFlags_AllowItemOverlap)) {
+        state.viewport.show(o.decl.name);
+        state.viewport.mode = DisplayMode::Deferred;
+    }
+    noteItem("inspector." + o.decl.name);
+    {
+        // Where the label's text lies (the selectable spans the row): the tests check it ends before 'side'.
+        const ImVec2 at(ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y);
+        const ImVec2 text = ImGui::CalcTextSize(label.c_str());
+        noteRect("inspector_label." + o.decl.name, at, ImVec2(at.x + text.x, at.y + text.y));
+    }
+    const std::string facts = outputFacts(o);
+    if (ImGui::IsItemHovered())
+        tooltip("%s%s%s%s%s", o.decl.name.c_str(), o.decl.description.empty() ? "" : ": ", o.decl.description.c_str(),
+                facts.empty() ? "" : "\n", facts.c_str());
+    ImGui::Unindent(8.0f);
+    ImGui::TableNextColumn();
+    if (ImGui::SmallButton("side")) {
+        state.side.show(o.decl.name);
+        state.panels.sideView = true;
+    }
+    noteItem("inspector_side." + o.decl.name);
+    if (!narrow) {
+        ImGui::TableNextColumn();
+        if (!facts.empty()) ImGui::TextDisabled("%s", facts.c_str());
+    }
+    ImGui::PopID();
+}
+
+}  // namespace
 
 void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     if (!beginPanel(title, open)) {
@@ -22,59 +104,21 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
     std::snprintf(head, sizeof(head), "frame %llu, %dx%d. Click an output to view it in the viewport; 'side' shows it beside.",
                   static_cast<unsigned long long>(state.report.frameIndex), state.renderSize.x, state.renderSize.y);
     wrappedColored(kDimColor, head);
-    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_Resizable)) {
+    // Narrow (the right column at 1024x640): two columns, what a pass did
+    // under its name and an output's kind in its tooltip, so the names keep
+    // their room (they were cut: ".specul", ".emissi").
+    const bool narrow = ImGui::GetContentRegionAvail().x < 360.0f;
+    if (ImGui::BeginTable("passes", narrow ? 2 : 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_Resizable)) {
         ImGui::TableSetupColumn("pass / output", ImGuiTableColumnFlags_WidthStretch, 0.5f);
         ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, 56.0f);
-        ImGui::TableSetupColumn("what happened", ImGuiTableColumnFlags_WidthStretch, 0.5f);
+        if (!narrow) ImGui::TableSetupColumn("what happened", ImGuiTableColumnFlags_WidthStretch, 0.5f);
         ImGui::TableHeadersRow();
         for (const auto& rec : state.report.passes) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            const bool openNode = ImGui::TreeNodeEx(rec.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanFullWidth,
-                                                    "%s %s", rec.ran ? "+" : "-", rec.name.c_str());
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", rec.name.c_str(), rec.ran ? "ran" : ("skipped: " + rec.reason).c_str());
-            ImGui::TableNextColumn();
-            if (rec.ran) ImGui::Text("%.3f", timer.gpuStats(rec.name, 60).median);
-            else ImGui::TextDisabled("-");
-            ImGui::TableNextColumn();
-            if (rec.ran) ImGui::TextWrapped("%s", rec.stats.empty() ? "ran" : rec.stats.c_str());
-            else wrappedColored(kDimColor, "skipped: " + rec.reason);
+            const bool openNode = passRow(rec, timer, narrow);
             for (const auto& o : outputs.all()) {
                 if (o.pass != rec.name) continue;
                 listed.push_back(o.decl.name);
-                if (!openNode) continue;
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::PushID(o.decl.name.c_str());
-                const bool selected = state.viewport.output == o.decl.name && state.viewport.mode == DisplayMode::Deferred;
-                ImGui::Indent(8.0f);
-                // In a narrow column the part that tells outputs apart (".albedo",
-                // not "gbuffer" eight times); the whole name is the tooltip.
-                std::string label = o.decl.name;
-                if (const size_t dot = label.find('.');
-                    dot != std::string::npos && ImGui::CalcTextSize(label.c_str()).x > ImGui::GetContentRegionAvail().x)
-                    label = label.substr(dot);
-                if (ImGui::Selectable((label + "###" + o.decl.name).c_str(), selected, ImGuiSelectableFlags_AllowItemOverlap)) {
-                    state.viewport.show(o.decl.name);
-                    state.viewport.mode = DisplayMode::Deferred;
-                }
-                noteItem("inspector." + o.decl.name);
-                if (ImGui::IsItemHovered())
-                    ImGui::SetTooltip("%s%s%s", o.decl.name.c_str(), o.decl.description.empty() ? "" : ": ", o.decl.description.c_str());
-                ImGui::Unindent(8.0f);
-                ImGui::TableNextColumn();
-                if (ImGui::SmallButton("side")) {
-                    state.side.show(o.decl.name);
-                    state.panels.sideView = true;
-                }
-                ImGui::TableNextColumn();
-                if (o.texture && resourceKind(o) == ResourceKind::Texture2D)
-                    ImGui::TextDisabled("%s  %dx%d%s", toString(o.decl.kind), o.texture->width(o.level), o.texture->height(o.level),
-                                        o.producedThisFrame ? "" : "  (not this frame)");
-                else if (o.allocated())
-                    ImGui::TextDisabled("%s  %s%s", toString(o.decl.kind), describe(o.desc, o.desc.width, o.desc.height).c_str(),
-                                        o.producedThisFrame ? "" : "  (not this frame)");
-                ImGui::PopID();
+                if (openNode) outputRow(o, state, narrow);
             }
             if (openNode) ImGui::TreePop();
         }

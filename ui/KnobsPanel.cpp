@@ -19,8 +19,14 @@ bool knobWidget(KnobRegistry& knobs, int id) {
     ImGui::TableNextColumn();
     ImGui::AlignTextToFramePadding();
     const std::string shortName = s.name.substr(s.name.find('.') + 1);
-    if (knobs.isDefault(id)) ImGui::TextUnformatted(shortName.c_str());
-    else ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "%s", shortName.c_str());
+    // The whole name, on more lines where the column is narrow (it was cut:
+    // "material_", "directional_in_gb"); the tooltip names the knob in full.
+    const ImVec4 color = knobs.isDefault(id) ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : ImVec4(1.0f, 0.85f, 0.45f, 1.0f);
+    ImGui::BeginGroup();
+    for (const std::string& line : breakName(shortName, ImGui::GetContentRegionAvail().x))
+        ImGui::TextColored(color, "%s", line.c_str());
+    ImGui::EndGroup();
+    noteItem("knob_name." + s.name);
     const bool labelHovered = ImGui::IsItemHovered();
     ImGui::TableNextColumn();
     ImGui::SetNextItemWidth(-1.0f);
@@ -115,8 +121,8 @@ void KnobsPanel::draw(const char* title, bool* open, KnobRegistry& knobs) {
         if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
         ImGui::PushID(pass.c_str());
         if (ImGui::BeginTable("knobs", 3, ImGuiTableFlags_SizingStretchProp)) {
-            ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 0.38f);
-            ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 0.62f);
+            ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 0.48f);
+            ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 0.52f);
             ImGui::TableSetupColumn("reset", ImGuiTableColumnFlags_WidthFixed, 42.0f);
             for (int id : ids) knobWidget(knobs, id);
             ImGui::EndTable();

@@ -118,7 +118,7 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             ImGui::SameLine();
             if (ImGui::Selectable(l.name.c_str(), state.selectedLight == static_cast<int>(i), ImGuiSelectableFlags_SpanAllColumns))
                 state.selectedLight = state.selectedLight == static_cast<int>(i) ? -1 : static_cast<int>(i);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s): click to edit", l.name.c_str(), toString(l.type));
+            if (ImGui::IsItemHovered()) tooltip("%s (%s): click to edit", l.name.c_str(), toString(l.type));
             if (scrollToSelected && state.selectedLight == static_cast<int>(i)) {
                 ImGui::SetScrollHereY(0.5f);
                 scrollToSelected = false;

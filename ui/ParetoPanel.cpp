@@ -254,14 +254,18 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         }
         noteItem("pareto.reference_cancel");
     } else {
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
+        // As wide as the knob's whole name where the panel allows ("gbuffer.normal_enco" was cut).
+        const float knobWidth = ImGui::CalcTextSize(sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str()).x +
+                                ImGui::GetFrameHeight() + spacing;
+        ImGui::SetNextItemWidth(std::min(std::max(knobWidth, ImGui::GetFontSize() * 12.0f), ImGui::GetContentRegionAvail().x));
         if (ImGui::BeginCombo("##sweep_knob", sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str())) {
             for (const KnobSpec& s : session.knobs().specs())
                 if (s.tradeoff && ImGui::Selectable(s.name.c_str(), s.name == sweepKnob)) sweepKnob = s.name;
             ImGui::EndCombo();
         }
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("the speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here");
+            tooltip("%s%sthe speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here",
+                    sweepKnob.c_str(), sweepKnob.empty() ? "" : ": ");
         sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + spacing);
         ImGui::BeginDisabled(sweepKnob.empty());
         if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
@@ -275,7 +279,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         int choice = againstCurrent ? 1 : 0;
         if (ImGui::Combo("##sweep_against", &choice, against, 2)) againstCurrent = choice == 1;
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("what each swept value's FLIP is measured against: the CPU reference of this view "
+            tooltip("what each swept value's FLIP is measured against: the CPU reference of this view "
                               "(ray-traced, F9; traced first if none is shown), or the current settings' image "
                               "(no reference needed; the current value then scores 0)");
         noteItem("pareto.against");
@@ -294,14 +298,14 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             noteItem("pareto.sweep_cancel");
             if (!askedCost.empty()) {
                 wrappedColored(kErrorColor, askedCostHeadline);
-                if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", askedCost.c_str());
+                if (ImGui::IsItemHovered()) tooltip("%s", askedCost.c_str());
                 wrappedColored(kDimColor, askedCostDetail);
             }
         } else if (!askedReference.empty()) {
             if (ImGui::Button("trace reference"))
                 traceReferenceThenSweep(askedKnob, state, askedConfirmed);
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("traces the CPU reference of this view in the background (as F9 does, with its "
+                tooltip("traces the CPU reference of this view in the background (as F9 does, with its "
                                   "progress and cancel), then sweeps against it");
             noteItem("pareto.trace_reference");
             sameLineIfFits(ImGui::CalcTextSize("use current image").x + spacing);
@@ -310,7 +314,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
                 startSweep(askedKnob, state, session, askedConfirmed);
             }
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("measures each value against the image on show: the current value scores 0");
+                tooltip("measures each value against the image on show: the current value scores 0");
             noteItem("pareto.against_current");
             sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
             if (ImGui::Button("cancel##reference")) {
@@ -333,10 +337,9 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         sweepShown = true;
     }
     if (!loadedPath.empty()) {
-        // Cut to the panel's width (the whole text as a tooltip): a narrow panel keeps its plot.
-        ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-        clippedText(loadedPath, ImGui::GetContentRegionAvail().x);
-        ImGui::PopStyleColor();
+        // Wrapped, whole (the knob's name was cut: "quick sweep of gbuff..."); the plot keeps its own room below.
+        wrappedColored(kDimColor, loadedPath);
+        noteItem("pareto.loaded");
     }
     ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 4.0f, 60.0f));
     const bool enter = ImGui::InputText("##csv", path, sizeof(path), ImGuiInputTextFlags_EnterReturnsTrue);
@@ -360,7 +363,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
             if (ImGui::Selectable(gs[i].c_str(), static_cast<int>(i) == group)) group = static_cast<int>(i);
         ImGui::EndCombo();
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", groupLabel);
+    if (ImGui::IsItemHovered()) tooltip("%s", groupLabel);
     noteItem("pareto.group");
     const float labelWidth = ImGui::CalcTextSize(groupLabel).x;
     if (ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x >=
@@ -414,14 +417,15 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         std::snprintf(whole, sizeof(whole), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
         const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
         if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
-            ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
-            clippedText("across: GPU frame ms (median); up: " + metric, ImGui::GetContentRegionAvail().x);
-            ImGui::PopStyleColor();
+            wrappedColored(kDimColor, "across: GPU frame ms (median); up: " + metric);
         }
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
-    const ImVec2 size(std::max(avail.x, 80.0f), std::max(avail.y, 60.0f));
+    // The plot keeps room to be read (it was about 90x40 px at 1024x640, its
+    // labels over each other): in a short panel it is taller than what is
+    // left, and the panel scrolls down to it (never sideways).
+    const ImVec2 size(std::max(avail.x, 80.0f), std::max(avail.y, ImGui::GetFontSize() * 11.0f));
     ImGui::InvisibleButton("##pareto_plot", size);
     noteItem("pareto.plot");
     const bool plotHovered = ImGui::IsItemHovered();
@@ -461,6 +465,20 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     // (mouse: the cursor, read above)
     hovered = -1;
     float best = 64.0f;
+    std::vector<ImVec4> labelRects;  // (x0, y0, x1, y1) of the point labels drawn: none is drawn over another
+    auto drawLabel = [&](ImVec2 p, const std::string& text) {
+        const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
+        // Right of the point, or left of it where the plot ends first.
+        float x = p.x + 6.0f;
+        if (x + ts.x > right) x = p.x - 6.0f - ts.x;
+        const float y = p.y - ts.y - 2.0f;
+        if (x < left || y < top) return;
+        const ImVec4 r(x, y, x + ts.x, y + ts.y);
+        for (const ImVec4& o : labelRects)
+            if (r.x < o.z && o.x < r.z && r.y < o.w && o.y < r.w) return;  // the tooltip names it
+        labelRects.push_back(r);
+        dl->AddText(ImVec2(x, y), IM_COL32(255, 200, 130, 255), text.c_str());
+    };
     for (int i : rows) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(i)];
         const ImVec2 p(sx(r.frameGpuMs), sy(r.error));
@@ -468,7 +486,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         if (finite(r.frameGpuMsLo) && finite(r.frameGpuMsHi)) dl->AddLine(ImVec2(sx(r.frameGpuMsLo), p.y), ImVec2(sx(r.frameGpuMsHi), p.y), bar);
         if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, sy(r.errorLo)), ImVec2(p.x, sy(r.errorHi)), bar);
         dl->AddCircleFilled(p, r.pareto ? 5.0f : 3.5f, r.pareto ? IM_COL32(255, 170, 60, 255) : IM_COL32(110, 160, 230, 255));
-        if (r.pareto) dl->AddText(ImVec2(p.x + 6, p.y - ImGui::GetFontSize() - 2), IM_COL32(255, 200, 130, 255), label(table, r).c_str());
+        if (r.pareto) drawLabel(p, label(table, r));
         const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
         if (plotHovered && d2 < best) best = d2, hovered = i;
         noteRect("pareto.point." + std::to_string(r.point), ImVec2(p.x - 1, p.y - 1), ImVec2(p.x + 1, p.y + 1));
@@ -476,7 +494,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     if (hovered >= 0) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
         dl->AddCircle(ImVec2(sx(r.frameGpuMs), sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
-        ImGui::SetTooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
+        tooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
                           label(table, r).c_str(), r.metric.c_str(), r.error, r.errorLo, r.errorHi, r.frameGpuMs,
                           r.frameGpuMsLo, r.frameGpuMsHi, r.pareto ? "\non the Pareto front" : "");
         if (clicked) apply(hovered, state, session);

@@ -87,7 +87,7 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("save as").x - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
     const bool enter = inputTextEnter("##name", "preset name", saveName, sizeof(saveName));
     noteItem("presets.name");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("name of the preset file; Enter saves");
+    if (ImGui::IsItemHovered()) tooltip("name of the preset file; Enter saves");
     ImGui::SameLine();
     std::error_code ec;
     if ((ImGui::Button("save as") || enter) && saveName[0]) {
@@ -95,14 +95,14 @@ void PresetsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
         savePreset(state, session, (fs::path(state.presetsDir) / (std::string(saveName) + ".json")).string(), saveName);
     }
     ImGui::Separator();
-    ImGui::TextDisabled("built in (a click loads)");
+    wrappedColored(kDimColor, "built in (a click loads)");
     for (const auto& p : builtinPresets()) {
         if (ImGui::Selectable(p.name.c_str())) applyPreset(state, session, p);
         noteItem("presets.builtin." + p.name);
         if (ImGui::IsItemHovered()) {
             std::string tip = p.description.empty() ? "" : p.description + "\n\n";
             for (const auto& [k, v] : p.knobs) tip += k + " = " + v + "\n";
-            ImGui::SetTooltip("%s", tip.c_str());
+            tooltip("%s", tip.c_str());
         }
     }
     ImGui::Separator();

@@ -45,12 +45,13 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
     }
     const ProbeState& p = state.probe;
     if (!p.result.inside) {
-        ImGui::TextDisabled("Hover over the viewport to read a pixel; click to pin it.");
+        wrappedColored(kDimColor, "Hover over the viewport to read a pixel; click to pin it.");
         ImGui::End();
         return;
     }
     ImGui::Text("pixel (%d, %d)%s", p.result.x, p.result.y, p.pinned ? "  [pinned, Esc to release]" : "");
-    ImGui::SameLine();
+    // Wrapped rather than cut in a narrow panel (beside the Pareto panel: "cop").
+    sameLineIfFits(ImGui::CalcTextSize("copy").x + 2.0f * ImGui::GetStyle().FramePadding.x);
     // Every value below as tab-separated lines (this frame's, drawn last frame).
     if (ImGui::SmallButton("copy")) {
         ImGui::SetClipboardText(copyText.c_str());
@@ -62,6 +63,9 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
     // Magnifier of the viewport image around the pixel (nearest filtering).
     const ShownImage& img = state.viewportImage;
     if (img.texture && img.width > 0) {
+        // The label keeps its room ("zoom" was cut beside a full-width slider).
+        ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("zoom").x -
+                                             ImGui::GetStyle().ItemInnerSpacing.x, 40.0f));
         ImGui::SliderInt("zoom", &zoomPixels, 5, 63);
         const float half = zoomPixels * 0.5f;
         const float cx = p.uv.x * img.width, cy = p.uv.y * img.height;

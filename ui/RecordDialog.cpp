@@ -151,7 +151,7 @@ void RecordDialog::progressBar(UiState& state, RenderSession& session) {
     std::snprintf(text, sizeof text, "record %d/%d frames", m.rendered(), m.total());
     ImGui::ProgressBar(static_cast<float>(m.progress()), ImVec2(170, 0), text);
     noteItem("record.progress");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("measuring %s (File > Save record...)", m.path().c_str());
+    if (ImGui::IsItemHovered()) tooltip("measuring %s (File > Save record...)", m.path().c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("cancel##record")) m.cancel(state, session);
     noteItem("record.cancel");

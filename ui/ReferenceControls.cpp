@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "renderer/passes/ReferencePass.h"
+#include "ui/Widgets.h"
 
 namespace dw::ui {
 
@@ -40,7 +41,7 @@ void ReferenceControls::start(UiState& state, RenderSession& session) {
 void ReferenceControls::menuItems(UiState& state) {
     if (ImGui::MenuItem("CPU reference of this view", "F9", false, !job_.running())) state.requestReference = true;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("ray-traced ground truth (Embree, double precision) of this view, in the background; then "
+        tooltip("ray-traced ground truth (Embree, double precision) of this view, in the background; then "
                           "reference.lbuffer, reference.final, reference.ao and compare.error in the inspector");
     if (job_.running() && ImGui::MenuItem("Cancel the CPU reference")) job_.cancel();
     ImGui::SetNextItemWidth(120);

@@ -123,7 +123,7 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
     };
     ImGui::Checkbox("record", &state.timingCapture);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("render every frame and time it (the resolution scale holds still);\n"
+        tooltip("render every frame and time it (the resolution scale holds still);\n"
                           "off: a frame is rendered only when something it shows changed");
     sameLineIfFits(checkboxWidth("pause"));
     bool paused = timer.paused();
@@ -133,10 +133,10 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
     ImGui::SliderInt("frames", &window, 30, static_cast<int>(PassTimer::kHistory));
     sameLineIfFits(checkboxWidth("stacked"));
     ImGui::Checkbox("stacked", &stacked);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("areas stacked up to the frame total; off: one line per pass");
+    if (ImGui::IsItemHovered()) tooltip("areas stacked up to the frame total; off: one line per pass");
     sameLineIfFits(checkboxWidth("log"));
     ImGui::Checkbox("log", &logScale);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("logarithmic y axis (passes drawn as lines)");
+    if (ImGui::IsItemHovered()) tooltip("logarithmic y axis (passes drawn as lines)");
     sameLineIfFits(checkboxWidth("own CPU"));
     bool isolate = timer.isolateCpu();
     if (ImGui::Checkbox("own CPU", &isolate)) {
@@ -146,7 +146,7 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
         if (state.measure.active()) state.measure.cancel(session.knobs(), "cancelled: own CPU timing was switched");
     }
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Adds a CPU column: the time a pass spends issuing its own work.\n"
+        tooltip("Adds a CPU column: the time a pass spends issuing its own work.\n"
                           "Before each pass the frame waits (on a GL fence) for the GPU to finish\n"
                           "the passes before it, so no pass is charged for waiting on another.\n"
                           "Frames get slower while this is on; the history starts over.");
@@ -155,7 +155,7 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
     sameLineIfFits(120.0f + style.ItemSpacing.x + exportW);
     ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - exportW - style.ItemSpacing.x, 120.0f, 360.0f));
     ImGui::InputText("##csv", csvPath, sizeof(csvPath));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("CSV file; a bare name goes to %s", state.exportDir.c_str());
+    if (ImGui::IsItemHovered()) tooltip("CSV file; a bare name goes to %s", state.exportDir.c_str());
     sameLineIfFits(exportW);
     if (ImGui::Button("export CSV")) {
         // A bare name goes to the export folder, not wherever the app was started.
@@ -386,14 +386,14 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
                 if (show) hidden.erase(name);
                 else hidden.insert(name);
             }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("show %s in the graph", name.c_str());
+            if (ImGui::IsItemHovered()) tooltip("show %s in the graph", name.c_str());
         }
         ImGui::TableNextColumn();
         ImGui::ColorButton("##c", ImGui::ColorConvertU32ToFloat4(color), ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
         ImGui::SameLine();
         if (pass) {
             if (ImGui::Selectable(name.c_str(), solo == name)) solo = solo == name ? std::string() : name;
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip(solo == name ? "click: show every pass again" : "click: show only %s", name.c_str());
+            if (ImGui::IsItemHovered()) tooltip(solo == name ? "click: show every pass again" : "click: show only %s", name.c_str());
         } else {
             ImGui::TextUnformatted("whole frame");
         }
@@ -421,7 +421,7 @@ void TimingsPanel::changeBar(UiState& state, RenderSession& session) {
     ChangeMeasurement& m = state.measure;
     const bool shown = m.state() != ChangeMeasurement::State::Idle;
     if (!change && !shown) {
-        ImGui::TextDisabled("cost of a change: change a knob, then measure it here");
+        wrappedColored(kDimColor, "cost of a change: change a knob, then measure it here");
         return;
     }
     const std::string what = shown ? m.change().what : change->what;
@@ -446,7 +446,7 @@ void TimingsPanel::changeBar(UiState& state, RenderSession& session) {
     if (ImGui::Button(measured ? "measure again" : "measure")) startMeasure(state, session);
     noteItem("timings.measure");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("renders the frames before and after the change in turns (B B A A ...), one a UI frame,\n"
+        tooltip("renders the frames before and after the change in turns (B B A A ...), one a UI frame,\n"
                           "the first frame of each turn left out, and compares each pass's GPU times");
     sameLineIfFits(90.0f + style.ItemInnerSpacing.x + ImGui::CalcTextSize("frames per side").x);
     ImGui::SetNextItemWidth(90.0f);
@@ -471,7 +471,16 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
     noteItem("timings.method");
     std::vector<std::string> names;
     for (const auto& p : v.passes) names.push_back(p.pass);
-    // Every row shown (the panel scrolls), the table scrolls sideways in a narrow panel.
+    const float changeWidth = ImGui::CalcTextSize("+0000.0 ms (+000%, 99.7% CI +000% to +000%) (n.s.)").x;
+    const float tableWidth = nameColumnWidth(names, 8.0f) + numberColumnWidth("before") + numberColumnWidth("after") +
+                             changeWidth + 8.0f * style.CellPadding.x;
+    if (ImGui::GetContentRegionAvail().x < tableWidth) {
+        // Too narrow for the table's columns: the numbers were cut to a digit
+        // until scrolled sideways. Each pass on its own lines instead, wrapped.
+        changeCostLines(v);
+        return;
+    }
+    // Every row shown (the panel scrolls).
     const float rowH = ImGui::GetTextLineHeight() + style.CellPadding.y * 2.0f;
     const float tableH = rowH * static_cast<float>(v.passes.size() + 1) + style.ScrollbarSize + 6.0f;
     if (!ImGui::BeginTable("cost", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_BordersInnerV,
@@ -480,7 +489,7 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
     ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameColumnWidth(names, 8.0f));
     ImGui::TableSetupColumn("before", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("before"));
     ImGui::TableSetupColumn("after", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("after"));
-    ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("+0000.0 ms (+000%, 99.7% CI +000% to +000%) (n.s.)").x);
+    ImGui::TableSetupColumn("change", ImGuiTableColumnFlags_WidthFixed, changeWidth);
     ImGui::TableHeadersRow();
     for (const PassVerdict& c : v.passes) {
         ImGui::TableNextRow();
@@ -496,13 +505,35 @@ void TimingsPanel::changeCost(UiState& state, RenderSession& session) {
         const std::string d = c.describe();
         if (c.significant) ImGui::TextColored(c.afterMs > c.beforeMs ? kErrorColor : kOkColor, "%s", d.c_str());
         else ImGui::TextDisabled("%s (%s)", d.c_str(), c.influenced ? "n.s." : "not reached");
+        noteItem("timings.cost_change." + c.pass);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s: %s%s", c.pass.c_str(), d.c_str(),
+            tooltip("%s: %s%s", c.pass.c_str(), d.c_str(),
                               c.significant ? ""
                               : c.influenced ? ", not significant at the adjusted level"
                                              : ",\nnot flagged: it reads no changed knob and nothing a pass reading one writes");
     }
     ImGui::EndTable();
+    noteItem("timings.cost_table");
+}
+
+void TimingsPanel::changeCostLines(const ChangeVerdict& v) {
+    ImGui::BeginGroup();
+    for (const PassVerdict& c : v.passes) {
+        const std::string name = c.pass == PassTimer::kFrameSeries ? "whole frame" : c.pass;
+        auto ms = [](bool have, double value) {
+            char t[32];
+            std::snprintf(t, sizeof(t), "%.3f", value);
+            return have ? std::string(t) : std::string("-");
+        };
+        ImGui::TextWrapped("%s: %s -> %s ms", name.c_str(), ms(c.beforeFrames > 0, c.beforeMs).c_str(),
+                           ms(c.afterFrames > 0, c.afterMs).c_str());
+        const std::string d = c.describe() + (c.significant ? "" : c.influenced ? " (n.s.)" : " (not reached)");
+        ImGui::Indent(ImGui::GetFontSize());
+        wrappedColored(c.significant ? (c.afterMs > c.beforeMs ? kErrorColor : kOkColor) : kDimColor, d);
+        noteItem("timings.cost_change." + c.pass);
+        ImGui::Unindent(ImGui::GetFontSize());
+    }
+    ImGui::EndGroup();
     noteItem("timings.cost_table");
 }
 

@@ -49,6 +49,7 @@ private:
     void table(PassTimer& timer, const std::vector<std::string>& passes);
     void changeBar(UiState& state, RenderSession& session);   // the change, measure / progress and cancel
     void changeCost(UiState& state, RenderSession& session);  // the verdict
+    void changeCostLines(const ChangeVerdict& v);              // the verdict in a panel too narrow for its table
 };
 
 // A stable, distinct colour per pass name.

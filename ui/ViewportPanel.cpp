@@ -71,7 +71,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
     if (ImGui::Combo("##volumes", &filter, filters, 3)) v.volumes = static_cast<VolumeFilter>(filter);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
+        tooltip("which light volumes: those containing the probed pixel's surface (hover or pin),\n"
                           "every light's, or the one selected in the Lights panel");
     sameLineIfFits(checkboxWidth("axes"));
     ImGui::Checkbox("axes", &v.overlay.axes);
@@ -87,7 +87,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
     if (ImGui::Combo("##resolution", &scale, scales, 4)) v.resolution = static_cast<ResolutionScale>(scale);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
+        tooltip("render resolution against the panel: full, half, quarter, or auto, which steps the scale\n"
                           "to keep the GPU frame under %.0f ms (frozen while timings are recorded)",
                           static_cast<double>(v.frameTargetMs));
     if (autoScale) {
@@ -99,7 +99,7 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
         ImGui::SameLine();
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "software GL: reduced");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s rasterises on the CPU: a full-resolution frame takes seconds, so the viewport\n"
+            tooltip("%s rasterises on the CPU: a full-resolution frame takes seconds, so the viewport\n"
                               "renders at a scale that keeps a frame under %.0f ms. 'full' renders every pixel.",
                               v.softwareStart.c_str(), static_cast<double>(v.frameTargetMs));
         ImGui::SameLine();
@@ -113,12 +113,15 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // and so change the render size again.
     sameLineIfFits(ImGui::CalcTextSize("| orbit camera | 00000x00000 (x0.00) | recording").x);
     ImGui::TextDisabled("%s", info);
-    // The A/B split's controls and numbers (AbSplitView).
-    if (v.mode == DisplayMode::Deferred) abControls(state);
+    // The A/B split's controls and numbers (AbSplitView). The numbers' lines
+    // take room from the image box, not from the render: turning the split on
+    // once shrank the frame by a few rows, which withdrew a CPU reference just
+    // traced and failed the frame that asked for it.
+    const float abNumbers = v.mode == DisplayMode::Deferred ? abControls(state) : 0.0f;
     // The texture viewer's controls for what is shown, at the top of the view.
     const PublishedOutput* shownOutput =
         v.mode == DisplayMode::Deferred && v.output != "final" ? session.pipeline().outputs().find(v.output) : nullptr;
-    const float belowToolbar = ImGui::GetContentRegionAvail().y;
+    const float belowToolbar = ImGui::GetContentRegionAvail().y + abNumbers;
     imageViewControls(v, shownOutput, state.viewportImage, "viewport");
     // The render size is the room below the toolbar and one row of the
     // viewer's controls (a buffer's combos are taller than the final image's

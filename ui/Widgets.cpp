@@ -2,6 +2,8 @@
 
 #include <imgui_internal.h>
 
+#include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 
 namespace dw::ui {
@@ -95,7 +97,44 @@ void clippedText(const std::string& text, float width) {
     std::string cut = text;
     while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) cut.pop_back();
     ImGui::TextUnformatted((cut + "...").c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+    if (ImGui::IsItemHovered()) tooltip("%s", text.c_str());
+}
+
+void tooltip(const char* format, ...) {
+    char text[4096];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(text, sizeof(text), format, args);
+    va_end(args);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float margin = 2.0f * (style.WindowPadding.x + style.DisplaySafeAreaPadding.x) + 8.0f;
+    const float wrap = std::max(ImGui::GetFontSize() * 10.0f,
+                                std::min(ImGui::GetFontSize() * 45.0f, ImGui::GetIO().DisplaySize.x - margin));
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(wrap);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+std::vector<std::string> breakName(const std::string& name, float width) {
+    std::vector<std::string> lines;
+    std::string rest = name;
+    while (!rest.empty() && ImGui::CalcTextSize(rest.c_str()).x > width) {
+        // The longest head that fits, ending after a '_' or '.' if one does.
+        size_t fits = 1, breakAt = 0;
+        while (fits < rest.size() && ImGui::CalcTextSize(rest.substr(0, fits + 1).c_str()).x <= width) ++fits;
+        for (size_t i = fits; i > 0; --i)
+            if (rest[i - 1] == '_' || rest[i - 1] == '.') {
+                breakAt = i;
+                break;
+            }
+        const size_t take = breakAt ? breakAt : fits;
+        lines.push_back(rest.substr(0, take));
+        rest = rest.substr(take);
+    }
+    if (!rest.empty()) lines.push_back(rest);
+    return lines;
 }
 
 }  // namespace dw::ui

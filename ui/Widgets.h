@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace dw::ui {
 
@@ -24,6 +25,15 @@ bool inputTextEnter(const char* label, const char* hint, char* buffer, size_t si
 void sameLineIfFits(float width);
 // Text cut to `width` px with "..." and the whole text as a tooltip when cut.
 void clippedText(const std::string& text, float width);
+// ImGui::SetTooltip that stays inside the window: the text wraps at 45 em or
+// the window's width less a margin, whichever is less (ImGui keeps a tooltip
+// inside the display only when it is narrower than the display; one long line,
+// such as the A/B numbers whole, ran off the window's edge).
+void tooltip(const char* format, ...) IM_FMTARGS(1);
+// `name` in lines of at most `width` px, broken after '_' or '.' where it has
+// to be (then anywhere), so a long knob or output name is read whole in a
+// narrow column instead of cut ("directional_in_gb").
+std::vector<std::string> breakName(const std::string& name, float width);
 // A number in a table cell, right-aligned, with `decimals` fixed decimals.
 void numberCell(double value, int decimals = 3);
 // Text that wraps, in a colour, for errors and reasons.

@@ -63,7 +63,12 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::MenuItem("Presets", nullptr, &p.presets);
         ImGui::MenuItem("Messages", nullptr, &p.messages);
         ImGui::Separator();
-        if (ImGui::MenuItem("Reset layout")) state.resetLayout = true;
+        // The default layout and the default set of open panels (the Pareto
+        // panel, closed by default, stayed open).
+        if (ImGui::MenuItem("Reset layout")) {
+            state.resetLayout = true;
+            state.panels = PanelFlags{};
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Render")) {
@@ -83,13 +88,13 @@ void WorkbenchUi::menuBar(UiState& state, RenderSession& session) {
         ImGui::Separator();
         if (ImGui::MenuItem("Reload changed shaders", "F5")) state.requestReloadShaders = true;
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("from %s (DW_SHADER_DIR=FOLDER picks another folder at start)", session.shaders().root().c_str());
+            tooltip("from %s (DW_SHADER_DIR=FOLDER picks another folder at start)", session.shaders().root().c_str());
         ImGui::MenuItem(("shader folder: " + session.shaders().root().string()).c_str(), nullptr, false, false);
         if (ImGui::MenuItem("Capture frame (RenderDoc)", "F11")) state.requestRenderDocCapture = true;
         ImGui::Separator();
         reference_.menuItems(state);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
+            tooltip("%s", state.renderdocAvailable ? "the next frame to a RenderDoc capture in the export folder"
                                                              : state.renderdocWhy.c_str());
         ImGui::EndMenu();
     }

@@ -38,7 +38,20 @@ std::vector<OutputDecl> ReferencePass::outputs() const {
     };
 }
 
-std::string ReferencePass::skipReason(const KnobRegistry&, const Scene&) const { return images_ ? std::string() : stale_; }
+std::string ReferencePass::skipReason(const KnobRegistry&, const Scene&) const {
+    if (!images_) return stale_;
+    // A reference of another size than the frame (the window resized since)
+    // has nothing to show: skipped, so a frame asking for its outputs says
+    // why instead of failing on an output never allocated.
+    if (frameWidth_ > 0 && (images_->lbuffer.width != frameWidth_ || images_->lbuffer.height != frameHeight_))
+        return sizeMismatch(frameWidth_, frameHeight_);
+    return {};
+}
+
+std::string ReferencePass::sizeMismatch(int width, int height) const {
+    return "the reference is " + std::to_string(images_->lbuffer.width) + "x" + std::to_string(images_->lbuffer.height) +
+           ", the frame " + std::to_string(width) + "x" + std::to_string(height) + ": render the reference again";
+}
 
 void ReferencePass::setReference(std::shared_ptr<const Images> images, std::string staleReason) {
     images_ = std::move(images);
@@ -52,7 +65,9 @@ float ReferencePass::relativeError(float l, float ref) {
     return static_cast<float>(std::abs(static_cast<double>(l) - ref) / (static_cast<double>(ref) + 1e-3));
 }
 
-void ReferencePass::resize(int, int, OutputRegistry& outputs) {
+void ReferencePass::resize(int width, int height, OutputRegistry& outputs) {
+    frameWidth_ = width;
+    frameHeight_ = height;
     if (uploaded_) bindAll(outputs);
 }
 
@@ -81,9 +96,7 @@ void ReferencePass::execute(FrameContext& ctx) {
     if (!images_) return;
     const int w = ctx.camera.viewport.x, h = ctx.camera.viewport.y;
     if (images_->lbuffer.width != w || images_->lbuffer.height != h) {
-        stats_ = "the reference is " + std::to_string(images_->lbuffer.width) + "x" +
-                 std::to_string(images_->lbuffer.height) + ", the frame " + std::to_string(w) + "x" + std::to_string(h) +
-                 ": render the reference again";
+        stats_ = sizeMismatch(w, h);
         return;
     }
     if (!uploaded_) {

@@ -7,7 +7,8 @@
 // when a reference arrives). The reference itself is rendered on the CPU in
 // the background (renderer/reference/ReferenceJob) and handed over with
 // setReference; this pass only shows it and measures the frame against it.
-// Skipped while there is no reference of the current view.
+// Skipped while there is no reference of the current view, or while the
+// reference's size is not the frame's (after a resize, until withdrawn).
 #include <memory>
 
 #include "renderer/graph/RenderPass.h"
@@ -50,6 +51,8 @@ public:
 
 private:
     void upload();
+    // "the reference is WxH, the frame wxh: render the reference again"
+    std::string sizeMismatch(int width, int height) const;
     void bindAll(OutputRegistry& outputs);
     std::shared_ptr<const Images> images_;
     std::string stale_ = "no CPU reference of this view yet (Render > CPU reference of this view)";
@@ -59,6 +62,7 @@ private:
     std::uint64_t measuredGeneration_ = ~0ull;
     glm::mat4 measuredView_{0.0f};
     std::string stats_;
+    int frameWidth_ = 0, frameHeight_ = 0;  // the pipeline's size (resize), 0 before the first
 };
 
 }  // namespace dw
