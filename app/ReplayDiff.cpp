@@ -8,6 +8,7 @@
 #include "app/ReplayReport.h"
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"
 #include "renderer/record/ShaderFiles.h"
@@ -116,7 +117,9 @@ void reportInputs(const ExperimentRecord& a, const ExperimentRecord& b, const st
     reportKnobs(a, b, nameA, nameB, inputs);
     reportFields("seed", a.seeds, b.seeds, inputs);
     // The other inputs as the records write them (the same JSON either way).
-    const nlohmann::json ja = nlohmann::json::parse(a.json()), jb = nlohmann::json::parse(b.json());
+    JsonGuardOptions exact;
+    exact.numbersAreFloats = false;  // records hold 64-bit counts and hashes
+    const nlohmann::json ja = parseJson(a.json(), nameA, exact), jb = parseJson(b.json(), nameB, exact);
     for (const char* key : {"camera", "camera_path", "grid"})
         reportObject(key, ja.contains(key) ? ja[key] : nlohmann::json(), jb.contains(key) ? jb[key] : nlohmann::json(),
                      inputs);

@@ -10,7 +10,7 @@
 #include "renderer/scene/BuiltinScenes.h"
 #include "ui/PresetsPanel.h"
 #include "ui/RecordDialog.h"
-#include "ui/SceneFileKind.h"
+#include "renderer/scene/SceneFileKind.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {

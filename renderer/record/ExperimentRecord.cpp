@@ -665,7 +665,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
                                    {"height", imageHeight}, {"channels", imageChannels}}},
                         {"metrics", m}};
     }
-    const auto [inputsSha, resultsSha] = contentSha256(nlohmann::json::parse(j.dump()));
+    const auto [inputsSha, resultsSha] = contentSha256(nlohmann::json(j));  // the same values, unordered, as a reader parses them
     j["record_sha256"] = {{"inputs", inputsSha}, {"results", resultsSha}};
     return j.dump(2) + "\n";
 }

@@ -38,9 +38,13 @@ SceneFileKind classifySceneJson(const nlohmann::json& j) {
         if (*format == kPresetFormat) return SceneFileKind::Preset;
         return SceneFileKind::Scene;
     }
+    // A preset written before "format" existed: knobs and nothing of a scene's
+    // own (a scene JSON with a stray "knobs" key stays a scene; its loader warns).
     const auto knobs = j.find("knobs");
-    if (format == j.end() && knobs != j.end() && knobs->is_object()) return SceneFileKind::Preset;
-    return SceneFileKind::Scene;
+    if (knobs == j.end() || !knobs->is_object()) return SceneFileKind::Scene;
+    for (const char* sceneKey : {"objects", "lights", "lighting", "materials", "sky", "ambient", "background", "settings"})
+        if (j.contains(sceneKey)) return SceneFileKind::Scene;
+    return SceneFileKind::Preset;
 }
 
 // The parsed file, or null when it is not a readable JSON file.

@@ -108,12 +108,15 @@ TEST(BoundedRead, RecordsAndPresetsAreToldFromScenes) {
         "scene": "fire", "camera": {"pos": [0, 1, 2]}, "knobs": {"ssao.samples": 8}})");
     const fs::path bare = writeBytes("bare-preset.json", R"({"knobs": {"ssao.samples": 8}})");
     const fs::path scene = writeBytes("scene.json", R"({"name": "s", "objects": []})");
+    // A scene with a stray "knobs" key is still a scene (its loader warns about the key).
+    const fs::path sceneWithKnobs = writeBytes("scene-knobs.json", R"({"lights": [], "knobs": {"ssao.samples": 8}})");
     const fs::path other = writeBytes("other.json", R"({"format": "something else", "knobs": {}})");
     const fs::path broken = writeBytes("broken.json", R"({"format": )");
     EXPECT_EQ(classifySceneFile(record.string()), SceneFileKind::Record);
     EXPECT_EQ(classifySceneFile(preset.string()), SceneFileKind::Preset);
     EXPECT_EQ(classifySceneFile(bare.string()), SceneFileKind::Preset);
     EXPECT_EQ(classifySceneFile(scene.string()), SceneFileKind::Scene);
+    EXPECT_EQ(classifySceneFile(sceneWithKnobs.string()), SceneFileKind::Scene);
     EXPECT_EQ(classifySceneFile(other.string()), SceneFileKind::Scene);
     EXPECT_EQ(classifySceneFile(broken.string()), SceneFileKind::Scene);  // the scene loader says what is wrong
     EXPECT_EQ(classifySceneFile((dir() / "missing.json").string()), SceneFileKind::Scene);
