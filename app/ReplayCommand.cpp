@@ -32,7 +32,7 @@
 #include "app/ReplayReport.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/bench/TradeoffStudy.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/ShaderSource.h"

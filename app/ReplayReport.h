@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneFiles.h"

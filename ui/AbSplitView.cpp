@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/knobs/Preset.h"
 #include "ui/Widgets.h"

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 
 namespace dw::ui {
 

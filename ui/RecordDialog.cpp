@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "renderer/OptionLimits.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "ui/ScenePanel.h"
 #include "ui/Widgets.h"

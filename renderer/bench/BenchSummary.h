@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "renderer/bench/BenchResults.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/graph/PassTimer.h"
 
 namespace dw {

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "renderer/Error.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/metrics/ImageComparison.h"
 #include "renderer/metrics/MaskedMetrics.h"
 #include "renderer/metrics/ShadowEdgeMask.h"

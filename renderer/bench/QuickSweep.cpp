@@ -7,7 +7,7 @@
 #include <random>
 
 #include "renderer/Error.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/metrics/ImageComparison.h"
 
 namespace dw {

@@ -14,7 +14,7 @@
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/ImageError.h"
 #include "renderer/metrics/ShadowEdgeMask.h"

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/graph/PassTimer.h"
 #include "renderer/knobs/KnobRegistry.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/scene/Image.h"
+#include "renderer/io/Image.h"
 
 namespace dw {
 

@@ -14,7 +14,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/OptionLimits.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/graph/RenamedOutputs.h"

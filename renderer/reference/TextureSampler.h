@@ -8,7 +8,7 @@
 // texture coordinates and the GPU upload have it.
 #include <glm/glm.hpp>
 
-#include "renderer/scene/Image.h"
+#include "renderer/io/Image.h"
 #include "renderer/scene/Material.h"
 
 namespace dw::reference {

@@ -8,7 +8,7 @@
 #include "renderer/io/ImageIO.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/FlameParticles.h"
-#include "renderer/scene/Image.h"
+#include "renderer/io/Image.h"
 #include "renderer/scene/Light.h"
 #include "renderer/scene/Material.h"
 #include "renderer/scene/Mesh.h"

@@ -9,7 +9,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchSummary.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 
 using namespace dw;
 

@@ -1,8 +1,8 @@
-// The bootstrap interval of a difference of medians (renderer/bench/Bootstrap),
+// The bootstrap interval of a difference of medians (renderer/metrics/Bootstrap),
 // which the workbench's A/B view states for the two sides' GPU frame times.
 #include <gtest/gtest.h>
 
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 
 using namespace dw;
 

@@ -10,7 +10,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/bench/BenchSummary.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneContent.h"
 #include "renderer/record/SceneFiles.h"

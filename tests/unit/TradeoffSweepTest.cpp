@@ -7,7 +7,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/GridExclusion.h"
 #include "renderer/bench/ImageError.h"

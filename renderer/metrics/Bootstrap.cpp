@@ -1,4 +1,4 @@
-#include "renderer/bench/Bootstrap.h"
+#include "renderer/metrics/Bootstrap.h"
 
 #include <algorithm>
 #include <cmath>
