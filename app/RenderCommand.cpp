@@ -127,7 +127,7 @@ int runRenderCommand(int argc, char** argv) {
     session.setScene(std::move(loaded), run);
     for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     session.resize(run.width, run.height);
-    const bool needsReference = reference::isReferenceOutput(session, buffer);
+    const bool needsReference = session.isReferenceOutput(buffer);
     if (!needsReference && referenceOptionGiven)
         throw UsageError("render: --ao-rays, --seed, --threads, --no-cache and --cache-dir are the CPU reference's "
                          "options, for reference.lbuffer, reference.final, reference.ao and compare.error; --buffer " +
@@ -159,7 +159,8 @@ int runRenderCommand(int argc, char** argv) {
                 [&](reference::ReferenceProgress* progress) {
                     reference::ViewReferenceOptions o = referenceOptions;
                     o.progress = progress;
-                    traced = reference::traceViewReference(session, run.width, run.height, o, lastFrame);
+                    traced = reference::traceViewReference(session.scene(), session.knobs(), session.camera(), run.width,
+                                                        run.height, o, lastFrame);
                 },
                 run.width, run.height, false);
         } catch (const reference::ReferenceCancelled&) {
@@ -171,7 +172,7 @@ int runRenderCommand(int argc, char** argv) {
                     traced.model.rayTracedAo ? traced.model.aoRays : 0, referenceOptions.seed,
                     traced.cached ? "from the cache, rendered earlier in" : "rendered in", s.seconds, s.threads,
                     traced.key.c_str());
-        reference::showViewReference(session, &traced.images);
+        session.showReference(&traced.images);
     }
     FrameRequest request;
     request.outputs = {buffer};

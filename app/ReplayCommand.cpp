@@ -127,8 +127,9 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
         o.seed = static_cast<int>(old.referenceSeed);
         o.cacheWarning = [](const std::string& why) { std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str()); };
         const std::uint64_t lastFrame = session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
-        traced = reference::traceViewReference(session, run.width, run.height, o, lastFrame);
-        reference::showViewReference(session, &traced->images);
+        traced = reference::traceViewReference(session.scene(), session.knobs(), session.camera(), run.width,
+                                                        run.height, o, lastFrame);
+        session.showReference(&traced->images);
     }
     FrameRequest request;
     request.outputs = {old.buffer};

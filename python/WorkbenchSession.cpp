@@ -219,7 +219,7 @@ void WorkbenchSession::checkRender(const std::string& buffer, int frames, int wa
 }
 
 bool WorkbenchSession::isReferenceOutput(const std::string& buffer) const {
-    return reference::isReferenceOutput(*session_, buffer);
+    return session_->isReferenceOutput(buffer);
 }
 
 std::uint64_t WorkbenchSession::lastFrameOf(int frames, int warmup) const {
@@ -235,8 +235,8 @@ BufferImage WorkbenchSession::render(const std::string& buffer, int frames, int 
     // The reference pass shows the reference handed over for these frames
     // (what the workbench's F9 hands it), or none: a reference of an earlier
     // view never shows.
-    reference::showViewReference(*session_, reference,
-                                 "no CPU reference of this view: Session.render(\"reference.*\") traces one");
+    session_->showReference(reference,
+                            "no CPU reference of this view: Session.render(\"reference.*\") traces one");
     FrameRequest request;
     request.outputs = {buffer};
     PassTimer& timer = session_->pipeline().timer();
@@ -298,7 +298,9 @@ void WorkbenchSession::writeKnobValues(const std::string& path) const { session_
 
 reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options,
                                                        std::optional<std::uint64_t> frame) const {
-    return reference::traceViewReference(*session_, width_, height_, options, frame).images;
+    return reference::traceViewReference(session_->scene(), session_->knobs(), session_->camera(), width_, height_,
+                                         options, frame)
+        .images;
 }
 
 void WorkbenchSession::resize(int width, int height) {

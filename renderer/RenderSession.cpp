@@ -1,10 +1,13 @@
 #include "renderer/RenderSession.h"
 
 #include <fstream>
+#include <memory>
 
 #include "renderer/Error.h"
 #include "renderer/graph/RenamedOutputs.h"
 #include "renderer/inspect/OutputReadback.h"
+#include "renderer/passes/ReferencePass.h"
+#include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -65,6 +68,26 @@ void RenderSession::writeOutput(const std::string& output, const std::string& pa
     if (!o) throw Error(unknownBufferMessage(output));
     if (isFloatFormat(path)) writeImage(path, readRaw(output, settings.selection()), rawChannelNames(*o));
     else writeImage(path, readDisplay(output, settings));
+}
+
+void RenderSession::showReference(const reference::ReferenceImages* images, const std::string& staleReason) {
+    auto* pass = pipeline_.pass<ReferencePass>();
+    if (!pass) return;
+    if (images) {
+        auto shown = std::make_shared<ReferencePass::Images>();
+        shown->lbuffer = images->lbuffer;
+        shown->final = images->final;
+        shown->ao = images->ao;
+        shown->describe = "CPU reference (" + std::to_string(images->stats.primaryRays) + " primary rays)";
+        pass->setReference(std::move(shown));
+    } else if (pass->hasReference()) {
+        pass->setReference(nullptr, staleReason);
+    }
+}
+
+bool RenderSession::isReferenceOutput(const std::string& buffer) const {
+    const PublishedOutput* o = pipeline_.outputs().find(buffer);
+    return o && o->pass == "reference";
 }
 
 }  // namespace dw

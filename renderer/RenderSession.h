@@ -16,6 +16,10 @@
 
 namespace dw {
 
+namespace reference {
+struct ReferenceImages;
+}
+
 class RenderSession {
 public:
     // Needs a current GL 4.5 context; throws GlUnsupportedError otherwise.
@@ -42,6 +46,18 @@ public:
     // Every knob as "name=value" (what --set takes back), after a "# scene
     // <source>" line; what --dump-knobs writes. Throws FileError.
     void writeKnobValues(const std::string& path) const;
+
+    // Hands `images` (a CPU reference of this view, reference/ViewReference)
+    // to the `reference` pass for the frames rendered next (what the
+    // workbench's F9 hands it): reference.lbuffer, reference.final,
+    // reference.ao and compare.error then show it. nullptr takes an earlier
+    // one away, with `staleReason` as the pass's skip reason. No effect on a
+    // pipeline without the pass.
+    void showReference(const reference::ReferenceImages* images, const std::string& staleReason = {});
+    // Whether `buffer` is an output of the `reference` pass (reference.lbuffer,
+    // reference.final, reference.ao, compare.error): a frame needs the view's
+    // reference handed over to produce it.
+    bool isReferenceOutput(const std::string& buffer) const;
 
     KnobRegistry& knobs() { return knobs_; }
     const KnobRegistry& knobs() const { return knobs_; }

@@ -4,16 +4,20 @@
 // the knobs that define the model (ReferenceModel::fromKnobs), the camera,
 // the size, and `reference`'s options (--ao-rays, --seed, --threads, the
 // cache). One function used by `render --buffer reference.*|compare.error`
-// (app/RenderCommand.cpp) and by the Python module's Session.render and
-// Session.reference (python/WorkbenchSession.cpp), so both trace the same
-// image bit for bit. CPU only (Embree, oneTBB); no GL.
+// (app/RenderCommand.cpp), replay and the Python module's Session.render and
+// Session.reference (python/WorkbenchSession.cpp), so all trace the same
+// image bit for bit. CPU only (Embree, oneTBB); no GL. The session is above
+// this floor: it hands over its scene, knobs and camera, and shows the
+// images through RenderSession::showReference.
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
 
-#include "renderer/RenderSession.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/Camera.h"
+#include "renderer/scene/Scene.h"
 
 namespace dw::reference {
 
@@ -39,25 +43,15 @@ struct ViewReference {
     bool cached = false;     // read from the cache, not traced
 };
 
-// The reference of `session`'s view at `width` x `height` pixels: its knobs
-// and camera as they are now, its scene as frame `frame` has it (none: as the
-// session holds it). Reads the session without changing it (no GL call), so
-// it runs on any thread while the session's own waits. Throws Error (options
-// out of range, Embree failures, a size below 1x1, an unwritable cache without
-// cacheWarning) or ReferenceCancelled.
-ViewReference traceViewReference(RenderSession& session, int width, int height, const ViewReferenceOptions& options,
+// The reference of a view at `width` x `height` pixels: `knobs` (those that
+// define the model) and `camera` as they are, `scene` as frame `frame` has it
+// (its flame particles moved there; none: as given). Reads its arguments
+// without changing them (no GL call), so it runs on any thread while the
+// caller's session waits. Throws Error (options out of range, Embree
+// failures, a size below 1x1, an unwritable cache without cacheWarning) or
+// ReferenceCancelled.
+ViewReference traceViewReference(const Scene& scene, const KnobRegistry& knobs, const Camera& camera, int width,
+                                 int height, const ViewReferenceOptions& options,
                                  std::optional<std::uint64_t> frame = std::nullopt);
-
-// Hands `images` to the session's `reference` pass for the frames rendered
-// next (what the workbench's F9 hands it): reference.lbuffer, reference.final,
-// reference.ao and compare.error then show it. nullptr takes an earlier one
-// away, with `staleReason` as the pass's skip reason. No effect on a pipeline
-// without the pass.
-void showViewReference(RenderSession& session, const ReferenceImages* images, const std::string& staleReason = {});
-
-// Whether `buffer` is an output of the `reference` pass (reference.lbuffer,
-// reference.final, reference.ao, compare.error): a frame needs the view's
-// reference handed over to produce it.
-bool isReferenceOutput(RenderSession& session, const std::string& buffer);
 
 }  // namespace dw::reference
