@@ -146,15 +146,16 @@ public:
 
     GltfImport import(const glm::mat4& root, bool lightsAndCamera) {
         load();
-        GltfModelCheck(model_, path_).validate();
-        GltfModelCheck(model_, path_).noteInvalid(invalid_);
+        const GltfModelCheck check(model_, path_);  // the parsed model's checks, one checker for all three
+        check.validate();
+        check.noteInvalid(invalid_);
         materials_.importImages();
         materials_.importMaterials();
         importMeshes();
         GltfImport result;
         walkScene(root, lightsAndCamera, result);
         warnInvalid();
-        warnIgnored();
+        warnIgnored(check);
         return result;
     }
 
@@ -449,8 +450,8 @@ private:
 
     // One warning line naming everything the file uses that the workbench
     // does not draw, so a user knows why the picture differs from a viewer's.
-    void warnIgnored() {
-        const std::vector<std::string> parts = GltfModelCheck(model_, path_).ignoredFeatures(materials_.ignoredUvSets());
+    void warnIgnored(const GltfModelCheck& check) {
+        const std::vector<std::string> parts = check.ignoredFeatures(materials_.ignoredUvSets());
         if (parts.empty()) return;
         std::string line = path_ + ": ignored (not supported by the workbench): ";
         for (size_t i = 0; i < parts.size(); ++i) line += (i ? ", " : "") + parts[i];
