@@ -18,6 +18,7 @@
 
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/graph/FrameContext.h"
+#include "renderer/graph/MethodSet.h"
 #include "renderer/graph/OutputRegistry.h"
 
 namespace dw {
@@ -72,27 +73,15 @@ public:
     virtual std::string stats() const = 0;
 };
 
-using AoMethodFactory = std::function<std::unique_ptr<AoMethod>(KnobRegistry&)>;
-
-class AoMethodCatalog {
-public:
-    static AoMethodCatalog& extra();
-    void add(AoMethodFactory make) { factories_.push_back(std::move(make)); }
-    const std::vector<AoMethodFactory>& factories() const { return factories_; }
-
-private:
-    std::vector<AoMethodFactory> factories_;
-};
+// The family's registration is graph/MethodSet's, as every method family's.
+using AoMethodFactory = MethodFactory<AoMethod>;
+using AoMethodCatalog = MethodCatalog<AoMethod>;
 
 // The built-in methods, in the order of ao.method's choices (BuiltinAoMethods.cpp);
 // the first is the default.
 std::vector<AoMethodFactory> builtinAoMethods();
 
 template <typename T>
-struct RegisterAoMethod {
-    RegisterAoMethod() {
-        AoMethodCatalog::extra().add([](KnobRegistry& knobs) { return std::make_unique<T>(knobs); });
-    }
-};
+using RegisterAoMethod = RegisterMethod<AoMethod, T>;
 
 }  // namespace dw

@@ -6,18 +6,11 @@
 
 namespace dw {
 
-namespace {
-template <typename T>
-AoMethodFactory make() {
-    return [](KnobRegistry& knobs) { return std::make_unique<T>(knobs); };
-}
-}  // namespace
-
 std::vector<AoMethodFactory> builtinAoMethods() {
     return {
-        make<SsaoMethod>(),
-        make<GtaoMethod>(),
-        make<AovMethod>(),
+        makeMethod<AoMethod, SsaoMethod>(),
+        makeMethod<AoMethod, GtaoMethod>(),
+        makeMethod<AoMethod, AovMethod>(),
     };
 }
 

@@ -10,22 +10,15 @@
 
 namespace dw {
 
-namespace {
-template <typename T>
-LightingStrategyFactory make() {
-    return [](KnobRegistry& knobs) { return std::make_unique<T>(knobs); };
-}
-}  // namespace
-
 std::vector<LightingStrategyFactory> builtinLightingStrategies() {
     return {
-        make<StencilVolumesStrategy>(),
-        make<VolumesStrategy>(),
-        make<FullscreenStrategy>(),
-        make<TiledStrategy>(),
-        make<ClusteredStrategy>(),
-        make<ForwardStrategy>(),
-        make<ForwardMultipassStrategy>(),
+        makeMethod<LightingStrategy, StencilVolumesStrategy>(),
+        makeMethod<LightingStrategy, VolumesStrategy>(),
+        makeMethod<LightingStrategy, FullscreenStrategy>(),
+        makeMethod<LightingStrategy, TiledStrategy>(),
+        makeMethod<LightingStrategy, ClusteredStrategy>(),
+        makeMethod<LightingStrategy, ForwardStrategy>(),
+        makeMethod<LightingStrategy, ForwardMultipassStrategy>(),
     };
 }
 

@@ -92,9 +92,4 @@ StrategyCounts drawEachLightInView(LightingFrame& f, const std::function<void(co
     return c;
 }
 
-LightingStrategyCatalog& LightingStrategyCatalog::extra() {
-    static LightingStrategyCatalog catalog;
-    return catalog;
-}
-
 }  // namespace dw

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "renderer/graph/FrameContext.h"
+#include "renderer/graph/MethodSet.h"
 #include "renderer/lighting/LightVolumeGeometry.h"
 #include "renderer/graph/OutputRegistry.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -137,27 +138,15 @@ public:
 // frustum (counted as volumes), the rest counted as culled.
 StrategyCounts drawEachLightInView(LightingFrame& frame, const std::function<void(const LightTableEntry&)>& draw);
 
-using LightingStrategyFactory = std::function<std::unique_ptr<LightingStrategy>(KnobRegistry&)>;
-
-class LightingStrategyCatalog {
-public:
-    // Strategies registered from outside the library (tests, plug-ins).
-    static LightingStrategyCatalog& extra();
-    void add(LightingStrategyFactory make) { factories_.push_back(std::move(make)); }
-    const std::vector<LightingStrategyFactory>& factories() const { return factories_; }
-
-private:
-    std::vector<LightingStrategyFactory> factories_;
-};
+// The family's registration is graph/MethodSet's, as every method family's;
+// strategies registered from outside the library (tests, plug-ins) come after the built-ins.
+using LightingStrategyFactory = MethodFactory<LightingStrategy>;
+using LightingStrategyCatalog = MethodCatalog<LightingStrategy>;
 
 // The built-in strategies, in the order of the knob's choices (BuiltinStrategies.cpp).
 std::vector<LightingStrategyFactory> builtinLightingStrategies();
 
 template <typename T>
-struct RegisterLightingStrategy {
-    RegisterLightingStrategy() {
-        LightingStrategyCatalog::extra().add([](KnobRegistry& knobs) { return std::make_unique<T>(knobs); });
-    }
-};
+using RegisterLightingStrategy = RegisterMethod<LightingStrategy, T>;
 
 }  // namespace dw

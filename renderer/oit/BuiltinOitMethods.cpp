@@ -9,21 +9,14 @@
 
 namespace dw {
 
-namespace {
-template <typename T>
-OitMethodFactory make() {
-    return [](KnobRegistry& knobs) { return std::make_unique<T>(knobs); };
-}
-}  // namespace
-
 std::vector<OitMethodFactory> builtinOitMethods() {
     return {
-        make<LinkedListOit>(),
-        make<StencilRoutedOit>(),
-        make<DepthPeelingOit>(),
-        make<DualDepthPeelingOit>(),
-        make<WeightedOit>(),
-        make<SortedForwardOit>(),
+        makeMethod<OitMethod, LinkedListOit>(),
+        makeMethod<OitMethod, StencilRoutedOit>(),
+        makeMethod<OitMethod, DepthPeelingOit>(),
+        makeMethod<OitMethod, DualDepthPeelingOit>(),
+        makeMethod<OitMethod, WeightedOit>(),
+        makeMethod<OitMethod, SortedForwardOit>(),
     };
 }
 

@@ -6,10 +6,6 @@
 
 namespace dw {
 
-OitMethodCatalog& OitMethodCatalog::extra() {
-    static OitMethodCatalog catalog;
-    return catalog;
-}
 
 void OitFrame::drawTransparent(const gl::Program& program) const {
     program.use();

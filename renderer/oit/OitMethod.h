@@ -21,6 +21,7 @@
 #include "renderer/gl/Buffer.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/graph/FrameContext.h"
+#include "renderer/graph/MethodSet.h"
 #include "renderer/graph/OutputRegistry.h"
 #include "shaders/params/oit.h"
 
@@ -90,27 +91,15 @@ public:
     virtual std::string lossCause() const { return {}; }
 };
 
-using OitMethodFactory = std::function<std::unique_ptr<OitMethod>(KnobRegistry&)>;
-
-class OitMethodCatalog {
-public:
-    static OitMethodCatalog& extra();
-    void add(OitMethodFactory make) { factories_.push_back(std::move(make)); }
-    const std::vector<OitMethodFactory>& factories() const { return factories_; }
-
-private:
-    std::vector<OitMethodFactory> factories_;
-};
+// The family's registration is graph/MethodSet's, as every method family's.
+using OitMethodFactory = MethodFactory<OitMethod>;
+using OitMethodCatalog = MethodCatalog<OitMethod>;
 
 // The built-in methods, in the order of oit.method's choices (BuiltinOitMethods.cpp).
 std::vector<OitMethodFactory> builtinOitMethods();
 
 template <typename T>
-struct RegisterOitMethod {
-    RegisterOitMethod() {
-        OitMethodCatalog::extra().add([](KnobRegistry& knobs) { return std::make_unique<T>(knobs); });
-    }
-};
+using RegisterOitMethod = RegisterMethod<OitMethod, T>;
 
 // Bytes of the outputs `names` as allocated now ("3.2 MiB" in the statistics).
 std::size_t allocatedBytes(const FrameContext& ctx, const std::vector<std::string>& names);

@@ -11,16 +11,8 @@ AoPass::AoPass(KnobRegistry& knobs) {
     enabled_ = knobs.addBool("ao.enabled", true, "ao",
                              "ambient occlusion on the ambient term, by the method ao.method names (was ssao.enabled)");
     knobs.addAlias("ssao.enabled", "ao.enabled", "AO has several methods now, chosen by ao.method");
-    std::vector<AoMethodFactory> factories = builtinAoMethods();
-    for (const auto& f : AoMethodCatalog::extra().factories()) factories.push_back(f);
-    std::vector<std::string> names;
-    std::string description = "how the ambient occlusion ao.raw is computed:";
-    for (const auto& make : factories) {
-        methods_.push_back(make(knobs));
-        names.emplace_back(methods_.back()->name());
-        description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + methods_.back()->description();
-    }
-    method_ = knobs.addEnum("ao.method", names, 0, "ao", description, true);
+    methods_.emplace(knobs, builtinAoMethods(),
+                     MethodKnob{"ao.method", "ao", "how the ambient occlusion ao.raw is computed:", {}, true});
 }
 
 AoPass::~AoPass() = default;
@@ -30,31 +22,23 @@ std::vector<OutputDecl> AoPass::outputs() const {
         {"ao.raw", OutputKind::Scalar,
          "ambient accessibility before filtering, 1 = open (R16F, at the method's resolution)", texture2D(GL_R16F), 1},
     };
-    for (const auto& m : methods_)
-        for (auto& o : m->outputs()) out.push_back(o);
+    methods_->appendOutputs(out);
     return out;
 }
 
 const AoMethod& AoPass::method(const KnobRegistry& knobs) const {
-    return *methods_[static_cast<std::size_t>(knobs.get(method_))];
-}
-
-const AoMethod* AoPass::ownerOf(const std::string& output) const {
-    for (const auto& m : methods_)
-        for (const auto& o : m->outputs())
-            if (o.name == output) return m.get();
-    return nullptr;
+    return *methods_->picked(knobs);
 }
 
 ResourceDesc AoPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
-    if (const AoMethod* m = ownerOf(output.name)) return m->resource(output, knobs);
+    if (const AoMethod* m = methods_->ownerOf(output.name)) return m->resource(output, knobs);
     ResourceDesc d = output.resource;
     d.shift = method(knobs).resolutionShift(knobs);
     return d;
 }
 
 bool AoPass::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
-    const AoMethod* m = ownerOf(output.name);
+    const AoMethod* m = methods_->ownerOf(output.name);
     return !m || (m == &method(knobs) && m->allocates(output, knobs));
 }
 
@@ -71,16 +55,12 @@ std::string AoPass::skipReason(const KnobRegistry& knobs, const Scene& scene) co
 }
 
 void AoPass::setup(gl::ShaderLibrary& shaders) {
-    for (auto& m : methods_) m->setup(shaders);
+    methods_->setup(shaders);
 }
 
 void AoPass::execute(FrameContext& ctx) {
-    AoMethod& chosen = *methods_[static_cast<std::size_t>(ctx.knobs.get(method_))];
-    for (const auto& m : methods_)
-        if (m.get() != &chosen)
-            for (const auto& o : m->outputs())
-                if (ctx.wants(o.name))
-                    throw Error(o.name + " is written only with ao.method=" + m->name() + " (now " + chosen.name() + ")");
+    AoMethod& chosen = *methods_->picked(ctx.knobs);
+    methods_->refuseOthersOutputs(chosen, ctx.wanted);
     for (const auto& o : chosen.outputs())
         if (ctx.wants(o.name) && !chosen.allocates(o, ctx.knobs))
             throw Error(o.name + " is not written under the current knobs: " + o.description);

@@ -7,9 +7,11 @@
 // outputs. The shared filter (AoFilterPass) turns ao.raw into ao.filtered.
 // Skipped when ao.enabled is off or the scene has no ambient light.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/ao/AoMethod.h"
+#include "renderer/graph/MethodSet.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/knobs/KnobRegistry.h"
 
@@ -29,24 +31,20 @@ public:
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
 
-    const std::vector<std::unique_ptr<AoMethod>>& methods() const { return methods_; }
+    const std::vector<std::unique_ptr<AoMethod>>& methods() const { return methods_->all(); }
     // The method ao.method names under `knobs`.
     const AoMethod& method(const KnobRegistry& knobs) const;
     // Every method's, by name (null when none is called so).
     template <typename T>
     T* method() const {
-        for (const auto& m : methods_)
+        for (const auto& m : methods_->all())
             if (auto* t = dynamic_cast<T*>(m.get())) return t;
         return nullptr;
     }
 
 private:
-    // The method that declares `output`, or null for ao.raw.
-    const AoMethod* ownerOf(const std::string& output) const;
-
-    std::vector<std::unique_ptr<AoMethod>> methods_;
+    std::optional<MethodSet<AoMethod>> methods_;  // ao.method's (made after ao.enabled: the knobs' order)
     BoolKnob enabled_;
-    EnumKnob method_;
     std::string stats_;
 };
 

@@ -22,21 +22,13 @@ const char* const kGBufferInputs[] = {"gbuffer.albedo", "gbuffer.normal", "gbuff
 }  // namespace
 
 LightingPass::LightingPass(KnobRegistry& knobs) {
-    std::vector<LightingStrategyFactory> factories = builtinLightingStrategies();
-    for (const auto& f : LightingStrategyCatalog::extra().factories()) factories.push_back(f);
-    std::vector<std::string> names;
-    std::string description = "how point and spot lights find their pixels:";
-    for (const auto& make : factories) {
-        strategies_.push_back(make(knobs));
-        names.emplace_back(strategies_.back()->name());
-        description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + strategies_.back()->description();
-    }
-    names.emplace_back("auto");
-    description += "; auto: per frame, stencil_volumes while the bounded lights in view cover the screen fewer than "
-                   "lighting.auto_coverage times over, clustered from lighting.auto_cluster_coverage times, tiled "
-                   "between (the statistics say which and why)";
-    autoChoice_ = static_cast<int>(names.size()) - 1;
-    strategy_ = knobs.addEnum("lighting.strategy", names, 0, "lighting", description);
+    strategies_.emplace(knobs, builtinLightingStrategies(),
+                        MethodKnob{"lighting.strategy", "lighting", "how point and spot lights find their pixels:",
+                                   {{"auto", "per frame, stencil_volumes while the bounded lights in view cover the "
+                                             "screen fewer than lighting.auto_coverage times over, clustered from "
+                                             "lighting.auto_cluster_coverage times, tiled between (the statistics say "
+                                             "which and why)"}},
+                                   false});
     autoCoverage_ = knobs.addFloat("lighting.auto_coverage", kAutoCoverage, 0.0, 1e6, "lighting",
                                    "auto: the screen coverage (the bounded lights' screen rectangles summed, in "
                                    "screens) from which a grid strategy (tiled or clustered) is picked instead of "
@@ -88,8 +80,7 @@ std::vector<OutputDecl> LightingPass::outputs() const {
          "the shadow factor: luminance of the shadow-mapped lights' radiance with their shadow lookups over that "
          "without them, 1 where none reaches and on the sky (the reference's shadow buffer, R32F)",
          texture2D(GL_R32F), 1, true}};
-    for (const auto& s : strategies_)
-        for (auto& o : s->outputs()) out.push_back(o);
+    strategies_->appendOutputs(out);
     return out;
 }
 
@@ -120,7 +111,7 @@ PassIO LightingPass::inputs(const KnobRegistry& knobs) const {
 void LightingPass::setup(gl::ShaderLibrary& shaders) {
     ambientProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/ambient.frag"});
     shading_.setup(shaders);
-    for (auto& s : strategies_) s->setup(shaders);
+    strategies_->setup(shaders);
     params_.create();
     shadowSumsProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/shadow_sums.frag"});
     shadowResolveProgram_ = shaders.get({.vertex = "fullscreen.vert", .fragment = "lighting/shadow_resolve.frag"});
@@ -164,8 +155,7 @@ void LightingPass::writeShadowFactor(FrameContext& ctx, const LightTable& table,
 
 LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights) {
     autoWhy_.clear();
-    const int knob = ctx.knobs.get(strategy_);
-    if (knob != autoChoice_) return *strategies_[static_cast<std::size_t>(knob)];
+    if (LightingStrategy* chosen = strategies_->picked(ctx.knobs)) return *chosen;  // not auto
     AutoStrategyInputs in;
     const glm::dmat4 worldToClip = ctx.camera.worldToClip();
     for (const LightTableEntry* e : lights) {
@@ -178,8 +168,7 @@ LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std:
     const AutoStrategyChoice c = chooseLightingStrategy(
         in, {ctx.knobs.get(autoCoverage_), ctx.knobs.get(autoClusterCoverage_)});
     autoWhy_ = "auto picked " + std::string(c.strategy) + ": " + c.why;
-    for (const auto& s : strategies_)
-        if (std::string(s->name()) == c.strategy) return *s;
+    if (LightingStrategy* picked = strategies_->named(c.strategy)) return *picked;
     throw Error(std::string("lighting.strategy=auto picked '") + c.strategy + "', which is not registered");
 }
 
@@ -298,7 +287,7 @@ void LightingPass::execute(FrameContext& ctx) {
     });
     const StrategyCounts sc = strategy.shade(frame);
     if (strategyWritesFirst) drawScreenLights();
-    for (auto& other : strategies_)
+    for (auto& other : strategies_->all())
         if (other.get() != &strategy) other->writeOutputs(frame);  // their lists, when asked for
     counts_.volumes = sc.volumes;
     counts_.batches = sc.batches;

@@ -25,6 +25,7 @@
 // a pass-owned RG32F sum, then divided (shaders/lighting/shadow_*.frag).
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/knobs/KnobRegistry.h"
@@ -66,7 +67,7 @@ public:
     static constexpr double kAutoCoverage = 9.0;
     static constexpr double kAutoClusterCoverage = 1e6;  // never: tiled was faster at every coverage measured
     // The strategies, in the order of lighting.strategy's choices.
-    const std::vector<std::unique_ptr<LightingStrategy>>& strategies() const { return strategies_; }
+    const std::vector<std::unique_ptr<LightingStrategy>>& strategies() const { return strategies_->all(); }
 
 private:
     // The strategy lighting.strategy names, or under auto the one
@@ -76,8 +77,8 @@ private:
     void writeShadowFactor(FrameContext& ctx, const LightTable& table, const std::function<void()>& bindInputs);
     LightingStrategy& pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights);
 
-    std::vector<std::unique_ptr<LightingStrategy>> strategies_;
-    EnumKnob strategy_, attenuation_;
+    std::optional<MethodSet<LightingStrategy>> strategies_;  // lighting.strategy's, and its choice auto
+    EnumKnob attenuation_;
     int windowed_ = 0;  // lighting.attenuation = windowed
     FloatKnob windowExponent_;
     BoolKnob ambientSpecular_;
@@ -101,7 +102,6 @@ private:
     TargetFramebuffer target_, countingTarget_;
     Counts counts_;
     std::string stats_, autoWhy_, lastStrategy_;
-    int autoChoice_ = 0;  // lighting.strategy's index of "auto"
     FloatKnob autoCoverage_, autoClusterCoverage_;
     BoolKnob directionalInGBuffer_;  // declared by the geometry pass
     EnumKnob depthFormat_;           // gbuffer.depth_format, declared by the geometry pass

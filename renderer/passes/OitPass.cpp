@@ -36,16 +36,8 @@ bool boxInView(const Bounds& b, const glm::dmat4& worldToClip) {
 }  // namespace
 
 OitPass::OitPass(KnobRegistry& knobs) {
-    std::vector<OitMethodFactory> factories = builtinOitMethods();
-    for (const auto& f : OitMethodCatalog::extra().factories()) factories.push_back(f);
-    std::vector<std::string> names;
-    std::string description = "how the blended materials are composited over the L-buffer:";
-    for (const auto& make : factories) {
-        methods_.push_back(make(knobs));
-        names.emplace_back(methods_.back()->name());
-        description += std::string(names.size() > 1 ? ";" : "") + " " + names.back() + ": " + methods_.back()->description();
-    }
-    method_ = knobs.addEnum("oit.method", names, 0, "oit", description, true);
+    methods_.emplace(knobs, builtinOitMethods(),
+                     MethodKnob{"oit.method", "oit", "how the blended materials are composited over the L-buffer:", {}, true});
 }
 
 OitPass::~OitPass() = default;
@@ -69,26 +61,18 @@ std::vector<OutputDecl> OitPass::outputs() const {
          "about (R32UI)",
          texture2D(GL_R32UI), 1},
     };
-    for (const auto& m : methods_)
-        for (auto& o : m->outputs()) out.push_back(o);
+    methods_->appendOutputs(out);
     return out;
 }
 
-const OitMethod* OitPass::ownerOf(const std::string& output) const {
-    for (const auto& m : methods_)
-        for (const auto& o : m->outputs())
-            if (o.name == output) return m.get();
-    return nullptr;
-}
-
 ResourceDesc OitPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
-    const OitMethod* m = ownerOf(output.name);
+    const OitMethod* m = methods_->ownerOf(output.name);
     return m ? m->resource(output, knobs) : output.resource;
 }
 
 bool OitPass::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
-    const OitMethod* m = ownerOf(output.name);
-    return !m || m == methods_[static_cast<std::size_t>(knobs.get(method_))].get();
+    const OitMethod* m = methods_->ownerOf(output.name);
+    return !m || m == methods_->picked(knobs);
 }
 
 PassIO OitPass::inputs(const KnobRegistry& knobs) const {
@@ -128,7 +112,7 @@ std::string OitPass::viewSkipReason(const KnobRegistry&, const Scene& scene, con
 
 void OitPass::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
-    for (auto& m : methods_) m->setup(shaders);
+    methods_->setup(shaders);
     lighting_.create();
     params_.create();
     lostTotal_ = gl::Buffer::create(2 * sizeof(std::uint32_t), nullptr, true, "oit lost fragments");
@@ -154,12 +138,8 @@ void OitPass::readLostTotal(const OitMethod& method) {
 
 void OitPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    OitMethod& method = *methods_[static_cast<std::size_t>(k.get(method_))];
-    for (const auto& m : methods_)
-        if (m.get() != &method)
-            for (const auto& o : m->outputs())
-                if (ctx.wants(o.name))
-                    throw Error(o.name + " is written only with oit.method=" + m->name() + " (now " + method.name() + ")");
+    OitMethod& method = *methods_->picked(k);
+    methods_->refuseOthersOutputs(method, ctx.wanted);
     if (!ctx.lightTable) throw Error("the oit pass ran without a light table (the lights pass did not run)");
     const LightTable& table = *ctx.lightTable;
 

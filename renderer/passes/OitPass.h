@@ -14,6 +14,7 @@
 // Skipped, with the reason, when the scene has no blended material.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "renderer/gl/FullscreenTriangle.h"
@@ -48,7 +49,7 @@ public:
     // the last frame's method lost any; empty otherwise.
     std::string frameWarning() const override { return warning_; }
 
-    const std::vector<std::unique_ptr<OitMethod>>& methods() const { return methods_; }
+    const std::vector<std::unique_ptr<OitMethod>>& methods() const { return methods_->all(); }
     // The blended instances the last frame drew.
     std::size_t lastDraws() const { return lastDraws_; }
     // The last frame's transparent fragments lost (summed oit.overflow) and
@@ -57,14 +58,11 @@ public:
     std::uint64_t lastArrived() const { return lastArrived_; }
 
 private:
-    // The method that declares `output`, or null for the shared outputs.
-    const OitMethod* ownerOf(const std::string& output) const;
     const gl::Program& transparentProgram(const std::string& method, bool shadowed);
     // The method's lost and arrived fragments, summed on the GPU, read back; the warning when any were lost.
     void readLostTotal(const OitMethod& method);
 
-    std::vector<std::unique_ptr<OitMethod>> methods_;
-    EnumKnob method_;
+    std::optional<MethodSet<OitMethod>> methods_;  // oit.method's
     EnumKnob attenuation_;
     int windowed_ = 0;
     FloatKnob windowExponent_;
