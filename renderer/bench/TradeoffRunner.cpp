@@ -1,7 +1,5 @@
 #include "renderer/bench/TradeoffRunner.h"
 
-#include <optional>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -161,41 +159,44 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     }
 }
 
-TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const BenchProgress& progress) {
-    auto say = [&](const std::string& line) {
-        if (progress) progress(line);
-    };
-    const auto start = Clock::now();
-    const int cameraCount = static_cast<int>(cameras_.size());
-    const int configs = static_cast<int>(points_.size()) * cameraCount;
-    say("tradeoff: setting up " + std::to_string(o_.run.width) + "x" + std::to_string(o_.run.height) +
-        " (compiling shaders, uploading " + scene_.name + ")");
-    RenderSession session;
-    session.setScene(scene_, o_.run);
-    session.resize(o_.run.width, o_.run.height);
+// The point's knobs (its run's preset and --set, then its axis values) on the session.
+void TradeoffRunner::applyPoint(RenderSession& session, size_t p) const {
+    pointRuns_[p].applyKnobs(session.knobs(), session.scene());
+    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+        const std::string& name = o_.sweep.axes[a].name;
+        if (name != "preset" && !TradeoffSweep::isCameraAxis(name))
+            session.knobs().applyAssignment(name + "=" + points_[p].values[a]);
+    }
+}
 
-    auto applyPoint = [&](size_t p) {
-        pointRuns_[p].applyKnobs(session.knobs(), session.scene());
-        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
-            const std::string& name = o_.sweep.axes[a].name;
-            if (name != "preset" && !TradeoffSweep::isCameraAxis(name))
-                session.knobs().applyAssignment(name + "=" + points_[p].values[a]);
-        }
-    };
-    auto cameraOf = [&](size_t p, int c) {
-        Camera cam = cameras_[static_cast<size_t>(c)];
-        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
-            if (o_.sweep.axes[a].name == "camera.near") cam.nearPlane = planeValue("camera.near", points_[p].values[a]);
-            if (o_.sweep.axes[a].name == "camera.far") cam.farPlane = planeValue("camera.far", points_[p].values[a]);
-        }
-        return cam;
-    };
-    auto pointSeed = [&](size_t p, int camera) {
-        return 12345u + 1000u * static_cast<std::uint64_t>(points_[p].index) + 2u * static_cast<std::uint64_t>(camera);
-    };
-    // AOV's cost estimated from the triangles before any frame (issue 22).
+// Camera `c` with the point's clip planes.
+Camera TradeoffRunner::cameraOf(size_t p, int c) const {
+    Camera cam = cameras_[static_cast<size_t>(c)];
+    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+        if (o_.sweep.axes[a].name == "camera.near") cam.nearPlane = planeValue("camera.near", points_[p].values[a]);
+        if (o_.sweep.axes[a].name == "camera.far") cam.farPlane = planeValue("camera.far", points_[p].values[a]);
+    }
+    return cam;
+}
+
+// Seeded by the point's number, so a shard draws what the whole run draws.
+std::uint64_t TradeoffRunner::pointSeed(size_t p, int camera) const {
+    return 12345u + 1000u * static_cast<std::uint64_t>(points_[p].index) + 2u * static_cast<std::uint64_t>(camera);
+}
+
+std::string TradeoffRunner::describeConfiguration(int i) const {
+    const int cameraCount = static_cast<int>(cameras_.size());
+    const TradeoffPoint& p = points_[static_cast<size_t>(i / cameraCount)];
+    std::string d = "point " + std::to_string(p.index);
+    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) d += ", " + o_.sweep.axes[a].name + "=" + p.values[a];
+    return d + (cameraCount > 1 ? ", camera " + std::to_string(i % cameraCount) : "");
+}
+
+// Stage 1: AOV's cost estimated from the triangles before any frame (issue 22).
+void TradeoffRunner::warnAovCost(RenderSession& session) const {
+    const int cameraCount = static_cast<int>(cameras_.size());
     for (size_t p = 0; p < points_.size(); ++p) {
-        applyPoint(p);
+        applyPoint(session, p);
         for (int c = 0; c < cameraCount; ++c) {
             const std::string w = AovCostEstimate::check(session.knobs(), session.scene(), cameraOf(p, c),
                                                          o_.run.width, o_.run.height);
@@ -206,115 +207,126 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             else std::fprintf(stderr, "%s\n", line.c_str());
         }
     }
-    RunnerPlan plan;
-    plan.configurations = configs;
-    plan.frames = o_.frames;
-    plan.warmup = o_.warmup;
-    plan.block = o_.block;
-    ConfigurationRunner runner(
-        plan,
-        [&](int i) -> RenderSession& {
-            applyPoint(static_cast<size_t>(i / cameraCount));
-            return session;
-        },
-        [&](RenderSession& s, int i, int) { s.camera() = cameraOf(static_cast<size_t>(i / cameraCount), i % cameraCount); });
-    auto describe = [&](int i) {
-        const TradeoffPoint& p = points_[static_cast<size_t>(i / cameraCount)];
-        std::string d = "point " + std::to_string(p.index);
-        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) d += ", " + o_.sweep.axes[a].name + "=" + p.values[a];
-        return d + (cameraCount > 1 ? ", camera " + std::to_string(i % cameraCount) : "");
-    };
-    say("tradeoff: " + std::to_string(points_.size()) + " point(s)" +
-        (o_.shard.whole() ? "" : " (shard " + std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count) +
-                                     " of " + std::to_string(sweepSize_) + ")") +
-        " x " + std::to_string(cameraCount) + " camera(s) x " + std::to_string(o_.frames) + " frame(s), " +
-        std::to_string(o_.warmup) + " warm-up frame(s) per switch");
-    TradeoffResult result;
-    const gl::GlInfo& gl = session.glInfo();
-    result.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
-    const RunnerTimings timings = runner.measure("tradeoff", describe, say);
-    // --time PASS: refused before the error captures and references when no
-    // configuration timed that pass.
-    if (o_.time != "frame") {
-        std::vector<std::string> timed;
-        for (const auto& s : timings.samples)
-            if (tabledSeries(s.series) && s.series != PassTimer::kFrameSeries &&
-                std::find(timed.begin(), timed.end(), s.series) == timed.end())
-                timed.push_back(s.series);
-        if (std::find(timed.begin(), timed.end(), o_.time) == timed.end()) {
-            std::string list;
-            for (const auto& n : timed) list += (list.empty() ? "" : ",") + n;
-            throw Error("--time " + o_.time + ": no pass of that name was timed (expected frame or one of: " +
-                        (list.empty() ? std::string("none") : list) + ")");
-        }
-    }
-    result.timingSeconds = timings.seconds;
+}
 
-    // The errors: an untimed frame per (point, camera) against its counterpart.
-    const auto errorStart = Clock::now();
+// After stage 2 (the timed rounds): --time PASS is refused before the error
+// captures and references when no configuration timed that pass.
+void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
+    if (o_.time == "frame") return;
+    std::vector<std::string> timed;
+    for (const auto& s : timings.samples)
+        if (tabledSeries(s.series) && s.series != PassTimer::kFrameSeries &&
+            std::find(timed.begin(), timed.end(), s.series) == timed.end())
+            timed.push_back(s.series);
+    if (std::find(timed.begin(), timed.end(), o_.time) != timed.end()) return;
+    std::string list;
+    for (const auto& n : timed) list += (list.empty() ? "" : ",") + n;
+    throw Error("--time " + o_.time + ": no pass of that name was timed (expected frame or one of: " +
+                (list.empty() ? std::string("none") : list) + ")");
+}
+
+namespace {
+
+// The buffer a tradeoff measures, as the session holds it: raw floats (HDR) or display values; AO's first channel.
+FloatImage readMeasured(RenderSession& s, const std::string& output, const std::string& buffer) {
+    FloatImage image = buffer != "final" ? s.readRaw(output) : s.readDisplay(output);
+    if (buffer == "ao" && image.channels > 1) {  // the AO is in the first channel
+        FloatImage one;
+        one.width = image.width;
+        one.height = image.height;
+        one.channels = 1;
+        one.pixels.resize(static_cast<size_t>(image.width) * image.height);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) one.at(x, y, 0) = image.at(x, y, 0);
+        image = std::move(one);
+    }
+    return image;
+}
+
+}  // namespace
+
+// What one capture is measured against: the reference, or --against's
+// knobs rendered once per configuration (every knob) and camera.
+FloatImage TradeoffRunner::againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
+                                        std::map<std::string, FloatImage>& rendered) const {
+    if (o_.against.empty())
+        return reference(session.scene(), session.knobs(), session.camera(), o_.run.width, o_.run.height, o_.buffer);
+    for (const auto& s : o_.against) session.knobs().applyAssignment(s);
+    std::string key = std::to_string(camera);
+    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id) key += "," + session.knobs().format(id);
+    key += "," + shortText(session.camera().nearPlane) + "," + shortText(session.camera().farPlane);
+    auto it = rendered.find(key);
+    if (it == rendered.end()) {
+        const std::string output = gpuOutput(o_.buffer);
+        session.render(FrameRequest{{output}});
+        it = rendered.emplace(key, readMeasured(session, output, o_.buffer)).first;
+    }
+    return it->second;
+}
+
+// Stage 3: the errors, an untimed frame per (point, camera) against its
+// counterpart; a configuration that fails gets NaN and a note.
+TradeoffRunner::Errors TradeoffRunner::captureErrors(RenderSession& session, ConfigurationRunner& runner,
+                                                     const TradeoffReference& reference, std::vector<std::string>& notes,
+                                                     const BenchProgress& say) const {
+    const int cameraCount = static_cast<int>(cameras_.size());
     const std::string output = gpuOutput(o_.buffer);
     const bool hdr = o_.buffer != "final";
     const FrameRequest request{{output}};
-    auto read = [&](RenderSession& s) {
-        FloatImage image = hdr ? s.readRaw(output) : s.readDisplay(output);
-        if (o_.buffer == "ao" && image.channels > 1) {  // the AO is in the first channel
-            FloatImage one;
-            one.width = image.width;
-            one.height = image.height;
-            one.channels = 1;
-            one.pixels.resize(static_cast<size_t>(image.width) * image.height);
-            for (int y = 0; y < image.height; ++y)
-                for (int x = 0; x < image.width; ++x) one.at(x, y, 0) = image.at(x, y, 0);
-            image = std::move(one);
-        }
-        return image;
-    };
     std::map<std::string, FloatImage> againstImages;  // by configuration (every knob) and camera
-    std::vector<std::vector<ErrorEstimate>> errors(points_.size(), std::vector<ErrorEstimate>(static_cast<size_t>(cameraCount)));
-    std::vector<std::string> notes;
+    Errors errors(points_.size(), std::vector<ErrorEstimate>(static_cast<size_t>(cameraCount)));
     for (size_t p = 0; p < points_.size(); ++p) {
         for (int c = 0; c < cameraCount; ++c) {
             const int config = static_cast<int>(p) * cameraCount + c;
             ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
             e.value = e.low = e.high = kNaN;
             try {
-                FloatImage test = read(runner.capture(config, 0, request));
-                FloatImage against;
-                if (o_.against.empty()) {
-                    against = reference(session.scene(), session.knobs(), session.camera(), o_.run.width, o_.run.height,
-                                        o_.buffer);
-                } else {
-                    for (const auto& s : o_.against) session.knobs().applyAssignment(s);
-                    std::string key = std::to_string(c);
-                    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id)
-                        key += "," + session.knobs().format(id);
-                    key += "," + shortText(session.camera().nearPlane) + "," + shortText(session.camera().farPlane);
-                    auto it = againstImages.find(key);
-                    if (it == againstImages.end()) {
-                        session.render(request);
-                        it = againstImages.emplace(key, read(session)).first;
-                    }
-                    against = it->second;
-                }
+                FloatImage test = readMeasured(runner.capture(config, 0, request), output, o_.buffer);
+                FloatImage against = againstImage(session, reference, c, againstImages);
                 // The edges of the reference's shadows (whatever --against says).
                 std::optional<FloatImage> mask;
                 if (o_.mask == "shadow_edges")
                     mask = ShadowEdgeMask::fromShadow(reference(session.scene(), session.knobs(), session.camera(),
                                                                 o_.run.width, o_.run.height, "shadow"));
-                // Seeded by the point's number, so a shard draws what the whole run draws.
                 e = ImageError::measure(against, test, o_.metric, hdr, o_.resamples, pointSeed(p, c),
                                         mask ? &*mask : nullptr);
             } catch (const Error& err) {
                 notes.push_back("point " + std::to_string(points_[p].index) + ", camera " + std::to_string(c) + ": " +
                                 err.what());
-                say("tradeoff: no error for " + notes.back());
+                if (say) say("tradeoff: no error for " + notes.back());
             }
         }
     }
-    result.errorSeconds = seconds(errorStart);
+    return errors;
+}
 
-    // The table: per (point, camera), then per point over every camera.
-    TradeoffTable& t = result.table;
+namespace {
+
+// A row's frames, frame time with its interval, and each tabled pass's median.
+void fillTimes(TradeoffRow& row, const std::vector<std::string>& passes,
+               const std::map<std::string, std::vector<double>>& series, int resamples, std::uint64_t seed) {
+    auto frame = series.find(PassTimer::kFrameSeries);
+    row.frames = frame == series.end() ? 0 : static_cast<int>(frame->second.size());
+    row.frameGpuMs = row.frameGpuMsLo = row.frameGpuMsHi = kNaN;
+    if (row.frames > 0) {
+        const MedianInterval i = bootstrapMedian(frame->second, resamples, seed);
+        row.frameGpuMs = i.median;
+        row.frameGpuMsLo = i.low;
+        row.frameGpuMsHi = i.high;
+    }
+    for (const auto& pass : passes) {
+        auto it = series.find(pass);
+        row.passGpuMs.push_back(it == series.end() ? kNaN : median(it->second));
+    }
+}
+
+}  // namespace
+
+// Stage 4: the table, per (point, camera), then per point over every camera,
+// and its Pareto front. Throws Error when no row has an error.
+void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, const Errors& errors,
+                              std::vector<std::string>& notes, const BenchProgress& say) const {
+    const int cameraCount = static_cast<int>(cameras_.size());
     for (const auto& a : o_.sweep.axes) t.axes.push_back(a.name);
     std::map<int, std::map<std::string, std::vector<double>>> ms;  // config -> series -> GPU ms
     for (const auto& s : timings.samples) {
@@ -324,49 +336,32 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
             t.passes.push_back(s.series);
         ms[s.config][s.series].push_back(s.gpuMs);
     }
-    auto fill = [&](TradeoffRow& row, const std::map<std::string, std::vector<double>>& series, std::uint64_t seed) {
-        auto frame = series.find(PassTimer::kFrameSeries);
-        row.frames = frame == series.end() ? 0 : static_cast<int>(frame->second.size());
-        row.frameGpuMs = row.frameGpuMsLo = row.frameGpuMsHi = kNaN;
-        if (row.frames > 0) {
-            const MedianInterval i = bootstrapMedian(frame->second, o_.resamples, seed);
-            row.frameGpuMs = i.median;
-            row.frameGpuMsLo = i.low;
-            row.frameGpuMsHi = i.high;
-        }
-        for (const auto& pass : t.passes) {
-            auto it = series.find(pass);
-            row.passGpuMs.push_back(it == series.end() ? kNaN : median(it->second));
-        }
-    };
     const std::string bufferColumn = o_.buffer + (o_.mask.empty() ? "" : ":" + o_.mask);
+    auto newRow = [&](size_t p, const std::string& camera, const ErrorEstimate& e) {
+        TradeoffRow row;
+        row.point = points_[p].index;
+        row.axisValues = points_[p].values;
+        row.camera = camera;
+        row.metric = o_.metric;
+        row.buffer = bufferColumn;
+        row.error = e.value;
+        row.errorLo = e.low;
+        row.errorHi = e.high;
+        return row;
+    };
     for (size_t p = 0; p < points_.size(); ++p) {
         std::map<std::string, std::vector<double>> pooled;
         std::vector<double> values;
         for (int c = 0; c < cameraCount; ++c) {
             const int config = static_cast<int>(p) * cameraCount + c;
-            TradeoffRow row;
-            row.point = points_[p].index;
-            row.axisValues = points_[p].values;
-            row.camera = std::to_string(c);
-            row.metric = o_.metric;
-            row.buffer = bufferColumn;
             const ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
-            row.error = e.value;
-            row.errorLo = e.low;
-            row.errorHi = e.high;
-            fill(row, ms[config], pointSeed(p, c) + 1);
+            TradeoffRow row = newRow(p, std::to_string(c), e);
+            fillTimes(row, t.passes, ms[config], o_.resamples, pointSeed(p, c) + 1);
             for (const auto& [series, v] : ms[config]) pooled[series].insert(pooled[series].end(), v.begin(), v.end());
             values.push_back(e.value);
             t.rows.push_back(std::move(row));
         }
         if (cameraCount > 1) {
-            TradeoffRow row;
-            row.point = points_[p].index;
-            row.axisValues = points_[p].values;
-            row.camera = TradeoffTable::kAllCameras;
-            row.metric = o_.metric;
-            row.buffer = bufferColumn;
             const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
             // The mean over the cameras that have an error, saying so when some have none.
             const auto measured = std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); });
@@ -374,12 +369,10 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
                 notes.push_back("point " + std::to_string(points_[p].index) + ": the all-cameras error is the mean over " +
                                 std::to_string(measured) + " of " + std::to_string(cameraCount) +
                                 " cameras (the others have no error)");
-                say("tradeoff: " + notes.back());
+                if (say) say("tradeoff: " + notes.back());
             }
-            row.error = e.value;
-            row.errorLo = e.low;
-            row.errorHi = e.high;
-            fill(row, pooled, pointSeed(p, cameraCount) + 1);
+            TradeoffRow row = newRow(p, TradeoffTable::kAllCameras, e);
+            fillTimes(row, t.passes, pooled, o_.resamples, pointSeed(p, cameraCount) + 1);
             t.rows.push_back(std::move(row));
         }
     }
@@ -390,12 +383,17 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
                     (notes.empty() ? std::string("no note") : notes.front()) +
                     (notes.size() > 1 ? "; and " + std::to_string(notes.size() - 1) + " more like it" : "") + ")");
     if (!t.rows.empty()) t.markParetoFront(o_.time);
+}
 
+// Stage 5: what the run was, for the CSV's and the record's settings.
+BenchFields TradeoffRunner::settingsOf(const TradeoffResult& result, double totalSeconds,
+                                       const std::vector<std::string>& notes) const {
+    const int cameraCount = static_cast<int>(cameras_.size());
     std::string sets;
     for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
     std::string against;
     for (const auto& s : o_.against) against += (against.empty() ? "" : ",") + s;
-    result.settings = {
+    BenchFields settings = {
         {"scene", scene_.source},
         {"preset", o_.run.presetSpec()},
         {"set", sets},
@@ -408,7 +406,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
                                    : "the run's camera"},
         {"sweep", o_.sweep.oneAtATime ? "one knob at a time about the current settings" : "full grid"},
         {"metric", o_.metric},
-        {"buffer", o_.buffer + " (" + output + ")"},
+        {"buffer", o_.buffer + " (" + gpuOutput(o_.buffer) + ")"},
         {"mask", o_.mask.empty() ? "none: every pixel" : o_.mask + ": pixels within 2 px of an edge of the reference's shadow buffer"},
         {"front_time", o_.time == "frame" ? "frame_gpu_ms" : "gpu_ms." + o_.time},
         {"against", o_.against.empty() ? "reference" : against},
@@ -420,9 +418,58 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
         {"sweep_points", std::to_string(sweepSize_)},
         {"timing_seconds", shortText(result.timingSeconds)},
         {"error_seconds", shortText(result.errorSeconds)},
-        {"seconds", shortText(seconds(start))},
+        {"seconds", shortText(totalSeconds)},
     };
-    for (const auto& n : notes) result.settings.emplace_back("note", n);
+    for (const auto& n : notes) settings.emplace_back("note", n);
+    return settings;
+}
+
+// The study in named stages: plan (session, AOV's cost), time (the
+// interleaved rounds), capture errors, tabulate (table and front), settings.
+TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const BenchProgress& progress) {
+    auto say = [&](const std::string& line) {
+        if (progress) progress(line);
+    };
+    const auto start = Clock::now();
+    const int cameraCount = static_cast<int>(cameras_.size());
+    say("tradeoff: setting up " + std::to_string(o_.run.width) + "x" + std::to_string(o_.run.height) +
+        " (compiling shaders, uploading " + scene_.name + ")");
+    RenderSession session;
+    session.setScene(scene_, o_.run);
+    session.resize(o_.run.width, o_.run.height);
+    warnAovCost(session);
+
+    RunnerPlan plan;
+    plan.configurations = static_cast<int>(points_.size()) * cameraCount;
+    plan.frames = o_.frames;
+    plan.warmup = o_.warmup;
+    plan.block = o_.block;
+    ConfigurationRunner runner(
+        plan,
+        [&](int i) -> RenderSession& {
+            applyPoint(session, static_cast<size_t>(i / cameraCount));
+            return session;
+        },
+        [&](RenderSession& s, int i, int) { s.camera() = cameraOf(static_cast<size_t>(i / cameraCount), i % cameraCount); });
+    say("tradeoff: " + std::to_string(points_.size()) + " point(s)" +
+        (o_.shard.whole() ? "" : " (shard " + std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count) +
+                                     " of " + std::to_string(sweepSize_) + ")") +
+        " x " + std::to_string(cameraCount) + " camera(s) x " + std::to_string(o_.frames) + " frame(s), " +
+        std::to_string(o_.warmup) + " warm-up frame(s) per switch");
+    TradeoffResult result;
+    const gl::GlInfo& gl = session.glInfo();
+    result.machine = {{"gl_vendor", gl.vendor}, {"gl_renderer", gl.renderer}, {"gl_version", gl.version}};
+    const RunnerTimings timings =
+        runner.measure("tradeoff", [&](int i) { return describeConfiguration(i); }, say);
+    checkTimedPass(timings);
+    result.timingSeconds = timings.seconds;
+
+    const auto errorStart = Clock::now();
+    std::vector<std::string> notes;
+    const Errors errors = captureErrors(session, runner, reference, notes, progress);
+    result.errorSeconds = seconds(errorStart);
+    tabulate(result.table, timings, errors, notes, progress);
+    result.settings = settingsOf(result, seconds(start), notes);
     say("tradeoff: timed in " + shortText(result.timingSeconds) + " s, errors in " + shortText(result.errorSeconds) + " s");
     result.shaders = session.shaders().compiled();
     return result;

@@ -17,7 +17,9 @@
 //     ImageError: the metric with a tile-bootstrap interval; the "all" row
 //     the mean over cameras with a bootstrap over the cameras.
 // Follows issue 23 ("the speed/accuracy lab").
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/ImageError.h"
 #include "renderer/bench/TradeoffSweep.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/gl/CompiledShaders.h"
@@ -33,6 +36,10 @@
 #include "renderer/scene/Scene.h"
 
 namespace dw {
+
+class ConfigurationRunner;
+class RenderSession;
+struct RunnerTimings;
 
 struct TradeoffOptions {
     RunConfig run;  // scene, preset, --set, width x height
@@ -92,6 +99,23 @@ public:
     void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
 
 private:
+    // run()'s stages and the helpers they share (TradeoffRunner.cpp).
+    using Errors = std::vector<std::vector<ErrorEstimate>>;  // [point][camera]
+    void applyPoint(RenderSession& session, size_t point) const;
+    Camera cameraOf(size_t point, int camera) const;
+    std::uint64_t pointSeed(size_t point, int camera) const;
+    std::string describeConfiguration(int configuration) const;
+    void warnAovCost(RenderSession& session) const;
+    void checkTimedPass(const RunnerTimings& timings) const;
+    FloatImage againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
+                            std::map<std::string, FloatImage>& rendered) const;
+    Errors captureErrors(RenderSession& session, ConfigurationRunner& runner, const TradeoffReference& reference,
+                         std::vector<std::string>& notes, const BenchProgress& say) const;
+    void tabulate(TradeoffTable& table, const RunnerTimings& timings, const Errors& errors,
+                  std::vector<std::string>& notes, const BenchProgress& say) const;
+    BenchFields settingsOf(const TradeoffResult& result, double totalSeconds,
+                           const std::vector<std::string>& notes) const;
+
     std::function<void(const std::string&)> costWarning_;
     TradeoffOptions o_;
     Scene scene_;
