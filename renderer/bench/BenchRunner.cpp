@@ -152,6 +152,141 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
                     " configuration(s) is left out");
 }
 
+namespace {
+
+// The results before any frame: one row per configuration of this shard, LPP unknown.
+BenchResults emptyResults(const BenchGrid& grid, const std::vector<BenchConfig>& configs) {
+    BenchResults results;
+    for (const auto& a : grid.knobAxes) results.knobAxes.push_back(a.knob);
+    for (const auto& c : configs) {
+        BenchConfigResult r;
+        r.config = c;
+        r.lpp = r.lppLit = std::nan("");
+        results.configs.push_back(r);
+    }
+    return results;
+}
+
+// Generated lights per light count, made once (a longer list from the same
+// seed starts with the shorter one); the scene's own first with --keep-scene-lights.
+std::map<int, std::vector<Light>> generateLightLists(const BenchOptions& o, const std::vector<BenchConfig>& configs,
+                                                     const Scene& scene, float radius, double threshold) {
+    std::map<int, std::vector<Light>> lists;
+    if (o.grid.lights.empty()) return lists;
+    for (const auto& c : configs) {
+        if (lists.count(c.lights)) continue;
+        LightGeneratorSettings g;
+        g.count = c.lights;
+        g.seed = o.seed;
+        g.radius = radius;
+        g.threshold = threshold;
+        std::vector<Light> lights = o.keepSceneLights ? scene.lights : std::vector<Light>{};
+        for (auto& l : generateLights(scene.bounds(), g)) lights.push_back(std::move(l));
+        lists.emplace(c.lights, std::move(lights));
+    }
+    return lists;
+}
+
+// Lights per pixel, untimed: the counting shader on its own frames, at
+// `poses` poses of the camera path. A strategy that cannot count (a new one,
+// say) costs its LPP, not the run.
+void measureLightsPerPixel(ConfigurationRunner& runner, BenchResults& results, int frames, int poses,
+                           const BenchProgress& say) {
+    // gbuffer.view_position's alpha is 0 where no surface is: sky and
+    // background count towards LPP (a full-screen light's shader runs
+    // there too) but not towards LPP lit.
+    const FrameRequest counting{{"lighting.overlap", "gbuffer.view_position"}};
+    for (size_t i = 0; i < results.configs.size(); ++i) {
+        BenchConfigResult& r = results.configs[i];
+        double sum = 0.0, pixels = 0.0, lit = 0.0, litSum = 0.0;
+        try {
+            for (int p = 0; p < poses; ++p) {
+                const int k = poses > 1 ? static_cast<int>(std::lround(static_cast<double>(p) * (frames - 1) / (poses - 1))) : 0;
+                RenderSession& session = runner.capture(static_cast<int>(i), k, counting);
+                const FloatImage overlap = session.readRaw("lighting.overlap");
+                const FloatImage position = session.readRaw("gbuffer.view_position");
+                for (int y = 0; y < overlap.height; ++y)
+                    for (int x = 0; x < overlap.width; ++x) {
+                        const float v = overlap.at(x, y, 0);
+                        sum += v;
+                        if (v > 0.0f && position.at(x, y, 3) != 0.0f) {
+                            lit += 1.0;
+                            litSum += v;
+                        }
+                    }
+                pixels += static_cast<double>(overlap.width) * overlap.height;
+            }
+        } catch (const Error& e) {
+            say("bench: no lights per pixel for configuration " + std::to_string(r.config.index) + ": " + e.what());
+            continue;
+        }
+        r.lpp = pixels > 0.0 ? sum / pixels : std::nan("");
+        r.lppLit = lit > 0.0 ? litSum / lit : 0.0;
+    }
+}
+
+// Frames an interrupted run measured (bench --resume): kept in `results`,
+// not measured again.
+struct ResumedFrames {
+    std::set<std::pair<int, int>> measured;  // (grid index, sample) with a "frame" row
+    long long seqBase = 0;                   // the next sequence number after the kept ones
+};
+
+ResumedFrames keepResumedFrames(const BenchResults& resumed, BenchResults& results, int frames,
+                                const BenchProgress& say) {
+    ResumedFrames kept;
+    if (resumed.knobAxes != results.knobAxes)
+        throw Error("--resume: the CSV sweeps other knobs (" + BenchResults::csvHeader(resumed.knobAxes) + ")");
+    for (const auto& c : resumed.configs) {
+        const BenchConfigResult* mine = results.find(c.config.index);
+        if (!mine) continue;  // another shard's
+        if (mine->config.size() != c.config.size() || mine->config.lights != c.config.lights ||
+            mine->config.knobValues != c.config.knobValues)
+            throw Error("--resume: configuration " + std::to_string(c.config.index) +
+                        " of the CSV is not this grid's (another run's CSV?)");
+    }
+    for (const auto& sample : resumed.samples)
+        if (sample.series == PassTimer::kFrameSeries && sample.sample < frames && results.find(sample.config))
+            kept.measured.insert({sample.config, sample.sample});
+    for (const auto& sample : resumed.samples)
+        if (kept.measured.count({sample.config, sample.sample})) {
+            results.samples.push_back(sample);
+            kept.seqBase = std::max(kept.seqBase, sample.seq + 1);
+        }
+    say("bench: resuming: " + std::to_string(kept.measured.size()) + " counted frame(s) kept from the CSV");
+    return kept;
+}
+
+}  // namespace
+
+// What the run was, for the CSV's and the record's settings.
+BenchFields BenchRunner::settingsOf(const CameraPath& path, double seconds) const {
+    BenchFields settings = {
+        {"scene", scene_.source},
+        {"preset", o_.run.presetSpec()},
+        {"frames", std::to_string(o_.frames)},
+        {"warmup_per_switch", std::to_string(o_.warmup)},
+        {"block", std::to_string(o_.block)},
+        {"lights", o_.grid.lights.empty()  ? "the scene's own"
+                   : o_.keepSceneLights ? "generated, added to the scene's " + std::to_string(scene_.lights.size())
+                                        : "generated"},
+        {"seed", std::to_string(o_.seed)},
+        {"light_radius", shortest(radius_)},
+        {"radius_threshold", shortest(threshold_)},
+        {"camera", o_.walkthrough ? "walkthrough (camera.path)" : o_.orbit > 0 ? "orbit " + std::to_string(o_.orbit) : "still"},
+        {"lpp_poses", o_.lpp ? std::to_string(path.moving() ? o_.lppPoses : 1) : "0"},
+        {"shard", std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count)},
+        {"grid_configurations", std::to_string(gridSize_)},
+        {"seconds", std::to_string(seconds)},
+    };
+    std::string sets;
+    for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
+    settings.emplace_back("set", sets);
+    return settings;
+}
+
+// The run in named stages: plan (results, light lists, a session per size,
+// AOV's cost), lights per pixel, resumed frames, the timed rounds, settings.
 BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& stream, const BenchResults* resumed) {
     auto say = [&](const std::string& line) {
         if (progress) progress(line);
@@ -159,31 +294,8 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     const auto start = Clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-    BenchResults results;
-    for (const auto& a : o_.grid.knobAxes) results.knobAxes.push_back(a.knob);
-    for (const auto& c : configs_) {
-        BenchConfigResult r;
-        r.config = c;
-        r.lpp = r.lppLit = std::nan("");
-        results.configs.push_back(r);
-    }
-
-    // Generated lights per light count, made once (a longer list from the
-    // same seed starts with the shorter one).
-    std::map<int, std::vector<Light>> lightLists;
-    if (!o_.grid.lights.empty())
-        for (const auto& c : configs_) {
-            if (lightLists.count(c.lights)) continue;
-            LightGeneratorSettings g;
-            g.count = c.lights;
-            g.seed = o_.seed;
-            g.radius = radius_;
-            g.threshold = threshold_;
-            std::vector<Light> lights = o_.keepSceneLights ? scene_.lights : std::vector<Light>{};
-            for (auto& l : generateLights(scene_.bounds(), g)) lights.push_back(std::move(l));
-            lightLists.emplace(c.lights, std::move(lights));
-        }
-
+    BenchResults results = emptyResults(o_.grid, configs_);
+    const std::map<int, std::vector<Light>> lightLists = generateLightLists(o_, configs_, scene_, radius_, threshold_);
     // A session per size, all in this context, each with the scene uploaded once.
     std::map<std::string, SizeSession> sessions;
     Camera base = o_.run.camera(scene_);
@@ -240,72 +352,26 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
                                      " of " + std::to_string(gridSize_) + ")") +
         " x " + std::to_string(o_.frames) + " frame(s), in blocks of " + std::to_string(o_.block) + ", " +
         std::to_string(o_.warmup) + " warm-up frame(s) per switch");
-    // Lights per pixel, untimed: the counting shader on its own frames.
     if (o_.lpp) {
         say("bench: lights per pixel (untimed frames)");
-        const int poses = path.moving() ? o_.lppPoses : 1;
-        // gbuffer.view_position's alpha is 0 where no surface is: sky and
-        // background count towards LPP (a full-screen light's shader runs
-        // there too) but not towards LPP lit.
-        const FrameRequest counting{{"lighting.overlap", "gbuffer.view_position"}};
-        for (size_t i = 0; i < results.configs.size(); ++i) {
-            BenchConfigResult& r = results.configs[i];
-            double sum = 0.0, pixels = 0.0, lit = 0.0, litSum = 0.0;
-            // A strategy that cannot count (a new one, say) costs its LPP, not the run.
-            try {
-                for (int p = 0; p < poses; ++p) {
-                    const int k = poses > 1 ? static_cast<int>(std::lround(static_cast<double>(p) * (o_.frames - 1) / (poses - 1))) : 0;
-                    RenderSession& session = runner.capture(static_cast<int>(i), k, counting);
-                    const FloatImage overlap = session.readRaw("lighting.overlap");
-                    const FloatImage position = session.readRaw("gbuffer.view_position");
-                    for (int y = 0; y < overlap.height; ++y)
-                        for (int x = 0; x < overlap.width; ++x) {
-                            const float v = overlap.at(x, y, 0);
-                            sum += v;
-                            if (v > 0.0f && position.at(x, y, 3) != 0.0f) {
-                                lit += 1.0;
-                                litSum += v;
-                            }
-                        }
-                    pixels += static_cast<double>(overlap.width) * overlap.height;
-                }
-            } catch (const Error& e) {
-                say("bench: no lights per pixel for configuration " + std::to_string(r.config.index) + ": " + e.what());
-                continue;
-            }
-            r.lpp = pixels > 0.0 ? sum / pixels : std::nan("");
-            r.lppLit = lit > 0.0 ? litSum / lit : 0.0;
-        }
+        measureLightsPerPixel(runner, results, o_.frames, path.moving() ? o_.lppPoses : 1, say);
     }
+    const ResumedFrames kept = resumed ? keepResumedFrames(*resumed, results, o_.frames, say) : ResumedFrames{};
+    const std::vector<BenchSample> keptSamples = results.samples;
+    if (stream && !keptSamples.empty()) stream(results, keptSamples);
+    timeRounds(runner, results, kept.measured, kept.seqBase, stream, say);
+    results.settings = settingsOf(path, elapsed());
+    for (const auto& [size, s] : sessions)
+        if (s.session) results.shaders.add(s.session->shaders().compiled());
+    say("bench: done in " + duration(elapsed()));
+    return results;
+}
 
-    // Frames an interrupted run measured (bench --resume): kept, not measured again.
-    std::set<std::pair<int, int>> measured;  // (grid index, sample) with a "frame" row
-    long long seqBase = 0;
-    if (resumed) {
-        if (resumed->knobAxes != results.knobAxes)
-            throw Error("--resume: the CSV sweeps other knobs (" + BenchResults::csvHeader(resumed->knobAxes) + ")");
-        for (const auto& c : resumed->configs) {
-            const BenchConfigResult* mine = results.find(c.config.index);
-            if (!mine) continue;  // another shard's
-            if (mine->config.size() != c.config.size() || mine->config.lights != c.config.lights ||
-                mine->config.knobValues != c.config.knobValues)
-                throw Error("--resume: configuration " + std::to_string(c.config.index) +
-                            " of the CSV is not this grid's (another run's CSV?)");
-        }
-        for (const auto& sample : resumed->samples)
-            if (sample.series == PassTimer::kFrameSeries && sample.sample < o_.frames && results.find(sample.config))
-                measured.insert({sample.config, sample.sample});
-        for (const auto& sample : resumed->samples)
-            if (measured.count({sample.config, sample.sample})) {
-                results.samples.push_back(sample);
-                seqBase = std::max(seqBase, sample.seq + 1);
-            }
-        say("bench: resuming: " + std::to_string(measured.size()) + " counted frame(s) kept from the CSV");
-    }
-    const std::vector<BenchSample> kept = results.samples;
-    if (stream && !kept.empty()) stream(results, kept);
-
-    // The timed rounds. The runner numbers configurations by position; the results by grid index.
+// The timed rounds, streamed as they come; the runner numbers configurations
+// by position, the results by grid index (after the kept frames' sequence).
+void BenchRunner::timeRounds(ConfigurationRunner& runner, BenchResults& results,
+                             const std::set<std::pair<int, int>>& measured, long long seqBase, const BenchStream& stream,
+                             const BenchProgress& say) const {
     auto toGrid = [&](std::vector<BenchSample> samples) {
         for (auto& sample : samples) {
             sample.config = configs_[static_cast<size_t>(sample.config)].index;
@@ -323,32 +389,6 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
         return a.config != b.config ? a.config < b.config : a.sample < b.sample;
     });
     for (auto& [i, stats] : timings.stats) results.configs[static_cast<size_t>(i)].stats = std::move(stats);
-
-    results.settings = {
-        {"scene", scene_.source},
-        {"preset", o_.run.presetSpec()},
-        {"frames", std::to_string(o_.frames)},
-        {"warmup_per_switch", std::to_string(o_.warmup)},
-        {"block", std::to_string(o_.block)},
-        {"lights", o_.grid.lights.empty()  ? "the scene's own"
-                   : o_.keepSceneLights ? "generated, added to the scene's " + std::to_string(scene_.lights.size())
-                                        : "generated"},
-        {"seed", std::to_string(o_.seed)},
-        {"light_radius", shortest(radius_)},
-        {"radius_threshold", shortest(threshold_)},
-        {"camera", o_.walkthrough ? "walkthrough (camera.path)" : o_.orbit > 0 ? "orbit " + std::to_string(o_.orbit) : "still"},
-        {"lpp_poses", o_.lpp ? std::to_string(path.moving() ? o_.lppPoses : 1) : "0"},
-        {"shard", std::to_string(o_.shard.index) + "/" + std::to_string(o_.shard.count)},
-        {"grid_configurations", std::to_string(gridSize_)},
-        {"seconds", std::to_string(elapsed())},
-    };
-    std::string sets;
-    for (const auto& s : o_.run.sets) sets += (sets.empty() ? "" : " ") + s;
-    results.settings.emplace_back("set", sets);
-    for (const auto& [size, s] : sessions)
-        if (s.session) results.shaders.add(s.session->shaders().compiled());
-    say("bench: done in " + duration(elapsed()));
-    return results;
 }
 
 }  // namespace dw

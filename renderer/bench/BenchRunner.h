@@ -16,6 +16,8 @@
 // counting variant costs more than plain shading).
 #include <cstdint>
 #include <functional>
+#include <set>
+#include <utility>
 #include <string>
 
 #include "renderer/RunConfig.h"
@@ -26,6 +28,9 @@
 #include "renderer/scene/Scene.h"
 
 namespace dw {
+
+class CameraPath;
+class ConfigurationRunner;
 
 struct BenchOptions {
     RunConfig run;     // scene, preset, --set: every configuration starts from them
@@ -80,6 +85,11 @@ public:
     void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
 
 private:
+    // run()'s stages (BenchRunner.cpp).
+    void timeRounds(ConfigurationRunner& runner, BenchResults& results, const std::set<std::pair<int, int>>& measured,
+                    long long seqBase, const BenchStream& stream, const BenchProgress& say) const;
+    BenchFields settingsOf(const CameraPath& path, double seconds) const;
+
     std::function<void(const std::string&)> costWarning_;
     BenchOptions o_;
     Scene scene_;
