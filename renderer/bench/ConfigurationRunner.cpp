@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <set>
 
 #include "renderer/Error.h"
@@ -72,161 +73,237 @@ double ConfigurationRunner::timeLeft(const std::vector<double>& roundSeconds, co
     return sum + (measured > 0 ? known / measured * unknownRounds : 0.0);
 }
 
-RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::function<std::string(int)>& describe,
-                                           const Progress& progress, const Stream& stream,
-                                           const std::function<bool(int, int)>& skip) {
-    auto say = [&](const std::string& line) {
-        if (progress) progress(line);
-    };
-    const auto start = Clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-    const int configs = plan_.configurations;
-    const int roundCount = rounds();
-    auto skipped = [&](int c, int k) { return skip && skip(c, k); };
-
+// What a measurement in progress holds between steps.
+struct ConfigurationRunner::Measurement {
+    std::string name;
+    std::function<std::string(int)> describe;
+    Progress progress;
+    Stream stream;
+    std::function<bool(int, int)> skip;
+    Clock::time_point start = Clock::now();
+    int roundCount = 0;
     // Every session once, to keep every counted frame's samples until the end.
     std::map<RenderSession*, SessionFrames> sessions;
-    std::vector<RenderSession*> sessionOf(static_cast<size_t>(configs), nullptr);
-    for (int c = 0; c < configs; ++c) sessionOf[static_cast<size_t>(c)] = &select_(c);
-    const size_t perSession = static_cast<size_t>(configs) * static_cast<size_t>(roundCount * plan_.warmup + plan_.frames);
-    for (RenderSession* s : sessionOf) {
-        sessions[s];
-        s->pipeline().timer().setHistoryLength(std::max({PassTimer::kHistory, perSession + 64, s->pipeline().timer().historyLength()}));
-    }
-
     RunnerTimings out;
     std::map<int, std::map<std::string, int>> rank;  // config -> series -> pipeline order
     std::map<int, std::set<std::string>> seriesSeen;
-    auto updateRank = [&](int config, const FrameReport& report) {
-        std::map<std::string, int>& order = rank[config];
+    std::map<int, FrameReport> lastReport;
+    // Wall seconds per round of each configuration (its warm-up and block), for the time left.
+    std::vector<double> roundSeconds;
+    std::vector<int> roundsLeft;
+    long long total = 0, seq = 0;
+    int previous = -1;
+    double lastSaid = 0.0;
+    int round = 0, config = 0;  // the next block to render
+
+    double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
+    bool skipped(int c, int k) const { return skip && skip(c, k); }
+    void say(const std::string& line) const {
+        if (progress) progress(line);
+    }
+    // The configuration's series ranked in the pipeline order of its last frame.
+    void updateRank(int c, const FrameReport& report) {
+        std::map<std::string, int>& order = rank[c];
         order.clear();
         for (const PassRecord& rec : report.passes) {
             if (!rec.ran) continue;
             order.emplace(rec.name, static_cast<int>(order.size()));
-            for (const auto& s : seriesSeen[config])
-                if (s.rfind(rec.name + "/", 0) == 0) order.emplace(s, static_cast<int>(order.size()));
+            for (const auto& series : seriesSeen[c])
+                if (series.rfind(rec.name + "/", 0) == 0) order.emplace(series, static_cast<int>(order.size()));
         }
         order.emplace(PassTimer::kFrameSeries, 1 << 20);
-    };
-    std::map<int, FrameReport> lastReport;
-    auto before = [&](const BenchSample& a, const BenchSample& b) {
+    }
+    bool before(const BenchSample& a, const BenchSample& b) {
         if (a.config != b.config) return a.config < b.config;
         if (a.sample != b.sample) return a.sample < b.sample;
         const int ia = rankOf(rank[a.config], a.series), ib = rankOf(rank[b.config], b.series);
         return ia != ib ? ia < ib : a.series < b.series;
-    };
-    // Moves the finished counted frames' samples out of the timers.
-    auto harvest = [&](bool wait) {
-        std::vector<BenchSample> fresh;
-        for (auto& [session, frames] : sessions) {
-            PassTimer& timer = session->pipeline().timer();
-            timer.collect(wait);
-            std::uint64_t newest = frames.harvestedUpTo;
-            bool any = false;
-            for (const auto& series : timer.series()) {
-                for (auto it = series.samples.rbegin(); it != series.samples.rend(); ++it) {
-                    const TimingSample& t = *it;
-                    if (frames.any && t.frame <= frames.harvestedUpTo) break;
-                    newest = any ? std::max(newest, t.frame) : t.frame;
-                    any = true;
-                    auto c = frames.counted.find(t.frame);
-                    if (c == frames.counted.end()) continue;
-                    BenchSample b;
-                    b.config = c->second.config;
-                    b.sample = c->second.sample;
-                    b.seq = c->second.seq;
-                    b.frame = t.frame;
-                    b.series = series.name;
-                    // To the CSV's 0.1 µs, so that the tables of this run and of
-                    // `bench merge` over its CSV are made from the same numbers.
-                    b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
-                    b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
-                    seriesSeen[b.config].insert(b.series);
-                    fresh.push_back(std::move(b));
-                }
-            }
-            if (any) {
-                frames.harvestedUpTo = std::max(frames.harvestedUpTo, newest);
-                frames.any = true;
-            }
-        }
-        for (auto& [config, report] : lastReport) updateRank(config, report);
-        std::sort(fresh.begin(), fresh.end(), before);
-        if (stream && !fresh.empty()) stream(fresh);
-        for (auto& s : fresh) out.samples.push_back(std::move(s));
-    };
+    }
+    void sortSamples(std::vector<BenchSample>& samples) {
+        std::sort(samples.begin(), samples.end(), [this](const BenchSample& a, const BenchSample& b) { return before(a, b); });
+    }
+    void harvest(bool wait);
+    void harvestSession(RenderSession& session, SessionFrames& frames, bool wait, std::vector<BenchSample>& fresh);
+};
 
-    // Wall seconds per round of each configuration (its warm-up and block), for the time left.
-    std::vector<double> roundSeconds(static_cast<size_t>(configs), -1.0);
-    std::vector<int> roundsLeft(static_cast<size_t>(configs), 0);
-    long long total = 0;
+// One session's finished counted frames, moved out of its timer into `fresh`.
+void ConfigurationRunner::Measurement::harvestSession(RenderSession& session, SessionFrames& frames, bool wait,
+                                                      std::vector<BenchSample>& fresh) {
+    PassTimer& timer = session.pipeline().timer();
+    timer.collect(wait);
+    std::uint64_t newest = frames.harvestedUpTo;
+    bool any = false;
+    for (const auto& series : timer.series()) {
+        for (auto it = series.samples.rbegin(); it != series.samples.rend(); ++it) {
+            const TimingSample& t = *it;
+            if (frames.any && t.frame <= frames.harvestedUpTo) break;
+            newest = any ? std::max(newest, t.frame) : t.frame;
+            any = true;
+            auto c = frames.counted.find(t.frame);
+            if (c == frames.counted.end()) continue;
+            BenchSample b;
+            b.config = c->second.config;
+            b.sample = c->second.sample;
+            b.seq = c->second.seq;
+            b.frame = t.frame;
+            b.series = series.name;
+            // To the CSV's 0.1 µs, so that the tables of this run and of
+            // `bench merge` over its CSV are made from the same numbers.
+            b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
+            b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
+            seriesSeen[b.config].insert(b.series);
+            fresh.push_back(std::move(b));
+        }
+    }
+    if (any) {
+        frames.harvestedUpTo = std::max(frames.harvestedUpTo, newest);
+        frames.any = true;
+    }
+}
+
+// Moves the finished counted frames' samples out of the timers (and to the stream).
+void ConfigurationRunner::Measurement::harvest(bool wait) {
+    std::vector<BenchSample> fresh;
+    for (auto& [session, frames] : sessions) harvestSession(*session, frames, wait, fresh);
+    for (auto& [c, report] : lastReport) updateRank(c, report);
+    sortSamples(fresh);
+    if (stream && !fresh.empty()) stream(fresh);
+    for (auto& sample : fresh) out.samples.push_back(std::move(sample));
+}
+
+ConfigurationRunner::~ConfigurationRunner() = default;
+ConfigurationRunner::ConfigurationRunner(ConfigurationRunner&&) noexcept = default;
+ConfigurationRunner& ConfigurationRunner::operator=(ConfigurationRunner&&) noexcept = default;
+
+void ConfigurationRunner::begin(const std::string& name, const std::function<std::string(int)>& describe,
+                                const Progress& progress, const Stream& stream,
+                                const std::function<bool(int, int)>& skip) {
+    m_ = std::make_unique<Measurement>();
+    Measurement& m = *m_;
+    m.name = name;
+    m.describe = describe;
+    m.progress = progress;
+    m.stream = stream;
+    m.skip = skip;
+    m.roundCount = rounds();
+    const int configs = plan_.configurations;
+    std::vector<RenderSession*> sessionOf(static_cast<size_t>(configs), nullptr);
+    for (int c = 0; c < configs; ++c) sessionOf[static_cast<size_t>(c)] = &select_(c);
+    const size_t perSession = static_cast<size_t>(configs) * static_cast<size_t>(m.roundCount * plan_.warmup + plan_.frames);
+    for (RenderSession* s : sessionOf) {
+        m.sessions[s];
+        s->pipeline().timer().setHistoryLength(std::max({PassTimer::kHistory, perSession + 64, s->pipeline().timer().historyLength()}));
+    }
+    m.roundSeconds.assign(static_cast<size_t>(configs), -1.0);
+    m.roundsLeft.assign(static_cast<size_t>(configs), 0);
     for (int c = 0; c < configs; ++c)
-        for (int r = 0; r < roundCount; ++r) {
+        for (int r = 0; r < m.roundCount; ++r) {
             bool any = false;
             for (int k = r * plan_.block; k < std::min(plan_.frames, (r + 1) * plan_.block); ++k)
-                if (!skipped(c, k)) {
+                if (!m.skipped(c, k)) {
                     any = true;
-                    ++total;
+                    ++m.total;
                 }
-            roundsLeft[static_cast<size_t>(c)] += any ? 1 : 0;
+            m.roundsLeft[static_cast<size_t>(c)] += any ? 1 : 0;
         }
+}
 
-    long long seq = 0;
-    int previous = -1;
-    double lastSaid = 0.0;
-    const FrameRequest request;  // the final image, as a user would see it
-    for (int round = 0; round < roundCount; ++round) {
-        for (int c = 0; c < configs; ++c) {
-            const int first = round * plan_.block, count = std::min(plan_.block, plan_.frames - first);
-            std::vector<int> pending;
-            for (int j = 0; j < count; ++j)
-                if (!skipped(c, first + j)) pending.push_back(first + j);
-            if (pending.empty()) continue;
-            const auto roundStart = Clock::now();
-            RenderSession& session = select_(c);
-            SessionFrames& frames = sessions.at(&session);
-            // Warm-up after a switch (every block when there is more than one configuration).
-            if (c != previous)
-                for (int w = 0; w < plan_.warmup; ++w) {
-                    pose_(session, c, pending.front());
-                    session.render(request);
-                }
-            previous = c;
-            for (int k : pending) {
-                pose_(session, c, k);
-                FrameReport report = session.render(request);
-                frames.counted[report.frameIndex] = {c, k, seq++};
-                lastReport[c] = std::move(report);
-            }
-            roundSeconds[static_cast<size_t>(c)] = std::chrono::duration<double>(Clock::now() - roundStart).count();
-            --roundsLeft[static_cast<size_t>(c)];
-            if (elapsed() - lastSaid > 2.0) {
-                lastSaid = elapsed();
-                // Configurations not timed yet count at the mean of those timed: say how many, since
-                // a slow one among them (fullscreen at 10 000 lights) makes the estimate low.
-                int untimed = 0;
-                for (int k = 0; k < configs; ++k)
-                    untimed += roundSeconds[static_cast<size_t>(k)] < 0.0 && roundsLeft[static_cast<size_t>(k)] > 0;
-                say(name + ": frame " + std::to_string(seq) + "/" + std::to_string(total) + " (round " +
-                    std::to_string(round + 1) + "/" + std::to_string(roundCount) + "), " + duration(lastSaid) +
-                    " elapsed, about " + duration(timeLeft(roundSeconds, roundsLeft)) + " left" +
-                    (untimed > 0 ? " (" + std::to_string(untimed) + " of " + std::to_string(configs) +
-                                       " configurations not timed yet)"
-                                 : std::string()) +
-                    "; now " + (describe ? describe(c) : std::to_string(c)));
-            }
+bool ConfigurationRunner::step() {
+    if (!m_) throw Error("ConfigurationRunner::step before begin");
+    Measurement& m = *m_;
+    const int configs = plan_.configurations;
+    if (configs < 1) return false;
+    while (m.round < m.roundCount) {
+        const int c = m.config;
+        if (++m.config == configs) m.config = 0;
+        const bool lastOfRound = m.config == 0;
+        const bool rendered = renderBlock(m.round, c);
+        if (lastOfRound) {
+            if (m.stream) m.harvest(false);
+            ++m.round;
         }
-        if (stream) harvest(false);
+        if (rendered) return m.round < m.roundCount;
     }
-    harvest(true);
+    return false;
+}
+
+double ConfigurationRunner::fractionDone() const {
+    return m_ && m_->total > 0 ? static_cast<double>(m_->seq) / static_cast<double>(m_->total) : 0.0;
+}
+
+// Configuration `c`'s block of round `round`: its warm-up after a switch,
+// then its counted frames; false when every frame of it is skipped.
+bool ConfigurationRunner::renderBlock(int round, int c) {
+    Measurement& m = *m_;
+    const int first = round * plan_.block, count = std::min(plan_.block, plan_.frames - first);
+    std::vector<int> pending;
+    for (int j = 0; j < count; ++j)
+        if (!m.skipped(c, first + j)) pending.push_back(first + j);
+    if (pending.empty()) return false;
+    const FrameRequest request;  // the final image, as a user would see it
+    const auto roundStart = Clock::now();
+    RenderSession& session = select_(c);
+    SessionFrames& frames = m.sessions.at(&session);
+    // Warm-up after a switch (every block when there is more than one configuration).
+    if (c != m.previous)
+        for (int w = 0; w < plan_.warmup; ++w) {
+            pose_(session, c, pending.front());
+            session.render(request);
+        }
+    m.previous = c;
+    for (int k : pending) {
+        pose_(session, c, k);
+        FrameReport report = session.render(request);
+        frames.counted[report.frameIndex] = {c, k, m.seq++};
+        m.lastReport[c] = std::move(report);
+    }
+    m.roundSeconds[static_cast<size_t>(c)] = std::chrono::duration<double>(Clock::now() - roundStart).count();
+    --m.roundsLeft[static_cast<size_t>(c)];
+    if (m.elapsed() - m.lastSaid > 2.0) sayProgress(round, c);
+    return true;
+}
+
+void ConfigurationRunner::sayProgress(int round, int c) {
+    Measurement& m = *m_;
+    const int configs = plan_.configurations;
+    m.lastSaid = m.elapsed();
+    // Configurations not timed yet count at the mean of those timed: say how many, since
+    // a slow one among them (fullscreen at 10 000 lights) makes the estimate low.
+    int untimed = 0;
+    for (int k = 0; k < configs; ++k)
+        untimed += m.roundSeconds[static_cast<size_t>(k)] < 0.0 && m.roundsLeft[static_cast<size_t>(k)] > 0;
+    m.say(m.name + ": frame " + std::to_string(m.seq) + "/" + std::to_string(m.total) + " (round " +
+          std::to_string(round + 1) + "/" + std::to_string(m.roundCount) + "), " + duration(m.lastSaid) +
+          " elapsed, about " + duration(timeLeft(m.roundSeconds, m.roundsLeft)) + " left" +
+          (untimed > 0 ? " (" + std::to_string(untimed) + " of " + std::to_string(configs) +
+                             " configurations not timed yet)"
+                       : std::string()) +
+          "; now " + (m.describe ? m.describe(c) : std::to_string(c)));
+}
+
+RunnerTimings ConfigurationRunner::finish() {
+    if (!m_) throw Error("ConfigurationRunner::finish before begin");
+    Measurement& m = *m_;
+    m.harvest(true);
     // Every frame's series in its configuration's final pipeline order.
-    for (auto& [config, report] : lastReport) updateRank(config, report);
-    std::sort(out.samples.begin(), out.samples.end(), before);
-    for (auto& [config, report] : lastReport)
+    for (auto& [config, report] : m.lastReport) m.updateRank(config, report);
+    m.sortSamples(m.out.samples);
+    for (auto& [config, report] : m.lastReport)
         for (const PassRecord& rec : report.passes)
-            if (rec.ran && !rec.stats.empty()) out.stats[config][rec.name] = rec.stats;
-    out.seconds = elapsed();
+            if (rec.ran && !rec.stats.empty()) m.out.stats[config][rec.name] = rec.stats;
+    m.out.seconds = m.elapsed();
+    RunnerTimings out = std::move(m.out);
+    m_.reset();
     return out;
+}
+
+RunnerTimings ConfigurationRunner::measure(const std::string& name, const std::function<std::string(int)>& describe,
+                                           const Progress& progress, const Stream& stream,
+                                           const std::function<bool(int, int)>& skip) {
+    begin(name, describe, progress, stream, skip);
+    while (step()) {
+    }
+    return finish();
 }
 
 }  // namespace dw

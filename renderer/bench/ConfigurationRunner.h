@@ -18,6 +18,7 @@
 // counts. Needs a current GL 4.5 context for measure/capture.
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,9 +65,25 @@ public:
     // The timed rounds. `name` opens the progress lines ("bench", "tradeoff");
     // `describe(config)` says which configuration is running. `skip(config,
     // sample)` true leaves a counted frame out (already measured: a resumed run).
+    // The same as begin(), step() until it returns false, then finish().
     RunnerTimings measure(const std::string& name, const std::function<std::string(int)>& describe,
                           const Progress& progress = {}, const Stream& stream = {},
                           const std::function<bool(int, int)>& skip = {});
+
+    // The timed rounds a step at a time, for a caller with a loop of its own
+    // (a window draws between steps): begin() plans (measure's arguments),
+    // each step() renders the next configuration's block of a round (its
+    // warm-up after a switch, then its counted frames; streamed after each
+    // round) and returns whether another step remains; finish() waits for
+    // the last timestamps and returns what measure() returns. Throws
+    // dw::Error when step() or finish() come before begin().
+    void begin(const std::string& name, const std::function<std::string(int)>& describe,
+               const Progress& progress = {}, const Stream& stream = {},
+               const std::function<bool(int, int)>& skip = {});
+    bool step();
+    RunnerTimings finish();
+    // Counted frames rendered over the frames to render (0 before begin()).
+    double fractionDone() const;
 
     // Seconds left: each configuration's measured wall seconds per round
     // (negative: not measured yet) times its rounds left; the ones not
@@ -77,10 +94,19 @@ public:
     // for `request`'s outputs; returns the session to read them from.
     RenderSession& capture(int config, int sample, const FrameRequest& request);
 
+    ~ConfigurationRunner();
+    ConfigurationRunner(ConfigurationRunner&&) noexcept;
+    ConfigurationRunner& operator=(ConfigurationRunner&&) noexcept;
+
 private:
+    struct Measurement;
+    bool renderBlock(int round, int config);
+    void sayProgress(int round, int config);
+
     RunnerPlan plan_;
     Select select_;
     Pose pose_;
+    std::unique_ptr<Measurement> m_;  // between begin() and finish()
 };
 
 }  // namespace dw
