@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <random>
+#include <memory>
 
 #include "renderer/Error.h"
 #include "renderer/metrics/Bootstrap.h"
@@ -21,19 +21,6 @@ std::string number(double v, bool integer) {
     char t[32];
     std::snprintf(t, sizeof(t), "%.6g", v);
     return t;
-}
-
-// The median's 95% percentile-bootstrap interval (seeded).
-std::pair<double, double> medianInterval(const std::vector<double>& v) {
-    if (v.size() < 2) return {kNaN, kNaN};
-    std::mt19937_64 rng(12345);
-    std::vector<double> r(v.size()), medians;
-    for (int i = 0; i < 1000; ++i) {
-        for (auto& x : r) x = v[static_cast<size_t>(rng() % v.size())];
-        medians.push_back(median(r));
-    }
-    std::sort(medians.begin(), medians.end());
-    return {medians[25], medians[974]};
 }
 
 }  // namespace
@@ -71,52 +58,83 @@ void QuickSweep::start(const KnobRegistry& knobs, const std::string& knob, Float
     baseline_ = std::move(baseline);
     baselineName_ = std::move(baselineName);
     framesPerValue_ = std::max(framesPerValue, 1);
-    total_ = static_cast<int>(values_.size()) * framesPerValue_;
-    next_ = 0;
+    runner_.reset();
+    session_ = nullptr;
     flip_.assign(values_.size(), kNaN);
-    frameValue_.clear();
     error_.clear();
     table_ = TradeoffTable{};
     done_ = false;
     running_ = !values_.empty();
 }
 
+// The timed rounds of bench and tradeoff (ConfigurationRunner), one value a
+// configuration: every value a frame in turn, a warm-up frame after each
+// switch, the camera as the session holds it.
+void QuickSweep::beginRunner(RenderSession& session) {
+    session_ = &session;
+    RunnerPlan plan;
+    plan.configurations = static_cast<int>(values_.size());
+    plan.frames = framesPerValue_;
+    plan.warmup = 1;
+    plan.block = 1;
+    runner_ = std::make_unique<ConfigurationRunner>(
+        plan,
+        [this](int v) -> RenderSession& {
+            session_->knobs().setFromString(knob_, values_[static_cast<size_t>(v)]);
+            selected_ = v;
+            return *session_;
+        },
+        [](RenderSession&, int, int) {});
+    runner_->begin("quick sweep", [this](int v) { return knob_ + "=" + values_[static_cast<size_t>(v)]; });
+}
+
+// FLIP of the value's image against the baseline, from its first counted frame.
+void QuickSweep::measureFlip(RenderSession& session, size_t v) {
+    if (!std::isnan(flip_[v])) return;
+    const FloatImage image = session.readRaw("final");
+    if (image.width != baseline_.width || image.height != baseline_.height)
+        throw Error("the view changed size during the sweep");
+    const ImageComparison c = ImageComparison::measure(baseline_, image, ComparisonSettings{}, baselineName_, values_[v]);
+    flip_[v] = c.flip ? c.flip->mean : kNaN;
+}
+
 bool QuickSweep::step(RenderSession& session) {
     if (!running_) return false;
+    if (session_ && session_ != &session) {
+        error_ = "the quick sweep of " + knob_ + " was started on another session";
+        running_ = false;
+        return false;
+    }
     KnobRegistry& knobs = session.knobs();
     const int id = *knobs.find(knob_);
     const double saved = knobs.value(id);
-    // Round-robin: every value once, then every value again.
-    const size_t v = static_cast<size_t>(next_) % values_.size();
+    bool more = false;
     try {
-        knobs.setFromString(knob_, values_[v]);
-        const FrameReport r = session.pipeline().render(session.camera(), FrameRequest{{"final"}});
-        frameValue_[r.frameIndex] = v;
-        if (std::isnan(flip_[v])) {
-            const FloatImage image = session.readRaw("final");
-            if (image.width != baseline_.width || image.height != baseline_.height)
-                throw Error("the view changed size during the sweep");
-            const ImageComparison c = ImageComparison::measure(baseline_, image, ComparisonSettings{}, baselineName_, values_[v]);
-            flip_[v] = c.flip ? c.flip->mean : kNaN;
-        }
+        if (!runner_) beginRunner(session);
+        selected_ = -1;
+        more = runner_->step();
+        if (selected_ >= 0) measureFlip(session, static_cast<size_t>(selected_));
     } catch (const std::exception& e) {
-        error_ = knob_ + "=" + values_[v] + ": " + e.what();
+        error_ = knob_ + (selected_ >= 0 ? "=" + values_[static_cast<size_t>(selected_)] : std::string()) + ": " + e.what();
         running_ = false;
     }
     knobs.set(id, saved);
     if (!running_) return false;
-    if (++next_ >= total_) finish(session);
+    if (!more) finish();
     return running_;
 }
 
-void QuickSweep::finish(RenderSession& session) {
+double QuickSweep::progress() const {
+    if (done_) return 1.0;
+    return runner_ ? runner_->fractionDone() : 0.0;
+}
+
+void QuickSweep::finish() {
     running_ = false;
-    PassTimer& timer = session.pipeline().timer();
-    timer.collect(true);
+    const RunnerTimings timings = runner_->finish();
     std::vector<std::vector<double>> ms(values_.size());
-    if (const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries))
-        for (const auto& s : total->samples)
-            if (const auto it = frameValue_.find(s.frame); it != frameValue_.end()) ms[it->second].push_back(s.gpuMs);
+    for (const auto& s : timings.samples)
+        if (s.series == PassTimer::kFrameSeries) ms[static_cast<size_t>(s.config)].push_back(s.gpuMs);
     table_.axes = {knob_};
     for (size_t i = 0; i < values_.size(); ++i) {
         TradeoffRow r;
@@ -128,8 +146,13 @@ void QuickSweep::finish(RenderSession& session) {
         r.error = flip_[i];
         r.errorLo = r.errorHi = kNaN;
         r.frames = static_cast<int>(ms[i].size());
-        r.frameGpuMs = ms[i].empty() ? kNaN : median(ms[i]);
-        std::tie(r.frameGpuMsLo, r.frameGpuMsHi) = medianInterval(ms[i]);
+        r.frameGpuMs = r.frameGpuMsLo = r.frameGpuMsHi = kNaN;
+        if (!ms[i].empty()) r.frameGpuMs = median(ms[i]);
+        if (ms[i].size() >= 2) {
+            const MedianInterval m = bootstrapMedian(ms[i], 2000, 12345 + i);
+            r.frameGpuMsLo = m.low;
+            r.frameGpuMsHi = m.high;
+        }
         table_.rows.push_back(r);
     }
     table_.markParetoFront();
