@@ -18,6 +18,7 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ComparisonGates.h"
 #include "renderer/metrics/ComparisonHeatMap.h"
+#include "renderer/metrics/ComparisonMemory.h"
 #include "renderer/metrics/HeatMap.h"
 #include "renderer/metrics/ImageComparison.h"
 
@@ -283,7 +284,7 @@ int compare(int argc, char** argv) {
         }
         std::tie(base.width, base.height) = size.value_or(std::pair{1280, 720});
         // Renders are held to the image memory budget as files are (RGBA read back).
-        if (const std::string why = CompareInputs::memoryRefusal(base.width, base.height, 4); !why.empty())
+        if (const std::string why = comparison_memory::refusal(base.width, base.height, 4); !why.empty())
             throw UsageError("--size " + std::to_string(base.width) + "x" + std::to_string(base.height) + ": " + why);
         base.frames = framesFlag.value_or(1);
         for (auto* side : {&inA, &inB}) {
@@ -367,7 +368,7 @@ int compare(int argc, char** argv) {
     }
     settings.hdr = a.hdr;
     // HDR-FLIP's exposures at once: as many as the image memory budget holds.
-    settings.flip.maxThreads = CompareInputs::flipThreadsWithin(a.image.width, a.image.height, a.image.channels);
+    settings.flip.maxThreads = comparison_memory::flipThreadsWithin(a.image.width, a.image.height, a.image.channels);
     const ImageComparison c = ImageComparison::measure(a.image, b.image, settings, a.label, b.label);
     std::vector<std::string> reasons;
     const Verdict verdict = gates.judge(c, reasons);

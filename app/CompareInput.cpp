@@ -10,6 +10,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/io/ImageLimits.h"
+#include "renderer/metrics/ComparisonMemory.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/FlameParticles.h"
@@ -26,45 +27,10 @@ bool CompareInputs::isHdrFile(const std::string& path) {
     return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
 }
 
-namespace {
-
-std::string megabytes(long double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.0Lf", bytes / (1024.0L * 1024.0L));
-    return text;
-}
-
-// The bytes comparing an image of `pixels` x `channels` takes with
-// `evaluations` FLIP evaluations at once (renderer/metrics/Flip).
-long double compareBytes(long double pixels, int channels, unsigned evaluations) {
-    return pixels * (CompareInputs::kBytesPerPixel + CompareInputs::kBytesPerChannel * channels +
-                     FlipParameters::kBytesPerEvaluation * evaluations);
-}
-
-}  // namespace
-
-std::string CompareInputs::memoryRefusal(int width, int height, int channels) {
-    const std::uint64_t limit = imageMemoryLimit();
-    const long double bytes = compareBytes(static_cast<long double>(width) * height, channels, 1);
-    if (bytes <= static_cast<long double>(limit)) return "";
-    return std::to_string(width) + " x " + std::to_string(height) + " pixels of " + std::to_string(channels) + " channel" +
-           (channels == 1 ? "" : "s") + ": comparing it takes about " + megabytes(bytes) +
-           " MB (both images, their differences, SSIM and FLIP), over the image memory limit of " +
-           std::to_string(limit / (1024 * 1024)) + " MB (set " + kImageLimitVariable + "=MB to raise it)";
-}
-
 void CompareInputs::checkMemory(const std::string& path) {
     const ImageShape shape = readImageShape(path);  // the header only
-    if (const std::string why = memoryRefusal(shape.width, shape.height, shape.channels); !why.empty())
+    if (const std::string why = comparison_memory::refusal(shape.width, shape.height, shape.channels); !why.empty())
         throw FileError(path, "the image is " + why);
-}
-
-unsigned CompareInputs::flipThreadsWithin(int width, int height, int channels) {
-    const long double limit = static_cast<long double>(imageMemoryLimit());
-    const long double pixels = static_cast<long double>(width) * height;
-    unsigned threads = 4;
-    while (threads > 1 && compareBytes(pixels, channels, threads) > limit) --threads;
-    return threads;
 }
 
 CompareImage CompareInputs::produce(const CompareInput& input) {
@@ -98,7 +64,11 @@ CompareImage CompareInputs::produce(const CompareInput& input) {
         std::fprintf(stderr, "compare: warning: side %s: %s\n", input.label.c_str(), w.c_str());
     FrameRequest request;
     request.outputs = {input.buffer};
-    for (int i = 0; i < input.run.warmup + input.run.frames; ++i) session_->render(request);
+    FrameReport last;
+    for (int i = 0; i < input.run.warmup + input.run.frames; ++i) last = session_->render(request);
+    // What a pass lost in the frame compared (the oit pass's fragments), as render says it.
+    for (const std::string& w : last.warnings())
+        std::fprintf(stderr, "compare: warning: side %s: %s\n", input.label.c_str(), w.c_str());
     out.hdr = input.buffer != "final";
     out.image = out.hdr ? session_->readRaw(input.buffer) : session_->readDisplay(input.buffer);
     out.describe = "render of " + session_->scene().name + ", " + input.buffer + ", " + std::to_string(input.run.width) +

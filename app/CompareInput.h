@@ -49,20 +49,10 @@ public:
     // Error for anything else (an unknown buffer, a knob value).
     CompareImage produce(const CompareInput& input);
 
-    // compare's memory is held to the image memory budget (DW_IMAGE_LIMIT_MB,
-    // renderer/io/ImageLimits): both images, their differences, SSIM and FLIP
-    // take kBytesPerPixel + kBytesPerChannel x channels a pixel, and each
-    // FLIP evaluation running at once FlipParameters::kBytesPerEvaluation
-    // (measured: docs/metrics.md, "Memory").
-    static constexpr double kBytesPerPixel = 4, kBytesPerChannel = 32;
-    // Why an image of this shape cannot be compared within the budget (one
-    // FLIP evaluation at a time), or "" when it can.
-    static std::string memoryRefusal(int width, int height, int channels);
-    // Throws FileError naming `path` and its size when memoryRefusal() says
-    // so for its shape, read from the header: nothing is decoded.
+    // Throws FileError naming `path` and its size when the image memory
+    // budget does not hold comparing it (renderer/metrics/ComparisonMemory),
+    // its shape read from the header: nothing is decoded.
     static void checkMemory(const std::string& path);
-    // How many HDR-FLIP exposures may run at once within the budget (1 to 4).
-    static unsigned flipThreadsWithin(int width, int height, int channels);
 
     // HDR by a file's extension: .exr, .hdr, .pfm.
     static bool isHdrFile(const std::string& path);

@@ -136,10 +136,13 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     PassTimer& timer = session.pipeline().timer();
     timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(run.warmup + run.frames)));
     std::uint64_t firstCounted = 0;
+    FrameReport report;
     for (int i = 0; i < run.warmup + run.frames; ++i) {
-        const FrameReport report = session.render(request);
+        report = session.render(request);
         if (i == run.warmup) firstCounted = report.frameIndex;
     }
+    // What a pass lost in the last frame (the oit pass's fragments), as render says it.
+    for (const std::string& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
     now.command = old.command;
     if (old.referenceAoRays) now.setReference(*old.referenceAoRays, old.referenceSeed);

@@ -29,6 +29,7 @@
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ImageComparison.h"
 #include "renderer/metrics/ComparisonHeatMap.h"
+#include "renderer/metrics/ComparisonMemory.h"
 
 namespace py = pybind11;
 
@@ -362,10 +363,21 @@ py::dict compareArrays(const py::array& reference, const py::array& test, bool h
     const double failThreshold = numberArg(failObject, "compare: fail_threshold", limits::kThreshold, "compare --fail");
     if (errorMap && !isFloatFormat(*errorMap))
         throw Error("error_map writes float maps: give it an .exr name, got '" + *errorMap + "'");
+    // The image memory budget (DW_IMAGE_LIMIT_MB) before a pixel is copied, as compare on files.
+    for (const auto& [array, what] : {std::pair{&reference, "reference"}, std::pair{&test, "test"}})
+        if (array->ndim() >= 2)
+            if (const std::string why = comparison_memory::refusal(
+                    static_cast<int>(std::min<py::ssize_t>(array->shape(1), std::numeric_limits<int>::max())),
+                    static_cast<int>(std::min<py::ssize_t>(array->shape(0), std::numeric_limits<int>::max())),
+                    array->ndim() == 3 ? static_cast<int>(std::min<py::ssize_t>(array->shape(2), 1 << 20)) : 1);
+                !why.empty())
+                throw Error(std::string("compare: ") + what + " is " + why);
     const FloatImage a = toFloatImage(reference, "reference");
     const FloatImage b = toFloatImage(test, "test");
     ComparisonSettings settings;
     settings.hdr = hdr;
+    // HDR-FLIP's exposures at once: as many as the budget holds (the result is the same).
+    settings.flip.maxThreads = comparison_memory::flipThreadsWithin(a.width, a.height, a.channels);
     settings.warnThreshold = warnThreshold;
     settings.failThreshold = failThreshold;
     ImageComparison c;
@@ -929,7 +941,7 @@ PYBIND11_MODULE(deferred_workbench, m) {
             ExperimentRecord record;
             {
                 py::gil_scoped_release release;
-                // AOV's cost warnings (issue 22) as RuntimeWarning, before the frames.
+                // bench's warnings (AOV's cost before the frames, issue 22; lost fragments) as RuntimeWarning.
                 record = WorkbenchSession::benchRecord(std::move(o), ratioOf, resamples, &results,
                                                        [](const std::string& line) {
                                                            py::gil_scoped_acquire acquire;

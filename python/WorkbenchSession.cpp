@@ -120,7 +120,7 @@ ExperimentRecord WorkbenchSession::benchRecord(BenchOptions options, const std::
                                                const std::function<void(const std::string&)>& costWarning) {
     const RecordedBench recorded{options, ratioOf, resamples};
     BenchRunner runner(std::move(options));  // checks everything that fails without GL
-    if (costWarning) runner.setCostWarning(costWarning);
+    if (costWarning) runner.setWarningSink(costWarning);
     ProcessContext& pc = processContext();
     if (std::this_thread::get_id() != pc.thread)
         throw WrongThreadError("bench must run on the thread that made the GL context (thread " +

@@ -141,7 +141,7 @@ public:
 
     // A bench grid (BenchRunner) on the process's GL context, on its thread,
     // as the record `bench --json` writes; `measured` gets the samples (for bench --csv's file).
-    // `costWarning`: where AOV's cost warnings go (BenchRunner::setCostWarning; stderr when unset).
+    // `costWarning`: where bench's warnings go (AOV's cost, lost fragments: BenchRunner::setWarningSink; stderr when unset).
     static ExperimentRecord benchRecord(BenchOptions options, const std::string& ratioOf, int resamples,
                                         BenchResults* measured = nullptr,
                                         const std::function<void(const std::string&)>& costWarning = {});

@@ -338,9 +338,7 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
         RenderSession& s = apply(c);
         const std::string w = AovCostEstimate::check(s.knobs(), s.scene(), path.at(0, o_.frames), c.width, c.height);
         if (w.empty()) continue;
-        const std::string line = "bench: warning: configuration " + std::to_string(c.index) + " (" + c.size() + "): " + w;
-        if (costWarning_) costWarning_(line);
-        else std::fprintf(stderr, "%s\n", line.c_str());
+        warn("bench: warning: configuration " + std::to_string(c.index) + " (" + c.size() + "): " + w);
     }
     if (!sessions.empty()) {
         const gl::GlInfo& gl = sessions.begin()->second.session->glInfo();
@@ -367,6 +365,11 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     return results;
 }
 
+void BenchRunner::warn(const std::string& line) const {
+    if (warning_) warning_(line);
+    else std::fprintf(stderr, "%s\n", line.c_str());
+}
+
 // The timed rounds, streamed as they come; the runner numbers configurations
 // by position, the results by grid index (after the kept frames' sequence).
 void BenchRunner::timeRounds(ConfigurationRunner& runner, BenchResults& results,
@@ -389,6 +392,11 @@ void BenchRunner::timeRounds(ConfigurationRunner& runner, BenchResults& results,
         return a.config != b.config ? a.config < b.config : a.sample < b.sample;
     });
     for (auto& [i, stats] : timings.stats) results.configs[static_cast<size_t>(i)].stats = std::move(stats);
+    for (const auto& [i, w] : timings.warnings) {
+        const BenchConfig& c = configs_[static_cast<size_t>(i)];
+        warn("bench: warning: configuration " + std::to_string(c.index) + " (" + describe(c, o_.grid) +
+             "): " + w.text(o_.frames));
+    }
 }
 
 }  // namespace dw

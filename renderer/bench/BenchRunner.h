@@ -79,18 +79,21 @@ public:
     // frames' seq continue after its. Throws Error when it is another grid.
     BenchResults run(const BenchProgress& progress = {}, const BenchStream& stream = {},
                      const BenchResults* resumed = nullptr);
-    // Where run() sends AOV's cost warning (one line a configuration over
-    // AovCostEstimate's limits, before any frame): stderr when unset (the
-    // CLI); the Python module turns it into a warnings.warn.
-    void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
+    // Where run() sends its warnings, one line each: AOV's cost (a
+    // configuration over AovCostEstimate's limits, before any frame) and what
+    // the passes lost in a configuration's counted frames (FrameWarnings: the
+    // oit pass's fragments). stderr when unset (the CLI); the Python module
+    // turns them into warnings.warn.
+    void setWarningSink(std::function<void(const std::string&)> sink) { warning_ = std::move(sink); }
 
 private:
     // run()'s stages (BenchRunner.cpp).
     void timeRounds(ConfigurationRunner& runner, BenchResults& results, const std::set<std::pair<int, int>>& measured,
                     long long seqBase, const BenchStream& stream, const BenchProgress& say) const;
     BenchFields settingsOf(const CameraPath& path, double seconds) const;
+    void warn(const std::string& line) const;
 
-    std::function<void(const std::string&)> costWarning_;
+    std::function<void(const std::string&)> warning_;
     BenchOptions o_;
     Scene scene_;
     std::vector<BenchConfig> configs_;

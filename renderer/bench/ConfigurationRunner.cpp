@@ -44,6 +44,13 @@ int rankOf(const std::map<std::string, int>& order, const std::string& series) {
 
 }  // namespace
 
+std::string FrameWarnings::text(int countedFrames) const {
+    std::string joined;
+    for (const std::string& w : first) joined += (joined.empty() ? "" : "; ") + w;
+    return joined + " (in " + std::to_string(frames) + " of " + std::to_string(countedFrames) +
+           " counted frames; the first such frame's figures)";
+}
+
 ConfigurationRunner::ConfigurationRunner(RunnerPlan plan, Select select, Pose pose)
     : plan_(plan), select_(std::move(select)), pose_(std::move(pose)) {
     if (plan_.frames < 1) throw Error("at least one counted frame per configuration is needed");
@@ -255,6 +262,10 @@ bool ConfigurationRunner::renderBlock(int round, int c) {
         pose_(session, c, k);
         FrameReport report = session.render(request);
         frames.counted[report.frameIndex] = {c, k, m.seq++};
+        if (std::vector<std::string> said = report.warnings(); !said.empty()) {
+            FrameWarnings& w = m.out.warnings[c];
+            if (w.frames++ == 0) w.first = std::move(said);
+        }
         m.lastReport[c] = std::move(report);
     }
     m.roundSeconds[static_cast<size_t>(c)] = std::chrono::duration<double>(Clock::now() - roundStart).count();

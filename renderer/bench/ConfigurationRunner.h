@@ -34,8 +34,21 @@ struct RunnerPlan {
     int block = 1;    // counted frames per configuration in a row
 };
 
+// What the passes said they lost in a configuration's counted frames
+// (FrameReport::warnings: the oit pass's lost fragments): a measurement of a
+// configuration that drops fragments is not the method's cost or error, and
+// bench and tradeoff say so as render does.
+struct FrameWarnings {
+    int frames = 0;                   // counted frames with any warning
+    std::vector<std::string> first;   // the first such frame's warnings
+    // "oit: lost N of M ... (in K of F counted frames; the first such frame's figures)".
+    std::string text(int countedFrames) const;
+};
+
 struct RunnerTimings {
     std::vector<BenchSample> samples;  // BenchSample::config = the runner's configuration number
+    // The configurations whose counted frames warned (none: not listed).
+    std::map<int, FrameWarnings> warnings;
     // Each pass's statistics line (PassRecord::stats) of each configuration's last counted frame.
     std::map<int, std::map<std::string, std::string>> stats;
     double seconds = 0.0;

@@ -203,10 +203,14 @@ void TradeoffRunner::warnAovCost(RenderSession& session) const {
             if (w.empty()) continue;
             const std::string line = "tradeoff: warning: point " + std::to_string(points_[p].index) +
                                      (cameraCount > 1 ? ", camera " + std::to_string(c) : std::string()) + ": " + w;
-            if (costWarning_) costWarning_(line);
-            else std::fprintf(stderr, "%s\n", line.c_str());
+            warn(line);
         }
     }
+}
+
+void TradeoffRunner::warn(const std::string& line) const {
+    if (warning_) warning_(line);
+    else std::fprintf(stderr, "%s\n", line.c_str());
 }
 
 // After stage 2 (the timed rounds): --time PASS is refused before the error
@@ -462,6 +466,9 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     const RunnerTimings timings =
         runner.measure("tradeoff", [&](int i) { return describeConfiguration(i); }, say);
     checkTimedPass(timings);
+    // A point whose frames lost fragments measures neither the method's cost nor its error: said, as render says it.
+    for (const auto& [i, w] : timings.warnings)
+        warn("tradeoff: warning: " + describeConfiguration(i) + ": " + w.text(o_.frames));
     result.timingSeconds = timings.seconds;
 
     const auto errorStart = Clock::now();

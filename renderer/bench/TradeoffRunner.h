@@ -93,10 +93,12 @@ public:
 
     // Needs a current GL 4.5 context.
     TradeoffResult run(const TradeoffReference& reference, const BenchProgress& progress = {});
-    // Where run() sends AOV's cost warning (one line a point and camera over
-    // AovCostEstimate's limits, before any frame): stderr when unset (the
-    // CLI); TradeoffStudy::measure sends it to its progress' warning.
-    void setCostWarning(std::function<void(const std::string&)> sink) { costWarning_ = std::move(sink); }
+    // Where run() sends its warnings, one line each: AOV's cost (a point and
+    // camera over AovCostEstimate's limits, before any frame) and what the
+    // passes lost in a point's timed frames (FrameWarnings: the oit pass's
+    // fragments). stderr when unset (the CLI); TradeoffStudy::measure sends
+    // them to its progress' warning.
+    void setWarningSink(std::function<void(const std::string&)> sink) { warning_ = std::move(sink); }
 
 private:
     // run()'s stages and the helpers they share (TradeoffRunner.cpp).
@@ -106,6 +108,7 @@ private:
     std::uint64_t pointSeed(size_t point, int camera) const;
     std::string describeConfiguration(int configuration) const;
     void warnAovCost(RenderSession& session) const;
+    void warn(const std::string& line) const;
     void checkTimedPass(const RunnerTimings& timings) const;
     FloatImage againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
                             std::map<std::string, FloatImage>& rendered) const;
@@ -116,7 +119,7 @@ private:
     BenchFields settingsOf(const TradeoffResult& result, double totalSeconds,
                            const std::vector<std::string>& notes) const;
 
-    std::function<void(const std::string&)> costWarning_;
+    std::function<void(const std::string&)> warning_;
     TradeoffOptions o_;
     Scene scene_;
     std::vector<TradeoffPoint> points_;

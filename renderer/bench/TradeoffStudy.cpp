@@ -145,7 +145,7 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
     };
 
     TradeoffMeasurement m;
-    if (progress.warning) runner.setCostWarning(progress.warning);
+    if (progress.warning) runner.setWarningSink(progress.warning);
     m.result = runner.run(reference, say);
     TradeoffResult& result = m.result;
     BenchFields& machine = m.machine;

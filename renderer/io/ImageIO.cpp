@@ -12,6 +12,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/io/ImageLimits.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/io/StderrCapture.h"
 
 namespace dw {
@@ -145,7 +146,7 @@ OIIO::ImageSpec straightAlphaConfig() {
 }  // namespace
 
 Image loadImage8(const std::string& path) {
-    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    requireRegularFile(path, "image file not found", "cannot read image");
     checkExrFile(path, 1);  // before OpenEXR allocates from the header
     applyLimits();
     StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
@@ -206,7 +207,7 @@ std::string decodeFailure(OIIO::ImageInput& in, const std::string& path) {
 }  // namespace
 
 FloatImage loadImageFloat(const std::string& path) {
-    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    requireRegularFile(path, "image file not found", "cannot read image");
     checkExrFile(path, 4);  // before OpenEXR allocates from the header
     applyLimits();
     StderrCapture quiet;  // libpng/libjpeg's own lines; OIIO's error says the same
@@ -227,7 +228,7 @@ FloatImage loadImageFloat(const std::string& path) {
 }
 
 ImageShape readImageShape(const std::string& path) {
-    if (!std::filesystem::exists(path)) throw FileError(path, "image file not found");
+    requireRegularFile(path, "image file not found", "cannot read image");
     checkExrFile(path, 4);  // a damaged OpenEXR header is refused before OpenEXR allocates from it
     applyLimits();
     StderrCapture quiet;

@@ -30,7 +30,7 @@ void checkImageBudget(std::uint64_t width, std::uint64_t height, int channels, s
 
 // An image file's width, height and channel count from its header alone (no
 // pixel is decoded: a caller checks what decoding and working on it would
-// take first; compare does, app/CompareInput). Throws FileError (missing,
+// take first; compare does, renderer/metrics/ComparisonMemory). Throws FileError (missing,
 // unreadable, a damaged header). Defined with the decoders, renderer/io/ImageIO.cpp.
 struct ImageShape {
     int width = 0, height = 0, channels = 0;

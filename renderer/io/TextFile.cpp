@@ -66,6 +66,17 @@ std::string readWholeFile(const std::string& path, const std::string& notFound, 
     }
 }
 
+void requireRegularFile(const std::string& path, const std::string& notFound, const std::string& unreadable) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw FileError(path, errno == ENOENT ? notFound : unreadable + " (" + std::strerror(errno) + ")");
+    if (S_ISREG(st.st_mode)) return;
+    if (S_ISDIR(st.st_mode)) throw FileError(path, unreadable + ": it is a folder, not a file");
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+        throw FileError(path, unreadable + ": it is a device, not a file (a device such as /dev/zero never ends)");
+    throw FileError(path, unreadable + ": it is a pipe or socket, not a file (images are read from files)");
+}
+
 void writeFileAtomically(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const fs::path target(path);

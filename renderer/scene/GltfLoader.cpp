@@ -120,6 +120,14 @@ public:
         const std::string bytes = precheck(readWholeFile(path_, "file not found", "cannot open file", kBinaryFileLimit));
         tinygltf::TinyGLTF loader;
         loader.SetImageLoader(&GltfMaterialImporter::decodeImageCallback, &materials_);
+        // Existence by stat: tinygltf's own FileExists opens the file, which
+        // waits forever on a pipe with no writer.
+        const tinygltf::FileExistsFunction exists = [](const std::string& p, void*) {
+            std::error_code ec;
+            return std::filesystem::exists(p, ec);
+        };
+        loader.SetFsCallbacks({exists, &tinygltf::ExpandFilePath,
+                               &GltfMaterialImporter::readExternalFileCallback, &tinygltf::WriteWholeFile, &materials_});
         std::string err, warn;
         bool ok = false;
         // What tinygltf's *FromFile functions do after reading the file: parse

@@ -6,6 +6,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/io/TextFile.h"
 #include "renderer/scene/GltfModelCheck.h"
 
 // tinygltf's base64 decoder: exported by Debian's libtinygltf, but declared
@@ -44,6 +45,21 @@ glm::vec4 vector(const tinygltf::Value& obj, const char* key, glm::vec4 fallback
 }  // namespace
 
 void GltfMaterialImporter::fail(const std::string& what) const { throw FileError(path_, what); }
+
+bool GltfMaterialImporter::readExternalFileCallback(std::vector<unsigned char>* out, std::string* err,
+                                                    const std::string& path, void* user) {
+    auto* self = static_cast<GltfMaterialImporter*>(user);
+    try {
+        const std::string bytes = readWholeFile(path, "file not found", "cannot read file", kBinaryFileLimit);
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const std::exception& e) {
+        // FileError's text starts with the path.
+        self->externalFileErrors_[fs::path(path).lexically_normal().string()] = e.what();
+        if (err) *err += e.what();
+        return false;
+    }
+}
 
 bool GltfMaterialImporter::decodeImageCallback(tinygltf::Image* image, const int index, std::string* err,
                                                std::string* /*warn*/, int, int, const unsigned char* bytes,
@@ -107,6 +123,9 @@ void GltfMaterialImporter::importImages() {
         if (img.image.empty() || img.width <= 0 || img.height <= 0) {
             if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) {
                 const fs::path full = fs::path(path_).parent_path() / img.uri;
+                const auto unread = externalFileErrors_.find(full.lexically_normal().string());
+                if (unread != externalFileErrors_.end())
+                    fail("image[" + std::to_string(i) + "] '" + img.uri + "' cannot be read: " + unread->second);
                 fail("missing texture: image[" + std::to_string(i) + "] '" + img.uri + "' (looked for " +
                      full.string() + ")");
             }

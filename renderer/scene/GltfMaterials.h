@@ -9,7 +9,9 @@
 // and transform.
 #include <tiny_gltf.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "renderer/scene/Scene.h"
 
@@ -25,6 +27,13 @@ public:
     // importer): checks the bytes' range, decodes them to RGBA8.
     static bool decodeImageCallback(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                                     int, int, const unsigned char* bytes, int size, void* user);
+    // tinygltf's file reader (FsCallbacks::ReadWholeFile, user data: the
+    // importer) for a buffer's or an image's external URI: the workbench's
+    // bounded reader (renderer/io/TextFile.h), so a URI naming a device
+    // (/dev/zero), a folder or a pipe is refused by name rather than read
+    // forever, and what went wrong is kept for the image's message.
+    static bool readExternalFileCallback(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                                         void* user);
     // The first image that failed, "image[i]: ..."; empty when none.
     const std::string& imageError() const { return imageError_; }
 
@@ -54,6 +63,8 @@ private:
     const std::string& path_;
     Scene& scene_;
     std::string imageError_;
+    // Why an external file could not be read, by its path as tinygltf joined it.
+    std::map<std::string, std::string> externalFileErrors_;
     int imageBase_ = 0, materialBase_ = 0, defaultMaterial_ = -1;
     mutable bool ignoredUvSets_ = false;
 };

@@ -370,6 +370,15 @@ class SessionTest(unittest.TestCase):
         with warnings.catch_warnings():
             warnings.simplefilter("error")
             s.render()  # nothing lost: no warning (it would raise here)
+        # bench says it too, once a configuration, with how many counted frames lost some.
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            dw.bench(scene="glass", sizes=[(32, 18)], settings={"oit.method": "abuffer", "oit.samples": 4},
+                     frames=2, warmup=0, resamples=100)
+        bench_lines = [str(w.message) for w in caught if "oit: lost" in str(w.message)]
+        self.assertEqual(len(bench_lines), 1, [str(w.message) for w in caught])
+        self.assertTrue(bench_lines[0].startswith("bench: warning: configuration 0 ("), bench_lines[0])
+        self.assertIn("(in 2 of 2 counted frames; the first such frame's figures)", bench_lines[0])
         # A blended pane of emission 1e30: the loader's clamp is warned about
         # when the session opens, and the L-buffer is finite (0.5 x 65000 + ...).
         path = os.path.join(tempfile.mkdtemp(), "hot.json")
@@ -660,6 +669,30 @@ class SessionTest(unittest.TestCase):
                 with self.assertRaises((TypeError, ValueError)):
                     call()
         self.assertEqual(s.render("final").shape, (9, 16, 4))
+
+    def test_compare_holds_arrays_to_the_image_memory_budget(self):
+        # As compare on files (exit 4): a pair whose comparison would pass
+        # DW_IMAGE_LIMIT_MB raises dw.Error with the CLI's message before a
+        # pixel is copied (a 2000 x 2000 x 3 pair peaked at 2.6 GB under the
+        # 1024 MB default); a budget that holds it compares it.
+        a = np.zeros((512, 512, 3), np.float32)
+        old = os.environ.get("DW_IMAGE_LIMIT_MB")
+        try:
+            os.environ["DW_IMAGE_LIMIT_MB"] = "1"
+            with self.assertRaises(dw.Error) as caught:
+                dw.compare(a, a)
+            self.assertIn("compare: reference is 512 x 512 pixels of 3 channels: comparing it takes about", str(caught.exception))
+            self.assertIn("over the image memory limit of 1 MB (set DW_IMAGE_LIMIT_MB=MB to raise it)", str(caught.exception))
+            with self.assertRaises(dw.Error) as caught:
+                dw.compare(np.zeros((4, 4, 3), np.float32), a)
+            self.assertIn("compare: test is 512 x 512 pixels", str(caught.exception))
+            os.environ["DW_IMAGE_LIMIT_MB"] = "1024"
+            self.assertEqual(dw.compare(a, a)["fail_count"], 0)
+        finally:
+            if old is None:
+                os.environ.pop("DW_IMAGE_LIMIT_MB", None)
+            else:
+                os.environ["DW_IMAGE_LIMIT_MB"] = old
 
     def test_reference_and_compare_write_their_files(self):
         s = dw.Session(scene="default", size=(32, 18))

@@ -101,6 +101,31 @@ TEST(BoundedRead, APipeWithoutAWriterReadsAsEmptyWithoutBlocking) {
     EXPECT_HAS(errorOf([&] { loadScene(fifo.string()); }), "no-writer.json");
 }
 
+TEST(BoundedRead, AnImagePathThatIsADevicePipeOrFolderIsRefusedByNameWithoutBlocking) {
+    // The image decoders open the path themselves: each reader checks that it
+    // is a regular file first (compare /dev/zero spun at 100% CPU).
+    const fs::path zero = dir() / "zero.exr";
+    fs::remove(zero);
+    fs::create_symlink("/dev/zero", zero);
+    const fs::path fifo = dir() / "no-writer.png";
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const fs::path folder = dir() / "folder.hdr";
+    fs::create_directories(folder);
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& [path, what] : {std::pair{fs::path("/dev/zero"), std::string("it is a device, not a file")},
+                                     std::pair{zero, std::string("it is a device, not a file")},
+                                     std::pair{fifo, std::string("it is a pipe or socket, not a file")},
+                                     std::pair{folder, std::string("it is a folder, not a file")}}) {
+        const std::string p = path.string();
+        EXPECT_HAS(errorOf([&] { loadImageFloat(p); }), p + ": cannot read image: " + what);
+        EXPECT_HAS(errorOf([&] { loadImage8(p); }), p + ": cannot read image: " + what);
+        EXPECT_HAS(errorOf([&] { readImageShape(p); }), p + ": cannot read image: " + what);
+    }
+    EXPECT_HAS(errorOf([&] { loadImageFloat((dir() / "none.png").string()); }), "none.png: image file not found");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
 TEST(BoundedRead, RecordsAndPresetsAreToldFromScenes) {
     const fs::path record = writeBytes("rec.json", R"({"format": "deferred-workbench record", "version": 3,
         "command": "render", "scene": {"spec": "spheres"}})");

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -158,6 +161,39 @@ TEST(GltfLoader, MissingBinaryAndTextureFilesAreNamed) {
     const std::string e = errorOf(write("notex.gltf", j));
     EXPECT_NE(e.find("missing texture"), std::string::npos) << e;
     EXPECT_NE(e.find("textures/missing.png"), std::string::npos) << e;
+}
+
+TEST(GltfLoader, ExternalFilesThatAreDevicesPipesOrFoldersAreRefusedByNameNotReadForever) {
+    // Issue 32's kind "a path that is not a file": an image or buffer URI
+    // naming /dev/zero (through a link), a pipe with no writer or a folder is
+    // read through the bounded reader and named as what it is (tinygltf's
+    // own reader said "missing texture", or waited forever on the pipe).
+    const fs::path zero = test::tempDir() / "zero.png";
+    fs::remove(zero);
+    fs::create_symlink("/dev/zero", zero);
+    const fs::path fifo = test::tempDir() / "no-writer.bin";
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    fs::create_directories(test::tempDir() / "folder.png");
+    const auto start = std::chrono::steady_clock::now();
+    TriangleGltf t;
+    for (const std::string uri : {"zero.png", "folder.png"}) {
+        json j = t.build();
+        j["images"] = json::array({{{"uri", uri}}});
+        j["textures"] = json::array({{{"source", 0}}});
+        j["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+        j["meshes"][0]["primitives"][0]["material"] = 0;
+        const std::string e = errorOf(write("device-image.gltf", j));
+        EXPECT_NE(e.find("image[0] '" + uri + "' cannot be read"), std::string::npos) << e;
+        EXPECT_NE(e.find(uri == "zero.png" ? "it is a device, not a file" : "it is a folder, not a file"), std::string::npos)
+            << e;
+        EXPECT_EQ(e.find("missing texture"), std::string::npos) << e;
+    }
+    json j = t.build();
+    j["buffers"][0]["uri"] = "no-writer.bin";
+    const std::string e = errorOf(write("pipe-buffer.gltf", j));
+    EXPECT_NE(e.find("no-writer.bin"), std::string::npos) << e;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(GltfLoader, MalformedJsonAndUnsupportedExtensions) {
