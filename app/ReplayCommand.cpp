@@ -33,7 +33,7 @@
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/metrics/Bootstrap.h"
-#include "renderer/bench/TradeoffStudy.h"
+#include "renderer/study/TradeoffStudy.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "renderer/gl/ShaderSource.h"
 #include "renderer/record/BuildInfo.h"

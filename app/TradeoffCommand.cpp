@@ -22,7 +22,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/bench/TradeoffShards.h"
-#include "renderer/bench/TradeoffStudy.h"
+#include "renderer/study/TradeoffStudy.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/io/JsonGuard.h"
 #include "renderer/record/ExperimentRecord.h"

@@ -25,7 +25,7 @@
 #include "python/WorkbenchSession.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/OptionLimits.h"
-#include "renderer/bench/TradeoffStudy.h"
+#include "renderer/study/TradeoffStudy.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/metrics/ImageComparison.h"
 #include "renderer/metrics/ComparisonHeatMap.h"

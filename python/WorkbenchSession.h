@@ -16,7 +16,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
-#include "renderer/bench/TradeoffStudy.h"
+#include "renderer/study/TradeoffStudy.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/PixelProbe.h"
 #include "renderer/record/ExperimentRecord.h"

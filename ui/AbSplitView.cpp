@@ -81,7 +81,9 @@ float abControls(UiState& state) {
         }
     }
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    // As wide as its longest choice ("FLIP heat ma" was cut at 1024x640).
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(displayName(AbDisplay::Flip)).x + ImGui::GetFrameHeight() +
+                            2.0f * ImGui::GetStyle().FramePadding.x);
     if (ImGui::BeginCombo("##ab_display", displayName(ab.display))) {
         for (AbDisplay d : {AbDisplay::Split, AbDisplay::Difference, AbDisplay::Flip})
             if (ImGui::Selectable(displayName(d), ab.display == d)) {
@@ -90,6 +92,11 @@ float abControls(UiState& state) {
             }
         ImGui::EndCombo();
     }
+    noteItem("ab.display");
+    if (ImGui::IsItemHovered())
+        tooltip("A/B display: %s (split: A left of the divider, B right; |A-B|: the absolute difference; FLIP: the "
+                "perceived difference)",
+                displayName(ab.display));
     ImGui::SameLine();
     if (ImGui::SmallButton("Pin")) ab.pinRequest = true;
     noteItem("ab.pin");

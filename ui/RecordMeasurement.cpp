@@ -88,13 +88,13 @@ bool RecordMeasurement::start(UiState& state, RenderSession& session, const std:
     frames_ = frames;
     warmup_ = warmup;
     rendered_ = 0;
-    counted_.clear();
     knobs_ = session.knobs();
     camera_ = session.camera();
     width_ = session.pipeline().width();
     height_ = session.pipeline().height();
     scene_ = &session.scene();
     sceneSource_ = session.scene().source;
+    beginRunner(session);
     PassTimer& timer = session.pipeline().timer();
     // Every counted frame's sample kept, with room for the view's frames between them.
     timer.setHistoryLength(std::max(timer.historyLength(), static_cast<size_t>(2 * (frames + warmup) + 64)));
@@ -122,24 +122,21 @@ bool RecordMeasurement::step(UiState& state, RenderSession& session) {
                    "), so its frames would not be of one state");
         return false;
     }
-    // The saved state for this frame, the current one put back after it.
+    // The saved state for this frame (the runner selects it), the current one put back after it.
     KnobRegistry& knobs = session.knobs();
     const KnobRegistry current = knobs;
     const Camera currentCamera = session.camera();
-    knobs.copyValues(*knobs_);
-    session.camera() = camera_;
-    const bool differs = knobs.generation() != current.generation() || !sameCamera(currentCamera, camera_);
     try {
-        const FrameReport r = session.pipeline().render(session.camera(), FrameRequest{{buffer_}});
-        if (rendered_ >= warmup_) counted_.insert(r.frameIndex);
+        const bool more = runner_->step();
         ++rendered_;
-        if (rendered_ >= total()) finish(state, session);
+        if (!more) finish(state, session);
     } catch (const std::exception& e) {
         running_ = false;
         state.log.error("cannot save record " + shownPath_ + ": frame " + std::to_string(rendered_ + 1) + " failed: " +
                             e.what(),
                         state.time, kAction);
     }
+    const bool differs = knobs.generation() != current.generation() || !sameCamera(currentCamera, camera_);
     knobs.copyValues(current);
     session.camera() = currentCamera;
     // The view shows the pipeline's outputs: after a frame of another state,
@@ -150,6 +147,31 @@ bool RecordMeasurement::step(UiState& state, RenderSession& session) {
     return running_;
 }
 
+// `render --frames N --warmup W` on the stepping runner bench and tradeoff
+// use: one configuration (the saved state, made current before every frame,
+// since the view puts its own back between steps), its warm-up frames then
+// its counted frames, the viewport's output asked for.
+void RecordMeasurement::beginRunner(RenderSession& session) {
+    RunnerPlan plan;
+    plan.configurations = 1;
+    plan.frames = frames_;
+    plan.warmup = warmup_;
+    plan.block = frames_;
+    plan.request = FrameRequest{{buffer_}};
+    plan.selectEveryFrame = true;
+    runner_ = std::make_unique<ConfigurationRunner>(
+        plan,
+        [this, &session](int) -> RenderSession& {
+            session.knobs().copyValues(*knobs_);
+            session.camera() = camera_;
+            return session;
+        },
+        [](RenderSession&, int, int) {});
+    const KnobRegistry current = session.knobs();
+    runner_->begin("record", {});
+    session.knobs().copyValues(current);
+}
+
 void RecordMeasurement::finish(UiState& state, RenderSession& session) {
     running_ = false;
     try {
@@ -158,18 +180,20 @@ void RecordMeasurement::finish(UiState& state, RenderSession& session) {
         run.height = height_;
         run.frames = frames_;
         run.warmup = warmup_;
-        const std::uint64_t first = counted_.empty() ? 0 : *counted_.begin();
+        const RunnerTimings timings = runner_->finish();
+        runner_.reset();
+        std::uint64_t first = 0;
+        for (const BenchSample& b : timings.samples) first = first == 0 ? b.frame : std::min(first, b.frame);
         ExperimentRecord r = ExperimentRecord::capture(session, run, buffer_, first, "window");
-        // Only the measured frames: the view may have rendered frames of its own between them.
+        // Only the measured frames, as the runner harvested them (the view
+        // renders frames of its own between them), in pipeline order.
         r.timings.clear();
-        for (const PassTimer::Series& s : session.pipeline().timer().series()) {
-            RecordedSeries rs{s.name, {}, {}};
-            for (const TimingSample& t : s.samples)
-                if (counted_.count(t.frame)) {
-                    rs.gpuMs.push_back(t.gpuMs);
-                    rs.cpuMs.push_back(t.cpuMs);
-                }
-            if (!rs.gpuMs.empty()) r.timings.push_back(std::move(rs));
+        for (const BenchSample& b : timings.samples) {
+            auto it = std::find_if(r.timings.begin(), r.timings.end(),
+                                   [&](const RecordedSeries& rs) { return rs.name == b.series; });
+            if (it == r.timings.end()) it = r.timings.insert(r.timings.end(), RecordedSeries{b.series, {}, {}});
+            it->gpuMs.push_back(b.gpuMs);
+            it->cpuMs.push_back(b.cpuMs);
         }
         r.command = "gui";
         r.sceneSpec = session.scene().source;  // what is open now, not what the window started with
@@ -193,6 +217,7 @@ void RecordMeasurement::finish(UiState& state, RenderSession& session) {
 
 void RecordMeasurement::stop(UiState&, RenderSession& session) {
     running_ = false;
+    runner_.reset();
     if (resumePause_) session.pipeline().timer().setPaused(true);
     resumePause_ = false;
     knobs_.reset();

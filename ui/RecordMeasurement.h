@@ -1,9 +1,10 @@
 #pragma once
 // The window's *Save record* as a measurement (issue 24): the state on show
 // when Save was pressed (scene, camera, every knob, the render size, the
-// viewport's output) rendered `warmup + frames` times, one frame a UI frame
-// before the view's own (as the Pareto panel's quick sweep runs), so the
-// window keeps running; then the experiment record is written with each
+// viewport's output) rendered `warmup + frames` times on the stepping
+// ConfigurationRunner bench and tradeoff use, one frame a UI frame before
+// the view's own (as the Pareto panel's quick sweep runs), so the window
+// keeps running; then the experiment record is written with each
 // timing series' median and its 95% bootstrap interval, as `render --record
 // --frames N` writes one. Knobs or the camera changed meanwhile do not change
 // what is measured: each measured frame renders the saved state and puts the
@@ -15,11 +16,13 @@
 // interval (kMinIntervalSamples is 6). Errors: logged (Messages, the banner)
 // with the action "save record"; a file that cannot be written keeps nothing.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
 
 #include "renderer/RenderSession.h"
+#include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/scene/Camera.h"
 
 namespace dw::ui {
@@ -54,6 +57,7 @@ public:
     bool wrote() const { return wrote_; }
 
 private:
+    void beginRunner(RenderSession& session);
     void finish(UiState& state, RenderSession& session);
     void stop(UiState& state, RenderSession& session);
 
@@ -66,7 +70,7 @@ private:
     int width_ = 0, height_ = 0;
     const void* scene_ = nullptr;
     std::string sceneSource_;
-    std::set<std::uint64_t> counted_;  // the counted frames' indices (after the warm-up)
+    std::unique_ptr<ConfigurationRunner> runner_;  // while measuring
 };
 
 }  // namespace dw::ui

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/graph/ChangeCost.h"
+#include "renderer/bench/ChangeMeasurement.h"
 #include "renderer/RenderSession.h"
 #include "ui/UiState.h"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "renderer/bench/QuickSweep.h"
-#include "renderer/graph/ChangeCost.h"
+#include "renderer/bench/ChangeMeasurement.h"
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/FiniteCheck.h"
 #include "renderer/io/ImageHistogram.h"

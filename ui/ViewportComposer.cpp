@@ -40,14 +40,18 @@ void ViewportComposer::render(UiState& state) {
         }
     }
     state.animator.update(session_.mutableScene(), state.frame);
-    // A change being measured: this frame renders the knob values of its
-    // side (one measured frame a UI frame, so the window stays responsive).
+    // A change being measured: one of its frames (the knob values of its
+    // side, on the stepping runner), then the view renders its own after it
+    // (one measured frame a UI frame, so the window stays responsive).
     bool measuring = false;
     if (state.measure.active()) {
-        if (state.viewport.mode != DisplayMode::Deferred)
+        if (state.viewport.mode != DisplayMode::Deferred) {
             state.measure.cancel(session_.knobs(), "cancelled: a forward view runs no deferred pass");
-        else
-            measuring = state.measure.prepareFrame(session_.knobs());
+        } else {
+            measuring = true;
+            state.measure.step(session_);
+            state.forceRender = true;
+        }
     }
     // A quick sweep's frame first; the view renders again after it.
     if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring) {
@@ -74,7 +78,7 @@ void ViewportComposer::render(UiState& state) {
     // Counted by attempts, not by frames that worked: a preset that does not
     // render (or a failing frame) must not keep the window rendering.
     const bool abMore = ab && !measuring && abRenders_ < kAbFrames;
-    const bool needed = measuring || state.timingCapture || state.animator.running() || state.forceRender || changed || abMore;
+    const bool needed = state.timingCapture || state.animator.running() || state.forceRender || changed || abMore;
     state.forceRender = false;
     // The probe's values describe the image they were read from: another
     // image (a scene opened, the camera moved) with the probe neither
@@ -89,7 +93,6 @@ void ViewportComposer::render(UiState& state) {
             composedSignature_ = signature;
             composeAb(state);
         }
-        if (measuring) state.measure.frameRendered(state.report.frameIndex);
         // The first frame of another scene or render size starts the statistics over.
         const std::string config = session_.scene().source + "|" + std::to_string(state.renderSize.x) + "x" +
                                    std::to_string(state.renderSize.y);
@@ -107,12 +110,6 @@ void ViewportComposer::render(UiState& state) {
     // renders no later frame to pick them up, so poll here every UI frame
     // (it never waits) until the latest frame's results are in.
     pipeline.timer().collect(false);
-    if (state.measure.state() == ChangeMeasurement::State::Waiting) {
-        std::vector<std::string> order;
-        for (const auto& rec : state.report.passes) order.push_back(rec.name);
-        order.push_back(PassTimer::kFrameSeries);
-        state.measure.collect(pipeline.timer(), session_.knobs(), order);
-    }
     if (ab) abTimes(state);
     else state.ab.ready = false;
     state.timingsPending =

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/Error.h"
-#include "renderer/record/ExperimentRecord.h"
 
 namespace dw {
 
@@ -423,14 +422,6 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
 const nlohmann::json& benchSummaryOf(const nlohmann::json& file) {
     if (file.is_object() && file.contains("results") && file["results"].is_object()) return file["results"];
     return file;
-}
-
-std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
-    return ExperimentRecord::forBenchResults(results, summary).json();
-}
-
-void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary) {
-    writeBenchFile(path, benchJson(results, summary), "bench JSON");
 }
 
 }  // namespace dw

@@ -88,9 +88,5 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
 // The summary a bench JSON holds: an experiment record's `results`, or the
 // file itself when it was written before records (for bench merge's readers).
 const nlohmann::json& benchSummaryOf(const nlohmann::json& file);
-// An experiment record of these results alone (bench merge's JSON; `bench`
-// writes ExperimentRecord::forBench, which adds the grid, knobs and files).
-std::string benchJson(const BenchResults& results, const BenchSummary& summary);
-void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary);
 
 }  // namespace dw

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -101,7 +102,18 @@ struct ConfigurationRunner::Measurement {
     long long total = 0, seq = 0;
     int previous = -1;
     double lastSaid = 0.0;
-    int round = 0, config = 0;  // the next block to render
+    int round = 0, config = 0;  // the next block to plan
+    // The block being rendered, a frame a step: its configuration, round,
+    // session, frames left (warm-up first: counted false) and start time.
+    struct Frame {
+        int sample = 0;
+        bool counted = false;
+    };
+    std::deque<Frame> block;
+    int blockConfig = -1, blockRound = 0;
+    bool blockEndsRound = false;
+    RenderSession* blockSession = nullptr;
+    Clock::time_point blockStart;
 
     double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
     bool skipped(int c, int k) const { return skip && skip(c, k); }
@@ -218,60 +230,86 @@ void ConfigurationRunner::begin(const std::string& name, const std::function<std
 bool ConfigurationRunner::step() {
     if (!m_) throw Error("ConfigurationRunner::step before begin");
     Measurement& m = *m_;
-    const int configs = plan_.configurations;
-    if (configs < 1) return false;
-    while (m.round < m.roundCount) {
-        const int c = m.config;
-        if (++m.config == configs) m.config = 0;
-        const bool lastOfRound = m.config == 0;
-        const bool rendered = renderBlock(m.round, c);
-        if (lastOfRound) {
-            if (m.stream) m.harvest(false);
-            ++m.round;
-        }
-        if (rendered) return m.round < m.roundCount;
+    if (plan_.configurations < 1) return false;
+    while (m.block.empty()) {
+        if (m.round >= m.roundCount) return false;
+        planBlock();
     }
-    return false;
+    renderFrame();
+    if (m.block.empty()) endBlock();
+    return !m.block.empty() || m.round < m.roundCount;
 }
 
 double ConfigurationRunner::fractionDone() const {
     return m_ && m_->total > 0 ? static_cast<double>(m_->seq) / static_cast<double>(m_->total) : 0.0;
 }
 
-// Configuration `c`'s block of round `round`: its warm-up after a switch,
-// then its counted frames; false when every frame of it is skipped.
-bool ConfigurationRunner::renderBlock(int round, int c) {
+// The next configuration's block of the round: its warm-up after a switch
+// (every block when there is more than one configuration), then its counted
+// frames not skipped. A block whose counted frames are all skipped is empty
+// (nothing rendered, not even its warm-up); the round ends after its last
+// configuration's block either way.
+void ConfigurationRunner::planBlock() {
     Measurement& m = *m_;
-    const int first = round * plan_.block, count = std::min(plan_.block, plan_.frames - first);
+    const int c = m.config;
+    if (++m.config == plan_.configurations) m.config = 0;
+    m.blockConfig = c;
+    m.blockRound = m.round;
+    m.blockEndsRound = m.config == 0;
+    const int first = m.round * plan_.block, count = std::min(plan_.block, plan_.frames - first);
     std::vector<int> pending;
     for (int j = 0; j < count; ++j)
         if (!m.skipped(c, first + j)) pending.push_back(first + j);
-    if (pending.empty()) return false;
-    const FrameRequest request;  // the final image, as a user would see it
-    const auto roundStart = Clock::now();
-    RenderSession& session = select_(c);
-    SessionFrames& frames = m.sessions.at(&session);
-    // Warm-up after a switch (every block when there is more than one configuration).
-    if (c != m.previous)
-        for (int w = 0; w < plan_.warmup; ++w) {
-            pose_(session, c, pending.front());
-            session.render(request);
-        }
-    m.previous = c;
-    for (int k : pending) {
-        pose_(session, c, k);
-        FrameReport report = session.render(request);
-        frames.counted[report.frameIndex] = {c, k, m.seq++};
-        if (std::vector<std::string> said = report.warnings(); !said.empty()) {
-            FrameWarnings& w = m.out.warnings[c];
-            if (w.frames++ == 0) w.first = std::move(said);
-        }
-        m.lastReport[c] = std::move(report);
+    if (!pending.empty()) {
+        if (c != m.previous)
+            for (int w = 0; w < plan_.warmup; ++w) m.block.push_back({pending.front(), false});
+        for (int k : pending) m.block.push_back({k, true});
+        m.blockStart = Clock::now();
+        m.blockSession = &select_(c);
+        m.previous = c;
+    } else {
+        endRound();
     }
-    m.roundSeconds[static_cast<size_t>(c)] = std::chrono::duration<double>(Clock::now() - roundStart).count();
+}
+
+// The block's next frame: posed, rendered with the plan's request; a counted
+// one noted for the harvest (and its warnings kept).
+void ConfigurationRunner::renderFrame() {
+    Measurement& m = *m_;
+    const Measurement::Frame f = m.block.front();
+    m.block.pop_front();
+    const int c = m.blockConfig;
+    // Selected again before every frame when the caller's own loop changes
+    // the session between steps (the window); else once a block.
+    RenderSession& session = plan_.selectEveryFrame ? select_(c) : *m.blockSession;
+    pose_(session, c, f.sample);
+    FrameReport report = session.render(plan_.request);
+    if (!f.counted) return;
+    m.sessions.at(&session).counted[report.frameIndex] = {c, f.sample, m.seq++};
+    if (std::vector<std::string> said = report.warnings(); !said.empty()) {
+        FrameWarnings& w = m.out.warnings[c];
+        if (w.frames++ == 0) w.first = std::move(said);
+    }
+    m.lastReport[c] = std::move(report);
+}
+
+// After a block's last frame: its wall time for the time left, a progress
+// line every 2 s, and the end of the round after its last configuration.
+void ConfigurationRunner::endBlock() {
+    Measurement& m = *m_;
+    const int c = m.blockConfig;
+    m.roundSeconds[static_cast<size_t>(c)] = std::chrono::duration<double>(Clock::now() - m.blockStart).count();
     --m.roundsLeft[static_cast<size_t>(c)];
-    if (m.elapsed() - m.lastSaid > 2.0) sayProgress(round, c);
-    return true;
+    if (m.elapsed() - m.lastSaid > 2.0) sayProgress(m.blockRound, c);
+    if (m.blockEndsRound) endRound();
+}
+
+// A round ends: its samples streamed (when a caller takes them as they come).
+void ConfigurationRunner::endRound() {
+    Measurement& m = *m_;
+    if (!m.blockEndsRound) return;
+    if (m.stream) m.harvest(false);
+    ++m.round;
 }
 
 void ConfigurationRunner::sayProgress(int round, int c) {

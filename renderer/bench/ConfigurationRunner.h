@@ -32,6 +32,13 @@ struct RunnerPlan {
     int frames = 10;  // counted frames per configuration
     int warmup = 1;   // left out after each switch to a configuration
     int block = 1;    // counted frames per configuration in a row
+    // What every frame asks for (FrameRequest::outputs): by default the final
+    // image, as a user would see it; a record of another buffer asks for it.
+    FrameRequest request;
+    // Select the configuration before every frame, not once a block: for a
+    // caller whose own loop changes the session between steps (the window's
+    // quick sweep and records put the view's state back after each frame).
+    bool selectEveryFrame = false;
 };
 
 // What the passes said they lost in a configuration's counted frames
@@ -83,13 +90,14 @@ public:
                           const Progress& progress = {}, const Stream& stream = {},
                           const std::function<bool(int, int)>& skip = {});
 
-    // The timed rounds a step at a time, for a caller with a loop of its own
-    // (a window draws between steps): begin() plans (measure's arguments),
-    // each step() renders the next configuration's block of a round (its
-    // warm-up after a switch, then its counted frames; streamed after each
-    // round) and returns whether another step remains; finish() waits for
-    // the last timestamps and returns what measure() returns. Throws
-    // dw::Error when step() or finish() come before begin().
+    // The timed rounds a frame at a time, for a caller with a loop of its
+    // own (a window draws between steps): begin() plans (measure's
+    // arguments), each step() renders one frame (a configuration's block of a
+    // round is its warm-up frames after a switch, then its counted frames;
+    // samples streamed after each round; RunnerPlan::selectEveryFrame makes
+    // the configuration current before every frame) and returns whether another frame remains;
+    // finish() waits for the last timestamps and returns what measure()
+    // returns. Throws dw::Error when step() or finish() come before begin().
     void begin(const std::string& name, const std::function<std::string(int)>& describe,
                const Progress& progress = {}, const Stream& stream = {},
                const std::function<bool(int, int)>& skip = {});
@@ -113,7 +121,10 @@ public:
 
 private:
     struct Measurement;
-    bool renderBlock(int round, int config);
+    void planBlock();
+    void renderFrame();
+    void endBlock();
+    void endRound();
     void sayProgress(int round, int config);
 
     RunnerPlan plan_;

@@ -77,6 +77,7 @@ void QuickSweep::beginRunner(RenderSession& session) {
     plan.frames = framesPerValue_;
     plan.warmup = 1;
     plan.block = 1;
+    plan.selectEveryFrame = true;  // the knob is put back after every step
     runner_ = std::make_unique<ConfigurationRunner>(
         plan,
         [this](int v) -> RenderSession& {

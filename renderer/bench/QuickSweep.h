@@ -3,8 +3,8 @@
 // Pareto panel): each of the knob's values rendered a few times on the
 // stepping ConfigurationRunner that bench and tradeoff use (one value a
 // configuration: a warm-up frame after each switch, then one counted frame;
-// one step a UI frame so a window stays responsive, the values interleaved
-// in rounds); each value's final image measured against
+// one frame a step, a step a UI frame so a window stays responsive, the
+// values interleaved in rounds); each value's final image measured against
 // a baseline (the CPU reference's final image when one is given, else the
 // current settings' image) with FLIP, and its GPU frame times taken from the
 // runner's timestamps. The result is a TradeoffTable (axis: the knob; camera
@@ -35,9 +35,10 @@ public:
     // `baseline`: the image every value is measured against (final, display values, rows top-down).
     void start(const KnobRegistry& knobs, const std::string& knob, FloatImage baseline, std::string baselineName,
                int framesPerValue = 3);
-    // Renders the next value's warm-up and counted frame (on the session the
-    // first step was given); true while frames remain. On the last it reads
-    // the timer (waiting for its results) and builds the table.
+    // Renders the next frame (a value's warm-up after a switch, or its
+    // counted frame; on the session the first step was given); true while
+    // frames remain. On the last it reads the timer (waiting for its
+    // results) and builds the table.
     bool step(RenderSession& session);
     void cancel() { running_ = false; }
 

@@ -16,6 +16,8 @@
 //
 // KnobChangeWatcher names the change by the values the user committed (a
 // slider let go, a typed value entered), not by each keystroke in between.
+// The measurement itself (the frames of both sides, interleaved) runs on the
+// stepping ConfigurationRunner: renderer/bench/ChangeMeasurement.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -107,73 +109,5 @@ using SeriesSamples = std::map<std::string, std::vector<double>>;
 // order to report them (others follow).
 ChangeVerdict judgeChange(const SeriesSamples& before, const SeriesSamples& after, const std::set<std::string>& influenced,
                           const std::vector<std::string>& order = {}, double familyConfidence = 0.95, int resamples = 4000);
-
-// One measurement of a change, driven by the frame loop one frame at a time
-// (never blocking): prepareFrame() sets the knobs to the side the next frame
-// measures, frameRendered() notes the frame index, collect() gathers the GPU
-// times once they are in, puts the knobs back to their values after the
-// change and judges.
-class ChangeMeasurement {
-public:
-    struct Settings {
-        int framesPerSide = 12;  // counted frames of each side
-        int perTurn = 2;         // counted frames per turn
-        int settle = 1;          // frames left out at the start of each turn
-    };
-    enum class State { Idle, Rendering, Waiting, Done, Cancelled };
-
-    void start(const KnobChange& change, const Settings& settings, std::set<std::string> influenced);
-    // Stops; the knobs go back to their values after the change (those the
-    // user has not touched since).
-    void cancel(KnobRegistry& knobs, const std::string& why = "cancelled");
-    State state() const { return state_; }
-    bool active() const { return state_ == State::Rendering || state_ == State::Waiting; }
-    // Before a frame: true when the measurement wants this frame rendered,
-    // with the knobs set to its side. A knob changed by anything else since
-    // the last frame cancels the measurement (false).
-    bool prepareFrame(KnobRegistry& knobs);
-    // The frame prepared last was rendered as `frameIndex`.
-    void frameRendered(std::uint64_t frameIndex);
-    // Once every measured frame's times are in (or the timer has none
-    // pending): gathers them, restores the after values and judges. True
-    // when the measurement finished in this call.
-    bool collect(const PassTimer& timer, KnobRegistry& knobs, const std::vector<std::string>& order = {});
-
-    const KnobChange& change() const { return change_; }
-    const Settings& settings() const { return settings_; }
-    const ChangeVerdict& verdict() const { return verdict_; }
-    const std::set<std::string>& influenced() const { return influenced_; }
-    int framesRendered() const { return static_cast<int>(next_); }
-    int framesScheduled() const { return static_cast<int>(schedule_.size()); }
-    float progress() const;
-    // "measuring: frame 7 of 36", "waiting for the GPU times", "done", "cancelled: ..."
-    std::string status() const;
-    const char* stateName() const;
-    // The schedule, for the tests: per frame its side (true: after) and whether it is counted.
-    struct Slot {
-        bool after = false;
-        bool counted = true;
-    };
-    const std::vector<Slot>& schedule() const { return schedule_; }
-    static std::vector<Slot> makeSchedule(const Settings& settings);
-
-private:
-    void setSide(KnobRegistry& knobs, bool after);
-    void restore(KnobRegistry& knobs);
-
-    State state_ = State::Idle;
-    KnobChange change_;
-    Settings settings_;
-    std::set<std::string> influenced_;
-    std::vector<Slot> schedule_;
-    size_t next_ = 0;                 // the next slot to render
-    bool prepared_ = false;
-    std::map<std::uint64_t, Slot> frames_;  // rendered frame index -> its slot
-    std::uint64_t lastFrame_ = 0;
-    std::uint64_t generation_ = 0;    // the registry's generation after our last set
-    std::vector<double> lastSet_;     // the values we set last
-    std::string why_;
-    ChangeVerdict verdict_;
-};
 
 }  // namespace dw

@@ -930,4 +930,12 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
     return r;
 }
 
+std::string benchJson(const BenchResults& results, const BenchSummary& summary) {
+    return ExperimentRecord::forBenchResults(results, summary).json();
+}
+
+void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary) {
+    writeBenchFile(path, benchJson(results, summary), "bench JSON");
+}
+
 }  // namespace dw

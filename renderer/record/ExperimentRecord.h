@@ -41,6 +41,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/BenchSummary.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/record/RecordedFile.h"
 #include "renderer/record/ShaderFiles.h"
@@ -175,5 +176,11 @@ struct ExperimentRecord {
     // Every knob of `knobs` as name -> value text.
     static RecordFields knobFields(const KnobRegistry& knobs);
 };
+
+// An experiment record of bench results alone (bench merge's JSON; `bench`
+// writes ExperimentRecord::forBench, which adds the grid, knobs and files).
+// Here, above bench/: the runners know nothing of records.
+std::string benchJson(const BenchResults& results, const BenchSummary& summary);
+void writeBenchJson(const std::string& path, const BenchResults& results, const BenchSummary& summary);
 
 }  // namespace dw

@@ -10,6 +10,7 @@
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/metrics/Bootstrap.h"
+#include "renderer/record/ExperimentRecord.h"
 
 using namespace dw;
 

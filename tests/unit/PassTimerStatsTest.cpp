@@ -168,54 +168,6 @@ TEST(ChangeCost, ManyUnchangedPassesAreNotFlaggedByChance) {
     for (const auto& p : v.passes) EXPECT_FALSE(p.significant) << p.pass << ": " << p.describe();
 }
 
-// The measurement's schedule: before and after in alternating turns, the
-// first frame of each turn left out, until each side has its frames; the
-// knobs follow the side and go back to the after values at the end.
-TEST(ChangeCost, AMeasurementInterleavesTheSidesAndEndsOnTheAfterValues) {
-    const auto s = ChangeMeasurement::makeSchedule({5, 2, 1});
-    std::string text;
-    for (const auto& slot : s) text += slot.counted ? (slot.after ? 'A' : 'B') : (slot.after ? 'a' : 'b');
-    EXPECT_EQ(text, "bBBaAAbBBaAAbBaA");
-    KnobRegistry knobs = ssaoKnobs();
-    const int samples = *knobs.find("ssao.samples");
-    knobs.set(samples, 64);
-    KnobChange change{{samples}, {16.0}, {64.0}, "ssao.samples 16 -> 64"};
-    ChangeMeasurement m;
-    m.start(change, {3, 1, 1}, {"ssao"});
-    PassTimer timer;
-    std::uint64_t frame = 100;
-    std::vector<double> seen;
-    while (m.prepareFrame(knobs)) {
-        const double v = knobs.value(samples);
-        seen.push_back(v);
-        timer.addSample("ssao", {frame, static_cast<float>(v), 0.0f});
-        timer.addSample("geometry", {frame, 5.0f, 0.0f});
-        timer.addSample(PassTimer::kFrameSeries, {frame, static_cast<float>(v) + 5.0f, 0.0f});
-        m.frameRendered(frame++);
-    }
-    EXPECT_EQ(seen, (std::vector<double>{16, 16, 64, 64, 16, 16, 64, 64, 16, 16, 64, 64}));
-    EXPECT_EQ(m.state(), ChangeMeasurement::State::Waiting);
-    ASSERT_TRUE(m.collect(timer, knobs, {"geometry", "ssao"}));
-    EXPECT_EQ(m.state(), ChangeMeasurement::State::Done);
-    EXPECT_EQ(knobs.value(samples), 64.0);
-    const PassVerdict* ssao = m.verdict().find("ssao");
-    ASSERT_NE(ssao, nullptr);
-    EXPECT_EQ(ssao->beforeFrames, 3);
-    EXPECT_EQ(ssao->afterFrames, 3);
-    EXPECT_EQ(ssao->beforeMs, 16.0);
-    EXPECT_EQ(ssao->afterMs, 64.0);
-    EXPECT_FALSE(m.verdict().find("geometry")->influenced);
-    // A knob edited by hand mid-way cancels, and the measured knob goes back to its after value.
-    m.start(change, {3, 1, 1}, {"ssao"});
-    ASSERT_TRUE(m.prepareFrame(knobs));
-    EXPECT_EQ(knobs.value(samples), 16.0);
-    m.frameRendered(frame++);
-    knobs.set(*knobs.find("bloom.enabled"), 0.0);
-    EXPECT_FALSE(m.prepareFrame(knobs));
-    EXPECT_EQ(m.state(), ChangeMeasurement::State::Cancelled);
-    EXPECT_EQ(knobs.value(samples), 64.0);
-}
-
 // The pipeline learns which pass reads each knob while it makes and connects
 // the passes (no GL): the declaring pass, and passes that look a knob up.
 TEST(ChangeCost, ThePipelineKnowsWhichPassesReadEachKnob) {

@@ -1,0 +1,181 @@
+#include "renderer/study/TradeoffStudy.h"
+
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
+#include "renderer/bench/BenchGrid.h"
+#include "renderer/record/HostInfo.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/SceneLoader.h"
+
+namespace dw {
+
+namespace {
+
+// As CommandLine::parseInt says a number out of its range.
+int inRange(const std::string& flag, int v, OptionRange range) {
+    if (!range.holds(v))
+        throw Error(flag + " must be between " + std::to_string(range.min) + " and " + std::to_string(range.max));
+    return v;
+}
+
+}  // namespace
+
+TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
+    TradeoffOptions o;
+    o.run = s.run;
+    inRange("--size width", s.run.width, limits::kSize);
+    inRange("--size height", s.run.height, limits::kSize);
+    for (const auto& text : s.sweep) {
+        const BenchKnobAxis axis = BenchGrid::parseSweep(text);
+        for (const auto& a : o.sweep.axes)
+            if (a.name == axis.knob) throw Error("--sweep " + axis.knob + " is given twice");
+        o.sweep.axes.push_back({axis.knob, axis.values});
+    }
+    if (!s.presets.empty()) {
+        for (const auto& p : s.presets)
+            if (p.empty()) throw Error("--presets: an empty preset name");
+        o.sweep.axes.insert(o.sweep.axes.begin(), TradeoffAxis{"preset", s.presets});
+    }
+    if (!s.knobs.empty() && s.knobs != "speed/quality")
+        throw Error("--knobs: the only set is speed/quality (the knobs marked as trading speed for quality), got '" +
+                    s.knobs + "'");
+    if (!s.knobs.empty() && !o.sweep.axes.empty())
+        throw Error("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
+    for (const auto& e : s.exclude) o.sweep.exclusion.add(e);
+    if (s.against != "reference") o.against = splitList(s.against, "--against");
+    o.metric = s.metric;
+    o.buffer = s.buffer;
+    o.mask = s.mask;
+    o.time = s.time;
+    inRange("--ao-rays", s.aoRays, limits::kAoRays);
+    if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
+    o.walkthrough = s.walkthrough;
+    o.frames = inRange("--frames", s.frames, limits::kFrames);
+    o.warmup = inRange("--warmup", s.warmup, limits::kWarmup);
+    o.block = inRange("--block", s.block, limits::kBlock);
+    o.resamples = inRange("--resamples", s.resamples, limits::kResamples);
+    if (!s.shard.empty()) o.shard = BenchShard::parse(s.shard);
+    if (o.sweep.axes.empty() && s.knobs.empty())
+        throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
+    return o;
+}
+
+TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& s) {
+    TradeoffOptions o = check(s);
+    if (!s.knobs.empty()) {
+        // About the current settings: the run configuration's knobs on its scene.
+        o.run.validate();
+        const Scene scene = loadScene(o.run.sceneSpec());
+        KnobRegistry current = RunConfig::declaredKnobs();
+        o.run.applyKnobs(current, scene);
+        GridExclusion exclusion = o.sweep.exclusion;
+        o.sweep = TradeoffSweep::aroundCurrent(current);
+        o.sweep.exclusion = exclusion;
+    }
+    return o;
+}
+
+TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
+                                           const TradeoffStudyProgress& progress, std::uint32_t referenceSeed) {
+    auto stopIfAsked = [&] {
+        if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
+    };
+    auto say = [&](const std::string& line) {
+        stopIfAsked();
+        if (progress.line) progress.line(line);
+    };
+    auto warn = [&](const std::string& line) {
+        if (progress.warning) progress.warning(line);
+    };
+    // References through the shared cache; each distinct one rendered once in this run.
+    const reference::ReferenceCache cache;
+    std::map<std::string, reference::ReferenceImages> rendered;
+    bool noted = false;
+    int references = 0, cachedReferences = 0;
+    double referenceSeconds = 0.0;
+    const TradeoffReference reference = [&](const Scene& scene, const KnobRegistry& k, const Camera& camera, int width,
+                                            int height, const std::string& buffer) {
+        reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
+        model.aoRays = aoRays;
+        model.seed = referenceSeed;
+        reference::ReferenceRequest request;
+        request.camera = camera;
+        request.width = width;
+        request.height = height;
+        const std::string key = reference::referenceKey(scene, model, request);
+        auto it = rendered.find(key);
+        if (it == rendered.end()) {
+            stopIfAsked();
+            std::optional<reference::ReferenceImages> images = cache.load(key);
+            if (images) {
+                ++cachedReferences;
+            } else {
+                say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
+                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
+                    "; cached for the next run)");
+                images = reference::renderReference(scene, model, request);
+                ++references;
+                referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
+                try {
+                    cache.store(key, *images);
+                } catch (const std::exception& e) {
+                    warn(std::string("warning: the reference is not cached: ") + e.what());
+                }
+            }
+            if (!noted && buffer == "final") {
+                const reference::KnobReport report = reference::reportKnobs(k, model);
+                if (!report.unmodelledOn.empty()) {
+                    std::string on;
+                    for (const auto& n : report.unmodelledOn) on += " " + n;
+                    warn("note: the reference's final image has no" + on +
+                         " (set them false to measure the shading alone)");
+                }
+                noted = true;
+            }
+            it = rendered.emplace(key, std::move(*images)).first;
+        }
+        const FloatImage* image = it->second.buffer(buffer);
+        if (!image) throw Error("the reference has no buffer '" + buffer + "'");
+        return *image;
+    };
+
+    TradeoffMeasurement m;
+    if (progress.warning) runner.setWarningSink(progress.warning);
+    m.result = runner.run(reference, say);
+    TradeoffResult& result = m.result;
+    BenchFields& machine = m.machine;
+    machine = result.machine;
+    machine.emplace_back("gl_platform", glPlatform);
+    machine.emplace_back("cpu", cpuModel());
+    machine.emplace_back("compiler", compilerName());
+    machine.emplace_back("date", utcNow());
+    if (runner.options().against.empty()) {
+        result.settings.emplace_back("references_rendered", std::to_string(references));
+        result.settings.emplace_back("references_from_cache", std::to_string(cachedReferences));
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.6g", referenceSeconds);
+        result.settings.emplace_back("reference_seconds", text);
+    }
+    return m;
+}
+
+ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, const TradeoffOptions& given,
+                                       const TradeoffRunner& runner, TradeoffMeasurement measured,
+                                       const std::string& command) {
+    measured.result.settings.emplace_back("command", command);
+    RecordedTradeoff recorded;
+    recorded.options = given;
+    recorded.exclude = options.exclude;
+    recorded.aoRays = options.aoRays;
+    recorded.runPreset = options.run.presetSpec();
+    recorded.runPresets = options.run.presetSpecs();
+    recorded.runSets = options.run.sets;
+    return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result, measured.machine);
+}
+
+}  // namespace dw
