@@ -122,48 +122,148 @@ std::string TradeoffTable::csv() const {
     return out.str();
 }
 
-TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string& path) {
-    std::istringstream in(text);
-    std::string line;
-    auto at = [&](int lineNo, size_t column, const std::string& what) -> FileError {
-        return FileError(path, "line " + std::to_string(lineNo) + ", column " + std::to_string(column + 1) + ": " + what);
-    };
-    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));
-    if (!std::getline(in, line) || line.empty() || line == "\r")
-        throw FileError(path, "line 1: empty (expected the tradeoff CSV header " + expected + ")");
-    const std::vector<std::string> header = splitCsvLine(line);
+namespace {
+
+FileError cellError(const std::string& path, int lineNo, size_t column, const std::string& what) {
+    return FileError(path, "line " + std::to_string(lineNo) + ", column " + std::to_string(column + 1) + ": " + what);
+}
+
+// Where the columns of a tradeoff CSV are: point, the axes, camera, the
+// fixed middle (metric .. frame_gpu_ms_hi), a gpu_ms.<pass> each, pareto.
+struct CsvLayout {
+    std::vector<std::string> header;
+    size_t cameraCol = 0, middle = 0, passStart = 0;
+};
+
+// The header line: names unique and non-empty, the fixed columns where they
+// belong; the axes and passes into `t`.
+CsvLayout parseHeader(const std::string& line, const std::string& path, const std::string& expected, TradeoffTable& t) {
+    CsvLayout l;
+    l.header = splitCsvLine(line);
+    const std::vector<std::string>& header = l.header;
+    auto at = [&](size_t column, const std::string& what) { return cellError(path, 1, column, what); };
     for (size_t i = 0; i < header.size(); ++i) {
-        if (header[i].empty()) throw at(1, i, "a column without a name");
+        if (header[i].empty()) throw at(i, "a column without a name");
         for (size_t j = 0; j < i; ++j)
             if (header[j] == header[i])
-                throw at(1, i, "the column '" + header[i] + "' is there twice (also column " + std::to_string(j + 1) + ")");
+                throw at(i, "the column '" + header[i] + "' is there twice (also column " + std::to_string(j + 1) + ")");
     }
     if (header[0] != "point")
-        throw at(1, 0, "expected 'point', got '" + header[0] + "' (not a tradeoff CSV; expected " + expected + ")");
+        throw at(0, "expected 'point', got '" + header[0] + "' (not a tradeoff CSV; expected " + expected + ")");
     const auto cameraIt = std::find(header.begin(), header.end(), "camera");
-    if (cameraIt == header.end()) throw at(1, header.size() - 1, "no 'camera' column (expected " + expected + ")");
-    TradeoffTable t;
-    const size_t cameraCol = static_cast<size_t>(cameraIt - header.begin());
+    if (cameraIt == header.end()) throw at(header.size() - 1, "no 'camera' column (expected " + expected + ")");
+    l.cameraCol = static_cast<size_t>(cameraIt - header.begin());
     t.axes.assign(header.begin() + 1, cameraIt);
-    size_t col = cameraCol + 1;
+    size_t col = l.cameraCol + 1;
     for (const char* name : kMiddle) {
-        if (col >= header.size()) throw at(1, col, "expected the column '" + std::string(name) + "', the line ends");
-        if (header[col] != name) throw at(1, col, "expected the column '" + std::string(name) + "', got '" + header[col] + "'");
+        if (col >= header.size()) throw at(col, "expected the column '" + std::string(name) + "', the line ends");
+        if (header[col] != name) throw at(col, "expected the column '" + std::string(name) + "', got '" + header[col] + "'");
         ++col;
     }
     if (header.back() != "pareto" || header.size() <= col)
-        throw at(1, header.size() - 1, "expected 'pareto' as the last column, got '" + header.back() + "'");
+        throw at(header.size() - 1, "expected 'pareto' as the last column, got '" + header.back() + "'");
     for (; col + 1 < header.size(); ++col) {
         if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
-            throw at(1, col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
+            throw at(col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
         t.passes.push_back(header[col].substr(kPassPrefix.size()));
     }
-    const size_t middle = cameraCol + 1;                       // "metric"
-    const size_t passStart = middle + std::size(kMiddle);      // the first gpu_ms.<pass>
+    l.middle = l.cameraCol + 1;                   // "metric"
+    l.passStart = l.middle + std::size(kMiddle);  // the first gpu_ms.<pass>
+    return l;
+}
 
-    std::map<int, std::vector<std::string>> pointAxes;         // point -> its axis values and where first seen
-    std::map<int, int> pointLine;
-    std::map<std::tuple<int, std::string, std::string, std::string>, int> seen;  // row key -> line
+// One data line's fields as a row; each field checked for its column.
+TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLayout& l, size_t passCount,
+                     const std::string& path) {
+    const std::vector<std::string>& header = l.header;
+    auto at = [&](size_t column, const std::string& what) { return cellError(path, lineNo, column, what); };
+    auto whole = [&](size_t i) {
+        int v = 0;
+        auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+        if (f[i].empty() || ec != std::errc() || p != f[i].data() + f[i].size() || v < 0)
+            throw at(i, header[i] + ": expected a whole number, at least 0, got '" + f[i] + "'");
+        return v;
+    };
+    auto real = [&](size_t i, bool time) {
+        if (f[i].empty()) return kNaN;
+        double v = 0.0;
+        auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+        if (ec != std::errc() || p != f[i].data() + f[i].size() || std::isnan(v))
+            throw at(i, header[i] + ": expected a number or nothing, got '" + f[i] + "'");
+        if (time && !(std::isfinite(v) && v >= 0.0))
+            throw at(i, header[i] + ": expected milliseconds (a finite number, at least 0), got '" + f[i] + "'");
+        return v;
+    };
+    auto named = [&](size_t i) {
+        if (f[i].empty()) throw at(i, header[i] + ": empty");
+        return f[i];
+    };
+    TradeoffRow r;
+    r.point = whole(0);
+    r.axisValues.assign(f.begin() + 1, f.begin() + static_cast<std::ptrdiff_t>(l.cameraCol));
+    for (size_t a = 0; a < r.axisValues.size(); ++a)
+        if (r.axisValues[a].empty()) throw at(a + 1, header[a + 1] + ": empty");
+    r.camera = named(l.cameraCol);
+    r.metric = named(l.middle);
+    if (std::find(std::begin(kMetrics), std::end(kMetrics), r.metric) == std::end(kMetrics))
+        throw at(l.middle, "metric: expected flip, rms, psnr or ssim, got '" + r.metric + "'");
+    r.buffer = named(l.middle + 1);
+    r.error = real(l.middle + 2, false);
+    r.errorLo = real(l.middle + 3, false);
+    r.errorHi = real(l.middle + 4, false);
+    r.frames = whole(l.middle + 5);
+    r.frameGpuMs = real(l.middle + 6, true);
+    r.frameGpuMsLo = real(l.middle + 7, true);
+    r.frameGpuMsHi = real(l.middle + 8, true);
+    for (size_t p = 0; p < passCount; ++p) r.passGpuMs.push_back(real(l.passStart + p, true));
+    const size_t last = header.size() - 1;
+    if (f[last] != "0" && f[last] != "1") throw at(last, "pareto: expected 0 or 1, got '" + f[last] + "'");
+    r.pareto = f[last] == "1";
+    return r;
+}
+
+// A point keeps its axis values on every line, and no row key comes twice.
+class RowChecks {
+public:
+    RowChecks(const CsvLayout& l, const std::string& path) : l_(l), path_(path) {}
+    void check(const TradeoffRow& r, int lineNo) {
+        auto [it, first] = pointAxes_.emplace(r.point, r.axisValues);
+        if (first) {
+            pointLine_[r.point] = lineNo;
+        } else if (it->second != r.axisValues) {
+            size_t a = 0;
+            while (it->second[a] == r.axisValues[a]) ++a;
+            throw cellError(path_, lineNo, a + 1,
+                            "point " + std::to_string(r.point) + " has " + l_.header[a + 1] + " '" + r.axisValues[a] +
+                                "' here and '" + it->second[a] + "' on line " + std::to_string(pointLine_[r.point]));
+        }
+        auto [s, fresh] = seen_.emplace(std::make_tuple(r.point, r.camera, r.metric, r.buffer), lineNo);
+        if (!fresh)
+            throw cellError(path_, lineNo, 0,
+                            "point " + std::to_string(r.point) + ", camera " + r.camera + ", " + r.metric + " on " +
+                                r.buffer + " is there twice (also line " + std::to_string(s->second) +
+                                "; a file joined twice?)");
+    }
+
+private:
+    const CsvLayout& l_;
+    const std::string& path_;
+    std::map<int, std::vector<std::string>> pointAxes_;  // point -> its axis values
+    std::map<int, int> pointLine_;                       // point -> where first seen
+    std::map<std::tuple<int, std::string, std::string, std::string>, int> seen_;  // row key -> line
+};
+
+}  // namespace
+
+TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string& path) {
+    std::istringstream in(text);
+    std::string line;
+    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));
+    if (!std::getline(in, line) || line.empty() || line == "\r")
+        throw FileError(path, "line 1: empty (expected the tradeoff CSV header " + expected + ")");
+    TradeoffTable t;
+    const CsvLayout layout = parseHeader(line, path, expected, t);
+    RowChecks checks(layout, path);
     // Every line tradeoff writes ends in a newline: a last line without one was cut.
     const bool complete = text.back() == '\n';
     int lineNo = 1;
@@ -173,66 +273,11 @@ TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string
         if (!complete && in.peek() == std::char_traits<char>::eof())
             throw FileError(path, "line " + std::to_string(lineNo) + ": the last line has no end (is the file cut short?)");
         const std::vector<std::string> f = splitCsvLine(line);
-        if (f.size() != header.size())
-            throw at(lineNo, std::min(f.size(), header.size()),
-                     "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
-        auto whole = [&](size_t i) {
-            int v = 0;
-            auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
-            if (f[i].empty() || ec != std::errc() || p != f[i].data() + f[i].size() || v < 0)
-                throw at(lineNo, i, header[i] + ": expected a whole number, at least 0, got '" + f[i] + "'");
-            return v;
-        };
-        auto real = [&](size_t i, bool time) {
-            if (f[i].empty()) return kNaN;
-            double v = 0.0;
-            auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
-            if (ec != std::errc() || p != f[i].data() + f[i].size() || std::isnan(v))
-                throw at(lineNo, i, header[i] + ": expected a number or nothing, got '" + f[i] + "'");
-            if (time && !(std::isfinite(v) && v >= 0.0))
-                throw at(lineNo, i, header[i] + ": expected milliseconds (a finite number, at least 0), got '" + f[i] + "'");
-            return v;
-        };
-        auto named = [&](size_t i) {
-            if (f[i].empty()) throw at(lineNo, i, header[i] + ": empty");
-            return f[i];
-        };
-        TradeoffRow r;
-        r.point = whole(0);
-        r.axisValues.assign(f.begin() + 1, f.begin() + static_cast<std::ptrdiff_t>(cameraCol));
-        for (size_t a = 0; a < r.axisValues.size(); ++a)
-            if (r.axisValues[a].empty()) throw at(lineNo, a + 1, header[a + 1] + ": empty");
-        r.camera = named(cameraCol);
-        r.metric = named(middle);
-        if (std::find(std::begin(kMetrics), std::end(kMetrics), r.metric) == std::end(kMetrics))
-            throw at(lineNo, middle, "metric: expected flip, rms, psnr or ssim, got '" + r.metric + "'");
-        r.buffer = named(middle + 1);
-        r.error = real(middle + 2, false);
-        r.errorLo = real(middle + 3, false);
-        r.errorHi = real(middle + 4, false);
-        r.frames = whole(middle + 5);
-        r.frameGpuMs = real(middle + 6, true);
-        r.frameGpuMsLo = real(middle + 7, true);
-        r.frameGpuMsHi = real(middle + 8, true);
-        for (size_t p = 0; p < t.passes.size(); ++p) r.passGpuMs.push_back(real(passStart + p, true));
-        const size_t last = header.size() - 1;
-        if (f[last] != "0" && f[last] != "1") throw at(lineNo, last, "pareto: expected 0 or 1, got '" + f[last] + "'");
-        r.pareto = f[last] == "1";
-
-        auto [it, first] = pointAxes.emplace(r.point, r.axisValues);
-        if (first) {
-            pointLine[r.point] = lineNo;
-        } else if (it->second != r.axisValues) {
-            size_t a = 0;
-            while (it->second[a] == r.axisValues[a]) ++a;
-            throw at(lineNo, a + 1, "point " + std::to_string(r.point) + " has " + header[a + 1] + " '" + r.axisValues[a] +
-                                        "' here and '" + it->second[a] + "' on line " + std::to_string(pointLine[r.point]));
-        }
-        auto [s, fresh] = seen.emplace(std::make_tuple(r.point, r.camera, r.metric, r.buffer), lineNo);
-        if (!fresh)
-            throw at(lineNo, 0, "point " + std::to_string(r.point) + ", camera " + r.camera + ", " + r.metric + " on " +
-                                    r.buffer + " is there twice (also line " + std::to_string(s->second) +
-                                    "; a file joined twice?)");
+        if (f.size() != layout.header.size())
+            throw cellError(path, lineNo, std::min(f.size(), layout.header.size()),
+                            "expected " + std::to_string(layout.header.size()) + " fields, got " + std::to_string(f.size()));
+        TradeoffRow r = parseRow(f, lineNo, layout, t.passes.size(), path);
+        checks.check(r, lineNo);
         t.rows.push_back(std::move(r));
     }
     return t;

@@ -564,6 +564,57 @@ TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
     return t;
 }
 
+namespace {
+
+// bench's grid as a record holds it (readBenchGrid reads it back).
+Json benchGridJson(const RecordedBench& bench) {
+    if (bench.merged) return {{"merged", true}};
+    const BenchOptions& o = bench.options;
+    Json sizes = Json::array(), sweep = Json::array();
+    for (const auto& [w, h] : o.grid.sizes) sizes.push_back(sizeText(w, h));
+    for (const auto& a : o.grid.knobAxes) sweep.push_back({{"knob", a.knob}, {"values", a.values}});
+    return {{"sizes", sizes},
+            {"lights", o.grid.lights},
+            {"sweep", sweep},
+            {"block", o.block},
+            {"light_radius", o.lightRadius},
+            {"keep_scene_lights", o.keepSceneLights},
+            {"orbit", o.orbit},
+            {"walkthrough", o.walkthrough},
+            {"lpp", o.lpp},
+            {"lpp_poses", o.lppPoses},
+            {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)},
+            {"baseline", o.baseline},
+            {"ratio_of", bench.ratioOf},
+            {"resamples", bench.resamples}};
+}
+
+// tradeoff's sweep as a record holds it (readTradeoffGrid reads it back).
+Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
+    if (tradeoff.merged) return {{"merged", true}};
+    const TradeoffOptions& o = tradeoff.options;
+    Json axes = Json::array();
+    for (const auto& a : o.sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
+    return {{"axes", axes},
+            {"one_at_a_time", o.sweep.oneAtATime},
+            {"centre", o.sweep.centre},
+            {"exclude", tradeoff.exclude},
+            {"against", o.against},
+            {"metric", o.metric},
+            {"buffer", o.buffer},
+            {"ao_rays", tradeoff.aoRays},
+            {"orbit", o.orbit},
+            {"walkthrough", o.walkthrough},
+            {"block", o.block},
+            {"resamples", o.resamples},
+            {"run_preset", tradeoff.runPreset},
+            {"run_presets", tradeoff.runPresets},
+            {"run_sets", tradeoff.runSets},
+            {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
+}
+
+}  // namespace
+
 std::string ExperimentRecord::json(const std::string& recordPath) const {
     std::error_code ec;
     const fs::path recordDir = recordPath.empty() ? fs::path() : fs::absolute(recordPath, ec).parent_path().lexically_normal();
@@ -598,54 +649,8 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["warmup"] = warmup;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
     if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}};
-    if (bench) {
-        const BenchOptions& o = bench->options;
-        Json sizes = Json::array(), sweep = Json::array();
-        for (const auto& [w, h] : o.grid.sizes) sizes.push_back(sizeText(w, h));
-        for (const auto& a : o.grid.knobAxes) sweep.push_back({{"knob", a.knob}, {"values", a.values}});
-        if (bench->merged)
-            j["grid"] = {{"merged", true}};
-        else
-            j["grid"] = {{"sizes", sizes},
-                         {"lights", o.grid.lights},
-                         {"sweep", sweep},
-                         {"block", o.block},
-                         {"light_radius", o.lightRadius},
-                         {"keep_scene_lights", o.keepSceneLights},
-                         {"orbit", o.orbit},
-                         {"walkthrough", o.walkthrough},
-                         {"lpp", o.lpp},
-                         {"lpp_poses", o.lppPoses},
-                         {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)},
-                         {"baseline", o.baseline},
-                         {"ratio_of", bench->ratioOf},
-                         {"resamples", bench->resamples}};
-    }
-    if (tradeoff) {
-        const TradeoffOptions& o = tradeoff->options;
-        if (tradeoff->merged) {
-            j["grid"] = {{"merged", true}};
-        } else {
-            Json axes = Json::array();
-            for (const auto& a : o.sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
-            j["grid"] = {{"axes", axes},
-                         {"one_at_a_time", o.sweep.oneAtATime},
-                         {"centre", o.sweep.centre},
-                         {"exclude", tradeoff->exclude},
-                         {"against", o.against},
-                         {"metric", o.metric},
-                         {"buffer", o.buffer},
-                         {"ao_rays", tradeoff->aoRays},
-                         {"orbit", o.orbit},
-                         {"walkthrough", o.walkthrough},
-                         {"block", o.block},
-                         {"resamples", o.resamples},
-                         {"run_preset", tradeoff->runPreset},
-                         {"run_presets", tradeoff->runPresets},
-                         {"run_sets", tradeoff->runSets},
-                         {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
-        }
-    }
+    if (bench) j["grid"] = benchGridJson(*bench);
+    if (tradeoff) j["grid"] = tradeoffGridJson(*tradeoff);
     j["build"] = fieldsJson(build);
     j["gl"] = fieldsJson(gl);
     j["host"] = fieldsJson(host);
