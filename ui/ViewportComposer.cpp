@@ -30,7 +30,12 @@ glm::ivec2 ViewportComposer::targetSize(const UiState& state) {
 }
 
 void ViewportComposer::render(UiState& state) {
-    Pipeline& pipeline = session_.pipeline();
+    followViewport(state);
+    stepBackgroundWork(state);
+    renderOnChange(state);
+}
+
+void ViewportComposer::followViewport(UiState& state) {
     // The render size: the viewport panel's, times the resolution scale.
     if (state.wantedSize.x > 0) {
         const glm::ivec2 target = targetSize(state);
@@ -40,22 +45,30 @@ void ViewportComposer::render(UiState& state) {
         }
     }
     state.animator.update(session_.mutableScene(), state.frame);
+}
+
+void ViewportComposer::stepBackgroundWork(UiState& state) {
     // A change being measured: this frame renders the knob values of its
     // side (one measured frame a UI frame, so the window stays responsive).
-    bool measuring = false;
+    measuring_ = false;
     if (state.measure.active()) {
         if (state.viewport.mode != DisplayMode::Deferred)
             state.measure.cancel(session_.knobs(), "cancelled: a forward view runs no deferred pass");
         else
-            measuring = state.measure.prepareFrame(session_.knobs());
+            measuring_ = state.measure.prepareFrame(session_.knobs());
     }
     // A quick sweep's frame first; the view renders again after it.
-    if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring) {
+    if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
         state.sweep.step(session_);
         state.forceRender = true;
     }
     // File > Save record's measured frame, of the state saved (it puts the current one back).
-    if (state.recordRun.running() && !measuring) state.recordRun.step(state, session_);
+    if (state.recordRun.running() && !measuring_) state.recordRun.step(state, session_);
+}
+
+void ViewportComposer::renderOnChange(UiState& state) {
+    Pipeline& pipeline = session_.pipeline();
+    const bool measuring = measuring_;
     if (state.ab.pinRequest) {
         state.ab.pinRequest = false;
         pin(state);

@@ -30,8 +30,20 @@ public:
     // The A/B split's last measured pair (UiState::ab says whether it is ready).
     const SplitComparison& abImages() const { return split_; }
 
-    // Once a UI frame, before the panels draw.
+    // Once a UI frame, before the panels draw: followViewport,
+    // stepBackgroundWork and renderOnChange in turn (the window's loop,
+    // GuiLoop, calls them one by one).
     void render(UiState& state);
+    // The render size follows the viewport panel (targetSize); the light animation advances.
+    void followViewport(UiState& state);
+    // The work that renders frames of its own between UI frames takes its
+    // step: a change measured (this frame renders the knob values of its
+    // side), a quick sweep's step, File > Save record's measured frame.
+    void stepBackgroundWork(UiState& state);
+    // The pipeline rendered when what the images depend on changed (or
+    // timings are captured, a change is measured, the A/B view needs frames),
+    // the viewport's and the side view's images made, the timer polled, the probe read.
+    void renderOnChange(UiState& state);
     // The size (pixels, at least 16 x 16) this frame renders at: the viewport
     // panel's wanted size times the resolution scale; state.renderSize until
     // the panel has a size.
@@ -64,6 +76,7 @@ private:
     static constexpr size_t kAbFrames = 10;  // frames per side rendered for the times
 
     RenderSession& session_;
+    bool measuring_ = false;  // this frame renders a measured change's side (stepBackgroundWork)
     BufferView sideView_;
     ForwardPreview forward_;
     ViewportOverlay overlay_;
