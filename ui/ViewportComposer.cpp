@@ -260,7 +260,13 @@ void ViewportComposer::renderImages(UiState& state) {
         state.report = {};
     }
 
-    // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
+    makeViewportImage(state, viewportWhy);
+    makeSideImage(state, sideWhy);
+}
+
+void ViewportComposer::makeViewportImage(UiState& state, const std::string& viewportWhy) {
+    Pipeline& pipeline = session_.pipeline();
+    const bool deferred = state.viewport.mode == DisplayMode::Deferred;
     const gl::Texture* base = nullptr;
     const gl::Texture* depth = nullptr;
     keepHistogram(state.viewportImage);
@@ -305,6 +311,10 @@ void ViewportComposer::renderImages(UiState& state) {
         state.viewportImage.width = base->width();
         state.viewportImage.height = base->height();
     }
+}
+
+void ViewportComposer::makeSideImage(UiState& state, const std::string& sideWhy) {
+    Pipeline& pipeline = session_.pipeline();
     keepHistogram(state.sideImage);
     if (state.panels.sideView) {
         if (!sideWhy.empty()) {

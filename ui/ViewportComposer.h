@@ -54,7 +54,14 @@ public:
 private:
     std::string frameSignature(const UiState& state) const;
     void adjustAutoScale(UiState& state);
+    // The pipeline rendered with the final image and what the viewport and
+    // the side view show (each checked with Pipeline::plan first: an output
+    // whose pass cannot run shows why), then their images made.
     void renderImages(UiState& state);
+    // The viewport's image: the final image, a buffer view, or a forward mode; then overlays.
+    void makeViewportImage(UiState& state, const std::string& viewportWhy);
+    // The side view's image: the buffer it shows, through its own BufferView.
+    void makeSideImage(UiState& state, const std::string& sideWhy);
     static void keepHistogram(ShownImage& img);
     void histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state);
     void refreshHistograms(UiState& state);
