@@ -19,6 +19,7 @@
 
 #include "app/CommandLine.h"
 #include "app/FrameWait.h"
+#include "app/GuiLoop.h"
 #include "app/RenderDocCapture.h"
 #include "app/ScriptedInput.h"
 #include "renderer/Error.h"
@@ -104,61 +105,43 @@ private:
     std::string eglFailed_;
 };
 
-// The window's input events, queued in arrival order for ui::InputQueue to
-// hand to ImGui a change per key or button per frame (the callbacks have no
-// user pointer to reach the frame loop through: GLFW's is ImGui's backend's).
-ui::InputQueue& inputQueue() {
-    static ui::InputQueue queue;
-    return queue;
-}
-// Files dropped on the window since the last frame.
-std::vector<std::string>& droppedFiles() {
-    static std::vector<std::string> files;
-    return files;
-}
-
-// Input and window events seen by the callbacks: the frame loop sleeps
-// (FrameWait) only when none came since its last frame.
-std::uint64_t& windowEvents() {
-    static std::uint64_t count = 0;
-    return count;
-}
-
+// GLFW's callbacks: the window's events, for the frame loop (GuiLoop's
+// WindowEvents: the keys, text and buttons queued in arrival order).
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
-    ++windowEvents();
-    if (action != GLFW_REPEAT) inputQueue().key(key, action == GLFW_PRESS, mods);
+    ++windowEvents().count;
+    if (action != GLFW_REPEAT) windowEvents().input.key(key, action == GLFW_PRESS, mods);
 }
 void onChar(GLFWwindow*, unsigned codepoint) {
-    ++windowEvents();
-    inputQueue().character(codepoint);
+    ++windowEvents().count;
+    windowEvents().input.character(codepoint);
 }
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
-    ++windowEvents();
+    ++windowEvents().count;
     double x = 0, y = 0;
     glfwGetCursorPos(window, &x, &y);
-    inputQueue().button(button, action == GLFW_PRESS, static_cast<float>(x), static_cast<float>(y));
+    windowEvents().input.button(button, action == GLFW_PRESS, static_cast<float>(x), static_cast<float>(y));
 }
 void onDrop(GLFWwindow*, int count, const char** paths) {
-    ++windowEvents();
-    for (int i = 0; i < count; ++i) droppedFiles().emplace_back(paths[i]);
+    ++windowEvents().count;
+    for (int i = 0; i < count; ++i) windowEvents().dropped.emplace_back(paths[i]);
 }
 // The rest only count; ImGui's backend reads the cursor itself (1.86) and
 // gets the wheel, focus and enter/leave from its own callbacks, called on.
-void onCursorPos(GLFWwindow*, double, double) { ++windowEvents(); }
+void onCursorPos(GLFWwindow*, double, double) { ++windowEvents().count; }
 void onScroll(GLFWwindow* window, double x, double y) {
-    ++windowEvents();
+    ++windowEvents().count;
     ImGui_ImplGlfw_ScrollCallback(window, x, y);
 }
 void onFocus(GLFWwindow* window, int focused) {
-    ++windowEvents();
+    ++windowEvents().count;
     ImGui_ImplGlfw_WindowFocusCallback(window, focused);
 }
 void onCursorEnter(GLFWwindow* window, int entered) {
-    ++windowEvents();
+    ++windowEvents().count;
     ImGui_ImplGlfw_CursorEnterCallback(window, entered);
 }
-void onWindowChange(GLFWwindow*, int, int) { ++windowEvents(); }
-void onRefresh(GLFWwindow*) { ++windowEvents(); }
+void onWindowChange(GLFWwindow*, int, int) { ++windowEvents().count; }
+void onRefresh(GLFWwindow*) { ++windowEvents().count; }
 
 class ImGuiLayer {
 public:
@@ -259,161 +242,6 @@ void saveLayout(const std::string& path, ui::WorkbenchUi& ui, ui::UiState& state
     }
 }
 
-// Named items drawn in the last frame (ui::noteItem): where, in which panel,
-// and the visible part of that panel.
-nlohmann::json itemsReport() {
-    nlohmann::json items = nlohmann::json::object();
-    for (const auto& [name, d] : ui::drawnItems())
-        if (d.frame == ImGui::GetFrameCount())
-            items[name] = {{"x", d.x}, {"y", d.y}, {"w", d.w}, {"h", d.h}, {"panel", d.window},
-                           {"clip", {d.clipX, d.clipY, d.clipW, d.clipH}}};
-    return items;
-}
-
-// The CPU reference the workbench shows, and the frame's error against it.
-nlohmann::json referenceReport(RenderSession& session) {
-    const ReferencePass* pass = session.pipeline().pass<ReferencePass>();
-    if (!pass || !pass->hasReference()) return {{"shown", false}};
-    const ReferencePass::Errors& e = pass->errors();
-    return {{"shown", true}, {"stats", pass->stats()}, {"mean_absolute", e.meanAbsolute}, {"rms", e.rms},
-            {"max", e.max}, {"mean_relative", e.meanRelative}};
-}
-
-// The A/B split's state and numbers, as the viewport shows them.
-nlohmann::json abReport(const ui::AbView& ab) {
-    auto median = [](std::vector<double> v) -> nlohmann::json {
-        if (v.empty()) return nullptr;
-        std::sort(v.begin(), v.end());
-        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-    };
-    auto side = [&](const ui::AbSide& s) {
-        return nlohmann::json{{"have_error", s.haveError}, {"rms", s.rms}, {"flip", s.flip}, {"gpu_ms_median", median(s.gpuMs)},
-                              {"gpu_frames", s.gpuMs.size()}};
-    };
-    const char* sources[] = {"pinned", "preset", "reference"};
-    const char* displays[] = {"split", "difference", "flip"};
-    nlohmann::json j = {{"enabled", ab.enabled},
-                        {"source", sources[static_cast<int>(ab.source)]},
-                        {"display", displays[static_cast<int>(ab.display)]},
-                        {"preset", ab.preset},
-                        {"divider", ab.divider},
-                        {"divider_x", ab.dividerScreen.x},
-                        {"ready", ab.ready},
-                        {"unavailable", ab.unavailable},
-                        {"describe_b", ab.describeB},
-                        {"size", {ab.width, ab.height}},
-                        {"rms", ab.rms},
-                        {"psnr", std::isfinite(ab.psnr) ? nlohmann::json(ab.psnr) : nlohmann::json(nullptr)},
-                        {"mean", ab.meanAbsolute},
-                        {"flip", ab.haveFlip ? nlohmann::json(ab.flip) : nlohmann::json(nullptr)},
-                        {"a", side(ab.a)},
-                        {"b", side(ab.b)}};
-    if (ab.gpuDifference.valid())
-        j["gpu_difference_ms"] = {ab.gpuDifference.difference, ab.gpuDifference.low, ab.gpuDifference.high};
-    return j;
-}
-
-// --layout-out: where ImGui drew each panel (its own record, not ours), the
-// window size and the probe, for the tests to check.
-void writeLayoutReport(const std::string& path, const ui::WorkbenchUi& ui, const ui::UiState& state, int fbw, int fbh,
-                       RenderSession& session) {
-    const PassTimer& timer = session.pipeline().timer();
-    // The newest frame whose GPU times have come back (-1: none).
-    const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
-    const long long lastTimedFrame =
-        total && !total->samples.empty() ? static_cast<long long>(total->samples.back().frame) : -1;
-    nlohmann::json errors = nlohmann::json::array();
-    for (const ui::Message& m : state.log.all())
-        if (m.error) errors.push_back(m.text);
-    nlohmann::json panels = nlohmann::json::array();
-    for (const auto& d : ui.drawnPanels()) {
-        const ImGuiWindow* w = ImGui::FindWindowByName(d.name.c_str());
-        if (!w || !w->WasActive) continue;
-        panels.push_back({{"name", d.name}, {"x", w->Pos.x}, {"y", w->Pos.y}, {"w", w->Size.x}, {"h", w->Size.y}});
-    }
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const nlohmann::json j = {{"display", {display.x, display.y}},
-                              {"framebuffer", {fbw, fbh}},
-                              {"menu_bar_height", ImGui::GetFrameHeight()},
-                              {"panels", panels},
-                              {"probe", {{"pinned", state.probe.pinned},
-                                         {"pixel", {state.probe.pixel.x, state.probe.pixel.y}},
-                                         {"shows_values", state.probe.result.inside}}},
-                              {"camera", {{"position", {state.cameraPosition.x, state.cameraPosition.y, state.cameraPosition.z}}}},
-                              {"viewport", {{"output", state.viewport.output},
-                                            {"zoom", state.viewport.zoom},
-                                            {"unavailable", state.viewportImage.unavailable}}},
-                              {"reference", referenceReport(session)},
-                              {"render_size", {state.renderSize.x, state.renderSize.y}},
-                              {"resolution", {{"scale", state.viewport.scale()},
-                                              {"auto", state.viewport.resolution == ui::ResolutionScale::Auto},
-                                              {"software_start", state.viewport.softwareStart}}},
-                              {"wanted_size", {state.wantedSize.x, state.wantedSize.y}},
-                              {"frames", state.frame + 1},
-                              {"frames_rendered", state.framesRendered},
-                              {"last_rendered_frame", static_cast<long long>(state.report.frameIndex)},
-                              {"last_timed_frame", lastTimedFrame},
-                              {"renderdoc_captures", state.renderdocCaptures},
-                              {"banner", state.log.banner() ? state.log.banner()->text : std::string()},
-                              {"scene", {{"name", session.scene().name}, {"source", session.scene().source}}},
-                              {"recent_scenes", std::vector<std::string>(state.recentScenes.begin(), state.recentScenes.end())},
-                              {"active_preset", state.activePreset},
-                              {"ab", abReport(state.ab)},
-                              {"axes", state.viewport.overlay.axes},
-                              {"timings", ui::timingsReport(timer, state)},
-                              {"items", itemsReport()},
-                              {"errors", errors}};
-    writeFileAtomically(path, j.dump(2) + "\n");
-}
-
-// The viewer's *save*: the shown output at its own resolution, EXR raw or
-// PNG as the view maps it, into the export folder.
-void saveShownOutput(ui::ImageView& view, ui::UiState& state, RenderSession& session) {
-    const std::string ext = view.saveRequest;
-    view.saveRequest.clear();
-    if (&view == &state.viewport && state.viewport.mode != ui::DisplayMode::Deferred) {
-        state.log.error("save: the textured and wireframe previews are no pipeline output; F12 saves the window", state.time,
-                        "save buffer");
-        return;
-    }
-    std::string name = view.output;
-    std::replace(name.begin(), name.end(), '.', '_');
-    const std::string path = state.exportDir + "/" + name + "-frame" + std::to_string(state.report.frameIndex) + "." + ext;
-    try {
-        std::error_code ec;
-        fs::create_directories(state.exportDir, ec);
-        BufferViewSettings s = view.settingsOr();
-        s.nearPlane = session.camera().nearPlane;
-        s.farPlane = session.camera().farPlane;
-        s.reversedDepth = session.pipeline().lastCamera().depth.x > 0.5f;
-        session.writeOutput(view.output, path, s);
-        state.log.done(view.output + " saved to " + path, state.time, "save buffer");
-    } catch (const std::exception& e) {
-        state.log.error("cannot save " + view.output + ": " + e.what(), state.time, "save buffer");
-    }
-}
-
-// What the frame just drawn leaves to do, for FrameWait.
-FrameActivity activityAfterFrame(const ui::UiState& state, bool scripted, bool input, bool rendered) {
-    FrameActivity a;
-    a.scripted = scripted;
-    a.input = input;
-    a.rendered = rendered;
-    a.busy = state.timingCapture || state.animator.running() || state.measure.active() || state.sweep.running() ||
-             state.recordRun.running() || state.timingsPending || state.forceRender || state.requestScreenshot ||
-             state.requestRenderDocCapture || state.requestReference || state.requestReloadShaders ||
-             state.requestOpenScene || state.requestQuit || !droppedFiles().empty() ||
-             inputQueue().pending() > 0;  // fast input handed over a frame at a time (InputQueue)
-    a.background = state.referenceProgress >= 0.0;
-    const ImGuiIO& io = ImGui::GetIO();
-    for (bool down : io.MouseDown) a.held = a.held || down;
-    for (bool down : io.KeysDown) a.held = a.held || down;
-    a.typing = io.WantTextInput;
-    if (const ui::Message* toast = state.log.toast(state.time))
-        a.toastLeft = std::max(0.0, toast->time + ui::MessageLog::kToastSeconds - state.time);
-    return a;
-}
-
 // The window's state at start-up from the options (gui's command line): the
 // scene with the run's knobs, the folders, the view, the resolution, the A/B split.
 void setUpState(const GuiOptions& options, Scene scene, bool scripted, RenderSession& session, ui::UiState& state) {
@@ -482,118 +310,6 @@ RenderDocCapture attachRenderDoc(ui::UiState& state, const Window& window) {
     return renderdoc;
 }
 
-// A frame's scripted keys, text, drops and knob edits: keys and text go
-// through the input queue as a person's would.
-void feedScriptedInput(const ScriptedFrameInput& in, RenderSession& session, ui::UiState& state) {
-    for (const auto& [key, mods] : in.keys) {
-        for (const auto& [bit, modKey] : kModifierKeys)
-            if (mods & bit) inputQueue().key(modKey, true, mods);
-        inputQueue().key(key, true, mods);
-        inputQueue().key(key, false, mods);
-        for (const auto& [bit, modKey] : kModifierKeys)
-            if (mods & bit) inputQueue().key(modKey, false, 0);
-    }
-    for (const char32_t c : in.text) {
-        const ScriptedKey k = scriptedKeyForChar(c);
-        if (k.key >= 0) {
-            if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, true, k.mods);
-            inputQueue().key(k.key, true, k.mods);
-        }
-        inputQueue().character(static_cast<unsigned>(c));
-        if (k.key >= 0) {
-            inputQueue().key(k.key, false, k.mods);
-            if (k.mods) inputQueue().key(GLFW_KEY_LEFT_SHIFT, false, 0);
-        }
-    }
-    for (const auto& f : in.drops) droppedFiles().push_back(f);
-    for (const auto& a : in.sets) {
-        try {
-            session.knobs().applyAssignment(a);
-        } catch (const std::exception& e) {
-            state.log.error(e.what(), state.time, "set knob");
-        }
-    }
-}
-
-// The scripted pointer, over what the backend read from the (idle) window.
-struct ScriptedPointer {
-    std::optional<ImVec2> pos;
-    bool left = false, ctrl = false;
-    void apply(const ScriptedFrameInput& in) {
-        if (in.mouseX && in.mouseY) pos = ImVec2(*in.mouseX, *in.mouseY);
-        if (in.leftDown) left = *in.leftDown;
-        if (in.ctrl) ctrl = *in.ctrl;
-        if (!pos) return;
-        ImGuiIO& io = ImGui::GetIO();
-        io.MousePos = *pos;
-        io.MouseDown[ImGuiMouseButton_Left] = left;
-        io.MouseWheel += in.wheel;
-        io.KeyCtrl = io.KeyCtrl || ctrl;
-    }
-};
-
-// What the panels asked for this frame that needs the session: buffer saves, a shader reload.
-void carryOutRequests(ui::UiState& state, RenderSession& session) {
-    for (ui::ImageView* view : {static_cast<ui::ImageView*>(&state.viewport), static_cast<ui::ImageView*>(&state.side)})
-        if (!view->saveRequest.empty()) saveShownOutput(*view, state, session);
-    if (state.requestReloadShaders) {
-        state.requestReloadShaders = false;
-        const auto errors = session.shaders().reloadChanged();
-        ++state.shaderGeneration;
-        if (errors.empty()) state.log.done("shaders reloaded", state.time, "reload shaders");
-        for (const auto& e : errors)
-            state.log.error("shader error (the last good program stays in use):\n" + e, state.time, "reload shaders");
-    }
-}
-
-// The UI drawn into the window; F12's screenshot (or --screenshot's after
-// the last scripted frame); RenderDoc's capture triggered and, after the
-// swap, noted. Returns the framebuffer's size.
-glm::ivec2 presentFrame(GLFWwindow* window, const GuiOptions& options, bool scripted, bool lastFrame, ui::UiState& state,
-                        RenderDocCapture& renderdoc, int& capturesSeen) {
-    ImGui::Render();
-    int fbw = 0, fbh = 0;
-    glfwGetFramebufferSize(window, &fbw, &fbh);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fbw, fbh);
-    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (state.requestScreenshot || (lastFrame && !options.screenshot.empty())) {
-        state.requestScreenshot = false;
-        const bool scriptedShot = lastFrame && !options.screenshot.empty();
-        std::error_code ec;
-        if (!scriptedShot) fs::create_directories(state.exportDir, ec);
-        const std::string path = scriptedShot ? options.screenshot
-                                              : state.exportDir + "/screenshot-" + std::to_string(state.frame) + ".png";
-        try {
-            writeImage(path, readWindowFramebuffer(fbw, fbh));
-            state.log.done("screenshot saved to " + fs::absolute(path).string(), state.time, "screenshot");
-            if (scripted) std::printf("wrote %s (%dx%d)\n", path.c_str(), fbw, fbh);
-        } catch (const std::exception& e) {
-            state.log.error(e.what(), state.time, "screenshot");
-            if (scripted) throw;
-        }
-    }
-    if (state.requestRenderDocCapture) {
-        state.requestRenderDocCapture = false;
-        if (renderdoc.available()) {
-            renderdoc.triggerCapture();
-            state.forceRender = true;  // the captured frame renders every pass, changed or not
-        }
-        else state.log.error("no RenderDoc capture: " + renderdoc.why(), state.time, "renderdoc");
-    }
-    glfwSwapBuffers(window);
-    // RenderDoc writes a triggered capture at the swap.
-    if (renderdoc.available() && renderdoc.captureCount() > capturesSeen) {
-        capturesSeen = renderdoc.captureCount();
-        state.renderdocCaptures.push_back(renderdoc.lastCapturePath());
-        state.log.done("RenderDoc capture saved to " + state.renderdocCaptures.back(), state.time, "renderdoc");
-        if (scripted) std::printf("wrote %s (RenderDoc capture)\n", state.renderdocCaptures.back().c_str());
-    }
-    return {fbw, fbh};
-}
-
 // At exit: the layout saved (not in scripted runs), --save-record measured, --dump-knobs written.
 void finishRun(const GuiOptions& options, bool scripted, const std::string& layoutPath, ui::WorkbenchUi& ui,
                ui::UiState& state, RenderSession& session) {
@@ -637,7 +353,6 @@ int runGui(const GuiOptions& options, Scene scene) {
         ui::AovCostGuard aovGuard;
         state.nearestSampler = &frame.nearestSampler();
         RenderDocCapture renderdoc = attachRenderDoc(state, window);
-        int capturesSeen = 0;
         // A record that cannot be opened is a message on screen (Messages and the
         // banner) over the start-up scene, as File > Open record... has it.
         if (!options.openRecord.empty() && !ui::openRecord(state, session, options.openRecord))
@@ -646,67 +361,7 @@ int runGui(const GuiOptions& options, Scene scene) {
         ui::WorkbenchUi ui;
         if (!options.layoutIn.empty()) loadLayout(options.layoutIn, ui, state, true);
         else if (!layoutPath.empty()) loadLayout(layoutPath, ui, state);
-        ScriptedPointer pointer;
-        const auto start = std::chrono::steady_clock::now();
-        auto last = start;
-        FrameWait frameWait;
-        double waitSeconds = 0.0;
-        std::uint64_t eventsSeen = windowEvents();
-        while (!glfwWindowShouldClose(window.get()) && !state.requestQuit) {
-            // Asleep until an event or the timeout when nothing needs a frame (FrameWait).
-            if (waitSeconds > 0.0) glfwWaitEventsTimeout(waitSeconds);
-            else glfwPollEvents();
-            const auto t0 = std::chrono::steady_clock::now();
-            const float dt = std::min(std::chrono::duration<float>(t0 - last).count(), 0.1f);
-            last = t0;
-            state.time = std::chrono::duration<double>(t0 - start).count();
-            const ScriptedFrameInput in = script.at(static_cast<int>(state.frame));
-            if (in.resize) {
-                glfwSetWindowSize(window.get(), in.resize->first, in.resize->second);
-                glfwPollEvents();
-            }
-            const std::uint64_t renderedBefore = state.framesRendered;
-            feedScriptedInput(in, session, state);
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            state.keyPresses = inputQueue().feed(ImGui::GetIO());
-            state.droppedFiles.swap(droppedFiles());
-            droppedFiles().clear();
-            pointer.apply(in);
-            ImGui::NewFrame();
-            // An AOV state that would take minutes a frame is refused before it renders (issue 22).
-            aovGuard.beforeFrame(state, session);
-            try {
-                frame.render(state);
-                state.log.succeeded("render");
-            } catch (const std::exception& e) {
-                state.log.error(std::string("frame failed: ") + e.what(), state.time, "render");
-            }
-            state.cameraPosition = session.camera().position;
-            ui.draw(state, session, dt);
-            aovGuard.draw(state, session);
-            carryOutRequests(state, session);
-            const bool lastFrame = scripted && static_cast<int>(state.frame) + 1 >= options.run.frames;
-            const glm::ivec2 fb = presentFrame(window.get(), options, scripted, lastFrame, state, renderdoc, capturesSeen);
-            state.cpuFrameMs.push_back(std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count());
-            if (state.cpuFrameMs.size() > PassTimer::kHistory) state.cpuFrameMs.pop_front();
-            if (lastFrame && !options.layoutOut.empty()) {
-                if (state.ab.ready) {
-                    // The two images the A/B numbers were measured on, for `compare FILE.b.png FILE.a.png`.
-                    writeImage(options.layoutOut + ".a.png", frame.abImages().imageA());
-                    writeImage(options.layoutOut + ".b.png", frame.abImages().imageB());
-                }
-                writeLayoutReport(options.layoutOut, ui, state, fb.x, fb.y, session);
-                std::printf("wrote %s\n", options.layoutOut.c_str());
-            }
-            ++state.frame;
-            if (lastFrame) break;
-            waitSeconds = frameWait.timeout(activityAfterFrame(state, scripted, windowEvents() != eventsSeen,
-                                                               state.framesRendered != renderedBefore));
-            eventsSeen = windowEvents();
-            if (!scripted && !options.layoutOut.empty() && (glfwWindowShouldClose(window.get()) || state.requestQuit))
-                writeLayoutReport(options.layoutOut, ui, state, fb.x, fb.y, session);
-        }
+        GuiLoop({window.get(), &options, &script, &session, &state, &frame, &aovGuard, &ui, &renderdoc}).run();
         finishRun(options, scripted, layoutPath, ui, state, session);
     }
     return 0;

@@ -1,7 +1,9 @@
 #pragma once
 // The workbench window: a GLFW window with an OpenGL 4.5 core context, Dear
-// ImGui on top, and the frame loop that renders the pipeline, prepares the
-// images the panels show, draws the UI and carries out its requests.
+// ImGui on top, the session, the UI state and the panels set up from the
+// options, then handed to the frame loop (GuiLoop), which renders the
+// pipeline, prepares the images the panels show, draws the UI and carries
+// out its requests; at exit the layout, --save-record and --dump-knobs.
 #include <memory>
 #include <optional>
 #include <string>

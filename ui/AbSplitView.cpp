@@ -47,6 +47,26 @@ std::string msText(const std::vector<double>& ms) {
     return t;
 }
 
+// Split, |A-B| or FLIP: as wide as its longest choice ("FLIP heat ma" was
+// cut at 1024x640), the whole choice in its tooltip.
+void displayCombo(AbView& ab) {
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(displayName(AbDisplay::Flip)).x + ImGui::GetFrameHeight() +
+                            2.0f * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::BeginCombo("##ab_display", displayName(ab.display))) {
+        for (AbDisplay d : {AbDisplay::Split, AbDisplay::Difference, AbDisplay::Flip})
+            if (ImGui::Selectable(displayName(d), ab.display == d)) {
+                ab.display = d;
+                ++ab.generation;
+            }
+        ImGui::EndCombo();
+    }
+    noteItem("ab.display");
+    if (ImGui::IsItemHovered())
+        tooltip("A/B display: %s (split: A left of the divider, B right; |A-B|: the absolute difference; FLIP: the "
+                "perceived difference)",
+                displayName(ab.display));
+}
+
 }  // namespace
 
 float abControls(UiState& state) {
@@ -81,22 +101,7 @@ float abControls(UiState& state) {
         }
     }
     ImGui::SameLine();
-    // As wide as its longest choice ("FLIP heat ma" was cut at 1024x640).
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize(displayName(AbDisplay::Flip)).x + ImGui::GetFrameHeight() +
-                            2.0f * ImGui::GetStyle().FramePadding.x);
-    if (ImGui::BeginCombo("##ab_display", displayName(ab.display))) {
-        for (AbDisplay d : {AbDisplay::Split, AbDisplay::Difference, AbDisplay::Flip})
-            if (ImGui::Selectable(displayName(d), ab.display == d)) {
-                ab.display = d;
-                ++ab.generation;
-            }
-        ImGui::EndCombo();
-    }
-    noteItem("ab.display");
-    if (ImGui::IsItemHovered())
-        tooltip("A/B display: %s (split: A left of the divider, B right; |A-B|: the absolute difference; FLIP: the "
-                "perceived difference)",
-                displayName(ab.display));
+    displayCombo(ab);
     ImGui::SameLine();
     if (ImGui::SmallButton("Pin")) ab.pinRequest = true;
     noteItem("ab.pin");

@@ -26,18 +26,8 @@ Light newLight(LightType type, const Scene& scene, const Camera& cam, size_t ind
     return l;
 }
 
-}  // namespace
-
-void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    if (!beginPanel(title, open)) {
-        ImGui::End();
-        return;
-    }
-    Scene& scene = session.mutableScene();
-    KnobRegistry& knobs = session.knobs();
-    const double threshold = knobs.value(*knobs.find("lighting.threshold"));
-    if (state.selectedLight >= static_cast<int>(scene.lights.size())) state.selectedLight = -1;
-
+// The animation's switch, radius and speed.
+void animationControls(UiState& state, Scene& scene) {
     bool animate = state.animator.running();
     if (ImGui::Checkbox("animate", &animate)) {
         if (animate) state.animator.start(scene);
@@ -49,10 +39,14 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     sameLineIfFits(120.0f);
     ImGui::SetNextItemWidth(60);
     ImGui::DragFloat("speed", &state.animator.speed, 0.01f, 0.0f, 20.0f, "%.2f");
-    // A new light is selected (its editor opens) and scrolled to.
+}
+
+// *add* point, spot, directional (a light in front of the camera); all on,
+// all off. Returns the index of the light added (-1: none).
+int addButtons(Scene& scene, const Camera& camera) {
     int added = -1;
     auto add = [&](LightType type) {
-        scene.lights.push_back(newLight(type, scene, session.camera(), scene.lights.size()));
+        scene.lights.push_back(newLight(type, scene, camera, scene.lights.size()));
         added = static_cast<int>(scene.lights.size()) - 1;
     };
     ImGui::TextDisabled("add");
@@ -68,11 +62,12 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     sameLineIfFits(ImGui::CalcTextSize("all off").x + 16.0f);
     if (ImGui::Button("all off"))
         for (auto& l : scene.lights) l.enabled = false;
-    if (added >= 0) {
-        state.selectedLight = added;
-        scrollToSelected = true;
-    }
+    return added;
+}
 
+// The lights' table: switch, colour and name (a click selects), type,
+// volume radius at `threshold`; scrolled to the selected light when asked.
+void lightTable(UiState& state, Scene& scene, double threshold, bool& scrollToSelected) {
     // The list fills the panel until a light is selected, then shares it with the editor.
     const float avail = ImGui::GetContentRegionAvail().y;
     const float listHeight =
@@ -134,6 +129,90 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         }
         ImGui::EndTable();
     }
+}
+
+// The selected light's editor.
+void lightEditor(UiState& state, Scene& scene, double threshold) {
+    Light& l = scene.lights[static_cast<size_t>(state.selectedLight)];
+    ImGui::Separator();
+    char name[128];
+    std::snprintf(name, sizeof(name), "%s", l.name.c_str());
+    if (ImGui::InputText("name", name, sizeof(name))) l.name = name;
+    int type = static_cast<int>(l.type);
+    if (ImGui::Combo("type", &type, "directional\0point\0spot\0")) l.type = static_cast<LightType>(type);
+    ImGui::Checkbox("enabled", &l.enabled);
+    ImGui::SameLine();
+    ImGui::Checkbox("casts shadows", &l.castShadows);
+    if (l.type != LightType::Directional) {
+        ImGui::BeginDisabled(state.animator.running());
+        ImGui::DragFloat3("position", &l.position.x, 0.05f);
+        ImGui::EndDisabled();
+        if (state.animator.running()) helpMarker("Stop the animation to move lights by hand.");
+    }
+    if (l.type != LightType::Point) {
+        if (ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f)) {
+            if (glm::length(l.direction) < 1e-4f) l.direction = glm::vec3(0, -1, 0);
+            l.direction = glm::normalize(l.direction);
+        }
+    }
+    // Colour and strength separately: an HDR intensity is colour x scalar.
+    float strength = std::max({l.intensity.r, l.intensity.g, l.intensity.b});
+    glm::vec3 color = strength > 0.0f ? l.intensity / strength : glm::vec3(1.0f);
+    bool changed = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
+    changed |= ImGui::DragFloat("intensity", &strength, 0.02f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    if (changed) l.intensity = color * strength;
+    if (l.type != LightType::Directional) {
+        ImGui::TextDisabled("attenuation 1 / (c + l d + q d^2)");
+        ImGui::DragFloat("constant", &l.attenuation.constant, 0.01f, 0.0f, 100.0f, "%.4f");
+        ImGui::DragFloat("linear", &l.attenuation.linear, 0.005f, 0.0f, 100.0f, "%.4f");
+        ImGui::DragFloat("quadratic", &l.attenuation.quadratic, 0.005f, 0.0f, 100.0f, "%.4f");
+        if (l.attenuation.constant + l.attenuation.linear + l.attenuation.quadratic <= 0.0f) l.attenuation.constant = 1.0f;
+    }
+    if (l.type == LightType::Spot) {
+        // The seeds' cutoff and exponent, or KHR_lights_punctual's cone
+        // (what a glTF spot light comes with); the cutoff is the outer cone.
+        int falloff = l.falloff == SpotFalloff::InnerOuterCone ? 1 : 0;
+        if (ImGui::Combo("falloff", &falloff, "cutoff + exponent\0inner + outer cone (glTF)\0"))
+            l.falloff = falloff == 1 ? SpotFalloff::InnerOuterCone : SpotFalloff::CutoffExponent;
+        if (l.falloff == SpotFalloff::InnerOuterCone) {
+            ImGui::SliderFloat("outer cone (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
+            ImGui::SliderFloat("inner cone (deg)", &l.innerConeDegrees, 0.0f, l.cutoffDegrees, "%.1f");
+            l.innerConeDegrees = std::clamp(l.innerConeDegrees, 0.0f, l.cutoffDegrees);
+        } else {
+            ImGui::SliderFloat("cutoff (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
+            ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.2f");
+        }
+    }
+    const LightVolume v = computeLightVolume(l, threshold);
+    const char* shape = v.shape == VolumeShape::Cone ? "cone" : v.shape == VolumeShape::Sphere ? "sphere"
+                        : v.shape == VolumeShape::FullScreen ? "full-screen" : "none (below threshold)";
+    ImGui::TextDisabled("volume: %s, radius %.3f at threshold %.5g", shape, v.radius, threshold);
+    if (ImGui::Button("remove light")) {
+        scene.lights.erase(scene.lights.begin() + state.selectedLight);
+        state.selectedLight = -1;
+    }
+}
+
+}  // namespace
+
+void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    if (!beginPanel(title, open)) {
+        ImGui::End();
+        return;
+    }
+    Scene& scene = session.mutableScene();
+    KnobRegistry& knobs = session.knobs();
+    const double threshold = knobs.value(*knobs.find("lighting.threshold"));
+    if (state.selectedLight >= static_cast<int>(scene.lights.size())) state.selectedLight = -1;
+    animationControls(state, scene);
+    // A new light is selected (its editor opens) and scrolled to.
+    const int added = addButtons(scene, session.camera());
+    if (added >= 0) {
+        state.selectedLight = added;
+        scrollToSelected = true;
+    }
+
+    lightTable(state, scene, threshold, scrollToSelected);
     state.viewport.overlay.selectedLight = state.selectedLight;
 
     if (state.selectedLight < 0) {
@@ -141,66 +220,7 @@ void LightsPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         clippedText(std::to_string(scene.lights.size()) + " lights; select one to edit it", ImGui::GetContentRegionAvail().x);
         ImGui::PopStyleColor();
     }
-    if (state.selectedLight >= 0) {
-        Light& l = scene.lights[static_cast<size_t>(state.selectedLight)];
-        ImGui::Separator();
-        char name[128];
-        std::snprintf(name, sizeof(name), "%s", l.name.c_str());
-        if (ImGui::InputText("name", name, sizeof(name))) l.name = name;
-        int type = static_cast<int>(l.type);
-        if (ImGui::Combo("type", &type, "directional\0point\0spot\0")) l.type = static_cast<LightType>(type);
-        ImGui::Checkbox("enabled", &l.enabled);
-        ImGui::SameLine();
-        ImGui::Checkbox("casts shadows", &l.castShadows);
-        if (l.type != LightType::Directional) {
-            ImGui::BeginDisabled(state.animator.running());
-            ImGui::DragFloat3("position", &l.position.x, 0.05f);
-            ImGui::EndDisabled();
-            if (state.animator.running()) helpMarker("Stop the animation to move lights by hand.");
-        }
-        if (l.type != LightType::Point) {
-            if (ImGui::DragFloat3("direction", &l.direction.x, 0.01f, -1.0f, 1.0f)) {
-                if (glm::length(l.direction) < 1e-4f) l.direction = glm::vec3(0, -1, 0);
-                l.direction = glm::normalize(l.direction);
-            }
-        }
-        // Colour and strength separately: an HDR intensity is colour x scalar.
-        float strength = std::max({l.intensity.r, l.intensity.g, l.intensity.b});
-        glm::vec3 color = strength > 0.0f ? l.intensity / strength : glm::vec3(1.0f);
-        bool changed = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
-        changed |= ImGui::DragFloat("intensity", &strength, 0.02f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_Logarithmic);
-        if (changed) l.intensity = color * strength;
-        if (l.type != LightType::Directional) {
-            ImGui::TextDisabled("attenuation 1 / (c + l d + q d^2)");
-            ImGui::DragFloat("constant", &l.attenuation.constant, 0.01f, 0.0f, 100.0f, "%.4f");
-            ImGui::DragFloat("linear", &l.attenuation.linear, 0.005f, 0.0f, 100.0f, "%.4f");
-            ImGui::DragFloat("quadratic", &l.attenuation.quadratic, 0.005f, 0.0f, 100.0f, "%.4f");
-            if (l.attenuation.constant + l.attenuation.linear + l.attenuation.quadratic <= 0.0f) l.attenuation.constant = 1.0f;
-        }
-        if (l.type == LightType::Spot) {
-            // The seeds' cutoff and exponent, or KHR_lights_punctual's cone
-            // (what a glTF spot light comes with); the cutoff is the outer cone.
-            int falloff = l.falloff == SpotFalloff::InnerOuterCone ? 1 : 0;
-            if (ImGui::Combo("falloff", &falloff, "cutoff + exponent\0inner + outer cone (glTF)\0"))
-                l.falloff = falloff == 1 ? SpotFalloff::InnerOuterCone : SpotFalloff::CutoffExponent;
-            if (l.falloff == SpotFalloff::InnerOuterCone) {
-                ImGui::SliderFloat("outer cone (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
-                ImGui::SliderFloat("inner cone (deg)", &l.innerConeDegrees, 0.0f, l.cutoffDegrees, "%.1f");
-                l.innerConeDegrees = std::clamp(l.innerConeDegrees, 0.0f, l.cutoffDegrees);
-            } else {
-                ImGui::SliderFloat("cutoff (deg)", &l.cutoffDegrees, 1.0f, 90.0f, "%.1f");
-                ImGui::SliderFloat("exponent", &l.exponent, 0.0f, 128.0f, "%.2f");
-            }
-        }
-        const LightVolume v = computeLightVolume(l, threshold);
-        const char* shape = v.shape == VolumeShape::Cone ? "cone" : v.shape == VolumeShape::Sphere ? "sphere"
-                            : v.shape == VolumeShape::FullScreen ? "full-screen" : "none (below threshold)";
-        ImGui::TextDisabled("volume: %s, radius %.3f at threshold %.5g", shape, v.radius, threshold);
-        if (ImGui::Button("remove light")) {
-            scene.lights.erase(scene.lights.begin() + state.selectedLight);
-            state.selectedLight = -1;
-        }
-    }
+    if (state.selectedLight >= 0) lightEditor(state, scene, threshold);
     ImGui::End();
 }
 

@@ -225,117 +225,171 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         ImGui::End();
         return;
     }
-    // The speed/quality knob last pointed at in the Parameters panel (its rows are noted as knob.<name>).
+    pickSweepKnob(session);
+    if (state.sweep.running()) sweepProgress(state);
+    else if (!waitingKnob.empty()) referenceWait(state);
+    else sweepControls(state, session);
+    showFinishedSweep(state);
+    csvControls();
+    if (table.rows.empty()) {
+        wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
+        ImGui::End();
+        return;
+    }
+    const std::vector<std::string> gs = groups();
+    groupControls(gs);
+    std::string metric;
+    const std::vector<int> rows = groupRows(gs[static_cast<size_t>(group)], metric);
+    if (rows.empty()) {
+        ImGui::TextDisabled("no row of this group has both a time and an error");
+        ImGui::End();
+        return;
+    }
+    if (!tableBaseline.empty()) {
+        // What the errors are measured against, over the plot (wrapped, never cut).
+        const bool self = tableBaseline != kReference;
+        wrappedColored(self ? kErrorColor : kDimColor, metric + " against " + tableBaseline);
+        noteItem("pareto.baseline");
+    }
+    plot(rows, metric, state, session);
+    ImGui::End();
+}
+
+// The speed/quality knob last pointed at in the Parameters panel (its rows are noted as knob.<name>).
+void ParetoPanel::pickSweepKnob(RenderSession& session) {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     for (const auto& [name, item] : drawnItems())
         if (name.rfind("knob.", 0) == 0 && item.frame >= ImGui::GetFrameCount() - 1 && mouse.x >= item.x &&
             mouse.x < item.x + item.w && mouse.y >= item.y && mouse.y < item.y + item.h)
             if (const auto id = session.knobs().find(name.substr(5)); id && session.knobs().spec(*id).tradeoff)
                 sweepKnob = name.substr(5);
+}
+
+// The running sweep's progress, with *cancel*.
+void ParetoPanel::sweepProgress(UiState& state) {
+    char label[128];
+    std::snprintf(label, sizeof(label), "sweeping %s: %.0f%%", state.sweep.knob().c_str(), state.sweep.progress() * 100.0);
+    ImGui::ProgressBar(static_cast<float>(state.sweep.progress()), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("cancel")) state.sweep.cancel();
+}
+
+// Tracing the reference the sweep asked for (the menu bar shows it too), with *cancel*.
+void ParetoPanel::referenceWait(UiState& state) {
     const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
-    if (state.sweep.running()) {
-        char label[128];
-        std::snprintf(label, sizeof(label), "sweeping %s: %.0f%%", state.sweep.knob().c_str(), state.sweep.progress() * 100.0);
-        ImGui::ProgressBar(static_cast<float>(state.sweep.progress()), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
-        ImGui::SameLine();
-        if (ImGui::SmallButton("cancel")) state.sweep.cancel();
-    } else if (!waitingKnob.empty()) {
-        // Tracing the reference the sweep asked for (the menu bar shows it too).
-        char label[160];
-        const double p = std::max(state.referenceProgress, 0.0);
-        std::snprintf(label, sizeof(label), "CPU reference for %s: %.0f%%", waitingKnob.c_str(), p * 100.0);
-        ImGui::ProgressBar(static_cast<float>(p), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
-        noteItem("pareto.reference_progress");
-        sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
-        if (ImGui::SmallButton("cancel##waiting")) {
-            state.requestReferenceCancel = true;
-            state.log.info("quick sweep of " + waitingKnob + " cancelled while its CPU reference was traced", state.time);
-            waitingKnob.clear();
-        }
-        noteItem("pareto.reference_cancel");
-    } else {
-        // As wide as the knob's whole name where the panel allows ("gbuffer.normal_enco" was cut).
-        const float knobWidth = ImGui::CalcTextSize(sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str()).x +
-                                ImGui::GetFrameHeight() + spacing;
-        ImGui::SetNextItemWidth(std::min(std::max(knobWidth, ImGui::GetFontSize() * 12.0f), ImGui::GetContentRegionAvail().x));
-        if (ImGui::BeginCombo("##sweep_knob", sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str())) {
-            for (const KnobSpec& s : session.knobs().specs())
-                if (s.tradeoff && ImGui::Selectable(s.name.c_str(), s.name == sweepKnob)) sweepKnob = s.name;
-            ImGui::EndCombo();
-        }
-        if (ImGui::IsItemHovered())
-            tooltip("%s%sthe speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here",
-                    sweepKnob.c_str(), sweepKnob.empty() ? "" : ": ");
-        sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + spacing);
-        ImGui::BeginDisabled(sweepKnob.empty());
-        if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
-        ImGui::EndDisabled();
-        noteItem("pareto.sweep");
-        // What each value's FLIP is measured against: a choice, shown on the plot.
-        const char* against[] = {"vs CPU reference", "vs current image"};
-        const float againstWidth = ImGui::CalcTextSize(against[1]).x + ImGui::GetFrameHeight() + spacing;
-        sameLineIfFits(againstWidth);
-        ImGui::SetNextItemWidth(againstWidth);
-        int choice = againstCurrent ? 1 : 0;
-        if (ImGui::Combo("##sweep_against", &choice, against, 2)) againstCurrent = choice == 1;
-        if (ImGui::IsItemHovered())
-            tooltip("what each swept value's FLIP is measured against: the CPU reference of this view "
-                              "(ray-traced, F9; traced first if none is shown), or the current settings' image "
-                              "(no reference needed; the current value then scores 0)");
-        noteItem("pareto.against");
-        if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
-        if (!askedCost.empty()) {
-            // Asked first, as the live view's AOV guard asks; the buttons
-            // above the text, so a narrow, short panel still shows them.
-            if (ImGui::Button("sweep anyway")) startSweep(askedKnob, state, session, true);
-            noteItem("pareto.sweep_anyway");
-            sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
-            if (ImGui::Button("cancel##aov")) {
-                askedKnob.clear();
-                askedCost.clear();
-                state.log.succeeded("quick sweep");
-            }
-            noteItem("pareto.sweep_cancel");
-            if (!askedCost.empty()) {
-                wrappedColored(kErrorColor, askedCostHeadline);
-                if (ImGui::IsItemHovered()) tooltip("%s", askedCost.c_str());
-                wrappedColored(kDimColor, askedCostDetail);
-            }
-        } else if (!askedReference.empty()) {
-            if (ImGui::Button("trace reference"))
-                traceReferenceThenSweep(askedKnob, state, askedConfirmed);
-            if (ImGui::IsItemHovered())
-                tooltip("traces the CPU reference of this view in the background (as F9 does, with its "
-                                  "progress and cancel), then sweeps against it");
-            noteItem("pareto.trace_reference");
-            sameLineIfFits(ImGui::CalcTextSize("use current image").x + spacing);
-            if (ImGui::Button("use current image")) {
-                againstCurrent = true;
-                startSweep(askedKnob, state, session, askedConfirmed);
-            }
-            if (ImGui::IsItemHovered())
-                tooltip("measures each value against the image on show: the current value scores 0");
-            noteItem("pareto.against_current");
-            sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
-            if (ImGui::Button("cancel##reference")) {
-                askedKnob.clear();
-                askedReference.clear();
-                state.log.succeeded("quick sweep");
-            }
-            noteItem("pareto.reference_ask_cancel");
-            if (!askedReference.empty())
-                wrappedColored(kErrorColor, "quick sweep of " + askedKnob + ": " + askedReference + " (F9)");
-        }
+    char label[160];
+    const double p = std::max(state.referenceProgress, 0.0);
+    std::snprintf(label, sizeof(label), "CPU reference for %s: %.0f%%", waitingKnob.c_str(), p * 100.0);
+    ImGui::ProgressBar(static_cast<float>(p), ImVec2(ImGui::GetFontSize() * 16.0f, 0), label);
+    noteItem("pareto.reference_progress");
+    sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
+    if (ImGui::SmallButton("cancel##waiting")) {
+        state.requestReferenceCancel = true;
+        state.log.info("quick sweep of " + waitingKnob + " cancelled while its CPU reference was traced", state.time);
+        waitingKnob.clear();
     }
-    if (!sweepShown && state.sweep.done()) {
-        // The finished sweep replaces the table on show.
-        table = state.sweep.table();
-        loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
-        tableBaseline = state.sweep.baselineName();
-        group = 0;
-        applied.clear();
-        sweepShown = true;
+    noteItem("pareto.reference_cancel");
+}
+
+// The knob to sweep, *quick sweep*, what it is measured against; then the
+// sweep's error and the question holding a sweep back, if any.
+void ParetoPanel::sweepControls(UiState& state, RenderSession& session) {
+    const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
+    // As wide as the knob's whole name where the panel allows ("gbuffer.normal_enco" was cut).
+    const float knobWidth = ImGui::CalcTextSize(sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str()).x +
+                            ImGui::GetFrameHeight() + spacing;
+    ImGui::SetNextItemWidth(std::min(std::max(knobWidth, ImGui::GetFontSize() * 12.0f), ImGui::GetContentRegionAvail().x));
+    if (ImGui::BeginCombo("##sweep_knob", sweepKnob.empty() ? "point at a knob" : sweepKnob.c_str())) {
+        for (const KnobSpec& s : session.knobs().specs())
+            if (s.tradeoff && ImGui::Selectable(s.name.c_str(), s.name == sweepKnob)) sweepKnob = s.name;
+        ImGui::EndCombo();
     }
+    if (ImGui::IsItemHovered())
+        tooltip("%s%sthe speed/quality knob to sweep: the one last pointed at in Parameters, or chosen here",
+                sweepKnob.c_str(), sweepKnob.empty() ? "" : ": ");
+    sameLineIfFits(ImGui::CalcTextSize("quick sweep").x + spacing);
+    ImGui::BeginDisabled(sweepKnob.empty());
+    if (ImGui::Button("quick sweep")) startSweep(sweepKnob, state, session);
+    ImGui::EndDisabled();
+    noteItem("pareto.sweep");
+    // What each value's FLIP is measured against: a choice, shown on the plot.
+    const char* against[] = {"vs CPU reference", "vs current image"};
+    const float againstWidth = ImGui::CalcTextSize(against[1]).x + ImGui::GetFrameHeight() + spacing;
+    sameLineIfFits(againstWidth);
+    ImGui::SetNextItemWidth(againstWidth);
+    int choice = againstCurrent ? 1 : 0;
+    if (ImGui::Combo("##sweep_against", &choice, against, 2)) againstCurrent = choice == 1;
+    if (ImGui::IsItemHovered())
+        tooltip("what each swept value's FLIP is measured against: the CPU reference of this view "
+                          "(ray-traced, F9; traced first if none is shown), or the current settings' image "
+                          "(no reference needed; the current value then scores 0)");
+    noteItem("pareto.against");
+    if (!state.sweep.error().empty()) wrappedColored(kErrorColor, "quick sweep stopped: " + state.sweep.error());
+    if (!askedCost.empty()) askAboutCost(state, session);
+    else if (!askedReference.empty()) askForReference(state, session);
+}
+
+// A sweep held back by its AOV cost: asked first, as the live view's AOV
+// guard asks; the buttons above the text, so a narrow, short panel still shows them.
+void ParetoPanel::askAboutCost(UiState& state, RenderSession& session) {
+    const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (ImGui::Button("sweep anyway")) startSweep(askedKnob, state, session, true);
+    noteItem("pareto.sweep_anyway");
+    sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
+    if (ImGui::Button("cancel##aov")) {
+        askedKnob.clear();
+        askedCost.clear();
+        state.log.succeeded("quick sweep");
+    }
+    noteItem("pareto.sweep_cancel");
+    if (!askedCost.empty()) {
+        wrappedColored(kErrorColor, askedCostHeadline);
+        if (ImGui::IsItemHovered()) tooltip("%s", askedCost.c_str());
+        wrappedColored(kDimColor, askedCostDetail);
+    }
+}
+
+// A sweep held back for want of a CPU reference: *trace reference*, *use current image*, *cancel*.
+void ParetoPanel::askForReference(UiState& state, RenderSession& session) {
+    const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (ImGui::Button("trace reference"))
+        traceReferenceThenSweep(askedKnob, state, askedConfirmed);
+    if (ImGui::IsItemHovered())
+        tooltip("traces the CPU reference of this view in the background (as F9 does, with its "
+                          "progress and cancel), then sweeps against it");
+    noteItem("pareto.trace_reference");
+    sameLineIfFits(ImGui::CalcTextSize("use current image").x + spacing);
+    if (ImGui::Button("use current image")) {
+        againstCurrent = true;
+        startSweep(askedKnob, state, session, askedConfirmed);
+    }
+    if (ImGui::IsItemHovered())
+        tooltip("measures each value against the image on show: the current value scores 0");
+    noteItem("pareto.against_current");
+    sameLineIfFits(ImGui::CalcTextSize("cancel").x + spacing);
+    if (ImGui::Button("cancel##reference")) {
+        askedKnob.clear();
+        askedReference.clear();
+        state.log.succeeded("quick sweep");
+    }
+    noteItem("pareto.reference_ask_cancel");
+    if (!askedReference.empty())
+        wrappedColored(kErrorColor, "quick sweep of " + askedKnob + ": " + askedReference + " (F9)");
+}
+
+// The finished sweep replaces the table on show.
+void ParetoPanel::showFinishedSweep(UiState& state) {
+    if (sweepShown || !state.sweep.done()) return;
+    table = state.sweep.table();
+    loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
+    tableBaseline = state.sweep.baselineName();
+    group = 0;
+    applied.clear();
+    sweepShown = true;
+}
+
+// What is on show, the CSV's path with *Load*, and the last load's or apply's error.
+void ParetoPanel::csvControls() {
     if (!loadedPath.empty()) {
         // Wrapped, whole (the knob's name was cut: "quick sweep of gbuff..."); the plot keeps its own room below.
         wrappedColored(kDimColor, loadedPath);
@@ -348,12 +402,10 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     if (ImGui::Button("Load") || enter) load(path);
     noteItem("pareto.load");
     if (!error.empty()) wrappedColored(kErrorColor, error);
-    if (table.rows.empty()) {
-        wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
-        ImGui::End();
-        return;
-    }
-    const std::vector<std::string> gs = groups();
+}
+
+// Which group is plotted (`gs`: groups(), not empty); what the last click applied.
+void ParetoPanel::groupControls(const std::vector<std::string>& gs) {
     group = std::clamp(group, 0, static_cast<int>(gs.size()) - 1);
     // The combo as wide as the panel allows; its label beside it only where it fits.
     const char* groupLabel = "camera | metric | buffer";
@@ -372,14 +424,16 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         ImGui::TextDisabled("%s", groupLabel);
     }
     if (!applied.empty()) ImGui::TextColored(kOkColor, "%s", applied.c_str());
+}
 
-    // The rows of the group with both numbers.
+// The rows of `groupName` with both numbers (indices into table.rows), their
+// metric, and plotAxes around them; none: plotAxes is left as it was.
+std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::string& metric) {
     std::vector<int> rows;
     double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
-    std::string metric;
     for (size_t i = 0; i < table.rows.size(); ++i) {
         const TradeoffRow& r = table.rows[i];
-        if (groupOf(r) != gs[static_cast<size_t>(group)] || !finite(r.frameGpuMs) || !finite(r.error)) continue;
+        if (groupOf(r) != groupName || !finite(r.frameGpuMs) || !finite(r.error)) continue;
         rows.push_back(static_cast<int>(i));
         metric = r.metric;
         for (double x : {r.frameGpuMs, r.frameGpuMsLo, r.frameGpuMsHi})
@@ -387,11 +441,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         for (double y : {r.error, r.errorLo, r.errorHi})
             if (finite(y)) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
     }
-    if (rows.empty()) {
-        ImGui::TextDisabled("no row of this group has both a time and an error");
-        ImGui::End();
-        return;
-    }
+    if (rows.empty()) return rows;
     // Padded around the data, but never below 0 where the data are not (a
     // time or an error of 0 sits on the axis, not over a negative range).
     const bool xPositive = xlo >= 0.0, yPositive = ylo >= 0.0;
@@ -402,19 +452,18 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     if (xPositive) xlo = std::max(xlo, 0.0);
     if (yPositive) ylo = std::max(ylo, 0.0);
     plotAxes = {xlo, xhi, ylo, yhi};
+    return rows;
+}
 
-    if (!tableBaseline.empty()) {
-        // What the errors are measured against, over the plot (wrapped, never cut).
-        const bool self = tableBaseline != kReference;
-        wrappedColored(self ? kErrorColor : kDimColor, metric + " against " + tableBaseline);
-        noteItem("pareto.baseline");
-    }
-
+// The plot of `rows` over plotAxes: its frame and axes, the front joined,
+// the points with their intervals and the front's labels; the point under
+// the mouse named in a tooltip, and applied when clicked.
+void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, UiState& state, RenderSession& session) {
     {
         // A narrow panel has no room for the axes' names under the plot: a line above it says them.
         char lo[96], whole[160];
-        std::snprintf(lo, sizeof(lo), "%.3g ms", xlo);
-        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
+        std::snprintf(lo, sizeof(lo), "%.3g ms", plotAxes.xlo);
+        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU frame (median) against %s", plotAxes.xhi, metric.c_str());
         const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
         if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
             wrappedColored(kDimColor, "across: GPU frame ms (median); up: " + metric);
@@ -430,27 +479,45 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     noteItem("pareto.plot");
     const bool plotHovered = ImGui::IsItemHovered();
     const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
+    const PlotFrame f{plotAxes, origin.x + 56, origin.x + size.x - 8, origin.y + 6, origin.y + size.y - 22};
+    plotAxesDrawn(f, origin.x, metric);
+    plotFront(f, rows);
+    plotPoints(f, rows, plotHovered);
+    if (hovered >= 0) {
+        const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
+        ImGui::GetWindowDrawList()->AddCircle(ImVec2(f.sx(r.frameGpuMs), f.sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16,
+                                              1.5f);
+        tooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
+                          label(table, r).c_str(), r.metric.c_str(), r.error, r.errorLo, r.errorHi, r.frameGpuMs,
+                          r.frameGpuMsLo, r.frameGpuMsHi, r.pareto ? "\non the Pareto front" : "");
+        if (clicked) apply(hovered, state, session);
+    }
+}
+
+// The plot's background and frame, the error's ends up the left (from
+// `textX`) and the time's under it, with the axes' names where they fit.
+void ParetoPanel::plotAxesDrawn(const PlotFrame& f, float textX, const std::string& metric) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    const float left = origin.x + 56, right = origin.x + size.x - 8, top = origin.y + 6, bottom = origin.y + size.y - 22;
-    auto sx = [&](double x) { return static_cast<float>(left + (x - xlo) / (xhi - xlo) * (right - left)); };
-    auto sy = [&](double y) { return static_cast<float>(bottom - (y - ylo) / (yhi - ylo) * (bottom - top)); };
-    dl->AddRectFilled(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(24, 24, 28, 255));
-    dl->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(90, 90, 100, 255));
+    dl->AddRectFilled(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(24, 24, 28, 255));
+    dl->AddRect(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(90, 90, 100, 255));
     char t[96];
-    std::snprintf(t, sizeof(t), "%.3g", yhi);
-    dl->AddText(ImVec2(origin.x, top), IM_COL32(170, 170, 170, 255), t);
-    std::snprintf(t, sizeof(t), "%.3g", ylo);
-    dl->AddText(ImVec2(origin.x, bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
-    std::snprintf(t, sizeof(t), "%.3g ms", xlo);
-    dl->AddText(ImVec2(left, bottom + 4), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g", f.axes.yhi);
+    dl->AddText(ImVec2(textX, f.top), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g", f.axes.ylo);
+    dl->AddText(ImVec2(textX, f.bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
+    std::snprintf(t, sizeof(t), "%.3g ms", f.axes.xlo);
+    dl->AddText(ImVec2(f.left, f.bottom + 4), IM_COL32(170, 170, 170, 255), t);
     const float loWidth = ImGui::CalcTextSize(t).x;
     // The axes' names after the upper end where they fit, else the end alone (the caption line above says them).
-    std::snprintf(t, sizeof(t), "%.3g ms   GPU frame (median) against %s", xhi, metric.c_str());
-    if (ImGui::CalcTextSize(t).x > right - left - loWidth - 8.0f) std::snprintf(t, sizeof(t), "%.3g ms", xhi);
-    dl->AddText(ImVec2(std::max(left + loWidth + 8.0f, right - ImGui::CalcTextSize(t).x), bottom + 4),
+    std::snprintf(t, sizeof(t), "%.3g ms   GPU frame (median) against %s", f.axes.xhi, metric.c_str());
+    if (ImGui::CalcTextSize(t).x > f.right - f.left - loWidth - 8.0f) std::snprintf(t, sizeof(t), "%.3g ms", f.axes.xhi);
+    dl->AddText(ImVec2(std::max(f.left + loWidth + 8.0f, f.right - ImGui::CalcTextSize(t).x), f.bottom + 4),
                 IM_COL32(170, 170, 170, 255), t);
+}
 
-    // The front, joined left to right.
+// The front, joined left to right.
+void ParetoPanel::plotFront(const PlotFrame& f, const std::vector<int>& rows) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
     std::vector<int> front;
     for (int i : rows)
         if (table.rows[static_cast<size_t>(i)].pareto) front.push_back(i);
@@ -459,10 +526,16 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     });
     for (size_t k = 1; k < front.size(); ++k) {
         const TradeoffRow &a = table.rows[static_cast<size_t>(front[k - 1])], &b = table.rows[static_cast<size_t>(front[k])];
-        dl->AddLine(ImVec2(sx(a.frameGpuMs), sy(a.error)), ImVec2(sx(b.frameGpuMs), sy(b.error)), IM_COL32(255, 170, 60, 160), 1.5f);
+        dl->AddLine(ImVec2(f.sx(a.frameGpuMs), f.sy(a.error)), ImVec2(f.sx(b.frameGpuMs), f.sy(b.error)),
+                    IM_COL32(255, 170, 60, 160), 1.5f);
     }
-    // Points with both intervals; the nearest within 8 px is hovered.
-    // (mouse: the cursor, read above)
+}
+
+// Points with both intervals, the front's labelled where a label has room;
+// the nearest within 8 px of the mouse is `hovered` (-1: none).
+void ParetoPanel::plotPoints(const PlotFrame& f, const std::vector<int>& rows, bool plotHovered) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
     hovered = -1;
     float best = 64.0f;
     std::vector<ImVec4> labelRects;  // (x0, y0, x1, y1) of the point labels drawn: none is drawn over another
@@ -470,9 +543,9 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         // Right of the point, or left of it where the plot ends first.
         float x = p.x + 6.0f;
-        if (x + ts.x > right) x = p.x - 6.0f - ts.x;
+        if (x + ts.x > f.right) x = p.x - 6.0f - ts.x;
         const float y = p.y - ts.y - 2.0f;
-        if (x < left || y < top) return;
+        if (x < f.left || y < f.top) return;
         const ImVec4 r(x, y, x + ts.x, y + ts.y);
         for (const ImVec4& o : labelRects)
             if (r.x < o.z && o.x < r.z && r.y < o.w && o.y < r.w) return;  // the tooltip names it
@@ -481,25 +554,17 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     };
     for (int i : rows) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(i)];
-        const ImVec2 p(sx(r.frameGpuMs), sy(r.error));
+        const ImVec2 p(f.sx(r.frameGpuMs), f.sy(r.error));
         const ImU32 bar = IM_COL32(150, 150, 160, 200);
-        if (finite(r.frameGpuMsLo) && finite(r.frameGpuMsHi)) dl->AddLine(ImVec2(sx(r.frameGpuMsLo), p.y), ImVec2(sx(r.frameGpuMsHi), p.y), bar);
-        if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, sy(r.errorLo)), ImVec2(p.x, sy(r.errorHi)), bar);
+        if (finite(r.frameGpuMsLo) && finite(r.frameGpuMsHi))
+            dl->AddLine(ImVec2(f.sx(r.frameGpuMsLo), p.y), ImVec2(f.sx(r.frameGpuMsHi), p.y), bar);
+        if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, f.sy(r.errorLo)), ImVec2(p.x, f.sy(r.errorHi)), bar);
         dl->AddCircleFilled(p, r.pareto ? 5.0f : 3.5f, r.pareto ? IM_COL32(255, 170, 60, 255) : IM_COL32(110, 160, 230, 255));
         if (r.pareto) drawLabel(p, label(table, r));
         const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
         if (plotHovered && d2 < best) best = d2, hovered = i;
         noteRect("pareto.point." + std::to_string(r.point), ImVec2(p.x - 1, p.y - 1), ImVec2(p.x + 1, p.y + 1));
     }
-    if (hovered >= 0) {
-        const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
-        dl->AddCircle(ImVec2(sx(r.frameGpuMs), sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 1.5f);
-        tooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
-                          label(table, r).c_str(), r.metric.c_str(), r.error, r.errorLo, r.errorHi, r.frameGpuMs,
-                          r.frameGpuMsLo, r.frameGpuMsHi, r.pareto ? "\non the Pareto front" : "");
-        if (clicked) apply(hovered, state, session);
-    }
-    ImGui::End();
 }
 
 }  // namespace dw::ui

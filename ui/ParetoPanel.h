@@ -93,6 +93,32 @@ struct ParetoPanel {
     std::vector<std::string> groups() const;
     // Applies row `row`'s settings; false (and `error` set) when any is refused.
     bool apply(int row, UiState& state, RenderSession& session);
+
+    // The plot's box in screen pixels (left < right, top < bottom) and the
+    // mapping of (GPU frame ms, error) over `axes` into it.
+    struct PlotFrame {
+        Axes axes;
+        float left = 0, right = 0, top = 0, bottom = 0;
+        float sx(double x) const { return static_cast<float>(left + (x - axes.xlo) / (axes.xhi - axes.xlo) * (right - left)); }
+        float sy(double y) const { return static_cast<float>(bottom - (y - axes.ylo) / (axes.yhi - axes.ylo) * (bottom - top)); }
+    };
+
+private:
+    // The pieces draw() draws, top to bottom.
+    void pickSweepKnob(RenderSession& session);
+    void sweepProgress(UiState& state);
+    void referenceWait(UiState& state);
+    void sweepControls(UiState& state, RenderSession& session);
+    void askAboutCost(UiState& state, RenderSession& session);
+    void askForReference(UiState& state, RenderSession& session);
+    void showFinishedSweep(UiState& state);
+    void csvControls();
+    void groupControls(const std::vector<std::string>& gs);
+    std::vector<int> groupRows(const std::string& groupName, std::string& metric);
+    void plot(const std::vector<int>& rows, const std::string& metric, UiState& state, RenderSession& session);
+    void plotAxesDrawn(const PlotFrame& f, float textX, const std::string& metric);
+    void plotFront(const PlotFrame& f, const std::vector<int>& rows);
+    void plotPoints(const PlotFrame& f, const std::vector<int>& rows, bool plotHovered);
 };
 
 }  // namespace dw::ui

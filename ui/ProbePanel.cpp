@@ -36,32 +36,8 @@ bool beginRows(const char* id, float labelWidth) {
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
     return true;
 }
-}  // namespace
-
-void ProbePanel::draw(const char* title, bool* open, UiState& state) {
-    if (!beginPanel(title, open)) {
-        ImGui::End();
-        return;
-    }
-    const ProbeState& p = state.probe;
-    if (!p.result.inside) {
-        wrappedColored(kDimColor, "Hover over the viewport to read a pixel; click to pin it.");
-        ImGui::End();
-        return;
-    }
-    ImGui::Text("pixel (%d, %d)%s", p.result.x, p.result.y, p.pinned ? "  [pinned, Esc to release]" : "");
-    // Wrapped rather than cut in a narrow panel (beside the Pareto panel: "cop").
-    sameLineIfFits(ImGui::CalcTextSize("copy").x + 2.0f * ImGui::GetStyle().FramePadding.x);
-    // Every value below as tab-separated lines (this frame's, drawn last frame).
-    if (ImGui::SmallButton("copy")) {
-        ImGui::SetClipboardText(copyText.c_str());
-        state.log.done("probe values of pixel (" + std::to_string(p.result.x) + ", " + std::to_string(p.result.y) +
-                           ") copied to the clipboard",
-                       state.time);
-    }
-    std::string copy = "pixel\t" + std::to_string(p.result.x) + " " + std::to_string(p.result.y) + "\n";
-    // Magnifier of the viewport image around the pixel (nearest filtering).
-    const ShownImage& img = state.viewportImage;
+// Magnifier of the viewport image around the pixel (nearest filtering), `zoomPixels` across.
+void magnifier(const ProbeState& p, const ShownImage& img, int& zoomPixels) {
     if (img.texture && img.width > 0) {
         // The label keeps its room ("zoom" was cut beside a full-width slider).
         ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("zoom").x -
@@ -80,7 +56,10 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
                                             ImVec2(at.x + side * 0.5f + cell * 0.5f, at.y + side * 0.5f + cell * 0.5f),
                                             IM_COL32(255, 255, 0, 255));
     }
-    const SurfaceSample& s = p.result.surface;
+}
+
+// The G-buffer's surface at the pixel and its L-buffer value.
+void surfaceRows(std::string& copy, const SurfaceSample& s) {
     if (beginRows("surface", ImGui::CalcTextSize("position (world)").x + 8.0f)) {
         if (s.background) {
             row(copy, "surface", "background (no geometry)");
@@ -96,6 +75,11 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         row(copy, "L-buffer", "%.5g %.5g %.5g  (L = %.5g)", s.radiance.r, s.radiance.g, s.radiance.b, s.luminance);
         ImGui::EndTable();
     }
+}
+
+// The lights a volume strategy evaluates here and the transparent fragments the oit method kept.
+void lightsAndFragments(std::string& copy, const ProbeState& p) {
+    const SurfaceSample& s = p.result.surface;
     // The lights a volume strategy evaluates here (their volumes contain the
     // surface point); the viewport's volume overlay shows just these by default.
     if (!s.background) {
@@ -121,6 +105,10 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
             ImGui::EndTable();
         }
     }
+}
+
+// Every output's raw value at the pixel, a multisample output's samples, a buffer element's words.
+void everyOutput(std::string& copy, const ProbeState& p) {
     float labelWidth = ImGui::CalcTextSize("sample 00").x;
     for (const auto& v : p.result.values) labelWidth = std::max(labelWidth, ImGui::CalcTextSize(v.output.c_str()).x);
     labelWidth = std::min(labelWidth + 8.0f, ImGui::GetContentRegionAvail().x * 0.5f);
@@ -152,6 +140,36 @@ void ProbePanel::draw(const char* title, bool* open, UiState& state) {
         }
         ImGui::EndTable();
     }
+}
+
+}  // namespace
+
+void ProbePanel::draw(const char* title, bool* open, UiState& state) {
+    if (!beginPanel(title, open)) {
+        ImGui::End();
+        return;
+    }
+    const ProbeState& p = state.probe;
+    if (!p.result.inside) {
+        wrappedColored(kDimColor, "Hover over the viewport to read a pixel; click to pin it.");
+        ImGui::End();
+        return;
+    }
+    ImGui::Text("pixel (%d, %d)%s", p.result.x, p.result.y, p.pinned ? "  [pinned, Esc to release]" : "");
+    // Wrapped rather than cut in a narrow panel (beside the Pareto panel: "cop").
+    sameLineIfFits(ImGui::CalcTextSize("copy").x + 2.0f * ImGui::GetStyle().FramePadding.x);
+    // Every value below as tab-separated lines (this frame's, drawn last frame).
+    if (ImGui::SmallButton("copy")) {
+        ImGui::SetClipboardText(copyText.c_str());
+        state.log.done("probe values of pixel (" + std::to_string(p.result.x) + ", " + std::to_string(p.result.y) +
+                           ") copied to the clipboard",
+                       state.time);
+    }
+    std::string copy = "pixel\t" + std::to_string(p.result.x) + " " + std::to_string(p.result.y) + "\n";
+    magnifier(p, state.viewportImage, zoomPixels);
+    surfaceRows(copy, p.result.surface);
+    lightsAndFragments(copy, p);
+    everyOutput(copy, p);
     copyText = std::move(copy);
     ImGui::End();
 }

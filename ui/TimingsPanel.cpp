@@ -201,28 +201,159 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
     ImGui::End();
 }
 
-void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std::string>& passes) {
-    // Align every pass's samples on the frames of the total.
+namespace {
+
+// Every shown pass's samples aligned on the frames of the whole frame's series.
+struct GraphSeries {
+    size_t n = 0;                            // frames (the newest of the whole frame's, at most the window)
+    std::vector<float> totals;               // the whole frame's GPU ms, per frame
+    std::vector<std::uint64_t> frames;       // their frame indices
+    std::vector<std::string> shown;          // the passes drawn
+    std::vector<std::vector<float>> values;  // GPU ms per shown pass and frame (0: no sample)
+};
+
+GraphSeries graphSeries(PassTimer& timer, const std::vector<std::string>& passes, int window,
+                        const std::set<std::string>& hidden, const std::string& solo) {
+    GraphSeries g;
     const PassTimer::Series* total = timer.find(PassTimer::kFrameSeries);
-    const size_t n = total ? std::min(total->samples.size(), static_cast<size_t>(window)) : 0;
+    g.n = total ? std::min(total->samples.size(), static_cast<size_t>(window)) : 0;
+    const size_t n = g.n;
     std::unordered_map<std::uint64_t, size_t> column;
-    std::vector<float> totals(n, 0.0f);
-    std::vector<std::uint64_t> frames(n, 0);
+    g.totals.assign(n, 0.0f);
+    g.frames.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
         const TimingSample& t = total->samples[total->samples.size() - n + i];
         column[t.frame] = i;
-        totals[i] = t.gpuMs;
-        frames[i] = t.frame;
+        g.totals[i] = t.gpuMs;
+        g.frames[i] = t.frame;
     }
-    std::vector<std::string> shown;
     for (const auto& p : passes)
-        if (solo.empty() ? !hidden.count(p) : p == solo) shown.push_back(p);
-    std::vector<std::vector<float>> values(shown.size(), std::vector<float>(n, 0.0f));
-    for (size_t p = 0; p < shown.size(); ++p)
-        for (const auto& t : timer.find(shown[p])->samples) {
+        if (solo.empty() ? !hidden.count(p) : p == solo) g.shown.push_back(p);
+    g.values.assign(g.shown.size(), std::vector<float>(n, 0.0f));
+    for (size_t p = 0; p < g.shown.size(); ++p)
+        for (const auto& t : timer.find(g.shown[p])->samples) {
             auto it = column.find(t.frame);
-            if (it != column.end()) values[p][it->second] = t.gpuMs;
+            if (it != column.end()) g.values[p][it->second] = t.gpuMs;
         }
+    return g;
+}
+
+// The plot's box (p0 top left, p1 bottom right, in screen pixels), its y
+// range in ms (a log axis from `bottom`), and where a frame's column and a
+// time are drawn.
+struct GraphBox {
+    ImVec2 p0, p1, size;
+    float bottom = 0.0f, top = 1.0f;
+    bool logScale = false;
+    size_t columns = 0;
+    float Y(float ms) const {
+        float t;
+        if (logScale) t = (std::log10(std::max(ms, bottom)) - std::log10(bottom)) / (std::log10(top) - std::log10(bottom));
+        else t = ms / top;
+        return p1.y - size.y * std::clamp(t, 0.0f, 1.0f);
+    }
+    float X(size_t i) const {
+        return columns > 1 ? p0.x + size.x * static_cast<float>(i) / static_cast<float>(columns - 1) : p0.x;
+    }
+};
+
+// The y range: up to the 95th percentile (one slow frame, a resize or a
+// shader compile, does not flatten the rest; taller values are clipped).
+void graphRange(const GraphSeries& g, bool stack, bool drawTotal, GraphBox& box) {
+    const size_t n = g.n;
+    std::vector<float> heights, positives;
+    for (size_t i = 0; i < n; ++i) {
+        float sum = 0.0f, hi = 0.0f;
+        for (const auto& v : g.values) {
+            sum += v[i];
+            hi = std::max(hi, v[i]);
+            if (v[i] > 0.0f) positives.push_back(v[i]);
+        }
+        heights.push_back(stack ? std::max(sum, drawTotal ? g.totals[i] : 0.0f) : std::max(hi, drawTotal ? g.totals[i] : 0.0f));
+        if (drawTotal && g.totals[i] > 0.0f) positives.push_back(g.totals[i]);
+    }
+    std::sort(heights.begin(), heights.end());
+    float top = n ? heights[std::min(n - 1, n * 95 / 100)] * 1.15f : 1.0f;
+    top = std::max(top, 1e-3f);
+    float bottom = 0.0f;
+    if (box.logScale) {
+        std::sort(positives.begin(), positives.end());
+        bottom = positives.empty() ? top * 1e-3f : std::max(positives.front() * 0.7f, top * 1e-5f);
+        if (bottom >= top) bottom = top * 0.1f;
+    }
+    box.top = top;
+    box.bottom = bottom;
+}
+
+// Axis: ticks, grid lines and labels left of the plot.
+void graphAxis(const GraphBox& box, ImDrawList* dl, float labelH) {
+    for (float t : axisTicks(box.bottom, box.top, box.logScale)) {
+        const float y = box.Y(t);
+        dl->AddLine(ImVec2(box.p0.x, y), ImVec2(box.p1.x, y), IM_COL32(70, 70, 78, 255));
+        char label[32];
+        std::snprintf(label, sizeof(label), t >= 100.0f || t == 0.0f ? "%.0f ms" : t >= 1.0f ? "%.3g ms" : "%.2g ms", t);
+        const float w = ImGui::CalcTextSize(label).x;
+        dl->AddText(ImVec2(box.p0.x - w - 4.0f, y - labelH * 0.5f), IM_COL32(170, 170, 175, 255), label);
+    }
+}
+
+// Each shown pass, stacked areas or lines, and the whole frame in white;
+// with fewer than two columns, a line saying the results are awaited.
+void graphLines(const GraphSeries& g, const GraphBox& box, bool stack, bool drawTotal, ImDrawList* dl) {
+    const size_t columns = box.columns;
+    if (columns < 2) {
+        dl->AddText(ImVec2(box.p0.x + 6, box.p0.y + 4), IM_COL32(160, 160, 160, 255), "waiting for timer results");
+        return;
+    }
+    auto X = [&](size_t i) { return box.X(i); };
+    auto Y = [&](float ms) { return box.Y(ms); };
+    std::vector<float> base(columns, 0.0f);
+    dl->PushClipRect(box.p0, box.p1, true);
+    for (size_t p = 0; p < g.shown.size(); ++p) {
+        const unsigned col = passColor(g.shown[p]);
+        for (size_t i = 0; i + 1 < columns; ++i) {
+            const float lo0 = stack ? base[i] : 0.0f, lo1 = stack ? base[i + 1] : 0.0f;
+            const float hi0 = lo0 + g.values[p][i], hi1 = lo1 + g.values[p][i + 1];
+            if (stack)
+                dl->AddQuadFilled(ImVec2(X(i), Y(lo0)), ImVec2(X(i), Y(hi0)), ImVec2(X(i + 1), Y(hi1)), ImVec2(X(i + 1), Y(lo1)), col);
+            else
+                dl->AddLine(ImVec2(X(i), Y(hi0)), ImVec2(X(i + 1), Y(hi1)), col, 1.5f);
+        }
+        if (stack)
+            for (size_t i = 0; i < columns; ++i) base[i] += g.values[p][i];
+    }
+    if (drawTotal)
+        for (size_t i = 0; i + 1 < columns; ++i)
+            dl->AddLine(ImVec2(X(i), Y(g.totals[i])), ImVec2(X(i + 1), Y(g.totals[i + 1])), IM_COL32(255, 255, 255, 200), 1.0f);
+    dl->PopClipRect();
+}
+
+// Hover readout: the frame under the mouse (`mx`), every shown pass and the total.
+void graphReadout(const GraphSeries& g, const GraphBox& box, bool single, bool drawTotal, float mx, ImDrawList* dl) {
+    const size_t n = g.n;
+    // With one frame both columns are that frame.
+    const size_t i = single ? 0
+                            : std::min(n - 1, static_cast<size_t>(std::lround((mx - box.p0.x) / box.size.x *
+                                                                              static_cast<float>(n - 1))));
+    dl->AddLine(ImVec2(box.X(i), box.p0.y), ImVec2(box.X(i), box.p1.y), IM_COL32(255, 255, 255, 110));
+    ImGui::BeginTooltip();
+    ImGui::Text("frame %llu", static_cast<unsigned long long>(g.frames[i]));
+    for (size_t p = g.shown.size(); p-- > 0;) {
+        ImGui::ColorButton(("##t" + g.shown[p]).c_str(), ImGui::ColorConvertU32ToFloat4(passColor(g.shown[p])),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(9, 9));
+        ImGui::SameLine();
+        ImGui::Text("%-16s %9.3f ms", g.shown[p].c_str(), g.values[p][i]);
+    }
+    if (drawTotal) ImGui::Text("%-16s %9.3f ms", "whole frame", g.totals[i]);
+    ImGui::EndTooltip();
+}
+
+}  // namespace
+
+void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std::string>& passes) {
+    // Align every pass's samples on the frames of the total.
+    GraphSeries g = graphSeries(timer, passes, window, hidden, solo);
+    const size_t n = g.n;
     const bool stack = stacked && !logScale && solo.empty();
     const bool drawTotal = solo.empty();
 
@@ -237,105 +368,29 @@ void TimingsPanel::graph(UiState& state, PassTimer& timer, const std::vector<std
     const float axisW = 52.0f, labelH = ImGui::GetTextLineHeight();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    const ImVec2 size(std::max(avail.x - axisW, 40.0f), std::max(avail.y * 0.42f, 80.0f));
-    const ImVec2 p0(at.x + axisW, at.y + labelH * 0.5f), p1(p0.x + size.x, p0.y + size.y);
+    GraphBox box;
+    box.size = ImVec2(std::max(avail.x - axisW, 40.0f), std::max(avail.y * 0.42f, 80.0f));
+    box.p0 = ImVec2(at.x + axisW, at.y + labelH * 0.5f);
+    box.p1 = ImVec2(box.p0.x + box.size.x, box.p0.y + box.size.y);
+    box.logScale = logScale;
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(p0, p1, IM_COL32(22, 22, 26, 255));
-
-    // The y range: up to the 95th percentile (one slow frame, a resize or a
-    // shader compile, does not flatten the rest; taller values are clipped).
-    std::vector<float> heights, positives;
-    for (size_t i = 0; i < n; ++i) {
-        float sum = 0.0f, hi = 0.0f;
-        for (const auto& v : values) {
-            sum += v[i];
-            hi = std::max(hi, v[i]);
-            if (v[i] > 0.0f) positives.push_back(v[i]);
-        }
-        heights.push_back(stack ? std::max(sum, drawTotal ? totals[i] : 0.0f) : std::max(hi, drawTotal ? totals[i] : 0.0f));
-        if (drawTotal && totals[i] > 0.0f) positives.push_back(totals[i]);
-    }
-    std::sort(heights.begin(), heights.end());
-    float top = n ? heights[std::min(n - 1, n * 95 / 100)] * 1.15f : 1.0f;
-    top = std::max(top, 1e-3f);
-    float bottom = 0.0f;
-    if (logScale) {
-        std::sort(positives.begin(), positives.end());
-        bottom = positives.empty() ? top * 1e-3f : std::max(positives.front() * 0.7f, top * 1e-5f);
-        if (bottom >= top) bottom = top * 0.1f;
-    }
-    auto Y = [&](float ms) {
-        float t;
-        if (logScale) t = (std::log10(std::max(ms, bottom)) - std::log10(bottom)) / (std::log10(top) - std::log10(bottom));
-        else t = ms / top;
-        return p1.y - size.y * std::clamp(t, 0.0f, 1.0f);
-    };
+    dl->AddRectFilled(box.p0, box.p1, IM_COL32(22, 22, 26, 255));
+    graphRange(g, stack, drawTotal, box);
     // One frame (an idle window rendered once) is drawn across the plot,
     // as two columns of the same values.
     const bool single = n == 1;
     if (single) {
-        totals.push_back(totals[0]);
-        for (auto& v : values) v.push_back(v[0]);
+        g.totals.push_back(g.totals[0]);
+        for (auto& v : g.values) v.push_back(v[0]);
     }
-    const size_t columns = single ? 2 : n;
-    auto X = [&](size_t i) {
-        return columns > 1 ? p0.x + size.x * static_cast<float>(i) / static_cast<float>(columns - 1) : p0.x;
-    };
-
-    // Axis: ticks, grid lines and labels left of the plot.
-    for (float t : axisTicks(bottom, top, logScale)) {
-        const float y = Y(t);
-        dl->AddLine(ImVec2(p0.x, y), ImVec2(p1.x, y), IM_COL32(70, 70, 78, 255));
-        char label[32];
-        std::snprintf(label, sizeof(label), t >= 100.0f || t == 0.0f ? "%.0f ms" : t >= 1.0f ? "%.3g ms" : "%.2g ms", t);
-        const float w = ImGui::CalcTextSize(label).x;
-        dl->AddText(ImVec2(p0.x - w - 4.0f, y - labelH * 0.5f), IM_COL32(170, 170, 175, 255), label);
-    }
-    if (columns >= 2) {
-        std::vector<float> base(columns, 0.0f);
-        dl->PushClipRect(p0, p1, true);
-        for (size_t p = 0; p < shown.size(); ++p) {
-            const unsigned col = passColor(shown[p]);
-            for (size_t i = 0; i + 1 < columns; ++i) {
-                const float lo0 = stack ? base[i] : 0.0f, lo1 = stack ? base[i + 1] : 0.0f;
-                const float hi0 = lo0 + values[p][i], hi1 = lo1 + values[p][i + 1];
-                if (stack)
-                    dl->AddQuadFilled(ImVec2(X(i), Y(lo0)), ImVec2(X(i), Y(hi0)), ImVec2(X(i + 1), Y(hi1)), ImVec2(X(i + 1), Y(lo1)), col);
-                else
-                    dl->AddLine(ImVec2(X(i), Y(hi0)), ImVec2(X(i + 1), Y(hi1)), col, 1.5f);
-            }
-            if (stack)
-                for (size_t i = 0; i < columns; ++i) base[i] += values[p][i];
-        }
-        if (drawTotal)
-            for (size_t i = 0; i + 1 < columns; ++i)
-                dl->AddLine(ImVec2(X(i), Y(totals[i])), ImVec2(X(i + 1), Y(totals[i + 1])), IM_COL32(255, 255, 255, 200), 1.0f);
-        dl->PopClipRect();
-    } else {
-        dl->AddText(ImVec2(p0.x + 6, p0.y + 4), IM_COL32(160, 160, 160, 255), "waiting for timer results");
-    }
+    box.columns = single ? 2 : n;
+    graphAxis(box, dl, labelH);
+    graphLines(g, box, stack, drawTotal, dl);
     ImGui::SetCursorScreenPos(at);
-    ImGui::InvisibleButton("##plot", ImVec2(axisW + size.x, size.y + labelH));
-    // Hover readout: the frame under the mouse, every shown pass and the total.
+    ImGui::InvisibleButton("##plot", ImVec2(axisW + box.size.x, box.size.y + labelH));
     if (ImGui::IsItemHovered() && n >= 1) {
         const float mx = ImGui::GetIO().MousePos.x;
-        if (mx >= p0.x && mx <= p1.x) {
-            // With one frame both columns are that frame.
-            const size_t i = single ? 0
-                                    : std::min(n - 1, static_cast<size_t>(std::lround((mx - p0.x) / size.x *
-                                                                                      static_cast<float>(n - 1))));
-            dl->AddLine(ImVec2(X(i), p0.y), ImVec2(X(i), p1.y), IM_COL32(255, 255, 255, 110));
-            ImGui::BeginTooltip();
-            ImGui::Text("frame %llu", static_cast<unsigned long long>(frames[i]));
-            for (size_t p = shown.size(); p-- > 0;) {
-                ImGui::ColorButton(("##t" + shown[p]).c_str(), ImGui::ColorConvertU32ToFloat4(passColor(shown[p])),
-                                   ImGuiColorEditFlags_NoTooltip, ImVec2(9, 9));
-                ImGui::SameLine();
-                ImGui::Text("%-16s %9.3f ms", shown[p].c_str(), values[p][i]);
-            }
-            if (drawTotal) ImGui::Text("%-16s %9.3f ms", "whole frame", totals[i]);
-            ImGui::EndTooltip();
-        }
+        if (mx >= box.p0.x && mx <= box.p1.x) graphReadout(g, box, single, drawTotal, mx, dl);
     }
     ImGui::TextDisabled("older  <-  frames  ->  newest");
     (void)state;

@@ -30,7 +30,12 @@ glm::ivec2 ViewportComposer::targetSize(const UiState& state) {
 }
 
 void ViewportComposer::render(UiState& state) {
-    Pipeline& pipeline = session_.pipeline();
+    followViewport(state);
+    stepBackgroundWork(state);
+    renderOnChange(state);
+}
+
+void ViewportComposer::followViewport(UiState& state) {
     // The render size: the viewport panel's, times the resolution scale.
     if (state.wantedSize.x > 0) {
         const glm::ivec2 target = targetSize(state);
@@ -40,26 +45,34 @@ void ViewportComposer::render(UiState& state) {
         }
     }
     state.animator.update(session_.mutableScene(), state.frame);
+}
+
+void ViewportComposer::stepBackgroundWork(UiState& state) {
     // A change being measured: one of its frames (the knob values of its
     // side, on the stepping runner), then the view renders its own after it
     // (one measured frame a UI frame, so the window stays responsive).
-    bool measuring = false;
+    measuring_ = false;
     if (state.measure.active()) {
         if (state.viewport.mode != DisplayMode::Deferred) {
             state.measure.cancel(session_.knobs(), "cancelled: a forward view runs no deferred pass");
         } else {
-            measuring = true;
+            measuring_ = true;
             state.measure.step(session_);
             state.forceRender = true;
         }
     }
     // A quick sweep's frame first; the view renders again after it.
-    if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring) {
+    if (state.sweep.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
         state.sweep.step(session_);
         state.forceRender = true;
     }
     // File > Save record's measured frame, of the state saved (it puts the current one back).
-    if (state.recordRun.running() && !measuring) state.recordRun.step(state, session_);
+    if (state.recordRun.running() && !measuring_) state.recordRun.step(state, session_);
+}
+
+void ViewportComposer::renderOnChange(UiState& state) {
+    Pipeline& pipeline = session_.pipeline();
+    const bool measuring = measuring_;
     if (state.ab.pinRequest) {
         state.ab.pinRequest = false;
         pin(state);
@@ -244,7 +257,13 @@ void ViewportComposer::renderImages(UiState& state) {
         state.report = {};
     }
 
-    // Viewport image: the final image, a buffer view, or a forward mode; then overlays.
+    makeViewportImage(state, viewportWhy);
+    makeSideImage(state, sideWhy);
+}
+
+void ViewportComposer::makeViewportImage(UiState& state, const std::string& viewportWhy) {
+    Pipeline& pipeline = session_.pipeline();
+    const bool deferred = state.viewport.mode == DisplayMode::Deferred;
     const gl::Texture* base = nullptr;
     const gl::Texture* depth = nullptr;
     keepHistogram(state.viewportImage);
@@ -289,6 +308,10 @@ void ViewportComposer::renderImages(UiState& state) {
         state.viewportImage.width = base->width();
         state.viewportImage.height = base->height();
     }
+}
+
+void ViewportComposer::makeSideImage(UiState& state, const std::string& sideWhy) {
+    Pipeline& pipeline = session_.pipeline();
     keepHistogram(state.sideImage);
     if (state.panels.sideView) {
         if (!sideWhy.empty()) {

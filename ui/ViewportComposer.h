@@ -30,8 +30,20 @@ public:
     // The A/B split's last measured pair (UiState::ab says whether it is ready).
     const SplitComparison& abImages() const { return split_; }
 
-    // Once a UI frame, before the panels draw.
+    // Once a UI frame, before the panels draw: followViewport,
+    // stepBackgroundWork and renderOnChange in turn (the window's loop,
+    // GuiLoop, calls them one by one).
     void render(UiState& state);
+    // The render size follows the viewport panel (targetSize); the light animation advances.
+    void followViewport(UiState& state);
+    // The work that renders frames of its own between UI frames takes its
+    // step: a change measured (this frame renders the knob values of its
+    // side), a quick sweep's step, File > Save record's measured frame.
+    void stepBackgroundWork(UiState& state);
+    // The pipeline rendered when what the images depend on changed (or
+    // timings are captured, a change is measured, the A/B view needs frames),
+    // the viewport's and the side view's images made, the timer polled, the probe read.
+    void renderOnChange(UiState& state);
     // The size (pixels, at least 16 x 16) this frame renders at: the viewport
     // panel's wanted size times the resolution scale; state.renderSize until
     // the panel has a size.
@@ -42,7 +54,14 @@ public:
 private:
     std::string frameSignature(const UiState& state) const;
     void adjustAutoScale(UiState& state);
+    // The pipeline rendered with the final image and what the viewport and
+    // the side view show (each checked with Pipeline::plan first: an output
+    // whose pass cannot run shows why), then their images made.
     void renderImages(UiState& state);
+    // The viewport's image: the final image, a buffer view, or a forward mode; then overlays.
+    void makeViewportImage(UiState& state, const std::string& viewportWhy);
+    // The side view's image: the buffer it shows, through its own BufferView.
+    void makeSideImage(UiState& state, const std::string& sideWhy);
     static void keepHistogram(ShownImage& img);
     void histogram(const ImageView& view, const PublishedOutput& o, ShownImage& img, const UiState& state);
     void refreshHistograms(UiState& state);
@@ -64,6 +83,7 @@ private:
     static constexpr size_t kAbFrames = 10;  // frames per side rendered for the times
 
     RenderSession& session_;
+    bool measuring_ = false;  // this frame renders a measured change's side (stepBackgroundWork)
     BufferView sideView_;
     ForwardPreview forward_;
     ViewportOverlay overlay_;

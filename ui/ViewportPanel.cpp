@@ -31,18 +31,10 @@ void toggleAnimation(UiState& state, RenderSession& session) {
     else state.animator.start(session.scene());
 }
 
-}  // namespace
-
-void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
-    const bool visible = beginPanel(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-    ImGui::PopStyleVar();
-    if (!visible) {
-        ImGui::End();
-        return;
-    }
+// The toolbar: the display mode, the output, the overlays, the animation,
+// the resolution scale and the camera line; it wraps where the panel is narrow.
+void toolbar(UiState& state, RenderSession& session) {
     ViewportView& v = state.viewport;
-    // Toolbar.
     ImGui::SetNextItemWidth(150);
     if (ImGui::BeginCombo("##mode", modeName(v.mode))) {
         for (DisplayMode m : {DisplayMode::Deferred, DisplayMode::Textured, DisplayMode::Wireframe})
@@ -113,6 +105,95 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // and so change the render size again.
     sameLineIfFits(ImGui::CalcTextSize("| orbit camera | 00000x00000 (x0.00) | recording").x);
     ImGui::TextDisabled("%s", info);
+}
+
+// The camera from the mouse over the image (Ctrl belongs to the image's zoom and pan).
+void cameraFromMouse(const ViewportView& v, Camera& cam, bool hovered, bool active, bool dividerHeld) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (active && !io.KeyCtrl && !dividerHeld) {
+        const ImVec2 d = io.MouseDelta;
+        if (v.camera == CameraMode::Orbit) {
+            if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
+                camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
+            else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+                camera::orbit(cam, -d.x * 0.004f, d.y * 0.004f);
+        } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+            camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
+        }
+    }
+    if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
+        if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
+        else camera::fly(cam, glm::vec3(0, 0, io.MouseWheel * std::max(camera::distance(cam), 1.0f) * 0.1f));
+    }
+}
+
+// Probe: hover reads the pixel under the cursor, a click (not a drag) pins
+// it; a pinned pixel is marked (on `dl`). `origin`, `avail`: the image box.
+void probeFromMouse(UiState& state, ImVec2 origin, ImVec2 avail, const ImagePlacement& placed, bool hovered, bool dividerHeld,
+                    ImDrawList* dl) {
+    ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 imgMin(placed.min.x, placed.min.y), imgSize(placed.size.x, placed.size.y);
+    state.probe.hovering = false;
+    if (hovered && imgSize.x > 0 && state.renderSize.x > 0) {
+        const float u = (io.MousePos.x - imgMin.x) / imgSize.x, w = (io.MousePos.y - imgMin.y) / imgSize.y;
+        const bool inBox = io.MousePos.x >= origin.x && io.MousePos.y >= origin.y && io.MousePos.x < origin.x + avail.x &&
+                           io.MousePos.y < origin.y + avail.y;
+        if (inBox && u >= 0 && u < 1 && w >= 0 && w < 1) {
+            const glm::ivec2 px(static_cast<int>(u * state.renderSize.x), static_cast<int>(w * state.renderSize.y));
+            if (!state.probe.pinned) {
+                state.probe.pixel = px;
+                state.probe.uv = glm::vec2(u, w);
+            }
+            state.probe.hovering = true;
+            // ImGui tracks how far the mouse went while the button was down;
+            // an orbit (a drag past the drag threshold) must not pin the probe.
+            const float still = io.MouseDragThreshold * io.MouseDragThreshold;
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still &&
+                !dividerHeld) {
+                state.probe.pinned = true;
+                state.probe.pixel = px;
+                state.probe.uv = glm::vec2(u, w);
+            }
+        }
+    }
+    if (state.probe.pinned && imgSize.x > 0) {
+        const ImVec2 p(imgMin.x + state.probe.uv.x * imgSize.x, imgMin.y + state.probe.uv.y * imgSize.y);
+        dl->AddCircle(p, 6.0f, IM_COL32(255, 255, 0, 255), 12, 1.5f);
+    }
+}
+
+// The newest error, over the image box (`origin`, `avail`), until dismissed.
+void errorBanner(UiState& state, ImVec2 origin, ImVec2 avail) {
+    const Message* m = state.log.banner();
+    if (!m) return;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
+    ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.05f, 0.05f, 0.92f));
+    const float width = std::max(avail.x - 16, 50.0f);
+    const float textHeight = ImGui::CalcTextSize(m->text.c_str(), nullptr, false, width - 2 * style.WindowPadding.x).y;
+    const float height = std::min(textHeight + ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4,
+                                  std::max(avail.y - 16, 40.0f));
+    ImGui::BeginChild("##banner", ImVec2(width, height), true);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(m->text.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::SmallButton("dismiss")) state.log.dismissBanner();
+    ImGui::EndChild();
+    ImGui::PopStyleColor();
+}
+
+}  // namespace
+
+void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+    const bool visible = beginPanel(title, open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    if (!visible) {
+        ImGui::End();
+        return;
+    }
+    ViewportView& v = state.viewport;
+    toolbar(state, session);
     // The A/B split's controls and numbers (AbSplitView). The numbers' lines
     // take room from the image box, not from the render: turning the split on
     // once shrank the frame by a few rows, which withdrew a CPU reference just
@@ -144,75 +225,13 @@ void ViewportPanel::draw(const char* title, bool* open, UiState& state, RenderSe
     // follows the panel a frame later), then zoomed and panned by the view.
     const ImagePlacement placed = drawImageView(v, state.viewportImage, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
                                                 state.nearestSampler, hovered, active);
-    const ImVec2 imgMin(placed.min.x, placed.min.y), imgSize(placed.size.x, placed.size.y);
     // B right of the divider; while the divider has the mouse, the camera and the probe leave it alone.
     const bool dividerHeld = v.mode == DisplayMode::Deferred && v.output == "final" &&
                              drawAbSplit(state, origin, ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)), placed, hovered);
 
-    // Camera from the mouse (Ctrl belongs to the image's zoom and pan).
-    ImGuiIO& io = ImGui::GetIO();
-    Camera& cam = session.camera();
-    if (active && !io.KeyCtrl && !dividerHeld) {
-        const ImVec2 d = io.MouseDelta;
-        if (v.camera == CameraMode::Orbit) {
-            if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift))
-                camera::pan(cam, -d.x * 0.0015f, d.y * 0.0015f);
-            else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
-                camera::orbit(cam, -d.x * 0.004f, d.y * 0.004f);
-        } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
-            camera::look(cam, d.x * 0.004f, -d.y * 0.004f);
-        }
-    }
-    if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
-        if (v.camera == CameraMode::Orbit) camera::zoom(cam, std::pow(0.88f, io.MouseWheel));
-        else camera::fly(cam, glm::vec3(0, 0, io.MouseWheel * std::max(camera::distance(cam), 1.0f) * 0.1f));
-    }
-
-    // Probe: hover reads the pixel under the cursor, a click (not a drag) pins it.
-    state.probe.hovering = false;
-    if (hovered && imgSize.x > 0 && state.renderSize.x > 0) {
-        const float u = (io.MousePos.x - imgMin.x) / imgSize.x, w = (io.MousePos.y - imgMin.y) / imgSize.y;
-        const bool inBox = io.MousePos.x >= origin.x && io.MousePos.y >= origin.y && io.MousePos.x < origin.x + avail.x &&
-                           io.MousePos.y < origin.y + avail.y;
-        if (inBox && u >= 0 && u < 1 && w >= 0 && w < 1) {
-            const glm::ivec2 px(static_cast<int>(u * state.renderSize.x), static_cast<int>(w * state.renderSize.y));
-            if (!state.probe.pinned) {
-                state.probe.pixel = px;
-                state.probe.uv = glm::vec2(u, w);
-            }
-            state.probe.hovering = true;
-            // ImGui tracks how far the mouse went while the button was down;
-            // an orbit (a drag past the drag threshold) must not pin the probe.
-            const float still = io.MouseDragThreshold * io.MouseDragThreshold;
-            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= still &&
-                !dividerHeld) {
-                state.probe.pinned = true;
-                state.probe.pixel = px;
-                state.probe.uv = glm::vec2(u, w);
-            }
-        }
-    }
-    if (state.probe.pinned && imgSize.x > 0) {
-        const ImVec2 p(imgMin.x + state.probe.uv.x * imgSize.x, imgMin.y + state.probe.uv.y * imgSize.y);
-        dl->AddCircle(p, 6.0f, IM_COL32(255, 255, 0, 255), 12, 1.5f);
-    }
-
-    // The newest error, over the image, until dismissed.
-    if (const Message* m = state.log.banner()) {
-        ImGui::SetCursorScreenPos(ImVec2(origin.x + 8, origin.y + 8));
-        ImGui::PushStyleColor(ImGuiCol_ChildBg, ImVec4(0.35f, 0.05f, 0.05f, 0.92f));
-        const float width = std::max(avail.x - 16, 50.0f);
-        const float textHeight = ImGui::CalcTextSize(m->text.c_str(), nullptr, false, width - 2 * style.WindowPadding.x).y;
-        const float height = std::min(textHeight + ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4,
-                                      std::max(avail.y - 16, 40.0f));
-        ImGui::BeginChild("##banner", ImVec2(width, height), true);
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(m->text.c_str());
-        ImGui::PopTextWrapPos();
-        if (ImGui::SmallButton("dismiss")) state.log.dismissBanner();
-        ImGui::EndChild();
-        ImGui::PopStyleColor();
-    }
+    cameraFromMouse(v, session.camera(), hovered, active, dividerHeld);
+    probeFromMouse(state, origin, avail, placed, hovered, dividerHeld, dl);
+    errorBanner(state, origin, avail);
     ImGui::End();
 }
 
