@@ -25,11 +25,11 @@
 #include <optional>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "app/HeadlessGlContext.h"
 #include "app/ReplayDiff.h"
 #include "app/ReplayReport.h"
+#include "headless/CommandLine.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/metrics/Bootstrap.h"

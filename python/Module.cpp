@@ -19,8 +19,8 @@
 #include <thread>
 #include <tuple>
 
-#include "app/CommandLine.h"
-#include "app/PlotScript.h"
+#include "headless/CommandLine.h"
+#include "headless/PlotScript.h"
 #include "python/ModuleInit.h"
 #include "python/WorkbenchSession.h"
 #include "renderer/bench/BenchGrid.h"
@@ -541,11 +541,7 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     requirePath(json, "tradeoff: json");
     requirePath(plot, "tradeoff: plot");
     const std::vector<BenchKnobAxis> axes = sweepAxes("tradeoff", sweep);
-    for (const auto& a : axes) {
-        std::string text = a.knob + "=";
-        for (size_t i = 0; i < a.values.size(); ++i) text += (i ? "," : "") + a.values[i];
-        s.sweep.push_back(text);
-    }
+    for (const auto& a : axes) s.sweep.push_back(BenchGrid::sweepText(a));
     s.presets = textList("presets", presets);
     if (s.presets.size() == 1 && s.presets[0].find(',') != std::string::npos)
         s.presets = asValueError([&] { return splitList(s.presets[0], "--presets"); });

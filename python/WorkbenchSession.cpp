@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/HeadlessGlContext.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"

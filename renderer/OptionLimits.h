@@ -8,7 +8,7 @@
 // Inclusive, unless a RealRange says its minimum is open.
 //
 // kNumericOptions below lists every numeric option of every subcommand with
-// its range: app/CommandLine reads a numeric option only through it (an
+// its range: headless/CommandLine reads a numeric option only through it (an
 // option missing from the table is a programming error, std::logic_error),
 // each command's --help prints its part, and tests/cli/OptionRangeCliTest
 // walks it with out-of-range values.

@@ -79,6 +79,16 @@ TEST(BenchGrid, OrdersSizeThenLightsThenKnobsAndShardsByIndex) {
     EXPECT_EQ(plain.configs(17).at(0).lights, 17);
 }
 
+// tradeoff hands its axes on as text (the CLI's and Python's): the text parses back to the same axis.
+TEST(BenchGrid, SweepTextParsesBackToTheSameAxis) {
+    const BenchKnobAxis axis{"ssao.radius", {"0.25", "0.5", "1"}};
+    EXPECT_EQ(BenchGrid::sweepText(axis), "ssao.radius=0.25,0.5,1");
+    const BenchKnobAxis back = BenchGrid::parseSweep(BenchGrid::sweepText(axis));
+    EXPECT_EQ(back.knob, axis.knob);
+    EXPECT_EQ(back.values, axis.values);
+    EXPECT_EQ(BenchGrid::sweepText({"lighting.strategy", {"tiled"}}), "lighting.strategy=tiled");
+}
+
 TEST(Bootstrap, IdenticalDistributionsContainOneTwiceAsSlowGivesTwo) {
     std::mt19937 rng(11);
     std::lognormal_distribution<double> ms(std::log(5.0), 0.05);
