@@ -1,7 +1,7 @@
 #pragma once
 // The ranges of the numeric command-line options, in one place: the commands
 // that parse the options (every subcommand), the Python module's keyword
-// arguments (python/Module.cpp), the libraries that take the same values
+// arguments (python/Arguments.h), the libraries that take the same values
 // (renderer/metrics/Flip's pixels per degree, the reference's rays) and the
 // experiment-record reader (a record is held to the limits of the options its
 // fields stand for: renderer/record/ExperimentRecord) take them from here.
