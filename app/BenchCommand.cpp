@@ -25,13 +25,13 @@
 #include <sstream>
 #include <thread>
 
-#include "app/CommandLine.h"
 #include "app/HostInfo.h"
-#include "app/PlotScript.h"
 #include "app/SweepOptions.h"
 #include "renderer/OptionLimits.h"
 #include "app/Commands.h"
-#include "app/HeadlessGlContext.h"
+#include "headless/CommandLine.h"
+#include "headless/HeadlessGlContext.h"
+#include "headless/PlotScript.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchMerge.h"

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "app/CommandLine.h"
 #include "app/CompareInput.h"
 #include "app/Commands.h"
+#include "headless/CommandLine.h"
 #include "renderer/Error.h"
 #include "renderer/io/ImageIO.h"
 #include "renderer/io/TextFile.h"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/HeadlessGlContext.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"

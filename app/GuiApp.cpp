@@ -17,11 +17,11 @@
 #include <tuple>
 #include <type_traits>
 
-#include "app/CommandLine.h"
 #include "app/FrameWait.h"
 #include "app/GuiLoop.h"
 #include "app/RenderDocCapture.h"
 #include "app/ScriptedInput.h"
+#include "headless/CommandLine.h"
 #include "renderer/Error.h"
 #include "renderer/gl/Sampler.h"
 #include "renderer/io/ImageHistogram.h"

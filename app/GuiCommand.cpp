@@ -3,10 +3,10 @@
 #include <iostream>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/GuiApp.h"
 #include "app/RenderDocCapture.h"
+#include "headless/CommandLine.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {

@@ -4,8 +4,8 @@
 #include <optional>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "headless/CommandLine.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/knobs/KnobRegistry.h"

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "app/ReferenceProgressLine.h"
+#include "headless/CommandLine.h"
 #include "renderer/Error.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"

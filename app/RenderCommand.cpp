@@ -6,12 +6,12 @@
 #include <iostream>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
 #include "renderer/record/ExperimentRecord.h"
-#include "app/HeadlessGlContext.h"
 #include "app/ReferenceProgressLine.h"
 #include "app/RenderDocCapture.h"
+#include "headless/CommandLine.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"

@@ -20,16 +20,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <tuple>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "app/HeadlessGlContext.h"
 #include "app/ReplayDiff.h"
 #include "app/ReplayReport.h"
+#include "headless/CommandLine.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/metrics/Bootstrap.h"
@@ -334,6 +335,13 @@ int runReplayCommand(int argc, char** argv) {
     }
     if (cl.positional().size() != 1) throw UsageError("replay needs one record file: deferred-workbench replay RECORD.json");
     const std::string path = cl.positional()[0];
+    if (newRecord) {
+        // The record replayed is the baseline: a --record over it would lose it.
+        std::error_code ec;
+        if (std::filesystem::equivalent(path, *newRecord, ec))
+            throw UsageError("replay --record " + *newRecord + ": that is the record being replayed (" + path +
+                             "); name another file, so the baseline is kept");
+    }
 
     ExperimentRecord old;
     try {

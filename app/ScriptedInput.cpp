@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "app/CommandLine.h"
+#include "headless/CommandLine.h"
 #include "renderer/io/TextFile.h"
 
 namespace dw {

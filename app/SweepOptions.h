@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/CommandLine.h"
+#include "headless/CommandLine.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/GridExclusion.h"
 

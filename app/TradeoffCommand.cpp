@@ -12,12 +12,12 @@
 #include <optional>
 #include <set>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
-#include "app/HeadlessGlContext.h"
 #include "app/HostInfo.h"
-#include "app/PlotScript.h"
 #include "app/SweepOptions.h"
+#include "headless/CommandLine.h"
+#include "headless/HeadlessGlContext.h"
+#include "headless/PlotScript.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/TradeoffRunner.h"
@@ -291,11 +291,7 @@ int runTradeoffCommand(int argc, char** argv) {
     const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     s.run.width = w;
     s.run.height = h;
-    for (const auto& axis : so.sweeps) {
-        std::string text = axis.knob + "=";
-        for (size_t i = 0; i < axis.values.size(); ++i) text += (i ? "," : "") + axis.values[i];
-        s.sweep.push_back(text);
-    }
+    for (const auto& axis : so.sweeps) s.sweep.push_back(BenchGrid::sweepText(axis));
     if (const auto presets = cl.value("--presets")) s.presets = CommandLine::parseList("--presets", *presets);
     s.knobs = cl.value("--knobs").value_or("");
     s.exclude = so.excludes;

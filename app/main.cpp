@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/CommandLine.h"
 #include "app/Commands.h"
+#include "headless/CommandLine.h"
 #include "renderer/Error.h"
 #include "renderer/gl/ShaderSource.h"
 

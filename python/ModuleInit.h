@@ -1,6 +1,6 @@
 #pragma once
 // What the module checks and sets when Python imports it, before any class
-// is defined (kept out of Module.cpp, which holds the API).
+// is defined (kept out of the bindings, python/Bindings.h, which hold the API).
 #include <pybind11/pybind11.h>
 
 #include <string>

@@ -2,40 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
-#include "app/HeadlessGlContext.h"
+#include "python/ProcessContext.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/RenamedOutputs.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
-
-namespace {
-
-// One EGL context per process, made on the first Session's thread and kept
-// until the process exits (never torn down under Python's finalisation).
-struct ProcessContext {
-    HeadlessGlContext* context = nullptr;
-    std::thread::id thread;
-};
-ProcessContext& processContext() {
-    static ProcessContext pc;
-    if (!pc.context) {
-        pc.context = HeadlessGlContext::create().release();
-        pc.thread = std::this_thread::get_id();
-    }
-    return pc;
-}
-
-std::string describeThread(std::thread::id id) {
-    std::ostringstream s;
-    s << id;
-    return s.str();
-}
-
-}  // namespace
 
 WorkbenchSession::WorkbenchSession(const std::string& scene, int width, int height, const std::vector<std::string>& presets,
                                    const std::vector<std::string>& settings) {

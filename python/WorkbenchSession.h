@@ -1,5 +1,5 @@
 #pragma once
-// What the Python module's Session is in C++ (python/Module.cpp only converts
+// What the Python module's Session is in C++ (the bindings, python/Bindings.h, only convert
 // types): one RenderSession over the process's headless EGL context, the run
 // configuration it was opened with, and the last frame's report and timings.
 // Every call checks that it comes from the thread that made the GL context
@@ -107,7 +107,7 @@ public:
     const std::optional<TimingReport>& timings() const { return timings_; }
     // The passes' warnings about the last render()'s last frame ("oit: lost N
     // of M transparent fragments ..."), the lines `render` prints; render() in
-    // Module.cpp raises each as a RuntimeWarning.
+    // SessionBindings.cpp raises each as a RuntimeWarning.
     const std::vector<std::string>& frameWarnings() const { return frameWarnings_; }
     ProbeResult probe(int x, int y) const;
     // Writes `buffer` of the last frame as render --out does (.png display, .exr raw).

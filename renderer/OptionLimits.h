@@ -1,14 +1,14 @@
 #pragma once
 // The ranges of the numeric command-line options, in one place: the commands
 // that parse the options (every subcommand), the Python module's keyword
-// arguments (python/Module.cpp), the libraries that take the same values
+// arguments (python/Arguments.h), the libraries that take the same values
 // (renderer/metrics/Flip's pixels per degree, the reference's rays) and the
 // experiment-record reader (a record is held to the limits of the options its
 // fields stand for: renderer/record/ExperimentRecord) take them from here.
 // Inclusive, unless a RealRange says its minimum is open.
 //
 // kNumericOptions below lists every numeric option of every subcommand with
-// its range: app/CommandLine reads a numeric option only through it (an
+// its range: headless/CommandLine reads a numeric option only through it (an
 // option missing from the table is a programming error, std::logic_error),
 // each command's --help prints its part, and tests/cli/OptionRangeCliTest
 // walks it with out-of-range values.

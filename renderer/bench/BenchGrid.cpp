@@ -96,4 +96,10 @@ BenchKnobAxis BenchGrid::parseSweep(const std::string& text) {
     return axis;
 }
 
+std::string BenchGrid::sweepText(const BenchKnobAxis& axis) {
+    std::string text = axis.knob + "=";
+    for (size_t i = 0; i < axis.values.size(); ++i) text += (i ? "," : "") + axis.values[i];
+    return text;
+}
+
 }  // namespace dw

@@ -50,6 +50,9 @@ public:
     std::vector<int> groupsAlong(const std::vector<BenchConfig>& configs, const std::string& axis) const;
     // "knob=a,b,c" -> an axis (the values are checked against the knob later).
     static BenchKnobAxis parseSweep(const std::string& text);
+    // An axis as --sweep takes it, "knob=a,b,c": parseSweep's inverse (the
+    // CLI's and the Python module's tradeoff hand their axes on this way).
+    static std::string sweepText(const BenchKnobAxis& axis);
 };
 
 // "a,b,c" -> {"a", "b", "c"}; empty items are errors (named by `what`).

@@ -79,8 +79,9 @@ std::vector<std::string> shellWords(const std::string& text) {
 // --set's among themselves (the order of the axes, and of the assignments,
 // counts). --no-lpp counts: it leaves out a column.
 std::string benchRunOf(const std::string& command) {
-    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",      "--plot",   "--plot-size",
-                                                  "--baseline", "--ratio-of", "--resamples", "--resume"};
+    // Outputs (--record is --json's newer name) and what only the summary uses.
+    static const std::set<std::string> ignored = {"--shard",    "--csv",      "--json",      "--record", "--plot",
+                                                  "--plot-size", "--baseline", "--ratio-of", "--resamples", "--resume"};
     static const std::set<std::string> bare = {"--quiet", "--no-lpp", "--keep-scene-lights", "--walkthrough"};
     const std::vector<std::string> tokens = shellWords(command);
     std::vector<std::string> words0, unordered, ordered;  // the subcommand's words, then the options

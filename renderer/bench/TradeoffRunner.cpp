@@ -215,6 +215,19 @@ void TradeoffRunner::warn(const std::string& line) const {
 
 // After stage 2 (the timed rounds): --time PASS is refused before the error
 // captures and references when no configuration timed that pass.
+// Before the timed rounds: --time names a pass the pipeline has (a typo was
+// caught only after the whole sweep, its results not written). Whether it
+// ran is checkTimedPass's, after them.
+void TradeoffRunner::checkTimedPassName(RenderSession& session) const {
+    if (o_.time == "frame") return;
+    std::string list;
+    for (const PassInfo& p : session.pipeline().passList()) {
+        if (p.name == o_.time) return;
+        list += (list.empty() ? "" : ",") + p.name;
+    }
+    throw Error("--time " + o_.time + ": the pipeline has no pass of that name (expected frame or one of: " + list + ")");
+}
+
 void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
     if (o_.time == "frame") return;
     std::vector<std::string> timed;
@@ -442,6 +455,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     session.setScene(scene_, o_.run);
     session.resize(o_.run.width, o_.run.height);
     warnAovCost(session);
+    checkTimedPassName(session);
 
     RunnerPlan plan;
     plan.configurations = static_cast<int>(points_.size()) * cameraCount;

@@ -109,6 +109,7 @@ private:
     std::string describeConfiguration(int configuration) const;
     void warnAovCost(RenderSession& session) const;
     void warn(const std::string& line) const;
+    void checkTimedPassName(RenderSession& session) const;
     void checkTimedPass(const RunnerTimings& timings) const;
     FloatImage againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
                             std::map<std::string, FloatImage>& rendered) const;

@@ -1,5 +1,7 @@
 #include "renderer/io/ImageIO.h"
 
+#include <unistd.h>
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -246,36 +248,90 @@ bool isFloatFormat(const std::string& path) {
     return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
 }
 
-void writeImage(const std::string& path, const FloatImage& image,
-                const std::vector<std::string>& channelNames) {
+namespace {
+
+// The pixels as the writer takes them: floats, or 8-bit display values
+// (clamped; a 2-channel buffer padded with zero blue).
+struct EncodedPixels {
+    OIIO::ImageSpec spec;
+    std::vector<std::uint8_t> bytes;  // 8-bit formats
+};
+
+EncodedPixels pixelsToWrite(const FloatImage& image, bool asFloat, const std::vector<std::string>& channelNames) {
+    int channels = image.channels;
+    const bool pad = !asFloat && channels == 2;
+    if (pad) channels = 3;
+    EncodedPixels e;
+    e.spec = OIIO::ImageSpec(image.width, image.height, channels, asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!channelNames.empty() && static_cast<int>(channelNames.size()) == image.channels && !pad)
+        e.spec.channelnames = channelNames;
+    if (asFloat) return e;
+    e.bytes.resize(static_cast<size_t>(image.width) * image.height * channels);
+    for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p)
+        for (int c = 0; c < channels; ++c) {
+            const float v = c < image.channels ? image.pixels[p * image.channels + c] : 0.0f;
+            const float clamped = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+            e.bytes[p * channels + c] = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+        }
+    return e;
+}
+
+// Encodes with `out` to `target` (a file name or, through `proxy`, memory).
+void encode(OIIO::ImageOutput& out, const std::string& target, const EncodedPixels& e, const FloatImage& image,
+            const std::string& path) {
+    if (!out.open(target, e.spec)) throw FileError(path, "cannot open for writing: " + oneLine(out.geterror()));
+    const bool ok = e.bytes.empty() ? out.write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())
+                                    : out.write_image(OIIO::TypeDesc::UINT8, e.bytes.data());
+    if (!ok || !out.close()) throw FileError(path, "cannot write image: " + oneLine(out.geterror()));
+}
+
+}  // namespace
+
+void writeImage(const std::string& path, const FloatImage& image, const std::vector<std::string>& channelNames) {
+    namespace fs = std::filesystem;
     const bool asFloat = isFloatFormat(path);
-    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    const std::string ext = lower(fs::path(path).extension().string());
     if (ext.empty()) throw FileError(path, "output needs an extension (.png or .exr)");
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw FileError(path, "no image writer for '" + ext + "' files");
-    int channels = image.channels;
-    // 8-bit formats take 1, 3 or 4 channels; pad a 2-channel buffer with zero blue.
-    const bool pad = !asFloat && channels == 2;
-    if (pad) channels = 3;
-    OIIO::ImageSpec spec(image.width, image.height, channels,
-                         asFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!channelNames.empty() && static_cast<int>(channelNames.size()) == image.channels && !pad)
-        spec.channelnames = channelNames;
-    if (!out->open(path, spec)) throw FileError(path, "cannot open for writing: " + oneLine(out->geterror()));
-    bool ok;
-    if (asFloat) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-    } else {
-        std::vector<std::uint8_t> bytes(static_cast<size_t>(image.width) * image.height * channels);
-        for (size_t p = 0; p < static_cast<size_t>(image.width) * image.height; ++p)
-            for (int c = 0; c < channels; ++c) {
-                const float v = c < image.channels ? image.pixels[p * image.channels + c] : 0.0f;
-                const float clamped = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-                bytes[p * channels + c] = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
-            }
-        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    const EncodedPixels e = pixelsToWrite(image, asFloat, channelNames);
+    // A file whole or not at all. The writer's own file writes can fail
+    // unseen (libpng's buffered fwrite on a full disk left a 0-byte PNG and
+    // "wrote"), so the image is encoded in memory where the writer can and
+    // the bytes written by writeFileAtomically, which checks every write
+    // (and writes a device or pipe in place); else encoded to a temporary
+    // file that must read back.
+    if (out->supports("ioproxy")) {
+        std::vector<unsigned char> bytes;
+        OIIO::Filesystem::IOVecOutput memory(bytes);
+        if (!out->set_ioproxy(&memory)) throw FileError(path, "cannot write image: " + oneLine(out->geterror()));
+        encode(*out, path, e, image, path);
+        writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));  // FileError "cannot save: ..." says why
+        return;
     }
-    if (!ok || !out->close()) throw FileError(path, "cannot write image: " + oneLine(out->geterror()));
+    std::error_code ec;
+    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+        encode(*out, path, e, image, path);  // a device or a pipe: written in place, never renamed over
+        return;
+    }
+    const fs::path target(path);
+    const fs::path tmp = (target.parent_path().empty() ? fs::path(".") : target.parent_path()) /
+                         ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) + ext);
+    try {
+        encode(*out, tmp.string(), e, image, path);
+        out.reset();
+        const ImageShape shape = readImageShape(tmp.string());
+        if (shape.width != image.width || shape.height != image.height)
+            throw FileError(path, "cannot write image: it did not read back (disk full?)");
+    } catch (const FileError&) {
+        fs::remove(tmp, ec);
+        throw;
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw FileError(path, "cannot write image: " + ec.message());
+    }
 }
 
 ImageDifference compareImages(const FloatImage& a, const FloatImage& b, float failThreshold) {

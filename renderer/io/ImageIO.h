@@ -27,7 +27,10 @@ Image decodeImage8(const std::uint8_t* bytes, size_t size, const std::string& na
 FloatImage loadImageFloat(const std::string& path);
 
 // Writes by extension: .png/.jpg/.tga as 8-bit (values clamped to [0,1]),
-// .exr/.hdr/.tif as float. Throws FileError naming the path.
+// .exr/.hdr/.tif as float. A file is written whole or not at all (encoded,
+// then written, synced and renamed over the old one; a full disk is an
+// error, and no part is left); a device or pipe is written in place.
+// Throws FileError naming the path.
 void writeImage(const std::string& path, const FloatImage& image,
                 const std::vector<std::string>& channelNames = {});
 bool isFloatFormat(const std::string& path);

@@ -74,7 +74,7 @@ void requireRegularFile(const std::string& path, const std::string& notFound, co
     if (S_ISDIR(st.st_mode)) throw FileError(path, unreadable + ": it is a folder, not a file");
     if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
         throw FileError(path, unreadable + ": it is a device, not a file (a device such as /dev/zero never ends)");
-    throw FileError(path, unreadable + ": it is a pipe or socket, not a file (images are read from files)");
+    throw FileError(path, unreadable + ": it is a pipe or socket, not a file");
 }
 
 void writeFileAtomically(const std::string& path, const std::string& text) {
@@ -83,6 +83,17 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(dir)) throw FileError(path, "cannot save: folder " + dir.string() + " does not exist");
     if (fs::is_directory(target)) throw FileError(path, "cannot save: a folder has that name");
+    std::error_code kind;
+    if (fs::exists(target, kind) && !fs::is_regular_file(target, kind)) {
+        // A device or a pipe (/dev/null, /dev/full, a reader's FIFO): written
+        // in place, never renamed over (a rename replaced /dev/full with a file).
+        std::ofstream out(target, std::ios::binary);
+        if (!out) throw FileError(path, "cannot save: cannot open it for writing");
+        out << text;
+        out.flush();
+        if (!out) throw FileError(path, "cannot save: writing failed (disk full?)");
+        return;
+    }
     const fs::path tmp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

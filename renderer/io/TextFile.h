@@ -24,17 +24,20 @@ constexpr std::uint64_t kBinaryFileLimit = 4ull << 30;
 std::string readWholeFile(const std::string& path, const std::string& notFound, const std::string& unreadable,
                           std::uint64_t limit = kTextFileLimit);
 
-// For a reader that opens the file itself (OpenImageIO's decoders): throws
+// For a reader that opens the file itself (OpenImageIO's decoders), or one
+// that needs the whole of a file that is there (a glTF's buffers and images): throws
 // FileError(path, notFound) when it does not exist, and FileError(path,
 // unreadable + ": it is a folder" / ": it is a device" / ": it is a pipe")
 // when it is not a regular file (symlinks followed). A device such as
-// /dev/zero never ends, a pipe with no writer never opens, and decoders seek.
+// /dev/zero never ends, a pipe's writer may never end it, and decoders seek.
 void requireRegularFile(const std::string& path, const std::string& notFound, const std::string& unreadable);
 
 // Replaces `path` with `text` without ever leaving it half written: a
 // temporary file in the same folder, flushed and synced, then renamed over
 // it. On failure the previous file is untouched and FileError(path, "cannot
-// save: ...") says why (no folder, a folder of that name, not writable, disk full).
+// save: ...") says why (no folder, a folder of that name, not writable, disk
+// full). A device or a pipe (/dev/null, /dev/full, a FIFO) is written in
+// place, its write checked, never renamed over.
 void writeFileAtomically(const std::string& path, const std::string& text);
 
 // "line L, column C" (1-based) of the byte a parser reported: nlohmann's

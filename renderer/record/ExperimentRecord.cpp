@@ -905,12 +905,17 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         }
         r.knobs = root.at("knobs").fields();
         if (root.has("seeds")) r.seeds = root.at("seeds").fields();
-        // Held to the ranges of --size, --frames and --warmup.
+        // Held to the ranges of --size, --frames and --warmup; a merge's
+        // record (no run of its own: grid.merged) may hold 0 where its
+        // shards' JSONs said nothing, and replay names it as a merge's.
+        const bool merged = root.has("grid") && root.json()["grid"].is_object() &&
+                            root.json()["grid"].value("merged", false) == true;
+        auto orZero = [&](OptionRange range) { return merged ? OptionRange{0, range.max} : range; };
         const F size = root.at("size");
         if (!size.json().is_array() || size.json().size() != 2) size.refuse("expected [width, height], got " + size.shown());
-        r.width = wholeNumber(size.json()[0], path, "size width", limits::kSize, "--size");
-        r.height = wholeNumber(size.json()[1], path, "size height", limits::kSize, "--size");
-        r.frames = root.at("frames").whole(limits::kFrames, "--frames");
+        r.width = wholeNumber(size.json()[0], path, "size width", orZero(limits::kSize), "--size");
+        r.height = wholeNumber(size.json()[1], path, "size height", orZero(limits::kSize), "--size");
+        r.frames = root.at("frames").whole(orZero(limits::kFrames), "--frames");
         r.warmup = root.at("warmup").whole(limits::kWarmup, "--warmup");
         // The one definition of a usable camera (a zero up vector renders nothing useful).
         if (const auto problem = findCameraProblem(r.camera, 0.0f))

@@ -50,6 +50,9 @@ bool GltfMaterialImporter::readExternalFileCallback(std::vector<unsigned char>* 
                                                     const std::string& path, void* user) {
     auto* self = static_cast<GltfMaterialImporter*>(user);
     try {
+        // A regular file only: a pipe with a writer that never ends would be waited on, and one
+        // without a writer reads as empty ("missing texture" for a file that is there).
+        requireRegularFile(path, "file not found", "cannot read file");
         const std::string bytes = readWholeFile(path, "file not found", "cannot read file", kBinaryFileLimit);
         out->assign(bytes.begin(), bytes.end());
         return true;

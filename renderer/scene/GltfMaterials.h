@@ -29,9 +29,9 @@ public:
                                     int, int, const unsigned char* bytes, int size, void* user);
     // tinygltf's file reader (FsCallbacks::ReadWholeFile, user data: the
     // importer) for a buffer's or an image's external URI: the workbench's
-    // bounded reader (renderer/io/TextFile.h), so a URI naming a device
-    // (/dev/zero), a folder or a pipe is refused by name rather than read
-    // forever, and what went wrong is kept for the image's message.
+    // bounded reader of regular files (renderer/io/TextFile.h), so a URI
+    // naming a device (/dev/zero), a folder or a pipe is refused by name
+    // rather than read forever, and what went wrong is kept for the image's message.
     static bool readExternalFileCallback(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                                          void* user);
     // The first image that failed, "image[i]: ..."; empty when none.

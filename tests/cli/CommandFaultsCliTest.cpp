@@ -220,3 +220,26 @@ TEST(CommandFaultsCli, TradeoffPlotNoneDrawsNoPlot) {
     for (const auto& e : fs::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".png") << e.path();
     EXPECT_EQ(r.out.find(".png"), std::string::npos) << r.out;
 }
+
+// A write that fails (a full disk; here the file size limit, ulimit -f, with
+// SIGXFSZ ignored so the write returns EFBIG) is an error naming the file,
+// with no part of it left: a PNG was reported written and left at 0 bytes.
+TEST(CommandFaultsCli, AnImageThatCannotBeWrittenWholeIsAnErrorAndLeavesNoPart) {
+    const fs::path dir = test::tempDir() / "full-disk";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const std::string name : {"a.png", "a.exr"}) {
+        const Result r = test::runCommand("cd " + dir.string() + " && bash -c \"trap '' XFSZ; ulimit -f 1; " +
+                                          std::string(DW_WORKBENCH_BINARY) + " render --scene spheres --size 160x90 --out " +
+                                          name + "\"");
+        EXPECT_NE(r.code, 0) << name << ": " << r.out << r.err;
+        EXPECT_NE(r.err.find(name + ": cannot "), std::string::npos) << r.err;
+        EXPECT_EQ(r.out.find("wrote " + name), std::string::npos) << r.out;
+        for (const auto& e : fs::directory_iterator(dir)) ADD_FAILURE() << "left behind: " << e.path();
+    }
+    // Within the limit the same command writes it.
+    const Result ok = test::runCommand("cd " + dir.string() + " && " + std::string(DW_WORKBENCH_BINARY) +
+                                       " render --scene spheres --size 16x9 --out b.png");
+    EXPECT_EQ(ok.code, 0) << ok.err;
+    EXPECT_GT(fs::file_size(dir / "b.png"), 0u);
+}

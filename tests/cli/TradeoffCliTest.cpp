@@ -367,7 +367,7 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
         {" --sweep ssao.samples=4,8 --metric mse", "--metric: expected flip, rms, psnr or ssim, got 'mse'"},
         {" --sweep ssao.samples=4,8 --buffer shade", "--buffer: expected final, lbuffer, ao or shadow, got 'shade'"},
         {" --sweep ssao.samples=4,8 --mask edges", "--mask: expected shadow_edges, got 'edges'"},
-        {" --sweep ssao.samples=4 --time bogus", "--time bogus: no pass of that name was timed (expected frame or one of: "},
+        {" --sweep ssao.samples=4 --time bogus", "--time bogus: the pipeline has no pass of that name (expected frame or one of: "},
         {" --presets SSAO1,NOPE", "NOPE"},
         {"", "tradeoff needs axes"},
     };

@@ -4,8 +4,8 @@
 
 #include <set>
 
-#include "app/CommandLine.h"
 #include "app/ScriptedInput.h"
+#include "headless/CommandLine.h"
 #include "ui/PanelLayout.h"
 
 using namespace dw;

@@ -89,6 +89,29 @@ class RecordTest(unittest.TestCase):
         self.assertNotIn("too few frames", r.stdout)
         self.assertNotIn("scene file", r.stdout)
 
+    def test_replay_refuses_to_write_over_the_record_it_replays(self):
+        # The record replayed is the baseline: --record over it would lose it (it was overwritten in silence).
+        with open(self.record, "rb") as f:
+            before = f.read()
+        r = run("replay", self.record, "--record", self.record)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("that is the record being replayed", r.stderr)
+        with open(self.record, "rb") as f:
+            self.assertEqual(f.read(), before)
+
+    def test_a_merge_record_is_named_as_one(self):
+        # bench merge's record has no grid to run again: replay says so (it said 'frames: 0 is outside --frames's range').
+        d = tempfile.mkdtemp(dir=self.tmp.name)
+        for i in range(2):
+            r = run("bench", "--scene", "default", "--size", "16x9", "--lights", "1,2", "--frames", "1", "--shard",
+                    "%d/2" % i, "--csv", "s%d.csv" % i, "--record", "s%d.json" % i, "--quiet", cwd=d)
+            self.assertEqual(r.returncode, 0, r.stderr)
+        r = run("bench", "merge", "s0.csv", "s1.csv", "--out", "all.csv", "--record", "all.json", cwd=d)
+        self.assertEqual(r.returncode, 0, r.stderr)  # shards written with --record merge
+        r = run("replay", "all.json", cwd=d)
+        self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+        self.assertIn("a bench merge record has no grid to run again", r.stderr)
+
     def test_too_few_frames_give_no_interval(self):
         # Below 6 counted frames a median has no 95% interval worth the name:
         # the record says so instead of numbers, and so does replay.

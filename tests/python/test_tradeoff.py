@@ -175,10 +175,10 @@ class TradeoffTest(unittest.TestCase):
             with self.assertRaises(error, msg=str(kwargs)) as e:
                 dw.tradeoff(**dict(base, **kwargs))
             self.assertIn(message, str(e.exception), kwargs)
-        # A pass that was not timed is known only after the timed rounds: dw.Error naming --time.
+        # A name the pipeline has no pass of is refused before the timed rounds: dw.Error naming --time.
         with self.assertRaises(dw.Error) as e:
             dw.tradeoff(**dict(base, sweep={"ssao.samples": [4]}, time="bogus", against="ssao.samples=8"))
-        self.assertIn("--time bogus: no pass of that name was timed", str(e.exception))
+        self.assertIn("--time bogus: the pipeline has no pass of that name", str(e.exception))
 
     def test_record_keyword_writes_the_record(self):
         # record= is the CLI's --record (json= its older name): the experiment record, one format.

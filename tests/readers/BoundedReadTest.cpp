@@ -126,6 +126,33 @@ TEST(BoundedRead, AnImagePathThatIsADevicePipeOrFolderIsRefusedByNameWithoutBloc
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
+TEST(BoundedRead, ADeviceIsWrittenInPlaceAndItsFailureSaidNeverRenamedOver) {
+    // A record written to /dev/full replaced the device with a file (the
+    // atomic write renamed its temporary over it), and later writes there
+    // "succeeded". A device is written in place and its write checked.
+    struct stat before {};
+    ASSERT_EQ(::stat("/dev/full", &before), 0);
+    ASSERT_TRUE(S_ISCHR(before.st_mode));
+    EXPECT_HAS(errorOf([] { writeFileAtomically("/dev/full", "a record"); }), "/dev/full: cannot save: writing failed");
+    // An image through a link named .png (the writer goes by the extension).
+    const fs::path link = dir() / "full.png";
+    fs::remove(link);
+    fs::create_symlink("/dev/full", link);
+    EXPECT_HAS(errorOf([&] {
+                   FloatImage image;
+                   image.width = image.height = 64;
+                   image.channels = 3;
+                   image.pixels.assign(64 * 64 * 3, 0.5f);
+                   writeImage(link.string(), image);
+               }),
+               "full.png: cannot save: writing failed");
+    struct stat after {};
+    ASSERT_EQ(::stat("/dev/full", &after), 0);
+    EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/full is no longer a device";
+    EXPECT_TRUE(fs::is_symlink(link));
+    writeFileAtomically("/dev/null", "into the void");  // a device that takes it: no error
+}
+
 TEST(BoundedRead, RecordsAndPresetsAreToldFromScenes) {
     const fs::path record = writeBytes("rec.json", R"({"format": "deferred-workbench record", "version": 3,
         "command": "render", "scene": {"spec": "spheres"}})");

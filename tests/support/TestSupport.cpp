@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "app/HeadlessGlContext.h"
+#include "headless/HeadlessGlContext.h"
 #include "renderer/lighting/LightVolume.h"
 #include "renderer/scene/ShapeBuilder.h"
 

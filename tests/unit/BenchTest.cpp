@@ -7,6 +7,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BenchMerge.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchSummary.h"
 #include "renderer/metrics/Bootstrap.h"
@@ -78,6 +79,16 @@ TEST(BenchGrid, OrdersSizeThenLightsThenKnobsAndShardsByIndex) {
     BenchGrid plain;
     plain.sizes = {{8, 8}};
     EXPECT_EQ(plain.configs(17).at(0).lights, 17);
+}
+
+// tradeoff hands its axes on as text (the CLI's and Python's): the text parses back to the same axis.
+TEST(BenchGrid, SweepTextParsesBackToTheSameAxis) {
+    const BenchKnobAxis axis{"ssao.radius", {"0.25", "0.5", "1"}};
+    EXPECT_EQ(BenchGrid::sweepText(axis), "ssao.radius=0.25,0.5,1");
+    const BenchKnobAxis back = BenchGrid::parseSweep(BenchGrid::sweepText(axis));
+    EXPECT_EQ(back.knob, axis.knob);
+    EXPECT_EQ(back.values, axis.values);
+    EXPECT_EQ(BenchGrid::sweepText({"lighting.strategy", {"tiled"}}), "lighting.strategy=tiled");
 }
 
 TEST(Bootstrap, IdenticalDistributionsContainOneTwiceAsSlowGivesTwo) {
@@ -322,4 +333,15 @@ TEST(BenchResults, CsvKeepsEveryDigitSoMergedShardsEqualTheUnshardedRun) {
         {BenchResults::parseCsv(parts[0].csv(), "a.csv"), BenchResults::parseCsv(parts[1].csv(), "b.csv")}, {"a.csv", "b.csv"});
     for (std::size_t i = 0; i < all.configs.size(); ++i) EXPECT_EQ(merged.configs[i].lpp, all.configs[i].lpp) << i;
     for (std::size_t i = 0; i < all.samples.size(); ++i) EXPECT_EQ(merged.samples[i].gpuMs, all.samples[i].gpuMs) << i;
+}
+
+// Shards of one run differ only in --shard and their outputs: written with
+// --record (--json's newer name) they are one run too (merge refused them:
+// "comes from another bench run ... --record=shard-1.json").
+TEST(BenchMerge, ShardsWrittenWithRecordOrJsonAreOneRun) {
+    const std::string base = "deferred-workbench bench --scene default --size 32x18 --lights 1,10 --frames 2";
+    EXPECT_EQ(benchRunOf(base + " --shard 0/2 --csv shard-0.csv --record shard-0.json"),
+              benchRunOf(base + " --shard 1/2 --csv shard-1.csv --record shard-1.json"));
+    EXPECT_EQ(benchRunOf(base + " --shard 0/2 --json shard-0.json"), benchRunOf(base + " --shard 1/2 --record=b.json"));
+    EXPECT_NE(benchRunOf(base + " --shard 0/2 --record a.json"), benchRunOf(base + " --frames 3 --shard 1/2"));
 }

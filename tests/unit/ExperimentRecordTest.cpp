@@ -533,3 +533,24 @@ TEST(ExperimentRecord, ItsOwnSha256sTellAnEditedRecord) {
     j.erase("record_sha256");
     EXPECT_FALSE(ExperimentRecord::parse(j.dump(), "r.json").selfCheck.hashed);
 }
+
+// A merge's record (bench merge, tradeoff merge) has no run of its own: its
+// size or frames may be 0 where the shards' JSONs said nothing. It reads as
+// a merge's record, which replay names ("has no grid to run again"), not as
+// a record with a size or frame count out of range.
+TEST(ExperimentRecord, AMergesRecordReadsAsOneWithNoRunOfItsOwn) {
+    const ExperimentRecord bench = ExperimentRecord::forBenchResults(BenchResults{}, BenchSummary{});
+    EXPECT_EQ(bench.frames, 0);
+    const ExperimentRecord b = ExperimentRecord::parse(bench.json(), "merged-bench.json");
+    ASSERT_TRUE(b.bench);
+    EXPECT_TRUE(b.bench->merged);
+    const ExperimentRecord tradeoff = ExperimentRecord::forTradeoffTable(TradeoffTable{}, BenchFields{});
+    EXPECT_EQ(tradeoff.width, 0);
+    const ExperimentRecord t = ExperimentRecord::parse(tradeoff.json(), "merged-tradeoff.json");
+    ASSERT_TRUE(t.tradeoff);
+    EXPECT_TRUE(t.tradeoff->merged);
+    // A run's record is still held to --frames' range.
+    nlohmann::json run = nlohmann::json::parse(bench.json());
+    run["grid"] = {{"merged", false}};
+    EXPECT_THROW(ExperimentRecord::parse(run.dump(), "run.json"), FileError);
+}

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstring>
@@ -177,7 +179,13 @@ TEST(GltfLoader, ExternalFilesThatAreDevicesPipesOrFoldersAreRefusedByNameNotRea
     fs::create_directories(test::tempDir() / "folder.png");
     const auto start = std::chrono::steady_clock::now();
     TriangleGltf t;
-    for (const std::string uri : {"zero.png", "folder.png"}) {
+    const fs::path pipe = test::tempDir() / "pipe.png";
+    fs::remove(pipe);
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    // A writer that stays and never writes: a read would wait for it forever.
+    const int writer = ::open(pipe.c_str(), O_RDWR | O_CLOEXEC);
+    ASSERT_GE(writer, 0);
+    for (const std::string uri : {"zero.png", "folder.png", "pipe.png"}) {
         json j = t.build();
         j["images"] = json::array({{{"uri", uri}}});
         j["textures"] = json::array({{{"source", 0}}});
@@ -185,14 +193,21 @@ TEST(GltfLoader, ExternalFilesThatAreDevicesPipesOrFoldersAreRefusedByNameNotRea
         j["meshes"][0]["primitives"][0]["material"] = 0;
         const std::string e = errorOf(write("device-image.gltf", j));
         EXPECT_NE(e.find("image[0] '" + uri + "' cannot be read"), std::string::npos) << e;
-        EXPECT_NE(e.find(uri == "zero.png" ? "it is a device, not a file" : "it is a folder, not a file"), std::string::npos)
-            << e;
+        const std::string what = uri == "zero.png"     ? "it is a device, not a file"
+                                 : uri == "folder.png" ? "it is a folder, not a file"
+                                                       : "it is a pipe or socket, not a file";
+        EXPECT_NE(e.find(what), std::string::npos) << e;
         EXPECT_EQ(e.find("missing texture"), std::string::npos) << e;
     }
     json j = t.build();
-    j["buffers"][0]["uri"] = "no-writer.bin";
+    j["buffers"][0]["uri"] = "pipe.png";  // a buffer on the pipe with a writer
     const std::string e = errorOf(write("pipe-buffer.gltf", j));
-    EXPECT_NE(e.find("no-writer.bin"), std::string::npos) << e;
+    EXPECT_NE(e.find("pipe.png"), std::string::npos) << e;
+    EXPECT_NE(e.find("it is a pipe or socket, not a file"), std::string::npos) << e;
+    j["buffers"][0]["uri"] = "no-writer.bin";
+    const std::string none = errorOf(write("no-writer-buffer.gltf", j));
+    EXPECT_NE(none.find("no-writer.bin"), std::string::npos) << none;
+    ::close(writer);
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 

@@ -1,4 +1,4 @@
-#include "app/CommandLine.h"
+#include "headless/CommandLine.h"
 
 #include <fcntl.h>
 #include <unistd.h>

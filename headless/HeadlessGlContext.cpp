@@ -1,4 +1,4 @@
-#include "app/HeadlessGlContext.h"
+#include "headless/HeadlessGlContext.h"
 
 #include <epoxy/egl.h>
 

@@ -1,4 +1,4 @@
-#include "app/PlotScript.h"
+#include "headless/PlotScript.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app/CommandLine.h"
+#include "headless/CommandLine.h"
 
 extern char** environ;
 

@@ -1,0 +1,299 @@
+// dw.tradeoff: tradeoff's sweep in this process, its arguments checked by
+// TradeoffStudy as the CLI's are, its files written as tradeoff writes them,
+// its record returned as a dict with the table's rows and the Pareto front.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "headless/CommandLine.h"
+#include "headless/PlotScript.h"
+#include "python/Arguments.h"
+#include "python/Bindings.h"
+#include "python/KnobArguments.h"
+#include "python/Records.h"
+#include "renderer/OptionLimits.h"
+#include "renderer/study/TradeoffStudy.h"
+
+namespace py = pybind11;
+
+namespace dw::python {
+namespace {
+
+// The files tradeoff= writes (csv=, record= or json=, plot= at plot_size=); none: not asked for.
+struct TradeoffFiles {
+    std::optional<std::string> csv, json, plot;
+    std::pair<int, int> plotSize;
+};
+
+// What a measured sweep leaves: its record and table, and whether the plot asked for was drawn.
+struct TradeoffOutcome {
+    ExperimentRecord record;
+    TradeoffTable table;
+    bool plotDrawn = true;
+};
+
+// A str ("A,B", as the CLI's flag takes it) or a list of str.
+std::vector<std::string> textList(const std::string& what, const py::handle& value) {
+    if (value.is_none()) return {};
+    if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+    if (!py::isinstance<py::sequence>(value))
+        throw py::value_error("tradeoff: " + what + " must be a str or a list of str, got " + typeName(value));
+    std::vector<std::string> items;
+    for (const auto& v : value) {
+        if (!py::isinstance<py::str>(v)) throw py::value_error("tradeoff: " + what + " must hold str, got " + typeName(v));
+        items.push_back(v.cast<std::string>());
+    }
+    return items;
+}
+
+// The table's rows as tradeoff --csv writes them: one dict a row, its keys
+// the CSV's columns in order (point, each axis, camera, metric, buffer,
+// error, error_lo, error_hi, frames, frame_gpu_ms, frame_gpu_ms_lo,
+// frame_gpu_ms_hi, gpu_ms.<pass>..., pareto); NaN where the CSV is empty.
+py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
+    py::list rows;
+    for (const TradeoffRow& r : t.rows) {
+        if (frontOnly && !r.pareto) continue;
+        py::dict d;
+        d["point"] = r.point;
+        for (size_t a = 0; a < t.axes.size(); ++a) d[py::str(t.axes[a])] = r.axisValues[a];
+        d["camera"] = r.camera;
+        d["metric"] = r.metric;
+        d["buffer"] = r.buffer;
+        d["error"] = r.error;
+        d["error_lo"] = r.errorLo;
+        d["error_hi"] = r.errorHi;
+        d["frames"] = r.frames;
+        d["frame_gpu_ms"] = r.frameGpuMs;
+        d["frame_gpu_ms_lo"] = r.frameGpuMsLo;
+        d["frame_gpu_ms_hi"] = r.frameGpuMsHi;
+        for (size_t p = 0; p < t.passes.size(); ++p) d[py::str("gpu_ms." + t.passes[p])] = r.passGpuMs[p];
+        d["pareto"] = r.pareto;
+        rows.append(d);
+    }
+    return rows;
+}
+
+// Runs `f`, a check whose dw::Error is a bad argument: ValueError (FileError stays dw.Error).
+template <typename F>
+auto asValueError(F&& f) {
+    try {
+        return f();
+    } catch (const FileError&) {
+        throw;
+    } catch (const KnobError&) {
+        throw;
+    } catch (const Error& e) {
+        throw py::value_error(e.what());
+    }
+}
+
+// The files, checked before anything is measured (as the CLI's are):
+// distinct from each other and from the run's inputs, the plot drawable, each writable.
+void checkWrites(const TradeoffStudyOptions& s, const TradeoffFiles& f) {
+    CommandLine::NamedFiles writes;
+    if (f.csv) writes.emplace_back("csv", *f.csv);
+    if (f.json) writes.emplace_back("json", *f.json);
+    if (f.plot) writes.emplace_back("plot", *f.plot);
+    asValueError([&] {
+        CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(s.run));
+        if (f.plot) checkPlotFile(*f.plot, f.plotSize.first, f.plotSize.second);
+        return 0;
+    });
+    if (f.csv) CommandLine::requireWritable(*f.csv, "tradeoff CSV");
+    if (f.json) CommandLine::requireWritable(*f.json, "tradeoff JSON");
+    if (f.plot) CommandLine::requireWritable(*f.plot, "plot");
+}
+
+// The study's sweep, presets and exclusions from their keywords, and every
+// check the CLI makes before it measures (TradeoffStudy::check, the scene
+// file, the files); bad ones are ValueError (KnobError for a knob).
+void readSweep(TradeoffStudyOptions& s, const std::optional<py::dict>& sweep, const py::object& presets,
+               const py::object& exclude, const py::object& progressFn) {
+    const std::vector<BenchKnobAxis> axes = sweepAxes("tradeoff", sweep);
+    for (const auto& a : axes) s.sweep.push_back(BenchGrid::sweepText(a));
+    s.presets = textList("presets", presets);
+    if (s.presets.size() == 1 && s.presets[0].find(',') != std::string::npos)
+        s.presets = asValueError([&] { return splitList(s.presets[0], "--presets"); });
+    s.exclude = textList("exclude", exclude);
+    if (!progressFn.is_none() && !PyCallable_Check(progressFn.ptr()))
+        throw py::value_error("tradeoff: progress must be a callable taking a line of text, or None");
+    checkKnobs(s.run.sets, axes);
+    asValueError([&] { return TradeoffStudy::check(s); });
+    refuseNonSceneFile(s.run.sceneSpec());
+}
+
+// Progress lines and warnings: to `progress` when given, else to stderr as
+// the CLI writes them (lines not when quiet). Ctrl-C or an exception in
+// `progress` stops the run at its next line (stopped(); the exception stays
+// set for the caller to raise). Each call takes the GIL.
+class ProgressSink {
+public:
+    ProgressSink(const py::object& progressFn, bool quiet) : progressFn_(progressFn), quiet_(quiet) {}
+    ProgressSink(const ProgressSink&) = delete;
+    ProgressSink& operator=(const ProgressSink&) = delete;
+
+    // The study's callbacks; they refer to this sink, which must outlive them.
+    TradeoffStudyProgress progress() {
+        TradeoffStudyProgress p;
+        p.line = [this](const std::string& line) { emit(line, false); };
+        p.warning = [this](const std::string& line) { emit(line, true); };
+        p.cancelled = [this] {
+            py::gil_scoped_acquire acquire;
+            if (!stopped_ && PyErr_CheckSignals() != 0) stopped_ = true;
+            return stopped_;
+        };
+        return p;
+    }
+
+private:
+    void emit(const std::string& line, bool warning) {
+        py::gil_scoped_acquire acquire;
+        if (stopped_) return;
+        if (progressFn_.is_none()) {
+            if (warning || !quiet_) std::fprintf(stderr, "%s\n", line.c_str());
+            return;
+        }
+        try {
+            progressFn_(line);
+        } catch (py::error_already_set& e) {
+            e.restore();
+            stopped_ = true;
+        }
+    }
+
+    const py::object& progressFn_;
+    const bool quiet_;
+    bool stopped_ = false;
+};
+
+// Draws `f.plot` from the table with scripts/tradeoff_plot.py, as tradeoff
+// does; false when it was not drawn (stderr says why).
+bool drawPlot(const TradeoffTable& table, const TradeoffFiles& f, const std::string& timeAxis) {
+    // The plot is drawn from a CSV: the one asked for, else a file of its own beside the plot.
+    const std::string from = f.csv ? *f.csv : *f.plot + ".csv";
+    if (!f.csv) table.writeCsv(from);
+    const bool drawn = runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
+                                     {"--csv", from, "--out", *f.plot, "--size",
+                                      std::to_string(f.plotSize.first) + "x" + std::to_string(f.plotSize.second),
+                                      "--time", timeAxis},
+                                     "tradeoff");
+    if (!f.csv) {
+        std::error_code ec;
+        std::filesystem::remove(from, ec);
+    }
+    return drawn;
+}
+
+// Measures the study on the process's GL context and writes the files asked
+// for. Runs without the GIL (the callbacks take it). TradeoffCancelled when
+// asked to stop, with nothing written.
+TradeoffOutcome measure(const TradeoffStudyOptions& s, const TradeoffStudyProgress& progress, const TradeoffFiles& f) {
+    // The scene, --knobs' axes and every axis value: a bad one is ValueError (a missing file dw.Error).
+    const TradeoffOptions o = asValueError([&] { return TradeoffStudy::runnerOptions(s); });
+    std::unique_ptr<TradeoffRunner> runner = asValueError([&] { return std::make_unique<TradeoffRunner>(o); });
+    for (const auto& w : runner->scene().warnings) progress.warning("warning: " + w);
+    TradeoffMeasurement measured = WorkbenchSession::tradeoff(*runner, s.aoRays, progress);
+    if (progress.cancelled()) throw TradeoffCancelled();  // asked to stop after the last line: nothing written
+    TradeoffOutcome out;
+    out.table = measured.result.table;
+    out.record = TradeoffStudy::record(s, o, *runner, std::move(measured), "deferred_workbench.tradeoff (Python)");
+    if (f.csv) out.table.writeCsv(*f.csv);
+    if (f.json) writeBenchFile(*f.json, out.record.json(*f.json), "tradeoff record");
+    if (f.plot && !out.table.rows.empty()) out.plotDrawn = drawPlot(out.table, f, o.time);
+    return out;
+}
+
+py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sweep, const py::object& presets,
+                       const py::object& exclude, const TradeoffFiles& files, bool quiet, const py::object& progressFn) {
+    requirePath(files.csv, "tradeoff: csv");
+    requirePath(files.json, "tradeoff: json");
+    requirePath(files.plot, "tradeoff: plot");
+    readSweep(s, sweep, presets, exclude, progressFn);
+    checkWrites(s, files);
+    ProgressSink sink(progressFn, quiet);
+    const TradeoffStudyProgress progress = sink.progress();
+    TradeoffOutcome outcome;
+    try {
+        py::gil_scoped_release release;
+        outcome = measure(s, progress, files);
+    } catch (const TradeoffCancelled&) {
+        if (PyErr_Occurred()) throw py::error_already_set();  // KeyboardInterrupt, or what progress raised
+        throw Error("tradeoff: cancelled");
+    }
+    if (!outcome.plotDrawn &&
+        PyErr_WarnEx(PyExc_RuntimeWarning, ("tradeoff: the plot " + *files.plot + " was not drawn (stderr says why)").c_str(),
+                     1) != 0)
+        throw py::error_already_set();
+    py::dict d = recordObject(outcome.record);
+    d["rows"] = tradeoffRows(outcome.table, false);
+    d["front"] = tradeoffRows(outcome.table, true);
+    return d;
+}
+
+py::dict tradeoff(const std::string& scene, const py::object& size, py::object preset, std::optional<py::dict> settings,
+                  std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
+                  py::object exclude, const std::string& against, const std::string& metric, const std::string& buffer,
+                  const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
+                  const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
+                  const py::object& block, const py::object& resamples, std::optional<std::string> shard,
+                  std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
+                  const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile) {
+    requirePath(recordFile, "tradeoff: record");
+    json = recordPath("tradeoff", json, recordFile);
+    TradeoffStudyOptions s;
+    s.run.scene = scene;
+    for (const auto& p : presetList(preset)) s.run.addPreset(p);
+    s.run.sets = assignments(settings);
+    std::tie(s.run.width, s.run.height) = sizeArg(size, "tradeoff: size", limits::kSize, "tradeoff --size");
+    s.knobs = knobs.value_or("");
+    s.against = against;
+    s.metric = metric;
+    s.buffer = buffer;
+    s.aoRays = intArg(aoRays, "tradeoff: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
+    s.mask = mask.value_or("");
+    s.time = time;
+    s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
+    s.walkthrough = walkthrough;
+    s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");
+    s.warmup = intArg(warmup, "tradeoff: warmup", limits::kWarmup, "tradeoff --warmup");
+    s.block = intArg(block, "tradeoff: block", limits::kBlock, "tradeoff --block");
+    s.resamples = intArg(resamples, "tradeoff: resamples", limits::kResamples, "tradeoff --resamples");
+    s.shard = shard.value_or("");
+    const TradeoffFiles files{csv, json, plot,
+                             sizeArg(plotSizeObject, "tradeoff: plot_size", limits::kPlotSize, "tradeoff --plot-size")};
+    return tradeoffStudy(std::move(s), sweep, presets, exclude, files, quiet, progress);
+}
+
+}  // namespace
+
+void bindTradeoff(py::module_& m) {
+    m.def("tradeoff", &tradeoff, py::arg("scene") = "", py::arg("size") = std::make_pair(640, 360),
+          py::arg("preset") = py::none(), py::arg("settings") = py::none(), py::arg("sweep") = py::none(),
+          py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("exclude") = py::none(),
+          py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
+          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("orbit") = 0,
+          py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
+          py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
+          py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
+          py::arg("quiet") = false, py::arg("progress") = py::none(), py::arg("record") = py::none(),
+          "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
+          "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
+          "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
+          "presets=[...] (an axis), knobs=\"speed/quality\", exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
+          "time, orbit, walkthrough, frames, warmup, block, resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
+          "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
+          "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
+          "its interval, gpu_ms.<pass>, pareto; NaN where the CSV is empty) and front (the rows on the Pareto front).\n"
+          "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
+          "those asked for.\n"
+          "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"
+          "A bad argument raises ValueError (KnobError for a knob) with the CLI's message, naming its flag.");
+}
+
+}  // namespace dw::python
