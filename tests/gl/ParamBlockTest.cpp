@@ -51,13 +51,11 @@ BlockInfo describe() {
     return {Block::kBlockName, sizeof(Block), Block::kBinding, Block::fields()};
 }
 
-// The binding names of shaders/common/bindings.glsl, which the blocks'
-// bindings come from, are dw::binding's.
-static_assert(CAMERA_UBO == binding::kCameraUbo && PASS_UBO == binding::kPassUbo &&
-              MATERIAL_SSBO == binding::kMaterialSsbo && LIGHT_SSBO == binding::kLightSsbo);
-static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo &&
-              gpu::SsaoParams::kBinding == binding::kPassUbo &&
-              gpu::BufferViewParams::kBinding == binding::kPassUbo);
+// The blocks' bindings are named in shaders/common/bindings.glsl, dw::binding
+// in C++ (tests/gl/BindingsTest.cpp checks every other binding point).
+static_assert(gpu::CameraBlock::kBinding == binding::CAMERA_UBO &&
+              gpu::SsaoParams::kBinding == binding::PASS_UBO &&
+              gpu::BufferViewParams::kBinding == binding::PASS_UBO);
 
 // Every parameter block in shaders/params. A new header adds a line here.
 std::vector<BlockInfo> allBlocks() {
