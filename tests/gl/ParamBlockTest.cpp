@@ -68,21 +68,6 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::GtaoParams>(),      describe<gpu::AovParams>()};
 }
 
-// Builds every variant of the buffer view's programs (BufferView compiles
-// one per source kind and value type when first needed), so the layout test
-// sees them all.
-void buildBufferViewVariants(gl::ShaderLibrary& shaders) {
-    for (const char* source : {"", "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"})
-        for (const char* type : {"", "SOURCE_UINT", "SOURCE_INT"}) {
-            std::vector<std::string> defines;
-            for (const char* d : {source, type})
-                if (*d) defines.push_back(d);
-            shaders.get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag", .defines = defines});
-            defines.insert(defines.begin(), "FIRST_PASS");
-            shaders.get({.compute = "bufferview/minmax.comp", .defines = defines});
-        }
-}
-
 GLenum glType(const std::string& glsl) {
     static const std::map<std::string, GLenum> types = {{"int", GL_INT},
                                                         {"uint", GL_UNSIGNED_INT},
@@ -146,7 +131,7 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
     auto s = test::makeSession(64, 36);
-    buildBufferViewVariants(s->shaders());
+    test::buildBufferViewVariants(s->shaders());
     const std::vector<BlockInfo> blocks = allBlocks();
     std::map<std::string, int> programsWithBlock;
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs()) {
