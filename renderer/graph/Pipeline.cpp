@@ -15,9 +15,6 @@
 
 namespace dw {
 
-static_assert(gpu::CameraBlock::kBinding == binding::CAMERA_UBO,
-              "shaders/common/bindings.glsl and dw::binding disagree on the camera's binding");
-
 const PassRecord* FrameReport::find(const std::string& name) const {
     for (const auto& p : passes)
         if (p.name == name) return &p;

@@ -1,10 +1,12 @@
 // Every binding point the shaders use, named once for GLSL and C++ (the way
-// shaders/params/*.h share the parameter blocks). Shaders include it as
-// "../common/bindings.glsl" (prelude.h and material.glsl, lighting.glsl,
-// camera.glsl do already); C++ as <shaders/common/bindings.glsl> (through
-// renderer/gl/Bindings.h), where a name is dw::binding::NAME, an unsigned
-// constexpr. In GLSL a name is a `const int`, which layout(binding = NAME)
-// takes (GLSL 4.40's constant expressions).
+// shaders/params/*.h share the parameter blocks). A shader includes it as
+// "../common/bindings.glsl" in the file that declares a binding (so does
+// shaders/params/prelude.h); C++ as "shaders/common/bindings.glsl"
+// (renderer/scene/GpuScene.h and renderer/lighting/LightLists.h do, and the
+// prelude's C++ half), where a name is dw::binding::NAME, an unsigned
+// constexpr, and dw::binding::kAll the list as data. In GLSL a name is a
+// `const int`, which layout(binding = NAME) takes (GLSL 4.40's constant
+// expressions). docs/architecture.md, "Binding points".
 //
 // One line a binding point: BIND(kind, NAME, value), kind UBO (uniform
 // block), SSBO (shader storage block), TEXTURE (texture unit of a sampler;
@@ -133,7 +135,6 @@
 // clang-format on
 
 #ifdef __cplusplus
-// Angle-bracket includes only in this branch: the GLSL preprocessor skips it.
 namespace dw::binding {
 enum class Kind { UBO, SSBO, TEXTURE, IMAGE };
 #define DW_BINDING_CPP_CONSTANT(kind, name, value) inline constexpr unsigned name = value;
