@@ -11,12 +11,11 @@
 
 namespace dw {
 
-namespace {
-// Texture units of shaders/ao/aov_volume.frag, clear of the materials'
-// (GpuScene::drawEach binds 0-3 and kOcclusionUnit).
-constexpr GLuint kDepthUnit = 11, kNormalUnit = 12;
-static_assert(GpuScene::kOcclusionUnit < kDepthUnit);
-}  // namespace
+// The texture units of shaders/ao/aov_volume.frag, clear of the materials'
+// (GpuScene::drawEach binds MATERIAL_BASE_COLOR_TEXTURE to
+// MATERIAL_EMISSIVE_TEXTURE and MATERIAL_OCCLUSION_TEXTURE).
+static_assert(binding::MATERIAL_OCCLUSION_TEXTURE < binding::AOV_VOLUME_DEPTH_TEXTURE &&
+              binding::MATERIAL_EMISSIVE_TEXTURE < binding::AOV_VOLUME_DEPTH_TEXTURE);
 
 AovMethod::AovMethod(KnobRegistry& knobs) {
     radius_ = knobs.addFloat("aov.radius", 1.0, 0.01, 20.0, "aov",
@@ -98,7 +97,7 @@ void AovMethod::run(FrameContext& ctx) {
     p.falloff = k.get(falloff_);
     p.countOverdraw = countOverdraw ? 1 : 0;
     p.insideMargin = insideMargin(ctx.camera);
-    params_.upload(p, binding::kPassUbo);
+    params_.upload(p, binding::PASS_UBO);
     const DepthConvention depth = ctx.depth();
     glViewport(0, 0, w, h);
 
@@ -114,7 +113,7 @@ void AovMethod::run(FrameContext& ctx) {
     glStencilMask(0xFF);
     glStencilFunc(GL_ALWAYS, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    ctx.texture("gbuffer.depth").bind(0);
+    ctx.texture("gbuffer.depth").bind(binding::AOV_GBUFFER_DEPTH_TEXTURE);
     depthCopy_->use();
     triangle_.draw();
 
@@ -125,7 +124,7 @@ void AovMethod::run(FrameContext& ctx) {
     if (countOverdraw) {
         const gl::Texture& overdraw = ctx.texture("aov.overdraw");
         overdraw.clearUint(0u);
-        overdraw.bindImage(0, GL_READ_WRITE);
+        overdraw.bindImage(binding::AOV_OVERDRAW_IMAGE, GL_READ_WRITE);
     }
     glDepthMask(GL_FALSE);
     glStencilFunc(GL_EQUAL, 1, 0xFF);
@@ -135,14 +134,14 @@ void AovMethod::run(FrameContext& ctx) {
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    ctx.texture("gbuffer.depth").bind(kDepthUnit);
-    ctx.texture("gbuffer.normal").bind(kNormalUnit);
+    ctx.texture("gbuffer.depth").bind(binding::AOV_VOLUME_DEPTH_TEXTURE);
+    ctx.texture("gbuffer.normal").bind(binding::AOV_VOLUME_NORMAL_TEXTURE);
     volume_->use();
     std::size_t volumes = 0;
     for (int inside = 0; inside < 2; ++inside) {
         // Outside: front faces nearer than the surface; inside: back faces behind it.
         p.insidePass = inside;
-        params_.upload(p, binding::kPassUbo);
+        params_.upload(p, binding::PASS_UBO);
         glDepthFunc(inside ? depth.farther() : depth.nearer());
         ctx.gpu.drawEach(*volume_, GpuScene::Filter::Opaque, [&](std::size_t, const GpuScene::Draw& d) {
             const int flags = (d.mirrored ? gpu::AOV_DRAW_MIRRORED : 0) | (d.doubleSided ? gpu::AOV_DRAW_DOUBLE_SIDED : 0);
@@ -161,7 +160,7 @@ void AovMethod::run(FrameContext& ctx) {
 
     // 3. ao.raw = 1 - clamp(sum).
     rawTarget_.get(ctx, {"ao.raw"}, {}, "AOV accessibility").bind();
-    ctx.texture("aov.occlusion").bind(0);
+    ctx.texture("aov.occlusion").bind(binding::AOV_OCCLUSION_TEXTURE);
     resolve_->use();
     triangle_.draw();
 

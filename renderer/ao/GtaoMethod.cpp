@@ -119,10 +119,10 @@ void GtaoMethod::run(FrameContext& ctx) {
     p.denoisePlane = 0.02f;
     const bool bent = k.get(bentNormals_);
     p.bentNormals = bent ? 1 : 0;
-    params_.upload(p, binding::kPassUbo);
-    ctx.texture("gbuffer.depth").bind(0);
-    linearDepth_.bind(0);  // samples between pixel centres (see gtao.frag)
-    ctx.texture("gbuffer.normal").bind(1);
+    params_.upload(p, binding::PASS_UBO);
+    ctx.texture("gbuffer.depth").bind(binding::GTAO_DEPTH_TEXTURE);
+    linearDepth_.bind(binding::GTAO_DEPTH_TEXTURE);  // samples between pixel centres (see gtao.frag)
+    ctx.texture("gbuffer.normal").bind(binding::GTAO_NORMAL_TEXTURE);
     glViewport(0, 0, p.aoSize.x, p.aoSize.y);
     const bool edgeAware = k.get(denoise_) == edgeAware_;
     // The bent normal, when asked for, is the first draw's second attachment.
@@ -136,7 +136,7 @@ void GtaoMethod::run(FrameContext& ctx) {
     triangle_.draw();
     if (edgeAware) {
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        ctx.texture("gtao.noisy").bind(2);
+        ctx.texture("gtao.noisy").bind(binding::GTAO_NOISY_TEXTURE);
         target_.get(ctx, {"ao.raw"}, {}, "GTAO").bind();
         denoiseProgram_->use();
         triangle_.draw();

@@ -106,11 +106,11 @@ void SsaoMethod::run(FrameContext& ctx) {
     p.radius = radius;
     p.intensity = k.get(intensity_);
     p.bias = k.get(bias_);
-    params_.upload(p, binding::kPassUbo);
-    ctx.texture("gbuffer.depth").bind(0);
-    linearDepth_.bind(0);
-    ctx.texture("gbuffer.normal").bind(1);
-    noise_.bind(2);
+    params_.upload(p, binding::PASS_UBO);
+    ctx.texture("gbuffer.depth").bind(binding::SSAO_DEPTH_TEXTURE);
+    linearDepth_.bind(binding::SSAO_DEPTH_TEXTURE);
+    ctx.texture("gbuffer.normal").bind(binding::SSAO_NORMAL_TEXTURE);
+    noise_.bind(binding::SSAO_NOISE_TEXTURE);
     glViewport(0, 0, size.x, size.y);
     target_.get(ctx, {"ao.raw"}, {}, "SSAO").bind();
     program_->use();

@@ -161,6 +161,82 @@ std::optional<Program::BufferVariable> Program::bufferVariable(const std::string
     return BufferVariable{p[0], p[1]};
 }
 
+namespace {
+
+// GL 4.5's sampler and image uniform types (GL_TYPE of a GL_UNIFORM).
+bool isSamplerType(GLenum t) {
+    static const GLenum types[] = {
+        GL_SAMPLER_1D, GL_SAMPLER_2D, GL_SAMPLER_3D, GL_SAMPLER_CUBE, GL_SAMPLER_1D_SHADOW, GL_SAMPLER_2D_SHADOW,
+        GL_SAMPLER_1D_ARRAY, GL_SAMPLER_2D_ARRAY, GL_SAMPLER_1D_ARRAY_SHADOW, GL_SAMPLER_2D_ARRAY_SHADOW,
+        GL_SAMPLER_2D_MULTISAMPLE, GL_SAMPLER_2D_MULTISAMPLE_ARRAY, GL_SAMPLER_CUBE_SHADOW, GL_SAMPLER_BUFFER,
+        GL_SAMPLER_2D_RECT, GL_SAMPLER_2D_RECT_SHADOW, GL_SAMPLER_CUBE_MAP_ARRAY, GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW,
+        GL_INT_SAMPLER_1D, GL_INT_SAMPLER_2D, GL_INT_SAMPLER_3D, GL_INT_SAMPLER_CUBE, GL_INT_SAMPLER_1D_ARRAY,
+        GL_INT_SAMPLER_2D_ARRAY, GL_INT_SAMPLER_2D_MULTISAMPLE, GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY,
+        GL_INT_SAMPLER_BUFFER, GL_INT_SAMPLER_2D_RECT, GL_INT_SAMPLER_CUBE_MAP_ARRAY, GL_UNSIGNED_INT_SAMPLER_1D,
+        GL_UNSIGNED_INT_SAMPLER_2D, GL_UNSIGNED_INT_SAMPLER_3D, GL_UNSIGNED_INT_SAMPLER_CUBE,
+        GL_UNSIGNED_INT_SAMPLER_1D_ARRAY, GL_UNSIGNED_INT_SAMPLER_2D_ARRAY, GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE,
+        GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY, GL_UNSIGNED_INT_SAMPLER_BUFFER,
+        GL_UNSIGNED_INT_SAMPLER_2D_RECT, GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY};
+    return std::find(std::begin(types), std::end(types), t) != std::end(types);
+}
+
+bool isImageType(GLenum t) {
+    static const GLenum types[] = {
+        GL_IMAGE_1D, GL_IMAGE_2D, GL_IMAGE_3D, GL_IMAGE_2D_RECT, GL_IMAGE_CUBE, GL_IMAGE_BUFFER, GL_IMAGE_1D_ARRAY,
+        GL_IMAGE_2D_ARRAY, GL_IMAGE_CUBE_MAP_ARRAY, GL_IMAGE_2D_MULTISAMPLE, GL_IMAGE_2D_MULTISAMPLE_ARRAY,
+        GL_INT_IMAGE_1D, GL_INT_IMAGE_2D, GL_INT_IMAGE_3D, GL_INT_IMAGE_2D_RECT, GL_INT_IMAGE_CUBE,
+        GL_INT_IMAGE_BUFFER, GL_INT_IMAGE_1D_ARRAY, GL_INT_IMAGE_2D_ARRAY, GL_INT_IMAGE_CUBE_MAP_ARRAY,
+        GL_INT_IMAGE_2D_MULTISAMPLE, GL_INT_IMAGE_2D_MULTISAMPLE_ARRAY, GL_UNSIGNED_INT_IMAGE_1D,
+        GL_UNSIGNED_INT_IMAGE_2D, GL_UNSIGNED_INT_IMAGE_3D, GL_UNSIGNED_INT_IMAGE_2D_RECT,
+        GL_UNSIGNED_INT_IMAGE_CUBE, GL_UNSIGNED_INT_IMAGE_BUFFER, GL_UNSIGNED_INT_IMAGE_1D_ARRAY,
+        GL_UNSIGNED_INT_IMAGE_2D_ARRAY, GL_UNSIGNED_INT_IMAGE_CUBE_MAP_ARRAY,
+        GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE, GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY};
+    return std::find(std::begin(types), std::end(types), t) != std::end(types);
+}
+
+std::string resourceName(GLuint program, GLenum interface, GLuint index) {
+    GLint length = 0;
+    const GLenum nameLength = GL_NAME_LENGTH;
+    glGetProgramResourceiv(program, interface, index, 1, &nameLength, 1, nullptr, &length);
+    std::string name(static_cast<size_t>(std::max(length, 1)), '\0');
+    glGetProgramResourceName(program, interface, index, length, nullptr, name.data());
+    while (!name.empty() && name.back() == '\0') name.pop_back();
+    if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
+    return name;
+}
+
+}  // namespace
+
+std::vector<Program::ResourceBinding> Program::resourceBindings() const {
+    std::vector<ResourceBinding> out;
+    using Kind = ResourceBinding::Kind;
+    for (auto [interface, kind] : {std::pair{GL_UNIFORM_BLOCK, Kind::UniformBlock},
+                                   std::pair{GL_SHADER_STORAGE_BLOCK, Kind::StorageBlock}}) {
+        GLint count = 0;
+        glGetProgramInterfaceiv(id(), interface, GL_ACTIVE_RESOURCES, &count);
+        for (GLint i = 0; i < count; ++i) {
+            const GLenum prop = GL_BUFFER_BINDING;
+            GLint binding = -1;
+            glGetProgramResourceiv(id(), interface, static_cast<GLuint>(i), 1, &prop, 1, nullptr, &binding);
+            out.push_back({kind, resourceName(id(), interface, static_cast<GLuint>(i)), binding, 1});
+        }
+    }
+    GLint uniforms = 0;
+    glGetProgramInterfaceiv(id(), GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
+    for (GLint i = 0; i < uniforms; ++i) {
+        const GLenum props[] = {GL_TYPE, GL_ARRAY_SIZE, GL_LOCATION, GL_BLOCK_INDEX};
+        GLint p[4] = {};
+        glGetProgramResourceiv(id(), GL_UNIFORM, static_cast<GLuint>(i), 4, props, 4, nullptr, p);
+        const GLenum type = static_cast<GLenum>(p[0]);
+        if (p[3] != -1 || p[2] < 0 || !(isSamplerType(type) || isImageType(type))) continue;
+        GLint unit = -1;
+        glGetUniformiv(id(), p[2], &unit);  // an array's first element's
+        out.push_back({isSamplerType(type) ? Kind::Texture : Kind::Image,
+                       resourceName(id(), GL_UNIFORM, static_cast<GLuint>(i)), unit, std::max(p[1], 1)});
+    }
+    return out;
+}
+
 void Program::set(GLint l, int v) const { glProgramUniform1i(id(), l, v); }
 void Program::set(GLint l, unsigned v) const { glProgramUniform1ui(id(), l, v); }
 void Program::set(GLint l, float v) const { glProgramUniform1f(id(), l, v); }

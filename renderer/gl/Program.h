@@ -54,6 +54,21 @@ public:
         GLint topLevelStride = 0;
     };
     std::optional<BufferVariable> bufferVariable(const std::string& name) const;
+    // Every binding point the program uses, as introspection reports it (the
+    // bindings test compares them with shaders/common/bindings.glsl's names):
+    // its uniform blocks, storage blocks and active sampler and image
+    // uniforms. `name` is the block's or the uniform's ("uLevels", without
+    // "[0]"); `binding` the point (a sampler's texture unit, an image's image
+    // unit; an array's first), `count` how many points it takes (an array's
+    // length, else 1).
+    struct ResourceBinding {
+        enum class Kind { UniformBlock, StorageBlock, Texture, Image };
+        Kind kind = Kind::UniformBlock;
+        std::string name;
+        GLint binding = -1;
+        GLint count = 1;
+    };
+    std::vector<ResourceBinding> resourceBindings() const;
 
     void set(GLint location, int v) const;
     void set(GLint location, unsigned v) const;

@@ -15,9 +15,6 @@
 
 namespace dw {
 
-static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo,
-              "shaders/common/bindings.glsl and dw::binding disagree on the camera's binding");
-
 const PassRecord* FrameReport::find(const std::string& name) const {
     for (const auto& p : passes)
         if (p.name == name) return &p;
@@ -126,7 +123,7 @@ void Pipeline::setScene(const Scene& scene) {
 void Pipeline::bindCamera(const Camera& camera) {
     camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
     camera_.gbuffer.x = normalEncodingUniform();
-    cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
+    cameraUbo_.upload(camera_, binding::CAMERA_UBO);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
 }
 
@@ -357,7 +354,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
                 throw Error("buffer '" + name + "' is not produced: pass '" + r.name + "' did not run (" + r.reason + ")");
     }
 
-    cameraUbo_.upload(camera_, binding::kCameraUbo);  // the gpu::CameraBlock part
+    cameraUbo_.upload(camera_, binding::CAMERA_UBO);  // the gpu::CameraBlock part
     gpu_.setDrawOrigin(camera_.origin);
     allocateResources(plan);
     outputs_.markFrameStart();
@@ -373,7 +370,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             RenderPass& p = *passes_[i];
             ctx.image = plan.image[i];
             gl::resetPipelineState(width_, height_);
-            cameraUbo_.bind(binding::kCameraUbo);
+            cameraUbo_.bind(binding::CAMERA_UBO);
             glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
             timer_.beginPass(p.name());
             try {

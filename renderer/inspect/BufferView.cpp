@@ -135,7 +135,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     p.samples = layout.samples;
     p.wordsPerStep = layout.wordStep;
     p.unsignedWords = layout.uintWords ? 1 : 0;
-    params_.upload(p, binding::kPassUbo);
+    params_.upload(p, binding::PASS_UBO);
 
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "buffer view");
     // Sources written by shader stores (buffers, images) are complete before they are read.
@@ -143,16 +143,16 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     gl::resetPipelineState(w, h);
     if (sourceKind != SourceArray && sourceKind != Source3D) sourceView_ = gl::Texture();
     if (sourceKind == SourceBuffer) {
-        output.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+        output.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_VIEW_SOURCE_SSBO);
     } else if (sourceKind == SourceArray || sourceKind == Source3D) {
         // A view of all layers and levels: its own sampling state (no depth
         // compare, depth of a depth-stencil format), and cubes read as 2D arrays of faces.
         const GLenum target = sourceKind == Source3D ? GL_TEXTURE_3D : GL_TEXTURE_2D_ARRAY;
         const int layers = sourceKind == Source3D ? 1 : kind == ResourceKind::TextureCube ? 6 : src->layers();
         sourceView_ = gl::Texture::createView(*src, target, 0, layers);
-        sourceView_.bind(0);
+        sourceView_.bind(binding::BUFFER_VIEW_SOURCE_TEXTURE);
     } else {
-        src->bind(0);
+        src->bind(binding::BUFFER_VIEW_SOURCE_TEXTURE);
     }
     if (autoRange) {
         const size_t tiles = static_cast<size_t>((w + 15) / 16) * ((h + 15) / 16);
@@ -161,7 +161,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
             pong_ = gl::Buffer::create(tiles * sizeof(RangeGpu), nullptr, false, "view range B");
         }
         programs.minmaxFirst->use();
-        ping_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+        ping_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_VIEW_RANGE_OUT_SSBO);
         glDispatchCompute(static_cast<GLuint>((w + 15) / 16), static_cast<GLuint>((h + 15) / 16), 1);
         const gl::Buffer* in = &ping_;
         const gl::Buffer* out = &pong_;
@@ -170,15 +170,15 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
         while (count > 1) {
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
             const size_t groups = (count + 255) / 256;
-            in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-            out->bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+            in->bindBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_VIEW_RANGE_IN_SSBO);
+            out->bindBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_VIEW_RANGE_OUT_SSBO);
             minmaxNext_->set(0, static_cast<int>(count));
             glDispatchCompute(static_cast<GLuint>(groups), 1, 1);
             count = groups;
             std::swap(in, out);
         }
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+        in->bindBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_VIEW_AUTO_RANGE_SSBO);
         result_ = in;
     } else {
         result_ = nullptr;

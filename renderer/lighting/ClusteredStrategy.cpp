@@ -54,13 +54,13 @@ const gl::Program& ClusteredStrategy::program(gl::ShaderLibrary::Handle& handle,
 }
 
 void ClusteredStrategy::bindBuffers() const {
-    candidates_.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
-    candidates_.dataTexture.bind(binding::kCandidateDataUnit);
-    cells_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterGridSsbo);
-    index_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterIndexSsbo);
-    filled_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kClusterFillSsbo);
+    candidates_.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_CANDIDATES_SSBO);
+    candidates_.dataTexture.bind(binding::LIGHT_CANDIDATE_DATA_TEXTURE);
+    cells_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::CLUSTER_GRID_SSBO);
+    index_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::CLUSTER_INDEX_SSBO);
+    filled_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::CLUSTER_FILL_SSBO);
     rangesTexture_.attachBuffer(ranges_.id());  // ensureSize may have re-created it
-    rangesTexture_.bind(binding::kClusterRangeUnit);
+    rangesTexture_.bind(binding::CLUSTER_RANGE_TEXTURE);
 }
 
 void ClusteredStrategy::setGridUniforms(const gl::Program& p, const Grid& g) const {
@@ -173,7 +173,7 @@ ClusteredStrategy::Grid ClusteredStrategy::build(LightingFrame& f, const LightLi
 void ClusteredStrategy::writeCounts(LightingFrame& f, const Grid& g) {
     const gl::Program& counts = program(counts_, {.compute = "lighting/cluster_counts.comp"});
     bindBuffers();
-    glBindImageTexture(2, f.ctx.texture(kClusterCounts).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(binding::CLUSTER_COUNTS_IMAGE, f.ctx.texture(kClusterCounts).id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     counts.use();
     setGridUniforms(counts, g);
     glDispatchCompute(static_cast<GLuint>((f.ctx.width + 15) / 16), static_cast<GLuint>((f.ctx.height + 15) / 16), 1);

@@ -12,11 +12,12 @@ namespace dw {
 
 namespace {
 
-// The lighting inputs the scene's material textures displace (units 0-3,
-// lighting/gbuffer_read.glsl), bound again for whatever runs after.
+// The lighting inputs the scene's material textures displace (the run from
+// GBUFFER_ALBEDO_TEXTURE, lighting/gbuffer_read.glsl; the material maps'
+// units), bound again for whatever runs after.
 void rebindGBuffer(FrameContext& ctx) {
     const char* const names[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive"};
-    for (GLuint unit = 0; unit < 4; ++unit) ctx.texture(names[unit]).bind(unit);
+    for (GLuint i = 0; i < 4; ++i) ctx.texture(names[i]).bind(binding::GBUFFER_ALBEDO_TEXTURE + i);
 }
 
 // After frame.beginLight: test against the laid-down depth, write none.
@@ -112,7 +113,7 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     if (lists.rows.empty()) return c;
     indices_.ensureSize(lists.rows.size() * sizeof(std::uint32_t), "forward light indices");
     indices_.update(0, lists.rows.size() * sizeof(std::uint32_t), lists.rows.data());
-    indices_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+    indices_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_CANDIDATES_SSBO);
 
     f.beginLight(*listed.front());  // the L-buffer target (no map: not shadowed)
     forwardDepthState();

@@ -51,7 +51,7 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
     const std::size_t n = std::max<std::size_t>(rows.size(), 1);
     buffers.rows.ensureSize(n * sizeof(std::uint32_t), "lighting candidates");
     if (!rows.empty()) buffers.rows.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
-    buffers.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightCandidatesSsbo);
+    buffers.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_CANDIDATES_SSBO);
 
     // GL 4.5 guarantees 65536 texels (16384 candidates); llvmpipe and the
     // desktop drivers allow far more, but past the limit texelFetch reads 0.
@@ -74,7 +74,7 @@ void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) cons
     if (!texels.empty()) buffers.data.update(0, texels.size() * sizeof(glm::vec4), texels.data());
     // ensureSize may have re-created the buffer: point the texture at today's.
     buffers.dataTexture.attachBuffer(buffers.data.id());
-    buffers.dataTexture.bind(binding::kCandidateDataUnit);
+    buffers.dataTexture.bind(binding::LIGHT_CANDIDATE_DATA_TEXTURE);
 }
 
 int LightLists::shadeOneByOne(LightingFrame& frame) const {

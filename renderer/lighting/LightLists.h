@@ -18,22 +18,9 @@
 #include "renderer/gl/Texture.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/lighting/LightingStrategy.h"
+#include "shaders/common/bindings.glsl"  // dw::binding, the binding points
 
 namespace dw {
-
-// Shader storage bindings of shaders/lighting/tiles.glsl.
-namespace binding {
-constexpr GLuint kLightCandidatesSsbo = 4;
-constexpr GLuint kClusterGridSsbo = 5;
-constexpr GLuint kClusterIndexSsbo = 6;
-constexpr GLuint kTileCoarseMaskSsbo = 7;
-// 3: GL 4.5 promises shader storage bindings 0 to 7 only; 0 and 3 are
-// free of every other pass's storage buffers.
-constexpr GLuint kClusterFillSsbo = 3;
-// Texture units of CANDIDATE_DATA_UNIT and CLUSTER_RANGE_UNIT.
-constexpr GLuint kCandidateDataUnit = 13;
-constexpr GLuint kClusterRangeUnit = 14;
-}  // namespace binding
 
 // lighting.tile_size, declared by whichever strategy asks first.
 IntKnob declareTileSizeKnob(KnobRegistry& knobs);
@@ -45,7 +32,7 @@ int tileSizeOf(const KnobRegistry& knobs, IntKnob knob);
 // candidate's light that culling and shading read (positionRadius,
 // directionCutoff, intensityExponent, attenuation; directionCutoff is
 // (0, 0, 0, -1) for a light that is not a spot), as an RGBA32F buffer
-// texture at CANDIDATE_DATA_UNIT. The shaders fetch light data as texels
+// texture at LIGHT_CANDIDATE_DATA_TEXTURE. The shaders fetch light data as texels
 // rather than from the light table's SSBO: on llvmpipe a texel fetch at a
 // per-invocation index is one vector gather, an SSBO or shared-memory read a
 // loop over the SIMD lanes (tiled lighting pass at 1000 lights, 640x360:

@@ -299,10 +299,11 @@ ShadowLookup ShadowMaps::render(const FrameContext& ctx, const Light& light, dou
 }
 
 void ShadowMaps::bind() const {
-    maps_[Map2D].bind(6);
-    maps_[Cube].bind(7);
-    maps_[Paraboloid].bind(8);
-    for (int unit : {6, 7, 8}) compare_.bind(unit);
+    maps_[Map2D].bind(binding::SHADOW_2D_TEXTURE);
+    maps_[Cube].bind(binding::SHADOW_CUBE_TEXTURE);
+    maps_[Paraboloid].bind(binding::SHADOW_PARABOLOID_TEXTURE);
+    for (GLuint unit : {binding::SHADOW_2D_TEXTURE, binding::SHADOW_CUBE_TEXTURE, binding::SHADOW_PARABOLOID_TEXTURE})
+        compare_.bind(static_cast<int>(unit));
 }
 
 }  // namespace dw

@@ -151,14 +151,14 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
         coarseMask_.ensureSize(
             std::size_t{coarseX} * coarseY * (kMaxCandidatesPerDispatch / 32) * sizeof(std::uint32_t),
             "tiled coarse masks");
-        coarseMask_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kTileCoarseMaskSsbo);
+        coarseMask_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::TILE_COARSE_MASK_SSBO);
     }
 
     lists.upload(candidates_, f.table);
     const gl::Texture& lbuffer = ctx.texture("lbuffer");
-    glBindImageTexture(0, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    if (overlap) glBindImageTexture(1, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
-    if (counts) glBindImageTexture(2, ctx.texture(kTileCounts).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(binding::TILED_LBUFFER_IMAGE, lbuffer.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    if (overlap) glBindImageTexture(binding::TILED_OVERLAP_IMAGE, ctx.texture("lighting.overlap").id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    if (counts) glBindImageTexture(binding::TILED_COUNTS_IMAGE, ctx.texture(kTileCounts).id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     // What came before through the framebuffer (the ambient pass and the
     // directional lights, without lighting.tile_ambient) is visible to the
     // first dispatch by GL's ordering; the barriers make

@@ -40,7 +40,7 @@ void DepthPeelingOit::render(OitFrame& f) {
     const DepthConvention depth = ctx.depth();
     const gl::Texture& count = ctx.texture("oit.peel_count");
     count.clearUint(0);
-    count.bindImage(oit_unit::kPeelLayers, GL_READ_WRITE);
+    count.bindImage(binding::OIT_PEEL_LAYERS_IMAGE, GL_READ_WRITE);
     gl::Framebuffer& accum = accumTarget_.get(ctx, {"oit.peel_accum"}, {}, "oit peel accumulation");
     accum.clearColor(0, 0, 0, 0, 1);
     gl::Framebuffer& prev = prevTarget_.get(ctx, {}, "oit.peel_prev_depth", "oit peel previous depth");
@@ -61,7 +61,7 @@ void DepthPeelingOit::render(OitFrame& f) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(depth.nearer());
         glDepthMask(GL_TRUE);
-        prevDepth.bind(13);
+        prevDepth.bind(binding::OIT_PREVIOUS_DEPTH_TEXTURE);
         f.drawTransparent(peel);
         glDisable(GL_DEPTH_TEST);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
@@ -69,8 +69,8 @@ void DepthPeelingOit::render(OitFrame& f) {
         accum.bind();
         glEnable(GL_BLEND);
         glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
-        color.bind(13);
-        layerDepth.bind(14);
+        color.bind(binding::OIT_LAYER_COLOR_TEXTURE);
+        layerDepth.bind(binding::OIT_LAYER_DEPTH_TEXTURE);
         compose_->use();
         triangle_.draw();
         glDisable(GL_BLEND);
@@ -78,7 +78,7 @@ void DepthPeelingOit::render(OitFrame& f) {
         glCopyImageSubData(layerDepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, prevDepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.width,
                            ctx.height, 1);
     }
-    ctx.texture("oit.peel_accum").bind(13);
+    ctx.texture("oit.peel_accum").bind(binding::OIT_PEEL_ACCUM_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     lossCause_ = "depth_peeling peels " + std::to_string(layers) +
                  " layers (oit.peel_layers); a fragment behind them, or at exactly the depth of one peeled, is lost";

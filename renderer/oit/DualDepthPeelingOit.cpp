@@ -40,7 +40,7 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     const int passes = (layers + 1) / 2;
     const gl::Texture& count = ctx.texture("oit.dual_count");
     count.clearUint(0);
-    count.bindImage(oit_unit::kPeelLayers, GL_READ_WRITE);
+    count.bindImage(binding::OIT_PEEL_LAYERS_IMAGE, GL_READ_WRITE);
     const gl::Texture& depth = ctx.texture("oit.dual_depth");
     const gl::Texture& prev = ctx.texture("oit.dual_prev_depth");
     auto copyRange = [&] {
@@ -68,7 +68,7 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     f.uploadParams();
     const gl::Program& program = f.transparentProgram("METHOD_DUAL");
     const gl::Texture& claims = ctx.texture("oit.dual_claims");
-    claims.bindImage(oit_unit::kDualClaims, GL_READ_WRITE);
+    claims.bindImage(binding::OIT_DUAL_CLAIMS_IMAGE, GL_READ_WRITE);
     for (int k = 0; k < passes; ++k) {
         claims.clearUint(0);
         // An odd layer count: the last pass keeps its nearest layer only, so N layers means N.
@@ -80,7 +80,7 @@ void DualDepthPeelingOit::render(OitFrame& f) {
         peel.clearColor(2, 0, 0, 0, 0);
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
-        prev.bind(13);
+        prev.bind(binding::OIT_PREVIOUS_DEPTH_TEXTURE);
         f.drawTransparent(program);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 
@@ -88,8 +88,8 @@ void DualDepthPeelingOit::render(OitFrame& f) {
         glBlendEquation(GL_FUNC_ADD);
         glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
         glBlendFuncSeparatei(1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
-        ctx.texture("oit.dual_front").bind(13);
-        ctx.texture("oit.dual_back").bind(14);
+        ctx.texture("oit.dual_front").bind(binding::OIT_FRONT_LAYER_TEXTURE);
+        ctx.texture("oit.dual_back").bind(binding::OIT_BACK_LAYER_TEXTURE);
         compose_->use();
         triangle_.draw();
         copyRange();
@@ -97,8 +97,8 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     f.params.frontOnly = 0;
     glDisable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
-    ctx.texture("oit.dual_front_accum").bind(13);
-    ctx.texture("oit.dual_back_accum").bind(14);
+    ctx.texture("oit.dual_front_accum").bind(binding::OIT_FRONT_ACCUM_TEXTURE);
+    ctx.texture("oit.dual_back_accum").bind(binding::OIT_BACK_ACCUM_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     lossCause_ = "dual_depth_peeling peels " + std::to_string(layers) +
                  " layers (oit.peel_layers); a fragment between them, or at exactly the depth of one peeled, is lost";

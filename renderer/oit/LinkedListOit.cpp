@@ -56,9 +56,9 @@ void LinkedListOit::render(OitFrame& f) {
     const gl::Buffer& counter = ctx.buffer("oit.list_counter");
     heads.clearUint(0);
     counter.clearUint(0);
-    heads.bindImage(oit_unit::kListHeads, GL_READ_WRITE);
-    nodes.bindBase(GL_SHADER_STORAGE_BUFFER, kOitNodeSsbo);
-    counter.bindBase(GL_SHADER_STORAGE_BUFFER, kOitCounterSsbo);
+    heads.bindImage(binding::OIT_LIST_HEADS_IMAGE, GL_READ_WRITE);
+    nodes.bindBase(GL_SHADER_STORAGE_BUFFER, binding::OIT_LIST_NODES_SSBO);
+    counter.bindBase(GL_SHADER_STORAGE_BUFFER, binding::OIT_LIST_COUNTER_SSBO);
     const unsigned budget = static_cast<unsigned>(ctx.knobs.get(nodes_));
     f.params.nodeBudget = budget;
     const unsigned walk = walkLimit(gl::shaderLoopIterationLimit());

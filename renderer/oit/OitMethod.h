@@ -29,20 +29,11 @@ namespace dw {
 
 class KnobRegistry;
 
-// Image units of shaders/oit/*.frag.
-namespace oit_unit {
-constexpr GLuint kFragmentCount = 0;  // oit.sample_count
-constexpr GLuint kListHeads = 1;
-constexpr GLuint kOverflow = 2;       // oit.overflow
-constexpr GLuint kPeelLayers = 3;
-constexpr GLuint kDualClaims = 4;     // oit.dual_claims
-}  // namespace oit_unit
-// Shader storage bindings of the linked list, and of the frame's lost
-// fragments summed (one uint, added to by shaders/oit/resolve.frag).
-constexpr GLuint kOitNodeSsbo = 5, kOitCounterSsbo = 6, kOitLostSsbo = 7;
+// The image units, storage blocks and texture units of shaders/oit/*.frag
+// are named in shaders/common/bindings.glsl (binding::OIT_*).
 
 // One frame of a method's work, set up by the oit pass: the lighting
-// block, the light table, gbuffer.depth (unit 4), the shadow maps when
+// block, the light table, gbuffer.depth (binding::GBUFFER_DEPTH_TEXTURE), the shadow maps when
 // `shadowed`, oit.sample_count and oit.overflow cleared and bound to their
 // image units; `params` uploaded at OIT_UBO.
 struct OitFrame {

@@ -105,8 +105,8 @@ void StencilRoutedOit::render(OitFrame& f) {
     glDisable(GL_MULTISAMPLE);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
-    ctx.texture("oit.abuffer").bind(13);
-    ctx.texture("oit.abuffer_depth").bind(14);
+    ctx.texture("oit.abuffer").bind(binding::OIT_SAMPLES_TEXTURE);
+    ctx.texture("oit.abuffer_depth").bind(binding::OIT_SAMPLE_DEPTH_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     const int want = ctx.knobs.get(samples_);
     lossCause_ = "abuffer keeps " + std::to_string(n) + " per pixel (oit.samples = " + std::to_string(want) +

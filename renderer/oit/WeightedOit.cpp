@@ -46,8 +46,8 @@ void WeightedOit::render(OitFrame& f) {
     f.drawTransparent(f.transparentProgram("METHOD_WEIGHTED"));
     glDisable(GL_BLEND);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    ctx.texture("oit.accum").bind(13);
-    ctx.texture("oit.revealage").bind(14);
+    ctx.texture("oit.accum").bind(binding::OIT_ACCUM_TEXTURE);
+    ctx.texture("oit.revealage").bind(binding::OIT_REVEALAGE_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     stats_ = "weight " + ctx.knobs.choice(weight_) + "; memory " +
              mebibytes(allocatedBytes(ctx, {"oit.accum", "oit.revealage", "oit.sample_count", "oit.overflow"}));

@@ -56,23 +56,23 @@ void AoFilterPass::execute(FrameContext& ctx) {
                 tempFbo_[i] = gl::Framebuffer::forColor(temp_[i], "AO blur");
             }
         glViewport(0, 0, w, h);
-        depth.bind(1);
+        depth.bind(binding::AO_FILTER_DEPTH_TEXTURE);
         blur_->use();
         p.radius = radius;
         p.sigma = std::max(radius / 2.0f, 0.5f);
         for (int pass = 0; pass < 2; ++pass) {
             p.direction = pass == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
-            params_.upload(p, binding::kPassUbo);
-            source->bind(0);
+            params_.upload(p, binding::PASS_UBO);
+            source->bind(binding::AO_FILTER_SOURCE_TEXTURE);
             tempFbo_[pass].bind();
             triangle_.draw();
             source = &temp_[pass];
         }
     }
     // To full resolution; depth-aware when the AO ran smaller and blurring is bilateral.
-    params_.upload(p, binding::kPassUbo);
-    source->bind(0);
-    depth.bind(1);
+    params_.upload(p, binding::PASS_UBO);
+    source->bind(binding::AO_FILTER_SOURCE_TEXTURE);
+    depth.bind(binding::AO_FILTER_DEPTH_TEXTURE);
     glViewport(0, 0, ctx.width, ctx.height);
     full_.get(ctx, {"ao.filtered"}, {}, "AO filtered").bind();
     upsample_->use();

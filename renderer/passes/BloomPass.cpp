@@ -101,13 +101,13 @@ void BloomPass::execute(FrameContext& ctx) {
     auto uploadTexels = [&](const gl::Texture* source, const gl::Texture& target) {
         if (source) p.sourceTexel = glm::vec2(1.0f / source->width(), 1.0f / source->height());
         p.targetTexel = glm::vec2(1.0f / target.width(), 1.0f / target.height());
-        params_.upload(p, binding::kPassUbo);
+        params_.upload(p, binding::PASS_UBO);
     };
     // 1. Threshold into level 0 of the bright chain.
     p.threshold = k.get(threshold_);
-    params_.upload(p, binding::kPassUbo);
-    hdr.bind(0);
-    ctx.texture("luminance.stats").bind(1);
+    params_.upload(p, binding::PASS_UBO);
+    hdr.bind(binding::BLOOM_HDR_TEXTURE);
+    ctx.texture("luminance.stats").bind(binding::BLOOM_STATS_TEXTURE);
     brightProgram_->use();
     drawInto(brightFbo, w, h);
 
@@ -119,7 +119,7 @@ void BloomPass::execute(FrameContext& ctx) {
         const gl::Texture& dst = down_chain_[l].texture;
         uploadTexels(source, dst);
         glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 0);
-        source->bind(0);
+        source->bind(binding::BLOOM_SOURCE_TEXTURE);
         drawInto(down_chain_[l].fbo, dst.width(), dst.height());
         glTextureParameteri(source->id(), GL_TEXTURE_MAX_LEVEL, 1000);
         source = &dst;
@@ -131,8 +131,8 @@ void BloomPass::execute(FrameContext& ctx) {
         // 3. The average of the levels, each upsampled with a cubic B-spline.
         uploadTexels(nullptr, resultTexture);
         glTextureParameteri(brightTexture.id(), GL_TEXTURE_MAX_LEVEL, 0);
-        brightTexture.bind(0);
-        for (int i = 1; i <= kMaxLevels; ++i) down_chain_[i].texture.bind(i);
+        brightTexture.bind(binding::BLOOM_BRIGHT_TEXTURE);
+        for (int i = 1; i <= kMaxLevels; ++i) down_chain_[i].texture.bind(binding::BLOOM_LEVELS_TEXTURE + static_cast<GLuint>(i - 1));
         mipsum_->use();
         drawInto(resultFbo, w, h);
         glTextureParameteri(brightTexture.id(), GL_TEXTURE_MAX_LEVEL, 1000);
@@ -144,15 +144,15 @@ void BloomPass::execute(FrameContext& ctx) {
             const gl::Texture& same = l == 0 ? brightTexture : down_chain_[l].texture;
             const gl::Texture& dst = up_chain_[l].texture;
             uploadTexels(coarse, dst);
-            coarse->bind(0);
+            coarse->bind(binding::BLOOM_COARSE_TEXTURE);
             glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 0);
-            same.bind(1);
+            same.bind(binding::BLOOM_SAME_TEXTURE);
             drawInto(up_chain_[l].fbo, dst.width(), dst.height());
             glTextureParameteri(same.id(), GL_TEXTURE_MAX_LEVEL, 1000);
             coarse = &dst;
         }
         // With no coarser level (a tiny image) the bright image is the bloom.
-        (levels > 0 ? up_chain_[0].texture : brightTexture).bind(0);
+        (levels > 0 ? up_chain_[0].texture : brightTexture).bind(binding::BLOOM_SOURCE_TEXTURE);
         scale_->use();
         drawInto(resultFbo, w, h);
     }

@@ -37,8 +37,8 @@ void DofPass::setup(gl::ShaderLibrary& shaders) {
 
 void DofPass::execute(FrameContext& ctx) {
     const KnobRegistry& k = ctx.knobs;
-    ctx.currentImage().bind(0);
-    ctx.texture("gbuffer.depth").bind(1);
+    ctx.currentImage().bind(binding::DOF_IMAGE_TEXTURE);
+    ctx.texture("gbuffer.depth").bind(binding::DOF_DEPTH_TEXTURE);
     program_->use();
     gpu::DofParams p{};
     p.nearBlur = k.get(near_) ? 1 : 0;
@@ -52,7 +52,7 @@ void DofPass::execute(FrameContext& ctx) {
         if (write == gpu::DOF_WRITE_COC && !ctx.wants("dof.coc")) continue;
         if (write == gpu::DOF_WRITE_NEAR_ALPHA && !ctx.wants("dof.near_alpha")) continue;
         p.outputKind = write;
-        params_.upload(p, binding::kPassUbo);
+        params_.upload(p, binding::PASS_UBO);
         if (write == gpu::DOF_WRITE_COC) coc_.get(ctx, {"dof.coc"}, {}, "circle of confusion").bind();
         else if (write == gpu::DOF_WRITE_NEAR_ALPHA) nearAlpha_.get(ctx, {"dof.near_alpha"}, {}, "near field alpha").bind();
         else result_.get(ctx, {"dof.result"}, {}, "depth of field").bind();

@@ -49,14 +49,14 @@ void FxaaPass::execute(FrameContext& ctx) {
     const gl::Texture& input = ctx.currentImage();
     // Bilinear reads between pixels are part of the method; the sampler keeps
     // the shared image itself nearest for everyone else.
-    input.bind(0);
-    linear_.bind(0);
+    input.bind(binding::FXAA_IMAGE_TEXTURE);
+    linear_.bind(binding::FXAA_IMAGE_TEXTURE);
     gpu::FxaaParams p{};
     p.edgeThreshold = k.get(threshold_);
     p.edgeThresholdMin = k.get(thresholdMin_);
     p.subpixel = k.get(subpixel_);
     p.searchSteps = kQualities[k.get(quality_)].steps;
-    params_.upload(p, binding::kPassUbo);
+    params_.upload(p, binding::PASS_UBO);
     program_->use();
     target_.get(ctx, {"fxaa.result"}, {}, "FXAA").bind();
     triangle_.draw();

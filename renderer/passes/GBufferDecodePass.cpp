@@ -7,8 +7,8 @@ void GBufferDecodePass::setup(gl::ShaderLibrary& shaders) {
 }
 
 void GBufferDecodePass::execute(FrameContext& ctx) {
-    ctx.texture("gbuffer.normal").bind(0);
-    ctx.texture("gbuffer.depth").bind(1);
+    ctx.texture("gbuffer.normal").bind(binding::GBUFFER_DECODE_NORMAL_TEXTURE);
+    ctx.texture("gbuffer.depth").bind(binding::GBUFFER_DECODE_DEPTH_TEXTURE);
     target_.get(ctx, {"gbuffer.view_normal", "gbuffer.view_position"}, {}, "G-buffer decode").bind();
     program_->use();
     triangle_.draw();

@@ -130,7 +130,7 @@ void GeometryPass::execute(FrameContext& ctx) {
         rows = gbufferDirectionalRows(*ctx.lightTable, ctx.shadows != nullptr);
         program.set(2, static_cast<int>(rows.size()));
         for (std::size_t i = 0; i < rows.size(); ++i) program.set(3 + static_cast<GLint>(i), rows[i]);
-        ctx.lightTable->buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+        ctx.lightTable->buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_SSBO);
     }
     // Blended materials stay out of the G-buffer (and so out of SSAO and the
     // deferred lighting): the oit pass draws them over the L-buffer.

@@ -78,7 +78,7 @@ void LightTablePass::execute(FrameContext& ctx) {
     buffer_.ensureSize(bytes, "lights.table");
     if (!table_.rows.empty()) buffer_.update(0, table_.rows.size() * sizeof(LightGpu), table_.rows.data());
     table_.buffer = &buffer_;
-    buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+    buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_SSBO);
     ctx.outputs.bindBuffer("lights.table", &buffer_, sizeof(LightGpu), std::max<std::size_t>(table_.rows.size(), 1));
     ctx.lightTable = &table_;
     stats_ = std::to_string(table_.rows.size()) + " lights: " + std::to_string(perType[0]) + " directional, " +

@@ -18,6 +18,11 @@ namespace {
 // Texture units 0-4 of the lighting shaders, in this order.
 const char* const kGBufferInputs[] = {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
                                       "gbuffer.depth"};
+// Bound as a run from GBUFFER_ALBEDO_TEXTURE (shaders/lighting/gbuffer_read.glsl).
+static_assert(binding::GBUFFER_NORMAL_TEXTURE == binding::GBUFFER_ALBEDO_TEXTURE + 1 &&
+              binding::GBUFFER_SPECULAR_TEXTURE == binding::GBUFFER_ALBEDO_TEXTURE + 2 &&
+              binding::GBUFFER_EMISSIVE_TEXTURE == binding::GBUFFER_ALBEDO_TEXTURE + 3 &&
+              binding::GBUFFER_DEPTH_TEXTURE == binding::GBUFFER_ALBEDO_TEXTURE + 4);
 
 }  // namespace
 
@@ -147,10 +152,10 @@ void LightingPass::writeShadowFactor(FrameContext& ctx, const LightTable& table,
     }
     gl::resetPipelineState(ctx.width, ctx.height);
     shadowTarget_.get(ctx, {"lighting.shadow"}, {}, "lighting.shadow").bind();
-    shadowSums_.bind(0);
+    shadowSums_.bind(binding::SHADOW_SUMS_TEXTURE);
     shadowResolveProgram_->use();
     triangle_.draw();
-    bindInputs();  // unit 0 again
+    bindInputs();  // GBUFFER_ALBEDO_TEXTURE again (SHADOW_SUMS_TEXTURE's unit)
 }
 
 LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights) {
@@ -196,7 +201,7 @@ void LightingPass::execute(FrameContext& ctx) {
     params.gbufferDirectional = shadedInGBuffer.empty() ? 0 : 1;
     params.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
     params.background = glm::vec4(ctx.scene.background, 0.0f);
-    params_.upload(params, binding::kPassUbo);
+    params_.upload(params, binding::PASS_UBO);
 
     // The L-buffer gets its own copy of the G-buffer depth: the stencil test
     // writes stencil there while the shader samples gbuffer.depth.
@@ -216,13 +221,13 @@ void LightingPass::execute(FrameContext& ctx) {
     const gl::Texture& bakedOcclusion = ctx.texture("gbuffer.occlusion");
     const gl::Texture* gbufferDirectional = shadedInGBuffer.empty() ? nullptr : &ctx.texture("gbuffer.directional");
     auto bindInputs = [&] {
-        for (std::size_t unit = 0; unit < std::size(kGBufferInputs); ++unit) inputTextures[unit]->bind(static_cast<GLuint>(unit));
-        occlusionTexture->bind(5);
-        if (skyTexture) skyTexture->bind(9);
-        bakedOcclusion.bind(11);
-        if (gbufferDirectional) gbufferDirectional->bind(12);
-        table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
-        params_.bind(binding::kPassUbo);
+        for (std::size_t unit = 0; unit < std::size(kGBufferInputs); ++unit) inputTextures[unit]->bind(binding::GBUFFER_ALBEDO_TEXTURE + static_cast<GLuint>(unit));
+        occlusionTexture->bind(binding::LIGHTING_OCCLUSION_TEXTURE);
+        if (skyTexture) skyTexture->bind(binding::AMBIENT_SKY_TEXTURE);
+        bakedOcclusion.bind(binding::AMBIENT_BAKED_OCCLUSION_TEXTURE);
+        if (gbufferDirectional) gbufferDirectional->bind(binding::AMBIENT_GBUFFER_DIRECTIONAL_TEXTURE);
+        table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_SSBO);
+        params_.bind(binding::PASS_UBO);
     };
     bindInputs();
 

@@ -59,14 +59,14 @@ void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Textur
         ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
         pong_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials B");
     }
-    hdr.bind(0);
-    if (depthMask) depthMask->bind(1);
+    hdr.bind(binding::LUMINANCE_HDR_TEXTURE);
+    if (depthMask) depthMask->bind(binding::LUMINANCE_DEPTH_TEXTURE);
     gpu::LuminanceParams p{};
     p.delta = delta;
     p.skipBackground = depthMask ? 1 : 0;
-    params_.upload(p, binding::kPassUbo);
+    params_.upload(p, binding::PASS_UBO);
     first_->use();
-    ping_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+    ping_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LUMINANCE_REDUCE_OUT_SSBO);
     glDispatchCompute(groups(static_cast<std::size_t>(w), gpu::LUMINANCE_TILE),
                       groups(static_cast<std::size_t>(h), gpu::LUMINANCE_TILE), 1);
     size_t count = tiles;
@@ -76,18 +76,18 @@ void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Textur
     while (count > 1) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         const GLuint n = groups(count, gpu::LUMINANCE_GROUP);
-        in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-        out->bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+        in->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LUMINANCE_REDUCE_IN_SSBO);
+        out->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LUMINANCE_REDUCE_OUT_SSBO);
         p.count = static_cast<int>(count);
-        params_.upload(p, binding::kPassUbo);
+        params_.upload(p, binding::PASS_UBO);
         glDispatchCompute(n, 1, 1);
         count = n;
         std::swap(in, out);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    in->bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    in->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LUMINANCE_REDUCE_IN_SSBO);
     finalize_->use();
-    glBindImageTexture(0, stats_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(binding::LUMINANCE_STATS_IMAGE, stats_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }

@@ -150,7 +150,7 @@ void OitPass::execute(FrameContext& ctx) {
     warning_.clear();
     lastLost_ = lastArrived_ = 0;
     lostTotal_.clearUint(0);
-    lostTotal_.bindBase(GL_SHADER_STORAGE_BUFFER, kOitLostSsbo);
+    lostTotal_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::OIT_LOST_TOTAL_SSBO);
 
     OitFrame f{ctx};
     const glm::dmat4 worldToClip = ctx.camera.worldToClip();
@@ -170,7 +170,7 @@ void OitPass::execute(FrameContext& ctx) {
     lp.ambientSpecular = k.get(ambientSpecular_) ? 1 : 0;
     lp.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
     lp.background = glm::vec4(ctx.scene.background, 0.0f);
-    lighting_.upload(lp, binding::kPassUbo);
+    lighting_.upload(lp, binding::PASS_UBO);
 
     f.params.samples = 1;
     f.params.nodeBudget = 0;
@@ -178,14 +178,14 @@ void OitPass::execute(FrameContext& ctx) {
     f.params.countFragments = method.needsFragmentCount() || ctx.wants("oit.sample_count") ? 1 : 0;
     f.params.lightCount = static_cast<int>(table.rows.size());
     f.params.peelLayer = 0;
-    f.uploadParams = [&] { params_.upload(f.params, binding::kOitUbo); };
+    f.uploadParams = [&] { params_.upload(f.params, binding::OIT_UBO); };
     f.uploadParams();
 
-    ctx.texture("gbuffer.depth").bind(4);
-    table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::kLightSsbo);
+    ctx.texture("gbuffer.depth").bind(binding::GBUFFER_DEPTH_TEXTURE);
+    table.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_SSBO);
     if (f.shadowed) ctx.shadows->bind();
-    count.bindImage(oit_unit::kFragmentCount, GL_READ_WRITE);
-    overflow.bindImage(oit_unit::kOverflow, GL_READ_WRITE);
+    count.bindImage(binding::OIT_FRAGMENT_COUNT_IMAGE, GL_READ_WRITE);
+    overflow.bindImage(binding::OIT_OVERFLOW_IMAGE, GL_READ_WRITE);
 
     f.transparentProgram = [&](const std::string& m) -> const gl::Program& { return transparentProgram(m, f.shadowed); };
     f.compositeOverLBuffer = [&](const gl::Program& program) {
@@ -195,7 +195,7 @@ void OitPass::execute(FrameContext& ctx) {
         glDepthMask(GL_FALSE);
         glEnable(GL_BLEND);
         glBlendFuncSeparate(GL_ONE, GL_SRC_ALPHA, GL_ZERO, GL_ONE);
-        params_.bind(binding::kOitUbo);
+        params_.bind(binding::OIT_UBO);
         program.use();
         triangle_.draw();
         glDisable(GL_BLEND);

@@ -64,11 +64,11 @@ void SkyboxPass::execute(FrameContext& ctx) {
             p.sunColor = l.intensity * 40.0f;
             break;
         }
-    params_.upload(p, binding::kPassUbo);
-    ctx.texture("gbuffer.depth").bind(0);
+    params_.upload(p, binding::PASS_UBO);
+    ctx.texture("gbuffer.depth").bind(binding::SKY_DEPTH_TEXTURE);
     const gl::Texture* env = ctx.gpu.environment();
-    (kind == gpu::SKY_KIND_EQUIRECT && env ? *env : dummy2D_).bind(1);
-    (kind == gpu::SKY_KIND_CUBE && env ? *env : dummyCube_).bind(2);
+    (kind == gpu::SKY_KIND_EQUIRECT && env ? *env : dummy2D_).bind(binding::SKY_EQUIRECT_TEXTURE);
+    (kind == gpu::SKY_KIND_CUBE && env ? *env : dummyCube_).bind(binding::SKY_CUBE_TEXTURE);
     target_.get(ctx, {"sky"}, {}, "sky").bind();
     program_->use();
     triangle_.draw();

@@ -60,10 +60,10 @@ void TonemapPass::execute(FrameContext& ctx) {
     p.white = k.get(white_);
     p.exposure = k.get(exposure_);
     p.bloomIntensity = k.get(bloomIntensity_);
-    params_.upload(p, binding::kPassUbo);
-    ctx.texture("lbuffer").bind(0);
-    if (ctx.produced("luminance.stats")) ctx.texture("luminance.stats").bind(1);
-    if (bloom) ctx.texture("bloom.result").bind(2);
+    params_.upload(p, binding::PASS_UBO);
+    ctx.texture("lbuffer").bind(binding::TONEMAP_HDR_TEXTURE);
+    if (ctx.produced("luminance.stats")) ctx.texture("luminance.stats").bind(binding::TONEMAP_STATS_TEXTURE);
+    if (bloom) ctx.texture("bloom.result").bind(binding::TONEMAP_BLOOM_TEXTURE);
     target_.get(ctx, {"tonemap.result"}, {}, "tone-mapped image").bind();
     program_->use();
     triangle_.draw();

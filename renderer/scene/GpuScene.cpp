@@ -204,14 +204,19 @@ void GpuScene::upload(const Scene& scene) {
     std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
 }
 
+// Bound as a run of four from MATERIAL_BASE_COLOR_TEXTURE (shaders/common/material_eval.glsl).
+static_assert(binding::MATERIAL_NORMAL_TEXTURE == binding::MATERIAL_BASE_COLOR_TEXTURE + 1 &&
+              binding::MATERIAL_SPECULAR_TEXTURE == binding::MATERIAL_BASE_COLOR_TEXTURE + 2 &&
+              binding::MATERIAL_EMISSIVE_TEXTURE == binding::MATERIAL_BASE_COLOR_TEXTURE + 3);
+
 void GpuScene::bindMaterialTextures(int material) const {
     const MaterialTextures& t = materialTextures_[material];
     auto id = [&](int tex, const gl::Texture& fallback) { return tex >= 0 ? textures_[tex].id() : fallback.id(); };
     const GLuint ids[4] = {id(t.baseColor, white_), id(t.normal, flatNormal_), id(t.specular, white_), id(t.emissive, white_)};
-    glBindTextures(0, 4, ids);
-    glBindSamplers(0, 4, t.samplers);
-    glBindTextureUnit(kOcclusionUnit, id(t.occlusion, white_));
-    glBindSampler(kOcclusionUnit, t.samplers[Material::OcclusionSlot]);
+    glBindTextures(binding::MATERIAL_BASE_COLOR_TEXTURE, 4, ids);
+    glBindSamplers(binding::MATERIAL_BASE_COLOR_TEXTURE, 4, t.samplers);
+    glBindTextureUnit(binding::MATERIAL_OCCLUSION_TEXTURE, id(t.occlusion, white_));
+    glBindSampler(binding::MATERIAL_OCCLUSION_TEXTURE, t.samplers[Material::OcclusionSlot]);
 }
 
 static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
@@ -250,7 +255,7 @@ void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_
                         const PerDraw* before, bool backFacesFirst) const {
     if (draws_.empty() || order.empty()) return;
     vao_.bind();
-    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::kMaterialSsbo);
+    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::MATERIAL_SSBO);
     int boundMaterial = -1;
     bool cullOn = true;
     glEnable(GL_CULL_FACE);
@@ -289,10 +294,10 @@ void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     // The glTF samplers override the textures' own state: unbind them so later
-    // passes sampling through units 0-3 and 10 get their textures' settings.
+    // passes sampling through the material maps' units get their textures' settings.
     if (bindTextures) {
-        glBindSamplers(0, 4, nullptr);
-        glBindSampler(kOcclusionUnit, 0);
+        glBindSamplers(binding::MATERIAL_BASE_COLOR_TEXTURE, 4, nullptr);
+        glBindSampler(binding::MATERIAL_OCCLUSION_TEXTURE, 0);
     }
 }
 

@@ -14,17 +14,9 @@
 #include "renderer/gl/Texture.h"
 #include "renderer/gl/VertexArray.h"
 #include "renderer/scene/Scene.h"
+#include "shaders/common/bindings.glsl"  // dw::binding, the binding points
 
 namespace dw {
-
-// Binding points shared with the GLSL in shaders/common/bindings.glsl.
-namespace binding {
-constexpr GLuint kCameraUbo = 0;
-constexpr GLuint kMaterialSsbo = 1;
-constexpr GLuint kLightSsbo = 2;
-constexpr GLuint kPassUbo = 3;
-constexpr GLuint kOitUbo = 4;  // the oit pass's own block, beside the lighting block at kPassUbo
-}  // namespace binding
 
 class GpuScene {
 public:
@@ -57,10 +49,11 @@ public:
     // Binds VAO, material SSBO and per-draw textures, then issues one draw per
     // instance that passes `filter`. Locations 0 and 1 of `program` receive the
     // model matrix and material index.
-    // Material textures go to units 0-3 (base colour, normal, specular / metallic-
-    // roughness, emissive) and kOcclusionUnit, each with its glTF sampler.
+    // Material textures go to units binding::MATERIAL_BASE_COLOR_TEXTURE to
+    // MATERIAL_EMISSIVE_TEXTURE (base colour, normal, specular / metallic-
+    // roughness, emissive: four units in a row) and MATERIAL_OCCLUSION_TEXTURE,
+    // each with its glTF sampler.
     void draw(const gl::Program& program, Filter filter, bool bindTextures = true) const;
-    static constexpr GLuint kOcclusionUnit = 10;
     // As draw(), but calls `before(index into draws(), draw)` first for each
     // instance that passes `filter`: it sets the program's per-draw uniforms
     // and returns false to skip the instance (the forward lighting strategies).
@@ -108,7 +101,7 @@ private:
     std::map<std::pair<int, bool>, int> textureIndex_;
     struct MaterialTextures {
         int baseColor = -1, normal = -1, specular = -1, emissive = -1, occlusion = -1;
-        GLuint samplers[Material::kSlotCount] = {};  // per slot, units 0-3 and kOcclusionUnit
+        GLuint samplers[Material::kSlotCount] = {};  // per slot, units 0-3 and binding::MATERIAL_OCCLUSION_TEXTURE
     };
     using SamplerKey = std::tuple<unsigned, unsigned, unsigned, unsigned>;
     std::vector<gl::Sampler> samplers_;

@@ -3,10 +3,11 @@
 // size (aov.depth), the depth of the full-resolution pixel each AO pixel
 // stands for, so the volumes' depth test and aov_volume.frag see the same
 // surface, and stencil 1 where there is a surface. Depth and stencil writes only.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../params/aov.h"
 
-layout(binding = 0) uniform sampler2D uDepth;  // gbuffer.depth
+layout(binding = AOV_GBUFFER_DEPTH_TEXTURE) uniform sampler2D uDepth;  // gbuffer.depth
 
 void main() {
     vec2 uv = gl_FragCoord.xy / vec2(aov.aoSize);

@@ -21,6 +21,7 @@
 // facing P, or any triangle of it, O is then exactly the ray-traced AO's
 // integral (renderer/reference); for other orientations the weight is the
 // facing plane's (docs/ao.md gives the error, about 0.03 for a perpendicular wall).
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 #include "../params/aov.h"
@@ -30,9 +31,9 @@
 layout(early_fragment_tests) in;
 
 // Units 11 and 12: GpuScene::drawEach binds the materials' textures to 0-3 and 10.
-layout(binding = 11) uniform sampler2D uDepth;   // gbuffer.depth, full resolution
-layout(binding = 12) uniform sampler2D uNormal;  // gbuffer.normal
-layout(binding = 0, r32ui) uniform coherent uimage2D uOverdraw;  // aov.overdraw
+layout(binding = AOV_VOLUME_DEPTH_TEXTURE) uniform sampler2D uDepth;   // gbuffer.depth, full resolution
+layout(binding = AOV_VOLUME_NORMAL_TEXTURE) uniform sampler2D uNormal;  // gbuffer.normal
+layout(binding = AOV_OVERDRAW_IMAGE, r32ui) uniform coherent uimage2D uOverdraw;  // aov.overdraw
 
 flat in vec3 gA;
 flat in vec3 gB;

@@ -30,12 +30,13 @@
 //     bV(h) = cos n (1 - cos^3 h) / 3 + sin n sin^3 h / 3
 // normalised at the end. On an open plane this is N exactly for any set of
 // slices (the test checks it).
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 #include "../params/gtao.h"
 
-layout(binding = 0) uniform sampler2D uDepth;
-layout(binding = 1) uniform sampler2D uNormal;
+layout(binding = GTAO_DEPTH_TEXTURE) uniform sampler2D uDepth;
+layout(binding = GTAO_NORMAL_TEXTURE) uniform sampler2D uNormal;
 
 layout(location = 0) out float outVisibility;
 layout(location = 1) out vec4 outBentNormal;  // only attached with gtao.bent_normals

@@ -7,13 +7,14 @@
 // centre's tangent plane / (gtao.denoisePlane x depth))^2) and the normals'
 // agreement, so a floor does not take the AO of the object standing on it.
 // Writes ao.raw at the AO resolution.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 #include "../params/gtao.h"
 
-layout(binding = 0) uniform sampler2D uDepth;
-layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uNoisy;
+layout(binding = GTAO_DEPTH_TEXTURE) uniform sampler2D uDepth;
+layout(binding = GTAO_NORMAL_TEXTURE) uniform sampler2D uNormal;
+layout(binding = GTAO_NOISY_TEXTURE) uniform sampler2D uNoisy;
 
 out float outVisibility;
 

@@ -3,11 +3,12 @@
 // L-buffer at half resolution (the mean of each 2x2 block, so a one-pixel
 // highlight is not dropped or flickering), with the threshold, a multiple of
 // the image's average luminance, subtracted from each pixel's luminance.
+#include "../common/bindings.glsl"
 #include "../common/color.glsl"
 #include "../params/bloom.h"
 
-layout(binding = 0) uniform sampler2D uHdr;
-layout(binding = 1) uniform sampler2D uStats;
+layout(binding = BLOOM_HDR_TEXTURE) uniform sampler2D uHdr;
+layout(binding = BLOOM_STATS_TEXTURE) uniform sampler2D uStats;
 
 out vec4 outColor;
 

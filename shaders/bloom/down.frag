@@ -2,9 +2,10 @@
 // Dual-filter bloom, downsample (Jimenez, "Next generation post processing
 // in Call of Duty: Advanced Warfare", 2014): 13 bilinear taps as five
 // overlapping 2x2 boxes, weights 0.5 (centre box) and 0.125 (corner boxes).
+#include "../common/bindings.glsl"
 #include "../params/bloom.h"
 
-layout(binding = 0) uniform sampler2D uSource;
+layout(binding = BLOOM_SOURCE_TEXTURE) uniform sampler2D uSource;
 
 out vec4 outColor;
 

@@ -6,10 +6,11 @@
 // bilinear taps; Sigg and Hadwiger, GPU Gems 2 ch. 20) rather than bilinearly:
 // a box mip chain read bilinearly turns one bright pixel into a square
 // snapped to the coarsest level's grid, off its source's centre.
+#include "../common/bindings.glsl"
 #include "../params/bloom.h"
 
-layout(binding = 0) uniform sampler2D uBright;     // level 0 (when there is no coarser level)
-layout(binding = 1) uniform sampler2D uLevels[6];  // the downsample chain, levels 1..6
+layout(binding = BLOOM_BRIGHT_TEXTURE) uniform sampler2D uBright;     // level 0 (when there is no coarser level)
+layout(binding = BLOOM_LEVELS_TEXTURE) uniform sampler2D uLevels[6];  // the downsample chain, levels 1..6
 
 out vec4 outColor;
 

@@ -2,10 +2,11 @@
 // Dual-filter bloom, upsample (Jimenez 2014): a 3x3 tent of the coarser
 // level added to this level's downsampled image, so each level keeps its own
 // detail and the blur grows level by level.
+#include "../common/bindings.glsl"
 #include "../params/bloom.h"
 
-layout(binding = 0) uniform sampler2D uCoarse;
-layout(binding = 1) uniform sampler2D uSame;
+layout(binding = BLOOM_COARSE_TEXTURE) uniform sampler2D uCoarse;
+layout(binding = BLOOM_SAME_TEXTURE) uniform sampler2D uSame;
 
 out vec4 outColor;
 

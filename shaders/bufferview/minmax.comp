@@ -1,10 +1,11 @@
 #version 450 core
 // Per-channel min and max of the mapped source (auto range of the buffer view).
+#include "../common/bindings.glsl"
 #include "source.glsl"
 
 struct Range { vec4 lo; vec4 hi; };
-layout(std430, binding = 4) readonly buffer RangeIn { Range inData[]; };
-layout(std430, binding = 5) writeonly buffer RangeOut { Range outData[]; };
+layout(std430, binding = BUFFER_VIEW_RANGE_IN_SSBO) readonly buffer RangeIn { Range inData[]; };
+layout(std430, binding = BUFFER_VIEW_RANGE_OUT_SSBO) writeonly buffer RangeOut { Range outData[]; };
 layout(location = 0) uniform int uCount;
 
 #if defined(FIRST_PASS)

@@ -8,6 +8,7 @@
 // SOURCE_MS (multisample), SOURCE_ARRAY (arrays; cubes and cube arrays through
 // a 2D-array view of their faces), SOURCE_3D, SOURCE_BUFFER (an SSBO of 4-byte
 // words); SOURCE_UINT / SOURCE_INT for integer texture formats.
+#include "../common/bindings.glsl"
 #include "../common/gbuffer.glsl"
 
 // The parameter block `view` and the VIEW_* values are declared once, for
@@ -33,7 +34,7 @@
 
 // The texel (x, y) of layer z (array layer, 3D slice, cube-map layer), as shaders see it.
 #if defined(SOURCE_BUFFER)
-layout(std430, binding = 6) readonly buffer SourceWords { uint words[]; };
+layout(std430, binding = BUFFER_VIEW_SOURCE_SSBO) readonly buffer SourceWords { uint words[]; };
 vec4 fetchRaw(ivec3 s) {
     // Per-pixel buffers: element y * width + x; tables: word x of element y.
     int i = (s.y * view.cellSize.x + s.x) * view.wordsPerStep;
@@ -42,7 +43,7 @@ vec4 fetchRaw(ivec3 s) {
     return vec4(view.unsignedWords != 0 ? float(w) : uintBitsToFloat(w), 0.0, 0.0, 1.0);
 }
 #elif defined(SOURCE_MS)
-layout(binding = 0) uniform SAMPLER_MS uSource;
+layout(binding = BUFFER_VIEW_SOURCE_TEXTURE) uniform SAMPLER_MS uSource;
 vec4 fetchRaw(ivec3 s) {
     if (view.sampleIndex >= 0) return vec4(texelFetch(uSource, s.xy, view.sampleIndex));
     vec4 sum = vec4(0.0);
@@ -50,13 +51,13 @@ vec4 fetchRaw(ivec3 s) {
     return sum / float(max(view.samples, 1));
 }
 #elif defined(SOURCE_ARRAY)
-layout(binding = 0) uniform SAMPLER_ARRAY uSource;
+layout(binding = BUFFER_VIEW_SOURCE_TEXTURE) uniform SAMPLER_ARRAY uSource;
 vec4 fetchRaw(ivec3 s) { return vec4(texelFetch(uSource, s, view.mipLevel)); }
 #elif defined(SOURCE_3D)
-layout(binding = 0) uniform SAMPLER_3D uSource;
+layout(binding = BUFFER_VIEW_SOURCE_TEXTURE) uniform SAMPLER_3D uSource;
 vec4 fetchRaw(ivec3 s) { return vec4(texelFetch(uSource, s, view.mipLevel)); }
 #else
-layout(binding = 0) uniform SAMPLER_2D uSource;
+layout(binding = BUFFER_VIEW_SOURCE_TEXTURE) uniform SAMPLER_2D uSource;
 vec4 fetchRaw(ivec3 s) { return vec4(texelFetch(uSource, s.xy, view.mipLevel)); }
 #endif
 

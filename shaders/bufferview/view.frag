@@ -3,11 +3,12 @@
 // manual or automatic range, linear depth, normals as colours, a heat map for
 // counts, and a simple tone map for HDR buffers. Layered, multisample and
 // buffer sources are laid out by source.glsl (grid, cross, table).
+#include "../common/bindings.glsl"
 #include "source.glsl"
 #include "../common/color.glsl"
 
 struct Range { vec4 lo; vec4 hi; };
-layout(std430, binding = 4) readonly buffer AutoRange { Range autoRange[]; };
+layout(std430, binding = BUFFER_VIEW_AUTO_RANGE_SSBO) readonly buffer AutoRange { Range autoRange[]; };
 
 out vec4 outColor;
 

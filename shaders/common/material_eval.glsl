@@ -5,13 +5,14 @@
 // inputs up to the G-buffer's quantisation.
 #ifndef MATERIAL_EVAL_GLSL
 #define MATERIAL_EVAL_GLSL
+#include "bindings.glsl"
 #include "material.glsl"
 
-layout(binding = 0) uniform sampler2D uBaseColorMap;
-layout(binding = 1) uniform sampler2D uNormalMap;
-layout(binding = 2) uniform sampler2D uSpecularMap;
-layout(binding = 3) uniform sampler2D uEmissiveMap;
-layout(binding = 10) uniform sampler2D uOcclusionMap;  // GpuScene::kOcclusionUnit
+layout(binding = MATERIAL_BASE_COLOR_TEXTURE) uniform sampler2D uBaseColorMap;
+layout(binding = MATERIAL_NORMAL_TEXTURE) uniform sampler2D uNormalMap;
+layout(binding = MATERIAL_SPECULAR_TEXTURE) uniform sampler2D uSpecularMap;
+layout(binding = MATERIAL_EMISSIVE_TEXTURE) uniform sampler2D uEmissiveMap;
+layout(binding = MATERIAL_OCCLUSION_TEXTURE) uniform sampler2D uOcclusionMap;  // GpuScene::kOcclusionUnit
 
 struct MaterialSample {
     vec3 normal;  // view space, normal map applied, facing the viewer on double-sided back faces

@@ -6,14 +6,15 @@
 // camera's view space by B P_L V_L V_C^-1, compared with PCF over
 // (2r + 1)^2 hardware-filtered taps. Point lights: a cube map or two
 // paraboloids of linear distance, PCF taps in the receiver's tangent plane.
+#include "bindings.glsl"
 #define SHADOW_NONE 0
 #define SHADOW_2D 1
 #define SHADOW_CUBE 2
 #define SHADOW_PARABOLOID 3
 
-layout(binding = 6) uniform sampler2DArrayShadow uShadow2D;
-layout(binding = 7) uniform samplerCubeArrayShadow uShadowCube;
-layout(binding = 8) uniform sampler2DArrayShadow uShadowParaboloid;
+layout(binding = SHADOW_2D_TEXTURE) uniform sampler2DArrayShadow uShadow2D;
+layout(binding = SHADOW_CUBE_TEXTURE) uniform samplerCubeArrayShadow uShadowCube;
+layout(binding = SHADOW_PARABOLOID_TEXTURE) uniform sampler2DArrayShadow uShadowParaboloid;
 
 // toLight: unit direction from P to the light. range.zw give the constant
 // bias as a distance along it (zw: fixed part, part per unit of distance to

@@ -1,12 +1,13 @@
 #version 450 core
 // Textured mode: the base colour (texture x factor) under a headlight, no
 // deferred lighting. Wireframe mode: the base colour, brightened, on lines.
+#include "../common/bindings.glsl"
 #include "../common/material.glsl"
 #include "../common/color.glsl"
 
 layout(location = 1) uniform int uMaterial;
 layout(location = 2) uniform int uWireframe;
-layout(binding = 0) uniform sampler2D uBaseColorMap;
+layout(binding = MATERIAL_BASE_COLOR_TEXTURE) uniform sampler2D uBaseColorMap;
 
 in vec3 vNormal;
 in vec3 vViewPos;

@@ -2,11 +2,12 @@
 // Decoded G-buffer views, computed only when something asks for them:
 // the view-space normal (KL-decoded) and the view-space position
 // reconstructed from depth. Background pixels are (0, 0, 0, 0); surfaces have w = 1.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 
-layout(binding = 0) uniform sampler2D uNormal;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = GBUFFER_DECODE_NORMAL_TEXTURE) uniform sampler2D uNormal;
+layout(binding = GBUFFER_DECODE_DEPTH_TEXTURE) uniform sampler2D uDepth;
 
 layout(location = 0) out vec4 outNormal;
 layout(location = 1) out vec4 outPosition;

@@ -17,12 +17,13 @@
 // clamped to 1 (a + b + c = 0.9996 + 0.0005 rho: 1 stays 1).
 #ifndef AMBIENT_GLSL
 #define AMBIENT_GLSL
+#include "../common/bindings.glsl"
 #include "gbuffer_read.glsl"
 #include "../params/lighting.h"
 
-layout(binding = 9) uniform sampler2D uSky;                      // when lightingParams.sky != 0
-layout(binding = 11) uniform sampler2D uBakedOcclusion;          // gbuffer.occlusion
-layout(binding = 12) uniform sampler2D uGBufferDirectionalLight;  // when lightingParams.gbufferDirectional != 0
+layout(binding = AMBIENT_SKY_TEXTURE) uniform sampler2D uSky;                      // when lightingParams.sky != 0
+layout(binding = AMBIENT_BAKED_OCCLUSION_TEXTURE) uniform sampler2D uBakedOcclusion;          // gbuffer.occlusion
+layout(binding = AMBIENT_GBUFFER_DIRECTIONAL_TEXTURE) uniform sampler2D uGBufferDirectionalLight;  // when lightingParams.gbufferDirectional != 0
 
 vec3 gtaoMultiBounce(float x, vec3 albedo) {
     vec3 a = 2.0404 * albedo - 0.3324;

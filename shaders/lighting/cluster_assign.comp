@@ -14,6 +14,7 @@
 // driver's iteration limit (renderer/gl/ShaderLoopLimit.h), which a single
 // pass over 32 768 candidates or more exceeded on llvmpipe. The list's
 // capacity is the sum of the ranges' sizes, which no assignment can exceed.
+#include "../common/bindings.glsl"
 #define CLUSTER_GRID_ACCESS restrict
 #define CLUSTER_INDEX_ACCESS coherent
 #include "../common/lighting.glsl"
@@ -37,7 +38,7 @@ layout(std430, binding = CLUSTER_FILL_SSBO) restrict buffer ClusterFill {
 
 // Per candidate: first and last tile across (x), down (y), slice (z), packed lo | hi << 16.
 // (A buffer texture: see CandidateBuffers in renderer/lighting/LightLists.h.)
-layout(binding = CLUSTER_RANGE_UNIT) uniform usamplerBuffer uRanges;
+layout(binding = CLUSTER_RANGE_TEXTURE) uniform usamplerBuffer uRanges;
 
 bool inRange(uint span, int v) {
     return v >= int(span & 0xFFFFu) && v <= int(span >> 16);

@@ -1,13 +1,14 @@
 #version 450 core
 // lighting.cluster_counts: the length of each surface pixel's cluster list
 // (lights with a shadow map included), 0 on the background.
+#include "../common/bindings.glsl"
 #define CLUSTER_GRID_ACCESS readonly
 #define CLUSTER_INDEX_ACCESS readonly
 #include "gbuffer_read.glsl"
 #include "cluster_common.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 2, r32f) uniform restrict writeonly image2D uClusterCounts;
+layout(binding = CLUSTER_COUNTS_IMAGE, r32f) uniform restrict writeonly image2D uClusterCounts;
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);

@@ -12,10 +12,9 @@
 #ifndef FORWARD_ONE_LIGHT
 #define UNSHADOWED
 #endif
+#include "../common/bindings.glsl"
 #include "shade.glsl"
 #include "../common/material_eval.glsl"
-
-#define FORWARD_LIGHTS_SSBO 4
 
 layout(location = 1) uniform int uMaterial;
 #ifdef FORWARD_ONE_LIGHT

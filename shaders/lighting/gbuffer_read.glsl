@@ -1,13 +1,14 @@
 // Reads and decodes the G-buffer at a pixel, for the lighting passes.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 
-layout(binding = 0) uniform sampler2D uAlbedo;
-layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uSpecular;
-layout(binding = 3) uniform sampler2D uEmissive;
-layout(binding = 4) uniform sampler2D uDepth;
-layout(binding = 5) uniform sampler2D uOcclusion;
+layout(binding = GBUFFER_ALBEDO_TEXTURE) uniform sampler2D uAlbedo;
+layout(binding = GBUFFER_NORMAL_TEXTURE) uniform sampler2D uNormal;
+layout(binding = GBUFFER_SPECULAR_TEXTURE) uniform sampler2D uSpecular;
+layout(binding = GBUFFER_EMISSIVE_TEXTURE) uniform sampler2D uEmissive;
+layout(binding = GBUFFER_DEPTH_TEXTURE) uniform sampler2D uDepth;
+layout(binding = LIGHTING_OCCLUSION_TEXTURE) uniform sampler2D uOcclusion;
 
 struct Surface {
     float depth;

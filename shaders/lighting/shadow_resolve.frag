@@ -2,7 +2,8 @@
 // lighting.shadow = lit / unshadowed luminance of the shadow-mapped lights
 // (shadow_sums.frag); 1 where none reaches the pixel and on the sky, as the
 // reference's shadow buffer.
-layout(binding = 0) uniform sampler2D uSums;
+#include "../common/bindings.glsl"
+layout(binding = SHADOW_SUMS_TEXTURE) uniform sampler2D uSums;
 layout(location = 0) out float outShadow;
 
 void main() {

@@ -43,6 +43,7 @@
 // again for the next ones) and is walked in candidate order, so the sum is
 // the same every frame whatever the threads' timing.
 // Shaded lights never have a shadow map (those go one at a time).
+#include "../common/bindings.glsl"
 #define UNSHADOWED 1
 #include "shade.glsl"
 #include "ambient.glsl"
@@ -53,9 +54,9 @@
 #endif
 layout(local_size_x = TILE_THREADS) in;
 
-layout(binding = 0, rgba32f) uniform restrict image2D uLBuffer;
-layout(binding = 1, r32f) uniform restrict image2D uOverlap;     // when FLAG_COUNT_OVERLAP
-layout(binding = 2, r32f) uniform restrict image2D uTileCounts;  // when FLAG_TILE_COUNTS
+layout(binding = TILED_LBUFFER_IMAGE, rgba32f) uniform restrict image2D uLBuffer;
+layout(binding = TILED_OVERLAP_IMAGE, r32f) uniform restrict image2D uOverlap;     // when FLAG_COUNT_OVERLAP
+layout(binding = TILED_COUNTS_IMAGE, r32f) uniform restrict image2D uTileCounts;  // when FLAG_TILE_COUNTS
 
 #ifdef COARSE
 // The coarse tiles' candidate masks, written by tiled_coarse.comp just before.

@@ -10,16 +10,7 @@
 #define TILES_GLSL
 #include "../common/camera.glsl"
 #include "../common/lighting.glsl"
-
-// Shader storage bindings of the tiled and clustered strategies (mirrored by
-// renderer/lighting/LightLists.h).
-#define LIGHT_CANDIDATES_SSBO 4
-#define CLUSTER_GRID_SSBO 5
-#define CLUSTER_INDEX_SSBO 6
-#define TILE_COARSE_MASK_SSBO 7
-#define CLUSTER_FILL_SSBO 3
-#define CLUSTER_RANGE_UNIT 14
-#define CANDIDATE_DATA_UNIT 13
+#include "../common/bindings.glsl"
 
 // The lights a tile or cluster may take: rows of the light table. The first
 // `shaded` of them are shaded by the grid, the rest (lights with a shadow map,
@@ -32,7 +23,7 @@ layout(std430, binding = LIGHT_CANDIDATES_SSBO) readonly buffer LightCandidates 
 // positionRadius, directionCutoff (a spot light's; (0, 0, 0, -1) for the
 // others), intensityExponent, attenuation (see CandidateBuffers in
 // renderer/lighting/LightLists.h for why texels).
-layout(binding = CANDIDATE_DATA_UNIT) uniform samplerBuffer uCandidateData;
+layout(binding = LIGHT_CANDIDATE_DATA_TEXTURE) uniform samplerBuffer uCandidateData;
 
 vec4 candidatePositionRadius(int i) { return texelFetch(uCandidateData, 4 * i); }
 // Candidate i's direction and cos(cutoff): a spot light's, and (0, 0, 0, -1)

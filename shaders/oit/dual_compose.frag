@@ -5,8 +5,9 @@
 // T *= 1 - a) and its farthest layer over the back layers so far
 // (attachment 1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA / GL_ZERO,
 // GL_ONE_MINUS_SRC_ALPHA: C = c + (1 - a) C, T *= 1 - a).
-layout(binding = 13) uniform sampler2D uFrontLayer;
-layout(binding = 14) uniform sampler2D uBackLayer;
+#include "../common/bindings.glsl"
+layout(binding = OIT_FRONT_LAYER_TEXTURE) uniform sampler2D uFrontLayer;
+layout(binding = OIT_BACK_LAYER_TEXTURE) uniform sampler2D uBackLayer;
 
 layout(location = 0) out vec4 outFront;
 layout(location = 1) out vec4 outBack;

@@ -4,11 +4,12 @@
 // blend (GL_DST_ALPHA, GL_ONE) for colour and (GL_ZERO,
 // GL_ONE_MINUS_SRC_ALPHA) for alpha, writing the layer's premultiplied
 // (c, a) gives C += T c and T *= 1 - a. Counts the pixel's peeled layers.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 
-layout(binding = 13) uniform sampler2D uLayerColor;
-layout(binding = 14) uniform sampler2D uLayerDepth;
-layout(binding = 3, r32ui) uniform uimage2D uLayers;  // oit.peel_layers
+layout(binding = OIT_LAYER_COLOR_TEXTURE) uniform sampler2D uLayerColor;
+layout(binding = OIT_LAYER_DEPTH_TEXTURE) uniform sampler2D uLayerDepth;
+layout(binding = OIT_PEEL_LAYERS_IMAGE, r32ui) uniform uimage2D uLayers;  // oit.peel_layers
 
 layout(location = 0) out vec4 outColor;
 

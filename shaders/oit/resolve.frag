@@ -14,15 +14,16 @@
 //   RESOLVE_DUAL: dual depth peeling's front layers over its back layers;
 //   RESOLVE_PEEL: the layers depth peeling accumulated front to back;
 //     the fragments past the peeled layers counted into oit.overflow.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../params/oit.h"
 
 layout(location = 0) out vec4 outColor;
-layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
-layout(binding = 2, r32ui) uniform coherent uimage2D uLost;           // oit.overflow
+layout(binding = OIT_FRAGMENT_COUNT_IMAGE, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
+layout(binding = OIT_OVERFLOW_IMAGE, r32ui) uniform coherent uimage2D uLost;           // oit.overflow
 // The frame's fragments lost and arrived, summed over the pixels: the pass
 // reads them back for its one-line warning (OitPass::frameWarning).
-layout(std430, binding = 7) buffer LostTotal { uint lostTotal; uint arrivedTotal; };
+layout(std430, binding = OIT_LOST_TOTAL_SSBO) buffer LostTotal { uint lostTotal; uint arrivedTotal; };
 
 // Stores a pixel's lost fragments into oit.overflow and adds them to the totals.
 void countLost(ivec2 px, uint arrived, uint lost) {
@@ -34,21 +35,21 @@ void countLost(ivec2 px, uint arrived, uint lost) {
 bool farther(float a, float b) { return depthReversed() ? a < b : a > b; }
 
 #if defined(RESOLVE_ABUFFER)
-layout(binding = 13) uniform sampler2DMS uSamples;
-layout(binding = 14) uniform sampler2DMS uSampleDepth;
+layout(binding = OIT_SAMPLES_TEXTURE) uniform sampler2DMS uSamples;
+layout(binding = OIT_SAMPLE_DEPTH_TEXTURE) uniform sampler2DMS uSampleDepth;
 #elif defined(RESOLVE_LIST)
-layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
-layout(std430, binding = 5) readonly buffer ListNodes { uint nodeWords[]; };  // OIT_LIST_NODE_WORDS a node
+layout(binding = OIT_LIST_HEADS_IMAGE, r32ui) uniform coherent uimage2D uHeads;
+layout(std430, binding = OIT_LIST_NODES_SSBO) readonly buffer ListNodes { uint nodeWords[]; };  // OIT_LIST_NODE_WORDS a node
 #elif defined(RESOLVE_WEIGHTED)
-layout(binding = 13) uniform sampler2D uAccum;
-layout(binding = 14) uniform sampler2D uRevealage;
+layout(binding = OIT_ACCUM_TEXTURE) uniform sampler2D uAccum;
+layout(binding = OIT_REVEALAGE_TEXTURE) uniform sampler2D uRevealage;
 #elif defined(RESOLVE_PEEL)
-layout(binding = 13) uniform sampler2D uPeelAccum;  // (C, T) front to back
-layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;  // oit.peel_layers
+layout(binding = OIT_PEEL_ACCUM_TEXTURE) uniform sampler2D uPeelAccum;  // (C, T) front to back
+layout(binding = OIT_PEEL_LAYERS_IMAGE, r32ui) uniform coherent uimage2D uLayers;  // oit.peel_layers
 #elif defined(RESOLVE_DUAL)
-layout(binding = 13) uniform sampler2D uFrontAccum;  // (C, T) of the front layers, front to back
-layout(binding = 14) uniform sampler2D uBackAccum;   // (C, T) of the back layers, back to front
-layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
+layout(binding = OIT_FRONT_ACCUM_TEXTURE) uniform sampler2D uFrontAccum;  // (C, T) of the front layers, front to back
+layout(binding = OIT_BACK_ACCUM_TEXTURE) uniform sampler2D uBackAccum;   // (C, T) of the back layers, back to front
+layout(binding = OIT_PEEL_LAYERS_IMAGE, r32ui) uniform coherent uimage2D uLayers;
 #endif
 
 void main() {

@@ -20,6 +20,7 @@
 #ifndef OIT_SHADOWED
 #define UNSHADOWED
 #endif
+#include "../common/bindings.glsl"
 #include "../lighting/shade.glsl"
 #include "../common/material_eval.glsl"
 #include "../params/oit.h"
@@ -34,25 +35,25 @@ in VertexData {
     vec4 color;
 } fs;
 
-layout(binding = 0, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
+layout(binding = OIT_FRAGMENT_COUNT_IMAGE, r32ui) uniform coherent uimage2D uFragmentCount;  // oit.sample_count
 #if defined(METHOD_LIST)
-layout(binding = 1, r32ui) uniform coherent uimage2D uHeads;
+layout(binding = OIT_LIST_HEADS_IMAGE, r32ui) uniform coherent uimage2D uHeads;
 // OIT_LIST_NODE_WORDS words a node: premultiplied RGBA (32-bit floats), window depth, next + 1.
-layout(std430, binding = 5) buffer ListNodes { uint nodeWords[]; };
-layout(std430, binding = 6) buffer ListCounter { uint usedNodes; };
+layout(std430, binding = OIT_LIST_NODES_SSBO) buffer ListNodes { uint nodeWords[]; };
+layout(std430, binding = OIT_LIST_COUNTER_SSBO) buffer ListCounter { uint usedNodes; };
 #elif defined(METHOD_WEIGHTED)
 layout(location = 0) out vec4 outAccum;
 layout(location = 1) out vec4 outRevealage;
 #elif defined(METHOD_PEEL)
-layout(binding = 13) uniform sampler2D uPrevDepth;
+layout(binding = OIT_PREVIOUS_DEPTH_TEXTURE) uniform sampler2D uPrevDepth;
 layout(location = 0) out vec4 outColor;
 #elif defined(METHOD_DUAL_INIT)
 layout(location = 0) out vec2 outDepth;
 #elif defined(METHOD_DUAL)
-layout(binding = 13) uniform sampler2D uPrevDepth;  // (-nearest, farthest) left, as farness
-layout(binding = 3, r32ui) uniform coherent uimage2D uLayers;
+layout(binding = OIT_PREVIOUS_DEPTH_TEXTURE) uniform sampler2D uPrevDepth;  // (-nearest, farthest) left, as farness
+layout(binding = OIT_PEEL_LAYERS_IMAGE, r32ui) uniform coherent uimage2D uLayers;
 // This pass's claims: bit 0 the nearest layer taken, bit 1 the farthest.
-layout(binding = 4, r32ui) uniform coherent uimage2D uClaims;
+layout(binding = OIT_DUAL_CLAIMS_IMAGE, r32ui) uniform coherent uimage2D uClaims;
 layout(location = 0) out vec2 outDepth;
 layout(location = 1) out vec4 outFront;
 layout(location = 2) out vec4 outBack;

@@ -90,7 +90,7 @@
         DW_PARAM_CPP_MEMBERS(Block, FIELDS)                      \
         static constexpr const char* kBlockName = #Block;        \
         static constexpr const char* kInstanceName = #instance;  \
-        static constexpr unsigned kBinding = bindingPoint;       \
+        static constexpr unsigned kBinding = ::dw::binding::bindingPoint;       \
     };                                                           \
     DW_PARAM_CPP_PLAIN(Block)                                    \
     }

@@ -33,12 +33,13 @@
 // and is composited over the background layer with alpha.
 // The image is the tone mapper's 8-bit output; with srgbInput set it is
 // sRGB-encoded, and both layers average linear light, then re-encode.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/color.glsl"
 #include "../params/dof.h"
 
-layout(binding = 0) uniform sampler2D uImage;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = DOF_IMAGE_TEXTURE) uniform sampler2D uImage;
+layout(binding = DOF_DEPTH_TEXTURE) uniform sampler2D uDepth;
 
 layout(location = 0) out vec4 outColor;
 

@@ -5,9 +5,10 @@
 // vertically, search along it in both directions for its ends, and shift the
 // sample across the edge in proportion to how far the pixel is from the
 // nearer end; blend in a sub-pixel low-pass for single-pixel features.
+#include "../common/bindings.glsl"
 #include "../params/fxaa.h"
 
-layout(binding = 0) uniform sampler2D uImage;
+layout(binding = FXAA_IMAGE_TEXTURE) uniform sampler2D uImage;
 
 out vec4 outColor;
 

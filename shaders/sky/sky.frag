@@ -3,12 +3,13 @@
 // background, seed 000 section 5.2): a procedural gradient with a sun disc,
 // or an environment map (equirectangular or cube) rotated about +Y. Covered
 // pixels get 0; the lighting pass writes the sky where the G-buffer is empty.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../params/sky.h"
 
-layout(binding = 0) uniform sampler2D uDepth;
-layout(binding = 1) uniform sampler2D uEquirect;
-layout(binding = 2) uniform samplerCube uCube;
+layout(binding = SKY_DEPTH_TEXTURE) uniform sampler2D uDepth;
+layout(binding = SKY_EQUIRECT_TEXTURE) uniform sampler2D uEquirect;
+layout(binding = SKY_CUBE_TEXTURE) uniform samplerCube uCube;
 
 out vec4 outColor;
 

@@ -3,11 +3,12 @@
 // 5.2). Gaussian weights, multiplied in the cross-bilateral mode by
 // w = 1 / (delta + |d_center - d_current|) on linear depth (eq. 4.7), and
 // renormalised so the weights sum to 1. One direction per draw.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../params/ssao_blur.h"
 
-layout(binding = 0) uniform sampler2D uAo;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = AO_FILTER_SOURCE_TEXTURE) uniform sampler2D uAo;
+layout(binding = AO_FILTER_DEPTH_TEXTURE) uniform sampler2D uDepth;
 
 out float outOcclusion;
 

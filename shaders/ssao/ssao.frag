@@ -7,13 +7,14 @@
 // 1 / (1 + d^2) (eq. 4.6) and a range check against depth discontinuities.
 // Runs at the AO resolution; reads the full-resolution G-buffer (its depth
 // with linear filtering, see below).
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/gbuffer.glsl"
 #include "../params/ssao.h"
 
-layout(binding = 0) uniform sampler2D uDepth;
-layout(binding = 1) uniform sampler2D uNormal;
-layout(binding = 2) uniform sampler2D uNoise;   // random unit vectors, SSAO_NOISE_SIZE^2, repeated
+layout(binding = SSAO_DEPTH_TEXTURE) uniform sampler2D uDepth;
+layout(binding = SSAO_NORMAL_TEXTURE) uniform sampler2D uNormal;
+layout(binding = SSAO_NOISE_TEXTURE) uniform sampler2D uNoise;   // random unit vectors, SSAO_NOISE_SIZE^2, repeated
 
 out float outOcclusion;
 

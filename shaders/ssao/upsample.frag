@@ -2,11 +2,12 @@
 // Depth-aware upsampling of a reduced-resolution AO buffer to full
 // resolution: the four nearest AO texels, weighted bilinearly and by
 // 1 / (delta + |z_full - z_ao|), so occlusion does not bleed across depth edges.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../params/ssao_blur.h"
 
-layout(binding = 0) uniform sampler2D uAo;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = AO_FILTER_SOURCE_TEXTURE) uniform sampler2D uAo;
+layout(binding = AO_FILTER_DEPTH_TEXTURE) uniform sampler2D uDepth;
 
 out float outOcclusion;
 

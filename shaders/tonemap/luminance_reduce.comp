@@ -6,18 +6,19 @@
 // with no pixel counted, or all of them black, the log-average is 1.
 // Non-finite pixels are left out and do not poison the statistics; so are
 // background pixels when luminance.background = exclude.
+#include "../common/bindings.glsl"
 #include "../common/camera.glsl"
 #include "../common/color.glsl"
 #include "../params/luminance.h"
 
-layout(std430, binding = 4) readonly buffer ReduceIn { vec4 inData[]; };
-layout(std430, binding = 5) writeonly buffer ReduceOut { vec4 outData[]; };
+layout(std430, binding = LUMINANCE_REDUCE_IN_SSBO) readonly buffer ReduceIn { vec4 inData[]; };
+layout(std430, binding = LUMINANCE_REDUCE_OUT_SSBO) writeonly buffer ReduceOut { vec4 outData[]; };
 
 vec4 combine(vec4 a, vec4 b) { return vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w); }
 
 #if defined(FINALIZE)
 layout(local_size_x = 1) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D uStats;
+layout(rgba32f, binding = LUMINANCE_STATS_IMAGE) uniform writeonly image2D uStats;
 void main() {
     vec4 s = inData[0];
     // Statistics of nothing: no pixel counted, or every counted pixel black.
@@ -32,8 +33,8 @@ void main() {
 #else
 #if defined(FIRST_PASS)
 layout(local_size_x = LUMINANCE_TILE, local_size_y = LUMINANCE_TILE) in;
-layout(binding = 0) uniform sampler2D uHdr;
-layout(binding = 1) uniform sampler2D uDepth;
+layout(binding = LUMINANCE_HDR_TEXTURE) uniform sampler2D uHdr;
+layout(binding = LUMINANCE_DEPTH_TEXTURE) uniform sampler2D uDepth;
 #else
 layout(local_size_x = LUMINANCE_GROUP) in;
 #endif

@@ -11,12 +11,13 @@
 //   clamp:    exposure only
 // Luminance operators rescale RGB by L_d / L_w, which keeps chromaticity
 // (the seed maps Y in XYZ). A guard replaces NaN and infinity first.
+#include "../common/bindings.glsl"
 #include "../common/color.glsl"
 #include "../params/tonemap.h"
 
-layout(binding = 0) uniform sampler2D uHdr;
-layout(binding = 1) uniform sampler2D uStats;
-layout(binding = 2) uniform sampler2D uBloom;
+layout(binding = TONEMAP_HDR_TEXTURE) uniform sampler2D uHdr;
+layout(binding = TONEMAP_STATS_TEXTURE) uniform sampler2D uStats;
+layout(binding = TONEMAP_BLOOM_TEXTURE) uniform sampler2D uBloom;
 
 in vec2 vUv;
 out vec4 outColor;

@@ -51,13 +51,11 @@ BlockInfo describe() {
     return {Block::kBlockName, sizeof(Block), Block::kBinding, Block::fields()};
 }
 
-// The binding names of shaders/common/bindings.glsl, which the blocks'
-// bindings come from, are dw::binding's.
-static_assert(CAMERA_UBO == binding::kCameraUbo && PASS_UBO == binding::kPassUbo &&
-              MATERIAL_SSBO == binding::kMaterialSsbo && LIGHT_SSBO == binding::kLightSsbo);
-static_assert(gpu::CameraBlock::kBinding == binding::kCameraUbo &&
-              gpu::SsaoParams::kBinding == binding::kPassUbo &&
-              gpu::BufferViewParams::kBinding == binding::kPassUbo);
+// The blocks' bindings are named in shaders/common/bindings.glsl, dw::binding
+// in C++ (tests/gl/BindingsTest.cpp checks every other binding point).
+static_assert(gpu::CameraBlock::kBinding == binding::CAMERA_UBO &&
+              gpu::SsaoParams::kBinding == binding::PASS_UBO &&
+              gpu::BufferViewParams::kBinding == binding::PASS_UBO);
 
 // Every parameter block in shaders/params. A new header adds a line here.
 std::vector<BlockInfo> allBlocks() {
@@ -68,21 +66,6 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
             describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
             describe<gpu::GtaoParams>(),      describe<gpu::AovParams>()};
-}
-
-// Builds every variant of the buffer view's programs (BufferView compiles
-// one per source kind and value type when first needed), so the layout test
-// sees them all.
-void buildBufferViewVariants(gl::ShaderLibrary& shaders) {
-    for (const char* source : {"", "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"})
-        for (const char* type : {"", "SOURCE_UINT", "SOURCE_INT"}) {
-            std::vector<std::string> defines;
-            for (const char* d : {source, type})
-                if (*d) defines.push_back(d);
-            shaders.get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag", .defines = defines});
-            defines.insert(defines.begin(), "FIRST_PASS");
-            shaders.get({.compute = "bufferview/minmax.comp", .defines = defines});
-        }
 }
 
 GLenum glType(const std::string& glsl) {
@@ -148,7 +131,7 @@ std::string joined(const std::vector<std::string>& lines) {
 
 TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
     auto s = test::makeSession(64, 36);
-    buildBufferViewVariants(s->shaders());
+    test::buildBufferViewVariants(s->shaders());
     const std::vector<BlockInfo> blocks = allBlocks();
     std::map<std::string, int> programsWithBlock;
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs()) {

@@ -132,7 +132,7 @@ FloatImage blurStep(const std::string& mode, int aoDivisor) {
     outputs.bind("gbuffer.depth", &depthTex, 1);
 
     gl::Buffer camera = gl::Buffer::create(sizeof(CameraUniforms), &cu, false);
-    camera.bindBase(GL_UNIFORM_BUFFER, binding::kCameraUbo);
+    camera.bindBase(GL_UNIFORM_BUFFER, binding::CAMERA_UBO);
     Scene scene;
     GpuScene gpu;
     FrameContext ctx{scene, gpu, knobs, outputs, shaders, cu, W, H, 0, {}, nullptr};

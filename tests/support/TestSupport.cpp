@@ -277,4 +277,16 @@ glm::dvec3 referenceRadiance(const std::vector<Light>& lights, const glm::dmat4&
     return sum;
 }
 
+void buildBufferViewVariants(gl::ShaderLibrary& shaders) {
+    for (const char* source : {"", "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"})
+        for (const char* type : {"", "SOURCE_UINT", "SOURCE_INT"}) {
+            std::vector<std::string> defines;
+            for (const char* d : {source, type})
+                if (*d) defines.push_back(d);
+            shaders.get({.vertex = "fullscreen.vert", .fragment = "bufferview/view.frag", .defines = defines});
+            defines.insert(defines.begin(), "FIRST_PASS");
+            shaders.get({.compute = "bufferview/minmax.comp", .defines = defines});
+        }
+}
+
 }  // namespace dw::test

@@ -17,6 +17,10 @@ namespace dw::test {
 void initGl();
 // A session with the project's shaders, at `width` x `height`.
 std::unique_ptr<RenderSession> makeSession(int width, int height);
+// Builds every variant of the buffer view's programs (BufferView compiles
+// one per source kind and value type when first needed), so the tests that
+// go through every program (ParamBlocks, Bindings) see them all.
+void buildBufferViewVariants(gl::ShaderLibrary& shaders);
 
 // A large matte plane at y = 0 seen from above and in front, no lights.
 Scene planeScene(float size = 40.0f);
