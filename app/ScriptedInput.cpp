@@ -171,6 +171,11 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
         } else if (what == "type" || what == "drop") {
             const std::string rest = restOfLine(words);
             if (rest.empty()) throw bad(what + (what == "type" ? " takes the text to type" : " takes a file path"));
+            // A person types a line at a time: a line of megabytes became
+            // gigabytes of queued key events (10 MB: 1.15 GB resident).
+            if (rest.size() > kMaxTypedBytes)
+                throw bad(what + " takes at most " + std::to_string(kMaxTypedBytes) + " bytes on a line, got " +
+                          std::to_string(rest.size()));
             if (what == "type") in.text = decodeUtf8(rest);
             else in.drops.push_back(rest);
             add(frame, in);

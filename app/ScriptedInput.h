@@ -11,7 +11,8 @@
 //   <frame> key NAME              press and release a key: a-z, 0-9, F1-F12, Escape, Enter,
 //                                 Space, Tab, Backspace, Delete, Home, End, Left, Right, Up,
 //                                 Down, PageUp, PageDown; with modifiers: ctrl+a, shift+Tab
-//   <frame> type TEXT             type the rest of the line (keys and characters, as a keyboard would)
+//   <frame> type TEXT             type the rest of the line (keys and characters, as a keyboard would;
+//                                 at most kMaxTypedBytes, as a drop's path)
 //   <frame> drop PATH             drop the file at PATH (the rest of the line) on the window
 //   <frame> resize W H            the window to W x H pixels
 //   <frame> ctrl down|up          hold or release Ctrl (zoom and pan in an image view)
@@ -23,11 +24,16 @@
 // ImGui over frames exactly as a fast typist's would be.
 #include <GLFW/glfw3.h>
 
+#include <cstddef>
+
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace dw {
+
+// The most a `type` or `drop` line may hold (bytes after the action).
+constexpr std::size_t kMaxTypedBytes = 4096;
 
 struct ScriptedFrameInput {
     std::optional<float> mouseX, mouseY;  // where the mouse is from this frame on

@@ -81,8 +81,8 @@ void DepthPeelingOit::render(OitFrame& f) {
     ctx.texture("oit.peel_accum").bind(binding::OIT_PEEL_ACCUM_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     lossCause_ = "depth_peeling peels " + std::to_string(layers) +
-                 " layers (oit.peel_layers); a fragment behind them, or at exactly the depth of one peeled, is lost";
-    stats_ = std::to_string(layers) + " layers peeled (" + std::to_string(layers) + " geometry passes); memory " +
+                 (layers == 1 ? " layer" : " layers") + " (oit.peel_layers); a fragment behind them, or at exactly the depth of one peeled, is lost";
+    stats_ = std::to_string(layers) + (layers == 1 ? " layer" : " layers") + " peeled (" + std::to_string(layers) + " geometry passes); memory " +
              mebibytes(allocatedBytes(ctx, {"oit.peel_color", "oit.peel_depth", "oit.peel_prev_depth", "oit.peel_accum",
                                             "oit.peel_count", "oit.sample_count", "oit.overflow"}));
 }

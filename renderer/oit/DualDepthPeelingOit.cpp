@@ -101,8 +101,8 @@ void DualDepthPeelingOit::render(OitFrame& f) {
     ctx.texture("oit.dual_back_accum").bind(binding::OIT_BACK_ACCUM_TEXTURE);
     f.compositeOverLBuffer(*resolve_);
     lossCause_ = "dual_depth_peeling peels " + std::to_string(layers) +
-                 " layers (oit.peel_layers); a fragment between them, or at exactly the depth of one peeled, is lost";
-    stats_ = std::to_string(layers) + " layers in " + std::to_string(passes + 1) + " geometry passes; memory " +
+                 (layers == 1 ? " layer" : " layers") + " (oit.peel_layers); a fragment between them, or at exactly the depth of one peeled, is lost";
+    stats_ = std::to_string(layers) + (layers == 1 ? " layer" : " layers") + " in " + std::to_string(passes + 1) + " geometry passes; memory " +
              mebibytes(allocatedBytes(ctx, {"oit.dual_depth", "oit.dual_prev_depth", "oit.dual_front", "oit.dual_back",
                                             "oit.dual_front_accum", "oit.dual_back_accum", "oit.dual_count", "oit.dual_claims",
                                             "oit.sample_count", "oit.overflow"}));

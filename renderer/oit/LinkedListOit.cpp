@@ -86,7 +86,9 @@ void LinkedListOit::render(OitFrame& f) {
     lossCause_ = (taken > budget ? std::to_string(taken - budget) + " over oit.list_nodes = " + std::to_string(budget) + "; "
                                  : std::string()) +
                  "linked_list keeps the " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " nearest per pixel" +
-                 (walk > 0 ? " of the first " + std::to_string(walk) + " it walks (this driver's loop limit)" : "");
+                 (walk > 0 ? " of the first " + std::to_string(walk) +
+                                " it walks (this driver's loop limit; a nearer one past them is lost too)"
+                          : "");
     stats_ = std::to_string(used) + " of " + std::to_string(budget) + " nodes" +
              (taken > budget ? ", " + std::to_string(taken - budget) + " fragments over the budget (oit.overflow)" : "") +
              "; resolve sorts up to " + std::to_string(gpu::OIT_LIST_MAX_FRAGMENTS) + " per pixel" +

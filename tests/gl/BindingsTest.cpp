@@ -214,8 +214,11 @@ TEST(Bindings, EveryProgramsBindingPointsAreTheNamesItDeclares) {
     EXPECT_GT(programs, 50);
     // The reflection sees an array's length: bloom's levels take units 1 to 6.
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs())
-        for (const Resource& r : e->program.resourceBindings())
-            if (r.name == "uLevels") EXPECT_EQ(r.count, 6) << describeProgram(e->desc);
+        for (const Resource& r : e->program.resourceBindings()) {
+            if (r.name == "uLevels") {
+                EXPECT_EQ(r.count, 6) << describeProgram(e->desc);
+            }
+        }
     // Every name is some program's: the enumeration above reaches every
     // program, and the header names no point nothing uses.
     for (const binding::Named& n : binding::kAll) EXPECT_TRUE(used.count(n.name)) << "no program uses " << n.name;

@@ -189,4 +189,14 @@ TEST(ScriptedInput, ParsesActionsIntoFramesAndNamesTheLineOfABadOne) {
     }
     EXPECT_THROW(ScriptedInput::parse("1 key Hyper\n", "e"), UsageError);
     EXPECT_THROW(ScriptedInput::parse("1 resize 10 10\n", "e"), UsageError);
+    // A line a person could type, not megabytes of queued keys.
+    EXPECT_EQ(ScriptedInput::parse("1 type " + std::string(kMaxTypedBytes, 'x') + "\n", "e").at(1).text.size(),
+              kMaxTypedBytes);
+    try {
+        ScriptedInput::parse("1 type " + std::string(10 << 20, 'x') + "\n", "e");
+        FAIL() << "a 10 MB type line was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("type takes at most 4096 bytes on a line, got 10485760"), std::string::npos)
+            << std::string(e.what()).substr(0, 200);
+    }
 }
