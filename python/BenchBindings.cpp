@@ -54,9 +54,7 @@ py::object bench(const std::string& scene, const py::object& sizesObject, const 
     requirePath(recordFile, "bench: record");
     json = recordPath("bench", json, recordFile);
     BenchOptions o;
-    o.run.scene = scene;
-    for (const auto& p : presetList(preset)) o.run.addPreset(p);
-    o.run.sets = assignments(settings);
+    applyRunArguments(o.run, scene, preset, settings);
     o.grid.sizes = benchSizes(sizesObject);
     o.grid.lights = benchLights(lightsObject);
     o.grid.knobAxes = sweepAxes("bench", sweep);

@@ -50,6 +50,13 @@ std::vector<std::string> assignments(const std::optional<py::dict>& settings) {
     return sets;
 }
 
+void applyRunArguments(RunConfig& run, const std::string& scene, const py::object& preset,
+                       const std::optional<py::dict>& settings) {
+    run.scene = scene;
+    for (const auto& p : presetList(preset)) run.addPreset(p);
+    run.sets = assignments(settings);
+}
+
 std::vector<BenchKnobAxis> sweepAxes(const std::string& command, const std::optional<py::dict>& sweep) {
     std::vector<BenchKnobAxis> axes;
     if (!sweep) return axes;

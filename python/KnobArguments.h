@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/RunConfig.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/knobs/KnobRegistry.h"
 
@@ -26,6 +27,11 @@ std::vector<std::string> presetList(const pybind11::object& preset);
 
 // {knob: value} as --set assignments.
 std::vector<std::string> assignments(const std::optional<pybind11::dict>& settings);
+
+// bench's and tradeoff's scene=, preset= and settings= into `run`, as
+// --scene, --preset and --set give them (its other fields are left as they are).
+void applyRunArguments(RunConfig& run, const std::string& scene, const pybind11::object& preset,
+                       const std::optional<pybind11::dict>& settings);
 
 // A sweep {knob: [values]} as bench's and tradeoff's axes, each value as
 // --sweep writes it; `command` names the function in the messages. As the

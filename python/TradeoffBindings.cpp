@@ -247,9 +247,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     requirePath(recordFile, "tradeoff: record");
     json = recordPath("tradeoff", json, recordFile);
     TradeoffStudyOptions s;
-    s.run.scene = scene;
-    for (const auto& p : presetList(preset)) s.run.addPreset(p);
-    s.run.sets = assignments(settings);
+    applyRunArguments(s.run, scene, preset, settings);
     std::tie(s.run.width, s.run.height) = sizeArg(size, "tradeoff: size", limits::kSize, "tradeoff --size");
     s.knobs = knobs.value_or("");
     s.against = against;

@@ -136,17 +136,6 @@ std::vector<std::string> problems(const gl::Program& program, const Declarations
     return out;
 }
 
-std::string describeProgram(const gl::ProgramDesc& d) {
-    std::string s = d.vertex + " " + d.geometry + " " + d.fragment + " " + d.compute;
-    for (const auto& def : d.defines) s += " -D" + def;
-    return s;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string s;
-    for (const auto& l : lines) s += "\n  " + l;
-    return s;
-}
 
 // Renders, and asks for `outputs` one at a time where a frame produces them.
 void renderOutputs(RenderSession& s, const std::vector<std::string>& outputs) {
@@ -209,14 +198,14 @@ TEST(Bindings, EveryProgramsBindingPointsAreTheNamesItDeclares) {
             for (const auto& [name, bindings] : perFile[f]) declared[name].insert(bindings.begin(), bindings.end());
         }
         const auto p = problems(e->program, declared, &used);
-        EXPECT_TRUE(p.empty()) << describeProgram(e->desc) << joined(p);
+        EXPECT_TRUE(p.empty()) << test::describeProgram(e->desc) << test::indentedLines(p);
     }
     EXPECT_GT(programs, 50);
     // The reflection sees an array's length: bloom's levels take units 1 to 6.
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs())
         for (const Resource& r : e->program.resourceBindings()) {
             if (r.name == "uLevels") {
-                EXPECT_EQ(r.count, 6) << describeProgram(e->desc);
+                EXPECT_EQ(r.count, 6) << test::describeProgram(e->desc);
             }
         }
     // Every name is some program's: the enumeration above reaches every
@@ -242,7 +231,7 @@ TEST(Bindings, TheCheckCatchesALiteralAClashAndAWrongName) {
          {GL_FRAGMENT_SHADER, gl::ShaderSource::fromString(s->shaders().root(), "t.frag", frag, {})}});
     Declarations declared;
     addDeclarations(frag, declared);
-    const std::string p = joined(problems(program, declared));
+    const std::string p = test::indentedLines(problems(program, declared));
     EXPECT_NE(p.find("uLiteral: at '3', not a name"), std::string::npos) << p;
     EXPECT_NE(p.find("uClash and uOther share texture unit 2"), std::string::npos) << p;
     EXPECT_NE(p.find("WrongKind: at CAMERA_UBO, a uniform block, but it takes a storage block"), std::string::npos) << p;

@@ -115,17 +115,6 @@ std::vector<std::string> mismatches(const BlockInfo& b, const gl::UniformBlockLa
     return out;
 }
 
-std::string describeProgram(const gl::ProgramDesc& d) {
-    std::string s = d.vertex + " " + d.fragment + " " + d.compute;
-    for (const auto& def : d.defines) s += " -D" + def;
-    return s;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string s;
-    for (const auto& l : lines) s += "\n  " + l;
-    return s;
-}
 
 }  // namespace
 
@@ -135,7 +124,7 @@ TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
     const std::vector<BlockInfo> blocks = allBlocks();
     std::map<std::string, int> programsWithBlock;
     for (const gl::ShaderLibrary::Entry* e : s->shaders().programs()) {
-        const std::string where = describeProgram(e->desc);
+        const std::string where = test::describeProgram(e->desc);
         for (const std::string& name : e->program.uniformBlockNames()) {
             const auto layout = e->program.uniformBlock(name);
             ASSERT_TRUE(layout);
@@ -148,7 +137,7 @@ TEST(ParamBlocks, EveryPassProgramLaysOutItsBlockAsTheCppStruct) {
             }
             ++programsWithBlock[name];
             const auto diff = mismatches(*b, *layout);
-            EXPECT_TRUE(diff.empty()) << name << " in " << where << joined(diff);
+            EXPECT_TRUE(diff.empty()) << name << " in " << where << test::indentedLines(diff);
         }
     }
     for (const BlockInfo& b : blocks)
@@ -175,8 +164,8 @@ TEST(ParamBlocks, EveryProgramReadingTheLightTableLaysOutItsRowAsTheCppStruct) {
             if (!v) continue;
             reads = true;
             ++seen[f.name];
-            EXPECT_EQ(v->offset, static_cast<GLint>(f.offset)) << f.name << " in " << describeProgram(e->desc);
-            EXPECT_EQ(v->topLevelStride, static_cast<GLint>(sizeof(gpu::Light))) << describeProgram(e->desc);
+            EXPECT_EQ(v->offset, static_cast<GLint>(f.offset)) << f.name << " in " << test::describeProgram(e->desc);
+            EXPECT_EQ(v->topLevelStride, static_cast<GLint>(sizeof(gpu::Light))) << test::describeProgram(e->desc);
         }
         programs += reads;
     }
@@ -207,7 +196,7 @@ TEST(ParamBlocks, TheComparisonCatchesABlockMirroredByPosition) {
         layout->dataSize,
         static_cast<GLint>(sizeof(gpu::SsaoBlurParams)));  // same size: a size check alone passes
     const auto diff = mismatches(describe<gpu::SsaoBlurParams>(), *layout);
-    EXPECT_GE(diff.size(), gpu::SsaoBlurParams::fields().size()) << joined(diff);
+    EXPECT_GE(diff.size(), gpu::SsaoBlurParams::fields().size()) << test::indentedLines(diff);
 }
 
 TEST(ParamBlocks, EnumDefinesCarryTheKnobsChoiceIndices) {

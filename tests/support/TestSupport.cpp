@@ -277,6 +277,18 @@ glm::dvec3 referenceRadiance(const std::vector<Light>& lights, const glm::dmat4&
     return sum;
 }
 
+std::string describeProgram(const gl::ProgramDesc& d) {
+    std::string s = d.vertex + " " + d.geometry + " " + d.fragment + " " + d.compute;
+    for (const auto& def : d.defines) s += " -D" + def;
+    return s;
+}
+
+std::string indentedLines(const std::vector<std::string>& lines) {
+    std::string s;
+    for (const auto& l : lines) s += "\n  " + l;
+    return s;
+}
+
 void buildBufferViewVariants(gl::ShaderLibrary& shaders) {
     for (const char* source : {"", "SOURCE_MS", "SOURCE_ARRAY", "SOURCE_3D", "SOURCE_BUFFER"})
         for (const char* type : {"", "SOURCE_UINT", "SOURCE_INT"}) {

@@ -21,6 +21,10 @@ std::unique_ptr<RenderSession> makeSession(int width, int height);
 // one per source kind and value type when first needed), so the tests that
 // go through every program (ParamBlocks, Bindings) see them all.
 void buildBufferViewVariants(gl::ShaderLibrary& shaders);
+// A program's stages and defines, for a failure message: "a.vert  b.frag  -DX".
+std::string describeProgram(const gl::ProgramDesc& d);
+// Each line on its own indented line, for a failure message.
+std::string indentedLines(const std::vector<std::string>& lines);
 
 // A large matte plane at y = 0 seen from above and in front, no lights.
 Scene planeScene(float size = 40.0f);
