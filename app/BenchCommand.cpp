@@ -323,7 +323,9 @@ int runBenchCommand(int argc, char** argv) {
     // them (bench --resume continues from it); the whole file, in order, is
     // written over it at the end.
     std::unique_ptr<std::ofstream> live;
-    bool liveFailed = false;
+    // Streamed to a file only: a device or a pipe gets the whole file once, at the end.
+    std::error_code kind;
+    bool liveFailed = std::filesystem::exists(csv, kind) && !std::filesystem::is_regular_file(csv, kind);
     const BenchStream stream = [&](const BenchResults& soFar, const std::vector<BenchSample>& fresh) {
         if (liveFailed) return;
         if (!live) {

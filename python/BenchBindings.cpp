@@ -81,8 +81,15 @@ py::object bench(const std::string& scene, const py::object& sizesObject, const 
             py::gil_scoped_acquire acquire;
             warnPython(line);
         });
-        if (csv) results.writeCsv(*csv);
+        // Each output on its own, as the CLI writes them: one that fails (a full disk) costs no other.
+        std::optional<FileError> failed;
+        try {
+            if (csv) results.writeCsv(*csv);
+        } catch (const FileError& e) {
+            failed = e;
+        }
         if (json) writeBenchFile(*json, record.json(*json), "bench JSON");
+        if (failed) throw *failed;
     }
     return recordObject(record);
 }

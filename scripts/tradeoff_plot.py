@@ -192,7 +192,11 @@ def main():
     fig.tight_layout()
     # The labels last, once the axes' limits and the layout are final.
     place_labels(ax, fig, labels, points + overlay_points, [[(r["ms"], r["error"]) for r in front]])
-    fig.savefig(args.out, format="png")
+    try:
+        fig.savefig(args.out, format="png")
+    except OSError as e:  # a full disk, a folder that went away: one line, not a traceback
+        print(f"tradeoff_plot: {args.out}: cannot write the plot: {e.strerror or e}", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -6,9 +6,22 @@ namespace dw::ui {
 
 namespace {
 constexpr size_t kMaxMessages = 200;
+
+// A message is at most kMaxMessageBytes on screen: a record's knob of 20 000
+// characters, echoed in its error, took ImGui past its 65 536 vertices a
+// draw list and aborted the window. Cut at a UTF-8 character's start.
+std::string shortened(std::string text) {
+    if (text.size() <= MessageLog::kMaxMessageBytes) return text;
+    const size_t whole = text.size();
+    size_t cut = MessageLog::kMaxMessageBytes;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    text.resize(cut);
+    return text + " ... (" + std::to_string(whole - cut) + " more bytes)";
 }
+}  // namespace
 
 void MessageLog::push(Message m) {
+    m.text = shortened(std::move(m.text));
     messages_.push_back(std::move(m));
     if (messages_.size() > kMaxMessages) {
         messages_.pop_front();

@@ -63,6 +63,8 @@ struct Message {
 class MessageLog {
 public:
     static constexpr double kToastSeconds = 4.0;
+    // A longer message is cut there, its length said ("... (N more bytes)").
+    static constexpr size_t kMaxMessageBytes = 2000;
 
     void info(const std::string& text, double time);
     void error(const std::string& text, double time, const std::string& action = {});

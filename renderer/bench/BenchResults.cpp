@@ -171,21 +171,15 @@ BenchResults BenchResults::readCsv(const std::string& path, bool cutLastLine) {
 }
 
 void writeBenchFile(const std::string& path, const std::string& text, const std::string& what) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
-        // A device or a pipe (/dev/null, a reader's FIFO): written in place, never renamed over.
-        std::ofstream f(path, std::ios::trunc);
-        if (!f) throw FileError(path, "cannot write the " + what);
-        f << text;
-        if (!f.flush()) throw FileError(path, "writing the " + what + " failed");
-        return;
-    }
-    // A file: whole or not at all (a failed write leaves the old one, and no part).
+    // A file whole or not at all (a failed write leaves the old one, and no
+    // part); a device or a pipe in place (writeFileAtomically says which).
     try {
         writeFileAtomically(path, text);
-    } catch (const FileError&) {
-        throw FileError(path, "writing the " + what + " failed (disk full, or not writable)");
+    } catch (const FileError& e) {
+        const std::string said = e.what(), why = said.substr(said.find(": cannot save: ") == std::string::npos
+                                                                  ? said.size()
+                                                                  : said.find(": cannot save: ") + 15);
+        throw FileError(path, "writing the " + what + " failed (" + (why.empty() ? "disk full, or not writable" : why) + ")");
     }
 }
 

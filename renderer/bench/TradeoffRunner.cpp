@@ -215,14 +215,17 @@ void TradeoffRunner::warn(const std::string& line) const {
 
 // After stage 2 (the timed rounds): --time PASS is refused before the error
 // captures and references when no configuration timed that pass.
-// Before the timed rounds: --time names a pass the pipeline has (a typo was
+// Before the timed rounds: --time names a pass the pipeline has, or a span
+// inside one (a typo was
 // caught only after the whole sweep, its results not written). Whether it
 // ran is checkTimedPass's, after them.
 void TradeoffRunner::checkTimedPassName(RenderSession& session) const {
     if (o_.time == "frame") return;
+    // A pass, or a span inside one ("lighting/shadow maps": PASS/NAME).
+    const std::string pass = o_.time.substr(0, o_.time.find('/'));
     std::string list;
     for (const PassInfo& p : session.pipeline().passList()) {
-        if (p.name == o_.time) return;
+        if (p.name == pass) return;
         list += (list.empty() ? "" : ",") + p.name;
     }
     throw Error("--time " + o_.time + ": the pipeline has no pass of that name (expected frame or one of: " + list + ")");

@@ -77,21 +77,40 @@ void requireRegularFile(const std::string& path, const std::string& notFound, co
     throw FileError(path, unreadable + ": it is a pipe or socket, not a file");
 }
 
+namespace {
+
+// A device or a pipe (/dev/null, /dev/full, a reader's FIFO): written in
+// place, never renamed over (a rename replaced /dev/full with a file). A pipe
+// with no reader is refused (opening it would wait for one forever).
+void writeInPlace(const std::string& path, const std::string& text) {
+    const Descriptor out{::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC)};
+    if (out.fd < 0)
+        throw FileError(path, errno == ENXIO ? std::string("cannot save: it is a pipe with no reader (start the reader first)")
+                                             : "cannot save: " + std::string(std::strerror(errno)));
+    ::fcntl(out.fd, F_SETFL, ::fcntl(out.fd, F_GETFL) & ~O_NONBLOCK);
+    for (std::size_t done = 0; done < text.size();) {
+        const ssize_t n = ::write(out.fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0)
+            throw FileError(path, std::string("cannot save: writing failed (") + (n < 0 ? std::strerror(errno) : "no progress") + ")");
+        done += static_cast<std::size_t>(n);
+    }
+}
+
+}  // namespace
+
 void writeFileAtomically(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
-    const fs::path target(path);
+    std::error_code link;
+    // Through a link to the file it names: renaming over the link replaced
+    // the link with a file and left its target as it was.
+    const fs::path target = fs::is_symlink(fs::symlink_status(path, link)) ? fs::weakly_canonical(path, link) : fs::path(path);
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(dir)) throw FileError(path, "cannot save: folder " + dir.string() + " does not exist");
     if (fs::is_directory(target)) throw FileError(path, "cannot save: a folder has that name");
     std::error_code kind;
     if (fs::exists(target, kind) && !fs::is_regular_file(target, kind)) {
-        // A device or a pipe (/dev/null, /dev/full, a reader's FIFO): written
-        // in place, never renamed over (a rename replaced /dev/full with a file).
-        std::ofstream out(target, std::ios::binary);
-        if (!out) throw FileError(path, "cannot save: cannot open it for writing");
-        out << text;
-        out.flush();
-        if (!out) throw FileError(path, "cannot save: writing failed (disk full?)");
+        writeInPlace(path, text);
         return;
     }
     const fs::path tmp = dir / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));

@@ -36,8 +36,9 @@ void requireRegularFile(const std::string& path, const std::string& notFound, co
 // temporary file in the same folder, flushed and synced, then renamed over
 // it. On failure the previous file is untouched and FileError(path, "cannot
 // save: ...") says why (no folder, a folder of that name, not writable, disk
-// full). A device or a pipe (/dev/null, /dev/full, a FIFO) is written in
-// place, its write checked, never renamed over.
+// full). A link is written through (the file it names is replaced). A
+// device or a pipe (/dev/null, /dev/full, a FIFO) is written in place, its
+// write checked, never renamed over; a pipe with no reader is refused.
 void writeFileAtomically(const std::string& path, const std::string& text);
 
 // "line L, column C" (1-based) of the byte a parser reported: nlohmann's

@@ -243,3 +243,26 @@ TEST(CommandFaultsCli, AnImageThatCannotBeWrittenWholeIsAnErrorAndLeavesNoPart) 
     EXPECT_EQ(ok.code, 0) << ok.err;
     EXPECT_GT(fs::file_size(dir / "b.png"), 0u);
 }
+
+// An output that is a pipe nobody reads is refused when it is written (the
+// open waited forever); a plot that cannot be written is one line, not the
+// plot script's traceback, and the CSV and record are kept.
+TEST(CommandFaultsCli, APipeNobodyReadsAndAPlotThatCannotBeWrittenAreOneLineEach) {
+    const fs::path dir = test::tempDir() / "unwritable-outputs";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    ASSERT_EQ(::mkfifo((dir / "nobody.json").c_str(), 0600), 0);
+    const Result pipe = test::runCommand("cd " + dir.string() + " && timeout 60 " + std::string(DW_WORKBENCH_BINARY) +
+                                         " render --scene spheres --size 16x9 --out a.png --record nobody.json");
+    EXPECT_EQ(pipe.code, 1) << pipe.err;
+    EXPECT_NE(pipe.err.find("nobody.json: cannot save: it is a pipe with no reader"), std::string::npos) << pipe.err;
+    const Result plot = test::runCommand(
+        "cd " + dir.string() + " && bash -c \"trap '' XFSZ; ulimit -f 20; " + std::string(DW_WORKBENCH_BINARY) +
+        " tradeoff --scene default --size 32x18 --sweep ssao.samples=4,8 --against ssao.samples=16 --metric rms "
+        "--frames 1 --warmup 0 --resamples 100 --quiet --csv t.csv --record t.json --plot p.png --plot-size 1600x1200\"");
+    EXPECT_NE(plot.err.find("p.png: cannot write the plot"), std::string::npos) << plot.err;
+    EXPECT_EQ(plot.err.find("Traceback"), std::string::npos) << plot.err;
+    EXPECT_LE(lineCount(plot.err), 3) << plot.err;
+    EXPECT_TRUE(fs::exists(dir / "t.csv"));
+    EXPECT_TRUE(fs::exists(dir / "t.json"));
+}

@@ -318,6 +318,12 @@ TEST(TradeoffCli, ReusedShadowMapsAreTimedInTheLightingPassAndMarked) {
     EXPECT_FALSE(std::isfinite(t.passGpuMs(t.rows[1], "lighting/shadow maps")));  // kept: drawn by the shadows pass
     EXPECT_NE(r.out.find("(reused: maps in lighting/shadow maps, "), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("(reused"), r.out.rfind("(reused")) << "only the reused row is marked\n" << r.out;
+    // A span is a valid --time (the early check of the pass's name takes PASS/NAME).
+    const Result span = run("tradeoff --scene spheres --size 64x36 --set ao.enabled=false --sweep shadows.pcf_radius=0,1 "
+                            "--buffer lbuffer --metric rms --time \"lighting/shadow maps\" --frames 1 --warmup 0 "
+                            "--resamples 200 --quiet" + files("span"));
+    EXPECT_EQ(span.code, 0) << span.err;
+    EXPECT_NE(span.out.find("Pareto (lighting/shadow maps ms)"), std::string::npos) << span.out;
 }
 
 // Issue 23: --mask shadow_edges on a scene without a shadow edge (the

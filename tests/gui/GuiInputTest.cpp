@@ -14,6 +14,7 @@
 
 #include "renderer/inspect/PixelProbe.h"
 #include "tests/gui/HeadlessImGui.h"
+#include "ui/UiState.h"
 #include "tests/support/TestSupport.h"
 #include "ui/ProbePanel.h"
 
@@ -296,4 +297,19 @@ TEST(GuiInput, ThePresetsGivenAtStartUpAreTheActiveOnes) {
     const nlohmann::json none = runEvents("startup-no-preset", 2, "");
     ASSERT_FALSE(none.is_null());
     EXPECT_EQ(none["active_preset"].get<std::string>(), "");
+}
+
+// A knob value of 20 000 characters (an events `set` line, or a record's
+// knob) was echoed whole in its error, which took ImGui past its 65 536
+// vertices a draw list: the window aborted. The message is cut on screen and
+// the window keeps the start-up scene.
+TEST(GuiInput, AnEnormousKnobValueIsAShortMessageNotACrash) {
+    ASSERT_EQ(test::runCommand("command -v xvfb-run").code, 0) << "xvfb-run is missing (scripts/setup-deps.sh installs it)";
+    const nlohmann::json r = runEvents("long-knob", 6, "1 set ssao.samples=" + std::string(20000, '1') + "\n");
+    ASSERT_FALSE(r.is_null());
+    ASSERT_EQ(r["errors"].size(), 1u) << r["errors"].dump().substr(0, 300);
+    const std::string e = r["errors"][0].get<std::string>();
+    EXPECT_LE(e.size(), ui::MessageLog::kMaxMessageBytes + 40) << e.substr(0, 300);
+    EXPECT_NE(e.find("more bytes)"), std::string::npos) << e.substr(0, 300);
+    EXPECT_EQ(r["scene"]["name"], "spheres");
 }

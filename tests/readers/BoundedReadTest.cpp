@@ -153,6 +153,33 @@ TEST(BoundedRead, ADeviceIsWrittenInPlaceAndItsFailureSaidNeverRenamedOver) {
     writeFileAtomically("/dev/null", "into the void");  // a device that takes it: no error
 }
 
+TEST(BoundedRead, AWriteGoesThroughALinkAndAPipeWithNoReaderIsRefused) {
+    // A link to a file: the file it names is written, the link stays a link.
+    const fs::path real = writeBytes("real.json", "old");
+    const fs::path link = dir() / "link.json";
+    fs::remove(link);
+    fs::create_symlink(real, link);
+    writeFileAtomically(link.string(), "new");
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_EQ(readWholeFile(real.string(), "not found", "cannot read"), "new");
+    // A pipe nobody reads: refused at once (opening it waited forever).
+    const fs::path fifo = dir() / "nobody-reads.json";
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_HAS(errorOf([&] { writeFileAtomically(fifo.string(), "a record"); }), "it is a pipe with no reader");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    // With a reader it is written in place.
+    const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(reader, 0);
+    writeFileAtomically(fifo.string(), "a record");
+    char got[16] = {};
+    EXPECT_EQ(::read(reader, got, sizeof got), 8);
+    EXPECT_EQ(std::string(got, 8), "a record");
+    ::close(reader);
+    EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
 TEST(BoundedRead, RecordsAndPresetsAreToldFromScenes) {
     const fs::path record = writeBytes("rec.json", R"({"format": "deferred-workbench record", "version": 3,
         "command": "render", "scene": {"spec": "spheres"}})");
