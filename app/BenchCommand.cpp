@@ -237,6 +237,82 @@ int runMerge(int argc, char** argv) {
     return plotted;
 }
 
+// Freed memory stays with the process for the whole run. By default glibc
+// returns the top of the heap to the system and serves large blocks with
+// mmap, so a configuration that followed a smaller one paid page faults
+// for the memory the smaller one gave back: interleaving 1 and 1000
+// lights doubled stencil_volumes' CPU time at 1000 lights (18 against
+// 9 ms at 64x36) and added 12 ms to its lighting pass at 640x360.
+void keepFreedMemory() {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's most on 64-bit
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
+
+// --seed, --light-radius, --keep-scene-lights, --lpp-poses, --no-lpp.
+void readLightOptions(CommandLine& cl, BenchOptions& o) {
+    o.seed = static_cast<std::uint32_t>(cl.whole("--seed", 1));
+    const std::optional<double> lightRadius = cl.real("--light-radius");
+    if (lightRadius) {
+        o.lightRadius = static_cast<float>(*lightRadius);
+        // Above 0 as a double, but below the smallest 32-bit float it is 0.
+        if (!(o.lightRadius > 0.0f))
+            throw UsageError("--light-radius must be at least the smallest 32-bit float (about 1.4e-45), got '" +
+                             *cl.value("--light-radius") + "'");
+    }
+    // Options that change nothing without another one: said, not ignored.
+    if (lightRadius && o.grid.lights.empty())
+        std::fprintf(stderr, "bench: note: --light-radius sizes the generated lights; without --lights the scene's "
+                             "own lights are used and it changes nothing\n");
+    o.keepSceneLights = cl.flag("--keep-scene-lights");
+    o.lppPoses = cl.whole("--lpp-poses", 4);
+    o.lpp = !cl.flag("--no-lpp");
+}
+
+// The samples go to the CSV as they are measured, so a killed run keeps
+// them (bench --resume continues from it); the whole file, in order, is
+// written over it at the end. Streamed to a file only: a device or a pipe
+// gets the whole file once, at the end.
+class LiveCsv {
+public:
+    explicit LiveCsv(std::string path) : path_(std::move(path)) {
+        std::error_code kind;
+        failed_ = std::filesystem::exists(path_, kind) && !std::filesystem::is_regular_file(path_, kind);
+    }
+    BenchStream stream() {
+        return [this](const BenchResults& soFar, const std::vector<BenchSample>& fresh) { write(soFar, fresh); };
+    }
+    void close() { out_.reset(); }
+
+private:
+    void write(const BenchResults& soFar, const std::vector<BenchSample>& fresh) {
+        if (failed_) return;
+        if (!out_) {
+            out_ = std::make_unique<std::ofstream>(path_, std::ios::trunc);
+            *out_ << BenchResults::csvHeader(soFar.knobAxes) << "\n";
+        }
+        *out_ << soFar.csvRows(fresh);
+        if (!out_->flush()) {
+            failed_ = true;
+            std::fprintf(stderr, "bench: warning: %s: cannot write the samples as they come; they are written at the end\n",
+                         path_.c_str());
+        }
+    }
+    std::string path_;
+    std::unique_ptr<std::ofstream> out_;
+    bool failed_ = false;
+};
+
+// The machine (GL platform, host) and the command line, in the run's fields.
+void describeRun(BenchResults& results, const std::string& platform, BenchFields host, int argc, char** argv) {
+    BenchFields machine = results.machine;
+    machine.emplace_back("gl_platform", platform);
+    for (auto& f : host) machine.push_back(std::move(f));
+    results.machine = std::move(machine);
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + shellQuoted(argv[i]);
+    results.settings.emplace_back("command", command);
+}
+
 }  // namespace
 
 int runBenchCommand(int argc, char** argv) {
@@ -259,23 +335,8 @@ int runBenchCommand(int argc, char** argv) {
     o.orbit = so.orbit;
     o.walkthrough = so.walkthrough;
     o.shard = so.shard;
-    o.seed = static_cast<std::uint32_t>(cl.whole("--seed", 1));
-    const std::optional<double> lightRadius = cl.real("--light-radius");
-    if (lightRadius) {
-        o.lightRadius = static_cast<float>(*lightRadius);
-        // Above 0 as a double, but below the smallest 32-bit float it is 0.
-        if (!(o.lightRadius > 0.0f))
-            throw UsageError("--light-radius must be at least the smallest 32-bit float (about 1.4e-45), got '" +
-                             *cl.value("--light-radius") + "'");
-    }
-    // Options that change nothing without another one: said, not ignored.
-    if (lightRadius && o.grid.lights.empty())
-        std::fprintf(stderr, "bench: note: --light-radius sizes the generated lights; without --lights the scene's "
-                             "own lights are used and it changes nothing\n");
-    o.keepSceneLights = cl.flag("--keep-scene-lights");
+    readLightOptions(cl, o);
     const bool keepSceneLights = o.keepSceneLights && !o.grid.lights.empty();
-    o.lppPoses = cl.whole("--lpp-poses", 4);
-    o.lpp = !cl.flag("--no-lpp");
     const std::string shardText = so.shardText();
     const std::string& csv = so.csv;
     const std::string& json = so.json;
@@ -294,14 +355,7 @@ int runBenchCommand(int argc, char** argv) {
     if (o.orbit > 0 && o.frames % o.orbit != 0 && !quiet)
         std::fprintf(stderr, "bench: note: %d frames over %d orbit poses weigh the poses unequally\n", o.frames, o.orbit);
 
-    // Freed memory stays with the process for the whole run. By default glibc
-    // returns the top of the heap to the system and serves large blocks with
-    // mmap, so a configuration that followed a smaller one paid page faults
-    // for the memory the smaller one gave back: interleaving 1 and 1000
-    // lights doubled stencil_volumes' CPU time at 1000 lights (18 against
-    // 9 ms at 64x36) and added 12 ms to its lighting pass at 640x360.
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's most on 64-bit
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    keepFreedMemory();
 
     // Everything that can fail without GL fails here: knobs, values, the scene, the baseline.
     o.baseline = baselineSpec;
@@ -322,37 +376,15 @@ int runBenchCommand(int argc, char** argv) {
     // The samples go to the CSV as they are measured, so a killed run keeps
     // them (bench --resume continues from it); the whole file, in order, is
     // written over it at the end.
-    std::unique_ptr<std::ofstream> live;
-    // Streamed to a file only: a device or a pipe gets the whole file once, at the end.
-    std::error_code kind;
-    bool liveFailed = std::filesystem::exists(csv, kind) && !std::filesystem::is_regular_file(csv, kind);
-    const BenchStream stream = [&](const BenchResults& soFar, const std::vector<BenchSample>& fresh) {
-        if (liveFailed) return;
-        if (!live) {
-            live = std::make_unique<std::ofstream>(csv, std::ios::trunc);
-            *live << BenchResults::csvHeader(soFar.knobAxes) << "\n";
-        }
-        *live << soFar.csvRows(fresh);
-        if (!live->flush()) {
-            liveFailed = true;
-            std::fprintf(stderr, "bench: warning: %s: cannot write the samples as they come; they are written at the end\n",
-                         csv.c_str());
-        }
-    };
+    LiveCsv live(csv);
     auto context = HeadlessGlContext::create();
     BenchResults results = runner.run(
         [&](const std::string& line) {
             if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
         },
-        stream, resumed ? &*resumed : nullptr);
-    live.reset();
-    BenchFields machine = results.machine;
-    machine.emplace_back("gl_platform", context->platform());
-    for (auto& f : hostFields()) machine.push_back(std::move(f));
-    results.machine = std::move(machine);
-    std::string command;
-    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + shellQuoted(argv[i]);
-    results.settings.emplace_back("command", command);
+        live.stream(), resumed ? &*resumed : nullptr);
+    live.close();
+    describeRun(results, context->platform(), hostFields(), argc, argv);
 
     const BenchSummary summary = summarize(results, baseline, resamples);
     // The tables first: should writing the files still fail, the run's figures are on stdout.

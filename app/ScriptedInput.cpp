@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <functional>
 #include <sstream>
 
 #include "headless/CommandLine.h"
@@ -86,12 +87,129 @@ ScriptedInput ScriptedInput::load(const std::string& path) {
     return parse(readWholeFile(path, "events file not found", "cannot read events file"), path);
 }
 
+namespace {
+
+using Add = std::function<void(int, ScriptedFrameInput)>;
+using Bad = std::function<UsageError(const std::string&)>;
+
+// A click: over the point first, as a hand gets there (a widget that wants
+// to have been hovered the frame before, ImGui's overlapping selectables,
+// takes the press a frame later), then press and release.
+void addClick(int frame, float x, float y, const Add& add) {
+    ScriptedFrameInput over;
+    over.mouseX = x;
+    over.mouseY = y;
+    add(frame, over);
+    ScriptedFrameInput down;
+    down.leftDown = true;
+    add(frame + 1, down);
+    ScriptedFrameInput up;
+    up.leftDown = false;
+    add(frame + 2, up);
+}
+
+// A drag: over the start first, so the press lands there; `steps` moves; release.
+void addDrag(int frame, std::istringstream& words, const Add& add, const Bad& bad) {
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int steps = 4;
+    if (!(words >> x0 >> y0 >> x1 >> y1)) throw bad("drag takes X0 Y0 X1 Y1 [frames]");
+    if (words >> steps) {
+        if (steps < 1 || steps > 1000) throw bad("drag takes 1 to 1000 frames");
+    }
+    ScriptedFrameInput start;
+    start.mouseX = x0;
+    start.mouseY = y0;
+    add(frame, start);
+    ScriptedFrameInput press;
+    press.leftDown = true;
+    add(frame + 1, press);
+    for (int i = 1; i <= steps; ++i) {
+        ScriptedFrameInput m;
+        m.mouseX = x0 + (x1 - x0) * static_cast<float>(i) / static_cast<float>(steps);
+        m.mouseY = y0 + (y1 - y0) * static_cast<float>(i) / static_cast<float>(steps);
+        add(frame + 1 + i, m);
+    }
+    ScriptedFrameInput release;
+    release.leftDown = false;
+    add(frame + 2 + steps, release);
+}
+
+// "ctrl+shift+F5": the key and its modifiers.
+std::pair<int, int> parseKey(std::istringstream& words, const Bad& bad) {
+    std::string name;
+    if (!(words >> name)) throw bad("key takes a key name");
+    int mods = 0;
+    for (size_t plus; (plus = name.find('+')) != std::string::npos && plus + 1 < name.size();) {
+        const std::string mod = name.substr(0, plus);
+        if (mod == "ctrl") mods |= GLFW_MOD_CONTROL;
+        else if (mod == "shift") mods |= GLFW_MOD_SHIFT;
+        else if (mod == "alt") mods |= GLFW_MOD_ALT;
+        else if (mod == "super") mods |= GLFW_MOD_SUPER;
+        else throw bad("unknown modifier '" + mod + "' (ctrl, shift, alt, super)");
+        name.erase(0, plus + 1);
+    }
+    const int key = glfwKeyFromName(name);
+    if (key < 0)
+        throw bad("unknown key '" + name +
+                  "' (a-z, 0-9, F1-F12, Escape, Enter, Space, Tab, Backspace, Delete, Home, End, arrows, PageUp, PageDown)");
+    return {key, mods};
+}
+
+// `type TEXT` / `drop PATH`: the rest of the line, at most kMaxTypedBytes.
+void addTypedOrDropped(int frame, const std::string& what, std::istringstream& words, const Add& add, const Bad& bad) {
+    const std::string rest = restOfLine(words);
+    if (rest.empty()) throw bad(what + (what == "type" ? " takes the text to type" : " takes a file path"));
+    // A person types a line at a time: a line of megabytes became
+    // gigabytes of queued key events (10 MB: 1.15 GB resident).
+    if (rest.size() > kMaxTypedBytes)
+        throw bad(what + " takes at most " + std::to_string(kMaxTypedBytes) + " bytes on a line, got " +
+                  std::to_string(rest.size()));
+    ScriptedFrameInput in;
+    if (what == "type") in.text = decodeUtf8(rest);
+    else in.drops.push_back(rest);
+    add(frame, in);
+}
+
+// The one-frame actions (move, wheel, key, resize, set, ctrl) into `in`.
+void parseFrameAction(const std::string& what, std::istringstream& words, ScriptedFrameInput& in, const Bad& bad) {
+    if (what == "move") {
+        float x = 0, y = 0;
+        if (!(words >> x >> y)) throw bad(what + " takes X Y");
+        in.mouseX = x;
+        in.mouseY = y;
+    } else if (what == "wheel") {
+        if (!(words >> in.wheel)) throw bad("wheel takes a number of notches");
+    } else if (what == "key") {
+        in.keys.push_back(parseKey(words, bad));
+    } else if (what == "resize") {
+        int w = 0, h = 0;
+        if (!(words >> w >> h) || w < 64 || h < 64 || w > 16384 || h > 16384)
+            throw bad("resize takes a width and a height from 64 to 16384");
+        in.resize = std::make_pair(w, h);
+    } else if (what == "set") {
+        // A knob edited as the Parameters panel edits it (no widget positions to chase).
+        std::string assignment;
+        if (!(words >> assignment) || assignment.find('=') == std::string::npos) throw bad("set takes knob=value");
+        in.sets.push_back(assignment);
+    } else if (what == "ctrl") {
+        std::string state;
+        if (!(words >> state) || (state != "down" && state != "up")) throw bad("ctrl takes down or up");
+        in.ctrl = state == "down";
+    } else {
+        throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, type, drop, resize, ctrl, set)");
+    }
+    std::string extra;
+    if (words >> extra) throw bad("unexpected '" + extra + "'");
+}
+
+}  // namespace
+
 ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& source) {
     ScriptedInput s;
     std::istringstream lines(text);
     std::string line;
     int number = 0;
-    auto add = [&](int frame, ScriptedFrameInput in) { s.events_.push_back({frame, std::move(in)}); };
+    const Add add = [&](int frame, ScriptedFrameInput in) { s.events_.push_back({frame, std::move(in)}); };
     while (std::getline(lines, line)) {
         ++number;
         line = line.substr(0, line.find('#'));
@@ -102,104 +220,24 @@ ScriptedInput ScriptedInput::parse(const std::string& text, const std::string& s
             if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
             throw UsageError(source + ": line " + std::to_string(number) + ": expected '<frame> <action> ...'");
         }
-        auto bad = [&](const std::string& why) {
+        const Bad bad = [&](const std::string& why) {
             return UsageError(source + ": line " + std::to_string(number) + ": " + why);
         };
         if (frame < 0) throw bad("the frame must be 0 or more");
         if (!(words >> what)) throw bad("no action after the frame number");
-        ScriptedFrameInput in;
-        float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-        if (what == "move" || what == "click") {
-            if (!(words >> x0 >> y0)) throw bad(what + " takes X Y");
-            in.mouseX = x0;
-            in.mouseY = y0;
-            if (what == "click") {
-                // Over the point first, as a hand gets there: a widget that
-                // wants to have been hovered the frame before (ImGui's
-                // overlapping selectables) takes the press a frame later.
-                add(frame, in);
-                ScriptedFrameInput down;
-                down.leftDown = true;
-                add(frame + 1, down);
-                ScriptedFrameInput up;
-                up.leftDown = false;
-                add(frame + 2, up);
-                continue;
-            }
+        if (what == "click") {
+            float x = 0, y = 0;
+            if (!(words >> x >> y)) throw bad(what + " takes X Y");
+            addClick(frame, x, y, add);
         } else if (what == "drag") {
-            int steps = 4;
-            if (!(words >> x0 >> y0 >> x1 >> y1)) throw bad("drag takes X0 Y0 X1 Y1 [frames]");
-            if (words >> steps) {
-                if (steps < 1 || steps > 1000) throw bad("drag takes 1 to 1000 frames");
-            }
-            in.mouseX = x0;
-            in.mouseY = y0;
-            add(frame, in);  // over the start first, so the press lands there
-            ScriptedFrameInput press;
-            press.leftDown = true;
-            add(frame + 1, press);
-            for (int i = 1; i <= steps; ++i) {
-                ScriptedFrameInput m;
-                m.mouseX = x0 + (x1 - x0) * static_cast<float>(i) / static_cast<float>(steps);
-                m.mouseY = y0 + (y1 - y0) * static_cast<float>(i) / static_cast<float>(steps);
-                add(frame + 1 + i, m);
-            }
-            ScriptedFrameInput release;
-            release.leftDown = false;
-            add(frame + 2 + steps, release);
-            continue;
-        } else if (what == "wheel") {
-            if (!(words >> in.wheel)) throw bad("wheel takes a number of notches");
-        } else if (what == "key") {
-            std::string name;
-            if (!(words >> name)) throw bad("key takes a key name");
-            int mods = 0;
-            for (size_t plus; (plus = name.find('+')) != std::string::npos && plus + 1 < name.size();) {
-                const std::string mod = name.substr(0, plus);
-                if (mod == "ctrl") mods |= GLFW_MOD_CONTROL;
-                else if (mod == "shift") mods |= GLFW_MOD_SHIFT;
-                else if (mod == "alt") mods |= GLFW_MOD_ALT;
-                else if (mod == "super") mods |= GLFW_MOD_SUPER;
-                else throw bad("unknown modifier '" + mod + "' (ctrl, shift, alt, super)");
-                name.erase(0, plus + 1);
-            }
-            const int key = glfwKeyFromName(name);
-            if (key < 0)
-                throw bad("unknown key '" + name +
-                          "' (a-z, 0-9, F1-F12, Escape, Enter, Space, Tab, Backspace, Delete, Home, End, arrows, PageUp, PageDown)");
-            in.keys.emplace_back(key, mods);
+            addDrag(frame, words, add, bad);
         } else if (what == "type" || what == "drop") {
-            const std::string rest = restOfLine(words);
-            if (rest.empty()) throw bad(what + (what == "type" ? " takes the text to type" : " takes a file path"));
-            // A person types a line at a time: a line of megabytes became
-            // gigabytes of queued key events (10 MB: 1.15 GB resident).
-            if (rest.size() > kMaxTypedBytes)
-                throw bad(what + " takes at most " + std::to_string(kMaxTypedBytes) + " bytes on a line, got " +
-                          std::to_string(rest.size()));
-            if (what == "type") in.text = decodeUtf8(rest);
-            else in.drops.push_back(rest);
-            add(frame, in);
-            continue;
-        } else if (what == "resize") {
-            int w = 0, h = 0;
-            if (!(words >> w >> h) || w < 64 || h < 64 || w > 16384 || h > 16384)
-                throw bad("resize takes a width and a height from 64 to 16384");
-            in.resize = std::make_pair(w, h);
-        } else if (what == "set") {
-            // A knob edited as the Parameters panel edits it (no widget positions to chase).
-            std::string assignment;
-            if (!(words >> assignment) || assignment.find('=') == std::string::npos) throw bad("set takes knob=value");
-            in.sets.push_back(assignment);
-        } else if (what == "ctrl") {
-            std::string state;
-            if (!(words >> state) || (state != "down" && state != "up")) throw bad("ctrl takes down or up");
-            in.ctrl = state == "down";
+            addTypedOrDropped(frame, what, words, add, bad);
         } else {
-            throw bad("unknown action '" + what + "' (move, click, drag, wheel, key, type, drop, resize, ctrl, set)");
+            ScriptedFrameInput in;
+            parseFrameAction(what, words, in, bad);
+            add(frame, in);
         }
-        std::string extra;
-        if (words >> extra) throw bad("unexpected '" + extra + "'");
-        add(frame, in);
     }
     std::stable_sort(s.events_.begin(), s.events_.end(), [](const Event& a, const Event& b) { return a.frame < b.frame; });
     return s;
