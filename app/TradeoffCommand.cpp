@@ -291,7 +291,7 @@ int runTradeoffCommand(int argc, char** argv) {
     const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     s.run.width = w;
     s.run.height = h;
-    for (const auto& axis : so.sweeps) s.sweep.push_back(BenchGrid::sweepText(axis));
+    s.sweep = so.sweeps;
     if (const auto presets = cl.value("--presets")) s.presets = CommandLine::parseList("--presets", *presets);
     s.knobs = cl.value("--knobs").value_or("");
     s.exclude = so.excludes;

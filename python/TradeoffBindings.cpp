@@ -115,8 +115,8 @@ void checkWrites(const TradeoffStudyOptions& s, const TradeoffFiles& f) {
 // file, the files); bad ones are ValueError (KnobError for a knob).
 void readSweep(TradeoffStudyOptions& s, const std::optional<py::dict>& sweep, const py::object& presets,
                const py::object& exclude, const py::object& progressFn) {
-    const std::vector<BenchKnobAxis> axes = sweepAxes("tradeoff", sweep);
-    for (const auto& a : axes) s.sweep.push_back(BenchGrid::sweepText(a));
+    s.sweep = sweepAxes("tradeoff", sweep);
+    const std::vector<BenchKnobAxis>& axes = s.sweep;
     s.presets = textList("presets", presets);
     if (s.presets.size() == 1 && s.presets[0].find(',') != std::string::npos)
         s.presets = asValueError([&] { return splitList(s.presets[0], "--presets"); });

@@ -50,6 +50,7 @@ std::vector<BenchConfig> BenchGrid::configs(int sceneLights) const {
                 c.height = h;
                 c.lights = n;
                 for (size_t a = 0; a < knobAxes.size(); ++a) c.knobValues.push_back(knobAxes[a].values[digit[a]]);
+                c.knobAt = digit;
                 out.push_back(std::move(c));
                 size_t a = knobAxes.size();
                 while (a > 0 && ++digit[a - 1] == knobAxes[a - 1].values.size()) digit[--a] = 0;
@@ -89,17 +90,19 @@ BenchKnobAxis BenchGrid::parseSweep(const std::string& text) {
     BenchKnobAxis axis;
     axis.knob = text.substr(0, eq);
     axis.values = splitList(text.substr(eq + 1), "--sweep " + axis.knob);
-    for (size_t i = 0; i < axis.values.size(); ++i)
-        for (size_t j = 0; j < i; ++j)
-            if (axis.values[i] == axis.values[j])
-                throw Error("--sweep " + axis.knob + ": '" + axis.values[i] + "' is given twice");
+    checkAxis(axis);
     return axis;
 }
 
-std::string BenchGrid::sweepText(const BenchKnobAxis& axis) {
-    std::string text = axis.knob + "=";
-    for (size_t i = 0; i < axis.values.size(); ++i) text += (i ? "," : "") + axis.values[i];
-    return text;
+void BenchGrid::checkAxis(const BenchKnobAxis& axis) {
+    if (axis.knob.empty()) throw Error("--sweep expects knob=value,value,...: an axis has no name");
+    if (axis.values.empty()) throw Error("--sweep " + axis.knob + ": no values");
+    for (size_t i = 0; i < axis.values.size(); ++i) {
+        if (axis.values[i].empty()) throw Error("--sweep " + axis.knob + ": an empty value");
+        for (size_t j = 0; j < i; ++j)
+            if (axis.values[i] == axis.values[j])
+                throw Error("--sweep " + axis.knob + ": '" + axis.values[i] + "' is given twice");
+    }
 }
 
 }  // namespace dw

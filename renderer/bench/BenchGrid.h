@@ -12,7 +12,10 @@ namespace dw {
 
 struct BenchKnobAxis {
     std::string knob;                 // a knob's name ("lighting.strategy")
-    std::vector<std::string> values;  // as --set takes them, in the order given
+    std::vector<std::string> values;  // as --set takes them, in the order given (BenchRunner: as the knob writes them)
+    // Each value as KnobRegistry::set takes it, read once from its text by
+    // BenchRunner (KnobAssignment); empty before.
+    std::vector<double> numbers;
 };
 
 struct BenchConfig {
@@ -20,6 +23,7 @@ struct BenchConfig {
     int width = 0, height = 0;
     int lights = 0;                       // point lights generated (or the scene's own count)
     std::vector<std::string> knobValues;  // one per knob axis
+    std::vector<size_t> knobAt;           // one per knob axis: the value's position in its values (and numbers)
     std::string size() const { return std::to_string(width) + "x" + std::to_string(height); }
 };
 
@@ -48,11 +52,13 @@ public:
     // "lights" or a knob axis; empty: none) share a group. Groups are numbered
     // in the order they first appear; the result has one number per config.
     std::vector<int> groupsAlong(const std::vector<BenchConfig>& configs, const std::string& axis) const;
-    // "knob=a,b,c" -> an axis (the values are checked against the knob later).
+    // "knob=a,b,c" -> an axis (the values are checked against the knob later:
+    // the runners read each value once and carry it typed to the CSV).
     static BenchKnobAxis parseSweep(const std::string& text);
-    // An axis as --sweep takes it, "knob=a,b,c": parseSweep's inverse (the
-    // CLI's and the Python module's tradeoff hand their axes on this way).
-    static std::string sweepText(const BenchKnobAxis& axis);
+    // What parseSweep checks of an axis however it was made (the Python
+    // module's sweep dicts): a name, values, none empty, none twice. Throws
+    // dw::Error naming the axis.
+    static void checkAxis(const BenchKnobAxis& axis);
 };
 
 // "a,b,c" -> {"a", "b", "c"}; empty items are errors (named by `what`).

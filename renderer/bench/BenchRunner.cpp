@@ -13,6 +13,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/bench/ConfigurationRunner.h"
+#include "renderer/knobs/KnobAssignment.h"
 #include "renderer/scene/CameraPath.h"
 #include "renderer/scene/LightGenerator.h"
 #include "renderer/scene/SceneLoader.h"
@@ -71,11 +72,6 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
     // Each value is then written as the knob writes it (TRUE and 1 as true,
     // 16.0 as 16), so that two spellings of one value are one configuration
     // and --baseline finds the value however it is spelt.
-    auto canonical = [&](const std::string& knob, const std::string& value) {
-        KnobRegistry k = declared;
-        k.applyAssignment(knob + "=" + value);
-        return k.format(*k.find(knob));
-    };
     for (size_t a = 0; a < o_.grid.knobAxes.size(); ++a) {
         auto& axis = o_.grid.knobAxes[a];
         // An old knob name (KnobRegistry::addAlias) sweeps the new knob, with --set's warning;
@@ -84,9 +80,12 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
         for (size_t b = 0; b < a; ++b)
             if (o_.grid.knobAxes[b].knob == axis.knob) throw Error("--sweep " + axis.knob + " is given twice");
         if (!declared.find(axis.knob)) throw Error("--sweep: unknown knob '" + axis.knob + "' (see: list knobs)");
+        axis.numbers.clear();
         for (size_t i = 0; i < axis.values.size(); ++i) {
             const std::string given = axis.values[i];
-            axis.values[i] = canonical(axis.knob, given);
+            const KnobAssignment read = readKnobAssignment(declared, axis.knob, given);
+            axis.values[i] = read.text;
+            axis.numbers.push_back(read.value);
             for (size_t j = 0; j < i; ++j)
                 if (axis.values[j] == axis.values[i])
                     throw Error("--sweep " + axis.knob + ": '" + given + "' is '" + axis.values[i] +
@@ -98,7 +97,7 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
         for (const auto& a : o_.grid.knobAxes)
             if (a.knob == axis) {
                 try {
-                    o_.baseline = axis + "=" + canonical(axis, o_.baseline.substr(eq + 1));
+                    o_.baseline = axis + "=" + readKnobAssignment(declared, axis, o_.baseline.substr(eq + 1)).text;
                 } catch (const Error&) {
                     // Not a value of the knob: chooseBaseline says the axis never has it.
                 }
@@ -131,7 +130,7 @@ BenchRunner::BenchRunner(BenchOptions options) : o_(std::move(options)) {
     axes.emplace_back("lights", lightCounts);
     for (const auto& a : o_.grid.knobAxes) axes.emplace_back(a.knob, a.values);
     o_.exclude.resolve(axes, [&](const std::string& axis, const std::string& value) {
-        return axis == "size" || axis == "lights" ? value : canonical(axis, value);
+        return axis == "size" || axis == "lights" ? value : readKnobAssignment(declared, axis, value).text;
     });
     size_t kept = 0;
     for (size_t i = 0; i < all.size(); ++i) {
@@ -320,7 +319,7 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
         }
         o_.run.applyKnobs(session.knobs(), session.scene());
         for (size_t k = 0; k < o_.grid.knobAxes.size(); ++k)
-            session.knobs().applyAssignment(o_.grid.knobAxes[k].knob + "=" + c.knobValues[k]);
+            session.knobs().set(*session.knobs().find(o_.grid.knobAxes[k].knob), o_.grid.knobAxes[k].numbers[c.knobAt[k]]);
         return session;
     };
     RunnerPlan plan;

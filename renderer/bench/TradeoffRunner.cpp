@@ -17,6 +17,7 @@
 #include "renderer/bench/ImageError.h"
 #include "renderer/metrics/ShadowEdgeMask.h"
 #include "renderer/graph/Pipeline.h"
+#include "renderer/knobs/KnobAssignment.h"
 #include "renderer/scene/CameraPath.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -67,6 +68,20 @@ std::string TradeoffRunner::gpuOutput(const std::string& buffer) {
 }
 
 TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options)) {
+    checkOptions();
+    const KnobRegistry declared = RunConfig::declaredKnobs();
+    readAxes(declared);
+    readAgainst(declared);
+    sweepSize_ = o_.sweep.count();
+    for (auto& p : o_.sweep.points())
+        if (o_.shard.takes(p.index)) points_.push_back(std::move(p));
+    scene_ = loadScene(o_.run.sceneSpec());
+    placeCameras();
+    planPointRuns();
+}
+
+// What needs neither the scene nor the knobs.
+void TradeoffRunner::checkOptions() const {
     if (o_.frames < 1) throw Error("tradeoff needs at least one counted frame per point and camera");
     if (o_.orbit > 0 && o_.walkthrough) throw Error("--orbit and --walkthrough are two camera paths; pick one");
     gpuOutput(o_.buffer);
@@ -77,57 +92,68 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
         throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
     o_.run.validate();
-    const KnobRegistry declared = RunConfig::declaredKnobs();
-    auto canonical = [&](const std::string& knob, const std::string& value) {
-        KnobRegistry k = declared;
-        k.applyAssignment(knob + "=" + value);
-        return k.format(*k.find(knob));
-    };
-    // Each axis: a knob (values written as the knob writes them), the presets, or a clip plane.
+}
+
+// Each axis' values checked once and kept as written (TradeoffAxis::values)
+// and as applied (TradeoffAxis::numbers): a knob (its old name sweeps the
+// knob it became, with --set's warning, and names the column), the presets,
+// or a clip plane; then --exclude's values read the same way.
+void TradeoffRunner::readAxes(const KnobRegistry& declared) {
     for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
         TradeoffAxis& axis = o_.sweep.axes[a];
-        // An old knob name (KnobRegistry::addAlias) sweeps the new knob, with --set's warning;
-        // the column is named by the new name.
         if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name)) axis.name = declared.canonicalName(axis.name);
         for (size_t b = 0; b < a; ++b)
             if (o_.sweep.axes[b].name == axis.name) throw Error("--sweep " + axis.name + " is given twice");
+        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name) && !declared.find(axis.name))
+            throw Error("--sweep: unknown knob '" + axis.name + "' (see: list knobs; axes that are not knobs: "
+                        "preset, camera.near, camera.far)");
+        axis.numbers.clear();
         for (size_t i = 0; i < axis.values.size(); ++i) {
             std::string& v = axis.values[i];
             const std::string given = v;
-            if (axis.name == "preset") {
-                RunConfig probe;
-                probe.setPreset(v);  // Error naming the built-in presets, or FileError
-            } else if (TradeoffSweep::isCameraAxis(axis.name)) {
-                v = shortText(planeValue(axis.name, v));
-            } else {
-                if (!declared.find(axis.name))
-                    throw Error("--sweep: unknown knob '" + axis.name + "' (see: list knobs; axes that are not knobs: "
-                                "preset, camera.near, camera.far)");
-                v = canonical(axis.name, v);
-            }
+            readAxisValue(declared, axis, v);
             for (size_t j = 0; j < i; ++j)
                 if (axis.values[j] == v)
                     throw Error("--sweep " + axis.name + ": '" + given + "' is '" + v + "', which is given before");
         }
-    }
-    for (const auto& s : o_.against) {
-        const size_t eq = s.find('=');
-        if (eq == std::string::npos || !declared.find(s.substr(0, eq)))
-            throw Error("--against: expected 'reference' or knob=value[,knob=value...] of known knobs, got '" + s + "'");
-        canonical(s.substr(0, eq), s.substr(eq + 1));  // a bad value fails here
     }
     GridExclusion::Axes axes;
     for (const auto& a : o_.sweep.axes) axes.emplace_back(a.name, a.values);
     o_.sweep.exclusion.resolve(axes, [&](const std::string& axis, const std::string& value) {
         if (axis == "preset") return value;
         if (TradeoffSweep::isCameraAxis(axis)) return shortText(planeValue(axis, value));
-        return canonical(axis, value);
+        return readKnobAssignment(declared, axis, value).text;
     });
-    sweepSize_ = o_.sweep.count();
-    for (auto& p : o_.sweep.points())
-        if (o_.shard.takes(p.index)) points_.push_back(std::move(p));
+}
 
-    scene_ = loadScene(o_.run.sceneSpec());
+// One value of `axis`: `text` becomes the text the CSV writes, and its
+// number (the knob's value, the plane's distance) joins the axis' numbers.
+void TradeoffRunner::readAxisValue(const KnobRegistry& declared, TradeoffAxis& axis, std::string& text) {
+    if (axis.name == "preset") {
+        RunConfig probe;
+        probe.setPreset(text);  // Error naming the built-in presets, or FileError
+    } else if (TradeoffSweep::isCameraAxis(axis.name)) {
+        text = shortText(planeValue(axis.name, text));
+        axis.numbers.push_back(planeValue(axis.name, text));  // the distance the written text says
+    } else {
+        const KnobAssignment read = readKnobAssignment(declared, axis.name, text);
+        text = read.text;
+        axis.numbers.push_back(read.value);
+    }
+}
+
+// --against's knob values, read once (a bad value fails here) and applied as read.
+void TradeoffRunner::readAgainst(const KnobRegistry& declared) {
+    for (const auto& s : o_.against) {
+        const size_t eq = s.find('=');
+        if (eq == std::string::npos || !declared.find(s.substr(0, eq)))
+            throw Error("--against: expected 'reference' or knob=value[,knob=value...] of known knobs, got '" + s + "'");
+        against_.push_back(readKnobAssignment(declared, s.substr(0, eq), s.substr(eq + 1)));
+    }
+}
+
+// The run's camera; --orbit N poses about it; or the camera.path keyframes.
+void TradeoffRunner::placeCameras() {
     if (o_.walkthrough && scene_.cameraPath.size() < 2)
         throw Error("--walkthrough: the scene '" + scene_.name + "' has no camera.path (docs/scene-format.md)");
     const Camera base = o_.run.camera(scene_);
@@ -140,44 +166,49 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
     } else {
         cameras_.push_back(base);
     }
-    // Each point's run: the run's own, with the point's preset after the
-    // run's --preset ones (its knobs over theirs, under --set).
-    for (const auto& p : points_) {
+}
+
+// Each point's run: the run's own, with the point's preset after the run's
+// --preset ones (its knobs over theirs, under --set); its clip planes must
+// keep near < far.
+void TradeoffRunner::planPointRuns() {
+    const Camera base = o_.run.camera(scene_);
+    for (size_t p = 0; p < points_.size(); ++p) {
         RunConfig run = o_.run;
         for (size_t a = 0; a < o_.sweep.axes.size(); ++a)
-            if (o_.sweep.axes[a].name == "preset") run.addPreset(p.values[a]);
-        // The clip planes must keep near < far.
-        Camera c = base;
-        for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
-            if (o_.sweep.axes[a].name == "camera.near") c.nearPlane = planeValue("camera.near", p.values[a]);
-            if (o_.sweep.axes[a].name == "camera.far") c.farPlane = planeValue("camera.far", p.values[a]);
-        }
+            if (o_.sweep.axes[a].name == "preset") run.addPreset(points_[p].values[a]);
+        const Camera c = withPlanes(base, p);
         if (!(c.nearPlane < c.farPlane))
-            throw Error("point " + std::to_string(p.index) + ": camera.near " + shortText(c.nearPlane) +
+            throw Error("point " + std::to_string(points_[p].index) + ": camera.near " + shortText(c.nearPlane) +
                         " is not below camera.far " + shortText(c.farPlane) + " (leave it out with --exclude)");
         pointRuns_.push_back(std::move(run));
     }
+}
+
+// `camera` with point `p`'s clip planes.
+Camera TradeoffRunner::withPlanes(Camera camera, size_t p) const {
+    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
+        const TradeoffAxis& axis = o_.sweep.axes[a];
+        const float distance = TradeoffSweep::isCameraAxis(axis.name)
+                                   ? static_cast<float>(axis.numbers[points_[p].at[a]]) : 0.0f;
+        if (axis.name == "camera.near") camera.nearPlane = distance;
+        if (axis.name == "camera.far") camera.farPlane = distance;
+    }
+    return camera;
 }
 
 // The point's knobs (its run's preset and --set, then its axis values) on the session.
 void TradeoffRunner::applyPoint(RenderSession& session, size_t p) const {
     pointRuns_[p].applyKnobs(session.knobs(), session.scene());
     for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
-        const std::string& name = o_.sweep.axes[a].name;
-        if (name != "preset" && !TradeoffSweep::isCameraAxis(name))
-            session.knobs().applyAssignment(name + "=" + points_[p].values[a]);
+        const TradeoffAxis& axis = o_.sweep.axes[a];
+        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name))
+            session.knobs().set(*session.knobs().find(axis.name), axis.numbers[points_[p].at[a]]);
     }
 }
 
 // Camera `c` with the point's clip planes.
-Camera TradeoffRunner::cameraOf(size_t p, int c) const {
-    Camera cam = cameras_[static_cast<size_t>(c)];
-    for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
-        if (o_.sweep.axes[a].name == "camera.near") cam.nearPlane = planeValue("camera.near", points_[p].values[a]);
-        if (o_.sweep.axes[a].name == "camera.far") cam.farPlane = planeValue("camera.far", points_[p].values[a]);
-    }
-    return cam;
-}
+Camera TradeoffRunner::cameraOf(size_t p, int c) const { return withPlanes(cameras_[static_cast<size_t>(c)], p); }
 
 // Seeded by the point's number, so a shard draws what the whole run draws.
 std::uint64_t TradeoffRunner::pointSeed(size_t p, int camera) const {
@@ -271,7 +302,7 @@ FloatImage TradeoffRunner::againstImage(RenderSession& session, const TradeoffRe
                                         std::map<std::string, FloatImage>& rendered) const {
     if (o_.against.empty())
         return reference(session.scene(), session.knobs(), session.camera(), o_.run.width, o_.run.height, o_.buffer);
-    for (const auto& s : o_.against) session.knobs().applyAssignment(s);
+    for (const KnobAssignment& a : against_) session.knobs().set(*session.knobs().find(a.knob), a.value);
     std::string key = std::to_string(camera);
     for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id) key += "," + session.knobs().format(id);
     key += "," + shortText(session.camera().nearPlane) + "," + shortText(session.camera().farPlane);

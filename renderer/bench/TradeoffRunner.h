@@ -32,6 +32,7 @@
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/gl/CompiledShaders.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/knobs/KnobAssignment.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/Scene.h"
 
@@ -101,6 +102,14 @@ public:
     void setWarningSink(std::function<void(const std::string&)> sink) { warning_ = std::move(sink); }
 
 private:
+    // The constructor's steps (TradeoffRunner.cpp).
+    void checkOptions() const;
+    void readAxes(const KnobRegistry& declared);
+    static void readAxisValue(const KnobRegistry& declared, TradeoffAxis& axis, std::string& text);
+    void readAgainst(const KnobRegistry& declared);
+    void placeCameras();
+    void planPointRuns();
+    Camera withPlanes(Camera camera, size_t point) const;
     // run()'s stages and the helpers they share (TradeoffRunner.cpp).
     using Errors = std::vector<std::vector<ErrorEstimate>>;  // [point][camera]
     void applyPoint(RenderSession& session, size_t point) const;
@@ -127,6 +136,7 @@ private:
     size_t sweepSize_ = 0;
     std::vector<Camera> cameras_;
     std::vector<RunConfig> pointRuns_;  // per point: the run with the point's preset
+    std::vector<KnobAssignment> against_;  // --against's knob values, as read once
 };
 
 }  // namespace dw

@@ -14,41 +14,55 @@ size_t TradeoffSweep::count() const {
     return n;
 }
 
-std::vector<TradeoffPoint> TradeoffSweep::points() const {
-    if (axes.empty()) throw Error("tradeoff needs at least one axis (--sweep, --presets or --knobs)");
-    std::vector<std::vector<std::string>> all;
-    if (oneAtATime) {
-        if (centre.size() != axes.size()) throw Error("a one-at-a-time sweep needs a centre value per axis");
-        all.push_back(centre);
-        for (size_t a = 0; a < axes.size(); ++a)
-            for (const auto& v : axes[a].values) {
-                if (v == centre[a]) continue;
-                std::vector<std::string> p = centre;
-                p[a] = v;
-                all.push_back(std::move(p));
-            }
-    } else {
-        std::vector<size_t> at(axes.size(), 0);
-        const size_t n = count();
-        for (size_t i = 0; i < n; ++i) {
-            std::vector<std::string> p;
-            for (size_t a = 0; a < axes.size(); ++a) p.push_back(axes[a].values[at[a]]);
-            all.push_back(std::move(p));
-            for (size_t a = axes.size(); a-- > 0;) {
-                if (++at[a] < axes[a].values.size()) break;
-                at[a] = 0;
-            }
+// Every combination, the last axis fastest: each point's value positions.
+std::vector<std::vector<size_t>> TradeoffSweep::gridChoices() const {
+    std::vector<std::vector<size_t>> all;
+    std::vector<size_t> at(axes.size(), 0);
+    const size_t n = count();
+    for (size_t i = 0; i < n; ++i) {
+        all.push_back(at);
+        for (size_t a = axes.size(); a-- > 0;) {
+            if (++at[a] < axes[a].values.size()) break;
+            at[a] = 0;
         }
     }
+    return all;
+}
+
+// The centre first, then each axis' other values in order, the rest at the centre.
+std::vector<std::vector<size_t>> TradeoffSweep::oneAtATimeChoices() const {
+    if (centre.size() != axes.size()) throw Error("a one-at-a-time sweep needs a centre value per axis");
+    std::vector<size_t> middle;
+    for (size_t a = 0; a < axes.size(); ++a) {
+        const auto it = std::find(axes[a].values.begin(), axes[a].values.end(), centre[a]);
+        if (it == axes[a].values.end())
+            throw Error("a one-at-a-time sweep's centre '" + centre[a] + "' is not a value of " + axes[a].name);
+        middle.push_back(static_cast<size_t>(it - axes[a].values.begin()));
+    }
+    std::vector<std::vector<size_t>> all{middle};
+    for (size_t a = 0; a < axes.size(); ++a)
+        for (size_t v = 0; v < axes[a].values.size(); ++v) {
+            if (v == middle[a]) continue;
+            std::vector<size_t> p = middle;
+            p[a] = v;
+            all.push_back(std::move(p));
+        }
+    return all;
+}
+
+std::vector<TradeoffPoint> TradeoffSweep::points() const {
+    if (axes.empty()) throw Error("tradeoff needs at least one axis (--sweep, --presets or --knobs)");
+    const std::vector<std::vector<size_t>> all = oneAtATime ? oneAtATimeChoices() : gridChoices();
     std::vector<TradeoffPoint> out;
     for (size_t i = 0; i < all.size(); ++i) {
-        const auto& values = all[i];
+        std::vector<std::string> values;
+        for (size_t a = 0; a < axes.size(); ++a) values.push_back(axes[a].values[all[i][a]]);
         const bool excluded = exclusion.excludes([&](const std::string& axis) {
             for (size_t a = 0; a < axes.size(); ++a)
                 if (axes[a].name == axis) return values[a];
             return std::string();
         });
-        if (!excluded) out.push_back({static_cast<int>(i), values});
+        if (!excluded) out.push_back({static_cast<int>(i), std::move(values), all[i]});
     }
     if (out.empty())
         throw Error("the sweep is empty after --exclude: every one of its " + std::to_string(all.size()) +

@@ -19,12 +19,21 @@ namespace dw {
 
 struct TradeoffAxis {
     std::string name;
+    // As the CSV writes them. TradeoffRunner writes each knob value as the
+    // knob writes it and each clip plane as %.6g (once, when it checks them).
     std::vector<std::string> values;
+    // Each value as a run applies it, read once from its written text by
+    // TradeoffRunner: a knob axis the knob's value (KnobRegistry::set; an
+    // enum's choice number, a bool 0 or 1), a clip plane its distance in
+    // scene units. Empty for "preset" (a value is the preset's name) and
+    // before TradeoffRunner has read them.
+    std::vector<double> numbers;
 };
 
 struct TradeoffPoint {
     int index = 0;
     std::vector<std::string> values;  // one per axis
+    std::vector<size_t> at;           // one per axis: the value's position in the axis' values (and numbers)
 };
 
 class TradeoffSweep {
@@ -47,6 +56,10 @@ public:
     // every choice, a number its value x1/4, x1/2, x2, x4 (clamped to its
     // range, whole for an int; its range's quarters when the value is 0).
     static TradeoffSweep aroundCurrent(const KnobRegistry& current);
+
+private:
+    std::vector<std::vector<size_t>> gridChoices() const;
+    std::vector<std::vector<size_t>> oneAtATimeChoices() const;
 };
 
 }  // namespace dw

@@ -30,8 +30,8 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.run = s.run;
     inRange("--size width", s.run.width, limits::kSize);
     inRange("--size height", s.run.height, limits::kSize);
-    for (const auto& text : s.sweep) {
-        const BenchKnobAxis axis = BenchGrid::parseSweep(text);
+    for (const BenchKnobAxis& axis : s.sweep) {
+        BenchGrid::checkAxis(axis);
         for (const auto& a : o.sweep.axes)
             if (a.name == axis.knob) throw Error("--sweep " + axis.knob + " is given twice");
         o.sweep.axes.push_back({axis.knob, axis.values});

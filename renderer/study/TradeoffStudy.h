@@ -25,7 +25,7 @@ namespace dw {
 // the Python keywords are the same names with '_' for '-').
 struct TradeoffStudyOptions {
     RunConfig run;                       // scene, preset, --set; width x height (the CLI's default 640x360)
-    std::vector<std::string> sweep;      // each as --sweep takes it: axis=v1,v2,...
+    std::vector<BenchKnobAxis> sweep;    // each as --sweep reads it (BenchGrid::parseSweep): axis=v1,v2,...
     std::vector<std::string> presets;    // --presets: presets as an axis (the column 'preset', first)
     std::string knobs;                   // "" or "speed/quality" (--knobs)
     std::vector<std::string> exclude;    // each as --exclude takes it: axis=v[,v...][,axis=v...]

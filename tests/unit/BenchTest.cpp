@@ -81,14 +81,18 @@ TEST(BenchGrid, OrdersSizeThenLightsThenKnobsAndShardsByIndex) {
     EXPECT_EQ(plain.configs(17).at(0).lights, 17);
 }
 
-// tradeoff hands its axes on as text (the CLI's and Python's): the text parses back to the same axis.
-TEST(BenchGrid, SweepTextParsesBackToTheSameAxis) {
-    const BenchKnobAxis axis{"ssao.radius", {"0.25", "0.5", "1"}};
-    EXPECT_EQ(BenchGrid::sweepText(axis), "ssao.radius=0.25,0.5,1");
-    const BenchKnobAxis back = BenchGrid::parseSweep(BenchGrid::sweepText(axis));
-    EXPECT_EQ(back.knob, axis.knob);
-    EXPECT_EQ(back.values, axis.values);
-    EXPECT_EQ(BenchGrid::sweepText({"lighting.strategy", {"tiled"}}), "lighting.strategy=tiled");
+// An axis made without text (the Python module's sweep dicts) is held to what --sweep's text is.
+TEST(BenchGrid, CheckAxisHoldsAnAxisToWhatTheSweepTextChecks) {
+    EXPECT_NO_THROW(BenchGrid::checkAxis({"ssao.radius", {"0.25", "0.5"}}));
+    EXPECT_THROW(BenchGrid::checkAxis({"", {"1"}}), Error);
+    EXPECT_THROW(BenchGrid::checkAxis({"ssao.radius", {}}), Error);
+    EXPECT_THROW(BenchGrid::checkAxis({"ssao.radius", {"0.5", ""}}), Error);
+    try {
+        BenchGrid::checkAxis({"ssao.samples", {"8", "16", "8"}});
+        FAIL() << "a value given twice";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), "--sweep ssao.samples: '8' is given twice");
+    }
 }
 
 TEST(Bootstrap, IdenticalDistributionsContainOneTwiceAsSlowGivesTwo) {

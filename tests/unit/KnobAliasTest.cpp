@@ -4,6 +4,8 @@
 // with a warning that names both. No GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/TradeoffRunner.h"
@@ -115,4 +117,35 @@ TEST(KnobAlias, ASweepOfTheOldKnobNameSweepsTheNewOne) {
     // The old and the new name together are one axis given twice.
     o.sweep.axes = {{"ssao.enabled", {"true"}}, {"ao.enabled", {"false"}}};
     EXPECT_THROW(TradeoffRunner{o}, Error);
+}
+
+// A sweep's values are read once, when the runner checks them: each is kept
+// as the CSV writes it and as the run applies it (the number the written
+// text reads back as), and each point says which value of each axis it has.
+TEST(TradeoffRunner, ReadsEachAxisValueOnceAndCarriesItTyped) {
+    TradeoffOptions o;
+    o.run.scene = "default";
+    o.run.width = 64;
+    o.run.height = 48;
+    o.sweep.axes = {{"ssao.radius", {"0.50", "1e0"}},
+                    {"lighting.strategy", {"tiled", "volumes"}},
+                    {"camera.near", {"0.1234567", "0.5"}}};
+    const TradeoffRunner runner(o);
+    const auto& axes = runner.options().sweep.axes;
+    ASSERT_EQ(axes.size(), 3u);
+    EXPECT_EQ(axes[0].values, (std::vector<std::string>{"0.5", "1"}));
+    EXPECT_EQ(axes[0].numbers, (std::vector<double>{0.5, 1.0}));
+    const KnobRegistry knobs = RunConfig::declaredKnobs();
+    const KnobSpec& strategy = knobs.specs()[static_cast<size_t>(*knobs.find("lighting.strategy"))];
+    const auto choice = [&](const std::string& c) {
+        return static_cast<double>(std::find(strategy.choices.begin(), strategy.choices.end(), c) - strategy.choices.begin());
+    };
+    EXPECT_EQ(axes[1].numbers, (std::vector<double>{choice("tiled"), choice("volumes")}));
+    // A plane is written as %.6g and applied as what that text says.
+    EXPECT_EQ(axes[2].values[0], "0.123457");
+    EXPECT_EQ(axes[2].numbers[0], static_cast<double>(0.123457f));
+    ASSERT_EQ(runner.points().size(), 8u);
+    const TradeoffPoint& last = runner.points().back();
+    EXPECT_EQ(last.at, (std::vector<size_t>{1, 1, 1}));
+    EXPECT_EQ(last.values, (std::vector<std::string>{"1", "volumes", "0.5"}));
 }
