@@ -14,6 +14,8 @@ int runReferenceCommand(int argc, char** argv);
 int runCompareCommand(int argc, char** argv);
 int runReplayCommand(int argc, char** argv);
 int runTradeoffCommand(int argc, char** argv);
+// tradeoff --attribute (app/TradeoffAttribute.cpp): where one view's error comes from.
+int runTradeoffAttribute(int argc, char** argv);
 
 struct Command {
     const char* name;

@@ -278,6 +278,8 @@ int runMerge(int argc, char** argv) {
 
 int runTradeoffCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
+    for (int i = 2; i < argc; ++i)
+        if (std::string(argv[i]) == "--attribute") return runTradeoffAttribute(argc, argv);
     CommandLine cl(argc, argv, 2, "tradeoff");
     if (cl.flag("--help")) {
         std::cout << tradeoffUsage();

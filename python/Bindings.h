@@ -34,6 +34,9 @@ void bindBench(pybind11::module_& m);
 // dw.tradeoff: tradeoff's sweep in this process (TradeoffBindings.cpp).
 void bindTradeoff(pybind11::module_& m);
 
+// dw.attribute: tradeoff --attribute in this process (AttributionBindings.cpp).
+void bindAttribution(pybind11::module_& m);
+
 // dw.compare and dw.load_image (ReferenceBindings.cpp).
 void bindCompare(pybind11::module_& m);
 

@@ -21,5 +21,6 @@ PYBIND11_MODULE(deferred_workbench, m) {
     python::bindReference(session);
     python::bindBench(m);
     python::bindTradeoff(m);
+    python::bindAttribution(m);
     python::bindCompare(m);
 }

@@ -15,6 +15,7 @@
 #include "python/Arguments.h"
 #include "python/Bindings.h"
 #include "python/KnobArguments.h"
+#include "python/ValueErrors.h"
 #include "python/Records.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/study/TradeoffStudy.h"
@@ -77,20 +78,6 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
         rows.append(d);
     }
     return rows;
-}
-
-// Runs `f`, a check whose dw::Error is a bad argument: ValueError (FileError stays dw.Error).
-template <typename F>
-auto asValueError(F&& f) {
-    try {
-        return f();
-    } catch (const FileError&) {
-        throw;
-    } catch (const KnobError&) {
-        throw;
-    } catch (const Error& e) {
-        throw py::value_error(e.what());
-    }
 }
 
 // The files, checked before anything is measured (as the CLI's are):

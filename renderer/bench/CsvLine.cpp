@@ -1,6 +1,16 @@
 #include "renderer/bench/CsvLine.h"
 
+#include <charconv>
+#include <cmath>
+
 namespace dw {
+
+std::string csvNumber(double v) {
+    if (std::isnan(v)) return "";
+    char text[64];
+    auto [end, ec] = std::to_chars(text, text + sizeof(text), v);
+    return ec == std::errc() ? std::string(text, end) : std::string();
+}
 
 std::string csvField(const std::string& text) {
     if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

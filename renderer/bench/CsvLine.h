@@ -8,6 +8,9 @@ namespace dw {
 
 // `text` as one field: quoted when it holds a comma, a quote or a line break.
 std::string csvField(const std::string& text);
+// The shortest text that reads back to the same double; "" for NaN (a
+// CSV read back gives the very numbers written).
+std::string csvNumber(double v);
 // One line into its fields (quotes undone; a trailing '\r' dropped).
 std::vector<std::string> splitCsvLine(const std::string& line);
 

@@ -276,10 +276,9 @@ void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
                 (list.empty() ? std::string("none") : list) + ")");
 }
 
-namespace {
-
 // The buffer a tradeoff measures, as the session holds it: raw floats (HDR) or display values; AO's first channel.
-FloatImage readMeasured(RenderSession& s, const std::string& output, const std::string& buffer) {
+FloatImage TradeoffRunner::measuredImage(RenderSession& s, const std::string& buffer) {
+    const std::string output = gpuOutput(buffer);
     FloatImage image = buffer != "final" ? s.readRaw(output) : s.readDisplay(output);
     if (buffer == "ao" && image.channels > 1) {  // the AO is in the first channel
         FloatImage one;
@@ -293,8 +292,6 @@ FloatImage readMeasured(RenderSession& s, const std::string& output, const std::
     }
     return image;
 }
-
-}  // namespace
 
 // What one capture is measured against: the reference, or --against's
 // knobs rendered once per configuration (every knob) and camera.
@@ -310,7 +307,7 @@ FloatImage TradeoffRunner::againstImage(RenderSession& session, const TradeoffRe
     if (it == rendered.end()) {
         const std::string output = gpuOutput(o_.buffer);
         session.render(FrameRequest{{output}});
-        it = rendered.emplace(key, readMeasured(session, output, o_.buffer)).first;
+        it = rendered.emplace(key, measuredImage(session, o_.buffer)).first;
     }
     return it->second;
 }
@@ -332,7 +329,7 @@ TradeoffRunner::Errors TradeoffRunner::captureErrors(RenderSession& session, Con
             ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
             e.value = e.low = e.high = kNaN;
             try {
-                FloatImage test = readMeasured(runner.capture(config, 0, request), output, o_.buffer);
+                FloatImage test = measuredImage(runner.capture(config, 0, request), o_.buffer);
                 FloatImage against = againstImage(session, reference, c, againstImages);
                 // The edges of the reference's shadows (whatever --against says).
                 std::optional<FloatImage> mask;

@@ -91,6 +91,10 @@ public:
     // lighting pass's on-demand lighting.shadow (the reference's shadow
     // factor). Throws Error for unknown names.
     static std::string gpuOutput(const std::string& buffer);
+    // The image a --buffer name measures, as the last frame of `session` left
+    // it: raw floats (lbuffer, ao, shadow) or display values (final); the
+    // AO's first channel alone. Throws Error for unknown names.
+    static FloatImage measuredImage(RenderSession& session, const std::string& buffer);
 
     // Needs a current GL 4.5 context.
     TradeoffResult run(const TradeoffReference& reference, const BenchProgress& progress = {});

@@ -28,12 +28,7 @@ const std::string kPassPrefix = "gpu_ms.";
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The shortest text that reads back to the same double; "" for NaN.
-std::string number(double v) {
-    if (std::isnan(v)) return "";
-    char text[64];
-    auto [end, ec] = std::to_chars(text, text + sizeof(text), v);
-    return ec == std::errc() ? std::string(text, end) : std::string();
-}
+std::string number(double v) { return csvNumber(v); }
 
 bool isWholeNumber(const std::string& s) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });

@@ -8,8 +8,7 @@
 #include "renderer/OptionLimits.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/record/HostInfo.h"
-#include "renderer/reference/ReferenceCache.h"
-#include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/study/CachedReferences.h"
 #include "renderer/scene/SceneLoader.h"
 
 namespace dw {
@@ -93,56 +92,8 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
         if (progress.warning) progress.warning(line);
     };
     // References through the shared cache; each distinct one rendered once in this run.
-    const reference::ReferenceCache cache;
-    std::map<std::string, reference::ReferenceImages> rendered;
-    bool noted = false;
-    int references = 0, cachedReferences = 0;
-    double referenceSeconds = 0.0;
-    const TradeoffReference reference = [&](const Scene& scene, const KnobRegistry& k, const Camera& camera, int width,
-                                            int height, const std::string& buffer) {
-        reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(k, scene);
-        model.aoRays = aoRays;
-        model.seed = referenceSeed;
-        reference::ReferenceRequest request;
-        request.camera = camera;
-        request.width = width;
-        request.height = height;
-        const std::string key = reference::referenceKey(scene, model, request);
-        auto it = rendered.find(key);
-        if (it == rendered.end()) {
-            stopIfAsked();
-            std::optional<reference::ReferenceImages> images = cache.load(key);
-            if (images) {
-                ++cachedReferences;
-            } else {
-                say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
-                    (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
-                    "; cached for the next run)");
-                images = reference::renderReference(scene, model, request);
-                ++references;
-                referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
-                try {
-                    cache.store(key, *images);
-                } catch (const std::exception& e) {
-                    warn(std::string("warning: the reference is not cached: ") + e.what());
-                }
-            }
-            if (!noted && buffer == "final") {
-                const reference::KnobReport report = reference::reportKnobs(k, model);
-                if (!report.unmodelledOn.empty()) {
-                    std::string on;
-                    for (const auto& n : report.unmodelledOn) on += " " + n;
-                    warn("note: the reference's final image has no" + on +
-                         " (set them false to measure the shading alone)");
-                }
-                noted = true;
-            }
-            it = rendered.emplace(key, std::move(*images)).first;
-        }
-        const FloatImage* image = it->second.buffer(buffer);
-        if (!image) throw Error("the reference has no buffer '" + buffer + "'");
-        return *image;
-    };
+    CachedReferences references(aoRays, referenceSeed, {say, warn, stopIfAsked});
+    const TradeoffReference reference = references.function();
 
     TradeoffMeasurement m;
     if (progress.warning) runner.setWarningSink(progress.warning);
@@ -155,10 +106,10 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
     machine.emplace_back("compiler", compilerName());
     machine.emplace_back("date", utcNow());
     if (runner.options().against.empty()) {
-        result.settings.emplace_back("references_rendered", std::to_string(references));
-        result.settings.emplace_back("references_from_cache", std::to_string(cachedReferences));
+        result.settings.emplace_back("references_rendered", std::to_string(references.rendered()));
+        result.settings.emplace_back("references_from_cache", std::to_string(references.fromCache()));
         char text[32];
-        std::snprintf(text, sizeof(text), "%.6g", referenceSeconds);
+        std::snprintf(text, sizeof(text), "%.6g", references.seconds());
         result.settings.emplace_back("reference_seconds", text);
     }
     return m;

@@ -1,0 +1,57 @@
+#pragma once
+// The CPU references a study measures against, through the shared cache
+// (reference::ReferenceCache): each distinct one (scene content, the model
+// the knobs make, camera, size, AO rays, seed) rendered at most once per
+// run, loaded from the cache when it is there and stored after. `tradeoff`
+// (TradeoffStudy::measure) and `tradeoff --attribute` (ErrorAttribution)
+// hand it to their runners as their TradeoffReference.
+// Needs no GL (the reference is traced on the CPU).
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "renderer/bench/TradeoffRunner.h"
+#include "renderer/reference/ReferenceCache.h"
+#include "renderer/reference/ReferenceRenderer.h"
+
+namespace dw {
+
+class CachedReferences {
+public:
+    struct Hooks {
+        std::function<void(const std::string&)> line;     // "tradeoff: rendering the CPU reference ..."
+        std::function<void(const std::string&)> warning;  // a cache that cannot be written; effects not modelled
+        std::function<void()> stopIfAsked;                // throws to stop before a reference is traced
+    };
+    // `aoRays` AO rays per pixel, their pattern seeded by `seed` (reference --seed).
+    CachedReferences(int aoRays, std::uint32_t seed, Hooks hooks) : aoRays_(aoRays), seed_(seed), hooks_(std::move(hooks)) {}
+
+    // The reference's `buffer` (final, lbuffer, ao, shadow) of the view.
+    // Throws Error when the reference has no such buffer.
+    FloatImage image(const Scene& scene, const KnobRegistry& knobs, const Camera& camera, int width, int height,
+                     const std::string& buffer);
+    // As a TradeoffReference (this object must outlive it).
+    TradeoffReference function() {
+        return [this](const Scene& s, const KnobRegistry& k, const Camera& c, int w, int h, const std::string& b) {
+            return image(s, k, c, w, h, b);
+        };
+    }
+
+    int rendered() const { return rendered_; }
+    int fromCache() const { return fromCache_; }
+    double seconds() const { return seconds_; }  // tracing and building the rendered ones
+
+private:
+    void noteUnmodelled(const KnobRegistry& knobs, const reference::ReferenceModel& model);
+    int aoRays_;
+    std::uint32_t seed_;
+    Hooks hooks_;
+    const reference::ReferenceCache cache_;
+    std::map<std::string, reference::ReferenceImages> images_;
+    bool noted_ = false;
+    int rendered_ = 0, fromCache_ = 0;
+    double seconds_ = 0.0;
+};
+
+}  // namespace dw

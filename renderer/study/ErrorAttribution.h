@@ -1,0 +1,95 @@
+#pragma once
+// Where a frame's error comes from (`tradeoff --attribute`, Python
+// attribute(), issue 34 part 4). For one view at the run's settings, against
+// the CPU reference of that view (one reference: every row keeps the knobs
+// the reference honours), the error (ImageError: the metric with its
+// tile-bootstrap 95% interval) of
+//   as_is          the settings as they are;
+//   all_exact      every approximation family (ApproximationFamilies) at its
+//                  most accurate setting;
+//   and for each family F:
+//     only_exact        the settings as they are with F alone made exact;
+//     only_approximate  everything exact but F, left as it is.
+// F's part is measured both ways: removed = as_is - only_exact (what making
+// F exact takes away) and added = only_approximate - all_exact (what F
+// alone adds to an otherwise exact frame), each with a paired 95% interval
+// (the same tiles resampled for both images, 16x16 px as ImageError's).
+// The parts need not add up: approximations interact (an AO error hides
+// under a shadow, a threshold's cut light has no shadow to miss); the
+// result says by how much they fail to (the sum of the parts against the
+// total as_is - all_exact, both ways).
+// Only error metrics whose parts subtract (flip, rms); psnr and ssim are
+// refused. Needs a current GL 4.5 context to run().
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "renderer/RunConfig.h"
+#include "renderer/bench/ImageError.h"
+#include "renderer/bench/TradeoffRunner.h"
+#include "renderer/scene/Scene.h"
+
+namespace dw {
+
+class RenderSession;
+
+struct AttributionOptions {
+    RunConfig run;                   // scene, preset, --set, width x height: the settings as they are
+    std::string metric = "flip";     // flip | rms
+    std::string buffer = "final";    // final | lbuffer | ao | shadow (TradeoffRunner::gpuOutput)
+    int resamples = 2000;            // bootstrap resamples of every interval
+};
+
+// A difference of two errors on the same tiles with its 95% paired interval.
+struct ErrorDifference {
+    double value = 0.0, low = 0.0, high = 0.0;  // NaN: not measured
+};
+
+struct AttributionFamily {
+    std::string name, what;
+    std::vector<std::string> exact;    // the knob=value sets applied (those the scene's settings already hold included)
+    std::vector<std::string> kept;     // knobs of the family left as they are: the reference honours them here
+    ErrorEstimate onlyExact, onlyApproximate;
+    ErrorDifference removed, added;    // as_is - only_exact; only_approximate - all_exact
+};
+
+struct AttributionResult {
+    std::string metric, buffer;
+    int width = 0, height = 0;
+    ErrorEstimate asIs, allExact;
+    ErrorDifference total;             // as_is - all_exact
+    std::vector<AttributionFamily> families;
+    double sumRemoved = 0.0, sumAdded = 0.0;  // the parts summed, against total.value
+    int renders = 0;                   // distinct configurations rendered (rows that set nothing new share a frame)
+    std::vector<std::string> notes;
+};
+
+class ErrorAttribution {
+public:
+    // Checks the metric (flip or rms), the buffer and the run, loads the
+    // scene: Error / FileError before any GL.
+    explicit ErrorAttribution(AttributionOptions options);
+
+    // Renders each distinct configuration once (untimed) and measures it.
+    // `reference` as tradeoff's (TradeoffStudy's cached references); `say`
+    // gets a progress line per configuration.
+    AttributionResult run(const TradeoffReference& reference, const std::function<void(const std::string&)>& say = {});
+
+    const Scene& scene() const { return scene_; }
+    const AttributionOptions& options() const { return o_; }
+
+    // The Markdown table `tradeoff --attribute` prints, and its CSV (one row
+    // per family and the two whole-frame rows; columns in docs/tradeoffs.md).
+    static std::string table(const AttributionResult& r);
+    static std::string csv(const AttributionResult& r);
+
+private:
+    struct Frame;
+    FloatImage measured(RenderSession& session, const std::vector<std::string>& sets, std::vector<Frame>& frames,
+                        const std::function<void(const std::string&)>& say);
+    AttributionOptions o_;
+    Scene scene_;
+};
+
+}  // namespace dw
