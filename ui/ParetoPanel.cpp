@@ -230,6 +230,7 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     else if (!waitingKnob.empty()) referenceWait(state);
     else sweepControls(state, session);
     showFinishedSweep(state);
+    attribution.draw(state, session);
     csvControls();
     if (table.rows.empty()) {
         wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");

@@ -20,6 +20,7 @@
 
 #include "renderer/RenderSession.h"
 #include "renderer/bench/TradeoffTable.h"
+#include "ui/AttributionView.h"
 #include "ui/UiState.h"
 
 namespace dw::ui {
@@ -56,6 +57,7 @@ struct ParetoPanel {
     // What the errors of the table on show are measured against (a quick
     // sweep's baseline; empty for a loaded CSV).
     std::string tableBaseline;
+    AttributionView attribution;  // "Where the error comes from"
     // The plot's ranges as last drawn: GPU ms across, error up (after padding
     // and clamping: never below 0 when the data are not).
     struct Axes {

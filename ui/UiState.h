@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "renderer/bench/QuickSweep.h"
+#include "renderer/study/ErrorAttribution.h"
 #include "renderer/bench/ChangeMeasurement.h"
 #include "renderer/inspect/BufferView.h"
 #include "renderer/inspect/FiniteCheck.h"
@@ -276,6 +277,9 @@ struct UiState {
     // frames (one a UI frame, before the view's own, so the viewport never
     // shows a swept value).
     QuickSweep sweep;
+    // The Pareto panel's attribution of the view's error (AttributionView):
+    // the frame loop renders one configuration a UI frame, before the view's own.
+    AttributionRun attribution;
     // File > Save record's measurement of the state on show: the frame loop
     // renders its frames (one a UI frame, before the view's own) and writes
     // the record after the last (RecordMeasurement).

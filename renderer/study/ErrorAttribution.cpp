@@ -132,10 +132,122 @@ bool holdsZero(const ErrorDifference& d) { return !(d.low > 0.0) && !(d.high < 0
 
 }  // namespace
 
-struct ErrorAttribution::Frame {
-    std::string key;  // every knob's value
-    FloatImage image;
+struct AttributionRun::Measured {
+    std::string key;  // every knob's value: equal keys render the same image
+    ErrorEstimate error;
+    TileSums tiles;
 };
+
+void AttributionRun::start(const KnobRegistry& asIs, const Scene& scene, FloatImage truth, const std::string& metric,
+                           const std::string& buffer, int resamples) {
+    if (metric != "flip" && metric != "rms")
+        throw Error("--attribute needs an error metric whose parts subtract: flip or rms, got '" + metric + "'");
+    TradeoffRunner::gpuOutput(buffer);
+    asIs_ = asIs;
+    truth_ = std::move(truth);
+    metric_ = metric;
+    buffer_ = buffer;
+    resamples_ = resamples;
+    result_ = {};
+    result_.metric = metric;
+    result_.buffer = buffer;
+    result_.width = truth_.width;
+    result_.height = truth_.height;
+    std::vector<std::string> allExact;
+    for (const ApproximationFamily& f : approximationFamilies()) {
+        AttributionFamily a;
+        a.name = f.name;
+        a.what = f.what;
+        a.exact = applicable(f.exact, asIs_, scene, a.kept);
+        allExact.insert(allExact.end(), a.exact.begin(), a.exact.end());
+        std::string kept;
+        for (const auto& n : a.kept) kept += " " + n;
+        if (!kept.empty()) result_.notes.push_back(f.name + ": left as it is (the reference models it here):" + kept);
+        result_.families.push_back(std::move(a));
+    }
+    sets_ = {{}, allExact};
+    for (const AttributionFamily& f : result_.families) {
+        std::vector<std::string> others;
+        for (const std::string& x : allExact)
+            if (std::find(f.exact.begin(), f.exact.end(), x) == f.exact.end()) others.push_back(x);
+        sets_.push_back(f.exact);
+        sets_.push_back(std::move(others));
+    }
+    measured_.assign(sets_.size(), nullptr);
+    next_ = 0;
+    error_.clear();
+    done_ = false;
+    running_ = true;
+}
+
+double AttributionRun::progress() const {
+    return sets_.empty() ? 0.0 : static_cast<double>(next_) / static_cast<double>(sets_.size());
+}
+
+bool AttributionRun::step(RenderSession& session) {
+    if (!running_) return false;
+    try {
+        measure(session, next_++);
+        if (next_ == sets_.size()) finish();
+    } catch (const std::exception& e) {
+        error_ = e.what();
+        running_ = false;
+    }
+    return running_;
+}
+
+// Configuration `c` on the session, its knobs put back after.
+void AttributionRun::measure(RenderSession& session, size_t c) {
+    const KnobRegistry saved = session.knobs();
+    session.knobs().copyValues(asIs_);
+    for (const std::string& s : sets_[c]) session.knobs().applyAssignment(s);
+    std::string key;
+    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id) key += session.knobs().format(id) + ",";
+    for (size_t i = 0; i < c; ++i)
+        if (measured_[i]->key == key) {
+            measured_[c] = measured_[i];
+            session.knobs().copyValues(saved);
+            return;
+        }
+    try {
+        session.render(FrameRequest{{TradeoffRunner::gpuOutput(buffer_)}});
+        const FloatImage image = TradeoffRunner::measuredImage(session, buffer_);
+        auto m = std::make_shared<Measured>();
+        m->key = key;
+        const bool hdr = buffer_ != "final";
+        m->error = ImageError::measure(truth_, image, metric_, hdr, resamples_, 12345 + c);
+        m->tiles = tileSums(truth_, image, metric_, hdr);
+        measured_[c] = std::move(m);
+        ++result_.renders;
+    } catch (...) {
+        session.knobs().copyValues(saved);
+        throw;
+    }
+    session.knobs().copyValues(saved);
+}
+
+// The rows' errors and the paired parts.
+void AttributionRun::finish() {
+    const Measured& asIs = *measured_[0];
+    const Measured& exact = *measured_[1];
+    result_.asIs = asIs.error;
+    result_.allExact = exact.error;
+    std::uint64_t seed = 54321;
+    result_.total = pairedDifference(asIs.tiles, exact.tiles, metric_, resamples_, seed);
+    for (size_t f = 0; f < result_.families.size(); ++f) {
+        AttributionFamily& a = result_.families[f];
+        const Measured& onlyExact = *measured_[2 + 2 * f];
+        const Measured& onlyApproximate = *measured_[3 + 2 * f];
+        a.onlyExact = onlyExact.error;
+        a.onlyApproximate = onlyApproximate.error;
+        a.removed = pairedDifference(asIs.tiles, onlyExact.tiles, metric_, resamples_, ++seed);
+        a.added = pairedDifference(onlyApproximate.tiles, exact.tiles, metric_, resamples_, ++seed);
+        result_.sumRemoved += a.removed.value;
+        result_.sumAdded += a.added.value;
+    }
+    running_ = false;
+    done_ = true;
+}
 
 ErrorAttribution::ErrorAttribution(AttributionOptions options) : o_(std::move(options)) {
     if (o_.metric != "flip" && o_.metric != "rms")
@@ -146,68 +258,20 @@ ErrorAttribution::ErrorAttribution(AttributionOptions options) : o_(std::move(op
     scene_ = loadScene(o_.run.sceneSpec());
 }
 
-// The view rendered with the settings as they are and `sets` on top: each
-// distinct configuration once.
-FloatImage ErrorAttribution::measured(RenderSession& session, const std::vector<std::string>& sets,
-                                      std::vector<Frame>& frames, const std::function<void(const std::string&)>& say) {
-    o_.run.applyKnobs(session.knobs(), session.scene());
-    for (const std::string& s : sets) session.knobs().applyAssignment(s);
-    std::string key;
-    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id) key += session.knobs().format(id) + ",";
-    for (const Frame& f : frames)
-        if (f.key == key) return f.image;
-    if (say) say("tradeoff --attribute: rendering configuration " + std::to_string(frames.size() + 1));
-    session.render(FrameRequest{{TradeoffRunner::gpuOutput(o_.buffer)}});
-    frames.push_back({key, TradeoffRunner::measuredImage(session, o_.buffer)});
-    return frames.back().image;
-}
-
 AttributionResult ErrorAttribution::run(const TradeoffReference& reference,
                                         const std::function<void(const std::string&)>& say) {
     RenderSession session;
     session.setScene(scene_, o_.run);
     session.resize(o_.run.width, o_.run.height);
-    const KnobRegistry asIs = session.knobs();
-    AttributionResult r;
-    r.metric = o_.metric;
-    r.buffer = o_.buffer;
-    r.width = o_.run.width;
-    r.height = o_.run.height;
-    std::vector<std::string> allExact;
-    for (const ApproximationFamily& f : approximationFamilies()) {
-        AttributionFamily a;
-        a.name = f.name;
-        a.what = f.what;
-        a.exact = applicable(f.exact, asIs, scene_, a.kept);
-        allExact.insert(allExact.end(), a.exact.begin(), a.exact.end());
-        std::string kept;
-        for (const auto& n : a.kept) kept += " " + n;
-        if (!kept.empty()) r.notes.push_back(f.name + ": left as it is (the reference models it here):" + kept);
-        r.families.push_back(std::move(a));
+    FloatImage truth = reference(scene_, session.knobs(), session.camera(), o_.run.width, o_.run.height, o_.buffer);
+    AttributionRun run;
+    run.start(session.knobs(), scene_, std::move(truth), o_.metric, o_.buffer, o_.resamples);
+    for (int n = 1; run.running(); ++n) {
+        if (say) say("tradeoff --attribute: configuration " + std::to_string(n));
+        run.step(session);
     }
-    const bool hdr = o_.buffer != "final";
-    const FloatImage truth = reference(scene_, asIs, session.camera(), o_.run.width, o_.run.height, o_.buffer);
-    std::vector<Frame> frames;
-    std::uint64_t seed = 12345;
-    auto measure = [&](const std::vector<std::string>& sets, ErrorEstimate& error) {
-        const FloatImage image = measured(session, sets, frames, say);
-        error = ImageError::measure(truth, image, o_.metric, hdr, o_.resamples, seed);
-        return tileSums(truth, image, o_.metric, hdr);
-    };
-    const TileSums asIsTiles = measure({}, r.asIs), exactTiles = measure(allExact, r.allExact);
-    r.total = pairedDifference(asIsTiles, exactTiles, o_.metric, o_.resamples, ++seed);
-    for (AttributionFamily& f : r.families) {
-        std::vector<std::string> others;
-        for (const std::string& s : allExact)
-            if (std::find(f.exact.begin(), f.exact.end(), s) == f.exact.end()) others.push_back(s);
-        const TileSums onlyExact = measure(f.exact, f.onlyExact), onlyApproximate = measure(others, f.onlyApproximate);
-        f.removed = pairedDifference(asIsTiles, onlyExact, o_.metric, o_.resamples, ++seed);
-        f.added = pairedDifference(onlyApproximate, exactTiles, o_.metric, o_.resamples, ++seed);
-        r.sumRemoved += f.removed.value;
-        r.sumAdded += f.added.value;
-    }
-    r.renders = static_cast<int>(frames.size());
-    return r;
+    if (!run.error().empty()) throw Error(run.error());
+    return run.result();
 }
 
 std::string ErrorAttribution::table(const AttributionResult& r) {

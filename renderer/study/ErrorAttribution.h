@@ -22,12 +22,14 @@
 // refused. Needs a current GL 4.5 context to run().
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "renderer/RunConfig.h"
 #include "renderer/bench/ImageError.h"
 #include "renderer/bench/TradeoffRunner.h"
+#include "renderer/knobs/KnobRegistry.h"
 #include "renderer/scene/Scene.h"
 
 namespace dw {
@@ -65,13 +67,51 @@ struct AttributionResult {
     std::vector<std::string> notes;
 };
 
+// One attribution a configuration at a time: the window steps it once a UI
+// frame (its Pareto panel); ErrorAttribution::run loops over it. Each step
+// renders one configuration (the knobs as they are with a row's sets on
+// top; a configuration whose knobs equal an earlier one's reuses its image),
+// measures it and puts the session's knobs back.
+class AttributionRun {
+public:
+    // `asIs`: the knobs as they are; `truth`: the reference's `buffer` image
+    // of the view the session renders, at its size. Throws Error for a
+    // metric other than flip or rms or an unknown buffer.
+    void start(const KnobRegistry& asIs, const Scene& scene, FloatImage truth, const std::string& metric,
+               const std::string& buffer, int resamples = 2000);
+    // The next configuration; true while configurations remain. On the last
+    // it computes the parts. An error stops the run (error() says it).
+    bool step(RenderSession& session);
+    void cancel() { running_ = false; }
+    bool running() const { return running_; }
+    bool done() const { return done_; }
+    double progress() const;  // configurations measured over all, 0..1
+    const std::string& error() const { return error_; }
+    const AttributionResult& result() const { return result_; }
+
+private:
+    struct Measured;
+    void measure(RenderSession& session, size_t configuration);
+    void finish();
+    KnobRegistry asIs_;
+    FloatImage truth_;
+    std::string metric_, buffer_, error_;
+    int resamples_ = 2000;
+    std::vector<std::vector<std::string>> sets_;  // per configuration: as_is, all_exact, then each family's two
+    std::vector<std::shared_ptr<Measured>> measured_;
+    size_t next_ = 0;
+    bool running_ = false, done_ = false;
+    AttributionResult result_;
+};
+
 class ErrorAttribution {
 public:
     // Checks the metric (flip or rms), the buffer and the run, loads the
     // scene: Error / FileError before any GL.
     explicit ErrorAttribution(AttributionOptions options);
 
-    // Renders each distinct configuration once (untimed) and measures it.
+    // Renders each distinct configuration once (untimed) and measures it
+    // (AttributionRun, stepped to the end).
     // `reference` as tradeoff's (TradeoffStudy's cached references); `say`
     // gets a progress line per configuration.
     AttributionResult run(const TradeoffReference& reference, const std::function<void(const std::string&)>& say = {});
@@ -85,9 +125,6 @@ public:
     static std::string csv(const AttributionResult& r);
 
 private:
-    struct Frame;
-    FloatImage measured(RenderSession& session, const std::vector<std::string>& sets, std::vector<Frame>& frames,
-                        const std::function<void(const std::string&)>& say);
     AttributionOptions o_;
     Scene scene_;
 };

@@ -1583,6 +1583,73 @@ TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurren
 
 // The plot's ranges follow the data: times and errors of 0 and up give axes
 // from 0, never a negative range (the trial's -85.3 ms and -0.00717).
+// Issue 34 part 4 in the window: "attribute this view" with no CPU reference
+// shown traces it first (as F9), then steps the attribution a configuration a
+// frame; the table and bars show each family's parts; the session's knobs are
+// the same after as before.
+TEST(Gui, TheParetoPanelAttributesTheViewsErrorAfterTracingItsReference) {
+    const fs::path cache = test::tempDir() / "attribution-reference-cache";
+    fs::remove_all(cache);
+    setenv("DW_REFERENCE_CACHE", cache.string().c_str(), 1);
+    auto session = test::makeSession(48, 27);
+    ui::UiState state;
+    session->loadScene("default", state.run);
+    session->render({{"final"}});
+    std::string before;
+    for (int id = 0; id < static_cast<int>(session->knobs().size()); ++id) before += session->knobs().format(id) + ",";
+    HeadlessImGui imgui(ImVec2(800, 900));
+    ui::ParetoPanel panel;
+    ui::ReferenceControls reference;
+    reference.aoRays = 8;
+    bool open = true;
+    auto frame = [&] {
+        imgui.frame([&] {
+            reference.update(state, *session);
+            ImGui::SetNextWindowPos(ImVec2(0, 0));
+            ImGui::SetNextWindowSize(ImVec2(800, 900));
+            panel.draw("Pareto", &open, state, *session);
+        });
+    };
+    auto click = [&](const std::string& name) {
+        frame();
+        const auto& items = ui::drawnItems();
+        ASSERT_TRUE(items.count(name)) << name;
+        const ui::DrawnItem& b = items.at(name);
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(-1000, -1000);
+    };
+    click("pareto.attribution");  // the section opens
+    click("pareto.attribute");
+    EXPECT_TRUE(panel.attribution.waitingForReference);
+    for (int i = 0; i < 6000 && !state.attribution.running(); ++i) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(state.attribution.running()) << panel.attribution.error;
+    int steps = 0;
+    while (state.attribution.step(*session)) ASSERT_LT(++steps, 40);
+    ASSERT_TRUE(state.attribution.done()) << state.attribution.error();
+    frame();
+    EXPECT_TRUE(ui::drawnItems().count("pareto.attribution_bars"));
+    const AttributionResult& r = state.attribution.result();
+    ASSERT_EQ(r.families.size(), 9u);
+    EXPECT_EQ(r.metric, "flip");
+    EXPECT_GT(r.asIs.value, r.allExact.value);
+    for (const AttributionFamily& f : r.families) {
+        EXPECT_LE(f.added.low, f.added.value) << f.name;
+        EXPECT_GE(f.added.high, f.added.value) << f.name;
+    }
+    std::string after;
+    for (int id = 0; id < static_cast<int>(session->knobs().size()); ++id) after += session->knobs().format(id) + ",";
+    EXPECT_EQ(after, before);
+}
+
 TEST(Gui, TheParetoPlotsAxesStartAtZeroForDataThatDoNotGoBelowIt) {
     TradeoffTable t;
     t.axes = {"ao.method"};
