@@ -8,6 +8,7 @@
 #include "renderer/OptionLimits.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/record/HostInfo.h"
+#include "renderer/reference/RaySceneCache.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/SceneLoader.h"
@@ -94,6 +95,9 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
     };
     // References through the shared cache; each distinct one rendered once in this run.
     const reference::ReferenceCache cache;
+    // One ray scene for every camera and sweep point of the run (rebuilt only
+    // when the scene's content changes, as flame particles do by frame).
+    reference::RaySceneCache rayScenes;
     std::map<std::string, reference::ReferenceImages> rendered;
     bool noted = false;
     int references = 0, cachedReferences = 0;
@@ -118,7 +122,7 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
                 say("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
                     (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
                     "; cached for the next run)");
-                images = reference::renderReference(scene, model, request);
+                images = reference::renderReference(scene, model, request, nullptr, &rayScenes);
                 ++references;
                 referenceSeconds += images->stats.seconds + images->stats.buildSeconds;
                 try {
