@@ -272,8 +272,10 @@ void WorkbenchSession::writeKnobValues(const std::string& path) const { session_
 
 reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& options,
                                                        std::optional<std::uint64_t> frame) const {
-    return reference::traceViewReference(session_->scene(), session_->knobs(), session_->camera(), width_, height_,
-                                         options, frame)
+    ReferenceOptions o = options;
+    if (!o.rayScenes) o.rayScenes = rayScenes_.get();  // the session's cameras share one ray scene
+    return reference::traceViewReference(session_->scene(), session_->knobs(), session_->camera(), width_, height_, o,
+                                         frame)
         .images;
 }
 

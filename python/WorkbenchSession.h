@@ -153,6 +153,8 @@ private:
     std::thread::id owner_;
     RunConfig run_;
     std::unique_ptr<RenderSession> session_;
+    // The ray scene the session's references share (one build for all its cameras).
+    std::unique_ptr<reference::RaySceneCache> rayScenes_ = std::make_unique<reference::RaySceneCache>();
     int width_ = 0, height_ = 0;
     bool rendered_ = false;
     std::optional<TimingReport> timings_;

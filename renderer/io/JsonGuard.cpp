@@ -1,5 +1,6 @@
 #include "renderer/io/JsonGuard.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cfloat>
 #include <cmath>
@@ -145,8 +146,11 @@ namespace dw {
 
 namespace {
 
+std::atomic<long long> parses{0};
+
 template <typename Json>
 Json guardedParse(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
+    ++parses;
     checkJsonText(text, source, options);  // depth first: nlohmann's parser recurses
     try {
         return Json::parse(text);
@@ -171,6 +175,8 @@ nlohmann::json parseJson(std::string_view text, const std::string& source, const
 nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
     return guardedParse<nlohmann::ordered_json>(text, source, options);
 }
+
+long long jsonParseCount() { return parses.load(); }
 
 nlohmann::json readJsonFile(const std::string& path, const JsonGuardOptions& options) {
     return parseJson(readWholeFile(path, "not found", "cannot read"), path, options);

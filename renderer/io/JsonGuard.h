@@ -49,6 +49,10 @@ nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string
 // The same for a file: readWholeFile, then parseJson.
 nlohmann::json readJsonFile(const std::string& path, const JsonGuardOptions& options = {});
 
+// JSON texts parsed (parseJson, parseOrderedJson, readJsonFile) in this
+// process so far: tests check that a file's JSON is parsed once.
+long long jsonParseCount();
+
 // A JSON library exception's text without its "[json.exception.type_error.302] "
 // tag, for the rare error the checks above leave to the parser.
 std::string jsonErrorText(const std::exception& e);

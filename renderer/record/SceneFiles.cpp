@@ -59,6 +59,8 @@ std::string resolved(const fs::path& from, const std::string& name) {
 
 class SceneFileList {
 public:
+    // `gltfUris`: the loader's Scene::gltfExternalUris (a glTF it read is not parsed again).
+    explicit SceneFileList(const std::map<std::string, std::vector<std::string>>& gltfUris) : gltfUris_(gltfUris) {}
     void add(const std::string& name) {
         const std::string path = fs::path(name).lexically_normal().string();
         std::error_code ec;
@@ -77,6 +79,10 @@ public:
 
 private:
     void addGltfParts(const std::string& path) {
+        if (const auto known = gltfUris_.find(path); known != gltfUris_.end()) {
+            for (const std::string& uri : known->second) add(resolved(path, uri));
+            return;
+        }
         const nlohmann::json j = readJsonFile(path, {kMaxJsonDepth, false});
         for (const char* key : {"buffers", "images"})
             if (j.contains(key) && j[key].is_array())
@@ -101,6 +107,7 @@ private:
         }
     }
 
+    const std::map<std::string, std::vector<std::string>>& gltfUris_;
     std::set<std::string> seen_;
     std::vector<std::string> paths_;
 };
@@ -110,7 +117,7 @@ private:
 bool isBuiltinSceneContent(const std::string& path) { return path.rfind("builtin:", 0) == 0; }
 
 std::vector<RecordedFile> sceneFilesOf(const Scene& scene) {
-    SceneFileList list;
+    SceneFileList list(scene.gltfExternalUris);
     const bool builtin = isBuiltinSceneContent(scene.source);
     if (!builtin) list.add(scene.source);
     list.add(scene.sky.environmentSource);

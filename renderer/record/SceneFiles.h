@@ -4,6 +4,8 @@
 // glTF (.gltf) its external .bin buffers and images (data: URIs are inside
 // the file already); and every image the loaded scene names. Each once, with
 // the sha256 of its content; a built-in scene's content by its hash. Needs no GL.
+// A glTF the scene's loader read is not parsed again: its parts come from the
+// loader's parse (Scene::gltfExternalUris); only its bytes are read, to hash.
 #include <string>
 #include <vector>
 

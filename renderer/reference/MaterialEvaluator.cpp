@@ -30,11 +30,12 @@ T interpolate(const std::vector<T>& a, const glm::uvec3& t, double u, double v) 
 
 }  // namespace
 
-SurfaceSample evaluateSurface(const RayScene& rays, const RayHit& hit, const glm::dvec3& org, const glm::dvec3& dir) {
+SurfaceSample evaluateSurface(const Scene& scene, const RayScene& rays, const RayHit& hit, const glm::dvec3& org,
+                              const glm::dvec3& dir) {
     (void)org;
     const InstanceGeometry& g = rays.instances()[hit.instance];
-    const Material& m = rays.scene().materials[g.material];
-    const auto& images = rays.scene().images;
+    const Material& m = scene.materials[g.material];
+    const auto& images = scene.images;
     const glm::uvec3 t = rays.triangle(hit.instance, hit.triangle);
     const double u = hit.u, v = hit.v;
     SurfaceSample s;

@@ -13,7 +13,7 @@
 namespace dw::reference {
 
 struct SurfaceSample {
-    glm::dvec3 position;         // origin-relative world space, recomputed from the triangle in double
+    glm::dvec3 position;         // world space relative to the RayScene's origin, recomputed from the triangle in double
     glm::dvec3 geometricNormal;  // unit, on the side the ray came from
     glm::dvec3 normal;           // unit shading normal (interpolated, normal-mapped, facing the viewer on back faces)
     glm::dvec3 diffuse;
@@ -24,7 +24,9 @@ struct SurfaceSample {
     double alpha = 1.0;      // base colour alpha (factor x vertex colour x texture), for blended materials
 };
 
-// `dir` is the incoming ray's direction (any length).
-SurfaceSample evaluateSurface(const RayScene& rays, const RayHit& hit, const glm::dvec3& org, const glm::dvec3& dir);
+// `dir` is the incoming ray's direction (any length). `scene`: the materials and
+// images, the content `rays` was built from.
+SurfaceSample evaluateSurface(const Scene& scene, const RayScene& rays, const RayHit& hit, const glm::dvec3& org,
+                              const glm::dvec3& dir);
 
 }  // namespace dw::reference

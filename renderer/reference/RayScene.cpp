@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -18,7 +19,10 @@ struct QueryContext {
     RTCIntersectContext embree;
     const RayScene* scene;
     Visibility visibility;
+    bool blendedCastShadows;
 };
+
+std::atomic<long long> builds{0};
 
 void filterHits(const RTCFilterFunctionNArguments* args) {
     const auto* ctx = reinterpret_cast<const QueryContext*>(args->context);
@@ -35,7 +39,7 @@ void filterHits(const RTCFilterFunctionNArguments* args) {
         }
         // Blended surfaces cast no shadow and occlude no AO (as on the GPU,
         // where they are in neither the shadow maps nor the G-buffer).
-        const bool casts = ctx->visibility == Visibility::Shadow && ctx->scene->blendedCastShadows();
+        const bool casts = ctx->visibility == Visibility::Shadow && ctx->blendedCastShadows;
         if (ctx->visibility != Visibility::Camera && !casts && ctx->scene->blended(instance)) {
             args->valid[i] = 0;
             continue;
@@ -79,72 +83,89 @@ struct RayScene::Embree {
     }
 };
 
-RayScene::RayScene(const Scene& scene, const glm::dvec3& origin, bool blendedCastShadows)
-    : scene_(scene), origin_(origin), blendedCastShadows_(blendedCastShadows), embree_(std::make_unique<Embree>()) {
+RayScene::RayScene(const Scene& scene, const glm::dvec3& origin)
+    : materials_(scene.materials), origin_(origin), embree_(std::make_unique<Embree>()) {
+    ++builds;
     const Bounds b = scene.bounds();
     sceneRadius_ = std::max(b.empty() ? 1.0 : static_cast<double>(b.radius()), 1e-30);
+    maskImages_.resize(scene.images.size());
+    for (const Material& m : materials_)
+        if (m.alphaMode == AlphaMode::Mask && m.baseColorTexture >= 0 &&
+            m.baseColorTexture < static_cast<int>(scene.images.size()))
+            maskImages_[m.baseColorTexture] = scene.images[m.baseColorTexture];
+    indices_.reserve(scene.meshes.size());
+    for (const Mesh& mesh : scene.meshes) indices_.push_back(mesh.indices);
     embree_->device = rtcNewDevice("");
     if (!embree_->device) throw Error("Embree: cannot create a device (rtcNewDevice)");
     embree_->scene = rtcNewScene(embree_->device);
     throwOnError(embree_->device, "rtcNewScene");
     rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
-
     instances_.reserve(scene.instances.size());
-    for (const MeshInstance& inst : scene.instances) {
-        const Mesh& mesh = scene.meshes[inst.mesh];
-        InstanceGeometry g;
-        g.material = mesh.material;
-        const glm::dmat4 m(inst.transform);
-        const glm::dmat3 m3(m);
-        const double det = glm::determinant(m3);
-        g.mirrored = det < 0.0;
-        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(m3));
-        const size_t n = mesh.vertices.size();
-        g.positions.resize(n);
-        g.normals.resize(n);
-        g.tangents.resize(n);
-        g.uv0.resize(n);
-        g.uv1.resize(n);
-        g.colors.resize(n);
-        for (size_t i = 0; i < n; ++i) {
-            const Vertex& v = mesh.vertices[i];
-            g.positions[i] = glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0)) - origin;
-            g.normals[i] = normalMatrix * glm::dvec3(v.normal);
-            g.tangents[i] = glm::dvec4(m3 * glm::dvec3(v.tangent), v.tangent.w);
-            g.uv0[i] = glm::dvec2(v.uv);
-            g.uv1[i] = glm::dvec2(v.uv1);
-            g.colors[i] = glm::dvec4(v.color);
-        }
-        g.indices = &mesh.indices;
-
-        RTCGeometry geom = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), std::max<size_t>(n, 1)));
-        const size_t triangles = mesh.indices.size() / 3;
-        auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                  3 * sizeof(unsigned), triangles));
-        if (!vb || (!ib && triangles > 0)) {
-            rtcReleaseGeometry(geom);
-            throwOnError(embree_->device, "rtcSetNewGeometryBuffer");
-            throw Error("Embree: out of memory for the scene's triangles");
-        }
-        for (size_t i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c) vb[3 * i + c] = static_cast<float>(g.positions[i][c]);
-        for (size_t i = 0; i < triangles * 3; ++i) ib[i] = mesh.indices[i];
-        const Material& mat = scene.materials[mesh.material];
-        rtcSetGeometryIntersectFilterFunction(geom, filterHits);
-        if (mat.alphaMode != AlphaMode::Opaque) rtcSetGeometryOccludedFilterFunction(geom, filterHits);
-        rtcCommitGeometry(geom);
-        const unsigned id = rtcAttachGeometry(embree_->scene, geom);
-        rtcReleaseGeometry(geom);
-        if (id != instances_.size()) throw Error("Embree: unexpected geometry id");
-        triangles_ += triangles;
-        instances_.push_back(std::move(g));
-    }
+    for (const MeshInstance& inst : scene.instances) addInstance(scene, inst);
     rtcCommitScene(embree_->scene);
     throwOnError(embree_->device, "building the scene (rtcCommitScene)");
 }
+
+// The instance's vertices in double, origin-relative, and its Embree geometry.
+void RayScene::addInstance(const Scene& scene, const MeshInstance& inst) {
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    InstanceGeometry g;
+    g.material = mesh.material;
+    const glm::dmat4 m(inst.transform);
+    const glm::dmat3 m3(m);
+    const double det = glm::determinant(m3);
+    g.mirrored = det < 0.0;
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(m3));
+    const size_t n = mesh.vertices.size();
+    g.positions.resize(n);
+    g.normals.resize(n);
+    g.tangents.resize(n);
+    g.uv0.resize(n);
+    g.uv1.resize(n);
+    g.colors.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Vertex& v = mesh.vertices[i];
+        g.positions[i] = glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0)) - origin_;
+        g.normals[i] = normalMatrix * glm::dvec3(v.normal);
+        g.tangents[i] = glm::dvec4(m3 * glm::dvec3(v.tangent), v.tangent.w);
+        g.uv0[i] = glm::dvec2(v.uv);
+        g.uv1[i] = glm::dvec2(v.uv1);
+        g.colors[i] = glm::dvec4(v.color);
+    }
+    g.indices = &indices_[static_cast<size_t>(inst.mesh)];
+
+    RTCGeometry geom = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                           3 * sizeof(float), std::max<size_t>(n, 1)));
+    const size_t triangles = mesh.indices.size() / 3;
+    auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                              3 * sizeof(unsigned), triangles));
+    if (!vb || (!ib && triangles > 0)) {
+        rtcReleaseGeometry(geom);
+        throwOnError(embree_->device, "rtcSetNewGeometryBuffer");
+        throw Error("Embree: out of memory for the scene's triangles");
+    }
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) vb[3 * i + c] = static_cast<float>(g.positions[i][c]);
+    for (size_t i = 0; i < triangles * 3; ++i) ib[i] = mesh.indices[i];
+    const Material& mat = scene.materials[mesh.material];
+    rtcSetGeometryIntersectFilterFunction(geom, filterHits);
+    if (mat.alphaMode != AlphaMode::Opaque) rtcSetGeometryOccludedFilterFunction(geom, filterHits);
+    rtcCommitGeometry(geom);
+    const unsigned id = rtcAttachGeometry(embree_->scene, geom);
+    rtcReleaseGeometry(geom);
+    if (id != instances_.size()) throw Error("Embree: unexpected geometry id");
+    triangles_ += triangles;
+    instances_.push_back(std::move(g));
+}
+
+glm::dvec3 RayScene::sceneCentre(const Scene& scene) {
+    const Bounds b = scene.bounds();
+    return b.empty() ? glm::dvec3(0.0) : (glm::dvec3(b.min) + glm::dvec3(b.max)) * 0.5;
+}
+
+long long RayScene::buildCount() { return builds.load(); }
 
 RayScene::~RayScene() = default;
 
@@ -156,7 +177,7 @@ glm::uvec3 RayScene::triangle(int instance, int triangle) const {
 
 bool RayScene::cutOut(int instance, int tri, double u, double v) const {
     const InstanceGeometry& g = instances_[instance];
-    const Material& m = scene_.materials[g.material];
+    const Material& m = materials_[g.material];
     if (m.alphaMode != AlphaMode::Mask) return false;
     const glm::uvec3 t = triangle(instance, tri);
     const double w = 1.0 - u - v;
@@ -165,18 +186,18 @@ bool RayScene::cutOut(int instance, int tri, double u, double v) const {
         const TextureMapping& map = m.mapping[Material::BaseColorSlot];
         const auto& uvs = map.texCoord == 1 ? g.uv1 : g.uv0;
         const glm::dvec2 uv = w * uvs[t.x] + u * uvs[t.y] + v * uvs[t.z];
-        alpha *= sampleBilinear(scene_.images[m.baseColorTexture], map, transformUv(map, uv), true).a;
+        alpha *= sampleBilinear(maskImages_[m.baseColorTexture], map, transformUv(map, uv), true).a;
     }
     return alpha < m.alphaCutoff;
 }
 
 bool RayScene::blended(int instance) const {
-    return scene_.materials[instances_[instance].material].alphaMode == AlphaMode::Blend;
+    return materials_[instances_[instance].material].alphaMode == AlphaMode::Blend;
 }
 
 bool RayScene::backFacing(int instance, int tri, const glm::dvec3& dir) const {
     const InstanceGeometry& g = instances_[instance];
-    if (scene_.materials[g.material].doubleSided) return false;
+    if (materials_[g.material].doubleSided) return false;
     const glm::uvec3 t = triangle(instance, tri);
     glm::dvec3 ng = glm::cross(g.positions[t.y] - g.positions[t.x], g.positions[t.z] - g.positions[t.x]);
     if (g.mirrored) ng = -ng;
@@ -189,6 +210,7 @@ RayHit RayScene::intersect(const glm::dvec3& org, const glm::dvec3& dir, double 
     rtcInitIntersectContext(&ctx.embree);
     ctx.scene = this;
     ctx.visibility = visibility;
+    ctx.blendedCastShadows = false;
     RTCRayHit rh{};
     rh.ray = makeRay(org, dir, tNear, tFar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -224,11 +246,13 @@ RayHit RayScene::intersect(const glm::dvec3& org, const glm::dvec3& dir, double 
     return h;
 }
 
-bool RayScene::occluded(const glm::dvec3& org, const glm::dvec3& dir, double tNear, double tFar) const {
+bool RayScene::occluded(const glm::dvec3& org, const glm::dvec3& dir, double tNear, double tFar,
+                        bool blendedCastShadows) const {
     QueryContext ctx{};
     rtcInitIntersectContext(&ctx.embree);
     ctx.scene = this;
     ctx.visibility = Visibility::Shadow;
+    ctx.blendedCastShadows = blendedCastShadows;
     RTCRay r = makeRay(org, dir, tNear, tFar);
     rtcOccluded1(embree_->scene, &ctx.embree, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit

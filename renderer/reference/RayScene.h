@@ -5,9 +5,19 @@
 // hit is recomputed exactly from its triangle and barycentrics (Embree's rays
 // and hit distances are single precision).
 //
-// Coordinates are relative to `origin` (the camera's position): the floats
-// Embree holds are then precise where the image needs them, as the GPU's
-// camera-relative transforms are (renderer/graph/Pipeline.cpp).
+// Coordinates are relative to `origin`. The reference builds one ray scene
+// per scene with its origin at the centre of the scene's bounds
+// (sceneCentre), shared by every camera of a run (RaySceneCache): the floats
+// Embree holds are then at most the scene's radius, and rays from any camera
+// start at the camera's origin-relative position. A ray scene built with the
+// origin at one camera's position (as every reference was before issue 33,
+// and as SsaoDefinition still builds its own) is the per-camera frame of the
+// GPU's camera-relative transforms (renderer/graph/Pipeline.cpp).
+//
+// Self-contained: it keeps copies of what its queries read (the scene's
+// materials, the meshes' indices, the base-colour images of alpha-masked
+// materials), so it outlives the Scene it was built from and serves any
+// Scene of the same content (sceneGeometryKey, ReferenceCache.h).
 //
 // What a ray sees, as the rasteriser sees it:
 // - alpha-masked materials (glTF MASK) are cut out where the base colour's
@@ -40,7 +50,7 @@ struct InstanceGeometry {
     std::vector<glm::dvec4> tangents;
     std::vector<glm::dvec2> uv0, uv1;
     std::vector<glm::dvec4> colors;
-    const std::vector<std::uint32_t>* indices = nullptr;  // the mesh's, three per triangle
+    const std::vector<std::uint32_t>* indices = nullptr;  // the mesh's (kept by the RayScene), three per triangle
 };
 
 // Camera: primary rays. Secondary: AO rays. Shadow: rays towards a light.
@@ -56,19 +66,27 @@ struct RayHit {
 
 class RayScene {
 public:
-    // `blendedCastShadows`: shadow rays (occluded()) stop at blended surfaces
-    // too, as the GPU's shadows.blended_casters draws them into the maps.
-    RayScene(const Scene& scene, const glm::dvec3& origin, bool blendedCastShadows = false);
+    // `origin`: world-space point the coordinates are relative to (sceneCentre
+    // for a ray scene shared across cameras; a camera's position for its own).
+    RayScene(const Scene& scene, const glm::dvec3& origin);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
     // Nearest hit with t in [tNear, tFar]; `org` is origin-relative.
     RayHit intersect(const glm::dvec3& org, const glm::dvec3& dir, double tNear, double tFar, Visibility v) const;
-    // Whether anything lies on the ray with t in [tNear, tFar].
-    bool occluded(const glm::dvec3& org, const glm::dvec3& dir, double tNear, double tFar) const;
+    // Whether anything lies on the ray with t in [tNear, tFar]. `blendedCastShadows`:
+    // blended surfaces stop it too, as the GPU's shadows.blended_casters draws
+    // them into the maps (otherwise they cast no shadow).
+    bool occluded(const glm::dvec3& org, const glm::dvec3& dir, double tNear, double tFar,
+                  bool blendedCastShadows = false) const;
 
-    const Scene& scene() const { return scene_; }
+    // The centre of the scene's bounds (world space; 0 for an empty scene).
+    static glm::dvec3 sceneCentre(const Scene& scene);
+    // RayScenes built in this process so far (for tests: a sweep of N cameras builds one).
+    static long long buildCount();
+
+    const std::vector<Material>& materials() const { return materials_; }
     const glm::dvec3& origin() const { return origin_; }
     const std::vector<InstanceGeometry>& instances() const { return instances_; }
     // The triangle's three vertex indices.
@@ -81,16 +99,17 @@ public:
     bool cutOut(int instance, int triangle, double u, double v) const;
     // Whether the instance's material is blended (AlphaMode::Blend).
     bool blended(int instance) const;
-    bool blendedCastShadows() const { return blendedCastShadows_; }
     // Whether the ray direction meets the triangle's back face (origin-relative geometric normal by winding).
     bool backFacing(int instance, int triangle, const glm::dvec3& dir) const;
 
 private:
     struct Embree;
-    const Scene& scene_;
+    void addInstance(const Scene& scene, const MeshInstance& inst);
+    std::vector<Material> materials_;
+    std::vector<Image> maskImages_;  // by image index: the base colours of MASK materials (others empty)
+    std::vector<std::vector<std::uint32_t>> indices_;  // by mesh
     glm::dvec3 origin_;
     double sceneRadius_ = 1.0;
-    bool blendedCastShadows_ = false;
     size_t triangles_ = 0;
     std::vector<InstanceGeometry> instances_;
     std::unique_ptr<Embree> embree_;

@@ -127,11 +127,8 @@ nlohmann::json statsJson(const ReferenceStatistics& s) {
             {"triangles", s.triangles}};
 }
 
-}  // namespace
-
-std::string referenceKey(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request) {
-    Hasher h;
-    h.value(kReferenceVersion);
+// What a RayScene is built from and its queries read: meshes, instances, materials, images.
+void hashGeometry(Hasher& h, const Scene& scene) {
     h.value(scene.meshes.size());
     for (const Mesh& m : scene.meshes) {
         hashVertices(h, m.vertices);
@@ -151,6 +148,20 @@ std::string referenceKey(const Scene& scene, const ReferenceModel& model, const 
         h.value(img.height);
         h.array(img.rgba);
     }
+}
+
+}  // namespace
+
+std::string sceneGeometryKey(const Scene& scene) {
+    Hasher h;
+    hashGeometry(h, scene);
+    return hex(h.digest());
+}
+
+std::string referenceKey(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request) {
+    Hasher h;
+    h.value(kReferenceVersion);
+    hashGeometry(h, scene);
     h.value(scene.lights.size());
     for (const Light& l : scene.lights) hashLight(h, l);
     h.value(scene.ambient);

@@ -19,10 +19,16 @@
 namespace dw::reference {
 
 // Bumped whenever the reference's output changes for the same inputs.
-constexpr int kReferenceVersion = 1;
+// 2: one RayScene per scene, relative to the scene's centre, shared by every
+// camera (issue 33; it was relative to each camera's position).
+constexpr int kReferenceVersion = 2;
 
 // 16 hex digits.
 std::string referenceKey(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request);
+// 16 hex digits over what a RayScene is built from and its queries read (the
+// meshes, instances, materials and images): scenes with equal keys share one
+// RayScene (RaySceneCache).
+std::string sceneGeometryKey(const Scene& scene);
 
 class ReferenceCache {
 public:

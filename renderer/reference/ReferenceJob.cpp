@@ -53,7 +53,7 @@ void ReferenceJob::start(const Scene& scene, const ReferenceModel& model, const 
             if (auto hit = cache.load(cacheKey)) {
                 images = std::make_shared<const ReferenceImages>(std::move(*hit));
             } else {
-                auto fresh = std::make_shared<ReferenceImages>(renderReference(*copy, model, request, progress));
+                auto fresh = std::make_shared<ReferenceImages>(renderReference(*copy, model, request, progress, &rayScenes_));
                 try {
                     cache.store(cacheKey, *fresh);
                 } catch (const std::exception&) {

@@ -2,7 +2,8 @@
 // A reference render in the background (the workbench's "CPU reference of
 // this view"): a copy of the scene, a worker thread, progress and cancel, and
 // the reference cache, so the window never waits for it. One job at a time;
-// starting another cancels the one running.
+// starting another cancels the one running. The job keeps the scene's ray
+// scene (RaySceneCache) for the next view of the same scene.
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -10,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "renderer/reference/RaySceneCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 
 namespace dw::reference {
@@ -45,6 +47,7 @@ private:
     std::mutex mutex_;
     std::shared_ptr<const ReferenceImages> result_;
     std::string resultKey_, error_, key_;
+    RaySceneCache rayScenes_;  // the views of one scene share its ray scene
 };
 
 }  // namespace dw::reference

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
+#include <memory>
 #include <mutex>
 
 #include "renderer/lighting/LightVolume.h"
@@ -17,6 +18,7 @@
 #include "renderer/reference/MaterialEvaluator.h"
 #include "renderer/reference/PixelRandom.h"
 #include "renderer/reference/RayScene.h"
+#include "renderer/reference/RaySceneCache.h"
 #include "renderer/reference/ShadingReference.h"
 #include "renderer/reference/SkyReference.h"
 #include "renderer/reference/ToneMapReference.h"
@@ -65,21 +67,25 @@ void basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
 }
 
 // Ray origins leave the surface by this much (Embree's triangles and hit
-// distances are single precision, relative to the coordinates' size).
-double offsetAt(const glm::dvec3& p, double sceneRadius) {
-    const double m = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+// distances are single precision, relative to the coordinates' size): `p` in
+// the ray scene's frame (what Embree holds), `fromEye` the same point
+// relative to the camera. In a per-camera frame the two are equal.
+double offsetAt(const glm::dvec3& p, const glm::dvec3& fromEye, double sceneRadius) {
+    const double m = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(fromEye.x), std::abs(fromEye.y),
+                               std::abs(fromEye.z)});
     return 1e-5 * (m + 1e-3 * sceneRadius);
 }
 
 struct LightInView {
     const Light* light;
-    glm::dvec3 worldPosition;  // origin-relative
+    glm::dvec3 worldPosition;  // relative to the ray scene's origin
     glm::dvec3 viewPosition, viewDirection;
     double radius;  // <= 0: unbounded
 };
 
-std::vector<LightInView> lightsInView(const Scene& scene, const ReferenceModel& model,
-                                      const glm::dvec3& eye, const glm::dmat3& worldToView) {
+// `origin`: the ray scene's; `cameraPosition`: world space.
+std::vector<LightInView> lightsInView(const Scene& scene, const ReferenceModel& model, const glm::dvec3& origin,
+                                      const glm::dvec3& cameraPosition, const glm::dmat3& worldToView) {
     std::vector<LightInView> out;
     for (const Light& l : scene.lights) {
         if (!l.enabled) continue;
@@ -91,8 +97,8 @@ std::vector<LightInView> lightsInView(const Scene& scene, const ReferenceModel& 
         }
         LightInView li;
         li.light = &l;
-        li.worldPosition = glm::dvec3(l.position) - eye;
-        li.viewPosition = worldToView * li.worldPosition;
+        li.worldPosition = glm::dvec3(l.position) - origin;
+        li.viewPosition = worldToView * (glm::dvec3(l.position) - cameraPosition);
         li.viewDirection = worldToView * glm::dvec3(l.direction);
         li.radius = radius;
         out.push_back(li);
@@ -143,26 +149,208 @@ const FloatImage* ReferenceImages::buffer(const std::string& name) const {
     return nullptr;
 }
 
-ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model,
-                                const ReferenceRequest& request, ReferenceProgress* progress) {
-    const int W = request.width, H = request.height;
-    if (W < 1 || H < 1) throw Error("reference: the size must be at least 1x1");
-    if (model.rayTracedAo && model.aoRays < 1)
-        throw Error("reference: AO needs at least 1 ray per pixel");
-    const auto buildStart = Clock::now();
-    const glm::dvec3 eye(request.camera.position);
-    const RayScene rays(scene, eye, model.blendedCasters);
-    ReferenceImages out;
-    out.stats.buildSeconds = secondsSince(buildStart);
-    out.stats.triangles = rays.triangleCount();
-    out.stats.threads =
-        request.threads > 0 ? request.threads : tbb::this_task_arena::max_concurrency();
+namespace {
 
+// What every pixel of one render reads.
+struct Trace {
+    const Scene& scene;
+    const RayScene& rays;
+    const ReferenceModel& model;
+    const CameraRays& camera;
+    glm::dvec3 eye;  // the camera's position relative to the ray scene's origin
+    std::vector<LightInView> lights;
+    SkyReference sky;
+    glm::dvec3 ambient;
+};
+
+// What the pixels write, and the rays a tile cast.
+struct TraceOutput {
+    ReferenceImages& images;
+    std::vector<double>& aoError;  // per pixel; -1 where no AO was estimated
+};
+struct TileCounts {
+    long long shadow = 0, ao = 0, layers = 0;
+};
+
+// The accessibility A at an opaque surface by the model's AO rays; writes
+// the estimate's standard error to aoError[p].
+double ambientAccess(const Trace& t, const SurfaceSample& s, const glm::dvec3& origin, size_t p, TraceOutput& out,
+                     TileCounts& counts) {
+    const ReferenceModel& model = t.model;
+    glm::dvec3 tu, tb;
+    basis(s.normal, tu, tb);
+    const std::uint64_t h = mix64(mix64(p) ^ (static_cast<std::uint64_t>(model.seed) << 32));
+    const double o1 = unitFloat(h), o2 = unitFloat(mix64(h));
+    const int n = model.aoRays;
+    double sum = 0.0, sumSq = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec3 l = cosineDirection(i, n, o1, o2);
+        const glm::dvec3 w = tu * l.x + tb * l.y + s.normal * l.z;
+        double weight = 0.0;
+        if (glm::dot(w, s.geometricNormal) <= 0.0) {
+            weight = 1.0;  // into the surface itself: occluded at distance 0
+        } else {
+            ++counts.ao;
+            const RayHit o = t.rays.intersect(origin, w, 0.0, model.aoRadius, Visibility::Secondary);
+            if (o.hit) {
+                const glm::uvec3 tri = t.rays.triangle(o.instance, o.triangle);
+                const auto& P = t.rays.instances()[o.instance].positions;
+                const glm::dvec3 q = (1.0 - o.u - o.v) * P[tri.x] + o.u * P[tri.y] + o.v * P[tri.z];
+                const double d = glm::length(q - s.position) / model.aoRadius;
+                weight = 1.0 / (1.0 + d * d);
+            }
+        }
+        sum += weight;
+        sumSq += weight * weight;
+    }
+    const double mean = sum / n;
+    const double variance = n > 1 ? std::max(sumSq / n - mean * mean, 0.0) * n / (n - 1) : 0.0;
+    out.aoError[p] = model.aoIntensity * std::sqrt(variance / n);
+    return std::clamp(1.0 - model.aoIntensity * mean, 0.0, 1.0);
+}
+
+// Adds every light's contribution at the surface to `radiance` (in the
+// lights' order), shadow rays included; `lit` and `unshadowed` sum the
+// shadow-casting lights' luminance with and without shadows.
+void directLight(const Trace& t, const SurfacePoint& sp, const glm::dvec3& origin, double eps, TileCounts& counts,
+                 glm::dvec3& radiance, double& lit, double& unshadowed) {
+    const ReferenceModel& model = t.model;
+    for (const LightInView& li : t.lights) {
+        const glm::dvec3 c = shadeLight(*li.light, li.viewPosition, li.viewDirection, li.radius, sp, model.attenuation,
+                                        model.windowExponent);
+        if (c == glm::dvec3(0.0)) continue;
+        if (model.shadows && li.light->castShadows) {
+            bool blocked;
+            ++counts.shadow;
+            if (li.light->type == LightType::Directional) {
+                blocked = t.rays.occluded(origin, -glm::normalize(glm::dvec3(li.light->direction)), 0.0,
+                                          std::numeric_limits<double>::infinity(), model.blendedCasters);
+            } else {
+                // Up to the light, short of it by the offset.
+                const glm::dvec3 toLight = li.worldPosition - origin;
+                const double d = glm::length(toLight);
+                blocked = d > eps && t.rays.occluded(origin, toLight / d, 0.0, d - eps, model.blendedCasters);
+            }
+            const double y = luminance(c.r, c.g, c.b);
+            unshadowed += y;
+            if (blocked) continue;
+            lit += y;
+        }
+        radiance += c;
+    }
+}
+
+// One surface's radiance towards the eye. An opaque one (`transparent`
+// false) writes the pixel's AO and shadow; a blended one gets no AO (it is
+// not in the G-buffer SSAO reads) but receives shadows.
+glm::dvec3 shadeSurface(const Trace& t, const SurfaceSample& s, bool transparent, size_t p, TraceOutput& out,
+                        TileCounts& counts) {
+    const ReferenceModel& model = t.model;
+    const glm::dvec3 fromEye = s.position - t.eye;
+    const double eps = offsetAt(s.position, fromEye, t.rays.sceneRadius());
+    const glm::dvec3 origin = s.position + s.geometricNormal * eps;
+    SurfacePoint sp;
+    sp.position = t.camera.worldToView * fromEye;
+    sp.normal = t.camera.worldToView * s.normal;
+    sp.diffuse = s.diffuse;
+    sp.specular = s.specular;
+    sp.exponent = s.exponent;
+
+    double access = 1.0;
+    if (model.rayTracedAo && !transparent) access = ambientAccess(t, s, origin, p, out, counts);
+    if (!transparent) out.images.ao.pixels[p] = static_cast<float>(access);
+    // The GPU's transparent fragments take no baked occlusion either
+    // (shaders/oit/transparent.frag).
+    if (model.bakedOcclusion && !transparent) access *= s.occlusion;
+    const glm::dvec3 reflectance = s.diffuse + (model.ambientSpecular ? s.specular : glm::dvec3(0.0));
+    glm::dvec3 radiance = t.ambient * reflectance * access + s.emissive;
+
+    double lit = 0.0, unshadowed = 0.0;
+    directLight(t, sp, origin, eps, counts, radiance, lit, unshadowed);
+    if (unshadowed > 0.0 && !transparent) out.images.shadow.pixels[p] = static_cast<float>(lit / unshadowed);
+    return radiance;
+}
+
+// The pixel's radiance: front to back, blended surfaces composited over what
+// lies behind them ("over" with premultiplied alpha, in exact depth order),
+// until an opaque surface or the sky.
+void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& counts) {
+    const size_t p = static_cast<size_t>(row) * t.camera.width + x;
+    const glm::dvec3 dir = t.camera.direction(x, row);
+    glm::dvec3 radiance(0.0);
+    double transmittance = 1.0;
+    double tNear = t.camera.nearPlane;
+    for (int layer = 0;; ++layer) {
+        const RayHit hit = t.rays.intersect(t.eye, dir, tNear, t.camera.farPlane, Visibility::Camera);
+        if (!hit.hit) {
+            radiance += transmittance * t.sky.radiance(glm::normalize(dir));
+            out.images.background[p] = 1;
+            break;
+        }
+        const SurfaceSample surface = evaluateSurface(t.scene, t.rays, hit, t.eye, dir);
+        if (t.rays.blended(hit.instance) && layer < kMaxBlendedLayers) {
+            radiance += transmittance * surface.alpha * shadeSurface(t, surface, true, p, out, counts);
+            transmittance *= 1.0 - surface.alpha;
+            tNear = hit.t * (1.0 + 1e-6);
+            ++counts.layers;
+            continue;
+        }
+        radiance += transmittance * shadeSurface(t, surface, false, p, out, counts);
+        break;
+    }
+    for (int c = 0; c < 3; ++c) out.images.lbuffer.pixels[p * 4 + c] = static_cast<float>(radiance[c]);
+}
+
+// The AO estimate's standard error over the pixels that have one.
+void aoErrorStatistics(const std::vector<double>& aoError, ReferenceStatistics& stats) {
+    double sumErr = 0.0;
+    long long counted = 0;
+    for (double e : aoError)
+        if (e >= 0.0) {
+            sumErr += e;
+            stats.aoStandardErrorMax = std::max(stats.aoStandardErrorMax, e);
+            ++counted;
+        }
+    stats.aoStandardErrorMean = counted > 0 ? sumErr / counted : 0.0;
+}
+
+void checkRequest(const ReferenceModel& model, const ReferenceRequest& request) {
+    if (request.width < 1 || request.height < 1) throw Error("reference: the size must be at least 1x1");
+    if (model.rayTracedAo && model.aoRays < 1) throw Error("reference: AO needs at least 1 ray per pixel");
+}
+
+}  // namespace
+
+ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
+                                ReferenceProgress* progress, RaySceneCache* rayScenes) {
+    checkRequest(model, request);
+    const auto buildStart = Clock::now();
+    std::shared_ptr<const RayScene> rays =
+        rayScenes ? rayScenes->get(scene)
+                  : std::make_shared<const RayScene>(scene, RayScene::sceneCentre(scene));
+    const double buildSeconds = secondsSince(buildStart);
+    ReferenceImages out = renderReference(scene, *rays, model, request, progress);
+    out.stats.buildSeconds = buildSeconds;
+    return out;
+}
+
+ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const ReferenceModel& model,
+                                const ReferenceRequest& request, ReferenceProgress* progress) {
+    checkRequest(model, request);
+    const int W = request.width, H = request.height;
+    const glm::dvec3 cameraPosition(request.camera.position);
+    ReferenceImages out;
+    out.stats.triangles = rays.triangleCount();
+    out.stats.threads = request.threads > 0 ? request.threads : tbb::this_task_arena::max_concurrency();
     const CameraRays camera(request.camera, W, H);
-    const std::vector<LightInView> lights = lightsInView(scene, model, eye, camera.worldToView);
-    const SkyReference sky(scene, model);
-    const glm::dvec3 ambient(scene.ambient);
-    const double aoRadius = model.aoRadius;
+    const Trace trace{scene,
+                      rays,
+                      model,
+                      camera,
+                      cameraPosition - rays.origin(),
+                      lightsInView(scene, model, rays.origin(), cameraPosition, camera.worldToView),
+                      SkyReference(scene, model),
+                      glm::dvec3(scene.ambient)};
 
     out.lbuffer = makeImage(W, H, 4, 1.0f);
     out.ao = makeImage(W, H, 1, 1.0f);
@@ -177,134 +365,13 @@ ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model,
 
     const auto start = Clock::now();
     forEachTile(W, H, request.threads, progress, [&](const tbb::blocked_range2d<int>& r) {
-        long long localShadow = 0, localAo = 0, localLayers = 0;
-        // One surface's radiance towards the eye. An opaque one (`transparent`
-        // false) writes the pixel's AO and shadow; a blended one gets no AO
-        // (it is not in the G-buffer SSAO reads) but receives shadows.
-        auto shadeSurface = [&](const SurfaceSample& surface, bool transparent, size_t p) {
-            glm::dvec3 radiance;
-            const SurfaceSample& s = surface;
-            const double eps = offsetAt(s.position, rays.sceneRadius());
-            const glm::dvec3 origin = s.position + s.geometricNormal * eps;
-            SurfacePoint sp;
-            sp.position = camera.worldToView * s.position;
-            sp.normal = camera.worldToView * s.normal;
-            sp.diffuse = s.diffuse;
-            sp.specular = s.specular;
-            sp.exponent = s.exponent;
-
-            // Ambient accessibility by rays.
-            double access = 1.0;
-            if (model.rayTracedAo && !transparent) {
-                glm::dvec3 t, b;
-                basis(s.normal, t, b);
-                const std::uint64_t h =
-                    mix64(mix64(p) ^ (static_cast<std::uint64_t>(model.seed) << 32));
-                const double o1 = unitFloat(h), o2 = unitFloat(mix64(h));
-                const int n = model.aoRays;
-                double sum = 0.0, sumSq = 0.0;
-                for (int i = 0; i < n; ++i) {
-                    const glm::dvec3 l = cosineDirection(i, n, o1, o2);
-                    const glm::dvec3 w = t * l.x + b * l.y + s.normal * l.z;
-                    double weight = 0.0;
-                    if (glm::dot(w, s.geometricNormal) <= 0.0) {
-                        weight = 1.0;  // into the surface itself: occluded at distance 0
-                    } else {
-                        ++localAo;
-                        const RayHit o =
-                            rays.intersect(origin, w, 0.0, aoRadius, Visibility::Secondary);
-                        if (o.hit) {
-                            const glm::uvec3 tri = rays.triangle(o.instance, o.triangle);
-                            const auto& P = rays.instances()[o.instance].positions;
-                            const glm::dvec3 q =
-                                (1.0 - o.u - o.v) * P[tri.x] + o.u * P[tri.y] + o.v * P[tri.z];
-                            const double d = glm::length(q - s.position) / aoRadius;
-                            weight = 1.0 / (1.0 + d * d);
-                        }
-                    }
-                    sum += weight;
-                    sumSq += weight * weight;
-                }
-                const double mean = sum / n;
-                const double variance =
-                    n > 1 ? std::max(sumSq / n - mean * mean, 0.0) * n / (n - 1) : 0.0;
-                access = std::clamp(1.0 - model.aoIntensity * mean, 0.0, 1.0);
-                aoError[p] = model.aoIntensity * std::sqrt(variance / n);
-            }
-            if (!transparent) out.ao.pixels[p] = static_cast<float>(access);
-            // The GPU's transparent fragments take no baked occlusion either
-            // (shaders/oit/transparent.frag).
-            if (model.bakedOcclusion && !transparent) access *= s.occlusion;
-            const glm::dvec3 reflectance =
-                s.diffuse + (model.ambientSpecular ? s.specular : glm::dvec3(0.0));
-            radiance = ambient * reflectance * access + s.emissive;
-
-            double lit = 0.0, unshadowed = 0.0;
-            for (const LightInView& li : lights) {
-                const glm::dvec3 c =
-                    shadeLight(*li.light, li.viewPosition, li.viewDirection, li.radius, sp,
-                               model.attenuation, model.windowExponent);
-                if (c == glm::dvec3(0.0)) continue;
-                if (model.shadows && li.light->castShadows) {
-                    bool blocked;
-                    ++localShadow;
-                    if (li.light->type == LightType::Directional) {
-                        blocked =
-                            rays.occluded(origin, -glm::normalize(glm::dvec3(li.light->direction)),
-                                          0.0, std::numeric_limits<double>::infinity());
-                    } else {
-                        // Up to the light, short of it by the offset.
-                        const glm::dvec3 toLight = li.worldPosition - origin;
-                        const double d = glm::length(toLight);
-                        blocked = d > eps && rays.occluded(origin, toLight / d, 0.0, d - eps);
-                    }
-                    const double y = luminance(c.r, c.g, c.b);
-                    unshadowed += y;
-                    if (blocked) continue;
-                    lit += y;
-                }
-                radiance += c;
-            }
-            if (unshadowed > 0.0 && !transparent)
-                out.shadow.pixels[p] = static_cast<float>(lit / unshadowed);
-            return radiance;
-        };
-        for (int row = r.rows().begin(); row < r.rows().end(); ++row) {
-            for (int x = r.cols().begin(); x < r.cols().end(); ++x) {
-                const size_t p = static_cast<size_t>(row) * W + x;
-                const glm::dvec3 dir = camera.direction(x, row);
-                // Front to back: blended surfaces composited over what lies
-                // behind them ("over" with premultiplied alpha, in exact depth
-                // order), until an opaque surface or the sky.
-                glm::dvec3 radiance(0.0);
-                double transmittance = 1.0;
-                double tNear = camera.nearPlane;
-                for (int layer = 0;; ++layer) {
-                    const RayHit hit = rays.intersect(glm::dvec3(0.0), dir, tNear, camera.farPlane,
-                                                      Visibility::Camera);
-                    if (!hit.hit) {
-                        radiance += transmittance * sky.radiance(glm::normalize(dir));
-                        out.background[p] = 1;
-                        break;
-                    }
-                    const SurfaceSample surface = evaluateSurface(rays, hit, glm::dvec3(0.0), dir);
-                    if (rays.blended(hit.instance) && layer < kMaxBlendedLayers) {
-                        radiance += transmittance * surface.alpha * shadeSurface(surface, true, p);
-                        transmittance *= 1.0 - surface.alpha;
-                        tNear = hit.t * (1.0 + 1e-6);
-                        ++localLayers;
-                        continue;
-                    }
-                    radiance += transmittance * shadeSurface(surface, false, p);
-                    break;
-                }
-                for (int c = 0; c < 3; ++c)
-                    out.lbuffer.pixels[p * 4 + c] = static_cast<float>(radiance[c]);
-            }
-        }
-        shadowRays += localShadow;
-        aoRays += localAo;
-        blendedHits += localLayers;
+        TraceOutput output{out, aoError};
+        TileCounts counts;
+        for (int row = r.rows().begin(); row < r.rows().end(); ++row)
+            for (int x = r.cols().begin(); x < r.cols().end(); ++x) tracePixel(trace, x, row, output, counts);
+        shadowRays += counts.shadow;
+        aoRays += counts.ao;
+        blendedHits += counts.layers;
     });
     if (progress && progress->cancel.load()) throw ReferenceCancelled();
     out.stats.blendedHits = blendedHits.load();
@@ -312,26 +379,22 @@ ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model,
     out.stats.primaryRays = static_cast<long long>(W) * H;
     out.stats.shadowRays = shadowRays.load();
     out.stats.aoRays = aoRays.load();
-    double sumErr = 0.0;
-    long long counted = 0;
-    for (double e : aoError)
-        if (e >= 0.0) {
-            sumErr += e;
-            out.stats.aoStandardErrorMax = std::max(out.stats.aoStandardErrorMax, e);
-            ++counted;
-        }
-    out.stats.aoStandardErrorMean = counted > 0 ? sumErr / counted : 0.0;
+    aoErrorStatistics(aoError, out.stats);
     out.final = toneMap(out.lbuffer, out.background, model);
     return out;
 }
 
-RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& model,
-                                   const ReferenceRequest& request) {
+RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
+                                   RaySceneCache* rayScenes) {
     const int W = request.width, H = request.height;
-    const glm::dvec3 eye(request.camera.position);
-    const RayScene rays(scene, eye, model.blendedCasters);
+    const std::shared_ptr<const RayScene> shared =
+        rayScenes ? rayScenes->get(scene) : std::make_shared<const RayScene>(scene, RayScene::sceneCentre(scene));
+    const RayScene& rays = *shared;
+    const glm::dvec3 cameraPosition(request.camera.position);
+    const glm::dvec3 eye = cameraPosition - rays.origin();
     const CameraRays camera(request.camera, W, H);
-    const std::vector<LightInView> lights = lightsInView(scene, model, eye, camera.worldToView);
+    const std::vector<LightInView> lights =
+        lightsInView(scene, model, rays.origin(), cameraPosition, camera.worldToView);
     std::atomic<long long> total{0};
     const auto start = Clock::now();
     forEachTile(W, H, request.threads, nullptr, [&](const tbb::blocked_range2d<int>& r) {
@@ -339,8 +402,8 @@ RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& mod
         for (int row = r.rows().begin(); row < r.rows().end(); ++row)
             for (int x = r.cols().begin(); x < r.cols().end(); ++x) {
                 const glm::dvec3 dir = camera.direction(x, row);
-                const RayHit hit = rays.intersect(glm::dvec3(0.0), dir, camera.nearPlane,
-                                                  camera.farPlane, Visibility::Camera);
+                const RayHit hit =
+                    rays.intersect(eye, dir, camera.nearPlane, camera.farPlane, Visibility::Camera);
                 ++local;
                 if (!hit.hit) continue;
                 const glm::uvec3 tri = rays.triangle(hit.instance, hit.triangle);
@@ -350,7 +413,7 @@ RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& mod
                 glm::dvec3 ng =
                     glm::normalize(glm::cross(P[tri.y] - P[tri.x], P[tri.z] - P[tri.x]));
                 if (glm::dot(ng, dir) > 0.0) ng = -ng;
-                const glm::dvec3 origin = q + ng * offsetAt(q, rays.sceneRadius());
+                const glm::dvec3 origin = q + ng * offsetAt(q, q - eye, rays.sceneRadius());
                 if (model.shadows)
                     for (const LightInView& li : lights) {
                         if (!li.light->castShadows) continue;

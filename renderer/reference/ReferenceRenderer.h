@@ -45,6 +45,9 @@
 
 namespace dw::reference {
 
+class RayScene;
+class RaySceneCache;
+
 class ReferenceCancelled : public Error {
 public:
     ReferenceCancelled() : Error("reference render cancelled") {}
@@ -94,9 +97,19 @@ struct ReferenceRequest {
 // The threads a render can run at once (oneTBB's default concurrency).
 int availableThreads();
 
+// The geometry is traced on the scene's RayScene, relative to the scene's
+// centre: `rayScenes` holds it across renders (every camera of a sweep
+// shares one build, RaySceneCache.h); null: one built for this render alone.
+// Either way the same image. stats.buildSeconds: the time getting the ray
+// scene took (near 0 when it was held).
 // Throws Error (Embree failures, a size below 1x1) or ReferenceCancelled.
 ReferenceImages renderReference(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
-                                ReferenceProgress* progress = nullptr);
+                                ReferenceProgress* progress = nullptr, RaySceneCache* rayScenes = nullptr);
+// On a given ray scene, built from `scene`'s content with its origin anywhere
+// (RayScene::sceneCentre as above; a camera's position for the per-camera
+// frame every reference used before issue 33). stats.buildSeconds is 0.
+ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const ReferenceModel& model,
+                                const ReferenceRequest& request, ReferenceProgress* progress = nullptr);
 
 // Embree alone over the rays a reference render casts: the same primary rays;
 // at each primary hit, a shadow ray to every shadow-casting light (when the
@@ -109,6 +122,7 @@ struct RayThroughput {
     double seconds = 0.0;
     double raysPerSecond() const { return seconds > 0.0 ? static_cast<double>(rays) / seconds : 0.0; }
 };
-RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request);
+RayThroughput measureRayThroughput(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request,
+                                   RaySceneCache* rayScenes = nullptr);
 
 }  // namespace dw::reference

@@ -81,7 +81,7 @@ FloatImage ssaoDefinitionAo(const Scene& scene, const ReferenceRequest& request,
                     const RayHit hit = rays.intersect(glm::dvec3(0.0), dir, camera.nearPlane, camera.farPlane, Visibility::Camera);
                     if (!hit.hit) continue;
                     // The point and the shading normal the G-buffer would hold, exactly.
-                    const SurfaceSample surface = evaluateSurface(rays, hit, glm::dvec3(0.0), dir);
+                    const SurfaceSample surface = evaluateSurface(scene, rays, hit, glm::dvec3(0.0), dir);
                     const glm::dvec3 P = camera.worldToView * surface.position;
                     const glm::dvec3 N = camera.worldToView * surface.normal;
                     double occlusion = 0.0;

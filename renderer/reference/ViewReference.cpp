@@ -41,7 +41,7 @@ ViewReference traceViewReference(const Scene& given, const KnobRegistry& knobs, 
             return out;
         }
     }
-    out.images = renderReference(scene, out.model, request, options.progress);
+    out.images = renderReference(scene, out.model, request, options.progress, options.rayScenes);
     if (options.useCache) {
         if (!options.cacheWarning) {
             cache.store(out.key, out.images);

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "renderer/knobs/KnobRegistry.h"
+#include "renderer/reference/RaySceneCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/Scene.h"
@@ -34,6 +35,10 @@ struct ViewReferenceOptions {
     // A cache that cannot be written: when set, called with the reason and the
     // images are still returned (as `reference` warns); when empty, Error is thrown.
     std::function<void(const std::string&)> cacheWarning;
+    // Where the scene's ray scene is kept between references (RaySceneCache.h:
+    // the caller's, e.g. a Python Session's, so its cameras share one build);
+    // null: one built for this trace. The same image either way.
+    RaySceneCache* rayScenes = nullptr;
 };
 
 struct ViewReference {

@@ -56,6 +56,7 @@ public:
         container.glb = glb;
         if (glb) container.binLength = glbBinLength(bytes);
         checkGltfValues(j, path_, &invalid_, container);  // schema, buffers, cameras, lights, data: URIs (GltfCheck.h)
+        noteExternalUris(j);
         if (j.contains("extensionsRequired") && j["extensionsRequired"].is_array()) {
             for (const auto& e : j["extensionsRequired"])
                 if (e.is_string() && !GltfModelCheck::isSupportedExtension(e.get<std::string>()))
@@ -82,6 +83,19 @@ public:
         const auto total = static_cast<std::uint32_t>(out.size());
         std::memcpy(out.data() + 8, &total, 4);
         return out;
+    }
+
+    // The buffers' and images' external URIs, for the record (Scene::gltfExternalUris).
+    void noteExternalUris(const nlohmann::json& j) {
+        std::vector<std::string>& uris = scene_.gltfExternalUris[fs::path(path_).lexically_normal().string()];
+        uris.clear();
+        for (const char* key : {"buffers", "images"})
+            if (j.contains(key) && j[key].is_array())
+                for (const auto& item : j[key])
+                    if (item.is_object() && item.contains("uri") && item["uri"].is_string()) {
+                        const std::string u = item["uri"].get<std::string>();
+                        if (!u.empty() && u.rfind("data:", 0) != 0) uris.push_back(u);
+                    }
     }
 
     // glTF 2.0 (3.6.2.3): an accessor without bufferView holds zeros (plus its

@@ -2,6 +2,7 @@
 // The scene model every loader produces and the renderer draws: meshes,
 // materials, images, instances, lights, camera and the global terms.
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,12 @@ struct Scene {
     // Knob values the scene is meant to be seen with ("tonemap.key" -> "0.05"),
     // applied when it loads, before presets and --set.
     std::vector<std::pair<std::string, std::string>> settings;
+    // The external files each glTF file the loader read names: its buffers'
+    // and then its images' URIs (data: URIs left out), as its JSON gives them,
+    // by the file's path (lexically normal). Taken from the loader's one parse
+    // of the JSON, so the experiment record lists a scene's files
+    // (record/SceneFiles) without parsing the file again.
+    std::map<std::string, std::vector<std::string>> gltfExternalUris;
 
     Bounds bounds() const;
     int countLights(LightType type, bool enabledOnly = true) const;

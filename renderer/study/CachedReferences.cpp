@@ -28,7 +28,7 @@ FloatImage CachedReferences::image(const Scene& scene, const KnobRegistry& knobs
                 hooks_.line("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
                             (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
                             "; cached for the next run)");
-            images = reference::renderReference(scene, model, request);
+            images = reference::renderReference(scene, model, request, nullptr, &rayScenes_);
             ++rendered_;
             seconds_ += images->stats.seconds + images->stats.buildSeconds;
             try {

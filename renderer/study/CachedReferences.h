@@ -2,7 +2,8 @@
 // The CPU references a study measures against, through the shared cache
 // (reference::ReferenceCache): each distinct one (scene content, the model
 // the knobs make, camera, size, AO rays, seed) rendered at most once per
-// run, loaded from the cache when it is there and stored after. `tradeoff`
+// run, loaded from the cache when it is there and stored after; the ones
+// rendered trace one ray scene (reference::RaySceneCache) across cameras. `tradeoff`
 // (TradeoffStudy::measure) and `tradeoff --attribute` (ErrorAttribution)
 // hand it to their runners as their TradeoffReference.
 // Needs no GL (the reference is traced on the CPU).
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "renderer/bench/TradeoffRunner.h"
+#include "renderer/reference/RaySceneCache.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 
@@ -48,6 +50,9 @@ private:
     std::uint32_t seed_;
     Hooks hooks_;
     const reference::ReferenceCache cache_;
+    // One ray scene for every camera and sweep point of the run (rebuilt only
+    // when the scene's content changes, as flame particles do by frame).
+    reference::RaySceneCache rayScenes_;
     std::map<std::string, reference::ReferenceImages> images_;
     bool noted_ = false;
     int rendered_ = 0, fromCache_ = 0;

@@ -10,6 +10,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/bench/BenchSummary.h"
+#include "renderer/io/JsonGuard.h"
 #include "renderer/metrics/Bootstrap.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "renderer/record/SceneContent.h"
@@ -310,6 +311,42 @@ TEST(SceneFiles, AGltfNamedByASceneJsonBringsItsBuffersAndImages) {
     EXPECT_EQ(names, (std::vector<std::string>{"scene.json", "model/a.gltf", "model/a.bin", "model/t.png"}));
     EXPECT_EQ(files[2].sha256, sha256Hex(std::string(36, '\0').data(), 36));
     EXPECT_EQ(sha256Hex("abc", 3), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+// Issue 33, "a scene read once": the record lists a loaded glTF's buffers
+// from the loader's parse of its JSON (Scene::gltfExternalUris), not a parse
+// of its own; the list is the one a parse of the file gives.
+TEST(SceneFiles, ALoadedGltfsJsonIsParsedOnceForTheLoadAndTheRecord) {
+    const fs::path dir = test::tempDir() / "scene-files-once";
+    fs::create_directories(dir / "model");
+    const float triangle[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    writeFile(dir / "model" / "a.bin", std::string(reinterpret_cast<const char*>(triangle), sizeof triangle));
+    writeFile(dir / "model" / "a.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "buffers": [{"uri": "a.bin", "byteLength": 36}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]}]})");
+    const std::string path = (dir / "model" / "a.gltf").string();
+    const long long before = jsonParseCount();
+    const Scene scene = loadScene(path);
+    EXPECT_EQ(jsonParseCount() - before, 1);  // the loader's checks (tinygltf reads its own copy of the text)
+    const std::vector<RecordedFile> files = sceneFilesOf(scene);
+    EXPECT_EQ(jsonParseCount() - before, 1);  // the record parsed nothing
+    std::vector<std::string> names;
+    for (const auto& f : files) names.push_back(fs::path(f.path).lexically_relative(dir).string());
+    EXPECT_EQ(names, (std::vector<std::string>{"model/a.gltf", "model/a.bin"}));
+    EXPECT_EQ(files[1].sha256, sha256Hex(triangle, sizeof triangle));
+    // The same list as the record's own parse gives, for a scene the loader did not read.
+    Scene unread;
+    unread.source = path;
+    const std::vector<RecordedFile> parsed = sceneFilesOf(unread);
+    ASSERT_EQ(parsed.size(), files.size());
+    for (size_t i = 0; i < files.size(); ++i) {
+        EXPECT_EQ(parsed[i].path, files[i].path);
+        EXPECT_EQ(parsed[i].sha256, files[i].sha256);
+    }
+    EXPECT_EQ(jsonParseCount() - before, 2);
 }
 
 TEST(ExperimentRecord, BenchMergeReadsTheSummaryOfARecordAndOfAnOlderJson) {
