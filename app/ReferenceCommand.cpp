@@ -39,14 +39,16 @@ int runReferenceCommand(int argc, char** argv) {
     CommandLine cl(argc, argv, 2, "reference");
     if (cl.flag("--help")) {
         std::cout
-            << "usage: deferred-workbench reference [--scene NAME|FILE] [--size WxH] [--buffer lbuffer|final|ao|shadow]\n"
+            << "usage: deferred-workbench reference [--scene NAME|FILE] [--size WxH] [--buffer lbuffer|final|ao|shadow|spp_error]\n"
                "                                    [--preset NAME|FILE] [--set knob=value]... [--ao-rays N] [--seed N]\n"
+               "                                    [--spp N] [--filter box|tent]\n"
                "                                    [--threads N] [--no-cache] [--cache-dir DIR] [--stats-out FILE]\n"
                "                                    [--throughput] [--quiet] --out FILE\n"
                "The CPU ground truth of the view: the GPU's shading model without its approximations, in double\n"
                "precision on exact geometry traced with Embree (docs/reference.md). No GL is used.\n"
                "  --buffer     lbuffer (HDR radiance, the default), final (tone-mapped), ao (ray-traced ambient\n"
-               "               accessibility), shadow (share of the shadow-casting lights' light that arrives)\n"
+               "               accessibility), shadow (share of the shadow-casting lights' light that arrives),\n"
+               "               spp_error (the standard error of each pixel's luminance over its samples)\n"
                "  --out        .exr writes the raw values; .png the values in [0, 1] (not for lbuffer)\n"
                "  --preset, --set  as for render: the knobs that define the model are honoured (shadows.enabled,\n"
                "               shadows.blended_casters, ao.enabled, the radius of the method ao.method names:\n"
@@ -55,7 +57,12 @@ int runReferenceCommand(int argc, char** argv) {
                "               lighting.ambient_*, skybox.*, tonemap.*, luminance.*); the rest choose GPU\n"
                "               approximations and are ignored, and the run says which of those were set\n"
                "  --ao-rays    cosine-weighted AO rays per pixel (default 64); the standard error is reported\n"
-               "  --seed       the AO sample pattern's seed (default 1); the image is the same for any --threads\n"
+               "  --seed       the AO rays' and the pixel samples' seed (default 1); the image is the same for any --threads\n"
+               "  --spp        samples per pixel (default 1: the pixel's centre, as the rasteriser samples): N points\n"
+               "               over the pixel's footprint, each tracing everything, averaged: the truth of the\n"
+               "               pixel's area (textures at their base level at each point); the run says whether N\n"
+               "               is enough (the estimate's standard error under half an 8-bit step of the final image)\n"
+               "  --filter     the footprint's weighting: box (the pixel's square, the default) or tent (radius 1 px)\n"
                "  --threads    worker threads (default: all cores)\n"
                "  --no-cache   render even when the cache holds this reference, and do not store it\n"
                "  --cache-dir  the cache (default $DW_REFERENCE_CACHE, else ~/.cache/deferred-workbench/reference)\n"
@@ -71,6 +78,8 @@ int runReferenceCommand(int argc, char** argv) {
     const auto out = cl.value("--out");
     const int aoRays = cl.whole("--ao-rays", 64);
     const int seed = cl.whole("--seed", 1);
+    const int spp = cl.whole("--spp", 1);
+    const std::string filter = cl.value("--filter").value_or("box");
     const int requestedThreads = cl.whole("--threads", 0);
     // oneTBB runs at most as many threads as the machine has cores; more are not asked for.
     const int threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
@@ -86,7 +95,14 @@ int runReferenceCommand(int argc, char** argv) {
     if (!out) throw UsageError("reference needs --out FILE (.exr, or .png for final, ao and shadow)");
     const auto& names = reference::referenceBuffers();
     if (std::find(names.begin(), names.end(), buffer) == names.end())
-        throw UsageError("--buffer: unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
+        throw UsageError("--buffer: unknown reference buffer '" + buffer + "' (lbuffer, final, ao, shadow or spp_error)");
+    const reference::PixelFilter pixelFilter = [&] {
+        try {
+            return reference::pixelFilterNamed(filter);
+        } catch (const Error& e) {
+            throw UsageError(e.what());
+        }
+    }();
     if (isFloatFormat(*out) && std::filesystem::path(*out).extension() != ".exr")
         throw UsageError("--out " + *out + ": float images are written as .exr (or .png for final, ao and shadow)");
     if (buffer == "lbuffer" && !isFloatFormat(*out))
@@ -105,6 +121,8 @@ int runReferenceCommand(int argc, char** argv) {
     reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
     model.aoRays = aoRays;
     model.seed = static_cast<std::uint32_t>(seed);
+    model.pixelSamples = spp;
+    model.pixelFilter = pixelFilter;
     std::printf("%s\n", reference::reportKnobs(knobs, model, buffer == "final").text().c_str());
 
     reference::ReferenceRequest request;
@@ -145,6 +163,7 @@ int runReferenceCommand(int argc, char** argv) {
     if (model.rayTracedAo)
         std::printf("ambient occlusion: %d rays per pixel, radius %g, standard error of A: mean %.4f, max %.4f\n",
                     model.aoRays, model.aoRadius, s.aoStandardErrorMean, s.aoStandardErrorMax);
+    if (model.pixelSamples > 1) std::printf("%s\n", reference::pixelSamplesVerdict(*images, model).c_str());
     nlohmann::json stats = {{"key", key},
                             {"cached", cached},
                             {"scene", scene.name},
@@ -161,6 +180,10 @@ int runReferenceCommand(int argc, char** argv) {
                             {"ao_rays_per_pixel", model.rayTracedAo ? model.aoRays : 0},
                             {"ao_standard_error_mean", s.aoStandardErrorMean},
                             {"ao_standard_error_max", s.aoStandardErrorMax},
+                            {"pixel_samples", model.pixelSamples},
+                            {"pixel_filter", reference::pixelFilterName(model.pixelFilter)},
+                            {"spp_error_mean", s.sppErrorMean},
+                            {"spp_error_max", s.sppErrorMax},
                             {"model", model.canonical()}};
     if (throughput) {
         // Side by side in this run: the reference once more (uncached) and Embree alone over the same rays.

@@ -44,6 +44,7 @@ constexpr OptionRange kShards{1, 100000};      // bench/tradeoff --shard i/n: n
 constexpr OptionRange kLppPoses{1, 1000};      // bench --lpp-poses
 constexpr OptionRange kAoRays{1, 1 << 20};     // reference/compare/tradeoff --ao-rays
 constexpr OptionRange kSeed{0, 2147483647};    // reference/bench --seed
+constexpr OptionRange kPixelSamples{1, 65536}; // reference --spp (tradeoff --ref-spp): samples per pixel
 constexpr OptionRange kReferenceThreads{0, 4096};  // reference --threads (0: every core)
 // The largest finite 32-bit float: no difference of two float images, and no
 // light radius a 32-bit light table holds, is larger.
@@ -113,6 +114,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"reference", "--size", F::Size, kSize, "pixels"},
     {"reference", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"reference", "--seed", F::Whole, kSeed, "seed"},
+    {"reference", "--spp", F::Whole, kPixelSamples, "samples per pixel"},
     {"reference", "--threads", F::Whole, kReferenceThreads, "threads, 0: every core"},
     {"tradeoff", "--size", F::Size, kSize, "pixels"},
     {"tradeoff", "--frames", F::Whole, kFrames, "counted frames"},

@@ -34,6 +34,11 @@ struct CameraRays {
     glm::dvec3 direction(int x, int row) const {
         return directionAtNdc((x + 0.5) / width * 2.0 - 1.0, ((height - 1 - row) + 0.5) / height * 2.0 - 1.0);
     }
+    // Through an image point (px, py) in pixels from the image's top-left
+    // corner (py downwards): direction(x, row) is directionAt(x + 0.5, row + 0.5).
+    glm::dvec3 directionAt(double px, double py) const {
+        return directionAtNdc(px / width * 2.0 - 1.0, (height - py) / height * 2.0 - 1.0);
+    }
     // A view-space point's normalised device coordinates (x, y).
     glm::dvec2 ndcOf(const glm::dvec3& view) const {
         return {view.x / (-view.z * tanHalf * aspect), view.y / (-view.z * tanHalf)};

@@ -124,7 +124,10 @@ nlohmann::json statsJson(const ReferenceStatistics& s) {
             {"blended_hits", s.blendedHits},
             {"ao_standard_error_mean", s.aoStandardErrorMean},
             {"ao_standard_error_max", s.aoStandardErrorMax},
-            {"triangles", s.triangles}};
+            {"triangles", s.triangles},
+            {"pixel_samples", s.pixelSamples},
+            {"spp_error_mean", s.sppErrorMean},
+            {"spp_error_max", s.sppErrorMax}};
 }
 
 // What a RayScene is built from and its queries read: meshes, instances, materials, images.
@@ -221,14 +224,19 @@ std::optional<ReferenceImages> ReferenceCache::load(const std::string& key) cons
         r.stats.aoStandardErrorMean = s.at("ao_standard_error_mean").get<double>();
         r.stats.aoStandardErrorMax = s.at("ao_standard_error_max").get<double>();
         r.stats.triangles = s.at("triangles").get<size_t>();
+        r.stats.pixelSamples = s.at("pixel_samples").get<int>();
+        r.stats.sppErrorMean = s.at("spp_error_mean").get<double>();
+        r.stats.sppErrorMax = s.at("spp_error_max").get<double>();
         r.lbuffer = loadImageFloat((directory_ / (key + ".lbuffer.exr")).string());
         r.final = loadImageFloat((directory_ / (key + ".final.exr")).string());
         r.ao = loadImageFloat((directory_ / (key + ".ao.exr")).string());
         r.shadow = loadImageFloat((directory_ / (key + ".shadow.exr")).string());
+        r.sppError = loadImageFloat((directory_ / (key + ".spp_error.exr")).string());
         const FloatImage bg = loadImageFloat((directory_ / (key + ".background.exr")).string());
         r.background.resize(bg.pixels.size());
         for (size_t i = 0; i < bg.pixels.size(); ++i) r.background[i] = bg.pixels[i] != 0.0f ? 1 : 0;
         if (r.lbuffer.width != r.final.width || r.lbuffer.height != r.final.height ||
+            r.sppError.width != r.lbuffer.width || r.sppError.height != r.lbuffer.height ||
             r.background.size() != static_cast<size_t>(r.lbuffer.width) * r.lbuffer.height)
             return std::nullopt;
         return r;
@@ -254,6 +262,7 @@ void ReferenceCache::store(const std::string& key, const ReferenceImages& images
     write("final", images.final);
     write("ao", images.ao);
     write("shadow", images.shadow);
+    write("spp_error", images.sppError);
     FloatImage bg;
     bg.width = images.lbuffer.width;
     bg.height = images.lbuffer.height;

@@ -21,7 +21,8 @@ namespace dw::reference {
 // Bumped whenever the reference's output changes for the same inputs.
 // 2: one RayScene per scene, relative to the scene's centre, shared by every
 // camera (issue 33; it was relative to each camera's position).
-constexpr int kReferenceVersion = 2;
+// 3: entries hold spp_error (samples per pixel, issue 35).
+constexpr int kReferenceVersion = 3;
 
 // 16 hex digits.
 std::string referenceKey(const Scene& scene, const ReferenceModel& model, const ReferenceRequest& request);

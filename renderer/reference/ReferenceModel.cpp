@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "renderer/Error.h"
+
 namespace dw::reference {
 
 namespace {
@@ -90,6 +92,14 @@ ReferenceModel ReferenceModel::fromKnobs(const KnobRegistry& k, const Scene& sce
     return m;
 }
 
+PixelFilter pixelFilterNamed(const std::string& name) {
+    if (name == "box") return PixelFilter::Box;
+    if (name == "tent") return PixelFilter::Tent;
+    throw Error("--filter: expected box or tent, got '" + name + "'");
+}
+
+const char* pixelFilterName(PixelFilter filter) { return filter == PixelFilter::Tent ? "tent" : "box"; }
+
 std::string ReferenceModel::canonical() const {
     std::ostringstream s;
     s.precision(17);
@@ -102,6 +112,8 @@ std::string ReferenceModel::canonical() const {
     // Values that change nothing under the model are left out, so they do not split the cache.
     if (attenuation == AttenuationModel::Windowed) s << "threshold=" << threshold << ";";
     if (rayTracedAo) s << "ao_radius=" << aoRadius << ";ao_intensity=" << aoIntensity << ";ao_rays=" << aoRays << ";seed=" << seed << ";";
+    // The pixel's centre alone (1 sample) keeps the key it always had.
+    if (pixelSamples > 1) s << "spp=" << pixelSamples << ";filter=" << pixelFilterName(pixelFilter) << ";pixel_seed=" << seed << ";";
     return s.str();
 }
 

@@ -28,6 +28,13 @@ namespace dw::reference {
 
 enum class ToneOperator { Simple, Reinhard, Aces, Neutral, Clamp };
 enum class SkyChoice { Color, Procedural, Equirect, Cube };
+// How a pixel's samples are weighted (reference --filter): box, the pixel's
+// square; tent, a triangle of radius 1 px about its centre (samples drawn
+// from it, so its footprint is 2 px wide and every sample weighs the same).
+enum class PixelFilter { Box, Tent };
+// "box" -> PixelFilter::Box, "tent" -> Tent; Error naming the filters otherwise.
+PixelFilter pixelFilterNamed(const std::string& name);
+const char* pixelFilterName(PixelFilter filter);
 
 struct ReferenceModel {
     AttenuationModel attenuation = AttenuationModel::Classic;
@@ -41,7 +48,14 @@ struct ReferenceModel {
     double aoRadius = 1.0;       // world units (the ao.method's radius, e.g. ssao.radius in ssao.radius_unit)
     double aoIntensity = 1.0;
     int aoRays = 64;             // cosine-weighted rays per pixel
-    std::uint32_t seed = 1;      // the AO sample pattern's
+    std::uint32_t seed = 1;      // the AO sample pattern's and the pixel samples'
+    // Samples per pixel (reference --spp): 1 traces the pixel's centre (the
+    // rasteriser's sample); N > 1 traces N points of a low-discrepancy set
+    // (Hammersley, shifted per pixel by a seeded Cranley-Patterson rotation)
+    // over the filter's footprint and averages them: the integral over the
+    // pixel, textures read at their base level at each point.
+    int pixelSamples = 1;
+    PixelFilter pixelFilter = PixelFilter::Box;
     SkyChoice sky = SkyChoice::Color;
     double skyIntensity = 1.0;   // skybox.intensity x the scene's
     double skyRotationDegrees = 0.0;

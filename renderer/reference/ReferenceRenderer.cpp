@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
@@ -137,8 +138,34 @@ void forEachTile(int width, int height, int threads, ReferenceProgress* progress
 int availableThreads() { return tbb::this_task_arena::max_concurrency(); }
 
 const std::vector<std::string>& referenceBuffers() {
-    static const std::vector<std::string> names = {"lbuffer", "final", "ao", "shadow"};
+    static const std::vector<std::string> names = {"lbuffer", "final", "ao", "shadow", "spp_error"};
     return names;
+}
+
+double meanRelativeSppError(const ReferenceImages& images) {
+    const FloatImage& e = images.sppError;
+    const FloatImage& l = images.lbuffer;
+    if (e.pixels.empty() || l.pixels.size() != e.pixels.size() * 4) return 0.0;
+    double sum = 0.0;
+    for (size_t p = 0; p < e.pixels.size(); ++p)
+        sum += e.pixels[p] / (luminance(l.pixels[p * 4], l.pixels[p * 4 + 1], l.pixels[p * 4 + 2]) + 1e-3);
+    return sum / static_cast<double>(e.pixels.size());
+}
+
+std::string pixelSamplesVerdict(const ReferenceImages& images, const ReferenceModel& model) {
+    constexpr double kHalfStep = 0.5 / 255.0;
+    const double mean = meanRelativeSppError(images);
+    const bool enough = mean < kHalfStep;
+    // The standard error falls as 1/sqrt(N): the N that would bring it under, rounded up to a power of 4.
+    int next = model.pixelSamples;
+    while (!enough && next < 65536 && mean * std::sqrt(static_cast<double>(model.pixelSamples) / next) >= kHalfStep) next *= 4;
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "pixel samples: %d (%s), relative standard error of the pixels' luminance: mean %.4g: %s (half an "
+                  "8-bit step is %.4g)%s",
+                  model.pixelSamples, pixelFilterName(model.pixelFilter), mean, enough ? "enough" : "not enough",
+                  kHalfStep, enough ? "" : ("; about --spp " + std::to_string(next) + " would be").c_str());
+    return text;
 }
 
 const FloatImage* ReferenceImages::buffer(const std::string& name) const {
@@ -146,6 +173,7 @@ const FloatImage* ReferenceImages::buffer(const std::string& name) const {
     if (name == "final") return &final;
     if (name == "ao") return &ao;
     if (name == "shadow") return &shadow;
+    if (name == "spp_error") return &sppError;
     return nullptr;
 }
 
@@ -168,13 +196,19 @@ struct TraceOutput {
     ReferenceImages& images;
     std::vector<double>& aoError;  // per pixel; -1 where no AO was estimated
 };
+// What one sample of a pixel found: its radiance, and the opaque surface's
+// accessibility, shadow factor and AO standard error (1, 1, -1 without one).
+struct SampleOutput {
+    double ao = 1.0, shadow = 1.0, aoError = -1.0;
+    bool sky = false;
+};
 struct TileCounts {
     long long shadow = 0, ao = 0, layers = 0;
 };
 
 // The accessibility A at an opaque surface by the model's AO rays; writes
 // the estimate's standard error to aoError[p].
-double ambientAccess(const Trace& t, const SurfaceSample& s, const glm::dvec3& origin, size_t p, TraceOutput& out,
+double ambientAccess(const Trace& t, const SurfaceSample& s, const glm::dvec3& origin, std::uint64_t p, SampleOutput& out,
                      TileCounts& counts) {
     const ReferenceModel& model = t.model;
     glm::dvec3 tu, tb;
@@ -205,7 +239,7 @@ double ambientAccess(const Trace& t, const SurfaceSample& s, const glm::dvec3& o
     }
     const double mean = sum / n;
     const double variance = n > 1 ? std::max(sumSq / n - mean * mean, 0.0) * n / (n - 1) : 0.0;
-    out.aoError[p] = model.aoIntensity * std::sqrt(variance / n);
+    out.aoError = model.aoIntensity * std::sqrt(variance / n);
     return std::clamp(1.0 - model.aoIntensity * mean, 0.0, 1.0);
 }
 
@@ -243,7 +277,7 @@ void directLight(const Trace& t, const SurfacePoint& sp, const glm::dvec3& origi
 // One surface's radiance towards the eye. An opaque one (`transparent`
 // false) writes the pixel's AO and shadow; a blended one gets no AO (it is
 // not in the G-buffer SSAO reads) but receives shadows.
-glm::dvec3 shadeSurface(const Trace& t, const SurfaceSample& s, bool transparent, size_t p, TraceOutput& out,
+glm::dvec3 shadeSurface(const Trace& t, const SurfaceSample& s, bool transparent, std::uint64_t p, SampleOutput& out,
                         TileCounts& counts) {
     const ReferenceModel& model = t.model;
     const glm::dvec3 fromEye = s.position - t.eye;
@@ -258,7 +292,7 @@ glm::dvec3 shadeSurface(const Trace& t, const SurfaceSample& s, bool transparent
 
     double access = 1.0;
     if (model.rayTracedAo && !transparent) access = ambientAccess(t, s, origin, p, out, counts);
-    if (!transparent) out.images.ao.pixels[p] = static_cast<float>(access);
+    if (!transparent) out.ao = access;
     // The GPU's transparent fragments take no baked occlusion either
     // (shaders/oit/transparent.frag).
     if (model.bakedOcclusion && !transparent) access *= s.occlusion;
@@ -267,16 +301,18 @@ glm::dvec3 shadeSurface(const Trace& t, const SurfaceSample& s, bool transparent
 
     double lit = 0.0, unshadowed = 0.0;
     directLight(t, sp, origin, eps, counts, radiance, lit, unshadowed);
-    if (unshadowed > 0.0 && !transparent) out.images.shadow.pixels[p] = static_cast<float>(lit / unshadowed);
+    if (unshadowed > 0.0 && !transparent) out.shadow = lit / unshadowed;
     return radiance;
 }
 
-// The pixel's radiance: front to back, blended surfaces composited over what
-// lies behind them ("over" with premultiplied alpha, in exact depth order),
-// until an opaque surface or the sky.
-void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& counts) {
-    const size_t p = static_cast<size_t>(row) * t.camera.width + x;
-    const glm::dvec3 dir = t.camera.direction(x, row);
+// One sample's radiance through the image point (x, row) + (fx, fy) (pixel
+// units, row counted from the top, fy downwards): front to back, blended
+// surfaces composited over what lies behind them ("over" with premultiplied
+// alpha, in exact depth order), until an opaque surface or the sky. `p`
+// seeds the sample's AO pattern (the pixel's index for its first sample).
+glm::dvec3 traceSample(const Trace& t, int x, int row, double fx, double fy, std::uint64_t p, SampleOutput& out,
+                       TileCounts& counts) {
+    const glm::dvec3 dir = t.camera.directionAt(x + fx, row + fy);
     glm::dvec3 radiance(0.0);
     double transmittance = 1.0;
     double tNear = t.camera.nearPlane;
@@ -284,7 +320,7 @@ void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& co
         const RayHit hit = t.rays.intersect(t.eye, dir, tNear, t.camera.farPlane, Visibility::Camera);
         if (!hit.hit) {
             radiance += transmittance * t.sky.radiance(glm::normalize(dir));
-            out.images.background[p] = 1;
+            out.sky = true;
             break;
         }
         const SurfaceSample surface = evaluateSurface(t.scene, t.rays, hit, t.eye, dir);
@@ -298,7 +334,65 @@ void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& co
         radiance += transmittance * shadeSurface(t, surface, false, p, out, counts);
         break;
     }
+    return radiance;
+}
+
+// A unit-interval sample mapped through the filter's inverse CDF, as an
+// offset from the pixel's corner: box [0, 1); tent [-0.5, 1.5), peaked at 0.5.
+double filterOffset(PixelFilter filter, double u) {
+    if (filter == PixelFilter::Box) return u;
+    const double d = u < 0.5 ? std::sqrt(2.0 * u) - 1.0 : 1.0 - std::sqrt(2.0 - 2.0 * u);
+    return 0.5 + d;
+}
+
+// Sample i of the pixel's n: the pixel's centre for one sample; else the
+// i-th Hammersley point shifted by the pixel's own rotation (seeded).
+glm::dvec2 pixelOffset(const Trace& t, size_t p, int i, int n) {
+    if (n == 1) return {0.5, 0.5};
+    const std::uint64_t h = mix64(mix64(p ^ 0x5bd1e995ull) ^ (static_cast<std::uint64_t>(t.model.seed) << 32));
+    double u = (i + 0.5) / n + unitFloat(h), v = radicalInverse2(static_cast<std::uint32_t>(i)) + unitFloat(mix64(h));
+    u -= std::floor(u);
+    v -= std::floor(v);
+    return {filterOffset(t.model.pixelFilter, u), filterOffset(t.model.pixelFilter, v)};
+}
+
+// The pixel: its samples averaged (lbuffer, ao, shadow; the sky where most
+// samples see it), the AO's standard error combined over them, and the
+// standard error of the luminance's mean (spp_error; 0 for one sample).
+void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& counts) {
+    const size_t p = static_cast<size_t>(row) * t.camera.width + x;
+    const int n = t.model.pixelSamples;
+    glm::dvec3 radiance(0.0);
+    double ao = 0.0, shadow = 0.0, aoVariance = 0.0, aoError = -1.0, lum = 0.0, lumSq = 0.0;
+    int sky = 0, withAo = 0;
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec2 o = pixelOffset(t, p, i, n);
+        SampleOutput s;
+        // The first sample keeps the pixel's own AO pattern (one sample: the image it always was).
+        const std::uint64_t seed = i == 0 ? p : mix64(p ^ (static_cast<std::uint64_t>(i) << 40));
+        const glm::dvec3 c = traceSample(t, x, row, o.x, o.y, seed, s, counts);
+        radiance += c;
+        const double y = luminance(c.r, c.g, c.b);
+        lum += y;
+        lumSq += y * y;
+        ao += s.ao;
+        shadow += s.shadow;
+        sky += s.sky ? 1 : 0;
+        if (s.aoError >= 0.0) {
+            aoVariance += s.aoError * s.aoError;
+            aoError = s.aoError;
+            ++withAo;
+        }
+    }
+    radiance /= n;
     for (int c = 0; c < 3; ++c) out.images.lbuffer.pixels[p * 4 + c] = static_cast<float>(radiance[c]);
+    out.images.ao.pixels[p] = static_cast<float>(ao / n);
+    out.images.shadow.pixels[p] = static_cast<float>(shadow / n);
+    out.images.background[p] = 2 * sky > n ? 1 : 0;
+    if (withAo > 0) out.aoError[p] = withAo == 1 ? aoError : std::sqrt(aoVariance) / withAo;
+    const double mean = lum / n;
+    const double variance = n > 1 ? std::max(lumSq / n - mean * mean, 0.0) * n / (n - 1) : 0.0;
+    out.images.sppError.pixels[p] = static_cast<float>(std::sqrt(variance / n));
 }
 
 // The AO estimate's standard error over the pixels that have one.
@@ -314,8 +408,19 @@ void aoErrorStatistics(const std::vector<double>& aoError, ReferenceStatistics& 
     stats.aoStandardErrorMean = counted > 0 ? sumErr / counted : 0.0;
 }
 
+// The pixel estimate's standard error (of its luminance) over the image.
+void sppErrorStatistics(const FloatImage& sppError, ReferenceStatistics& stats) {
+    double sum = 0.0;
+    for (float e : sppError.pixels) {
+        sum += e;
+        stats.sppErrorMax = std::max(stats.sppErrorMax, static_cast<double>(e));
+    }
+    stats.sppErrorMean = sppError.pixels.empty() ? 0.0 : sum / static_cast<double>(sppError.pixels.size());
+}
+
 void checkRequest(const ReferenceModel& model, const ReferenceRequest& request) {
     if (request.width < 1 || request.height < 1) throw Error("reference: the size must be at least 1x1");
+    if (model.pixelSamples < 1) throw Error("reference: at least 1 sample per pixel");
     if (model.rayTracedAo && model.aoRays < 1) throw Error("reference: AO needs at least 1 ray per pixel");
 }
 
@@ -355,6 +460,7 @@ ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const 
     out.lbuffer = makeImage(W, H, 4, 1.0f);
     out.ao = makeImage(W, H, 1, 1.0f);
     out.shadow = makeImage(W, H, 1, 1.0f);
+    out.sppError = makeImage(W, H, 1, 0.0f);
     out.background.assign(static_cast<size_t>(W) * H, 0);
     std::vector<double> aoError(static_cast<size_t>(W) * H, -1.0);
     std::atomic<long long> shadowRays{0}, aoRays{0}, blendedHits{0};
@@ -376,7 +482,9 @@ ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const 
     if (progress && progress->cancel.load()) throw ReferenceCancelled();
     out.stats.blendedHits = blendedHits.load();
     out.stats.seconds = secondsSince(start);
-    out.stats.primaryRays = static_cast<long long>(W) * H;
+    out.stats.primaryRays = static_cast<long long>(W) * H * model.pixelSamples;
+    out.stats.pixelSamples = model.pixelSamples;
+    sppErrorStatistics(out.sppError, out.stats);
     out.stats.shadowRays = shadowRays.load();
     out.stats.aoRays = aoRays.load();
     aoErrorStatistics(aoError, out.stats);
