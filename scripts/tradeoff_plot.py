@@ -1,7 +1,13 @@
 #!/usr/bin/env python3
 """Plots a `deferred-workbench tradeoff` CSV: median GPU frame ms against the
 error, both with their 95% intervals, the Pareto front highlighted and each
-point on it labelled with its settings. With several cameras the rows over
+point on it labelled with its settings. The points are drawn by the CSV's
+`front` column: on the front and told apart from every other front point
+(filled red), on the front but tied with another point on an axis (hollow
+red: tied_with), indistinguishable (off the front, not confidently dominated:
+orange squares) and dominated (grey). --time names the x axis: frame, a pass
+or a sum of passes (the CSV's time_ms with its interval when its `time`
+column names it). With several cameras the rows over
 all cameras ("all") are drawn. `tradeoff --plot FILE.png` runs it; by hand:
 
     python3 scripts/tradeoff_plot.py --csv tradeoff.csv --out tradeoff.png [--size 800x600] [--overlay presets.csv]
@@ -44,38 +50,71 @@ def read(path, time="frame"):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader, None)
-        if not header or header[0] != "point" or "camera" not in header or header[-1] != "pareto":
+        if not header or header[0] != "point" or "camera" not in header or "pareto" not in header:
             raise ValueError(f"{path}: not a tradeoff CSV (header {header})")
         camera = header.index("camera")
         axes = header[1:camera]
         if header[camera + 1:camera + 1 + len(MIDDLE)] != MIDDLE:
             raise ValueError(f"{path}: not a tradeoff CSV (columns after camera: {header[camera + 1:]})")
         index = {name: i for i, name in enumerate(header)}
-        # --time PASS: the pass's median on the x axis (no interval in the CSV).
-        ms = "frame_gpu_ms" if time == "frame" else "gpu_ms." + time
-        if ms not in index:
-            raise ValueError(f"{path}: no column {ms} (--time {time})")
-        ms_lo = "frame_gpu_ms_lo" if time == "frame" else ms
-        ms_hi = "frame_gpu_ms_hi" if time == "frame" else ms
         rows = []
         for row in reader:
             if not row:
                 continue
-            rows.append({
-                "point": int(row[0]),
-                "values": row[1:camera],
-                "camera": row[camera],
-                "metric": row[index["metric"]],
-                "buffer": row[index["buffer"]],
-                "error": number(row[index["error"]]),
-                "lo": number(row[index["error_lo"]]),
-                "hi": number(row[index["error_hi"]]),
-                "ms": number(row[index[ms]]),
-                "ms_lo": number(row[index[ms_lo]]),
-                "ms_hi": number(row[index[ms_hi]]),
-                "pareto": row[-1] == "1",
-            })
+            rows.append(read_row(row, index, axes, camera, time, path))
     return axes, rows
+
+
+def time_columns(row, index, time, path):
+    """The x axis's columns: time_ms with its interval when the CSV's time is --time's, else frame_gpu_ms or a
+    pass's median (no interval)."""
+    if "time" in index and row[index["time"]] == time:
+        return "time_ms", "time_ms_lo", "time_ms_hi"
+    if time == "frame":
+        return "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"
+    ms = "gpu_ms." + time
+    if ms not in index:
+        raise ValueError(f"{path}: no column {ms} (--time {time})")
+    return ms, ms, ms
+
+
+def read_row(row, index, axes, camera, time, path):
+    ms, ms_lo, ms_hi = time_columns(row, index, time, path)
+    pareto = row[index["pareto"]] == "1"
+    front = row[index["front"]] if "front" in index else ("pareto" if pareto else "")
+    return {
+        "point": int(row[0]),
+        "values": row[1:camera],
+        "camera": row[camera],
+        "metric": row[index["metric"]],
+        "buffer": row[index["buffer"]],
+        "error": number(row[index["error"]]),
+        "lo": number(row[index["error_lo"]]),
+        "hi": number(row[index["error_hi"]]),
+        "ms": number(row[index[ms]]),
+        "ms_lo": number(row[index[ms_lo]]),
+        "ms_hi": number(row[index[ms_hi]]),
+        "pareto": pareto,
+        "front": front,
+        "tied": row[index["tied_with"]] if "tied_with" in index else "",
+        "pick": row[index["pick"]] if "pick" in index else "",
+    }
+
+
+# How each class of point is drawn: (label, marker, colour, error-bar colour, filled, size, z).
+CLASSES = [
+    ("dominated", "dominated (confidently)", ".", "tab:gray", "lightgray", True, 5, 2),
+    ("indistinguishable", "indistinguishable (off the front, not confidently dominated)", "s", "tab:orange",
+     "navajowhite", False, 6, 2),
+    ("tied", "Pareto front, tied with another point", "o", "tab:red", "lightcoral", False, 7, 3),
+    ("pareto", "Pareto front, told apart", "o", "tab:red", "tab:red", True, 7, 3),
+]
+
+
+def point_class(r):
+    if r["front"] == "pareto" or (not r["front"] and r["pareto"]):
+        return "tied" if r["tied"] else "pareto"
+    return r["front"] or "dominated"
 
 
 def main():
@@ -140,8 +179,8 @@ def main():
 
     dpi = 100
     fig, ax = plt.subplots(figsize=(width / dpi, height / dpi), dpi=dpi)
-    for front in (False, True):
-        group = [r for r in shown if r["pareto"] == front]
+    for key, name, marker, colour, ecolour, filled, size, z in CLASSES:
+        group = [r for r in shown if point_class(r) == key]
         if not group:
             continue
         xerr = [[max(0.0, r["ms"] - r["ms_lo"]) if math.isfinite(r["ms_lo"]) else 0.0 for r in group],
@@ -149,9 +188,12 @@ def main():
         yerr = [[max(0.0, r["error"] - r["lo"]) if math.isfinite(r["lo"]) else 0.0 for r in group],
                 [max(0.0, r["hi"] - r["error"]) if math.isfinite(r["hi"]) else 0.0 for r in group]]
         ax.errorbar([r["ms"] for r in group], [r["error"] for r in group], xerr=xerr, yerr=yerr,
-                    fmt="o" if front else ".", color="tab:red" if front else "tab:gray",
-                    ecolor="tab:red" if front else "lightgray", capsize=3, markersize=7 if front else 5,
-                    label="Pareto front" if front else "other points", zorder=3 if front else 2)
+                    fmt=marker, color=colour, ecolor=ecolour, capsize=3, markersize=size,
+                    markerfacecolor=colour if filled else "white", label=name, zorder=z)
+    picked = [r for r in shown if r["pick"] == "pick"]
+    if picked:
+        ax.plot([r["ms"] for r in picked], [r["error"] for r in picked], "*", color="tab:green", markersize=14,
+                label="budget pick", zorder=5)
     front = sorted((r for r in shown if r["pareto"]), key=lambda r: (r["ms"], r["error"]))
     labels = [(r["ms"], r["error"], label(r), "tab:red") for r in front]
     points = [(r["ms"], r["error"]) for r in shown]
@@ -182,6 +224,7 @@ def main():
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
     ax.set_xlabel("GPU frame ms (median, 95% CI)" if args.time == "frame"
+                  else f"GPU ms of {args.time} (median of the per-frame sums, 95% CI)" if "+" in args.time
                   else f"GPU ms of the {args.time} pass (median)")
     ax.set_ylabel(f"{metric} of {buffer} (95% CI)")
     over = " over all cameras" if shown and shown[0]["camera"] == "all" else ""
