@@ -25,8 +25,20 @@ std::string describe(const TradeoffTable& t, const TradeoffRow& r) {
     return values.empty() ? s : s + " (" + values + ")";
 }
 
-std::string timeText(const TradeoffTable& t, const TradeoffRow& r) {
-    return t.time + " " + shortNumber(r.timeMs) + " ms [" + shortNumber(r.timeMsLo) + ", " + shortNumber(r.timeMsHi) + "]";
+struct Cost {
+    double value = 0.0, lo = 0.0, hi = 0.0;
+};
+
+Cost costOf(const BudgetCost& c, const TradeoffRow& r) {
+    Cost v;
+    c.of(r, v.value, v.lo, v.hi);
+    return v;
+}
+
+std::string costText(const BudgetCost& c, const TradeoffRow& r) {
+    const Cost v = costOf(c, r);
+    const std::string value = c.name + " " + shortNumber(v.value) + " " + c.unit;
+    return c.exact ? value : value + " [" + shortNumber(v.lo) + ", " + shortNumber(v.hi) + "]";
 }
 
 std::string errorText(const TradeoffRow& r) {
@@ -52,26 +64,41 @@ TradeoffRow* leastError(const std::vector<TradeoffRow*>& fits) {
     return best;
 }
 
-void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, BudgetPick& out) {
+void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, const BudgetCost& cost, BudgetPick& out) {
     const TradeoffRow* cheapest = nullptr;
     for (const TradeoffRow* r : rows)
-        if (std::isfinite(r->timeMs) && (!cheapest || r->timeMs < cheapest->timeMs)) cheapest = r;
-    const std::string budget = shortNumber(out.budgetMs) + " ms";
+        if (std::isfinite(costOf(cost, *r).value) && (!cheapest || costOf(cost, *r).value < costOf(cost, *cheapest).value))
+            cheapest = r;
+    const std::string budget = shortNumber(out.budgetMs) + " " + cost.unit;
     if (!cheapest) {
-        out.lines.push_back("pick: none: no point has a " + t.time + " time to hold against the budget of " + budget);
+        out.lines.push_back("pick: none: no point has a " + cost.name + " to hold against the budget of " + budget);
         return;
     }
     out.cheapest = cheapest->point;
-    out.lines.push_back("pick: none fits the budget of " + budget + " (no point's 95% time interval ends under it); the cheapest, " +
-                        describe(t, *cheapest) + ", takes " + timeText(t, *cheapest));
+    out.lines.push_back("pick: none fits the budget of " + budget + " (no point's " + cost.name +
+                        (cost.exact ? "" : "'s 95% interval") + " ends under it); the cheapest, " + describe(t, *cheapest) + ", takes " +
+                        costText(cost, *cheapest));
 }
 
 }  // namespace
 
-void BudgetPicker::check(double ms) {
+void BudgetPicker::check(double ms, const std::string& flag) {
     if (!(std::isfinite(ms) && ms > 0.0))
-        throw Error("--budget-ms: expected milliseconds above 0 (a finite number), got " +
+        throw Error(flag + ": expected " + (flag == "--budget-ms" ? "milliseconds" : "a budget") +
+                    " above 0 (a finite number), got " +
                     std::string(std::isnan(ms) ? "nan" : std::isinf(ms) ? (ms > 0 ? "inf" : "-inf") : shortNumber(ms)));
+}
+
+BudgetCost BudgetPicker::timeCost(const TradeoffTable& t) {
+    return {t.time + " time", "ms", false, [](const TradeoffRow& r, double& v, double& lo, double& hi) {
+                v = r.timeMs;
+                lo = r.timeMsLo;
+                hi = r.timeMsHi;
+            }};
+}
+
+BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera) {
+    return pick(t, budgetMs, camera, timeCost(t));
 }
 
 std::string BudgetPicker::shownCamera(const TradeoffTable& t) {
@@ -80,8 +107,8 @@ std::string BudgetPicker::shownCamera(const TradeoffTable& t) {
     return t.rows.empty() ? std::string() : t.rows.front().camera;
 }
 
-BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera) {
-    check(budgetMs);
+BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera, const BudgetCost& cost) {
+    check(budgetMs, cost.unit == "ms" ? "--budget-ms" : "--budget");
     BudgetPick out;
     out.budgetMs = budgetMs;
     std::vector<TradeoffRow*> rows, fits;
@@ -89,14 +116,15 @@ BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::stri
         if (r.camera == camera) rows.push_back(&r);
     if (rows.empty()) throw Error("--budget-ms: no rows of camera " + camera + " to pick from");
     for (TradeoffRow* r : rows) {
-        const bool fit = std::isfinite(r->timeMsHi) && r->timeMsHi < budgetMs && !std::isnan(r->error);
+        const double hi = costOf(cost, *r).hi;
+        const bool fit = std::isfinite(hi) && hi < budgetMs && !std::isnan(r->error);
         r->pick = fit ? "fits" : "over";
         if (fit) fits.push_back(r);
     }
     out.fitting = static_cast<int>(fits.size());
     TradeoffRow* best = leastError(fits);
     if (!best) {
-        noneFits(t, rows, out);
+        noneFits(t, rows, cost, out);
         return out;
     }
     best->pick = "pick";
@@ -106,10 +134,12 @@ BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::stri
             r->pick = "tied";
             out.tied.push_back(r->point);
         }
-    out.lines.push_back("pick: " + describe(t, *best) + ": " + errorText(*best) + ", " + timeText(t, *best) +
-                        ": the least error of the " + std::to_string(out.fitting) +
-                        " point(s) whose 95% time interval ends under the budget of " + shortNumber(budgetMs) +
-                        " ms (97.5% one-sided that its median time is under)");
+    const bool exact = cost.exact;
+    out.lines.push_back("pick: " + describe(t, *best) + ": " + errorText(*best) + ", " + costText(cost, *best) +
+                        ": the least error of the " + std::to_string(out.fitting) + " point(s) whose " +
+                        (exact ? cost.name : cost.name + "'s 95% interval") + " ends under the budget of " +
+                        shortNumber(budgetMs) + " " + cost.unit +
+                        (exact ? std::string(" (exact)") : " (97.5% one-sided that its median is under)"));
     out.lines.push_back(out.tied.empty()
                             ? "pick: told apart in error from every other point that fits"
                             : "pick: cannot be told apart in error from point(s) " + pointList(out.tied) +

@@ -7,6 +7,7 @@
 // familywise confidence). None fits: the cheapest point by median time, with
 // its interval. The time is the table's `time` (time_ms: frame, a pass or a
 // sum of passes). Marks the rows' `pick` column. Needs no GL.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,14 +24,28 @@ struct BudgetPick {
     std::vector<std::string> lines;  // what tradeoff prints, each starting "pick:"
 };
 
+// What a budget bounds in a row: a cost with its 95% interval (hi is what
+// must be under the budget), named and in a unit for the lines ("ao", "ms").
+// The time (time_ms) by default; a counter (issue 34's --cost) gives its own,
+// exact (lo == hi == value).
+struct BudgetCost {
+    std::string name, unit;  // "ao time", "ms"
+    bool exact = false;      // no interval: the value itself is held against the budget
+    std::function<void(const TradeoffRow&, double& value, double& lo, double& hi)> of;
+};
+
 class BudgetPicker {
 public:
-    // Throws dw::Error ("--budget-ms: ...", one line) unless ms is a finite number above 0.
-    static void check(double ms);
-    // The pick among the rows of `camera` ("all" for several cameras); sets
-    // those rows' pick (pick | tied | fits | over). Throws Error when the
-    // table has no such rows.
+    // Throws dw::Error ("<flag>: ...", one line) unless the budget is a finite number above 0.
+    static void check(double budget, const std::string& flag = "--budget-ms");
+    // The pick among the rows of `camera` ("all" for several cameras) by
+    // the table's time (time_ms); sets those rows' pick (pick | tied | fits |
+    // over). Throws Error when the table has no such rows.
     static BudgetPick pick(TradeoffTable& table, double budgetMs, const std::string& camera);
+    // The same over any cost of a row.
+    static BudgetPick pick(TradeoffTable& table, double budget, const std::string& camera, const BudgetCost& cost);
+    // The table's time as a BudgetCost (time_ms and its interval, in ms).
+    static BudgetCost timeCost(const TradeoffTable& table);
     // The camera whose rows a summary shows: "all" when the table has such rows, else the first row's.
     static std::string shownCamera(const TradeoffTable& table);
 };

@@ -211,7 +211,20 @@ TEST(BudgetPick, NoneFitsSaysTheCheapestWithItsInterval) {
     EXPECT_EQ(p.cheapest, 0);
     ASSERT_EQ(p.lines.size(), 1u);
     EXPECT_NE(p.lines[0].find("none fits the budget of 1.1 ms"), std::string::npos) << p.lines[0];
-    EXPECT_NE(p.lines[0].find("ao 1 ms [0.8, 1.2]"), std::string::npos) << p.lines[0];
+    EXPECT_NE(p.lines[0].find("ao time 1 ms [0.8, 1.2]"), std::string::npos) << p.lines[0];
+}
+
+TEST(BudgetPick, AnyCostOfARowCanBeTheBudgetsUnit) {
+    // A counter as the cost (issue 34's --cost): exact, held against the budget as it is.
+    TradeoffTable t = budgetTable();
+    const BudgetCost fragments{"fragments", "fragments", true, [](const TradeoffRow& r, double& v, double& lo, double& hi) {
+                                   v = lo = hi = 1000.0 * (r.point + 1);
+                               }};
+    const BudgetPick p = BudgetPicker::pick(t, 2500.0, "0", fragments);
+    EXPECT_EQ(p.point, 1);  // 1000 and 2000 fit; 2000's error is the lower
+    EXPECT_NE(p.lines[0].find("fragments 2000 fragments: the least error"), std::string::npos) << p.lines[0];
+    EXPECT_NE(p.lines[0].find("(exact)"), std::string::npos) << p.lines[0];
+    EXPECT_THROW(BudgetPicker::pick(t, 0.0, "0", fragments), Error);
 }
 
 TEST(BudgetPick, RefusesBudgetsThatAreNotMilliseconds) {
