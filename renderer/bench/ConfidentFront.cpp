@@ -66,6 +66,7 @@ void orderPairs(const std::vector<FrontEvidence>& pts, const std::vector<bool>& 
                 order[i][j] = o;
                 order[j][i] = flipped(o);
                 if (waits) pending.push_back({i, j, time, t});
+                else if (o == Order::notApart) ++(time ? d.untestedTime : d.untestedError);
             }
         }
     std::vector<double> p;
@@ -95,6 +96,15 @@ std::string percent(double alpha) {
     const double c = 100.0 * (1.0 - alpha);
     const double r = std::round(c);
     return (std::abs(c - r) < 1e-9 ? std::to_string(static_cast<int>(r)) : std::to_string(c)) + "%";
+}
+
+std::string untestedText(const FrontDecision& d) {
+    std::string s;
+    for (const auto& [axis, n] : {std::make_pair("time", d.untestedTime), std::make_pair("error", d.untestedError)})
+        if (n > 0)
+            s += "; " + std::string(axis) + " not tested for " + std::to_string(n) +
+                 " pair(s) (no resamples: fewer than 6 rounds, or a value missing), so not told apart there";
+    return s;
 }
 
 std::string ruleText(FrontRule rule, double alpha, int comparisons) {
@@ -176,7 +186,7 @@ FrontDecision decideFront(const std::vector<FrontEvidence>& pts, FrontRule rule,
             FrontTie tie{q, tiedOn(d.timeOrder[p][q]), tiedOn(d.errorOrder[p][q])};
             if (tie.time || tie.error) d.tiedWith[p].push_back(tie);
         }
-    d.rule = ruleText(rule, alpha, d.comparisons);
+    d.rule = ruleText(rule, alpha, d.comparisons) + (rule == FrontRule::pairedBootstrap ? untestedText(d) : "");
     return d;
 }
 

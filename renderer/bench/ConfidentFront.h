@@ -73,6 +73,7 @@ struct FrontDecision {
     // order[i][j] per axis: firstBetter when i is confidently better than j, secondBetter when j is.
     std::vector<std::vector<Order>> timeOrder, errorOrder;
     int comparisons = 0;  // (pair, axis) tests that entered the adjustment
+    int untestedTime = 0, untestedError = 0;  // pairs of usable points with no test on that axis (not told apart)
     std::string rule;     // how it was decided, one line ("95% familywise, Holm over 12 ...")
 
     // Whether i and j cannot be told apart on error (identical, or not decided).

@@ -26,7 +26,10 @@ std::map<int, std::vector<double>> byRound(const RowData& row, int block) {
 std::vector<double> timeDraws(const RowData& row, const EvidenceDraws& how) {
     const std::map<int, std::vector<double>> rounds = byRound(row, how.block);
     std::vector<double> draws;
-    if (rounds.empty()) return draws;
+    // Fewer rounds than an interval of a median needs (Bootstrap.h: 6): a
+    // bootstrap over so few only repeats them (3 rounds in one order would
+    // "differ" at p = 0.001), so time is not told apart.
+    if (!enoughForInterval(rounds.size())) return draws;
     // Every row resamples rounds 0 .. R-1 by the same generator: a round the
     // row lacks (none of its frames in it) is skipped, the others paired.
     const int roundCount = rounds.rbegin()->first + 1;

@@ -7,7 +7,8 @@
 //          frame was rendered in (sample k is in round k / block for every
 //          configuration). Draw b resamples the rounds with replacement,
 //          the same rounds for every row, and takes the median of the drawn
-//          rounds' frames.
+//          rounds' frames. Fewer than kMinIntervalSamples (6) rounds: no
+//          draws (the time is then never told apart).
 //   error  per camera, the metric's per-tile sums (ErrorTiles). Draw b
 //          resamples each camera's tiles with replacement, the same tiles
 //          for every row, and recomputes the metric (an "all" row: the mean

@@ -396,12 +396,19 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
 // times; the budget's pick names the points it cannot be told apart from.
 TEST(TradeoffCli, SsaoSampleCountsCannotBeToldApartInError) {
     const Result r = run("tradeoff --scene default --size 160x90 --sweep ssao.samples=4,8,16,32 --metric rms "
-                         "--buffer ao --frames 3 --warmup 1 --resamples 500 --time ao --budget-ms 1000 --quiet" +
+                         "--buffer ao --frames 6 --warmup 1 --resamples 500 --time ao --budget-ms 1000 --quiet" +
                          files("ssao-noise"));
     ASSERT_EQ(r.code, 0) << r.err << r.out;
     EXPECT_NE(r.out.find("front: error: points 0, 1, 2 and 3 cannot be told apart"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Holm's step-down over 12 comparison(s)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("front: dominated: none"), std::string::npos) << r.out;
+    // Fewer than 6 rounds: time is not tested, and the rule line says so.
+    const Result few = run("tradeoff --scene default --size 64x36 --sweep ssao.samples=4,32 --metric rms --buffer ao "
+                           "--frames 3 --warmup 0 --resamples 200 --quiet --plot none --csv " +
+                           (dir() / "few.csv").string() + " --json " + (dir() / "few.json").string());
+    ASSERT_EQ(few.code, 0) << few.err;
+    EXPECT_NE(few.out.find("time not tested for 1 pair(s) (no resamples: fewer than 6 rounds"), std::string::npos)
+        << few.out;
     const TradeoffTable t = TradeoffTable::readCsv((dir() / "ssao-noise.csv").string());
     ASSERT_EQ(t.rows.size(), 4u);
     EXPECT_EQ(t.time, "ao");

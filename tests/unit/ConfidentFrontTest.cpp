@@ -152,12 +152,19 @@ TEST(TradeoffEvidence, TimeDrawsPairRoundsAndSumTermsWithinAFrame) {
     EXPECT_THROW(TradeoffTable::timeTerms("lighting++ao"), Error);
     EXPECT_THROW(TradeoffTable::timeTerms("ao+ao"), Error);
     EXPECT_THROW(TradeoffTable::timeTerms("frame+ao"), Error);
-    // Two rows with the same frames draw the same medians (the same rounds): identical.
+    // Two frames are too few rounds to resample: no draws, so time is never told apart.
     RowData a;
     a.frames = {&sum.at(0)};
     const EvidenceDraws how{500, 1, 9};
+    EXPECT_TRUE(rowEvidence(a, how).cost.draws.empty());
+    // Six rounds: two rows with the same frames draw the same medians (the same rounds).
+    std::map<int, double> six;
+    for (int k = 0; k < 6; ++k) six[k] = 10.0 + k;
+    a.frames = {&six};
     EXPECT_EQ(rowEvidence(a, how).cost.draws, rowEvidence(a, how).cost.draws);
     EXPECT_EQ(rowEvidence(a, how).cost.draws.size(), 500u);
+    // With --block 2 the six frames are three rounds: too few again.
+    EXPECT_TRUE(rowEvidence(a, EvidenceDraws{500, 2, 9}).cost.draws.empty());
 }
 
 namespace {
