@@ -20,6 +20,7 @@
 #include "headless/PlotScript.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchGrid.h"
+#include "renderer/bench/BudgetPick.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/bench/TradeoffShards.h"
 #include "renderer/study/TradeoffStudy.h"
@@ -55,12 +56,12 @@ std::string tradeoffUsage() {
            "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
            "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
-           "                                   [--mask shadow_edges] [--time frame|PASS]\n"
+           "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--budget-ms X]\n"
            "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
            "                                   [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
            "                                   [--quiet]\n"
            "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
-           "                                   [--time frame|PASS]\n"
+           "                                   [--time frame|PASS[+PASS...]]\n"
            "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
            "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
            "               about the current settings (docs/tradeoffs.md says which values)\n"
@@ -74,7 +75,10 @@ std::string tradeoffUsage() {
            "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
            "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
            "               since on llvmpipe the frame time drowns a small pass's; with shadows.reuse_map on\n"
-           "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them\n"
+           "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them;\n"
+           "               a sum of passes (lighting+ao+ao_filter) ranks by the median of each frame's sum\n"
+           "  --budget-ms  prints pick: the least-error point whose --time's 95% interval ends under X ms,\n"
+           "               and the points that fit but cannot be told apart from it in error\n"
            "  --size       the render size (default 640x360)\n" +
            SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff) + CommandLine::rangesHelp("tradeoff") +
            CommandLine::rangesHelp("tradeoff merge");
@@ -110,6 +114,35 @@ std::string reusedMaps(const TradeoffTable& t, const TradeoffRow& r, const std::
     return "";
 }
 
+// The front column: **front** (pareto), indistinguishable, or "dominated by 0, 2".
+std::string frontCell(const TradeoffRow& r) {
+    if (r.front == "pareto" || (r.front.empty() && r.pareto)) return "**front**";
+    if (r.front != "dominated") return r.front;
+    std::string by;
+    for (int p : r.dominatedBy) by += (by.empty() ? "" : ", ") + std::to_string(p);
+    return "dominated by " + by;
+}
+
+// "1 (error), 3 (both)".
+std::string tiesCell(const TradeoffRow& r) {
+    std::string s;
+    for (const auto& [p, axes] : r.tiedWith) s += (s.empty() ? "" : ", ") + std::to_string(p) + " (" + axes + ")";
+    return s;
+}
+
+// After the table: how the front was decided, what cannot be told apart, and the pick.
+std::string frontLines(const TradeoffTable& t, const BudgetPick* pick) {
+    if (t.rows.empty()) return "";
+    const std::string camera = BudgetPicker::shownCamera(t);
+    std::string out;
+    const auto rule = t.frontRules.find(camera);
+    if (rule != t.frontRules.end()) out += "front: " + rule->second + "\n";
+    for (const auto& l : t.frontSummary(camera)) out += "front: " + l + "\n";
+    if (pick)
+        for (const auto& l : pick->lines) out += l + "\n";
+    return out.empty() ? "" : out + "\n";
+}
+
 std::string markdown(const TradeoffTable& t, const std::string& time = "frame") {
     const std::vector<const TradeoffRow*> rows = shownRows(t);
     const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
@@ -123,8 +156,12 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
     const std::string metric = t.rows.empty() ? "error" : t.rows.front().metric + " (" + t.rows.front().buffer + ")";
     for (const std::string& h : std::vector<std::string>{metric, "95% CI", "GPU ms median", "95% CI"})
         header.push_back(h);
-    if (time != "frame") header.push_back(time + " GPU ms median");
+    if (time != "frame") {
+        header.push_back(time + " GPU ms median");
+        header.emplace_back("95% CI");
+    }
     header.emplace_back(time == "frame" ? "Pareto" : "Pareto (" + time + " ms)");
+    header.emplace_back("tied with");
     auto line = [](const std::vector<std::string>& cells) {
         std::string s = "|";
         for (const auto& c : cells) s += " " + c + " |";
@@ -132,7 +169,8 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
     };
     out += line(header);
     std::string rule = "|";
-    for (size_t i = 0; i < header.size(); ++i) rule += i <= t.axes.size() + (cameraColumn ? 1 : 0) ? " --- |" : " ---: |";
+    for (size_t i = 0; i < header.size(); ++i)
+        rule += i <= t.axes.size() + (cameraColumn ? 1 : 0) || i + 2 >= header.size() ? " --- |" : " ---: |";
     out += rule + "\n";
     for (const TradeoffRow* r : rows) {
         std::vector<std::string> cells = {std::to_string(r->point)};
@@ -142,8 +180,12 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
         cells.push_back("[" + number(r->errorLo, "%.4g") + ", " + number(r->errorHi, "%.4g") + "]");
         cells.push_back(number(r->frameGpuMs, "%.3f"));
         cells.push_back("[" + number(r->frameGpuMsLo, "%.3f") + ", " + number(r->frameGpuMsHi, "%.3f") + "]");
-        if (time != "frame") cells.push_back(number(t.passGpuMs(*r, time), "%.3f") + reusedMaps(t, *r, time));
-        cells.emplace_back(r->pareto ? "**front**" : "");
+        if (time != "frame") {
+            cells.push_back(number(t.timeOf(*r, time), "%.3f") + reusedMaps(t, *r, time));
+            cells.push_back(time == t.time ? "[" + number(r->timeMsLo, "%.3f") + ", " + number(r->timeMsHi, "%.3f") + "]" : "-");
+        }
+        cells.push_back(frontCell(*r));
+        cells.push_back(tiesCell(*r));
         out += line(cells);
     }
     return out;
@@ -159,8 +201,13 @@ std::string what(const TradeoffTable& t, const std::string& against, const std::
            (several ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
                     : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
            "; GPU ms: the median frame time over the counted frames, 95% bootstrap interval of the median; "
-           "front: on the Pareto front of " + (time == "frame" ? std::string("frame") : "the " + time + " pass's median") +
-           " GPU ms against error (no other point is as fast and as accurate)" +
+           "Pareto: **front** on the front of the medians of " +
+           (time == "frame" ? std::string("frame") : time == t.time && time.find('+') != std::string::npos
+                                                        ? "the per-frame sum " + time
+                                                        : "the " + time + " pass's") +
+           " GPU ms against the errors (no other point is as fast and as accurate); indistinguishable: off it, but no "
+           "front point beats it on both axes with confidence; dominated by: the front points that do; tied with: the "
+           "other points it cannot be told apart from on that axis" +
            (!t.rows.empty() && t.rows.front().buffer.find(":shadow_edges") != std::string::npos
                 ? "; the error only over the pixels within 2 px of an edge of the reference's shadow buffer"
                 : "") +
@@ -264,8 +311,9 @@ int runMerge(int argc, char** argv) {
     const TradeoffTable all = TradeoffTable::merge(parts, inputs, time);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
-    std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n", all.rows.size(), inputs.size(),
-                what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str());
+    std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n%s", all.rows.size(), inputs.size(),
+                what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str(),
+                frontLines(all, nullptr).c_str());
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
@@ -302,6 +350,7 @@ int runTradeoffCommand(int argc, char** argv) {
     s.buffer = cl.value("--buffer").value_or("final");
     s.mask = cl.value("--mask").value_or("");
     s.time = cl.value("--time").value_or("frame");
+    s.budgetMs = cl.real("--budget-ms");
     s.aoRays = cl.whole("--ao-rays", 64);
     s.orbit = so.orbit;
     s.walkthrough = so.walkthrough;
@@ -344,10 +393,11 @@ int runTradeoffCommand(int argc, char** argv) {
 
     const TradeoffTable& t = result.table;
     const std::string againstText = o.against.empty() ? "the CPU reference" : against;
-    std::printf("## tradeoff: %s, %zu point(s) x %zu camera(s), %s of %s (%s) against %s\n\n%s\n%s\n",
+    std::printf("## tradeoff: %s, %zu point(s) x %zu camera(s), %s of %s (%s) against %s\n\n%s\n%s\n%s",
                 runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
                 o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
-                what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str());
+                what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str(),
+                frontLines(t, o.budgetMs > 0.0 ? &result.pick : nullptr).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
     writeBenchFile(json, record.json(json), "tradeoff record");

@@ -18,6 +18,7 @@
 #include "python/ValueErrors.h"
 #include "python/Records.h"
 #include "renderer/OptionLimits.h"
+#include "renderer/bench/BudgetPick.h"
 #include "renderer/study/TradeoffStudy.h"
 
 namespace py = pybind11;
@@ -35,6 +36,7 @@ struct TradeoffFiles {
 struct TradeoffOutcome {
     ExperimentRecord record;
     TradeoffTable table;
+    BudgetPick pick;
     bool plotDrawn = true;
 };
 
@@ -55,7 +57,9 @@ std::vector<std::string> textList(const std::string& what, const py::handle& val
 // The table's rows as tradeoff --csv writes them: one dict a row, its keys
 // the CSV's columns in order (point, each axis, camera, metric, buffer,
 // error, error_lo, error_hi, frames, frame_gpu_ms, frame_gpu_ms_lo,
-// frame_gpu_ms_hi, gpu_ms.<pass>..., pareto); NaN where the CSV is empty.
+// frame_gpu_ms_hi, gpu_ms.<pass>..., pareto, time, time_ms, time_ms_lo,
+// time_ms_hi, front, dominated_by (a list of points), tied_with (a list of
+// (point, "time"|"error"|"both")), pick); NaN where the CSV is empty.
 py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
     py::list rows;
     for (const TradeoffRow& r : t.rows) {
@@ -75,9 +79,37 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
         d["frame_gpu_ms_hi"] = r.frameGpuMsHi;
         for (size_t p = 0; p < t.passes.size(); ++p) d[py::str("gpu_ms." + t.passes[p])] = r.passGpuMs[p];
         d["pareto"] = r.pareto;
+        d["time"] = t.time;
+        d["time_ms"] = r.timeMs;
+        d["time_ms_lo"] = r.timeMsLo;
+        d["time_ms_hi"] = r.timeMsHi;
+        d["front"] = r.front;
+        d["dominated_by"] = r.dominatedBy;
+        py::list ties;
+        for (const auto& [point, axes] : r.tiedWith) ties.append(py::make_tuple(point, axes));
+        d["tied_with"] = ties;
+        d["pick"] = r.pick;
         rows.append(d);
     }
     return rows;
+}
+
+// The budget's pick: {budget_ms, point (None when none fits), row (its row),
+// tied (points that fit and cannot be told apart from it in error), fitting,
+// cheapest (with none fitting), lines (what the CLI prints)}.
+py::dict pickObject(const TradeoffTable& t, const BudgetPick& pick) {
+    py::dict d;
+    d["budget_ms"] = pick.budgetMs;
+    d["point"] = pick.point >= 0 ? py::object(py::int_(pick.point)) : py::object(py::none());
+    d["tied"] = pick.tied;
+    d["fitting"] = pick.fitting;
+    d["cheapest"] = pick.cheapest >= 0 ? py::object(py::int_(pick.cheapest)) : py::object(py::none());
+    d["lines"] = pick.lines;
+    py::object row = py::none();
+    for (const py::handle r : tradeoffRows(t, false))
+        if (py::cast<std::string>(r["pick"]) == "pick") row = py::reinterpret_borrow<py::object>(r);
+    d["row"] = row;
+    return d;
 }
 
 // The files, checked before anything is measured (as the CLI's are):
@@ -189,6 +221,7 @@ TradeoffOutcome measure(const TradeoffStudyOptions& s, const TradeoffStudyProgre
     if (progress.cancelled()) throw TradeoffCancelled();  // asked to stop after the last line: nothing written
     TradeoffOutcome out;
     out.table = measured.result.table;
+    out.pick = measured.result.pick;
     out.record = TradeoffStudy::record(s, o, *runner, std::move(measured), "deferred_workbench.tradeoff (Python)");
     if (f.csv) out.table.writeCsv(*f.csv);
     if (f.json) writeBenchFile(*f.json, out.record.json(*f.json), "tradeoff record");
@@ -220,6 +253,10 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     py::dict d = recordObject(outcome.record);
     d["rows"] = tradeoffRows(outcome.table, false);
     d["front"] = tradeoffRows(outcome.table, true);
+    d["front_rule"] = outcome.table.frontRules.count(BudgetPicker::shownCamera(outcome.table))
+                          ? outcome.table.frontRules.at(BudgetPicker::shownCamera(outcome.table))
+                          : std::string();
+    if (s.budgetMs) d["pick"] = pickObject(outcome.table, outcome.pick);
     return d;
 }
 
@@ -227,6 +264,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
                   py::object exclude, const std::string& against, const std::string& metric, const std::string& buffer,
                   const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
+                  std::optional<double> budgetMs,
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
@@ -243,6 +281,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.aoRays = intArg(aoRays, "tradeoff: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
     s.mask = mask.value_or("");
     s.time = time;
+    s.budgetMs = budgetMs;
     s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
     s.walkthrough = walkthrough;
     s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");
@@ -262,7 +301,8 @@ void bindTradeoff(py::module_& m) {
           py::arg("preset") = py::none(), py::arg("settings") = py::none(), py::arg("sweep") = py::none(),
           py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("exclude") = py::none(),
           py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
-          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("orbit") = 0,
+          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame",
+          py::arg("budget_ms") = py::none(), py::arg("orbit") = 0,
           py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
           py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
@@ -271,10 +311,14 @@ void bindTradeoff(py::module_& m) {
           "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
           "presets=[...] (an axis), knobs=\"speed/quality\", exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
-          "time, orbit, walkthrough, frames, warmup, block, resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
+          "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), budget_ms, orbit, walkthrough, frames, warmup,\n"
+          "block, resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
           "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
           "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
-          "its interval, gpu_ms.<pass>, pareto; NaN where the CSV is empty) and front (the rows on the Pareto front).\n"
+          "its interval, gpu_ms.<pass>, pareto, time, time_ms and its interval, front (pareto|indistinguishable|\n"
+          "dominated), dominated_by, tied_with [(point, axes)], pick; NaN where the CSV is empty), front (the rows on\n"
+          "the Pareto front of the point estimates) and front_rule (how dominance was decided); with budget_ms, pick\n"
+          "(point, row, tied, fitting, cheapest, lines: the least-error point whose time's 95% interval ends under it).\n"
           "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
           "those asked for.\n"
           "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"

@@ -9,6 +9,7 @@
 
 #include "renderer/Error.h"
 #include "renderer/ao/AovCostEstimate.h"
+#include "renderer/bench/BudgetPick.h"
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
 #include "ui/Widgets.h"
@@ -31,6 +32,9 @@ std::string label(const TradeoffTable& t, const TradeoffRow& r) {
     return s.empty() ? "point " + std::to_string(r.point) : s;
 }
 
+// The time across the plot: the table's time_ms (frame, a pass or a sum).
+double timeOf(const TradeoffRow& r) { return r.timeMs; }
+
 }  // namespace
 
 bool ParetoPanel::load(const std::string& file) {
@@ -38,6 +42,7 @@ bool ParetoPanel::load(const std::string& file) {
         TradeoffTable t = TradeoffTable::readCsv(file);
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
+        pickedFor.clear();
         loadedPath = file;
         tableBaseline.clear();
         group = 0;
@@ -252,8 +257,30 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
         wrappedColored(self ? kErrorColor : kDimColor, metric + " against " + tableBaseline);
         noteItem("pareto.baseline");
     }
+    budgetControls(gs[static_cast<size_t>(group)]);
     plot(rows, metric, state, session);
     ImGui::End();
+}
+
+// The budget field and what it picks among the group's points (BudgetPicker).
+void ParetoPanel::budgetControls(const std::string& groupName) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    ImGui::InputDouble("budget ms", &budgetMs, 0.0, 0.0, "%.3f");
+    noteItem("pareto.budget");
+    const std::string key = groupName + "@" + std::to_string(budgetMs);
+    if (key != pickedFor) {
+        pickedFor = key;
+        pickLines.clear();
+        for (auto& r : table.rows) r.pick.clear();
+        const std::string camera = groupName.substr(0, groupName.find(" | "));
+        try {
+            if (budgetMs != 0.0) pickLines = BudgetPicker::pick(table, budgetMs, camera).lines;
+        } catch (const Error& e) {
+            pickLines = {e.what()};
+        }
+    }
+    for (const auto& l : pickLines) wrappedColored(l.rfind("pick: ", 0) == 0 ? kOkColor : kErrorColor, l);
+    if (!pickLines.empty()) noteItem("pareto.pick");
 }
 
 // The speed/quality knob last pointed at in the Parameters panel (its rows are noted as knob.<name>).
@@ -382,6 +409,7 @@ void ParetoPanel::askForReference(UiState& state, RenderSession& session) {
 void ParetoPanel::showFinishedSweep(UiState& state) {
     if (sweepShown || !state.sweep.done()) return;
     table = state.sweep.table();
+    pickedFor.clear();
     loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
     tableBaseline = state.sweep.baselineName();
     group = 0;
@@ -434,10 +462,10 @@ std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::strin
     double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
     for (size_t i = 0; i < table.rows.size(); ++i) {
         const TradeoffRow& r = table.rows[i];
-        if (groupOf(r) != groupName || !finite(r.frameGpuMs) || !finite(r.error)) continue;
+        if (groupOf(r) != groupName || !finite(timeOf(r)) || !finite(r.error)) continue;
         rows.push_back(static_cast<int>(i));
         metric = r.metric;
-        for (double x : {r.frameGpuMs, r.frameGpuMsLo, r.frameGpuMsHi})
+        for (double x : {r.timeMs, r.timeMsLo, r.timeMsHi})
             if (finite(x)) xlo = std::min(xlo, x), xhi = std::max(xhi, x);
         for (double y : {r.error, r.errorLo, r.errorHi})
             if (finite(y)) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
@@ -464,10 +492,11 @@ void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, 
         // A narrow panel has no room for the axes' names under the plot: a line above it says them.
         char lo[96], whole[160];
         std::snprintf(lo, sizeof(lo), "%.3g ms", plotAxes.xlo);
-        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU frame (median) against %s", plotAxes.xhi, metric.c_str());
+        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU %s (median) against %s", plotAxes.xhi, table.time.c_str(),
+                      metric.c_str());
         const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
         if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
-            wrappedColored(kDimColor, "across: GPU frame ms (median); up: " + metric);
+            wrappedColored(kDimColor, "across: GPU " + table.time + " ms (median); up: " + metric);
         }
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -486,11 +515,9 @@ void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, 
     plotPoints(f, rows, plotHovered);
     if (hovered >= 0) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
-        ImGui::GetWindowDrawList()->AddCircle(ImVec2(f.sx(r.frameGpuMs), f.sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16,
+        ImGui::GetWindowDrawList()->AddCircle(ImVec2(f.sx(timeOf(r)), f.sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16,
                                               1.5f);
-        tooltip("%s\n%s %.4g [%.4g, %.4g]\nGPU %.3f ms [%.3f, %.3f]%s\nclick: apply these settings",
-                          label(table, r).c_str(), r.metric.c_str(), r.error, r.errorLo, r.errorHi, r.frameGpuMs,
-                          r.frameGpuMsLo, r.frameGpuMsHi, r.pareto ? "\non the Pareto front" : "");
+        tooltip("%s", hoverText(r).c_str());
         if (clicked) apply(hovered, state, session);
     }
 }
@@ -510,7 +537,7 @@ void ParetoPanel::plotAxesDrawn(const PlotFrame& f, float textX, const std::stri
     dl->AddText(ImVec2(f.left, f.bottom + 4), IM_COL32(170, 170, 170, 255), t);
     const float loWidth = ImGui::CalcTextSize(t).x;
     // The axes' names after the upper end where they fit, else the end alone (the caption line above says them).
-    std::snprintf(t, sizeof(t), "%.3g ms   GPU frame (median) against %s", f.axes.xhi, metric.c_str());
+    std::snprintf(t, sizeof(t), "%.3g ms   GPU %s (median) against %s", f.axes.xhi, table.time.c_str(), metric.c_str());
     if (ImGui::CalcTextSize(t).x > f.right - f.left - loWidth - 8.0f) std::snprintf(t, sizeof(t), "%.3g ms", f.axes.xhi);
     dl->AddText(ImVec2(std::max(f.left + loWidth + 8.0f, f.right - ImGui::CalcTextSize(t).x), f.bottom + 4),
                 IM_COL32(170, 170, 170, 255), t);
@@ -523,13 +550,50 @@ void ParetoPanel::plotFront(const PlotFrame& f, const std::vector<int>& rows) {
     for (int i : rows)
         if (table.rows[static_cast<size_t>(i)].pareto) front.push_back(i);
     std::sort(front.begin(), front.end(), [&](int a, int b) {
-        return table.rows[static_cast<size_t>(a)].frameGpuMs < table.rows[static_cast<size_t>(b)].frameGpuMs;
+        return timeOf(table.rows[static_cast<size_t>(a)]) < timeOf(table.rows[static_cast<size_t>(b)]);
     });
     for (size_t k = 1; k < front.size(); ++k) {
         const TradeoffRow &a = table.rows[static_cast<size_t>(front[k - 1])], &b = table.rows[static_cast<size_t>(front[k])];
-        dl->AddLine(ImVec2(f.sx(a.frameGpuMs), f.sy(a.error)), ImVec2(f.sx(b.frameGpuMs), f.sy(b.error)),
+        dl->AddLine(ImVec2(f.sx(timeOf(a)), f.sy(a.error)), ImVec2(f.sx(timeOf(b)), f.sy(b.error)),
                     IM_COL32(255, 170, 60, 160), 1.5f);
     }
+}
+
+namespace {
+
+// A point by its front class: pareto and told apart filled, pareto but tied a
+// ring, indistinguishable a hollow square, dominated small; the pick ringed green.
+void drawMarker(ImDrawList* dl, ImVec2 p, const TradeoffRow& r) {
+    const ImU32 front = IM_COL32(255, 170, 60, 255), other = IM_COL32(110, 160, 230, 255);
+    if (r.pareto && r.tiedWith.empty()) dl->AddCircleFilled(p, 5.0f, front);
+    else if (r.pareto) dl->AddCircle(p, 5.0f, front, 16, 2.0f);
+    else if (r.front == "indistinguishable") dl->AddRect(ImVec2(p.x - 4, p.y - 4), ImVec2(p.x + 4, p.y + 4), IM_COL32(240, 210, 90, 255), 0.0f, 0, 1.5f);
+    else dl->AddCircleFilled(p, 3.0f, other);
+    if (r.pick == "pick") dl->AddCircle(p, 10.0f, IM_COL32(90, 220, 110, 255), 20, 2.5f);
+    else if (r.pick == "tied") dl->AddCircle(p, 10.0f, IM_COL32(90, 220, 110, 140), 20, 1.0f);
+}
+
+}  // namespace
+
+// What the tooltip says of a point: its settings, both numbers with their
+// intervals, its front class with dominated_by and tied_with, its pick.
+std::string ParetoPanel::hoverText(const TradeoffRow& r) const {
+    char numbers[256];
+    std::snprintf(numbers, sizeof(numbers), "\n%s %.4g [%.4g, %.4g]\nGPU %s %.3f ms [%.3f, %.3f]", r.metric.c_str(), r.error,
+                  r.errorLo, r.errorHi, table.time.c_str(), r.timeMs, r.timeMsLo, r.timeMsHi);
+    std::string s = label(table, r) + numbers;
+    if (r.front == "pareto" || (r.front.empty() && r.pareto)) s += "\non the Pareto front";
+    else if (r.front == "indistinguishable") s += "\nindistinguishable: off the front, not confidently dominated";
+    else if (r.front == "dominated") {
+        s += "\ndominated (confidently) by";
+        for (int q : r.dominatedBy) s += " " + std::to_string(q);
+    }
+    if (!r.tiedWith.empty()) {
+        s += "\ncannot be told apart from:";
+        for (const auto& [q, axes] : r.tiedWith) s += " " + std::to_string(q) + " (" + axes + ")";
+    }
+    if (!r.pick.empty()) s += "\nbudget: " + r.pick;
+    return s + "\nclick: apply these settings";
 }
 
 // Points with both intervals, the front's labelled where a label has room;
@@ -555,12 +619,11 @@ void ParetoPanel::plotPoints(const PlotFrame& f, const std::vector<int>& rows, b
     };
     for (int i : rows) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(i)];
-        const ImVec2 p(f.sx(r.frameGpuMs), f.sy(r.error));
+        const ImVec2 p(f.sx(timeOf(r)), f.sy(r.error));
         const ImU32 bar = IM_COL32(150, 150, 160, 200);
-        if (finite(r.frameGpuMsLo) && finite(r.frameGpuMsHi))
-            dl->AddLine(ImVec2(f.sx(r.frameGpuMsLo), p.y), ImVec2(f.sx(r.frameGpuMsHi), p.y), bar);
+        if (finite(r.timeMsLo) && finite(r.timeMsHi)) dl->AddLine(ImVec2(f.sx(r.timeMsLo), p.y), ImVec2(f.sx(r.timeMsHi), p.y), bar);
         if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, f.sy(r.errorLo)), ImVec2(p.x, f.sy(r.errorHi)), bar);
-        dl->AddCircleFilled(p, r.pareto ? 5.0f : 3.5f, r.pareto ? IM_COL32(255, 170, 60, 255) : IM_COL32(110, 160, 230, 255));
+        drawMarker(dl, p, r);
         if (r.pareto) drawLabel(p, label(table, r));
         const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
         if (plotHovered && d2 < best) best = d2, hovered = i;

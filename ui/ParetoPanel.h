@@ -13,6 +13,13 @@
 // trace it first (as F9 does) or, as an explicit choice the plot then names,
 // to measure against the current image (ParetoPanel::startSweep). The plot's
 // axes are clamped to the data's sign: no negative time or error range.
+// Across: the table's time (time_ms: the frame, a pass or a sum of passes, as
+// tradeoff --time ranked it). The points are drawn by the CSV's `front`:
+// on the front and told apart (filled), on the front but tied with another
+// point (a ring), indistinguishable (a hollow square), dominated (small); the
+// tooltip names dominated_by and tied_with. A budget (ms, above 0) marks the
+// pick among the group's points (BudgetPicker: the least error whose time's
+// 95% interval ends under it) with a green ring, and says the picker's lines.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -58,6 +65,10 @@ struct ParetoPanel {
     // sweep's baseline; empty for a loaded CSV).
     std::string tableBaseline;
     AttributionView attribution;  // "Where the error comes from"
+    // The budget field: 0 none; the pick's lines (or why none) for the group on show.
+    double budgetMs = 0.0;
+    std::vector<std::string> pickLines;
+    std::string pickedFor;  // the group and budget pickLines are for (recomputed when either changes)
     // The plot's ranges as last drawn: GPU ms across, error up (after padding
     // and clamping: never below 0 when the data are not).
     struct Axes {
@@ -121,6 +132,8 @@ private:
     void plotAxesDrawn(const PlotFrame& f, float textX, const std::string& metric);
     void plotFront(const PlotFrame& f, const std::vector<int>& rows);
     void plotPoints(const PlotFrame& f, const std::vector<int>& rows, bool plotHovered);
+    void budgetControls(const std::string& groupName);
+    std::string hoverText(const TradeoffRow& r) const;
 };
 
 }  // namespace dw::ui

@@ -35,6 +35,15 @@ void tileSums(int width, int height, F perPixel, std::vector<double>& sums, std:
 
 }  // namespace
 
+double ErrorTiles::valueOf(double sum, double count) const {
+    if (!(count > 0.0)) return kNaN;
+    const double mean = sum / count;
+    if (metric == "rms") return std::sqrt(mean);
+    if (metric == "psnr") return mean > 0.0 ? 10.0 * std::log10(peak2 / mean) : std::numeric_limits<double>::infinity();
+    if (metric == "ssim") return mean + shift;
+    return mean;
+}
+
 const std::vector<std::string>& ImageError::metrics() {
     static const std::vector<std::string> names = {"flip", "rms", "psnr", "ssim"};
     return names;
@@ -80,7 +89,9 @@ ErrorEstimate ImageError::measure(const FloatImage& reference, const FloatImage&
             auto psnr = [&](double m) { return m > 0.0 ? 10.0 * std::log10(peak2 / m) : std::numeric_limits<double>::infinity(); };
             e.low = mse.valid() && rms > 0.0 ? psnr(mse.high) : e.value;  // the larger MSE, the lower PSNR
             e.high = mse.valid() && rms > 0.0 ? psnr(mse.low) : e.value;
+            e.tiles.peak2 = peak2;
         }
+        e.tiles = {metric, std::move(sums), std::move(counts), e.tiles.peak2, 0.0};
         return e;
     }
     if (metric == "flip") {
@@ -90,6 +101,7 @@ ErrorEstimate ImageError::measure(const FloatImage& reference, const FloatImage&
         const Interval i = bootstrapGroupMean(sums, counts, resamples, seed);
         e.low = i.valid() ? i.low : kNaN;
         e.high = i.valid() ? i.high : kNaN;
+        e.tiles = {metric, std::move(sums), std::move(counts), 1.0, 0.0};
         return e;
     }
     // ssim
@@ -111,6 +123,7 @@ ErrorEstimate ImageError::measure(const FloatImage& reference, const FloatImage&
     const double shift = n > 0.0 ? e.value - all / n : 0.0;
     e.low = i.valid() ? i.low + shift : kNaN;
     e.high = i.valid() ? i.high + shift : kNaN;
+    e.tiles = {metric, std::move(sums), std::move(counts), 1.0, shift};
     return e;
 }
 

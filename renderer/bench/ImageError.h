@@ -22,8 +22,22 @@
 
 namespace dw {
 
+// The per-tile sums behind an estimate, kept so that two estimates can be
+// compared on the same resampled tiles (ConfidentFront's paired bootstrap):
+// tile t holds sums[t] (the summed per-pixel quantity) over counts[t] pixels,
+// and valueOf(S, N) is the metric of tiles whose sums add up to S over N
+// pixels: rms sqrt(S/N), psnr 10 log10(peak2 / (S/N)), flip S/N, ssim S/N +
+// shift (the map's mean moved to the reported mean). Empty: none kept.
+struct ErrorTiles {
+    std::string metric;
+    std::vector<double> sums, counts;
+    double peak2 = 1.0, shift = 0.0;
+    double valueOf(double sum, double count) const;
+};
+
 struct ErrorEstimate {
     double value = 0.0, low = 0.0, high = 0.0;  // NaN: not measured
+    ErrorTiles tiles;                           // measure()'s; none from meanOver()
 };
 
 class ImageError {

@@ -13,8 +13,10 @@
 #include "renderer/RenderSession.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/metrics/Bootstrap.h"
+#include "renderer/bench/BudgetPick.h"
 #include "renderer/bench/ConfigurationRunner.h"
 #include "renderer/bench/ImageError.h"
+#include "renderer/bench/TradeoffEvidence.h"
 #include "renderer/metrics/ShadowEdgeMask.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/knobs/KnobAssignment.h"
@@ -88,6 +90,8 @@ void TradeoffRunner::checkOptions() const {
     if (!o_.mask.empty() && o_.mask != "shadow_edges")
         throw Error("--mask: expected shadow_edges, got '" + o_.mask + "'");
     if (o_.time.empty()) throw Error("--time: expected frame or a pass's name");
+    TradeoffTable::timeTerms(o_.time);  // an empty term, a term twice, frame in a sum
+    if (o_.budgetMs != 0.0) BudgetPicker::check(o_.budgetMs);
     const auto& metrics = ImageError::metrics();
     if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
         throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
@@ -252,14 +256,16 @@ void TradeoffRunner::warn(const std::string& line) const {
 // ran is checkTimedPass's, after them.
 void TradeoffRunner::checkTimedPassName(RenderSession& session) const {
     if (o_.time == "frame") return;
-    // A pass, or a span inside one ("lighting/shadow maps": PASS/NAME).
-    const std::string pass = o_.time.substr(0, o_.time.find('/'));
+    // Each term: a pass, or a span inside one ("lighting/shadow maps": PASS/NAME).
     std::string list;
-    for (const PassInfo& p : session.pipeline().passList()) {
-        if (p.name == pass) return;
-        list += (list.empty() ? "" : ",") + p.name;
+    for (const PassInfo& p : session.pipeline().passList()) list += (list.empty() ? "" : ",") + p.name;
+    for (const std::string& term : TradeoffTable::timeTerms(o_.time)) {
+        const std::string pass = term.substr(0, term.find('/'));
+        const auto& passes = session.pipeline().passList();
+        if (std::none_of(passes.begin(), passes.end(), [&](const PassInfo& p) { return p.name == pass; }))
+            throw Error("--time " + o_.time + ": the pipeline has no pass " + (term == o_.time ? "of that name" : "'" + term + "'") +
+                        " (expected frame or one of: " + list + ", or a sum of them: a+b)");
     }
-    throw Error("--time " + o_.time + ": the pipeline has no pass of that name (expected frame or one of: " + list + ")");
 }
 
 void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
@@ -269,11 +275,12 @@ void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
         if (tabledSeries(s.series) && s.series != PassTimer::kFrameSeries &&
             std::find(timed.begin(), timed.end(), s.series) == timed.end())
             timed.push_back(s.series);
-    if (std::find(timed.begin(), timed.end(), o_.time) != timed.end()) return;
     std::string list;
     for (const auto& n : timed) list += (list.empty() ? "" : ",") + n;
-    throw Error("--time " + o_.time + ": no pass of that name was timed (expected frame or one of: " +
-                (list.empty() ? std::string("none") : list) + ")");
+    for (const std::string& term : TradeoffTable::timeTerms(o_.time))
+        if (std::find(timed.begin(), timed.end(), term) == timed.end())
+            throw Error("--time " + o_.time + ": no pass " + (term == o_.time ? "of that name" : "'" + term + "'") +
+                        " was timed (expected frame or one of: " + (list.empty() ? std::string("none") : list) + ")");
 }
 
 // The buffer a tradeoff measures, as the session holds it: raw floats (HDR) or display values; AO's first channel.
@@ -368,6 +375,21 @@ void fillTimes(TradeoffRow& row, const std::vector<std::string>& passes,
     }
 }
 
+// The time the front ranks by (--time: frame, a pass or a sum), its median
+// and interval from the row's per-frame values (a sum: per-frame sums).
+void fillRankedTime(TradeoffRow& row, const RowData& data, int resamples, std::uint64_t seed) {
+    std::vector<double> v;
+    for (const auto* frames : data.frames)
+        if (frames)
+            for (const auto& [sample, ms] : *frames) v.push_back(ms);
+    row.timeMs = row.timeMsLo = row.timeMsHi = kNaN;
+    if (v.empty()) return;
+    const MedianInterval i = bootstrapMedian(v, resamples, seed);
+    row.timeMs = i.median;
+    row.timeMsLo = i.low;
+    row.timeMsHi = i.high;
+}
+
 }  // namespace
 
 // Stage 4: the table, per (point, camera), then per point over every camera,
@@ -385,6 +407,9 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
         ms[s.config][s.series].push_back(s.gpuMs);
     }
     const std::string bufferColumn = o_.buffer + (o_.mask.empty() ? "" : ":" + o_.mask);
+    t.time = o_.time;
+    const FrameTimes ranked = frameTimes(timings.samples, TradeoffTable::timeTerms(o_.time));
+    std::vector<RowData> data;  // per row: what its front evidence is drawn from
     auto newRow = [&](size_t p, const std::string& camera, const ErrorEstimate& e) {
         TradeoffRow row;
         row.point = points_[p].index;
@@ -395,7 +420,18 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
         row.error = e.value;
         row.errorLo = e.low;
         row.errorHi = e.high;
+        RowData d;
+        d.lowerIsBetter = TradeoffTable::lowerIsBetter(o_.metric);
+        d.error = e.value;
+        d.tiles.assign(static_cast<size_t>(cameraCount), nullptr);
+        data.push_back(std::move(d));
         return row;
+    };
+    auto addConfig = [&](RowData& d, int config, int camera) {
+        const auto it = ranked.find(config);
+        if (it != ranked.end()) d.frames.push_back(&it->second);
+        const ErrorEstimate& e = errors[static_cast<size_t>(config / cameraCount)][static_cast<size_t>(camera)];
+        if (!std::isnan(e.value)) d.tiles[static_cast<size_t>(camera)] = &e.tiles;
     };
     for (size_t p = 0; p < points_.size(); ++p) {
         std::map<std::string, std::vector<double>> pooled;
@@ -404,23 +440,20 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             const int config = static_cast<int>(p) * cameraCount + c;
             const ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
             TradeoffRow row = newRow(p, std::to_string(c), e);
+            addConfig(data.back(), config, c);
             fillTimes(row, t.passes, ms[config], o_.resamples, pointSeed(p, c) + 1);
+            fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, c) + 1);
             for (const auto& [series, v] : ms[config]) pooled[series].insert(pooled[series].end(), v.begin(), v.end());
             values.push_back(e.value);
             t.rows.push_back(std::move(row));
         }
         if (cameraCount > 1) {
             const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
-            // The mean over the cameras that have an error, saying so when some have none.
-            const auto measured = std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); });
-            if (measured > 0 && measured < cameraCount) {
-                notes.push_back("point " + std::to_string(points_[p].index) + ": the all-cameras error is the mean over " +
-                                std::to_string(measured) + " of " + std::to_string(cameraCount) +
-                                " cameras (the others have no error)");
-                if (say) say("tradeoff: " + notes.back());
-            }
+            noteMissingCameras(p, values, notes, say);
             TradeoffRow row = newRow(p, TradeoffTable::kAllCameras, e);
+            for (int c = 0; c < cameraCount; ++c) addConfig(data.back(), static_cast<int>(p) * cameraCount + c, c);
             fillTimes(row, t.passes, pooled, o_.resamples, pointSeed(p, cameraCount) + 1);
+            fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, cameraCount) + 1);
             t.rows.push_back(std::move(row));
         }
     }
@@ -430,7 +463,42 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
         throw Error("tradeoff: no camera of any point has an error, so there is no front to plot (" +
                     (notes.empty() ? std::string("no note") : notes.front()) +
                     (notes.size() > 1 ? "; and " + std::to_string(notes.size() - 1) + " more like it" : "") + ")");
-    if (!t.rows.empty()) t.markParetoFront(o_.time);
+    if (t.rows.empty()) return;
+    for (size_t i = 0; i < t.rows.size(); ++i) data[i].time = t.rows[i].timeMs;
+    const EvidenceDraws how{o_.resamples, o_.block, 777};
+    t.markFront([&](size_t i) { return rowEvidence(data[i], how); }, FrontRule::pairedBootstrap);
+}
+
+// The all-cameras error is the mean over the cameras that have one: said when some have none.
+void TradeoffRunner::noteMissingCameras(size_t p, const std::vector<double>& values, std::vector<std::string>& notes,
+                                        const BenchProgress& say) const {
+    const auto measured = std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); });
+    const auto cameraCount = static_cast<std::ptrdiff_t>(values.size());
+    if (measured == 0 || measured == cameraCount) return;
+    notes.push_back("point " + std::to_string(points_[p].index) + ": the all-cameras error is the mean over " +
+                    std::to_string(measured) + " of " + std::to_string(cameraCount) +
+                    " cameras (the others have no error)");
+    if (say) say("tradeoff: " + notes.back());
+}
+
+namespace {
+
+// How the shown rows' front was decided (ConfidentFront's rule line).
+std::string frontRuleOf(const TradeoffTable& t) {
+    const auto it = t.frontRules.find(BudgetPicker::shownCamera(t));
+    return it == t.frontRules.end() ? "" : it->second;
+}
+
+}  // namespace
+
+// What time_ms is: the frame, a pass, or the median of per-frame sums of passes.
+std::string TradeoffRunner::frontTimeText() const {
+    if (o_.time == "frame") return "frame_gpu_ms";
+    const std::vector<std::string> terms = TradeoffTable::timeTerms(o_.time);
+    if (terms.size() == 1) return "gpu_ms." + o_.time;
+    std::string sum;
+    for (const auto& t : terms) sum += (sum.empty() ? "" : " + ") + ("gpu_ms." + t);
+    return "time_ms: per frame " + sum + ", its median and 95% interval over the frames";
 }
 
 // Stage 5: what the run was, for the CSV's and the record's settings.
@@ -456,7 +524,8 @@ BenchFields TradeoffRunner::settingsOf(const TradeoffResult& result, double tota
         {"metric", o_.metric},
         {"buffer", o_.buffer + " (" + gpuOutput(o_.buffer) + ")"},
         {"mask", o_.mask.empty() ? "none: every pixel" : o_.mask + ": pixels within 2 px of an edge of the reference's shadow buffer"},
-        {"front_time", o_.time == "frame" ? "frame_gpu_ms" : "gpu_ms." + o_.time},
+        {"front_time", frontTimeText()},
+        {"front_rule", frontRuleOf(result.table)},
         {"against", o_.against.empty() ? "reference" : against},
         {"error_interval", "95% percentile bootstrap over " + std::to_string(ImageError::kTile) + "x" +
                                std::to_string(ImageError::kTile) + "-pixel tiles; the all-cameras row over the cameras"},
@@ -468,6 +537,10 @@ BenchFields TradeoffRunner::settingsOf(const TradeoffResult& result, double tota
         {"error_seconds", shortText(result.errorSeconds)},
         {"seconds", shortText(totalSeconds)},
     };
+    if (o_.budgetMs != 0.0) {
+        settings.emplace_back("budget_ms", shortText(o_.budgetMs));
+        for (const auto& line : result.pick.lines) settings.emplace_back("pick", line);
+    }
     for (const auto& n : notes) settings.emplace_back("note", n);
     return settings;
 }
@@ -521,6 +594,8 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     const Errors errors = captureErrors(session, runner, reference, notes, progress);
     result.errorSeconds = seconds(errorStart);
     tabulate(result.table, timings, errors, notes, progress);
+    if (o_.budgetMs != 0.0 && !result.table.rows.empty())
+        result.pick = BudgetPicker::pick(result.table, o_.budgetMs, BudgetPicker::shownCamera(result.table));
     result.settings = settingsOf(result, seconds(start), notes);
     say("tradeoff: timed in " + shortText(result.timingSeconds) + " s, errors in " + shortText(result.errorSeconds) + " s");
     result.shaders = session.shaders().compiled();

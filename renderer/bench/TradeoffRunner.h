@@ -16,6 +16,8 @@
 //     values on top, rendered here once per distinct configuration and camera.
 //     ImageError: the metric with a tile-bootstrap interval; the "all" row
 //     the mean over cameras with a bootstrap over the cameras.
+//   Front: ConfidentFront's paired bootstrap (TradeoffEvidence: the rounds
+//     and the tiles resampled alike for every point); with a budget, the pick.
 // Follows issue 23 ("the speed/accuracy lab").
 #include <cstdint>
 #include <functional>
@@ -27,6 +29,7 @@
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/bench/BudgetPick.h"
 #include "renderer/bench/ImageError.h"
 #include "renderer/bench/TradeoffSweep.h"
 #include "renderer/bench/TradeoffTable.h"
@@ -54,7 +57,10 @@ struct TradeoffOptions {
     // the reference's shadow buffer only (ShadowEdgeMask, MaskedMetrics); the
     // rows' buffer reads "<buffer>:shadow_edges".
     std::string mask;
-    std::string time = "frame";  // what the front ranks by: "frame" or a pass's gpu_ms (TradeoffTable::markParetoFront)
+    // What the front ranks by: "frame", a pass's or span's gpu_ms, or a sum of
+    // them ("lighting+ao+ao_filter": per frame, the terms' sum; TradeoffTable::timeTerms).
+    std::string time = "frame";
+    double budgetMs = 0.0;  // > 0: pick the least-error point under it (BudgetPicker); 0: none
     std::vector<std::string> against;  // empty: the reference; else knob=value on top of each point
     int resamples = 2000;
     BenchShard shard;  // points whose number % count == index
@@ -71,6 +77,7 @@ struct TradeoffResult {
     BenchFields settings;  // scene, size, frames, cameras, metric, buffer, against, seconds ...
     double timingSeconds = 0.0, errorSeconds = 0.0;  // the timed rounds; the captures and errors (references included)
     gl::CompiledShaders shaders;  // the shader files the run compiled (the record hashes them)
+    BudgetPick pick;              // with TradeoffOptions::budgetMs: what it picked (lines empty without)
 };
 
 class TradeoffRunner {
@@ -130,6 +137,9 @@ private:
                          std::vector<std::string>& notes, const BenchProgress& say) const;
     void tabulate(TradeoffTable& table, const RunnerTimings& timings, const Errors& errors,
                   std::vector<std::string>& notes, const BenchProgress& say) const;
+    void noteMissingCameras(size_t point, const std::vector<double>& values, std::vector<std::string>& notes,
+                            const BenchProgress& say) const;
+    std::string frontTimeText() const;
     BenchFields settingsOf(const TradeoffResult& result, double totalSeconds,
                            const std::vector<std::string>& notes) const;
 

@@ -24,6 +24,10 @@ namespace {
 const char* const kMiddle[] = {"metric",  "buffer",       "error",           "error_lo",       "error_hi",
                                "frames",  "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"};
 const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim"};
+// After pareto (a CSV written before them ends at pareto).
+const char* const kTail[] = {"time", "time_ms", "time_ms_lo", "time_ms_hi", "front", "dominated_by", "tied_with", "pick"};
+const char* const kFronts[] = {"", "pareto", "indistinguishable", "dominated"};
+const char* const kPicks[] = {"", "pick", "tied", "fits", "over"};
 const std::string kPassPrefix = "gpu_ms.";
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -65,25 +69,143 @@ double TradeoffTable::passGpuMs(const TradeoffRow& row, const std::string& pass)
 
 bool TradeoffTable::lowerIsBetter(const std::string& metric) { return metric != "psnr" && metric != "ssim"; }
 
-double TradeoffTable::timeOf(const TradeoffRow& row, const std::string& time) const {
-    return time == "frame" ? row.frameGpuMs : passGpuMs(row, time);
+std::vector<std::string> TradeoffTable::timeTerms(const std::string& time) {
+    std::vector<std::string> terms;
+    size_t start = 0;
+    while (true) {
+        const size_t plus = time.find('+', start);
+        const std::string term = time.substr(start, plus == std::string::npos ? std::string::npos : plus - start);
+        if (term.empty())
+            throw Error("--time " + time + ": expected frame, a pass, PASS/NAME or a sum of them (pass+pass), got an empty term");
+        if (std::find(terms.begin(), terms.end(), term) != terms.end())
+            throw Error("--time " + time + ": '" + term + "' is named twice");
+        terms.push_back(term);
+        if (plus == std::string::npos) break;
+        start = plus + 1;
+    }
+    if (terms.size() > 1 && std::find(terms.begin(), terms.end(), "frame") != terms.end())
+        throw Error("--time " + time + ": frame is the whole frame; it is not summed with passes");
+    return terms;
 }
 
-void TradeoffTable::markParetoFront(const std::string& time) {
-    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
-    if (time != "frame" && std::find(passes.begin(), passes.end(), time) == passes.end())
-        throw Error("--time " + time + ": no pass of that name was timed (expected frame or one of: " +
+double TradeoffTable::timeOf(const TradeoffRow& row, const std::string& t) const {
+    if (t == time && t != "frame") return row.timeMs;
+    return t == "frame" ? row.frameGpuMs : passGpuMs(row, t);
+}
+
+void TradeoffTable::rankBy(const std::string& t) {
+    if (t == time && t != "frame") return;  // carried (frame: always its columns')
+    const std::vector<std::string> terms = timeTerms(t);
+    if (terms.size() > 1)
+        throw Error("--time " + t + ": the rows carry " + (rows.empty() ? std::string("no time") : "time " + time) +
+                    ", not this sum; a sum's interval needs the per-frame sums: run tradeoff again with --time " + t);
+    if (t != "frame" && std::find(passes.begin(), passes.end(), t) == passes.end())
+        throw Error("--time " + t + ": no pass of that name was timed (expected frame or one of: " +
                     (passes.empty() ? std::string("none") : joined(passes)) + ")");
+    for (auto& r : rows) {
+        r.timeMs = t == "frame" ? r.frameGpuMs : passGpuMs(r, t);
+        r.timeMsLo = t == "frame" ? r.frameGpuMsLo : kNaN;
+        r.timeMsHi = t == "frame" ? r.frameGpuMsHi : kNaN;
+    }
+    time = t;
+}
+
+void TradeoffTable::markParetoFront(const std::string& t) {
+    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
+    rankBy(t);
+    markFront([this](size_t i) { return intervalEvidence(rows[i]); }, FrontRule::intervals);
+}
+
+FrontEvidence TradeoffTable::intervalEvidence(const TradeoffRow& r) const {
+    FrontEvidence e;
+    e.cost = {r.timeMs, r.timeMsLo, r.timeMsHi, {}, false};
+    const bool lower = lowerIsBetter(r.metric);
+    e.error = lower ? FrontAxis{r.error, r.errorLo, r.errorHi, {}, false}
+                    : FrontAxis{-r.error, -r.errorHi, -r.errorLo, {}, false};
+    return e;
+}
+
+void TradeoffTable::markFront(const RowEvidence& evidence, FrontRule rule, double alpha) {
+    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
     std::map<std::tuple<std::string, std::string, std::string>, std::vector<size_t>> groups;
     for (size_t i = 0; i < rows.size(); ++i) groups[{rows[i].camera, rows[i].metric, rows[i].buffer}].push_back(i);
+    frontRules.clear();
     for (const auto& [key, members] : groups) {
-        const bool lower = lowerIsBetter(std::get<1>(key));
-        std::vector<ParetoPoint> points;
+        std::vector<FrontEvidence> points;
         points.reserve(members.size());
-        for (size_t i : members) points.push_back({timeOf(rows[i], time), lower ? rows[i].error : -rows[i].error});
-        const ParetoFront front(points);
-        for (size_t k = 0; k < members.size(); ++k) rows[members[k]].pareto = front.contains(k);
+        for (size_t i : members) points.push_back(evidence(i));
+        const FrontDecision d = decideFront(points, rule, alpha);
+        frontRules[std::get<0>(key)] = d.rule;
+        for (size_t k = 0; k < members.size(); ++k) {
+            TradeoffRow& r = rows[members[k]];
+            r.front = d.front[k];
+            r.pareto = r.front == "pareto";
+            r.dominatedBy.clear();
+            for (size_t q : d.dominatedBy[k]) r.dominatedBy.push_back(rows[members[q]].point);
+            r.tiedWith.clear();
+            for (const FrontTie& tie : d.tiedWith[k])
+                r.tiedWith.emplace_back(rows[members[tie.other]].point, tie.time && tie.error ? "both" : tie.axes());
+            r.errorTies.clear();
+            r.timeTies.clear();
+            for (size_t q = 0; q < members.size(); ++q) {
+                if (q == k || r.front.empty() || d.front[q].empty()) continue;
+                if (d.errorTied(k, q)) r.errorTies.push_back(rows[members[q]].point);
+                if (d.timeOrder[k][q] == Order::notApart || d.timeOrder[k][q] == Order::identical)
+                    r.timeTies.push_back(rows[members[q]].point);
+            }
+        }
     }
+}
+
+namespace {
+
+// "0, 1 and 3".
+std::string pointList(const std::vector<int>& points) {
+    std::string s;
+    for (size_t i = 0; i < points.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == points.size() ? " and " : ", ") + std::to_string(points[i]);
+    return s;
+}
+
+// One axis's line: which points (of `rows`) cannot be told apart on it.
+std::string tiesLine(const std::vector<const TradeoffRow*>& rows, bool error) {
+    const std::string axis = error ? "error" : "time";
+    std::vector<int> points;
+    std::vector<std::string> pairs;
+    size_t tied = 0;
+    for (const TradeoffRow* r : rows) {
+        points.push_back(r->point);
+        for (int q : error ? r->errorTies : r->timeTies)
+            if (q > r->point) {
+                pairs.push_back(std::to_string(r->point) + " and " + std::to_string(q));
+                ++tied;
+            }
+    }
+    const size_t all = points.size() * (points.size() - 1) / 2;
+    if (all == 0) return "";
+    if (tied == all) return axis + ": points " + pointList(points) + " cannot be told apart (no pair differs with confidence)";
+    if (tied == 0) return axis + ": every pair of points told apart";
+    std::string s;
+    for (const auto& p : pairs) s += (s.empty() ? "" : "; ") + p;
+    return axis + ": cannot be told apart: " + s;
+}
+
+}  // namespace
+
+std::vector<std::string> TradeoffTable::frontSummary(const std::string& camera) const {
+    std::vector<const TradeoffRow*> shown;
+    for (const auto& r : rows)
+        if (r.camera == camera && !r.front.empty()) shown.push_back(&r);
+    std::vector<std::string> lines;
+    if (shown.empty()) return lines;
+    for (bool error : {true, false})
+        if (std::string l = tiesLine(shown, error); !l.empty()) lines.push_back(l);
+    std::string dominated;
+    for (const TradeoffRow* r : shown)
+        if (r->front == "dominated")
+            dominated += (dominated.empty() ? "" : "; ") + std::to_string(r->point) + " (by " + pointList(r->dominatedBy) + ")";
+    lines.push_back("dominated: " + (dominated.empty() ? std::string("none (no point is confidently beaten on both axes)") : dominated));
+    return lines;
 }
 
 std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& axes,
@@ -94,6 +216,7 @@ std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& 
     c.insert(c.end(), std::begin(kMiddle), std::end(kMiddle));
     for (const auto& p : passes) c.push_back(kPassPrefix + p);
     c.push_back("pareto");
+    c.insert(c.end(), std::begin(kTail), std::end(kTail));
     return c;
 }
 
@@ -112,7 +235,12 @@ std::string TradeoffTable::csv() const {
             << number(r.error) << "," << number(r.errorLo) << "," << number(r.errorHi) << "," << r.frames << ","
             << number(r.frameGpuMs) << "," << number(r.frameGpuMsLo) << "," << number(r.frameGpuMsHi);
         for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passGpuMs.size() ? r.passGpuMs[p] : kNaN);
-        out << "," << (r.pareto ? 1 : 0) << "\n";
+        out << "," << (r.pareto ? 1 : 0) << "," << csvField(time) << "," << number(r.timeMs) << ","
+            << number(r.timeMsLo) << "," << number(r.timeMsHi) << "," << r.front << ",";
+        for (size_t k = 0; k < r.dominatedBy.size(); ++k) out << (k ? " " : "") << r.dominatedBy[k];
+        out << ",";
+        for (size_t k = 0; k < r.tiedWith.size(); ++k) out << (k ? " " : "") << r.tiedWith[k].first << ":" << r.tiedWith[k].second;
+        out << "," << r.pick << "\n";
     }
     return out.str();
 }
@@ -127,7 +255,8 @@ FileError cellError(const std::string& path, int lineNo, size_t column, const st
 // fixed middle (metric .. frame_gpu_ms_hi), a gpu_ms.<pass> each, pareto.
 struct CsvLayout {
     std::vector<std::string> header;
-    size_t cameraCol = 0, middle = 0, passStart = 0;
+    size_t cameraCol = 0, middle = 0, passStart = 0, paretoCol = 0;
+    bool tail = false;  // the columns after pareto (time ... pick); a CSV written before them has none
 };
 
 // The header line: names unique and non-empty, the fixed columns where they
@@ -155,9 +284,21 @@ CsvLayout parseHeader(const std::string& line, const std::string& path, const st
         if (header[col] != name) throw at(col, "expected the column '" + std::string(name) + "', got '" + header[col] + "'");
         ++col;
     }
-    if (header.back() != "pareto" || header.size() <= col)
-        throw at(header.size() - 1, "expected 'pareto' as the last column, got '" + header.back() + "'");
-    for (; col + 1 < header.size(); ++col) {
+    const auto pareto = std::find(header.begin() + static_cast<std::ptrdiff_t>(col), header.end(), "pareto");
+    if (pareto == header.end())
+        throw at(header.size() - 1, "expected a 'pareto' column after the passes' gpu_ms.<pass>, got '" + header.back() + "'");
+    l.paretoCol = static_cast<size_t>(pareto - header.begin());
+    l.tail = l.paretoCol + 1 < header.size();
+    if (l.tail) {
+        size_t k = l.paretoCol + 1;
+        for (const char* name : kTail) {
+            if (k >= header.size()) throw at(k, "expected the column '" + std::string(name) + "', the line ends");
+            if (header[k] != name) throw at(k, "expected the column '" + std::string(name) + "', got '" + header[k] + "'");
+            ++k;
+        }
+        if (k != header.size()) throw at(k, "expected no column after 'pick', got '" + header[k] + "'");
+    }
+    for (; col < l.paretoCol; ++col) {
         if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
             throw at(col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
         t.passes.push_back(header[col].substr(kPassPrefix.size()));
@@ -211,10 +352,63 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.frameGpuMsLo = real(l.middle + 7, true);
     r.frameGpuMsHi = real(l.middle + 8, true);
     for (size_t p = 0; p < passCount; ++p) r.passGpuMs.push_back(real(l.passStart + p, true));
-    const size_t last = header.size() - 1;
+    const size_t last = l.paretoCol;
     if (f[last] != "0" && f[last] != "1") throw at(last, "pareto: expected 0 or 1, got '" + f[last] + "'");
     r.pareto = f[last] == "1";
     return r;
+}
+
+// Whole numbers separated by spaces ("2 3"); each may carry ":<one of axes>" when `axes` is given.
+std::vector<std::pair<int, std::string>> pointsField(const std::string& text, const std::vector<std::string>& axes,
+                                                     const std::function<FileError(const std::string&)>& bad) {
+    std::vector<std::pair<int, std::string>> out;
+    std::istringstream in(text);
+    std::string item;
+    while (in >> item) {
+        const size_t colon = item.find(':');
+        const std::string n = item.substr(0, colon), axis = colon == std::string::npos ? "" : item.substr(colon + 1);
+        if (!isWholeNumber(n) || n.size() > 9) throw bad("expected a point's number, got '" + item + "'");
+        if (axes.empty() != axis.empty() || (!axes.empty() && std::find(axes.begin(), axes.end(), axis) == axes.end()))
+            throw bad(axes.empty() ? "expected a point's number, got '" + item + "'"
+                                   : "expected N:time, N:error or N:both, got '" + item + "'");
+        out.emplace_back(std::stoi(n), axis);
+    }
+    return out;
+}
+
+// The columns after pareto (time .. pick) into `r`; the time's name into `time`.
+void parseTail(const std::vector<std::string>& f, int lineNo, const CsvLayout& l, const std::string& path, TradeoffRow& r,
+               std::string& time) {
+    const std::vector<std::string>& header = l.header;
+    const size_t c = l.paretoCol + 1;
+    auto at = [&](size_t column, const std::string& what) { return cellError(path, lineNo, column, what); };
+    auto ms = [&](size_t i) {
+        if (f[i].empty()) return kNaN;
+        double v = 0.0;
+        auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
+        if (ec != std::errc() || p != f[i].data() + f[i].size() || !(std::isfinite(v) && v >= 0.0))
+            throw at(i, header[i] + ": expected milliseconds (a finite number, at least 0), got '" + f[i] + "'");
+        return v;
+    };
+    auto oneOf = [&](size_t i, const auto& names) {
+        if (std::find(std::begin(names), std::end(names), f[i]) == std::end(names))
+            throw at(i, header[i] + ": unexpected '" + f[i] + "'");
+        return f[i];
+    };
+    if (f[c].empty()) throw at(c, "time: empty");
+    time = f[c];
+    r.timeMs = ms(c + 1);
+    r.timeMsLo = ms(c + 2);
+    r.timeMsHi = ms(c + 3);
+    r.front = oneOf(c + 4, kFronts);
+    for (const auto& [point, axis] : pointsField(f[c + 5], {}, [&](const std::string& w) { return at(c + 5, "dominated_by: " + w); }))
+        r.dominatedBy.push_back(point);
+    r.tiedWith = pointsField(f[c + 6], {"time", "error", "both"}, [&](const std::string& w) { return at(c + 6, "tied_with: " + w); });
+    r.pick = oneOf(c + 7, kPicks);
+    for (const auto& [point, axes] : r.tiedWith) {  // what a CSV keeps of the ties (not the dominated points')
+        if (axes != "time") r.errorTies.push_back(point);
+        if (axes != "error") r.timeTies.push_back(point);
+    }
 }
 
 // A point keeps its axis values on every line, and no row key comes twice.
@@ -272,6 +466,18 @@ TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string
             throw cellError(path, lineNo, std::min(f.size(), layout.header.size()),
                             "expected " + std::to_string(layout.header.size()) + " fields, got " + std::to_string(f.size()));
         TradeoffRow r = parseRow(f, lineNo, layout, t.passes.size(), path);
+        if (layout.tail) {
+            std::string time;
+            parseTail(f, lineNo, layout, path, r, time);
+            if (t.rows.empty()) t.time = time;
+            else if (time != t.time)
+                throw cellError(path, lineNo, layout.paretoCol + 1,
+                                "time: '" + time + "' here and '" + t.time + "' on the lines before (one time a table)");
+        } else {  // written before the time columns: the front ranked by frame time
+            r.timeMs = r.frameGpuMs;
+            r.timeMsLo = r.frameGpuMsLo;
+            r.timeMsHi = r.frameGpuMsHi;
+        }
         checks.check(r, lineNo);
         t.rows.push_back(std::move(r));
     }
@@ -292,6 +498,10 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
     auto nameOf = [&](size_t p) { return p < names.size() ? names[p] : "part " + std::to_string(p + 1); };
     TradeoffTable all;
     all.axes = parts.front().axes;
+    // The time the rows carry: the parts' when they agree (else none: frame or one pass only).
+    all.time = parts.front().time;
+    for (const auto& part : parts)
+        if (part.time != all.time) all.time.clear();
     for (const auto& part : parts)
         for (const auto& pass : part.passes)
             if (std::find(all.passes.begin(), all.passes.end(), pass) == all.passes.end()) all.passes.push_back(pass);
@@ -313,6 +523,7 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
                 throw Error("point " + std::to_string(r.point) + " is a different configuration in " +
                             nameOf(a->second.second) + " and " + nameOf(p) + " (not shards of one sweep)");
             TradeoffRow row = r;
+            row.pick.clear();  // a shard's budget pick is not the whole sweep's
             row.passGpuMs.assign(all.passes.size(), kNaN);
             for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k)
                 row.passGpuMs[static_cast<size_t>(

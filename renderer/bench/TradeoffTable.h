@@ -24,11 +24,31 @@
 //                              the shadow maps drawn inside the pass that shades
 //                              their light when shadows.reuse_map is on (the
 //                              shadows pass then draws none: its time is ~0)
-//   pareto                     1 on the front, else 0
+//   pareto                     1 on the front of the point estimates, else 0
+//   time                       what the front ranks by: frame, a pass, a span
+//                              PASS/NAME or a sum of them (lighting+ao+ao_filter)
+//   time_ms,time_ms_lo,time_ms_hi
+//                              that time's median and 95% interval (a sum: the
+//                              median of the per-frame sums, not a sum of medians)
+//   front                      pareto | indistinguishable (off the front, not
+//                              confidently dominated) | dominated (confidently
+//                              dominated by a pareto point) | empty (no time or error)
+//   dominated_by               the pareto points that confidently dominate it ("2 3")
+//   tied_with                  the other non-dominated points it cannot be told
+//                              apart from, each with the axes: "1:error 3:both"
+//   pick                       with a budget (BudgetPick): pick | tied (fits, not
+//                              told apart from the pick in error) | fits | over; else empty
+// How the front and dominance are decided: ConfidentFront.h. A CSV written
+// before these columns (ending at pareto) still reads, its new fields empty.
 // Numbers are written in the shortest form that reads back to the same double,
 // so a table read back has the same front. Needs no GL.
+#include <functional>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "renderer/bench/ConfidentFront.h"
 
 namespace dw {
 
@@ -43,6 +63,14 @@ struct TradeoffRow {
     double frameGpuMs = 0.0, frameGpuMsLo = 0.0, frameGpuMsHi = 0.0;  // NaN: not measured
     std::vector<double> passGpuMs;  // one per TradeoffTable::passes; NaN: not run there
     bool pareto = false;
+    double timeMs = 0.0, timeMsLo = 0.0, timeMsHi = 0.0;  // TradeoffTable::time's; NaN: not measured
+    std::string front;                                      // pareto | indistinguishable | dominated | ""
+    std::vector<int> dominatedBy;                           // point numbers
+    std::vector<std::pair<int, std::string>> tiedWith;      // point number, "time" | "error" | "both"
+    std::string pick;                                       // pick | tied | fits | over | ""
+    // Not in the CSV: the points of its group it cannot be told apart from in
+    // error, in time (dominated ones too; BudgetPick and frontSummary read them).
+    std::vector<int> errorTies, timeTies;
 };
 
 class TradeoffTable {
@@ -52,6 +80,9 @@ public:
     std::vector<std::string> axes;    // the swept axes' names, in column order
     std::vector<std::string> passes;  // the passes of the gpu_ms.<pass> columns, in column order
     std::vector<TradeoffRow> rows;
+    std::string time = "frame";  // what every row's time_ms is (the CSV's time column)
+    // Not in the CSV: per camera, how the front was decided (ConfidentFront's rule line).
+    std::map<std::string, std::string> frontRules;
 
     // The value of `axis` in a row ("" when the table has no such axis).
     std::string axisValue(const TradeoffRow& row, const std::string& axis) const;
@@ -71,9 +102,32 @@ public:
     // has no time, so is off the front. Throws dw::Error when there are no
     // rows ("no points to compare: the sweep is empty") or the pass has no
     // column (the message lists the passes).
+    // Also sets `front`, `dominated_by` and `tied_with` by the intervals rule
+    // (ConfidentFront: no resamples here): rankBy(time), then markFront.
+    // `time` may be a sum (a+b) only when the rows carry it (time == this->time).
     void markParetoFront(const std::string& time = "frame");
-    // The time a front ranks by in a row: frameGpuMs, or passGpuMs(row, time).
+    // The time a front ranks by in a row: the carried time_ms when `time` is
+    // the table's `time`, else frameGpuMs or passGpuMs(row, time).
     double timeOf(const TradeoffRow& row, const std::string& time) const;
+    // Makes every row's time_ms (and interval) `time`'s and sets this->time:
+    // frame from frame_gpu_ms, a pass from its median (no interval), the
+    // carried one as it is. Throws Error for a pass without a column, or a
+    // sum the rows do not carry (its interval needs the per-frame sums).
+    void rankBy(const std::string& time);
+    // The terms of a --time value: "frame", one pass (or PASS/NAME span), or a
+    // sum a+b+c (each term named once). Throws Error for an empty term or one twice.
+    static std::vector<std::string> timeTerms(const std::string& time);
+
+    // The front decided per group (camera, metric, buffer) from each row's
+    // evidence (the cost: whatever `evidence` says, time by default; the
+    // error flipped for psnr/ssim by the caller: see intervalEvidence).
+    using RowEvidence = std::function<FrontEvidence(size_t row)>;
+    void markFront(const RowEvidence& evidence, FrontRule rule, double alpha = 0.05);
+    // A row's time_ms and error with their intervals, both minimised (psnr and ssim flipped).
+    FrontEvidence intervalEvidence(const TradeoffRow& row) const;
+    // Lines saying which points of `camera`'s rows cannot be told apart, per
+    // axis ("error: points 0, 1, 2 and 3 cannot be told apart"), and which are dominated.
+    std::vector<std::string> frontSummary(const std::string& camera) const;
 
     std::vector<std::string> columns() const;
     static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes);

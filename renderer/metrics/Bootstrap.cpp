@@ -36,6 +36,8 @@ double percentile(const std::vector<double>& sorted, double p) {
 
 }  // namespace
 
+std::size_t bootstrapIndex(std::mt19937_64& rng, std::size_t n) { return draw(rng, n); }
+
 double median(std::vector<double> values) { return values.empty() ? 0.0 : medianInPlace(values); }
 
 MedianInterval bootstrapMedian(const std::vector<double>& a, int resamples, std::uint64_t seed, double alpha) {

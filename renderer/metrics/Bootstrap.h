@@ -6,6 +6,7 @@
 // resampling is seeded, so the same samples always give the same interval.
 #include <cstddef>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct MedianInterval {
 };
 
 double median(std::vector<double> values);
+
+// A resample's index in [0, n), n > 0: the same on every platform (std::uniform_int_distribution is not).
+std::size_t bootstrapIndex(std::mt19937_64& rng, std::size_t n);
 
 // median(a) with a (1 - alpha) percentile bootstrap interval; invalid when `a` is empty.
 MedianInterval bootstrapMedian(const std::vector<double>& a, int resamples = 2000, std::uint64_t seed = 12345,

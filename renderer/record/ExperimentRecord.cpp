@@ -437,6 +437,13 @@ std::string fieldOfBench(const BenchFields& f, const std::string& key) {
     return "";
 }
 
+// A row's tied_with as the CSV writes it: [{"point": 1, "axes": "error"}, ...].
+Json tiesJson(const TradeoffRow& r) {
+    Json ties = Json::array();
+    for (const auto& [point, axes] : r.tiedWith) ties.push_back({{"point", point}, {"axes", axes}});
+    return ties;
+}
+
 // A tradeoff table as a record's results: per point and camera the swept
 // knobs, the error with its interval, the times, the front; and `metrics`,
 // the errors alone with what they were measured on and against.
@@ -454,14 +461,16 @@ Json tradeoffResultsJson(const TradeoffTable& t, const BenchFields& machine, con
                         {"error_ci95", {number(r.errorLo), number(r.errorHi)}}, {"frames", r.frames},
                         {"frame_gpu_ms", number(r.frameGpuMs)},
                         {"frame_gpu_ms_ci95", {number(r.frameGpuMsLo), number(r.frameGpuMsHi)}}, {"gpu_ms", passes},
-                        {"pareto", r.pareto}});
+                        {"pareto", r.pareto}, {"time_ms", number(r.timeMs)},
+                        {"time_ms_ci95", {number(r.timeMsLo), number(r.timeMsHi)}}, {"front", r.front},
+                        {"dominated_by", r.dominatedBy}, {"tied_with", tiesJson(r)}, {"pick", r.pick}});
         if (r.pareto) front.push_back({{"point", r.point}, {"camera", r.camera}});
         metrics.push_back({{"point", r.point}, {"camera", r.camera}, {"metric", r.metric}, {"buffer", r.buffer},
                            {"against", against}, {"value", number(r.error)},
                            {"ci95", {number(r.errorLo), number(r.errorHi)}}});
     }
     return {{"machine", m}, {"settings", settingsJson(settings)}, {"axes", t.axes}, {"passes", t.passes},
-            {"rows", rows}, {"front", front}, {"metrics", metrics}};
+            {"time", t.time}, {"rows", rows}, {"front", front}, {"metrics", metrics}};
 }
 
 
@@ -527,6 +536,33 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
     return r;
 }
 
+namespace {
+
+// The front's fields of a record's row (issue 34); a record written before them: the frame time, no front.
+template <class F, class Optional>
+void readFrontFields(const F& row, TradeoffRow& r, const Optional& optional) {
+    if (!row.has("time_ms")) {
+        r.timeMs = r.frameGpuMs;
+        r.timeMsLo = r.frameGpuMsLo;
+        r.timeMsHi = r.frameGpuMsHi;
+        return;
+    }
+    r.timeMs = optional(row.at("time_ms"));
+    r.timeMsLo = optional(row.at("time_ms_ci95").at(0));
+    r.timeMsHi = optional(row.at("time_ms_ci95").at(1));
+    if (row.has("front")) r.front = row.at("front").str();
+    if (row.has("pick")) r.pick = row.at("pick").str();
+    if (row.has("dominated_by"))
+        for (const F& p : row.at("dominated_by").items())
+            r.dominatedBy.push_back(p.whole(OptionRange{0, std::numeric_limits<int>::max()}, "a point's index"));
+    if (row.has("tied_with"))
+        for (const F& tie : row.at("tied_with").items())
+            r.tiedWith.emplace_back(tie.at("point").whole(OptionRange{0, std::numeric_limits<int>::max()}, "a point's index"),
+                                    tie.at("axes").str());
+}
+
+}  // namespace
+
 TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
     using F = Field<Json>;
     const F res(tradeoffResults, "results", path);
@@ -534,6 +570,7 @@ TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
     try {
         t.axes = res.at("axes").strings();
         t.passes = res.at("passes").strings();
+        if (res.has("time")) t.time = res.at("time").str();
         for (const F& row : res.at("rows").items()) {
             TradeoffRow r;
             r.point = row.at("point").whole(OptionRange{0, std::numeric_limits<int>::max()}, "a point's index");
@@ -556,6 +593,7 @@ TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
             const F g = row.at("gpu_ms").object();
             for (const auto& p : t.passes) r.passGpuMs.push_back(g.has(p) ? optional(g.at(p)) : NAN);
             r.pareto = row.boolean("pareto", false);
+            readFrontFields(row, r, optional);
             t.rows.push_back(std::move(r));
         }
     } catch (const nlohmann::json::exception& e) {

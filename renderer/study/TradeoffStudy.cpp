@@ -1,5 +1,7 @@
 #include "renderer/study/TradeoffStudy.h"
 
+#include "renderer/bench/BudgetPick.h"
+
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -51,6 +53,8 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.buffer = s.buffer;
     o.mask = s.mask;
     o.time = s.time;
+    if (s.budgetMs) BudgetPicker::check(*s.budgetMs);  // 0, negative, NaN, inf: one line, before anything renders
+    o.budgetMs = s.budgetMs.value_or(0.0);
     inRange("--ao-rays", s.aoRays, limits::kAoRays);
     if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
     o.walkthrough = s.walkthrough;

@@ -11,6 +11,7 @@
 // Follows issue 23 (tradeoff) and issue 24 (records, Python).
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,7 +34,8 @@ struct TradeoffStudyOptions {
     std::string metric = "flip";         // flip | rms | psnr | ssim
     std::string buffer = "final";        // final | lbuffer | ao | shadow
     std::string mask;                    // "" or shadow_edges
-    std::string time = "frame";          // frame or a pass's name
+    std::string time = "frame";          // frame, a pass's name, or a sum of them (a+b+c)
+    std::optional<double> budgetMs;      // --budget-ms: picks (BudgetPicker); must be finite and above 0
     int aoRays = 64;                     // the reference's AO rays per pixel, 1 .. 2^20
     int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
     bool walkthrough = false;            // the scene's camera.path keyframes

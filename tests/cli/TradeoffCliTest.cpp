@@ -389,3 +389,79 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
         EXPECT_EQ(messages, 1) << c.args << "\n" << r.err;
     }
 }
+
+// Issue 34's case: the four SSAO sample counts' AO errors lie within each
+// other's noise, so the output says they cannot be told apart in error (the
+// table's line, each row's tied_with, no row dominated), whatever their
+// times; the budget's pick names the points it cannot be told apart from.
+TEST(TradeoffCli, SsaoSampleCountsCannotBeToldApartInError) {
+    const Result r = run("tradeoff --scene default --size 160x90 --sweep ssao.samples=4,8,16,32 --metric rms "
+                         "--buffer ao --frames 6 --warmup 1 --resamples 500 --time ao --budget-ms 1000 --quiet" +
+                         files("ssao-noise"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("front: error: points 0, 1, 2 and 3 cannot be told apart"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Holm's step-down over 12 comparison(s)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("front: dominated: none"), std::string::npos) << r.out;
+    // Fewer than 6 rounds: time is not tested, and the rule line says so.
+    const Result few = run("tradeoff --scene default --size 64x36 --sweep ssao.samples=4,32 --metric rms --buffer ao "
+                           "--frames 3 --warmup 0 --resamples 200 --quiet --plot none --csv " +
+                           (dir() / "few.csv").string() + " --json " + (dir() / "few.json").string());
+    ASSERT_EQ(few.code, 0) << few.err;
+    EXPECT_NE(few.out.find("time not tested for 1 pair(s) (no resamples: fewer than 6 rounds"), std::string::npos)
+        << few.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "ssao-noise.csv").string());
+    ASSERT_EQ(t.rows.size(), 4u);
+    EXPECT_EQ(t.time, "ao");
+    int picks = 0;
+    for (const auto& row : t.rows) {
+        EXPECT_NE(row.front, "dominated") << row.point;
+        EXPECT_TRUE(row.front == "pareto" || row.front == "indistinguishable") << row.front;
+        EXPECT_EQ(row.tiedWith.size(), 3u) << row.point;  // every other point, on error at least
+        for (const auto& [point, axes] : row.tiedWith) EXPECT_NE(axes, "time") << row.point << " " << point;
+        EXPECT_EQ(row.timeMs, t.passGpuMs(row, "ao"));  // one pass: its median, now with an interval
+        EXPECT_LE(row.timeMsLo, row.timeMs);
+        picks += row.pick == "pick" ? 1 : 0;
+    }
+    EXPECT_EQ(picks, 1);
+    EXPECT_NE(r.out.find("pick: point "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("cannot be told apart in error from point(s) "), std::string::npos) << r.out;
+    // The record carries the front and the pick.
+    std::ifstream jf(dir() / "ssao-noise.json");
+    const nlohmann::json rec = nlohmann::json::parse(jf);
+    EXPECT_EQ(rec["results"]["rows"][0]["tied_with"].size(), 3u);
+    EXPECT_EQ(rec["results"]["settings"]["budget_ms"], "1000");
+    EXPECT_TRUE(rec["results"]["settings"]["pick"].is_array());
+}
+
+// --time takes a sum of passes: the table names it, the CSV carries the
+// per-frame sums' median and interval, merge keeps it and refuses another sum;
+// an unknown term is refused before the timed rounds; a budget nothing fits
+// says the cheapest point's time.
+TEST(TradeoffCli, TimeSumsOfPassesAndABudgetNothingFits) {
+    const std::string sweep = "tradeoff --scene default --size 64x36 --sweep ssao.samples=4,32 --metric rms --buffer ao "
+                              "--frames 2 --warmup 0 --resamples 200 --quiet ";
+    const Result r = run(sweep + "--time lighting+ao+ao_filter --budget-ms 0.001" + files("sum"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("| lighting+ao+ao_filter GPU ms median | 95% CI | Pareto (lighting+ao+ao_filter ms) |"),
+              std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("pick: none fits the budget of 0.001 ms"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("the cheapest, point "), std::string::npos) << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "sum.csv").string());
+    EXPECT_EQ(t.time, "lighting+ao+ao_filter");
+    for (const auto& row : t.rows) {
+        // Two frames: the median of the per-frame sums is their mean, within the terms' medians' sum's reach.
+        EXPECT_GT(row.timeMs, t.passGpuMs(row, "lighting"));
+        EXPECT_EQ(row.pick, "over");
+    }
+    const std::string csv = (dir() / "sum.csv").string(), out = (dir() / "sum-merged.csv").string();
+    const Result same = run("tradeoff merge " + csv + " --out " + out + " --plot none --time lighting+ao+ao_filter");
+    EXPECT_EQ(same.code, 0) << same.err;
+    EXPECT_NE(same.out.find("front: from the rows' 95% intervals"), std::string::npos) << same.out;
+    const Result other = run("tradeoff merge " + csv + " --out " + out + " --plot none --time lighting+ao");
+    EXPECT_EQ(other.code, 1);
+    EXPECT_NE(other.err.find("the rows carry time lighting+ao+ao_filter, not this sum"), std::string::npos) << other.err;
+    const Result bad = run(sweep + "--time lighting+aox" + files("sum-bad"));
+    EXPECT_EQ(bad.code, 1);
+    EXPECT_NE(bad.err.find("--time lighting+aox: the pipeline has no pass 'aox'"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir() / "sum-bad.csv"));
+}

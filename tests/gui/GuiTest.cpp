@@ -1455,6 +1455,55 @@ TEST(Gui, TheParetoPanelPlotsATradeoffCsvAndAClickAppliesAPointsSettings) {
 // reference that does not come (the view changed) ends the wait with a
 // message; against the current image is a choice the plot names; the axes
 // start at 0, not below.
+// Issue 34: the Pareto panel's budget field marks the pick among the loaded
+// points (the least error whose time's 95% interval ends under it) and says
+// the picker's lines; a budget nothing fits names the cheapest point.
+TEST(Gui, TheParetoPanelsBudgetMarksThePick) {
+    TradeoffTable t;
+    t.axes = {"ssao.samples"};
+    const double errors[] = {0.040, 0.020, 0.010}, times[] = {10.0, 14.0, 22.0};
+    for (int i = 0; i < 3; ++i) {
+        TradeoffRow r;
+        r.point = i;
+        r.axisValues = {std::to_string(8 << i)};
+        r.camera = "0";
+        r.metric = "rms";
+        r.buffer = "ao";
+        r.error = errors[i], r.errorLo = r.error * 0.9, r.errorHi = r.error * 1.1;
+        r.frames = 8;
+        r.frameGpuMs = times[i], r.frameGpuMsLo = times[i] * 0.95, r.frameGpuMsHi = times[i] * 1.05;
+        t.rows.push_back(r);
+    }
+    t.markParetoFront();
+    const fs::path csv = test::tempDir() / "pareto-budget.csv";
+    t.writeCsv(csv.string());
+    auto session = test::makeSession(64, 36);
+    session->loadScene("spheres");
+    HeadlessImGui imgui(ImVec2(800, 600));
+    ui::UiState state;
+    ui::ParetoPanel panel;
+    ASSERT_TRUE(panel.load(csv.string())) << panel.error;
+    bool open = true;
+    auto draw = [&] {
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(800, 600));
+        panel.draw("Pareto", &open, state, *session);
+    };
+    panel.budgetMs = 15.0;  // point 1's interval ends at 14.7, point 2's at 23.1
+    imgui.frame(draw);
+    EXPECT_EQ(panel.table.rows[1].pick, "pick");
+    EXPECT_EQ(panel.table.rows[0].pick, "fits");
+    EXPECT_EQ(panel.table.rows[2].pick, "over");
+    ASSERT_FALSE(panel.pickLines.empty());
+    EXPECT_EQ(panel.pickLines[0].rfind("pick: point 1 (ssao.samples=16)", 0), 0u) << panel.pickLines[0];
+    EXPECT_TRUE(ui::drawnItems().count("pareto.budget") && ui::drawnItems().count("pareto.pick"));
+    panel.budgetMs = 5.0;
+    imgui.frame(draw);
+    ASSERT_FALSE(panel.pickLines.empty());
+    EXPECT_NE(panel.pickLines[0].find("none fits the budget of 5 ms"), std::string::npos) << panel.pickLines[0];
+    EXPECT_TRUE(panel.table.rows[1].pick == "over");
+}
+
 TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurrentImageByChoice) {
     const fs::path cache = test::tempDir() / "pareto-reference-cache";
     fs::remove_all(cache);

@@ -106,7 +106,7 @@ class TradeoffTest(unittest.TestCase):
         self.assertEqual((r["format"], r["command"]), ("deferred-workbench record", "tradeoff"))
         with open(self.json) as f:
             written = json.load(f)
-        self.assertEqual(written, {k: v for k, v in r.items() if k not in ("rows", "front")})
+        self.assertEqual(written, {k: v for k, v in r.items() if k not in ("rows", "front", "front_rule")})
         self.assertEqual(r["knobs"]["ssao_blur.mode"], "off")
         self.assertEqual(r["grid"]["axes"][0]["name"], "ssao.samples")
         self.assertEqual(len(r["results"]["rows"]), len(SAMPLES))
@@ -168,6 +168,9 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, record="a.json", json="b.json"), ValueError, "name two files"),
             (dict(sweep={"ssao.samples": [4, 8]}, record=""), ValueError, "tradeoff: record"),
             (dict(sweep={"ssao.samples": [4, 8]}, progress=3), ValueError, "progress must be a callable"),
+            (dict(sweep={"ssao.samples": [4, 8]}, budget_ms=0), ValueError, "--budget-ms: expected milliseconds above 0"),
+            (dict(sweep={"ssao.samples": [4, 8]}, budget_ms=float("nan")), ValueError, "--budget-ms: expected"),
+            (dict(sweep={"ssao.samples": [4, 8]}, time="ao+ao"), ValueError, "'ao' is named twice"),
             (dict(sweep={"ssao.samples": [4, 8]}, scene=os.path.join(self.tmp.name, "missing.gltf")), dw.Error,
              "missing.gltf"),
         ]
@@ -179,6 +182,27 @@ class TradeoffTest(unittest.TestCase):
         with self.assertRaises(dw.Error) as e:
             dw.tradeoff(**dict(base, sweep={"ssao.samples": [4]}, time="bogus", against="ssao.samples=8"))
         self.assertIn("--time bogus: the pipeline has no pass of that name", str(e.exception))
+
+    def test_a_sum_of_passes_and_a_budget_pick(self):
+        """time= takes a sum (the rows carry it with an interval), budget_ms= returns the pick, and every row
+        says its place on the front (issue 34)."""
+        r = dw.tradeoff(**dict(KEYWORDS, time="lighting+ao", budget_ms=1000.0))
+        rows = r["rows"]
+        for row in rows:
+            self.assertEqual(row["time"], "lighting+ao")
+            self.assertLessEqual(row["time_ms_lo"], row["time_ms"])
+            self.assertIn(row["front"], ("pareto", "indistinguishable", "dominated"))
+            self.assertEqual(row["pareto"], row["front"] == "pareto")
+            for point, axes in row["tied_with"]:
+                self.assertIn(axes, ("time", "error", "both"))
+        self.assertIn("Holm", r["front_rule"])
+        pick = r["pick"]
+        self.assertEqual(pick["budget_ms"], 1000.0)
+        self.assertIn(pick["point"], [row["point"] for row in rows])
+        self.assertEqual(pick["row"]["pick"], "pick")
+        self.assertTrue(pick["lines"][0].startswith("pick: point "), pick["lines"])
+        # The least error among the points that fit (here all of them).
+        self.assertEqual(pick["row"]["error"], min(row["error"] for row in rows))
 
     def test_record_keyword_writes_the_record(self):
         # record= is the CLI's --record (json= its older name): the experiment record, one format.

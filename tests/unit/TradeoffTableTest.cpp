@@ -134,7 +134,8 @@ TEST(TradeoffTable, HeaderAndFrontPerCamera) {
     TradeoffTable t = study();
     EXPECT_EQ(t.csv().substr(0, t.csv().find('\n')),
               "point,ssao.samples,ssao.resolution,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,"
-              "frame_gpu_ms_lo,frame_gpu_ms_hi,gpu_ms.geometry,gpu_ms.ssao,pareto");
+              "frame_gpu_ms_lo,frame_gpu_ms_hi,gpu_ms.geometry,gpu_ms.ssao,pareto,time,time_ms,time_ms_lo,time_ms_hi,"
+              "front,dominated_by,tied_with,pick");
     t.markParetoFront();
     // Camera 0, (ms, error) by cost: 8 half (2.4, .566), 16 half (4.8, .4), 8 full (8, .354),
     // 32 half (9.6, .283), 16 full (16, .25), 32 full (32, .177): each lowers the error, all on the front.
@@ -256,7 +257,7 @@ TEST(TradeoffTable, BadInputNamesFileLineAndColumn) {
     EXPECT_EQ(messageOf(kHeader + ok), "(no error)");
     EXPECT_EQ(messageOf(""), "t.csv: line 1: empty (expected the tradeoff CSV header point,<axis>...,camera,metric,"
                              "buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi,"
-                             "gpu_ms.<pass>...,pareto)");
+                             "gpu_ms.<pass>...,pareto,time,time_ms,time_ms_lo,time_ms_hi,front,dominated_by,tied_with,pick)");
     EXPECT_EQ(messageOf("config,size\n").substr(0, 44), "t.csv: line 1, column 1: expected 'point', g");
     EXPECT_EQ(messageOf("point,a,a,camera\n"), "t.csv: line 1, column 3: the column 'a' is there twice (also column 2)");
     EXPECT_EQ(messageOf("point,a,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,"

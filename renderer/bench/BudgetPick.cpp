@@ -1,0 +1,151 @@
+#include "renderer/bench/BudgetPick.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/Error.h"
+
+namespace dw {
+
+namespace {
+
+std::string shortNumber(double v) {
+    if (std::isnan(v)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", v);
+    return text;
+}
+
+std::string describe(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string s = "point " + std::to_string(r.point);
+    std::string values;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a)
+        values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r.axisValues[a];
+    return values.empty() ? s : s + " (" + values + ")";
+}
+
+struct Cost {
+    double value = 0.0, lo = 0.0, hi = 0.0;
+};
+
+Cost costOf(const BudgetCost& c, const TradeoffRow& r) {
+    Cost v;
+    c.of(r, v.value, v.lo, v.hi);
+    return v;
+}
+
+std::string costText(const BudgetCost& c, const TradeoffRow& r) {
+    const Cost v = costOf(c, r);
+    const std::string value = c.name + " " + shortNumber(v.value) + " " + c.unit;
+    return c.exact ? value : value + " [" + shortNumber(v.lo) + ", " + shortNumber(v.hi) + "]";
+}
+
+std::string errorText(const TradeoffRow& r) {
+    return r.metric + " " + shortNumber(r.error) + " [" + shortNumber(r.errorLo) + ", " + shortNumber(r.errorHi) + "]";
+}
+
+std::string pointList(const std::vector<int>& points) {
+    std::string s;
+    for (size_t i = 0; i < points.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == points.size() ? " and " : ", ") + std::to_string(points[i]);
+    return s;
+}
+
+// The fitting rows' least error (psnr and ssim: the largest); nullptr when none fits.
+TradeoffRow* leastError(const std::vector<TradeoffRow*>& fits) {
+    TradeoffRow* best = nullptr;
+    for (TradeoffRow* r : fits) {
+        if (std::isnan(r->error)) continue;
+        const double e = TradeoffTable::lowerIsBetter(r->metric) ? r->error : -r->error;
+        const double b = best ? (TradeoffTable::lowerIsBetter(best->metric) ? best->error : -best->error) : 0.0;
+        if (!best || e < b) best = r;
+    }
+    return best;
+}
+
+void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, const BudgetCost& cost, BudgetPick& out) {
+    const TradeoffRow* cheapest = nullptr;
+    for (const TradeoffRow* r : rows)
+        if (std::isfinite(costOf(cost, *r).value) && (!cheapest || costOf(cost, *r).value < costOf(cost, *cheapest).value))
+            cheapest = r;
+    const std::string budget = shortNumber(out.budgetMs) + " " + cost.unit;
+    if (!cheapest) {
+        out.lines.push_back("pick: none: no point has a " + cost.name + " to hold against the budget of " + budget);
+        return;
+    }
+    out.cheapest = cheapest->point;
+    out.lines.push_back("pick: none fits the budget of " + budget + " (no point's " + cost.name +
+                        (cost.exact ? "" : "'s 95% interval") + " ends under it); the cheapest, " + describe(t, *cheapest) + ", takes " +
+                        costText(cost, *cheapest));
+}
+
+}  // namespace
+
+void BudgetPicker::check(double ms, const std::string& flag) {
+    if (!(std::isfinite(ms) && ms > 0.0))
+        throw Error(flag + ": expected " + (flag == "--budget-ms" ? "milliseconds" : "a budget") +
+                    " above 0 (a finite number), got " +
+                    std::string(std::isnan(ms) ? "nan" : std::isinf(ms) ? (ms > 0 ? "inf" : "-inf") : shortNumber(ms)));
+}
+
+BudgetCost BudgetPicker::timeCost(const TradeoffTable& t) {
+    return {t.time + " time", "ms", false, [](const TradeoffRow& r, double& v, double& lo, double& hi) {
+                v = r.timeMs;
+                lo = r.timeMsLo;
+                hi = r.timeMsHi;
+            }};
+}
+
+BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera) {
+    return pick(t, budgetMs, camera, timeCost(t));
+}
+
+std::string BudgetPicker::shownCamera(const TradeoffTable& t) {
+    for (const auto& r : t.rows)
+        if (r.camera == TradeoffTable::kAllCameras) return r.camera;
+    return t.rows.empty() ? std::string() : t.rows.front().camera;
+}
+
+BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera, const BudgetCost& cost) {
+    check(budgetMs, cost.unit == "ms" ? "--budget-ms" : "--budget");
+    BudgetPick out;
+    out.budgetMs = budgetMs;
+    std::vector<TradeoffRow*> rows, fits;
+    for (auto& r : t.rows)
+        if (r.camera == camera) rows.push_back(&r);
+    if (rows.empty()) throw Error("--budget-ms: no rows of camera " + camera + " to pick from");
+    for (TradeoffRow* r : rows) {
+        const double hi = costOf(cost, *r).hi;
+        const bool fit = std::isfinite(hi) && hi < budgetMs && !std::isnan(r->error);
+        r->pick = fit ? "fits" : "over";
+        if (fit) fits.push_back(r);
+    }
+    out.fitting = static_cast<int>(fits.size());
+    TradeoffRow* best = leastError(fits);
+    if (!best) {
+        noneFits(t, rows, cost, out);
+        return out;
+    }
+    best->pick = "pick";
+    out.point = best->point;
+    for (TradeoffRow* r : fits)
+        if (r != best && std::find(best->errorTies.begin(), best->errorTies.end(), r->point) != best->errorTies.end()) {
+            r->pick = "tied";
+            out.tied.push_back(r->point);
+        }
+    const bool exact = cost.exact;
+    out.lines.push_back("pick: " + describe(t, *best) + ": " + errorText(*best) + ", " + costText(cost, *best) +
+                        ": the least error of the " + std::to_string(out.fitting) + " point(s) whose " +
+                        (exact ? cost.name : cost.name + "'s 95% interval") + " ends under the budget of " +
+                        shortNumber(budgetMs) + " " + cost.unit +
+                        (exact ? std::string(" (exact)") : " (97.5% one-sided that its median is under)"));
+    out.lines.push_back(out.tied.empty()
+                            ? "pick: told apart in error from every other point that fits"
+                            : "pick: cannot be told apart in error from point(s) " + pointList(out.tied) +
+                                  ", which fit too (the front's confidence: " +
+                                  (t.frontRules.count(camera) ? t.frontRules.at(camera) : std::string("?")) + ")");
+    return out;
+}
+
+}  // namespace dw
