@@ -56,17 +56,27 @@ py::dict referenceStats(const reference::ReferenceStatistics& s) {
     d["ao_standard_error_mean"] = s.aoStandardErrorMean;
     d["ao_standard_error_max"] = s.aoStandardErrorMax;
     d["triangles"] = s.triangles;
+    d["pixel_samples"] = s.pixelSamples;
+    d["spp_error_mean"] = s.sppErrorMean;
+    d["spp_error_max"] = s.sppErrorMax;
     return d;
 }
 
 py::object sessionReference(WorkbenchSession& s, const std::string& buffer, const py::object& aoRaysObject,
                             const py::object& seedObject, const py::object& threadsObject, bool cache,
                             std::optional<std::string> cacheDir, bool stats, std::optional<std::string> out,
-                            std::optional<std::string> statsOut, const py::object& progress) {
+                            std::optional<std::string> statsOut, const py::object& progress, const py::object& sppObject,
+                            const std::string& filter) {
     const auto& names = reference::referenceBuffers();
     if (std::find(names.begin(), names.end(), buffer) == names.end())
-        throw UnknownBufferError("unknown reference buffer '" + buffer + "' (lbuffer, final, ao or shadow)");
+        throw UnknownBufferError("unknown reference buffer '" + buffer + "' (lbuffer, final, ao, shadow or spp_error)");
     ReferenceOptions o = referenceOptions("reference", aoRaysObject, seedObject, threadsObject, cache, cacheDir);
+    o.pixelSamples = intArg(sppObject, "reference: spp", limits::kPixelSamples, "reference --spp");
+    try {
+        o.pixelFilter = reference::pixelFilterNamed(filter);
+    } catch (const Error& e) {
+        throw py::value_error(std::string("reference: filter: ") + e.what());
+    }
     const int aoRays = o.aoRays, seed = o.seed;
     requireCallable(progress, "reference: progress");
     requirePath(out, "reference: out");
@@ -89,6 +99,8 @@ py::object sessionReference(WorkbenchSession& s, const std::string& buffer, cons
         file["buffer"] = buffer;
         file["ao_rays_per_pixel"] = aoRays;
         file["seed"] = seed;
+        file["pixel_samples"] = o.pixelSamples;
+        file["pixel_filter"] = reference::pixelFilterName(o.pixelFilter);
         writeJsonObject(*statsOut, file);
     }
     py::array_t<float> a = toArray(*images.buffer(buffer));
@@ -194,8 +206,10 @@ void bindReference(SessionClass& session) {
     session.def("reference", &sessionReference, py::arg("buffer") = "lbuffer", py::arg("ao_rays") = 64,
                 py::arg("seed") = 1, py::arg("threads") = 0, py::arg("cache") = true, py::arg("cache_dir") = py::none(),
                 py::arg("stats") = false, py::arg("out") = py::none(), py::arg("stats_out") = py::none(),
-                py::arg("progress") = py::none(),
+                py::arg("progress") = py::none(), py::arg("spp") = 1, py::arg("filter") = "box",
                 "The CPU reference of this view (as `reference`): float32 H x W x C; stats=True: (array, dict).\n"
+                "spp=N samples per pixel over the pixel's footprint (filter=\"box\" or \"tent\"), as reference --spp;\n"
+                "buffer=\"spp_error\" is each pixel's standard error over its samples.\n"
                 "progress(fraction) is called while it traces; Ctrl-C, or an exception in progress, cancels it.\n"
                 "out=PATH writes the image as reference --out does (.exr raw, .png in [0, 1]); stats_out=PATH the\n"
                 "statistics as JSON (reference --stats-out's figures under the same keys).");

@@ -78,6 +78,7 @@ void RenderSession::showReference(const reference::ReferenceImages* images, cons
         shown->lbuffer = images->lbuffer;
         shown->final = images->final;
         shown->ao = images->ao;
+        shown->sppError = images->sppError;
         shown->describe = "CPU reference (" + std::to_string(images->stats.primaryRays) + " primary rays)";
         pass->setReference(std::move(shown));
     } else if (pass->hasReference()) {

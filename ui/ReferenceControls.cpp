@@ -13,6 +13,7 @@ std::string ReferenceControls::currentKey(RenderSession& session, reference::Ref
                                           reference::ReferenceModel* model) const {
     reference::ReferenceModel m = reference::ReferenceModel::fromKnobs(session.knobs(), session.scene());
     m.aoRays = aoRays;
+    m.pixelSamples = pixelSamples;
     reference::ReferenceRequest r;
     r.camera = session.camera();
     r.width = session.pipeline().width();
@@ -34,7 +35,8 @@ void ReferenceControls::start(UiState& state, RenderSession& session) {
     state.heldFlameFrame = state.flameFrame;
     job_.start(session.scene(), model, request);
     state.log.info("CPU reference of the view started (" + std::to_string(request.width) + "x" +
-                       std::to_string(request.height) + ", " + std::to_string(aoRays) + " AO rays)",
+                       std::to_string(request.height) + ", " + std::to_string(aoRays) + " AO rays, " +
+                       std::to_string(pixelSamples) + " samples per pixel)",
                    state.time);
 }
 
@@ -46,6 +48,10 @@ void ReferenceControls::menuItems(UiState& state) {
     if (job_.running() && ImGui::MenuItem("Cancel the CPU reference")) job_.cancel();
     ImGui::SetNextItemWidth(120);
     ImGui::SliderInt("AO rays", &aoRays, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderInt("samples per pixel", &pixelSamples, 1, 256, "%d", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("reference --spp: 1 traces the pixel's centre; N averages N points over the pixel\n"
+                          "(the truth of its area; reference.spp_error shows each pixel's standard error)");
 }
 
 void ReferenceControls::progressBar() {
@@ -71,6 +77,7 @@ void ReferenceControls::update(UiState& state, RenderSession& session) {
         shown->lbuffer = images->lbuffer;
         shown->final = images->final;
         shown->ao = images->ao;
+        shown->sppError = images->sppError;
         char describe[160];
         std::snprintf(describe, sizeof describe, "CPU reference (%.1f s, %d AO rays, AO standard error mean %.4f)",
                       images->stats.seconds, aoRays, images->stats.aoStandardErrorMean);

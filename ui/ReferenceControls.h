@@ -24,6 +24,7 @@ struct ReferenceControls {
     void start(UiState& state, RenderSession& session);
 
     int aoRays = 64;
+    int pixelSamples = 1;  // reference --spp: samples per pixel
 
 private:
     std::string currentKey(RenderSession& session, reference::ReferenceRequest* request = nullptr,

@@ -32,6 +32,10 @@ std::vector<OutputDecl> ReferencePass::outputs() const {
         {"reference.final", OutputKind::Color,
          "the CPU reference's tone-mapped image (no bloom, depth of field or FXAA; sRGB-encoded values, RGBA32F)"},
         {"reference.ao", OutputKind::Scalar, "the CPU reference's ray-traced ambient accessibility (R32F)", {}, 1},
+        {"reference.spp_error", OutputKind::Scalar,
+         "the CPU reference's standard error of each pixel's luminance over its samples (reference --spp; 0 with one "
+         "sample; R32F)",
+         {}, 1},
         {"compare.error", OutputKind::Scalar,
          "this frame's lbuffer against reference.lbuffer: |L - L_ref| / (L_ref + 0.001) per pixel, L the luminance (R32F)",
          {}, 1},
@@ -75,6 +79,7 @@ void ReferencePass::bindAll(OutputRegistry& outputs) {
     outputs.bind("reference.lbuffer", &lbuffer_, 4);
     outputs.bind("reference.final", &final_, 4);
     outputs.bind("reference.ao", &ao_, 1);
+    outputs.bind("reference.spp_error", &sppError_, 1);
     outputs.bind("compare.error", &error_, 1);
 }
 
@@ -88,6 +93,7 @@ void ReferencePass::upload() {
     make(lbuffer_, GL_RGBA32F, r.lbuffer, GL_RGBA);
     make(final_, GL_RGBA32F, r.final, GL_RGBA);
     make(ao_, GL_R32F, r.ao, GL_RED);
+    make(sppError_, GL_R32F, r.sppError, GL_RED);
     error_ = gl::Texture::create2D(GL_R32F, w, h);
     uploaded_ = true;
 }

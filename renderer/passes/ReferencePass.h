@@ -22,6 +22,7 @@ public:
     // What the workbench hands over: W x H images, rows top-down (ReferenceImages' buffers).
     struct Images {
         FloatImage lbuffer, final, ao;
+        FloatImage sppError;  // 1 channel: the standard error of each pixel's luminance over its samples (0: one sample)
         std::string describe;  // "CPU reference, 64 AO rays (standard error 0.009)"
     };
     explicit ReferencePass(KnobRegistry& knobs);
@@ -57,7 +58,7 @@ private:
     std::shared_ptr<const Images> images_;
     std::string stale_ = "no CPU reference of this view yet (Render > CPU reference of this view)";
     bool uploaded_ = false;
-    gl::Texture lbuffer_, final_, ao_, error_;
+    gl::Texture lbuffer_, final_, ao_, sppError_, error_;
     Errors errors_;
     std::uint64_t measuredGeneration_ = ~0ull;
     glm::mat4 measuredView_{0.0f};

@@ -13,8 +13,8 @@ namespace dw::reference {
 ViewReference traceViewReference(const Scene& given, const KnobRegistry& knobs, const Camera& camera, int width,
                                  int height, const ViewReferenceOptions& options, std::optional<std::uint64_t> frame) {
     if (!limits::kAoRays.holds(options.aoRays) || !limits::kSeed.holds(options.seed) ||
-        !limits::kReferenceThreads.holds(options.threads))
-        throw Error("reference: ao_rays, seed or threads outside reference's ranges (renderer/OptionLimits.h)");
+        !limits::kReferenceThreads.holds(options.threads) || !limits::kPixelSamples.holds(options.pixelSamples))
+        throw Error("reference: ao_rays, seed, spp or threads outside reference's ranges (renderer/OptionLimits.h)");
     std::optional<Scene> animated;
     if (frame) {
         animated = given;
@@ -25,6 +25,8 @@ ViewReference traceViewReference(const Scene& given, const KnobRegistry& knobs, 
     out.model = ReferenceModel::fromKnobs(knobs, scene);
     out.model.aoRays = options.aoRays;
     out.model.seed = static_cast<std::uint32_t>(options.seed);
+    out.model.pixelSamples = options.pixelSamples;
+    out.model.pixelFilter = options.pixelFilter;
     ReferenceRequest request;
     request.camera = camera;
     request.width = width;

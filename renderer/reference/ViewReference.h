@@ -26,7 +26,9 @@ namespace dw::reference {
 // kReferenceThreads; checked here, Error outside them).
 struct ViewReferenceOptions {
     int aoRays = 64;   // --ao-rays: cosine-weighted AO rays per pixel
-    int seed = 1;      // --seed: the AO sample pattern's seed
+    int seed = 1;      // --seed: the AO sample pattern's and the pixel samples' seed
+    int pixelSamples = 1;                   // --spp: samples per pixel (kPixelSamples)
+    PixelFilter pixelFilter = PixelFilter::Box;  // --filter
     int threads = 0;   // --threads; 0: every core; more than the machine's cores: its cores (same image for any)
     bool useCache = true;        // false: --no-cache (trace, and store nothing)
     std::string cacheDirectory;  // --cache-dir; empty: ReferenceCache's default ($DW_REFERENCE_CACHE, ~/.cache/...)

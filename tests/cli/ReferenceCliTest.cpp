@@ -89,6 +89,43 @@ TEST(ReferenceCli, BadInputGetsOneClearLine) {
     EXPECT_NE(r.err.find("'ssao.intensity' = 9 is out of range"), std::string::npos) << r.err;
 }
 
+// Issue 35: --spp N samples each pixel's area; spp_error is each pixel's
+// standard error; the run says whether N is enough; N enters the cache key;
+// bad counts and filters are one line before anything renders.
+TEST(ReferenceCli, SamplesPerPixelAndTheirStandardError) {
+    const fs::path dir = test::tempDir() / "reference-cli-spp";
+    fs::create_directories(dir);
+    const std::string common = "reference --scene default --size 40x24 --ao-rays 2 --cache-dir " + (dir / "cache").string();
+    auto r = run(common + " --spp 4 --filter tent --buffer spp_error --stats-out " + (dir / "s.json").string() +
+                 " --out " + (dir / "e.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("pixel samples: 4 (tent), relative standard error of the pixels' luminance: mean"),
+              std::string::npos) << r.out;
+    const FloatImage e = loadImageFloat((dir / "e.exr").string());
+    EXPECT_EQ(e.channels, 1);
+    float largest = 0.0f;
+    for (float v : e.pixels) largest = std::max(largest, v);
+    EXPECT_GT(largest, 0.0f);  // the edges and the floor's texture vary inside a pixel
+    std::ifstream sf(dir / "s.json");
+    const auto stats = nlohmann::json::parse(sf);
+    EXPECT_EQ(stats["primary_rays"], 40 * 24 * 4);
+    EXPECT_EQ(stats["pixel_samples"], 4);
+    // One sample: another cache entry, and no spread to report.
+    r = run(common + " --buffer spp_error --out " + (dir / "e1.exr").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.out.find("from the cache"), std::string::npos) << r.out;
+    for (float v : loadImageFloat((dir / "e1.exr").string()).pixels) ASSERT_EQ(v, 0.0f);
+    for (const std::string bad : {"--spp 0", "--spp 1e9", "--spp 70000"}) {
+        r = run(common + " " + bad + " --out " + (dir / "x.exr").string());
+        EXPECT_EQ(r.code, 2) << bad;
+        EXPECT_NE(r.err.find("--spp"), std::string::npos) << bad << ": " << r.err;
+    }
+    r = run(common + " --spp 4 --filter gauss --out " + (dir / "x.exr").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--filter: expected box or tent, got 'gauss'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+}
+
 TEST(ReferenceCli, CompareAgainstTheReference) {
     const fs::path dir = test::tempDir() / "reference-compare";
     fs::create_directories(dir);
