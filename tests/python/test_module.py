@@ -281,6 +281,21 @@ class SessionTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             s.reference("nope")
 
+    def test_reference_samples_per_pixel(self):
+        s = dw.Session(scene="default", size=(32, 18))
+        one = s.reference("lbuffer", ao_rays=2, cache=False)
+        area, stats = s.reference("lbuffer", ao_rays=2, cache=False, spp=4, stats=True)
+        self.assertEqual(stats["primary_rays"], 32 * 18 * 4)
+        self.assertEqual(stats["pixel_samples"], 4)
+        self.assertFalse(np.array_equal(one, area))
+        err = s.reference("spp_error", ao_rays=2, cache=False, spp=4, filter="tent")
+        self.assertEqual(err.shape, (18, 32, 1))
+        self.assertGreater(float(err.max()), 0.0)
+        with self.assertRaisesRegex(ValueError, "spp"):
+            s.reference("lbuffer", spp=0)
+        with self.assertRaisesRegex(ValueError, "expected box or tent"):
+            s.reference("lbuffer", spp=4, filter="gauss")
+
     def test_bench_grid_records_and_csv(self):
         csv = os.path.join(self.tmp.name, "bench.csv")
         path = os.path.join(self.tmp.name, "bench.json")
