@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 #include <tuple>
 
 #include "app/Commands.h"
@@ -33,12 +35,18 @@ reference::ReferenceImages renderWithProgress(const Scene& scene, const referenc
     return result;
 }
 
-}  // namespace
+// reference's options, read and checked before anything is traced.
+struct ReferenceOptions {
+    RunConfig run;
+    std::string buffer, out;
+    int aoRays = 64, seed = 1, spp = 1, threads = 0;
+    reference::PixelFilter filter = reference::PixelFilter::Box;
+    bool noCache = false, throughput = false, quiet = false;
+    std::optional<std::string> cacheDir, statsOut;
+};
 
-int runReferenceCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2, "reference");
-    if (cl.flag("--help")) {
-        std::cout
+void printUsage() {
+    std::cout
             << "usage: deferred-workbench reference [--scene NAME|FILE] [--size WxH] [--buffer lbuffer|final|ao|shadow|spp_error]\n"
                "                                    [--preset NAME|FILE] [--set knob=value]... [--ao-rays N] [--seed N]\n"
                "                                    [--spp N] [--filter box|tent]\n"
@@ -69,92 +77,91 @@ int runReferenceCommand(int argc, char** argv) {
                "  --stats-out  write the render's statistics as JSON\n"
                "  --throughput also trace the same rays with Embree alone and print the ratio of rays per second\n"
                "Progress goes to stderr; Ctrl+C cancels (exit 130, nothing cached).\n"
-                  << CommandLine::rangesHelp("reference");
-        return 0;
-    }
-    RunConfig run = cl.runConfig();
-    std::tie(run.width, run.height) = cl.size().value_or(std::pair{1280, 720});
-    const std::string buffer = cl.value("--buffer").value_or("lbuffer");
+              << CommandLine::rangesHelp("reference");
+}
+
+// The buffer, the image formats and the files: usage errors before the trace.
+void checkOptions(const ReferenceOptions& o) {
+    const auto& names = reference::referenceBuffers();
+    if (std::find(names.begin(), names.end(), o.buffer) == names.end())
+        throw UsageError("--buffer: unknown reference buffer '" + o.buffer + "' (lbuffer, final, ao, shadow or spp_error)");
+    if (isFloatFormat(o.out) && std::filesystem::path(o.out).extension() != ".exr")
+        throw UsageError("--out " + o.out + ": float images are written as .exr (or .png for final, ao and shadow)");
+    if (o.buffer == "lbuffer" && !isFloatFormat(o.out))
+        throw UsageError("--out " + o.out + ": the L-buffer is HDR; write it as .exr");
+    CommandLine::NamedFiles writes = {{"--out", o.out}};
+    if (o.statsOut) writes.emplace_back("--stats-out", *o.statsOut);
+    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(o.run));
+    // A render can take minutes: an output that cannot be written fails now, not after it.
+    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
+}
+
+ReferenceOptions readOptions(CommandLine& cl) {
+    ReferenceOptions o;
+    o.run = cl.runConfig();
+    std::tie(o.run.width, o.run.height) = cl.size().value_or(std::pair{1280, 720});
+    o.buffer = cl.value("--buffer").value_or("lbuffer");
     const auto out = cl.value("--out");
-    const int aoRays = cl.whole("--ao-rays", 64);
-    const int seed = cl.whole("--seed", 1);
-    const int spp = cl.whole("--spp", 1);
+    o.aoRays = cl.whole("--ao-rays", 64);
+    o.seed = cl.whole("--seed", 1);
+    o.spp = cl.whole("--spp", 1);
     const std::string filter = cl.value("--filter").value_or("box");
     const int requestedThreads = cl.whole("--threads", 0);
     // oneTBB runs at most as many threads as the machine has cores; more are not asked for.
-    const int threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
-    if (requestedThreads > threads && threads > 0)
-        std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", requestedThreads, threads, threads);
-    const bool noCache = cl.flag("--no-cache");
-    const auto cacheDir = cl.value("--cache-dir");
-    const auto statsOut = cl.value("--stats-out");
-    const bool throughput = cl.flag("--throughput");
-    const bool quiet = cl.flag("--quiet");
+    o.threads = requestedThreads > 0 ? std::min(requestedThreads, reference::availableThreads()) : 0;
+    if (requestedThreads > o.threads && o.threads > 0)
+        std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", requestedThreads, o.threads,
+                     o.threads);
+    o.noCache = cl.flag("--no-cache");
+    o.cacheDir = cl.value("--cache-dir");
+    o.statsOut = cl.value("--stats-out");
+    o.throughput = cl.flag("--throughput");
+    o.quiet = cl.flag("--quiet");
     cl.finish("reference");
     if (!cl.positional().empty()) throw UsageError("reference: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("reference needs --out FILE (.exr, or .png for final, ao and shadow)");
-    const auto& names = reference::referenceBuffers();
-    if (std::find(names.begin(), names.end(), buffer) == names.end())
-        throw UsageError("--buffer: unknown reference buffer '" + buffer + "' (lbuffer, final, ao, shadow or spp_error)");
-    const reference::PixelFilter pixelFilter = [&] {
-        try {
-            return reference::pixelFilterNamed(filter);
-        } catch (const Error& e) {
-            throw UsageError(e.what());
-        }
-    }();
-    if (isFloatFormat(*out) && std::filesystem::path(*out).extension() != ".exr")
-        throw UsageError("--out " + *out + ": float images are written as .exr (or .png for final, ao and shadow)");
-    if (buffer == "lbuffer" && !isFloatFormat(*out))
-        throw UsageError("--out " + *out + ": the L-buffer is HDR; write it as .exr");
-    CommandLine::NamedFiles writes = {{"--out", *out}};
-    if (statsOut) writes.emplace_back("--stats-out", *statsOut);
-    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
-    // A render can take minutes: an output that cannot be written fails now, not after it.
-    for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
+    o.out = *out;
+    try {
+        o.filter = reference::pixelFilterNamed(filter);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    checkOptions(o);
+    return o;
+}
 
-    run.validate();
-    const Scene scene = loadScene(run.sceneSpec());
-    for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    KnobRegistry knobs = RunConfig::declaredKnobs();
-    run.applyKnobs(knobs, scene);
-    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
-    model.aoRays = aoRays;
-    model.seed = static_cast<std::uint32_t>(seed);
-    model.pixelSamples = spp;
-    model.pixelFilter = pixelFilter;
-    std::printf("%s\n", reference::reportKnobs(knobs, model, buffer == "final").text().c_str());
-
-    reference::ReferenceRequest request;
-    request.camera = run.camera(scene);
-    request.width = run.width;
-    request.height = run.height;
-    request.threads = threads;
-
-    const reference::ReferenceCache cache(cacheDir ? std::filesystem::path(*cacheDir) : std::filesystem::path());
-    const std::string key = reference::referenceKey(scene, model, request);
+// The images of the view: from the cache, or traced (with progress) and stored.
+// Nothing when the trace was cancelled.
+std::optional<reference::ReferenceImages> tracedOrCached(const ReferenceOptions& o, const Scene& scene,
+                                                         const reference::ReferenceModel& model,
+                                                         const reference::ReferenceRequest& request,
+                                                         const std::string& key, bool& cached) {
+    const reference::ReferenceCache cache(o.cacheDir ? std::filesystem::path(*o.cacheDir) : std::filesystem::path());
     std::optional<reference::ReferenceImages> images;
-    if (!noCache) images = cache.load(key);
-    const bool cached = images.has_value();
-    if (!cached) {
+    if (!o.noCache) images = cache.load(key);
+    cached = images.has_value();
+    if (cached) return images;
+    try {
+        images = renderWithProgress(scene, model, request, o.quiet);
+    } catch (const reference::ReferenceCancelled&) {
+        return std::nullopt;
+    }
+    if (!o.noCache) {
         try {
-            images = renderWithProgress(scene, model, request, quiet);
-        } catch (const reference::ReferenceCancelled&) {
-            std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
-            return 130;
-        }
-        if (!noCache) {
-            try {
-                cache.store(key, *images);
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
-            }
+            cache.store(key, *images);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "warning: the reference is not cached: %s\n", e.what());
         }
     }
-    writeImage(*out, *images->buffer(buffer));
-    const reference::ReferenceStatistics& s = images->stats;
-    std::printf("wrote %s (reference %s of a %dx%d frame, scene %s; %s)\n", out->c_str(), buffer.c_str(), run.width,
-                run.height, scene.name.c_str(),
+    return images;
+}
+
+// What the run prints after the image is written.
+void printReport(const ReferenceOptions& o, const Scene& scene, const reference::ReferenceModel& model,
+                 const reference::ReferenceImages& images, const std::string& key, bool cached) {
+    const reference::ReferenceStatistics& s = images.stats;
+    std::printf("wrote %s (reference %s of a %dx%d frame, scene %s; %s)\n", o.out.c_str(), o.buffer.c_str(), o.run.width,
+                o.run.height, scene.name.c_str(),
                 cached ? ("from the cache, key " + key).c_str() : ("cache key " + key).c_str());
     std::printf("%s %.2f s on %d threads (Embree build %.2f s, %zu triangles): %.2f M rays (%.2f M rays/s; %lld primary, "
                 "%lld shadow, %lld AO)\n",
@@ -163,12 +170,19 @@ int runReferenceCommand(int argc, char** argv) {
     if (model.rayTracedAo)
         std::printf("ambient occlusion: %d rays per pixel, radius %g, standard error of A: mean %.4f, max %.4f\n",
                     model.aoRays, model.aoRadius, s.aoStandardErrorMean, s.aoStandardErrorMax);
-    if (model.pixelSamples > 1) std::printf("%s\n", reference::pixelSamplesVerdict(*images, model).c_str());
+    if (model.pixelSamples > 1) std::printf("%s\n", reference::pixelSamplesVerdict(images, model).c_str());
+}
+
+// --stats-out's JSON (and --throughput's figures, measured side by side here).
+nlohmann::json statistics(const ReferenceOptions& o, const Scene& scene, const reference::ReferenceModel& model,
+                          const reference::ReferenceRequest& request, const reference::ReferenceImages& images,
+                          const std::string& key, bool cached) {
+    const reference::ReferenceStatistics& s = images.stats;
     nlohmann::json stats = {{"key", key},
                             {"cached", cached},
                             {"scene", scene.name},
-                            {"width", run.width},
-                            {"height", run.height},
+                            {"width", o.run.width},
+                            {"height", o.run.height},
                             {"seconds", s.seconds},
                             {"build_seconds", s.buildSeconds},
                             {"threads", s.threads},
@@ -185,7 +199,7 @@ int runReferenceCommand(int argc, char** argv) {
                             {"spp_error_mean", s.sppErrorMean},
                             {"spp_error_max", s.sppErrorMax},
                             {"model", model.canonical()}};
-    if (throughput) {
+    if (o.throughput) {
         // Side by side in this run: the reference once more (uncached) and Embree alone over the same rays.
         const reference::ReferenceImages again = reference::renderReference(scene, model, request);
         const reference::RayThroughput bare = reference::measureRayThroughput(scene, model, request);
@@ -198,10 +212,50 @@ int runReferenceCommand(int argc, char** argv) {
                                {"embree_rays", bare.rays},
                                {"ratio", ratio}};
     }
-    if (statsOut) {
-        std::ofstream f(*statsOut);
+    return stats;
+}
+
+}  // namespace
+
+int runReferenceCommand(int argc, char** argv) {
+    CommandLine cl(argc, argv, 2, "reference");
+    if (cl.flag("--help")) {
+        printUsage();
+        return 0;
+    }
+    const ReferenceOptions o = readOptions(cl);
+    RunConfig run = o.run;
+    run.validate();
+    const Scene scene = loadScene(run.sceneSpec());
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    KnobRegistry knobs = RunConfig::declaredKnobs();
+    run.applyKnobs(knobs, scene);
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
+    model.aoRays = o.aoRays;
+    model.seed = static_cast<std::uint32_t>(o.seed);
+    model.pixelSamples = o.spp;
+    model.pixelFilter = o.filter;
+    std::printf("%s\n", reference::reportKnobs(knobs, model, o.buffer == "final").text().c_str());
+
+    reference::ReferenceRequest request;
+    request.camera = run.camera(scene);
+    request.width = run.width;
+    request.height = run.height;
+    request.threads = o.threads;
+    const std::string key = reference::referenceKey(scene, model, request);
+    bool cached = false;
+    const std::optional<reference::ReferenceImages> images = tracedOrCached(o, scene, model, request, key, cached);
+    if (!images) {
+        std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
+        return 130;
+    }
+    writeImage(o.out, *images->buffer(o.buffer));
+    printReport(o, scene, model, *images, key, cached);
+    const nlohmann::json stats = statistics(o, scene, model, request, *images, key, cached);
+    if (o.statsOut) {
+        std::ofstream f(*o.statsOut);
         f << stats.dump(2) << "\n";
-        if (!f) throw FileError(*statsOut, "cannot write the statistics");
+        if (!f) throw FileError(*o.statsOut, "cannot write the statistics");
     }
     return 0;
 }
