@@ -7,6 +7,9 @@
 // light ("flip-flop", seed 002 3.3), or every shadowed light keeps its own
 // layer. Bias is slope-scaled and constant polygon offset; filtering is PCF
 // through comparison samplers, so the arrays stay plain depth textures.
+// Each map (a cube face, a paraboloid half) draws only the casters whose box
+// meets its volume (shadows.cull_casters; renderer/lighting/CasterCulling),
+// and counts them (casters()).
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
