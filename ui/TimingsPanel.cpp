@@ -188,7 +188,7 @@ void TimingsPanel::draw(const char* title, bool* open, UiState& state, RenderSes
         if (timer.find(rec.name)) passes.push_back(rec.name);
     graph(state, timer, passes);
     changeCost(state, session);
-    table(timer, passes);
+    table(timer, passes, state.report);
     // CPU frame time of the whole app loop (UI included), beside the GPU numbers.
     if (!state.cpuFrameMs.empty()) {
         std::vector<float> cpu(state.cpuFrameMs.begin(), state.cpuFrameMs.end());
@@ -411,7 +411,7 @@ float nameColumnWidth(const std::vector<std::string>& names, float extra) {
 
 }  // namespace
 
-void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passes) {
+void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passes, const FrameReport& report) {
     const bool cpu = timer.isolateCpu();
     const int columns = cpu ? 8 : 7;
     // The rest of the panel but the app CPU plot under it; it scrolls both
@@ -448,7 +448,13 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
         ImGui::SameLine();
         if (pass) {
             if (ImGui::Selectable(name.c_str(), solo == name)) solo = solo == name ? std::string() : name;
-            if (ImGui::IsItemHovered()) tooltip(solo == name ? "click: show every pass again" : "click: show only %s", name.c_str());
+            if (ImGui::IsItemHovered()) {
+                // What the pass did (PassRecord::stats: the shadow maps' casters D/N and triangles).
+                const PassRecord* rec = report.find(name);
+                const std::string what = solo == name ? "click: show every pass again" : "click: show only " + name;
+                const bool line = rec && !rec->stats.empty();
+                tooltip("%s%s%s", line ? rec->stats.c_str() : "", line ? "\n" : "", what.c_str());
+            }
         } else {
             ImGui::TextUnformatted("whole frame");
         }

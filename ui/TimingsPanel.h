@@ -46,7 +46,8 @@ private:
     void watchForChanges(UiState& state, RenderSession& session);
     void toolbar(UiState& state, PassTimer& timer, RenderSession& session);
     void graph(UiState& state, PassTimer& timer, const std::vector<std::string>& passes);
-    void table(PassTimer& timer, const std::vector<std::string>& passes);
+    // The hover text of a pass's name carries its statistics line (`report`).
+    void table(PassTimer& timer, const std::vector<std::string>& passes, const FrameReport& report);
     void changeBar(UiState& state, RenderSession& session);   // the change, measure / progress and cancel
     void changeCost(UiState& state, RenderSession& session);  // the verdict
     void changeCostLines(const ChangeVerdict& v);              // the verdict in a panel too narrow for its table

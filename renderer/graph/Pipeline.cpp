@@ -363,9 +363,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
 
     timer_.beginFrame(frame_);
     try {
-        size_t slot = 0;
         for (size_t i : plan.order) {
-            const size_t reportIndex = slot++;
             if (!plan.records[i].ran) continue;
             RenderPass& p = *passes_[i];
             ctx.image = plan.image[i];
@@ -382,8 +380,16 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             timer_.endPass();
             glPopDebugGroup();
             outputs_.markProduced(p.name(), ctx.wanted);
-            report.passes[reportIndex].stats = p.stats();
-            report.passes[reportIndex].warning = p.frameWarning();
+        }
+        // Each pass's line once the whole frame ran: a service one pass
+        // offers can do its work inside a later pass (the shadow maps a
+        // lighting strategy renders light by light with shadows.reuse_map).
+        size_t slot = 0;
+        for (size_t i : plan.order) {
+            const size_t reportIndex = slot++;
+            if (!plan.records[i].ran) continue;
+            report.passes[reportIndex].stats = passes_[i]->stats();
+            report.passes[reportIndex].warning = passes_[i]->frameWarning();
         }
     } catch (...) {
         // A failed frame leaves nothing half-recorded for the next one.

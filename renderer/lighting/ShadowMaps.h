@@ -7,8 +7,12 @@
 // light ("flip-flop", seed 002 3.3), or every shadowed light keeps its own
 // layer. Bias is slope-scaled and constant polygon offset; filtering is PCF
 // through comparison samplers, so the arrays stay plain depth textures.
+// Each map (a cube face, a paraboloid half) draws only the casters whose box
+// meets its volume (shadows.cull_casters; renderer/lighting/CasterCulling),
+// and counts them (casters()).
 #include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
 #include "renderer/graph/FrameContext.h"
 #include "renderer/knobs/KnobRegistry.h"
@@ -21,6 +25,7 @@
 
 namespace dw {
 
+class CasterVolume;
 class GpuScene;
 struct Scene;
 
@@ -58,9 +63,41 @@ public:
     std::size_t bytesKeepingAll() const { return bytesKeepingAll_; }
     int mapsRendered() const { return rendered_; }
 
+    // Shadow casters this frame, summed over every map (each cube face and
+    // paraboloid half a map): draws and triangles drawn after culling against
+    // the map's volume (shadows.cull_casters), and what all of them would be
+    // without culling. Reset by beginFrame.
+    struct CasterCounts {
+        std::size_t drawn = 0, total = 0;
+        std::size_t trianglesDrawn = 0, trianglesTotal = 0;
+    };
+    const CasterCounts& casters() const { return casters_; }
+
 private:
+    // A 2D map's projection, its light view (absolute world space to light
+    // space, double precision), the eye it is drawn relative to, and the
+    // lookup's constant bias (ShadowLookup::range).
+    struct MapFit {
+        glm::dmat4 proj{1.0}, lightView{1.0};
+        glm::dvec3 eye{0.0};
+        glm::vec4 range{0.0f};
+    };
     void ensure(Kind kind, int layers, int size);
-    BoolKnob enabled_, reuse_, blendedCasters_;
+    // The map's far distance from `light`: its radius, clamped to the scene.
+    float farDistance(const FrameContext& ctx, const Light& light, double radius) const;
+    MapFit fitDirectional(const FrameContext& ctx, const Light& light) const;
+    void fitDirectionalBox(const FrameContext& ctx, MapFit& fit, const glm::vec2& sphereC, float sphereR, glm::vec3 lo,
+                           glm::vec3 hi) const;
+    MapFit fitSpot(const FrameContext& ctx, const Light& light, float near, float far) const;
+    void render2D(const FrameContext& ctx, const Light& light, float near, float far, int slot, ShadowLookup& out);
+    void renderCube(const FrameContext& ctx, const Light& light, float near, float far, int slot, ShadowLookup& out);
+    void renderParaboloid(const FrameContext& ctx, const Light& light, float near, float far, int slot, ShadowLookup& out);
+    // The draws that may cast into a map of `volume` (all of them when
+    // shadows.cull_casters is off), counted into casters_.
+    std::vector<std::size_t> cullCasters(const FrameContext& ctx, const CasterVolume& volume);
+    void drawCasters(const FrameContext& ctx, const gl::Program& program, const CasterVolume& volume);
+    void target(Kind kind, int layer);  // attaches and clears one layer
+    BoolKnob enabled_, reuse_, blendedCasters_, cullCasters_;
     IntKnob size_, pcf_;
     FloatKnob biasConstant_, biasSlope_, distance_;
     EnumKnob pointMethod_;
@@ -73,6 +110,7 @@ private:
     gl::Framebuffer fbo_;
     std::size_t bytesInUse_ = 0, bytesKeepingAll_ = 0;
     int rendered_ = 0;
+    CasterCounts casters_;
 };
 
 }  // namespace dw

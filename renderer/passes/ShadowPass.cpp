@@ -86,10 +86,17 @@ void ShadowPass::execute(FrameContext& ctx) {
         if (!table.rows.empty()) table.buffer->update(0, table.rows.size() * sizeof(LightGpu), table.rows.data());
     }
     ctx.shadows = this;
-    const int total = counts[0] + counts[1] + counts[2];
-    stats_ = std::to_string(total) + " shadow maps (" + std::to_string(counts[0]) + " 2D, " + std::to_string(counts[1]) +
-             " cube, " + std::to_string(counts[2]) + " paraboloid), " + (reuse_ ? "one reused per kind: " : "all kept: ") +
-             mib(maps_.bytesInUse()) + " (one per light: " + mib(maps_.bytesKeepingAll()) + ")";
+    for (int kind = 0; kind < 3; ++kind) counts_[kind] = counts[kind];
+}
+
+std::string ShadowPass::stats() const {
+    const int total = counts_[0] + counts_[1] + counts_[2];
+    const ShadowMaps::CasterCounts& c = maps_.casters();
+    return std::to_string(total) + " shadow maps (" + std::to_string(counts_[0]) + " 2D, " + std::to_string(counts_[1]) +
+           " cube, " + std::to_string(counts_[2]) + " paraboloid), " + (reuse_ ? "one reused per kind: " : "all kept: ") +
+           mib(maps_.bytesInUse()) + " (one per light: " + mib(maps_.bytesKeepingAll()) + "); casters " +
+           std::to_string(c.drawn) + "/" + std::to_string(c.total) + ", " + std::to_string(c.trianglesDrawn) + "/" +
+           std::to_string(c.trianglesTotal) + " triangles";
 }
 
 bool ShadowPass::prepare(FrameContext& ctx, const LightTableEntry& entry) {

@@ -219,10 +219,10 @@ void GpuScene::bindMaterialTextures(int material) const {
     glBindSampler(binding::MATERIAL_OCCLUSION_TEXTURE, t.samplers[Material::OcclusionSlot]);
 }
 
-static bool passes(const GpuScene::Draw& d, GpuScene::Filter f) {
-    if (f == GpuScene::Filter::All) return true;
+bool GpuScene::matches(const Draw& d, Filter f) {
+    if (f == Filter::All) return true;
     const bool blend = d.alphaMode == AlphaMode::Blend;
-    return f == GpuScene::Filter::Blend ? blend : !blend;
+    return f == Filter::Blend ? blend : !blend;
 }
 
 glm::mat4 GpuScene::relativeModel(const glm::mat4& model) const {
@@ -243,7 +243,7 @@ void GpuScene::drawImpl(const gl::Program& program, Filter filter, bool bindText
     std::vector<std::size_t> order;
     order.reserve(draws_.size());
     for (std::size_t i = 0; i < draws_.size(); ++i)
-        if (passes(draws_[i], filter)) order.push_back(i);
+        if (matches(draws_[i], filter)) order.push_back(i);
     drawList(program, order, bindTextures, before);
 }
 
@@ -301,11 +301,11 @@ void GpuScene::drawList(const gl::Program& program, const std::vector<std::size_
     }
 }
 
-void GpuScene::drawDepthOnly(const gl::Program& program, Filter filter) const {
-    if (draws_.empty()) return;
+void GpuScene::drawDepthOnly(const gl::Program& program, const std::vector<std::size_t>& order) const {
+    if (draws_.empty() || order.empty()) return;
     vao_.bind();
-    for (const Draw& d : draws_) {
-        if (!passes(d, filter)) continue;
+    for (std::size_t i : order) {
+        const Draw& d = draws_.at(i);
         glFrontFace(d.mirrored ? GL_CW : GL_CCW);
         program.set(0, relativeModel(d.model));
         glDrawElementsBaseVertex(GL_TRIANGLES, d.indexCount, GL_UNSIGNED_INT,

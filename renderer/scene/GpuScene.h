@@ -65,8 +65,12 @@ public:
     // (culling the front) and then its front faces, so a closed double-sided
     // object blended in one draw composites its far side under its near side.
     void drawInOrder(const gl::Program& program, const std::vector<std::size_t>& order, bool backFacesFirst = false) const;
-    // Draws geometry only (shadow maps, wireframes): positions, model matrix at location 0.
-    void drawDepthOnly(const gl::Program& program, Filter filter) const;
+    // Whether `draw` passes `filter` (Blend: alpha mode Blend; Opaque: the rest).
+    static bool matches(const Draw& draw, Filter filter);
+    // Draws geometry only (shadow maps): positions, model matrix at location 0,
+    // of the instances `order` lists (indices into draws(), in that order; the
+    // shadow maps pass the draws left after culling them against a map's volume).
+    void drawDepthOnly(const gl::Program& program, const std::vector<std::size_t>& order) const;
     // The world position every draw's model matrix is made relative to, in
     // double precision, before it reaches the GPU (camera-relative rendering:
     // the pipeline sets the camera's position each frame, a shadow map its

@@ -678,3 +678,40 @@ TEST(BenchCli, ReusedShadowMapsAreMarkedInThePassTable) {
     EXPECT_NE(row0.find("(reused: maps in lighting/shadow maps)"), std::string::npos) << row0;
     EXPECT_EQ(row1.find("reused"), std::string::npos) << row1;
 }
+
+// docs/bench.md "Shadow-caster culling", at a small size: one bench run with
+// culling off and on side by side; each configuration's shadows line (the
+// record's stats) says casters D/N, all of them drawn without culling and
+// fewer with it, and render --timings prints the same line.
+TEST(BenchCli, ShadowCasterCullingSideBySide) {
+    const fs::path dir = test::tempDir() / "bench-casters";
+    fs::create_directories(dir);
+    const fs::path json = dir / "casters.json";
+    const Result r = run("bench --scene street --sweep shadows.cull_casters=false,true --size 64x36 --frames 1 --quiet "
+                         "--ratio-of \"lighting/shadow maps\" --csv " + (dir / "casters.csv").string() + " --record " +
+                         json.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("lighting/shadow maps ratio to shadows.cull_casters=false"), std::string::npos) << r.out;
+    std::ifstream f(json);
+    const nlohmann::json configs = nlohmann::json::parse(f)["results"]["configs"];
+    ASSERT_EQ(configs.size(), 2u);
+    std::map<std::string, std::pair<long, long>> casters;
+    for (const auto& c : configs) {
+        const std::string line = c["stats"]["shadows"].get<std::string>();
+        const auto at = line.find("casters ");
+        ASSERT_NE(at, std::string::npos) << line;
+        long drawn = 0, total = 0;
+        ASSERT_EQ(std::sscanf(line.c_str() + at, "casters %ld/%ld", &drawn, &total), 2) << line;
+        casters[c["knobs"]["shadows.cull_casters"].get<std::string>()] = {drawn, total};
+    }
+    EXPECT_EQ(casters["false"].first, casters["false"].second);
+    EXPECT_EQ(casters["true"].second, casters["false"].second);
+    EXPECT_LT(casters["true"].first, casters["true"].second);
+
+    const Result t = run("render --scene street --size 64x36 --timings --out " + (dir / "street.png").string());
+    ASSERT_EQ(t.code, 0) << t.err;
+    EXPECT_NE((t.out + t.err).find(std::to_string(casters["true"].first) + "/" + std::to_string(casters["true"].second) +
+                                   ", "),
+              std::string::npos)
+        << t.out << t.err;
+}
