@@ -127,6 +127,10 @@ ReferenceOptions readOptions(CommandLine& cl) {
         throw UsageError(e.what());
     }
     checkOptions(o);
+    if (o.spp == 1 && o.filter != reference::PixelFilter::Box)
+        std::fprintf(stderr, "note: --filter %s does nothing at --spp 1 (one sample, at the pixel's centre)\n", filter.c_str());
+    if (o.spp == 1 && o.buffer == "spp_error")
+        std::fprintf(stderr, "note: spp_error is 0 at --spp 1: one sample has no spread\n");
     return o;
 }
 
@@ -198,6 +202,8 @@ nlohmann::json statistics(const ReferenceOptions& o, const Scene& scene, const r
                             {"pixel_filter", reference::pixelFilterName(model.pixelFilter)},
                             {"spp_error_mean", s.sppErrorMean},
                             {"spp_error_max", s.sppErrorMax},
+                            {"spp_relative_error_mean", reference::meanRelativeSppError(images)},
+                            {"spp_enough", reference::meanRelativeSppError(images) < reference::kSppEnough},
                             {"model", model.canonical()}};
     if (o.throughput) {
         // Side by side in this run: the reference once more (uncached) and Embree alone over the same rays.

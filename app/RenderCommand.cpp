@@ -29,7 +29,8 @@ int runRenderCommand(int argc, char** argv) {
                      "                                 [--preset NAME|FILE]... [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
-                     "                                 [--ao-rays N] [--seed N] [--threads N] [--no-cache] [--cache-dir DIR]\n"
+                     "                                 [--ao-rays N] [--seed N] [--spp N] [--threads N] [--no-cache]\n"
+                     "                                 [--cache-dir DIR]\n"
                      "                                 --out FILE\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
@@ -39,8 +40,9 @@ int runRenderCommand(int argc, char** argv) {
                      "               reference.final, reference.ao and compare.error first trace the CPU reference of\n"
                      "               the view as `reference` does (the scene as the last frame has it; progress on\n"
                      "               stderr, Ctrl+C cancels with exit 130) and hand it to the reference pass\n"
-                     "  --ao-rays, --seed, --threads, --no-cache, --cache-dir  that trace's options, as `reference`\n"
-                     "               takes them (defaults 64, 1, every core, the cache); only with those buffers\n"
+                     "  --ao-rays, --seed, --spp, --threads, --no-cache, --cache-dir  that trace's options, as\n"
+                     "               `reference` takes them (defaults 64, 1, 1, every core, the cache); only with those\n"
+                     "               buffers (reference.spp_error is 0 at --spp 1: one sample has no spread)\n"
                      "  --out        .png writes the displayed (8-bit) view; .exr the raw float values\n"
                      "  --frames     frames counted (timings are medians over them); default 1\n"
                      "  --warmup     frames rendered first and left out of the timings; default 1 when\n"
@@ -77,19 +79,21 @@ int runRenderCommand(int argc, char** argv) {
     // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
     const auto aoRaysGiven = cl.whole("--ao-rays");
     const auto seedGiven = cl.whole("--seed");
+    const auto sppGiven = cl.whole("--spp");
     const auto threadsGiven = cl.whole("--threads");
     const bool noCache = cl.flag("--no-cache");
     const auto cacheDir = cl.value("--cache-dir");
     reference::ViewReferenceOptions referenceOptions;
     referenceOptions.aoRays = aoRaysGiven.value_or(64);
     referenceOptions.seed = seedGiven.value_or(1);
+    referenceOptions.pixelSamples = sppGiven.value_or(1);
     referenceOptions.threads = threadsGiven.value_or(0);
     referenceOptions.useCache = !noCache;
     referenceOptions.cacheDirectory = cacheDir.value_or("");
     referenceOptions.cacheWarning = [](const std::string& why) {
         std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str());
     };
-    const bool referenceOptionGiven = aoRaysGiven || seedGiven || threadsGiven || noCache || cacheDir;
+    const bool referenceOptionGiven = aoRaysGiven || seedGiven || sppGiven || threadsGiven || noCache || cacheDir;
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
@@ -129,8 +133,9 @@ int runRenderCommand(int argc, char** argv) {
     session.resize(run.width, run.height);
     const bool needsReference = session.isReferenceOutput(buffer);
     if (!needsReference && referenceOptionGiven)
-        throw UsageError("render: --ao-rays, --seed, --threads, --no-cache and --cache-dir are the CPU reference's "
-                         "options, for reference.lbuffer, reference.final, reference.ao and compare.error; --buffer " +
+        throw UsageError("render: --ao-rays, --seed, --spp, --threads, --no-cache and --cache-dir are the CPU reference's "
+                         "options, for reference.lbuffer, reference.final, reference.ao, reference.spp_error and "
+                         "compare.error; --buffer " +
                          buffer + " has no reference");
     // AOV's cost estimated from the triangles before the first frame (issue 22).
     const auto estimateStart = std::chrono::steady_clock::now();

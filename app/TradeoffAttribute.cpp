@@ -77,6 +77,11 @@ int runTradeoffAttribute(int argc, char** argv) {
     if (!limits::kAoRays.holds(aoRays))
         throw UsageError("--ao-rays must be between " + std::to_string(limits::kAoRays.min) + " and " +
                          std::to_string(limits::kAoRays.max));
+    try {
+        ErrorAttribution::checkMetricAndBuffer(o.metric, o.buffer);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
     const AttributeFiles files = readFiles(cl, o.run);
     cl.finish("tradeoff --attribute");
     if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");

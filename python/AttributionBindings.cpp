@@ -10,6 +10,7 @@
 #include "python/KnobArguments.h"
 #include "python/ProcessContext.h"
 #include "python/ValueErrors.h"
+#include "headless/CommandLine.h"
 #include "renderer/Error.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/study/CachedReferences.h"
@@ -65,7 +66,7 @@ py::dict resultObject(const AttributionResult& r) {
 }
 
 // On the process's GL context, on its thread, without the GIL (the callbacks take it).
-AttributionResult measure(ErrorAttribution& attribution, int aoRays, bool quiet) {
+AttributionResult measure(ErrorAttribution& attribution, int aoRays, bool quiet, std::vector<std::string>& notes) {
     ProcessContext& pc = processContext();
     if (std::this_thread::get_id() != pc.thread)
         throw Error("attribute must run on the thread that made the GL context (thread " + describeThread(pc.thread) + ")");
@@ -73,7 +74,8 @@ AttributionResult measure(ErrorAttribution& attribution, int aoRays, bool quiet)
     const auto say = [quiet](const std::string& line) {
         if (!quiet) std::fprintf(stderr, "%s\n", line.c_str());
     };
-    const auto warn = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    // The notes go into the result (notes, and the table's note: lines), not to stderr.
+    const auto warn = [&notes](const std::string& line) { notes.push_back(line.rfind("note: ", 0) == 0 ? line.substr(6) : line); };
     const auto stopIfAsked = [] {
         py::gil_scoped_acquire acquire;
         if (PyErr_CheckSignals() != 0) throw Interrupted();
@@ -87,6 +89,7 @@ py::dict attribute(const std::string& scene, const py::object& size, py::object 
                    const std::string& metric, const std::string& buffer, const py::object& aoRays,
                    const py::object& resamples, std::optional<std::string> csv, bool quiet) {
     requirePath(csv, "attribute: csv");
+    if (csv) CommandLine::requireWritable(*csv, "attribution CSV");  // before the renders, as the CLI checks it
     AttributionOptions o;
     applyRunArguments(o.run, scene, preset, settings);
     std::tie(o.run.width, o.run.height) = sizeArg(size, "attribute: size", limits::kSize, "tradeoff --size");
@@ -96,11 +99,13 @@ py::dict attribute(const std::string& scene, const py::object& size, py::object 
     const int rays = intArg(aoRays, "attribute: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
     ErrorAttribution attribution = asValueError([&] { return ErrorAttribution(o); });
     AttributionResult r;
+    std::vector<std::string> notes;
     try {
-        r = measure(attribution, rays, quiet);
+        r = measure(attribution, rays, quiet, notes);
     } catch (const Interrupted&) {
         throw py::error_already_set();  // KeyboardInterrupt
     }
+    r.notes.insert(r.notes.begin(), notes.begin(), notes.end());
     if (csv) writeBenchFile(*csv, ErrorAttribution::csv(r), "attribution CSV");
     return resultObject(r);
 }

@@ -62,6 +62,15 @@ py::dict referenceStats(const reference::ReferenceStatistics& s) {
     return d;
 }
 
+// The statistics with the samples-per-pixel verdict's figure (as reference --stats-out writes them).
+py::dict referenceStats(const reference::ReferenceImages& images) {
+    py::dict d = referenceStats(images.stats);
+    const double relative = reference::meanRelativeSppError(images);
+    d["spp_relative_error_mean"] = relative;
+    d["spp_enough"] = relative < reference::kSppEnough;
+    return d;
+}
+
 py::object sessionReference(WorkbenchSession& s, const std::string& buffer, const py::object& aoRaysObject,
                             const py::object& seedObject, const py::object& threadsObject, bool cache,
                             std::optional<std::string> cacheDir, bool stats, std::optional<std::string> out,
@@ -90,7 +99,7 @@ py::object sessionReference(WorkbenchSession& s, const std::string& buffer, cons
         py::gil_scoped_release release;
         writeImage(*out, *images.buffer(buffer));
     }
-    py::dict statsDict = referenceStats(images.stats);
+    py::dict statsDict = referenceStats(images);
     if (statsOut) {
         py::dict file = statsDict;
         file["scene"] = s.sceneName();

@@ -151,10 +151,11 @@ py::list bufferList(const WorkbenchSession& s, bool details) {
 py::array render(WorkbenchSession& s, const std::string& buffer, const py::object& framesObject,
                  const py::object& warmupObject, std::optional<std::string> record, const py::object& aoRays,
                  const py::object& seed, const py::object& threads, bool cache, std::optional<std::string> cacheDir,
-                 const py::object& progress) {
+                 const py::object& progress, const py::object& spp) {
     const int frames = intArg(framesObject, "render: frames", limits::kFrames, "render --frames");
     const int warmup = intArg(warmupObject, "render: warmup", limits::kWarmup, "render --warmup");
     ReferenceOptions ro = referenceOptions("render", aoRays, seed, threads, cache, cacheDir);
+    ro.pixelSamples = intArg(spp, "render: spp", limits::kPixelSamples, "render --spp");
     requireCallable(progress, "render: progress");
     requirePath(record, "render: record");
     s.checkRender(buffer, frames, warmup);
@@ -224,11 +225,13 @@ void bindFrames(SessionClass& c) {
     c.def("render", &render, py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0,
           py::arg("record") = py::none(), py::arg("ao_rays") = 64, py::arg("seed") = 1, py::arg("threads") = 0,
           py::arg("cache") = true, py::arg("cache_dir") = py::none(), py::arg("progress") = py::none(),
+          py::arg("spp") = 1,
           "Renders warmup + frames frames and returns `buffer` of the last: H x W x C, top row first;\n"
           "uint8 for 8-bit display outputs (final, tonemap.result, ...), float32 for the rest.\n"
           "record=PATH also writes the experiment record render --record writes (replay measures it again).\n"
-          "reference.lbuffer, reference.final, reference.ao and compare.error: the CPU reference of the view is\n"
-          "traced first (as `reference`, through its cache; ao_rays, seed, threads, cache, cache_dir as reference()'s)\n"
+          "reference.lbuffer, reference.final, reference.ao, reference.spp_error and compare.error: the CPU reference\n"
+          "of the view is traced first (as `reference`, through its cache; ao_rays, seed, spp, threads, cache,\n"
+          "cache_dir as reference()'s; reference.spp_error is 0 at spp=1)\n"
           "and handed to the reference pass; progress(fraction) is called while it traces, Ctrl-C cancels.\n")
         .def("timings",
              [](const WorkbenchSession& s) {

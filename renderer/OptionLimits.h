@@ -97,6 +97,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"render", "--warmup", F::Whole, kWarmup, "frames"},
     {"render", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"render", "--seed", F::Whole, kSeed, "seed"},
+    {"render", "--spp", F::Whole, kPixelSamples, "samples per pixel"},
     {"render", "--threads", F::Whole, kReferenceThreads, "threads, 0: every core"},
     {"bench", "--size", F::SizeList, kSize, "pixels"},
     {"bench", "--lights", F::WholeList, kBenchLights, "lights"},

@@ -26,6 +26,13 @@ def number(text):
     return math.nan if text == "" else float(text)
 
 
+def short_interval(value, lo, hi):
+    """'0.0691 [0.0615, 0.0778]'; the value alone without an interval."""
+    if lo == "" or hi == "":
+        return "%.3g" % value
+    return "%.3g [%.3g, %.3g]" % (value, float(lo), float(hi))
+
+
 def read(path):
     with open(path, newline="") as f:
         reader = csv.reader(f)
@@ -69,22 +76,29 @@ def main():
                 continue
             unclear = not (lo > 0 or hi < 0)
             ax.bar(i + (k - 0.5) * bar, v, bar, color=f"C{k}", alpha=0.45 if unclear else 0.9,
-                   hatch="//" if unclear else None, label=label if i == 0 else None)
+                   hatch="//" if unclear else None)
             ax.errorbar(i + (k - 0.5) * bar, v, yerr=[[max(0.0, v - lo)], [max(0.0, hi - v)]], color="black",
                         capsize=3, linewidth=1)
+    # The legend from its own handles: a bar's style (hatched when its interval holds 0) is not the series'.
+    from matplotlib.patches import Patch
+    from matplotlib.lines import Line2D
+    handles = [Patch(color="C0", alpha=0.9, label="removed: as_is - only_exact"),
+               Patch(color="C1", alpha=0.9, label="added: only_approximate - all_exact"),
+               Patch(facecolor="white", edgecolor="grey", hatch="//", label="interval holds 0")]
     total = number(rows[1]["removed"])
     if not math.isnan(total):
-        ax.axhline(total, color="C3", linestyle="--", linewidth=1,
-                   label=f"total as_is - all_exact [{rows[1]['removed_lo']}, {rows[1]['removed_hi']}]")
+        ax.axhline(total, color="C3", linestyle="--", linewidth=1)
+        handles.append(Line2D([], [], color="C3", linestyle="--", label="total as_is - all_exact %s"
+                              % short_interval(total, rows[1]["removed_lo"], rows[1]["removed_hi"])))
     ax.axhline(0.0, color="black", linewidth=0.6)
     ax.set_xticks(range(len(families)))
     ax.set_xticklabels([r["row"] for r in families], rotation=30, ha="right")
     metric, buffer = rows[0]["metric"], rows[0]["buffer"]
     ax.set_ylabel(f"{metric} of {buffer}: the family's part (95% CI, paired)")
-    ax.set_title(f"where the error comes from: as_is {rows[0]['error']}, all exact {rows[1]['error']}"
-                 " (hatched: cannot be told from 0)", fontsize=9)
+    ax.set_title("where the error comes from: as is %.3g, all exact %.3g"
+                 % (number(rows[0]["error"]), number(rows[1]["error"])), fontsize=9)
     ax.grid(True, axis="y", alpha=0.3)
-    ax.legend(loc="best", fontsize=8)
+    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=2, fontsize=8)
     fig.tight_layout()
     try:
         fig.savefig(args.out, format="png")

@@ -16,7 +16,8 @@ namespace {
 std::string interval(double v, double lo, double hi) {
     if (std::isnan(v)) return "-";
     char text[96];
-    std::snprintf(text, sizeof(text), "%.3g [%.3g, %.3g]", v, lo, hi);
+    if (std::isnan(lo) || std::isnan(hi)) std::snprintf(text, sizeof(text), "%.2g (no interval)", v);
+    else std::snprintf(text, sizeof(text), "%.2g [%.2g, %.2g]", v, lo, hi);
     return text;
 }
 
@@ -36,7 +37,7 @@ void AttributionView::draw(UiState& state, RenderSession& session) {
     if (!error.empty()) wrappedColored(kErrorColor, error);
     if (!state.attribution.done()) return;
     const AttributionResult& r = state.attribution.result();
-    table(r);
+    table(r, session);
     bars(r);
 }
 
@@ -78,6 +79,9 @@ bool AttributionView::start(UiState& state, RenderSession& session) {
         return false;
     }
     try {
+        viewKey = viewKeyOf(session);
+        against = session.pipeline().pass<ReferencePass>()->reference()->describe + ", " + std::to_string(current.width) +
+                  "x" + std::to_string(current.height);
         state.attribution.start(session.knobs(), session.scene(), std::move(truth), "flip", "final");
         return true;
     } catch (const std::exception& e) {
@@ -102,13 +106,27 @@ void AttributionView::updateWaiting(UiState& state, RenderSession& session) {
     }
 }
 
-void AttributionView::table(const AttributionResult& r) {
+std::string AttributionView::viewKeyOf(RenderSession& session) {
+    std::string key;
+    for (int id = 0; id < static_cast<int>(session.knobs().size()); ++id) key += session.knobs().format(id) + ",";
+    const Camera& c = session.camera();
+    char camera[256];
+    std::snprintf(camera, sizeof(camera), "%g,%g,%g;%g,%g,%g;%g;%dx%d", c.position.x, c.position.y, c.position.z,
+                  c.target.x, c.target.y, c.target.z, c.fovYDegrees, session.pipeline().width(), session.pipeline().height());
+    return key + camera;
+}
+
+void AttributionView::table(const AttributionResult& r, RenderSession& session) const {
+    if (viewKeyOf(session) != viewKey)
+        wrappedColored(kErrorColor, "of an earlier view: the settings, the camera or the size changed since; attribute "
+                                    "again for this one");
+    wrappedColored(kDimColor, "against the " + against);
     ImGui::Text("FLIP of final: as is %s, all exact %s", interval(r.asIs.value, r.asIs.low, r.asIs.high).c_str(),
                 interval(r.allExact.value, r.allExact.low, r.allExact.high).c_str());
     if (ImGui::BeginTable("attribution", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("family");
-        ImGui::TableSetupColumn("removed (exact alone)");
-        ImGui::TableSetupColumn("added (approximate alone)");
+        ImGui::TableSetupColumn("removed");
+        ImGui::TableSetupColumn("added");
         ImGui::TableHeadersRow();
         for (const AttributionFamily& f : r.families) {
             ImGui::TableNextRow();
@@ -126,6 +144,7 @@ void AttributionView::table(const AttributionResult& r) {
     std::snprintf(sums, sizeof(sums), "total %s; the parts sum to %.3g removed, %.3g added (they need not add up)",
                   interval(r.total.value, r.total.low, r.total.high).c_str(), r.sumRemoved, r.sumAdded);
     wrappedColored(kDimColor, sums);
+    wrappedColored(kDimColor, "removed: as is - this family alone exact; added: this family alone approximate - all exact");
     for (const std::string& n : r.notes) wrappedColored(kDimColor, "note: " + n);
 }
 

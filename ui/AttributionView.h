@@ -23,6 +23,8 @@ struct AttributionView {
     std::string error;               // why the last attribution did not start or stopped
     bool waitingForReference = false;
     std::uint64_t waitingJobsEnded = 0;
+    std::string viewKey;    // the view attributed: every knob, the camera, the size (viewKeyOf)
+    std::string against;    // what it was measured against (the reference pass's description, the size)
 
     void draw(UiState& state, RenderSession& session);
 
@@ -30,7 +32,8 @@ private:
     bool start(UiState& state, RenderSession& session);
     void updateWaiting(UiState& state, RenderSession& session);
     void controls(UiState& state, RenderSession& session);
-    static void table(const AttributionResult& r);
+    static std::string viewKeyOf(RenderSession& session);
+    void table(const AttributionResult& r, RenderSession& session) const;
     static void bars(const AttributionResult& r);
 };
 

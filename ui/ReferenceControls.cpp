@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "renderer/passes/ReferencePass.h"
@@ -12,8 +13,8 @@ namespace dw::ui {
 std::string ReferenceControls::currentKey(RenderSession& session, reference::ReferenceRequest* request,
                                           reference::ReferenceModel* model) const {
     reference::ReferenceModel m = reference::ReferenceModel::fromKnobs(session.knobs(), session.scene());
-    m.aoRays = aoRays;
-    m.pixelSamples = pixelSamples;
+    m.aoRays = std::clamp(aoRays, 1, 1024);
+    m.pixelSamples = std::clamp(pixelSamples, 1, 256);
     reference::ReferenceRequest r;
     r.camera = session.camera();
     r.width = session.pipeline().width();
@@ -47,8 +48,10 @@ void ReferenceControls::menuItems(UiState& state) {
                           "reference.lbuffer, reference.final, reference.ao and compare.error in the inspector");
     if (job_.running() && ImGui::MenuItem("Cancel the CPU reference")) job_.cancel();
     ImGui::SetNextItemWidth(120);
-    ImGui::SliderInt("AO rays", &aoRays, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic);
-    ImGui::SliderInt("samples per pixel", &pixelSamples, 1, 256, "%d", ImGuiSliderFlags_Logarithmic);
+    // Held to reference --ao-rays' and --spp's ranges, also when typed (Ctrl+click).
+    ImGui::SliderInt("AO rays", &aoRays, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderInt("samples per pixel", &pixelSamples, 1, 256, "%d",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("reference --spp: 1 traces the pixel's centre; N averages N points over the pixel\n"
                           "(the truth of its area; reference.spp_error shows each pixel's standard error)");

@@ -153,7 +153,7 @@ double meanRelativeSppError(const ReferenceImages& images) {
 }
 
 std::string pixelSamplesVerdict(const ReferenceImages& images, const ReferenceModel& model) {
-    constexpr double kHalfStep = 0.5 / 255.0;
+    constexpr double kHalfStep = kSppEnough;
     const double mean = meanRelativeSppError(images);
     const bool enough = mean < kHalfStep;
     // The standard error falls as 1/sqrt(N): the N that would bring it under, rounded up to a power of 4.
@@ -164,7 +164,7 @@ std::string pixelSamplesVerdict(const ReferenceImages& images, const ReferenceMo
                   "pixel samples: %d (%s), relative standard error of the pixels' luminance: mean %.4g: %s (half an "
                   "8-bit step is %.4g)%s",
                   model.pixelSamples, pixelFilterName(model.pixelFilter), mean, enough ? "enough" : "not enough",
-                  kHalfStep, enough ? "" : ("; about --spp " + std::to_string(next) + " would be").c_str());
+                  kHalfStep, enough ? "" : ("; about --spp " + std::to_string(next) + " would be enough").c_str());
     return text;
 }
 
@@ -189,6 +189,7 @@ struct Trace {
     std::vector<LightInView> lights;
     SkyReference sky;
     glm::dvec3 ambient;
+    const std::atomic<bool>* cancel = nullptr;  // set: a pixel stops between its samples (many samples a pixel)
 };
 
 // What the pixels write, and the rays a tile cast.
@@ -366,6 +367,8 @@ void tracePixel(const Trace& t, int x, int row, TraceOutput& out, TileCounts& co
     double ao = 0.0, shadow = 0.0, aoVariance = 0.0, aoError = -1.0, lum = 0.0, lumSq = 0.0;
     int sky = 0, withAo = 0;
     for (int i = 0; i < n; ++i) {
+        // Asked between samples too: a pixel of thousands of samples must not delay a cancel.
+        if (t.cancel && (i & 15) == 15 && t.cancel->load(std::memory_order_relaxed)) return;
         const glm::dvec2 o = pixelOffset(t, p, i, n);
         SampleOutput s;
         // The first sample keeps the pixel's own AO pattern (one sample: the image it always was).
@@ -448,7 +451,7 @@ ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const 
     out.stats.triangles = rays.triangleCount();
     out.stats.threads = request.threads > 0 ? request.threads : tbb::this_task_arena::max_concurrency();
     const CameraRays camera(request.camera, W, H);
-    const Trace trace{scene,
+    Trace trace{scene,
                       rays,
                       model,
                       camera,
@@ -456,6 +459,7 @@ ReferenceImages renderReference(const Scene& scene, const RayScene& rays, const 
                       lightsInView(scene, model, rays.origin(), cameraPosition, camera.worldToView),
                       SkyReference(scene, model),
                       glm::dvec3(scene.ambient)};
+    if (progress) trace.cancel = &progress->cancel;
 
     out.lbuffer = makeImage(W, H, 4, 1.0f);
     out.ao = makeImage(W, H, 1, 1.0f);

@@ -103,7 +103,9 @@ struct ReferenceImages {
 // "pixel samples: 16 (box), relative standard error mean 0.0012 (max 0.31):
 // enough (under 0.00196)" or "... not enough ...: try --spp 64".
 std::string pixelSamplesVerdict(const ReferenceImages& images, const ReferenceModel& model);
+// The figure the verdict reads: the mean over pixels of spp_error / (L + 1e-3).
 double meanRelativeSppError(const ReferenceImages& images);
+constexpr double kSppEnough = 0.5 / 255.0;  // the verdict's threshold: half an 8-bit step
 
 // The buffer names a reference has, in order.
 const std::vector<std::string>& referenceBuffers();

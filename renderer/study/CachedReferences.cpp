@@ -52,7 +52,7 @@ void CachedReferences::noteUnmodelled(const KnobRegistry& knobs, const reference
     const reference::KnobReport report = reference::reportKnobs(knobs, model);
     if (report.unmodelledOn.empty() || !hooks_.warning) return;
     std::string on;
-    for (const auto& n : report.unmodelledOn) on += " " + n;
+    for (const auto& n : report.unmodelledOn) on += (on.empty() ? " " : ", ") + n;
     hooks_.warning("note: the reference's final image has no" + on + " (set them false to measure the shading alone)");
 }
 

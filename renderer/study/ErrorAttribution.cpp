@@ -10,6 +10,7 @@
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
 #include "renderer/bench/CsvLine.h"
+#include "renderer/metrics/Bootstrap.h"
 #include "renderer/metrics/ImageComparison.h"
 #include "renderer/reference/ReferenceModel.h"
 #include "renderer/scene/SceneLoader.h"
@@ -121,10 +122,22 @@ std::string number(double v) {
     return text;
 }
 
-// "0.0123 [0.0110, 0.0135]".
+// "0.0123 [0.0110, 0.0135]"; "0.0123 (no interval)" without one.
 std::string withInterval(double v, double lo, double hi) {
     if (std::isnan(v)) return "-";
+    if (std::isnan(lo) || std::isnan(hi)) return number(v) + " (no interval)";
     return number(v) + " [" + number(lo) + ", " + number(hi) + "]";
+}
+
+// Every interval of the result withdrawn (too few tiles to resample).
+void withdrawIntervals(AttributionResult& r) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (ErrorEstimate* e : {&r.asIs, &r.allExact}) e->low = e->high = nan;
+    r.total.low = r.total.high = nan;
+    for (AttributionFamily& f : r.families) {
+        for (ErrorEstimate* e : {&f.onlyExact, &f.onlyApproximate}) e->low = e->high = nan;
+        for (ErrorDifference* d : {&f.removed, &f.added}) d->low = d->high = nan;
+    }
 }
 
 // Whether a part's interval holds 0: that part cannot be told from none.
@@ -140,9 +153,7 @@ struct AttributionRun::Measured {
 
 void AttributionRun::start(const KnobRegistry& asIs, const Scene& scene, FloatImage truth, const std::string& metric,
                            const std::string& buffer, int resamples) {
-    if (metric != "flip" && metric != "rms")
-        throw Error("--attribute needs an error metric whose parts subtract: flip or rms, got '" + metric + "'");
-    TradeoffRunner::gpuOutput(buffer);
+    ErrorAttribution::checkMetricAndBuffer(metric, buffer);
     asIs_ = asIs;
     truth_ = std::move(truth);
     metric_ = metric;
@@ -245,14 +256,25 @@ void AttributionRun::finish() {
         result_.sumRemoved += a.removed.value;
         result_.sumAdded += a.added.value;
     }
+    // A bootstrap of fewer tiles than an interval needs only repeats them.
+    const size_t tiles = asIs.tiles.sums.size();
+    if (!enoughForInterval(tiles)) {
+        withdrawIntervals(result_);
+        result_.notes.push_back("only " + std::to_string(tiles) + " 16x16-px tile(s): too few for an interval (at least " +
+                                std::to_string(kMinIntervalSamples) + "); no part can be told from 0");
+    }
     running_ = false;
     done_ = true;
 }
 
+void ErrorAttribution::checkMetricAndBuffer(const std::string& metric, const std::string& buffer) {
+    if (metric != "flip" && metric != "rms")
+        throw Error("--attribute needs an error metric whose parts subtract: flip or rms, got '" + metric + "'");
+    TradeoffRunner::gpuOutput(buffer);
+}
+
 ErrorAttribution::ErrorAttribution(AttributionOptions options) : o_(std::move(options)) {
-    if (o_.metric != "flip" && o_.metric != "rms")
-        throw Error("--attribute needs an error metric whose parts subtract: flip or rms, got '" + o_.metric + "'");
-    TradeoffRunner::gpuOutput(o_.buffer);
+    checkMetricAndBuffer(o_.metric, o_.buffer);
     if (o_.resamples < 1) throw Error("--resamples must be at least 1");
     o_.run.validate();
     scene_ = loadScene(o_.run.sceneSpec());
@@ -267,7 +289,7 @@ AttributionResult ErrorAttribution::run(const TradeoffReference& reference,
     AttributionRun run;
     run.start(session.knobs(), scene_, std::move(truth), o_.metric, o_.buffer, o_.resamples);
     for (int n = 1; run.running(); ++n) {
-        if (say) say("tradeoff --attribute: configuration " + std::to_string(n));
+        if (say) say("tradeoff --attribute: configuration " + std::to_string(n) + " of " + std::to_string(run.configurations()));
         run.step(session);
     }
     if (!run.error().empty()) throw Error(run.error());

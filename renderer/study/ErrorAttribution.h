@@ -86,6 +86,7 @@ public:
     bool running() const { return running_; }
     bool done() const { return done_; }
     double progress() const;  // configurations measured over all, 0..1
+    size_t configurations() const { return sets_.size(); }  // rows measured (rows that set nothing new share a frame)
     const std::string& error() const { return error_; }
     const AttributionResult& result() const { return result_; }
 
@@ -109,6 +110,8 @@ public:
     // Checks the metric (flip or rms), the buffer and the run, loads the
     // scene: Error / FileError before any GL.
     explicit ErrorAttribution(AttributionOptions options);
+    // Error for a metric other than flip or rms, or an unknown buffer.
+    static void checkMetricAndBuffer(const std::string& metric, const std::string& buffer);
 
     // Renders each distinct configuration once (untimed) and measures it
     // (AttributionRun, stepped to the end).
