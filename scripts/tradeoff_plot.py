@@ -40,7 +40,7 @@ def number(text):
     return float(text)
 
 
-def read(path, time="frame"):
+def read(path, time="frame", cost="gpu_ms"):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader, None)
@@ -53,10 +53,12 @@ def read(path, time="frame"):
         index = {name: i for i, name in enumerate(header)}
         # --time PASS: the pass's median on the x axis (no interval in the CSV).
         ms = "frame_gpu_ms" if time == "frame" else "gpu_ms." + time
+        if cost != "gpu_ms":  # --cost COUNTER: exact, its interval is the value itself
+            ms = cost if time == "frame" else cost + "." + time
         if ms not in index:
-            raise ValueError(f"{path}: no column {ms} (--time {time})")
-        ms_lo = "frame_gpu_ms_lo" if time == "frame" else ms
-        ms_hi = "frame_gpu_ms_hi" if time == "frame" else ms
+            raise ValueError(f"{path}: no column {ms} (--time {time}, --cost {cost})")
+        ms_lo = "frame_gpu_ms_lo" if time == "frame" and cost == "gpu_ms" else ms
+        ms_hi = "frame_gpu_ms_hi" if time == "frame" and cost == "gpu_ms" else ms
         rows = []
         for row in reader:
             if not row:
@@ -85,11 +87,13 @@ def main():
     parser.add_argument("--size", default="800x600")
     parser.add_argument("--overlay", action="append", default=[], help="another tradeoff CSV drawn over it")
     parser.add_argument("--time", default="frame", help="the x axis: frame (frame_gpu_ms) or a pass (gpu_ms.PASS)")
+    parser.add_argument("--cost", default="gpu_ms",
+                        help="the x axis' quantity: gpu_ms, or a counter (fragments, samples, ... of --time's span)")
     args = parser.parse_args()
     try:
         width, height = (int(v) for v in args.size.split("x"))
-        axes, rows = read(args.csv, args.time)
-        overlays = [read(path, args.time) for path in args.overlay]
+        axes, rows = read(args.csv, args.time, args.cost)
+        overlays = [read(path, args.time, args.cost) for path in args.overlay]
     except (ValueError, OSError) as e:
         print(f"tradeoff_plot: {e}", file=sys.stderr)
         return 2
@@ -181,8 +185,11 @@ def main():
         overlay_points += [(r["ms"], r["error"]) for r in o_points]
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
-    ax.set_xlabel("GPU frame ms (median, 95% CI)" if args.time == "frame"
-                  else f"GPU ms of the {args.time} pass (median)")
+    if args.cost != "gpu_ms":
+        ax.set_xlabel(f"{args.cost} per frame (exact)" if args.time == "frame" else f"{args.cost} of the {args.time} pass (exact)")
+    else:
+        ax.set_xlabel("GPU frame ms (median, 95% CI)" if args.time == "frame"
+                      else f"GPU ms of the {args.time} pass (median)")
     ax.set_ylabel(f"{metric} of {buffer} (95% CI)")
     over = " over all cameras" if shown and shown[0]["camera"] == "all" else ""
     ax.set_title(f"tradeoff: {metric} of {buffer} against GPU time{over}")

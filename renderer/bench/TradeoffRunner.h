@@ -54,6 +54,8 @@ struct TradeoffOptions {
     // rows' buffer reads "<buffer>:shadow_edges".
     std::string mask;
     std::string time = "frame";  // what the front ranks by: "frame" or a pass's gpu_ms (TradeoffTable::markParetoFront)
+    std::string cost = "gpu_ms";  // the front's cost axis: gpu_ms or a counter (TradeoffTable::costOf)
+    bool counters = true;         // count each pass's cost counters (PassCounts.h) in the timed frames
     std::vector<std::string> against;  // empty: the reference; else knob=value on top of each point
     int resamples = 2000;
     BenchShard shard;  // points whose number % count == index
@@ -110,6 +112,8 @@ private:
     void warnAovCost(RenderSession& session) const;
     void warn(const std::string& line) const;
     void checkTimedPassName(RenderSession& session) const;
+    // A --cost counter the driver lacks is refused before anything renders.
+    void checkCostCounter() const;
     void checkTimedPass(const RunnerTimings& timings) const;
     FloatImage againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
                             std::map<std::string, FloatImage>& rendered) const;

@@ -56,6 +56,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
+TradeoffRow::TradeoffRow() { frameCounts.fill(kNaN); }
+
 std::string TradeoffTable::axisValue(const TradeoffRow& row, const std::string& axis) const {
     for (size_t i = 0; i < axes.size() && i < row.axisValues.size(); ++i)
         if (axes[i] == axis) return row.axisValues[i];
@@ -74,35 +76,69 @@ double TradeoffTable::timeOf(const TradeoffRow& row, const std::string& time) co
     return time == "frame" ? row.frameGpuMs : passGpuMs(row, time);
 }
 
-void TradeoffTable::markParetoFront(const std::string& time) {
+double TradeoffTable::passCount(const TradeoffRow& row, const std::string& pass, int counter) const {
+    for (size_t i = 0; i < passes.size() && i < row.passCounts.size(); ++i)
+        if (passes[i] == pass) return row.passCounts[i][static_cast<size_t>(counter)];
+    return kNaN;
+}
+
+double TradeoffTable::costOf(const TradeoffRow& row, const std::string& time, const std::string& cost) const {
+    if (cost == "gpu_ms") return timeOf(row, time);
+    const int counter = PassCounts::index(cost);
+    if (counter < 0) return kNaN;
+    return time == "frame" ? row.frameCounts[static_cast<size_t>(counter)] : passCount(row, time, counter);
+}
+
+bool TradeoffTable::isCost(const std::string& cost) { return cost == "gpu_ms" || PassCounts::index(cost) >= 0; }
+
+std::string TradeoffTable::costNames() {
+    std::string s = "gpu_ms";
+    for (int i = 0; i < PassCounts::kCount; ++i) s += std::string(", ") + PassCounts::name(i);
+    return s;
+}
+
+bool TradeoffTable::hasCounter(int counter) const {
+    return std::any_of(rows.begin(), rows.end(),
+                       [&](const TradeoffRow& r) { return !std::isnan(r.frameCounts[static_cast<size_t>(counter)]); });
+}
+
+void TradeoffTable::markParetoFront(const std::string& time, const std::string& cost) {
     if (rows.empty()) throw Error("no points to compare: the sweep is empty");
     if (time != "frame" && std::find(passes.begin(), passes.end(), time) == passes.end())
         throw Error("--time " + time + ": no pass of that name was timed (expected frame or one of: " +
                     (passes.empty() ? std::string("none") : joined(passes)) + ")");
+    if (!isCost(cost)) throw Error("--cost " + cost + ": expected one of " + costNames());
+    if (cost != "gpu_ms" && !hasCounter(PassCounts::index(cost)))
+        throw Error("--cost " + cost + ": no point has " + cost +
+                    " counted (measured without counters, or the driver lacks GL_ARB_pipeline_statistics_query)");
     std::map<std::tuple<std::string, std::string, std::string>, std::vector<size_t>> groups;
     for (size_t i = 0; i < rows.size(); ++i) groups[{rows[i].camera, rows[i].metric, rows[i].buffer}].push_back(i);
     for (const auto& [key, members] : groups) {
         const bool lower = lowerIsBetter(std::get<1>(key));
         std::vector<ParetoPoint> points;
         points.reserve(members.size());
-        for (size_t i : members) points.push_back({timeOf(rows[i], time), lower ? rows[i].error : -rows[i].error});
+        for (size_t i : members) points.push_back({costOf(rows[i], time, cost), lower ? rows[i].error : -rows[i].error});
         const ParetoFront front(points);
         for (size_t k = 0; k < members.size(); ++k) rows[members[k]].pareto = front.contains(k);
     }
 }
 
 std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& axes,
-                                                const std::vector<std::string>& passes) {
+                                                const std::vector<std::string>& passes, bool counted) {
     std::vector<std::string> c = {"point"};
     c.insert(c.end(), axes.begin(), axes.end());
     c.push_back("camera");
     c.insert(c.end(), std::begin(kMiddle), std::end(kMiddle));
     for (const auto& p : passes) c.push_back(kPassPrefix + p);
+    for (int i = 0; counted && i < PassCounts::kCount; ++i) {
+        c.push_back(PassCounts::name(i));
+        for (const auto& p : passes) c.push_back(std::string(PassCounts::name(i)) + "." + p);
+    }
     c.push_back("pareto");
     return c;
 }
 
-std::vector<std::string> TradeoffTable::columns() const { return columns(axes, passes); }
+std::vector<std::string> TradeoffTable::columns() const { return columns(axes, passes, counted); }
 
 std::string TradeoffTable::csv() const {
     std::ostringstream out;
@@ -117,6 +153,10 @@ std::string TradeoffTable::csv() const {
             << number(r.error) << "," << number(r.errorLo) << "," << number(r.errorHi) << "," << r.frames << ","
             << number(r.frameGpuMs) << "," << number(r.frameGpuMsLo) << "," << number(r.frameGpuMsHi);
         for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passGpuMs.size() ? r.passGpuMs[p] : kNaN);
+        for (size_t i = 0; counted && i < PassCounts::kCount; ++i) {
+            out << "," << number(r.frameCounts[i]);
+            for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passCounts.size() ? r.passCounts[p][i] : kNaN);
+        }
         out << "," << (r.pareto ? 1 : 0) << "\n";
     }
     return out.str();
@@ -132,7 +172,7 @@ FileError cellError(const std::string& path, int lineNo, size_t column, const st
 // fixed middle (metric .. frame_gpu_ms_hi), a gpu_ms.<pass> each, pareto.
 struct CsvLayout {
     std::vector<std::string> header;
-    size_t cameraCol = 0, middle = 0, passStart = 0;
+    size_t cameraCol = 0, middle = 0, passStart = 0, countStart = 0;
 };
 
 // The header line: names unique and non-empty, the fixed columns where they
@@ -162,13 +202,23 @@ CsvLayout parseHeader(const std::string& line, const std::string& path, const st
     }
     if (header.back() != "pareto" || header.size() <= col)
         throw at(header.size() - 1, "expected 'pareto' as the last column, got '" + header.back() + "'");
-    for (; col + 1 < header.size(); ++col) {
+    for (; col + 1 < header.size() && header[col] != PassCounts::name(0); ++col) {
         if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
             throw at(col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
         t.passes.push_back(header[col].substr(kPassPrefix.size()));
     }
     l.middle = l.cameraCol + 1;                   // "metric"
     l.passStart = l.middle + std::size(kMiddle);  // the first gpu_ms.<pass>
+    l.countStart = col;
+    t.counted = col + 1 < header.size();
+    // The counters: each one's frame column, then one per pass in the passes' order.
+    for (int i = 0; t.counted && i < PassCounts::kCount; ++i)
+        for (size_t p = 0; p <= t.passes.size(); ++p, ++col) {
+            const std::string want = p == 0 ? PassCounts::name(i) : PassCounts::name(i) + ("." + t.passes[p - 1]);
+            if (col + 1 >= header.size() || header[col] != want)
+                throw at(col, "expected the counter column '" + want + "', got '" + (col < header.size() ? header[col] : "") + "'");
+        }
+    if (col + 1 != header.size()) throw at(col, "expected 'pareto', got '" + header[col] + "'");
     return l;
 }
 
@@ -216,6 +266,17 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.frameGpuMsLo = real(l.middle + 7, true);
     r.frameGpuMsHi = real(l.middle + 8, true);
     for (size_t p = 0; p < passCount; ++p) r.passGpuMs.push_back(real(l.passStart + p, true));
+    r.passCounts.assign(passCount, CounterValues{});
+    for (auto& c : r.passCounts) c.fill(kNaN);
+    const bool counted = l.countStart + 1 < header.size();
+    for (size_t i = 0; counted && i < PassCounts::kCount; ++i)
+        for (size_t p = 0; p <= passCount; ++p) {
+            const size_t col = l.countStart + i * (passCount + 1) + p;
+            const double v = real(col, false);
+            if (!std::isnan(v) && !(std::isfinite(v) && v >= 0.0))
+                throw at(col, header[col] + ": expected a count (at least 0) or nothing, got '" + f[col] + "'");
+            (p == 0 ? r.frameCounts[i] : r.passCounts[p - 1][i]) = v;
+        }
     const size_t last = header.size() - 1;
     if (f[last] != "0" && f[last] != "1") throw at(last, "pareto: expected 0 or 1, got '" + f[last] + "'");
     r.pareto = f[last] == "1";
@@ -258,7 +319,7 @@ private:
 TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string& path) {
     std::istringstream in(text);
     std::string line;
-    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));
+    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));  // counters optional
     if (!std::getline(in, line) || line.empty() || line == "\r")
         throw FileError(path, "line 1: empty (expected the tradeoff CSV header " + expected + ")");
     TradeoffTable t;
@@ -292,11 +353,12 @@ TradeoffTable TradeoffTable::readCsv(const std::string& path) {
 void TradeoffTable::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "tradeoff CSV"); }
 
 TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names,
-                                   const std::string& time) {
+                                   const std::string& time, const std::string& cost) {
     if (parts.empty()) throw Error("nothing to merge");
     auto nameOf = [&](size_t p) { return p < names.size() ? names[p] : "part " + std::to_string(p + 1); };
     TradeoffTable all;
     all.axes = parts.front().axes;
+    for (const auto& part : parts) all.counted = all.counted || part.counted;
     for (const auto& part : parts)
         for (const auto& pass : part.passes)
             if (std::find(all.passes.begin(), all.passes.end(), pass) == all.passes.end()) all.passes.push_back(pass);
@@ -319,9 +381,15 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
                             nameOf(a->second.second) + " and " + nameOf(p) + " (not shards of one sweep)");
             TradeoffRow row = r;
             row.passGpuMs.assign(all.passes.size(), kNaN);
-            for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k)
-                row.passGpuMs[static_cast<size_t>(
-                    std::find(all.passes.begin(), all.passes.end(), part.passes[k]) - all.passes.begin())] = r.passGpuMs[k];
+            CounterValues none;
+            none.fill(kNaN);
+            row.passCounts.assign(all.passes.size(), none);
+            for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k) {
+                const auto to = static_cast<size_t>(
+                    std::find(all.passes.begin(), all.passes.end(), part.passes[k]) - all.passes.begin());
+                row.passGpuMs[to] = r.passGpuMs[k];
+                if (k < r.passCounts.size()) row.passCounts[to] = r.passCounts[k];
+            }
             all.rows.push_back(std::move(row));
         }
     }
@@ -330,7 +398,7 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
         if (a.camera != b.camera) return cameraBefore(a.camera, b.camera);
         return false;
     });
-    all.markParetoFront(time);
+    all.markParetoFront(time, cost);
     return all;
 }
 

@@ -24,13 +24,27 @@
 //                              the shadow maps drawn inside the pass that shades
 //                              their light when shadows.reuse_map is on (the
 //                              shadows pass then draws none: its time is ~0)
+//   <counter>,<counter>.<pass>...
+//                              only when counted: for each counter of PassCounts
+//                              (fragments, samples, primitives, vertices, compute,
+//                              bytes) the frame's (sum over its passes), then
+//                              each pass's; exact, the same in every counted
+//                              frame of a camera (an "all" row: the mean over
+//                              the cameras); empty where not measured
 //   pareto                     1 on the front, else 0
 // Numbers are written in the shortest form that reads back to the same double,
 // so a table read back has the same front. Needs no GL.
+#include <array>
 #include <string>
 #include <vector>
 
+#include "renderer/graph/PassCounts.h"
+
 namespace dw {
+
+// A row's cost counters (PassCounts order); NaN: not measured. Whole numbers
+// for one camera; the mean over the cameras in an "all" row.
+using CounterValues = std::array<double, PassCounts::kCount>;
 
 struct TradeoffRow {
     int point = 0;
@@ -42,7 +56,10 @@ struct TradeoffRow {
     int frames = 0;
     double frameGpuMs = 0.0, frameGpuMsLo = 0.0, frameGpuMsHi = 0.0;  // NaN: not measured
     std::vector<double> passGpuMs;  // one per TradeoffTable::passes; NaN: not run there
+    CounterValues frameCounts;                // the frame's (sums over its passes)
+    std::vector<CounterValues> passCounts;    // one per TradeoffTable::passes
     bool pareto = false;
+    TradeoffRow();
 };
 
 class TradeoffTable {
@@ -52,6 +69,7 @@ public:
     std::vector<std::string> axes;    // the swept axes' names, in column order
     std::vector<std::string> passes;  // the passes of the gpu_ms.<pass> columns, in column order
     std::vector<TradeoffRow> rows;
+    bool counted = false;             // the CSV carries the counter columns
 
     // The value of `axis` in a row ("" when the table has no such axis).
     std::string axisValue(const TradeoffRow& row, const std::string& axis) const;
@@ -71,12 +89,28 @@ public:
     // has no time, so is off the front. Throws dw::Error when there are no
     // rows ("no points to compare: the sweep is empty") or the pass has no
     // column (the message lists the passes).
-    void markParetoFront(const std::string& time = "frame");
+    // `cost` (tradeoff --cost) is the front's cost axis: "gpu_ms" (the
+    // default, as above) or a counter of `time`'s span (PassCounts::name:
+    // the frame's sum or that pass's); a counter has no noise, its interval is
+    // the value itself. Throws dw::Error for an unknown cost, or a counter the
+    // table does not hold ("no row has fragments counted").
+    void markParetoFront(const std::string& time = "frame", const std::string& cost = "gpu_ms");
     // The time a front ranks by in a row: frameGpuMs, or passGpuMs(row, time).
     double timeOf(const TradeoffRow& row, const std::string& time) const;
+    // The cost of a row on the front's cost axis (NaN: none): timeOf for
+    // "gpu_ms", else the counter named `cost` of `time`'s span.
+    double costOf(const TradeoffRow& row, const std::string& time, const std::string& cost) const;
+    // A counter of a pass in a row (NaN when not counted there).
+    double passCount(const TradeoffRow& row, const std::string& pass, int counter) const;
+    // Whether `cost` is gpu_ms or a counter's name.
+    static bool isCost(const std::string& cost);
+    static std::string costNames();  // "gpu_ms, fragments, samples, ..."
+    // Whether any row has counter `counter` measured.
+    bool hasCounter(int counter) const;
 
     std::vector<std::string> columns() const;
-    static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes);
+    static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes,
+                                            bool counted = false);
     std::string csv() const;
     // Reads csv() back. Throws FileError naming the file, the line and the
     // column of anything wrong: not this header, a column twice, a field that
@@ -93,7 +127,7 @@ public:
     // point, then camera (numbers in order, then "all"); the front recomputed.
     // Throws dw::Error naming the clash.
     static TradeoffTable merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names,
-                               const std::string& time = "frame");
+                               const std::string& time = "frame", const std::string& cost = "gpu_ms");
 };
 
 }  // namespace dw

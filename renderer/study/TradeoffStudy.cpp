@@ -52,6 +52,11 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.buffer = s.buffer;
     o.mask = s.mask;
     o.time = s.time;
+    if (!TradeoffTable::isCost(s.cost))
+        throw Error("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + s.cost + "'");
+    if (s.cost != "gpu_ms" && !s.counters) throw Error("--cost " + s.cost + " needs the counters: drop --no-counters");
+    o.cost = s.cost;
+    o.counters = s.counters;
     inRange("--ao-rays", s.aoRays, limits::kAoRays);
     if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
     o.walkthrough = s.walkthrough;
