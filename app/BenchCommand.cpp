@@ -316,6 +316,19 @@ void describeRun(BenchResults& results, const std::string& platform, BenchFields
 
 }  // namespace
 
+namespace {
+// Whether the counters of each configuration were the same in every counted frame (they are exact).
+void sayCounters(const BenchResults& results) {
+    if (!results.counted) return;
+    const std::string mismatch = results.counterMismatch();
+    if (mismatch.empty())
+        std::printf("cost counters: the same in every counted frame of each configuration (the CSV's fragments .. "
+                    "bytes columns)\n");
+    else
+        std::printf("cost counters: not the same in every counted frame: %s\n", mismatch.c_str());
+}
+}  // namespace
+
 int runBenchCommand(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "merge") return runMerge(argc, argv);
     CommandLine cl(argc, argv, 2, "bench");
@@ -397,14 +410,7 @@ int runBenchCommand(int argc, char** argv) {
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
                                      : std::string()),
                 resamples);
-    if (results.counted) {
-        const std::string mismatch = results.counterMismatch();
-        if (mismatch.empty())
-            std::printf("cost counters: the same in every counted frame of each configuration (the CSV's fragments .. "
-                        "bytes columns)\n");
-        else
-            std::printf("cost counters: not the same in every counted frame: %s\n", mismatch.c_str());
-    }
+    sayCounters(results);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] {
                   writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(json),

@@ -79,7 +79,9 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
             const std::string name = PassCounts::name(i);
             d[py::str(name)] = r.frameCounts[static_cast<size_t>(i)];
             for (size_t p = 0; p < t.passes.size(); ++p)
-                d[py::str(name + "." + t.passes[p])] = p < r.passCounts.size() ? r.passCounts[p][static_cast<size_t>(i)] : NAN;
+                if (TradeoffTable::hasCounterColumns(t.passes[p]))
+                    d[py::str(name + "." + t.passes[p])] =
+                        p < r.passCounts.size() ? r.passCounts[p][static_cast<size_t>(i)] : NAN;
         }
         d["pareto"] = r.pareto;
         rows.append(d);

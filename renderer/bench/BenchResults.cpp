@@ -32,6 +32,23 @@ std::string number(double v) {
 }
 
 const char* const kLeading[] = {"config", "size", "lights"};
+
+// The counter columns of a row, from field `first` on: empty is not measured.
+template <typename Fail>
+PassCounts countsOf(const std::vector<std::string>& f, size_t first, const Fail& fail) {
+    PassCounts c;
+    for (int i = 0; i < PassCounts::kCount; ++i) {
+        const std::string& text = f[first + static_cast<size_t>(i)];
+        if (text.empty()) continue;
+        long long v = -1;
+        auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || p != text.data() + text.size() || v < 0)
+            fail(std::string(PassCounts::name(i)) + ": expected a count (a whole number, at least 0) or nothing, got '" +
+                 text + "'");
+        c.v[static_cast<size_t>(i)] = v;
+    }
+    return c;
+}
 const char* const kTrailing[] = {"lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"};
 
 }  // namespace
@@ -180,16 +197,7 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
         };
         s.gpuMs = time(t + 6);
         s.cpuMs = time(t + 7);
-        for (int i = 0; counted && i < PassCounts::kCount; ++i) {
-            const size_t at = t + 8 + static_cast<size_t>(i);
-            if (f[at].empty()) continue;
-            long long v = -1;
-            auto [p, ec] = std::from_chars(f[at].data(), f[at].data() + f[at].size(), v);
-            if (ec != std::errc() || p != f[at].data() + f[at].size() || v < 0)
-                fail(std::string(PassCounts::name(i)) + ": expected a count (a whole number, at least 0) or nothing, got '" +
-                     f[at] + "'");
-            s.counts.v[static_cast<size_t>(i)] = v;
-        }
+        if (counted) s.counts = countsOf(f, t + 8, fail);
         if (!once.emplace(s.config, s.sample, s.series).second)
             fail("configuration " + std::to_string(s.config) + ", sample " + std::to_string(s.sample) + ", " + s.series +
                  " is there twice (a file joined twice?)");

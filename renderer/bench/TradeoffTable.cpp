@@ -132,7 +132,8 @@ std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& 
     for (const auto& p : passes) c.push_back(kPassPrefix + p);
     for (int i = 0; counted && i < PassCounts::kCount; ++i) {
         c.push_back(PassCounts::name(i));
-        for (const auto& p : passes) c.push_back(std::string(PassCounts::name(i)) + "." + p);
+        for (const auto& p : passes)
+            if (hasCounterColumns(p)) c.push_back(std::string(PassCounts::name(i)) + "." + p);
     }
     c.push_back("pareto");
     return c;
@@ -155,7 +156,8 @@ std::string TradeoffTable::csv() const {
         for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passGpuMs.size() ? r.passGpuMs[p] : kNaN);
         for (size_t i = 0; counted && i < PassCounts::kCount; ++i) {
             out << "," << number(r.frameCounts[i]);
-            for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passCounts.size() ? r.passCounts[p][i] : kNaN);
+            for (size_t p = 0; p < passes.size(); ++p)
+                if (hasCounterColumns(passes[p])) out << "," << number(p < r.passCounts.size() ? r.passCounts[p][i] : kNaN);
         }
         out << "," << (r.pareto ? 1 : 0) << "\n";
     }
@@ -173,6 +175,7 @@ FileError cellError(const std::string& path, int lineNo, size_t column, const st
 struct CsvLayout {
     std::vector<std::string> header;
     size_t cameraCol = 0, middle = 0, passStart = 0, countStart = 0;
+    std::vector<std::string> passes;  // the gpu_ms.<pass> columns' passes
 };
 
 // The header line: names unique and non-empty, the fixed columns where they
@@ -210,13 +213,16 @@ CsvLayout parseHeader(const std::string& line, const std::string& path, const st
     l.middle = l.cameraCol + 1;                   // "metric"
     l.passStart = l.middle + std::size(kMiddle);  // the first gpu_ms.<pass>
     l.countStart = col;
+    l.passes = t.passes;
     t.counted = col + 1 < header.size();
     // The counters: each one's frame column, then one per pass in the passes' order.
     for (int i = 0; t.counted && i < PassCounts::kCount; ++i)
-        for (size_t p = 0; p <= t.passes.size(); ++p, ++col) {
+        for (size_t p = 0; p <= t.passes.size(); ++p) {
+            if (p > 0 && !TradeoffTable::hasCounterColumns(t.passes[p - 1])) continue;
             const std::string want = p == 0 ? PassCounts::name(i) : PassCounts::name(i) + ("." + t.passes[p - 1]);
             if (col + 1 >= header.size() || header[col] != want)
                 throw at(col, "expected the counter column '" + want + "', got '" + (col < header.size() ? header[col] : "") + "'");
+            ++col;
         }
     if (col + 1 != header.size()) throw at(col, "expected 'pareto', got '" + header[col] + "'");
     return l;
@@ -269,13 +275,15 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.passCounts.assign(passCount, CounterValues{});
     for (auto& c : r.passCounts) c.fill(kNaN);
     const bool counted = l.countStart + 1 < header.size();
+    size_t col = l.countStart;
     for (size_t i = 0; counted && i < PassCounts::kCount; ++i)
         for (size_t p = 0; p <= passCount; ++p) {
-            const size_t col = l.countStart + i * (passCount + 1) + p;
+            if (p > 0 && !TradeoffTable::hasCounterColumns(l.passes[p - 1])) continue;
             const double v = real(col, false);
             if (!std::isnan(v) && !(std::isfinite(v) && v >= 0.0))
                 throw at(col, header[col] + ": expected a count (at least 0) or nothing, got '" + f[col] + "'");
             (p == 0 ? r.frameCounts[i] : r.passCounts[p - 1][i]) = v;
+            ++col;
         }
     const size_t last = header.size() - 1;
     if (f[last] != "0" && f[last] != "1") throw at(last, "pareto: expected 0 or 1, got '" + f[last] + "'");

@@ -28,7 +28,7 @@
 //                              only when counted: for each counter of PassCounts
 //                              (fragments, samples, primitives, vertices, compute,
 //                              bytes) the frame's (sum over its passes), then
-//                              each pass's; exact, the same in every counted
+//                              each pass's (not a span's: spans are not counted); exact, the same in every counted
 //                              frame of a camera (an "all" row: the mean over
 //                              the cameras); empty where not measured
 //   pareto                     1 on the front, else 0
@@ -102,6 +102,9 @@ public:
     double costOf(const TradeoffRow& row, const std::string& time, const std::string& cost) const;
     // A counter of a pass in a row (NaN when not counted there).
     double passCount(const TradeoffRow& row, const std::string& pass, int counter) const;
+    // Whether a gpu_ms.<pass> column also has counter columns: a pass, not a
+    // span inside one ("lighting/shadow maps": spans are not counted).
+    static bool hasCounterColumns(const std::string& pass) { return pass.find('/') == std::string::npos; }
     // Whether `cost` is gpu_ms or a counter's name.
     static bool isCost(const std::string& cost);
     static std::string costNames();  // "gpu_ms, fragments, samples, ..."

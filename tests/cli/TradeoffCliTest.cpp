@@ -374,6 +374,9 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
         {" --sweep ssao.samples=4,8 --buffer shade", "--buffer: expected final, lbuffer, ao or shadow, got 'shade'"},
         {" --sweep ssao.samples=4,8 --mask edges", "--mask: expected shadow_edges, got 'edges'"},
         {" --sweep ssao.samples=4 --time bogus", "--time bogus: the pipeline has no pass of that name (expected frame or one of: "},
+        {" --sweep ssao.samples=4,8 --cost pixels",
+         "--cost: expected one of gpu_ms, fragments, samples, primitives, vertices, compute, bytes, got 'pixels'"},
+        {" --sweep ssao.samples=4,8 --cost fragments --no-counters", "--cost fragments needs the counters"},
         {" --presets SSAO1,NOPE", "NOPE"},
         {"", "tradeoff needs axes"},
     };
@@ -388,4 +391,51 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
             messages += !line.empty() && line.rfind("(deferred-workbench help", 0) != 0;
         EXPECT_EQ(messages, 1) << c.args << "\n" << r.err;
     }
+}
+
+// The cost counters: two runs of the same sweep give the same counter
+// columns, bit for bit (times differ); --cost fragments ranks the front by
+// the frame's fragment shader invocations, and the table says so.
+TEST(TradeoffCli, CountersRepeatBitForBitAndChooseTheCostAxis) {
+    const std::string sweep =
+        "tradeoff --scene default --size 96x54 --set ssao_blur.mode=off --sweep ssao.samples=4,16 "
+        "--sweep ssao.resolution=full,half --against ssao.samples=64 --metric rms --buffer ao --frames 2 --warmup 1 "
+        "--resamples 100 --quiet --plot none";
+    const Result a = run(sweep + " --csv " + (dir() / "counted-a.csv").string() + " --json " +
+                         (dir() / "counted-a.json").string());
+    ASSERT_EQ(a.code, 0) << a.err;
+    const Result b = run(sweep + " --cost fragments --time ao --csv " + (dir() / "counted-b.csv").string() + " --json " +
+                         (dir() / "counted-b.json").string());
+    ASSERT_EQ(b.code, 0) << b.err;
+    const TradeoffTable ta = TradeoffTable::readCsv((dir() / "counted-a.csv").string());
+    const TradeoffTable tb = TradeoffTable::readCsv((dir() / "counted-b.csv").string());
+    ASSERT_TRUE(ta.counted);
+    ASSERT_EQ(ta.passes, tb.passes);
+    ASSERT_EQ(ta.rows.size(), 4u);
+    for (size_t r = 0; r < ta.rows.size(); ++r) {
+        for (size_t i = 0; i < PassCounts::kCount; ++i) {
+            EXPECT_FALSE(std::isnan(ta.rows[r].frameCounts[i])) << PassCounts::name(static_cast<int>(i));
+            EXPECT_EQ(ta.rows[r].frameCounts[i], tb.rows[r].frameCounts[i]) << "row " << r << " " << PassCounts::name(static_cast<int>(i));
+        }
+        for (size_t p = 0; p < ta.passes.size(); ++p)
+            for (size_t i = 0; i < PassCounts::kCount; ++i) {
+                const double x = ta.rows[r].passCounts[p][i], y = tb.rows[r].passCounts[p][i];
+                EXPECT_TRUE((std::isnan(x) && std::isnan(y)) || x == y) << ta.passes[p] << " " << PassCounts::name(static_cast<int>(i));
+            }
+    }
+    // A half-resolution AO shades fewer fragments than a full one, at either sample count.
+    const TradeoffRow* full = rowOf(ta, "16", "full");
+    const TradeoffRow* half = rowOf(ta, "16", "half");
+    ASSERT_TRUE(full && half);
+    EXPECT_LT(ta.passCount(*half, "ao", PassCounts::Fragments), ta.passCount(*full, "ao", PassCounts::Fragments));
+    // The front of b is the front by fragments.ao against the error.
+    TradeoffTable check = tb;
+    check.markParetoFront("ao", "fragments");
+    for (size_t r = 0; r < tb.rows.size(); ++r) EXPECT_EQ(tb.rows[r].pareto, check.rows[r].pareto) << r;
+    EXPECT_NE(b.out.find("| fragments.ao (exact) | Pareto (fragments.ao) |"), std::string::npos) << b.out;
+    // The record keeps the counters and the cost axis.
+    std::ifstream in(dir() / "counted-b.json");
+    const nlohmann::json record = nlohmann::json::parse(in);
+    EXPECT_EQ(record["grid"]["cost"], "fragments");
+    EXPECT_EQ(record["results"]["rows"][0]["counters"]["frame"]["fragments"].get<double>(), tb.rows[0].frameCounts[0]);
 }

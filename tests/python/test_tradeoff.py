@@ -73,6 +73,26 @@ class TradeoffTest(unittest.TestCase):
             written = list(csv.DictReader(f))
         self.assertEqual([r["error"] for r in written], [r["error"] for r in cli])
 
+    def test_counters_in_the_rows_and_cost_chooses_the_front(self):
+        # Every row carries the frame's counters and each pass's; exact, so a second
+        # run with cost="fragments" has the same ones, and its front is by fragments.ao.
+        rows = self.record["rows"]
+        for row in rows:
+            self.assertGreater(row["fragments"], 0)
+            self.assertGreater(row["fragments.ao"], 0)
+            self.assertGreater(row["bytes"], 0)
+        again = dw.tradeoff(**dict(KEYWORDS, cost="fragments", time="ao"))
+        for mine, theirs in zip(rows, again["rows"]):
+            for key in mine:
+                if key.split(".")[0] in ("fragments", "samples", "primitives", "vertices", "compute", "bytes"):
+                    same = (math.isnan(mine[key]) and math.isnan(theirs[key])) or mine[key] == theirs[key]
+                    self.assertTrue(same, key)
+        front = {r["point"] for r in again["front"]}
+        for a in again["rows"]:
+            beaten = any(b["fragments.ao"] <= a["fragments.ao"] and b["error"] <= a["error"]
+                         and (b["fragments.ao"] < a["fragments.ao"] or b["error"] < a["error"]) for b in again["rows"])
+            self.assertEqual(a["point"] in front, not beaten, a["point"])
+
     def test_the_error_falls_with_the_samples(self):
         rows = {int(r["ssao.samples"]): r for r in self.record["rows"]}
         self.assertEqual(sorted(rows), SAMPLES)
@@ -168,6 +188,7 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, record="a.json", json="b.json"), ValueError, "name two files"),
             (dict(sweep={"ssao.samples": [4, 8]}, record=""), ValueError, "tradeoff: record"),
             (dict(sweep={"ssao.samples": [4, 8]}, progress=3), ValueError, "progress must be a callable"),
+            (dict(sweep={"ssao.samples": [4, 8]}, cost="pixels"), ValueError, "--cost: expected one of gpu_ms, fragments"),
             (dict(sweep={"ssao.samples": [4, 8]}, scene=os.path.join(self.tmp.name, "missing.gltf")), dw.Error,
              "missing.gltf"),
         ]
