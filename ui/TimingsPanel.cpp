@@ -153,6 +153,7 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
     sameLineIfFits(checkboxWidth("counters"));
     bool counting = timer.counting();
     if (ImGui::Checkbox("counters", &counting)) timer.setCounting(counting);
+    noteItem("timings.counters");
     if (ImGui::IsItemHovered())
         tooltip("Adds each pass's cost counters of the last frame: fragment shader invocations,\n"
                 "samples passed (depth and stencil), primitives and vertices submitted, compute\n"
@@ -651,9 +652,16 @@ nlohmann::json timingsReport(const PassTimer& timer, const UiState& state) {
                            {"influenced", std::vector<std::string>(m.influenced().begin(), m.influenced().end())},
                            {"passes", passes}};
     nlohmann::json series = nlohmann::json::object();
-    for (const auto& s : timer.series())
-        if (!s.samples.empty()) series[s.name] = {{"frame", s.samples.back().frame}, {"gpu_ms", s.samples.back().gpuMs}};
+    for (const auto& s : timer.series()) {
+        if (s.samples.empty()) continue;
+        series[s.name] = {{"frame", s.samples.back().frame}, {"gpu_ms", s.samples.back().gpuMs}};
+        // The counters' columns, as the table shows them (the newest frame's).
+        const PassCounts& c = s.samples.back().counts;
+        for (int i = 0; c.measured() && i < PassCounts::kCount; ++i)
+            if (c[i] >= 0) series[s.name]["counters"][PassCounts::name(i)] = c[i];
+    }
     return {{"gpu_text", gpuFrameText(timer, state)},
+            {"counting", timer.counting()},
             {"config_since", state.configSince},
             {"pending_frames", timer.pendingFrames()},
             {"timings_pending", state.timingsPending},
