@@ -91,6 +91,21 @@ void countFrame(PassTimer& timer, std::uint64_t frame) {
         timer.setPassBytes(static_cast<std::int64_t>(kW) * kH * 8);
         timer.endPass();
     }
+    // The same triangle twice with the depth test passing everywhere, then
+    // into the left half of the target: twice the counts, then half the samples.
+    glDepthFunc(GL_ALWAYS);
+    timer.beginPass("twice");
+    triangle.draw();
+    triangle.draw();
+    timer.setPassBytes(0);
+    timer.endPass();
+    glViewport(0, 0, kW / 2, kH);
+    timer.beginPass("half");
+    triangle.draw();
+    timer.setPassBytes(0);
+    timer.endPass();
+    glViewport(0, 0, kW, kH);
+    glDepthFunc(GL_LESS);
     timer.beginPass("nothing");
     timer.setPassBytes(0);
     timer.endPass();
@@ -135,10 +150,18 @@ TEST(CostCounters, KnownCasesCountWhatTheyDraw) {
     for (int i = 0; i < PassCounts::kCount; ++i) EXPECT_EQ(nothing[i], 0) << PassCounts::name(i);
     EXPECT_EQ(compute[PassCounts::Compute], 3 * 2 * 4);
     EXPECT_EQ(compute[PassCounts::Fragments], 0);
+    // Twice the draws, twice every count; half the viewport, half the samples.
+    const PassCounts twice = lastSample(timer, "twice").counts;
+    const PassCounts half = lastSample(timer, "half").counts;
+    for (int i : {PassCounts::Fragments, PassCounts::Samples, PassCounts::Primitives, PassCounts::Vertices})
+        EXPECT_EQ(twice[i], 2 * full[i]) << PassCounts::name(i);
+    EXPECT_EQ(half[PassCounts::Samples], std::int64_t{kW / 2} * kH);
+    EXPECT_GE(half[PassCounts::Fragments], std::int64_t{kW / 2} * kH);
+    EXPECT_LT(half[PassCounts::Fragments], full[PassCounts::Fragments]);
     // The frame's counters are the sums of its passes'.
     const PassCounts frame = lastSample(timer, PassTimer::kFrameSeries).counts;
     for (int i = 0; i < PassCounts::kCount; ++i)
-        EXPECT_EQ(frame[i], full[i] + occluded[i] + nothing[i] + compute[i]) << PassCounts::name(i);
+        EXPECT_EQ(frame[i], full[i] + occluded[i] + twice[i] + half[i] + nothing[i] + compute[i]) << PassCounts::name(i);
     // llvmpipe shades before the depth test: the occluded draw costs the
     // same fragments; only samples passed sees the depth test's saving.
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
