@@ -75,7 +75,7 @@ std::string benchUsage() {
            "                                [--size WxH[,WxH...]] [--lights N[,N...]] [--light-radius R] [--seed N]\n"
            "                                [--keep-scene-lights] [--sweep knob=v1,v2,...]... [--exclude axis=v,...]...\n"
            "                                [--frames N] [--warmup N] [--block K] [--orbit N | --walkthrough]\n"
-           "                                [--lpp-poses N] [--no-lpp] [--baseline axis=value] [--ratio-of SERIES]\n"
+           "                                [--lpp-poses N] [--no-lpp] [--no-counters] [--baseline axis=value] [--ratio-of SERIES]\n"
            "                                [--resamples N] [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png]\n"
            "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
            "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--record FILE] [--plot FILE.png]\n"
@@ -266,6 +266,7 @@ void readLightOptions(CommandLine& cl, BenchOptions& o) {
     o.keepSceneLights = cl.flag("--keep-scene-lights");
     o.lppPoses = cl.whole("--lpp-poses", 4);
     o.lpp = !cl.flag("--no-lpp");
+    o.counters = !cl.flag("--no-counters");
 }
 
 // The samples go to the CSV as they are measured, so a killed run keeps
@@ -288,7 +289,7 @@ private:
         if (failed_) return;
         if (!out_) {
             out_ = std::make_unique<std::ofstream>(path_, std::ios::trunc);
-            *out_ << BenchResults::csvHeader(soFar.knobAxes) << "\n";
+            *out_ << BenchResults::csvHeader(soFar.knobAxes, soFar.counted) << "\n";
         }
         *out_ << soFar.csvRows(fresh);
         if (!out_->flush()) {
@@ -313,6 +314,19 @@ void describeRun(BenchResults& results, const std::string& platform, BenchFields
     results.settings.emplace_back("command", command);
 }
 
+}  // namespace
+
+namespace {
+// Whether the counters of each configuration were the same in every counted frame (they are exact).
+void sayCounters(const BenchResults& results) {
+    if (!results.counted) return;
+    const std::string mismatch = results.counterMismatch();
+    if (mismatch.empty())
+        std::printf("cost counters: the same in every counted frame of each configuration (the CSV's fragments .. "
+                    "bytes columns)\n");
+    else
+        std::printf("cost counters: not the same in every counted frame: %s\n", mismatch.c_str());
+}
 }  // namespace
 
 int runBenchCommand(int argc, char** argv) {
@@ -396,6 +410,7 @@ int runBenchCommand(int argc, char** argv) {
                     (keepSceneLights ? "; the lights column: " + fieldOr(results.settings, "lights", "generated")
                                      : std::string()),
                 resamples);
+    sayCounters(results);
     std::fflush(stdout);
     writeEach({[&] { results.writeCsv(csv); }, [&] {
                   writeBenchFile(json, ExperimentRecord::forBench(recorded, runner.scene(), results, summary).json(json),

@@ -47,7 +47,8 @@ int runRenderCommand(int argc, char** argv) {
                      "  --frames     frames counted (timings are medians over them); default 1\n"
                      "  --warmup     frames rendered first and left out of the timings; default 1 when\n"
                      "               timings are asked for (the first frame compiles shaders), else 0\n"
-                     "  --timings    print per-pass GPU and CPU milliseconds\n"
+                     "  --timings    print per-pass GPU and CPU milliseconds, and each pass's cost counters\n"
+                     "               (fragments, samples, primitives, vertices, compute, bytes)\n"
                      "  --timings-out  write the timings as .json, or as .csv rows (any other name)\n"
                      "  --dump-knobs write every knob's value as name=value lines (what --set takes)\n"
                      "  --renderdoc-capture  capture the last frame with RenderDoc (loads librenderdoc.so,\n"
@@ -184,6 +185,8 @@ int runRenderCommand(int argc, char** argv) {
     // Keep every counted frame's sample, however many there are.
     PassTimer& timer = session.pipeline().timer();
     timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(run.warmup + run.frames)));
+    // Timings and records come with each pass's cost counters (PassCounts.h).
+    if (timed || record) timer.setCounting(true);
     FrameReport report;
     std::uint64_t firstCounted = 0;
     for (int i = 0; i < run.warmup + run.frames; ++i) {

@@ -136,6 +136,9 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     request.outputs = {old.buffer};
     PassTimer& timer = session.pipeline().timer();
     timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(run.warmup + run.frames)));
+    // A record with cost counters is counted again, to compare them exactly.
+    if (std::any_of(old.timings.begin(), old.timings.end(), [](const RecordedSeries& s) { return s.counts.measured(); }))
+        timer.setCounting(true);
     std::uint64_t firstCounted = 0;
     FrameReport report;
     for (int i = 0; i < run.warmup + run.frames; ++i) {
@@ -151,9 +154,10 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
 
     // Timings: old against new, per series both have, with the interval of new / old.
     replay::compareTimings(old.timings, now.timings);
+    const int counters = replay::compareCounters(old.timings, now.timings);
     reportShaders(old, now.shaders, inputs);
     inputs.print();
-    return replay::imageVerdict(old.imageSha256, now.imageSha256);
+    return std::max(replay::imageVerdict(old.imageSha256, now.imageSha256), counters);
 }
 
 std::string fieldOrEmpty(const BenchFields& fields, const std::string& key) {

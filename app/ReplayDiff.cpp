@@ -1,5 +1,6 @@
 #include "app/ReplayDiff.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -148,7 +149,8 @@ int compareResults(const ExperimentRecord& a, const ExperimentRecord& b, const s
     if (a.command == "tradeoff")
         return replay::compareTradeoff(a.tradeoffTable(pathA), b.tradeoffTable(pathB), a.frames, b.frames).verdict();
     replay::compareTimings(a.timings, b.timings);
-    return replay::imageVerdict(a.imageSha256, b.imageSha256);
+    const int counters = replay::compareCounters(a.timings, b.timings);
+    return std::max(replay::imageVerdict(a.imageSha256, b.imageSha256), counters);
 }
 
 }  // namespace

@@ -150,6 +150,32 @@ void compareTimings(const std::vector<RecordedSeries>& old, const std::vector<Re
     }
 }
 
+int compareCounters(const std::vector<RecordedSeries>& old, const std::vector<RecordedSeries>& now) {
+    std::map<std::string, const RecordedSeries*> oldSeries;
+    for (const auto& s : old) oldSeries[s.name] = &s;
+    int compared = 0;
+    std::string moved;
+    for (const auto& s : now) {
+        const auto it = oldSeries.find(s.name);
+        if (it == oldSeries.end()) continue;
+        for (int i = 0; i < PassCounts::kCount; ++i) {
+            const std::int64_t a = it->second->counts[i], b = s.counts[i];
+            if (a < 0 || b < 0) continue;
+            ++compared;
+            if (a != b)
+                moved += (moved.empty() ? "" : ", ") + std::string(PassCounts::name(i)) + "." + s.name + " " +
+                         std::to_string(a) + " -> " + std::to_string(b);
+        }
+    }
+    if (compared == 0) return 0;
+    if (moved.empty()) {
+        std::printf("counters: the same (%d compared, exactly)\n", compared);
+        return 0;
+    }
+    std::printf("counters: moved: %s\n", moved.c_str());
+    return 1;
+}
+
 int imageVerdict(const std::string& oldSha, const std::string& newSha) {
     if (newSha == oldSha) {
         std::printf("image: identical\n");
@@ -232,12 +258,33 @@ int BenchComparison::verdict() const {
     return 1;
 }
 
+namespace {
+// The counters of `now` that differ from `old`'s ("" when none): those both measured.
+std::string movedCounters(const TradeoffTable& before, const TradeoffRow& old, const TradeoffTable& after,
+                          const TradeoffRow& now) {
+    std::string moved;
+    auto check = [&](const std::string& span, int counter, double a, double b) {
+        if (std::isnan(a) || std::isnan(b) || a == b) return;
+        char line[160];
+        std::snprintf(line, sizeof(line), "%s%s%s %.17g -> %.17g", PassCounts::name(counter), span.empty() ? "" : ".",
+                      span.c_str(), a, b);
+        moved += (moved.empty() ? "" : ", ") + std::string(line);
+    };
+    for (int i = 0; i < PassCounts::kCount; ++i) {
+        check("", i, old.frameCounts[static_cast<size_t>(i)], now.frameCounts[static_cast<size_t>(i)]);
+        for (const auto& pass : after.passes) check(pass, i, before.passCount(old, pass, i), after.passCount(now, pass, i));
+    }
+    return moved;
+}
+}  // namespace
+
 TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTable& after, int framesBefore,
                                    int framesAfter) {
     std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
     for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
     TradeoffComparison out;
     out.rows = after.rows.size();
+    out.countersCompared = before.counted && after.counted;
     for (const auto& r : after.rows) {
         const auto it = recorded.find({r.point, r.camera, r.metric, r.buffer});
         if (it == recorded.end()) {
@@ -252,6 +299,10 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
         bool same = true;
         if (printRowComparison(pointLabel(after, r), b, r, nBefore, nAfter, same)) ++out.moved;
         if (!same) ++out.errorDiffer;
+        if (const std::string moved = movedCounters(before, b, after, r); !moved.empty()) {
+            std::printf("%s: counters moved: %s\n", pointLabel(after, r).c_str(), moved.c_str());
+            ++out.countersMoved;
+        }
         recorded.erase(it);
     }
     for (const auto& [key, b] : recorded) {
@@ -262,15 +313,15 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
 }
 
 int TradeoffComparison::verdict() const {
-    if (errorDiffer == 0 && moved == 0 && missing == 0) {
+    if (errorDiffer == 0 && moved == 0 && missing == 0 && countersMoved == 0) {
         std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
-                    "95%% interval)\n",
-                    rows, kTimingBandLow, kTimingBandHigh);
+                    "95%% interval%s)\n",
+                    rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "");
         return 0;
     }
     std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
-                "%d not in both)\n",
-                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, missing);
+                "%d with a counter moved, %d not in both)\n",
+                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, missing);
     return 1;
 }
 

@@ -61,6 +61,10 @@ bool timingMoved(const RatioInterval& r);
 // "timing NAME gpu median OLD -> NEW ms  xRATIO [LOW, HIGH]" for every
 // series both lists hold, in `now`'s order.
 void compareTimings(const std::vector<RecordedSeries>& old, const std::vector<RecordedSeries>& now);
+// The series' cost counters, exactly, where both have them: "counters: the
+// same (N compared, exactly)" (0) or "counters: moved: fragments.lighting A -> B, ..." (1);
+// nothing printed and 0 when neither record counted.
+int compareCounters(const std::vector<RecordedSeries>& old, const std::vector<RecordedSeries>& now);
 // "image: identical" (returns 0) or "image: differs (sha256 OLD -> NEW)" (1).
 int imageVerdict(const std::string& oldSha, const std::string& newSha);
 
@@ -92,8 +96,11 @@ BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::ve
 // Per row of `after` (point, camera, metric, buffer) the line replay prints:
 // the error old -> new (same / differs) and the frame's GPU median with the
 // interval of the difference. Frames: a row's own count, else these.
+// The cost counters (when both tables have them) are compared exactly: a
+// row whose counter moved prints "counters moved: fragments.lighting A -> B, ...".
 struct TradeoffComparison {
-    int errorDiffer = 0, moved = 0, missing = 0;
+    int errorDiffer = 0, moved = 0, missing = 0, countersMoved = 0;
+    bool countersCompared = false;
     size_t rows = 0;
     int verdict() const;  // prints "tradeoff: the same (...)" (0) or "tradeoff: differs (...)" (1)
 };

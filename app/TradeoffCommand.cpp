@@ -56,12 +56,13 @@ std::string tradeoffUsage() {
            "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
            "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
-           "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--budget-ms X]\n"
+           "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
+           "                                   [--budget-ms X | --budget N] [--no-counters]\n"
            "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
            "                                   [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
            "                                   [--quiet]\n"
            "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
-           "                                   [--time frame|PASS[+PASS...]]\n"
+           "                                   [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
            "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
            "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
            "               about the current settings (docs/tradeoffs.md says which values)\n"
@@ -77,8 +78,14 @@ std::string tradeoffUsage() {
            "               since on llvmpipe the frame time drowns a small pass's; with shadows.reuse_map on\n"
            "               the maps are drawn in the lighting pass: \"lighting/shadow maps\" ranks by them;\n"
            "               a sum of passes (lighting+ao+ao_filter) ranks by the median of each frame's sum\n"
+           "  --cost       the front's cost axis: gpu_ms (default, the time --time names) or a counter of that\n"
+           "               span (fragments, samples, primitives, vertices, compute, bytes: exact, no interval);\n"
+           "               refused where the driver lacks it (GL_ARB_pipeline_statistics_query)\n"
            "  --budget-ms  prints pick: the least-error point whose --time's 95% interval ends under X ms,\n"
-           "               and the points that fit but cannot be told apart from it in error\n"
+           "               and the points that fit but cannot be told apart from it in error (whatever --cost)\n"
+           "  --budget     with a counter --cost: the pick by that counter (exact) under N in its own unit;\n"
+           "               not with --budget-ms\n"
+           "  --no-counters  measure without the per-pass cost counters (their columns are left out)\n"
            "  --size       the render size (default 640x360)\n" +
            SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff) + CommandLine::rangesHelp("tradeoff") +
            CommandLine::rangesHelp("tradeoff merge");
@@ -143,7 +150,7 @@ std::string frontLines(const TradeoffTable& t, const BudgetPick* pick) {
     return out.empty() ? "" : out + "\n";
 }
 
-std::string markdown(const TradeoffTable& t, const std::string& time = "frame") {
+std::string markdown(const TradeoffTable& t, const std::string& time = "frame", const std::string& cost = "gpu_ms") {
     const std::vector<const TradeoffRow*> rows = shownRows(t);
     const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
     std::set<std::string> cameras;
@@ -160,7 +167,11 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
         header.push_back(time + " GPU ms median");
         header.emplace_back("95% CI");
     }
-    header.emplace_back(time == "frame" ? "Pareto" : "Pareto (" + time + " ms)");
+    // A counter as the cost axis: its value (exact, no interval) of the span --time names.
+    const bool counter = cost != "gpu_ms";
+    const std::string span = time == "frame" ? cost : cost + "." + time;
+    if (counter) header.push_back(span + " (exact)");
+    header.emplace_back(counter ? "Pareto (" + span + ")" : time == "frame" ? "Pareto" : "Pareto (" + time + " ms)");
     header.emplace_back("tied with");
     auto line = [](const std::vector<std::string>& cells) {
         std::string s = "|";
@@ -184,6 +195,7 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
             cells.push_back(number(t.timeOf(*r, time), "%.3f") + reusedMaps(t, *r, time));
             cells.push_back(time == t.time ? "[" + number(r->timeMsLo, "%.3f") + ", " + number(r->timeMsHi, "%.3f") + "]" : "-");
         }
+        if (counter) cells.push_back(number(t.costOf(*r, time, cost), "%.0f"));
         cells.push_back(frontCell(*r));
         cells.push_back(tiesCell(*r));
         out += line(cells);
@@ -191,7 +203,8 @@ std::string markdown(const TradeoffTable& t, const std::string& time = "frame") 
     return out;
 }
 
-std::string what(const TradeoffTable& t, const std::string& against, const std::string& time = "frame") {
+std::string what(const TradeoffTable& t, const std::string& against, const std::string& time = "frame",
+                 const std::string& cost = "gpu_ms") {
     const std::vector<const TradeoffRow*> rows = shownRows(t);
     const bool several = !rows.empty() && rows.front()->camera == TradeoffTable::kAllCameras;
     const std::string metric = t.rows.empty() ? "?" : t.rows.front().metric;
@@ -201,11 +214,15 @@ std::string what(const TradeoffTable& t, const std::string& against, const std::
            (several ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
                     : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
            "; GPU ms: the median frame time over the counted frames, 95% bootstrap interval of the median; "
-           "Pareto: **front** on the front of the medians of " +
-           (time == "frame" ? std::string("frame") : time == t.time && time.find('+') != std::string::npos
-                                                        ? "the per-frame sum " + time
-                                                        : "the " + time + " pass's") +
-           " GPU ms against the errors (no other point is as fast and as accurate); indistinguishable: off it, but no "
+           "Pareto: **front** on the front of " +
+           (cost != "gpu_ms"
+                ? (time == "frame" ? "the frame's " + cost : "the " + time + " " + cost) +
+                      " (a cost counter: exact, the same every frame; only the errors are tested)"
+                : "the medians of " + (time == "frame" ? std::string("frame") : time == t.time && time.find('+') != std::string::npos
+                                                                ? "the per-frame sum " + time
+                                                                : "the " + time + " pass's") +
+                      " GPU ms") +
+           " against the errors (no other point is as cheap and as accurate); indistinguishable: off it, but no "
            "front point beats it on both axes with confidence; dominated by: the front points that do; tied with: the "
            "other points it cannot be told apart from on that axis" +
            (!t.rows.empty() && t.rows.front().buffer.find(":shadow_edges") != std::string::npos
@@ -214,10 +231,11 @@ std::string what(const TradeoffTable& t, const std::string& against, const std::
            ".\n";
 }
 
-int writePlot(const std::string& csv, const std::string& png, int width, int height, const std::string& time) {
+int writePlot(const std::string& csv, const std::string& png, int width, int height, const std::string& time,
+              const std::string& cost = "gpu_ms") {
     if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
                        {"--csv", csv, "--out", png, "--size", std::to_string(width) + "x" + std::to_string(height),
-                        "--time", time},
+                        "--time", time, "--cost", cost},
                        "tradeoff"))
         return 1;
     std::printf("wrote %s (%dx%d)\n", png.c_str(), width, height);
@@ -282,7 +300,10 @@ int runMerge(int argc, char** argv) {
     }
     SweepMergeOptions m = SweepMergeOptions::read(cl, kTradeoff);
     const std::string time = cl.value("--time").value_or("frame");
+    const std::string cost = cl.value("--cost").value_or("gpu_ms");
     cl.finish("tradeoff merge");
+    if (!TradeoffTable::isCost(cost))
+        throw UsageError("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + cost + "'");
     m.check(cl, kTradeoff);
     const std::vector<std::string>& inputs = m.inputs;
     const std::string& out = *m.out;
@@ -308,18 +329,18 @@ int runMerge(int argc, char** argv) {
     std::vector<TradeoffShardInput> described;
     for (size_t i = 0; i < inputs.size(); ++i) described.push_back(shardInput(inputs[i], parts[i]));
     for (const auto& w : TradeoffShards::check(described)) std::fprintf(stderr, "tradeoff merge: warning: %s\n", w.c_str());
-    const TradeoffTable all = TradeoffTable::merge(parts, inputs, time);
+    const TradeoffTable all = TradeoffTable::merge(parts, inputs, time, cost);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n%s", all.rows.size(), inputs.size(),
-                what(all, "what the shards measured against", time).c_str(), markdown(all, time).c_str(),
+                what(all, "what the shards measured against", time, cost).c_str(), markdown(all, time, cost).c_str(),
                 frontLines(all, nullptr).c_str());
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(*json), "tradeoff record");
     std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
-    return plot ? writePlot(out, *plot, plotW, plotH, time) : 0;
+    return plot ? writePlot(out, *plot, plotW, plotH, time, cost) : 0;
 }
 
 }  // namespace
@@ -351,6 +372,9 @@ int runTradeoffCommand(int argc, char** argv) {
     s.mask = cl.value("--mask").value_or("");
     s.time = cl.value("--time").value_or("frame");
     s.budgetMs = cl.real("--budget-ms");
+    s.budget = cl.real("--budget");
+    s.cost = cl.value("--cost").value_or("gpu_ms");
+    s.counters = !cl.flag("--no-counters");
     s.aoRays = cl.whole("--ao-rays", 64);
     s.orbit = so.orbit;
     s.walkthrough = so.walkthrough;
@@ -396,14 +420,14 @@ int runTradeoffCommand(int argc, char** argv) {
     std::printf("## tradeoff: %s, %zu point(s) x %zu camera(s), %s of %s (%s) against %s\n\n%s\n%s\n%s",
                 runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
                 o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
-                what(t, againstText, o.time).c_str(), markdown(t, o.time).c_str(),
-                frontLines(t, o.budgetMs > 0.0 ? &result.pick : nullptr).c_str());
+                what(t, againstText, o.time, o.cost).c_str(), markdown(t, o.time, o.cost).c_str(),
+                frontLines(t, o.budgetMs > 0.0 || o.budget > 0.0 ? &result.pick : nullptr).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
     writeBenchFile(json, record.json(json), "tradeoff record");
     std::printf("wrote %s, %s\n", csv.c_str(), json.c_str());
     if (t.rows.empty() || !plot) return 0;
-    return writePlot(csv, *plot, plotW, plotH, o.time);
+    return writePlot(csv, *plot, plotW, plotH, o.time, o.cost);
 }
 
 }  // namespace dw

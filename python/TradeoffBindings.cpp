@@ -1,6 +1,7 @@
 // dw.tradeoff: tradeoff's sweep in this process, its arguments checked by
 // TradeoffStudy as the CLI's are, its files written as tradeoff writes them,
 // its record returned as a dict with the table's rows and the Pareto front.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -57,7 +58,8 @@ std::vector<std::string> textList(const std::string& what, const py::handle& val
 // The table's rows as tradeoff --csv writes them: one dict a row, its keys
 // the CSV's columns in order (point, each axis, camera, metric, buffer,
 // error, error_lo, error_hi, frames, frame_gpu_ms, frame_gpu_ms_lo,
-// frame_gpu_ms_hi, gpu_ms.<pass>..., pareto, time, time_ms, time_ms_lo,
+// frame_gpu_ms_hi, gpu_ms.<pass>..., the counters when counted: fragments,
+// fragments.<pass>, ..., bytes.<pass>..., pareto, time, time_ms, time_ms_lo,
 // time_ms_hi, front, dominated_by (a list of points), tied_with (a list of
 // (point, "time"|"error"|"both")), pick); NaN where the CSV is empty.
 py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
@@ -78,6 +80,14 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
         d["frame_gpu_ms_lo"] = r.frameGpuMsLo;
         d["frame_gpu_ms_hi"] = r.frameGpuMsHi;
         for (size_t p = 0; p < t.passes.size(); ++p) d[py::str("gpu_ms." + t.passes[p])] = r.passGpuMs[p];
+        for (int i = 0; t.counted && i < PassCounts::kCount; ++i) {
+            const std::string name = PassCounts::name(i);
+            d[py::str(name)] = r.frameCounts[static_cast<size_t>(i)];
+            for (size_t p = 0; p < t.passes.size(); ++p)
+                if (TradeoffTable::hasCounterColumns(t.passes[p]))
+                    d[py::str(name + "." + t.passes[p])] =
+                        p < r.passCounts.size() ? r.passCounts[p][static_cast<size_t>(i)] : NAN;
+        }
         d["pareto"] = r.pareto;
         d["time"] = t.time;
         d["time_ms"] = r.timeMs;
@@ -94,12 +104,12 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
     return rows;
 }
 
-// The budget's pick: {budget_ms, point (None when none fits), row (its row),
+// The budget's pick: {budget_ms (or budget: a counter's), point (None when none fits), row (its row),
 // tied (points that fit and cannot be told apart from it in error), fitting,
 // cheapest (with none fitting), lines (what the CLI prints)}.
-py::dict pickObject(const TradeoffTable& t, const BudgetPick& pick) {
+py::dict pickObject(const TradeoffTable& t, const BudgetPick& pick, const std::string& budgetKey) {
     py::dict d;
-    d["budget_ms"] = pick.budgetMs;
+    d[py::str(budgetKey)] = pick.budgetMs;
     d["point"] = pick.point >= 0 ? py::object(py::int_(pick.point)) : py::object(py::none());
     d["tied"] = pick.tied;
     d["fitting"] = pick.fitting;
@@ -193,14 +203,14 @@ private:
 
 // Draws `f.plot` from the table with scripts/tradeoff_plot.py, as tradeoff
 // does; false when it was not drawn (stderr says why).
-bool drawPlot(const TradeoffTable& table, const TradeoffFiles& f, const std::string& timeAxis) {
+bool drawPlot(const TradeoffTable& table, const TradeoffFiles& f, const std::string& timeAxis, const std::string& cost) {
     // The plot is drawn from a CSV: the one asked for, else a file of its own beside the plot.
     const std::string from = f.csv ? *f.csv : *f.plot + ".csv";
     if (!f.csv) table.writeCsv(from);
     const bool drawn = runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
                                      {"--csv", from, "--out", *f.plot, "--size",
                                       std::to_string(f.plotSize.first) + "x" + std::to_string(f.plotSize.second),
-                                      "--time", timeAxis},
+                                      "--time", timeAxis, "--cost", cost},
                                      "tradeoff");
     if (!f.csv) {
         std::error_code ec;
@@ -225,7 +235,7 @@ TradeoffOutcome measure(const TradeoffStudyOptions& s, const TradeoffStudyProgre
     out.record = TradeoffStudy::record(s, o, *runner, std::move(measured), "deferred_workbench.tradeoff (Python)");
     if (f.csv) out.table.writeCsv(*f.csv);
     if (f.json) writeBenchFile(*f.json, out.record.json(*f.json), "tradeoff record");
-    if (f.plot && !out.table.rows.empty()) out.plotDrawn = drawPlot(out.table, f, o.time);
+    if (f.plot && !out.table.rows.empty()) out.plotDrawn = drawPlot(out.table, f, o.time, o.cost);
     return out;
 }
 
@@ -256,7 +266,7 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     d["front_rule"] = outcome.table.frontRules.count(BudgetPicker::shownCamera(outcome.table))
                           ? outcome.table.frontRules.at(BudgetPicker::shownCamera(outcome.table))
                           : std::string();
-    if (s.budgetMs) d["pick"] = pickObject(outcome.table, outcome.pick);
+    if (s.budgetMs || s.budget) d["pick"] = pickObject(outcome.table, outcome.pick, s.budgetMs ? "budget_ms" : "budget");
     return d;
 }
 
@@ -264,7 +274,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
                   py::object exclude, const std::string& against, const std::string& metric, const std::string& buffer,
                   const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
-                  std::optional<double> budgetMs,
+                  const std::string& cost, std::optional<double> budgetMs, std::optional<double> budget,
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
@@ -281,7 +291,9 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.aoRays = intArg(aoRays, "tradeoff: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
     s.mask = mask.value_or("");
     s.time = time;
+    s.cost = cost;
     s.budgetMs = budgetMs;
+    s.budget = budget;
     s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
     s.walkthrough = walkthrough;
     s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");
@@ -301,8 +313,8 @@ void bindTradeoff(py::module_& m) {
           py::arg("preset") = py::none(), py::arg("settings") = py::none(), py::arg("sweep") = py::none(),
           py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("exclude") = py::none(),
           py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
-          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame",
-          py::arg("budget_ms") = py::none(), py::arg("orbit") = 0,
+          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("cost") = "gpu_ms",
+          py::arg("budget_ms") = py::none(), py::arg("budget") = py::none(), py::arg("orbit") = 0,
           py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
           py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
@@ -311,14 +323,18 @@ void bindTradeoff(py::module_& m) {
           "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
           "presets=[...] (an axis), knobs=\"speed/quality\", exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
-          "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), budget_ms, orbit, walkthrough, frames, warmup,\n"
-          "block, resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
+          "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), cost (gpu_ms or a counter: fragments, samples,\n"
+          "primitives, vertices, compute, bytes: the front's cost axis), budget_ms (bounds the time), budget (bounds\n"
+          "the counter cost names, in its unit; not with budget_ms), orbit, walkthrough, frames, warmup, block,\n"
+          "resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
           "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
           "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
-          "its interval, gpu_ms.<pass>, pareto, time, time_ms and its interval, front (pareto|indistinguishable|\n"
-          "dominated), dominated_by, tied_with [(point, axes)], pick; NaN where the CSV is empty), front (the rows on\n"
-          "the Pareto front of the point estimates) and front_rule (how dominance was decided); with budget_ms, pick\n"
-          "(point, row, tied, fitting, cheapest, lines: the least-error point whose time's 95% interval ends under it).\n"
+          "its interval, gpu_ms.<pass>, the counters fragments, fragments.<pass>, ... bytes.<pass> when counted,\n"
+          "pareto, time, time_ms and its interval, front (pareto|indistinguishable|dominated), dominated_by,\n"
+          "tied_with [(point, axes)], pick; NaN where the CSV is empty), front (the rows on the Pareto front of the\n"
+          "point estimates) and front_rule (how dominance was decided); with budget_ms or budget, pick (point, row,\n"
+          "tied, fitting, cheapest, lines: the least-error point whose time's 95% interval, or whose counter, ends\n"
+          "under it).\n"
           "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
           "those asked for.\n"
           "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"

@@ -58,6 +58,7 @@ constexpr RealRange kSsimGate{-1, 1};              // compare --fail-ssim: mean 
 constexpr RealRange kPixelsPerDegree{1, 1000};
 constexpr RealRange kLightRadius{0, kFloatMax, true};  // bench --light-radius: world units, above 0
 constexpr RealRange kBudgetMs{0, 1e9, true};            // tradeoff --budget-ms: milliseconds, above 0
+constexpr RealRange kBudget{0, 1e18, true};             // tradeoff --budget: a counter's unit (fragments, bytes ...), above 0
 }  // namespace limits
 
 // How an option's value is written.
@@ -128,6 +129,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"tradeoff", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"tradeoff", "--plot-size", F::Size, kPlotSize, "pixels"},
     {"tradeoff", "--budget-ms", kBudgetMs, "GPU milliseconds"},
+    {"tradeoff", "--budget", kBudget, "the --cost counter's unit"},
     {"tradeoff merge", "--plot-size", F::Size, kPlotSize, "pixels"},
     {"compare", "--size", F::Size, kSize, "pixels"},
     {"compare", "--frames", F::Whole, kCompareFrames, "frames"},

@@ -16,6 +16,8 @@ import sys
 
 # Columns that are not configuration axes (docs/bench.md, "The samples CSV").
 SAMPLE_COLUMNS = ["lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"]
+# The cost counters, after them when the run counted them.
+COUNTER_COLUMNS = ["fragments", "samples", "primitives", "vertices", "compute", "bytes"]
 
 
 def median_interval(ms, resamples=1000):
@@ -30,9 +32,10 @@ def read_medians(path, column):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader, None)
-        if not header or header[:3] != ["config", "size", "lights"] or header[-len(SAMPLE_COLUMNS):] != SAMPLE_COLUMNS:
+        timed = header[:-len(COUNTER_COLUMNS)] if header and header[-len(COUNTER_COLUMNS):] == COUNTER_COLUMNS else header
+        if not timed or timed[:3] != ["config", "size", "lights"] or timed[-len(SAMPLE_COLUMNS):] != SAMPLE_COLUMNS:
             raise ValueError(f"{path}: not a bench samples CSV (header {header})")
-        axes = header[1:len(header) - len(SAMPLE_COLUMNS)]  # size, lights, knobs...
+        axes = timed[1:len(timed) - len(SAMPLE_COLUMNS)]  # size, lights, knobs...
         index = {name: i for i, name in enumerate(header)}
         times = {}  # config -> (axis values, [ms])
         for row in reader:

@@ -46,7 +46,7 @@ def number(text):
     return float(text)
 
 
-def read(path, time="frame"):
+def read(path, time="frame", cost="gpu_ms"):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader, None)
@@ -61,7 +61,7 @@ def read(path, time="frame"):
         for row in reader:
             if not row:
                 continue
-            rows.append(read_row(row, index, axes, camera, time, path))
+            rows.append(read_row(row, index, axes, camera, time, path, cost))
     return axes, rows
 
 
@@ -78,8 +78,22 @@ def time_columns(row, index, time, path):
     return ms, ms, ms
 
 
-def read_row(row, index, axes, camera, time, path):
-    ms, ms_lo, ms_hi = time_columns(row, index, time, path)
+def counter_columns(index, time, cost, path):
+    """--cost COUNTER: the counter's columns of --time's span (the frame's, a pass's, or each term's of a sum)."""
+    names = [cost] if time == "frame" else [f"{cost}.{term}" for term in time.split("+")]
+    missing = [n for n in names if n not in index]
+    if missing:
+        raise ValueError(f"{path}: no column {missing[0]} (--time {time}, --cost {cost}: written without counters?)")
+    return names
+
+
+def read_row(row, index, axes, camera, time, path, cost="gpu_ms"):
+    if cost == "gpu_ms":
+        ms, ms_lo, ms_hi = time_columns(row, index, time, path)
+        x, x_lo, x_hi = (number(row[index[c]]) for c in (ms, ms_lo, ms_hi))
+    else:  # a counter: exact, its interval is the value itself
+        x = sum(number(row[index[c]]) for c in counter_columns(index, time, cost, path))
+        x_lo = x_hi = x
     pareto = row[index["pareto"]] == "1"
     front = row[index["front"]] if "front" in index else ("pareto" if pareto else "")
     return {
@@ -91,9 +105,9 @@ def read_row(row, index, axes, camera, time, path):
         "error": number(row[index["error"]]),
         "lo": number(row[index["error_lo"]]),
         "hi": number(row[index["error_hi"]]),
-        "ms": number(row[index[ms]]),
-        "ms_lo": number(row[index[ms_lo]]),
-        "ms_hi": number(row[index[ms_hi]]),
+        "ms": x,
+        "ms_lo": x_lo,
+        "ms_hi": x_hi,
         "pareto": pareto,
         "front": front,
         "tied": row[index["tied_with"]] if "tied_with" in index else "",
@@ -200,7 +214,9 @@ def draw_overlays(ax, args, overlays, infinite_at, labels):
     return overlay_points
 
 
-def x_label(time, shown):
+def x_label(time, shown, cost="gpu_ms"):
+    if cost != "gpu_ms":
+        return f"{cost} per frame (exact)" if time == "frame" else f"{cost} of {time} (exact)"
     if time == "frame":
         return "GPU frame ms (median, 95% CI)"
     interval = ", 95% CI" if any(math.isfinite(r["ms_lo"]) and r["ms_lo"] != r["ms"] for r in shown) else ""
@@ -213,8 +229,8 @@ def read_inputs(args):
     """The size, the CSV and the overlays; None (and one line on stderr) when any is bad."""
     try:
         width, height = (int(v) for v in args.size.split("x"))
-        axes, rows = read(args.csv, args.time)
-        overlays = [read(path, args.time) for path in args.overlay]
+        axes, rows = read(args.csv, args.time, args.cost)
+        overlays = [read(path, args.time, args.cost) for path in args.overlay]
     except (ValueError, OSError) as e:
         print(f"tradeoff_plot: {e}", file=sys.stderr)
         return None
@@ -249,10 +265,11 @@ def draw(plt, args, inputs):
     overlay_points = draw_overlays(ax, args, overlays, infinite_at, labels)
     metric = shown[0]["metric"] if shown else "error"
     buffer = shown[0]["buffer"] if shown else "?"
-    ax.set_xlabel(x_label(args.time, shown))
+    ax.set_xlabel(x_label(args.time, shown, args.cost))
     ax.set_ylabel(f"{metric} of {buffer} (95% CI)")
     over = " over all cameras" if shown and shown[0]["camera"] == "all" else ""
-    ax.set_title(f"tradeoff: {metric} of {buffer} against GPU time{over}")
+    against = "GPU time" if args.cost == "gpu_ms" else args.cost
+    ax.set_title(f"tradeoff: {metric} of {buffer} against {against}{over}")
     note = error_ties_note(shown)
     if note:
         ax.annotate(note, xy=(0.99, 0.01), xycoords="axes fraction", ha="right", va="bottom", fontsize=7,
@@ -274,6 +291,8 @@ def main():
     parser.add_argument("--overlay", action="append", default=[], help="another tradeoff CSV drawn over it")
     parser.add_argument("--time", default="frame",
                         help="the x axis: frame (frame_gpu_ms), a pass (gpu_ms.PASS) or the CSV's time (time_ms)")
+    parser.add_argument("--cost", default="gpu_ms",
+                        help="the x axis' quantity: gpu_ms, or a counter (fragments, samples, ... of --time's span)")
     args = parser.parse_args()
     inputs = read_inputs(args)
     if inputs is None:

@@ -150,6 +150,15 @@ void TimingsPanel::toolbar(UiState& state, PassTimer& timer, RenderSession& sess
                           "Before each pass the frame waits (on a GL fence) for the GPU to finish\n"
                           "the passes before it, so no pass is charged for waiting on another.\n"
                           "Frames get slower while this is on; the history starts over.");
+    sameLineIfFits(checkboxWidth("counters"));
+    bool counting = timer.counting();
+    if (ImGui::Checkbox("counters", &counting)) timer.setCounting(counting);
+    noteItem("timings.counters");
+    if (ImGui::IsItemHovered())
+        tooltip("Adds each pass's cost counters of the last frame: fragment shader invocations,\n"
+                "samples passed (depth and stencil), primitives and vertices submitted, compute\n"
+                "invocations and the bytes of its declared resources. Exact: they repeat bit for\n"
+                "bit (docs/bench.md says which driver counts what).");
     // The file field and its button together: at least 120 px of field.
     const float exportW = ImGui::CalcTextSize("export CSV").x + style.FramePadding.x * 2.0f;
     sameLineIfFits(120.0f + style.ItemSpacing.x + exportW);
@@ -413,7 +422,8 @@ float nameColumnWidth(const std::vector<std::string>& names, float extra) {
 
 void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passes, const FrameReport& report) {
     const bool cpu = timer.isolateCpu();
-    const int columns = cpu ? 8 : 7;
+    const bool counted = timer.counting();
+    const int columns = (cpu ? 8 : 7) + (counted ? PassCounts::kCount : 0);
     // The rest of the panel but the app CPU plot under it; it scrolls both
     // ways when the panel is smaller than its rows and columns.
     const float height = std::max(ImGui::GetContentRegionAvail().y - 46.0f, 5.0f * ImGui::GetFrameHeight());
@@ -427,6 +437,8 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
     ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, nameColumnWidth(passes, 24.0f));
     for (const char* h : {"last", "median", "mean", "min", "max"}) ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed, numberColumnWidth(h));
     if (cpu) ImGui::TableSetupColumn("own CPU", ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("own CPU"));
+    for (int i = 0; counted && i < PassCounts::kCount; ++i)
+        ImGui::TableSetupColumn(PassCounts::name(i), ImGuiTableColumnFlags_WidthFixed, numberColumnWidth("1234567890"));
     ImGui::TableHeadersRow();
     auto statsRow = [&](const std::string& name, unsigned color, bool pass) {
         const TimingStats g = timer.gpuStats(name, static_cast<size_t>(window));
@@ -468,6 +480,13 @@ void TimingsPanel::table(PassTimer& timer, const std::vector<std::string>& passe
         if (cpu) {
             ImGui::TableNextColumn();
             numberCell(c.median);
+        }
+        // The last harvested frame's counters: exact, no statistics needed.
+        for (int i = 0; counted && i < PassCounts::kCount; ++i) {
+            ImGui::TableNextColumn();
+            const std::int64_t v = s && !s->samples.empty() ? s->samples.back().counts[i] : -1;
+            if (v >= 0) ImGui::Text("%lld", static_cast<long long>(v));
+            else ImGui::TextDisabled("-");
         }
         ImGui::PopID();
     };
@@ -639,9 +658,16 @@ nlohmann::json timingsReport(const PassTimer& timer, const UiState& state) {
                            {"influenced", std::vector<std::string>(m.influenced().begin(), m.influenced().end())},
                            {"passes", passes}};
     nlohmann::json series = nlohmann::json::object();
-    for (const auto& s : timer.series())
-        if (!s.samples.empty()) series[s.name] = {{"frame", s.samples.back().frame}, {"gpu_ms", s.samples.back().gpuMs}};
+    for (const auto& s : timer.series()) {
+        if (s.samples.empty()) continue;
+        series[s.name] = {{"frame", s.samples.back().frame}, {"gpu_ms", s.samples.back().gpuMs}};
+        // The counters' columns, as the table shows them (the newest frame's).
+        const PassCounts& c = s.samples.back().counts;
+        for (int i = 0; c.measured() && i < PassCounts::kCount; ++i)
+            if (c[i] >= 0) series[s.name]["counters"][PassCounts::name(i)] = c[i];
+    }
     return {{"gpu_text", gpuFrameText(timer, state)},
+            {"counting", timer.counting()},
             {"config_since", state.configSince},
             {"pending_frames", timer.pendingFrames()},
             {"timings_pending", state.timingsPending},

@@ -66,8 +66,9 @@ std::vector<float> axisTicks(float bottom, float top, bool logScale, int count =
 // "GPU ... ms (frame 43 pending)" when there is none.
 std::string gpuFrameText(const PassTimer& timer, const UiState& state);
 // What --layout-out reports of the timings: the top bar's text, the latest
-// rendered and timed frames, and the cost of the change (its state, knobs,
-// frames and the verdict per pass).
+// rendered and timed frames (with their cost counters while *counters* is
+// on: "counting"), and the cost of the change (its state, knobs, frames and
+// the verdict per pass).
 nlohmann::json timingsReport(const PassTimer& timer, const UiState& state);
 
 }  // namespace dw::ui

@@ -32,6 +32,23 @@ std::string number(double v) {
 }
 
 const char* const kLeading[] = {"config", "size", "lights"};
+
+// The counter columns of a row, from field `first` on: empty is not measured.
+template <typename Fail>
+PassCounts countsOf(const std::vector<std::string>& f, size_t first, const Fail& fail) {
+    PassCounts c;
+    for (int i = 0; i < PassCounts::kCount; ++i) {
+        const std::string& text = f[first + static_cast<size_t>(i)];
+        if (text.empty()) continue;
+        long long v = -1;
+        auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec != std::errc() || p != text.data() + text.size() || v < 0)
+            fail(std::string(PassCounts::name(i)) + ": expected a count (a whole number, at least 0) or nothing, got '" +
+                 text + "'");
+        c.v[static_cast<size_t>(i)] = v;
+    }
+    return c;
+}
 const char* const kTrailing[] = {"lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"};
 
 }  // namespace
@@ -42,6 +59,21 @@ const BenchConfigResult* BenchResults::find(int config) const {
     return it != configs.end() && it->config.index == config ? &*it : nullptr;
 }
 
+std::string BenchResults::counterMismatch() const {
+    std::map<std::pair<int, std::string>, const BenchSample*> first;
+    for (const auto& s : samples) {
+        if (!s.counts.measured()) continue;
+        auto [it, fresh] = first.emplace(std::make_pair(s.config, s.series), &s);
+        if (fresh || s.counts == it->second->counts) continue;
+        for (int i = 0; i < PassCounts::kCount; ++i)
+            if (s.counts[i] != it->second->counts[i])
+                return "configuration " + std::to_string(s.config) + ", sample " + std::to_string(s.sample) + ": " +
+                       s.series + "'s " + PassCounts::name(i) + " " + std::to_string(s.counts[i]) + " (sample " +
+                       std::to_string(it->second->sample) + ": " + std::to_string(it->second->counts[i]) + ")";
+    }
+    return "";
+}
+
 std::vector<std::string> BenchResults::seriesOf(int config) const {
     std::vector<std::string> names;
     for (const auto& s : samples)
@@ -49,15 +81,16 @@ std::vector<std::string> BenchResults::seriesOf(int config) const {
     return names;
 }
 
-std::string BenchResults::csvHeader(const std::vector<std::string>& knobAxes) {
+std::string BenchResults::csvHeader(const std::vector<std::string>& knobAxes, bool counted) {
     std::string h;
     for (const char* c : kLeading) h += std::string(h.empty() ? "" : ",") + c;
     for (const auto& k : knobAxes) h += "," + csvField(k);
     for (const char* c : kTrailing) h += std::string(",") + c;
+    for (int i = 0; counted && i < PassCounts::kCount; ++i) h += std::string(",") + PassCounts::name(i);
     return h;
 }
 
-std::string BenchResults::csv() const { return csvHeader(knobAxes) + "\n" + csvRows(samples); }
+std::string BenchResults::csv() const { return csvHeader(knobAxes, counted) + "\n" + csvRows(samples); }
 
 std::string BenchResults::csvRows(const std::vector<BenchSample>& rows) const {
     std::ostringstream out;
@@ -67,7 +100,10 @@ std::string BenchResults::csvRows(const std::vector<BenchSample>& rows) const {
         out << c->config.index << "," << c->config.size() << "," << c->config.lights;
         for (const auto& v : c->config.knobValues) out << "," << csvField(v);
         out << "," << number(c->lpp) << "," << number(c->lppLit) << "," << s.sample << "," << s.seq << "," << s.frame << ","
-            << csvField(s.series) << "," << number(s.gpuMs) << "," << number(s.cpuMs) << "\n";
+            << csvField(s.series) << "," << number(s.gpuMs) << "," << number(s.cpuMs);
+        for (int i = 0; counted && i < PassCounts::kCount; ++i)
+            out << "," << (s.counts[i] >= 0 ? std::to_string(s.counts[i]) : std::string());
+        out << "\n";
     }
     return out.str();
 }
@@ -80,7 +116,13 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
     std::istringstream in(text);
     std::string line;
     if (!std::getline(in, line)) throw FileError(path, "empty file (expected the bench CSV header)");
-    const std::vector<std::string> header = splitCsvLine(line);
+    std::vector<std::string> header = splitCsvLine(line);
+    // The counter columns, when there, come last.
+    bool counted = header.size() > PassCounts::kCount;
+    for (int i = 0; counted && i < PassCounts::kCount; ++i)
+        counted = header[header.size() - PassCounts::kCount + static_cast<size_t>(i)] == PassCounts::name(i);
+    const size_t columns = header.size();
+    if (counted) header.resize(header.size() - PassCounts::kCount);
     const size_t lead = std::size(kLeading), trail = std::size(kTrailing);
     bool ok = header.size() >= lead + trail;
     for (size_t i = 0; ok && i < lead; ++i) ok = header[i] == kLeading[i];
@@ -88,6 +130,7 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
     if (!ok) throw FileError(path, "line 1: not a bench samples CSV (expected " + csvHeader({"<knob>..."}) + ")");
 
     BenchResults r;
+    r.counted = counted;
     r.knobAxes.assign(header.begin() + static_cast<std::ptrdiff_t>(lead), header.end() - static_cast<std::ptrdiff_t>(trail));
     const size_t knobs = r.knobAxes.size();
     std::map<int, BenchConfigResult> configs;
@@ -104,8 +147,7 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
         auto fail = [&](const std::string& what) -> void {
             throw FileError(path, "line " + std::to_string(lineNo) + ": " + what);
         };
-        if (f.size() != header.size())
-            fail("expected " + std::to_string(header.size()) + " fields, got " + std::to_string(f.size()));
+        if (f.size() != columns) fail("expected " + std::to_string(columns) + " fields, got " + std::to_string(f.size()));
         auto integer = [&](size_t i) {
             long long v = 0;
             auto [p, ec] = std::from_chars(f[i].data(), f[i].data() + f[i].size(), v);
@@ -155,6 +197,7 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
         };
         s.gpuMs = time(t + 6);
         s.cpuMs = time(t + 7);
+        if (counted) s.counts = countsOf(f, t + 8, fail);
         if (!once.emplace(s.config, s.sample, s.series).second)
             fail("configuration " + std::to_string(s.config) + ", sample " + std::to_string(s.sample) + ", " + s.series +
                  " is there twice (a file joined twice?)");
@@ -191,6 +234,7 @@ BenchResults BenchResults::merge(std::vector<BenchResults> parts, const std::vec
     all.knobAxes = parts.front().knobAxes;
     all.machine = parts.front().machine;
     all.settings = parts.front().settings;
+    for (const auto& part : parts) all.counted = all.counted || part.counted;
     std::map<int, size_t> owner;  // configuration -> the part it came from
     for (size_t p = 0; p < parts.size(); ++p) {
         const std::string name = p < names.size() ? names[p] : "part " + std::to_string(p);

@@ -5,6 +5,9 @@
 // The samples CSV carries everything the summary needs, one row per frame
 // and series:
 //   config,size,lights,<knob>...,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms
+// and, when counted, the row's cost counters (PassCounts.h; a pass's own, the
+// frame row's their sums; empty for a span or where not measured):
+//   ...,cpu_ms,fragments,samples,primitives,vertices,compute,bytes
 // so `bench merge` can join shards from CSV alone and recompute the table.
 // Needs no GL.
 #include <cstdint>
@@ -15,6 +18,7 @@
 
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/gl/CompiledShaders.h"
+#include "renderer/graph/PassCounts.h"
 
 namespace dw {
 
@@ -25,6 +29,7 @@ struct BenchSample {
     std::uint64_t frame = 0;    // the session's frame index
     std::string series;         // a pass, a span ("lighting/shadow maps") or "frame" (the whole frame)
     double gpuMs = 0.0, cpuMs = 0.0;
+    PassCounts counts;          // the pass's (the frame's: their sums) cost counters; none for a span
 };
 
 struct BenchConfigResult {
@@ -48,15 +53,21 @@ struct BenchResults {
     BenchFields machine;                      // GL renderer, CPU, compiler, build ...
     BenchFields settings;                     // scene, frames, warm-up, seed ...
     gl::CompiledShaders shaders;              // the shader files the run compiled (none when read from a CSV)
+    bool counted = false;                     // the CSV carries the counter columns
 
     const BenchConfigResult* find(int config) const;
+    // The counters of a configuration are exact, so every counted frame of it
+    // should count the same (a moving camera aside): "" when they do, else
+    // the first that does not ("configuration 3, sample 2: lighting's
+    // fragments 1200 (sample 0: 1180)").
+    std::string counterMismatch() const;
     // The series of a configuration's frames in the order they were recorded.
     std::vector<std::string> seriesOf(int config) const;
 
     std::string csv() const;
     // The rows of `samples` (configurations from this->configs), without the header line.
     std::string csvRows(const std::vector<BenchSample>& samples) const;
-    static std::string csvHeader(const std::vector<std::string>& knobAxes);
+    static std::string csvHeader(const std::vector<std::string>& knobAxes, bool counted = false);
     // Reads csv() back; throws FileError naming the file and line.
     // `cutLastLine`: a last line without its newline (a run killed while
     // writing it) is left out instead of refused (bench --resume).

@@ -294,6 +294,7 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
     BenchResults results = emptyResults(o_.grid, configs_);
+    results.counted = o_.counters;
     const std::map<int, std::vector<Light>> lightLists = generateLightLists(o_, configs_, scene_, radius_, threshold_);
     // A session per size, all in this context, each with the scene uploaded once.
     std::map<std::string, SizeSession> sessions;
@@ -327,6 +328,7 @@ BenchResults BenchRunner::run(const BenchProgress& progress, const BenchStream& 
     plan.frames = o_.frames;
     plan.warmup = o_.warmup;
     plan.block = o_.block;
+    plan.counters = o_.counters;
     ConfigurationRunner runner(
         plan, [&](int i) -> RenderSession& { return apply(configs_[static_cast<size_t>(i)]); },
         [&](RenderSession& session, int, int sample) { session.camera() = path.at(sample, o_.frames); });

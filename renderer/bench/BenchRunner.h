@@ -45,6 +45,7 @@ struct BenchOptions {
     bool walkthrough = false;       // the camera follows the scene's camera.path
     int lppPoses = 4;               // poses the LPP frame is averaged over on a moving camera
     bool lpp = true;
+    bool counters = true;  // each pass's cost counters (PassCounts.h) in the samples (--no-counters: off)
     BenchShard shard;
     GridExclusion exclude;  // --exclude: corners of the grid left out (axes size, lights and the knobs)
     std::string baseline;  // --baseline axis=value; empty: chooseBaseline's rule

@@ -369,6 +369,11 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
                             {"cpu_ms", Json::object()}});
         list.back()["gpu_ms"][s.series] = rounded(s.gpuMs);
         list.back()["cpu_ms"][s.series] = rounded(s.cpuMs);
+        if (!s.counts.measured()) continue;
+        Json c = Json::object();
+        for (int i = 0; i < PassCounts::kCount; ++i)
+            if (s.counts[i] >= 0) c[PassCounts::name(i)] = s.counts[i];
+        list.back()["counters"][s.series] = c;
     }
     std::map<std::pair<int, std::string>, std::vector<double>> gpuOf;
     for (const auto& s : results.samples) gpuOf[{s.config, s.series}].push_back(s.gpuMs);
@@ -415,8 +420,11 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
                         : Json{{"axis", summary.baseline.axis},
                                {"value", summary.baseline.value},
                                {"series", summary.baseline.series}};
-    return {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
-            {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
+    Json out = {{"tool", "deferred-workbench bench"}, {"machine", machine}, {"settings", settings},
+                {"axes", axes}, {"baseline", baseline}, {"configs", configs}};
+    // Counters are exact: the same in every counted frame of a configuration, or the first that is not.
+    if (results.counted) out["counters_mismatch"] = results.counterMismatch();
+    return out;
 }
 
 const nlohmann::json& benchSummaryOf(const nlohmann::json& file) {

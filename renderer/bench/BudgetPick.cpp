@@ -97,6 +97,12 @@ BudgetCost BudgetPicker::timeCost(const TradeoffTable& t) {
             }};
 }
 
+BudgetCost BudgetPicker::counterCost(const TradeoffTable& t, const std::string& counter) {
+    return {t.time + " " + counter, counter, true, [&t, counter](const TradeoffRow& r, double& v, double& lo, double& hi) {
+                v = lo = hi = t.costOf(r, t.time, counter);
+            }};
+}
+
 BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::string& camera) {
     return pick(t, budgetMs, camera, timeCost(t));
 }
@@ -114,7 +120,9 @@ BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::stri
     std::vector<TradeoffRow*> rows, fits;
     for (auto& r : t.rows)
         if (r.camera == camera) rows.push_back(&r);
-    if (rows.empty()) throw Error("--budget-ms: no rows of camera " + camera + " to pick from");
+    if (rows.empty())
+        throw Error((cost.unit == "ms" ? "--budget-ms" : "--budget") + std::string(": no rows of camera ") + camera +
+                    " to pick from");
     for (TradeoffRow* r : rows) {
         const double hi = costOf(cost, *r).hi;
         const bool fit = std::isfinite(hi) && hi < budgetMs && !std::isnan(r->error);

@@ -46,6 +46,10 @@ public:
     static BudgetPick pick(TradeoffTable& table, double budget, const std::string& camera, const BudgetCost& cost);
     // The table's time as a BudgetCost (time_ms and its interval, in ms).
     static BudgetCost timeCost(const TradeoffTable& table);
+    // A counter of the table's time span (TradeoffTable::costOf: `tradeoff
+    // --cost fragments --budget N`) as a BudgetCost: exact, in its own unit
+    // ("fragments", "bytes", ...).
+    static BudgetCost counterCost(const TradeoffTable& table, const std::string& counter);
     // The camera whose rows a summary shows: "all" when the table has such rows, else the first row's.
     static std::string shownCamera(const TradeoffTable& table);
 };

@@ -170,6 +170,7 @@ void ConfigurationRunner::Measurement::harvestSession(RenderSession& session, Se
             // `bench merge` over its CSV are made from the same numbers.
             b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
             b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
+            b.counts = t.counts;
             seriesSeen[b.config].insert(b.series);
             fresh.push_back(std::move(b));
         }
@@ -211,6 +212,7 @@ void ConfigurationRunner::begin(const std::string& name, const std::function<std
     const size_t perSession = static_cast<size_t>(configs) * static_cast<size_t>(m.roundCount * plan_.warmup + plan_.frames);
     for (RenderSession* s : sessionOf) {
         m.sessions[s];
+        if (plan_.counters) s->pipeline().timer().setCounting(true);
         s->pipeline().timer().setHistoryLength(std::max({PassTimer::kHistory, perSession + 64, s->pipeline().timer().historyLength()}));
     }
     m.roundSeconds.assign(static_cast<size_t>(configs), -1.0);

@@ -39,6 +39,9 @@ struct RunnerPlan {
     // caller whose own loop changes the session between steps (the window's
     // quick sweep and records put the view's state back after each frame).
     bool selectEveryFrame = false;
+    // Count each pass's cost counters (PassTimer::setCounting) in every
+    // session it renders with; BenchSample::counts carries them.
+    bool counters = false;
 };
 
 // What the passes said they lost in a configuration's counted frames

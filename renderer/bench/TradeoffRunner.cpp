@@ -1,5 +1,7 @@
 #include "renderer/bench/TradeoffRunner.h"
 
+#include "renderer/gl/CounterQuery.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -92,6 +94,11 @@ void TradeoffRunner::checkOptions() const {
     if (o_.time.empty()) throw Error("--time: expected frame or a pass's name");
     TradeoffTable::timeTerms(o_.time);  // an empty term, a term twice, frame in a sum
     if (o_.budgetMs != 0.0) BudgetPicker::check(o_.budgetMs);
+    if (o_.budget != 0.0) BudgetPicker::check(o_.budget, "--budget");
+    if (o_.budgetMs != 0.0 && o_.budget != 0.0) throw Error("--budget-ms and --budget: give one");
+    if (o_.budget != 0.0 && o_.cost == "gpu_ms") throw Error("--budget bounds a counter: give --cost with a counter");
+    if (!TradeoffTable::isCost(o_.cost))
+        throw Error("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + o_.cost + "'");
     const auto& metrics = ImageError::metrics();
     if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
         throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
@@ -390,6 +397,74 @@ void fillRankedTime(TradeoffRow& row, const RowData& data, int resamples, std::u
     row.timeMsHi = i.high;
 }
 
+// The front by ConfidentFront's paired bootstrap: the cost is the ranked
+// time's draws (--cost gpu_ms) or a counter (exact: compared by value, so
+// only the error is tested).
+void markConfidentFront(TradeoffTable& t, std::vector<RowData>& data, const TradeoffOptions& o) {
+    for (size_t i = 0; i < t.rows.size(); ++i) data[i].time = t.rows[i].timeMs;
+    t.checkCost(o.cost);  // a counter no point has: one line
+    const EvidenceDraws how{o.resamples, o.block, 777};
+    t.markFront(
+        [&](size_t i) {
+            FrontEvidence e = rowEvidence(data[i], how);
+            if (o.cost != "gpu_ms") {
+                const double c = t.costOf(t.rows[i], t.time, o.cost);
+                e.cost = {c, c, c, {}, true};
+            }
+            return e;
+        },
+        FrontRule::pairedBootstrap);
+}
+
+// Per series: each counted frame's counters, by sample.
+using CountsBySeries = std::map<std::string, std::map<int, PassCounts>>;
+
+CounterValues valuesOf(const PassCounts& c) {
+    CounterValues v;
+    for (size_t i = 0; i < v.size(); ++i) v[i] = c.v[i] < 0 ? kNaN : static_cast<double>(c.v[i]);
+    return v;
+}
+
+// A row's counters: its first counted frame's (they are exact: every frame
+// of a configuration should give the same); the first frame whose counters
+// differ from them is named in `differs` ("" when none).
+void fillCounts(TradeoffRow& row, const std::vector<std::string>& passes, const CountsBySeries& counts,
+                std::string& differs) {
+    auto first = [&](const std::string& series) {
+        auto it = counts.find(series);
+        if (it == counts.end() || it->second.empty()) return valuesOf({});
+        const PassCounts& c = it->second.begin()->second;
+        for (const auto& [sample, other] : it->second)
+            if (!(other == c) && differs.empty())
+                differs = series + " in counted frame " + std::to_string(sample) + " differs from frame " +
+                          std::to_string(it->second.begin()->first) + "'s (tabled)";
+        return valuesOf(c);
+    };
+    row.frameCounts = first(PassTimer::kFrameSeries);
+    row.passCounts.clear();
+    for (const auto& pass : passes) row.passCounts.push_back(first(pass));
+}
+
+// The "all" row's counters: each the mean over the cameras that have it.
+void meanCounts(TradeoffRow& all, const std::vector<TradeoffRow>& rows, size_t firstRow, size_t passCount) {
+    auto mean = [&](auto value) {
+        double sum = 0.0;
+        int n = 0;
+        for (size_t r = firstRow; r < rows.size(); ++r)
+            if (const double v = value(rows[r]); !std::isnan(v)) {
+                sum += v;
+                ++n;
+            }
+        return n ? sum / n : kNaN;
+    };
+    all.passCounts.assign(passCount, valuesOf({}));
+    for (size_t i = 0; i < PassCounts::kCount; ++i) {
+        all.frameCounts[i] = mean([&](const TradeoffRow& r) { return r.frameCounts[i]; });
+        for (size_t p = 0; p < passCount; ++p)
+            all.passCounts[p][i] = mean([&](const TradeoffRow& r) { return p < r.passCounts.size() ? r.passCounts[p][i] : kNaN; });
+    }
+}
+
 }  // namespace
 
 // Stage 4: the table, per (point, camera), then per point over every camera,
@@ -399,13 +474,16 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
     const int cameraCount = static_cast<int>(cameras_.size());
     for (const auto& a : o_.sweep.axes) t.axes.push_back(a.name);
     std::map<int, std::map<std::string, std::vector<double>>> ms;  // config -> series -> GPU ms
+    std::map<int, CountsBySeries> counts;                            // config -> series -> sample -> counters
     for (const auto& s : timings.samples) {
         if (!tabledSeries(s.series)) continue;  // other spans: in the JSON of bench, not here
         if (s.series != PassTimer::kFrameSeries &&
             std::find(t.passes.begin(), t.passes.end(), s.series) == t.passes.end())
             t.passes.push_back(s.series);
         ms[s.config][s.series].push_back(s.gpuMs);
+        if (s.counts.measured()) counts[s.config][s.series][s.sample] = s.counts;
     }
+    t.counted = o_.counters;
     const std::string bufferColumn = o_.buffer + (o_.mask.empty() ? "" : ":" + o_.mask);
     t.time = o_.time;
     const FrameTimes ranked = frameTimes(timings.samples, TradeoffTable::timeTerms(o_.time));
@@ -434,6 +512,7 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
         if (!std::isnan(e.value)) d.tiles[static_cast<size_t>(camera)] = &e.tiles;
     };
     for (size_t p = 0; p < points_.size(); ++p) {
+        const size_t firstRow = t.rows.size();
         std::map<std::string, std::vector<double>> pooled;
         std::vector<double> values;
         for (int c = 0; c < cameraCount; ++c) {
@@ -443,6 +522,13 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             addConfig(data.back(), config, c);
             fillTimes(row, t.passes, ms[config], o_.resamples, pointSeed(p, c) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, c) + 1);
+            std::string differs;
+            fillCounts(row, t.passes, counts[config], differs);
+            if (!differs.empty()) {
+                notes.push_back("point " + std::to_string(points_[p].index) + ", camera " + std::to_string(c) +
+                                ": the counters are not the same in every counted frame: " + differs);
+                if (say) say("tradeoff: " + notes.back());
+            }
             for (const auto& [series, v] : ms[config]) pooled[series].insert(pooled[series].end(), v.begin(), v.end());
             values.push_back(e.value);
             t.rows.push_back(std::move(row));
@@ -454,6 +540,7 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             for (int c = 0; c < cameraCount; ++c) addConfig(data.back(), static_cast<int>(p) * cameraCount + c, c);
             fillTimes(row, t.passes, pooled, o_.resamples, pointSeed(p, cameraCount) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, cameraCount) + 1);
+            meanCounts(row, t.rows, firstRow, t.passes.size());
             t.rows.push_back(std::move(row));
         }
     }
@@ -464,9 +551,7 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
                     (notes.empty() ? std::string("no note") : notes.front()) +
                     (notes.size() > 1 ? "; and " + std::to_string(notes.size() - 1) + " more like it" : "") + ")");
     if (t.rows.empty()) return;
-    for (size_t i = 0; i < t.rows.size(); ++i) data[i].time = t.rows[i].timeMs;
-    const EvidenceDraws how{o_.resamples, o_.block, 777};
-    t.markFront([&](size_t i) { return rowEvidence(data[i], how); }, FrontRule::pairedBootstrap);
+    markConfidentFront(t, data, o_);
 }
 
 // The all-cameras error is the mean over the cameras that have one: said when some have none.
@@ -541,18 +626,31 @@ BenchFields TradeoffRunner::settingsOf(const TradeoffResult& result, double tota
         settings.emplace_back("budget_ms", shortText(o_.budgetMs));
         for (const auto& line : result.pick.lines) settings.emplace_back("pick", line);
     }
+    if (o_.budget != 0.0) {
+        settings.emplace_back("budget", shortText(o_.budget) + " " + o_.cost);
+        for (const auto& line : result.pick.lines) settings.emplace_back("pick", line);
+    }
     for (const auto& n : notes) settings.emplace_back("note", n);
     return settings;
 }
 
 // The study in named stages: plan (session, AOV's cost), time (the
 // interleaved rounds), capture errors, tabulate (table and front), settings.
+void TradeoffRunner::checkCostCounter() const {
+    const int counter = PassCounts::index(o_.cost);
+    if (counter >= 0 && PassCounts::needsStatistics(counter) && !gl::hasPipelineStatistics())
+        throw Error("--cost " + o_.cost + ": this driver (" +
+                    std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) +
+                    ") lacks GL_ARB_pipeline_statistics_query; samples, bytes and gpu_ms are counted here");
+}
+
 TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const BenchProgress& progress) {
     auto say = [&](const std::string& line) {
         if (progress) progress(line);
     };
     const auto start = Clock::now();
     const int cameraCount = static_cast<int>(cameras_.size());
+    checkCostCounter();
     say("tradeoff: setting up " + std::to_string(o_.run.width) + "x" + std::to_string(o_.run.height) +
         " (compiling shaders, uploading " + scene_.name + ")");
     RenderSession session;
@@ -566,6 +664,7 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     plan.frames = o_.frames;
     plan.warmup = o_.warmup;
     plan.block = o_.block;
+    plan.counters = o_.counters;
     ConfigurationRunner runner(
         plan,
         [&](int i) -> RenderSession& {
@@ -596,6 +695,9 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
     tabulate(result.table, timings, errors, notes, progress);
     if (o_.budgetMs != 0.0 && !result.table.rows.empty())
         result.pick = BudgetPicker::pick(result.table, o_.budgetMs, BudgetPicker::shownCamera(result.table));
+    if (o_.budget != 0.0 && !result.table.rows.empty())
+        result.pick = BudgetPicker::pick(result.table, o_.budget, BudgetPicker::shownCamera(result.table),
+                                         BudgetPicker::counterCost(result.table, o_.cost));
     result.settings = settingsOf(result, seconds(start), notes);
     say("tradeoff: timed in " + shortText(result.timingSeconds) + " s, errors in " + shortText(result.errorSeconds) + " s");
     result.shaders = session.shaders().compiled();

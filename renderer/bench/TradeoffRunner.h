@@ -60,7 +60,10 @@ struct TradeoffOptions {
     // What the front ranks by: "frame", a pass's or span's gpu_ms, or a sum of
     // them ("lighting+ao+ao_filter": per frame, the terms' sum; TradeoffTable::timeTerms).
     std::string time = "frame";
-    double budgetMs = 0.0;  // > 0: pick the least-error point under it (BudgetPicker); 0: none
+    double budgetMs = 0.0;  // > 0: pick the least-error point whose time is under it (BudgetPicker); 0: none
+    double budget = 0.0;    // > 0: pick the least-error point whose counter `cost` is under it, in its unit; 0: none
+    std::string cost = "gpu_ms";  // the front's cost axis: gpu_ms or a counter (TradeoffTable::costOf)
+    bool counters = true;         // count each pass's cost counters (PassCounts.h) in the timed frames
     std::vector<std::string> against;  // empty: the reference; else knob=value on top of each point
     int resamples = 2000;
     BenchShard shard;  // points whose number % count == index
@@ -77,7 +80,7 @@ struct TradeoffResult {
     BenchFields settings;  // scene, size, frames, cameras, metric, buffer, against, seconds ...
     double timingSeconds = 0.0, errorSeconds = 0.0;  // the timed rounds; the captures and errors (references included)
     gl::CompiledShaders shaders;  // the shader files the run compiled (the record hashes them)
-    BudgetPick pick;              // with TradeoffOptions::budgetMs: what it picked (lines empty without)
+    BudgetPick pick;              // with TradeoffOptions::budgetMs or budget: what it picked (lines empty without)
 };
 
 class TradeoffRunner {
@@ -130,6 +133,8 @@ private:
     void warnAovCost(RenderSession& session) const;
     void warn(const std::string& line) const;
     void checkTimedPassName(RenderSession& session) const;
+    // A --cost counter the driver lacks is refused before anything renders.
+    void checkCostCounter() const;
     void checkTimedPass(const RunnerTimings& timings) const;
     FloatImage againstImage(RenderSession& session, const TradeoffReference& reference, int camera,
                             std::map<std::string, FloatImage>& rendered) const;

@@ -55,6 +55,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
+TradeoffRow::TradeoffRow() { frameCounts.fill(kNaN); }
+
 std::string TradeoffTable::axisValue(const TradeoffRow& row, const std::string& axis) const {
     for (size_t i = 0; i < axes.size() && i < row.axisValues.size(); ++i)
         if (axes[i] == axis) return row.axisValues[i];
@@ -110,15 +112,57 @@ void TradeoffTable::rankBy(const std::string& t) {
     time = t;
 }
 
-void TradeoffTable::markParetoFront(const std::string& t) {
-    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
-    rankBy(t);
-    markFront([this](size_t i) { return intervalEvidence(rows[i]); }, FrontRule::intervals);
+double TradeoffTable::passCount(const TradeoffRow& row, const std::string& pass, int counter) const {
+    for (size_t i = 0; i < passes.size() && i < row.passCounts.size(); ++i)
+        if (passes[i] == pass) return row.passCounts[i][static_cast<size_t>(counter)];
+    return kNaN;
 }
 
-FrontEvidence TradeoffTable::intervalEvidence(const TradeoffRow& r) const {
+double TradeoffTable::costOf(const TradeoffRow& row, const std::string& t, const std::string& cost) const {
+    if (cost == "gpu_ms") return timeOf(row, t);
+    const int counter = PassCounts::index(cost);
+    if (counter < 0) return kNaN;
+    if (t == "frame") return row.frameCounts[static_cast<size_t>(counter)];
+    double sum = 0.0;  // a sum of passes: the sum of their counts (NaN when one is not counted)
+    for (const auto& term : timeTerms(t)) sum += passCount(row, term, counter);
+    return sum;
+}
+
+bool TradeoffTable::isCost(const std::string& cost) { return cost == "gpu_ms" || PassCounts::index(cost) >= 0; }
+
+std::string TradeoffTable::costNames() {
+    std::string s = "gpu_ms";
+    for (int i = 0; i < PassCounts::kCount; ++i) s += std::string(", ") + PassCounts::name(i);
+    return s;
+}
+
+bool TradeoffTable::hasCounter(int counter) const {
+    return std::any_of(rows.begin(), rows.end(),
+                       [&](const TradeoffRow& r) { return !std::isnan(r.frameCounts[static_cast<size_t>(counter)]); });
+}
+
+void TradeoffTable::checkCost(const std::string& cost) const {
+    if (!isCost(cost)) throw Error("--cost " + cost + ": expected one of " + costNames());
+    if (cost != "gpu_ms" && !hasCounter(PassCounts::index(cost)))
+        throw Error("--cost " + cost + ": no point has " + cost +
+                    " counted (measured without counters, or the driver lacks GL_ARB_pipeline_statistics_query)");
+}
+
+void TradeoffTable::markParetoFront(const std::string& t, const std::string& cost) {
+    if (rows.empty()) throw Error("no points to compare: the sweep is empty");
+    rankBy(t);
+    checkCost(cost);
+    markFront([this, &cost](size_t i) { return intervalEvidence(rows[i], cost); }, FrontRule::intervals);
+}
+
+FrontEvidence TradeoffTable::intervalEvidence(const TradeoffRow& r, const std::string& cost) const {
     FrontEvidence e;
-    e.cost = {r.timeMs, r.timeMsLo, r.timeMsHi, {}, false};
+    if (cost == "gpu_ms") {
+        e.cost = {r.timeMs, r.timeMsLo, r.timeMsHi, {}, false};
+    } else {
+        const double c = costOf(r, time, cost);
+        e.cost = {c, c, c, {}, true};
+    }
     const bool lower = lowerIsBetter(r.metric);
     e.error = lower ? FrontAxis{r.error, r.errorLo, r.errorHi, {}, false}
                     : FrontAxis{-r.error, -r.errorHi, -r.errorLo, {}, false};
@@ -209,18 +253,23 @@ std::vector<std::string> TradeoffTable::frontSummary(const std::string& camera) 
 }
 
 std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& axes,
-                                                const std::vector<std::string>& passes) {
+                                                const std::vector<std::string>& passes, bool counted) {
     std::vector<std::string> c = {"point"};
     c.insert(c.end(), axes.begin(), axes.end());
     c.push_back("camera");
     c.insert(c.end(), std::begin(kMiddle), std::end(kMiddle));
     for (const auto& p : passes) c.push_back(kPassPrefix + p);
+    for (int i = 0; counted && i < PassCounts::kCount; ++i) {
+        c.push_back(PassCounts::name(i));
+        for (const auto& p : passes)
+            if (hasCounterColumns(p)) c.push_back(std::string(PassCounts::name(i)) + "." + p);
+    }
     c.push_back("pareto");
     c.insert(c.end(), std::begin(kTail), std::end(kTail));
     return c;
 }
 
-std::vector<std::string> TradeoffTable::columns() const { return columns(axes, passes); }
+std::vector<std::string> TradeoffTable::columns() const { return columns(axes, passes, counted); }
 
 std::string TradeoffTable::csv() const {
     std::ostringstream out;
@@ -235,6 +284,11 @@ std::string TradeoffTable::csv() const {
             << number(r.error) << "," << number(r.errorLo) << "," << number(r.errorHi) << "," << r.frames << ","
             << number(r.frameGpuMs) << "," << number(r.frameGpuMsLo) << "," << number(r.frameGpuMsHi);
         for (size_t p = 0; p < passes.size(); ++p) out << "," << number(p < r.passGpuMs.size() ? r.passGpuMs[p] : kNaN);
+        for (size_t i = 0; counted && i < PassCounts::kCount; ++i) {
+            out << "," << number(r.frameCounts[i]);
+            for (size_t p = 0; p < passes.size(); ++p)
+                if (hasCounterColumns(passes[p])) out << "," << number(p < r.passCounts.size() ? r.passCounts[p][i] : kNaN);
+        }
         out << "," << (r.pareto ? 1 : 0) << "," << csvField(time) << "," << number(r.timeMs) << ","
             << number(r.timeMsLo) << "," << number(r.timeMsHi) << "," << r.front << ",";
         for (size_t k = 0; k < r.dominatedBy.size(); ++k) out << (k ? " " : "") << r.dominatedBy[k];
@@ -255,9 +309,27 @@ FileError cellError(const std::string& path, int lineNo, size_t column, const st
 // fixed middle (metric .. frame_gpu_ms_hi), a gpu_ms.<pass> each, pareto.
 struct CsvLayout {
     std::vector<std::string> header;
-    size_t cameraCol = 0, middle = 0, passStart = 0, paretoCol = 0;
+    size_t cameraCol = 0, middle = 0, passStart = 0, countStart = 0, paretoCol = 0;
+    std::vector<std::string> passes;  // the gpu_ms.<pass> columns' passes
     bool tail = false;  // the columns after pareto (time ... pick); a CSV written before them has none
 };
+
+// The counters' columns between the passes' gpu_ms.<pass> and pareto: each
+// counter's frame column, then one per pass (not a span) in the passes' order.
+template <typename At>
+void checkCounterHeader(const CsvLayout& l, const std::vector<std::string>& passes, const At& at) {
+    const std::vector<std::string>& header = l.header;
+    size_t col = l.countStart;
+    for (int i = 0; i < PassCounts::kCount; ++i)
+        for (size_t p = 0; p <= passes.size(); ++p) {
+            if (p > 0 && !TradeoffTable::hasCounterColumns(passes[p - 1])) continue;
+            const std::string want = p == 0 ? PassCounts::name(i) : PassCounts::name(i) + ("." + passes[p - 1]);
+            if (col >= l.paretoCol || header[col] != want)
+                throw at(col, "expected the counter column '" + want + "', got '" + header[col] + "'");
+            ++col;
+        }
+    if (col != l.paretoCol) throw at(col, "expected 'pareto', got '" + header[col] + "'");
+}
 
 // The header line: names unique and non-empty, the fixed columns where they
 // belong; the axes and passes into `t`.
@@ -298,13 +370,17 @@ CsvLayout parseHeader(const std::string& line, const std::string& path, const st
         }
         if (k != header.size()) throw at(k, "expected no column after 'pick', got '" + header[k] + "'");
     }
-    for (; col < l.paretoCol; ++col) {
+    for (; col < l.paretoCol && header[col] != PassCounts::name(0); ++col) {
         if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
             throw at(col, "expected a pass's column gpu_ms.<pass> or 'pareto', got '" + header[col] + "'");
         t.passes.push_back(header[col].substr(kPassPrefix.size()));
     }
     l.middle = l.cameraCol + 1;                   // "metric"
     l.passStart = l.middle + std::size(kMiddle);  // the first gpu_ms.<pass>
+    l.countStart = col;
+    l.passes = t.passes;
+    t.counted = col < l.paretoCol;
+    if (t.counted) checkCounterHeader(l, t.passes, at);
     return l;
 }
 
@@ -352,6 +428,19 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.frameGpuMsLo = real(l.middle + 7, true);
     r.frameGpuMsHi = real(l.middle + 8, true);
     for (size_t p = 0; p < passCount; ++p) r.passGpuMs.push_back(real(l.passStart + p, true));
+    r.passCounts.assign(passCount, CounterValues{});
+    for (auto& c : r.passCounts) c.fill(kNaN);
+    const bool counted = l.countStart < l.paretoCol;
+    size_t col = l.countStart;
+    for (size_t i = 0; counted && i < PassCounts::kCount; ++i)
+        for (size_t p = 0; p <= passCount; ++p) {
+            if (p > 0 && !TradeoffTable::hasCounterColumns(l.passes[p - 1])) continue;
+            const double v = real(col, false);
+            if (!std::isnan(v) && !(std::isfinite(v) && v >= 0.0))
+                throw at(col, header[col] + ": expected a count (at least 0) or nothing, got '" + f[col] + "'");
+            (p == 0 ? r.frameCounts[i] : r.passCounts[p - 1][i]) = v;
+            ++col;
+        }
     const size_t last = l.paretoCol;
     if (f[last] != "0" && f[last] != "1") throw at(last, "pareto: expected 0 or 1, got '" + f[last] + "'");
     r.pareto = f[last] == "1";
@@ -447,7 +536,7 @@ private:
 TradeoffTable TradeoffTable::parseCsv(const std::string& text, const std::string& path) {
     std::istringstream in(text);
     std::string line;
-    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));
+    const std::string expected = joined(columns({"<axis>..."}, {"<pass>..."}));  // counters optional
     if (!std::getline(in, line) || line.empty() || line == "\r")
         throw FileError(path, "line 1: empty (expected the tradeoff CSV header " + expected + ")");
     TradeoffTable t;
@@ -493,7 +582,7 @@ TradeoffTable TradeoffTable::readCsv(const std::string& path) {
 void TradeoffTable::writeCsv(const std::string& path) const { writeBenchFile(path, csv(), "tradeoff CSV"); }
 
 TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, const std::vector<std::string>& names,
-                                   const std::string& time) {
+                                   const std::string& time, const std::string& cost) {
     if (parts.empty()) throw Error("nothing to merge");
     auto nameOf = [&](size_t p) { return p < names.size() ? names[p] : "part " + std::to_string(p + 1); };
     TradeoffTable all;
@@ -502,6 +591,7 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
     all.time = parts.front().time;
     for (const auto& part : parts)
         if (part.time != all.time) all.time.clear();
+    for (const auto& part : parts) all.counted = all.counted || part.counted;
     for (const auto& part : parts)
         for (const auto& pass : part.passes)
             if (std::find(all.passes.begin(), all.passes.end(), pass) == all.passes.end()) all.passes.push_back(pass);
@@ -525,9 +615,15 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
             TradeoffRow row = r;
             row.pick.clear();  // a shard's budget pick is not the whole sweep's
             row.passGpuMs.assign(all.passes.size(), kNaN);
-            for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k)
-                row.passGpuMs[static_cast<size_t>(
-                    std::find(all.passes.begin(), all.passes.end(), part.passes[k]) - all.passes.begin())] = r.passGpuMs[k];
+            CounterValues none;
+            none.fill(kNaN);
+            row.passCounts.assign(all.passes.size(), none);
+            for (size_t k = 0; k < part.passes.size() && k < r.passGpuMs.size(); ++k) {
+                const auto to = static_cast<size_t>(
+                    std::find(all.passes.begin(), all.passes.end(), part.passes[k]) - all.passes.begin());
+                row.passGpuMs[to] = r.passGpuMs[k];
+                if (k < r.passCounts.size()) row.passCounts[to] = r.passCounts[k];
+            }
             all.rows.push_back(std::move(row));
         }
     }
@@ -536,7 +632,7 @@ TradeoffTable TradeoffTable::merge(const std::vector<TradeoffTable>& parts, cons
         if (a.camera != b.camera) return cameraBefore(a.camera, b.camera);
         return false;
     });
-    all.markParetoFront(time);
+    all.markParetoFront(time, cost);
     return all;
 }
 

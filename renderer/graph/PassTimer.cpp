@@ -30,6 +30,29 @@ gl::TimestampQuery PassTimer::acquire() {
     return q;
 }
 
+gl::CounterQueries PassTimer::acquireCounters() {
+    if (counterPool_.empty()) return gl::CounterQueries::create(statistics_);
+    gl::CounterQueries q = std::move(counterPool_.back());
+    counterPool_.pop_back();
+    return q;
+}
+
+void PassTimer::release(Span& s) {
+    if (s.begin) pool_.push_back(std::move(s.begin));
+    if (s.end) pool_.push_back(std::move(s.end));
+    if (s.counters && s.counters.statistics() == statistics_) counterPool_.push_back(std::move(s.counters));
+    s.counters = {};
+}
+
+void PassTimer::setCounting(bool on) {
+    if (on && !counting_) statistics_ = gl::hasPipelineStatistics();
+    counting_ = on;
+}
+
+void PassTimer::setPassBytes(std::int64_t bytes) {
+    if (inPass_) current_.spans[passIndex_].bytes = bytes;
+}
+
 void PassTimer::beginFrame(std::uint64_t frame) {
     if (inFrame_) throw Error("PassTimer::beginFrame called twice");
     collect(false);
@@ -51,6 +74,10 @@ void PassTimer::beginPass(const std::string& name) {
     s.name = name;
     s.begin = acquire();
     s.begin.record();
+    if (counting_) {
+        s.counters = acquireCounters();
+        s.counters.begin();
+    }
     current_.spans.push_back(std::move(s));
     inPass_ = true;
     passName_ = name;
@@ -81,6 +108,7 @@ void PassTimer::endSubSpan() {
 void PassTimer::endPass() {
     if (!inPass_ || inSubSpan_) throw Error("PassTimer::endPass without beginPass, or inside a sub-span");
     Span& s = current_.spans[passIndex_];
+    if (s.counters) s.counters.end();
     s.end = acquire();
     s.end.record();
     s.cpuMs = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - passStart_).count();
@@ -98,10 +126,8 @@ void PassTimer::endFrame() {
 }
 
 void PassTimer::abortFrame() {
-    for (auto& s : current_.spans) {
-        if (s.begin) pool_.push_back(std::move(s.begin));
-        if (s.end) pool_.push_back(std::move(s.end));
-    }
+    if (inPass_ && current_.spans[passIndex_].counters) current_.spans[passIndex_].counters.end();
+    for (auto& s : current_.spans) release(s);
     current_ = PendingFrame{};
     inFrame_ = inPass_ = inSubSpan_ = false;
 }
@@ -113,23 +139,43 @@ PassTimer::Series& PassTimer::seriesFor(const std::string& name) {
     return series_.back();
 }
 
+namespace {
+// A pass's counters in PassCounts order, from the queries' (CounterQueries::targets) order.
+PassCounts countsOf(const gl::CounterQueries& q, std::int64_t bytes) {
+    const auto r = q.results();
+    PassCounts c;
+    c.v = {r[0], r[4], r[1], r[2], r[3], bytes};
+    return c;
+}
+}  // namespace
+
 void PassTimer::harvest(PendingFrame& f) {
-    // Spans with the same name in one frame (sub-spans) are added up.
+    // Spans with the same name in one frame (sub-spans) are added up; the
+    // frame's counters are the sum of its passes'.
     std::vector<std::pair<std::string, TimingSample>> sums;
+    PassCounts frameCounts;
     for (auto& span : f.spans) {
         const std::uint64_t t0 = span.begin.result(), t1 = span.end.result();
         const float gpu = t1 > t0 ? static_cast<float>(static_cast<double>(t1 - t0) * 1e-6) : 0.0f;
+        TimingSample sample{f.frame, gpu, span.cpuMs, {}};
+        if (span.counters) {
+            sample.counts = countsOf(span.counters, span.bytes);
+            frameCounts.add(sample.counts);
+        }
         auto it = std::find_if(sums.begin(), sums.end(), [&](const auto& p) { return p.first == span.name; });
         if (it == sums.end()) {
-            sums.push_back({span.name, TimingSample{f.frame, gpu, span.cpuMs}});
+            sums.push_back({span.name, sample});
         } else {
             it->second.gpuMs += gpu;
             it->second.cpuMs += span.cpuMs;
+            it->second.counts.add(sample.counts);
         }
-        pool_.push_back(std::move(span.begin));
-        pool_.push_back(std::move(span.end));
+        release(span);
     }
-    for (const auto& [name, sample] : sums) addSample(name, sample);
+    for (auto& [name, sample] : sums) {
+        if (name == kFrameSeries) sample.counts = frameCounts;
+        addSample(name, sample);
+    }
 }
 
 void PassTimer::addSample(const std::string& series, const TimingSample& sample) {
@@ -150,7 +196,8 @@ void PassTimer::collect(bool wait) {
         PendingFrame& f = pending_.front();
         if (!wait) {
             bool ready = true;
-            for (const auto& s : f.spans) ready = ready && s.begin.available() && s.end.available();
+            for (const auto& s : f.spans)
+                ready = ready && s.begin.available() && s.end.available() && (!s.counters || s.counters.available());
             if (!ready) break;
         }
         harvest(f);

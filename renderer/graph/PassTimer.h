@@ -4,13 +4,19 @@
 // GL_QUERY_RESULT_AVAILABLE says so, so the CPU never waits on the GPU (bgfx's
 // TimerQueryGL and Magnum's FrameProfilerGL do the same); a short history per
 // pass feeds the timer graphs and the medians `render --timings` prints.
+// With counting on, each pass also carries its cost counters (PassCounts.h:
+// GL pipeline statistics and samples-passed queries begun and ended around
+// it, from a pool, harvested with its timestamps; the frame's counts are the
+// sums over its passes).
 #include <chrono>
 #include <cstdint>
 #include <deque>
 #include <string>
 #include <vector>
 
+#include "renderer/gl/CounterQuery.h"
 #include "renderer/gl/TimestampQuery.h"
+#include "renderer/graph/PassCounts.h"
 
 namespace dw {
 
@@ -18,6 +24,7 @@ struct TimingSample {
     std::uint64_t frame = 0;
     float gpuMs = 0.0f;
     float cpuMs = 0.0f;
+    PassCounts counts;  // passes and "frame" when counting; else none measured
 };
 
 struct TimingStats {
@@ -80,6 +87,15 @@ public:
     // happens to charge to it (e.g. a read-back). Slows the frame; off by default.
     void setIsolateCpu(bool on) { isolateCpu_ = on; }
     bool isolateCpu() const { return isolateCpu_; }
+    // Cost counters per pass (PassCounts.h), from the next frame on: the
+    // pipeline statistics only where the driver has them
+    // (gl::hasPipelineStatistics), samples passed always. Needs a context
+    // when turned on. Off by default.
+    void setCounting(bool on);
+    bool counting() const { return counting_; }
+    // The bytes the current pass's declared resources take (the pipeline
+    // says, before endPass); only while counting.
+    void setPassBytes(std::int64_t bytes);
     // The recorded history as CSV: frame, series, gpu_ms, cpu_ms.
     std::string csv() const;
     // Writes csv() to `path`; throws FileError.
@@ -90,16 +106,22 @@ private:
         std::string name;
         gl::TimestampQuery begin, end;
         float cpuMs = 0.0f;
+        gl::CounterQueries counters;  // a pass's, while counting
+        std::int64_t bytes = -1;
     };
     struct PendingFrame {
         std::uint64_t frame = 0;
         std::vector<Span> spans;
     };
     gl::TimestampQuery acquire();
+    gl::CounterQueries acquireCounters();
+    void release(Span& span);
     Series& seriesFor(const std::string& name);
     void harvest(PendingFrame& f);
 
     std::vector<gl::TimestampQuery> pool_;
+    std::vector<gl::CounterQueries> counterPool_;
+    bool counting_ = false, statistics_ = false;
     std::deque<PendingFrame> pending_;
     PendingFrame current_;
     bool inFrame_ = false;

@@ -335,6 +335,22 @@ void Pipeline::allocateResources(const Plan& plan) {
     }
 }
 
+std::int64_t Pipeline::declaredBytes(size_t i, const Plan& plan) const {
+    const PassIO io = resolvedInputs(i, plan);
+    std::set<std::string> names(io.inputs.begin(), io.inputs.end());
+    names.insert(io.optionalInputs.begin(), io.optionalInputs.end());
+    names.insert(io.modifies.begin(), io.modifies.end());
+    for (const auto& o : passes_[i]->outputs())
+        if (o.viewOf.empty()) names.insert(o.name);
+    std::int64_t bytes = 0;
+    for (const auto& name : names) {
+        const PublishedOutput* o = outputs_.find(name);
+        if (!o || !o->allocated() || !o->decl.viewOf.empty()) continue;
+        bytes += static_cast<std::int64_t>(resourceBytes(o->desc, width_, height_));
+    }
+    return bytes;
+}
+
 FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) {
     if (!shaders_ || !scene_) throw Error("Pipeline::render before setup() and setScene()");
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
@@ -377,6 +393,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
                 glPopDebugGroup();
                 throw;
             }
+            if (timer_.counting()) timer_.setPassBytes(declaredBytes(i, plan));
             timer_.endPass();
             glPopDebugGroup();
             outputs_.markProduced(p.name(), ctx.wanted);

@@ -123,6 +123,10 @@ private:
     PassIO resolvedInputs(size_t pass, const Plan& plan) const;
     std::vector<size_t> orderPasses(const std::vector<PassIO>& io) const;
     void allocateResources(const Plan& plan);
+    // The bytes of the resources pass `i` reads and writes this frame (its
+    // inputs, optional inputs that exist, modified resources and outputs, each
+    // once; a mip view counts in its texture): PassCounts::Bytes.
+    std::int64_t declaredBytes(size_t i, const Plan& plan) const;
 
     KnobRegistry& knobs_;
     std::vector<std::unique_ptr<RenderPass>> passes_;

@@ -1,5 +1,6 @@
 #include "renderer/graph/TimingReport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,6 +27,32 @@ void statsOver(const PassTimer& timer, const std::string& name, std::uint64_t fi
             }
     row.gpu = computeStats(std::move(gpu));
     row.cpu = computeStats(std::move(cpu));
+}
+
+// The last counted frame's counters, and the first counted frame that differs from them.
+void countsOver(const PassTimer& timer, const std::string& name, std::uint64_t first, std::uint64_t last, TimingRow& row) {
+    const PassTimer::Series* s = timer.find(name);
+    if (!s) return;
+    const TimingSample* newest = nullptr;
+    for (const TimingSample& t : s->samples)
+        if (t.frame >= first && t.frame <= last) newest = &t;
+    if (!newest || !newest->counts.measured()) return;
+    row.counts = newest->counts;
+    for (const TimingSample& t : s->samples)
+        if (t.frame >= first && t.frame <= last && !(t.counts == row.counts)) {
+            row.countsDiffer = true;
+            row.differingFrame = t.frame;
+            return;
+        }
+}
+
+std::string countText(std::int64_t v) { return v < 0 ? std::string("-") : std::to_string(v); }
+
+Json countsJson(const PassCounts& c) {
+    Json j = Json::object();
+    for (int i = 0; i < PassCounts::kCount; ++i)
+        if (c[i] >= 0) j[PassCounts::name(i)] = c[i];
+    return j;
 }
 
 // Microsecond resolution: the float samples' further digits are noise.
@@ -64,6 +91,7 @@ TimingReport TimingReport::build(PassTimer& timer, const FrameReport& last, std:
         row.reason = rec.reason;
         row.stats = rec.stats;
         if (rec.ran) statsOver(timer, rec.name, firstFrame, lastFrame, row);
+        if (rec.ran) countsOver(timer, rec.name, firstFrame, lastFrame, row);
         r.rows_.push_back(row);
         if (!rec.ran) continue;
         // Parts of the pass with their own spans (e.g. lighting/shadow maps).
@@ -81,6 +109,7 @@ TimingReport TimingReport::build(PassTimer& timer, const FrameReport& last, std:
     total.kind = TimingRow::Kind::Total;
     total.series = PassTimer::kFrameSeries;
     statsOver(timer, PassTimer::kFrameSeries, firstFrame, lastFrame, total);
+    countsOver(timer, PassTimer::kFrameSeries, firstFrame, lastFrame, total);
     r.rows_.push_back(total);
     return r;
 }
@@ -115,6 +144,27 @@ std::string TimingReport::table() const {
             if (!row.stats.empty()) out += "  (" + row.stats + ")\n";
         }
     }
+    return out + countersTable();
+}
+
+std::string TimingReport::countersTable() const {
+    if (!counted()) return {};
+    const TimingRow* differs = nullptr;
+    for (const auto& row : rows_)
+        if (row.countsDiffer && !differs) differs = &row;
+    std::string out = "cost counters per frame (exact; ";
+    out += differs ? formatted("they differ between frames: frame %llu's %s differ from the last frame's, shown)\n",
+                               static_cast<unsigned long long>(differs->differingFrame), differs->series.c_str())
+                   : formatted("the same in all %d counted frame(s))\n", countedFrames());
+    out += formatted("%-16s", "pass");
+    for (int i = 0; i < PassCounts::kCount; ++i) out += formatted(" %14s", PassCounts::name(i));
+    out += "\n";
+    for (const auto& row : rows_) {
+        if (row.kind == TimingRow::Kind::Span || !row.counts.measured()) continue;
+        out += formatted("%-16s", row.kind == TimingRow::Kind::Total ? "frame (total)" : row.series.c_str());
+        for (int i = 0; i < PassCounts::kCount; ++i) out += formatted(" %14s", countText(row.counts[i]).c_str());
+        out += "\n";
+    }
     return out;
 }
 
@@ -131,6 +181,7 @@ std::string TimingReport::json() const {
                 p["gpu_ms"] = msJson(row.gpu);
                 p["cpu_ms"] = msJson(row.cpu);
                 p["spans"] = Json::array();
+                if (row.counts.measured()) p["counters"] = countsJson(row.counts);
             }
             passes.push_back(p);
         } else if (row.kind == TimingRow::Kind::Span) {
@@ -141,10 +192,14 @@ std::string TimingReport::json() const {
                                               {"cpu_ms", msJson(row.cpu)}});
         }
     }
-    const Json j = {{"frames", countedFrames()},
-                    {"warmup", warmup_},
-                    {"passes", passes},
-                    {"total", {{"frames", total().gpu.count}, {"gpu_ms", msJson(total().gpu)}, {"cpu_ms", msJson(total().cpu)}}}};
+    Json j = {{"frames", countedFrames()},
+              {"warmup", warmup_},
+              {"passes", passes},
+              {"total", {{"frames", total().gpu.count}, {"gpu_ms", msJson(total().gpu)}, {"cpu_ms", msJson(total().cpu)}}}};
+    if (counted()) {
+        j["total"]["counters"] = countsJson(total().counts);
+        j["counters_same_every_frame"] = std::none_of(rows_.begin(), rows_.end(), [](const TimingRow& r) { return r.countsDiffer; });
+    }
     return j.dump(2) + "\n";
 }
 

@@ -24,6 +24,12 @@ struct TimingRow {
     std::string reason;  // why the pass did not run (it then has no numbers)
     std::string stats;   // the pass's own line about its work
     TimingStats gpu, cpu;  // count: samples within the counted frames
+    // Passes and the total, with counting on (PassTimer::setCounting): the
+    // last counted frame's cost counters; `countsDiffer` names the first
+    // counted frame whose counters differ from it (0 and false: all the same).
+    PassCounts counts;
+    bool countsDiffer = false;
+    std::uint64_t differingFrame = 0;
 };
 
 class TimingReport {
@@ -41,10 +47,15 @@ public:
     int warmupFrames() const { return warmup_; }
 
     // What render --timings prints: a line per pass (skipped ones with the
-    // reason), its spans indented, its stats line, then the frame total.
+    // reason), its spans indented, its stats line, then the frame total;
+    // then, when counted, the cost counters per pass and their frame sums.
     std::string table() const;
+    // The counters' table alone ("" when nothing was counted).
+    std::string countersTable() const;
+    bool counted() const { return total().counts.measured(); }
     // {"frames", "warmup", "passes": [{name, ran, reason | stats, frames,
-    // gpu_ms {median, min, max, mean}, cpu_ms {...}, spans: [...]}], "total"}
+    // gpu_ms {median, min, max, mean}, cpu_ms {...}, spans: [...],
+    // counters {fragments, samples, ...} when counted}], "total"}
     std::string json() const;
     static std::string csvHeader();
     // One line per row (no newline), the columns of csvHeader().

@@ -340,11 +340,12 @@ ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConf
     PassTimer& timer = session.pipeline().timer();
     timer.collect(true);
     for (const PassTimer::Series& s : timer.series()) {
-        RecordedSeries rs{s.name, {}, {}};
+        RecordedSeries rs{s.name, {}, {}, {}};
         for (const TimingSample& t : s.samples)
             if (t.frame >= firstCounted) {
                 rs.gpuMs.push_back(t.gpuMs);
                 rs.cpuMs.push_back(t.cpuMs);
+                rs.counts = t.counts;
             }
         if (!rs.gpuMs.empty()) r.timings.push_back(std::move(rs));
     }
@@ -444,6 +445,21 @@ Json tiesJson(const TradeoffRow& r) {
     return ties;
 }
 
+// A row's counters: {"frame": {fragments: ..., ...}, "<pass>": {...}}, the
+// measured ones only (replay compares them exactly).
+Json tradeoffCountersJson(const TradeoffTable& t, const TradeoffRow& r) {
+    auto one = [](const CounterValues& v) {
+        Json c = Json::object();
+        for (int i = 0; i < PassCounts::kCount; ++i)
+            if (!std::isnan(v[static_cast<size_t>(i)])) c[PassCounts::name(i)] = number(v[static_cast<size_t>(i)]);
+        return c;
+    };
+    Json all = {{"frame", one(r.frameCounts)}};
+    for (size_t p = 0; p < t.passes.size() && p < r.passCounts.size(); ++p)
+        if (Json c = one(r.passCounts[p]); !c.empty()) all[t.passes[p]] = c;
+    return all;
+}
+
 // A tradeoff table as a record's results: per point and camera the swept
 // knobs, the error with its interval, the times, the front; and `metrics`,
 // the errors alone with what they were measured on and against.
@@ -464,6 +480,7 @@ Json tradeoffResultsJson(const TradeoffTable& t, const BenchFields& machine, con
                         {"pareto", r.pareto}, {"time_ms", number(r.timeMs)},
                         {"time_ms_ci95", {number(r.timeMsLo), number(r.timeMsHi)}}, {"front", r.front},
                         {"dominated_by", r.dominatedBy}, {"tied_with", tiesJson(r)}, {"pick", r.pick}});
+        if (t.counted) rows.back()["counters"] = tradeoffCountersJson(t, r);
         if (r.pareto) front.push_back({{"point", r.point}, {"camera", r.camera}});
         metrics.push_back({{"point", r.point}, {"camera", r.camera}, {"metric", r.metric}, {"buffer", r.buffer},
                            {"against", against}, {"value", number(r.error)},
@@ -561,6 +578,24 @@ void readFrontFields(const F& row, TradeoffRow& r, const Optional& optional) {
                                     tie.at("axes").str());
 }
 
+// tradeoffCountersJson read back into `r` (none: the row was not counted).
+template <typename F, typename Optional>
+void readTradeoffCounters(const F& row, TradeoffTable& t, TradeoffRow& r, const Optional& optional) {
+    CounterValues none;
+    none.fill(NAN);
+    r.passCounts.assign(t.passes.size(), none);
+    if (!row.has("counters")) return;
+    t.counted = true;
+    const F c = row.at("counters").object();
+    auto read = [&](const std::string& span, CounterValues& v) {
+        if (!c.has(span)) return;
+        const F one = c.at(span).object();
+        for (int i = 0; i < PassCounts::kCount; ++i)
+            if (one.has(PassCounts::name(i))) v[static_cast<size_t>(i)] = optional(one.at(PassCounts::name(i)));
+    };
+    read("frame", r.frameCounts);
+    for (size_t p = 0; p < t.passes.size(); ++p) read(t.passes[p], r.passCounts[p]);
+}
 }  // namespace
 
 TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
@@ -594,6 +629,7 @@ TradeoffTable ExperimentRecord::tradeoffTable(const std::string& path) const {
             for (const auto& p : t.passes) r.passGpuMs.push_back(g.has(p) ? optional(g.at(p)) : NAN);
             r.pareto = row.boolean("pareto", false);
             readFrontFields(row, r, optional);
+            readTradeoffCounters(row, t, r, optional);
             t.rows.push_back(std::move(r));
         }
     } catch (const nlohmann::json::exception& e) {
@@ -645,6 +681,8 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"walkthrough", o.walkthrough},
             {"block", o.block},
             {"resamples", o.resamples},
+            {"cost", o.cost},
+            {"counters", o.counters},
             {"run_preset", tradeoff.runPreset},
             {"run_presets", tradeoff.runPresets},
             {"run_sets", tradeoff.runSets},
@@ -698,9 +736,15 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
         j["results"] = tradeoffResults.is_null() ? Json::object() : tradeoffResults;
     } else {
         Json series = Json::array();
-        for (const auto& s : timings)
+        for (const auto& s : timings) {
             series.push_back({{"name", s.name}, {"gpu_ms", s.gpuMs}, {"cpu_ms", s.cpuMs}, {"gpu", intervalJson(s.gpuMs)},
                               {"cpu", intervalJson(s.cpuMs)}});
+            if (!s.counts.measured()) continue;
+            Json c = Json::object();
+            for (int i = 0; i < PassCounts::kCount; ++i)
+                if (s.counts[i] >= 0) c[PassCounts::name(i)] = s.counts[i];
+            series.back()["counters"] = c;
+        }
         Json m = Json::object();
         for (const auto& [k, v] : metrics) m[k] = number(v);
         j["results"] = {{"timings", series},
@@ -802,6 +846,8 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         o.against = g.strings("against");
         o.metric = g.at("metric").str();
         o.buffer = g.at("buffer").str();
+        o.cost = g.has("cost") ? g.at("cost").str() : "gpu_ms";
+        o.counters = g.boolean("counters", true);
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
         o.walkthrough = g.boolean("walkthrough", false);
@@ -834,7 +880,18 @@ void readRenderResults(ExperimentRecord& r, const RecordField& root, const Recor
     }
     if (results.has("timings"))
         for (const F& s : results.at("timings").items())
-            r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms"))});
+        {
+            r.timings.push_back({s.at("name").str(), numbers(s.at("gpu_ms")), numbers(s.at("cpu_ms")), {}});
+            if (!s.has("counters")) continue;
+            const F c = s.at("counters").object();
+            for (int i = 0; i < PassCounts::kCount; ++i) {
+                if (!c.has(PassCounts::name(i))) continue;
+                const F v = c.at(PassCounts::name(i));
+                if (!v.json().is_number_integer() || v.json().get<long long>() < 0)
+                    v.refuse("expects a count (a whole number, at least 0), got " + v.shown());
+                r.timings.back().counts.v[static_cast<size_t>(i)] = v.json().get<long long>();
+            }
+        }
     const F image = results.at("image").object();
     r.imageSha256 = image.at("sha256").str();
     // 0: no image was written.

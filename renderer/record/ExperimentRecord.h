@@ -35,6 +35,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+
+#include "renderer/graph/PassCounts.h"
 #include <utility>
 #include <vector>
 
@@ -53,6 +55,7 @@ using RecordFields = std::vector<std::pair<std::string, std::string>>;
 struct RecordedSeries {
     std::string name;  // a pass, a span ("lighting/shadow maps") or "frame"
     std::vector<double> gpuMs, cpuMs;  // one per counted frame
+    PassCounts counts;  // the last counted frame's cost counters (none: not counted); replay compares them exactly
 };
 
 struct RecordedCameraPath {

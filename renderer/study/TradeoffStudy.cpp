@@ -24,6 +24,21 @@ int inRange(const std::string& flag, int v, OptionRange range) {
     return v;
 }
 
+// --budget-ms bounds the measured time, --budget the counter --cost names:
+// one of them, each finite and above 0 (one line, before anything renders).
+void checkBudgets(const TradeoffStudyOptions& s, TradeoffOptions& o) {
+    if (s.budgetMs && s.budget)
+        throw Error("--budget-ms and --budget: give one (--budget-ms bounds the measured time in ms, --budget the "
+                    "counter --cost names in its own unit)");
+    if (s.budget && (s.cost == "gpu_ms"))
+        throw Error("--budget bounds a counter: give --cost fragments|samples|primitives|vertices|compute|bytes "
+                    "(for time, --budget-ms)");
+    if (s.budgetMs) BudgetPicker::check(*s.budgetMs);  // 0, negative, NaN, inf
+    if (s.budget) BudgetPicker::check(*s.budget, "--budget");
+    o.budgetMs = s.budgetMs.value_or(0.0);
+    o.budget = s.budget.value_or(0.0);
+}
+
 }  // namespace
 
 TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
@@ -53,8 +68,12 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.buffer = s.buffer;
     o.mask = s.mask;
     o.time = s.time;
-    if (s.budgetMs) BudgetPicker::check(*s.budgetMs);  // 0, negative, NaN, inf: one line, before anything renders
-    o.budgetMs = s.budgetMs.value_or(0.0);
+    if (!TradeoffTable::isCost(s.cost))
+        throw Error("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + s.cost + "'");
+    if (s.cost != "gpu_ms" && !s.counters) throw Error("--cost " + s.cost + " needs the counters: drop --no-counters");
+    o.cost = s.cost;
+    o.counters = s.counters;
+    checkBudgets(s, o);
     inRange("--ao-rays", s.aoRays, limits::kAoRays);
     if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
     o.walkthrough = s.walkthrough;

@@ -35,7 +35,10 @@ struct TradeoffStudyOptions {
     std::string buffer = "final";        // final | lbuffer | ao | shadow
     std::string mask;                    // "" or shadow_edges
     std::string time = "frame";          // frame, a pass's name, or a sum of them (a+b+c)
-    std::optional<double> budgetMs;      // --budget-ms: picks (BudgetPicker); must be finite and above 0
+    std::optional<double> budgetMs;      // --budget-ms: picks by time (BudgetPicker); must be finite and above 0
+    std::optional<double> budget;        // --budget: picks by the counter --cost names, in its unit; finite, above 0
+    std::string cost = "gpu_ms";         // the front's cost axis: gpu_ms or a counter (TradeoffTable::costOf)
+    bool counters = true;                // count each pass's cost counters (--no-counters: off)
     int aoRays = 64;                     // the reference's AO rays per pixel, 1 .. 2^20
     int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
     bool walkthrough = false;            // the scene's camera.path keyframes

@@ -78,7 +78,8 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     const auto rows = readCsv(csv);
     ASSERT_GT(rows.size(), 1u);
     EXPECT_EQ(rows[0], (std::vector<std::string>{"config", "size", "lights", "lighting.strategy", "lpp", "lpp_lit", "sample",
-                                                 "seq", "frame", "pass", "gpu_ms", "cpu_ms"}));
+                                                 "seq", "frame", "pass", "gpu_ms", "cpu_ms", "fragments", "samples",
+                                                 "primitives", "vertices", "compute", "bytes"}));
     const auto byConfig = rowsByConfig(rows);
     EXPECT_EQ(byConfig.size(), 8u);
     for (const char* size : kSizes)
@@ -466,7 +467,10 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
     for (const char* bad : {"inf", "-5", "nan", ""}) {
         std::string text = whole;
         const std::size_t lineEnd = text.find('\n', text.find('\n') + 1);  // the first sample's line
-        const std::size_t lastComma = text.rfind(',', lineEnd), gpuComma = text.rfind(',', lastComma - 1);
+        // gpu_ms is the 8th field from the end when the run counted (six counter columns after cpu_ms).
+        std::size_t lastComma = text.rfind(',', lineEnd);
+        for (int k = 0; k < 6; ++k) lastComma = text.rfind(',', lastComma - 1);
+        const std::size_t gpuComma = text.rfind(',', lastComma - 1);
         text.replace(gpuComma + 1, lastComma - gpuComma - 1, bad);
         const Result r = variant(std::string("time") + (bad[0] ? bad : "empty"), text);
         EXPECT_EQ(r.code, 1) << bad;

@@ -144,6 +144,23 @@ TEST(Cli, TimingsListEveryPassThatRan) {
     for (const char* p : {"\nao ", "\nao_filter ", "\nskybox ", "\nbloom ", "\nfxaa ", "\n  shadow maps "})
         EXPECT_NE(r.out.find(p), std::string::npos) << p << r.out;
     EXPECT_NE(r.out.find("skipped: switched off (dof.enabled = false)"), std::string::npos) << r.out;
+    // Then the cost counters, the same in the three counted frames: the tone
+    // mapper's full-screen triangle passes a sample per pixel, 1 primitive, 3 vertices.
+    EXPECT_NE(r.out.find("cost counters per frame (exact; the same in all 3 counted frame(s))\n"
+                         "pass                  fragments        samples     primitives       vertices        compute"
+                         "          bytes\n"),
+              std::string::npos)
+        << r.out;
+    const size_t tonemap = r.out.find("\ntonemap ", r.out.find("cost counters per frame"));
+    ASSERT_NE(tonemap, std::string::npos) << r.out;
+    std::istringstream line(r.out.substr(tonemap + 1, r.out.find('\n', tonemap + 1) - tonemap - 1));
+    std::string name;
+    long long fragments = 0, samples = 0, primitives = 0, vertices = 0;
+    line >> name >> fragments >> samples >> primitives >> vertices;
+    EXPECT_EQ(samples, 64 * 36);
+    EXPECT_GE(fragments, 64 * 36);
+    EXPECT_EQ(primitives, 1);
+    EXPECT_EQ(vertices, 3);
     const Result dof = run("render --scene default --size 64x36 --set dof.enabled=true --set ao.enabled=false --timings --out " +
                            (test::tempDir() / "t.png").string());
     ASSERT_EQ(dof.code, 0) << dof.err;
@@ -375,6 +392,7 @@ TEST(Cli, TimingsCountOnlyTheFramesAfterWarmup) {
     std::getline(lines, line);  // the header
     int timed = 0;
     while (std::getline(lines, line)) {
+        if (line.rfind("cost counters per frame", 0) == 0) break;  // the counters' table follows the timings
         if (line.find("(skipped: ") != std::string::npos || line.rfind("  (", 0) == 0) continue;
         EXPECT_EQ(line.substr(line.size() - 3), "  3") << line;
         ++timed;

@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -374,6 +376,9 @@ TEST(TradeoffCli, BadInputIsOneClearMessage) {
         {" --sweep ssao.samples=4,8 --buffer shade", "--buffer: expected final, lbuffer, ao or shadow, got 'shade'"},
         {" --sweep ssao.samples=4,8 --mask edges", "--mask: expected shadow_edges, got 'edges'"},
         {" --sweep ssao.samples=4 --time bogus", "--time bogus: the pipeline has no pass of that name (expected frame or one of: "},
+        {" --sweep ssao.samples=4,8 --cost pixels",
+         "--cost: expected one of gpu_ms, fragments, samples, primitives, vertices, compute, bytes, got 'pixels'"},
+        {" --sweep ssao.samples=4,8 --cost fragments --no-counters", "--cost fragments needs the counters"},
         {" --presets SSAO1,NOPE", "NOPE"},
         {"", "tradeoff needs axes"},
     };
@@ -464,4 +469,110 @@ TEST(TradeoffCli, TimeSumsOfPassesAndABudgetNothingFits) {
     EXPECT_EQ(bad.code, 1);
     EXPECT_NE(bad.err.find("--time lighting+aox: the pipeline has no pass 'aox'"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(dir() / "sum-bad.csv"));
+}
+
+// The cost counters: two runs of the same sweep give the same counter
+// columns, bit for bit (times differ); --cost fragments ranks the front by
+// the frame's fragment shader invocations, and the table says so.
+TEST(TradeoffCli, CountersRepeatBitForBitAndChooseTheCostAxis) {
+    const std::string sweep =
+        "tradeoff --scene default --size 96x54 --set ssao_blur.mode=off --sweep ssao.samples=4,16 "
+        "--sweep ssao.resolution=full,half --against ssao.samples=64 --metric rms --buffer ao --frames 2 --warmup 1 "
+        "--resamples 100 --quiet --plot none";
+    const Result a = run(sweep + " --csv " + (dir() / "counted-a.csv").string() + " --json " +
+                         (dir() / "counted-a.json").string());
+    ASSERT_EQ(a.code, 0) << a.err;
+    const Result b = run(sweep + " --cost fragments --time ao --csv " + (dir() / "counted-b.csv").string() + " --json " +
+                         (dir() / "counted-b.json").string());
+    ASSERT_EQ(b.code, 0) << b.err;
+    const TradeoffTable ta = TradeoffTable::readCsv((dir() / "counted-a.csv").string());
+    const TradeoffTable tb = TradeoffTable::readCsv((dir() / "counted-b.csv").string());
+    ASSERT_TRUE(ta.counted);
+    ASSERT_EQ(ta.passes, tb.passes);
+    ASSERT_EQ(ta.rows.size(), 4u);
+    for (size_t r = 0; r < ta.rows.size(); ++r) {
+        for (size_t i = 0; i < PassCounts::kCount; ++i) {
+            EXPECT_FALSE(std::isnan(ta.rows[r].frameCounts[i])) << PassCounts::name(static_cast<int>(i));
+            EXPECT_EQ(ta.rows[r].frameCounts[i], tb.rows[r].frameCounts[i]) << "row " << r << " " << PassCounts::name(static_cast<int>(i));
+        }
+        for (size_t p = 0; p < ta.passes.size(); ++p)
+            for (size_t i = 0; i < PassCounts::kCount; ++i) {
+                const double x = ta.rows[r].passCounts[p][i], y = tb.rows[r].passCounts[p][i];
+                EXPECT_TRUE((std::isnan(x) && std::isnan(y)) || x == y) << ta.passes[p] << " " << PassCounts::name(static_cast<int>(i));
+            }
+    }
+    // A half-resolution AO shades fewer fragments than a full one, at either sample count.
+    const TradeoffRow* full = rowOf(ta, "16", "full");
+    const TradeoffRow* half = rowOf(ta, "16", "half");
+    ASSERT_TRUE(full && half);
+    EXPECT_LT(ta.passCount(*half, "ao", PassCounts::Fragments), ta.passCount(*full, "ao", PassCounts::Fragments));
+    // The front of b is the front by fragments.ao against the error.
+    TradeoffTable check = tb;
+    check.markParetoFront("ao", "fragments");
+    for (size_t r = 0; r < tb.rows.size(); ++r) EXPECT_EQ(tb.rows[r].pareto, check.rows[r].pareto) << r;
+    EXPECT_NE(b.out.find("| fragments.ao (exact) | Pareto (fragments.ao) |"), std::string::npos) << b.out;
+    // The record keeps the counters and the cost axis.
+    std::ifstream in(dir() / "counted-b.json");
+    const nlohmann::json record = nlohmann::json::parse(in);
+    EXPECT_EQ(record["grid"]["cost"], "fragments");
+    EXPECT_EQ(record["results"]["rows"][0]["counters"]["frame"]["fragments"].get<double>(), tb.rows[0].frameCounts[0]);
+}
+
+// --cost fragments --budget N: the pick is the least-error point whose
+// fragments (of the --time span, exact) are under N; every other row fits or
+// is over by its count. --budget with --budget-ms, --budget without a
+// counter --cost, and a budget of 0 or NaN are refused in one line before anything renders.
+TEST(TradeoffCli, CounterBudgetPicksTheLeastErrorUnderIt) {
+    const std::string sweep =
+        "tradeoff --scene default --size 96x54 --set ssao_blur.mode=off --sweep ssao.samples=4,16 "
+        "--sweep ssao.resolution=full,half --against ssao.samples=64 --metric rms --buffer ao --frames 2 --warmup 1 "
+        "--resamples 100 --quiet --plot none --cost fragments --time ao";
+    const Result first = run(sweep + files("budget-n"));
+    ASSERT_EQ(first.code, 0) << first.err;
+    const TradeoffTable counted = TradeoffTable::readCsv((dir() / "budget-n.csv").string());
+    ASSERT_EQ(counted.rows.size(), 4u);
+    // The budget: just above the half-resolution points' count, under the full ones'.
+    double half = 0.0, full = std::numeric_limits<double>::infinity();
+    for (const auto& row : counted.rows) {
+        const double f = counted.costOf(row, "ao", "fragments");
+        ASSERT_FALSE(std::isnan(f));
+        if (counted.axisValue(row, "ssao.resolution") == "half") half = std::max(half, f);
+        else full = std::min(full, f);
+    }
+    ASSERT_LT(half, full);
+    const double budget = half + 1.0;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", budget);
+    const Result r = run(sweep + " --budget " + text + files("budget-pick"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "budget-pick.csv").string());
+    const TradeoffRow* best = nullptr;
+    for (const auto& row : t.rows) {
+        const bool fits = t.costOf(row, "ao", "fragments") < budget;
+        EXPECT_EQ(fits, t.axisValue(row, "ssao.resolution") == "half") << row.point;
+        EXPECT_EQ(row.pick == "over", !fits) << row.point << " " << row.pick;
+        if (fits && (!best || row.error < best->error)) best = &row;
+    }
+    ASSERT_TRUE(best);
+    EXPECT_EQ(best->pick, "pick");
+    EXPECT_NE(r.out.find("pick: point " + std::to_string(best->point)), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("fragments ends under the budget of"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("(exact)"), std::string::npos) << r.out;
+    // Refused, one line each, no files.
+    const std::string plain = "tradeoff --scene default --size 64x36 --sweep ssao.samples=4,32 --metric rms --buffer ao "
+                              "--frames 2 --warmup 0 --resamples 200 --quiet ";
+    struct Bad {
+        std::string args, says;
+    };
+    for (const Bad& b : {Bad{"--cost fragments --budget 1000 --budget-ms 5", "--budget-ms and --budget: give one"},
+                         Bad{"--budget 1000", "--budget bounds a counter: give --cost"},
+                         Bad{"--cost fragments --budget 0", "--budget must be"},
+                         Bad{"--cost fragments --budget nan", "--budget"}}) {
+        const Result bad = run(plain + b.args + files("budget-bad"));
+        EXPECT_EQ(bad.code, 2) << b.args;  // a usage error: the line, then where the options are listed
+        const std::string line = bad.err.substr(0, bad.err.find('\n'));
+        EXPECT_NE(line.find(b.says), std::string::npos) << b.args << ": " << bad.err;
+        EXPECT_NE(bad.err.find("(deferred-workbench help tradeoff lists its options)"), std::string::npos) << bad.err;
+        EXPECT_FALSE(fs::exists(dir() / "budget-bad.csv")) << b.args;
+    }
 }

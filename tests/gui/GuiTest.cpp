@@ -1771,3 +1771,24 @@ TEST(Gui, LostTransparentFragmentsAreSaidInMessages) {
     composer.render(state);
     EXPECT_EQ(lostLines(), 1);
 }
+
+// The timings panel's *counters*: off at start; a click turns them on, and
+// the newest frame of every pass that ran carries its cost counters (the
+// table's six columns; --layout-out reports them), exact: the tone mapper's
+// full-screen triangle passes a sample per pixel of the render size.
+TEST(Gui, UnderXvfbTheCountersCheckboxAddsEachPasssCounters) {
+    ASSERT_EQ(shell("command -v xvfb-run").code, 0) << "xvfb-run is missing";
+    const LayoutReport first = runScripted("counters-where", "1600x900", 4, "");
+    EXPECT_EQ(first.timings["counting"], false);
+    ASSERT_TRUE(first.items.contains("timings.counters")) << first.items.dump();
+    // --record: every frame rendered and timed, so frames after the click are counted.
+    const LayoutReport r = runScripted("counters", "1600x900", 12, "2 click " + first.at("timings.counters") + "\n", "--record");
+    EXPECT_EQ(r.timings["counting"], true);
+    const nlohmann::json& newest = r.timings["newest"];
+    ASSERT_TRUE(newest.contains("tonemap")) << newest.dump();
+    ASSERT_TRUE(newest["tonemap"].contains("counters")) << newest.dump(1);
+    const nlohmann::json& tonemap = newest["tonemap"]["counters"];
+    EXPECT_EQ(tonemap["samples"].get<long long>(), static_cast<long long>(r.renderSize.x * r.renderSize.y)) << tonemap.dump();
+    EXPECT_EQ(tonemap["primitives"], 1);
+    EXPECT_GT(newest["frame"]["counters"]["fragments"].get<long long>(), 0);
+}

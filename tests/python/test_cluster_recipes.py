@@ -125,15 +125,18 @@ class Recipes(unittest.TestCase):
 
     # --- what is compared ---------------------------------------------------
     def bench_table(self, rows):
-        """Per configuration: size, lights, swept values, lights per pixel, and how many rows (samples x series)."""
-        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"}
+        """Per configuration: size, lights, swept values, lights per pixel, how many rows (samples x series), and
+        each series' cost counters (per pass, exact: the same in a shard as unsharded)."""
+        counters = ("fragments", "samples", "primitives", "vertices", "compute", "bytes")
+        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms", *counters}
         table = {}
         for r in rows:
             key = r["config"]
             desc = tuple(sorted((k, v) for k, v in r.items() if k not in fixed))
-            entry = table.setdefault(key, [desc, 0])
+            entry = table.setdefault(key, [desc, 0, set()])
             self.assertEqual(entry[0], desc, "config %s changes its description between rows" % key)
             entry[1] += 1
+            entry[2].add((r["pass"],) + tuple(r.get(c, "") for c in counters))
         return table
 
     def tradeoff_table(self, rows):

@@ -327,6 +327,12 @@ class SessionTest(unittest.TestCase):
         header = lines[0].split(",")
         first = dict(zip(header, lines[1].split(",")))
         self.assertAlmostEqual(float(first["gpu_ms"]), configs[0]["samples"][0]["gpu_ms"][first["pass"]], places=3)
+        # The cost counters: each sample's per series (the CSV's columns), the same in both counted frames.
+        self.assertEqual(int(first["fragments"]), configs[0]["samples"][0]["counters"][first["pass"]]["fragments"])
+        for c in configs:
+            self.assertEqual(c["samples"][0]["counters"], c["samples"][1]["counters"])
+            self.assertGreater(c["samples"][0]["counters"]["frame"]["fragments"], 0)
+        self.assertEqual(r["results"]["counters_mismatch"], "")
         orbit = dw.bench(scene="default", sizes=[(32, 18)], frames=2, warmup=0, orbit=2)
         self.assertEqual(orbit["camera_path"], {"mode": "orbit", "orbit_poses": 2})
         self.assertEqual(orbit["results"]["settings"]["camera"], "orbit 2")

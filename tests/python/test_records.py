@@ -85,9 +85,24 @@ class RecordTest(unittest.TestCase):
         r = run("replay", self.record)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertIn("image: identical", r.stdout)
+        self.assertRegex(r.stdout, r"counters: the same \([0-9]+ compared, exactly\)")
         self.assertRegex(r.stdout, r"timing frame +gpu median +[0-9.]+ -> +[0-9.]+ ms  x[0-9.]+ \[[0-9.]+, [0-9.]+\]")
         self.assertNotIn("too few frames", r.stdout)
         self.assertNotIn("scene file", r.stdout)
+
+    def test_a_moved_counter_is_named_and_makes_the_replay_differ(self):
+        frame = next(t for t in self.data["results"]["timings"] if t["name"] == "frame")
+        self.assertGreater(frame["counters"]["fragments"], 0)  # the frame's sum over its passes
+        self.assertGreater(frame["counters"]["bytes"], 0)
+
+        def bump(data):
+            series = next(t for t in data["results"]["timings"] if t["name"] == "frame")
+            series["counters"]["fragments"] += 1
+        r = run("replay", self.variant("moved-counter.json", bump))
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("counters: moved: fragments.frame %d -> %d" % (frame["counters"]["fragments"] + 1,
+                                                                     frame["counters"]["fragments"]), r.stdout)
+        self.assertIn("image: identical", r.stdout)
 
     def test_replay_refuses_to_write_over_the_record_it_replays(self):
         # The record replayed is the baseline: --record over it would lose it (it was overwritten in silence).

@@ -73,6 +73,34 @@ class TradeoffTest(unittest.TestCase):
             written = list(csv.DictReader(f))
         self.assertEqual([r["error"] for r in written], [r["error"] for r in cli])
 
+    def test_counters_in_the_rows_and_cost_chooses_the_front(self):
+        # Every row carries the frame's counters and each pass's; exact, so a second
+        # run with cost="fragments" has the same ones, and its front is by fragments.ao.
+        rows = self.record["rows"]
+        for row in rows:
+            self.assertGreater(row["fragments"], 0)
+            self.assertGreater(row["fragments.ao"], 0)
+            self.assertGreater(row["bytes"], 0)
+        # budget= bounds the counter cost= names (of time='s span), exactly: the pick is the least error under it.
+        budget = min(row["fragments.ao"] for row in rows) + 1
+        again = dw.tradeoff(**dict(KEYWORDS, cost="fragments", time="ao", budget=budget))
+        fits = [row for row in again["rows"] if row["fragments.ao"] < budget]
+        self.assertTrue(fits)
+        self.assertEqual(again["pick"]["budget"], budget)
+        self.assertEqual(again["pick"]["row"]["error"], min(row["error"] for row in fits))
+        for row in again["rows"]:
+            self.assertEqual(row["pick"] == "over", row["fragments.ao"] >= budget, row["point"])
+        for mine, theirs in zip(rows, again["rows"]):
+            for key in mine:
+                if key.split(".")[0] in ("fragments", "samples", "primitives", "vertices", "compute", "bytes"):
+                    same = (math.isnan(mine[key]) and math.isnan(theirs[key])) or mine[key] == theirs[key]
+                    self.assertTrue(same, key)
+        front = {r["point"] for r in again["front"]}
+        for a in again["rows"]:
+            beaten = any(b["fragments.ao"] <= a["fragments.ao"] and b["error"] <= a["error"]
+                         and (b["fragments.ao"] < a["fragments.ao"] or b["error"] < a["error"]) for b in again["rows"])
+            self.assertEqual(a["point"] in front, not beaten, a["point"])
+
     def test_the_error_falls_with_the_samples(self):
         rows = {int(r["ssao.samples"]): r for r in self.record["rows"]}
         self.assertEqual(sorted(rows), SAMPLES)
@@ -171,6 +199,11 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, budget_ms=0), ValueError, "--budget-ms: expected milliseconds above 0"),
             (dict(sweep={"ssao.samples": [4, 8]}, budget_ms=float("nan")), ValueError, "--budget-ms: expected"),
             (dict(sweep={"ssao.samples": [4, 8]}, time="ao+ao"), ValueError, "'ao' is named twice"),
+            (dict(sweep={"ssao.samples": [4, 8]}, cost="pixels"), ValueError, "--cost: expected one of gpu_ms, fragments"),
+            (dict(sweep={"ssao.samples": [4, 8]}, cost="fragments", budget=1000, budget_ms=5), ValueError,
+             "--budget-ms and --budget: give one"),
+            (dict(sweep={"ssao.samples": [4, 8]}, budget=1000), ValueError, "--budget bounds a counter"),
+            (dict(sweep={"ssao.samples": [4, 8]}, cost="fragments", budget=0), ValueError, "--budget: expected a budget above 0"),
             (dict(sweep={"ssao.samples": [4, 8]}, scene=os.path.join(self.tmp.name, "missing.gltf")), dw.Error,
              "missing.gltf"),
         ]

@@ -349,3 +349,28 @@ TEST(BenchMerge, ShardsWrittenWithRecordOrJsonAreOneRun) {
     EXPECT_EQ(benchRunOf(base + " --shard 0/2 --json shard-0.json"), benchRunOf(base + " --shard 1/2 --record=b.json"));
     EXPECT_NE(benchRunOf(base + " --shard 0/2 --record a.json"), benchRunOf(base + " --frames 3 --shard 1/2"));
 }
+
+TEST(BenchResults, CounterColumnsFollowTheTimesAndReadBack) {
+    BenchResults r = synthetic(smallGrid(), 2, [](const BenchConfig& c) { return 1.0 + c.lights; });
+    r.counted = true;
+    for (auto& s : r.samples) {
+        if (s.series == "frame") continue;  // left unmeasured: its cells are empty
+        for (int i = 0; i < PassCounts::kCount; ++i) s.counts.v[static_cast<size_t>(i)] = 1000 * s.config + 10 * i + s.sample;
+    }
+    const std::string csv = r.csv();
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "config,size,lights,lighting.strategy,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,"
+                                             "cpu_ms,fragments,samples,primitives,vertices,compute,bytes");
+    const BenchResults back = BenchResults::parseCsv(csv, "c.csv");
+    EXPECT_TRUE(back.counted);
+    ASSERT_EQ(back.samples.size(), r.samples.size());
+    for (size_t i = 0; i < r.samples.size(); ++i) EXPECT_EQ(back.samples[i].counts, r.samples[i].counts) << i;
+    EXPECT_EQ(back.csv(), csv);
+    // Shards keep them through bench merge.
+    BenchResults merged = BenchResults::merge({back}, {"c.csv"});
+    EXPECT_EQ(merged.csv(), csv);
+    // A count that is not a whole number is refused with its line.
+    std::string bad = csv;
+    ASSERT_NE(bad.find(",0,10,20,30,40,50\n"), std::string::npos);
+    bad.replace(bad.find(",0,10,20,30,40,50\n"), 2, ",x");
+    EXPECT_THROW(BenchResults::parseCsv(bad, "c.csv"), FileError);
+}

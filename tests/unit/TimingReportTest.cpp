@@ -149,3 +149,40 @@ TEST(TimingReport, HistoryLengthKeepsEnoughFrames) {
     t.addSample("geometry", {9, 1.0f, 1.0f});
     EXPECT_EQ(t.find("geometry")->samples.back().frame, 4u);
 }
+
+TEST(TimingReport, CountersAreTheLastFramesAndADifferingFrameIsNamed) {
+    PassTimer timer = syntheticTimer();
+    EXPECT_FALSE(TimingReport::build(timer, lastFrame(), 2, 2).counted());
+    EXPECT_EQ(TimingReport::build(timer, lastFrame(), 2, 2).countersTable(), "");
+    PassTimer counted;
+    for (std::uint64_t f = 0; f < 5; ++f) {
+        PassCounts g, l, total;
+        g.v = {100, 90, 2, 6, 0, 4096};
+        l.v = {f == 3 ? 51 : 50, 40, 1, 3, 0, 1024};  // frame 3 shades one fragment more
+        total = g;
+        total.add(l);
+        counted.addSample("geometry", {f, 1.0f, 1.0f, g});
+        counted.addSample("lighting", {f, 1.0f, 1.0f, l});
+        counted.addSample(PassTimer::kFrameSeries, {f, 2.0f, 2.0f, total});
+    }
+    const TimingReport r = TimingReport::build(counted, lastFrame(), 2, 2);
+    ASSERT_TRUE(r.counted());
+    EXPECT_EQ(r.find("lighting")->counts[PassCounts::Fragments], 50);  // the last frame's (4)
+    EXPECT_TRUE(r.find("lighting")->countsDiffer);
+    EXPECT_EQ(r.find("lighting")->differingFrame, 3u);
+    EXPECT_FALSE(r.find("geometry")->countsDiffer);
+    EXPECT_EQ(r.total().counts[PassCounts::Bytes], 5120);
+    const std::string table = r.table();
+    EXPECT_NE(table.find("cost counters per frame (exact; they differ between frames: frame 3's lighting differ from "
+                         "the last frame's, shown)"),
+              std::string::npos)
+        << table;
+    EXPECT_NE(table.find("\ngeometry                    100             90              2              6              0"
+                         "           4096\n"),
+              std::string::npos)
+        << table;
+    const auto j = nlohmann::json::parse(r.json());
+    EXPECT_EQ(j["passes"][0]["counters"]["fragments"], 100);
+    EXPECT_EQ(j["total"]["counters"]["samples"], 130);
+    EXPECT_EQ(j["counters_same_every_frame"], false);
+}

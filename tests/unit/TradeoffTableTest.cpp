@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 #include <limits>
 #include <random>
 
@@ -422,4 +423,112 @@ TEST(ImageError, MeanOverTheCamerasWithAnError) {
     EXPECT_TRUE(std::isnan(ImageError::meanOver({}, 200, 1).value));
     EXPECT_EQ(ImageError::meanOver({30.0, std::numeric_limits<double>::infinity()}, 200, 1).value,
               std::numeric_limits<double>::infinity());
+}
+
+namespace {
+// Counters on FrontByOnePassTime's kind of table: (frame ms, fragments, error).
+TradeoffTable countedTable() {
+    TradeoffTable t;
+    t.axes = {"ssao.samples"};
+    t.passes = {"ao", "lighting"};
+    t.counted = true;
+    const double data[][3] = {{30.0, 4000, 0.30}, {20.0, 8000, 0.20}, {40.0, 16000, 0.10}, {25.0, 32000, 0.05}};
+    for (int i = 0; i < 4; ++i) {
+        TradeoffRow r = row(i, {std::to_string(4 << i)}, "0", data[i][2], data[i][0]);
+        for (size_t c = 0; c < PassCounts::kCount; ++c) r.frameCounts[c] = 1000.0 * static_cast<double>(c + 1);
+        r.frameCounts[PassCounts::Fragments] = data[i][1] + 100;
+        CounterValues ao, lighting;
+        ao.fill(kNaN);
+        lighting.fill(0.0);
+        ao[PassCounts::Fragments] = data[i][1];
+        lighting[PassCounts::Fragments] = 100;
+        r.passCounts = {ao, lighting};
+        t.rows.push_back(r);
+    }
+    return t;
+}
+
+std::vector<int> frontPoints(const TradeoffTable& t) {
+    std::vector<int> on;
+    for (const auto& r : t.rows)
+        if (r.pareto) on.push_back(r.point);
+    return on;
+}
+}  // namespace
+
+TEST(TradeoffTable, CostAxisIsGpuMsOrACounter) {
+    TradeoffTable t = countedTable();
+    t.markParetoFront();
+    EXPECT_EQ(frontPoints(t), (std::vector<int>{1, 3}));  // by frame ms: 20 (.2) and 25 (.05)
+    t.markParetoFront("frame", "fragments");
+    EXPECT_EQ(frontPoints(t), (std::vector<int>{0, 1, 2, 3}));  // fragments rise as the error falls: every point
+    EXPECT_DOUBLE_EQ(t.costOf(t.rows[2], "frame", "fragments"), 16100.0);
+    EXPECT_DOUBLE_EQ(t.costOf(t.rows[2], "ao", "fragments"), 16000.0);
+    EXPECT_DOUBLE_EQ(t.costOf(t.rows[2], "frame", "gpu_ms"), 40.0);
+    EXPECT_DOUBLE_EQ(t.costOf(t.rows[2], "frame", "bytes"), 6000.0);
+    EXPECT_TRUE(std::isnan(t.costOf(t.rows[2], "ao", "samples")));
+    t.rows[0].frameCounts[PassCounts::Fragments] = 99999;  // now dominated by point 1 in fragments too
+    t.markParetoFront("frame", "fragments");
+    EXPECT_EQ(frontPoints(t), (std::vector<int>{1, 2, 3}));
+    EXPECT_TRUE(TradeoffTable::isCost("samples"));
+    EXPECT_FALSE(TradeoffTable::isCost("pixels"));
+    try {
+        t.markParetoFront("frame", "pixels");
+        FAIL() << "an unknown cost";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "--cost pixels: expected one of gpu_ms, fragments, samples, primitives, vertices, compute, bytes");
+    }
+    for (auto& r : t.rows) r.frameCounts[PassCounts::Compute] = kNaN;
+    EXPECT_THROW(t.markParetoFront("frame", "compute"), Error);
+}
+
+TEST(TradeoffTable, CounterColumnsReadBackAndMerge) {
+    TradeoffTable t = countedTable();
+    t.markParetoFront("frame", "fragments");
+    const std::string text = t.csv();
+    const std::string header = text.substr(0, text.find('\n'));
+    EXPECT_NE(header.find(",gpu_ms.ao,gpu_ms.lighting,fragments,fragments.ao,fragments.lighting,samples,samples.ao,"),
+              std::string::npos)
+        << header;
+    EXPECT_NE(header.find(",bytes,bytes.ao,bytes.lighting,pareto"), std::string::npos) << header;
+    const TradeoffTable back = TradeoffTable::parseCsv(text, "t.csv");
+    EXPECT_TRUE(back.counted);
+    EXPECT_EQ(back.csv(), text);
+    EXPECT_DOUBLE_EQ(back.passCount(back.rows[3], "ao", PassCounts::Fragments), 32000.0);
+    EXPECT_TRUE(std::isnan(back.passCount(back.rows[3], "ao", PassCounts::Samples)));
+    // Shards keep their counters; the front is recomputed on the cost asked for.
+    TradeoffTable a = back, b = back;
+    a.rows.resize(2);
+    b.rows.erase(b.rows.begin(), b.rows.begin() + 2);
+    const TradeoffTable merged = TradeoffTable::merge({b, a}, {"b.csv", "a.csv"}, "frame", "fragments");
+    EXPECT_EQ(merged.csv(), text);
+    // A CSV of the counters without the front's columns (ending at pareto, as
+    // written before both were merged) reads: the counters, no front class.
+    std::string noTail, line;
+    std::istringstream lines(text);
+    while (std::getline(lines, line)) {
+        for (int k = 0; k < 8; ++k) line.erase(line.rfind(','));
+        noTail += line + "\n";
+    }
+    const TradeoffTable old = TradeoffTable::parseCsv(noTail, "old.csv");
+    EXPECT_TRUE(old.counted);
+    EXPECT_DOUBLE_EQ(old.passCount(old.rows[3], "ao", PassCounts::Fragments), 32000.0);
+    EXPECT_EQ(old.rows[3].front, "");
+    EXPECT_EQ(old.rows[3].pareto, back.rows[3].pareto);
+    // A table without counters writes and reads the columns it always had.
+    TradeoffTable plain = t;
+    plain.counted = false;
+    EXPECT_EQ(plain.csv().find("fragments"), std::string::npos);
+    EXPECT_FALSE(TradeoffTable::parseCsv(plain.csv(), "p.csv").counted);
+    // A counter column out of place is named.
+    std::string bad = text;
+    bad.replace(bad.find("samples.ao"), 10, "samples.xx");
+    try {
+        TradeoffTable::parseCsv(bad, "t.csv");
+        FAIL();
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("expected the counter column 'samples.ao', got 'samples.xx'"), std::string::npos)
+            << e.what();
+    }
 }
