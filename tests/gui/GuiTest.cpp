@@ -1504,6 +1504,46 @@ TEST(Gui, TheParetoPanelsBudgetMarksThePick) {
     EXPECT_TRUE(panel.table.rows[1].pick == "over");
 }
 
+namespace {
+
+// The Pareto panel a frame at a time in the window's order (the reference's
+// update, then the panel), and a click on a named item as a person makes it.
+struct ParetoDriver {
+    HeadlessImGui& imgui;
+    ui::UiState& state;
+    RenderSession& session;
+    ui::ParetoPanel& panel;
+    ui::ReferenceControls& reference;
+    ImVec2 size;
+    bool open = true;
+
+    void frame() {
+        imgui.frame([&] {
+            reference.update(state, session);
+            ImGui::SetNextWindowPos(ImVec2(0, 0));
+            ImGui::SetNextWindowSize(size);
+            panel.draw("Pareto", &open, state, session);
+        });
+    }
+    void click(const std::string& name) {
+        frame();
+        const auto& items = ui::drawnItems();
+        ASSERT_TRUE(items.count(name)) << name;
+        const ui::DrawnItem& b = items.at(name);
+        ASSERT_EQ(b.frame, ImGui::GetFrameCount()) << name;
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(-1000, -1000);
+    }
+};
+
+}  // namespace
+
 TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurrentImageByChoice) {
     const fs::path cache = test::tempDir() / "pareto-reference-cache";
     fs::remove_all(cache);
@@ -1519,31 +1559,9 @@ TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurren
     ui::ParetoPanel panel;
     ui::ReferenceControls reference;
     reference.aoRays = 16;
-    bool open = true;
-    // The window's order: the reference's update, then the panel.
-    auto frame = [&] {
-        imgui.frame([&] {
-            reference.update(state, *session);
-            ImGui::SetNextWindowPos(ImVec2(0, 0));
-            ImGui::SetNextWindowSize(ImVec2(800, 600));
-            panel.draw("Pareto", &open, state, *session);
-        });
-    };
-    auto click = [&](const std::string& name) {
-        frame();
-        const auto& items = ui::drawnItems();
-        ASSERT_TRUE(items.count(name)) << name;
-        const ui::DrawnItem& b = items.at(name);
-        ASSERT_EQ(b.frame, ImGui::GetFrameCount()) << name;
-        ImGuiIO& io = ImGui::GetIO();
-        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
-        frame();
-        io.MouseDown[0] = true;
-        frame();
-        io.MouseDown[0] = false;
-        frame();
-        io.MousePos = ImVec2(-1000, -1000);
-    };
+    ParetoDriver driver{imgui, state, *session, panel, reference, ImVec2(800, 600)};
+    auto frame = [&] { driver.frame(); };
+    auto click = [&](const std::string& name) { driver.click(name); };
     auto runSweep = [&] {
         int steps = 0;
         while (state.sweep.step(*session)) ASSERT_LT(++steps, 40);
@@ -1650,29 +1668,9 @@ TEST(Gui, TheParetoPanelAttributesTheViewsErrorAfterTracingItsReference) {
     ui::ParetoPanel panel;
     ui::ReferenceControls reference;
     reference.aoRays = 8;
-    bool open = true;
-    auto frame = [&] {
-        imgui.frame([&] {
-            reference.update(state, *session);
-            ImGui::SetNextWindowPos(ImVec2(0, 0));
-            ImGui::SetNextWindowSize(ImVec2(800, 900));
-            panel.draw("Pareto", &open, state, *session);
-        });
-    };
-    auto click = [&](const std::string& name) {
-        frame();
-        const auto& items = ui::drawnItems();
-        ASSERT_TRUE(items.count(name)) << name;
-        const ui::DrawnItem& b = items.at(name);
-        ImGuiIO& io = ImGui::GetIO();
-        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
-        frame();
-        io.MouseDown[0] = true;
-        frame();
-        io.MouseDown[0] = false;
-        frame();
-        io.MousePos = ImVec2(-1000, -1000);
-    };
+    ParetoDriver driver{imgui, state, *session, panel, reference, ImVec2(800, 900)};
+    auto frame = [&] { driver.frame(); };
+    auto click = [&](const std::string& name) { driver.click(name); };
     click("pareto.attribution");  // the section opens
     click("pareto.attribute");
     EXPECT_TRUE(panel.attribution.waitingForReference);
