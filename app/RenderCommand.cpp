@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string>
 #include <tuple>
 
 #include "app/Commands.h"
@@ -22,10 +24,10 @@
 
 namespace dw {
 
-int runRenderCommand(int argc, char** argv) {
-    CommandLine cl(argc, argv, 2, "render");
-    if (cl.flag("--help")) {
-        std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
+namespace {
+
+void printUsage() {
+    std::cout << "usage: deferred-workbench render [--scene NAME|FILE] [--size WxH] [--buffer NAME]\n"
                      "                                 [--preset NAME|FILE]... [--set knob=value]... [--dump-knobs FILE]\n"
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
@@ -59,86 +61,87 @@ int runRenderCommand(int argc, char** argv) {
                      "               with the record's --ao-rays and --seed, traced again through the cache)\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n"
-                  << CommandLine::rangesHelp("render");
-        return 0;
-    }
-    RunConfig run = cl.runConfig();
-    std::tie(run.width, run.height) = cl.size().value_or(std::pair{1280, 720});
-    run.frames = cl.whole("--frames", 1);
-    const std::string buffer = cl.value("--buffer").value_or("final");
-    const auto out = cl.value("--out");
-    const auto dumpKnobs = cl.value("--dump-knobs");
-    const bool timings = cl.flag("--timings");
-    const auto timingsOut = cl.value("--timings-out");
-    // Only counted frames are measured, so warm-up matters only when timing.
-    const bool timed = timings || timingsOut;
-    run.warmup = cl.whole("--warmup", timed ? 1 : 0);
-    const bool verbose = cl.flag("--verbose");
-    const auto renderdocCapture = cl.value("--renderdoc-capture");
-    const bool checkFinite = cl.flag("--check-finite");
-    const auto record = cl.value("--record");
+              << CommandLine::rangesHelp("render");
+}
+
+// render's options, read and checked (files distinct and writable) before anything renders.
+struct RenderOptions {
+    RunConfig run;
+    std::string buffer, out;
+    std::optional<std::string> dumpKnobs, timingsOut, renderdocCapture, record;
+    bool timings = false, timed = false, verbose = false, checkFinite = false;
     // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
+    reference::ViewReferenceOptions reference;
+    bool referenceOptionGiven = false;
+};
+
+void readReferenceOptions(CommandLine& cl, RenderOptions& o) {
     const auto aoRaysGiven = cl.whole("--ao-rays");
     const auto seedGiven = cl.whole("--seed");
     const auto sppGiven = cl.whole("--spp");
     const auto threadsGiven = cl.whole("--threads");
     const bool noCache = cl.flag("--no-cache");
     const auto cacheDir = cl.value("--cache-dir");
-    reference::ViewReferenceOptions referenceOptions;
-    referenceOptions.aoRays = aoRaysGiven.value_or(64);
-    referenceOptions.seed = seedGiven.value_or(1);
-    referenceOptions.pixelSamples = sppGiven.value_or(1);
-    referenceOptions.threads = threadsGiven.value_or(0);
-    referenceOptions.useCache = !noCache;
-    referenceOptions.cacheDirectory = cacheDir.value_or("");
-    referenceOptions.cacheWarning = [](const std::string& why) {
+    o.reference.aoRays = aoRaysGiven.value_or(64);
+    o.reference.seed = seedGiven.value_or(1);
+    o.reference.pixelSamples = sppGiven.value_or(1);
+    o.reference.threads = threadsGiven.value_or(0);
+    o.reference.useCache = !noCache;
+    o.reference.cacheDirectory = cacheDir.value_or("");
+    o.reference.cacheWarning = [](const std::string& why) {
         std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str());
     };
-    const bool referenceOptionGiven = aoRaysGiven || seedGiven || sppGiven || threadsGiven || noCache || cacheDir;
+    o.referenceOptionGiven = aoRaysGiven || seedGiven || sppGiven || threadsGiven || noCache || cacheDir;
+}
+
+RenderOptions readOptions(CommandLine& cl) {
+    RenderOptions o;
+    o.run = cl.runConfig();
+    std::tie(o.run.width, o.run.height) = cl.size().value_or(std::pair{1280, 720});
+    o.run.frames = cl.whole("--frames", 1);
+    o.buffer = cl.value("--buffer").value_or("final");
+    const auto out = cl.value("--out");
+    o.dumpKnobs = cl.value("--dump-knobs");
+    o.timings = cl.flag("--timings");
+    o.timingsOut = cl.value("--timings-out");
+    // Only counted frames are measured, so warm-up matters only when timing.
+    o.timed = o.timings || o.timingsOut;
+    o.run.warmup = cl.whole("--warmup", o.timed ? 1 : 0);
+    o.verbose = cl.flag("--verbose");
+    o.renderdocCapture = cl.value("--renderdoc-capture");
+    o.checkFinite = cl.flag("--check-finite");
+    o.record = cl.value("--record");
+    readReferenceOptions(cl, o);
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
+    o.out = *out;
     // No output may replace another, or the scene or preset it renders.
-    CommandLine::NamedFiles writes = {{"--out", *out}};
-    if (timingsOut) writes.emplace_back("--timings-out", *timingsOut);
-    if (dumpKnobs) writes.emplace_back("--dump-knobs", *dumpKnobs);
-    if (record) writes.emplace_back("--record", *record);
-    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(run));
+    CommandLine::NamedFiles writes = {{"--out", o.out}};
+    if (o.timingsOut) writes.emplace_back("--timings-out", *o.timingsOut);
+    if (o.dumpKnobs) writes.emplace_back("--dump-knobs", *o.dumpKnobs);
+    if (o.record) writes.emplace_back("--record", *o.record);
+    CommandLine::requireDistinctFiles(writes, CommandLine::inputFiles(o.run));
     // An output that cannot be written fails now, not after the frames (a
     // --record in a missing folder used to fail after --out was written).
     for (const auto& [what, path] : writes) CommandLine::requireWritable(path, what + " file");
+    return o;
+}
 
-    // Bad input fails before any GL work: the preset and --set against the
-    // knob declarations, then the scene (CPU only).
-    run.validate();
-    Scene loaded = loadScene(run.sceneSpec());
+// RenderDoc must be loaded before the GL context exists, to hook it.
+RenderDocCapture startRenderDoc(char** argv, const std::string& capture) {
+    if (const std::string why = RenderDocCapture::relaunchUnderRenderDoc(argv); !why.empty())
+        throw Error("--renderdoc-capture: " + why);
+    RenderDocCapture renderdoc = RenderDocCapture::attach(false);
+    if (!renderdoc.available()) throw Error("--renderdoc-capture: " + renderdoc.why());
+    std::string stem = capture;
+    if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".rdc") == 0) stem.resize(stem.size() - 4);
+    renderdoc.setPathTemplate(stem);
+    return renderdoc;
+}
 
-    // RenderDoc must be loaded before the GL context exists, to hook it.
-    RenderDocCapture renderdoc;
-    if (renderdocCapture) {
-        if (const std::string why = RenderDocCapture::relaunchUnderRenderDoc(argv); !why.empty())
-            throw Error("--renderdoc-capture: " + why);
-        renderdoc = RenderDocCapture::attach(false);
-        if (!renderdoc.available()) throw Error("--renderdoc-capture: " + renderdoc.why());
-        std::string stem = *renderdocCapture;
-        if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".rdc") == 0) stem.resize(stem.size() - 4);
-        renderdoc.setPathTemplate(stem);
-    }
-    auto context = HeadlessGlContext::create();
-    RenderSession session;
-    if (verbose)
-        std::fprintf(stderr, "GL: %s | %s (%s)\n", session.glInfo().renderer.c_str(), session.glInfo().version.c_str(),
-                     context->platform().c_str());
-    session.setScene(std::move(loaded), run);
-    for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    session.resize(run.width, run.height);
-    const bool needsReference = session.isReferenceOutput(buffer);
-    if (!needsReference && referenceOptionGiven)
-        throw UsageError("render: --ao-rays, --seed, --spp, --threads, --no-cache and --cache-dir are the CPU reference's "
-                         "options, for reference.lbuffer, reference.final, reference.ao, reference.spp_error and "
-                         "compare.error; --buffer " +
-                         buffer + " has no reference");
-    // AOV's cost estimated from the triangles before the first frame (issue 22).
+// AOV's cost estimated from the triangles before the first frame (issue 22).
+void warnAovCost(RenderSession& session, const RunConfig& run, bool verbose) {
     const auto estimateStart = std::chrono::steady_clock::now();
     if (const auto e = AovCostEstimate::forKnobs(session.knobs(), session.scene(), session.camera(), run.width,
                                                  run.height)) {
@@ -150,89 +153,145 @@ int runRenderCommand(int argc, char** argv) {
         if (const std::string w = AovCostEstimate::warning(*e, session.knobs(), run.width, run.height); !w.empty())
             std::fprintf(stderr, "warning: %s\n", w.c_str());
     }
-    if (needsReference) {
-        if (referenceOptions.threads > reference::availableThreads())
-            std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", referenceOptions.threads,
-                         reference::availableThreads(), reference::availableThreads());
-        // The reference of the view as the last frame has it (flame particles move with the frame
-        // index), traced as `reference` does, then handed to the reference pass for these frames:
-        // what Python's Session.render(buffer) does, so both give the same image bit for bit.
-        const std::uint64_t lastFrame =
-            session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
-        reference::ViewReference traced;
-        try {
-            traceWithProgressLine(
-                [&](reference::ReferenceProgress* progress) {
-                    reference::ViewReferenceOptions o = referenceOptions;
-                    o.progress = progress;
-                    traced = reference::traceViewReference(session.scene(), session.knobs(), session.camera(), run.width,
-                                                        run.height, o, lastFrame);
-                },
-                run.width, run.height, false);
-        } catch (const reference::ReferenceCancelled&) {
-            std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
-            return 130;
-        }
-        const reference::ReferenceStatistics& s = traced.images.stats;
-        std::printf("CPU reference of the view: %d AO rays per pixel, seed %d; %s %.2f s on %d threads (cache key %s)\n",
-                    traced.model.rayTracedAo ? traced.model.aoRays : 0, referenceOptions.seed,
-                    traced.cached ? "from the cache, rendered earlier in" : "rendered in", s.seconds, s.threads,
-                    traced.key.c_str());
-        session.showReference(&traced.images);
+}
+
+// The reference of the view as the last frame has it (flame particles move
+// with the frame index), traced as `reference` does, then handed to the
+// reference pass for these frames: what Python's Session.render(buffer) does,
+// so both give the same image bit for bit. False when it was cancelled.
+bool traceAndShowReference(RenderSession& session, const RenderOptions& o) {
+    const RunConfig& run = o.run;
+    if (o.reference.threads > reference::availableThreads())
+        std::fprintf(stderr, "note: --threads %d: this machine runs %d at once; using %d\n", o.reference.threads,
+                     reference::availableThreads(), reference::availableThreads());
+    const std::uint64_t lastFrame =
+        session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
+    reference::ViewReference traced;
+    try {
+        traceWithProgressLine(
+            [&](reference::ReferenceProgress* progress) {
+                reference::ViewReferenceOptions ro = o.reference;
+                ro.progress = progress;
+                traced = reference::traceViewReference(session.scene(), session.knobs(), session.camera(), run.width,
+                                                       run.height, ro, lastFrame);
+            },
+            run.width, run.height, false);
+    } catch (const reference::ReferenceCancelled&) {
+        return false;
     }
+    const reference::ReferenceStatistics& s = traced.images.stats;
+    std::printf("CPU reference of the view: %d AO rays per pixel, seed %d; %s %.2f s on %d threads (cache key %s)\n",
+                traced.model.rayTracedAo ? traced.model.aoRays : 0, o.reference.seed,
+                traced.cached ? "from the cache, rendered earlier in" : "rendered in", s.seconds, s.threads,
+                traced.key.c_str());
+    session.showReference(&traced.images);
+    return true;
+}
+
+// Warm-up and counted frames (the last one captured by RenderDoc when asked);
+// `firstCounted` the first counted frame's index.
+FrameReport renderFrames(RenderSession& session, const RenderOptions& o, RenderDocCapture& renderdoc,
+                         std::uint64_t& firstCounted) {
     FrameRequest request;
-    request.outputs = {buffer};
+    request.outputs = {o.buffer};
     // Keep every counted frame's sample, however many there are.
     PassTimer& timer = session.pipeline().timer();
-    timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(run.warmup + run.frames)));
+    timer.setHistoryLength(std::max<size_t>(PassTimer::kHistory, static_cast<size_t>(o.run.warmup + o.run.frames)));
     // Timings and records come with each pass's cost counters (PassCounts.h).
-    if (timed || record) timer.setCounting(true);
+    if (o.timed || o.record) timer.setCounting(true);
     FrameReport report;
-    std::uint64_t firstCounted = 0;
-    for (int i = 0; i < run.warmup + run.frames; ++i) {
+    for (int i = 0; i < o.run.warmup + o.run.frames; ++i) {
         // The last frame is the one captured.
-        const bool capture = renderdoc.available() && i + 1 == run.warmup + run.frames;
+        const bool capture = renderdoc.available() && i + 1 == o.run.warmup + o.run.frames;
         if (capture) renderdoc.startFrameCapture();
         report = session.render(request);
         if (capture && (!renderdoc.endFrameCapture() || renderdoc.lastCapturePath().empty()))
             throw Error("--renderdoc-capture: RenderDoc recorded no frame");
-        if (i == run.warmup) firstCounted = report.frameIndex;
+        if (i == o.run.warmup) firstCounted = report.frameIndex;
     }
     if (renderdoc.available()) std::printf("wrote %s (RenderDoc capture of the last frame)\n", renderdoc.lastCapturePath().c_str());
-    session.writeOutput(buffer, *out);
-    std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", out->c_str(), buffer.c_str(), run.width, run.height,
-                session.scene().name.c_str());
+    return report;
+}
+
+// --check-finite: every produced buffer, not only the one written: the first
+// named is the earliest pass that made a non-finite value. False when one does.
+bool allFinite(RenderSession& session) {
+    const std::vector<NonFiniteCount> counts = FiniteCheck::scan(session.pipeline().outputs());
+    for (const NonFiniteCount& c : counts) {
+        if (c.nonFinite() == 0) continue;
+        std::fprintf(stderr,
+                     "error: buffer '%s' holds %lld non-finite values (%lld NaN, %lld +Inf, %lld -Inf); the first at "
+                     "pixel (%d, %d), rows top-down\n",
+                     c.buffer.c_str(), c.nonFinite(), c.nan, c.positiveInf, c.negativeInf, c.firstX, c.firstY);
+        return false;
+    }
+    std::printf("check-finite: %zu buffers, no NaN or infinity\n", counts.size());
+    return true;
+}
+
+// The image, the lost-fragment warnings, --dump-knobs, --record, --check-finite and the timings.
+int writeResults(RenderSession& session, const RenderOptions& o, const FrameReport& report, std::uint64_t firstCounted,
+                 const std::string& platform, bool needsReference) {
+    session.writeOutput(o.buffer, o.out);
+    std::printf("wrote %s (%s of a %dx%d frame, scene %s)\n", o.out.c_str(), o.buffer.c_str(), o.run.width,
+                o.run.height, session.scene().name.c_str());
     // What a pass lost in the frame written (the oit pass's fragments), one line each.
     for (const auto& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (dumpKnobs) session.writeKnobValues(*dumpKnobs);
-    if (record) {
-        ExperimentRecord r = ExperimentRecord::capture(session, run, buffer, firstCounted, context->platform());
+    if (o.dumpKnobs) session.writeKnobValues(*o.dumpKnobs);
+    if (o.record) {
+        ExperimentRecord r = ExperimentRecord::capture(session, o.run, o.buffer, firstCounted, platform);
         // A reference buffer: the trace's rays and seed, so replay traces the same reference.
-        if (needsReference) r.setReference(referenceOptions.aoRays, static_cast<std::uint32_t>(referenceOptions.seed));
-        r.write(*record);
-        std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", record->c_str(),
-                    record->c_str());
+        if (needsReference) r.setReference(o.reference.aoRays, static_cast<std::uint32_t>(o.reference.seed));
+        r.write(*o.record);
+        std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", o.record->c_str(),
+                    o.record->c_str());
     }
-    if (checkFinite) {
-        // Every produced buffer, not only the one written: the first named is
-        // the earliest pass that made a non-finite value.
-        const std::vector<NonFiniteCount> counts = FiniteCheck::scan(session.pipeline().outputs());
-        for (const NonFiniteCount& c : counts) {
-            if (c.nonFinite() == 0) continue;
-            std::fprintf(stderr,
-                         "error: buffer '%s' holds %lld non-finite values (%lld NaN, %lld +Inf, %lld -Inf); the first at "
-                         "pixel (%d, %d), rows top-down\n",
-                         c.buffer.c_str(), c.nonFinite(), c.nan, c.positiveInf, c.negativeInf, c.firstX, c.firstY);
-            return 3;
-        }
-        std::printf("check-finite: %zu buffers, no NaN or infinity\n", counts.size());
-    }
-    if (timed) {
-        const TimingReport t = TimingReport::build(timer, report, firstCounted, run.warmup);
-        if (timings) std::fputs(t.table().c_str(), stdout);
-        if (timingsOut) t.write(*timingsOut);
+    if (o.checkFinite && !allFinite(session)) return 3;
+    if (o.timed) {
+        const TimingReport t = TimingReport::build(session.pipeline().timer(), report, firstCounted, o.run.warmup);
+        if (o.timings) std::fputs(t.table().c_str(), stdout);
+        if (o.timingsOut) t.write(*o.timingsOut);
     }
     return 0;
+}
+
+}  // namespace
+
+int runRenderCommand(int argc, char** argv) {
+    CommandLine cl(argc, argv, 2, "render");
+    if (cl.flag("--help")) {
+        printUsage();
+        return 0;
+    }
+    const RenderOptions o = readOptions(cl);
+    // Bad input fails before any GL work: the preset and --set against the
+    // knob declarations, then the scene (CPU only).
+    o.run.validate();
+    Scene loaded = loadScene(o.run.sceneSpec());
+    RenderDocCapture renderdoc;
+    if (o.renderdocCapture) renderdoc = startRenderDoc(argv, *o.renderdocCapture);
+    auto context = HeadlessGlContext::create();
+    RenderSession session;
+    if (o.verbose)
+        std::fprintf(stderr, "GL: %s | %s (%s)\n", session.glInfo().renderer.c_str(), session.glInfo().version.c_str(),
+                     context->platform().c_str());
+    session.setScene(std::move(loaded), o.run);
+    for (const auto& w : session.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    session.resize(o.run.width, o.run.height);
+    const bool needsReference = session.isReferenceOutput(o.buffer);
+    if (!needsReference && o.referenceOptionGiven)
+        throw UsageError("render: --ao-rays, --seed, --spp, --threads, --no-cache and --cache-dir are the CPU reference's "
+                         "options, for reference.lbuffer, reference.final, reference.ao, reference.spp_error and "
+                         "compare.error; --buffer " +
+                         o.buffer + " has no reference");
+    warnAovCost(session, o.run, o.verbose);
+    if (needsReference && !traceAndShowReference(session, o)) {
+        std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
+        return 130;
+    }
+    std::uint64_t firstCounted = 0;
+    const FrameReport report = renderFrames(session, o, renderdoc, firstCounted);
+    return writeResults(session, o, report, firstCounted, context->platform(), needsReference);
 }
 
 }  // namespace dw
