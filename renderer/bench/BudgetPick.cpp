@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "renderer/Error.h"
+#include "renderer/metrics/Bootstrap.h"
 
 namespace dw {
 
@@ -143,16 +144,21 @@ BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::stri
             out.tied.push_back(r->point);
         }
     const bool exact = cost.exact;
+    // Fewer counted frames than an interval needs: the interval only repeats them, so no confidence is claimed.
+    const bool tooFew = !exact && !enoughForInterval(static_cast<size_t>(std::max(best->frames, 0)));
     out.lines.push_back("pick: " + describe(t, *best) + ": " + errorText(*best) + ", " + costText(cost, *best) +
                         ": the least error of the " + std::to_string(out.fitting) + " point(s) whose " +
                         (exact ? cost.name : cost.name + "'s 95% interval") + " ends under the budget of " +
                         shortNumber(budgetMs) + " " + cost.unit +
-                        (exact ? std::string(" (exact)") : " (97.5% one-sided that its median is under)"));
-    out.lines.push_back(out.tied.empty()
-                            ? "pick: told apart in error from every other point that fits"
-                            : "pick: cannot be told apart in error from point(s) " + pointList(out.tied) +
-                                  ", which fit too (the front's confidence: " +
-                                  (t.frontRules.count(camera) ? t.frontRules.at(camera) : std::string("?")) + ")");
+                        (exact    ? std::string(" (exact)")
+                         : tooFew ? " (" + std::to_string(best->frames) + " counted frame(s): " + kTooFewForInterval +
+                                        ", so no confidence that its median is under)"
+                                  : std::string(" (97.5% one-sided that its median is under)")));
+    const std::string rule = t.frontRules.count(camera) ? " (the front's confidence: " + t.frontRules.at(camera) + ")" : "";
+    out.lines.push_back(out.fitting == 1        ? std::string("pick: the only point that fits")
+                        : out.tied.empty()      ? "pick: told apart in error from every other point that fits" + rule
+                                                : "pick: cannot be told apart in error from point(s) " +
+                                                      pointList(out.tied) + ", which fit too" + rule);
     return out;
 }
 

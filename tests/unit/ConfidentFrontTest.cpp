@@ -234,6 +234,20 @@ TEST(BudgetPick, AnyCostOfARowCanBeTheBudgetsUnit) {
     EXPECT_THROW(BudgetPicker::pick(t, 0.0, "0", fragments), Error);
 }
 
+// A trial found the pick claiming 97.5% from one frame, and "told apart from
+// every other point that fits" when no other fits.
+TEST(BudgetPick, ClaimsNoConfidenceFromTooFewFramesAndSaysWhenOnlyOneFits) {
+    TradeoffTable t = budgetTable();
+    for (auto& r : t.rows) r.frames = 1;
+    const BudgetPick p = BudgetPicker::pick(t, 1.3, "0");  // only point 0 (1 ms [0.8, 1.2]) fits
+    ASSERT_EQ(p.point, 0);
+    ASSERT_EQ(p.lines.size(), 2u);
+    EXPECT_NE(p.lines[0].find("1 counted frame(s): too few frames for an interval, so no confidence"), std::string::npos)
+        << p.lines[0];
+    EXPECT_EQ(p.lines[0].find("97.5%"), std::string::npos) << p.lines[0];
+    EXPECT_EQ(p.lines[1], "pick: the only point that fits");
+}
+
 TEST(BudgetPick, RefusesBudgetsThatAreNotMilliseconds) {
     for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
         try {
