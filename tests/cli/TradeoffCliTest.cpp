@@ -694,3 +694,34 @@ TEST(TradeoffCli, StudyFileAndBadStudiesAreOneClearLine) {
         EXPECT_FALSE(fs::exists(dir() / "study-bad.csv")) << b.args;
     }
 }
+
+// Replay checks the numbers the front and the pick used beyond the error:
+// --time's span with its interval (a recorded time far from the new one is
+// "(moved)") and, with a counter --cost (exact inputs), each row's front.
+TEST(TradeoffCli, ReplayChecksTheTimeAndTheFrontThePickUsed) {
+    const Result r = run("tradeoff --scene default --size 48x27 --frames 6 --warmup 0 --resamples 100 --metric rms "
+                         "--buffer ao --quiet --time ao --cost fragments --study ao.method=ssao:ssao.samples=4,8 "
+                         "--study ao.method=gtao:gtao.slices=1,2" + files("study-front"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    std::ifstream in(dir() / "study-front.json");
+    nlohmann::json rec = nlohmann::json::parse(in);
+    EXPECT_EQ(rec["grid"]["time"], "ao");
+    EXPECT_EQ(rec["grid"]["cost"], "fragments");
+    nlohmann::json& row = rec["results"]["rows"][0];
+    const std::string front = row["front"].get<std::string>(), edited = front == "pareto" ? "dominated" : "pareto";
+    row["front"] = edited;
+    row["time_ms"] = 1000.0;
+    row["time_ms_ci95"] = {1000.0, 1001.0};
+    std::ofstream((dir() / "study-front-edited.json").string()) << rec.dump(2);
+    const Result again = run("replay " + (dir() / "study-front-edited.json").string());
+    EXPECT_EQ(again.code, 1) << again.err << again.out;
+    const std::string label = "point 0 camera 0, study=ssao, ao.method=ssao, ssao.samples=4, gtao.slices=";
+    const size_t time = again.out.find(": time_ms (ao) median 1000.000 -> ");
+    ASSERT_NE(time, std::string::npos) << again.out;
+    EXPECT_EQ(again.out.rfind(label, time), again.out.rfind('\n', time) + 1) << again.out;
+    EXPECT_NE(again.out.find("95% CI [1000, 1001] -> ", time), std::string::npos) << again.out;
+    EXPECT_LT(again.out.find(" (moved)", time), again.out.find('\n', time)) << again.out;
+    EXPECT_NE(again.out.find(": front " + edited + " -> " + front), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("(moved; rule: exact, the front's cost is a counter)"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("1 with another front or pick)"), std::string::npos) << again.out;
+}
