@@ -235,7 +235,7 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
         ExperimentRecord::forTradeoff(again, runner.scene(), m.result, m.machine).write(*newRecord);
 
     const replay::TradeoffComparison compared =
-        replay::compareTradeoff(before, after, old.frames, again.options.frames);
+        replay::compareTradeoff(before, after, old.frames, again.options.frames, again.options.cost != "gpu_ms");
     reportShaders(old, shaderFilesOf(m.result.shaders), inputs);
     inputs.print();
     return compared.verdict();

@@ -147,7 +147,9 @@ int compareResults(const ExperimentRecord& a, const ExperimentRecord& b, const s
             .verdict();
     }
     if (a.command == "tradeoff")
-        return replay::compareTradeoff(a.tradeoffTable(pathA), b.tradeoffTable(pathB), a.frames, b.frames).verdict();
+        return replay::compareTradeoff(a.tradeoffTable(pathA), b.tradeoffTable(pathB), a.frames, b.frames,
+                                       a.tradeoff->options.cost != "gpu_ms" && a.tradeoff->options.cost == b.tradeoff->options.cost)
+            .verdict();
     replay::compareTimings(a.timings, b.timings);
     const int counters = replay::compareCounters(a.timings, b.timings);
     return std::max(replay::imageVerdict(a.imageSha256, b.imageSha256), counters);

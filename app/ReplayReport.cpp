@@ -61,6 +61,34 @@ bool printRowComparison(const std::string& label, const TradeoffRow& b, const Tr
     return timeMoved;
 }
 
+// "[lo, hi]" of an interval, as %.6g.
+std::string interval(double lo, double hi) {
+    char text[80];
+    std::snprintf(text, sizeof(text), "[%.6g, %.6g]", lo, hi);
+    return text;
+}
+
+// Whether a time's new 95% interval lies wholly outside the band of its old
+// one (new low / old high above kTimingBandHigh, or new high / old low below
+// kTimingBandLow): the rule the frame time uses; never without intervals.
+bool intervalMoved(double oldLo, double oldHi, double newLo, double newHi, bool enough) {
+    const double ratioLo = oldHi > 0 ? newLo / oldHi : NAN, ratioHi = oldLo > 0 ? newHi / oldLo : NAN;
+    return enough && std::isfinite(ratioLo) && std::isfinite(ratioHi) &&
+           (ratioLo > kTimingBandHigh || ratioHi < kTimingBandLow);
+}
+
+// "1, 2" of point numbers; "1 (error), 3 (both)" of ties.
+std::string pointList(const std::vector<int>& points) {
+    std::string s;
+    for (int p : points) s += (s.empty() ? "" : ", ") + std::to_string(p);
+    return s.empty() ? "none" : s;
+}
+std::string tieList(const std::vector<std::pair<int, std::string>>& ties) {
+    std::string s;
+    for (const auto& [p, axes] : ties) s += (s.empty() ? "" : ", ") + std::to_string(p) + " (" + axes + ")";
+    return s.empty() ? "none" : s;
+}
+
 }  // namespace
 
 std::string shortHash(const std::string& h) { return h.empty() ? "unreadable" : h.substr(0, 16); }
@@ -276,13 +304,50 @@ std::string movedCounters(const TradeoffTable& before, const TradeoffRow& old, c
     }
     return moved;
 }
+
+// What the front used beyond the error, the frame time and the counters, one
+// row old against new, each moved number on a line naming its column and the
+// rule: the error's interval exactly (as the error), --time's span with its
+// interval (the frame time's rule), and the row's front, dominated_by,
+// tied_with and pick (counted only where the front's inputs are exact: a
+// counter --cost; with GPU ms they follow the times' noise and are said, not counted).
+void compareFrontInputs(const std::string& label, const TradeoffTable& before, const TradeoffRow& b,
+                        const TradeoffTable& after, const TradeoffRow& r, bool enough, TradeoffComparison& out) {
+    if (!sameError(b.errorLo, r.errorLo) || !sameError(b.errorHi, r.errorHi)) {
+        std::printf("%s: error_ci95 %s -> %s (moved; rule: equal to 1e-9 relative, as the error)\n", label.c_str(),
+                    interval(b.errorLo, b.errorHi).c_str(), interval(r.errorLo, r.errorHi).c_str());
+        ++out.intervalDiffer;
+    }
+    if (before.time != "frame" && before.time == after.time) {
+        const bool moved = intervalMoved(b.timeMsLo, b.timeMsHi, r.timeMsLo, r.timeMsHi, enough);
+        std::printf("%s: time_ms (%s) median %.3f -> %.3f ms, 95%% CI %s -> %s%s\n", label.c_str(), after.time.c_str(),
+                    b.timeMs, r.timeMs, interval(b.timeMsLo, b.timeMsHi).c_str(), interval(r.timeMsLo, r.timeMsHi).c_str(),
+                    moved ? " (moved)" : !enough ? " (too few frames for an interval: not tested)" : "");
+        if (moved) ++out.timeMoved;
+    }
+    std::string front;
+    auto add = [&front](const std::string& column, const std::string& was, const std::string& is) {
+        front += (front.empty() ? "" : ", ") + column + " " + (was.empty() ? "-" : was) + " -> " + (is.empty() ? "-" : is);
+    };
+    if (b.front != r.front) add("front", b.front, r.front);
+    if (b.dominatedBy != r.dominatedBy) add("dominated_by", pointList(b.dominatedBy), pointList(r.dominatedBy));
+    if (b.tiedWith != r.tiedWith) add("tied_with", tieList(b.tiedWith), tieList(r.tiedWith));
+    if (b.pick != r.pick) add("pick", b.pick, r.pick);
+    if (front.empty()) return;
+    std::printf("%s: %s%s\n", label.c_str(), front.c_str(),
+                out.exactCost ? " (moved; rule: exact, the front's cost is a counter)"
+                              : " (not counted: with GPU ms the front follows the times' noise)");
+    if (out.exactCost) ++out.frontMoved;
+}
 }  // namespace
 
 TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTable& after, int framesBefore,
-                                   int framesAfter) {
+                                   int framesAfter, bool exactCost) {
     std::map<std::tuple<int, std::string, std::string, std::string>, const TradeoffRow*> recorded;
     for (const auto& r : before.rows) recorded[{r.point, r.camera, r.metric, r.buffer}] = &r;
     TradeoffComparison out;
+    out.exactCost = exactCost;
+    out.time = before.time == after.time ? after.time : "frame";
     out.rows = after.rows.size();
     out.countersCompared = before.counted && after.counted;
     for (const auto& r : after.rows) {
@@ -303,6 +368,8 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
             std::printf("%s: counters moved: %s\n", pointLabel(after, r).c_str(), moved.c_str());
             ++out.countersMoved;
         }
+        compareFrontInputs(pointLabel(after, r), before, b, after, r,
+                           enoughForInterval(nBefore) && enoughForInterval(nAfter), out);
         recorded.erase(it);
     }
     for (const auto& [key, b] : recorded) {
@@ -313,15 +380,20 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
 }
 
 int TradeoffComparison::verdict() const {
-    if (errorDiffer == 0 && moved == 0 && missing == 0 && countersMoved == 0) {
+    if (errorDiffer == 0 && moved == 0 && missing == 0 && countersMoved == 0 && intervalDiffer == 0 &&
+        timeMoved == 0 && frontMoved == 0) {
         std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
-                    "95%% interval%s)\n",
-                    rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "");
+                    "95%% interval%s; every error interval equal%s%s)\n",
+                    rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "",
+                    time == "frame" ? "" : (", no " + time + " time outside the band either").c_str(),
+                    exactCost ? ", the front and the pick the same" : "");
         return 0;
     }
     std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
-                "%d with a counter moved, %d not in both)\n",
-                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, missing);
+                "%d with a counter moved, %d not in both; %d with another error interval, %d with the%s time moved, "
+                "%d with another front or pick)\n",
+                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, missing, intervalDiffer, timeMoved,
+                time == "frame" ? " --time" : (" " + time).c_str(), frontMoved);
     return 1;
 }
 

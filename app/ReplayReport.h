@@ -98,13 +98,21 @@ BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::ve
 // interval of the difference. Frames: a row's own count, else these.
 // The cost counters (when both tables have them) are compared exactly: a
 // row whose counter moved prints "counters moved: fragments.lighting A -> B, ...".
+// Also every other number the front and the pick used: the error's interval
+// (exactly, as the error: "error_ci95 [a, b] -> [c, d] (moved; ...)"), the
+// time --time names when it is not the frame's (its median and interval,
+// "(moved)" by the frame time's rule), and each row's front, dominated_by,
+// tied_with and pick: counted when `exactCost` (a counter --cost: the front is
+// as exact as its inputs), else said as the times' noise.
 struct TradeoffComparison {
     int errorDiffer = 0, moved = 0, missing = 0, countersMoved = 0;
-    bool countersCompared = false;
+    int intervalDiffer = 0, timeMoved = 0, frontMoved = 0;
+    bool countersCompared = false, exactCost = false;
+    std::string time = "frame";  // the span --time named, when both tables have it
     size_t rows = 0;
     int verdict() const;  // prints "tradeoff: the same (...)" (0) or "tradeoff: differs (...)" (1)
 };
 TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTable& after, int framesBefore,
-                                   int framesAfter);
+                                   int framesAfter, bool exactCost = false);
 
 }  // namespace dw::replay

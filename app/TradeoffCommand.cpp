@@ -14,6 +14,7 @@
 
 #include "app/Commands.h"
 #include "app/HostInfo.h"
+#include "app/StudyOptions.h"
 #include "app/SweepOptions.h"
 #include "headless/CommandLine.h"
 #include "headless/HeadlessGlContext.h"
@@ -54,6 +55,7 @@ const SweepCommand kTradeoff = [] {
 std::string tradeoffUsage() {
     return "usage: deferred-workbench tradeoff [--scene S] [--preset P] [--set knob=value]... [--size WxH]\n"
            "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
+           "                                   [--study [NAME:]KNOB=V1,V2[:KNOB=V...]]... [--study-file F.json]\n"
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
            "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
            "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
@@ -65,7 +67,8 @@ std::string tradeoffUsage() {
            "                                   [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
            "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
            "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
-           "               about the current settings (docs/tradeoffs.md says which values)\n"
+           "               about the current settings (docs/tradeoffs.md says which values)\n" +
+           StudyOptions::help() +
            "  --against    what the error is measured against: the CPU reference (default; from the reference\n"
            "               cache, each camera's rendered once) or the point with these knob values on top\n"
            "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
@@ -284,12 +287,22 @@ TradeoffShardInput shardInput(const std::string& name, const TradeoffTable& t) {
     auto text = [&](const char* key) { return g.contains(key) ? (g[key].is_string() ? g[key].get<std::string>() : g[key].dump()) : ""; };
     if (g.contains("against")) in.fields.emplace_back("against", text("against").empty() || text("against") == "[]" ? "reference" : text("against"));
     nlohmann::json grid = nlohmann::json::object();
-    for (const char* key : {"axes", "one_at_a_time", "centre", "exclude"})
+    for (const char* key : {"axes", "one_at_a_time", "centre", "points", "exclude"})
         if (g.contains(key)) grid[key] = g[key];
     in.fields.emplace_back("grid", grid.dump());
     in.fields.emplace_back("camera path", "orbit " + text("orbit") + ", walkthrough " + text("walkthrough"));
     in.shard = text("shard");
     return in;
+}
+
+// The runner's options; a bad --study (an unknown knob, a value it does not
+// take, a point twice) is a usage error, as the flags' other checks are.
+TradeoffOptions studyOptions(const TradeoffStudyOptions& s) {
+    try {
+        return TradeoffStudy::runnerOptions(s);
+    } catch (const TradeoffStudyError& e) {
+        throw UsageError(e.what());
+    }
 }
 
 int runMerge(int argc, char** argv) {
@@ -365,6 +378,8 @@ int runTradeoffCommand(int argc, char** argv) {
     s.sweep = so.sweeps;
     if (const auto presets = cl.value("--presets")) s.presets = CommandLine::parseList("--presets", *presets);
     s.knobs = cl.value("--knobs").value_or("");
+    const StudyOptions studies = StudyOptions::read(cl);
+    s.studies = studies.studies;
     s.exclude = so.excludes;
     s.against = cl.value("--against").value_or("reference");
     s.metric = cl.value("--metric").value_or("flip");
@@ -397,8 +412,10 @@ int runTradeoffCommand(int argc, char** argv) {
     } catch (const Error& e) {
         throw UsageError(e.what());
     }
-    so.checkOutputs(kTradeoff, CommandLine::inputFiles(s.run));
-    const TradeoffOptions o = TradeoffStudy::runnerOptions(s);  // --knobs speed/quality: its axes, from the scene
+    CommandLine::NamedFiles reads = CommandLine::inputFiles(s.run);
+    if (studies.file) reads.emplace_back("--study-file", *studies.file);
+    so.checkOutputs(kTradeoff, reads);
+    const TradeoffOptions o = studyOptions(s);  // --knobs speed/quality or --study: its axes, from the scene
 
     // Everything that can fail without GL fails here: axes, values, presets, the scene.
     TradeoffRunner runner(o);

@@ -139,6 +139,40 @@ void checkWrites(const TradeoffStudyOptions& s, const TradeoffFiles& f) {
     if (f.plot) CommandLine::requireWritable(*f.plot, "plot");
 }
 
+// studies=: [{knob: value or [values]}, ...] (named as --study names them)
+// or {name: {knob: value or [values]}, ...}, the shapes a --study-file holds
+// (TradeoffStudies); None: none. Anything else is ValueError.
+std::vector<TradeoffStudySpec> studyList(const py::object& studies) {
+    std::vector<TradeoffStudySpec> out;
+    if (studies.is_none()) return out;
+    auto one = [&](const py::handle& knobs, const std::string& name) {
+        if (!py::isinstance<py::dict>(knobs))
+            throw py::value_error("tradeoff: studies: each study is a dict {knob: value or [values]}, got " +
+                                  std::string(py::str(py::repr(knobs))));
+        TradeoffStudySpec spec;
+        spec.name = name;
+        spec.origin = "studies";
+        for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(knobs)) {
+            TradeoffStudySpec::Knob knob{std::string(py::str(k)), {}};
+            if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v))
+                for (const auto& x : v) knob.values.push_back(knobText(x));
+            else
+                knob.values.push_back(knobText(v));
+            spec.knobs.push_back(std::move(knob));
+        }
+        out.push_back(std::move(spec));
+    };
+    if (py::isinstance<py::dict>(studies)) {
+        for (const auto& [name, knobs] : py::reinterpret_borrow<py::dict>(studies)) one(knobs, py::str(name));
+    } else if (py::isinstance<py::list>(studies) || py::isinstance<py::tuple>(studies)) {
+        for (const auto& knobs : studies) one(knobs, "");
+    } else {
+        throw py::value_error("tradeoff: studies: expected a list of {knob: value or [values]} or a dict {name: {...}}");
+    }
+    if (out.empty()) throw py::value_error("tradeoff: studies: no studies (None for a sweep)");
+    return out;
+}
+
 // The study's sweep, presets and exclusions from their keywords, and every
 // check the CLI makes before it measures (TradeoffStudy::check, the scene
 // file, the files); bad ones are ValueError (KnobError for a knob).
@@ -272,7 +306,8 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
 
 py::dict tradeoff(const std::string& scene, const py::object& size, py::object preset, std::optional<py::dict> settings,
                   std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
-                  py::object exclude, const std::string& against, const std::string& metric, const std::string& buffer,
+                  const py::object& studies, py::object exclude, const std::string& against, const std::string& metric,
+                  const std::string& buffer,
                   const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
                   const std::string& cost, std::optional<double> budgetMs, std::optional<double> budget,
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
@@ -285,6 +320,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     applyRunArguments(s.run, scene, preset, settings);
     std::tie(s.run.width, s.run.height) = sizeArg(size, "tradeoff: size", limits::kSize, "tradeoff --size");
     s.knobs = knobs.value_or("");
+    s.studies = studyList(studies);
     s.against = against;
     s.metric = metric;
     s.buffer = buffer;
@@ -311,7 +347,8 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
 void bindTradeoff(py::module_& m) {
     m.def("tradeoff", &tradeoff, py::arg("scene") = "", py::arg("size") = std::make_pair(640, 360),
           py::arg("preset") = py::none(), py::arg("settings") = py::none(), py::arg("sweep") = py::none(),
-          py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("exclude") = py::none(),
+          py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("studies") = py::none(),
+          py::arg("exclude") = py::none(),
           py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
           py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("cost") = "gpu_ms",
           py::arg("budget_ms") = py::none(), py::arg("budget") = py::none(), py::arg("orbit") = 0,
@@ -322,7 +359,9 @@ void bindTradeoff(py::module_& m) {
           "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
           "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
-          "presets=[...] (an axis), knobs=\"speed/quality\", exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
+          "presets=[...] (an axis), knobs=\"speed/quality\", studies=[{knob: value or [values]}, ...] or\n"
+          "{name: {knob: ...}, ...} (several grids in one run, as repeated --study: the column study, one front),\n"
+          "exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
           "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), cost (gpu_ms or a counter: fragments, samples,\n"
           "primitives, vertices, compute, bytes: the front's cost axis), budget_ms (bounds the time), budget (bounds\n"
           "the counter cost names, in its unit; not with budget_ms), orbit, walkthrough, frames, warmup, block,\n"

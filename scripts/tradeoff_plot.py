@@ -245,8 +245,20 @@ def draw(plt, args, inputs):
     # Only the axes that vary name the points.
     varying = [i for i, _ in enumerate(axes) if len({tuple([r["values"][i]]) for r in shown}) > 1]
 
+    # tradeoff --study: a point is its study's name and the knobs that vary within that study.
+    study = axes.index("study") if "study" in axes else None
+    within = {}
+    if study is not None:
+        for name in {r["values"][study] for r in shown}:
+            members = [r for r in shown if r["values"][study] == name]
+            within[name] = [i for i in varying if i != study and len({r["values"][i] for r in members}) > 1]
+
     def label(r):
-        parts = [f"{axes[i]}={r['values'][i]}" if axes[i] != "preset" else r["values"][i] for i in varying]
+        if study is not None:
+            name = r["values"][study]
+            parts = [name] + [f"{axes[i]}={r['values'][i]}" for i in within[name]]
+        else:
+            parts = [f"{axes[i]}={r['values'][i]}" if axes[i] != "preset" else r["values"][i] for i in varying]
         text = ", ".join(parts) if parts else f"point {r['point']}"
         return text + " (PSNR inf)" if r.get("inf") else text
 

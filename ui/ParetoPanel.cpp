@@ -75,6 +75,7 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
         for (size_t i = 0; i < table.axes.size() && i < r.axisValues.size(); ++i) {
             const std::string& axis = table.axes[i];
             const std::string& value = r.axisValues[i];
+            if (axis == "study") continue;  // a label (tradeoff --study): the point's knobs are in the other axes
             if (axis == "preset") {
                 RunConfig run;
                 run.setPreset(value);

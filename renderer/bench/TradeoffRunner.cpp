@@ -112,10 +112,10 @@ void TradeoffRunner::checkOptions() const {
 void TradeoffRunner::readAxes(const KnobRegistry& declared) {
     for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
         TradeoffAxis& axis = o_.sweep.axes[a];
-        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name)) axis.name = declared.canonicalName(axis.name);
+        if (TradeoffSweep::isKnobAxis(axis.name)) axis.name = declared.canonicalName(axis.name);
         for (size_t b = 0; b < a; ++b)
             if (o_.sweep.axes[b].name == axis.name) throw Error("--sweep " + axis.name + " is given twice");
-        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name) && !declared.find(axis.name))
+        if (TradeoffSweep::isKnobAxis(axis.name) && !declared.find(axis.name))
             throw Error("--sweep: unknown knob '" + axis.name + "' (see: list knobs; axes that are not knobs: "
                         "preset, camera.near, camera.far)");
         axis.numbers.clear();
@@ -131,7 +131,7 @@ void TradeoffRunner::readAxes(const KnobRegistry& declared) {
     GridExclusion::Axes axes;
     for (const auto& a : o_.sweep.axes) axes.emplace_back(a.name, a.values);
     o_.sweep.exclusion.resolve(axes, [&](const std::string& axis, const std::string& value) {
-        if (axis == "preset") return value;
+        if (axis == "preset" || TradeoffSweep::isStudyAxis(axis)) return value;
         if (TradeoffSweep::isCameraAxis(axis)) return shortText(planeValue(axis, value));
         return readKnobAssignment(declared, axis, value).text;
     });
@@ -140,7 +140,9 @@ void TradeoffRunner::readAxes(const KnobRegistry& declared) {
 // One value of `axis`: `text` becomes the text the CSV writes, and its
 // number (the knob's value, the plane's distance) joins the axis' numbers.
 void TradeoffRunner::readAxisValue(const KnobRegistry& declared, TradeoffAxis& axis, std::string& text) {
-    if (axis.name == "preset") {
+    if (TradeoffSweep::isStudyAxis(axis.name)) {
+        if (text.empty()) throw Error("a study's name is empty");
+    } else if (axis.name == "preset") {
         RunConfig probe;
         probe.setPreset(text);  // Error naming the built-in presets, or FileError
     } else if (TradeoffSweep::isCameraAxis(axis.name)) {
@@ -213,7 +215,7 @@ void TradeoffRunner::applyPoint(RenderSession& session, size_t p) const {
     pointRuns_[p].applyKnobs(session.knobs(), session.scene());
     for (size_t a = 0; a < o_.sweep.axes.size(); ++a) {
         const TradeoffAxis& axis = o_.sweep.axes[a];
-        if (axis.name != "preset" && !TradeoffSweep::isCameraAxis(axis.name))
+        if (TradeoffSweep::isKnobAxis(axis.name))
             session.knobs().set(*session.knobs().find(axis.name), axis.numbers[points_[p].at[a]]);
     }
 }
@@ -605,7 +607,9 @@ BenchFields TradeoffRunner::settingsOf(const TradeoffResult& result, double tota
         {"cameras", o_.walkthrough ? "walkthrough keyframes (" + std::to_string(cameraCount) + ")"
                     : o_.orbit > 0 ? "orbit " + std::to_string(o_.orbit)
                                    : "the run's camera"},
-        {"sweep", o_.sweep.oneAtATime ? "one knob at a time about the current settings" : "full grid"},
+        {"sweep", !o_.sweep.listed.empty() ? "studies: each its own grid (the column study)"
+                  : o_.sweep.oneAtATime    ? "one knob at a time about the current settings"
+                                           : "full grid"},
         {"metric", o_.metric},
         {"buffer", o_.buffer + " (" + gpuOutput(o_.buffer) + ")"},
         {"mask", o_.mask.empty() ? "none: every pixel" : o_.mask + ": pixels within 2 px of an edge of the reference's shadow buffer"},

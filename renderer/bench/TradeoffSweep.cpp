@@ -9,6 +9,7 @@ namespace dw {
 
 size_t TradeoffSweep::count() const {
     if (axes.empty()) return 0;
+    if (!listed.empty()) return listed.size();
     size_t n = 1;
     for (const auto& a : axes) n = oneAtATime ? n + (a.values.size() - 1) : n * a.values.size();
     return n;
@@ -50,9 +51,25 @@ std::vector<std::vector<size_t>> TradeoffSweep::oneAtATimeChoices() const {
     return all;
 }
 
+// The listed points, each position checked against its axis.
+std::vector<std::vector<size_t>> TradeoffSweep::listedChoices() const {
+    for (size_t i = 0; i < listed.size(); ++i) {
+        if (listed[i].size() != axes.size())
+            throw Error("listed point " + std::to_string(i) + " has " + std::to_string(listed[i].size()) +
+                        " value(s) for " + std::to_string(axes.size()) + " axes");
+        for (size_t a = 0; a < axes.size(); ++a)
+            if (listed[i][a] >= axes[a].values.size())
+                throw Error("listed point " + std::to_string(i) + ": " + axes[a].name + " has no value " +
+                            std::to_string(listed[i][a]));
+    }
+    return listed;
+}
+
 std::vector<TradeoffPoint> TradeoffSweep::points() const {
     if (axes.empty()) throw Error("tradeoff needs at least one axis (--sweep, --presets or --knobs)");
-    const std::vector<std::vector<size_t>> all = oneAtATime ? oneAtATimeChoices() : gridChoices();
+    const std::vector<std::vector<size_t>> all = !listed.empty() ? listedChoices()
+                                                 : oneAtATime      ? oneAtATimeChoices()
+                                                                   : gridChoices();
     std::vector<TradeoffPoint> out;
     for (size_t i = 0; i < all.size(); ++i) {
         std::vector<std::string> values;

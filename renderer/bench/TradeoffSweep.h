@@ -5,7 +5,10 @@
 //   grid          every combination, the last axis fastest (--sweep, --presets);
 //   one at a time every axis varies alone while the others hold their centre
 //                 value (--knobs speed/quality): the centre point first, then
-//                 each axis' other values in order.
+//                 each axis' other values in order;
+//   listed        the points one by one (tradeoff --study: each study's own
+//                 grid, TradeoffStudies), with the label axis "study" naming
+//                 each point's study (not applied to the renderer).
 // Points are numbered before --exclude leaves some out, so a number means the
 // same point in every shard and after a merge. Needs no GL.
 #include <string>
@@ -42,8 +45,17 @@ public:
     bool oneAtATime = false;
     std::vector<std::string> centre;  // one per axis, for oneAtATime
     GridExclusion exclusion;
+    // Not empty: the points in this order, each one's value position per axis
+    // (neither grid nor one at a time).
+    std::vector<std::vector<size_t>> listed;
 
     static bool isCameraAxis(const std::string& name) { return name == "camera.near" || name == "camera.far"; }
+    // The axis naming each point's study (a label, set on nothing).
+    static bool isStudyAxis(const std::string& name) { return name == "study"; }
+    // An axis that is a knob: not preset, a clip plane or study.
+    static bool isKnobAxis(const std::string& name) {
+        return name != "preset" && !isCameraAxis(name) && !isStudyAxis(name);
+    }
 
     // Every point, in order, without the excluded ones. Throws Error when
     // there are no axes, or none is left ("the sweep is empty after --exclude").
@@ -60,6 +72,7 @@ public:
 private:
     std::vector<std::vector<size_t>> gridChoices() const;
     std::vector<std::vector<size_t>> oneAtATimeChoices() const;
+    std::vector<std::vector<size_t>> listedChoices() const;
 };
 
 }  // namespace dw

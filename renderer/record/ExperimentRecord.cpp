@@ -669,7 +669,7 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
     const TradeoffOptions& o = tradeoff.options;
     Json axes = Json::array();
     for (const auto& a : o.sweep.axes) axes.push_back({{"name", a.name}, {"values", a.values}});
-    return {{"axes", axes},
+    Json grid = {{"axes", axes},
             {"one_at_a_time", o.sweep.oneAtATime},
             {"centre", o.sweep.centre},
             {"exclude", tradeoff.exclude},
@@ -687,6 +687,56 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"run_presets", tradeoff.runPresets},
             {"run_sets", tradeoff.runSets},
             {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
+    // What the front and the pick used, so replay uses them too (records before these: frame, no mask, no budget).
+    grid["time"] = o.time;
+    grid["mask"] = o.mask;
+    if (o.budgetMs != 0.0) grid["budget_ms"] = o.budgetMs;
+    if (o.budget != 0.0) grid["budget"] = o.budget;
+    // tradeoff --study: the points one by one, each its value positions on the axes.
+    if (!o.sweep.listed.empty()) grid["points"] = o.sweep.listed;
+    return grid;
+}
+
+// The listed points of a --study record's grid, each checked against the axes.
+std::vector<std::vector<size_t>> listedPoints(const RecordField& g, const TradeoffSweep& sweep) {
+    std::vector<std::vector<size_t>> listed;
+    if (!g.has("points")) return listed;
+    for (const RecordField& p : g.at("points").items()) {
+        std::vector<size_t> at;
+        for (const RecordField& v : p.items()) {
+            if (at.size() >= sweep.axes.size()) p.refuse("more positions than the grid's axes");
+            const TradeoffAxis& axis = sweep.axes[at.size()];
+            const int most = std::max(0, static_cast<int>(axis.values.size()) - 1);
+            at.push_back(static_cast<size_t>(v.whole(OptionRange{0, most}, "a value's position on " + axis.name)));
+        }
+        if (at.size() != sweep.axes.size()) p.refuse("expected a position per axis");
+        listed.push_back(std::move(at));
+    }
+    if (listed.empty()) g.at("points").refuse("no points");
+    return listed;
+}
+
+// What the front and the pick used: --time (records before it kept it only
+// in the results), --mask (before: in the rows' buffer) and the budget.
+void readFrontInputs(const RecordField& g, const RecordField& results, TradeoffOptions& o) {
+    if (g.has("time")) o.time = g.at("time").str();
+    else if (results.has("time")) o.time = results.at("time").str();
+    if (g.has("mask")) {
+        o.mask = g.at("mask").str();
+    } else if (results.has("rows") && !results.at("rows").items().empty()) {
+        const std::string buffer = results.at("rows").items().front().at("buffer").str();
+        const std::string edges = ":shadow_edges";
+        if (buffer.size() > edges.size() && buffer.compare(buffer.size() - edges.size(), edges.size(), edges) == 0)
+            o.mask = "shadow_edges";
+    }
+    auto positive = [&](const char* key) {
+        const RecordField f = g.at(key);
+        if (!f.json().is_number() || !(f.json().get<double>() > 0.0) || !std::isfinite(f.json().get<double>()))
+            f.refuse("expects a finite number above 0, got " + f.shown());
+        return f.json().get<double>();
+    };
+    if (g.has("budget_ms")) o.budgetMs = positive("budget_ms");
+    if (g.has("budget")) o.budget = positive("budget");
 }
 
 }  // namespace
@@ -835,6 +885,7 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
         o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
         o.sweep.centre = g.strings("centre");
+        o.sweep.listed = listedPoints(g, o.sweep);
         t.exclude = g.strings("exclude");
         for (size_t i = 0; i < t.exclude.size(); ++i) {
             try {
@@ -847,6 +898,7 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         o.metric = g.at("metric").str();
         o.buffer = g.at("buffer").str();
         o.cost = g.has("cost") ? g.at("cost").str() : "gpu_ms";
+        readFrontInputs(g, results, o);
         o.counters = g.boolean("counters", true);
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");

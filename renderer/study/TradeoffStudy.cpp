@@ -39,6 +39,19 @@ void checkBudgets(const TradeoffStudyOptions& s, TradeoffOptions& o) {
     o.budget = s.budget.value_or(0.0);
 }
 
+// --study makes its own grids: alone (not with --sweep, --presets or
+// --knobs), each study checked and named (TradeoffStudies::named).
+void checkStudies(const TradeoffStudyOptions& s) {
+    for (const BenchKnobAxis& axis : s.sweep)
+        if (TradeoffSweep::isStudyAxis(axis.knob))
+            throw TradeoffStudyError("--sweep study: 'study' names each point's study (give --study KNOB=V1,V2,...)");
+    if (s.studies.empty()) return;
+    if (!s.sweep.empty() || !s.presets.empty() || !s.knobs.empty())
+        throw TradeoffStudyError("--study makes its own grids: give it without --sweep, --presets or --knobs (a "
+                                 "--sweep's knob goes into each --study)");
+    (void)TradeoffStudies::named(s.studies);
+}
+
 }  // namespace
 
 TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
@@ -62,6 +75,7 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
                     s.knobs + "'");
     if (!s.knobs.empty() && !o.sweep.axes.empty())
         throw Error("--knobs speed/quality sweeps its own axes; give it without --sweep or --presets");
+    checkStudies(s);
     for (const auto& e : s.exclude) o.sweep.exclusion.add(e);
     if (s.against != "reference") o.against = splitList(s.against, "--against");
     o.metric = s.metric;
@@ -82,21 +96,23 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     o.block = inRange("--block", s.block, limits::kBlock);
     o.resamples = inRange("--resamples", s.resamples, limits::kResamples);
     if (!s.shard.empty()) o.shard = BenchShard::parse(s.shard);
-    if (o.sweep.axes.empty() && s.knobs.empty())
-        throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,... or --knobs speed/quality");
+    if (o.sweep.axes.empty() && s.knobs.empty() && s.studies.empty())
+        throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,..., --knobs speed/quality or "
+                    "--study KNOB=V1,V2[:KNOB=V...]");
     return o;
 }
 
 TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& s) {
     TradeoffOptions o = check(s);
-    if (!s.knobs.empty()) {
+    if (!s.knobs.empty() || !s.studies.empty()) {
         // About the current settings: the run configuration's knobs on its scene.
         o.run.validate();
         const Scene scene = loadScene(o.run.sceneSpec());
         KnobRegistry current = RunConfig::declaredKnobs();
         o.run.applyKnobs(current, scene);
         GridExclusion exclusion = o.sweep.exclusion;
-        o.sweep = TradeoffSweep::aroundCurrent(current);
+        o.sweep = s.studies.empty() ? TradeoffSweep::aroundCurrent(current)
+                                    : TradeoffStudies::sweep(TradeoffStudies::named(s.studies), current);
         o.sweep.exclusion = exclusion;
     }
     return o;

@@ -19,6 +19,7 @@
 #include "renderer/RunConfig.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/study/TradeoffStudies.h"
 
 namespace dw {
 
@@ -29,6 +30,8 @@ struct TradeoffStudyOptions {
     std::vector<BenchKnobAxis> sweep;    // each as --sweep reads it (BenchGrid::parseSweep): axis=v1,v2,...
     std::vector<std::string> presets;    // --presets: presets as an axis (the column 'preset', first)
     std::string knobs;                   // "" or "speed/quality" (--knobs)
+    // --study / --study-file: several grids in one run (TradeoffStudies), not with --sweep, --presets or --knobs.
+    std::vector<TradeoffStudySpec> studies;
     std::vector<std::string> exclude;    // each as --exclude takes it: axis=v[,v...][,axis=v...]
     std::string against = "reference";   // or knob=value[,knob=value...]
     std::string metric = "flip";         // flip | rms | psnr | ssim
@@ -80,7 +83,8 @@ public:
 
     // check(), then with --knobs speed/quality the sweep about the current
     // settings (the run's knobs on its scene, which is loaded: FileError /
-    // Error for a bad one), keeping the exclusions.
+    // Error for a bad one), or with studies their listed sweep
+    // (TradeoffStudies::sweep: TradeoffStudyError for a bad one), keeping the exclusions.
     static TradeoffOptions runnerOptions(const TradeoffStudyOptions& options);
 
     // The runner's sweep with the references through the shared cache

@@ -11,7 +11,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "renderer/bench/TradeoffRunner.h"
@@ -575,4 +577,151 @@ TEST(TradeoffCli, CounterBudgetPicksTheLeastErrorUnderIt) {
         EXPECT_NE(bad.err.find("(deferred-workbench help tradeoff lists its options)"), std::string::npos) << bad.err;
         EXPECT_FALSE(fs::exists(dir() / "budget-bad.csv")) << b.args;
     }
+}
+
+// Issue 34 part 5: three AO methods, each a study of its own knobs, in one
+// run: one CSV (the column study names each point's), one front across every
+// point, one record; replay of it says "the same" (errors, their intervals
+// and the counters are exact; two frames give no time interval to move); a
+// record edited in a counter and an error makes replay name those numbers.
+TEST(TradeoffCli, ThreeAoMethodStudiesAreOneRecordThatReplaysTheSame) {
+    const std::string studies =
+        "tradeoff --scene default --size 48x27 --frames 2 --warmup 0 --resamples 100 --metric rms --buffer ao --quiet "
+        "--study ao.method=ssao:ssao.samples=4,8 --study ao.method=gtao:gtao.slices=1,2 "
+        "--study ao.method=aov:aov.resolution=half,full";
+    const Result r = run(studies + files("studies"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("| point | study | ao.method | ssao.samples | gtao.slices | aov.resolution |"), std::string::npos)
+        << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "studies.csv").string());
+    ASSERT_EQ(t.axes.front(), "study");
+    ASSERT_EQ(t.rows.size(), 6u);
+    std::map<std::string, int> perStudy;
+    int onFront = 0;
+    for (const auto& row : t.rows) {
+        const std::string study = t.axisValue(row, "study");
+        ++perStudy[study];
+        EXPECT_EQ(t.axisValue(row, "ao.method"), study) << "a study's fixed knob names it";
+        EXPECT_FALSE(std::isnan(row.error)) << row.point;
+        onFront += row.front == "pareto";
+        // One front across the studies: a dominated point is dominated by points of any study.
+        EXPECT_TRUE(row.front == "pareto" || row.front == "indistinguishable" || row.front == "dominated") << row.front;
+    }
+    EXPECT_EQ(perStudy, (std::map<std::string, int>{{"aov", 2}, {"gtao", 2}, {"ssao", 2}}));
+    EXPECT_GE(onFront, 1);
+    // The knobs a study does not name hold the run's values: one value in the other studies.
+    std::set<std::string> samplesOutsideSsao;
+    for (const auto& row : t.rows)
+        if (t.axisValue(row, "study") != "ssao") samplesOutsideSsao.insert(t.axisValue(row, "ssao.samples"));
+    EXPECT_EQ(samplesOutsideSsao.size(), 1u);
+    // One record: its grid lists the points and what the front used.
+    std::ifstream in(dir() / "studies.json");
+    const nlohmann::json rec = nlohmann::json::parse(in);
+    EXPECT_EQ(rec["grid"]["points"].size(), 6u);
+    EXPECT_EQ(rec["grid"]["time"], "frame");
+    EXPECT_EQ(rec["results"]["rows"].size(), 6u);
+    EXPECT_EQ(rec["results"]["rows"][5]["values"]["study"], "aov");
+
+    const Result again = run("replay " + (dir() / "studies.json").string());
+    EXPECT_EQ(again.code, 0) << again.err << again.out;
+    EXPECT_NE(again.out.find("tradeoff: the same (6 rows, every error equal"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("every error interval equal"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("every counter equal"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("point 2 camera 0, study=gtao, ao.method=gtao,"), std::string::npos) << again.out;
+
+    // Edited: a counter of row 1 and the error interval of row 3; replay names each number.
+    nlohmann::json edited = rec;
+    nlohmann::json& counted = edited["results"]["rows"][1]["counters"]["frame"]["fragments"];
+    const double fragments = counted.get<double>();
+    counted = fragments + 1.0;
+    edited["results"]["rows"][3]["error_ci95"][1] = edited["results"]["rows"][3]["error_ci95"][1].get<double>() * 2.0;
+    std::ofstream((dir() / "studies-edited.json").string()) << edited.dump(2);
+    const Result moved = run("replay " + (dir() / "studies-edited.json").string());
+    EXPECT_EQ(moved.code, 1) << moved.err << moved.out;
+    char counter[96];
+    std::snprintf(counter, sizeof counter, "counters moved: fragments %.17g -> %.17g", fragments + 1.0, fragments);
+    EXPECT_NE(moved.out.find(counter), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("point 3 camera 0, study=gtao"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find(": error_ci95 ["), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("(moved; rule: equal to 1e-9 relative, as the error)"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("1 with a counter moved"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("1 with another error interval"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("record edited: its results"), std::string::npos) << moved.out;
+}
+
+// A study file names its studies; bad --study input is one line, exit 2, nothing written.
+TEST(TradeoffCli, StudyFileAndBadStudiesAreOneClearLine) {
+    const fs::path file = dir() / "studies-file.json";
+    std::ofstream(file) << R"({"fast": {"ao.method": "ssao", "ssao.samples": [4]},
+                               "ground": {"ao.method": "gtao", "gtao.slices": 2}})";
+    const std::string base = "tradeoff --scene default --size 48x27 --frames 1 --warmup 0 --resamples 100 --metric rms "
+                             "--buffer ao --quiet --plot none";
+    const Result r = run(base + " --study-file " + file.string() + " --csv " + (dir() / "file.csv").string() +
+                         " --json " + (dir() / "file.json").string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const TradeoffTable t = TradeoffTable::readCsv((dir() / "file.csv").string());
+    ASSERT_EQ(t.rows.size(), 2u);
+    EXPECT_EQ(t.axisValue(t.rows[0], "study"), "fast");
+    EXPECT_EQ(t.axisValue(t.rows[1], "study"), "ground");
+    EXPECT_EQ(t.axisValue(t.rows[1], "gtao.slices"), "2");
+
+    struct Bad {
+        std::string args, says;
+    };
+    const Bad cases[] = {
+        {"--study ao.method=ssao --sweep ssao.samples=4,8", "--study makes its own grids: give it without --sweep"},
+        {"--study ao.method=ssao --knobs speed/quality", "--study makes its own grids"},
+        {"--study ssao:", "an empty study or part"},
+        {"--study ao.method=ssao:ssao.nonsense=1,2", "unknown knob 'ssao.nonsense'"},
+        {"--study ao.method=nope", "--study: study 'nope'"},
+        {"--study ssao.samples=4,8 --study ssao.samples=8,16",
+         "the point ssao.samples=8 is given twice (in studies 'study 1' and 'study 2')"},
+        {"--study ssao.samples=4,8,4", "is given twice (in study 'study 1')"},
+        {"--study a:ssao.samples=4 --study a:ssao.samples=8", "two studies are named 'a'"},
+        {"--study ao.method=ssao:ao.method=gtao", "ao.method is given twice"},
+        {"--sweep study=a,b", "--sweep study: 'study' names each point's study"},
+    };
+    for (const Bad& b : cases) {
+        const Result bad = run(base + " " + b.args + " --csv " + (dir() / "study-bad.csv").string() + " --json " +
+                               (dir() / "study-bad.json").string());
+        EXPECT_EQ(bad.code, 2) << b.args << "\n" << bad.err;
+        const std::string line = bad.err.substr(0, bad.err.find('\n'));
+        EXPECT_NE(line.find(b.says), std::string::npos) << b.args << ": " << bad.err;
+        std::istringstream lines(bad.err);
+        int messages = 0;
+        for (std::string l; std::getline(lines, l);) messages += !l.empty() && l.rfind("(deferred-workbench help", 0) != 0;
+        EXPECT_EQ(messages, 1) << b.args << "\n" << bad.err;
+        EXPECT_FALSE(fs::exists(dir() / "study-bad.csv")) << b.args;
+    }
+}
+
+// Replay checks the numbers the front and the pick used beyond the error:
+// --time's span with its interval (a recorded time far from the new one is
+// "(moved)") and, with a counter --cost (exact inputs), each row's front.
+TEST(TradeoffCli, ReplayChecksTheTimeAndTheFrontThePickUsed) {
+    const Result r = run("tradeoff --scene default --size 48x27 --frames 6 --warmup 0 --resamples 100 --metric rms "
+                         "--buffer ao --quiet --time ao --cost fragments --study ao.method=ssao:ssao.samples=4,8 "
+                         "--study ao.method=gtao:gtao.slices=1,2" + files("study-front"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    std::ifstream in(dir() / "study-front.json");
+    nlohmann::json rec = nlohmann::json::parse(in);
+    EXPECT_EQ(rec["grid"]["time"], "ao");
+    EXPECT_EQ(rec["grid"]["cost"], "fragments");
+    nlohmann::json& row = rec["results"]["rows"][0];
+    const std::string front = row["front"].get<std::string>(), edited = front == "pareto" ? "dominated" : "pareto";
+    row["front"] = edited;
+    row["time_ms"] = 1000.0;
+    row["time_ms_ci95"] = {1000.0, 1001.0};
+    std::ofstream((dir() / "study-front-edited.json").string()) << rec.dump(2);
+    const Result again = run("replay " + (dir() / "study-front-edited.json").string());
+    EXPECT_EQ(again.code, 1) << again.err << again.out;
+    const std::string label = "point 0 camera 0, study=ssao, ao.method=ssao, ssao.samples=4, gtao.slices=";
+    const size_t time = again.out.find(": time_ms (ao) median 1000.000 -> ");
+    ASSERT_NE(time, std::string::npos) << again.out;
+    EXPECT_EQ(again.out.rfind(label, time), again.out.rfind('\n', time) + 1) << again.out;
+    EXPECT_NE(again.out.find("95% CI [1000, 1001] -> ", time), std::string::npos) << again.out;
+    EXPECT_LT(again.out.find(" (moved)", time), again.out.find('\n', time)) << again.out;
+    EXPECT_NE(again.out.find(": front " + edited + " -> " + front), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("(moved; rule: exact, the front's cost is a counter)"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("1 with another front or pick)"), std::string::npos) << again.out;
 }

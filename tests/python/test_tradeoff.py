@@ -237,6 +237,45 @@ class TradeoffTest(unittest.TestCase):
         # The least error among the points that fit (here all of them).
         self.assertEqual(pick["row"]["error"], min(row["error"] for row in rows))
 
+    def test_studies_are_one_front_and_one_record(self):
+        """studies= is repeated --study (issue 34 part 5): several grids in one run, the column study, one front
+        across every point, one record; the same errors as the CLI's --study; bad studies raise ValueError."""
+        path = os.path.join(self.tmp.name, "studies.json")
+        common = dict(scene="default", size=(48, 27), metric="rms", buffer="ao", frames=2, warmup=0, resamples=100,
+                      quiet=True)
+        r = dw.tradeoff(studies={"ssao": {"ao.method": "ssao", "ssao.samples": [4, 8]},
+                                 "gtao": {"ao.method": "gtao", "gtao.slices": [1, 2]}}, record=path, **common)
+        rows = r["rows"]
+        self.assertEqual([row["study"] for row in rows], ["ssao", "ssao", "gtao", "gtao"])
+        self.assertEqual([row["ao.method"] for row in rows], ["ssao", "ssao", "gtao", "gtao"])
+        self.assertGreaterEqual(sum(row["front"] == "pareto" for row in rows), 1)
+        for row in rows:
+            self.assertIn(row["front"], ("pareto", "indistinguishable", "dominated"))
+        with open(path) as f:
+            record = json.load(f)
+        self.assertEqual(len(record["grid"]["points"]), 4)
+        out = os.path.join(self.tmp.name, "studies-cli.csv")
+        subprocess.run([BINARY, "tradeoff", "--scene", "default", "--size", "48x27", "--metric", "rms", "--buffer", "ao",
+                        "--frames", "2", "--warmup", "0", "--resamples", "100", "--quiet", "--plot", "none",
+                        "--study", "ssao:ao.method=ssao:ssao.samples=4,8", "--study", "gtao:ao.method=gtao:gtao.slices=1,2",
+                        "--csv", out, "--json", os.path.join(self.tmp.name, "studies-cli.json")],
+                       check=True, capture_output=True, text=True)
+        with open(out) as f:
+            cli = list(csv.DictReader(f))
+        self.assertEqual([c["study"] for c in cli], [row["study"] for row in rows])
+        for c, row in zip(cli, rows):
+            self.assertAlmostEqual(float(c["error"]), row["error"], delta=1e-9 * max(1.0, abs(row["error"])))
+        for studies, says in [([{}], "an empty study"),
+                              ([{"ssao.samples": [4, 8]}, {"ssao.samples": [8]}], "is given twice"),
+                              ([{"ssao.nonsense": 1}], "unknown knob 'ssao.nonsense'"),
+                              ("ssao", "studies: expected a list")]:
+            with self.assertRaises(ValueError) as caught:
+                dw.tradeoff(studies=studies, **common)
+            self.assertIn(says, str(caught.exception))
+        with self.assertRaises(ValueError) as caught:
+            dw.tradeoff(studies=[{"ao.method": "ssao"}], sweep={"ssao.samples": [4, 8]}, **common)
+        self.assertIn("--study makes its own grids", str(caught.exception))
+
     def test_record_keyword_writes_the_record(self):
         # record= is the CLI's --record (json= its older name): the experiment record, one format.
         path = os.path.join(self.tmp.name, "kw-tradeoff.json")

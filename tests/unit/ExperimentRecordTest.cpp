@@ -381,6 +381,20 @@ TEST(ExperimentRecord, EveryRefusalNamesTheFieldPath) {
               "r.json: results.rows[0].error: expects a number or null, got \"small\"");
     EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["shard"] = "5/2"; })),
               "r.json: grid.shard: --shard expects i/n with 0 <= i < n (e.g. 0/4), n from 1 to 100000, got '5/2'");
+    // tradeoff --study's listed points: a value position per axis, each on its axis; the budget above 0 (readTradeoffGrid).
+    auto listed = [&](const nlohmann::json& points) {
+        return [&, points](nlohmann::json& j) {
+            tradeoff(j);
+            j["grid"]["points"] = points;
+        };
+    };
+    EXPECT_EQ(refusal(renderRecord(listed({{0}, {2}}))), "accepted");
+    EXPECT_TRUE(startsWith(refusal(renderRecord(listed({{0}, {3}}))), "r.json: grid.points[1][0]: "))
+        << refusal(renderRecord(listed({{0}, {3}})));
+    EXPECT_EQ(refusal(renderRecord(listed({{0, 1}}))), "r.json: grid.points[0]: more positions than the grid's axes");
+    EXPECT_EQ(refusal(renderRecord(listed(nlohmann::json::array({nlohmann::json::array()})))), "r.json: grid.points[0]: expected a position per axis");
+    EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["budget_ms"] = 0; })),
+              "r.json: grid.budget_ms: expects a finite number above 0, got 0");
     // A bench record's sweep values, seed and sizes.
     auto bench = [](nlohmann::json& j) {
         j["command"] = "bench";
