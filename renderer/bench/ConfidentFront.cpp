@@ -80,6 +80,11 @@ void orderPairs(const std::vector<FrontEvidence>& pts, const std::vector<bool>& 
         order[pending[k].j][pending[k].i] = flipped(o);
     }
     d.comparisons = static_cast<int>(pending.size());
+    d.draws = 0;
+    for (const auto& t : pending) {
+        const FrontAxis& a = t.time ? pts[t.i].cost : pts[t.i].error;
+        if (d.draws == 0 || static_cast<int>(a.draws.size()) < d.draws) d.draws = static_cast<int>(a.draws.size());
+    }
 }
 
 bool notWorse(Order o) { return o == Order::firstBetter || o == Order::identical; }
@@ -107,14 +112,27 @@ std::string untestedText(const FrontDecision& d) {
     return s;
 }
 
-std::string ruleText(FrontRule rule, double alpha, int comparisons) {
+// Said when the draws are too few for Holm's first step: the smallest p-value
+// a pair can reach, 2 / (B + 1), is above alpha / m, so no pair is told apart.
+std::string floorText(const FrontDecision& d, double alpha) {
+    if (d.comparisons == 0 || d.draws == 0) return "";
+    const double smallest = 2.0 / (d.draws + 1.0), first = alpha / d.comparisons;
+    if (smallest <= first) return "";
+    return "; at " + std::to_string(d.draws) + " resamples the smallest p-value a pair can reach (" +
+           std::to_string(smallest) + ") is above Holm's first threshold (" + std::to_string(first) +
+           "), so no pair can be told apart: use --resamples " +
+           std::to_string(frontDrawsNeeded(d.comparisons, alpha)) + " or more";
+}
+
+std::string ruleText(FrontRule rule, double alpha, int comparisons, int draws) {
     if (rule == FrontRule::intervals)
         return "from the rows' " + percent(alpha) +
                " intervals: a point beats another on an axis only where their intervals do not overlap "
                "(no resamples carried; not adjusted for the number of comparisons)";
     return percent(alpha) + " familywise: paired bootstrap (time: the interleaved rounds resampled together; "
            "error: the same resampled tiles), Holm's step-down over " + std::to_string(comparisons) +
-           " comparison(s) (every pair of points, on each axis)";
+           " comparison(s) (every pair of points, on each axis)" +
+           (draws > 0 ? " from " + std::to_string(draws) + " paired resamples" : std::string());
 }
 
 }  // namespace
@@ -139,6 +157,13 @@ PairedTest pairedTest(const std::vector<double>& a, const std::vector<double>& b
     t.p = std::min(1.0, 2.0 * (tail + 1.0) / (static_cast<double>(n) + 1.0));
     t.favours = lower > higher ? -1 : higher > lower ? 1 : 0;
     return t;
+}
+
+int frontDrawsNeeded(int comparisons, double alpha) {
+    if (comparisons <= 0 || !(alpha > 0.0 && alpha < 1.0)) return 0;
+    // 2 / (B + 1) <= alpha / (2 m): a p-value of half Holm's first threshold
+    // is reachable, so a clear difference is not lost to the draws' floor.
+    return static_cast<int>(std::ceil(4.0 * comparisons / alpha));
 }
 
 std::vector<bool> holmRejects(const std::vector<double>& p, double alpha) {
@@ -186,7 +211,8 @@ FrontDecision decideFront(const std::vector<FrontEvidence>& pts, FrontRule rule,
             FrontTie tie{q, tiedOn(d.timeOrder[p][q]), tiedOn(d.errorOrder[p][q])};
             if (tie.time || tie.error) d.tiedWith[p].push_back(tie);
         }
-    d.rule = ruleText(rule, alpha, d.comparisons) + (rule == FrontRule::pairedBootstrap ? untestedText(d) : "");
+    d.rule = ruleText(rule, alpha, d.comparisons, d.draws) +
+             (rule == FrontRule::pairedBootstrap ? untestedText(d) + floorText(d, alpha) : "");
     return d;
 }
 

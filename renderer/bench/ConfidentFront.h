@@ -73,6 +73,7 @@ struct FrontDecision {
     // order[i][j] per axis: firstBetter when i is confidently better than j, secondBetter when j is.
     std::vector<std::vector<Order>> timeOrder, errorOrder;
     int comparisons = 0;  // (pair, axis) tests that entered the adjustment
+    int draws = 0;        // the fewest paired resamples among those tests (0: none)
     int untestedTime = 0, untestedError = 0;  // pairs of usable points with no test on that axis (not told apart)
     std::string rule;     // how it was decided, one line ("95% familywise, Holm over 12 ...")
 
@@ -92,6 +93,13 @@ struct PairedTest {
     bool identical = false;
 };
 PairedTest pairedTest(const std::vector<double>& a, const std::vector<double>& b);
+
+// The paired resamples B for which Holm's adjustment over `comparisons`
+// tests can reject at all, with room: the bootstrap p-value's floor
+// 2 / (B + 1) is at most half of Holm's first threshold alpha / m, so
+// B = ceil(4 m / alpha) (m = 72 at alpha 0.05: 5760). 0 for no comparisons.
+// Fewer draws than this and the rule line says no pair can be told apart.
+int frontDrawsNeeded(int comparisons, double alpha);
 
 // Holm's step-down: for p-values, which are rejected at familywise alpha.
 std::vector<bool> holmRejects(const std::vector<double>& p, double alpha);

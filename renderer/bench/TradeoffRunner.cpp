@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include "renderer/Error.h"
 #include "renderer/RenderSession.h"
@@ -399,13 +400,25 @@ void fillRankedTime(TradeoffRow& row, const RowData& data, int resamples, std::u
     row.timeMsHi = i.high;
 }
 
+// The draws the front is decided from: --resamples, raised to what Holm's
+// adjustment over the largest group's comparisons needs to decide at all
+// (frontDrawsNeeded; capped at 200000: the rule line says when that is short).
+int frontResamples(const TradeoffTable& t, const TradeoffOptions& o) {
+    std::map<std::tuple<std::string, std::string, std::string>, int> groups;
+    int largest = 0;
+    for (const TradeoffRow& r : t.rows) largest = std::max(largest, ++groups[{r.camera, r.metric, r.buffer}]);
+    const int pairs = largest * (largest - 1) / 2;
+    const int needed = frontDrawsNeeded(pairs * (o.cost == "gpu_ms" ? 2 : 1), 0.05);
+    return std::max(o.resamples, std::min(needed, 200000));
+}
+
 // The front by ConfidentFront's paired bootstrap: the cost is the ranked
 // time's draws (--cost gpu_ms) or a counter (exact: compared by value, so
 // only the error is tested).
 void markConfidentFront(TradeoffTable& t, std::vector<RowData>& data, const TradeoffOptions& o) {
     for (size_t i = 0; i < t.rows.size(); ++i) data[i].time = t.rows[i].timeMs;
     t.checkCost(o.cost);  // a counter no point has: one line
-    const EvidenceDraws how{o.resamples, o.block, 777};
+    const EvidenceDraws how{frontResamples(t, o), o.block, 777};
     t.markFront(
         [&](size_t i) {
             FrontEvidence e = rowEvidence(data[i], how);

@@ -286,3 +286,34 @@ TEST(TradeoffTableFront, NewColumnsReadBackAndOldCsvStillReads) {
     TradeoffTable m = o;
     EXPECT_THROW(m.rankBy("lighting+ao"), Error);
 }
+
+TEST(ConfidentFront, TooFewDrawsForHolmAreSaidAndTheNeededCountIsEnough) {
+    // 9 points far apart on both axes (time 1..9, error 9..1 would be a front;
+    // here time and error rise together, so point 0 dominates all in truth).
+    // 72 comparisons at 2000 draws: the floor 2/2001 is above 0.05/72, so
+    // nothing can be decided and the rule line says so.
+    std::vector<FrontEvidence> pts;
+    for (unsigned k = 0; k < 9; ++k) pts.push_back(point(1.0 + k, 0.01, 0.1 + 0.1 * k, 0.001, k + 1));
+    const FrontDecision d = decideFront(pts, FrontRule::pairedBootstrap);
+    EXPECT_EQ(d.comparisons, 72);
+    EXPECT_EQ(d.draws, kDraws);
+    EXPECT_EQ(frontDrawsNeeded(72, 0.05), 5760);
+    EXPECT_NE(d.rule.find("no pair can be told apart: use --resamples 5760 or more"), std::string::npos) << d.rule;
+    for (size_t p = 1; p < pts.size(); ++p) EXPECT_EQ(d.front[p], "indistinguishable");
+    // Every draw favours point 0 (no own noise crosses a step of 1 ms or 0.1):
+    // with the needed draws the same points are confidently dominated.
+    std::vector<FrontEvidence> more;
+    for (unsigned k = 0; k < 9; ++k) {
+        FrontEvidence e = pts[k];
+        for (FrontAxis* a : {&e.cost, &e.error}) {
+            const std::vector<double> once = a->draws;
+            while (a->draws.size() < 5760) a->draws.insert(a->draws.end(), once.begin(), once.end());
+            a->draws.resize(5760);
+        }
+        more.push_back(e);
+    }
+    const FrontDecision enough = decideFront(more, FrontRule::pairedBootstrap);
+    EXPECT_EQ(enough.rule.find("no pair can be told apart"), std::string::npos) << enough.rule;
+    EXPECT_NE(enough.rule.find("from 5760 paired resamples"), std::string::npos) << enough.rule;
+    for (size_t p = 1; p < more.size(); ++p) EXPECT_EQ(enough.front[p], "dominated") << p;
+}
