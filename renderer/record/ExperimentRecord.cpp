@@ -683,6 +683,10 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"resamples", o.resamples},
             {"cost", o.cost},
             {"counters", o.counters},
+            {"time", o.time},
+            {"budget_ms", o.budgetMs > 0.0 ? Json(o.budgetMs) : Json()},
+            {"budget", o.budget > 0.0 ? Json(o.budget) : Json()},
+            {"search", tradeoff.search ? Json{{"max_evals", tradeoff.maxEvals}} : Json()},
             {"run_preset", tradeoff.runPreset},
             {"run_presets", tradeoff.runPresets},
             {"run_sets", tradeoff.runSets},
@@ -848,6 +852,20 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         o.buffer = g.at("buffer").str();
         o.cost = g.has("cost") ? g.at("cost").str() : "gpu_ms";
         o.counters = g.boolean("counters", true);
+        // Records before these were kept: the results' time, no budget, no search.
+        o.time = g.has("time") ? g.at("time").str() : results.has("time") ? results.at("time").str() : "frame";
+        auto budgetOf = [&](const char* key, RealRange range, const char* flag) {
+            if (!g.has(key) || g.at(key).json().is_null()) return 0.0;
+            const double v = g.at(key).json().is_number() ? g.at(key).json().get<double>() : NAN;
+            if (!range.holds(v)) g.at(key).refuse(std::string("expects ") + flag + "'s value (above 0), got " + g.at(key).shown());
+            return v;
+        };
+        o.budgetMs = budgetOf("budget_ms", limits::kBudgetMs, "--budget-ms");
+        o.budget = budgetOf("budget", limits::kBudget, "--budget");
+        if (g.has("search") && !g.at("search").json().is_null()) {
+            t.search = true;
+            t.maxEvals = g.at("search").object().at("max_evals").whole(limits::kMaxEvals, "--max-evals");
+        }
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
         o.walkthrough = g.boolean("walkthrough", false);

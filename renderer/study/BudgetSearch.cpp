@@ -1,0 +1,372 @@
+#include "renderer/study/BudgetSearch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+
+#include "renderer/Error.h"
+#include "renderer/OptionLimits.h"
+#include "renderer/study/CachedReferences.h"
+
+namespace dw {
+
+namespace {
+
+std::string shortNumber(double v) {
+    if (std::isnan(v)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", v);
+    return text;
+}
+
+bool asNumber(const std::string& text, double& v) {
+    char* end = nullptr;
+    v = std::strtod(text.c_str(), &end);
+    return !text.empty() && end && *end == '\0' && std::isfinite(v);
+}
+
+// A walked knob: its values in walking order (numbers sorted, else as the sweep has them).
+struct Axis {
+    std::string name;
+    std::vector<std::string> values;
+    bool ordered = false;  // every value a number: neighbours are the next smaller and larger
+    size_t at = 0;         // the current value
+};
+
+std::vector<Axis> searchAxes(const TradeoffSweep& sweep) {
+    std::vector<Axis> axes;
+    for (size_t i = 0; i < sweep.axes.size(); ++i) {
+        Axis a{sweep.axes[i].name, sweep.axes[i].values};
+        double v = 0.0;
+        a.ordered = std::all_of(a.values.begin(), a.values.end(), [&](const std::string& t) { return asNumber(t, v); });
+        if (a.ordered)
+            std::stable_sort(a.values.begin(), a.values.end(), [](const std::string& x, const std::string& y) {
+                double vx = 0.0, vy = 0.0;
+                asNumber(x, vx);
+                asNumber(y, vy);
+                return vx < vy;
+            });
+        const std::string centre = i < sweep.centre.size() ? sweep.centre[i] : a.values.front();
+        a.at = static_cast<size_t>(std::find(a.values.begin(), a.values.end(), centre) - a.values.begin());
+        if (a.at >= a.values.size()) a.at = 0;
+        axes.push_back(std::move(a));
+    }
+    return axes;
+}
+
+// The candidate positions of a step on `a`: after a move the next one the same way, else both neighbours (names: every other).
+std::vector<size_t> candidates(const Axis& a, int direction) {
+    std::vector<size_t> out;
+    const long at = static_cast<long>(a.at), n = static_cast<long>(a.values.size());
+    if (a.ordered && direction != 0) {
+        if (at + direction >= 0 && at + direction < n) out.push_back(static_cast<size_t>(at + direction));
+        return out;
+    }
+    for (long i = 0; i < n; ++i)
+        if (i != at && (!a.ordered || i == at - 1 || i == at + 1)) out.push_back(static_cast<size_t>(i));
+    return out;
+}
+
+// One step's run: every knob at its current value, `stepped` also at the candidates (point 0: the current settings).
+TradeoffOptions stepOptions(const TradeoffOptions& base, const std::vector<Axis>& axes, size_t stepped,
+                            const std::vector<size_t>& cands) {
+    TradeoffOptions o = base;
+    o.sweep = TradeoffSweep{};
+    for (size_t i = 0; i < axes.size(); ++i) {
+        TradeoffAxis axis{axes[i].name, {axes[i].values[axes[i].at]}, {}};
+        if (i == stepped)
+            for (size_t c : cands) axis.values.push_back(axes[i].values[c]);
+        o.sweep.axes.push_back(std::move(axis));
+    }
+    o.shard = BenchShard{};
+    return o;
+}
+
+// The cost the budget bounds (time, or --budget's counter).
+BudgetCost budgetCost(const TradeoffOptions& o, const TradeoffTable& t) {
+    return o.budget > 0.0 ? BudgetPicker::counterCost(t, o.cost) : BudgetPicker::timeCost(t);
+}
+
+struct Measured {
+    TradeoffTable table;
+    int step = 0, firstEvaluation = 0;
+    std::vector<std::string> proposals;  // per local point
+};
+
+struct Decision {
+    int moveTo = -1;  // local point; -1: stay
+    std::string why;
+};
+
+// The move a step's run supports (the header's rule). `relaxed`: with
+// nothing fitting, a cheaper candidate is taken even when its error is
+// confidently worse (after a whole round of knobs found no other way toward the budget).
+Decision decide(const TradeoffOptions& o, TradeoffTable& t, const BudgetPick& pick, bool relaxed) {
+    const std::string camera = BudgetPicker::shownCamera(t);
+    std::map<int, const TradeoffRow*> rows;
+    for (const auto& r : t.rows)
+        if (r.camera == camera) rows[r.point] = &r;
+    const TradeoffRow* current = rows.count(0) ? rows[0] : nullptr;
+    if (!current) return {-1, "the current settings were not measured"};
+    if (pick.point == 0) return {-1, "the current value is the pick"};
+    if (pick.point > 0) {
+        if (current->pick == "over") return {pick.point, "fits the budget where the current value does not"};
+        if (current->pick == "tied")
+            return {-1, "could not tell: the pick's error is not told apart from the current value's"};
+        return {pick.point, "less error, told apart from the current value's, within the budget"};
+    }
+    // Nothing fits: toward the budget, the cheapest candidate whose error is not confidently worse.
+    const BudgetCost cost = budgetCost(o, t);
+    const bool lower = TradeoffTable::lowerIsBetter(current->metric);
+    auto worse = [&](const TradeoffRow& r) {
+        const bool tied = std::find(current->errorTies.begin(), current->errorTies.end(), r.point) != current->errorTies.end();
+        return !tied && (lower ? r.error > current->error : r.error < current->error);
+    };
+    double v = 0.0, lo = 0.0, hi = 0.0, now = 0.0;
+    cost.of(*current, now, lo, hi);
+    int cheapest = -1;
+    double least = std::isfinite(now) ? now : std::numeric_limits<double>::infinity();
+    bool skipped = false;
+    for (const auto& [point, r] : rows) {
+        cost.of(*r, v, lo, hi);
+        if (point == 0 || !std::isfinite(v) || v >= least) continue;
+        if (!relaxed && worse(*r)) {
+            skipped = true;
+            continue;
+        }
+        least = v;
+        cheapest = point;
+    }
+    if (cheapest < 0)
+        return {-1, skipped ? "nothing fits the budget; the cheaper candidates' error is confidently worse"
+                            : "nothing fits the budget and no candidate is cheaper"};
+    return {cheapest, "nothing fits the budget yet: toward it, the cheapest candidate" +
+                          std::string(relaxed ? "" : " not confidently worse in error") + " (" + cost.name + " " +
+                          shortNumber(least) + " " + cost.unit + " against " + shortNumber(now) + ")"};
+}
+
+// Whether the step's row of `point` (local) fits its budget (its pick column).
+bool currentFits(const TradeoffTable& t, int point) {
+    const std::string camera = BudgetPicker::shownCamera(t);
+    for (const auto& r : t.rows)
+        if (r.camera == camera && r.point == point) return r.pick == "pick" || r.pick == "tied" || r.pick == "fits";
+    return false;
+}
+
+// Every step's rows in one table: point = evaluation, the axes step and proposal first, the passes' union.
+TradeoffTable joined(const std::vector<Measured>& runs, const std::vector<Axis>& axes, const std::string& time) {
+    TradeoffTable all;
+    all.time = time;
+    all.axes = {"step", "proposal"};
+    for (const Axis& a : axes) all.axes.push_back(a.name);
+    for (const Measured& m : runs) {
+        for (const auto& p : m.table.passes)
+            if (std::find(all.passes.begin(), all.passes.end(), p) == all.passes.end()) all.passes.push_back(p);
+        all.counted = all.counted || m.table.counted;
+    }
+    CounterValues none;
+    none.fill(std::numeric_limits<double>::quiet_NaN());
+    for (const Measured& m : runs) {
+        auto renumber = [&](std::vector<int>& points) {
+            for (int& p : points) p += m.firstEvaluation;
+        };
+        for (TradeoffRow r : m.table.rows) {
+            const std::string proposal =
+                r.point >= 0 && static_cast<size_t>(r.point) < m.proposals.size() ? m.proposals[r.point] : "";
+            r.axisValues.insert(r.axisValues.begin(), {std::to_string(m.step), proposal});
+            r.point += m.firstEvaluation;
+            renumber(r.dominatedBy);
+            renumber(r.errorTies);
+            renumber(r.timeTies);
+            for (auto& tie : r.tiedWith) tie.first += m.firstEvaluation;
+            std::vector<double> ms(all.passes.size(), std::numeric_limits<double>::quiet_NaN());
+            std::vector<CounterValues> counts(all.passes.size(), none);
+            for (size_t i = 0; i < m.table.passes.size(); ++i) {
+                const size_t at = static_cast<size_t>(
+                    std::find(all.passes.begin(), all.passes.end(), m.table.passes[i]) - all.passes.begin());
+                if (i < r.passGpuMs.size()) ms[at] = r.passGpuMs[i];
+                if (i < r.passCounts.size()) counts[at] = r.passCounts[i];
+            }
+            r.passGpuMs = std::move(ms);
+            r.passCounts = std::move(counts);
+            all.rows.push_back(std::move(r));
+        }
+    }
+    return all;
+}
+
+std::string settingsText(const std::vector<Axis>& axes, const std::vector<size_t>& start) {
+    std::string changed;
+    for (size_t i = 0; i < axes.size(); ++i)
+        if (axes[i].at != start[i]) changed += (changed.empty() ? "" : ", ") + axes[i].name + "=" + axes[i].values[axes[i].at];
+    return changed.empty() ? "the current settings (no knob moved)" : changed + " (every other knob as it was)";
+}
+
+// The lines after the steps: what it found, its intervals, the evaluations.
+void summarise(const BudgetSearchOptions& so, const std::vector<Axis>& axes, const std::vector<size_t>& start,
+               BudgetSearchResult& r) {
+    const TradeoffOptions& o = so.base;
+    r.lines.push_back("search: found " + settingsText(axes, start));
+    const TradeoffRow* row = nullptr;
+    for (const auto& x : r.table.rows)
+        if (x.point == r.foundEvaluation && x.camera == BudgetPicker::shownCamera(r.table)) row = &x;
+    if (row) {
+        const BudgetCost cost = budgetCost(o, r.table);
+        double v = 0.0, lo = 0.0, hi = 0.0;
+        cost.of(*row, v, lo, hi);
+        const std::string budget = shortNumber(o.budget > 0.0 ? o.budget : o.budgetMs) + " " + cost.unit;
+        r.fits = row->pick == "pick" || row->pick == "tied" || row->pick == "fits";
+        r.lines.push_back("search: evaluation " + std::to_string(r.foundEvaluation) + ": " + row->metric + " " +
+                          shortNumber(row->error) + " [" + shortNumber(row->errorLo) + ", " + shortNumber(row->errorHi) +
+                          "], " + cost.name + " " + shortNumber(v) + " " + cost.unit +
+                          (cost.exact ? " (exact)" : " [" + shortNumber(lo) + ", " + shortNumber(hi) + "]") + ": " +
+                          (r.fits ? "fits" : "does not fit") + " the budget of " + budget + " (95% intervals)");
+    }
+    r.lines.push_back("search: " + std::to_string(r.evaluations) + " evaluation(s) in " + std::to_string(r.steps.size()) +
+                      " step(s) (bound " + std::to_string(so.maxEvals) + "), " +
+                      (r.converged ? "converged: no knob moved in its last step"
+                                   : "stopped at the bound: the next step would pass it") +
+                      "; the grid of --knobs speed/quality about the same start has " + std::to_string(r.gridPoints) +
+                      " point(s)");
+}
+
+}  // namespace
+
+void BudgetSearch::checkMaxEvals(int n) {
+    if (!limits::kMaxEvals.holds(n))
+        throw Error("--max-evals must be between " + std::to_string(limits::kMaxEvals.min) + " and " +
+                    std::to_string(limits::kMaxEvals.max) + ", got " + std::to_string(n));
+}
+
+TradeoffResult BudgetSearch::asResult(const BudgetSearchResult& found) {
+    TradeoffResult result = found.last;
+    result.table = found.table;
+    std::string settings;
+    for (size_t k = 0; k < found.knobs.size(); ++k)
+        settings += (k ? " " : "") + found.knobs[k] + "=" + found.found[k];
+    result.settings.emplace_back("search_evaluations", std::to_string(found.evaluations));
+    result.settings.emplace_back("search_found_evaluation", std::to_string(found.foundEvaluation));
+    result.settings.emplace_back("search_found", settings);
+    result.settings.emplace_back("search_fits", found.fits ? "1" : "0");
+    result.settings.emplace_back("references_rendered", std::to_string(found.referencesRendered));
+    result.settings.emplace_back("references_from_cache", std::to_string(found.referencesFromCache));
+    return result;
+}
+
+BudgetSearchResult BudgetSearch::run(const BudgetSearchOptions& so, const TradeoffStudyProgress& progress) {
+    checkMaxEvals(so.maxEvals);
+    const TradeoffOptions& base = so.base;
+    if (!(base.budgetMs > 0.0) && !(base.budget > 0.0))
+        throw Error("--search needs a budget: --budget-ms X (or --budget N with --cost fragments|...)");
+    auto stopIfAsked = [&] {
+        if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
+    };
+    auto say = [&](const std::string& line) {
+        stopIfAsked();
+        if (progress.line) progress.line(line);
+    };
+    auto warn = [&](const std::string& line) {
+        if (progress.warning) progress.warning(line);
+    };
+    std::vector<Axis> axes = searchAxes(base.sweep);
+    if (axes.empty()) throw Error("--search: no speed/quality knob to walk at these settings");
+    std::vector<size_t> start;
+    for (const Axis& a : axes) start.push_back(a.at);
+    CachedReferences references(so.aoRays, so.referenceSeed, {say, warn, stopIfAsked});
+    const TradeoffReference reference = references.function();
+
+    BudgetSearchResult r;
+    r.gridPoints = base.sweep.count();
+    std::vector<Measured> runs;
+    size_t axis = 0;
+    int direction = 0;
+    size_t stillSteps = 0;
+    bool relaxed = false;  // nothing fits after a round of knobs without a move: cheaper whatever the error
+    for (;;) {
+        if (stillSteps >= axes.size()) {
+            const bool fits = !runs.empty() && r.foundEvaluation >= 0 && currentFits(runs.back().table, r.foundEvaluation - runs.back().firstEvaluation);
+            if (fits || relaxed) break;
+            relaxed = true;
+            stillSteps = 0;
+            say("search: nothing fits after a round of every knob: toward the budget whatever the error");
+        }
+        std::vector<size_t> cands = candidates(axes[axis], direction);
+        if (cands.empty()) {  // the end of the axis the way it moved: the next knob
+            axis = (axis + 1) % axes.size();
+            direction = 0;
+            continue;
+        }
+        const int cost = 1 + static_cast<int>(cands.size());
+        if (r.evaluations + cost > so.maxEvals) {
+            if (r.steps.empty())
+                throw Error("--max-evals " + std::to_string(so.maxEvals) + ": the first step alone takes " +
+                            std::to_string(cost) + " evaluations (the current settings and " + axes[axis].name +
+                            "'s candidates)");
+            break;
+        }
+        Axis& a = axes[axis];
+        BudgetSearchStep step;
+        step.step = static_cast<int>(r.steps.size()) + 1;
+        step.knob = a.name;
+        step.firstEvaluation = r.evaluations;
+        step.evaluations = cost;
+        Measured m;
+        m.step = step.step;
+        m.firstEvaluation = r.evaluations;
+        m.proposals.push_back(runs.empty() ? "start" : "current");
+        for (size_t c : cands) {
+            step.values.push_back(a.values[c]);
+            m.proposals.push_back(a.name + "=" + a.values[c]);
+        }
+        say("search: step " + std::to_string(step.step) + ": " + a.name + " " + a.values[a.at] + " against " +
+            [&] {
+                std::string s;
+                for (size_t i = 0; i < step.values.size(); ++i) s += (i ? ", " : "") + step.values[i];
+                return s;
+            }());
+        TradeoffRunner runner(stepOptions(base, axes, axis, cands));
+        runner.setWarningSink(warn);
+        r.last = runner.run(reference, say);
+        m.table = r.last.table;
+        const Decision d = decide(base, m.table, r.last.pick, relaxed);
+        r.evaluations += cost;
+        runs.push_back(std::move(m));
+        const std::string from = a.values[a.at];
+        if (d.moveTo > 0) {
+            const size_t to = cands[static_cast<size_t>(d.moveTo - 1)];
+            direction = a.ordered ? (to > a.at ? 1 : -1) : 0;
+            a.at = to;
+            r.foundEvaluation = step.firstEvaluation + d.moveTo;
+            step.outcome = "moved " + a.name + " " + from + " -> " + a.values[a.at] + ": " + d.why;
+            stillSteps = 0;
+            if (!a.ordered) axis = (axis + 1) % axes.size();
+        } else {
+            r.foundEvaluation = step.firstEvaluation;
+            step.outcome = "kept " + a.name + "=" + from + ": " + d.why;
+            axis = (axis + 1) % axes.size();
+            direction = 0;
+        }
+        // A move and a stay both count toward convergence: every knob stepped since the last move without one.
+        if (d.moveTo <= 0) ++stillSteps;
+        r.lines.push_back("search: step " + std::to_string(step.step) + " (evaluations " +
+                          std::to_string(step.firstEvaluation) + "-" +
+                          std::to_string(step.firstEvaluation + step.evaluations - 1) + "): " + step.outcome);
+        say(r.lines.back());
+        r.steps.push_back(std::move(step));
+    }
+    r.converged = stillSteps >= axes.size();  // a round of knobs without a move (relaxed or fitting)
+    for (const Axis& a : axes) {
+        r.knobs.push_back(a.name);
+        r.found.push_back(a.values[a.at]);
+    }
+    r.table = joined(runs, axes, base.time);
+    r.referencesRendered = references.rendered();
+    r.referencesFromCache = references.fromCache();
+    summarise(so, axes, start, r);
+    return r;
+}
+
+}  // namespace dw
