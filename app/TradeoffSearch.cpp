@@ -8,7 +8,6 @@
 #include "app/Commands.h"
 #include "app/SweepOptions.h"
 #include "headless/HeadlessGlContext.h"
-#include "headless/PlotScript.h"
 #include "renderer/bench/BenchResults.h"
 #include "renderer/record/HostInfo.h"
 #include "renderer/study/BudgetSearch.h"
@@ -83,13 +82,7 @@ int runTradeoffSearch(const TradeoffStudyOptions& s, const TradeoffOptions& o, c
     found.table.writeCsv(so.csv);
     writeBenchFile(so.json, searchRecord(s, o, start, found, machine, command).json(so.json), "tradeoff record");
     std::printf("wrote %s, %s\n", so.csv.c_str(), so.json.c_str());
-    if (!so.plot || found.table.rows.empty()) return 0;
-    // Every evaluation as a point of the tradeoff plot (time against error, both intervals).
-    const std::string size = std::to_string(so.plotWidth) + "x" + std::to_string(so.plotHeight);
-    if (!runPlotScript("tradeoff_plot.py", "DW_TRADEOFF_PLOT_SCRIPT",
-                       {"--csv", so.csv, "--out", *so.plot, "--size", size, "--time", o.time, "--cost", o.cost}, "tradeoff"))
-        return 1;
-    std::printf("wrote %s (%s)\n", so.plot->c_str(), size.c_str());
+    // No plot: the rows are evaluations of different steps, each with its own front and pick.
     return 0;
 }
 

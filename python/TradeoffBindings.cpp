@@ -240,8 +240,7 @@ TradeoffOutcome measureSearch(const TradeoffStudyOptions& s, const TradeoffOptio
     out.record = TradeoffStudy::record(s, o, start, std::move(measured), "deferred_workbench.tradeoff (Python, search)");
     if (f.csv) out.table.writeCsv(*f.csv);
     if (f.json) writeBenchFile(*f.json, out.record.json(*f.json), "tradeoff record");
-    if (f.plot && !out.table.rows.empty()) out.plotDrawn = drawPlot(out.table, f, o.time, o.cost);
-    return out;
+    return out;  // no plot: the rows are evaluations of different steps, each with its own front and pick
 }
 
 // search's result: found {knob: value}, evaluation (its row's point), fits, evaluations, converged, grid_points,
@@ -398,7 +397,7 @@ void bindTradeoff(py::module_& m) {
           "under it). search=True (with budget_ms or budget; max_evals=N, default 48): instead of a grid, coordinate\n"
           "descent over the speed/quality knobs to the least error under the budget (tradeoff --search); rows are its\n"
           "evaluations, and search (found {knob: value}, evaluation, fits, evaluations, converged, grid_points, steps,\n"
-          "lines) replaces pick.\n"
+          "lines) replaces pick; no plot is drawn.\n"
           "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
           "those asked for.\n"
           "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"

@@ -103,7 +103,7 @@ struct Decision {
 
 // The move a step's run supports (the header's rule). `relaxed`: with
 // nothing fitting, a cheaper candidate is taken even when its error is
-// confidently worse (after a whole round of knobs found no other way toward the budget).
+// worse (after a whole round of knobs found no other way toward the budget).
 Decision decide(const TradeoffOptions& o, TradeoffTable& t, const BudgetPick& pick, bool relaxed) {
     const std::string camera = BudgetPicker::shownCamera(t);
     std::map<int, const TradeoffRow*> rows;
@@ -118,13 +118,12 @@ Decision decide(const TradeoffOptions& o, TradeoffTable& t, const BudgetPick& pi
             return {-1, "could not tell: the pick's error is not told apart from the current value's"};
         return {pick.point, "less error, told apart from the current value's, within the budget"};
     }
-    // Nothing fits: toward the budget, the cheapest candidate whose error is not confidently worse.
+    // Nothing fits: toward the budget, the cheapest candidate whose error is no worse.
     const BudgetCost cost = budgetCost(o, t);
     const bool lower = TradeoffTable::lowerIsBetter(current->metric);
-    auto worse = [&](const TradeoffRow& r) {
-        const bool tied = std::find(current->errorTies.begin(), current->errorTies.end(), r.point) != current->errorTies.end();
-        return !tied && (lower ? r.error > current->error : r.error < current->error);
-    };
+    // No worse: its error at most the current value's (psnr, ssim: at least); the errors are the images' own,
+    // deterministic, so a saving that only ties in error is not taken before a whole round found none better.
+    auto worse = [&](const TradeoffRow& r) { return lower ? r.error > current->error : r.error < current->error; };
     double v = 0.0, lo = 0.0, hi = 0.0, now = 0.0;
     cost.of(*current, now, lo, hi);
     int cheapest = -1;
@@ -141,10 +140,10 @@ Decision decide(const TradeoffOptions& o, TradeoffTable& t, const BudgetPick& pi
         cheapest = point;
     }
     if (cheapest < 0)
-        return {-1, skipped ? "nothing fits the budget; the cheaper candidates' error is confidently worse"
+        return {-1, skipped ? "nothing fits the budget; the cheaper candidates' error is worse"
                             : "nothing fits the budget and no candidate is cheaper"};
     return {cheapest, "nothing fits the budget yet: toward it, the cheapest candidate" +
-                          std::string(relaxed ? "" : " not confidently worse in error") + " (" + cost.name + " " +
+                          std::string(relaxed ? "" : " whose error is no worse") + " (" + cost.name + " " +
                           shortNumber(least) + " " + cost.unit + " against " + shortNumber(now) + ")"};
 }
 
@@ -223,7 +222,8 @@ void summarise(const BudgetSearchOptions& so, const std::vector<Axis>& axes, con
                           shortNumber(row->error) + " [" + shortNumber(row->errorLo) + ", " + shortNumber(row->errorHi) +
                           "], " + cost.name + " " + shortNumber(v) + " " + cost.unit +
                           (cost.exact ? " (exact)" : " [" + shortNumber(lo) + ", " + shortNumber(hi) + "]") + ": " +
-                          (r.fits ? "fits" : "does not fit") + " the budget of " + budget + " (95% intervals)");
+                          (r.fits ? "fits" : "does not fit") + " the budget of " + budget +
+                          (cost.exact ? "" : " (its 95% interval's upper end against it)"));
     }
     r.lines.push_back("search: " + std::to_string(r.evaluations) + " evaluation(s) in " + std::to_string(r.steps.size()) +
                       " step(s) (bound " + std::to_string(so.maxEvals) + "), " +

@@ -17,7 +17,8 @@
 //     from the current settings is not taken (the step says "could not
 //     tell"). With nothing fitting it moves toward the budget: to the
 //     cheapest candidate (median cost under the current one's) whose error
-//     is not confidently worse than the current value's; after a whole round
+//     is no worse than the current value's (its estimate: the errors are
+//     deterministic, the images' own); after a whole round
 //     of knobs without a move and still nothing fitting, to the cheapest
 //     whatever its error (relaxed).
 //   It stops when every knob has been stepped once since the last move and
