@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -256,116 +257,137 @@ TradeoffResult BudgetSearch::asResult(const BudgetSearchResult& found) {
     return result;
 }
 
+namespace {
+
+// Where the walk stands: the knobs (each at its current value), the one stepped next and how it last moved.
+struct Walk {
+    std::vector<Axis> axes;
+    size_t axis = 0;
+    int direction = 0;      // after a move along a knob of numbers: +1 or -1, the way it went
+    size_t stillSteps = 0;  // steps without a move since the last move
+    bool relaxed = false;   // nothing fits after a round of knobs without a move: cheaper whatever the error
+    void next() {
+        axis = (axis + 1) % axes.size();
+        direction = 0;
+    }
+};
+
+// One step: the current settings and `cands` of the stepped knob in one run; its rows as `m`.
+TradeoffResult measureStep(const BudgetSearchOptions& so, const Walk& w, const std::vector<size_t>& cands,
+                           const TradeoffReference& reference, const std::function<void(const std::string&)>& say,
+                           const std::function<void(const std::string&)>& warn, BudgetSearchStep& step, Measured& m) {
+    const Axis& a = w.axes[w.axis];
+    std::string values;
+    m.step = step.step;
+    m.firstEvaluation = step.firstEvaluation;
+    for (size_t c : cands) {
+        step.values.push_back(a.values[c]);
+        m.proposals.push_back(a.name + "=" + a.values[c]);
+        values += (values.empty() ? "" : ", ") + a.values[c];
+    }
+    say("search: step " + std::to_string(step.step) + ": " + a.name + " " + a.values[a.at] + " against " + values);
+    TradeoffRunner runner(stepOptions(so.base, w.axes, w.axis, cands));
+    runner.setWarningSink(warn);
+    TradeoffResult result = runner.run(reference, say);
+    m.table = result.table;
+    return result;
+}
+
+// The step's decision applied to the walk: the knob moved (and the walk goes on along it) or kept.
+void applyDecision(Walk& w, const std::vector<size_t>& cands, const Decision& d, BudgetSearchStep& step,
+                   int& foundEvaluation) {
+    Axis& a = w.axes[w.axis];
+    const std::string from = a.values[a.at];
+    if (d.moveTo <= 0) {
+        foundEvaluation = step.firstEvaluation;
+        step.outcome = "kept " + a.name + "=" + from + ": " + d.why;
+        ++w.stillSteps;
+        w.next();
+        return;
+    }
+    const size_t to = cands[static_cast<size_t>(d.moveTo - 1)];
+    const int direction = a.ordered ? (to > a.at ? 1 : -1) : 0;
+    a.at = to;
+    foundEvaluation = step.firstEvaluation + d.moveTo;
+    step.outcome = "moved " + a.name + " " + from + " -> " + a.values[a.at] + ": " + d.why;
+    w.stillSteps = 0;
+    if (a.ordered)
+        w.direction = direction;  // the same knob again, one further the same way
+    else
+        w.next();
+}
+
+}  // namespace
+
 BudgetSearchResult BudgetSearch::run(const BudgetSearchOptions& so, const TradeoffStudyProgress& progress) {
     checkMaxEvals(so.maxEvals);
-    const TradeoffOptions& base = so.base;
-    if (!(base.budgetMs > 0.0) && !(base.budget > 0.0))
+    if (!(so.base.budgetMs > 0.0) && !(so.base.budget > 0.0))
         throw Error("--search needs a budget: --budget-ms X (or --budget N with --cost fragments|...)");
     auto stopIfAsked = [&] {
         if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
     };
-    auto say = [&](const std::string& line) {
+    const std::function<void(const std::string&)> say = [&](const std::string& line) {
         stopIfAsked();
         if (progress.line) progress.line(line);
     };
-    auto warn = [&](const std::string& line) {
+    const std::function<void(const std::string&)> warn = [&](const std::string& line) {
         if (progress.warning) progress.warning(line);
     };
-    std::vector<Axis> axes = searchAxes(base.sweep);
-    if (axes.empty()) throw Error("--search: no speed/quality knob to walk at these settings");
+    Walk w;
+    w.axes = searchAxes(so.base.sweep);
+    if (w.axes.empty()) throw Error("--search: no speed/quality knob to walk at these settings");
     std::vector<size_t> start;
-    for (const Axis& a : axes) start.push_back(a.at);
+    for (const Axis& a : w.axes) start.push_back(a.at);
     CachedReferences references(so.aoRays, so.referenceSeed, {say, warn, stopIfAsked});
     const TradeoffReference reference = references.function();
 
     BudgetSearchResult r;
-    r.gridPoints = base.sweep.count();
+    r.gridPoints = so.base.sweep.count();
     std::vector<Measured> runs;
-    size_t axis = 0;
-    int direction = 0;
-    size_t stillSteps = 0;
-    bool relaxed = false;  // nothing fits after a round of knobs without a move: cheaper whatever the error
     for (;;) {
-        if (stillSteps >= axes.size()) {
-            const bool fits = !runs.empty() && r.foundEvaluation >= 0 && currentFits(runs.back().table, r.foundEvaluation - runs.back().firstEvaluation);
-            if (fits || relaxed) break;
-            relaxed = true;
-            stillSteps = 0;
+        if (w.stillSteps >= w.axes.size()) {  // a round of knobs without a move
+            const bool fits = !runs.empty() && currentFits(runs.back().table, r.foundEvaluation - runs.back().firstEvaluation);
+            if (fits || w.relaxed) break;
+            w.relaxed = true;
+            w.stillSteps = 0;
             say("search: nothing fits after a round of every knob: toward the budget whatever the error");
         }
-        std::vector<size_t> cands = candidates(axes[axis], direction);
-        if (cands.empty()) {  // the end of the axis the way it moved: the next knob
-            axis = (axis + 1) % axes.size();
-            direction = 0;
+        const std::vector<size_t> cands = candidates(w.axes[w.axis], w.direction);
+        if (cands.empty()) {  // the end of the knob the way it moved: the next knob
+            w.next();
             continue;
         }
         const int cost = 1 + static_cast<int>(cands.size());
         if (r.evaluations + cost > so.maxEvals) {
             if (r.steps.empty())
                 throw Error("--max-evals " + std::to_string(so.maxEvals) + ": the first step alone takes " +
-                            std::to_string(cost) + " evaluations (the current settings and " + axes[axis].name +
+                            std::to_string(cost) + " evaluations (the current settings and " + w.axes[w.axis].name +
                             "'s candidates)");
             break;
         }
-        Axis& a = axes[axis];
-        BudgetSearchStep step;
-        step.step = static_cast<int>(r.steps.size()) + 1;
-        step.knob = a.name;
-        step.firstEvaluation = r.evaluations;
-        step.evaluations = cost;
+        BudgetSearchStep step{static_cast<int>(r.steps.size()) + 1, w.axes[w.axis].name, {}, r.evaluations, cost, ""};
         Measured m;
-        m.step = step.step;
-        m.firstEvaluation = r.evaluations;
         m.proposals.push_back(runs.empty() ? "start" : "current");
-        for (size_t c : cands) {
-            step.values.push_back(a.values[c]);
-            m.proposals.push_back(a.name + "=" + a.values[c]);
-        }
-        say("search: step " + std::to_string(step.step) + ": " + a.name + " " + a.values[a.at] + " against " +
-            [&] {
-                std::string s;
-                for (size_t i = 0; i < step.values.size(); ++i) s += (i ? ", " : "") + step.values[i];
-                return s;
-            }());
-        TradeoffRunner runner(stepOptions(base, axes, axis, cands));
-        runner.setWarningSink(warn);
-        r.last = runner.run(reference, say);
-        m.table = r.last.table;
-        const Decision d = decide(base, m.table, r.last.pick, relaxed);
+        r.last = measureStep(so, w, cands, reference, say, warn, step, m);
+        const Decision d = decide(so.base, m.table, r.last.pick, w.relaxed);
         r.evaluations += cost;
         runs.push_back(std::move(m));
-        const std::string from = a.values[a.at];
-        if (d.moveTo > 0) {
-            const size_t to = cands[static_cast<size_t>(d.moveTo - 1)];
-            direction = a.ordered ? (to > a.at ? 1 : -1) : 0;
-            a.at = to;
-            r.foundEvaluation = step.firstEvaluation + d.moveTo;
-            step.outcome = "moved " + a.name + " " + from + " -> " + a.values[a.at] + ": " + d.why;
-            stillSteps = 0;
-            if (!a.ordered) axis = (axis + 1) % axes.size();
-        } else {
-            r.foundEvaluation = step.firstEvaluation;
-            step.outcome = "kept " + a.name + "=" + from + ": " + d.why;
-            axis = (axis + 1) % axes.size();
-            direction = 0;
-        }
-        // A move and a stay both count toward convergence: every knob stepped since the last move without one.
-        if (d.moveTo <= 0) ++stillSteps;
+        applyDecision(w, cands, d, step, r.foundEvaluation);
         r.lines.push_back("search: step " + std::to_string(step.step) + " (evaluations " +
                           std::to_string(step.firstEvaluation) + "-" +
                           std::to_string(step.firstEvaluation + step.evaluations - 1) + "): " + step.outcome);
         say(r.lines.back());
         r.steps.push_back(std::move(step));
     }
-    r.converged = stillSteps >= axes.size();  // a round of knobs without a move (relaxed or fitting)
-    for (const Axis& a : axes) {
+    r.converged = w.stillSteps >= w.axes.size();
+    for (const Axis& a : w.axes) {
         r.knobs.push_back(a.name);
         r.found.push_back(a.values[a.at]);
     }
-    r.table = joined(runs, axes, base.time);
+    r.table = joined(runs, w.axes, so.base.time);
     r.referencesRendered = references.rendered();
     r.referencesFromCache = references.fromCache();
-    summarise(so, axes, start, r);
+    summarise(so, w.axes, start, r);
     return r;
 }
 
