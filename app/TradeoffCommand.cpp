@@ -371,6 +371,10 @@ int runMerge(int argc, char** argv) {
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
+    if (pick) {  // as a run's record keeps them
+        settings.emplace_back(budgetMs ? "budget_ms" : "budget", number(pick->budgetMs, "%.6g") + (budgetMs ? "" : " " + cost));
+        for (const auto& line : pick->lines) settings.emplace_back("pick", line);
+    }
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(*json), "tradeoff record");
     std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
     return plot ? writePlot(out, *plot, plotW, plotH, time, cost) : 0;

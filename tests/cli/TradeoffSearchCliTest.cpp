@@ -131,7 +131,7 @@ TEST(TradeoffSearchCli, MergePicksAsTheRunAndRecordsReplayThePick) {
     std::snprintf(text, sizeof text, "%.17g", budget);
     const std::string out = (dir() / "merged.csv").string();
     const Result merged = run("tradeoff merge " + (dir() / "budgeted.csv").string() + " --out " + out +
-                              " --plot none --time ao --budget-ms " + text);
+                              " --plot none --time ao --record " + (dir() / "merged.json").string() + " --budget-ms " + text);
     ASSERT_EQ(merged.code, 0) << merged.err << merged.out;
     EXPECT_NE(merged.out.find("pick: over the merged shards the error ties are the intervals rule's"), std::string::npos)
         << merged.out;
@@ -144,6 +144,10 @@ TEST(TradeoffSearchCli, MergePicksAsTheRunAndRecordsReplayThePick) {
         EXPECT_NE(merged.out.find("pick: point " + std::to_string(expected.point)), std::string::npos) << merged.out;
     }
 
+    // The merged record keeps the budget and the pick's lines, as a run's does.
+    const nlohmann::json mergedRecord = readJson(dir() / "merged.json");
+    EXPECT_TRUE(mergedRecord["results"]["settings"]["budget_ms"].is_string());
+    EXPECT_TRUE(mergedRecord["results"]["settings"]["pick"].is_array());
     const nlohmann::json rec = readJson(dir() / "budgeted.json");
     EXPECT_EQ(rec["grid"]["time"], "ao");
     EXPECT_EQ(rec["grid"]["budget_ms"], 100000.0);
