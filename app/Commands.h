@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 // The subcommands of deferred-workbench, as one table: main() dispatches on
 // it and prints the usage from it. A new subcommand is one function (its own
 // <Name>Command.cpp, returning the exit code) and one line in kCommands.
@@ -16,6 +17,12 @@ int runReplayCommand(int argc, char** argv);
 int runTradeoffCommand(int argc, char** argv);
 // tradeoff --attribute (app/TradeoffAttribute.cpp): where one view's error comes from.
 int runTradeoffAttribute(int argc, char** argv);
+// tradeoff --search (app/TradeoffSearch.cpp): coordinate descent to the least error under the budget.
+struct TradeoffStudyOptions;
+struct TradeoffOptions;
+struct SweepOptions;
+int runTradeoffSearch(const TradeoffStudyOptions& s, const TradeoffOptions& o, const SweepOptions& so,
+                      const std::string& command);
 
 struct Command {
     const char* name;

@@ -29,6 +29,7 @@
 #include "app/Commands.h"
 #include "app/ReplayDiff.h"
 #include "app/ReplayReport.h"
+#include "app/ReplaySearch.h"
 #include "headless/CommandLine.h"
 #include "headless/HeadlessGlContext.h"
 #include "renderer/Error.h"
@@ -222,6 +223,14 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     const TradeoffTable before = old.tradeoffTable(path);
     TradeoffRunner runner(again.options);
     auto context = HeadlessGlContext::create();
+    if (again.search) {  // walked again from the same start (app/ReplaySearch.cpp)
+        bool moved = false;
+        const BudgetSearchResult found = replay::replaySearch(
+            old, path, again, newRecord, {{"gl_platform", context->platform()}}, moved);
+        reportShaders(old, shaderFilesOf(found.last.shaders), inputs);
+        inputs.print();
+        return moved ? 1 : 0;
+    }
     TradeoffStudyProgress progress;
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress, again.referenceSeed);
@@ -236,9 +245,10 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
 
     const replay::TradeoffComparison compared =
         replay::compareTradeoff(before, after, old.frames, again.options.frames, again.options.cost != "gpu_ms");
+    const bool pickMoved = replay::reportPick(before, after);
     reportShaders(old, shaderFilesOf(m.result.shaders), inputs);
     inputs.print();
-    return compared.verdict();
+    return pickMoved ? std::max(compared.verdict(), 1) : compared.verdict();
 }
 // The scene as it loads now: the files it reads (a built-in's content)
 // against the record's, by name. Only the loader's files are read: a path the

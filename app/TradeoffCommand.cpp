@@ -59,12 +59,12 @@ std::string tradeoffUsage() {
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
            "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
            "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
-           "                                   [--budget-ms X | --budget N] [--no-counters]\n"
+           "                                   [--budget-ms X | --budget N] [--search [--max-evals N]] [--no-counters]\n"
            "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
            "                                   [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
            "                                   [--quiet]\n"
            "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
-           "                                   [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
+           "                                   [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER] [--budget-ms X | --budget N]\n"
            "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
            "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
            "               about the current settings (docs/tradeoffs.md says which values)\n" +
@@ -88,6 +88,10 @@ std::string tradeoffUsage() {
            "               and the points that fit but cannot be told apart from it in error (whatever --cost)\n"
            "  --budget     with a counter --cost: the pick by that counter (exact) under N in its own unit;\n"
            "               not with --budget-ms\n"
+           "  --search     with a budget, instead of a grid: coordinate descent over the speed/quality knobs from\n"
+           "               the current settings to the least error under it (a move only when the pick is told\n"
+           "               apart from the current value in error); every evaluation a row of the CSV\n"
+           "  --max-evals  the search's bound in evaluations (points measured; default 48)\n"
            "  --no-counters  measure without the per-pass cost counters (their columns are left out)\n"
            "  --size       the render size (default 640x360)\n" +
            SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff) + CommandLine::rangesHelp("tradeoff") +
@@ -305,6 +309,32 @@ TradeoffOptions studyOptions(const TradeoffStudyOptions& s) {
     }
 }
 
+// tradeoff merge --budget-ms X / --budget N: as a run refuses them (one of the two; --budget with a counter --cost).
+void checkMergeBudget(const std::optional<double>& budgetMs, const std::optional<double>& budget, const std::string& cost) {
+    if (budgetMs && budget) throw UsageError("--budget-ms and --budget: give one (--budget-ms bounds the time in ms, --budget the --cost counter)");
+    if (budget && cost == "gpu_ms")
+        throw UsageError("--budget bounds a counter: give --cost fragments|samples|primitives|vertices|compute|bytes (for time, --budget-ms)");
+    try {
+        if (budgetMs) BudgetPicker::check(*budgetMs);
+        if (budget) BudgetPicker::check(*budget, "--budget");
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+}
+
+// The pick over the merged rows: fits by the time's 95% interval as a run's pick; told apart in error by the
+// merge's intervals rule (ConfidentFront: 95% intervals that do not overlap, no paired draws across shards).
+std::optional<BudgetPick> mergedPick(TradeoffTable& all, const std::optional<double>& budgetMs,
+                                     const std::optional<double>& budget, const std::string& cost) {
+    if (all.rows.empty() || (!budgetMs && !budget)) return std::nullopt;
+    const std::string camera = BudgetPicker::shownCamera(all);
+    BudgetPick pick = budgetMs ? BudgetPicker::pick(all, *budgetMs, camera)
+                               : BudgetPicker::pick(all, *budget, camera, BudgetPicker::counterCost(all, cost));
+    pick.lines.push_back("pick: over the merged shards the error ties are the intervals rule's (95% intervals that "
+                         "overlap; the shards' paired draws are not kept): conservative, it ties more than one run");
+    return pick;
+}
+
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3, "tradeoff merge");
     if (cl.flag("--help")) {
@@ -314,9 +344,11 @@ int runMerge(int argc, char** argv) {
     SweepMergeOptions m = SweepMergeOptions::read(cl, kTradeoff);
     const std::string time = cl.value("--time").value_or("frame");
     const std::string cost = cl.value("--cost").value_or("gpu_ms");
+    const std::optional<double> budgetMs = cl.real("--budget-ms"), budget = cl.real("--budget");
     cl.finish("tradeoff merge");
     if (!TradeoffTable::isCost(cost))
         throw UsageError("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + cost + "'");
+    checkMergeBudget(budgetMs, budget, cost);
     m.check(cl, kTradeoff);
     const std::vector<std::string>& inputs = m.inputs;
     const std::string& out = *m.out;
@@ -342,15 +374,20 @@ int runMerge(int argc, char** argv) {
     std::vector<TradeoffShardInput> described;
     for (size_t i = 0; i < inputs.size(); ++i) described.push_back(shardInput(inputs[i], parts[i]));
     for (const auto& w : TradeoffShards::check(described)) std::fprintf(stderr, "tradeoff merge: warning: %s\n", w.c_str());
-    const TradeoffTable all = TradeoffTable::merge(parts, inputs, time, cost);
+    TradeoffTable all = TradeoffTable::merge(parts, inputs, time, cost);
+    const std::optional<BudgetPick> pick = mergedPick(all, budgetMs, budget, cost);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n%s", all.rows.size(), inputs.size(),
                 what(all, "what the shards measured against", time, cost).c_str(), markdown(all, time, cost).c_str(),
-                frontLines(all, nullptr).c_str());
+                frontLines(all, pick ? &*pick : nullptr).c_str());
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
+    if (pick) {  // as a run's record keeps them
+        settings.emplace_back(budgetMs ? "budget_ms" : "budget", number(pick->budgetMs, "%.6g") + (budgetMs ? "" : " " + cost));
+        for (const auto& line : pick->lines) settings.emplace_back("pick", line);
+    }
     if (json) writeBenchFile(*json, ExperimentRecord::forTradeoffTable(all, settings).json(*json), "tradeoff record");
     std::printf("wrote %s%s\n", out.c_str(), json ? (", " + *json).c_str() : "");
     return plot ? writePlot(out, *plot, plotW, plotH, time, cost) : 0;
@@ -390,6 +427,8 @@ int runTradeoffCommand(int argc, char** argv) {
     s.budget = cl.real("--budget");
     s.cost = cl.value("--cost").value_or("gpu_ms");
     s.counters = !cl.flag("--no-counters");
+    s.search = cl.flag("--search");
+    const std::optional<int> maxEvals = cl.whole("--max-evals");
     s.aoRays = cl.whole("--ao-rays", 64);
     s.orbit = so.orbit;
     s.walkthrough = so.walkthrough;
@@ -405,6 +444,8 @@ int runTradeoffCommand(int argc, char** argv) {
     const bool quiet = so.quiet;
     cl.finish("tradeoff");
     if (!cl.positional().empty()) throw UsageError("tradeoff: unexpected argument '" + cl.positional()[0] + "'");
+    if (maxEvals && !s.search) throw UsageError("--max-evals bounds --search; give --search with it");
+    s.maxEvals = maxEvals.value_or(s.maxEvals);
     try {
         (void)TradeoffStudy::check(s);
     } catch (const UsageError&) {
@@ -416,6 +457,9 @@ int runTradeoffCommand(int argc, char** argv) {
     if (studies.file) reads.emplace_back("--study-file", *studies.file);
     so.checkOutputs(kTradeoff, reads);
     const TradeoffOptions o = studyOptions(s);  // --knobs speed/quality or --study: its axes, from the scene
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    if (s.search) return runTradeoffSearch(s, o, so, command);
 
     // Everything that can fail without GL fails here: axes, values, presets, the scene.
     TradeoffRunner runner(o);
@@ -425,8 +469,6 @@ int runTradeoffCommand(int argc, char** argv) {
     if (!quiet) progress.line = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     TradeoffMeasurement measured = TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress);
-    std::string command;
-    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
     // The JSON is the experiment record (docs/records.md): replay runs it again.
     const ExperimentRecord record = TradeoffStudy::record(s, o, runner, measured, command);
     const TradeoffResult& result = measured.result;

@@ -16,10 +16,12 @@
 #include "python/Arguments.h"
 #include "python/Bindings.h"
 #include "python/KnobArguments.h"
+#include "python/ProcessContext.h"
 #include "python/ValueErrors.h"
 #include "python/Records.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/bench/BudgetPick.h"
+#include "renderer/study/BudgetSearch.h"
 #include "renderer/study/TradeoffStudy.h"
 
 namespace py = pybind11;
@@ -38,6 +40,7 @@ struct TradeoffOutcome {
     ExperimentRecord record;
     TradeoffTable table;
     BudgetPick pick;
+    std::optional<BudgetSearchResult> search;  // search=True
     bool plotDrawn = true;
 };
 
@@ -253,6 +256,54 @@ bool drawPlot(const TradeoffTable& table, const TradeoffFiles& f, const std::str
     return drawn;
 }
 
+// search=True: BudgetSearch from the current settings (the CLI's --search); its table, record and files.
+TradeoffOutcome measureSearch(const TradeoffStudyOptions& s, const TradeoffOptions& o, const TradeoffRunner& start,
+                              const TradeoffStudyProgress& progress, const TradeoffFiles& f) {
+    BudgetSearchOptions bo;
+    bo.base = o;
+    bo.maxEvals = s.maxEvals;
+    bo.aoRays = s.aoRays;
+    TradeoffOutcome out;
+    out.search = WorkbenchSession::search(bo, progress);
+    if (progress.cancelled()) throw TradeoffCancelled();
+    TradeoffMeasurement measured;
+    measured.result = BudgetSearch::asResult(*out.search);
+    measured.machine = out.search->last.machine;
+    measured.machine.emplace_back("gl_platform", processContext().context->platform());
+    out.table = out.search->table;
+    out.record = TradeoffStudy::record(s, o, start, std::move(measured), "deferred_workbench.tradeoff (Python, search)");
+    if (f.csv) out.table.writeCsv(*f.csv);
+    if (f.json) writeBenchFile(*f.json, out.record.json(*f.json), "tradeoff record");
+    return out;  // no plot: the rows are evaluations of different steps, each with its own front and pick
+}
+
+// search's result: found {knob: value}, evaluation (its row's point), fits, evaluations, converged, grid_points,
+// steps [{step, knob, values, first_evaluation, evaluations, outcome}], lines (what the CLI prints).
+py::dict searchObject(const BudgetSearchResult& r) {
+    py::dict found, d;
+    for (size_t k = 0; k < r.knobs.size(); ++k) found[py::str(r.knobs[k])] = r.found[k];
+    py::list steps;
+    for (const auto& st : r.steps) {
+        py::dict one;
+        one["step"] = st.step;
+        one["knob"] = st.knob;
+        one["values"] = st.values;
+        one["first_evaluation"] = st.firstEvaluation;
+        one["evaluations"] = st.evaluations;
+        one["outcome"] = st.outcome;
+        steps.append(one);
+    }
+    d["found"] = found;
+    d["evaluation"] = r.foundEvaluation >= 0 ? py::object(py::int_(r.foundEvaluation)) : py::object(py::none());
+    d["fits"] = r.fits;
+    d["evaluations"] = r.evaluations;
+    d["converged"] = r.converged;
+    d["grid_points"] = r.gridPoints;
+    d["steps"] = steps;
+    d["lines"] = r.lines;
+    return d;
+}
+
 // Measures the study on the process's GL context and writes the files asked
 // for. Runs without the GIL (the callbacks take it). TradeoffCancelled when
 // asked to stop, with nothing written.
@@ -261,6 +312,7 @@ TradeoffOutcome measure(const TradeoffStudyOptions& s, const TradeoffStudyProgre
     const TradeoffOptions o = asValueError([&] { return TradeoffStudy::runnerOptions(s); });
     std::unique_ptr<TradeoffRunner> runner = asValueError([&] { return std::make_unique<TradeoffRunner>(o); });
     for (const auto& w : runner->scene().warnings) progress.warning("warning: " + w);
+    if (s.search) return measureSearch(s, o, *runner, progress, f);
     TradeoffMeasurement measured = WorkbenchSession::tradeoff(*runner, s.aoRays, progress);
     if (progress.cancelled()) throw TradeoffCancelled();  // asked to stop after the last line: nothing written
     TradeoffOutcome out;
@@ -300,7 +352,10 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     d["front_rule"] = outcome.table.frontRules.count(BudgetPicker::shownCamera(outcome.table))
                           ? outcome.table.frontRules.at(BudgetPicker::shownCamera(outcome.table))
                           : std::string();
-    if (s.budgetMs || s.budget) d["pick"] = pickObject(outcome.table, outcome.pick, s.budgetMs ? "budget_ms" : "budget");
+    if (outcome.search)
+        d["search"] = searchObject(*outcome.search);
+    else if (s.budgetMs || s.budget)
+        d["pick"] = pickObject(outcome.table, outcome.pick, s.budgetMs ? "budget_ms" : "budget");
     return d;
 }
 
@@ -313,7 +368,8 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
-                  const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile) {
+                  const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile,
+                  bool search, const py::object& maxEvals) {
     requirePath(recordFile, "tradeoff: record");
     json = recordPath("tradeoff", json, recordFile);
     TradeoffStudyOptions s;
@@ -337,6 +393,9 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.block = intArg(block, "tradeoff: block", limits::kBlock, "tradeoff --block");
     s.resamples = intArg(resamples, "tradeoff: resamples", limits::kResamples, "tradeoff --resamples");
     s.shard = shard.value_or("");
+    s.search = search;
+    if (!maxEvals.is_none() && !search) throw py::value_error("tradeoff: max_evals bounds search=True; give search=True with it");
+    if (!maxEvals.is_none()) s.maxEvals = intArg(maxEvals, "tradeoff: max_evals", limits::kMaxEvals, "tradeoff --max-evals");
     const TradeoffFiles files{csv, json, plot,
                              sizeArg(plotSizeObject, "tradeoff: plot_size", limits::kPlotSize, "tradeoff --plot-size")};
     return tradeoffStudy(std::move(s), sweep, presets, exclude, files, quiet, progress);
@@ -356,6 +415,7 @@ void bindTradeoff(py::module_& m) {
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
           py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
           py::arg("quiet") = false, py::arg("progress") = py::none(), py::arg("record") = py::none(),
+          py::arg("search") = false, py::arg("max_evals") = py::none(),
           "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
           "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
@@ -373,7 +433,10 @@ void bindTradeoff(py::module_& m) {
           "tied_with [(point, axes)], pick; NaN where the CSV is empty), front (the rows on the Pareto front of the\n"
           "point estimates) and front_rule (how dominance was decided); with budget_ms or budget, pick (point, row,\n"
           "tied, fitting, cheapest, lines: the least-error point whose time's 95% interval, or whose counter, ends\n"
-          "under it).\n"
+          "under it). search=True (with budget_ms or budget; max_evals=N, default 48): instead of a grid, coordinate\n"
+          "descent over the speed/quality knobs to the least error under the budget (tradeoff --search); rows are its\n"
+          "evaluations, and search (found {knob: value}, evaluation, fits, evaluations, converged, grid_points, steps,\n"
+          "lines) replaces pick; no plot is drawn.\n"
           "csv=, record= (or json=, its older name) and plot=PATH.png (plot_size=(w, h)) write tradeoff's files; only\n"
           "those asked for.\n"
           "Progress lines go to stderr (quiet=True: none) or to progress(line); Ctrl-C stops the run.\n"

@@ -121,6 +121,15 @@ TradeoffMeasurement WorkbenchSession::tradeoff(TradeoffRunner& runner, int aoRay
     return TradeoffStudy::measure(runner, aoRays, pc.context->platform(), progress);
 }
 
+BudgetSearchResult WorkbenchSession::search(const BudgetSearchOptions& options, const TradeoffStudyProgress& progress) {
+    ProcessContext& pc = processContext();
+    if (std::this_thread::get_id() != pc.thread)
+        throw WrongThreadError("tradeoff must run on the thread that made the GL context (thread " +
+                               describeThread(pc.thread) + ")");
+    pc.context->makeCurrent();
+    return BudgetSearch::run(options, progress);
+}
+
 void WorkbenchSession::requireOwningThread() const {
     const std::thread::id here = std::this_thread::get_id();
     if (here != processContext().thread)

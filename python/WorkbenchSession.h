@@ -16,6 +16,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/RunConfig.h"
 #include "renderer/bench/BenchRunner.h"
+#include "renderer/study/BudgetSearch.h"
 #include "renderer/study/TradeoffStudy.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/PixelProbe.h"
@@ -148,6 +149,8 @@ public:
     // A tradeoff sweep (TradeoffStudy::measure) on the process's GL context,
     // on its thread (WrongThreadError elsewhere), as tradeoff measures it.
     static TradeoffMeasurement tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress);
+    // tradeoff(search=True): BudgetSearch on the process's GL context, from the same thread.
+    static BudgetSearchResult search(const BudgetSearchOptions& options, const TradeoffStudyProgress& progress);
 
 private:
     std::thread::id owner_;

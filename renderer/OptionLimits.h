@@ -46,6 +46,7 @@ constexpr OptionRange kAoRays{1, 1 << 20};     // reference/compare/tradeoff --a
 constexpr OptionRange kSeed{0, 2147483647};    // reference/bench --seed
 constexpr OptionRange kPixelSamples{1, 65536}; // reference --spp (tradeoff --ref-spp): samples per pixel
 constexpr OptionRange kReferenceThreads{0, 4096};  // reference --threads (0: every core)
+constexpr OptionRange kMaxEvals{1, 100000};    // tradeoff --max-evals: the search's evaluations
 // The largest finite 32-bit float: no difference of two float images, and no
 // light radius a 32-bit light table holds, is larger.
 constexpr double kFloatMax = 3.4028234663852886e38;
@@ -130,7 +131,10 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"tradeoff", "--plot-size", F::Size, kPlotSize, "pixels"},
     {"tradeoff", "--budget-ms", kBudgetMs, "GPU milliseconds"},
     {"tradeoff", "--budget", kBudget, "the --cost counter's unit"},
+    {"tradeoff", "--max-evals", F::Whole, kMaxEvals, "evaluations"},
     {"tradeoff merge", "--plot-size", F::Size, kPlotSize, "pixels"},
+    {"tradeoff merge", "--budget-ms", kBudgetMs, "GPU milliseconds"},
+    {"tradeoff merge", "--budget", kBudget, "the --cost counter's unit"},
     {"compare", "--size", F::Size, kSize, "pixels"},
     {"compare", "--frames", F::Whole, kCompareFrames, "frames"},
     {"compare", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},

@@ -683,15 +683,16 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"resamples", o.resamples},
             {"cost", o.cost},
             {"counters", o.counters},
+            {"time", o.time},
+            {"budget_ms", o.budgetMs > 0.0 ? Json(o.budgetMs) : Json()},
+            {"budget", o.budget > 0.0 ? Json(o.budget) : Json()},
+            {"search", tradeoff.search ? Json{{"max_evals", tradeoff.maxEvals}} : Json()},
             {"run_preset", tradeoff.runPreset},
             {"run_presets", tradeoff.runPresets},
             {"run_sets", tradeoff.runSets},
             {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)}};
-    // What the front and the pick used, so replay uses them too (records before these: frame, no mask, no budget).
-    grid["time"] = o.time;
+    // What the front used besides time and budget, so replay uses it too (records before it: no mask).
     grid["mask"] = o.mask;
-    if (o.budgetMs != 0.0) grid["budget_ms"] = o.budgetMs;
-    if (o.budget != 0.0) grid["budget"] = o.budget;
     // tradeoff --study: the points one by one, each its value positions on the axes.
     if (!o.sweep.listed.empty()) grid["points"] = o.sweep.listed;
     return grid;
@@ -717,7 +718,7 @@ std::vector<std::vector<size_t>> listedPoints(const RecordField& g, const Tradeo
 }
 
 // What the front and the pick used: --time (records before it kept it only
-// in the results), --mask (before: in the rows' buffer) and the budget.
+// in the results), --mask (before: in the rows' buffer); the budget is read beside --search.
 void readFrontInputs(const RecordField& g, const RecordField& results, TradeoffOptions& o) {
     if (g.has("time")) o.time = g.at("time").str();
     else if (results.has("time")) o.time = results.at("time").str();
@@ -729,14 +730,6 @@ void readFrontInputs(const RecordField& g, const RecordField& results, TradeoffO
         if (buffer.size() > edges.size() && buffer.compare(buffer.size() - edges.size(), edges.size(), edges) == 0)
             o.mask = "shadow_edges";
     }
-    auto positive = [&](const char* key) {
-        const RecordField f = g.at(key);
-        if (!f.json().is_number() || !(f.json().get<double>() > 0.0) || !std::isfinite(f.json().get<double>()))
-            f.refuse("expects a finite number above 0, got " + f.shown());
-        return f.json().get<double>();
-    };
-    if (g.has("budget_ms")) o.budgetMs = positive("budget_ms");
-    if (g.has("budget")) o.budget = positive("budget");
 }
 
 }  // namespace
@@ -900,6 +893,19 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         o.cost = g.has("cost") ? g.at("cost").str() : "gpu_ms";
         readFrontInputs(g, results, o);
         o.counters = g.boolean("counters", true);
+        // Records before these were kept: no budget (null: none), no search.
+        auto budgetOf = [&](const char* key, RealRange range, const char* flag) {
+            if (!g.has(key) || g.at(key).json().is_null()) return 0.0;
+            const double v = g.at(key).json().is_number() ? g.at(key).json().get<double>() : NAN;
+            if (!range.holds(v)) g.at(key).refuse(std::string("expects ") + flag + "'s value (above 0), got " + g.at(key).shown());
+            return v;
+        };
+        o.budgetMs = budgetOf("budget_ms", limits::kBudgetMs, "--budget-ms");
+        o.budget = budgetOf("budget", limits::kBudget, "--budget");
+        if (g.has("search") && !g.at("search").json().is_null()) {
+            t.search = true;
+            t.maxEvals = g.at("search").object().at("max_evals").whole(limits::kMaxEvals, "--max-evals");
+        }
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
         o.walkthrough = g.boolean("walkthrough", false);

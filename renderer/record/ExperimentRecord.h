@@ -84,6 +84,9 @@ struct RecordedTradeoff {
     std::vector<std::string> runPresets;  // each --preset, in order
     std::vector<std::string> runSets;
     bool merged = false;  // written by tradeoff merge: no sweep to run again
+    // --search (BudgetSearch): replay walks again from the same start; its bound in evaluations.
+    bool search = false;
+    int maxEvals = 0;
 };
 
 struct ExperimentRecord {

@@ -10,6 +10,7 @@
 #include "renderer/OptionLimits.h"
 #include "renderer/bench/BenchGrid.h"
 #include "renderer/record/HostInfo.h"
+#include "renderer/study/BudgetSearch.h"
 #include "renderer/study/CachedReferences.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -52,9 +53,25 @@ void checkStudies(const TradeoffStudyOptions& s) {
     (void)TradeoffStudies::named(s.studies);
 }
 
+// --search walks the speed/quality knobs itself (BudgetSearch): it needs a
+// budget and takes no other axes; its knobs are --knobs speed/quality's.
+TradeoffStudyOptions withSearch(TradeoffStudyOptions s) {
+    if (!s.search) return s;
+    if (!s.sweep.empty() || !s.presets.empty() || !s.studies.empty())
+        throw Error("--search walks the speed/quality knobs itself: give it without --sweep, --presets or --study");
+    if (!s.budgetMs && !s.budget)
+        throw Error("--search needs a budget: --budget-ms X (or --budget N with --cost fragments|...)");
+    if (!s.exclude.empty()) throw Error("--search takes no --exclude (it walks every speed/quality knob)");
+    if (!s.shard.empty()) throw Error("--search cannot be sharded: each step depends on the one before");
+    BudgetSearch::checkMaxEvals(s.maxEvals);
+    if (s.knobs.empty()) s.knobs = "speed/quality";
+    return s;
+}
+
 }  // namespace
 
-TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
+TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& given) {
+    const TradeoffStudyOptions s = withSearch(given);
     TradeoffOptions o;
     o.run = s.run;
     inRange("--size width", s.run.width, limits::kSize);
@@ -102,7 +119,8 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& s) {
     return o;
 }
 
-TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& s) {
+TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& given) {
+    const TradeoffStudyOptions s = withSearch(given);
     TradeoffOptions o = check(s);
     if (!s.knobs.empty() || !s.studies.empty()) {
         // About the current settings: the run configuration's knobs on its scene.
@@ -165,6 +183,8 @@ ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, cons
     recorded.runPreset = options.run.presetSpec();
     recorded.runPresets = options.run.presetSpecs();
     recorded.runSets = options.run.sets;
+    recorded.search = options.search;
+    recorded.maxEvals = options.search ? options.maxEvals : 0;
     return ExperimentRecord::forTradeoff(recorded, runner.scene(), measured.result, measured.machine);
 }
 

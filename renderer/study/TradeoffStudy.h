@@ -47,6 +47,8 @@ struct TradeoffStudyOptions {
     bool walkthrough = false;            // the scene's camera.path keyframes
     int frames = 5, warmup = 1, block = 1, resamples = 2000;
     std::string shard;                   // "" (the whole sweep) or i/n
+    bool search = false;                 // --search: walk the speed/quality knobs (BudgetSearch), needs a budget
+    int maxEvals = 48;                   // --max-evals: the search's bound, 1 .. 100000
 };
 
 // What measure() reports while it runs, and how a caller stops it.

@@ -394,7 +394,7 @@ TEST(ExperimentRecord, EveryRefusalNamesTheFieldPath) {
     EXPECT_EQ(refusal(renderRecord(listed({{0, 1}}))), "r.json: grid.points[0]: more positions than the grid's axes");
     EXPECT_EQ(refusal(renderRecord(listed(nlohmann::json::array({nlohmann::json::array()})))), "r.json: grid.points[0]: expected a position per axis");
     EXPECT_EQ(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["budget_ms"] = 0; })),
-              "r.json: grid.budget_ms: expects a finite number above 0, got 0");
+              "r.json: grid.budget_ms: expects --budget-ms's value (above 0), got 0");
     // A bench record's sweep values, seed and sizes.
     auto bench = [](nlohmann::json& j) {
         j["command"] = "bench";
@@ -604,4 +604,43 @@ TEST(ExperimentRecord, AMergesRecordReadsAsOneWithNoRunOfItsOwn) {
     nlohmann::json run = nlohmann::json::parse(bench.json());
     run["grid"] = {{"merged", false}};
     EXPECT_THROW(ExperimentRecord::parse(run.dump(), "run.json"), FileError);
+}
+
+// Issue 34: a tradeoff record keeps --time, the budget and --search in its
+// grid; they read back into the options replay runs, and a value no flag
+// would take is refused naming the field.
+TEST(ExperimentRecord, TradeoffGridKeepsTimeBudgetAndSearch) {
+    auto tradeoff = [](nlohmann::json& j) {
+        j["command"] = "tradeoff";
+        j["grid"] = {{"axes", {{{"name", "ssao.samples"}, {"values", {"4", "8"}}}}}, {"metric", "flip"}, {"buffer", "final"},
+                     {"time", "lighting+ao"}, {"budget_ms", 12.5}, {"budget", nullptr}, {"search", {{"max_evals", 30}}}};
+        j["results"] = {{"axes", {"ssao.samples"}}, {"passes", nlohmann::json::array()}, {"rows", nlohmann::json::array()}};
+    };
+    const ExperimentRecord r = ExperimentRecord::parse(renderRecord(tradeoff), "r.json");
+    ASSERT_TRUE(r.tradeoff.has_value());
+    EXPECT_EQ(r.tradeoff->options.time, "lighting+ao");
+    EXPECT_EQ(r.tradeoff->options.budgetMs, 12.5);
+    EXPECT_EQ(r.tradeoff->options.budget, 0.0);
+    EXPECT_TRUE(r.tradeoff->search);
+    EXPECT_EQ(r.tradeoff->maxEvals, 30);
+    // Older records: the results' time, no budget, no search.
+    const ExperimentRecord old = ExperimentRecord::parse(renderRecord([&](nlohmann::json& j) {
+                                                             tradeoff(j);
+                                                             for (const char* k : {"time", "budget_ms", "budget", "search"})
+                                                                 j["grid"].erase(k);
+                                                             j["results"]["time"] = "ao";
+                                                         }),
+                                                         "r.json");
+    EXPECT_EQ(old.tradeoff->options.time, "ao");
+    EXPECT_EQ(old.tradeoff->options.budgetMs, 0.0);
+    EXPECT_FALSE(old.tradeoff->search);
+    EXPECT_NE(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["budget_ms"] = 0; })).find(
+                  "r.json: grid.budget_ms: expects --budget-ms's value (above 0), got 0"),
+              std::string::npos);
+    EXPECT_NE(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["budget"] = "many"; })).find(
+                  "r.json: grid.budget: expects --budget's value"),
+              std::string::npos);
+    EXPECT_NE(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["search"]["max_evals"] = 0; }))
+                  .find("r.json: grid.search.max_evals"),
+              std::string::npos);
 }

@@ -1,0 +1,103 @@
+#include "app/ReplaySearch.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/study/TradeoffStudy.h"
+
+namespace dw::replay {
+
+namespace {
+
+std::string shortNumber(double v) {
+    if (std::isnan(v)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", v);
+    return text;
+}
+
+const TradeoffRow* pickedRow(const TradeoffTable& t) {
+    for (const auto& r : t.rows)
+        if (r.pick == "pick") return &r;
+    return nullptr;
+}
+
+bool hasPick(const TradeoffTable& t) {
+    for (const auto& r : t.rows)
+        if (!r.pick.empty()) return true;
+    return false;
+}
+
+std::string pointText(const TradeoffTable& t, const TradeoffRow* r) {
+    if (!r) return "none fits";
+    std::string values;
+    for (size_t a = 0; a < t.axes.size() && a < r->axisValues.size(); ++a)
+        values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r->axisValues[a];
+    return "point " + std::to_string(r->point) + (values.empty() ? "" : " (" + values + ")") + ", " + r->metric + " " +
+           shortNumber(r->error) + " [" + shortNumber(r->errorLo) + ", " + shortNumber(r->errorHi) + "], time " +
+           shortNumber(r->timeMs) + " ms [" + shortNumber(r->timeMsLo) + ", " + shortNumber(r->timeMsHi) + "]";
+}
+
+// The found evaluation's row of a search table (settings' search_found_evaluation), or nullptr.
+const TradeoffRow* foundRow(const TradeoffTable& t, int evaluation) {
+    for (const auto& r : t.rows)
+        if (r.point == evaluation && (r.camera == TradeoffTable::kAllCameras || r.camera == "0")) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
+bool reportPick(const TradeoffTable& before, const TradeoffTable& after) {
+    if (!hasPick(before) && !hasPick(after)) return false;
+    const TradeoffRow* was = pickedRow(before);
+    const TradeoffRow* now = pickedRow(after);
+    const bool moved = (was == nullptr) != (now == nullptr) || (was && now && was->point != now->point);
+    if (!moved)
+        std::printf("pick: the same: %s -> %s\n", pointText(before, was).c_str(), pointText(after, now).c_str());
+    else
+        std::printf("pick: moved: %s -> %s\n", pointText(before, was).c_str(), pointText(after, now).c_str());
+    return moved;
+}
+
+BudgetSearchResult replaySearch(const ExperimentRecord& old, const std::string& path, const RecordedTradeoff& again,
+                                const std::optional<std::string>& newRecord, const BenchFields& machine, bool& moved) {
+    BudgetSearchOptions so;
+    so.base = again.options;
+    so.maxEvals = again.maxEvals;
+    so.aoRays = again.aoRays;
+    so.referenceSeed = again.referenceSeed;
+    TradeoffStudyProgress progress;
+    progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    BudgetSearchResult found = BudgetSearch::run(so, progress);
+
+    const TradeoffTable before = old.tradeoffTable(path);
+    auto setting = [&](const char* key) {
+        const auto& s = old.tradeoffResults;
+        if (!s.contains("settings") || !s["settings"].contains(key) || !s["settings"][key].is_string()) return -1;
+        try {
+            return std::stoi(s["settings"][key].get<std::string>());
+        } catch (const std::exception&) {
+            return -1;
+        }
+    };
+    const int wasEvaluation = setting("search_found_evaluation");
+    const TradeoffRow* was = foundRow(before, wasEvaluation);
+    const TradeoffRow* now = foundRow(found.table, found.foundEvaluation);
+    std::string changes;
+    for (size_t k = 0; k < found.knobs.size(); ++k) {
+        const std::string then = was ? before.axisValue(*was, found.knobs[k]) : "";
+        if (then != found.found[k])
+            changes += (changes.empty() ? "" : ", ") + found.knobs[k] + " " + (then.empty() ? "?" : then) + " -> " + found.found[k];
+    }
+    moved = !changes.empty();
+    std::printf("search: %s (%d -> %d evaluation(s)): %s -> %s\n",
+                moved ? ("moved: " + changes).c_str() : "the same settings found", setting("search_evaluations"),
+                found.evaluations, pointText(before, was).c_str(), pointText(found.table, now).c_str());
+    if (newRecord) {
+        const TradeoffRunner start(again.options);
+        ExperimentRecord::forTradeoff(again, start.scene(), BudgetSearch::asResult(found), machine).write(*newRecord);
+    }
+    return found;
+}
+
+}  // namespace dw::replay
