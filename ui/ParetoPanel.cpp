@@ -42,6 +42,7 @@ bool ParetoPanel::load(const std::string& file) {
         TradeoffTable t = TradeoffTable::readCsv(file);
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
+        tableIsFit = false;
         pickedFor.clear();
         loadedPath = file;
         tableBaseline.clear();
@@ -226,6 +227,7 @@ void ParetoPanel::updateWaiting(UiState& state, RenderSession& session) {
 
 void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     updateWaiting(state, session);  // also while the panel is collapsed
+    fit.update(budgetMs, againstCurrent, state, session);
     if (!beginPanel(title, open)) {
         ImGui::End();
         return;
@@ -235,6 +237,8 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     else if (!waitingKnob.empty()) referenceWait(state);
     else sweepControls(state, session);
     showFinishedSweep(state);
+    fit.draw(budgetMs, againstCurrent, state, session);
+    showFinishedFit(state);
     attribution.draw(state, session);
     csvControls();
     if (table.rows.empty()) {
@@ -262,11 +266,9 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     ImGui::End();
 }
 
-// The budget field and what it picks among the group's points (BudgetPicker).
+// What the budget field picks among the group's points (BudgetPicker); the
+// fit's own table at the fit's budget: its lines are the fit's, above.
 void ParetoPanel::budgetControls(const std::string& groupName) {
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::InputDouble("budget ms", &budgetMs, 0.0, 0.0, "%.3f");
-    noteItem("pareto.budget");
     const std::string key = groupName + "@" + std::to_string(budgetMs);
     if (key != pickedFor) {
         pickedFor = key;
@@ -279,6 +281,7 @@ void ParetoPanel::budgetControls(const std::string& groupName) {
             pickLines = {e.what()};
         }
     }
+    if (tableIsFit && budgetMs == fitBudgetMs) return;
     for (const auto& l : pickLines) wrappedColored(l.rfind("pick: ", 0) == 0 ? kOkColor : kErrorColor, l);
     if (!pickLines.empty()) noteItem("pareto.pick");
 }
@@ -409,12 +412,29 @@ void ParetoPanel::askForReference(UiState& state, RenderSession& session) {
 void ParetoPanel::showFinishedSweep(UiState& state) {
     if (sweepShown || !state.sweep.done()) return;
     table = state.sweep.table();
+    tableIsFit = false;
     pickedFor.clear();
     loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
     tableBaseline = state.sweep.baselineName();
     group = 0;
     applied.clear();
     sweepShown = true;
+}
+
+// The finished fit's sweep replaces the table on show (its pick ringed; its lines are the fit's).
+void ParetoPanel::showFinishedFit(UiState& state) {
+    const FitBudgetRun& run = state.fitBudget;
+    if (!run.done() || fitShown == run.finished()) return;
+    fitShown = run.finished();
+    table = run.table();
+    tableIsFit = true;
+    fitBudgetMs = run.settings().budgetMs;
+    pickedFor.clear();
+    loadedPath = "fit budget: " + std::to_string(run.points()) + " points of the speed/quality knobs about the settings (FLIP against " +
+                 run.baselineName() + ", time " + run.settings().time + ")";
+    tableBaseline = run.baselineName();
+    group = 0;
+    applied.clear();
 }
 
 // What is on show, the CSV's path with *Load*, and the last load's or apply's error.

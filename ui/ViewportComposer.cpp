@@ -68,6 +68,9 @@ void ViewportComposer::stepBackgroundWork(UiState& state) {
     } else if (state.attribution.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
         state.attribution.step(session_);
         state.forceRender = true;
+    } else if (state.fitBudget.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
+        state.fitBudget.step(session_);
+        state.forceRender = true;
     }
     // File > Save record's measured frame, of the state saved (it puts the current one back).
     if (state.recordRun.running() && !measuring_) state.recordRun.step(state, session_);
