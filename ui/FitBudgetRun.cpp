@@ -70,6 +70,8 @@ void FitBudgetRun::start(RenderSession& session, FloatImage baseline, std::strin
     settings_.frames = std::max(settings_.frames, 1);
     settings_.warmup = std::max(settings_.warmup, 0);
     previous_ = std::make_unique<KnobRegistry>(session.knobs());
+    camera_ = session.camera();
+    sceneSource_ = session.scene().source;
     planPoints(session);
     baseline_ = std::move(baseline);
     baselineName_ = std::move(baselineName);
@@ -157,7 +159,10 @@ bool FitBudgetRun::step(RenderSession& session) {
         running_ = false;
         return false;
     }
+    if (!sameView(session)) return false;
     const KnobRegistry saved = session.knobs();
+    const Camera savedCamera = session.camera();
+    session.camera() = camera_;
     bool more = false;
     try {
         if (!runner_) beginRunner(session);
@@ -171,6 +176,7 @@ bool FitBudgetRun::step(RenderSession& session) {
         running_ = false;
     }
     session.knobs().copyValues(saved);
+    session.camera() = savedCamera;
     if (!running_) return false;
     if (!more) {
         try {
@@ -181,6 +187,16 @@ bool FitBudgetRun::step(RenderSession& session) {
         }
     }
     return running_;
+}
+
+// Another scene or another render size ends the run: its points would no longer be of one view.
+bool FitBudgetRun::sameView(RenderSession& session) {
+    if (session.scene().source != sceneSource_) error_ = "another scene was opened during the sweep";
+    else if (session.pipeline().width() != baseline_.width || session.pipeline().height() != baseline_.height)
+        error_ = "the view changed size during the sweep";
+    else return true;
+    running_ = false;
+    return false;
 }
 
 double FitBudgetRun::progress() const {

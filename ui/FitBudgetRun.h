@@ -20,8 +20,11 @@
 // interval ends under the budget; none fits: the cheapest point, nothing
 // picked). Points whose AOV frame at the view's size is over
 // AovCostEstimate's limits are left out (the live view's guard would put
-// them back) and counted. The session's knobs are the same after every step
-// as before it; the settings the sweep is about are kept (previous()).
+// them back) and counted. The session's knobs and camera are the same after
+// every step as before it: each frame renders the settings and the camera the
+// sweep started from (a camera moved meanwhile does not change what is
+// measured); another scene or another render size stops the run. The
+// settings the sweep is about are kept (previous()).
 // Errors: start() throws dw::Error, one line, before anything renders: a
 // budget not finite or not above 0, an empty term or a pass the pipeline
 // lacks in `time`, no speed/quality knob to sweep. A failing frame stops the
@@ -39,6 +42,7 @@
 #include "renderer/bench/TradeoffSweep.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/io/ImageIO.h"
+#include "renderer/scene/Camera.h"
 
 namespace dw::ui {
 
@@ -81,6 +85,7 @@ public:
 
 private:
     void planPoints(RenderSession& session);
+    bool sameView(RenderSession& session);
     void beginRunner(RenderSession& session);
     void measureError(RenderSession& session, size_t configuration);
     void finish();
@@ -89,6 +94,8 @@ private:
 
     FitBudgetSettings settings_;
     std::unique_ptr<KnobRegistry> previous_;
+    Camera camera_;            // the camera the sweep started with
+    std::string sceneSource_;  // the scene it started on
     TradeoffSweep sweep_;
     std::vector<TradeoffPoint> points_;  // those measured (configuration i is points_[i])
     size_t leftOut_ = 0;

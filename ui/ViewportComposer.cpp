@@ -204,7 +204,10 @@ std::string ViewportComposer::frameSignature(const UiState& state) const {
 // rendered, from the newest GPU frame times; frozen while timings are captured.
 void ViewportComposer::adjustAutoScale(UiState& state) {
     ViewportView& v = state.viewport;
+    // Nor while a sweep or an attribution renders its own frames: their times
+    // are not the view's, and a new size would stop them.
     if (v.resolution != ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.holdView ||
+        state.sweep.running() || state.attribution.running() || state.fitBudget.running() ||
         state.framesRendered % 4 != 0)
         return;
     const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);

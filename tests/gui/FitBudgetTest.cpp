@@ -22,6 +22,7 @@
 #include "tests/support/TestSupport.h"
 #include "ui/ParetoPanel.h"
 #include "ui/ReferenceControls.h"
+#include "ui/TimingsPanel.h"
 #include "ui/Widgets.h"
 
 using namespace dw;
@@ -80,9 +81,20 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     EXPECT_EQ(state.fitBudget.baselineName(), "the CPU reference");
     driver.frame();
     EXPECT_TRUE(drawnNow("pareto.fit_progress"));
+    // The timings panel watches the knobs as in the window (its committed values: the previous settings).
+    ui::TimingsPanel timings;
+    bool timingsOpen = true;
+    auto drawTimings = [&] { imgui.frame([&] { timings.draw("GPU timings", &timingsOpen, state, *session); }); };
+    drawTimings();
+    // The camera moved while the sweep runs: every point is still rendered from where it started.
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(state.fitBudget.step(*session)) << state.fitBudget.error();
+    const glm::vec3 moved = session->camera().position + glm::vec3(0.5f, 0.0f, 0.0f);
+    session->camera().position = moved;
     runFit(state, *session);
     ASSERT_TRUE(state.fitBudget.done()) << state.fitBudget.error();
     EXPECT_EQ(allKnobs(*session), before) << "the sweep changed the settings";
+    EXPECT_EQ(session->camera().position, moved);
+    drawTimings();
     driver.frame();
 
     // The pick is applied: every knob of its point holds its value, and it is the least error of the sweep.
@@ -130,6 +142,11 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     EXPECT_TRUE(frame->ratio.valid());
     EXPECT_LE(frame->ratio.low, frame->ratio.high);
     EXPECT_TRUE(drawnNow("pareto.fit_measured.frame"));
+    // The timings panel takes the applied change as its own and keeps the verdict measured.
+    drawTimings();
+    ASSERT_TRUE(timings.change);
+    EXPECT_EQ(timings.change->what, panel.fit.change->what);
+    EXPECT_EQ(state.measure.state(), ChangeMeasurement::State::Done);
 
     // One undo: the settings before the fit are back.
     driver.click("pareto.fit_undo");
@@ -181,6 +198,19 @@ TEST(FitBudget, AnImpossibleBudgetOrACancelAppliesNothingAndABadBudgetIsRefusedO
     EXPECT_EQ(allKnobs(*session), before);
     EXPECT_FALSE(panel.fit.change);
     EXPECT_NE(panel.fit.message.find("cancelled"), std::string::npos) << panel.fit.message;
+
+    // Another render size part-way stops it, said so; nothing applied.
+    driver.click("pareto.fit_budget");
+    ASSERT_TRUE(state.fitBudget.running()) << panel.fit.message;
+    state.fitBudget.step(*session);
+    session->resize(40, 20);
+    EXPECT_FALSE(state.fitBudget.step(*session));
+    driver.frame();
+    EXPECT_NE(panel.fit.message.find("fit budget stopped: the view changed size during the sweep"), std::string::npos)
+        << panel.fit.message;
+    EXPECT_EQ(allKnobs(*session), before);
+    session->resize(32, 18);
+    session->render({{"final"}});
 
     // A budget nothing fits: says so with the cheapest point's time, applies nothing, measures nothing.
     panel.budgetMs = 0.0001;
