@@ -58,6 +58,37 @@ bool baselineOf(bool againstCurrent, RenderSession& session, FloatImage& baselin
     return baseline.width == current.width && baseline.height == current.height && current.width > 0;
 }
 
+// A point as BudgetPicker's lines name it, "point 12 (a=v, b=v, ...)", and as
+// the panel does: only the values that differ from the settings swept about.
+std::string fullName(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string values;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a)
+        values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r.axisValues[a];
+    return "point " + std::to_string(r.point) + (values.empty() ? "" : " (" + values + ")");
+}
+
+std::string shortName(const TradeoffTable& t, const TradeoffRow& r, const KnobRegistry& previous) {
+    std::string values;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a) {
+        const auto id = previous.find(t.axes[a]);
+        if (id && previous.format(*id) == r.axisValues[a]) continue;
+        values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r.axisValues[a];
+    }
+    return "point " + std::to_string(r.point) + " (" + (values.empty() ? "the settings before the fit" : values) + ")";
+}
+
+// The picker's lines with each point named by what it changes (a sweep of
+// some 30 axes one at a time named all 30 in every line).
+std::vector<std::string> shortened(std::vector<std::string> lines, const FitBudgetRun& run) {
+    for (std::string& l : lines)
+        for (const TradeoffRow& r : run.table().rows) {
+            const std::string full = fullName(run.table(), r);
+            if (const size_t at = l.find(full); at != std::string::npos)
+                l.replace(at, full.size(), shortName(run.table(), r, run.previous()));
+        }
+    return lines;
+}
+
 }  // namespace
 
 bool FitBudgetView::start(double budgetMs, bool againstCurrent, UiState& state, RenderSession& session) {
@@ -125,7 +156,7 @@ void FitBudgetView::takeResult(UiState& state, RenderSession& session) {
     if (!run.done() || taken == run.finished()) return;
     taken = run.finished();
     errorSaid = true;
-    pickLines = run.pick().lines;
+    pickLines = shortened(run.pick().lines, run);
     summary = std::to_string(run.points()) + " points about the settings, FLIP against " + run.baselineName() +
               (run.leftOut() ? "; " + std::to_string(run.leftOut()) + " left out: over the AOV cost limit" : "");
     if (run.pick().point < 0) {
@@ -216,8 +247,8 @@ void FitBudgetView::controls(double& budgetMs, bool againstCurrent, UiState& sta
     ImGui::EndDisabled();
     noteItem("pareto.fit_budget");
     if (ImGui::IsItemHovered())
-        tooltip("sweeps the speed/quality knobs about the current settings (tradeoff --knobs speed/quality) in the\n"
-                "background, applies the least-error point whose time's 95%% interval ends under the budget, then\n"
+        tooltip("sweeps the speed/quality knobs about the current settings (tradeoff --knobs speed/quality) in the "
+                "background, applies the least-error point whose time's 95%% interval ends under the budget, then "
                 "measures it against the previous settings (the cost of a change); undo puts them back");
     sameLineIfFits(ImGui::GetFontSize() * 8.0f + ImGui::CalcTextSize("time").x + spacing);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);

@@ -22,13 +22,17 @@ std::string groupOf(const TradeoffRow& r) { return r.camera + " | " + r.metric +
 
 bool finite(double v) { return std::isfinite(v); }
 
-// "ssao.samples=16, ssao.resolution=half"
-std::string label(const TradeoffTable& t, const TradeoffRow& r) {
+// "ssao.samples=16, ssao.resolution=half"; with `centre` (a sweep about
+// settings, one axis at a time: those settings' values) only the values that
+// differ from it, and "as before the fit" for none.
+std::string label(const TradeoffTable& t, const TradeoffRow& r, const std::vector<std::string>& centre) {
     std::string s;
     for (size_t i = 0; i < t.axes.size() && i < r.axisValues.size(); ++i) {
+        if (i < centre.size() && centre[i] == r.axisValues[i]) continue;
         if (!s.empty()) s += ", ";
         s += t.axes[i] + "=" + r.axisValues[i];
     }
+    if (s.empty() && !centre.empty()) return "as before the fit";
     return s.empty() ? "point " + std::to_string(r.point) : s;
 }
 
@@ -43,6 +47,7 @@ bool ParetoPanel::load(const std::string& file) {
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
         tableIsFit = false;
+        labelCentre.clear();
         pickedFor.clear();
         loadedPath = file;
         tableBaseline.clear();
@@ -99,7 +104,7 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
     session.knobs().copyValues(trial);
     session.camera() = camera;
     error.clear();
-    applied = "applied point " + std::to_string(r.point) + ": " + label(table, r);
+    applied = "applied point " + std::to_string(r.point) + ": " + label(table, r, labelCentre);
     state.log.done(applied, state.time, "pareto apply");
     return true;
 }
@@ -413,6 +418,7 @@ void ParetoPanel::showFinishedSweep(UiState& state) {
     if (sweepShown || !state.sweep.done()) return;
     table = state.sweep.table();
     tableIsFit = false;
+    labelCentre.clear();
     pickedFor.clear();
     loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
     tableBaseline = state.sweep.baselineName();
@@ -429,6 +435,9 @@ void ParetoPanel::showFinishedFit(UiState& state) {
     table = run.table();
     tableIsFit = true;
     fitBudgetMs = run.settings().budgetMs;
+    labelCentre.clear();
+    for (const std::string& axis : table.axes)
+        labelCentre.push_back(run.previous().find(axis) ? run.previous().format(*run.previous().find(axis)) : std::string());
     pickedFor.clear();
     loadedPath = "fit budget: " + std::to_string(run.points()) + " points of the speed/quality knobs about the settings (FLIP against " +
                  run.baselineName() + ", time " + run.settings().time + ")";
@@ -601,7 +610,7 @@ std::string ParetoPanel::hoverText(const TradeoffRow& r) const {
     char numbers[256];
     std::snprintf(numbers, sizeof(numbers), "\n%s %.4g [%.4g, %.4g]\nGPU %s %.3f ms [%.3f, %.3f]", r.metric.c_str(), r.error,
                   r.errorLo, r.errorHi, table.time.c_str(), r.timeMs, r.timeMsLo, r.timeMsHi);
-    std::string s = label(table, r) + numbers;
+    std::string s = label(table, r, labelCentre) + numbers;
     if (r.front == "pareto" || (r.front.empty() && r.pareto)) s += "\non the Pareto front";
     else if (r.front == "indistinguishable") s += "\nindistinguishable: off the front, not confidently dominated";
     else if (r.front == "dominated") {
@@ -644,7 +653,7 @@ void ParetoPanel::plotPoints(const PlotFrame& f, const std::vector<int>& rows, b
         if (finite(r.timeMsLo) && finite(r.timeMsHi)) dl->AddLine(ImVec2(f.sx(r.timeMsLo), p.y), ImVec2(f.sx(r.timeMsHi), p.y), bar);
         if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, f.sy(r.errorLo)), ImVec2(p.x, f.sy(r.errorHi)), bar);
         drawMarker(dl, p, r);
-        if (r.pareto) drawLabel(p, label(table, r));
+        if (r.pareto) drawLabel(p, label(table, r, labelCentre));
         const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
         if (plotHovered && d2 < best) best = d2, hovered = i;
         noteRect("pareto.point." + std::to_string(r.point), ImVec2(p.x - 1, p.y - 1), ImVec2(p.x + 1, p.y + 1));

@@ -73,6 +73,9 @@ struct ParetoPanel {
     std::uint64_t fitShown = 0;   // FitBudgetRun::finished() of the fit whose table is on show (0: none)
     bool tableIsFit = false;      // the table on show is the last fit's sweep
     double fitBudgetMs = 0.0;     // the budget it was fitted to
+    // Per axis, the value the points are labelled against (the fit's starting
+    // settings: a label names only what differs); empty: every axis named.
+    std::vector<std::string> labelCentre;
     // The budget field: 0 none; the pick's lines (or why none) for the group on show.
     double budgetMs = 0.0;
     std::vector<std::string> pickLines;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -118,6 +119,13 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     ASSERT_FALSE(panel.fit.pickLines.empty());
     EXPECT_EQ(panel.fit.pickLines[0].rfind("pick: point " + std::to_string(pick.point), 0), 0u) << panel.fit.pickLines[0];
     EXPECT_NE(panel.fit.pickLines[0].find("flip"), std::string::npos) << panel.fit.pickLines[0];
+    {
+        // The point is named by the one value it changes, not by all of the sweep's axes.
+        const std::string& l = panel.fit.pickLines[0];
+        const size_t open = l.find('('), close = l.find(')');
+        ASSERT_LT(open, close) << l;
+        EXPECT_EQ(std::count(l.begin() + static_cast<long>(open), l.begin() + static_cast<long>(close), '='), 1) << l;
+    }
     EXPECT_NE(panel.fit.pickLines[0].find("frame time"), std::string::npos) << panel.fit.pickLines[0];
     EXPECT_TRUE(drawnNow("pareto.fit_pick") && drawnNow("pareto.fit_applied") && drawnNow("pareto.fit_undo"));
     // The sweep is the table on show, its pick ringed.
