@@ -78,14 +78,20 @@ std::string shortName(const TradeoffTable& t, const TradeoffRow& r, const KnobRe
 }
 
 // The picker's lines with each point named by what it changes (a sweep of
-// some 30 axes one at a time named all 30 in every line).
+// some 30 axes one at a time named all 30 in every line), and a long list of
+// the points tied with the pick as their count (the plot's tooltips name them).
 std::vector<std::string> shortened(std::vector<std::string> lines, const FitBudgetRun& run) {
-    for (std::string& l : lines)
+    constexpr size_t kListed = 6;
+    for (std::string& l : lines) {
         for (const TradeoffRow& r : run.table().rows) {
             const std::string full = fullName(run.table(), r);
             if (const size_t at = l.find(full); at != std::string::npos)
                 l.replace(at, full.size(), shortName(run.table(), r, run.previous()));
         }
+        const size_t from = l.find("from point(s) "), fit = l.find(", which fit too");
+        if (run.pick().tied.size() > kListed && from != std::string::npos && fit != std::string::npos && from < fit)
+            l.replace(from, fit - from, "from " + std::to_string(run.pick().tied.size()) + " other points (ringed faintly)");
+    }
     return lines;
 }
 

@@ -47,10 +47,14 @@ bool drawnNow(const std::string& name) {
     return items.count(name) && items.at(name).frame == ImGui::GetFrameCount();
 }
 
-// Steps the fit's sweep to its end as the frame loop does (one frame a step).
-void runFit(ui::UiState& state, RenderSession& session) {
+// Steps the fit's sweep to its end as the frame loop does (one frame a step;
+// with `viewFrames`, the view's own frame after each, as the window renders it).
+void runFit(ui::UiState& state, RenderSession& session, bool viewFrames = false) {
     int steps = 0;
-    while (state.fitBudget.step(session)) ASSERT_LT(++steps, 20000);
+    while (state.fitBudget.step(session)) {
+        ASSERT_LT(++steps, 20000);
+        if (viewFrames) session.render({{"final"}});
+    }
 }
 
 }  // namespace
@@ -91,7 +95,7 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     for (int i = 0; i < 10; ++i) ASSERT_TRUE(state.fitBudget.step(*session)) << state.fitBudget.error();
     const glm::vec3 moved = session->camera().position + glm::vec3(0.5f, 0.0f, 0.0f);
     session->camera().position = moved;
-    runFit(state, *session);
+    runFit(state, *session, true);
     ASSERT_TRUE(state.fitBudget.done()) << state.fitBudget.error();
     EXPECT_EQ(allKnobs(*session), before) << "the sweep changed the settings";
     EXPECT_EQ(session->camera().position, moved);
@@ -106,6 +110,7 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     for (const TradeoffRow& r : state.fitBudget.table().rows) {
         least = std::min(least, r.error);
         if (r.point == pick.point) picked = r.error;
+        EXPECT_EQ(r.frames, 6) << "point " << r.point;  // none lost among the view's own frames
         EXPECT_LE(r.errorLo, r.error);
         EXPECT_GE(r.timeMsHi, r.timeMs);
     }
