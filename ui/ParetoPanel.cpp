@@ -22,13 +22,17 @@ std::string groupOf(const TradeoffRow& r) { return r.camera + " | " + r.metric +
 
 bool finite(double v) { return std::isfinite(v); }
 
-// "ssao.samples=16, ssao.resolution=half"
-std::string label(const TradeoffTable& t, const TradeoffRow& r) {
+// "ssao.samples=16, ssao.resolution=half"; with `centre` (a sweep about
+// settings, one axis at a time: those settings' values) only the values that
+// differ from it, and "as before the fit" for none.
+std::string label(const TradeoffTable& t, const TradeoffRow& r, const std::vector<std::string>& centre) {
     std::string s;
     for (size_t i = 0; i < t.axes.size() && i < r.axisValues.size(); ++i) {
+        if (i < centre.size() && centre[i] == r.axisValues[i]) continue;
         if (!s.empty()) s += ", ";
         s += t.axes[i] + "=" + r.axisValues[i];
     }
+    if (s.empty() && !centre.empty()) return "as before the fit";
     return s.empty() ? "point " + std::to_string(r.point) : s;
 }
 
@@ -42,6 +46,8 @@ bool ParetoPanel::load(const std::string& file) {
         TradeoffTable t = TradeoffTable::readCsv(file);
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
+        tableIsFit = false;
+        labelCentre.clear();
         pickedFor.clear();
         loadedPath = file;
         tableBaseline.clear();
@@ -99,7 +105,7 @@ bool ParetoPanel::apply(int row, UiState& state, RenderSession& session) {
     session.knobs().copyValues(trial);
     session.camera() = camera;
     error.clear();
-    applied = "applied point " + std::to_string(r.point) + ": " + label(table, r);
+    applied = "applied point " + std::to_string(r.point) + ": " + label(table, r, labelCentre);
     state.log.done(applied, state.time, "pareto apply");
     return true;
 }
@@ -227,6 +233,7 @@ void ParetoPanel::updateWaiting(UiState& state, RenderSession& session) {
 
 void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
     updateWaiting(state, session);  // also while the panel is collapsed
+    fit.update(budgetMs, againstCurrent, state, session);
     if (!beginPanel(title, open)) {
         ImGui::End();
         return;
@@ -236,6 +243,8 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     else if (!waitingKnob.empty()) referenceWait(state);
     else sweepControls(state, session);
     showFinishedSweep(state);
+    fit.draw(budgetMs, againstCurrent, state, session);
+    showFinishedFit(state);
     attribution.draw(state, session);
     csvControls();
     if (table.rows.empty()) {
@@ -263,11 +272,9 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     ImGui::End();
 }
 
-// The budget field and what it picks among the group's points (BudgetPicker).
+// What the budget field picks among the group's points (BudgetPicker); the
+// fit's own table at the fit's budget: its lines are the fit's, above.
 void ParetoPanel::budgetControls(const std::string& groupName) {
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::InputDouble("budget ms", &budgetMs, 0.0, 0.0, "%.3f");
-    noteItem("pareto.budget");
     const std::string key = groupName + "@" + std::to_string(budgetMs);
     if (key != pickedFor) {
         pickedFor = key;
@@ -280,6 +287,7 @@ void ParetoPanel::budgetControls(const std::string& groupName) {
             pickLines = {e.what()};
         }
     }
+    if (tableIsFit && budgetMs == fitBudgetMs) return;
     for (const auto& l : pickLines) wrappedColored(l.rfind("pick: ", 0) == 0 ? kOkColor : kErrorColor, l);
     if (!pickLines.empty()) noteItem("pareto.pick");
 }
@@ -410,12 +418,33 @@ void ParetoPanel::askForReference(UiState& state, RenderSession& session) {
 void ParetoPanel::showFinishedSweep(UiState& state) {
     if (sweepShown || !state.sweep.done()) return;
     table = state.sweep.table();
+    tableIsFit = false;
+    labelCentre.clear();
     pickedFor.clear();
     loadedPath = "quick sweep of " + state.sweep.knob() + " (FLIP against " + state.sweep.baselineName() + ")";
     tableBaseline = state.sweep.baselineName();
     group = 0;
     applied.clear();
     sweepShown = true;
+}
+
+// The finished fit's sweep replaces the table on show (its pick ringed; its lines are the fit's).
+void ParetoPanel::showFinishedFit(UiState& state) {
+    const FitBudgetRun& run = state.fitBudget;
+    if (!run.done() || fitShown == run.finished()) return;
+    fitShown = run.finished();
+    table = run.table();
+    tableIsFit = true;
+    fitBudgetMs = run.settings().budgetMs;
+    labelCentre.clear();
+    for (const std::string& axis : table.axes)
+        labelCentre.push_back(run.previous().find(axis) ? run.previous().format(*run.previous().find(axis)) : std::string());
+    pickedFor.clear();
+    loadedPath = "fit budget: " + std::to_string(run.points()) + " points of the speed/quality knobs about the settings (FLIP against " +
+                 run.baselineName() + ", time " + run.settings().time + ")";
+    tableBaseline = run.baselineName();
+    group = 0;
+    applied.clear();
 }
 
 // What is on show, the CSV's path with *Load*, and the last load's or apply's error.
@@ -582,7 +611,7 @@ std::string ParetoPanel::hoverText(const TradeoffRow& r) const {
     char numbers[256];
     std::snprintf(numbers, sizeof(numbers), "\n%s %.4g [%.4g, %.4g]\nGPU %s %.3f ms [%.3f, %.3f]", r.metric.c_str(), r.error,
                   r.errorLo, r.errorHi, table.time.c_str(), r.timeMs, r.timeMsLo, r.timeMsHi);
-    std::string s = label(table, r) + numbers;
+    std::string s = label(table, r, labelCentre) + numbers;
     if (r.front == "pareto" || (r.front.empty() && r.pareto)) s += "\non the Pareto front";
     else if (r.front == "indistinguishable") s += "\nindistinguishable: off the front, not confidently dominated";
     else if (r.front == "dominated") {
@@ -625,7 +654,7 @@ void ParetoPanel::plotPoints(const PlotFrame& f, const std::vector<int>& rows, b
         if (finite(r.timeMsLo) && finite(r.timeMsHi)) dl->AddLine(ImVec2(f.sx(r.timeMsLo), p.y), ImVec2(f.sx(r.timeMsHi), p.y), bar);
         if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, f.sy(r.errorLo)), ImVec2(p.x, f.sy(r.errorHi)), bar);
         drawMarker(dl, p, r);
-        if (r.pareto) drawLabel(p, label(table, r));
+        if (r.pareto) drawLabel(p, label(table, r, labelCentre));
         const float d2 = (mouse.x - p.x) * (mouse.x - p.x) + (mouse.y - p.y) * (mouse.y - p.y);
         if (plotHovered && d2 < best) best = d2, hovered = i;
         noteRect("pareto.point." + std::to_string(r.point), ImVec2(p.x - 1, p.y - 1), ImVec2(p.x + 1, p.y + 1));

@@ -19,7 +19,10 @@
 // point (a ring), indistinguishable (a hollow square), dominated (small); the
 // tooltip names dominated_by and tied_with. A budget (ms, above 0) marks the
 // pick among the group's points (BudgetPicker: the least error whose time's
-// 95% interval ends under it) with a green ring, and says the picker's lines.
+// 95% interval ends under it) with a green ring, and says the picker's lines;
+// *fit budget* beside it sweeps the speed/quality knobs about the current
+// settings, applies the pick and measures it (FitBudgetView), its sweep then
+// the table on show.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -28,6 +31,7 @@
 #include "renderer/RenderSession.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "ui/AttributionView.h"
+#include "ui/FitBudgetView.h"
 #include "ui/UiState.h"
 
 namespace dw::ui {
@@ -65,6 +69,13 @@ struct ParetoPanel {
     // sweep's baseline; empty for a loaded CSV).
     std::string tableBaseline;
     AttributionView attribution;  // "Where the error comes from"
+    FitBudgetView fit;            // the budget field's *fit budget*
+    std::uint64_t fitShown = 0;   // FitBudgetRun::finished() of the fit whose table is on show (0: none)
+    bool tableIsFit = false;      // the table on show is the last fit's sweep
+    double fitBudgetMs = 0.0;     // the budget it was fitted to
+    // Per axis, the value the points are labelled against (the fit's starting
+    // settings: a label names only what differs); empty: every axis named.
+    std::vector<std::string> labelCentre;
     // The budget field: 0 none; the pick's lines (or why none) for the group on show.
     double budgetMs = 0.0;
     std::vector<std::string> pickLines;
@@ -125,6 +136,7 @@ private:
     void askAboutCost(UiState& state, RenderSession& session);
     void askForReference(UiState& state, RenderSession& session);
     void showFinishedSweep(UiState& state);
+    void showFinishedFit(UiState& state);
     void csvControls();
     void groupControls(const std::vector<std::string>& gs);
     std::vector<int> groupRows(const std::string& groupName, std::string& metric);

@@ -100,8 +100,13 @@ void TimingsPanel::watchForChanges(UiState& state, RenderSession& session) {
     // A value is committed when no widget is being edited (a slider let go,
     // a typed value entered): never each keystroke of "64".
     if (auto c = watcher.update(knobs, ImGui::IsAnyItemActive())) {
+        // A change measured already (the Pareto panel's fit budget measures
+        // the one it applies) keeps its verdict; any other's was of an earlier change.
+        const ChangeMeasurement& m = state.measure;
+        const bool measured = m.state() == ChangeMeasurement::State::Done && m.change().knobs == c->knobs &&
+                              m.change().before == c->before && m.change().after == c->after;
         change = std::move(c);
-        state.measure = ChangeMeasurement();  // the verdict was of an earlier change
+        if (!measured) state.measure = ChangeMeasurement();
     }
 }
 

@@ -23,6 +23,7 @@
 #include "renderer/inspect/ViewportOverlay.h"
 #include "renderer/scene/LightAnimator.h"
 #include "ui/AbView.h"
+#include "ui/FitBudgetRun.h"
 #include "ui/RecordMeasurement.h"
 
 namespace dw::gl {
@@ -280,6 +281,9 @@ struct UiState {
     // The Pareto panel's attribution of the view's error (AttributionView):
     // the frame loop renders one configuration a UI frame, before the view's own.
     AttributionRun attribution;
+    // The Pareto panel's *fit budget* sweep (FitBudgetRun): the frame loop
+    // renders one of its frames a UI frame, before the view's own.
+    FitBudgetRun fitBudget;
     // File > Save record's measurement of the state on show: the frame loop
     // renders its frames (one a UI frame, before the view's own) and writes
     // the record after the last (RecordMeasurement).

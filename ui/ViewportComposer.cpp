@@ -68,6 +68,9 @@ void ViewportComposer::stepBackgroundWork(UiState& state) {
     } else if (state.attribution.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
         state.attribution.step(session_);
         state.forceRender = true;
+    } else if (state.fitBudget.running() && state.viewport.mode == DisplayMode::Deferred && !measuring_) {
+        state.fitBudget.step(session_);
+        state.forceRender = true;
     }
     // File > Save record's measured frame, of the state saved (it puts the current one back).
     if (state.recordRun.running() && !measuring_) state.recordRun.step(state, session_);
@@ -201,7 +204,10 @@ std::string ViewportComposer::frameSignature(const UiState& state) const {
 // rendered, from the newest GPU frame times; frozen while timings are captured.
 void ViewportComposer::adjustAutoScale(UiState& state) {
     ViewportView& v = state.viewport;
+    // Nor while a sweep or an attribution renders its own frames: their times
+    // are not the view's, and a new size would stop them.
     if (v.resolution != ResolutionScale::Auto || state.timingCapture || state.measure.active() || state.holdView ||
+        state.sweep.running() || state.attribution.running() || state.fitBudget.running() ||
         state.framesRendered % 4 != 0)
         return;
     const PassTimer::Series* total = session_.pipeline().timer().find(PassTimer::kFrameSeries);

@@ -21,6 +21,7 @@
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
 #include "tests/gui/HeadlessImGui.h"
+#include "tests/gui/ParetoDriver.h"
 #include "tests/support/TestSupport.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/record/ExperimentRecord.h"
@@ -59,6 +60,7 @@ Result shell(const std::string& cmd) {
 }
 
 using test::HeadlessImGui;
+using test::ParetoDriver;
 
 fs::path writeText(const std::string& name, const std::string& text) {
     const fs::path p = test::tempDir() / name;
@@ -1504,45 +1506,6 @@ TEST(Gui, TheParetoPanelsBudgetMarksThePick) {
     EXPECT_TRUE(panel.table.rows[1].pick == "over");
 }
 
-namespace {
-
-// The Pareto panel a frame at a time in the window's order (the reference's
-// update, then the panel), and a click on a named item as a person makes it.
-struct ParetoDriver {
-    HeadlessImGui& imgui;
-    ui::UiState& state;
-    RenderSession& session;
-    ui::ParetoPanel& panel;
-    ui::ReferenceControls& reference;
-    ImVec2 size;
-    bool open = true;
-
-    void frame() {
-        imgui.frame([&] {
-            reference.update(state, session);
-            ImGui::SetNextWindowPos(ImVec2(0, 0));
-            ImGui::SetNextWindowSize(size);
-            panel.draw("Pareto", &open, state, session);
-        });
-    }
-    void click(const std::string& name) {
-        frame();
-        const auto& items = ui::drawnItems();
-        ASSERT_TRUE(items.count(name)) << name;
-        const ui::DrawnItem& b = items.at(name);
-        ASSERT_EQ(b.frame, ImGui::GetFrameCount()) << name;
-        ImGuiIO& io = ImGui::GetIO();
-        io.MousePos = ImVec2(b.x + b.w * 0.5f, b.y + b.h * 0.5f);
-        frame();
-        io.MouseDown[0] = true;
-        frame();
-        io.MouseDown[0] = false;
-        frame();
-        io.MousePos = ImVec2(-1000, -1000);
-    }
-};
-
-}  // namespace
 
 TEST(Gui, AQuickSweepWithoutACpuReferenceTracesItFirstOrMeasuresAgainstTheCurrentImageByChoice) {
     const fs::path cache = test::tempDir() / "pareto-reference-cache";
