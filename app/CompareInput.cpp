@@ -118,7 +118,7 @@ CompareImage CompareInputs::produceReference(const CompareInput& input) {
     if (!report.unmodelledOn.empty() && name == "final") {
         std::string on;
         for (const auto& k : report.unmodelledOn) on += " " + k;
-        std::fprintf(stderr, "note: the reference's final image has no%s (set them false on the render to compare "
+        std::fprintf(stderr, "note: the reference's final image has no%s (set them false, aa.method none, on the render to compare "
                      "the shading alone)\n", on.c_str());
     }
     CompareImage out;

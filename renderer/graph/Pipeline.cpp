@@ -28,6 +28,58 @@ std::vector<std::string> FrameReport::warnings() const {
     return out;
 }
 
+namespace {
+
+// How the passes would sample a frame under `knobs` (RenderPass::sampling,
+// at a fixed size and frame): the largest scale and the first jitter.
+FrameSampling sampleWith(const std::vector<std::unique_ptr<RenderPass>>& passes, const KnobRegistry& knobs) {
+    FrameSampling all;
+    for (const auto& p : passes) {
+        const FrameSampling s = p->sampling(knobs, 1, 64, 64);
+        all.scale = std::max(all.scale, s.scale);
+        if (all.jitter == glm::vec2(0.0f)) all.jitter = s.jitter;
+    }
+    return all;
+}
+
+bool sameSampling(const FrameSampling& a, const FrameSampling& b) { return a.scale == b.scale && a.jitter == b.jitter; }
+
+// The bool and enum knobs that change how the frame is sampled (SSAA's
+// scale, TAA's jitter: aa.method, and aa.ssaa_factor once aa.method=ssaa)
+// change every pass's work, so every pass reads them ("*"): each value of
+// each knob from the defaults, then again with each knob found so far set
+// to each of its values. Probes the passes' sampling(); needs no GL.
+void markSamplingKnobs(const std::vector<std::unique_ptr<RenderPass>>& passes, const KnobRegistry& knobs,
+                       std::vector<std::set<std::string>>& readers) {
+    auto changes = [&](const KnobRegistry& base, size_t id) {
+        const KnobSpec& s = knobs.spec(static_cast<int>(id));
+        if (s.type != KnobType::Enum && s.type != KnobType::Bool) return false;
+        const FrameSampling before = sampleWith(passes, base);
+        KnobRegistry probe = base;
+        for (double v = s.minValue; v <= s.maxValue; v += 1.0) {
+            probe.set(static_cast<int>(id), v);
+            if (!sameSampling(sampleWith(passes, probe), before)) return true;
+        }
+        return false;
+    };
+    std::vector<size_t> found;
+    for (size_t id = 0; id < knobs.size(); ++id)
+        if (changes(knobs, id)) found.push_back(id);
+    for (size_t f : std::vector<size_t>(found)) {
+        const KnobSpec& s = knobs.spec(static_cast<int>(f));
+        for (double v = s.minValue; v <= s.maxValue; v += 1.0) {
+            KnobRegistry base = knobs;
+            base.set(static_cast<int>(f), v);
+            for (size_t id = 0; id < knobs.size(); ++id)
+                if (std::find(found.begin(), found.end(), id) == found.end() && changes(base, id)) found.push_back(id);
+        }
+    }
+    for (size_t id : found) readers[id].insert("*");
+    sampleWith(passes, knobs);  // leave each pass as the current knobs have it
+}
+
+}  // namespace
+
 Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
     // Built-in passes first, then any registered from outside; within a stage
     // in registration order (seed 002 section 6 for the built-in ones).
@@ -81,6 +133,7 @@ Pipeline::Pipeline(KnobRegistry& knobs) : knobs_(knobs) {
                                   "the display image: the end of the post chain (tonemap.result, then each post pass that ran)"});
     depthMode_ = knobs.requireEnum("depth.mode");
     knobReaders_[static_cast<size_t>(depthMode_.id)].insert("*");  // the camera every pass uses
+    markSamplingKnobs(passes_, knobs, knobReaders_);
     normalEncoding_ = knobs.requireEnum("gbuffer.normal_encoding");
     octahedral_[0] = knobs.choiceIndex(normalEncoding_, "oct16");
     octahedral_[1] = knobs.choiceIndex(normalEncoding_, "oct8");
@@ -136,7 +189,8 @@ void Pipeline::resize(int width, int height) {
     for (auto& p : passes_) p->resize(width, height, outputs_);
 }
 
-CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int height, DepthMode depthMode) {
+CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int height, DepthMode depthMode,
+                                        glm::vec2 jitter) {
     CameraUniforms u;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const DepthConvention convention(depthMode);
@@ -146,7 +200,12 @@ CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int hei
     // minus the camera's position (CameraUniforms::origin).
     const glm::dvec3 eye(camera.position);
     const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), glm::dvec3(camera.target) - eye, glm::dvec3(camera.up));
-    const glm::dmat4 projection = convention.perspective(glm::radians(static_cast<double>(camera.fovYDegrees)),
+    // The jitter moves clip space by 2 * jitter / size in x and y (NDC), for
+    // any projection: a translation applied after it.
+    glm::dmat4 shift(1.0);
+    shift[3][0] = 2.0 * jitter.x / width;
+    shift[3][1] = 2.0 * jitter.y / height;
+    const glm::dmat4 projection = shift * convention.perspective(glm::radians(static_cast<double>(camera.fovYDegrees)),
                                                          static_cast<double>(width) / height, camera.nearPlane,
                                                          camera.farPlane);
     u.view = glm::mat4(view);
@@ -324,7 +383,7 @@ void Pipeline::allocateResources(const Plan& plan) {
     for (size_t i = 0; i < passes_.size(); ++i) {
         const RenderPass& p = *passes_[i];
         if (plan.records[i].ran) {
-            pool_.acquireOutputs(p, knobs_, width_, height_, outputs_, &plan.wanted);
+            pool_.acquireOutputs(p, knobs_, renderWidth(), renderHeight(), outputs_, &plan.wanted);
             continue;
         }
         for (const auto& o : p.outputs()) {
@@ -346,9 +405,19 @@ std::int64_t Pipeline::declaredBytes(size_t i, const Plan& plan) const {
     for (const auto& name : names) {
         const PublishedOutput* o = outputs_.find(name);
         if (!o || !o->allocated() || !o->decl.viewOf.empty()) continue;
-        bytes += static_cast<std::int64_t>(resourceBytes(o->desc, width_, height_));
+        bytes += static_cast<std::int64_t>(resourceBytes(o->desc, renderWidth(), renderHeight()));
     }
     return bytes;
+}
+
+void Pipeline::chooseSampling() {
+    scale_ = 1;
+    jitter_ = glm::vec2(0.0f);
+    for (auto& p : passes_) {
+        const FrameSampling s = p->sampling(knobs_, frame_, width_, height_);
+        scale_ = std::max(scale_, s.scale);
+        if (jitter_ == glm::vec2(0.0f)) jitter_ = s.jitter;
+    }
 }
 
 FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) {
@@ -356,8 +425,11 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
     FrameReport report;
     report.frameIndex = frame_;
-    // The camera first: a pass may skip this frame for what is in view.
-    camera_ = cameraUniforms(camera, width_, height_, knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional);
+    // How the frame is sampled (SSAA's scale, TAA's jitter), then the camera:
+    // a pass may skip this frame for what is in view.
+    chooseSampling();
+    camera_ = cameraUniforms(camera, renderWidth(), renderHeight(),
+                             knobs_.get(depthMode_) == 0 ? DepthMode::Reversed : DepthMode::Conventional, jitter_);
     camera_.gbuffer.x = normalEncodingUniform();
     viewKnown_ = true;
     Plan plan = makePlan(request);
@@ -374,7 +446,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     gpu_.setDrawOrigin(camera_.origin);
     allocateResources(plan);
     outputs_.markFrameStart();
-    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, width_, height_, frame_, plan.wanted, &timer_};
+    FrameContext ctx{*scene_, gpu_, knobs_, outputs_, *shaders_, camera_, renderWidth(), renderHeight(), frame_, plan.wanted, &timer_};
     for (const auto& r : request.outputs) ctx.requested.insert(r == kFinalOutput ? plan.finalName : r);
 
     timer_.beginFrame(frame_);
@@ -383,7 +455,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             if (!plan.records[i].ran) continue;
             RenderPass& p = *passes_[i];
             ctx.image = plan.image[i];
-            gl::resetPipelineState(width_, height_);
+            gl::resetPipelineState(renderWidth(), renderHeight());
             cameraUbo_.bind(binding::CAMERA_UBO);
             glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
             timer_.beginPass(p.name());
@@ -411,14 +483,14 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
     } catch (...) {
         // A failed frame leaves nothing half-recorded for the next one.
         timer_.abortFrame();
-        gl::resetPipelineState(width_, height_);
+        gl::resetPipelineState(renderWidth(), renderHeight());
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         ++frame_;
         throw;
     }
     timer_.endFrame();
     outputs_.bindAlias(kFinalOutput, plan.finalName);
-    gl::resetPipelineState(width_, height_);
+    gl::resetPipelineState(renderWidth(), renderHeight());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;
     return report;

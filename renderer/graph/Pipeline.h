@@ -84,8 +84,11 @@ public:
             if (auto* t = dynamic_cast<T*>(p.get())) return t;
         return nullptr;
     }
+    // The output size (resize()); the last frame rendered its frame-sized
+    // resources at renderScale() times it per axis (SSAA: RenderPass::sampling).
     int width() const { return width_; }
     int height() const { return height_; }
+    int renderScale() const { return scale_; }
     const CameraUniforms& lastCamera() const { return camera_; }
     // Sets and binds the camera uniforms without rendering a frame: for the
     // views drawn outside the passes (the workbench's forward preview and
@@ -93,8 +96,9 @@ public:
     void bindCamera(const Camera& camera);
     const GpuScene& gpuScene() const { return gpu_; }
     // View and projection built in double precision, in the given depth convention.
+    // `jitter` moves the projection by that many pixels (TAA's sub-pixel offsets).
     static CameraUniforms cameraUniforms(const Camera& camera, int width, int height,
-                                         DepthMode depthMode = DepthMode::Reversed);
+                                         DepthMode depthMode = DepthMode::Reversed, glm::vec2 jitter = glm::vec2(0.0f));
     // The output "final" stands for under the current knobs.
     std::string resolveFinal() const;
     // Plans without executing: which passes would run for `request`, in the
@@ -146,6 +150,12 @@ private:
     // CameraBlock::gbuffer.x: 0 Kircher-Lawrance, 1 octahedral.
     float normalEncodingUniform() const;
     int width_ = 0, height_ = 0;
+    int scale_ = 1;  // this frame's render scale (FrameSampling::scale)
+    glm::vec2 jitter_{0.0f};  // this frame's projection jitter in pixels
+    // Asks every pass how to sample this frame (RenderPass::sampling).
+    void chooseSampling();
+    int renderWidth() const { return width_ * scale_; }
+    int renderHeight() const { return height_ * scale_; }
     std::uint64_t frame_ = 0;
     std::vector<std::set<std::string>> knobReaders_;  // by knob id
 };

@@ -31,6 +31,16 @@ struct PassIO {
     std::vector<std::string> modifies;        // read and added into (another pass's output)
 };
 
+// How a pass asks the pipeline to sample the frame (anti-aliasing): render
+// every frame-sized resource at `scale` times the output size per axis (SSAA;
+// the pass's own outputs shift back down to the output size), and move the
+// projection by `jitter` (in pixels of the rendered frame, each component in
+// [-0.5, 0.5]) this frame (TAA). The default asks for neither.
+struct FrameSampling {
+    int scale = 1;
+    glm::vec2 jitter{0.0f};
+};
+
 class RenderPass {
 public:
     virtual ~RenderPass() = default;
@@ -71,6 +81,17 @@ public:
         (void)knobs;
         (void)scene;
         (void)camera;
+        return {};
+    }
+    // Asked of every pass at the start of each frame, with the output size
+    // (before the camera is built): the largest scale and the first non-zero
+    // jitter apply. A pass that asks for a scale caps it itself (memory) and
+    // returns {} unless its knobs choose it.
+    virtual FrameSampling sampling(const KnobRegistry& knobs, std::uint64_t frameIndex, int width, int height) {
+        (void)knobs;
+        (void)frameIndex;
+        (void)width;
+        (void)height;
         return {};
     }
     // Creates programs and size-independent GL objects. Called once with a context.

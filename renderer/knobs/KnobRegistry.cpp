@@ -78,6 +78,11 @@ double toKnobPrecision(KnobType type, double v) {
     return type == KnobType::Float ? static_cast<double>(static_cast<float>(v)) : v;
 }
 
+std::string lowerCase(std::string text) {
+    for (char& ch : text) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return text;
+}
+
 }  // namespace
 
 std::string KnobAlias::warning() const {
@@ -198,6 +203,21 @@ EnumKnob KnobRegistry::addEnum(std::string name, std::vector<std::string> choice
     return addEnum(std::move(name), std::move(choices), def, std::move(pass), std::move(description), tradeoff);
 }
 
+void KnobRegistry::addChoice(EnumKnob k, std::string choice, const std::string& what, bool makeDefault) {
+    KnobSpec& s = specs_.at(k.id);
+    if (s.type != KnobType::Enum) throw Error("knob '" + s.name + "' is not an enum: cannot add choice '" + choice + "'");
+    if (std::find(s.choices.begin(), s.choices.end(), choice) != s.choices.end())
+        throw Error("knob '" + s.name + "' already has the choice '" + choice + "'");
+    s.description += "; " + choice + ": " + what;
+    s.choices.push_back(std::move(choice));
+    s.maxValue = static_cast<double>(s.choices.size()) - 1;
+    if (makeDefault) {
+        s.defaultValue = s.maxValue;
+        values_[k.id] = s.defaultValue;
+        ++generation_;
+    }
+}
+
 int KnobRegistry::choiceIndex(EnumKnob k, const std::string& name) const {
     const KnobSpec& s = specs_[k.id];
     const auto it = std::find(s.choices.begin(), s.choices.end(), name);
@@ -264,7 +284,7 @@ void KnobRegistry::setFromString(const std::string& givenName, const std::string
             break;
         }
     for (const KnobAlias& a : aliases_)
-        if (a.knob == name && a.oldName == trimmed(rawText)) {
+        if (a.knob == name && lowerCase(a.oldName) == lowerCase(trimmed(rawText))) {
             warn(a.warning());
             rawText = a.newName;
             break;

@@ -57,6 +57,13 @@ public:
     EnumKnob addEnum(std::string name, std::vector<std::string> choices, const std::string& defaultChoice,
                      std::string pass, std::string description, bool tradeoff = false);
 
+    // One more choice for an enum knob that several passes share (aa.method:
+    // each anti-aliasing pass adds its own name), appended so the indices of
+    // the earlier choices stay; `makeDefault` makes it the default and the
+    // value. The description gets "; <choice>: <what>". Throws dw::Error if
+    // the knob is not an enum or already has the choice.
+    void addChoice(EnumKnob k, std::string choice, const std::string& what, bool makeDefault = false);
+
     // Another pass's knob, by name, checked once (RenderPass::connect): throws
     // dw::Error if it is not declared or is of another type.
     BoolKnob requireBool(const std::string& name) const { return {require(name, KnobType::Bool)}; }

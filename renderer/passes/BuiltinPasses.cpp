@@ -1,7 +1,8 @@
 // The built-in passes, one line each, in seed 002 section 6's order within
 // each stage: G-buffer, ambient occlusion (ao: SSAO, GTAO, ...), L-buffer (the sky and the shadow maps feed
 // it), transparency over the L-buffer (oit), luminance statistics, bloom, tone mapping; then the
-// post chain (depth of field, FXAA) on the tone-mapped image.
+// post chain (depth of field, then the anti-aliasing method aa.method names:
+// FXAA, SSAA's resolve or TAA, last) on the tone-mapped image.
 #include "renderer/graph/PassCatalog.h"
 #include "renderer/passes/AoFilterPass.h"
 #include "renderer/passes/AoPass.h"
@@ -17,6 +18,8 @@
 #include "renderer/passes/OitPass.h"
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/passes/SkyboxPass.h"
+#include "renderer/passes/SsaaPass.h"
+#include "renderer/passes/TaaPass.h"
 #include "renderer/passes/TonemapPass.h"
 
 namespace dw {
@@ -45,6 +48,8 @@ std::vector<PassEntry> builtinPasses() {
         entry<TonemapPass>(PassStage::Tonemap),
         entry<DofPass>(PassStage::Post),
         entry<FxaaPass>(PassStage::Post),
+        entry<SsaaPass>(PassStage::Post),
+        entry<TaaPass>(PassStage::Post),
     };
 }
 

@@ -2,6 +2,7 @@
 
 #include <iterator>
 
+#include "renderer/passes/AaMethod.h"
 #include "renderer/scene/GpuScene.h"
 
 namespace dw {
@@ -16,7 +17,10 @@ constexpr Quality kQualities[] = {{"low", 4}, {"medium", 8}, {"high", 12}};
 }  // namespace
 
 FxaaPass::FxaaPass(KnobRegistry& knobs) {
-    enabled_ = knobs.addBool("fxaa.enabled", true, "fxaa", "fast approximate anti-aliasing of the final image");
+    method_ = declareAaMethod(knobs, "fxaa",
+                              "fast approximate anti-aliasing (Lottes 2009) of the display image, edges found by "
+                              "contrast and blended along them",
+                              true);
     std::vector<std::string> names;
     std::string steps;
     for (const Quality& q : kQualities) {
@@ -34,8 +38,7 @@ FxaaPass::FxaaPass(KnobRegistry& knobs) {
 }
 
 std::string FxaaPass::skipReason(const KnobRegistry& knobs, const Scene&) const {
-    if (!knobs.get(enabled_)) return "switched off (fxaa.enabled = false)";
-    return {};
+    return aaMethodSkipReason(knobs, method_, "fxaa");
 }
 
 void FxaaPass::setup(gl::ShaderLibrary& shaders) {

@@ -1,6 +1,7 @@
 #pragma once
-// FXAA (seed 000 section 3.3) on the display image: reads the post chain's
-// current image (after depth of field when that is on); writes fxaa.result (RGBA8).
+// FXAA (seed 000 section 3.3; Lottes 2009) on the display image, aa.method=fxaa
+// (the default): reads the post chain's current image (after depth of field
+// when that is on); writes fxaa.result (RGBA8). docs/antialiasing.md.
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/graph/RenderPass.h"
 #include "renderer/graph/TargetFramebuffer.h"
@@ -27,7 +28,7 @@ public:
     void execute(FrameContext& ctx) override;
 
 private:
-    BoolKnob enabled_;
+    EnumKnob method_;
     EnumKnob quality_;
     FloatKnob threshold_, thresholdMin_, subpixel_;
     gl::ShaderLibrary::Handle program_;

@@ -38,7 +38,7 @@ const std::vector<std::string>& ReferenceModel::honouredKnobs() {
 }
 
 const std::vector<std::string>& ReferenceModel::unmodelledKnobs() {
-    static const std::vector<std::string> names = {"bloom.enabled", "dof.enabled", "fxaa.enabled"};
+    static const std::vector<std::string> names = {"bloom.enabled", "dof.enabled", "aa.method"};
     return names;
 }
 
@@ -130,7 +130,10 @@ KnobReport reportKnobs(const KnobRegistry& knobs, const ReferenceModel& model, b
         const std::string& name = knobs.spec(static_cast<int>(id)).name;
         if (std::find(honoured.begin(), honoured.end(), name) != honoured.end()) continue;
         if (std::find(unmodelled.begin(), unmodelled.end(), name) != unmodelled.end()) {
-            if (finalImage && knobs.value(static_cast<int>(id)) != 0.0) r.unmodelledOn.push_back(name);
+            // An enum (aa.method) is off at its first choice (none) and said with its value.
+            const bool isEnum = knobs.spec(static_cast<int>(id)).type == KnobType::Enum;
+            if (finalImage && knobs.value(static_cast<int>(id)) != 0.0)
+                r.unmodelledOn.push_back(isEnum ? name + "=" + knobs.format(static_cast<int>(id)) : name);
             continue;
         }
         ++r.ignoredTotal;

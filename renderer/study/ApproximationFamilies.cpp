@@ -19,7 +19,7 @@ const std::vector<ApproximationFamily>& approximationFamilies() {
          {"oit.method=linked_list"}},
         {"bloom", "bloom (not in the reference's model)", {"bloom.enabled=false"}},
         {"dof", "depth of field (not in the reference's model)", {"dof.enabled=false"}},
-        {"fxaa", "FXAA (not in the reference's model)", {"fxaa.enabled=false"}},
+        {"aa", "anti-aliasing, aa.method (FXAA by default; not in the reference's model)", {"aa.method=none"}},
     };
     return families;
 }

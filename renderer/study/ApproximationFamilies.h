@@ -22,7 +22,7 @@ struct ApproximationFamily {
 };
 
 // In a fixed order (the table's rows): shadows, ao, light_cutoff, gbuffer,
-// texture_filter, transparency, bloom, dof, fxaa.
+// texture_filter, transparency, bloom, dof, aa (aa.method).
 const std::vector<ApproximationFamily>& approximationFamilies();
 
 }  // namespace dw

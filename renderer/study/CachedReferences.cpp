@@ -53,7 +53,7 @@ void CachedReferences::noteUnmodelled(const KnobRegistry& knobs, const reference
     if (report.unmodelledOn.empty() || !hooks_.warning) return;
     std::string on;
     for (const auto& n : report.unmodelledOn) on += (on.empty() ? " " : ", ") + n;
-    hooks_.warning("note: the reference's final image has no" + on + " (set them false to measure the shading alone)");
+    hooks_.warning("note: the reference's final image has no" + on + " (set them false, aa.method none, to measure the shading alone)");
 }
 
 }  // namespace dw

@@ -117,6 +117,10 @@
     BIND(TEXTURE, DOF_IMAGE_TEXTURE, 0)                                                          \
     BIND(TEXTURE, DOF_DEPTH_TEXTURE, 1)                                                          \
     BIND(TEXTURE, FXAA_IMAGE_TEXTURE, 0)                                                         \
+    BIND(TEXTURE, SSAA_SOURCE_TEXTURE, 0)           /* post/ssaa_resolve.frag */                \
+    BIND(TEXTURE, TAA_CURRENT_TEXTURE, 0)           /* post/taa.frag */                         \
+    BIND(TEXTURE, TAA_HISTORY_TEXTURE, 1)                                                        \
+    BIND(TEXTURE, TAA_DEPTH_TEXTURE, 2)                                                          \
     BIND(TEXTURE, GBUFFER_DECODE_NORMAL_TEXTURE, 0)                                              \
     BIND(TEXTURE, GBUFFER_DECODE_DEPTH_TEXTURE, 1)                                               \
     BIND(TEXTURE, BUFFER_VIEW_SOURCE_TEXTURE, 0)                                                 \

@@ -74,7 +74,7 @@ TEST(AttributionCli, EachFamilysPartsOnTheLBufferWithTheThresholdKeptUnderWindow
     EXPECT_GT(asIs, exact);
     EXPECT_NEAR(num(rows.at("all_exact"), "removed"), asIs - exact, 1e-6 * asIs);
     for (const char* family : {"shadows", "ao", "light_cutoff", "gbuffer", "texture_filter", "transparency", "bloom",
-                               "dof", "fxaa"}) {
+                               "dof", "aa"}) {
         const Row& f = rows.at(family);
         // Each part is the difference of the two errors it names, inside its interval.
         EXPECT_NEAR(num(f, "removed"), asIs - num(f, "only_exact"), 1e-6 * asIs) << family;
@@ -84,8 +84,8 @@ TEST(AttributionCli, EachFamilysPartsOnTheLBufferWithTheThresholdKeptUnderWindow
             EXPECT_GE(num(f, std::string(part) + "_hi"), num(f, part)) << family << " " << part;
         }
     }
-    // Bloom, depth of field and FXAA act after the L-buffer; `default` has no blended surface.
-    for (const char* none : {"bloom", "dof", "fxaa", "transparency"}) {
+    // Bloom, depth of field and anti-aliasing (FXAA by default) act after the L-buffer; `default` has no blended surface.
+    for (const char* none : {"bloom", "dof", "aa", "transparency"}) {
         EXPECT_EQ(num(rows.at(none), "removed"), 0.0) << none;
         EXPECT_EQ(num(rows.at(none), "added"), 0.0) << none;
     }
@@ -104,7 +104,7 @@ TEST(AttributionCli, FxaaIsAPartOfTheFinalImagesError) {
     EXPECT_NE((r.out + r.err).find("Where the flip error of `final` comes from"), std::string::npos) << r.out << r.err;
     EXPECT_NE((r.out + r.err).find("the parts sum to"), std::string::npos) << r.out << r.err;
     const auto rows = readRows(csv);
-    EXPECT_GT(num(rows.at("fxaa"), "added_lo"), 0.0);
+    EXPECT_GT(num(rows.at("aa"), "added_lo"), 0.0);
     EXPECT_FALSE(fs::exists(dir() / "attribution.png"));
 }
 

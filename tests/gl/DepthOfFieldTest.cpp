@@ -29,7 +29,7 @@ std::string caseScene(double focus, double range) {
   "ambient": [1, 1, 1], "sky": { "type": "color" },
   "settings": { "dof.enabled": true, "dof.near_blur": true, "dof.focus_distance": )" +
            std::to_string(focus) + R"(, "dof.focus_range": )" + std::to_string(range) +
-           R"(, "dof.max_radius": 8, "ao.enabled": false, "bloom.enabled": false, "fxaa.enabled": false,
+           R"(, "dof.max_radius": 8, "ao.enabled": false, "bloom.enabled": false, "aa.method": "none",
                 "tonemap.operator": "clamp" },
   "objects": [ { "shape": "box", "size": [80, 80, 0.2], "pos": [0, 0, -12], "material": { "diffuse": [0.1, 0.2, 0.9], "specular": [0, 0, 0] } },
                { "shape": "box", "size": [0.4, 0.4, 0.05], "pos": [0, 0, -2], "material": { "diffuse": [0.9, 0.1, 0.1], "specular": [0, 0, 0] } } ] })";

@@ -261,7 +261,7 @@ TEST(Bloom, AddsEnergyOnlyAroundPixelsAboveTheThreshold) {
     bulb.material = mat;
     scene.instances.push_back({scene.addMesh(std::move(bulb)), glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f})});
     s->setScene(std::move(scene));
-    s->knobs().setFromString("fxaa.enabled", "false");
+    s->knobs().setFromString("aa.method", "none");
     // The threshold is relative to the average luminance: without the black
     // background in the average, the floor stays below it and only the bulb blooms.
     s->knobs().setFromString("luminance.background", "exclude");
@@ -419,7 +419,7 @@ TEST(Sky, FillsOnlyThePixelsWithoutGeometry) {
 TEST(DepthOfField, SharpInFocusAndBlurredAwayFromIt) {
     auto s = test::makeSession(W, H);
     s->loadScene("spheres");
-    s->knobs().setFromString("fxaa.enabled", "false");
+    s->knobs().setFromString("aa.method", "none");
     s->knobs().setFromString("dof.enabled", "true");
     s->knobs().setFromString("dof.focus_distance", "10");
     s->knobs().setFromString("dof.focus_range", "1000");
@@ -471,12 +471,12 @@ TEST(Fxaa, MovesEdgePixelsTowardsASupersampledReference) {
         s->loadScene("spheres");
         for (const char* k : {"ao.enabled=false", "bloom.enabled=false", "tonemap.operator=clamp", "tonemap.exposure=-1"})
             s->knobs().applyAssignment(k);
-        s->knobs().setFromString("fxaa.enabled", fxaa);
+        s->knobs().setFromString("aa.method", fxaa);
         s->knobs().setFromString("fxaa.quality", quality);
         s->render();
         return s->readRaw("final");
     };
-    const FloatImage big = frame(4 * W, 4 * H, "false", "medium");
+    const FloatImage big = frame(4 * W, 4 * H, "none", "medium");
     FloatImage ref{W, H, 3, std::vector<float>(W * H * 3, 0.0f)};
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
@@ -486,7 +486,7 @@ TEST(Fxaa, MovesEdgePixelsTowardsASupersampledReference) {
                     for (int i = 0; i < 4; ++i) sum += big.at(4 * x + i, 4 * y + j, ch);
                 ref.at(x, y, ch) = sum / 16.0f;
             }
-    const FloatImage aliased = frame(W, H, "false", "medium");
+    const FloatImage aliased = frame(W, H, "none", "medium");
     // Edge pixels: where the aliased image is far from the reference.
     auto error = [&](const FloatImage& img) {
         double e = 0.0;
@@ -502,7 +502,7 @@ TEST(Fxaa, MovesEdgePixelsTowardsASupersampledReference) {
     const auto [aliasedError, edges] = error(aliased);
     ASSERT_GT(edges, 30);
     for (const char* q : {"low", "medium", "high"}) {
-        const double e = error(frame(W, H, "true", q)).first;
+        const double e = error(frame(W, H, "fxaa", q)).first;
         std::printf("FXAA %s: mean error on %d edge pixels %.4f (aliased %.4f)\n", q, edges, e, aliasedError);
         EXPECT_LT(e, 0.8 * aliasedError) << q;
     }
@@ -521,7 +521,7 @@ TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {
         std::vector<const char*> gone;
     };
     for (const Toggle& t : {Toggle{"ao.enabled", "false", {"ao", "ao_filter"}}, Toggle{"bloom.enabled", "false", {"bloom"}},
-                            Toggle{"fxaa.enabled", "false", {"fxaa"}}, Toggle{"skybox.mode", "color", {"skybox"}}}) {
+                            Toggle{"aa.method", "none", {"fxaa"}}, Toggle{"skybox.mode", "color", {"skybox"}}}) {
         KnobRegistry saved = s->knobs();
         s->knobs().setFromString(t.knob, t.value);
         const FrameReport r = s->render();
@@ -534,7 +534,7 @@ TEST(Effects, SwitchingAnEffectOffRemovesItsPass) {
     s->knobs().setFromString("dof.enabled", "true");
     EXPECT_TRUE(has(ran(s->render()), "dof"));
     EXPECT_EQ(s->pipeline().resolveFinal(), "fxaa.result");
-    s->knobs().setFromString("fxaa.enabled", "false");
+    s->knobs().setFromString("aa.method", "none");
     EXPECT_EQ(s->pipeline().resolveFinal(), "dof.result");
     // Shadows are part of lighting: switched off, no map is rendered and no time is spent on them.
     s->knobs().setFromString("shadows.enabled", "false");

@@ -77,7 +77,7 @@ TEST(FrameGraph, ARegisteredPostPassJoinsThePassListTheOutputsAndTheChain) {
     ASSERT_NE(it, list.end());
     EXPECT_EQ(it->stage, PassStage::Post);
     EXPECT_EQ(it->reads, (std::vector<std::string>{"fxaa.result"}));
-    EXPECT_EQ(std::prev(it)->name, "fxaa");
+    EXPECT_EQ(std::prev(it)->name, "taa");  // after the anti-aliasing passes (ssaa, taa off: it reads FXAA's image)
     ASSERT_NE(s->pipeline().outputs().find("invert.result"), nullptr);
 
     // Off: final is FXAA's image and the pass allocates nothing.

@@ -30,6 +30,8 @@
 #include "shaders/params/sky.h"
 #include "shaders/params/ssao.h"
 #include "shaders/params/ssao_blur.h"
+#include "shaders/params/ssaa.h"
+#include "shaders/params/taa.h"
 #include "shaders/params/gtao.h"
 #include "shaders/params/aov.h"
 #include "shaders/params/tonemap.h"
@@ -65,7 +67,8 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
             describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
-            describe<gpu::GtaoParams>(),      describe<gpu::AovParams>()};
+            describe<gpu::GtaoParams>(),      describe<gpu::AovParams>(),
+            describe<gpu::SsaaParams>(),      describe<gpu::TaaParams>()};
 }
 
 GLenum glType(const std::string& glsl) {

@@ -42,14 +42,14 @@ class AttributeTest(unittest.TestCase):
     def test_every_family_has_its_parts_with_intervals(self):
         names = [f["name"] for f in self.result["families"]]
         self.assertEqual(names, ["shadows", "ao", "light_cutoff", "gbuffer", "texture_filter", "transparency", "bloom",
-                                 "dof", "fxaa"])
+                                 "dof", "aa"])
         for f in self.result["families"]:
             for part in ("removed", "added"):
                 p = f[part]
                 self.assertTrue(p["low"] <= p["value"] <= p["high"], (f["name"], part, p))
         total = self.result["total"]["value"]
         self.assertAlmostEqual(total, self.result["as_is"]["value"] - self.result["all_exact"]["value"], delta=1e-9)
-        fxaa = next(f for f in self.result["families"] if f["name"] == "fxaa")
+        fxaa = next(f for f in self.result["families"] if f["name"] == "aa")
         self.assertEqual(fxaa["removed"]["value"], 0.0)  # FXAA acts after the L-buffer
         self.assertIn("| ao | only exact", self.result["table"])
 

@@ -400,6 +400,8 @@ TEST(ReferenceModel, HonouredKnobsChangeTheKeyIgnoredOnesDoNot) {
     EXPECT_EQ(report.ignoredChanged, (std::vector<std::string>{"lighting.threshold=0.1 (the classic model has no cut-off)",
                                                               "lighting.strategy=tiled"}));
     EXPECT_NE(std::find(report.unmodelledOn.begin(), report.unmodelledOn.end(), "bloom.enabled"), report.unmodelledOn.end());
+    // An enum (the anti-aliasing method, FXAA by default) is named with its value.
+    EXPECT_NE(std::find(report.unmodelledOn.begin(), report.unmodelledOn.end(), "aa.method=fxaa"), report.unmodelledOn.end());
     // Bloom and FXAA matter only to the final image.
     EXPECT_TRUE(reference::reportKnobs(knobs, model, false).unmodelledOn.empty());
 }

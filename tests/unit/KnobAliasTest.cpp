@@ -149,3 +149,49 @@ TEST(TradeoffRunner, ReadsEachAxisValueOnceAndCarriesItTyped) {
     EXPECT_EQ(last.at, (std::vector<size_t>{1, 1, 1}));
     EXPECT_EQ(last.values, (std::vector<std::string>{"1", "volumes", "0.5"}));
 }
+
+// Issue 35: fxaa.enabled became aa.method (several anti-aliasing methods):
+// true stands for aa.method=fxaa and false for none, as its bool took them
+// (any case, 1/0, on/off, yes/no), in --set, a scene's settings, a preset and
+// a sweep, each time warned; a bad value is still refused.
+TEST(KnobAlias, FxaaEnabledIsAnOldNameForAaMethod) {
+    const KnobRegistry declared = RunConfig::declaredKnobs();
+    KnobRegistry k = declared;
+    Warnings w;
+    const int id = *k.find("aa.method");
+    EXPECT_EQ(k.format(id), "fxaa");
+    k.applyAssignment("fxaa.enabled=false");
+    EXPECT_EQ(k.format(id), "none");
+    EXPECT_TRUE(w.contains("knob 'fxaa.enabled' is now 'aa.method'")) << (w.said.empty() ? "" : w.said[0]);
+    EXPECT_TRUE(w.contains("value 'false' is now 'none'"));
+    for (const char* on : {"true", "TRUE", "1", "on", "Yes"}) {
+        k.applyAssignment("aa.method=none");
+        k.applyAssignment(std::string("fxaa.enabled=") + on);
+        EXPECT_EQ(k.format(id), "fxaa") << on;
+    }
+    EXPECT_FALSE(k.find("fxaa.enabled"));
+    EXPECT_THROW(k.applyAssignment("fxaa.enabled=maybe"), Error);
+
+    Scene scene;
+    scene.name = scene.source = "old-fxaa.json";
+    scene.settings = {{"fxaa.enabled", "false"}};
+    KnobRegistry fromScene = declared;
+    RunConfig run;
+    run.applyKnobs(fromScene, scene);
+    EXPECT_EQ(fromScene.format(id), "none");
+
+    const Preset preset = Preset::fromJson(R"({"name": "old", "knobs": {"fxaa.enabled": false}})", "old.json");
+    KnobRegistry fromPreset = declared;
+    const Preset::ApplyReport r = preset.applyKnobs(fromPreset);
+    EXPECT_TRUE(r.ignored.empty());
+    EXPECT_EQ(fromPreset.format(id), "none");
+
+    TradeoffOptions o;
+    o.run.width = 64;
+    o.run.height = 48;
+    o.sweep.axes = {{"fxaa.enabled", {"true", "false"}}};
+    const TradeoffRunner runner(o);
+    ASSERT_EQ(runner.options().sweep.axes.size(), 1u);
+    EXPECT_EQ(runner.options().sweep.axes[0].name, "aa.method");
+    EXPECT_EQ(runner.points().size(), 2u);
+}

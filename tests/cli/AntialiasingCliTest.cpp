@@ -1,0 +1,59 @@
+// The anti-aliasing methods from the command line (issue 35 part 2), as
+// docs/antialiasing.md shows them: an unbuilt method is one line naming those
+// that exist, before anything renders; the old name fxaa.enabled works with
+// its warnings; the methods' own buffers and their pass lines.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "renderer/io/ImageIO.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+namespace fs = std::filesystem;
+
+namespace {
+test::CommandResult run(const std::string& args) { return test::runWorkbench(args); }
+fs::path dir() {
+    const fs::path d = test::tempDir() / "aa-cli";
+    fs::create_directories(d);
+    return d;
+}
+}  // namespace
+
+TEST(AntialiasingCli, AnUnbuiltMethodIsOneLineNamingThoseThatExist) {
+    const fs::path out = dir() / "msaa.png";
+    const auto r = run("render --scene default --size 32x18 --set aa.method=msaa --out " + out.string());
+    EXPECT_NE(r.code, 0);
+    EXPECT_EQ(r.err, "deferred-workbench: error: knob 'aa.method' takes one of: none, fxaa, ssaa, taa; got 'msaa'\n");
+    EXPECT_FALSE(fs::exists(out));
+    const auto f = run("render --scene default --size 32x18 --set aa.ssaa_factor=3 --out " + out.string());
+    EXPECT_NE(f.code, 0);
+    EXPECT_NE(f.err.find("knob 'aa.ssaa_factor' takes one of: 2, 4; got '3'"), std::string::npos) << f.err;
+    EXPECT_EQ(std::count(f.err.begin(), f.err.end(), '\n'), 1) << f.err;
+}
+
+TEST(AntialiasingCli, TheOldNameFxaaEnabledSetsTheMethodWithItsWarnings) {
+    const auto r = run("render --scene spheres --size 32x18 --set fxaa.enabled=false --timings --out " +
+                       (dir() / "old.png").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: knob 'fxaa.enabled' is now 'aa.method' (anti-aliasing has several methods now, "
+                         "chosen by aa.method); the old name still works"),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("warning: knob 'aa.method': value 'false' is now 'none'"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("skipped: switched off (aa.method = none)"), std::string::npos) << r.out;
+}
+
+TEST(AntialiasingCli, EachMethodsBuffersAndPassLine) {
+    const auto s = run("render --scene spheres --size 32x18 --set aa.method=ssaa --set aa.ssaa_factor=4 --timings "
+                       "--buffer ssaa.lbuffer --out " + (dir() / "s.exr").string());
+    ASSERT_EQ(s.code, 0) << s.err;
+    EXPECT_NE(s.out.find("(4x4 samples a pixel, rendered at 128x72)"), std::string::npos) << s.out;
+    EXPECT_EQ(loadImageFloat((dir() / "s.exr").string()).width, 32);
+    const auto t = run("render --scene spheres --size 32x18 --set aa.method=taa --timings --buffer taa.rejected --out " +
+                       (dir() / "t.png").string());
+    ASSERT_EQ(t.code, 0) << t.err;
+    EXPECT_NE(t.out.find("Halton(2,3) point"), std::string::npos) << t.out;
+    EXPECT_TRUE(fs::exists(dir() / "t.png"));
+}

@@ -1,0 +1,209 @@
+// Issue 35 part 2: the anti-aliasing methods of aa.method. Every method
+// renders every built-in scene through every lighting strategy with finite
+// values; SSAA renders the frame at aa.ssaa_factor times the size (capped);
+// TAA's history converges on a still camera to the mean of its jittered
+// frames and is thrown away (taa.rejected) where a camera move brings new
+// pixels into view. SSAA against the footprint reference:
+// tests/reference/AntialiasingReferenceTest.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "renderer/Error.h"
+#include "renderer/passes/SsaaPass.h"
+#include "renderer/passes/TaaPass.h"
+#include "renderer/scene/BuiltinScenes.h"
+#include "tests/support/TestSupport.h"
+
+using namespace dw;
+
+namespace {
+
+std::vector<std::string> choices(const KnobRegistry& k, const std::string& knob) {
+    return k.spec(*k.find(knob)).choices;
+}
+
+bool allFinite(const FloatImage& img) {
+    for (float v : img.pixels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+double meanAbs(const FloatImage& a, const FloatImage& b, const std::vector<size_t>* only = nullptr) {
+    double sum = 0.0;
+    size_t n = 0;
+    auto add = [&](size_t p) {
+        for (int c = 0; c < 3; ++c) sum += std::fabs(a.pixels[p * a.channels + c] - b.pixels[p * b.channels + c]);
+        n += 3;
+    };
+    if (only)
+        for (size_t p : *only) add(p);
+    else
+        for (size_t p = 0; p < static_cast<size_t>(a.width) * a.height; ++p) add(p);
+    return n ? sum / static_cast<double>(n) : 0.0;
+}
+
+}  // namespace
+
+TEST(Antialiasing, TheMethodsAreOneKnobAndAnUnbuiltOneIsRefusedNamingThoseThatExist) {
+    auto s = test::makeSession(32, 18);
+    const auto methods = choices(s->knobs(), "aa.method");
+    EXPECT_EQ(methods, (std::vector<std::string>{"none", "fxaa", "ssaa", "taa"}));
+    EXPECT_EQ(s->knobs().format(*s->knobs().find("aa.method")), "fxaa");  // today's default
+    // SSAA's scale and TAA's jitter change every pass's work: the change-cost
+    // verdict counts every pass as read by the knobs that choose them.
+    for (const char* k : {"aa.method", "aa.ssaa_factor"})
+        EXPECT_TRUE(s->pipeline().knobReaders(*s->knobs().find(k)).count("*")) << k;
+    EXPECT_FALSE(s->pipeline().knobReaders(*s->knobs().find("aa.taa_blend")).count("*"));
+    EXPECT_FALSE(s->pipeline().knobReaders(*s->knobs().find("fxaa.quality")).count("*"));
+    try {
+        s->knobs().applyAssignment("aa.method=msaa");
+        FAIL() << "aa.method=msaa accepted";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("takes one of: none, fxaa, ssaa, taa; got 'msaa'"), std::string::npos) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+    try {
+        s->knobs().applyAssignment("aa.ssaa_factor=3");
+        FAIL() << "aa.ssaa_factor=3 accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("takes one of: 2, 4; got '3'"), std::string::npos) << e.what();
+    }
+}
+
+// Each method (the first test holds this list to the knob's choices) on
+// every built-in scene, transparent ones among them, through every lighting
+// strategy, two frames each (TAA's second with a history).
+class AntialiasingMethod : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(AntialiasingMethod, RendersEveryBuiltinSceneThroughEveryStrategyWithFiniteValues) {
+    const std::string method = GetParam();
+    auto s = test::makeSession(32, 18);
+    FrameRequest request{{"final"}};
+    if (method == "ssaa") request.outputs.push_back("ssaa.lbuffer");
+    if (method == "taa") request.outputs.push_back("taa.rejected");
+    for (const BuiltinSceneInfo& info : builtinScenes()) {
+        s->loadScene(info.name);
+        for (const std::string& strategy : choices(s->knobs(), "lighting.strategy")) {
+            s->knobs().setFromString("lighting.strategy", strategy);
+            s->knobs().setFromString("aa.method", method);
+            const std::string where = info.name + ", " + strategy;
+            s->render(request);
+            const FrameReport r = s->render(request);
+            if (method != "none") {
+                ASSERT_TRUE(r.find(method)->ran) << where << ": " << r.find(method)->reason;
+                EXPECT_EQ(s->pipeline().resolveFinal(), method + ".result") << where;
+            }
+            for (const std::string& o : request.outputs) {
+                const FloatImage img = s->readRaw(o);
+                EXPECT_EQ(img.width, 32) << where << " " << o;
+                EXPECT_TRUE(allFinite(img)) << where << " " << o;
+            }
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, AntialiasingMethod, ::testing::Values("none", "fxaa", "ssaa", "taa"));
+
+TEST(Antialiasing, SsaaRendersTheFrameAtTheFactorAndCapsTheSupersampledSize) {
+    auto s = test::makeSession(40, 24);
+    s->loadScene("spheres");
+    s->knobs().setFromString("aa.method", "ssaa");
+    for (const char* f : {"2", "4"}) {
+        s->knobs().setFromString("aa.ssaa_factor", f);
+        const FrameReport r = s->render({{"final", "lbuffer"}});
+        EXPECT_EQ(s->pipeline().renderScale(), std::stoi(f));
+        EXPECT_EQ(s->readRaw("lbuffer").width, 40 * std::stoi(f));
+        EXPECT_EQ(s->readRaw("final").width, 40);
+        EXPECT_TRUE(r.warnings().empty());
+    }
+    // The cap: 4x4 of 1280x720 would be 5120x2880; 2x2 (2560x1440) fits in 3840x2160.
+    EXPECT_EQ(SsaaPass::cappedFactor(4, 1280, 720), 2);
+    EXPECT_EQ(SsaaPass::cappedFactor(2, 1920, 1080), 2);
+    EXPECT_EQ(SsaaPass::cappedFactor(2, 3840, 2160), 1);
+    EXPECT_EQ(SsaaPass::cappedFactor(4, 20000, 10), 1);  // 16384 a side
+    EXPECT_EQ(SsaaPass::cappedFactor(4, 640, 360), 4);
+    // Switched back, the frame is its own size again.
+    s->knobs().setFromString("aa.method", "none");
+    s->render({{"final", "lbuffer"}});
+    EXPECT_EQ(s->pipeline().renderScale(), 1);
+    EXPECT_EQ(s->readRaw("lbuffer").width, 40);
+}
+
+namespace {
+
+std::unique_ptr<RenderSession> taaSession() {
+    auto s = test::makeSession(64, 36);
+    s->loadScene("spheres");
+    for (const char* k : {"ao.enabled=false", "bloom.enabled=false", "tonemap.auto_exposure=false", "aa.method=taa"})
+        s->knobs().applyAssignment(k);
+    return s;
+}
+
+}  // namespace
+
+// A still camera: the exponential blend of the jittered frames comes to
+// rest near their mean (the jitter cycles through kJitterPeriod points),
+// much nearer than the pixel centres' image is, on the pixels where the
+// jitter matters (edges) and over the whole image.
+TEST(Antialiasing, TaaOnAStillCameraConvergesToTheMeanOfItsJitteredFrames) {
+    auto s = taaSession();
+    s->knobs().setFromString("aa.taa_blend", "1");  // the jittered frame alone
+    FloatImage mean;
+    for (int i = 0; i < TaaPass::kJitterPeriod; ++i) {
+        s->render();
+        const FloatImage f = s->readRaw("final");
+        if (i == 0) mean = FloatImage{f.width, f.height, f.channels, std::vector<float>(f.pixels.size(), 0.0f)};
+        for (size_t p = 0; p < f.pixels.size(); ++p) mean.pixels[p] += f.pixels[p] / TaaPass::kJitterPeriod;
+    }
+    s->knobs().setFromString("aa.taa_blend", "0.1");
+    for (int i = 0; i < 6 * TaaPass::kJitterPeriod; ++i) s->render();
+    const FloatImage converged = s->readRaw("final");
+    s->knobs().setFromString("aa.method", "none");
+    s->render();
+    const FloatImage centres = s->readRaw("final");
+    std::vector<size_t> edges;
+    for (size_t p = 0; p < static_cast<size_t>(mean.width) * mean.height; ++p)
+        if (std::fabs(centres.pixels[p * 4 + 1] - mean.pixels[p * 4 + 1]) > 0.05f) edges.push_back(p);
+    ASSERT_GT(edges.size(), 20u);
+    const double taaEdge = meanAbs(converged, mean, &edges), noneEdge = meanAbs(centres, mean, &edges);
+    const double taaAll = meanAbs(converged, mean);
+    std::printf("TAA after %d still frames: mean |TAA - jittered mean| %.4f on %zu edge pixels (pixel centres %.4f), "
+                "%.4f over the image\n", 6 * TaaPass::kJitterPeriod, taaEdge, edges.size(), noneEdge, taaAll);
+    EXPECT_LT(taaEdge, 0.5 * noneEdge);
+    EXPECT_LT(taaAll, 0.02);
+}
+
+// A camera that moves sideways brings new pixels in at the side it moves
+// to: their history is off screen, thrown away, and taa.rejected says so;
+// on a still camera few pixels are rejected.
+TEST(Antialiasing, TaaRejectsTheHistoryOfPixelsACameraMoveBringsIntoView) {
+    auto s = taaSession();
+    const FrameRequest request{{"final", "taa.rejected"}};
+    for (int i = 0; i < 20; ++i) s->render(request);
+    auto fraction = [](const FloatImage& r, int x0, int x1) {
+        double sum = 0.0;
+        for (int y = 0; y < r.height; ++y)
+            for (int x = x0; x < x1; ++x) sum += r.pixels[(static_cast<size_t>(y) * r.width + x) * r.channels];
+        return sum / ((x1 - x0) * r.height);
+    };
+    const FloatImage still = s->readRaw("taa.rejected");
+    const double stillAll = fraction(still, 0, still.width);
+    Camera& c = s->camera();
+    const glm::vec3 forward = glm::normalize(c.target - c.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    const float step = 0.15f * glm::length(c.target - c.position);
+    c.position += right * step;
+    c.target += right * step;
+    s->render(request);
+    const FloatImage moved = s->readRaw("taa.rejected");
+    const double movedAll = fraction(moved, 0, moved.width), movedRight = fraction(moved, moved.width - 2, moved.width);
+    std::printf("taa.rejected: still %.4f of the pixels; after a move %.4f, the 2 columns brought into view %.4f\n",
+                stillAll, movedAll, movedRight);
+    EXPECT_LT(stillAll, 0.05);
+    EXPECT_GT(movedAll, stillAll);
+    EXPECT_GT(movedRight, 0.5);
+    EXPECT_TRUE(allFinite(s->readRaw("final")));
+}
