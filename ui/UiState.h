@@ -24,6 +24,7 @@
 #include "renderer/scene/LightAnimator.h"
 #include "ui/AbView.h"
 #include "ui/RecordMeasurement.h"
+#include "ui/SceneTimeline.h"
 
 namespace dw::gl {
 class Sampler;
@@ -234,6 +235,7 @@ struct UiState {
     ProbeState probe;
     MessageLog log;
     LightAnimator animator;
+    SceneTimeline timeline;  // the scene's glTF animation: its time, play, loop, speed
     int selectedLight = -1;
     std::string presetsDir;
     std::string scenesDir;
