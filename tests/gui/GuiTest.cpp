@@ -20,6 +20,8 @@
 
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
+#include "renderer/reference/ReferenceJob.h"
+#include "renderer/reference/ReferenceModel.h"
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/support/AnimatedGltf.h"
 #include "tests/support/GltfBuilder.h"
@@ -598,7 +600,8 @@ TEST(Gui, SaveRecordRefusesWhatARecordCannotHold) {
 
 // Issue 36: the Scene panel's timeline poses the scene at its time (scrub),
 // plays by the wall clock and wraps at the clip's end when looping; a record
-// is refused while it plays (paused, it keeps the time shown: RecordMeasurement).
+// is refused while it plays (paused, it keeps the time shown: RecordMeasurement);
+// a scrub withdraws a CPU reference of the pose before.
 TEST(Gui, TheTimelinePosesTheSceneWrapsWhenLoopingAndARecordWaitsForAPause) {
     auto session = test::makeSession(32, 18);
     session->loadScene(test::writeJson("timeline.gltf", test::animatedGltf()).string());
@@ -611,8 +614,16 @@ TEST(Gui, TheTimelinePosesTheSceneWrapsWhenLoopingAndARecordWaitsForAPause) {
     };
     ui::UiState state;
     EXPECT_NEAR(tip().x, 1.0f, 1e-5);  // t = 0: the bind pose
+    const auto model = reference::ReferenceModel::fromKnobs(session->knobs(), session->scene());
+    reference::ReferenceRequest request;
+    request.camera = session->camera();
+    request.width = 32;
+    request.height = 18;
+    const std::string viewAt0 = reference::viewKey(session->scene(), model, request);
     state.timeline.time = 0.5;         // the time slider
     EXPECT_TRUE(state.timeline.advance(*session));
+    // Another pose is another view: a CPU reference shown of the old one is withdrawn (ReferenceControls).
+    EXPECT_NE(reference::viewKey(session->scene(), model, request), viewAt0);
     EXPECT_EQ(session->sceneTime(), 0.5);
     EXPECT_NEAR(tip().x, 1.5f + 0.5f * static_cast<float>(std::sqrt(0.5)), 1e-5);
     EXPECT_FALSE(state.timeline.advance(*session));  // paused: nothing moved, no frame due
