@@ -13,6 +13,10 @@ GltfAnimationImporter::GltfAnimationImporter(const tinygltf::Model& model, const
 
 namespace {
 
+// An accessor index the file may give out of range (GltfModelCheck checks
+// mesh attributes, not morph targets, skins or animation samplers).
+bool accessorIn(const tinygltf::Model& model, int a) { return a >= 0 && static_cast<std::size_t>(a) < model.accessors.size(); }
+
 int attributeOf(const std::map<std::string, int>& attributes, const std::string& name) {
     const auto it = attributes.find(name);
     return it == attributes.end() ? -1 : it->second;
@@ -30,10 +34,16 @@ void GltfAnimationImporter::notePrimitive(const tinygltf::Primitive& prim, int m
     const std::size_t n = origins.size();
     const std::size_t fileVertices = model_.accessors[static_cast<std::size_t>(attributeOf(prim.attributes, "POSITION"))].count;
     // count * comps values of accessor `a`, or empty when absent or of another element count.
+    // (Of the wrong type: a warning, and the part is left out.)
     auto read = [&](int a, int comps, const std::string& name) {
         std::vector<double> v;
-        if (a < 0 || model_.accessors[static_cast<std::size_t>(a)].count != fileVertices) return v;
-        return accessors_.read(a, comps, what + " " + name);
+        if (!accessorIn(model_, a) || model_.accessors[static_cast<std::size_t>(a)].count != fileVertices) return v;
+        try {
+            v = accessors_.read(a, comps, what + " " + name);
+        } catch (const FileError& e) {
+            scene_.warnings.push_back(std::string(e.what()) + " (left out of the pose)");
+        }
+        return v;
     };
     for (int set = 0; set < 2; ++set) {
         const std::string js = "JOINTS_" + std::to_string(set), ws = "WEIGHTS_" + std::to_string(set);
@@ -135,10 +145,14 @@ void GltfAnimationImporter::addSkins() {
         out.inverseBind.assign(skin.joints.size(), glm::mat4(1.0f));
         if (skinUsable(static_cast<int>(s))) {
             for (int j : skin.joints) out.joints.push_back(nodeBase_ + j);
-            if (skin.inverseBindMatrices >= 0 &&
+            if (accessorIn(model_, skin.inverseBindMatrices) &&
                 model_.accessors[static_cast<std::size_t>(skin.inverseBindMatrices)].count >= skin.joints.size()) {
-                const auto m = accessors_.read(skin.inverseBindMatrices, 16, "skins[" + std::to_string(s) + "].inverseBindMatrices");
-                for (std::size_t j = 0; j < skin.joints.size(); ++j) out.inverseBind[j] = glm::mat4(glm::make_mat4(&m[16 * j]));
+                try {
+                    const auto m = accessors_.read(skin.inverseBindMatrices, 16, "skins[" + std::to_string(s) + "].inverseBindMatrices");
+                    for (std::size_t j = 0; j < skin.joints.size(); ++j) out.inverseBind[j] = glm::mat4(glm::make_mat4(&m[16 * j]));
+                } catch (const FileError& e) {
+                    scene_.warnings.push_back(std::string(e.what()) + " (identity used)");
+                }
             }
         } else {
             out.inverseBind.clear();
@@ -157,6 +171,7 @@ bool GltfAnimationImporter::readChannel(const tinygltf::Animation& a, const tiny
     if (c.target_node < 0 || static_cast<std::size_t>(c.target_node) >= model_.nodes.size()) return why = "no target node", false;
     if (c.sampler < 0 || static_cast<std::size_t>(c.sampler) >= a.samplers.size()) return why = "sampler out of range", false;
     const tinygltf::AnimationSampler& s = a.samplers[static_cast<std::size_t>(c.sampler)];
+    if (!accessorIn(model_, s.input) || !accessorIn(model_, s.output)) return why = "sampler accessor out of range", false;
     AnimationSampler out;
     out.interpolation = s.interpolation == "STEP" ? Interpolation::Step
                         : s.interpolation == "CUBICSPLINE" ? Interpolation::CubicSpline : Interpolation::Linear;

@@ -153,3 +153,21 @@ TEST(Animation, DefaultMeshWeightsApplyWithoutAnAnimationAndSkinnedNormalsTurn) 
         if (r.position == glm::vec3(0.0f)) restTangent = glm::vec3(r.tangent);
     expectVec3(glm::vec3(v.tangent), s.animation.nodes[1].rotation * restTangent, "tangent turned with its joint");
 }
+
+// A broken animation part (an accessor index out of range, an accessor of the
+// wrong type) is left out with a warning; the file still loads and the rest plays.
+TEST(Animation, BrokenPartsAreLeftOutWithAWarningAndTheRestPlays) {
+    auto j = test::animatedGltf();
+    j["animations"][0]["samplers"][1]["output"] = 999;                         // rotation sampler: out of range
+    j["meshes"][1]["primitives"][0]["targets"][0]["NORMAL"] = 999;             // a target attribute out of range
+    j["skins"][0]["inverseBindMatrices"] = j["animations"][0]["samplers"][0]["output"];  // VEC3, not MAT4
+    Scene s;
+    importGltf(test::writeJson("animation-broken.gltf", j).string(), s, glm::mat4(1.0f), false);
+    std::string all;
+    for (const auto& w : s.warnings) all += w + "\n";
+    EXPECT_NE(all.find("animations[0].channels[1] skipped: sampler accessor out of range"), std::string::npos) << all;
+    EXPECT_NE(all.find("(identity used)"), std::string::npos) << all;
+    ASSERT_EQ(s.animation.clips.at(0).channels.size(), 2u);  // translation and weights still play
+    ASSERT_TRUE(poseScene(s, 0.5));
+    expectVec3(posed(s, 1, {1, 0, 0}).position, {1, 0, 1}, "the morph still plays without its NORMAL deltas");
+}
