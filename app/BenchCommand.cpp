@@ -338,6 +338,7 @@ int runBenchCommand(int argc, char** argv) {
     }
     BenchOptions o;
     o.run = cl.runConfig();
+    o.run.sceneTime = cl.real("--scene-time").value_or(0.0);
     o.grid.sizes = SweepOptions::readSizes(cl, true);
     o.grid.lights = cl.wholeList("--lights");
     const SweepOptions so = SweepOptions::read(cl, kBench);

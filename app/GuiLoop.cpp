@@ -287,8 +287,8 @@ FrameActivity GuiLoop::activityAfterFrame() const {
     a.scripted = scripted_;
     a.input = events.count != eventsSeen_;
     a.rendered = state.framesRendered != renderedBefore_;
-    a.busy = state.timingCapture || state.animator.running() || state.measure.active() || state.sweep.running() || state.attribution.running() ||
-             state.fitBudget.running() ||
+    a.busy = state.timingCapture || state.animator.running() || state.timeline.running() || state.measure.active() ||
+             state.sweep.running() || state.attribution.running() || state.fitBudget.running() ||
              state.recordRun.running() || state.timingsPending || state.forceRender || state.requestScreenshot ||
              state.requestRenderDocCapture || state.requestReference || state.requestReloadShaders ||
              state.requestOpenScene || state.requestQuit || !events.dropped.empty() ||

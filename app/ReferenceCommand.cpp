@@ -17,6 +17,7 @@
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/SceneLoader.h"
+#include "renderer/scene/ScenePose.h"
 
 namespace dw {
 
@@ -99,6 +100,7 @@ void checkOptions(const ReferenceOptions& o) {
 ReferenceOptions readOptions(CommandLine& cl) {
     ReferenceOptions o;
     o.run = cl.runConfig();
+    o.run.sceneTime = cl.real("--scene-time").value_or(0.0);
     std::tie(o.run.width, o.run.height) = cl.size().value_or(std::pair{1280, 720});
     o.buffer = cl.value("--buffer").value_or("lbuffer");
     const auto out = cl.value("--out");
@@ -232,7 +234,8 @@ int runReferenceCommand(int argc, char** argv) {
     const ReferenceOptions o = readOptions(cl);
     RunConfig run = o.run;
     run.validate();
-    const Scene scene = loadScene(run.sceneSpec());
+    Scene scene = loadScene(run.sceneSpec());
+    poseScene(scene, run.sceneTime);  // the pose the GPU renders at --scene-time
     for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     KnobRegistry knobs = RunConfig::declaredKnobs();
     run.applyKnobs(knobs, scene);

@@ -97,6 +97,7 @@ void readReferenceOptions(CommandLine& cl, RenderOptions& o) {
 RenderOptions readOptions(CommandLine& cl) {
     RenderOptions o;
     o.run = cl.runConfig();
+    o.run.sceneTime = cl.real("--scene-time").value_or(0.0);
     std::tie(o.run.width, o.run.height) = cl.size().value_or(std::pair{1280, 720});
     o.run.frames = cl.whole("--frames", 1);
     o.buffer = cl.value("--buffer").value_or("final");

@@ -111,6 +111,7 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     run.height = old.height;
     run.frames = old.frames;
     run.warmup = old.warmup;
+    run.sceneTime = old.sceneTime;
     auto context = HeadlessGlContext::create();
     RenderSession session;
     for (const auto& [k, v] : old.gl)

@@ -67,6 +67,7 @@ int runTradeoffAttribute(int argc, char** argv) {
     }
     AttributionOptions o;
     o.run = cl.runConfig();
+    o.run.sceneTime = cl.real("--scene-time").value_or(0.0);
     const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     o.run.width = w;
     o.run.height = h;

@@ -409,6 +409,7 @@ int runTradeoffCommand(int argc, char** argv) {
     const SweepOptions so = SweepOptions::read(cl, kTradeoff);
     TradeoffStudyOptions s;
     s.run = cl.runConfig();
+    s.run.sceneTime = cl.real("--scene-time").value_or(0.0);
     const auto [w, h] = SweepOptions::readSizes(cl, false).front();
     s.run.width = w;
     s.run.height = h;

@@ -151,8 +151,10 @@ py::list bufferList(const WorkbenchSession& s, bool details) {
 py::array render(WorkbenchSession& s, const std::string& buffer, const py::object& framesObject,
                  const py::object& warmupObject, std::optional<std::string> record, const py::object& aoRays,
                  const py::object& seed, const py::object& threads, bool cache, std::optional<std::string> cacheDir,
-                 const py::object& progress, const py::object& spp) {
+                 const py::object& progress, const py::object& spp, const py::object& sceneTime) {
     const int frames = intArg(framesObject, "render: frames", limits::kFrames, "render --frames");
+    std::optional<double> time;
+    if (!sceneTime.is_none()) time = numberArg(sceneTime, "render: scene_time", limits::kSceneTime, "render --scene-time");
     const int warmup = intArg(warmupObject, "render: warmup", limits::kWarmup, "render --warmup");
     ReferenceOptions ro = referenceOptions("render", aoRays, seed, threads, cache, cacheDir);
     ro.pixelSamples = intArg(spp, "render: spp", limits::kPixelSamples, "render --spp");
@@ -160,6 +162,7 @@ py::array render(WorkbenchSession& s, const std::string& buffer, const py::objec
     requirePath(record, "render: record");
     s.checkRender(buffer, frames, warmup);
     if (record) s.checkRecordStart(std::nullopt, "this render()");
+    if (time) s.setSceneTime(*time);
     const bool needsReference = s.isReferenceOutput(buffer);
     if (needsReference && record)
         throw py::value_error("render: record= with '" + buffer + "', an output of the CPU reference: "
@@ -199,6 +202,12 @@ py::dict probe(const WorkbenchSession& s, const py::object& x, const py::object&
 void bindKnobs(SessionClass& c) {
     c.def_property_readonly("size", [](const WorkbenchSession& s) { return py::make_tuple(s.width(), s.height()); })
         .def_property_readonly("scene", &WorkbenchSession::sceneName)
+        .def_property(
+            "scene_time", &WorkbenchSession::sceneTime,
+            [](WorkbenchSession& s, const py::object& t) {
+                s.setSceneTime(numberArg(t, "scene_time", limits::kSceneTime, "render --scene-time"));
+            },
+            "The scene time (seconds) the scene's glTF animation is posed at for render() and reference().")
         .def("resize",
              [](WorkbenchSession& s, const py::object& w, const py::object& h) {
                  s.resize(intArg(w, "resize: width", limits::kSize, "--size"), intArg(h, "resize: height", limits::kSize, "--size"));
@@ -225,8 +234,10 @@ void bindFrames(SessionClass& c) {
     c.def("render", &render, py::arg("buffer") = "final", py::arg("frames") = 1, py::arg("warmup") = 0,
           py::arg("record") = py::none(), py::arg("ao_rays") = 64, py::arg("seed") = 1, py::arg("threads") = 0,
           py::arg("cache") = true, py::arg("cache_dir") = py::none(), py::arg("progress") = py::none(),
-          py::arg("spp") = 1,
+          py::arg("spp") = 1, py::arg("scene_time") = py::none(),
           "Renders warmup + frames frames and returns `buffer` of the last: H x W x C, top row first;\n"
+          "scene_time=T (seconds, as render --scene-time) poses the scene's glTF animation at T first and\n"
+          "stays (the `scene_time` property; reference() traces the same pose).\n"
           "uint8 for 8-bit display outputs (final, tonemap.result, ...), float32 for the rest.\n"
           "record=PATH also writes the experiment record render --record writes (replay measures it again).\n"
           "reference.lbuffer, reference.final, reference.ao, reference.spp_error and compare.error: the CPU reference\n"

@@ -288,6 +288,13 @@ reference::ReferenceImages WorkbenchSession::reference(const ReferenceOptions& o
         .images;
 }
 
+void WorkbenchSession::setSceneTime(double seconds) {
+    requireOwningThread();
+    run_.sceneTime = seconds;
+    session_->setSceneTime(seconds);
+    session_->poseAtSceneTime();
+}
+
 void WorkbenchSession::resize(int width, int height) {
     requireOwningThread();
     if (width < 1 || height < 1 || width > 16384 || height > 16384)

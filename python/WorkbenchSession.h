@@ -123,6 +123,10 @@ public:
                                          std::optional<std::uint64_t> frame = std::nullopt) const;
 
     void resize(int width, int height);
+    // The scene time (seconds) the scene's glTF animation is posed at, for
+    // render() and reference() alike (render --scene-time); posed now.
+    void setSceneTime(double seconds);
+    double sceneTime() const { return run_.sceneTime; }
     int width() const { return width_; }
     int height() const { return height_; }
     const std::string& sceneName() const;

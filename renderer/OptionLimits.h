@@ -60,6 +60,7 @@ constexpr RealRange kPixelsPerDegree{1, 1000};
 constexpr RealRange kLightRadius{0, kFloatMax, true};  // bench --light-radius: world units, above 0
 constexpr RealRange kBudgetMs{0, 1e9, true};            // tradeoff --budget-ms: milliseconds, above 0
 constexpr RealRange kBudget{0, 1e18, true};             // tradeoff --budget: a counter's unit (fragments, bytes ...), above 0
+constexpr RealRange kSceneTime{0, 1e6};                 // --scene-time: seconds of the scene's animation
 }  // namespace limits
 
 // How an option's value is written.
@@ -96,6 +97,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"gui", "--frames", F::Whole, kGuiFrames, "frames, 0: until closed"},
     {"render", "--size", F::Size, kSize, "pixels"},
     {"render", "--frames", F::Whole, kFrames, "counted frames"},
+    {"render", "--scene-time", kSceneTime, "seconds of the scene's animation"},
     {"render", "--warmup", F::Whole, kWarmup, "frames"},
     {"render", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"render", "--seed", F::Whole, kSeed, "seed"},
@@ -104,6 +106,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"bench", "--size", F::SizeList, kSize, "pixels"},
     {"bench", "--lights", F::WholeList, kBenchLights, "lights"},
     {"bench", "--frames", F::Whole, kFrames, "counted frames"},
+    {"bench", "--scene-time", kSceneTime, "seconds of the scene's animation"},
     {"bench", "--warmup", F::Whole, kWarmup, "frames"},
     {"bench", "--block", F::Whole, kBlock, "frames in a row"},
     {"bench", "--resamples", F::Whole, kResamples, "bootstrap resamples"},
@@ -116,12 +119,14 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"bench merge", "--resamples", F::Whole, kResamples, "bootstrap resamples"},
     {"bench merge", "--plot-size", F::Size, kPlotSize, "pixels"},
     {"reference", "--size", F::Size, kSize, "pixels"},
+    {"reference", "--scene-time", kSceneTime, "seconds of the scene's animation"},
     {"reference", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"reference", "--seed", F::Whole, kSeed, "seed"},
     {"reference", "--spp", F::Whole, kPixelSamples, "samples per pixel"},
     {"reference", "--threads", F::Whole, kReferenceThreads, "threads, 0: every core"},
     {"tradeoff", "--size", F::Size, kSize, "pixels"},
     {"tradeoff", "--frames", F::Whole, kFrames, "counted frames"},
+    {"tradeoff", "--scene-time", kSceneTime, "seconds of the scene's animation"},
     {"tradeoff", "--warmup", F::Whole, kWarmup, "frames"},
     {"tradeoff", "--block", F::Whole, kBlock, "frames in a row"},
     {"tradeoff", "--resamples", F::Whole, kResamples, "bootstrap resamples"},

@@ -9,6 +9,7 @@
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/reference/ReferenceRenderer.h"
 #include "renderer/scene/SceneLoader.h"
+#include "renderer/scene/ScenePose.h"
 
 namespace dw {
 
@@ -27,14 +28,21 @@ void RenderSession::setScene(Scene scene, const RunConfig& run) {
     KnobRegistry next = knobs_;
     run.applyKnobs(next, scene);
     auto uploaded = std::make_unique<Scene>(std::move(scene));
+    poseScene(*uploaded, run.sceneTime);
     pipeline_.setScene(*uploaded);
+    sceneTime_ = run.sceneTime;
     scene_ = std::move(uploaded);
     camera_ = run.camera(*scene_);
     knobs_.copyValues(next);
 }
 
+void RenderSession::poseAtSceneTime() {
+    if (poseScene(*scene_, sceneTime_)) pipeline_.updatePose(*scene_);
+}
+
 FrameReport RenderSession::render(const FrameRequest& request) {
     animateFlameParticles(*scene_, pipeline_.frameIndex());
+    poseAtSceneTime();
     return pipeline_.render(camera_, request);
 }
 

@@ -27,14 +27,23 @@ public:
 
     // Loads a built-in scene, scene JSON or glTF. Knobs and camera start as
     // `run` says (RunConfig: defaults, the scene's settings, the preset, --set;
-    // the preset's camera on its own scene): every load starts from the
-    // defaults, so nothing carries over from the scene before. If anything
-    // throws, the previous scene, knobs and camera stay.
+    // the preset's camera on its own scene; the scene time, sceneTime(), at
+    // which the scene is posed): every load starts from the defaults, so
+    // nothing carries over from the scene before. If anything throws, the
+    // previous scene, knobs and camera stay.
     void loadScene(const std::string& spec, const RunConfig& run = {});
     void setScene(Scene scene, const RunConfig& run = {});
     void resize(int width, int height) { pipeline_.resize(width, height); }
-    // Moves the scene's flame particles (if any) to the frame's index first.
+    // Moves the scene's flame particles (if any) to the frame's index first,
+    // and poses its animation (skins, morph targets, clips) at sceneTime().
     FrameReport render(const FrameRequest& request = {});
+    // The scene time the frames are rendered at (seconds; --scene-time):
+    // the glTF animation is evaluated there (clamped to each clip's range).
+    void setSceneTime(double seconds) { sceneTime_ = seconds; }
+    double sceneTime() const { return sceneTime_; }
+    // Poses the scene at sceneTime() now (render() does it too): for readers
+    // of scene() before the next frame, such as the CPU reference.
+    void poseAtSceneTime();
 
     // A named output as raw floats (for .exr) or as the buffer view shows it
     // (.png); any kind, laid out as the buffer view lays it out (the layer and
@@ -77,6 +86,7 @@ private:
     BufferView view_;
     std::unique_ptr<Scene> scene_;
     Camera camera_;
+    double sceneTime_ = 0.0;
 };
 
 }  // namespace dw

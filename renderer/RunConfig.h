@@ -32,6 +32,9 @@ public:
     int width = 1280, height = 720;
     int frames = 1;   // frames counted (the window: 0 runs until it is closed)
     int warmup = 0;   // frames rendered before counting starts, left out of timings
+    // --scene-time: the scene time (seconds) its glTF animation is posed at
+    // (skins, morph targets, clips; Animation.h). RenderSession::setScene takes it.
+    double sceneTime = 0.0;
 
     // --preset: a built-in preset's name, else a preset file. Throws Error when
     // it is neither, FileError when the file is not a preset. setPreset

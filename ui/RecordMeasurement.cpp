@@ -39,6 +39,9 @@ void requireReplayableScene(const UiState& state, const Scene& scene) {
     if (state.animator.running())
         throw Error("the lights are animated (Lights > animate): a record holds the scene file's lights; stop the "
                     "animation, put the lights back, then save");
+    if (state.timeline.running())
+        throw Error("the scene's animation is playing (Scene > animation): a record holds one scene time; pause it, "
+                    "then save (the record keeps the time shown)");
     if (scene.source.empty()) return;
     const Scene file = loadScene(scene.source);
     std::string edited;
@@ -180,6 +183,7 @@ void RecordMeasurement::finish(UiState& state, RenderSession& session) {
         run.height = height_;
         run.frames = frames_;
         run.warmup = warmup_;
+        run.sceneTime = session.sceneTime();  // the Scene panel's timeline
         const RunnerTimings timings = runner_->finish();
         runner_.reset();
         std::uint64_t first = 0;

@@ -101,8 +101,8 @@ void ReferenceControls::update(UiState& state, RenderSession& session) {
         else state.log.error("CPU reference failed: " + e, state.time, "reference");
     }
     if (!shownKey_.empty() && currentKey(session) != shownKey_) {
-        pass->setReference(nullptr, "the view changed since the CPU reference (camera, size, lights or a knob of the "
-                                    "model): render it again (F9)");
+        pass->setReference(nullptr, "the view changed since the CPU reference (camera, size, lights, the scene time or a "
+                                    "knob of the model): render it again (F9)");
         shownKey_.clear();
         state.forceRender = true;
     }

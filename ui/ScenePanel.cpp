@@ -76,6 +76,7 @@ bool openScene(UiState& state, RenderSession& session, const std::string& spec) 
     try {
         if (state.animator.running()) state.animator.stop(session.mutableScene());
         session.loadScene(spec, state.run);
+        state.timeline.reset();
         state.selectedLight = -1;
         state.probe.pinned = false;
         state.log.info("opened scene " + session.scene().name + " (" + spec + ")", state.time);
@@ -200,6 +201,7 @@ void ScenePanel::draw(const char* title, bool* open, UiState& state, RenderSessi
         ImGui::SameLine();
         if (ImGui::Button("frame everything")) c = Camera::framing(scene.bounds());
     }
+    state.timeline.draw(session);
     ImGui::End();
 }
 

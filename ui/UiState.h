@@ -25,6 +25,7 @@
 #include "ui/AbView.h"
 #include "ui/FitBudgetRun.h"
 #include "ui/RecordMeasurement.h"
+#include "ui/SceneTimeline.h"
 
 namespace dw::gl {
 class Sampler;
@@ -235,6 +236,7 @@ struct UiState {
     ProbeState probe;
     MessageLog log;
     LightAnimator animator;
+    SceneTimeline timeline;  // the scene's glTF animation: its time, play, loop, speed
     int selectedLight = -1;
     std::string presetsDir;
     std::string scenesDir;

@@ -45,6 +45,7 @@ void ViewportComposer::followViewport(UiState& state) {
         }
     }
     state.animator.update(session_.mutableScene(), state.frame);
+    if (state.timeline.advance(session_)) state.forceRender = true;
 }
 
 void ViewportComposer::stepBackgroundWork(UiState& state) {
@@ -97,7 +98,8 @@ void ViewportComposer::renderOnChange(UiState& state) {
     // Counted by attempts, not by frames that worked: a preset that does not
     // render (or a failing frame) must not keep the window rendering.
     const bool abMore = ab && !measuring && abRenders_ < kAbFrames;
-    const bool needed = state.timingCapture || state.animator.running() || state.forceRender || changed || abMore;
+    const bool needed = state.timingCapture || state.animator.running() || state.timeline.running() || state.forceRender ||
+                        changed || abMore;
     state.forceRender = false;
     // The probe's values describe the image they were read from: another
     // image (a scene opened, the camera moved) with the probe neither

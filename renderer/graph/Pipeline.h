@@ -67,6 +67,8 @@ public:
     // The rest need a current GL 4.5 context.
     void setup(gl::ShaderLibrary& shaders);
     void setScene(const Scene& scene);  // uploads; `scene` must outlive its use here
+    // The scene set before, posed again (poseScene): its moved vertices and draws re-uploaded.
+    void updatePose(const Scene& scene) { gpu_.updatePose(scene); }
     void resize(int width, int height);
     // Renders one frame. Throws dw::Error if a requested output is unknown or
     // could not be produced (the message says why).

@@ -332,6 +332,7 @@ ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConf
     r.height = run.height;
     r.frames = run.frames;
     r.warmup = run.warmup;
+    r.sceneTime = run.sceneTime;
     r.buffer = buffer;
     r.build = buildFields();
     const gl::GlInfo& info = session.glInfo();
@@ -411,6 +412,7 @@ ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Sc
     r.seeds = {{"lights", std::to_string(o.seed)}, {"bootstrap", std::to_string(kBootstrapSeed)}};
     r.frames = o.frames;
     r.warmup = o.warmup;
+    r.sceneTime = o.run.sceneTime;
     if (!o.grid.sizes.empty()) std::tie(r.width, r.height) = o.grid.sizes.front();
     r.bench = bench;
     r.bench->merged = false;
@@ -541,6 +543,7 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
     r.knobs = knobFields(knobs);
     r.frames = o.frames;
     r.warmup = o.warmup;
+    r.sceneTime = o.run.sceneTime;
     r.width = o.run.width;
     r.height = o.run.height;
     r.buffer = o.buffer;
@@ -766,6 +769,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["size"] = Json::array({width, height});
     j["frames"] = frames;
     j["warmup"] = warmup;
+    j["scene_time"] = sceneTime;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
     if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}};
     if (bench) j["grid"] = benchGridJson(*bench);
@@ -839,6 +843,7 @@ void readBenchGrid(ExperimentRecord& r, const RecordField& root, const RecordFie
     for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
     o.frames = r.frames;
     o.warmup = r.warmup;
+    o.run.sceneTime = r.sceneTime;
     o.seed = seedField(r.seeds, "lights", path);
     if (!b.merged) {
         for (const F& s : g.at("sizes").items()) o.grid.sizes.push_back(sizeField(s.str(), path, s.where()));
@@ -874,6 +879,7 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
     for (const auto& [k, value] : r.knobs) o.run.sets.push_back(k + "=" + value);
     o.frames = r.frames;
     o.warmup = r.warmup;
+    o.run.sceneTime = r.sceneTime;
     if (!t.merged) {
         for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
         o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
@@ -1070,6 +1076,12 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
         r.height = wholeNumber(size.json()[1], path, "size height", orZero(limits::kSize), "--size");
         r.frames = root.at("frames").whole(orZero(limits::kFrames), "--frames");
         r.warmup = root.at("warmup").whole(limits::kWarmup, "--warmup");
+        if (root.has("scene_time")) {
+            const F t = root.at("scene_time");
+            r.sceneTime = t.number32();
+            if (!limits::kSceneTime.holds(r.sceneTime))
+                t.refuse(t.shown() + " is outside --scene-time's range 0..1000000 (seconds)");
+        }
         // The one definition of a usable camera (a zero up vector renders nothing useful).
         if (const auto problem = findCameraProblem(r.camera, 0.0f))
             throw FileError(path, recordCameraField(problem->field) + ": " + problem->what);

@@ -14,6 +14,7 @@ std::string viewKey(const Scene& scene, const ReferenceModel& model, const Refer
     s << scene.source << "|" << request.width << "x" << request.height << "|" << c.position.x << "," << c.position.y << ","
       << c.position.z << "|" << c.target.x << "," << c.target.y << "," << c.target.z << "|" << c.up.x << "," << c.up.y
       << "," << c.up.z << "|" << c.fovYDegrees << "," << c.nearPlane << "," << c.farPlane << "|" << model.canonical();
+    if (!scene.animation.empty()) s << "|t=" << scene.animation.posedAt;  // the pose (the Scene panel's timeline)
     for (const Light& l : scene.lights)
         s << "|" << l.enabled << l.castShadows << l.position.x << "," << l.position.y << "," << l.position.z << ","
           << l.direction.x << "," << l.direction.y << "," << l.direction.z << "," << l.intensity.r << "," << l.intensity.g

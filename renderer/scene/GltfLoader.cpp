@@ -18,12 +18,14 @@
 #include "renderer/io/JsonGuard.h"
 #include "renderer/io/TextFile.h"
 #include "renderer/scene/GltfAccessors.h"
+#include "renderer/scene/GltfAnimation.h"
 #include "renderer/scene/GltfCheck.h"
 #include "renderer/scene/GltfLights.h"
 #include "renderer/scene/GltfMaterials.h"
 #include "renderer/scene/GltfModelCheck.h"
 #include "renderer/scene/GltfSchema.h"
 #include "renderer/scene/NormalGenerator.h"
+#include "renderer/scene/ScenePose.h"
 #include "renderer/scene/TangentGenerator.h"
 
 namespace dw {
@@ -173,9 +175,19 @@ public:
         check.noteInvalid(invalid_);
         materials_.importImages();
         materials_.importMaterials();
+        animation_.begin(root);
         importMeshes();
         GltfImport result;
+        const std::size_t firstInstance = scene_.instances.size();
         walkScene(root, lightsAndCamera, result);
+        animation_.finish();
+        // Every reader of the scene sees the pose at t = 0 until posed again,
+        // the camera framing it included.
+        if (poseScene(scene_, 0.0)) {
+            result.bounds = Bounds{};
+            for (std::size_t i = firstInstance; i < scene_.instances.size(); ++i)
+                result.bounds.add(scene_.meshes[scene_.instances[i].mesh].bounds.transformed(scene_.instances[i].transform));
+        }
         warnInvalid();
         warnIgnored(check);
         return result;
@@ -210,10 +222,13 @@ private:
                 const auto& prim = mesh.primitives[pi];
                 const std::string what = "mesh[" + std::to_string(mi) + "] '" + mesh.name + "' primitive " + std::to_string(pi);
                 Mesh out;
-                if (!buildPrimitive(prim, what, out)) continue;
+                std::vector<std::uint32_t> origins;
+                const bool deforms = animation_.deforms(prim);
+                if (!buildPrimitive(prim, what, out, deforms ? &origins : nullptr)) continue;
                 out.name = mesh.name.empty() ? "mesh" + std::to_string(mi) : mesh.name;
                 out.material = materials_.sceneMaterial(prim.material);
                 meshMap_[mi].push_back(scene_.addMesh(std::move(out)));
+                if (deforms) animation_.notePrimitive(prim, meshMap_[mi].back(), origins, what);
             }
         }
     }
@@ -227,7 +242,10 @@ private:
     // vertex carries every attribute of the one it came from. (Tangents read
     // after the split were counted against the grown vertex list and the
     // file refused.) An attribute added to Vertex later is read here too.
-    bool buildPrimitive(const tinygltf::Primitive& prim, const std::string& what, Mesh& out) {
+    // `origins`, when given, receives which file vertex each vertex of `out`
+    // was copied from (skins and morph targets are per file vertex).
+    bool buildPrimitive(const tinygltf::Primitive& prim, const std::string& what, Mesh& out,
+                        std::vector<std::uint32_t>* origins = nullptr) {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
             scene_.warnings.push_back(path_ + ": " + what + " is points or lines; skipped");
@@ -235,6 +253,8 @@ private:
         }
         const size_t n = readPositions(prim, what, out);
         readTexCoordsAndColour(prim, what, out);
+        std::vector<glm::vec4> colours;
+        if (origins) colours = tagOrigins(out);
         const bool fileTangents = readTangents(prim, what, out);
         toTriangleList(mode, readIndices(prim, what, n), out);
         if (out.indices.empty()) {
@@ -245,8 +265,31 @@ private:
         // glTF 2.0 3.7.2.1: without NORMAL the flat normals are computed and
         // "the provided tangents (if present) MUST be ignored".
         if (!fileTangents || !fileNormals) generateTangents(out, UvConvention::GltfVDown);
+        if (origins) *origins = untagOrigins(out, colours);
         out.computeBounds();
         return true;
+    }
+
+    // The steps after reading copy whole Vertex records when they add a
+    // vertex and never read the colour: the file vertex's index rides in
+    // colour.r (exact below 2^24) and comes out after them. Returns the colours.
+    std::vector<glm::vec4> tagOrigins(Mesh& out) const {
+        if (out.vertices.size() >= (std::size_t(1) << 24)) fail("a skinned or morphed primitive has 2^24 vertices or more");
+        std::vector<glm::vec4> colours;
+        colours.reserve(out.vertices.size());
+        for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+            colours.push_back(out.vertices[i].color);
+            out.vertices[i].color.r = static_cast<float>(i);
+        }
+        return colours;
+    }
+    static std::vector<std::uint32_t> untagOrigins(Mesh& out, const std::vector<glm::vec4>& colours) {
+        std::vector<std::uint32_t> origins(out.vertices.size());
+        for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+            origins[i] = static_cast<std::uint32_t>(out.vertices[i].color.r);
+            out.vertices[i].color = colours[origins[i]];
+        }
+        return origins;
     }
 
     // The accessor of the primitive's attribute `name`, or -1.
@@ -447,6 +490,7 @@ private:
             if (node.mesh >= 0) {
                 for (int m : meshMap_[node.mesh]) {
                     scene_.instances.push_back({m, world});
+                    animation_.noteInstance(ni, static_cast<int>(scene_.instances.size() - 1));
                     result.bounds.add(scene_.meshes[m].bounds.transformed(world));
                 }
             }
@@ -492,6 +536,7 @@ private:
     std::vector<std::string> invalid_;  // spec rules broken but read past (warnInvalid)
     GltfAccessorReader accessors_{model_, path_};
     GltfMaterialImporter materials_{model_, path_, scene_};  // also tinygltf's image loader
+    GltfAnimationImporter animation_{model_, path_, scene_, accessors_};
     std::vector<std::vector<int>> meshMap_;
 };
 

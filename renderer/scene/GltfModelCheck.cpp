@@ -109,8 +109,8 @@ void GltfModelCheck::validate() const {
 }
 
 // Rules of the spec ("Skins", "Morph Targets") whose breaking does not
-// stop the file from drawing, since the workbench draws neither skins nor
-// morph targets: named for the "invalid glTF (drawn anyway)" warning.
+// stop the file from drawing (the animation importer skips a skin or morph
+// target it cannot use): named for the "invalid glTF (drawn anyway)" warning.
 void GltfModelCheck::noteInvalid(std::vector<std::string>& invalid) const {
     auto targetCount = [&](size_t mesh) { return model_.meshes[mesh].primitives.empty() ? size_t(0)
                                                                                            : model_.meshes[mesh].primitives[0].targets.size(); };
@@ -200,12 +200,6 @@ void GltfModelCheck::checkNodeGraph() const {
 
 std::vector<std::string> GltfModelCheck::ignoredFeatures(bool ignoredUvSets) const {
     std::vector<std::string> parts;
-    if (!model_.skins.empty()) parts.push_back(std::to_string(model_.skins.size()) + " skin(s)");
-    size_t morphed = 0;
-    for (const auto& m : model_.meshes)
-        for (const auto& p : m.primitives) morphed += p.targets.empty() ? 0 : 1;
-    if (morphed > 0) parts.push_back("morph targets on " + std::to_string(morphed) + " primitive(s)");
-    if (!model_.animations.empty()) parts.push_back(std::to_string(model_.animations.size()) + " animation(s)");
     if (ignoredUvSets) parts.push_back("texture coordinate sets beyond TEXCOORD_1 (TEXCOORD_0 used)");
     // KHR_lights_punctual's range (a distance where a light stops): the
     // light volumes end where the 1/d^2 falloff drops under

@@ -37,7 +37,7 @@ public:
     // breaks that do not stop it from drawing.
     void noteInvalid(std::vector<std::string>& invalid) const;
 
-    // What the file uses that the workbench does not draw ("1 skin(s)", ...).
+    // What the file uses that the workbench does not draw (a KHR_lights_punctual range, an extension, ...).
     std::vector<std::string> ignoredFeatures(bool ignoredUvSets) const;
 
     static bool isSupportedExtension(const std::string& ext);

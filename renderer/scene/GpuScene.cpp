@@ -113,7 +113,8 @@ void GpuScene::upload(const Scene& scene) {
         verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
         idx.insert(idx.end(), m.indices.begin(), m.indices.end());
     }
-    vertices_ = gl::Buffer::fromVector(verts, false, "scene vertices");
+    for (const Range& r : ranges) baseVertex_.push_back(r.baseVertex);
+    vertices_ = gl::Buffer::fromVector(verts, scene.animation.moves(), "scene vertices");
     indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
     vao_ = gl::VertexArray::create();
     vao_.setVertexBuffer(0, vertices_, 0, sizeof(Vertex));
@@ -176,32 +177,50 @@ void GpuScene::upload(const Scene& scene) {
         glTextureParameteri(environment_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     }
 
-    std::vector<Bounds> meshBounds(scene.meshes.size());
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m)
-        for (const Vertex& v : scene.meshes[m].vertices) meshBounds[m].add(v.position);
-    for (const MeshInstance& inst : scene.instances) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const MeshInstance& inst = scene.instances[i];
         const Mesh& mesh = scene.meshes[inst.mesh];
         Draw d;
         d.mesh = inst.mesh;
+        d.instance = static_cast<int>(i);
         d.material = mesh.material;
-        d.model = inst.transform;
         d.indexCount = ranges[inst.mesh].count;
         d.indexOffsetBytes = ranges[inst.mesh].firstIndex * sizeof(std::uint32_t);
         d.baseVertex = ranges[inst.mesh].baseVertex;
         d.alphaMode = scene.materials[mesh.material].alphaMode;
         d.doubleSided = scene.materials[mesh.material].doubleSided;
-        d.mirrored = glm::determinant(glm::mat3(d.model)) < 0.0f;
-        const Bounds& local = meshBounds[static_cast<std::size_t>(inst.mesh)];
-        if (!local.empty())
-            for (int corner = 0; corner < 8; ++corner) {
-                const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
-                                  (corner & 4) ? local.max.z : local.min.z);
-                d.bounds.add(glm::vec3(d.model * glm::vec4(p, 1.0f)));
-            }
+        place(d, scene);
         draws_.push_back(d);
     }
     // Group by material to save texture binds.
     std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
+}
+
+// The box from the mesh's vertices (not Mesh::bounds, which a caller may
+// leave unset): O(vertices) per instance, as the draw's upload itself.
+void GpuScene::place(Draw& d, const Scene& scene) {
+    d.model = scene.instances[static_cast<std::size_t>(d.instance)].transform;
+    d.mirrored = glm::determinant(glm::mat3(d.model)) < 0.0f;
+    Bounds local;
+    for (const Vertex& v : scene.meshes[static_cast<std::size_t>(d.mesh)].vertices) local.add(v.position);
+    d.bounds = Bounds{};
+    if (!local.empty())
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? local.max.x : local.min.x, (corner & 2) ? local.max.y : local.min.y,
+                              (corner & 4) ? local.max.z : local.min.z);
+            d.bounds.add(glm::vec3(d.model * glm::vec4(p, 1.0f)));
+        }
+}
+
+void GpuScene::updatePose(const Scene& scene) {
+    if (scene.animation.empty() || draws_.empty()) return;
+    for (const Deformer& d : scene.animation.deformers) {
+        const std::vector<Vertex>& v = scene.meshes[static_cast<std::size_t>(d.mesh)].vertices;
+        vertices_.update(static_cast<std::size_t>(baseVertex_[static_cast<std::size_t>(d.mesh)]) * sizeof(Vertex),
+                         v.size() * sizeof(Vertex), v.data());
+    }
+    for (Draw& d : draws_) place(d, scene);
+    bounds_ = scene.bounds();
 }
 
 // Bound as a run of four from MATERIAL_BASE_COLOR_TEXTURE (shaders/common/material_eval.glsl).

@@ -34,16 +34,22 @@ public:
         // "Transformations").
         bool mirrored = false;
         Bounds bounds;  // world-space box of the instance (its mesh's box under `model`)
+        int instance = 0;  // into Scene::instances
     };
     enum class Filter { Opaque, Blend, All };
 
     // Call on a fresh GpuScene.
     void upload(const Scene& scene);
+    // After poseScene (ScenePose.h) posed the uploaded scene at another time:
+    // the deformed meshes' vertices written again (their range of the vertex
+    // buffer, which is dynamic for a scene with animation), every draw's
+    // model matrix and box, and the scene's bounds. No-op without animation.
+    void updatePose(const Scene& scene);
     bool empty() const { return draws_.empty(); }
     const std::vector<Draw>& draws() const { return draws_; }
     // Of the uploaded geometry, which does not change until the next upload
     // (the workbench edits lights, not meshes): computed once, read per frame.
-    const Bounds& bounds() const { return bounds_; }
+    const Bounds& bounds() const { return bounds_; }  // (of the pose last uploaded)
     std::size_t triangleCount() const { return triangles_; }
 
     // Binds VAO, material SSBO and per-draw textures, then issues one draw per
@@ -97,6 +103,8 @@ private:
     void drawList(const gl::Program& program, const std::vector<std::size_t>& order, bool bindTextures,
                   const PerDraw* before, bool backFacesFirst = false) const;
     glm::mat4 relativeModel(const glm::mat4& model) const;
+    // d.model, d.mirrored and d.bounds from the instance's transform and its mesh's vertices.
+    static void place(Draw& d, const Scene& scene);
     mutable glm::dvec3 origin_{0.0};
 
     gl::Buffer vertices_, indices_, materials_;
@@ -115,6 +123,7 @@ private:
     std::vector<MaterialTextures> materialTextures_;
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;
+    std::vector<GLint> baseVertex_;  // per mesh, its first vertex in vertices_
     Bounds bounds_;
     std::size_t triangles_ = 0;
     std::size_t textureBytes_ = 0;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/io/ImageIO.h"
+#include "renderer/scene/Animation.h"
 #include "renderer/scene/Camera.h"
 #include "renderer/scene/FlameParticles.h"
 #include "renderer/io/Image.h"
@@ -58,6 +59,10 @@ struct Scene {
     // of `lights` they are and how they move; animateFlameParticles() sets them
     // for a frame index (RenderSession::render and the GUI do, every frame).
     FlameParticles flames;
+    // glTF nodes, skins, morph targets and animation clips (Animation.h);
+    // poseScene (ScenePose.h) writes their pose at a scene time into
+    // `instances` and `meshes`. Empty for a scene without them.
+    SceneAnimation animation;
     std::vector<std::string> warnings;  // things loaded with a fallback
     // Knob values the scene is meant to be seen with ("tonemap.key" -> "0.05"),
     // applied when it loads, before presets and --set.

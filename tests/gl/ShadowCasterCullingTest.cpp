@@ -10,6 +10,8 @@
 #include <regex>
 
 #include "renderer/scene/BuiltinScenes.h"
+#include "tests/support/AnimatedGltf.h"
+#include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -23,10 +25,11 @@ struct Frame {
 
 // A fresh session each time: the fire scene moves its particles by the
 // session's frame count.
-Frame renderWith(const std::string& scene, bool cull, const std::vector<std::string>& knobs) {
+Frame renderWith(const std::string& scene, bool cull, const std::vector<std::string>& knobs, double sceneTime = 0.0) {
     auto session = test::makeSession(96, 54);
     RenderSession& s = *session;
     s.loadScene(scene);
+    s.setSceneTime(sceneTime);
     for (const std::string& kv : knobs) {
         const auto eq = kv.find('=');
         s.knobs().setFromString(kv.substr(0, eq), kv.substr(eq + 1));
@@ -51,9 +54,10 @@ std::pair<long, long> casters(const std::string& stats) {
 }
 
 // Renders `scene` both ways and expects the same bits; returns both lines.
-std::pair<std::string, std::string> expectIdentical(const std::string& scene, const std::vector<std::string>& knobs = {}) {
-    const Frame off = renderWith(scene, false, knobs);
-    const Frame on = renderWith(scene, true, knobs);
+std::pair<std::string, std::string> expectIdentical(const std::string& scene, const std::vector<std::string>& knobs = {},
+                                                    double sceneTime = 0.0) {
+    const Frame off = renderWith(scene, false, knobs, sceneTime);
+    const Frame on = renderWith(scene, true, knobs, sceneTime);
     EXPECT_TRUE(identical(off.final, on.final)) << scene << ": final differs with shadows.cull_casters";
     EXPECT_TRUE(identical(off.lbuffer, on.lbuffer)) << scene << ": lbuffer differs with shadows.cull_casters";
     const auto [dOff, nOff] = casters(off.shadowStats);
@@ -89,6 +93,27 @@ TEST(ShadowCasterCulling, OtherMapKindsAreBitIdentical) {
 // A glTF file (no lights of its own: the default rig's shadowed sun).
 TEST(ShadowCasterCulling, GltfIsBitIdentical) {
     const auto [off, on] = expectIdentical(std::string(DW_TEST_GLTF_DIR) + "/split_corner_tangents.gltf");
+    EXPECT_GT(casters(on).second, 0) << on;
+}
+
+// Issue 36: an animated glTF posed at 0.5 s: each draw's box is the posed
+// one (the skinned quad moved from x <= 1 to x <= 2), and culling
+// against those boxes is bit-identical to drawing every caster.
+TEST(ShadowCasterCulling, AnimatedGltfCullsAgainstThePosedBoxes) {
+    const std::string scene = test::writeJson("culling-animated.gltf", test::animatedGltf()).string();
+    auto session = test::makeSession(96, 54);
+    session->loadScene(scene);
+    auto maxX = [&] {
+        float x = -1e30f;
+        for (const GpuScene::Draw& d : session->pipeline().gpuScene().draws())
+            if (d.mesh == session->scene().animation.deformers.at(0).mesh) x = d.bounds.max.x;
+        return x;
+    };
+    EXPECT_NEAR(maxX(), 1.0f, 1e-5);
+    session->setSceneTime(0.5);
+    session->render({{"final"}});
+    EXPECT_NEAR(maxX(), 2.0f, 1e-5);  // the vertex (1, 0, 0) on the root bone, moved by (1, 0, 0)
+    const auto [off, on] = expectIdentical(scene, {}, 0.5);
     EXPECT_GT(casters(on).second, 0) << on;
 }
 

@@ -20,8 +20,12 @@
 
 #include "renderer/knobs/Preset.h"
 #include "renderer/passes/ReferencePass.h"
+#include "renderer/reference/ReferenceJob.h"
+#include "renderer/reference/ReferenceModel.h"
 #include "tests/gui/HeadlessImGui.h"
 #include "tests/gui/ParetoDriver.h"
+#include "tests/support/AnimatedGltf.h"
+#include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
 #include "renderer/bench/TradeoffTable.h"
 #include "renderer/record/ExperimentRecord.h"
@@ -594,6 +598,48 @@ TEST(Gui, SaveRecordRefusesWhatARecordCannotHold) {
     session->render({{"final"}});
     ui::UiState state;
     refused(state, "animates (its flame particles move with the frame index)");
+}
+
+// Issue 36: the Scene panel's timeline poses the scene at its time (scrub),
+// plays by the wall clock and wraps at the clip's end when looping; a record
+// is refused while it plays (paused, it keeps the time shown: RecordMeasurement);
+// a scrub withdraws a CPU reference of the pose before.
+TEST(Gui, TheTimelinePosesTheSceneWrapsWhenLoopingAndARecordWaitsForAPause) {
+    auto session = test::makeSession(32, 18);
+    session->loadScene(test::writeJson("timeline.gltf", test::animatedGltf()).string());
+    session->render({{"final"}});
+    const Deformer& d = session->scene().animation.deformers.at(0);
+    auto tip = [&] {  // the skinned quad's vertex at rest (1, 1, 0)
+        for (std::size_t i = 0; i < d.rest.size(); ++i)
+            if (d.rest[i].position == glm::vec3(1, 1, 0)) return session->scene().meshes[static_cast<std::size_t>(d.mesh)].vertices[i].position;
+        return glm::vec3(-1.0f);
+    };
+    ui::UiState state;
+    EXPECT_NEAR(tip().x, 1.0f, 1e-5);  // t = 0: the bind pose
+    const auto model = reference::ReferenceModel::fromKnobs(session->knobs(), session->scene());
+    reference::ReferenceRequest request;
+    request.camera = session->camera();
+    request.width = 32;
+    request.height = 18;
+    const std::string viewAt0 = reference::viewKey(session->scene(), model, request);
+    state.timeline.time = 0.5;         // the time slider
+    EXPECT_TRUE(state.timeline.advance(*session));
+    // Another pose is another view: a CPU reference shown of the old one is withdrawn (ReferenceControls).
+    EXPECT_NE(reference::viewKey(session->scene(), model, request), viewAt0);
+    EXPECT_EQ(session->sceneTime(), 0.5);
+    EXPECT_NEAR(tip().x, 1.5f + 0.5f * static_cast<float>(std::sqrt(0.5)), 1e-5);
+    EXPECT_FALSE(state.timeline.advance(*session));  // paused: nothing moved, no frame due
+    state.timeline.playing = true;
+    state.timeline.speed = 10.0f;
+    state.timeline.time = 0.95;
+    state.timeline.advance(*session);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_TRUE(state.timeline.advance(*session));
+    EXPECT_LT(state.timeline.time, 0.95);  // 1 s clip: wrapped past its end
+    const fs::path path = test::tempDir() / "gui-record-timeline.json";
+    EXPECT_FALSE(ui::saveRecord(state, *session, path.string(), 6, 1));
+    ASSERT_NE(state.log.banner(), nullptr);
+    EXPECT_NE(state.log.banner()->text.find("the scene's animation is playing"), std::string::npos) << state.log.banner()->text;
 }
 
 TEST(Gui, ARecordMeasurementKeepsTheSavedStateAndStopsWhenTheSizeChanges) {

@@ -19,6 +19,7 @@ import numpy as np
 import deferred_workbench as dw
 
 BINARY = os.environ["DW_WORKBENCH_BINARY"]
+SIMPLE_SKIN = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf"
 SIZE = (96, 54)
 # Kinds read back raw (float32): the channels each holds (Color outputs that
 # are not 8-bit display images are raw floats too).
@@ -539,6 +540,21 @@ class SessionTest(unittest.TestCase):
             images[name] = image
         self.assertLess(float(images["reference.ao"].min()), 1.0)  # something is occluded
         self.assertGreater(float(images["compare.error"].max()), 0.0)
+
+    @unittest.skipUnless(os.path.exists(SIMPLE_SKIN), "assimp-testmodels is not installed")
+    def test_scene_time_poses_the_animation_as_render_scene_time_does(self):
+        # Issue 36: Session.render(scene_time=T) is `render --scene-time T` bit for bit, another
+        # time another pose, and the session stays at T (scene_time) for reference().
+        s = dw.Session(scene=SIMPLE_SKIN, size=SIZE)
+        at0 = s.render("lbuffer", scene_time=0)
+        at05 = s.render("lbuffer", scene_time=0.5)
+        self.assertEqual(s.scene_time, 0.5)
+        cli = dw.load_image(cli_render(self.tmp.name, "lbuffer", "skin-0.5.exr", extra=("--scene", SIMPLE_SKIN,
+                                                                                         "--scene-time", "0.5")))
+        np.testing.assert_array_equal(at05, cli)
+        self.assertGreater(int((np.abs(at05 - at0).max(axis=2) > 1e-4).sum()), SIZE[0] * SIZE[1] // 50)
+        with self.assertRaises(ValueError):
+            s.render(scene_time=-1)
 
     def test_numeric_arguments_are_held_to_the_cli_ranges(self):
         # renderer/OptionLimits.h's ranges: outside them, however large, ValueError naming the

@@ -72,6 +72,7 @@ TEST(ExperimentRecord, ABenchRecordKeepsItsGridSeedsAndCameraPathThroughJson) {
     r.height = 36;
     r.frames = 5;
     r.warmup = 2;
+    r.sceneTime = 0.5;  // --scene-time (issue 36)
     RecordedBench b;
     b.options.grid.sizes = {{64, 36}, {128, 72}};
     b.options.grid.lights = {1, 100};
@@ -102,6 +103,8 @@ TEST(ExperimentRecord, ABenchRecordKeepsItsGridSeedsAndCameraPathThroughJson) {
     EXPECT_EQ(o.seed, 7u);
     EXPECT_EQ(o.frames, 5);
     EXPECT_EQ(o.warmup, 2);
+    EXPECT_EQ(back.sceneTime, 0.5);
+    EXPECT_EQ(o.run.sceneTime, 0.5);  // what replay runs the grid at
     EXPECT_EQ(o.run.scene, "street");
     std::vector<std::string> sets = o.run.sets;  // every knob, in the JSON's key order
     std::sort(sets.begin(), sets.end());
@@ -177,6 +180,9 @@ TEST(ExperimentRecord, FieldsAreHeldToTheRangesOfTheOptionsTheyStandFor) {
               "r.json: frames: expects a whole number (as --frames does), got 2.5");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["warmup"] = -1; })),
               "r.json: warmup: -1 is outside --warmup's range 0..100000");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["scene_time"] = 2.5; })), "accepted");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["scene_time"] = -1; })),
+              "r.json: scene_time: -1 is outside --scene-time's range 0..1000000 (seconds)");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["size"] = {16385, 18}; })),
               "r.json: size width: 16385 is outside --size's range 1..16384");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["size"] = {32, 0}; })),
@@ -442,7 +448,7 @@ TEST(ExperimentRecord, EveryRefusalNamesTheFieldPath) {
               "r.json: results.image.sha256: missing");
     // The wrong type at every top-level field: each refusal starts with the field's name.
     for (const char* field : {"format", "command", "scene", "shaders", "camera", "camera_path", "knobs", "seeds", "size",
-                              "frames", "warmup", "buffer", "build", "gl", "host", "results"})
+                              "frames", "warmup", "scene_time", "buffer", "build", "gl", "host", "results"})
         for (const nlohmann::json& wrong : {nlohmann::json("3"), nlohmann::json::array(), nlohmann::json(nullptr)}) {
             if (wrong.is_string() && (std::string(field) == "buffer" || std::string(field) == "command")) continue;
             const std::string why = refusal(renderRecord([&](nlohmann::json& j) { j[field] = wrong; }));
