@@ -23,6 +23,7 @@
 #include "shaders/params/camera.h"
 #include "shaders/params/oit.h"
 #include "shaders/params/dof.h"
+#include "shaders/params/flames.h"
 #include "shaders/params/fxaa.h"
 #include "shaders/params/light.h"
 #include "shaders/params/lighting.h"
@@ -65,7 +66,8 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::TonemapParams>(),   describe<gpu::DofParams>(),
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
             describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
-            describe<gpu::GtaoParams>(),      describe<gpu::AovParams>()};
+            describe<gpu::GtaoParams>(),      describe<gpu::AovParams>(),
+            describe<gpu::FlamesParams>()};
 }
 
 GLenum glType(const std::string& glsl) {
