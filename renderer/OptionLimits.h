@@ -41,7 +41,7 @@ constexpr OptionRange kResamples{100, 1000000};  // bench/tradeoff --resamples
 constexpr OptionRange kBenchLights{0, 1000000};  // bench --lights, each count
 constexpr OptionRange kOrbit{1, 100000};       // bench/tradeoff --orbit poses
 constexpr OptionRange kShards{1, 100000};      // bench/tradeoff --shard i/n: n
-constexpr OptionRange kLppPoses{1, 1000};      // bench --lpp-poses
+constexpr OptionRange kLppPoses{1, 1000};      // bench --lpp-poses, list --poses
 constexpr OptionRange kAoRays{1, 1 << 20};     // reference/compare/tradeoff --ao-rays
 constexpr OptionRange kSeed{0, 2147483647};    // reference/bench --seed
 constexpr OptionRange kPixelSamples{1, 65536}; // reference --spp (tradeoff --ref-spp): samples per pixel
@@ -153,6 +153,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"compare", "--fail-ssim", kSsimGate, "mean SSIM"},
     {"compare", "--ppd", kPixelsPerDegree, "pixels per degree"},
     {"list", "--size", F::Size, kSize, "pixels"},
+    {"list", "--poses", F::Whole, kLppPoses, "camera poses (list scenes --stats)"},
 };
 }  // namespace limits
 

@@ -1,6 +1,6 @@
 // The built-in passes, one line each, in seed 002 section 6's order within
 // each stage: G-buffer, ambient occlusion (ao: SSAO, GTAO, ...), L-buffer (the sky and the shadow maps feed
-// it), transparency over the L-buffer (oit), luminance statistics, bloom, tone mapping; then the
+// it), transparency over the L-buffer (oit), the fire's flames added into it (flames), luminance statistics, bloom, tone mapping; then the
 // post chain (depth of field, then the anti-aliasing method aa.method names:
 // FXAA, SSAA's resolve or TAA, last) on the tone-mapped image.
 #include "renderer/graph/PassCatalog.h"
@@ -8,6 +8,7 @@
 #include "renderer/passes/AoPass.h"
 #include "renderer/passes/BloomPass.h"
 #include "renderer/passes/DofPass.h"
+#include "renderer/passes/FlamesPass.h"
 #include "renderer/passes/FxaaPass.h"
 #include "renderer/passes/GBufferDecodePass.h"
 #include "renderer/passes/GeometryPass.h"
@@ -42,6 +43,7 @@ std::vector<PassEntry> builtinPasses() {
         entry<ShadowPass>(PassStage::Lights),
         entry<LightingPass>(PassStage::Lighting),
         entry<OitPass>(PassStage::Lighting),
+        entry<FlamesPass>(PassStage::Lighting),
         entry<LuminancePass>(PassStage::Hdr),
         entry<BloomPass>(PassStage::Hdr),
         entry<ReferencePass>(PassStage::Hdr),

@@ -36,6 +36,9 @@ bool boxInView(const Bounds& b, const glm::dmat4& worldToClip) {
 }  // namespace
 
 OitPass::OitPass(KnobRegistry& knobs) {
+    enabled_ = knobs.addBool("oit.enabled", true, "oit",
+                             "draw the blended materials (off: they are left out of the frame, seed 002 table 1's "
+                             "presets without SR)");
     methods_.emplace(knobs, builtinOitMethods(),
                      MethodKnob{"oit.method", "oit", "how the blended materials are composited over the L-buffer:", {}, true});
 }
@@ -84,7 +87,7 @@ PassIO OitPass::inputs(const KnobRegistry& knobs) const {
 }
 
 std::string OitPass::skipReason(const KnobRegistry& knobs, const Scene& scene) const {
-    (void)knobs;
+    if (!knobs.get(enabled_)) return "switched off (oit.enabled = false)";
     for (const auto& inst : scene.instances) {
         if (inst.mesh < 0 || static_cast<std::size_t>(inst.mesh) >= scene.meshes.size()) continue;
         const int mat = scene.meshes[static_cast<std::size_t>(inst.mesh)].material;

@@ -63,6 +63,7 @@ private:
     void readLostTotal(const OitMethod& method);
 
     std::optional<MethodSet<OitMethod>> methods_;  // oit.method's
+    BoolKnob enabled_;
     EnumKnob attenuation_;
     int windowed_ = 0;
     FloatKnob windowExponent_;

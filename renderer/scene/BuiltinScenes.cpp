@@ -472,6 +472,96 @@ Scene fire() {
     return s;
 }
 
+
+// Seed 000 section 6.5's "larger scene with hundreds of thousands of
+// triangles split into several hundred objects ... with complex transparent
+// objects" and "one shadow-casting directional light": an open atrium of two
+// storeys (Sponza-like, seed 000 table 6.1's Sponza has 385 objects and
+// 285 583 triangles) with finely tessellated urns, columns, crates, glass
+// lanterns and glass panes, lit by a shadowed sun only; bench --lights N
+// --keep-scene-lights adds the seed's point lights (preset Overall).
+Scene atrium() {
+    Scene s;
+    s.name = "atrium";
+    s.ambient = glm::vec3(0.04f, 0.045f, 0.05f);
+    s.background = glm::vec3(0.35f, 0.45f, 0.65f);
+    s.sky.kind = Sky::Kind::Procedural;  // afternoon
+    s.sky.zenith = {0.18f, 0.30f, 0.62f};
+    s.sky.horizon = {0.62f, 0.66f, 0.72f};
+    s.sky.ground = {0.10f, 0.09f, 0.08f};
+    s.sky.sunSizeDegrees = 1.5f;
+    Builder b(s);
+    BlockTexture tiles = blockTexture("atrium-tiles", 256, 8, 8, false, {0.58f, 0.55f, 0.50f}, {0.72f, 0.68f, 0.60f}, {0.30f, 0.28f, 0.25f}, 51);
+    BlockTexture stones = blockTexture("atrium-stones", 256, 3, 6, true, {0.62f, 0.56f, 0.46f}, {0.72f, 0.66f, 0.55f}, {0.45f, 0.42f, 0.38f}, 53);
+    const int tilesA = s.addImage(std::move(tiles.albedo)), tilesN = s.addImage(std::move(tiles.normal));
+    const int stonesA = s.addImage(std::move(stones.albedo)), stonesN = s.addImage(std::move(stones.normal));
+    const int floorMat = b.material("atrium floor", glm::vec3(1.0f), glm::vec3(0.12f), 32.0f, tilesA, tilesN);
+    const int wallMat = b.material("atrium wall", glm::vec3(1.0f), glm::vec3(0.04f), 10.0f, stonesA, stonesN);
+    const int stoneMat = b.material("limestone", {0.78f, 0.74f, 0.66f}, glm::vec3(0.3f), 50.0f);
+    const int urnMat = b.material("glazed urn", {0.16f, 0.30f, 0.42f}, glm::vec3(0.7f), 180.0f);
+    const int woodMat = b.material("atrium crate", {0.45f, 0.31f, 0.17f}, glm::vec3(0.06f), 14.0f);
+
+    const float W = 40.0f, D = 18.0f, H = 10.0f, gallery = 4.6f;
+    b.place(b.mesh(shapes::plane(W + 4, D + 4, 0.25f), floorMat), {0, 0, 0});
+    const int wallX = b.mesh(shapes::box({W, H, 0.6f}, 0.25f), wallMat);
+    const int wallZ = b.mesh(shapes::box({0.6f, H, D}, 0.25f), wallMat);
+    b.place(wallX, {0, H / 2, -D / 2});
+    b.place(wallX, {0, H / 2, D / 2});
+    b.place(wallZ, {-W / 2, H / 2, 0});
+    b.place(wallZ, {W / 2, H / 2, 0});
+    // The galleries: a slab over each aisle, a beam along each arcade.
+    const int slab = b.mesh(shapes::box({W, 0.35f, 3.8f}, 0.25f), stoneMat);
+    const int beam = b.mesh(shapes::box({W - 2.0f, 0.5f, 0.8f}), stoneMat);
+    for (float z : {-7.1f, 7.1f}) b.place(slab, {0, gallery, z});
+    for (float z : {-5.0f, 5.0f})
+        for (float y : {gallery - 0.3f, 2.0f * gallery - 0.3f}) b.place(beam, {0, y, z});
+    // Two storeys of arcades: nine columns a row, plinth, shaft, capital.
+    const int column = b.mesh(shapes::cylinder(0.38f, gallery - 0.9f, 48), stoneMat);
+    const int plinth = b.mesh(shapes::box({1.0f, 0.3f, 1.0f}), stoneMat);
+    const int capital = b.mesh(shapes::box({1.1f, 0.3f, 1.1f}), stoneMat);
+    for (int storey = 0; storey < 2; ++storey)
+        for (float z : {-5.0f, 5.0f})
+            for (int i = 0; i < 9; ++i) {
+                const glm::vec3 p(-16.0f + i * 4.0f, storey * gallery, z);
+                b.place(plinth, p + glm::vec3(0, 0.15f, 0));
+                b.place(column, p + glm::vec3(0, 0.3f, 0));
+                b.place(capital, p + glm::vec3(0, gallery - 0.75f, 0));
+            }
+    // Sixty urns on pedestals along the aisles, on both floors: most of the triangles.
+    const int urn = b.mesh(shapes::sphere(0.45f, 64, 32), urnMat);
+    const int pedestal = b.mesh(shapes::box({0.6f, 0.8f, 0.6f}), stoneMat);
+    for (int storey = 0; storey < 2; ++storey)
+        for (float z : {-7.8f, 7.8f})
+            for (int i = 0; i < 15; ++i) {
+                const glm::vec3 p(-18.2f + i * 2.6f, storey * (gallery + 0.175f), z);
+                b.place(pedestal, p + glm::vec3(0, 0.4f, 0));
+                b.place(urn, p + glm::vec3(0, 1.25f, 0), 0.0f, {1.0f, 1.2f, 1.0f});
+            }
+    // Crates stacked in the nave's corners.
+    const int crate = b.mesh(shapes::box(glm::vec3(0.8f)), woodMat);
+    for (int c = 0; c < 80; ++c) {
+        const int corner = c / 20, k = c % 20;
+        const float sx = corner % 2 ? 1.0f : -1.0f, sz = corner / 2 ? 1.0f : -1.0f;
+        const glm::vec3 p(sx * (17.0f - 0.9f * (k % 4)), 0.4f + 0.8f * (k / 12), sz * (2.6f - 0.9f * ((k / 4) % 3)));
+        b.place(crate, p, 7.0f * static_cast<float>(c % 5));
+    }
+    // Transparency: glass lanterns hanging over the nave and panes between the upper columns.
+    for (int i = 0; i < 24; ++i) {
+        const int mat = b.glass("lantern " + std::to_string(i), hueColor(std::fmod(i * 0.21f, 1.0f)) * 0.8f + glm::vec3(0.2f), 0.3f);
+        b.place(b.mesh(shapes::sphere(0.35f, 32, 16), mat), {-17.25f + i * 1.5f, 3.0f + 0.6f * (i % 3), (i % 2) ? 1.2f : -1.2f});
+    }
+    const int pane = b.mesh(shapes::box({3.2f, 2.6f, 0.04f}), b.glass("gallery glass", {0.55f, 0.8f, 0.75f}, 0.25f));
+    for (float z : {-5.0f, 5.0f})
+        for (int i = 0; i < 8; ++i) b.place(pane, {-14.0f + i * 4.0f, gallery + 1.6f, z});
+    b.light(LightType::Directional, "sun", {}, {-0.35f, -1.0f, -0.3f}, {2.2f, 2.0f, 1.7f}).castShadows = true;
+    s.camera.position = {-17.0f, 6.5f, 3.5f};
+    s.camera.target = {4.0f, 2.2f, -1.0f};
+    s.camera.fovYDegrees = 60.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 120.0f;
+    return s;
+}
+
 }  // namespace
 
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
@@ -481,6 +571,7 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
         {"spheres", "material grid: 4 specular families x 9 Blinn-Phong exponents, a shadowing key light, a point and a spot light"},
         {"glass", "transparency: intersecting coloured panes, a row of eight panes and a sphere in a box in a sphere (blended materials, depth complexity above 8; issue 21)"},
         {"fire", "night courtyard with a fire pit and four braziers: 300 flame particles, each a small point light, animated per frame (seed 004)"},
+        {"atrium", "two-storey open atrium (seed 000 section 6.5's scene, preset Overall): several hundred objects, hundreds of thousands of triangles, glass lanterns and panes, a shadowed sun only"},
     };
     return scenes;
 }
@@ -498,6 +589,7 @@ Scene makeBuiltinScene(const std::string& name) {
     else if (name == "spheres") s = spheres();
     else if (name == "fire") s = fire();
     else if (name == "glass") s = glassScene();
+    else if (name == "atrium") s = atrium();
     else {
         std::string names;
         for (const auto& b : builtinScenes()) names += (names.empty() ? "" : ", ") + b.name;

@@ -4,7 +4,9 @@
 // "street" (a night road lit by a long row of spot-light street lamps, the
 // CMSC 23700 assignment's motivating case), "spheres" (a material grid) and
 // "fire" (seed 004: flame particles that are point lights, hundreds of them,
-// moved every frame by animateFlameParticles).
+// moved every frame by animateFlameParticles) and "atrium" (seed 000 section
+// 6.5's large scene for the Overall preset: several hundred objects, hundreds
+// of thousands of triangles, transparent objects, a shadowed sun).
 #include <string>
 #include <vector>
 

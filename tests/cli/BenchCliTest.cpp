@@ -719,3 +719,34 @@ TEST(BenchCli, ShadowCasterCullingSideBySide) {
               std::string::npos)
         << t.out << t.err;
 }
+
+// docs/bench.md "Seed 000 section 6.5", at a small size: the preset Overall
+// loads the atrium with its knobs, the generated 20 and 25 point lights join
+// its sun (--keep-scene-lights), and the per-pass table holds the passes the
+// seed's whole system runs: SSAO and its filter, the A-buffer, the sun's map.
+TEST(BenchCli, PresetOverallAsTheDocsRunIt) {
+    const fs::path dir = test::tempDir() / "bench-overall";
+    fs::create_directories(dir);
+    const Result r = run("bench --preset Overall --size 64x36 --lights 20,25 --keep-scene-lights --frames 1 --quiet --csv " +
+                         (dir / "overall.csv").string() + " --record " + (dir / "overall.json").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("## bench: atrium, 2 configuration(s)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("generated, added to the scene's 1"), std::string::npos) << r.out;
+    for (const char* row : {"| 0 | 64x36 | 20 |", "| 1 | 64x36 | 25 |"}) EXPECT_NE(r.out.find(row), std::string::npos) << row;
+    for (const char* column : {"| ao |", "| ao_filter |", "| oit |", "| lighting/shadow maps |"})
+        EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
+}
+
+// docs/bench.md "Seed 002 table 1", at a small size: a quality preset with
+// ao.enabled and oit.enabled swept, SSAO + SR, SSAO, SR and OFF.
+TEST(BenchCli, Seed002Table1Grid) {
+    const fs::path dir = test::tempDir() / "bench-table1";
+    fs::create_directories(dir);
+    const Result r = run("bench --scene glass --preset Low --size 64x36 --lights 6 --keep-scene-lights --sweep "
+                         "ao.enabled=true,false --sweep oit.enabled=true,false --frames 1 --no-lpp --quiet --csv " +
+                         (dir / "t1.csv").string() + " --record " + (dir / "t1.json").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* row : {"| 0 | 64x36 | 6 | true | true |", "| 1 | 64x36 | 6 | true | false |",
+                            "| 2 | 64x36 | 6 | false | true |", "| 3 | 64x36 | 6 | false | false |"})
+        EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+}

@@ -68,13 +68,16 @@ TEST(Cli, ListPassesWithASceneShowsItsSkips) {
     ASSERT_EQ(plain.code, 0) << plain.err;
     EXPECT_NE(plain.out.find("oit  [lighting]  (skipped: no blended material in the scene)"), std::string::npos) << plain.out;
     EXPECT_EQ(plain.out.find("dof  [post]  (skipped"), std::string::npos) << plain.out;
+    EXPECT_NE(plain.out.find("flames  [lighting]  (skipped: the scene has no flame particles)"), std::string::npos)
+        << plain.out;
     const Result glass = run("list passes --scene glass");
     ASSERT_EQ(glass.code, 0) << glass.err;
     EXPECT_NE(glass.out.find("oit  [lighting]\n"), std::string::npos) << glass.out;
     EXPECT_NE(glass.out.find("dof  [post]  (skipped: switched off (dof.enabled = false))"), std::string::npos) << glass.out;
     const Result misplaced = run("list knobs --scene glass");
     EXPECT_EQ(misplaced.code, 2);
-    EXPECT_NE(misplaced.err.find("apply to 'list passes' only"), std::string::npos) << misplaced.err;
+    EXPECT_NE(misplaced.err.find("apply to 'list passes' and 'list scenes --stats' only"), std::string::npos)
+        << misplaced.err;
 }
 
 TEST(Cli, RendersPngOfTheRequestedSize) {
@@ -524,4 +527,62 @@ TEST(Cli, RenderSaysWhenTransparencyLosesFragments) {
     EXPECT_NE(clamped.err.find(hot.string() + ": material 'objects[0]': emissive 1e+30 is beyond 65000"), std::string::npos)
         << clamped.err;
     EXPECT_NE(clamped.out.find("no NaN or infinity"), std::string::npos) << clamped.out;
+}
+
+// Issue 36 part 4: the documented `render --scene fire --buffer flames.result`
+// writes the flames alone: not empty, finite, and `--timings` times the
+// flames pass; with flames.enabled=false the pass says why it did not run.
+TEST(Cli, FireSceneWritesItsFlamesAndTimesTheFlamesPass) {
+    const fs::path out = test::tempDir() / "flames.exr";
+    const Result r = run("render --scene fire --size 96x54 --buffer flames.result --timings --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("flames"), std::string::npos) << r.out;
+    const FloatImage flames = loadImageFloat(out.string());
+    ASSERT_GE(flames.channels, 3);
+    int lit = 0;
+    for (int y = 0; y < flames.height; ++y)
+        for (int x = 0; x < flames.width; ++x) lit += flames.at(x, y, 0) > 0.01f;
+    EXPECT_GT(lit, 20);
+    EXPECT_EQ(test::stats(flames, 0).nonFinite, 0);
+    const Result off = run("render --scene fire --size 32x18 --set flames.enabled=false --buffer flames.result --out " +
+                           (test::tempDir() / "no-flames.exr").string());
+    EXPECT_NE(off.code, 0);
+    EXPECT_NE((off.out + off.err).find("flames.enabled = false"), std::string::npos) << off.out << off.err;
+}
+
+// Issue 36 part 3: `list scenes --stats` (seed 000 table 6.1). The spheres
+// scene's counts derived here from how it is built: a floor plane (2
+// triangles) and 36 spheres of 48 slices x 24 stacks (2 x 48 x 24 triangles
+// each); a key, two point lights and a spot. Its directional light reaches
+// every surface pixel, so LPP lit is at least 1 and LPP at most the 4 lights.
+TEST(Cli, SceneStatisticsCountObjectsTrianglesAndLights) {
+    const fs::path duck = test::dataDir() / "gltf" / "Duck" / "Duck.gltf";
+    const bool gltf = fs::exists(duck);
+    const Result r = run("list scenes --stats --size 48x27 --poses 2" + (gltf ? " --scene " + duck.string() : std::string()));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto at = r.out.find("| spheres | ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    std::istringstream row(r.out.substr(at + 12));
+    long long objects = 0, triangles = 0, lights = 0;
+    char bar = 0;
+    row >> objects >> bar >> triangles >> bar >> lights;
+    EXPECT_EQ(objects, 1 + 36);
+    EXPECT_EQ(triangles, 2 + 36 * 2 * 48 * 24);
+    EXPECT_EQ(lights, 4);
+    EXPECT_NE(r.out.find("| spheres | 37 | 82946 | 4 | 1 / 2 / 1 | "), std::string::npos) << r.out;
+    std::string rest;
+    std::getline(row, rest);
+    double lpp = 0, lo = 0, hi = 0, lit = 0;
+    ASSERT_EQ(std::sscanf(rest.c_str(), " | 1 / 2 / 1 | %lf | [%lf, %lf] | %lf |", &lpp, &lo, &hi, &lit), 4) << rest;
+    EXPECT_GE(lit, 1.0);
+    EXPECT_LE(lpp, 4.0);
+    EXPECT_LE(lo, lpp);
+    EXPECT_GE(hi, lpp);
+    for (const char* s : {"| default |", "| street |", "| glass |", "| fire |", "| atrium |"})
+        EXPECT_NE(r.out.find(s), std::string::npos) << s;
+    // README's command: a glTF's row after the built-in ones (the Duck: one mesh of 4212 triangles).
+    if (gltf) {
+        EXPECT_NE(r.out.find("| " + duck.string() + " | 1 | 4212 | "), std::string::npos) << r.out;
+    }
+    EXPECT_EQ(run("list knobs --stats").code, 2);
 }

@@ -23,6 +23,7 @@
 #include "shaders/params/camera.h"
 #include "shaders/params/oit.h"
 #include "shaders/params/dof.h"
+#include "shaders/params/flames.h"
 #include "shaders/params/fxaa.h"
 #include "shaders/params/light.h"
 #include "shaders/params/lighting.h"
@@ -68,7 +69,8 @@ std::vector<BlockInfo> allBlocks() {
             describe<gpu::FxaaParams>(),      describe<gpu::BufferViewParams>(),
             describe<gpu::CameraBlock>(),     describe<gpu::OitParams>(),
             describe<gpu::GtaoParams>(),      describe<gpu::AovParams>(),
-            describe<gpu::SsaaParams>(),      describe<gpu::TaaParams>()};
+            describe<gpu::SsaaParams>(),      describe<gpu::TaaParams>(),
+            describe<gpu::FlamesParams>()};
 }
 
 GLenum glType(const std::string& glsl) {

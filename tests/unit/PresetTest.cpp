@@ -263,3 +263,36 @@ TEST(Preset, QualityLevelsSetTheSeedsABufferAndSayTheyCannotSetTheRenderSize) {
             << p->description;
     }
 }
+
+// Issue 36: seed 000 section 6.5's whole system as a built-in preset: SSAO3
+// (half size, 16 samples, world radius 1, bilateral blur 20), the
+// stencil-routed A-buffer at 8 samples, Reinhard, a 2048^2 shadow map, on the
+// atrium scene; every other knob back to its default whatever came before.
+TEST(Preset, OverallSetsSeed000Section65sKnobsOnTheAtrium) {
+    const Preset* p = findBuiltinPreset("Overall");
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->scene, "atrium");
+    EXPECT_TRUE(p->groups.empty());  // covers every group, as the quality levels do
+    KnobRegistry k;
+    Pipeline declarations(k);
+    k.setFromString("ao.method", "gtao");
+    k.setFromString("tonemap.operator", "aces");
+    k.setFromString("shadows.enabled", "false");
+    k.setFromString("bloom.threshold", "7");
+    EXPECT_TRUE(p->applyOver(k, {}).ignored.empty());
+    const std::pair<const char*, const char*> expected[] = {
+        {"ao.enabled", "true"},         {"ao.method", "ssao"},           {"ssao.resolution", "half"},
+        {"ssao.samples", "16"},         {"ssao.radius", "1"},            {"ssao.radius_unit", "world"},
+        {"ssao_blur.mode", "bilateral"}, {"ssao_blur.width", "20"},      {"oit.method", "abuffer"},
+        {"oit.samples", "8"},           {"tonemap.operator", "reinhard"}, {"shadows.enabled", "true"},
+        {"shadows.map_size", "2048"}};
+    for (const auto& [name, value] : expected) EXPECT_EQ(k.format(*k.find(name)), value) << name;
+    // The seed's SSAO3 row is the built-in SSAO3's.
+    KnobRegistry s3;
+    Pipeline d3(s3);
+    findBuiltinPreset("SSAO3")->applyOver(s3, {});
+    for (const char* name : {"ssao.resolution", "ssao.samples", "ssao.radius", "ssao_blur.width"})
+        EXPECT_EQ(k.format(*k.find(name)), s3.format(*s3.find(name))) << name;
+    EXPECT_EQ(k.value(*k.find("bloom.threshold")), k.spec(*k.find("bloom.threshold")).defaultValue);
+    EXPECT_NE(p->description.find("render size, not set by a preset: --size or the window"), std::string::npos);
+}

@@ -145,7 +145,7 @@ TEST(SceneJson, MissingFileAndUnknownSpec) {
         loadScene("no-such-scene");
         FAIL();
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("built-in scene (default, street, spheres, glass, fire)"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("built-in scene (default, street, spheres, glass, fire, atrium)"), std::string::npos);
     }
 }
 
@@ -205,4 +205,18 @@ TEST(SceneJson, OneClipPlaneFitsTheOtherAndOnlyTwoCanConflict) {
     // Both, out of order: the error names them.
     EXPECT_NE(errorOf(R"({"camera": {"pos": [0, 5, 30], "near": 5, "far": 1}})").find("camera.far: must be greater than camera.near"),
               std::string::npos);
+}
+
+// Issue 36: the atrium is seed 000 section 6.5's scene: several hundred
+// objects, hundreds of thousands of triangles, transparent objects among
+// them, and one light, a shadow-casting sun (bench adds the point lights).
+TEST(BuiltinScenes, AtriumIsTheSeedsLargeSceneWithOneShadowedSun) {
+    const Scene s = makeBuiltinScene("atrium");
+    EXPECT_GE(s.instances.size(), 300u);
+    EXPECT_LE(s.instances.size(), 500u);
+    EXPECT_GE(s.triangleCount(), 250000u);
+    EXPECT_TRUE(s.hasMaterial(AlphaMode::Blend));
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    EXPECT_TRUE(s.lights[0].castShadows);
 }
