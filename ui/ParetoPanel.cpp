@@ -37,6 +37,13 @@ std::string label(const TradeoffTable& t, const TradeoffRow& r, const std::vecto
     return s.empty() ? "point " + std::to_string(r.point) : s;
 }
 
+// An end of the axis across: 3 digits for ms, a count whole where it is under a billion ("9480", not "9.48e+03").
+std::string axisNumber(double v) {
+    char t[32];
+    std::snprintf(t, sizeof(t), std::fabs(v) >= 1000.0 && std::fabs(v) < 1e9 ? "%.0f" : "%.3g", v);
+    return t;
+}
+
 // The unit of a cost across: "ms" for gpu_ms, else the counter's own name.
 std::string unitOf(const std::string& cost) { return cost == "gpu_ms" ? "ms" : cost; }
 
@@ -526,9 +533,9 @@ void ParetoPanel::groupControls(const std::vector<std::string>& gs) {
     if (!applied.empty()) ImGui::TextColored(kOkColor, "%s", applied.c_str());
 }
 
-// What the plot has across: "GPU frame (median)", or a counter of the time's span: "frame fragments (exact)".
+// What the plot has across: "GPU frame ms (median)", or a counter of the time's span: "frame fragments (exact)".
 std::string ParetoPanel::acrossName() const {
-    return cost == "gpu_ms" ? "GPU " + table.time + " (median)" : table.time + " " + cost + " (exact)";
+    return cost == "gpu_ms" ? "GPU " + table.time + " ms (median)" : table.time + " " + cost + " (exact)";
 }
 
 // The cost across (gpu_ms or a counter the table holds); a line when the marks were decided on another.
@@ -593,12 +600,12 @@ void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, 
         // A narrow panel has no room for the axes' names under the plot: a line above it says them.
         const std::string unit = unitOf(cost);
         char lo[96], whole[200];
-        std::snprintf(lo, sizeof(lo), "%.3g %s", plotAxes.xlo, unit.c_str());
-        std::snprintf(whole, sizeof(whole), "%.3g %s   %s against %s", plotAxes.xhi, unit.c_str(), acrossName().c_str(),
-                      metric.c_str());
+        std::snprintf(lo, sizeof(lo), "%s %s", axisNumber(plotAxes.xlo).c_str(), unit.c_str());
+        std::snprintf(whole, sizeof(whole), "%s %s   %s against %s", axisNumber(plotAxes.xhi).c_str(), unit.c_str(),
+                      acrossName().c_str(), metric.c_str());
         const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
         if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
-            wrappedColored(kDimColor, "across: " + acrossName() + ", " + unit + "; up: " + metric);
+            wrappedColored(kDimColor, "across: " + acrossName() + "; up: " + metric);
             noteItem("pareto.axes");
         }
     }
@@ -631,19 +638,20 @@ void ParetoPanel::plotAxesDrawn(const PlotFrame& f, float textX, const std::stri
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddRectFilled(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(24, 24, 28, 255));
     dl->AddRect(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(90, 90, 100, 255));
-    char t[96];
+    char t[200];
     std::snprintf(t, sizeof(t), "%.3g", f.axes.yhi);
     dl->AddText(ImVec2(textX, f.top), IM_COL32(170, 170, 170, 255), t);
     std::snprintf(t, sizeof(t), "%.3g", f.axes.ylo);
     dl->AddText(ImVec2(textX, f.bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
     const std::string unit = unitOf(cost);
-    std::snprintf(t, sizeof(t), "%.3g %s", f.axes.xlo, unit.c_str());
+    std::snprintf(t, sizeof(t), "%s %s", axisNumber(f.axes.xlo).c_str(), unit.c_str());
     dl->AddText(ImVec2(f.left, f.bottom + 4), IM_COL32(170, 170, 170, 255), t);
     const float loWidth = ImGui::CalcTextSize(t).x;
     // The axes' names after the upper end where they fit, else the end alone (the caption line above says them).
-    std::snprintf(t, sizeof(t), "%.3g %s   %s against %s", f.axes.xhi, unit.c_str(), acrossName().c_str(), metric.c_str());
+    std::snprintf(t, sizeof(t), "%s %s   %s against %s", axisNumber(f.axes.xhi).c_str(), unit.c_str(),
+                  acrossName().c_str(), metric.c_str());
     if (ImGui::CalcTextSize(t).x > f.right - f.left - loWidth - 8.0f)
-        std::snprintf(t, sizeof(t), "%.3g %s", f.axes.xhi, unit.c_str());
+        std::snprintf(t, sizeof(t), "%s %s", axisNumber(f.axes.xhi).c_str(), unit.c_str());
     dl->AddText(ImVec2(std::max(f.left + loWidth + 8.0f, f.right - ImGui::CalcTextSize(t).x), f.bottom + 4),
                 IM_COL32(170, 170, 170, 255), t);
 }
