@@ -73,6 +73,21 @@ std::string ParetoPanel::marksCost(const TradeoffTable& t) {
     return "gpu_ms";
 }
 
+void ParetoPanel::tiesFromFront() {
+    // The ties are not in the CSV: decided again on the CSV's cost (as tradeoff merge does), the marks kept.
+    TradeoffTable ranked = table;
+    try {
+        ranked.markParetoFront(table.time, csvCost);
+    } catch (const std::exception&) {
+        return;
+    }
+    for (size_t i = 0; i < table.rows.size(); ++i) {
+        table.rows[i].errorTies = ranked.rows[i].errorTies;
+        table.rows[i].timeTies = ranked.rows[i].timeTies;
+    }
+    table.frontRules = ranked.frontRules;
+}
+
 double ParetoPanel::costAcross(const TradeoffRow& r) const {
     return cost == "gpu_ms" ? r.timeMs : table.costOf(r, table.time, cost);
 }
@@ -83,6 +98,7 @@ bool ParetoPanel::load(const std::string& file) {
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
         csvCost = cost = marksCost(table);
+        tiesFromFront();
         tableIsFit = false;
         labelCentre.clear();
         pickedFor.clear();

@@ -137,6 +137,10 @@ struct ParetoPanel {
     // whose point-estimate front (TradeoffTable::markParetoFront on a copy)
     // marks the same rows; gpu_ms when none does (or gpu_ms does).
     static std::string marksCost(const TradeoffTable& t);
+    // The rows' error and time ties and the front's rule (not in the CSV),
+    // from the front decided again on csvCost, as tradeoff merge decides it;
+    // the CSV's marks are kept. The budget's lines then say the ties as the CLI does.
+    void tiesFromFront();
     // A row's cost across (NaN: none): time_ms for gpu_ms, else the counter.
     double costAcross(const TradeoffRow& r) const;
     // Applies row `row`'s settings; false (and `error` set) when any is refused.

@@ -112,6 +112,10 @@ TEST(ParetoCost, ACounterAcrossPicksAsTheCliDoesAndTheBudgetIsRefusedAsTheCliRef
     ASSERT_FALSE(cliPick.empty()) << cli.out;
     EXPECT_EQ(cliPick.rfind("pick: point 2 (ssao.samples=16)", 0), 0u) << cliPick;
     EXPECT_EQ(panel.pickLines[0], cliPick);
+    // The ties and the front's rule (not in the CSV) as the CLI decides them: its second line, word for word.
+    ASSERT_GE(panel.pickLines.size(), 2u);
+    const std::string cliTies = lineStarting(cli.out.substr(cli.out.find(cliPick) + cliPick.size()), "pick: ");
+    EXPECT_EQ(panel.pickLines[1], cliTies);
 
     // gpu_ms across: the points at their times (point 1 at 30 ms right of point 2 at 20 ms), the
     // marks said to be the CSV's for fragments, the budget field back in ms.
