@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "renderer/OptionText.h"
 #include "renderer/bench/BenchGrid.h"
 
 namespace dw {
@@ -122,19 +123,9 @@ std::vector<std::string> CommandLine::parseList(const std::string& flag, const s
 
 namespace {
 
-std::string numberText(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
-}
-
-// "a whole number from 1 to 100000 (counted frames)".
-std::string rangeText(const NumericOption& o) {
-    std::string s = o.whole() ? "a whole number " : "a number ";
-    s += o.minOpen ? "above " + numberText(o.min) + " and at most " + numberText(o.max)
-                   : "from " + numberText(o.min) + " to " + numberText(o.max);
-    return s + " (" + std::string(o.what) + ")";
-}
+// As every refusal of an option's value words them (renderer/OptionText: Python and the window say the same).
+std::string numberText(double v) { return optionNumberText(v); }
+std::string rangeText(const NumericOption& o) { return optionRangeText(o); }
 
 // One whole number of `o`'s range; `flag` names it in the message (e.g. "--size width").
 int parseWhole(const NumericOption& o, const std::string& flag, const std::string& text, const std::string& given) {

@@ -17,14 +17,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string budgetText(double ms) {
-    if (std::isnan(ms)) return "nan";
-    if (std::isinf(ms)) return ms > 0 ? "inf" : "-inf";
-    char t[32];
-    std::snprintf(t, sizeof(t), "%g", ms);
-    return t;
-}
-
 // The median of a point's per-frame times with its 95% bootstrap interval (NaN: no frame).
 void medianOf(const std::map<int, std::map<int, double>>& times, size_t configuration, double& value, double& lo,
               double& hi, int& frames) {
@@ -43,8 +35,7 @@ void medianOf(const std::map<int, std::map<int, double>>& times, size_t configur
 }  // namespace
 
 void FitBudgetRun::check(const FitBudgetSettings& s, RenderSession& session) {
-    if (!(std::isfinite(s.budgetMs) && s.budgetMs > 0.0))
-        throw Error("the budget must be a number of GPU milliseconds above 0, got " + budgetText(s.budgetMs));
+    BudgetPicker::check(s.budgetMs);  // as tradeoff --budget-ms refuses it, in its words
     if (s.time == "frame") return;
     std::vector<std::string> terms;
     try {

@@ -26,7 +26,7 @@
 // measured); another scene or another render size stops the run. The
 // settings the sweep is about are kept (previous()).
 // Errors: start() throws dw::Error, one line, before anything renders: a
-// budget not finite or not above 0, an empty term or a pass the pipeline
+// budget out of tradeoff --budget-ms's range (BudgetPicker::check), an empty term or a pass the pipeline
 // lacks in `time`, no speed/quality knob to sweep. A failing frame stops the
 // run (error()). step() needs the session's current GL context.
 #include <cstdint>

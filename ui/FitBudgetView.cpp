@@ -233,26 +233,37 @@ void FitBudgetView::undo(UiState& state, RenderSession& session) {
     measureStatus.clear();
 }
 
-void FitBudgetView::draw(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session) {
-    controls(budgetMs, againstCurrent, state, session);
+void FitBudgetView::draw(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session,
+                         const std::string& counter, double* budgetCount) {
+    controls(budgetMs, againstCurrent, state, session, counter, budgetCount);
     progress(state);
     result(state, session);
 }
 
 // The budget field, *fit budget* beside it, and the time it bounds.
-void FitBudgetView::controls(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session) {
+void FitBudgetView::controls(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session,
+                             const std::string& counter, double* budgetCount) {
     const float spacing = ImGui::GetStyle().FramePadding.x * 2.0f;
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
-    ImGui::InputDouble("budget ms", &budgetMs, 0.0, 0.0, "%g");
+    const bool byCounter = !counter.empty() && budgetCount;
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * (byCounter ? 7.0f : 5.0f));
+    if (byCounter) ImGui::InputDouble(("budget " + counter + "##budget").c_str(), budgetCount, 0.0, 0.0, "%.6g");
+    else ImGui::InputDouble("budget ms##budget", &budgetMs, 0.0, 0.0, "%g");
     noteItem("pareto.budget");
-    if (ImGui::IsItemHovered())
-        tooltip("GPU milliseconds: marks the pick among the points on show, and is what fit budget fits");
+    if (ImGui::IsItemHovered()) {
+        if (byCounter)
+            tooltip("%s (the cost chosen above, exact): marks the pick among the points on show, as tradeoff --cost "
+                    "%s --budget N does",
+                    counter.c_str(), counter.c_str());
+        else tooltip("GPU milliseconds: marks the pick among the points on show, and is what fit budget fits");
+    }
     sameLineIfFits(ImGui::CalcTextSize("fit budget").x + spacing);
-    ImGui::BeginDisabled(state.fitBudget.running() || waitingForReference);
+    ImGui::BeginDisabled(state.fitBudget.running() || waitingForReference || byCounter);
     if (ImGui::Button("fit budget")) start(budgetMs, againstCurrent, state, session);
     ImGui::EndDisabled();
     noteItem("pareto.fit_budget");
-    if (ImGui::IsItemHovered())
+    if (byCounter && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        tooltip("fit budget fits GPU milliseconds: choose the cost gpu_ms to fit");
+    else if (ImGui::IsItemHovered())
         tooltip("sweeps the speed/quality knobs about the current settings (tradeoff --knobs speed/quality) in the "
                 "background, applies the least-error point whose time's 95%% interval ends under the budget, then "
                 "measures it against the previous settings (the cost of a change); undo puts them back");

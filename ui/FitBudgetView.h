@@ -17,7 +17,8 @@
 //      frame a UI frame; the timings panel shows the same verdict), and the
 //      time's verdict is shown with its interval. *undo* puts the previous
 //      values of the changed knobs back (stopping the measurement).
-// A budget of 0, below 0, NaN or infinite, or a time naming a pass the
+// A budget of 0, below 0, NaN, infinite or above tradeoff --budget-ms's range
+// (BudgetPicker::check, the CLI's message), or a time naming a pass the
 // pipeline lacks, is refused with one line on screen (and in Messages)
 // before anything renders. Errors are shown, never thrown.
 #include <cstdint>
@@ -47,8 +48,12 @@ struct FitBudgetView {
 
     // `budgetMs` and `againstCurrent`: the Pareto panel's budget field and
     // baseline choice. Draws the budget field, *fit budget* and the time
-    // field, then the running sweep or the last fit's result.
-    void draw(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session);
+    // field, then the running sweep or the last fit's result. `counter`
+    // (the panel's cost, when a counter: "fragments", ...) and `budgetCount`:
+    // the field then bounds that counter in its unit ("budget fragments"),
+    // and *fit budget* (which fits GPU ms) is off, saying so.
+    void draw(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session,
+              const std::string& counter = "", double* budgetCount = nullptr);
     // Every frame (also while the panel is collapsed): a reference waited
     // for, a finished sweep's pick applied, the measurement followed.
     void update(double budgetMs, bool againstCurrent, UiState& state, RenderSession& session);
@@ -60,7 +65,8 @@ struct FitBudgetView {
     void undo(UiState& state, RenderSession& session);
 
 private:
-    void controls(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session);
+    void controls(double& budgetMs, bool againstCurrent, UiState& state, RenderSession& session,
+                  const std::string& counter, double* budgetCount);
     void progress(UiState& state);
     void result(UiState& state, RenderSession& session);
     void measuredChange(UiState& state, RenderSession& session);

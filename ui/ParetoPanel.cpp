@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "renderer/Error.h"
+#include "renderer/OptionText.h"
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/bench/BudgetPick.h"
 #include "renderer/knobs/Preset.h"
@@ -36,16 +37,68 @@ std::string label(const TradeoffTable& t, const TradeoffRow& r, const std::vecto
     return s.empty() ? "point " + std::to_string(r.point) : s;
 }
 
-// The time across the plot: the table's time_ms (frame, a pass or a sum).
-double timeOf(const TradeoffRow& r) { return r.timeMs; }
+// An end of the axis across: 3 digits for ms, a count whole where it is under a billion ("9480", not "9.48e+03").
+std::string axisNumber(double v) {
+    char t[32];
+    std::snprintf(t, sizeof(t), std::fabs(v) >= 1000.0 && std::fabs(v) < 1e9 ? "%.0f" : "%.3g", v);
+    return t;
+}
+
+// The unit of a cost across: "ms" for gpu_ms, else the counter's own name.
+std::string unitOf(const std::string& cost) { return cost == "gpu_ms" ? "ms" : cost; }
 
 }  // namespace
+
+std::vector<std::string> ParetoPanel::costs() const {
+    std::vector<std::string> c{"gpu_ms"};
+    for (int i = 0; i < PassCounts::kCount; ++i)
+        if (table.hasCounter(i)) c.push_back(PassCounts::name(i));
+    return c;
+}
+
+std::string ParetoPanel::marksCost(const TradeoffTable& t) {
+    ParetoPanel probe;
+    probe.table = t;
+    for (const std::string& c : probe.costs()) {
+        TradeoffTable copy = t;
+        try {
+            copy.markParetoFront(t.time, c);
+        } catch (const std::exception&) {
+            continue;
+        }
+        bool same = true;
+        for (size_t i = 0; i < t.rows.size() && same; ++i) same = copy.rows[i].pareto == t.rows[i].pareto;
+        if (same) return c;
+    }
+    return "gpu_ms";
+}
+
+void ParetoPanel::tiesFromFront() {
+    // The ties are not in the CSV: decided again on the CSV's cost (as tradeoff merge does), the marks kept.
+    TradeoffTable ranked = table;
+    try {
+        ranked.markParetoFront(table.time, csvCost);
+    } catch (const std::exception&) {
+        return;
+    }
+    for (size_t i = 0; i < table.rows.size(); ++i) {
+        table.rows[i].errorTies = ranked.rows[i].errorTies;
+        table.rows[i].timeTies = ranked.rows[i].timeTies;
+    }
+    table.frontRules = ranked.frontRules;
+}
+
+double ParetoPanel::costAcross(const TradeoffRow& r) const {
+    return cost == "gpu_ms" ? r.timeMs : table.costOf(r, table.time, cost);
+}
 
 bool ParetoPanel::load(const std::string& file) {
     try {
         TradeoffTable t = TradeoffTable::readCsv(file);
         if (t.rows.empty()) throw Error(file + ": no rows (an empty sweep)");
         table = std::move(t);
+        csvCost = cost = marksCost(table);
+        tiesFromFront();
         tableIsFit = false;
         labelCentre.clear();
         pickedFor.clear();
@@ -243,21 +296,25 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
     else if (!waitingKnob.empty()) referenceWait(state);
     else sweepControls(state, session);
     showFinishedSweep(state);
-    fit.draw(budgetMs, againstCurrent, state, session);
+    if (cost == "gpu_ms" || table.rows.empty()) fit.draw(budgetMs, againstCurrent, state, session);
+    else fit.draw(budgetMs, againstCurrent, state, session, cost, &budgetCount);
     showFinishedFit(state);
     attribution.draw(state, session);
     csvControls();
     if (table.rows.empty()) {
-        wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms against error");
+        wrappedColored(kDimColor, "a tradeoff CSV (deferred-workbench tradeoff --csv FILE): GPU ms or a cost counter "
+                                  "against error");
         ImGui::End();
         return;
     }
     const std::vector<std::string> gs = groups();
     groupControls(gs);
+    costControls();
     std::string metric;
     const std::vector<int> rows = groupRows(gs[static_cast<size_t>(group)], metric);
     if (rows.empty()) {
-        ImGui::TextDisabled("no row of this group has both a time and an error");
+        ImGui::TextDisabled(cost == "gpu_ms" ? "no row of this group has both a time and an error"
+                                             : "no row of this group has both this counter and an error");
         ImGui::End();
         return;
     }
@@ -275,19 +332,24 @@ void ParetoPanel::draw(const char* title, bool* open, UiState& state, RenderSess
 // What the budget field picks among the group's points (BudgetPicker); the
 // fit's own table at the fit's budget: its lines are the fit's, above.
 void ParetoPanel::budgetControls(const std::string& groupName) {
-    const std::string key = groupName + "@" + std::to_string(budgetMs);
+    const bool byCounter = cost != "gpu_ms";
+    const double budget = byCounter ? budgetCount : budgetMs;
+    const std::string key = groupName + "@" + cost + "@" + optionNumberText(budget);
     if (key != pickedFor) {
         pickedFor = key;
         pickLines.clear();
         for (auto& r : table.rows) r.pick.clear();
         const std::string camera = groupName.substr(0, groupName.find(" | "));
         try {
-            if (budgetMs != 0.0) pickLines = BudgetPicker::pick(table, budgetMs, camera).lines;
+            // As tradeoff --budget-ms X, or --cost C --budget N (exact); refused in the CLI's words.
+            if (budget != 0.0)
+                pickLines = byCounter ? BudgetPicker::pick(table, budget, camera, BudgetPicker::counterCost(table, cost)).lines
+                                      : BudgetPicker::pick(table, budget, camera).lines;
         } catch (const Error& e) {
             pickLines = {e.what()};
         }
     }
-    if (tableIsFit && budgetMs == fitBudgetMs) return;
+    if (tableIsFit && !byCounter && budgetMs == fitBudgetMs) return;
     for (const auto& l : pickLines) wrappedColored(l.rfind("pick: ", 0) == 0 ? kOkColor : kErrorColor, l);
     if (!pickLines.empty()) noteItem("pareto.pick");
 }
@@ -418,6 +480,7 @@ void ParetoPanel::askForReference(UiState& state, RenderSession& session) {
 void ParetoPanel::showFinishedSweep(UiState& state) {
     if (sweepShown || !state.sweep.done()) return;
     table = state.sweep.table();
+    csvCost = cost = "gpu_ms";
     tableIsFit = false;
     labelCentre.clear();
     pickedFor.clear();
@@ -434,6 +497,7 @@ void ParetoPanel::showFinishedFit(UiState& state) {
     if (!run.done() || fitShown == run.finished()) return;
     fitShown = run.finished();
     table = run.table();
+    csvCost = cost = "gpu_ms";
     tableIsFit = true;
     fitBudgetMs = run.settings().budgetMs;
     labelCentre.clear();
@@ -485,6 +549,33 @@ void ParetoPanel::groupControls(const std::vector<std::string>& gs) {
     if (!applied.empty()) ImGui::TextColored(kOkColor, "%s", applied.c_str());
 }
 
+// What the plot has across: "GPU frame ms (median)", or a counter of the time's span: "frame fragments (exact)".
+std::string ParetoPanel::acrossName() const {
+    return cost == "gpu_ms" ? "GPU " + table.time + " ms (median)" : table.time + " " + cost + " (exact)";
+}
+
+// The cost across (gpu_ms or a counter the table holds); a line when the marks were decided on another.
+void ParetoPanel::costControls() {
+    const std::vector<std::string> cs = costs();
+    if (std::find(cs.begin(), cs.end(), cost) == cs.end()) cost = "gpu_ms";
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("primitives").x + ImGui::GetFrameHeight() * 2.0f);
+    if (ImGui::BeginCombo("cost##pareto_cost", cost.c_str())) {
+        for (const std::string& c : cs)
+            if (ImGui::Selectable(c.c_str(), c == cost)) cost = c;
+        ImGui::EndCombo();
+    }
+    noteItem("pareto.cost");
+    if (ImGui::IsItemHovered())
+        tooltip("across the plot (tradeoff --cost): gpu_ms, the table's %s time with its interval, or a counter of "
+                "its span (exact); the budget field then bounds it in its unit",
+                table.time.c_str());
+    if (cost != csvCost) {
+        wrappedColored(ImVec4(0.95f, 0.8f, 0.35f, 1.0f), "the front marks are the CSV's, decided on its cost " + csvCost + ", not on " + cost +
+                                       " (tradeoff merge --cost " + cost + " decides them on " + cost + ")");
+        noteItem("pareto.marks_cost");
+    }
+}
+
 // The rows of `groupName` with both numbers (indices into table.rows), their
 // metric, and plotAxes around them; none: plotAxes is left as it was.
 std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::string& metric) {
@@ -492,10 +583,13 @@ std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::strin
     double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
     for (size_t i = 0; i < table.rows.size(); ++i) {
         const TradeoffRow& r = table.rows[i];
-        if (groupOf(r) != groupName || !finite(timeOf(r)) || !finite(r.error)) continue;
+        if (groupOf(r) != groupName || !finite(costAcross(r)) || !finite(r.error)) continue;
         rows.push_back(static_cast<int>(i));
         metric = r.metric;
-        for (double x : {r.timeMs, r.timeMsLo, r.timeMsHi})
+        // A counter is exact: its value alone; the time with its interval.
+        const double c = costAcross(r);
+        const double xs[3] = {c, cost == "gpu_ms" ? r.timeMsLo : c, cost == "gpu_ms" ? r.timeMsHi : c};
+        for (double x : xs)
             if (finite(x)) xlo = std::min(xlo, x), xhi = std::max(xhi, x);
         for (double y : {r.error, r.errorLo, r.errorHi})
             if (finite(y)) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
@@ -504,7 +598,7 @@ std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::strin
     // Padded around the data, but never below 0 where the data are not (a
     // time or an error of 0 sits on the axis, not over a negative range).
     const bool xPositive = xlo >= 0.0, yPositive = ylo >= 0.0;
-    if (xhi <= xlo) xlo -= 0.5, xhi += 0.5;
+    if (xhi <= xlo) xlo -= 0.5 * std::max(std::fabs(xlo), 1.0), xhi += 0.5 * std::max(std::fabs(xhi), 1.0);
     if (yhi <= ylo) ylo -= 0.5 * std::max(std::fabs(ylo), 1e-6), yhi += 0.5 * std::max(std::fabs(yhi), 1e-6);
     const double padX = 0.06 * (xhi - xlo), padY = 0.08 * (yhi - ylo);
     xlo -= padX, xhi += padX, ylo -= padY, yhi += padY;
@@ -520,13 +614,15 @@ std::vector<int> ParetoPanel::groupRows(const std::string& groupName, std::strin
 void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, UiState& state, RenderSession& session) {
     {
         // A narrow panel has no room for the axes' names under the plot: a line above it says them.
-        char lo[96], whole[160];
-        std::snprintf(lo, sizeof(lo), "%.3g ms", plotAxes.xlo);
-        std::snprintf(whole, sizeof(whole), "%.3g ms   GPU %s (median) against %s", plotAxes.xhi, table.time.c_str(),
-                      metric.c_str());
+        const std::string unit = unitOf(cost);
+        char lo[96], whole[200];
+        std::snprintf(lo, sizeof(lo), "%s %s", axisNumber(plotAxes.xlo).c_str(), unit.c_str());
+        std::snprintf(whole, sizeof(whole), "%s %s   %s against %s", axisNumber(plotAxes.xhi).c_str(), unit.c_str(),
+                      acrossName().c_str(), metric.c_str());
         const float plotWidth = std::max(ImGui::GetContentRegionAvail().x, 80.0f) - 64.0f;
         if (ImGui::CalcTextSize(whole).x > plotWidth - ImGui::CalcTextSize(lo).x - 8.0f) {
-            wrappedColored(kDimColor, "across: GPU " + table.time + " ms (median); up: " + metric);
+            wrappedColored(kDimColor, "across: " + acrossName() + "; up: " + metric);
+            noteItem("pareto.axes");
         }
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -545,7 +641,7 @@ void ParetoPanel::plot(const std::vector<int>& rows, const std::string& metric, 
     plotPoints(f, rows, plotHovered);
     if (hovered >= 0) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(hovered)];
-        ImGui::GetWindowDrawList()->AddCircle(ImVec2(f.sx(timeOf(r)), f.sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16,
+        ImGui::GetWindowDrawList()->AddCircle(ImVec2(f.sx(costAcross(r)), f.sy(r.error)), 8.0f, IM_COL32(255, 255, 255, 255), 16,
                                               1.5f);
         tooltip("%s", hoverText(r).c_str());
         if (clicked) apply(hovered, state, session);
@@ -558,17 +654,20 @@ void ParetoPanel::plotAxesDrawn(const PlotFrame& f, float textX, const std::stri
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddRectFilled(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(24, 24, 28, 255));
     dl->AddRect(ImVec2(f.left, f.top), ImVec2(f.right, f.bottom), IM_COL32(90, 90, 100, 255));
-    char t[96];
+    char t[200];
     std::snprintf(t, sizeof(t), "%.3g", f.axes.yhi);
     dl->AddText(ImVec2(textX, f.top), IM_COL32(170, 170, 170, 255), t);
     std::snprintf(t, sizeof(t), "%.3g", f.axes.ylo);
     dl->AddText(ImVec2(textX, f.bottom - ImGui::GetFontSize()), IM_COL32(170, 170, 170, 255), t);
-    std::snprintf(t, sizeof(t), "%.3g ms", f.axes.xlo);
+    const std::string unit = unitOf(cost);
+    std::snprintf(t, sizeof(t), "%s %s", axisNumber(f.axes.xlo).c_str(), unit.c_str());
     dl->AddText(ImVec2(f.left, f.bottom + 4), IM_COL32(170, 170, 170, 255), t);
     const float loWidth = ImGui::CalcTextSize(t).x;
     // The axes' names after the upper end where they fit, else the end alone (the caption line above says them).
-    std::snprintf(t, sizeof(t), "%.3g ms   GPU %s (median) against %s", f.axes.xhi, table.time.c_str(), metric.c_str());
-    if (ImGui::CalcTextSize(t).x > f.right - f.left - loWidth - 8.0f) std::snprintf(t, sizeof(t), "%.3g ms", f.axes.xhi);
+    std::snprintf(t, sizeof(t), "%s %s   %s against %s", axisNumber(f.axes.xhi).c_str(), unit.c_str(),
+                  acrossName().c_str(), metric.c_str());
+    if (ImGui::CalcTextSize(t).x > f.right - f.left - loWidth - 8.0f)
+        std::snprintf(t, sizeof(t), "%s %s", axisNumber(f.axes.xhi).c_str(), unit.c_str());
     dl->AddText(ImVec2(std::max(f.left + loWidth + 8.0f, f.right - ImGui::CalcTextSize(t).x), f.bottom + 4),
                 IM_COL32(170, 170, 170, 255), t);
 }
@@ -580,11 +679,11 @@ void ParetoPanel::plotFront(const PlotFrame& f, const std::vector<int>& rows) {
     for (int i : rows)
         if (table.rows[static_cast<size_t>(i)].pareto) front.push_back(i);
     std::sort(front.begin(), front.end(), [&](int a, int b) {
-        return timeOf(table.rows[static_cast<size_t>(a)]) < timeOf(table.rows[static_cast<size_t>(b)]);
+        return costAcross(table.rows[static_cast<size_t>(a)]) < costAcross(table.rows[static_cast<size_t>(b)]);
     });
     for (size_t k = 1; k < front.size(); ++k) {
         const TradeoffRow &a = table.rows[static_cast<size_t>(front[k - 1])], &b = table.rows[static_cast<size_t>(front[k])];
-        dl->AddLine(ImVec2(f.sx(timeOf(a)), f.sy(a.error)), ImVec2(f.sx(timeOf(b)), f.sy(b.error)),
+        dl->AddLine(ImVec2(f.sx(costAcross(a)), f.sy(a.error)), ImVec2(f.sx(costAcross(b)), f.sy(b.error)),
                     IM_COL32(255, 170, 60, 160), 1.5f);
     }
 }
@@ -612,6 +711,7 @@ std::string ParetoPanel::hoverText(const TradeoffRow& r) const {
     std::snprintf(numbers, sizeof(numbers), "\n%s %.4g [%.4g, %.4g]\nGPU %s %.3f ms [%.3f, %.3f]", r.metric.c_str(), r.error,
                   r.errorLo, r.errorHi, table.time.c_str(), r.timeMs, r.timeMsLo, r.timeMsHi);
     std::string s = label(table, r, labelCentre) + numbers;
+    if (cost != "gpu_ms") s += "\n" + acrossName() + " " + optionNumberText(costAcross(r)) + " " + cost;
     if (r.front == "pareto" || (r.front.empty() && r.pareto)) s += "\non the Pareto front";
     else if (r.front == "indistinguishable") s += "\nindistinguishable: off the front, not confidently dominated";
     else if (r.front == "dominated") {
@@ -649,9 +749,10 @@ void ParetoPanel::plotPoints(const PlotFrame& f, const std::vector<int>& rows, b
     };
     for (int i : rows) {
         const TradeoffRow& r = table.rows[static_cast<size_t>(i)];
-        const ImVec2 p(f.sx(timeOf(r)), f.sy(r.error));
+        const ImVec2 p(f.sx(costAcross(r)), f.sy(r.error));
         const ImU32 bar = IM_COL32(150, 150, 160, 200);
-        if (finite(r.timeMsLo) && finite(r.timeMsHi)) dl->AddLine(ImVec2(f.sx(r.timeMsLo), p.y), ImVec2(f.sx(r.timeMsHi), p.y), bar);
+        // A counter is exact: no interval across.
+        if (cost == "gpu_ms" && finite(r.timeMsLo) && finite(r.timeMsHi)) dl->AddLine(ImVec2(f.sx(r.timeMsLo), p.y), ImVec2(f.sx(r.timeMsHi), p.y), bar);
         if (finite(r.errorLo) && finite(r.errorHi)) dl->AddLine(ImVec2(p.x, f.sy(r.errorLo)), ImVec2(p.x, f.sy(r.errorHi)), bar);
         drawMarker(dl, p, r);
         if (r.pareto) drawLabel(p, label(table, r, labelCentre));

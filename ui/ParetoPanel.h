@@ -13,13 +13,24 @@
 // trace it first (as F9 does) or, as an explicit choice the plot then names,
 // to measure against the current image (ParetoPanel::startSweep). The plot's
 // axes are clamped to the data's sign: no negative time or error range.
-// Across: the table's time (time_ms: the frame, a pass or a sum of passes, as
-// tradeoff --time ranked it). The points are drawn by the CSV's `front`:
+// Across: the cost the `cost` combo names: gpu_ms, the table's time (time_ms:
+// the frame, a pass or a sum of passes, as tradeoff --time ranked it), with
+// its interval; or a counter the table holds (fragments, samples, primitives,
+// vertices, compute, bytes of that time's span: TradeoffTable::costOf),
+// exact, so with no interval across, the axis in the counter's unit. The
+// combo starts at the CSV's own cost (marksCost: the one whose point-estimate
+// front is the CSV's pareto column; the CSV does not name it). The marks are
+// always the CSV's: with another cost chosen, a line says they were decided
+// on the CSV's cost. The points are drawn by the CSV's `front`:
 // on the front and told apart (filled), on the front but tied with another
 // point (a ring), indistinguishable (a hollow square), dominated (small); the
 // tooltip names dominated_by and tied_with. A budget (ms, above 0) marks the
 // pick among the group's points (BudgetPicker: the least error whose time's
 // 95% interval ends under it) with a green ring, and says the picker's lines;
+// with a counter chosen, the budget is in that counter's unit and the pick
+// BudgetPicker's counter form (tradeoff --cost C --budget N). A budget out
+// of the CLI's range (OptionLimits' kBudgetMs / kBudget) is refused on screen
+// with the CLI's message (BudgetPicker::check);
 // *fit budget* beside it sweeps the speed/quality knobs about the current
 // settings, applies the pick and measures it (FitBudgetView), its sweep then
 // the table on show.
@@ -78,9 +89,14 @@ struct ParetoPanel {
     std::vector<std::string> labelCentre;
     // The budget field: 0 none; the pick's lines (or why none) for the group on show.
     double budgetMs = 0.0;
+    double budgetCount = 0.0;  // the budget field with a counter cost: in that counter's unit
     std::vector<std::string> pickLines;
+    // The plot's cost across: "gpu_ms" or a counter's name (PassCounts); and
+    // the cost the table's front marks were decided on (marksCost at load).
+    std::string cost = "gpu_ms";
+    std::string csvCost = "gpu_ms";
     std::string pickedFor;  // the group and budget pickLines are for (recomputed when either changes)
-    // The plot's ranges as last drawn: GPU ms across, error up (after padding
+    // The plot's ranges as last drawn: the cost across, error up (after padding
     // and clamping: never below 0 when the data are not).
     struct Axes {
         double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
@@ -115,6 +131,18 @@ struct ParetoPanel {
     bool load(const std::string& file);
     // The groups of rows the plot can show: "camera | metric | buffer".
     std::vector<std::string> groups() const;
+    // The costs the plot can put across: gpu_ms, then each counter some row holds.
+    std::vector<std::string> costs() const;
+    // The cost a table's pareto column was decided on: the first of costs()
+    // whose point-estimate front (TradeoffTable::markParetoFront on a copy)
+    // marks the same rows; gpu_ms when none does (or gpu_ms does).
+    static std::string marksCost(const TradeoffTable& t);
+    // The rows' error and time ties and the front's rule (not in the CSV),
+    // from the front decided again on csvCost, as tradeoff merge decides it;
+    // the CSV's marks are kept. The budget's lines then say the ties as the CLI does.
+    void tiesFromFront();
+    // A row's cost across (NaN: none): time_ms for gpu_ms, else the counter.
+    double costAcross(const TradeoffRow& r) const;
     // Applies row `row`'s settings; false (and `error` set) when any is refused.
     bool apply(int row, UiState& state, RenderSession& session);
 
@@ -139,6 +167,8 @@ private:
     void showFinishedFit(UiState& state);
     void csvControls();
     void groupControls(const std::vector<std::string>& gs);
+    void costControls();
+    std::string acrossName() const;
     std::vector<int> groupRows(const std::string& groupName, std::string& metric);
     void plot(const std::vector<int>& rows, const std::string& metric, UiState& state, RenderSession& session);
     void plotAxesDrawn(const PlotFrame& f, float textX, const std::string& metric);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "renderer/Error.h"
+#include "renderer/OptionText.h"
 #include "renderer/metrics/Bootstrap.h"
 
 namespace dw {
@@ -83,11 +84,10 @@ void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, con
 
 }  // namespace
 
-void BudgetPicker::check(double ms, const std::string& flag) {
-    if (!(std::isfinite(ms) && ms > 0.0))
-        throw Error(flag + ": expected " + (flag == "--budget-ms" ? "milliseconds" : "a budget") +
-                    " above 0 (a finite number), got " +
-                    std::string(std::isnan(ms) ? "nan" : std::isinf(ms) ? (ms > 0 ? "inf" : "-inf") : shortNumber(ms)));
+void BudgetPicker::check(double budget, const std::string& flag) {
+    // The range tradeoff's command line holds the flag to (OptionLimits' kBudgetMs, kBudget), in its words.
+    const NumericOption* o = findNumericOption("tradeoff", flag == "--budget-ms" ? "--budget-ms" : "--budget");
+    if (!o->holds(budget)) throw Error(optionRefusal(*o, optionNumberText(budget)));
 }
 
 BudgetCost BudgetPicker::timeCost(const TradeoffTable& t) {

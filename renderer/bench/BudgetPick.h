@@ -36,7 +36,11 @@ struct BudgetCost {
 
 class BudgetPicker {
 public:
-    // Throws dw::Error ("<flag>: ...", one line) unless the budget is a finite number above 0.
+    // Throws dw::Error (one line, the command line's own refusal: "--budget-ms
+    // must be a number above 0 and at most 1000000000 (GPU milliseconds), got
+    // '0'") unless the budget is in tradeoff's range for `flag` (--budget-ms:
+    // OptionLimits' kBudgetMs; --budget: kBudget). Python and the window check
+    // through here, so they refuse what the CLI refuses, in the same words.
     static void check(double budget, const std::string& flag = "--budget-ms");
     // The pick among the rows of `camera` ("all" for several cameras) by
     // the table's time (time_ms); sets those rows' pick (pick | tied | fits |

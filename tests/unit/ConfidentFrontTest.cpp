@@ -249,14 +249,28 @@ TEST(BudgetPick, ClaimsNoConfidenceFromTooFewFramesAndSaysWhenOnlyOneFits) {
 }
 
 TEST(BudgetPick, RefusesBudgetsThatAreNotMilliseconds) {
-    for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    // What the command line refuses (OptionLimits' kBudgetMs: above 0, at most 1e9), in its words.
+    for (double bad : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity(), 1e9 * 1.5}) {
         try {
             BudgetPicker::check(bad);
             ADD_FAILURE() << bad;
         } catch (const Error& e) {
-            EXPECT_EQ(std::string(e.what()).rfind("--budget-ms: expected milliseconds above 0", 0), 0u) << e.what();
+            EXPECT_EQ(std::string(e.what()).rfind("--budget-ms must be a number above 0 and at most 1000000000 "
+                                                  "(GPU milliseconds), got '",
+                                                  0),
+                      0u)
+                << e.what();
             EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
         }
+    }
+    EXPECT_NO_THROW(BudgetPicker::check(1e9));
+    // A counter's budget: kBudget (at most 1e18), named --budget.
+    EXPECT_NO_THROW(BudgetPicker::check(1e18, "--budget"));
+    try {
+        BudgetPicker::check(2e18, "--budget");
+        ADD_FAILURE() << "2e18 taken";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "--budget must be a number above 0 and at most 1e+18 (the --cost counter's unit), got '2e+18'");
     }
 }
 
