@@ -9,6 +9,7 @@
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/graph/PassTimer.h"
 #include "renderer/passes/ReferencePass.h"
+#include "renderer/reference/ReferenceModel.h"
 #include "ui/Widgets.h"
 
 namespace dw::ui {
@@ -97,6 +98,19 @@ std::vector<std::string> shortened(std::vector<std::string> lines, const FitBudg
 
 }  // namespace
 
+// Against the CPU reference: the effects on that its final image has not (as
+// the CLI's note says), which a sweep then finds "more accurate" turned off.
+static std::string unmodelledNote(bool againstCurrent, const RenderSession& session) {
+    if (againstCurrent) return "";
+    const auto model = reference::ReferenceModel::fromKnobs(session.knobs(), session.scene());
+    const reference::KnobReport report = reference::reportKnobs(session.knobs(), model);
+    std::string on;
+    for (const auto& n : report.unmodelledOn) on += (on.empty() ? " " : ", ") + n;
+    if (on.empty()) return "";
+    return "note: the reference's final image has no" + on +
+           ": a point that turns them off scores nearer it (set them false, aa.method none, to fit the shading alone)";
+}
+
 bool FitBudgetView::start(double budgetMs, bool againstCurrent, UiState& state, RenderSession& session) {
     message.clear();
     waitingForReference = false;
@@ -125,6 +139,8 @@ bool FitBudgetView::start(double budgetMs, bool againstCurrent, UiState& state, 
     }
     pickLines.clear();
     summary.clear();
+    referenceNote = unmodelledNote(againstCurrent, session);
+    if (!referenceNote.empty()) state.log.info("fit budget: " + referenceNote, state.time);
     errorSaid = false;
     state.log.succeeded(kAction);
     state.log.info("fit budget: sweeping " + std::to_string(state.fitBudget.points()) +
@@ -164,7 +180,8 @@ void FitBudgetView::takeResult(UiState& state, RenderSession& session) {
     errorSaid = true;
     pickLines = shortened(run.pick().lines, run);
     summary = std::to_string(run.points()) + " points about the settings, FLIP against " + run.baselineName() +
-              (run.leftOut() ? "; " + std::to_string(run.leftOut()) + " left out: over the AOV cost limit" : "");
+              (run.leftOut() ? "; " + std::to_string(run.leftOut()) + " left out: over the AOV cost limit" : "") +
+              (referenceNote.empty() ? "" : "\n" + referenceNote);
     if (run.pick().point < 0) {
         message = "fit budget: nothing applied (no point fits the budget)";
         state.log.info(message + ": " + (pickLines.empty() ? std::string() : pickLines.front()), state.time);

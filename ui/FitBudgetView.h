@@ -34,6 +34,7 @@ namespace dw::ui {
 struct FitBudgetView {
     char time[128] = "frame";      // --time: frame, a pass or a sum a+b
     std::string message;           // why the last fit did not start, stopped, or applied nothing
+    std::string referenceNote;     // against the reference: the effects on that it has not ("" none)
     std::string summary;           // what the last fit swept ("41 points ...; FLIP against ...")
     bool errorSaid = true;         // the running fit's stop (FitBudgetRun::error) is in `message`
     bool waitingForReference = false;

@@ -84,6 +84,9 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     }
     ASSERT_TRUE(state.fitBudget.running()) << panel.fit.message;
     EXPECT_EQ(state.fitBudget.baselineName(), "the CPU reference");
+    // The default aa.method=fxaa is an effect the reference's final image has not: said before the pick.
+    EXPECT_EQ(panel.fit.referenceNote.rfind("note: the reference's final image has no", 0), 0u) << panel.fit.referenceNote;
+    EXPECT_NE(panel.fit.referenceNote.find("aa.method"), std::string::npos) << panel.fit.referenceNote;
     driver.frame();
     EXPECT_TRUE(drawnNow("pareto.fit_progress"));
     // The timings panel watches the knobs as in the window (its committed values: the previous settings).
