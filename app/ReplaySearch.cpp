@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "renderer/study/TradeoffStudy.h"
 
@@ -43,6 +44,43 @@ const TradeoffRow* foundRow(const TradeoffTable& t, int evaluation) {
     for (const auto& r : t.rows)
         if (r.point == evaluation && (r.camera == TradeoffTable::kAllCameras || r.camera == "0")) return &r;
     return nullptr;
+}
+
+// A row's settings: every axis but the walk's own (step, proposal), with its camera, metric and buffer.
+std::string settingsKey(const TradeoffTable& t, const TradeoffRow& r) {
+    std::string key = r.camera + "|" + r.metric + "|" + r.buffer;
+    for (size_t a = 0; a < t.axes.size() && a < r.axisValues.size(); ++a)
+        if (t.axes[a] != "step" && t.axes[a] != "proposal") key += "|" + t.axes[a] + "=" + r.axisValues[a];
+    return key;
+}
+
+// Every evaluation both walks measured with the same settings, compared as
+// replay compares a sweep's rows (ReplayReport: errors, counters, times,
+// front); the new walk's rows take the record's point numbers. Evaluations
+// of one walk only are counted and said, not compared. Returns the verdict.
+int compareEvaluations(const TradeoffTable& before, const TradeoffTable& after, int framesBefore, int framesAfter,
+                       bool exactCost) {
+    std::map<std::string, const TradeoffRow*> recorded;
+    for (const auto& r : before.rows) recorded.emplace(settingsKey(before, r), &r);
+    TradeoffTable was = before, now = after;
+    was.rows.clear();
+    now.rows.clear();
+    size_t onlyNow = 0;
+    for (const auto& r : after.rows) {
+        const auto it = recorded.find(settingsKey(after, r));
+        if (it == recorded.end()) {
+            ++onlyNow;
+            continue;
+        }
+        was.rows.push_back(*it->second);
+        now.rows.push_back(r);
+        now.rows.back().point = it->second->point;
+        recorded.erase(it);
+    }
+    std::printf("search: %zu evaluation(s) with the same settings in both walks compared; %zu only in the record, "
+                "%zu only in this walk (not compared)\n",
+                now.rows.size(), recorded.size(), onlyNow);
+    return compareTradeoff(was, now, framesBefore, framesAfter, exactCost).verdict();
 }
 
 }  // namespace
@@ -93,6 +131,9 @@ BudgetSearchResult replaySearch(const ExperimentRecord& old, const std::string& 
     std::printf("search: %s (%d -> %d evaluation(s)): %s -> %s\n",
                 moved ? ("moved: " + changes).c_str() : "the same settings found", setting("search_evaluations"),
                 found.evaluations, pointText(before, was).c_str(), pointText(found.table, now).c_str());
+    const int evaluations = compareEvaluations(before, found.table, old.frames, again.options.frames,
+                                               again.options.cost != "gpu_ms");
+    if (evaluations != 0) moved = true;
     if (newRecord) {
         const TradeoffRunner start(again.options);
         ExperimentRecord::forTradeoff(again, start.scene(), BudgetSearch::asResult(found), machine).write(*newRecord);

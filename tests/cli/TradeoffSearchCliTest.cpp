@@ -112,6 +112,43 @@ TEST(TradeoffSearchCli, ASearchRecordReplaysTheSameSettings) {
     EXPECT_NE(again.out.find("search: the same settings found"), std::string::npos) << again.out;
 }
 
+// Replay of a search checks every evaluation both walks measured with the
+// same settings, not only the settings found: a record edited in one
+// evaluation's error and another's counter makes replay name those numbers,
+// say "tradeoff: differs" and exit 1; the unedited record says "the same".
+TEST(TradeoffSearchCli, ASearchReplayChecksEveryEvaluationsNumbers) {
+    const Result r = run(kTiny + "--search --cost fragments --budget 1e12 --max-evals 4" + files("search-checked"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    const Result same = run("replay " + (dir() / "search-checked.json").string());
+    EXPECT_EQ(same.code, 0) << same.err << same.out;
+    EXPECT_NE(same.out.find("search: the same settings found"), std::string::npos) << same.out;
+    EXPECT_NE(same.out.find("evaluation(s) with the same settings in both walks compared; 0 only in the record, 0 only "
+                            "in this walk"),
+              std::string::npos)
+        << same.out;
+    EXPECT_NE(same.out.find("tradeoff: the same ("), std::string::npos) << same.out;
+    EXPECT_NE(same.out.find("every counter equal"), std::string::npos) << same.out;
+
+    nlohmann::json rec = readJson(dir() / "search-checked.json");
+    nlohmann::json& rows = rec["results"]["rows"];
+    ASSERT_GE(rows.size(), 2u);
+    const double error = rows[0]["error"].get<double>();
+    rows[0]["error"] = error * 2.0;
+    nlohmann::json& fragments = rows[1]["counters"]["frame"]["fragments"];
+    const double counted = fragments.get<double>();
+    fragments = 123.0;
+    std::ofstream((dir() / "search-edited.json").string()) << rec.dump(2);
+    const Result moved = run("replay " + (dir() / "search-edited.json").string());
+    EXPECT_EQ(moved.code, 1) << moved.err << moved.out;
+    EXPECT_NE(moved.out.find(", step=1, proposal=start"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("(differs)"), std::string::npos) << moved.out;
+    char counter[96];
+    std::snprintf(counter, sizeof counter, "counters moved: fragments 123 -> %.17g", counted);
+    EXPECT_NE(moved.out.find(counter), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("tradeoff: differs (1 row(s) with another error"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("1 with a counter moved"), std::string::npos) << moved.out;
+}
+
 // tradeoff merge --budget-ms: the pick over the merged rows is the point the
 // unmerged table's pick is (same rows), with the merge's intervals rule said;
 // a budgeted record keeps --time and the budget, and replay says the pick is the same.
