@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <map>
 
 #include "renderer/study/TradeoffStudy.h"
@@ -60,26 +61,30 @@ std::string settingsKey(const TradeoffTable& t, const TradeoffRow& r) {
 // of one walk only are counted and said, not compared. Returns the verdict.
 int compareEvaluations(const TradeoffTable& before, const TradeoffTable& after, int framesBefore, int framesAfter,
                        bool exactCost) {
-    std::map<std::string, const TradeoffRow*> recorded;
-    for (const auto& r : before.rows) recorded.emplace(settingsKey(before, r), &r);
+    // A walk measures some settings more than once (the current point of
+    // each step): the k-th measurement of a setting in one walk meets the
+    // k-th in the other.
+    std::map<std::string, std::deque<const TradeoffRow*>> recorded;
+    for (const auto& r : before.rows) recorded[settingsKey(before, r)].push_back(&r);
     TradeoffTable was = before, now = after;
     was.rows.clear();
     now.rows.clear();
-    size_t onlyNow = 0;
+    size_t onlyNow = 0, onlyRecord = 0;
     for (const auto& r : after.rows) {
         const auto it = recorded.find(settingsKey(after, r));
-        if (it == recorded.end()) {
+        if (it == recorded.end() || it->second.empty()) {
             ++onlyNow;
             continue;
         }
-        was.rows.push_back(*it->second);
+        was.rows.push_back(*it->second.front());
         now.rows.push_back(r);
-        now.rows.back().point = it->second->point;
-        recorded.erase(it);
+        now.rows.back().point = it->second.front()->point;
+        it->second.pop_front();
     }
+    for (const auto& [key, rows] : recorded) onlyRecord += rows.size();
     std::printf("search: %zu evaluation(s) with the same settings in both walks compared; %zu only in the record, "
                 "%zu only in this walk (not compared)\n",
-                now.rows.size(), recorded.size(), onlyNow);
+                now.rows.size(), onlyRecord, onlyNow);
     return compareTradeoff(was, now, framesBefore, framesAfter, exactCost).verdict();
 }
 

@@ -117,17 +117,23 @@ TEST(TradeoffSearchCli, ASearchRecordReplaysTheSameSettings) {
 // evaluation's error and another's counter makes replay name those numbers,
 // say "tradeoff: differs" and exit 1; the unedited record says "the same".
 TEST(TradeoffSearchCli, ASearchReplayChecksEveryEvaluationsNumbers) {
-    const Result r = run(kTiny + "--search --cost fragments --budget 1e12 --max-evals 4" + files("search-checked"));
+    const Result r = run(kTiny + "--search --cost fragments --budget 4e6 --max-evals 8" + files("search-checked"));
     ASSERT_EQ(r.code, 0) << r.err << r.out;
+    // Unedited: every evaluation met again, its error and counters equal
+    // (the times are not asserted: a loaded machine may move them).
     const Result same = run("replay " + (dir() / "search-checked.json").string());
-    EXPECT_EQ(same.code, 0) << same.err << same.out;
     EXPECT_NE(same.out.find("search: the same settings found"), std::string::npos) << same.out;
-    EXPECT_NE(same.out.find("evaluation(s) with the same settings in both walks compared; 0 only in the record, 0 only "
-                            "in this walk"),
-              std::string::npos)
-        << same.out;
-    EXPECT_NE(same.out.find("tradeoff: the same ("), std::string::npos) << same.out;
-    EXPECT_NE(same.out.find("every counter equal"), std::string::npos) << same.out;
+    const TradeoffTable walked = TradeoffTable::readCsv((dir() / "search-checked.csv").string());
+    const std::string all = "search: " + std::to_string(walked.rows.size()) +
+                            " evaluation(s) with the same settings in both walks compared; 0 only in the record, 0 only "
+                            "in this walk";
+    EXPECT_NE(same.out.find(all), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("(differs)"), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("counters moved"), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("counters not measured here"), std::string::npos) << same.out;
+    if (same.code == 0) {
+        EXPECT_NE(same.out.find("every counter equal"), std::string::npos) << same.out;
+    }
 
     nlohmann::json rec = readJson(dir() / "search-checked.json");
     nlohmann::json& rows = rec["results"]["rows"];
