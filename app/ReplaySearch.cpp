@@ -30,8 +30,14 @@ bool hasPick(const TradeoffTable& t) {
     return false;
 }
 
-std::string pointText(const TradeoffTable& t, const TradeoffRow* r) {
+// `cost` a counter (--cost fragments|...): its value over the table's time span follows.
+std::string pointText(const TradeoffTable& t, const TradeoffRow* r, const std::string& cost = "gpu_ms") {
     if (!r) return "none fits";
+    if (cost != "gpu_ms") {
+        char text[64];
+        std::snprintf(text, sizeof(text), "%.17g", t.costOf(*r, t.time, cost));
+        return pointText(t, r) + ", " + cost + " " + text;
+    }
     std::string values;
     for (size_t a = 0; a < t.axes.size() && a < r->axisValues.size(); ++a)
         values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r->axisValues[a];
@@ -135,7 +141,8 @@ BudgetSearchResult replaySearch(const ExperimentRecord& old, const std::string& 
     moved = !changes.empty();
     std::printf("search: %s (%d -> %d evaluation(s)): %s -> %s\n",
                 moved ? ("moved: " + changes).c_str() : "the same settings found", setting("search_evaluations"),
-                found.evaluations, pointText(before, was).c_str(), pointText(found.table, now).c_str());
+                found.evaluations, pointText(before, was, again.options.cost).c_str(),
+                pointText(found.table, now, again.options.cost).c_str());
     const int evaluations = compareEvaluations(before, found.table, old.frames, again.options.frames,
                                                again.options.cost != "gpu_ms");
     if (evaluations != 0) moved = true;

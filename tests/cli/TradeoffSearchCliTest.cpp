@@ -147,6 +147,10 @@ TEST(TradeoffSearchCli, ASearchReplayChecksEveryEvaluationsNumbers) {
     const Result moved = run("replay " + (dir() / "search-edited.json").string());
     EXPECT_EQ(moved.code, 1) << moved.err << moved.out;
     EXPECT_NE(moved.out.find(", step=1, proposal=start"), std::string::npos) << moved.out;
+    // The found point's counter, the budget's own cost, is on the search line.
+    const size_t line = moved.out.find("search: the same settings found");
+    ASSERT_NE(line, std::string::npos) << moved.out;
+    EXPECT_LT(moved.out.find(", fragments ", line), moved.out.find('\n', line)) << moved.out;
     EXPECT_NE(moved.out.find("(differs)"), std::string::npos) << moved.out;
     char counter[96];
     std::snprintf(counter, sizeof counter, "counters moved: fragments 123 -> %.17g", counted);
