@@ -15,7 +15,9 @@
 // identical image exit 0. Exit 0: the same (render: the image is identical; bench: every
 // configuration is there, its lights per pixel equal, and no ratio's 95%
 // interval lies wholly outside [0.8, 1.25]; tradeoff: every row there, its
-// error equal, no frame time moved beyond that band); 1: it differs; 2: the record is
+// error, its interval and every counter (measured on both sides) equal, no
+// frame, --time or term time moved beyond that band, no recorded median
+// outside its own interval, the pick the same); 1: it differs; 2: the record is
 // refused. docs/records.md.
 #include <algorithm>
 #include <cmath>
@@ -244,12 +246,12 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     if (newRecord)
         ExperimentRecord::forTradeoff(again, runner.scene(), m.result, m.machine).write(*newRecord);
 
-    const replay::TradeoffComparison compared =
+    replay::TradeoffComparison compared =
         replay::compareTradeoff(before, after, old.frames, again.options.frames, again.options.cost != "gpu_ms");
-    const bool pickMoved = replay::reportPick(before, after);
+    compared.pickMoved = replay::reportPick(before, after);
     reportShaders(old, shaderFilesOf(m.result.shaders), inputs);
     inputs.print();
-    return pickMoved ? std::max(compared.verdict(), 1) : compared.verdict();
+    return compared.verdict();
 }
 // The scene as it loads now: the files it reads (a built-in's content)
 // against the record's, by name. Only the loader's files are read: a path the
@@ -330,8 +332,11 @@ int runReplayCommand(int argc, char** argv) {
                      "               A's (exit 0 the same, 1 they differ, 2 a record is refused)\n"
                      "Exit codes: the result decides, not the inputs. 0: the same (the image identical, even when\n"
                      "inputs changed; for bench every configuration there, its lights per pixel equal and no timing\n"
-                     "ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row there, its error equal, no\n"
-                     "frame time moved beyond that band); 1: it differs (even when no input changed);\n"
+                     "ratio's interval wholly outside [0.8, 1.25]; for tradeoff every row there, its error, error\n"
+                     "interval and counters equal (a counter one side lacks is not), no frame, --time or term time\n"
+                     "moved beyond that band, no recorded median outside its interval, the pick the same; a --search\n"
+                     "record: the same settings found and every evaluation both walks measured the same);\n"
+                     "1: it differs (even when no input changed);\n"
                      "2: the record is refused. docs/records.md.\n";
         return 0;
     }

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "app/ReplayReport.h"
+#include "app/ReplaySearch.h"
 #include "renderer/Error.h"
 #include "renderer/RunConfig.h"
 #include "renderer/io/JsonGuard.h"
@@ -146,10 +147,14 @@ int compareResults(const ExperimentRecord& a, const ExperimentRecord& b, const s
         return replay::compareBench(replay::recordedConfigs(a.benchResults, series), after, series, a.bench->resamples)
             .verdict();
     }
-    if (a.command == "tradeoff")
-        return replay::compareTradeoff(a.tradeoffTable(pathA), b.tradeoffTable(pathB), a.frames, b.frames,
-                                       a.tradeoff->options.cost != "gpu_ms" && a.tradeoff->options.cost == b.tradeoff->options.cost)
-            .verdict();
+    if (a.command == "tradeoff") {
+        const TradeoffTable before = a.tradeoffTable(pathA), after = b.tradeoffTable(pathB);
+        replay::TradeoffComparison compared = replay::compareTradeoff(
+            before, after, a.frames, b.frames,
+            a.tradeoff->options.cost != "gpu_ms" && a.tradeoff->options.cost == b.tradeoff->options.cost);
+        compared.pickMoved = replay::reportPick(before, after);
+        return compared.verdict();
+    }
     replay::compareTimings(a.timings, b.timings);
     const int counters = replay::compareCounters(a.timings, b.timings);
     return std::max(replay::imageVerdict(a.imageSha256, b.imageSha256), counters);

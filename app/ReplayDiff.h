@@ -14,7 +14,7 @@ namespace dw {
 // Exit 0: the results are the same (replay's rules: the image identical; for
 // bench every configuration in both, lights per pixel equal, no timing ratio
 // sure to lie outside [0.8, 1.25]; for tradeoff every row in both with an
-// equal error and no frame time moved); 1: they differ (or the records are of
+// equal error, no frame time moved and the pick the same); 1: they differ (or the records are of
 // different commands); 2: a record is refused (the reason on stderr).
 int runReplayDiff(const std::string& pathA, const std::string& pathB);
 

@@ -288,11 +288,18 @@ int BenchComparison::verdict() const {
 
 namespace {
 // The counters of `now` that differ from `old`'s ("" when none): those both measured.
+// `notHere` / `notRecorded` gather the counters only the record / only this run measured.
 std::string movedCounters(const TradeoffTable& before, const TradeoffRow& old, const TradeoffTable& after,
-                          const TradeoffRow& now) {
+                          const TradeoffRow& now, std::string& notHere, std::string& notRecorded) {
     std::string moved;
     auto check = [&](const std::string& span, int counter, double a, double b) {
-        if (std::isnan(a) || std::isnan(b) || a == b) return;
+        if (std::isnan(a) != std::isnan(b)) {
+            const std::string name = PassCounts::name(counter) + (span.empty() ? "" : "." + span);
+            std::string& list = std::isnan(b) ? notHere : notRecorded;
+            list += (list.empty() ? "" : ", ") + name;
+            return;
+        }
+        if (std::isnan(a) || a == b) return;
         char line[160];
         std::snprintf(line, sizeof(line), "%s%s%s %.17g -> %.17g", PassCounts::name(counter), span.empty() ? "" : ".",
                       span.c_str(), a, b);
@@ -300,9 +307,60 @@ std::string movedCounters(const TradeoffTable& before, const TradeoffRow& old, c
     };
     for (int i = 0; i < PassCounts::kCount; ++i) {
         check("", i, old.frameCounts[static_cast<size_t>(i)], now.frameCounts[static_cast<size_t>(i)]);
-        for (const auto& pass : after.passes) check(pass, i, before.passCount(old, pass, i), after.passCount(now, pass, i));
+        std::vector<std::string> passes = after.passes;
+        for (const auto& pass : before.passes)
+            if (std::find(passes.begin(), passes.end(), pass) == passes.end()) passes.push_back(pass);
+        for (const auto& pass : passes) check(pass, i, before.passCount(old, pass, i), after.passCount(now, pass, i));
     }
     return moved;
+}
+
+// Whether `v` lies outside [lo, hi] beyond the records' rounding (both finite).
+bool outside(double v, double lo, double hi) {
+    if (!std::isfinite(v) || !std::isfinite(lo) || !std::isfinite(hi)) return false;
+    const double slack = 1e-6 * std::max({1.0, std::abs(lo), std::abs(hi)});
+    return v < lo - slack || v > hi + slack;
+}
+
+// A recorded median outside its own recorded 95% interval (frame_gpu_ms,
+// time_ms) cannot come from a run: the record was edited or is corrupt.
+bool recordInconsistent(const std::string& label, const TradeoffRow& b) {
+    bool bad = false;
+    auto check = [&](const char* column, double v, double lo, double hi) {
+        if (!outside(v, lo, hi)) return;
+        std::printf("%s: record inconsistent: %s median %.3f ms outside its own recorded 95%% CI %s (edited or corrupt)\n",
+                    label.c_str(), column, v, interval(lo, hi).c_str());
+        bad = true;
+    };
+    check("frame_gpu_ms", b.frameGpuMs, b.frameGpuMsLo, b.frameGpuMsHi);
+    check("time_ms", b.timeMs, b.timeMsLo, b.timeMsHi);
+    return bad;
+}
+
+// Each term of a --time sum (a+b): its gpu_ms.<pass> median old against new.
+// The CSV holds no interval of a term, so a term counts as moved when its
+// ratio lies outside [0.8, 1.25] and it moved by more than the two sums'
+// 95% intervals are wide together (the noise the sum itself shows).
+bool termsMoved(const std::string& label, const TradeoffTable& before, const TradeoffRow& b, const TradeoffTable& after,
+                const TradeoffRow& r, bool enough) {
+    const std::vector<std::string> terms = TradeoffTable::timeTerms(after.time);
+    if (terms.size() < 2 || !enough) return false;
+    const double noise = (b.timeMsHi - b.timeMsLo) + (r.timeMsHi - r.timeMsLo);
+    std::string moved;
+    for (const auto& term : terms) {
+        const double was = before.passGpuMs(b, term), now = after.passGpuMs(r, term);
+        if (!std::isfinite(was) || !std::isfinite(now) || !std::isfinite(noise) || !(was > 0)) continue;
+        const double ratio = now / was;
+        if ((ratio >= kTimingBandLow && ratio <= kTimingBandHigh) || std::abs(now - was) <= noise) continue;
+        char text[160];
+        std::snprintf(text, sizeof(text), "gpu_ms.%s median %.3f -> %.3f ms (x%.3f)", term.c_str(), was, now, ratio);
+        moved += (moved.empty() ? "" : ", ") + std::string(text);
+    }
+    if (moved.empty()) return false;
+    std::printf("%s: time term moved: %s (rule: ratio outside [%.2f, %.2f] and a change wider than the two %s "
+                "intervals together)\n",
+                label.c_str(), moved.c_str(), kTimingBandLow, kTimingBandHigh, after.time.c_str());
+    return true;
 }
 
 // What the front used beyond the error, the frame time and the counters, one
@@ -324,6 +382,7 @@ void compareFrontInputs(const std::string& label, const TradeoffTable& before, c
                     b.timeMs, r.timeMs, interval(b.timeMsLo, b.timeMsHi).c_str(), interval(r.timeMsLo, r.timeMsHi).c_str(),
                     moved ? " (moved)" : !enough ? " (too few frames for an interval: not tested)" : "");
         if (moved) ++out.timeMoved;
+        if (termsMoved(label, before, b, after, r, enough)) ++out.termsMoved;
     }
     std::string front;
     auto add = [&front](const std::string& column, const std::string& was, const std::string& is) {
@@ -364,10 +423,17 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
         bool same = true;
         if (printRowComparison(pointLabel(after, r), b, r, nBefore, nAfter, same)) ++out.moved;
         if (!same) ++out.errorDiffer;
-        if (const std::string moved = movedCounters(before, b, after, r); !moved.empty()) {
+        std::string notHere, notRecorded;
+        if (const std::string moved = movedCounters(before, b, after, r, notHere, notRecorded); !moved.empty()) {
             std::printf("%s: counters moved: %s\n", pointLabel(after, r).c_str(), moved.c_str());
             ++out.countersMoved;
         }
+        if (!notHere.empty())
+            std::printf("%s: counters not measured here: %s\n", pointLabel(after, r).c_str(), notHere.c_str());
+        if (!notRecorded.empty())
+            std::printf("%s: counters missing in the record: %s\n", pointLabel(after, r).c_str(), notRecorded.c_str());
+        if (!notHere.empty() || !notRecorded.empty()) ++out.countersMissing;
+        if (recordInconsistent(pointLabel(after, r), b)) ++out.inconsistent;
         compareFrontInputs(pointLabel(after, r), before, b, after, r,
                            enoughForInterval(nBefore) && enoughForInterval(nAfter), out);
         recorded.erase(it);
@@ -381,7 +447,8 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
 
 int TradeoffComparison::verdict() const {
     if (errorDiffer == 0 && moved == 0 && missing == 0 && countersMoved == 0 && intervalDiffer == 0 &&
-        timeMoved == 0 && frontMoved == 0) {
+        timeMoved == 0 && frontMoved == 0 && countersMissing == 0 && inconsistent == 0 && termsMoved == 0 &&
+        !pickMoved) {
         std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
                     "95%% interval%s; every error interval equal%s%s)\n",
                     rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "",
@@ -390,10 +457,12 @@ int TradeoffComparison::verdict() const {
         return 0;
     }
     std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
-                "%d with a counter moved, %d not in both; %d with another error interval, %d with the%s time moved, "
-                "%d with another front or pick)\n",
-                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, missing, intervalDiffer, timeMoved,
-                time == "frame" ? " --time" : (" " + time).c_str(), frontMoved);
+                "%d with a counter moved, %d with a counter measured on one side only, %d not in both; %d with another "
+                "error interval, %d with the%s time moved, %d with a term of it moved, %d with another front or pick; "
+                "%d inconsistent in the record; the pick %s)\n",
+                errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, countersMissing, missing,
+                intervalDiffer, timeMoved, time == "frame" ? " --time" : (" " + time).c_str(), termsMoved, frontMoved,
+                inconsistent, pickMoved ? "moved" : "the same");
     return 1;
 }
 

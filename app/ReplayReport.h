@@ -103,10 +103,20 @@ BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::ve
 // time --time names when it is not the frame's (its median and interval,
 // "(moved)" by the frame time's rule), and each row's front, dominated_by,
 // tied_with and pick: counted when `exactCost` (a counter --cost: the front is
-// as exact as its inputs), else said as the times' noise.
+// as exact as its inputs), else said as the times' noise. A counter only one
+// side measured ("counters not measured here: ..." / "counters missing in the
+// record: ..."), a term of a --time sum moved ("time term moved: ...") and a
+// recorded median outside its own interval ("record inconsistent: ...") each
+// count too; the caller sets `pickMoved` (reportPick) before verdict().
 struct TradeoffComparison {
     int errorDiffer = 0, moved = 0, missing = 0, countersMoved = 0;
     int intervalDiffer = 0, timeMoved = 0, frontMoved = 0;
+    // Rows with a counter only one side measured ("not measured here: ...",
+    // "missing in the record: ..."), rows whose recorded median lies outside
+    // its own recorded interval ("record inconsistent"), rows with a term of
+    // --time's sum moved, and the budget's pick moved (set by the caller).
+    int countersMissing = 0, inconsistent = 0, termsMoved = 0;
+    bool pickMoved = false;
     bool countersCompared = false, exactCost = false;
     std::string time = "frame";  // the span --time named, when both tables have it
     size_t rows = 0;

@@ -19,8 +19,10 @@ bool reportPick(const TradeoffTable& before, const TradeoffTable& after);
 
 // The record's search run again (its start, budget, bound and seeds); prints
 // "search: the same: ..." or "search: moved: ..." knob by knob with the
-// errors' intervals, and writes `newRecord` when given. `moved` says
-// whether the found settings differ. Needs a current GL 4.5 context.
+// errors' intervals, then every evaluation both walks measured with the same
+// settings old against new (errors, counters, times, front: "tradeoff: the
+// same/differs"), and writes `newRecord` when given. `moved` says whether the
+// found settings or any such evaluation's numbers differ. Needs a current GL 4.5 context.
 BudgetSearchResult replaySearch(const ExperimentRecord& old, const std::string& path, const RecordedTradeoff& again,
                                 const std::optional<std::string>& newRecord, const BenchFields& machine, bool& moved);
 

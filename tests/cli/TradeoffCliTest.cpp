@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -723,5 +724,73 @@ TEST(TradeoffCli, ReplayChecksTheTimeAndTheFrontThePickUsed) {
     EXPECT_LT(again.out.find(" (moved)", time), again.out.find('\n', time)) << again.out;
     EXPECT_NE(again.out.find(": front " + edited + " -> " + front), std::string::npos) << again.out;
     EXPECT_NE(again.out.find("(moved; rule: exact, the front's cost is a counter)"), std::string::npos) << again.out;
-    EXPECT_NE(again.out.find("1 with another front or pick)"), std::string::npos) << again.out;
+    EXPECT_NE(again.out.find("1 with another front or pick;"), std::string::npos) << again.out;
+}
+
+// Replay's verdict agrees with its exit code and counts every number the
+// front and the pick used: a moved pick is counted in "tradeoff: differs";
+// counters measured on one side only are named ("missing in the record",
+// "not measured here"), never "every counter equal"; a term of a --time sum
+// moved is named; a median outside its own recorded interval is said to be
+// an edited record. Each exits 1.
+TEST(TradeoffCli, ReplayCountsThePickCountersAndTimeTermsItChecks) {
+    const Result r = run("tradeoff --scene default --size 48x27 --frames 6 --warmup 1 --resamples 100 --metric rms "
+                         "--buffer ao --quiet --sweep ssao.samples=4,32 --time lighting+ao+ao_filter --budget-ms 100000" +
+                         files("replay-counts"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    std::ifstream in(dir() / "replay-counts.json");
+    const nlohmann::json rec = nlohmann::json::parse(in);
+    ASSERT_EQ(rec["results"]["rows"].size(), 2u);
+    auto replayEdited = [&](const std::string& name, const std::function<void(nlohmann::json&)>& edit,
+                            const std::string& env = "") {
+        nlohmann::json edited = rec;
+        edit(edited["results"]["rows"]);
+        const fs::path file = dir() / (name + ".json");
+        std::ofstream(file.string()) << edited.dump(2);
+        return test::runCommand(env + "DW_REFERENCE_CACHE=" + (dir() / "cache").string() + " " + DW_WORKBENCH_BINARY +
+                                " replay " + file.string());
+    };
+
+    // The pick moved: the summary counts it (it said "the same" with exit 1).
+    const Result pick = replayEdited("replay-pick", [](nlohmann::json& rows) {
+        const bool first = rows[0]["pick"] == "pick";
+        rows[first ? 0 : 1]["pick"] = "fits";
+        rows[first ? 1 : 0]["pick"] = "pick";
+    });
+    EXPECT_EQ(pick.code, 1) << pick.err << pick.out;
+    EXPECT_NE(pick.out.find("pick: moved: "), std::string::npos) << pick.out;
+    EXPECT_NE(pick.out.find("tradeoff: differs ("), std::string::npos) << pick.out;
+    EXPECT_NE(pick.out.find("the pick moved)"), std::string::npos) << pick.out;
+    EXPECT_EQ(pick.out.find("tradeoff: the same"), std::string::npos) << pick.out;
+
+    // A row's counters emptied: missing in the record, never "equal".
+    const Result empty = replayEdited("replay-no-counters", [](nlohmann::json& rows) { rows[1]["counters"] = nlohmann::json::object(); });
+    EXPECT_EQ(empty.code, 1) << empty.err << empty.out;
+    EXPECT_NE(empty.out.find("counters missing in the record: fragments"), std::string::npos) << empty.out;
+    EXPECT_NE(empty.out.find("1 with a counter measured on one side only"), std::string::npos) << empty.out;
+    EXPECT_EQ(empty.out.find("every counter equal"), std::string::npos) << empty.out;
+
+    // A driver without the pipeline statistics query: those counters are not measured here.
+    const Result driver = replayEdited("replay-unedited", [](nlohmann::json&) {},
+                                       "MESA_EXTENSION_OVERRIDE=-GL_ARB_pipeline_statistics_query ");
+    EXPECT_EQ(driver.code, 1) << driver.err << driver.out;
+    EXPECT_NE(driver.out.find("counters not measured here: "), std::string::npos) << driver.out;
+    EXPECT_NE(driver.out.find("fragments"), std::string::npos) << driver.out;
+    EXPECT_EQ(driver.out.find("every counter equal"), std::string::npos) << driver.out;
+
+    // A term of the --time sum x50: named, counted.
+    const Result term = replayEdited("replay-term", [](nlohmann::json& rows) {
+        rows[0]["gpu_ms"]["ao"] = rows[0]["gpu_ms"]["ao"].get<double>() * 50.0 + 50.0;
+    });
+    EXPECT_EQ(term.code, 1) << term.err << term.out;
+    EXPECT_NE(term.out.find(": time term moved: gpu_ms.ao median "), std::string::npos) << term.out;
+    EXPECT_NE(term.out.find("1 with a term of it moved"), std::string::npos) << term.out;
+
+    // The time's median x5 with its interval left: an edited record, said so.
+    const Result median = replayEdited("replay-median", [](nlohmann::json& rows) {
+        rows[0]["time_ms"] = rows[0]["time_ms"].get<double>() * 5.0;
+    });
+    EXPECT_EQ(median.code, 1) << median.err << median.out;
+    EXPECT_NE(median.out.find(": record inconsistent: time_ms median "), std::string::npos) << median.out;
+    EXPECT_NE(median.out.find("1 inconsistent in the record"), std::string::npos) << median.out;
 }

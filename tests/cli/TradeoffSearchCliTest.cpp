@@ -112,6 +112,53 @@ TEST(TradeoffSearchCli, ASearchRecordReplaysTheSameSettings) {
     EXPECT_NE(again.out.find("search: the same settings found"), std::string::npos) << again.out;
 }
 
+// Replay of a search checks every evaluation both walks measured with the
+// same settings, not only the settings found: a record edited in one
+// evaluation's error and another's counter makes replay name those numbers,
+// say "tradeoff: differs" and exit 1; the unedited record says "the same".
+TEST(TradeoffSearchCli, ASearchReplayChecksEveryEvaluationsNumbers) {
+    const Result r = run(kTiny + "--search --cost fragments --budget 4e6 --max-evals 8" + files("search-checked"));
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    // Unedited: every evaluation met again, its error and counters equal
+    // (the times are not asserted: a loaded machine may move them).
+    const Result same = run("replay " + (dir() / "search-checked.json").string());
+    EXPECT_NE(same.out.find("search: the same settings found"), std::string::npos) << same.out;
+    const TradeoffTable walked = TradeoffTable::readCsv((dir() / "search-checked.csv").string());
+    const std::string all = "search: " + std::to_string(walked.rows.size()) +
+                            " evaluation(s) with the same settings in both walks compared; 0 only in the record, 0 only "
+                            "in this walk";
+    EXPECT_NE(same.out.find(all), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("(differs)"), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("counters moved"), std::string::npos) << same.out;
+    EXPECT_EQ(same.out.find("counters not measured here"), std::string::npos) << same.out;
+    if (same.code == 0) {
+        EXPECT_NE(same.out.find("every counter equal"), std::string::npos) << same.out;
+    }
+
+    nlohmann::json rec = readJson(dir() / "search-checked.json");
+    nlohmann::json& rows = rec["results"]["rows"];
+    ASSERT_GE(rows.size(), 2u);
+    const double error = rows[0]["error"].get<double>();
+    rows[0]["error"] = error * 2.0;
+    nlohmann::json& fragments = rows[1]["counters"]["frame"]["fragments"];
+    const double counted = fragments.get<double>();
+    fragments = 123.0;
+    std::ofstream((dir() / "search-edited.json").string()) << rec.dump(2);
+    const Result moved = run("replay " + (dir() / "search-edited.json").string());
+    EXPECT_EQ(moved.code, 1) << moved.err << moved.out;
+    EXPECT_NE(moved.out.find(", step=1, proposal=start"), std::string::npos) << moved.out;
+    // The found point's counter, the budget's own cost, is on the search line.
+    const size_t line = moved.out.find("search: the same settings found");
+    ASSERT_NE(line, std::string::npos) << moved.out;
+    EXPECT_LT(moved.out.find(", fragments ", line), moved.out.find('\n', line)) << moved.out;
+    EXPECT_NE(moved.out.find("(differs)"), std::string::npos) << moved.out;
+    char counter[96];
+    std::snprintf(counter, sizeof counter, "counters moved: fragments 123 -> %.17g", counted);
+    EXPECT_NE(moved.out.find(counter), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("tradeoff: differs (1 row(s) with another error"), std::string::npos) << moved.out;
+    EXPECT_NE(moved.out.find("1 with a counter moved"), std::string::npos) << moved.out;
+}
+
 // tradeoff merge --budget-ms: the pick over the merged rows is the point the
 // unmerged table's pick is (same rows), with the merge's intervals rule said;
 // a budgeted record keeps --time and the budget, and replay says the pick is the same.
