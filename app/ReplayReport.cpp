@@ -446,14 +446,22 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
 }
 
 int TradeoffComparison::verdict() const {
-    if (errorDiffer == 0 && moved == 0 && missing == 0 && countersMoved == 0 && intervalDiffer == 0 &&
-        timeMoved == 0 && frontMoved == 0 && countersMissing == 0 && inconsistent == 0 && termsMoved == 0 &&
-        !pickMoved) {
-        std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
-                    "95%% interval%s; every error interval equal%s%s)\n",
-                    rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "",
-                    time == "frame" ? "" : (", no " + time + " time outside the band either").c_str(),
-                    exactCost ? ", the front and the pick the same" : "");
+    // With a counter --cost neither the front nor the pick read a time: the
+    // times' lines are printed (a moved one says "(moved)") but not counted.
+    const int timesCounted = exactCost ? 0 : moved + timeMoved + termsMoved;
+    if (errorDiffer == 0 && missing == 0 && countersMoved == 0 && intervalDiffer == 0 && timesCounted == 0 &&
+        frontMoved == 0 && countersMissing == 0 && inconsistent == 0 && !pickMoved) {
+        if (exactCost)
+            std::printf("tradeoff: the same (%zu rows, every error equal%s; every error interval equal, the front and "
+                        "the pick the same; times not counted: the front's cost is a counter, %d row(s) with a time "
+                        "outside [%.2f, %.2f])\n",
+                        rows, countersCompared ? ", every counter equal" : "", moved + timeMoved, kTimingBandLow,
+                        kTimingBandHigh);
+        else
+            std::printf("tradeoff: the same (%zu rows, every error equal, no frame time outside [%.2f, %.2f] with its "
+                        "95%% interval%s; every error interval equal%s)\n",
+                        rows, kTimingBandLow, kTimingBandHigh, countersCompared ? ", every counter equal" : "",
+                        time == "frame" ? "" : (", no " + time + " time outside the band either").c_str());
         return 0;
     }
     std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
@@ -463,6 +471,7 @@ int TradeoffComparison::verdict() const {
                 errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, countersMissing, missing,
                 intervalDiffer, timeMoved, time == "frame" ? " --time" : (" " + time).c_str(), termsMoved, frontMoved,
                 inconsistent, pickMoved ? "moved" : "the same");
+    if (exactCost) std::printf("tradeoff: the times are not counted in that verdict: the front's cost is a counter\n");
     return 1;
 }
 
