@@ -465,10 +465,26 @@ TEST(TradeoffCli, TimeSumsOfPassesAndABudgetNothingFits) {
     EXPECT_EQ(same.code, 0) << same.err;
     EXPECT_NE(same.out.find("front: from the rows' 95% intervals"), std::string::npos) << same.out;
     const Result other = run("tradeoff merge " + csv + " --out " + out + " --plot none --time lighting+ao");
-    EXPECT_EQ(other.code, 1);
+    EXPECT_EQ(other.code, 2);  // a usage error, as every bad --time
     EXPECT_NE(other.err.find("the rows carry time lighting+ao+ao_filter, not this sum"), std::string::npos) << other.err;
+    // Without --time a merge ranks by the CSV's time column (the run's), and keeps it.
+    const Result kept = run("tradeoff merge " + csv + " --out " + out + " --plot none --budget-ms 0.001");
+    ASSERT_EQ(kept.code, 0) << kept.err;
+    EXPECT_NE(kept.out.find("Pareto (lighting+ao+ao_filter ms)"), std::string::npos) << kept.out;
+    EXPECT_EQ(TradeoffTable::readCsv(out).time, "lighting+ao+ao_filter");
+    // A budget on one pass's median (no interval in the CSV) could never fit: refused in one line.
+    const Result noInterval = run("tradeoff merge " + csv + " --out " + out + " --plot none --time ao --budget-ms 25");
+    EXPECT_EQ(noInterval.code, 2);
+    EXPECT_NE(noInterval.err.find("--budget-ms: the time ao has no interval in these shards"), std::string::npos)
+        << noInterval.err;
+    EXPECT_EQ(noInterval.out, "");
+    for (const char* spec : {"ao+", "frame+ao", "ao+ao"}) {
+        const Result syntax = run(sweep + "--time " + spec + files("sum-bad"));
+        EXPECT_EQ(syntax.code, 2) << spec << syntax.err;
+        EXPECT_NE(syntax.err.find(std::string("--time ") + spec + ":"), std::string::npos) << syntax.err;
+    }
     const Result bad = run(sweep + "--time lighting+aox" + files("sum-bad"));
-    EXPECT_EQ(bad.code, 1);
+    EXPECT_EQ(bad.code, 2);
     EXPECT_NE(bad.err.find("--time lighting+aox: the pipeline has no pass 'aox'"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(dir() / "sum-bad.csv"));
 }
