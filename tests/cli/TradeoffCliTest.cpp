@@ -58,6 +58,13 @@ const TradeoffRow* rowOf(const TradeoffTable& t, const std::string& samples, con
     return nullptr;
 }
 
+// A study file of this text in the tests' folder; its path.
+std::string studyFile(const std::string& name, const std::string& text) {
+    const fs::path file = dir() / (name + ".json");
+    std::ofstream(file) << text;
+    return file.string();
+}
+
 double row0Error(const nlohmann::json& record) { return record["results"]["rows"][0]["error"].get<double>(); }
 
 }  // namespace
@@ -696,6 +703,14 @@ TEST(TradeoffCli, StudyFileAndBadStudiesAreOneClearLine) {
         {"--study a:ssao.samples=4 --study a:ssao.samples=8", "two studies are named 'a'"},
         {"--study ao.method=ssao:ao.method=gtao", "ao.method is given twice"},
         {"--sweep study=a,b", "--sweep study: 'study' names each point's study"},
+        // A study file: a key JSON gives twice is refused as --study refuses it (not the last kept); not JSON: exit 2.
+        {"--study-file " + studyFile("dup-studies", R"({"a": {"ssao.samples": [4]}, "a": {"ssao.samples": [8]}})"),
+         "two studies are named 'a'"},
+        {"--study-file " + studyFile("dup-knob", R"({"a": {"ssao.samples": [4], "ssao.samples": [8]}})"),
+         "study 'a': ssao.samples is given twice"},
+        {"--study-file " + studyFile("dup-knob-list", R"([{"ssao.samples": 4}, {"ssao.samples": 8, "ssao.samples": 16}])"),
+         "study 2: ssao.samples is given twice"},
+        {"--study-file " + studyFile("not-json", R"({"a": {"ssao.samples": [4]})"), "not-json.json"},
     };
     for (const Bad& b : cases) {
         const Result bad = run(base + " " + b.args + " --csv " + (dir() / "study-bad.csv").string() + " --json " +
