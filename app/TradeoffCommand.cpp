@@ -145,13 +145,14 @@ std::string tiesCell(const TradeoffRow& r) {
 }
 
 // After the table: how the front was decided, what cannot be told apart, and the pick.
-std::string frontLines(const TradeoffTable& t, const BudgetPick* pick) {
+std::string frontLines(const TradeoffTable& t, const BudgetPick* pick, const std::string& time, const std::string& cost) {
     if (t.rows.empty()) return "";
     const std::string camera = BudgetPicker::shownCamera(t);
     std::string out;
     const auto rule = t.frontRules.find(camera);
     if (rule != t.frontRules.end()) out += "front: " + rule->second + "\n";
-    for (const auto& l : t.frontSummary(camera)) out += "front: " + l + "\n";
+    const std::string costName = cost == "gpu_ms" ? "time" : time == "frame" ? cost : cost + "." + time;
+    for (const auto& l : t.frontSummary(camera, costName)) out += "front: " + l + "\n";
     if (pick)
         for (const auto& l : pick->lines) out += l + "\n";
     return out.empty() ? "" : out + "\n";
@@ -426,7 +427,7 @@ int runMerge(int argc, char** argv) {
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n%s", all.rows.size(), inputs.size(),
                 what(all, "what the shards measured against", time, cost).c_str(), markdown(all, time, cost).c_str(),
-                frontLines(all, pick ? &*pick : nullptr).c_str());
+                frontLines(all, pick ? &*pick : nullptr, time, cost).c_str());
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
@@ -529,7 +530,7 @@ int runTradeoffCommand(int argc, char** argv) {
                 runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
                 o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
                 what(t, againstText, o.time, o.cost).c_str(), markdown(t, o.time, o.cost).c_str(),
-                frontLines(t, o.budgetMs > 0.0 || o.budget > 0.0 ? &result.pick : nullptr).c_str());
+                frontLines(t, o.budgetMs > 0.0 || o.budget > 0.0 ? &result.pick : nullptr, o.time, o.cost).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
     writeBenchFile(json, record.json(json), "tradeoff record");

@@ -536,6 +536,15 @@ TEST(TradeoffCli, CountersRepeatBitForBitAndChooseTheCostAxis) {
     check.markParetoFront("ao", "fragments");
     for (size_t r = 0; r < tb.rows.size(); ++r) EXPECT_EQ(tb.rows[r].pareto, check.rows[r].pareto) << r;
     EXPECT_NE(b.out.find("| fragments.ao (exact) | Pareto (fragments.ao) |"), std::string::npos) << b.out;
+    // The summary names the cost axis, exact and untested, and the rule says only the error was tested;
+    // a's time (2 frames: no paired resamples) is not tested, not "cannot be told apart".
+    EXPECT_NE(b.out.find("front: fragments.ao (an exact counter, compared by value, not tested): "), std::string::npos)
+        << b.out;
+    EXPECT_EQ(b.out.find("front: time:"), std::string::npos) << b.out;
+    EXPECT_NE(b.out.find("pair(s) on error only; the cost, an exact counter, compared by value)"), std::string::npos)
+        << b.out;
+    EXPECT_NE(a.out.find("front: time: not tested (no paired resamples: fewer than 6 rounds"), std::string::npos)
+        << a.out;
     // The record keeps the counters and the cost axis.
     std::ifstream in(dir() / "counted-b.json");
     const nlohmann::json record = nlohmann::json::parse(in);
