@@ -479,6 +479,14 @@ TEST(TradeoffCli, TimeSumsOfPassesAndABudgetNothingFits) {
     ASSERT_EQ(kept.code, 0) << kept.err;
     EXPECT_NE(kept.out.find("Pareto (lighting+ao+ao_filter ms)"), std::string::npos) << kept.out;
     EXPECT_EQ(TradeoffTable::readCsv(out).time, "lighting+ao+ao_filter");
+    // Another --time than the shards' is said, then used.
+    const Result frame = run("tradeoff merge " + csv + " --out " + out + " --plot none --time frame");
+    ASSERT_EQ(frame.code, 0) << frame.err;
+    EXPECT_NE(frame.err.find("tradeoff merge: note: --time frame ranks by another time than the shards' (their time "
+                             "column is lighting+ao+ao_filter)"),
+              std::string::npos)
+        << frame.err;
+    EXPECT_EQ(TradeoffTable::readCsv(out).time, "frame");
     // A budget on one pass's median (no interval in the CSV) could never fit: refused in one line.
     const Result noInterval = run("tradeoff merge " + csv + " --out " + out + " --plot none --time ao --budget-ms 25");
     EXPECT_EQ(noInterval.code, 2);
