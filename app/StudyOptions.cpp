@@ -9,7 +9,7 @@ StudyOptions StudyOptions::read(CommandLine& cl) {
     try {
         if (o.file) o.studies = TradeoffStudies::readFile(*o.file);
         for (const auto& text : given) o.studies.push_back(TradeoffStudies::parse(text));
-    } catch (const TradeoffStudyError& e) {
+    } catch (const Error& e) {  // a bad study, or a study file missing or not JSON: usage errors (exit 2)
         throw UsageError(e.what());
     }
     return o;

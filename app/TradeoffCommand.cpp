@@ -145,13 +145,14 @@ std::string tiesCell(const TradeoffRow& r) {
 }
 
 // After the table: how the front was decided, what cannot be told apart, and the pick.
-std::string frontLines(const TradeoffTable& t, const BudgetPick* pick) {
+std::string frontLines(const TradeoffTable& t, const BudgetPick* pick, const std::string& time, const std::string& cost) {
     if (t.rows.empty()) return "";
     const std::string camera = BudgetPicker::shownCamera(t);
     std::string out;
     const auto rule = t.frontRules.find(camera);
     if (rule != t.frontRules.end()) out += "front: " + rule->second + "\n";
-    for (const auto& l : t.frontSummary(camera)) out += "front: " + l + "\n";
+    const std::string costName = cost == "gpu_ms" ? "time" : time == "frame" ? cost : cost + "." + time;
+    for (const auto& l : t.frontSummary(camera, costName)) out += "front: " + l + "\n";
     if (pick)
         for (const auto& l : pick->lines) out += l + "\n";
     return out.empty() ? "" : out + "\n";
@@ -335,6 +336,50 @@ std::optional<BudgetPick> mergedPick(TradeoffTable& all, const std::optional<dou
     return pick;
 }
 
+// Runs `f`; a bad --time or --cost it finds (an Error naming the flag: a
+// pass the pipeline or the shards lack, a sum the rows do not carry) is a
+// usage error (exit 2), as the flags' other checks are.
+template <typename F>
+auto asUsage(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        if (what.rfind("--time ", 0) == 0 || what.rfind("--cost ", 0) == 0) throw UsageError(what);
+        throw;
+    }
+}
+
+// The time a merge ranks by: the shards' CSV time column (what their runs
+// ranked by) unless --time names another, which is said; frame when the
+// shards disagree and --time is not given.
+std::string mergeTime(const std::vector<TradeoffTable>& parts, const std::optional<std::string>& given) {
+    std::string carried = parts.empty() ? "" : parts.front().time;
+    for (const auto& part : parts)
+        if (part.time != carried) carried.clear();
+    if (!given) return carried.empty() ? "frame" : carried;
+    try {
+        (void)TradeoffTable::timeTerms(*given);
+    } catch (const Error& e) {
+        throw UsageError(e.what());
+    }
+    if (!carried.empty() && *given != carried)
+        std::fprintf(stderr, "tradeoff merge: note: --time %s ranks by another time than the shards' (their time column "
+                             "is %s)\n", given->c_str(), carried.c_str());
+    return *given;
+}
+
+// --budget-ms fits by the time's 95% interval: a time the rows carry without
+// one (a single pass's median, not the runs' --time) can never fit, so it is refused.
+void checkBudgetInterval(const TradeoffTable& all, const std::string& time) {
+    for (const auto& r : all.rows)
+        if (std::isfinite(r.timeMsHi)) return;
+    throw UsageError("--budget-ms: the time " + time + " has no interval in these shards (only a run's --time carries "
+                     "one; a single pass's column is its median): merge with the runs' --time, or run tradeoff --time " + time);
+}
+
 int runMerge(int argc, char** argv) {
     CommandLine cl(argc, argv, 3, "tradeoff merge");
     if (cl.flag("--help")) {
@@ -342,7 +387,7 @@ int runMerge(int argc, char** argv) {
         return 0;
     }
     SweepMergeOptions m = SweepMergeOptions::read(cl, kTradeoff);
-    const std::string time = cl.value("--time").value_or("frame");
+    const std::optional<std::string> timeGiven = cl.value("--time");
     const std::string cost = cl.value("--cost").value_or("gpu_ms");
     const std::optional<double> budgetMs = cl.real("--budget-ms"), budget = cl.real("--budget");
     cl.finish("tradeoff merge");
@@ -374,13 +419,15 @@ int runMerge(int argc, char** argv) {
     std::vector<TradeoffShardInput> described;
     for (size_t i = 0; i < inputs.size(); ++i) described.push_back(shardInput(inputs[i], parts[i]));
     for (const auto& w : TradeoffShards::check(described)) std::fprintf(stderr, "tradeoff merge: warning: %s\n", w.c_str());
-    TradeoffTable all = TradeoffTable::merge(parts, inputs, time, cost);
+    const std::string time = mergeTime(parts, timeGiven);
+    TradeoffTable all = asUsage([&] { return TradeoffTable::merge(parts, inputs, time, cost); });
+    if (budgetMs) checkBudgetInterval(all, time);
     const std::optional<BudgetPick> pick = mergedPick(all, budgetMs, budget, cost);
     std::string from;
     for (const auto& in : inputs) from += (from.empty() ? "" : " ") + in;
     std::printf("## tradeoff merge: %zu row(s) from %zu shard(s)\n\n%s\n%s\n%s", all.rows.size(), inputs.size(),
                 what(all, "what the shards measured against", time, cost).c_str(), markdown(all, time, cost).c_str(),
-                frontLines(all, pick ? &*pick : nullptr).c_str());
+                frontLines(all, pick ? &*pick : nullptr, time, cost).c_str());
     std::fflush(stdout);
     all.writeCsv(out);
     settings.emplace_back("merged_from", from);
@@ -448,6 +495,7 @@ int runTradeoffCommand(int argc, char** argv) {
     if (maxEvals && !s.search) throw UsageError("--max-evals bounds --search; give --search with it");
     s.maxEvals = maxEvals.value_or(s.maxEvals);
     try {
+        (void)TradeoffTable::timeTerms(s.time);
         (void)TradeoffStudy::check(s);
     } catch (const UsageError&) {
         throw;
@@ -469,7 +517,8 @@ int runTradeoffCommand(int argc, char** argv) {
     TradeoffStudyProgress progress;
     if (!quiet) progress.line = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-    TradeoffMeasurement measured = TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress);
+    TradeoffMeasurement measured =
+        asUsage([&] { return TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress); });
     // The JSON is the experiment record (docs/records.md): replay runs it again.
     const ExperimentRecord record = TradeoffStudy::record(s, o, runner, measured, command);
     const TradeoffResult& result = measured.result;
@@ -481,7 +530,7 @@ int runTradeoffCommand(int argc, char** argv) {
                 runner.scene().name.c_str(), runner.points().size(), runner.cameras().size(), o.metric.c_str(),
                 o.buffer.c_str(), TradeoffRunner::gpuOutput(o.buffer).c_str(), againstText.c_str(),
                 what(t, againstText, o.time, o.cost).c_str(), markdown(t, o.time, o.cost).c_str(),
-                frontLines(t, o.budgetMs > 0.0 || o.budget > 0.0 ? &result.pick : nullptr).c_str());
+                frontLines(t, o.budgetMs > 0.0 || o.budget > 0.0 ? &result.pick : nullptr, o.time, o.cost).c_str());
     std::fflush(stdout);
     t.writeCsv(csv);
     writeBenchFile(json, record.json(json), "tradeoff record");

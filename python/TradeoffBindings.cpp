@@ -190,6 +190,7 @@ void readSweep(TradeoffStudyOptions& s, const std::optional<py::dict>& sweep, co
     if (!progressFn.is_none() && !PyCallable_Check(progressFn.ptr()))
         throw py::value_error("tradeoff: progress must be a callable taking a line of text, or None");
     checkKnobs(s.run.sets, axes);
+    asValueError([&] { return TradeoffTable::timeTerms(s.time); });
     asValueError([&] { return TradeoffStudy::check(s); });
     refuseNonSceneFile(s.run.sceneSpec());
 }
@@ -341,6 +342,12 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     } catch (const TradeoffCancelled&) {
         if (PyErr_Occurred()) throw py::error_already_set();  // KeyboardInterrupt, or what progress raised
         throw Error("tradeoff: cancelled");
+    } catch (const FileError&) {
+        throw;
+    } catch (const Error& e) {  // a time= the pipeline has no pass of (found once it runs): a bad argument
+        const std::string what = e.what();
+        if (what.rfind("--time ", 0) == 0) throw py::value_error(what);
+        throw;
     }
     if (!outcome.plotDrawn &&
         PyErr_WarnEx(PyExc_RuntimeWarning, ("tradeoff: the plot " + *files.plot + " was not drawn (stderr says why)").c_str(),
@@ -359,12 +366,27 @@ py::dict tradeoffStudy(TradeoffStudyOptions s, const std::optional<py::dict>& sw
     return d;
 }
 
+// budget_ms= / budget=: None, or a number (an int or a float; True is not
+// 1): TypeError for anything else; its range is TradeoffStudy::check's (ValueError).
+std::optional<double> optionalNumber(const py::object& value, const std::string& name, const std::string& flag) {
+    if (value.is_none()) return std::nullopt;
+    const std::string expected = name + " must be a number (as " + flag + ") or None, got ";
+    if (PyBool_Check(value.ptr()) || PyUnicode_Check(value.ptr()) || PyBytes_Check(value.ptr()))
+        throw py::type_error(expected + typeName(value));
+    const double v = PyFloat_AsDouble(value.ptr());
+    if (v == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        throw py::type_error(expected + typeName(value));
+    }
+    return v;
+}
+
 py::dict tradeoff(const std::string& scene, const py::object& size, py::object preset, std::optional<py::dict> settings,
                   std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
                   const py::object& studies, py::object exclude, const std::string& against, const std::string& metric,
                   const std::string& buffer,
                   const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
-                  const std::string& cost, std::optional<double> budgetMs, std::optional<double> budget,
+                  const std::string& cost, const py::object& budgetMsObject, const py::object& budgetObject,
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
@@ -384,8 +406,8 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.mask = mask.value_or("");
     s.time = time;
     s.cost = cost;
-    s.budgetMs = budgetMs;
-    s.budget = budget;
+    s.budgetMs = optionalNumber(budgetMsObject, "tradeoff: budget_ms", "--budget-ms");
+    s.budget = optionalNumber(budgetObject, "tradeoff: budget", "--budget");
     s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
     s.walkthrough = walkthrough;
     s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");

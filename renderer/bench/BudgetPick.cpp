@@ -66,6 +66,13 @@ TradeoffRow* leastError(const std::vector<TradeoffRow*>& fits) {
     return best;
 }
 
+// " (2 counted frame(s): too few frames for an interval)" when a measured
+// cost's interval comes from fewer frames than an interval needs; "" else.
+std::string tooFewText(const BudgetCost& cost, const TradeoffRow& r) {
+    if (cost.exact || enoughForInterval(static_cast<size_t>(std::max(r.frames, 0)))) return "";
+    return " (" + std::to_string(r.frames) + " counted frame(s): " + kTooFewForInterval + ")";
+}
+
 void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, const BudgetCost& cost, BudgetPick& out) {
     const TradeoffRow* cheapest = nullptr;
     for (const TradeoffRow* r : rows)
@@ -79,7 +86,7 @@ void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, con
     out.cheapest = cheapest->point;
     out.lines.push_back("pick: none fits the budget of " + budget + " (no point's " + cost.name +
                         (cost.exact ? "" : "'s 95% interval") + " ends under it); the cheapest, " + describe(t, *cheapest) + ", takes " +
-                        costText(cost, *cheapest));
+                        costText(cost, *cheapest) + tooFewText(cost, *cheapest));
 }
 
 }  // namespace

@@ -67,6 +67,8 @@ void orderPairs(const std::vector<FrontEvidence>& pts, const std::vector<bool>& 
                 order[j][i] = flipped(o);
                 if (waits) pending.push_back({i, j, time, t});
                 else if (o == Order::notApart) ++(time ? d.untestedTime : d.untestedError);
+                if (waits) ++(time ? d.testedTime : d.testedError);
+                if (time && pts[i].cost.exact && pts[j].cost.exact) ++d.exactCost;
             }
         }
     std::vector<double> p;
@@ -124,14 +126,29 @@ std::string floorText(const FrontDecision& d, double alpha) {
            std::to_string(frontDrawsNeeded(d.comparisons, alpha)) + " or more";
 }
 
-std::string ruleText(FrontRule rule, double alpha, int comparisons, int draws) {
+// Which axes the adjustment covered: "every pair of points, on each axis",
+// or the pairs per axis and why an axis was not (a counter; no resamples).
+std::string testedText(const FrontDecision& d) {
+    if (d.testedTime > 0 && d.testedTime == d.testedError) return "every pair of points, on each axis";
+    if (d.testedTime == 0 && d.testedError == 0) return "no pair had paired resamples";
+    std::string s;
+    for (const auto& [axis, n] : {std::make_pair("time", d.testedTime), std::make_pair("error", d.testedError)})
+        if (n > 0) s += (s.empty() ? "" : ", ") + std::to_string(n) + " pair(s) on " + axis;
+    if (d.testedTime == 0)
+        s += d.exactCost > 0 ? std::string(" only; the cost, an exact counter, compared by value")
+                             : std::string(" only; time not tested");
+    return s;
+}
+
+std::string ruleText(FrontRule rule, double alpha, const FrontDecision& d) {
+    const int comparisons = d.comparisons, draws = d.draws;
     if (rule == FrontRule::intervals)
         return "from the rows' " + percent(alpha) +
                " intervals: a point beats another on an axis only where their intervals do not overlap "
                "(no resamples carried; not adjusted for the number of comparisons)";
     return percent(alpha) + " familywise: paired bootstrap (time: the interleaved rounds resampled together; "
            "error: the same resampled tiles), Holm's step-down over " + std::to_string(comparisons) +
-           " comparison(s) (every pair of points, on each axis)" +
+           " comparison(s) (" + testedText(d) + ")" +
            (draws > 0 ? " from " + std::to_string(draws) + " paired resamples" : std::string());
 }
 
@@ -211,7 +228,7 @@ FrontDecision decideFront(const std::vector<FrontEvidence>& pts, FrontRule rule,
             FrontTie tie{q, tiedOn(d.timeOrder[p][q]), tiedOn(d.errorOrder[p][q])};
             if (tie.time || tie.error) d.tiedWith[p].push_back(tie);
         }
-    d.rule = ruleText(rule, alpha, d.comparisons, d.draws) +
+    d.rule = ruleText(rule, alpha, d) +
              (rule == FrontRule::pairedBootstrap ? untestedText(d) + floorText(d, alpha) : "");
     return d;
 }

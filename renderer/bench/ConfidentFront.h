@@ -75,6 +75,8 @@ struct FrontDecision {
     int comparisons = 0;  // (pair, axis) tests that entered the adjustment
     int draws = 0;        // the fewest paired resamples among those tests (0: none)
     int untestedTime = 0, untestedError = 0;  // pairs of usable points with no test on that axis (not told apart)
+    int testedTime = 0, testedError = 0;      // pairs whose draws' test entered the adjustment, per axis
+    int exactCost = 0;                        // pairs compared by value on the cost axis (both exact: counters)
     std::string rule;     // how it was decided, one line ("95% familywise, Holm over 12 ...")
 
     // Whether i and j cannot be told apart on error (identical, or not decided).

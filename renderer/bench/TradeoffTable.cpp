@@ -174,12 +174,14 @@ void TradeoffTable::markFront(const RowEvidence& evidence, FrontRule rule, doubl
     std::map<std::tuple<std::string, std::string, std::string>, std::vector<size_t>> groups;
     for (size_t i = 0; i < rows.size(); ++i) groups[{rows[i].camera, rows[i].metric, rows[i].buffer}].push_back(i);
     frontRules.clear();
+    frontCostTests.clear();
     for (const auto& [key, members] : groups) {
         std::vector<FrontEvidence> points;
         points.reserve(members.size());
         for (size_t i : members) points.push_back(evidence(i));
         const FrontDecision d = decideFront(points, rule, alpha);
         frontRules[std::get<0>(key)] = d.rule;
+        frontCostTests[std::get<0>(key)] = {d.testedTime, d.exactCost, d.untestedTime, rule == FrontRule::intervals};
         for (size_t k = 0; k < members.size(); ++k) {
             TradeoffRow& r = rows[members[k]];
             r.front = d.front[k];
@@ -212,8 +214,10 @@ std::string pointList(const std::vector<int>& points) {
 }
 
 // One axis's line: which points (of `rows`) cannot be told apart on it.
-std::string tiesLine(const std::vector<const TradeoffRow*>& rows, bool error) {
-    const std::string axis = error ? "error" : "time";
+// The cost axis is `costName`; told how it was compared by `tests`.
+std::string tiesLine(const std::vector<const TradeoffRow*>& rows, bool error, const std::string& costName,
+                     const TradeoffTable::CostTests& tests) {
+    const std::string axis = error ? "error" : costName;
     std::vector<int> points;
     std::vector<std::string> pairs;
     size_t tied = 0;
@@ -227,6 +231,14 @@ std::string tiesLine(const std::vector<const TradeoffRow*>& rows, bool error) {
     }
     const size_t all = points.size() * (points.size() - 1) / 2;
     if (all == 0) return "";
+    if (!error && tests.exact > 0) {  // a counter: exact, compared by value; ties are equal counts
+        std::string s = axis + " (an exact counter, compared by value, not tested): ";
+        if (tied == 0) return s + "every pair of points differs";
+        for (size_t k = 0; k < pairs.size(); ++k) s += (k ? "; " : "equal: ") + pairs[k];
+        return s;
+    }
+    if (!error && !tests.intervals && tests.tested == 0 && tests.untested > 0)
+        return axis + ": not tested (no paired resamples: fewer than 6 rounds, or a time missing), so no pair is told apart on it";
     if (tied == all) return axis + ": points " + pointList(points) + " cannot be told apart (no pair differs with confidence)";
     if (tied == 0) return axis + ": every pair of points told apart";
     std::string s;
@@ -236,14 +248,17 @@ std::string tiesLine(const std::vector<const TradeoffRow*>& rows, bool error) {
 
 }  // namespace
 
-std::vector<std::string> TradeoffTable::frontSummary(const std::string& camera) const {
+std::vector<std::string> TradeoffTable::frontSummary(const std::string& camera, const std::string& costName) const {
     std::vector<const TradeoffRow*> shown;
     for (const auto& r : rows)
         if (r.camera == camera && !r.front.empty()) shown.push_back(&r);
     std::vector<std::string> lines;
     if (shown.empty()) return lines;
     for (bool error : {true, false})
-        if (std::string l = tiesLine(shown, error); !l.empty()) lines.push_back(l);
+        if (std::string l = tiesLine(shown, error, costName,
+                                     frontCostTests.count(camera) ? frontCostTests.at(camera) : CostTests{});
+            !l.empty())
+            lines.push_back(l);
     std::string dominated;
     for (const TradeoffRow* r : shown)
         if (r->front == "dominated")

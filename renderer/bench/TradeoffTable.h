@@ -102,6 +102,13 @@ public:
     std::string time = "frame";  // what every row's time_ms is (the CSV's time column)
     // Not in the CSV: per camera, how the front was decided (ConfidentFront's rule line).
     std::map<std::string, std::string> frontRules;
+    // Not in the CSV: per camera, the pairs tested on the cost axis (paired
+    // draws), compared there by value (exact counters), and left untested.
+    struct CostTests {
+        int tested = 0, exact = 0, untested = 0;
+        bool intervals = false;  // the intervals rule (no draws): compared, not tested
+    };
+    std::map<std::string, CostTests> frontCostTests;
     bool counted = false;             // the CSV carries the counter columns
 
     // The value of `axis` in a row ("" when the table has no such axis).
@@ -174,7 +181,10 @@ public:
     FrontEvidence intervalEvidence(const TradeoffRow& row, const std::string& cost = "gpu_ms") const;
     // Lines saying which points of `camera`'s rows cannot be told apart, per
     // axis ("error: points 0, 1, 2 and 3 cannot be told apart"), and which are dominated.
-    std::vector<std::string> frontSummary(const std::string& camera) const;
+    // The cost axis is named `costName` ("time", or a counter's column:
+    // "fragments", "fragments.ao"): a counter is said exact and compared by
+    // value, a time with no paired draws (fewer than 6 rounds) not tested.
+    std::vector<std::string> frontSummary(const std::string& camera, const std::string& costName = "time") const;
 
     std::vector<std::string> columns() const;
     static std::vector<std::string> columns(const std::vector<std::string>& axes, const std::vector<std::string>& passes,

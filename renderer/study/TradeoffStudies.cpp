@@ -120,6 +120,39 @@ size_t valueAt(TradeoffAxis& axis, const std::string& text) {
     return axis.values.size() - 1;
 }
 
+// A key JSON gives twice in one object is kept once (the last) by the
+// parser, losing a study or a knob's values silently: refused as --study
+// refuses the same, from the parser's events (the text already parsed once).
+void refuseDuplicateKeys(const std::string& text, const std::string& origin) {
+    struct Level {
+        std::vector<std::string> keys;
+        bool object = false;
+    };
+    std::vector<Level> open;
+    std::string study;  // the study the keys below the top level belong to
+    size_t studies = 0;
+    auto callback = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using E = nlohmann::json::parse_event_t;
+        if (event == E::object_start || event == E::array_start) {
+            if (open.size() == 1 && !open.front().object) study = "study " + std::to_string(++studies);
+            open.push_back({{}, event == E::object_start});
+        } else if (event == E::object_end || event == E::array_end) {
+            if (!open.empty()) open.pop_back();
+        } else if (event == E::key && !open.empty()) {
+            const std::string key = parsed.get<std::string>();
+            std::vector<std::string>& keys = open.back().keys;
+            if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+                if (open.size() == 1) throw TradeoffStudyError(origin + ": two studies are named '" + key + "'");
+                throw TradeoffStudyError(origin + ": " + study + ": " + key + " is given twice");
+            }
+            keys.push_back(key);
+            if (open.size() == 1) study = "study '" + key + "'";
+        }
+        return true;
+    };
+    (void)nlohmann::json::parse(text, callback);
+}
+
 }  // namespace
 
 TradeoffStudySpec TradeoffStudies::parse(const std::string& text) {
@@ -158,6 +191,7 @@ std::vector<TradeoffStudySpec> TradeoffStudies::readFile(const std::string& path
     const std::string origin = "--study-file " + path;
     const std::string text = readWholeFile(path, "no such study file", "cannot read the study file");
     const nlohmann::ordered_json j = parseOrderedJson(text, path);
+    refuseDuplicateKeys(text, origin);
     std::vector<TradeoffStudySpec> out;
     if (j.is_object()) {
         for (const auto& [name, knobs] : j.items()) out.push_back(fileStudy(knobs, name, origin, out.size()));

@@ -12,7 +12,9 @@
 //     writes it, so the CSV and the record say every value a point ran with.
 //   Refused (TradeoffStudyError, one line): an empty study, a knob named twice
 //     in a study, an empty value, an unknown knob or a value it does not take,
-//     two studies of one name, and a point given twice (in one study or two).
+//     two studies of one name, and a point given twice (in one study or two);
+//     in a study file, a key JSON gives twice (two studies of one name, a knob
+//     twice in one study), which the parser would keep once.
 // Needs no GL; sweep() needs the current knobs (the run's on its scene).
 #include <string>
 #include <vector>

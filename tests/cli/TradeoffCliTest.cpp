@@ -59,6 +59,13 @@ const TradeoffRow* rowOf(const TradeoffTable& t, const std::string& samples, con
     return nullptr;
 }
 
+// A study file of this text in the tests' folder; its path.
+std::string studyFile(const std::string& name, const std::string& text) {
+    const fs::path file = dir() / (name + ".json");
+    std::ofstream(file) << text;
+    return file.string();
+}
+
 double row0Error(const nlohmann::json& record) { return record["results"]["rows"][0]["error"].get<double>(); }
 
 }  // namespace
@@ -466,10 +473,34 @@ TEST(TradeoffCli, TimeSumsOfPassesAndABudgetNothingFits) {
     EXPECT_EQ(same.code, 0) << same.err;
     EXPECT_NE(same.out.find("front: from the rows' 95% intervals"), std::string::npos) << same.out;
     const Result other = run("tradeoff merge " + csv + " --out " + out + " --plot none --time lighting+ao");
-    EXPECT_EQ(other.code, 1);
+    EXPECT_EQ(other.code, 2);  // a usage error, as every bad --time
     EXPECT_NE(other.err.find("the rows carry time lighting+ao+ao_filter, not this sum"), std::string::npos) << other.err;
+    // Without --time a merge ranks by the CSV's time column (the run's), and keeps it.
+    const Result kept = run("tradeoff merge " + csv + " --out " + out + " --plot none --budget-ms 0.001");
+    ASSERT_EQ(kept.code, 0) << kept.err;
+    EXPECT_NE(kept.out.find("Pareto (lighting+ao+ao_filter ms)"), std::string::npos) << kept.out;
+    EXPECT_EQ(TradeoffTable::readCsv(out).time, "lighting+ao+ao_filter");
+    // Another --time than the shards' is said, then used.
+    const Result frame = run("tradeoff merge " + csv + " --out " + out + " --plot none --time frame");
+    ASSERT_EQ(frame.code, 0) << frame.err;
+    EXPECT_NE(frame.err.find("tradeoff merge: note: --time frame ranks by another time than the shards' (their time "
+                             "column is lighting+ao+ao_filter)"),
+              std::string::npos)
+        << frame.err;
+    EXPECT_EQ(TradeoffTable::readCsv(out).time, "frame");
+    // A budget on one pass's median (no interval in the CSV) could never fit: refused in one line.
+    const Result noInterval = run("tradeoff merge " + csv + " --out " + out + " --plot none --time ao --budget-ms 25");
+    EXPECT_EQ(noInterval.code, 2);
+    EXPECT_NE(noInterval.err.find("--budget-ms: the time ao has no interval in these shards"), std::string::npos)
+        << noInterval.err;
+    EXPECT_EQ(noInterval.out, "");
+    for (const char* spec : {"ao+", "frame+ao", "ao+ao"}) {
+        const Result syntax = run(sweep + "--time " + spec + files("sum-bad"));
+        EXPECT_EQ(syntax.code, 2) << spec << syntax.err;
+        EXPECT_NE(syntax.err.find(std::string("--time ") + spec + ":"), std::string::npos) << syntax.err;
+    }
     const Result bad = run(sweep + "--time lighting+aox" + files("sum-bad"));
-    EXPECT_EQ(bad.code, 1);
+    EXPECT_EQ(bad.code, 2);
     EXPECT_NE(bad.err.find("--time lighting+aox: the pipeline has no pass 'aox'"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(dir() / "sum-bad.csv"));
 }
@@ -514,6 +545,15 @@ TEST(TradeoffCli, CountersRepeatBitForBitAndChooseTheCostAxis) {
     check.markParetoFront("ao", "fragments");
     for (size_t r = 0; r < tb.rows.size(); ++r) EXPECT_EQ(tb.rows[r].pareto, check.rows[r].pareto) << r;
     EXPECT_NE(b.out.find("| fragments.ao (exact) | Pareto (fragments.ao) |"), std::string::npos) << b.out;
+    // The summary names the cost axis, exact and untested, and the rule says only the error was tested;
+    // a's time (2 frames: no paired resamples) is not tested, not "cannot be told apart".
+    EXPECT_NE(b.out.find("front: fragments.ao (an exact counter, compared by value, not tested): "), std::string::npos)
+        << b.out;
+    EXPECT_EQ(b.out.find("front: time:"), std::string::npos) << b.out;
+    EXPECT_NE(b.out.find("pair(s) on error only; the cost, an exact counter, compared by value)"), std::string::npos)
+        << b.out;
+    EXPECT_NE(a.out.find("front: time: not tested (no paired resamples: fewer than 6 rounds"), std::string::npos)
+        << a.out;
     // The record keeps the counters and the cost axis.
     std::ifstream in(dir() / "counted-b.json");
     const nlohmann::json record = nlohmann::json::parse(in);
@@ -681,6 +721,14 @@ TEST(TradeoffCli, StudyFileAndBadStudiesAreOneClearLine) {
         {"--study a:ssao.samples=4 --study a:ssao.samples=8", "two studies are named 'a'"},
         {"--study ao.method=ssao:ao.method=gtao", "ao.method is given twice"},
         {"--sweep study=a,b", "--sweep study: 'study' names each point's study"},
+        // A study file: a key JSON gives twice is refused as --study refuses it (not the last kept); not JSON: exit 2.
+        {"--study-file " + studyFile("dup-studies", R"({"a": {"ssao.samples": [4]}, "a": {"ssao.samples": [8]}})"),
+         "two studies are named 'a'"},
+        {"--study-file " + studyFile("dup-knob", R"({"a": {"ssao.samples": [4], "ssao.samples": [8]}})"),
+         "study 'a': ssao.samples is given twice"},
+        {"--study-file " + studyFile("dup-knob-list", R"([{"ssao.samples": 4}, {"ssao.samples": 8, "ssao.samples": 16}])"),
+         "study 2: ssao.samples is given twice"},
+        {"--study-file " + studyFile("not-json", R"({"a": {"ssao.samples": [4]})"), "not-json.json"},
     };
     for (const Bad& b : cases) {
         const Result bad = run(base + " " + b.args + " --csv " + (dir() / "study-bad.csv").string() + " --json " +

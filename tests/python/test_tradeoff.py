@@ -217,10 +217,18 @@ class TradeoffTest(unittest.TestCase):
             with self.assertRaises(error, msg=str(kwargs)) as e:
                 dw.tradeoff(**dict(base, **kwargs))
             self.assertIn(message, str(e.exception), kwargs)
-        # A name the pipeline has no pass of is refused before the timed rounds: dw.Error naming --time.
-        with self.assertRaises(dw.Error) as e:
-            dw.tradeoff(**dict(base, sweep={"ssao.samples": [4]}, time="bogus", against="ssao.samples=8"))
-        self.assertIn("--time bogus: the pipeline has no pass of that name", str(e.exception))
+        # A name the pipeline has no pass of is refused before the timed rounds: ValueError naming --time,
+        # as every other bad argument (alone or as a term of a sum).
+        for time, says in (("bogus", "--time bogus: the pipeline has no pass of that name"),
+                           ("lighting+bogus", "--time lighting+bogus: the pipeline has no pass 'bogus'")):
+            with self.assertRaises(ValueError) as e:
+                dw.tradeoff(**dict(base, sweep={"ssao.samples": [4]}, time=time, against="ssao.samples=8"))
+            self.assertIn(says, str(e.exception))
+        # A budget is a number: True is not 1 ms, nor "5" 5 ms.
+        for kwargs in (dict(budget_ms=True), dict(budget_ms="5"), dict(cost="fragments", budget=True)):
+            with self.assertRaises(TypeError, msg=str(kwargs)) as e:
+                dw.tradeoff(**dict(base, sweep={"ssao.samples": [4, 8]}, **kwargs))
+            self.assertIn("must be a number", str(e.exception))
 
     def test_a_sum_of_passes_and_a_budget_pick(self):
         """time= takes a sum (the rows carry it with an interval), budget_ms= returns the pick, and every row

@@ -331,3 +331,69 @@ TEST(ConfidentFront, TooFewDrawsForHolmAreSaidAndTheNeededCountIsEnough) {
     EXPECT_NE(enough.rule.find("from 5760 paired resamples"), std::string::npos) << enough.rule;
     for (size_t p = 1; p < more.size(); ++p) EXPECT_EQ(enough.front[p], "dominated") << p;
 }
+
+// A trial read "front: time: every pair of points told apart" under --cost
+// fragments (the axis was the counter, never tested), Holm's "on each axis"
+// when only the error was tested, and "cannot be told apart" in time from
+// too few rounds: the lines name the cost axis and what was tested.
+TEST(ConfidentFront, SummaryNamesTheCostAxisAndWhatWasTested) {
+    // A counter as the cost: exact, compared by value; only the error tested.
+    std::vector<FrontEvidence> pts = {point(1.0, 0.0, 0.05, 0.0, 60), point(2.0, 0.0, 0.2, 0.0, 70),
+                                      point(3.0, 0.0, 0.01, 0.0, 80)};
+    for (auto& p : pts) p.cost.draws.clear(), p.cost.exact = true;
+    const FrontDecision exact = decideFront(pts, FrontRule::pairedBootstrap);
+    EXPECT_EQ(exact.testedTime, 0);
+    EXPECT_EQ(exact.testedError, 3);
+    EXPECT_EQ(exact.exactCost, 3);
+    EXPECT_NE(exact.rule.find("Holm's step-down over 3 comparison(s) (3 pair(s) on error only; the cost, an exact "
+                              "counter, compared by value)"),
+              std::string::npos)
+        << exact.rule;
+    // Time without draws (fewer than 6 rounds): not tested, and the rule says so.
+    for (auto& p : pts) p.cost.exact = false;
+    const FrontDecision untested = decideFront(pts, FrontRule::pairedBootstrap);
+    EXPECT_EQ(untested.untestedTime, 3);
+    EXPECT_NE(untested.rule.find("(3 pair(s) on error only; time not tested)"), std::string::npos) << untested.rule;
+    // Both axes tested: as before.
+    const FrontDecision both = decideFront({point(1.0, 0.001, 0.05, 0.0, 60), point(2.0, 0.001, 0.2, 0.0, 70)},
+                                           FrontRule::pairedBootstrap);
+    EXPECT_NE(both.rule.find("(every pair of points, on each axis)"), std::string::npos) << both.rule;
+
+    // The table's summary lines, from the same kinds of evidence.
+    TradeoffTable t = budgetTable();
+    t.markFront(
+        [&](size_t i) {
+            FrontEvidence e = t.intervalEvidence(t.rows[i]);
+            e.cost = {1000.0 * static_cast<double>(i), 1000.0 * static_cast<double>(i), 1000.0 * static_cast<double>(i),
+                      {}, true};
+            e.error.draws = draws(t.rows[i].error, 0.001, 0.0001, 90 + static_cast<unsigned>(i));
+            return e;
+        },
+        FrontRule::pairedBootstrap);
+    const std::vector<std::string> counted = t.frontSummary("0", "fragments");
+    ASSERT_GE(counted.size(), 2u);
+    EXPECT_EQ(counted[1], "fragments (an exact counter, compared by value, not tested): every pair of points differs");
+    t.markFront(
+        [&](size_t i) {
+            FrontEvidence e = t.intervalEvidence(t.rows[i]);
+            e.error.draws = draws(t.rows[i].error, 0.001, 0.0001, 90 + static_cast<unsigned>(i));
+            return e;  // time: an interval, no draws
+        },
+        FrontRule::pairedBootstrap);
+    const std::vector<std::string> fewRounds = t.frontSummary("0");
+    ASSERT_GE(fewRounds.size(), 2u);
+    EXPECT_EQ(fewRounds[1].rfind("time: not tested (no paired resamples: fewer than 6 rounds", 0), 0u) << fewRounds[1];
+}
+
+// "none fits" said the cheapest point's time with an interval from 2 frames, no caveat.
+TEST(BudgetPick, NoneFitsSaysTooFewFramesForTheCheapestsInterval) {
+    TradeoffTable t = budgetTable();
+    for (auto& r : t.rows) r.frames = 2;
+    const BudgetPick p = BudgetPicker::pick(t, 0.5, "0");
+    ASSERT_EQ(p.lines.size(), 1u);
+    EXPECT_NE(p.lines[0].find("ao time 1 ms [0.8, 1.2] (2 counted frame(s): too few frames for an interval)"),
+              std::string::npos)
+        << p.lines[0];
+    for (auto& r : t.rows) r.frames = 6;
+    EXPECT_EQ(BudgetPicker::pick(t, 0.5, "0").lines[0].find("too few"), std::string::npos);
+}
