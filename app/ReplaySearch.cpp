@@ -5,18 +5,12 @@
 #include <deque>
 #include <map>
 
+#include "renderer/OptionText.h"
 #include "renderer/study/TradeoffStudy.h"
 
 namespace dw::replay {
 
 namespace {
-
-std::string shortNumber(double v) {
-    if (std::isnan(v)) return "-";
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", v);
-    return text;
-}
 
 const TradeoffRow* pickedRow(const TradeoffTable& t) {
     for (const auto& r : t.rows)
@@ -42,8 +36,8 @@ std::string pointText(const TradeoffTable& t, const TradeoffRow* r, const std::s
     for (size_t a = 0; a < t.axes.size() && a < r->axisValues.size(); ++a)
         values += (values.empty() ? "" : ", ") + t.axes[a] + "=" + r->axisValues[a];
     return "point " + std::to_string(r->point) + (values.empty() ? "" : " (" + values + ")") + ", " + r->metric + " " +
-           shortNumber(r->error) + " [" + shortNumber(r->errorLo) + ", " + shortNumber(r->errorHi) + "], time " +
-           shortNumber(r->timeMs) + " ms [" + shortNumber(r->timeMsLo) + ", " + shortNumber(r->timeMsHi) + "]";
+           figureText(r->error) + " [" + figureText(r->errorLo) + ", " + figureText(r->errorHi) + "], time " +
+           figureText(r->timeMs) + " ms [" + figureText(r->timeMsLo) + ", " + figureText(r->timeMsHi) + "]";
 }
 
 // The found evaluation's row of a search table (settings' search_found_evaluation), or nullptr.

@@ -1,8 +1,16 @@
 #include "renderer/OptionText.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace dw {
+
+std::string figureText(double v) {
+    if (std::isnan(v)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", v);
+    return text;
+}
 
 std::string optionNumberText(double v) {
     char buf[32];

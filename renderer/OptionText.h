@@ -11,6 +11,8 @@
 
 namespace dw {
 
+// A figure in a table's or a pick's line: 4 significant digits (%.4g), NaN as "-".
+std::string figureText(double v);
 // A number as the messages write it (%.10g: "1000000000", "1e+18", "nan").
 std::string optionNumberText(double v);
 // "a whole number from 1 to 100000 (counted frames)", "a number above 0 and at most 1e+18 (...)".

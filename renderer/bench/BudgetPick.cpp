@@ -12,13 +12,6 @@ namespace dw {
 
 namespace {
 
-std::string shortNumber(double v) {
-    if (std::isnan(v)) return "-";
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", v);
-    return text;
-}
-
 std::string describe(const TradeoffTable& t, const TradeoffRow& r) {
     std::string s = "point " + std::to_string(r.point);
     std::string values;
@@ -39,12 +32,12 @@ Cost costOf(const BudgetCost& c, const TradeoffRow& r) {
 
 std::string costText(const BudgetCost& c, const TradeoffRow& r) {
     const Cost v = costOf(c, r);
-    const std::string value = c.name + " " + shortNumber(v.value) + " " + c.unit;
-    return c.exact ? value : value + " [" + shortNumber(v.lo) + ", " + shortNumber(v.hi) + "]";
+    const std::string value = c.name + " " + figureText(v.value) + " " + c.unit;
+    return c.exact ? value : value + " [" + figureText(v.lo) + ", " + figureText(v.hi) + "]";
 }
 
 std::string errorText(const TradeoffRow& r) {
-    return r.metric + " " + shortNumber(r.error) + " [" + shortNumber(r.errorLo) + ", " + shortNumber(r.errorHi) + "]";
+    return r.metric + " " + figureText(r.error) + " [" + figureText(r.errorLo) + ", " + figureText(r.errorHi) + "]";
 }
 
 std::string pointList(const std::vector<int>& points) {
@@ -78,7 +71,7 @@ void noneFits(const TradeoffTable& t, const std::vector<TradeoffRow*>& rows, con
     for (const TradeoffRow* r : rows)
         if (std::isfinite(costOf(cost, *r).value) && (!cheapest || costOf(cost, *r).value < costOf(cost, *cheapest).value))
             cheapest = r;
-    const std::string budget = shortNumber(out.budgetMs) + " " + cost.unit;
+    const std::string budget = figureText(out.budgetMs) + " " + cost.unit;
     if (!cheapest) {
         out.lines.push_back("pick: none: no point has a " + cost.name + " to hold against the budget of " + budget);
         return;
@@ -156,7 +149,7 @@ BudgetPick BudgetPicker::pick(TradeoffTable& t, double budgetMs, const std::stri
     out.lines.push_back("pick: " + describe(t, *best) + ": " + errorText(*best) + ", " + costText(cost, *best) +
                         ": the least error of the " + std::to_string(out.fitting) + " point(s) whose " +
                         (exact ? cost.name : cost.name + "'s 95% interval") + " ends under the budget of " +
-                        shortNumber(budgetMs) + " " + cost.unit +
+                        figureText(budgetMs) + " " + cost.unit +
                         (exact    ? std::string(" (exact)")
                          : tooFew ? " (" + std::to_string(best->frames) + " counted frame(s): " + kTooFewForInterval +
                                         ", so no confidence that its median is under)"

@@ -9,19 +9,13 @@
 #include <map>
 
 #include "renderer/Error.h"
+#include "renderer/OptionText.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/study/CachedReferences.h"
 
 namespace dw {
 
 namespace {
-
-std::string shortNumber(double v) {
-    if (std::isnan(v)) return "-";
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", v);
-    return text;
-}
 
 bool asNumber(const std::string& text, double& v) {
     char* end = nullptr;
@@ -145,7 +139,7 @@ Decision decide(const TradeoffOptions& o, TradeoffTable& t, const BudgetPick& pi
                             : "nothing fits the budget and no candidate is cheaper"};
     return {cheapest, "nothing fits the budget yet: toward it, the cheapest candidate" +
                           std::string(relaxed ? "" : " whose error is no worse") + " (" + cost.name + " " +
-                          shortNumber(least) + " " + cost.unit + " against " + shortNumber(now) + ")"};
+                          figureText(least) + " " + cost.unit + " against " + figureText(now) + ")"};
 }
 
 // Whether the step's row of `point` (local) fits its budget (its pick column).
@@ -217,12 +211,12 @@ void summarise(const BudgetSearchOptions& so, const std::vector<Axis>& axes, con
         const BudgetCost cost = budgetCost(o, r.table);
         double v = 0.0, lo = 0.0, hi = 0.0;
         cost.of(*row, v, lo, hi);
-        const std::string budget = shortNumber(o.budget > 0.0 ? o.budget : o.budgetMs) + " " + cost.unit;
+        const std::string budget = figureText(o.budget > 0.0 ? o.budget : o.budgetMs) + " " + cost.unit;
         r.fits = row->pick == "pick" || row->pick == "tied" || row->pick == "fits";
         r.lines.push_back("search: evaluation " + std::to_string(r.foundEvaluation) + ": " + row->metric + " " +
-                          shortNumber(row->error) + " [" + shortNumber(row->errorLo) + ", " + shortNumber(row->errorHi) +
-                          "], " + cost.name + " " + shortNumber(v) + " " + cost.unit +
-                          (cost.exact ? " (exact)" : " [" + shortNumber(lo) + ", " + shortNumber(hi) + "]") + ": " +
+                          figureText(row->error) + " [" + figureText(row->errorLo) + ", " + figureText(row->errorHi) +
+                          "], " + cost.name + " " + figureText(v) + " " + cost.unit +
+                          (cost.exact ? " (exact)" : " [" + figureText(lo) + ", " + figureText(hi) + "]") + ": " +
                           (r.fits ? "fits" : "does not fit") + " the budget of " + budget +
                           (cost.exact ? "" : " (its 95% interval's upper end against it)"));
     }

@@ -150,7 +150,8 @@ void refuseDuplicateKeys(const std::string& text, const std::string& origin) {
         }
         return true;
     };
-    (void)nlohmann::json::parse(text, callback);
+    const nlohmann::json checked = nlohmann::json::parse(text, callback);  // kept: parse is [[nodiscard]]
+    (void)checked;
 }
 
 }  // namespace
