@@ -149,11 +149,12 @@ namespace {
 std::atomic<long long> parses{0};
 
 template <typename Json>
-Json guardedParse(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
+Json guardedParse(std::string_view text, const std::string& source, const JsonGuardOptions& options,
+                  const typename Json::parser_callback_t& events = nullptr) {
     ++parses;
     checkJsonText(text, source, options);  // depth first: nlohmann's parser recurses
     try {
-        return Json::parse(text);
+        return Json::parse(text, events);
     } catch (const nlohmann::json::parse_error& e) {
         // "parse error at line 1, column 5: syntax error while parsing value - ...":
         // the position in our words, then what the parser expected.
@@ -170,6 +171,15 @@ Json guardedParse(std::string_view text, const std::string& source, const JsonGu
 
 nlohmann::json parseJson(std::string_view text, const std::string& source, const JsonGuardOptions& options) {
     return guardedParse<nlohmann::json>(text, source, options);
+}
+
+nlohmann::json parseJsonWithEvents(std::string_view text, const std::string& source, const JsonEvents& events,
+                                   const JsonGuardOptions& options) {
+    const nlohmann::json::parser_callback_t callback = [&events](int depth, nlohmann::json::parse_event_t event,
+                                                                 nlohmann::json& parsed) {
+        return events(depth, static_cast<int>(event), parsed);
+    };
+    return guardedParse<nlohmann::json>(text, source, options, callback);
 }
 
 nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string& source, const JsonGuardOptions& options) {

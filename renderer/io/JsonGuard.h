@@ -44,6 +44,15 @@ void checkJsonText(std::string_view text, const std::string& source, const JsonG
 // reader can forget the guard. Malformed JSON throws
 // FileError(source, "malformed JSON at line L, column C: <what the parser expected>").
 nlohmann::json parseJson(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
+// The same, with nlohmann's parser callback seeing every event: `event` is
+// nlohmann::json::parse_event_t as an int (object_start, object_end,
+// array_start, array_end, key, value), `parsed` the key or value; return
+// true to keep it. What the parsed value alone cannot show, such as a key
+// given twice in one object (the parser keeps the last). Exceptions the
+// callback throws pass through unchanged.
+using JsonEvents = std::function<bool(int depth, int event, nlohmann::json& parsed)>;
+nlohmann::json parseJsonWithEvents(std::string_view text, const std::string& source, const JsonEvents& events,
+                                   const JsonGuardOptions& options = {});
 // The same, keeping the file's key order (scene settings apply in order).
 nlohmann::ordered_json parseOrderedJson(std::string_view text, const std::string& source, const JsonGuardOptions& options = {});
 // The same for a file: readWholeFile, then parseJson.

@@ -131,8 +131,9 @@ void refuseDuplicateKeys(const std::string& text, const std::string& origin) {
     std::vector<Level> open;
     std::string study;  // the study the keys below the top level belong to
     size_t studies = 0;
-    auto callback = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    auto callback = [&](int, int eventCode, nlohmann::json& parsed) {
         using E = nlohmann::json::parse_event_t;
+        const E event = static_cast<E>(eventCode);
         if (event == E::object_start || event == E::array_start) {
             if (open.size() == 1 && !open.front().object) study = "study " + std::to_string(++studies);
             open.push_back({{}, event == E::object_start});
@@ -150,7 +151,7 @@ void refuseDuplicateKeys(const std::string& text, const std::string& origin) {
         }
         return true;
     };
-    const nlohmann::json checked = nlohmann::json::parse(text, callback);  // kept: parse is [[nodiscard]]
+    const nlohmann::json checked = parseJsonWithEvents(text, origin, callback);
     (void)checked;
 }
 

@@ -17,6 +17,7 @@ import sys
 # not include each other.
 FLOORS = [
     ["Error", "OptionLimits"],
+    ["OptionText"],
     ["io"],
     ["gl"],
     ["scene"],
