@@ -59,6 +59,26 @@ void runFit(ui::UiState& state, RenderSession& session, bool viewFrames = false)
 
 }  // namespace
 
+// Every point kept its 6 counted frames and intervals; the pick is the least error of the sweep.
+static void expectPickIsTheLeastError(const TradeoffTable& table, int point) {
+    double least = std::numeric_limits<double>::infinity(), picked = -1.0;
+    for (const TradeoffRow& r : table.rows) {
+        least = std::min(least, r.error);
+        if (r.point == point) picked = r.error;
+        EXPECT_EQ(r.frames, 6) << "point " << r.point;  // none lost among the view's own frames
+        EXPECT_LE(r.errorLo, r.error);
+        EXPECT_GE(r.timeMsHi, r.timeMs);
+    }
+    EXPECT_EQ(picked, least);
+}
+
+// The point is named by the one value it changes, not by all of the sweep's axes.
+static void expectNamedByOneValue(const std::string& l) {
+    const size_t open = l.find('('), close = l.find(')');
+    ASSERT_LT(open, close) << l;
+    EXPECT_EQ(std::count(l.begin() + static_cast<long>(open), l.begin() + static_cast<long>(close), '='), 1) << l;
+}
+
 TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     const fs::path cache = test::tempDir() / "fit-budget-reference-cache";
     fs::remove_all(cache);
@@ -109,15 +129,7 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     const BudgetPick& pick = state.fitBudget.pick();
     ASSERT_GE(pick.point, 0) << (pick.lines.empty() ? "" : pick.lines[0]);
     EXPECT_EQ(pick.fitting, static_cast<int>(state.fitBudget.points()));
-    double least = std::numeric_limits<double>::infinity(), picked = -1.0;
-    for (const TradeoffRow& r : state.fitBudget.table().rows) {
-        least = std::min(least, r.error);
-        if (r.point == pick.point) picked = r.error;
-        EXPECT_EQ(r.frames, 6) << "point " << r.point;  // none lost among the view's own frames
-        EXPECT_LE(r.errorLo, r.error);
-        EXPECT_GE(r.timeMsHi, r.timeMs);
-    }
-    EXPECT_EQ(picked, least);
+    expectPickIsTheLeastError(state.fitBudget.table(), pick.point);
     for (const std::string& a : state.fitBudget.assignmentsOf(pick.point)) {
         const size_t eq = a.find('=');
         EXPECT_EQ(knobText(*session, a.substr(0, eq)), a.substr(eq + 1)) << a;
@@ -127,13 +139,7 @@ TEST(FitBudget, AppliesThePickMeasuresTheChangeAndUndoes) {
     ASSERT_FALSE(panel.fit.pickLines.empty());
     EXPECT_EQ(panel.fit.pickLines[0].rfind("pick: point " + std::to_string(pick.point), 0), 0u) << panel.fit.pickLines[0];
     EXPECT_NE(panel.fit.pickLines[0].find("flip"), std::string::npos) << panel.fit.pickLines[0];
-    {
-        // The point is named by the one value it changes, not by all of the sweep's axes.
-        const std::string& l = panel.fit.pickLines[0];
-        const size_t open = l.find('('), close = l.find(')');
-        ASSERT_LT(open, close) << l;
-        EXPECT_EQ(std::count(l.begin() + static_cast<long>(open), l.begin() + static_cast<long>(close), '='), 1) << l;
-    }
+    expectNamedByOneValue(panel.fit.pickLines[0]);
     EXPECT_NE(panel.fit.pickLines[0].find("frame time"), std::string::npos) << panel.fit.pickLines[0];
     EXPECT_TRUE(drawnNow("pareto.fit_pick") && drawnNow("pareto.fit_applied") && drawnNow("pareto.fit_undo"));
     // The sweep is the table on show, its pick ringed.
