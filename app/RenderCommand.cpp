@@ -242,7 +242,8 @@ int writeResults(RenderSession& session, const RenderOptions& o, const FrameRepo
     if (o.record) {
         ExperimentRecord r = ExperimentRecord::capture(session, o.run, o.buffer, firstCounted, platform);
         // A reference buffer: the trace's rays and seed, so replay traces the same reference.
-        if (needsReference) r.setReference(o.reference.aoRays, static_cast<std::uint32_t>(o.reference.seed));
+        if (needsReference) r.setReference(o.reference.aoRays, static_cast<std::uint32_t>(o.reference.seed), o.reference.pixelSamples,
+                                         reference::pixelFilterName(o.reference.pixelFilter));
         r.write(*o.record);
         std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", o.record->c_str(),
                     o.record->c_str());

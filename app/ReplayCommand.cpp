@@ -130,6 +130,8 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
         reference::ViewReferenceOptions o;
         o.aoRays = *old.referenceAoRays;
         o.seed = static_cast<int>(old.referenceSeed);
+        o.pixelSamples = old.referenceSpp;
+        o.pixelFilter = reference::pixelFilterNamed(old.referenceFilter);
         o.cacheWarning = [](const std::string& why) { std::fprintf(stderr, "warning: the reference is not cached: %s\n", why.c_str()); };
         const std::uint64_t lastFrame = session.pipeline().frameIndex() + static_cast<std::uint64_t>(run.warmup + run.frames - 1);
         traced = reference::traceViewReference(session.scene(), session.knobs(), session.camera(), run.width,
@@ -153,7 +155,7 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     for (const std::string& w : report.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     ExperimentRecord now = ExperimentRecord::capture(session, run, old.buffer, firstCounted, context->platform());
     now.command = old.command;
-    if (old.referenceAoRays) now.setReference(*old.referenceAoRays, old.referenceSeed);
+    if (old.referenceAoRays) now.setReference(*old.referenceAoRays, old.referenceSeed, old.referenceSpp, old.referenceFilter);
     if (newRecord) now.write(*newRecord);
 
     // Timings: old against new, per series both have, with the interval of new / old.
@@ -236,7 +238,8 @@ int replayTradeoff(const ExperimentRecord& old, const std::string& path, const s
     }
     TradeoffStudyProgress progress;
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-    const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress, again.referenceSeed);
+    const TradeoffMeasurement m = TradeoffStudy::measure(runner, again.aoRays, context->platform(), progress, again.referenceSeed,
+                                                         {again.refSpp, reference::pixelFilterNamed(again.refFilter)});
     for (const auto& [k, v] : old.gl)
         if (k == "renderer" && v != fieldOrEmpty(m.machine, "gl_renderer")) {
             std::printf("gl renderer: %s -> %s\n", v.c_str(), fieldOrEmpty(m.machine, "gl_renderer").c_str());

@@ -109,6 +109,7 @@ BudgetSearchResult replaySearch(const ExperimentRecord& old, const std::string& 
     so.maxEvals = again.maxEvals;
     so.aoRays = again.aoRays;
     so.referenceSeed = again.referenceSeed;
+    so.referencePixels = {again.refSpp, reference::pixelFilterNamed(again.refFilter)};
     TradeoffStudyProgress progress;
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     BudgetSearchResult found = BudgetSearch::run(so, progress);

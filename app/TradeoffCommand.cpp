@@ -58,7 +58,7 @@ std::string tradeoffUsage() {
            "                                   [--study [NAME:]KNOB=V1,V2[:KNOB=V...]]... [--study-file F.json]\n"
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
            "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
-           "                                   [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
+           "                                   [--ref-spp N] [--ref-filter box|tent] [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
            "                                   [--budget-ms X | --budget N] [--search [--max-evals N]] [--no-counters]\n"
            "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
            "                                   [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
@@ -75,6 +75,9 @@ std::string tradeoffUsage() {
            "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
            "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
            "               rays per pixel (default 64)\n"
+           "  --ref-spp    the reference's samples per pixel (default 1: the pixel's centre), as reference --spp:\n"
+           "               N points over the pixel, the footprint truth texture filters are measured against;\n"
+           "               --ref-filter box (default) or tent, as reference --filter; both in the cache key\n"
            "  --mask shadow_edges  the error over the pixels within 2 px of an edge of the reference's shadow\n"
            "               buffer only; the buffer column reads <buffer>:shadow_edges\n"
            "  --time       what the front ranks by: frame (default, frame_gpu_ms) or a pass (its gpu_ms.<pass>),\n"
@@ -478,6 +481,8 @@ int runTradeoffCommand(int argc, char** argv) {
     s.search = cl.flag("--search");
     const std::optional<int> maxEvals = cl.whole("--max-evals");
     s.aoRays = cl.whole("--ao-rays", 64);
+    s.refSpp = cl.whole("--ref-spp", 1);
+    s.refFilter = cl.value("--ref-filter").value_or("box");
     s.orbit = so.orbit;
     s.walkthrough = so.walkthrough;
     s.frames = so.frames;
@@ -518,7 +523,8 @@ int runTradeoffCommand(int argc, char** argv) {
     if (!quiet) progress.line = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     progress.warning = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
     TradeoffMeasurement measured =
-        asUsage([&] { return TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress); });
+        asUsage([&] { return TradeoffStudy::measure(runner, s.aoRays, context->platform(), progress, 1,
+                                                          TradeoffStudy::referencePixels(s)); });
     // The JSON is the experiment record (docs/records.md): replay runs it again.
     const ExperimentRecord record = TradeoffStudy::record(s, o, runner, measured, command);
     const TradeoffResult& result = measured.result;

@@ -57,6 +57,7 @@ int runTradeoffSearch(const TradeoffStudyOptions& s, const TradeoffOptions& o, c
     bo.base = o;
     bo.maxEvals = s.maxEvals;
     bo.aoRays = s.aoRays;
+    bo.referencePixels = TradeoffStudy::referencePixels(s);
     TradeoffRunner start(o);  // the scene and every knob value checked before GL
     for (const auto& w : start.scene().warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     auto context = HeadlessGlContext::create();

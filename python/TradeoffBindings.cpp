@@ -264,6 +264,7 @@ TradeoffOutcome measureSearch(const TradeoffStudyOptions& s, const TradeoffOptio
     bo.base = o;
     bo.maxEvals = s.maxEvals;
     bo.aoRays = s.aoRays;
+    bo.referencePixels = TradeoffStudy::referencePixels(s);
     TradeoffOutcome out;
     out.search = WorkbenchSession::search(bo, progress);
     if (progress.cancelled()) throw TradeoffCancelled();
@@ -314,7 +315,7 @@ TradeoffOutcome measure(const TradeoffStudyOptions& s, const TradeoffStudyProgre
     std::unique_ptr<TradeoffRunner> runner = asValueError([&] { return std::make_unique<TradeoffRunner>(o); });
     for (const auto& w : runner->scene().warnings) progress.warning("warning: " + w);
     if (s.search) return measureSearch(s, o, *runner, progress, f);
-    TradeoffMeasurement measured = WorkbenchSession::tradeoff(*runner, s.aoRays, progress);
+    TradeoffMeasurement measured = WorkbenchSession::tradeoff(*runner, s.aoRays, TradeoffStudy::referencePixels(s), progress);
     if (progress.cancelled()) throw TradeoffCancelled();  // asked to stop after the last line: nothing written
     TradeoffOutcome out;
     out.table = measured.result.table;
@@ -385,7 +386,8 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   std::optional<py::dict> sweep, py::object presets, std::optional<std::string> knobs,
                   const py::object& studies, py::object exclude, const std::string& against, const std::string& metric,
                   const std::string& buffer,
-                  const py::object& aoRays, std::optional<std::string> mask, const std::string& time,
+                  const py::object& aoRays, const py::object& refSpp, const std::string& refFilter,
+                  std::optional<std::string> mask, const std::string& time,
                   const std::string& cost, const py::object& budgetMsObject, const py::object& budgetObject,
                   const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
@@ -403,6 +405,8 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.metric = metric;
     s.buffer = buffer;
     s.aoRays = intArg(aoRays, "tradeoff: ao_rays", limits::kAoRays, "tradeoff --ao-rays");
+    s.refSpp = intArg(refSpp, "tradeoff: ref_spp", limits::kPixelSamples, "tradeoff --ref-spp");
+    s.refFilter = refFilter;
     s.mask = mask.value_or("");
     s.time = time;
     s.cost = cost;
@@ -431,7 +435,7 @@ void bindTradeoff(py::module_& m) {
           py::arg("presets") = py::none(), py::arg("knobs") = py::none(), py::arg("studies") = py::none(),
           py::arg("exclude") = py::none(),
           py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
-          py::arg("ao_rays") = 64, py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("cost") = "gpu_ms",
+          py::arg("ao_rays") = 64, py::arg("ref_spp") = 1, py::arg("ref_filter") = "box", py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("cost") = "gpu_ms",
           py::arg("budget_ms") = py::none(), py::arg("budget") = py::none(), py::arg("orbit") = 0,
           py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
@@ -443,7 +447,8 @@ void bindTradeoff(py::module_& m) {
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
           "presets=[...] (an axis), knobs=\"speed/quality\", studies=[{knob: value or [values]}, ...] or\n"
           "{name: {knob: ...}, ...} (several grids in one run, as repeated --study: the column study, one front),\n"
-          "exclude=[\"axis=v,...\"], metric, buffer, ao_rays, mask,\n"
+          "exclude=[\"axis=v,...\"], metric, buffer, ao_rays, ref_spp (the reference's samples per pixel, as reference\n"
+          "--spp; default 1), ref_filter (\"box\" or \"tent\"), mask,\n"
           "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), cost (gpu_ms or a counter: fragments, samples,\n"
           "primitives, vertices, compute, bytes: the front's cost axis), budget_ms (bounds the time), budget (bounds\n"
           "the counter cost names, in its unit; not with budget_ms), orbit, walkthrough, frames, warmup, block,\n"

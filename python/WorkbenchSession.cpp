@@ -112,13 +112,14 @@ ExperimentRecord WorkbenchSession::benchRecord(BenchOptions options, const std::
     return record;
 }
 
-TradeoffMeasurement WorkbenchSession::tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress) {
+TradeoffMeasurement WorkbenchSession::tradeoff(TradeoffRunner& runner, int aoRays, ReferencePixels pixels,
+                                               const TradeoffStudyProgress& progress) {
     ProcessContext& pc = processContext();
     if (std::this_thread::get_id() != pc.thread)
         throw WrongThreadError("tradeoff must run on the thread that made the GL context (thread " +
                                describeThread(pc.thread) + ")");
     pc.context->makeCurrent();
-    return TradeoffStudy::measure(runner, aoRays, pc.context->platform(), progress);
+    return TradeoffStudy::measure(runner, aoRays, pc.context->platform(), progress, 1, pixels);
 }
 
 BudgetSearchResult WorkbenchSession::search(const BudgetSearchOptions& options, const TradeoffStudyProgress& progress) {

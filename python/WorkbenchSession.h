@@ -152,7 +152,8 @@ public:
                                         const std::function<void(const std::string&)>& costWarning = {});
     // A tradeoff sweep (TradeoffStudy::measure) on the process's GL context,
     // on its thread (WrongThreadError elsewhere), as tradeoff measures it.
-    static TradeoffMeasurement tradeoff(TradeoffRunner& runner, int aoRays, const TradeoffStudyProgress& progress);
+    static TradeoffMeasurement tradeoff(TradeoffRunner& runner, int aoRays, ReferencePixels pixels,
+                                        const TradeoffStudyProgress& progress);
     // tradeoff(search=True): BudgetSearch on the process's GL context, from the same thread.
     static BudgetSearchResult search(const BudgetSearchOptions& options, const TradeoffStudyProgress& progress);
 

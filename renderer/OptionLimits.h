@@ -133,6 +133,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"tradeoff", "--orbit", F::Whole, kOrbit, "cameras"},
     {"tradeoff", "--shard", F::Shard, kShards, "shards"},
     {"tradeoff", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
+    {"tradeoff", "--ref-spp", F::Whole, kPixelSamples, "samples per pixel"},
     {"tradeoff", "--plot-size", F::Size, kPlotSize, "pixels"},
     {"tradeoff", "--budget-ms", kBudgetMs, "GPU milliseconds"},
     {"tradeoff", "--budget", kBudget, "the --cost counter's unit"},

@@ -246,6 +246,13 @@ std::uint32_t seedField(const RecordFields& seeds, const std::string& name, cons
     return n;
 }
 
+// The reference's pixel filter (box or tent, as --filter takes it), "box" when absent.
+std::string pixelFilterField(const RecordField& object, const std::string& key) {
+    const std::string text = object.str(key, "box");
+    if (text != "box" && text != "tent") object.at(key).refuse("expects box or tent (as --filter takes it), got '" + text + "'");
+    return text;
+}
+
 // grid.shard "i/n" as --shard takes it.
 BenchShard shardField(const RecordField& grid, const std::string& fallback) {
     const std::string text = grid.str("shard", fallback);
@@ -293,9 +300,11 @@ RecordFields ExperimentRecord::knobFields(const KnobRegistry& knobs) {
     return f;
 }
 
-void ExperimentRecord::setReference(int aoRays, std::uint32_t seed) {
+void ExperimentRecord::setReference(int aoRays, std::uint32_t seed, int spp, const std::string& filter) {
     referenceAoRays = aoRays;
     referenceSeed = seed;
+    referenceSpp = spp;
+    referenceFilter = filter;
     std::erase_if(seeds, [](const auto& f) { return f.first == "reference"; });
     seeds.emplace_back("reference", std::to_string(seed));
 }
@@ -680,6 +689,8 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"metric", o.metric},
             {"buffer", o.buffer},
             {"ao_rays", tradeoff.aoRays},
+            {"ref_spp", tradeoff.refSpp},
+            {"ref_filter", tradeoff.refFilter},
             {"orbit", o.orbit},
             {"walkthrough", o.walkthrough},
             {"block", o.block},
@@ -771,7 +782,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["warmup"] = warmup;
     j["scene_time"] = sceneTime;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
-    if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}};
+    if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}, {"spp", referenceSpp}, {"filter", referenceFilter}};
     if (bench) j["grid"] = benchGridJson(*bench);
     if (tradeoff) j["grid"] = tradeoffGridJson(*tradeoff);
     j["build"] = fieldsJson(build);
@@ -913,6 +924,9 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
             t.maxEvals = g.at("search").object().at("max_evals").whole(limits::kMaxEvals, "--max-evals");
         }
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        // Records before --ref-spp traced the pixel's centre: 1 sample, box.
+        if (g.has("ref_spp")) t.refSpp = g.at("ref_spp").whole(limits::kPixelSamples, "--ref-spp");
+        t.refFilter = pixelFilterField(g, "ref_filter");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
         o.walkthrough = g.boolean("walkthrough", false);
         if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
@@ -936,7 +950,11 @@ void readRenderResults(ExperimentRecord& r, const RecordField& root, const Recor
     using F = RecordField;
     r.buffer = root.at("buffer").str();
     if (root.has("reference")) {
-        r.referenceAoRays = root.at("reference").object().at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        const RecordField ref = root.at("reference").object();
+        r.referenceAoRays = ref.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
+        // Records before --spp was kept traced the pixel's centre: 1 sample, box.
+        if (ref.has("spp")) r.referenceSpp = ref.at("spp").whole(limits::kPixelSamples, "--spp");
+        r.referenceFilter = pixelFilterField(ref, "filter");
         r.referenceSeed = seedField(r.seeds, "reference", path);
         if (r.referenceSeed > static_cast<std::uint32_t>(limits::kSeed.max))
             throw FileError(path, "seeds.reference: " + std::to_string(r.referenceSeed) + " is outside --seed's range " +

@@ -78,6 +78,10 @@ struct RecordedTradeoff {
     std::vector<std::string> exclude;  // the --exclude texts
     int aoRays = 64;
     std::uint32_t referenceSeed = 1;  // the CPU reference's AO sample seed (seeds.reference)
+    // The reference's samples per pixel and filter (grid.ref_spp, grid.ref_filter:
+    // tradeoff --ref-spp, --ref-filter); records before them read as 1 and box.
+    int refSpp = 1;
+    std::string refFilter = "box";
     // The run's own preset and --set: with a preset axis, replay starts from
     // these (every knob as --set would hide each point's preset).
     std::string runPreset;                // the --preset specs joined by " + " (as shown)
@@ -106,10 +110,13 @@ struct ExperimentRecord {
     double sceneTime = 0.0;  // --scene-time (seconds): the animation's pose; "scene_time", 0 when absent
     std::string buffer = "final";
     // render of a CPU reference buffer (reference.*, compare.error): the
-    // trace's AO rays per pixel ("reference": {"ao_rays"}) and seed
-    // (seeds.reference), so replay traces the same reference; unset otherwise.
+    // trace's AO rays per pixel, samples per pixel and filter ("reference":
+    // {"ao_rays", "spp", "filter"}; records before spp read as 1 and box) and
+    // seed (seeds.reference), so replay traces the same reference; unset otherwise.
     std::optional<int> referenceAoRays;
     std::uint32_t referenceSeed = 1;
+    int referenceSpp = 1;
+    std::string referenceFilter = "box";
     RecordFields build, gl, host;
     std::vector<RecordedSeries> timings;
     std::vector<std::pair<std::string, double>> metrics;
@@ -178,8 +185,9 @@ struct ExperimentRecord {
     static std::string hashBuffer(RenderSession& session, const std::string& buffer, int& width, int& height,
                                   int& channels);
     // Marks a render record as one of a CPU reference buffer traced with
-    // `aoRays` rays per pixel and AO pattern seed `seed` (reference's --ao-rays, --seed).
-    void setReference(int aoRays, std::uint32_t seed);
+    // `aoRays` rays per pixel, AO pattern seed `seed`, `spp` samples per pixel
+    // and their `filter` (reference's --ao-rays, --seed, --spp, --filter).
+    void setReference(int aoRays, std::uint32_t seed, int spp = 1, const std::string& filter = "box");
     // Every knob of `knobs` as name -> value text.
     static RecordFields knobFields(const KnobRegistry& knobs);
 };

@@ -332,7 +332,7 @@ BudgetSearchResult BudgetSearch::run(const BudgetSearchOptions& so, const Tradeo
     if (w.axes.empty()) throw Error("--search: no speed/quality knob to walk at these settings");
     std::vector<size_t> start;
     for (const Axis& a : w.axes) start.push_back(a.at);
-    CachedReferences references(so.aoRays, so.referenceSeed, {say, warn, stopIfAsked});
+    CachedReferences references(so.aoRays, so.referenceSeed, {say, warn, stopIfAsked}, so.referencePixels);
     const TradeoffReference reference = references.function();
 
     BudgetSearchResult r;

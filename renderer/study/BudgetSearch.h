@@ -45,6 +45,7 @@ struct BudgetSearchOptions {
     int maxEvals = 48;  // evaluations (points measured, re-measurements included); 1 .. 100000
     int aoRays = 64;
     std::uint32_t referenceSeed = 1;
+    ReferencePixels referencePixels;  // --ref-spp, --ref-filter
 };
 
 struct BudgetSearchStep {

@@ -11,6 +11,8 @@ FloatImage CachedReferences::image(const Scene& scene, const KnobRegistry& knobs
     reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(knobs, scene);
     model.aoRays = aoRays_;
     model.seed = seed_;
+    model.pixelSamples = pixels_.samples;
+    model.pixelFilter = pixels_.filter;
     reference::ReferenceRequest request;
     request.camera = camera;
     request.width = width;
@@ -27,6 +29,9 @@ FloatImage CachedReferences::image(const Scene& scene, const KnobRegistry& knobs
             if (hooks_.line)
                 hooks_.line("tradeoff: rendering the CPU reference (" + std::to_string(width) + "x" + std::to_string(height) +
                             (model.rayTracedAo ? ", " + std::to_string(model.aoRays) + " AO rays" : std::string()) +
+                            (model.pixelSamples > 1 ? ", " + std::to_string(model.pixelSamples) + " samples per pixel (" +
+                                                          reference::pixelFilterName(model.pixelFilter) + ")"
+                                                    : std::string()) +
                             "; cached for the next run)");
             images = reference::renderReference(scene, model, request, nullptr, &rayScenes_);
             ++rendered_;

@@ -106,6 +106,7 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& given) {
     o.counters = s.counters;
     checkBudgets(s, o);
     inRange("--ao-rays", s.aoRays, limits::kAoRays);
+    (void)referencePixels(s);
     if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
     o.walkthrough = s.walkthrough;
     o.frames = inRange("--frames", s.frames, limits::kFrames);
@@ -117,6 +118,15 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& given) {
         throw Error("tradeoff needs axes: --sweep knob=v1,v2,..., --presets A,B,..., --knobs speed/quality or "
                     "--study KNOB=V1,V2[:KNOB=V...]");
     return o;
+}
+
+ReferencePixels TradeoffStudy::referencePixels(const TradeoffStudyOptions& s) {
+    ReferencePixels p;
+    p.samples = inRange("--ref-spp", s.refSpp, limits::kPixelSamples);
+    if (s.refFilter != "box" && s.refFilter != "tent")
+        throw Error("--ref-filter: expected box or tent, got '" + s.refFilter + "'");
+    p.filter = reference::pixelFilterNamed(s.refFilter);
+    return p;
 }
 
 TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& given) {
@@ -137,7 +147,8 @@ TradeoffOptions TradeoffStudy::runnerOptions(const TradeoffStudyOptions& given) 
 }
 
 TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
-                                           const TradeoffStudyProgress& progress, std::uint32_t referenceSeed) {
+                                           const TradeoffStudyProgress& progress, std::uint32_t referenceSeed,
+                                           ReferencePixels pixels) {
     auto stopIfAsked = [&] {
         if (progress.cancelled && progress.cancelled()) throw TradeoffCancelled();
     };
@@ -149,7 +160,7 @@ TradeoffMeasurement TradeoffStudy::measure(TradeoffRunner& runner, int aoRays, c
         if (progress.warning) progress.warning(line);
     };
     // References through the shared cache; each distinct one rendered once in this run.
-    CachedReferences references(aoRays, referenceSeed, {say, warn, stopIfAsked});
+    CachedReferences references(aoRays, referenceSeed, {say, warn, stopIfAsked}, pixels);
     const TradeoffReference reference = references.function();
 
     TradeoffMeasurement m;
@@ -180,6 +191,8 @@ ExperimentRecord TradeoffStudy::record(const TradeoffStudyOptions& options, cons
     recorded.options = given;
     recorded.exclude = options.exclude;
     recorded.aoRays = options.aoRays;
+    recorded.refSpp = options.refSpp;
+    recorded.refFilter = options.refFilter;
     recorded.runPreset = options.run.presetSpec();
     recorded.runPresets = options.run.presetSpecs();
     recorded.runSets = options.run.sets;

@@ -19,6 +19,7 @@
 #include "renderer/RunConfig.h"
 #include "renderer/bench/TradeoffRunner.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/study/CachedReferences.h"
 #include "renderer/study/TradeoffStudies.h"
 
 namespace dw {
@@ -43,6 +44,8 @@ struct TradeoffStudyOptions {
     std::string cost = "gpu_ms";         // the front's cost axis: gpu_ms or a counter (TradeoffTable::costOf)
     bool counters = true;                // count each pass's cost counters (--no-counters: off)
     int aoRays = 64;                     // the reference's AO rays per pixel, 1 .. 2^20
+    int refSpp = 1;                      // --ref-spp: the reference's samples per pixel, 1 .. 65536 (reference --spp)
+    std::string refFilter = "box";       // --ref-filter: box | tent (reference --filter)
     int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
     bool walkthrough = false;            // the scene's camera.path keyframes
     int frames = 5, warmup = 1, block = 1, resamples = 2000;
@@ -83,6 +86,10 @@ public:
     // by the TradeoffRunner made from the result.
     static TradeoffOptions check(const TradeoffStudyOptions& options);
 
+    // --ref-spp and --ref-filter as the references take them. Throws Error
+    // (--ref-spp outside 1 .. 65536, a filter other than box or tent).
+    static ReferencePixels referencePixels(const TradeoffStudyOptions& options);
+
     // check(), then with --knobs speed/quality the sweep about the current
     // settings (the run's knobs on its scene, which is loaded: FileError /
     // Error for a bad one), or with studies their listed sweep
@@ -92,11 +99,13 @@ public:
     // The runner's sweep with the references through the shared cache
     // (ReferenceCache: each distinct one rendered once in this run, with
     // `aoRays` AO rays per pixel, their pattern seeded by `referenceSeed`, as
-    // reference --seed; a record holds it as seeds.reference). Needs a current
+    // reference --seed; a record holds it as seeds.reference; `pixels` samples
+    // per pixel and their filter, as reference --spp and --filter). Needs a current
     // GL 4.5 context, whose EGL platform is `glPlatform`. Throws
     // TradeoffCancelled when asked to stop.
     static TradeoffMeasurement measure(TradeoffRunner& runner, int aoRays, const std::string& glPlatform,
-                                       const TradeoffStudyProgress& progress = {}, std::uint32_t referenceSeed = 1);
+                                       const TradeoffStudyProgress& progress = {}, std::uint32_t referenceSeed = 1,
+                                       ReferencePixels pixels = {});
 
     // The experiment record tradeoff --json writes (replay runs it again):
     // `given` the options the runner was made from; `command` goes into its settings.

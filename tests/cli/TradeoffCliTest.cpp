@@ -842,3 +842,78 @@ TEST(TradeoffCli, ReplayCountsThePickCountersAndTimeTermsItChecks) {
     EXPECT_NE(median.out.find(": record inconsistent: time_ms median "), std::string::npos) << median.out;
     EXPECT_NE(median.out.find("1 inconsistent in the record"), std::string::npos) << median.out;
 }
+
+// Issue 35: --ref-spp N traces the sweep's reference at N samples per pixel
+// (--ref-filter box|tent), with N and the filter in the cache key (two N never
+// share an entry); the record keeps both and replay traces the same
+// reference (a record without them reads as 1 sample, box); bad values are
+// one line, exit 2, as reference --spp's.
+TEST(TradeoffCli, RefSppTracesTheReferenceAtNSamplesAndKeysTheCache) {
+    const fs::path d = dir() / "ref-spp";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    const auto runHere = [&](const std::string& args) {
+        return test::runCommand("DW_REFERENCE_CACHE=" + (d / "cache").string() + " " + DW_WORKBENCH_BINARY + " " + args);
+    };
+    const std::string grid = "tradeoff --scene default --size 40x24 --sweep gbuffer.texture_filter=mipmap,base_level "
+                             "--metric rms --ao-rays 2 --frames 1 --warmup 0 --resamples 100 --quiet --plot none";
+    const auto sweep = [&](const std::string& name, const std::string& flags) {
+        const Result r = runHere(grid + flags + " --csv " + (d / (name + ".csv")).string() + " --json " +
+                                 (d / (name + ".json")).string());
+        EXPECT_EQ(r.code, 0) << name << ": " << r.err << r.out;
+        std::ifstream f(d / (name + ".json"));
+        return nlohmann::json::parse(f);
+    };
+    const auto errors = [](const nlohmann::json& rec) {
+        std::vector<double> e;
+        for (const auto& row : rec["results"]["rows"]) e.push_back(row["error"].get<double>());
+        return e;
+    };
+    const auto settings = [](const nlohmann::json& rec, const char* key) {
+        return rec["results"]["settings"][key].get<std::string>();
+    };
+    const nlohmann::json four = sweep("four", " --ref-spp 4");
+    EXPECT_EQ(four["grid"]["ref_spp"], 4);
+    EXPECT_EQ(four["grid"]["ref_filter"], "box");
+    EXPECT_EQ(settings(four, "references_rendered"), "1");
+    const nlohmann::json one = sweep("one", "");
+    EXPECT_EQ(one["grid"]["ref_spp"], 1);
+    EXPECT_EQ(settings(one, "references_rendered"), "1") << "1 sample must not read 4 samples' entry";
+    EXPECT_NE(errors(one), errors(four)) << "the pixel's area is not its centre on a textured floor";
+    const nlohmann::json again = sweep("again", " --ref-spp 4");
+    EXPECT_EQ(settings(again, "references_from_cache"), "1");
+    EXPECT_EQ(settings(again, "references_rendered"), "0");
+    EXPECT_EQ(errors(again), errors(four));
+    const nlohmann::json tent = sweep("tent", " --ref-spp 4 --ref-filter tent");
+    EXPECT_EQ(tent["grid"]["ref_filter"], "tent");
+    EXPECT_EQ(settings(tent, "references_rendered"), "1") << "tent must not read box's entry";
+
+    // replay traces at the record's N: the same errors.
+    Result r = runHere("replay " + (d / "four.json").string());
+    ASSERT_TRUE(r.code == 0 || r.code == 1) << r.err << r.out;
+    EXPECT_EQ(r.out.find("(differs)"), std::string::npos) << r.out;
+    // A record from before --ref-spp: 1 sample, so 4 samples' errors now differ.
+    nlohmann::json old = four;
+    old["grid"].erase("ref_spp");
+    old["grid"].erase("ref_filter");
+    std::ofstream((d / "old.json").string()) << old.dump(2);
+    r = runHere("replay " + (d / "old.json").string());
+    EXPECT_EQ(r.code, 1) << r.err << r.out;
+    EXPECT_NE(r.out.find("(differs)"), std::string::npos) << r.out;
+
+    // Bad values: reference --spp's line, named for --ref-spp; exit 2, nothing written.
+    for (const std::string bad : {"0", "1e9", "70000"}) {
+        const Result ref = runHere("reference --scene default --size 40x24 --spp " + bad + " --out " + (d / "x.exr").string());
+        r = runHere(grid + " --ref-spp " + bad + " --csv " + (d / "x.csv").string());
+        EXPECT_EQ(r.code, 2) << bad;
+        // The refusal's first line (the second says where the command's options are listed).
+        const std::string line = r.err.substr(0, r.err.find('\n'));
+        std::string expected = ref.err.substr(0, ref.err.find('\n'));
+        expected.replace(expected.find("--spp"), 5, "--ref-spp");
+        EXPECT_EQ(line, expected) << bad;
+    }
+    r = runHere(grid + " --ref-spp 4 --ref-filter gauss --csv " + (d / "x.csv").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--ref-filter: expected box or tent, got 'gauss'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d / "x.csv"));
+}

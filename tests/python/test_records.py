@@ -666,18 +666,27 @@ class RecordTest(unittest.TestCase):
         r = run("replay", "--diff", record, seeded)
         self.assertIn("seed reference: 1 -> 2", r.stdout.splitlines())
 
-    def test_a_render_of_a_reference_buffer_records_its_rays_and_seed_and_replays_with_them(self):
+    def test_a_render_of_a_reference_buffer_records_its_rays_seed_and_spp_and_replays_with_them(self):
         record = os.path.join(self.tmp.name, "ref.json")
         env = {"DW_REFERENCE_CACHE": os.path.join(self.tmp.name, "refcache-render")}
         r = run("render", "--scene", "default", "--size", "32x18", "--buffer", "reference.ao", "--ao-rays", "8", "--seed",
-                "3", "--out", os.path.join(self.tmp.name, "ref.exr"), "--record", record, env=env, timeout=600)
+                "3", "--spp", "2", "--out", os.path.join(self.tmp.name, "ref.exr"), "--record", record, env=env, timeout=600)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         with open(record) as f:
             d = json.load(f)
-        self.assertEqual((d["buffer"], d["reference"], d["seeds"]["reference"]), ("reference.ao", {"ao_rays": 8}, "3"))
+        self.assertEqual((d["buffer"], d["reference"], d["seeds"]["reference"]),
+                         ("reference.ao", {"ao_rays": 8, "spp": 2, "filter": "box"}, "3"))
         r = run("replay", record, env=env, timeout=600)
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertTrue(r.stdout.endswith("inputs changed: none\nimage: identical\n"), r.stdout)
+        # A record from before --spp was kept reads as 1 sample: another image (the samples are used, not only kept).
+        older = dict(d, reference={"ao_rays": 8})
+        before = os.path.join(self.tmp.name, "ref-before-spp.json")
+        with open(before, "w") as f:
+            json.dump(older, f)
+        r = run("replay", before, env=env, timeout=600)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("image: differs", r.stdout)
         # Another seed traces another AO pattern: the image differs (the seed is used, not only kept).
         d["seeds"]["reference"] = "4"
         other = os.path.join(self.tmp.name, "ref4.json")

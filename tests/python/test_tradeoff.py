@@ -166,6 +166,28 @@ class TradeoffTest(unittest.TestCase):
         for x in r["rows"]:
             self.assertGreater(x["error"], 0.0)
 
+    def test_reference_samples_per_pixel(self):
+        # ref_spp (issue 35) traces the reference over each pixel's area, as tradeoff --ref-spp: the record keeps
+        # it and the filter, the errors are the CLI's for the same flags, and they are not the pixel centre's.
+        kw = dict(scene="default", size=(32, 18), sweep={"gbuffer.texture_filter": ["mipmap", "base_level"]},
+                  metric="rms", ao_rays=2, frames=1, warmup=0, resamples=100, quiet=True)
+        four = dw.tradeoff(ref_spp=4, ref_filter="tent", **kw)
+        self.assertEqual(four["grid"]["ref_spp"], 4)
+        self.assertEqual(four["grid"]["ref_filter"], "tent")
+        one = dw.tradeoff(**kw)
+        self.assertEqual(one["grid"]["ref_spp"], 1)
+        self.assertEqual(one["grid"]["ref_filter"], "box")
+        self.assertNotEqual([x["error"] for x in four["rows"]], [x["error"] for x in one["rows"]])
+        out = os.path.join(self.tmp.name, "spp.csv")
+        subprocess.run([BINARY, "tradeoff", "--scene", "default", "--size", "32x18", "--sweep",
+                        "gbuffer.texture_filter=mipmap,base_level", "--metric", "rms", "--ao-rays", "2", "--frames", "1",
+                        "--warmup", "0", "--resamples", "100", "--quiet", "--ref-spp", "4", "--ref-filter", "tent",
+                        "--csv", out, "--json", os.path.join(self.tmp.name, "spp.json"), "--plot", "none"],
+                       check=True, capture_output=True, text=True)
+        with open(out) as f:
+            cli = list(csv.DictReader(f))
+        self.assertEqual([float(x["error"]) for x in cli], [x["error"] for x in four["rows"]])
+
     def test_bad_arguments_raise_with_the_cli_messages(self):
         base = dict(scene="default", size=(32, 18), frames=1, quiet=True)
         cases = [
@@ -183,6 +205,9 @@ class TradeoffTest(unittest.TestCase):
             (dict(sweep={"ssao.samples": [4, 8]}, frames=0), ValueError, "tradeoff: frames must be an integer between 1 and 100000 (as tradeoff --frames)"),
             (dict(sweep={"ssao.samples": [4, 8]}, resamples=5), ValueError, "tradeoff: resamples must be an integer between 100 and 1000000"),
             (dict(sweep={"ssao.samples": [4, 8]}, ao_rays=0), ValueError, "tradeoff: ao_rays must be an integer between 1 and 1048576"),
+            (dict(sweep={"ssao.samples": [4, 8]}, ref_spp=0), ValueError, "tradeoff: ref_spp must be an integer between 1 and 65536"),
+            (dict(sweep={"ssao.samples": [4, 8]}, ref_spp=10**9), ValueError, "tradeoff: ref_spp must be an integer between 1 and 65536"),
+            (dict(sweep={"ssao.samples": [4, 8]}, ref_filter="gauss"), ValueError, "--ref-filter: expected box or tent, got 'gauss'"),
             (dict(sweep={"ssao.samples": [4, 8]}, size=(0, 18)), ValueError, "tradeoff: size width must be an integer between 1 and 16384"),
             (dict(sweep={"ssao.samples": [4, 8]}, shard="3/2"), ValueError, "--shard expects i/n"),
             (dict(sweep={"ssao.samples": [4, 8]}, exclude=["ssao.samples=4,8"]), ValueError,

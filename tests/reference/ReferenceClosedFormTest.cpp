@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/RunConfig.h"
@@ -459,6 +460,27 @@ TEST(ReferenceCache, StoresAndLoadsAnEntry) {
     // A damaged entry is a miss, not an error.
     std::filesystem::resize_file(cache.directory() / (key + ".lbuffer.exr"), 10);
     EXPECT_FALSE(cache.load(key).has_value());
+}
+
+// Issue 35: the samples per pixel and their filter are in the cache key
+// (ReferenceModel::canonical): two N never share an entry, nor box and tent
+// at N > 1; one sample (the pixel's centre, whatever the filter) keeps its key.
+TEST(ReferenceCache, SamplesPerPixelAndFilterAreInTheKey) {
+    const Scene s = builtin("spheres");
+    const auto request = requestFor(s, 32, 18);
+    std::set<std::string> keys;
+    for (int n : {1, 2, 4, 16, 64, 65536}) {
+        reference::ReferenceModel m = plainModel();
+        m.pixelSamples = n;
+        EXPECT_TRUE(keys.insert(reference::referenceKey(s, m, request)).second) << n << " samples share a key";
+        if (n == 1) continue;
+        m.pixelFilter = reference::PixelFilter::Tent;
+        EXPECT_TRUE(keys.insert(reference::referenceKey(s, m, request)).second) << n << " samples, tent";
+    }
+    reference::ReferenceModel centre = plainModel();
+    const std::string key1 = reference::referenceKey(s, centre, request);
+    centre.pixelFilter = reference::PixelFilter::Tent;
+    EXPECT_EQ(reference::referenceKey(s, centre, request), key1) << "one sample is the pixel's centre under either filter";
 }
 
 }  // namespace

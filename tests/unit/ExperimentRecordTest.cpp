@@ -650,3 +650,60 @@ TEST(ExperimentRecord, TradeoffGridKeepsTimeBudgetAndSearch) {
                   .find("r.json: grid.search.max_evals"),
               std::string::npos);
 }
+
+// Issue 35: a tradeoff record keeps --ref-spp and --ref-filter in its grid,
+// and a render record of a reference buffer its --spp and filter, through
+// JSON and back; records before them read as 1 sample, box; a value no
+// flag would take is refused naming the field.
+TEST(ExperimentRecord, ReferenceSamplesPerPixelAndFilterGoThroughJson) {
+    auto tradeoff = [](nlohmann::json& j) {
+        j["command"] = "tradeoff";
+        j["grid"] = {{"axes", {{{"name", "gbuffer.texture_filter"}, {"values", {"mipmap", "base_level"}}}}},
+                     {"metric", "flip"}, {"buffer", "final"}, {"ref_spp", 16}, {"ref_filter", "tent"}};
+        j["results"] = {{"axes", {"gbuffer.texture_filter"}}, {"passes", nlohmann::json::array()},
+                        {"rows", nlohmann::json::array()}};
+    };
+    const ExperimentRecord r = ExperimentRecord::parse(renderRecord(tradeoff), "r.json");
+    ASSERT_TRUE(r.tradeoff.has_value());
+    EXPECT_EQ(r.tradeoff->refSpp, 16);
+    EXPECT_EQ(r.tradeoff->refFilter, "tent");
+    const ExperimentRecord back = ExperimentRecord::parse(r.json(), "back.json");
+    ASSERT_TRUE(back.tradeoff.has_value());
+    EXPECT_EQ(back.tradeoff->refSpp, 16);
+    EXPECT_EQ(back.tradeoff->refFilter, "tent");
+    EXPECT_EQ(nlohmann::json::parse(r.json())["grid"]["ref_spp"], 16);
+    // Older records: the pixel's centre.
+    const ExperimentRecord old = ExperimentRecord::parse(renderRecord([&](nlohmann::json& j) {
+                                                             tradeoff(j);
+                                                             j["grid"].erase("ref_spp");
+                                                             j["grid"].erase("ref_filter");
+                                                         }),
+                                                         "r.json");
+    EXPECT_EQ(old.tradeoff->refSpp, 1);
+    EXPECT_EQ(old.tradeoff->refFilter, "box");
+    EXPECT_NE(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["ref_spp"] = 0; }))
+                  .find("r.json: grid.ref_spp"),
+              std::string::npos);
+    EXPECT_NE(refusal(renderRecord([&](nlohmann::json& j) { tradeoff(j); j["grid"]["ref_filter"] = "gauss"; }))
+                  .find("r.json: grid.ref_filter: expects box or tent (as --filter takes it), got 'gauss'"),
+              std::string::npos);
+
+    // A render record of a reference buffer.
+    ExperimentRecord render = ExperimentRecord::parse(renderRecord([](nlohmann::json&) {}), "r.json");
+    render.setReference(8, 3, 4, "tent");
+    const nlohmann::json j = nlohmann::json::parse(render.json());
+    EXPECT_EQ(j["reference"]["spp"], 4);
+    EXPECT_EQ(j["reference"]["filter"], "tent");
+    const ExperimentRecord rendered = ExperimentRecord::parse(render.json(), "r.json");
+    EXPECT_EQ(rendered.referenceAoRays, 8);
+    EXPECT_EQ(rendered.referenceSeed, 3u);
+    EXPECT_EQ(rendered.referenceSpp, 4);
+    EXPECT_EQ(rendered.referenceFilter, "tent");
+    const ExperimentRecord before = ExperimentRecord::parse(
+        renderRecord([](nlohmann::json& k) { k["reference"] = {{"ao_rays", 8}}; }), "r.json");
+    EXPECT_EQ(before.referenceSpp, 1);
+    EXPECT_EQ(before.referenceFilter, "box");
+    EXPECT_NE(refusal(renderRecord([](nlohmann::json& k) { k["reference"] = {{"ao_rays", 8}, {"spp", 70000}}; }))
+                  .find("r.json: reference.spp"),
+              std::string::npos);
+}
