@@ -147,6 +147,9 @@ void GeometryPass::execute(FrameContext& ctx) {
     if (ctx.wants("gbuffer.directional") && !ctx.knobs.get(directional_))
         throw Error("gbuffer.directional is written only with lighting.directional_in_gbuffer=true");
     const bool directional = ctx.knobs.get(directional_) && ctx.wants("gbuffer.directional") && ctx.lightTable;
+    for (const OutputDecl& o : outputs())
+        if (o.name.rfind("gbuffer.ms.", 0) == 0 && ctx.wants(o.name) && !msaa(ctx.knobs))
+            throw Error(o.name + " is written only with aa.method=msaa");
     // For the whole frame: the forward strategies draw the materials with the same samplers.
     ctx.gpu.setBaseLevelFiltering(ctx.knobs.get(textureFilter_) == 1);
     // Outputs are nearest-filtered: a G-buffer value between pixels means

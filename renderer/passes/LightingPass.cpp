@@ -235,11 +235,8 @@ void LightingPass::shadeEdgeSamples(FrameContext& ctx, const LightingStrategy& s
                 std::to_string(shaded) + ", " + perPixel + " a pixel";
 }
 
-LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
+std::vector<int> LightingPass::uploadParams(const FrameContext& ctx, const LightTable& table) {
     const KnobRegistry& k = ctx.knobs;
-    if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
-    const LightTable& table = *ctx.lightTable;
-
     const bool occlusion = ctx.produced("ao.filtered");
     const bool sky = ctx.produced("sky");
     gpu::LightingParams params{};
@@ -260,6 +257,16 @@ LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
     params.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
     params.background = glm::vec4(ctx.scene.background, 0.0f);
     params_.upload(params, binding::PASS_UBO);
+    return shadedInGBuffer;
+}
+
+LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
+    if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
+    const LightTable& table = *ctx.lightTable;
+
+    const bool occlusion = ctx.produced("ao.filtered");
+    const bool sky = ctx.produced("sky");
+    const std::vector<int> shadedInGBuffer = uploadParams(ctx, table);
 
     // The L-buffer gets its own copy of the G-buffer depth: the stencil test
     // writes stencil there while the shader samples gbuffer.depth.

@@ -83,6 +83,9 @@ private:
     // Shades the G-buffer as it stands into lbuffer (ambient, screen lights,
     // the strategy's lights); counts_ and the optional outputs as ctx wants them.
     LightingStrategy& shadeGBuffer(FrameContext& ctx);
+    // The pass's parameter block for this frame, uploaded; returns the
+    // directional lights the G-buffer pass shaded (light-table rows).
+    std::vector<int> uploadParams(const FrameContext& ctx, const LightTable& table);
     // aa.method=msaa: the N samples of the edge pixels, each copied into the
     // G-buffer and shaded, the radiance averaged; the G-buffer put back after.
     void shadeEdgeSamples(FrameContext& ctx, const LightingStrategy& strategy);

@@ -47,8 +47,8 @@ MsaaPass::MsaaPass(KnobRegistry& knobs) {
 
 std::vector<OutputDecl> MsaaPass::outputs() const {
     return {{"aa.edges", OutputKind::Scalar,
-             std::string("MSAA's edge mask: 1 where the pixel's samples are shaded each, 0 where sample 0 is shaded "
-                         "for all (R8); ") +
+             std::string("MSAA's edge mask: 1 where the pixel's samples are shaded each, 0 where the pixel is shaded once, "
+                         "at its centre (R8); ") +
                  kEdgeRule,
              texture2D(GL_R8), 1}};
 }
