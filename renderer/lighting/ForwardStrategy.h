@@ -55,6 +55,7 @@ public:
     }
     void setup(gl::ShaderLibrary& shaders) override;
     StrategyCounts shade(LightingFrame& frame) override;
+    bool shadesFromGBuffer() const override { return false; }
     // Light-object pairs shaded in the last frame (the sum of the lists' lengths).
     std::size_t lastPairs() const { return lastPairs_; }
 
@@ -77,6 +78,7 @@ public:
     }
     void setup(gl::ShaderLibrary& shaders) override;
     StrategyCounts shade(LightingFrame& frame) override;
+    bool shadesFromGBuffer() const override { return false; }
     std::size_t lastPairs() const { return lastPairs_; }
 
 private:

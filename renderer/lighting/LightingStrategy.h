@@ -127,6 +127,11 @@ public:
     // then draws no ambient pass, and blends the directional and unbounded
     // lights after shade() instead of before.
     virtual bool writesFirstRadiance(const FrameContext& ctx) const { (void)ctx; return false; }
+    // Whether shade() reads its surfaces from the G-buffer, so that a
+    // G-buffer holding one MSAA sample's attributes is shaded as that sample
+    // (aa.method=msaa, MsaaPass.h). The forward strategies draw the scene
+    // again at the pixel centres instead: false.
+    virtual bool shadesFromGBuffer() const { return true; }
     virtual StrategyCounts shade(LightingFrame& frame) = 0;
     // In a frame another strategy shades: writes those of this strategy's own
     // outputs that were asked for (ctx.wants), without shading, so its light

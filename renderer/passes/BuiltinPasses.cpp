@@ -1,5 +1,5 @@
 // The built-in passes, one line each, in seed 002 section 6's order within
-// each stage: G-buffer, ambient occlusion (ao: SSAO, GTAO, ...), L-buffer (the sky and the shadow maps feed
+// each stage: G-buffer (and MSAA's edge mask), ambient occlusion (ao: SSAO, GTAO, ...), L-buffer (the sky and the shadow maps feed
 // it), transparency over the L-buffer (oit), the fire's flames added into it (flames), luminance statistics, bloom, tone mapping; then the
 // post chain (depth of field, then the anti-aliasing method aa.method names:
 // FXAA, SSAA's resolve or TAA, last) on the tone-mapped image.
@@ -16,6 +16,7 @@
 #include "renderer/passes/LightingPass.h"
 #include "renderer/passes/ShadowPass.h"
 #include "renderer/passes/LuminancePass.h"
+#include "renderer/passes/MsaaPass.h"
 #include "renderer/passes/OitPass.h"
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/passes/SkyboxPass.h"
@@ -36,6 +37,7 @@ std::vector<PassEntry> builtinPasses() {
     return {
         entry<GeometryPass>(PassStage::GBuffer),
         entry<GBufferDecodePass>(PassStage::GBuffer),
+        entry<MsaaPass>(PassStage::GBuffer),
         entry<AoPass>(PassStage::Screen),
         entry<AoFilterPass>(PassStage::Screen),
         entry<SkyboxPass>(PassStage::Screen),

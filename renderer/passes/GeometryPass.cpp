@@ -3,6 +3,7 @@
 #include "renderer/Error.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/lighting/LightTable.h"
+#include "renderer/passes/AaMethod.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/scene/Scene.h"
 
@@ -74,17 +75,47 @@ std::vector<OutputDecl> GeometryPass::outputs() const {
          "with lighting.directional_in_gbuffer: the directional lights without a shadow map, shaded in the G-buffer "
          "pass (RGBA32F)",
          texture2D(GL_RGBA32F), 3, true},
+        {"gbuffer.ms.albedo", OutputKind::Color, "aa.method=msaa: gbuffer.albedo multisampled (aa.samples samples)",
+         textureMultisample(GL_SRGB8_ALPHA8, 4), 4},
+        {"gbuffer.ms.normal", OutputKind::NormalKL, "aa.method=msaa: gbuffer.normal multisampled",
+         textureMultisample(GL_RG16_SNORM, 4), 2},
+        {"gbuffer.ms.specular", OutputKind::Color, "aa.method=msaa: gbuffer.specular multisampled",
+         textureMultisample(GL_SRGB8_ALPHA8, 4), 4},
+        {"gbuffer.ms.emissive", OutputKind::HdrColor, "aa.method=msaa: gbuffer.emissive multisampled",
+         textureMultisample(GL_R11F_G11F_B10F, 4), 3},
+        {"gbuffer.ms.occlusion", OutputKind::Scalar, "aa.method=msaa: gbuffer.occlusion multisampled",
+         textureMultisample(GL_R8, 4), 1},
+        {"gbuffer.ms.depth", OutputKind::Depth, "aa.method=msaa: gbuffer.depth multisampled, each sample's own depth",
+         textureMultisample(GL_DEPTH32F_STENCIL8, 4), 1},
+        {"gbuffer.ms.directional", OutputKind::HdrColor,
+         "aa.method=msaa with lighting.directional_in_gbuffer: gbuffer.directional multisampled",
+         textureMultisample(GL_RGBA32F, 4), 3, true},
     };
+}
+
+void GeometryPass::connect(const KnobRegistry& knobs) {
+    aaMethod_ = knobs.requireEnum(kAaMethodKnob);
+    aaMsaa_ = knobs.choiceIndex(aaMethod_, "msaa");
+}
+
+bool GeometryPass::allocates(const OutputDecl& output, const KnobRegistry& knobs) const {
+    if (output.name.rfind("gbuffer.ms.", 0) != 0) return true;
+    return msaa(knobs) && (output.name != kMsaaDirectional || knobs.get(directional_));
 }
 
 ResourceDesc GeometryPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
     ResourceDesc d = output.resource;
-    if ((output.name == "gbuffer.albedo" || output.name == "gbuffer.specular") &&
+    std::string name = output.name;
+    if (name.rfind("gbuffer.ms.", 0) == 0) {
+        name = "gbuffer." + name.substr(std::string("gbuffer.ms.").size());  // the same format as the ordinary one
+        d.samples = MsaaPass::samples(knobs);
+    }
+    if ((name == "gbuffer.albedo" || name == "gbuffer.specular") &&
         knobs.get(materialFormat_) == knobs.choiceIndex(materialFormat_, "unorm16"))
         d.format = GL_RGBA16;
-    if (output.name == "gbuffer.normal" && knobs.get(normalEncoding_) == knobs.choiceIndex(normalEncoding_, "oct8"))
+    if (name == "gbuffer.normal" && knobs.get(normalEncoding_) == knobs.choiceIndex(normalEncoding_, "oct8"))
         d.format = GL_RG8_SNORM;
-    if (output.name == "gbuffer.depth" && knobs.get(depthFormat_) == knobs.choiceIndex(depthFormat_, "unorm24"))
+    if (name == "gbuffer.depth" && knobs.get(depthFormat_) == knobs.choiceIndex(depthFormat_, "unorm24"))
         d.format = GL_DEPTH24_STENCIL8;
     return d;
 }
@@ -94,21 +125,46 @@ void GeometryPass::setup(gl::ShaderLibrary& shaders) {
     directionalProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "geometry.frag", .defines = {"DIRECTIONAL_IN_GBUFFER"}});
 }
 
+const gl::Framebuffer& GeometryPass::target(FrameContext& ctx, bool directional, bool multisampled) {
+    if (multisampled)
+        return directional ? msDirectionalTarget_.get(ctx,
+                                                      {"gbuffer.ms.albedo", "gbuffer.ms.normal", "gbuffer.ms.specular",
+                                                       "gbuffer.ms.emissive", "gbuffer.ms.occlusion", kMsaaDirectional},
+                                                      kMsaaDepth, "multisampled G-buffer")
+                           : msTarget_.get(ctx,
+                                           {"gbuffer.ms.albedo", "gbuffer.ms.normal", "gbuffer.ms.specular",
+                                            "gbuffer.ms.emissive", "gbuffer.ms.occlusion"},
+                                           kMsaaDepth, "multisampled G-buffer");
+    return directional ? directionalTarget_.get(ctx,
+                                                {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
+                                                 "gbuffer.occlusion", "gbuffer.directional"},
+                                                "gbuffer.depth", "G-buffer")
+                       : target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.occlusion"},
+                                     "gbuffer.depth", "G-buffer");
+}
+
 void GeometryPass::execute(FrameContext& ctx) {
     if (ctx.wants("gbuffer.directional") && !ctx.knobs.get(directional_))
         throw Error("gbuffer.directional is written only with lighting.directional_in_gbuffer=true");
     const bool directional = ctx.knobs.get(directional_) && ctx.wants("gbuffer.directional") && ctx.lightTable;
+    for (const OutputDecl& o : outputs())
+        if (o.name.rfind("gbuffer.ms.", 0) == 0 && ctx.wants(o.name) && !msaa(ctx.knobs))
+            throw Error(o.name + " is written only with aa.method=msaa");
     // For the whole frame: the forward strategies draw the materials with the same samplers.
     ctx.gpu.setBaseLevelFiltering(ctx.knobs.get(textureFilter_) == 1);
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
-    const gl::Framebuffer& fbo =
-        directional ? directionalTarget_.get(ctx,
-                                             {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive",
-                                              "gbuffer.occlusion", "gbuffer.directional"},
-                                             "gbuffer.depth", "G-buffer")
-                    : target_.get(ctx, {"gbuffer.albedo", "gbuffer.normal", "gbuffer.specular", "gbuffer.emissive", "gbuffer.occlusion"},
-                                  "gbuffer.depth", "G-buffer");
+    drawScene(ctx, target(ctx, directional, false), directional, false);
+    // MSAA: the multisampled G-buffer too; every later pass but the
+    // lighting pass's edge samples reads the pixel centres' one above.
+    if (msaa(ctx.knobs)) {
+        drawScene(ctx, target(ctx, directional, true), directional, true);
+        stats_ += "; again into the multisampled G-buffer, " + std::to_string(ctx.output(kMsaaDepth).desc.samples) +
+                  " samples";
+    }
+}
+
+void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool directional, bool multisampled) {
     fbo.bind();
     fbo.clearColor(0, 0, 0, 0, 0);
     fbo.clearColor(1, 0, 0, 0, 0);
@@ -118,6 +174,7 @@ void GeometryPass::execute(FrameContext& ctx) {
     if (directional) fbo.clearColor(5, 0, 0, 0, 0);
     const DepthConvention depth = ctx.depth();
     fbo.clearDepthStencil(depth.farDepth(), 0);
+    if (multisampled) glEnable(GL_MULTISAMPLE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(depth.nearer());
     // Albedo and specular are sRGB targets: encode the shader's linear values

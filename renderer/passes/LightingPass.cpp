@@ -1,11 +1,13 @@
 #include "renderer/passes/LightingPass.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <iterator>
 
 #include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
 #include "renderer/lighting/AutoStrategy.h"
+#include "renderer/passes/AaMethod.h"
 #include "renderer/lighting/LightTable.h"
 #include "renderer/lighting/ScreenBatches.h"
 #include "renderer/lighting/ShadowService.h"
@@ -95,6 +97,8 @@ void LightingPass::connect(const KnobRegistry& knobs) {
     aoMethod_ = knobs.requireEnum("ao.method");
     aoGtao_ = knobs.choiceIndex(aoMethod_, "gtao");
     gtaoMultibounce_ = knobs.requireBool("gtao.multibounce");
+    aaMethod_ = knobs.requireEnum(kAaMethodKnob);
+    aaMsaa_ = knobs.choiceIndex(aaMethod_, "msaa");
 }
 
 ResourceDesc LightingPass::resource(const OutputDecl& output, const KnobRegistry& knobs) const {
@@ -110,6 +114,12 @@ PassIO LightingPass::inputs(const KnobRegistry& knobs) const {
     if (knobs.get(directionalInGBuffer_)) io.inputs.push_back("gbuffer.directional");
     io.inputs.push_back("lights.table");
     io.inputs.push_back("gbuffer.occlusion");
+    if (knobs.get(aaMethod_) == aaMsaa_) {  // MSAA's samples and edge mask
+        io.optionalInputs.push_back("aa.edges");
+        io.optionalInputs.insert(io.optionalInputs.end(), std::begin(kMsaaGBuffer), std::end(kMsaaGBuffer));
+        io.optionalInputs.push_back(kMsaaDepth);
+        if (knobs.get(directionalInGBuffer_)) io.optionalInputs.push_back(kMsaaDirectional);
+    }
     return io;
 }
 
@@ -123,6 +133,8 @@ void LightingPass::setup(gl::ShaderLibrary& shaders) {
     white_ = gl::Texture::create2D(GL_R8, 1, 1);
     const std::uint8_t one = 255;
     white_.upload(0, 1, 1, GL_RED, GL_UNSIGNED_BYTE, &one);
+    msaaCopy_.setup(shaders);
+    msaaResolve_.setup(shaders);
 }
 
 void LightingPass::writeShadowFactor(FrameContext& ctx, const LightTable& table, const std::function<void()>& bindInputs) {
@@ -178,10 +190,53 @@ LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std:
 }
 
 void LightingPass::execute(FrameContext& ctx) {
-    const KnobRegistry& k = ctx.knobs;
-    if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
-    const LightTable& table = *ctx.lightTable;
+    const LightingStrategy& strategy = shadeGBuffer(ctx);
+    msaaLine_.clear();
+    if (ctx.produced("aa.edges")) shadeEdgeSamples(ctx, strategy);
+    describe(ctx, strategy);
+}
 
+void LightingPass::shadeEdgeSamples(FrameContext& ctx, const LightingStrategy& strategy) {
+    const int n = ctx.output(kMsaaDepth).desc.samples;
+    const long long pixels = static_cast<long long>(ctx.width) * ctx.height;
+    const long long edges = MsaaPass::countEdges(ctx.texture("aa.edges"), ctx.width, ctx.height);
+    const std::string edgeCount = std::to_string(edges) + " edge pixels of " + std::to_string(pixels);
+    if (!strategy.shadesFromGBuffer()) {
+        msaaLine_ = "MSAA: " + edgeCount + " shaded per pixel only (" + strategy.name() +
+                    " draws the scene itself at the pixel centres, not from the G-buffer); shaded samples " +
+                    std::to_string(pixels) + ", 1 a pixel";
+        return;
+    }
+    const bool directional = ctx.produced(kMsaaDirectional) && ctx.produced("gbuffer.directional");
+    // The samples write none of the optional outputs (overlap, shadow
+    // factor, the strategies' lists): those stay the pixel centres', as the counts do.
+    FrameContext edgeFrame = ctx;
+    for (const OutputDecl& o : outputs())
+        if (o.name != "lbuffer" && o.name != "lbuffer.depth") edgeFrame.wanted.erase(o.name);
+    const Counts centres = counts_;
+    msaaResolve_.begin(ctx, n);
+    msaaCopy_.save(ctx, directional);
+    for (int s = 0; s < n; ++s) {
+        msaaCopy_.copy(ctx, s, directional);
+        shadeGBuffer(edgeFrame);
+        msaaResolve_.add(ctx, n);
+    }
+    msaaCopy_.restore(ctx, directional);
+    msaaResolve_.finish(ctx);
+    const gl::Texture& gdepth = ctx.texture("gbuffer.depth");
+    const gl::Texture& ldepth = ctx.texture("lbuffer.depth");
+    glCopyImageSubData(gdepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ldepth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.width, ctx.height, 1);
+    counts_ = centres;
+    const long long shaded = pixels + edges * n;
+    char perPixel[32];
+    std::snprintf(perPixel, sizeof perPixel, "%.3f", pixels > 0 ? double(shaded) / double(pixels) : 0.0);
+    msaaLine_ = "MSAA " + std::to_string(n) + "x: " + edgeCount + " shaded again per sample; shaded samples " +
+                std::to_string(pixels) + " + " + std::to_string(edges) + " x " + std::to_string(n) + " = " +
+                std::to_string(shaded) + ", " + perPixel + " a pixel";
+}
+
+std::vector<int> LightingPass::uploadParams(const FrameContext& ctx, const LightTable& table) {
+    const KnobRegistry& k = ctx.knobs;
     const bool occlusion = ctx.produced("ao.filtered");
     const bool sky = ctx.produced("sky");
     gpu::LightingParams params{};
@@ -202,6 +257,16 @@ void LightingPass::execute(FrameContext& ctx) {
     params.ambient = glm::vec4(ctx.scene.ambient, 0.0f);
     params.background = glm::vec4(ctx.scene.background, 0.0f);
     params_.upload(params, binding::PASS_UBO);
+    return shadedInGBuffer;
+}
+
+LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
+    if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
+    const LightTable& table = *ctx.lightTable;
+
+    const bool occlusion = ctx.produced("ao.filtered");
+    const bool sky = ctx.produced("sky");
+    const std::vector<int> shadedInGBuffer = uploadParams(ctx, table);
 
     // The L-buffer gets its own copy of the G-buffer depth: the stencil test
     // writes stencil there while the shader samples gbuffer.depth.
@@ -304,7 +369,13 @@ void LightingPass::execute(FrameContext& ctx) {
     gl::resetPipelineState(ctx.width, ctx.height);
     fbo.bind();
     fbo.setDrawBuffers({0});
+    for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;
+    lastStrategy_ = strategy.name();
+    return strategy;
+}
 
+void LightingPass::describe(const FrameContext& ctx, const LightingStrategy& strategy) {
+    const bool strategyWritesFirst = strategy.writesFirstRadiance(ctx);
     const int total = counts_.directional + counts_.directionalInGBuffer + counts_.fullscreen + counts_.volumes + counts_.grid + counts_.frustumCulled +
                       counts_.belowThreshold;
     stats_ = std::string(strategy.name()) + ", " + std::to_string(total) + " lights: " + std::to_string(counts_.directional) +
@@ -316,11 +387,10 @@ void LightingPass::execute(FrameContext& ctx) {
              (counts_.batches > 0 ? " in " + std::to_string(counts_.batches) + " batches" : std::string()) + ", " + std::to_string(counts_.fullscreen) +
              " full-screen, " + std::to_string(counts_.frustumCulled) + " outside the frustum, " +
              std::to_string(counts_.belowThreshold) + " below threshold";
-    for (const LightTableEntry& e : table.entries) counts_.shadowed += (ctx.shadows && e.shadowed) ? 1 : 0;
     if (counts_.shadowed > 0) stats_ += "; " + std::to_string(counts_.shadowed) + " with shadow maps";
     if (strategyWritesFirst) stats_ += std::string("; ambient, emission and sky in the ") + strategy.name() + " pass";
     if (!autoWhy_.empty()) stats_ += "; " + autoWhy_;
-    lastStrategy_ = strategy.name();
+    if (!msaaLine_.empty()) stats_ += "; " + msaaLine_;
 }
 
 }  // namespace dw

@@ -23,6 +23,9 @@
 // them; 1 where none reaches and on the sky), one additive full-screen draw
 // per shadow-mapped light (its map rendered again when maps are reused) into
 // a pass-owned RG32F sum, then divided (shaders/lighting/shadow_*.frag).
+// With aa.method=msaa (MsaaPass.h) it shades the ordinary G-buffer as
+// always, then each sample of the edge pixels aa.edges marks through the
+// same strategy, and box-resolves the radiance (shadeEdgeSamples).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -36,6 +39,7 @@
 #include "renderer/gl/Texture.h"
 #include "renderer/graph/TargetFramebuffer.h"
 #include "renderer/lighting/LightingStrategy.h"
+#include "renderer/passes/MsaaPass.h"
 #include "shaders/params/lighting.h"
 
 namespace dw {
@@ -76,6 +80,16 @@ private:
     // lighting.shadow, after the lights (see the header's opening).
     void writeShadowFactor(FrameContext& ctx, const LightTable& table, const std::function<void()>& bindInputs);
     LightingStrategy& pickStrategy(const FrameContext& ctx, const std::vector<const LightTableEntry*>& lights);
+    // Shades the G-buffer as it stands into lbuffer (ambient, screen lights,
+    // the strategy's lights); counts_ and the optional outputs as ctx wants them.
+    LightingStrategy& shadeGBuffer(FrameContext& ctx);
+    // The pass's parameter block for this frame, uploaded; returns the
+    // directional lights the G-buffer pass shaded (light-table rows).
+    std::vector<int> uploadParams(const FrameContext& ctx, const LightTable& table);
+    // aa.method=msaa: the N samples of the edge pixels, each copied into the
+    // G-buffer and shaded, the radiance averaged; the G-buffer put back after.
+    void shadeEdgeSamples(FrameContext& ctx, const LightingStrategy& strategy);
+    void describe(const FrameContext& ctx, const LightingStrategy& strategy);
 
     std::optional<MethodSet<LightingStrategy>> strategies_;  // lighting.strategy's, and its choice auto
     EnumKnob attenuation_;
@@ -105,6 +119,11 @@ private:
     FloatKnob autoCoverage_, autoClusterCoverage_;
     BoolKnob directionalInGBuffer_;  // declared by the geometry pass
     EnumKnob depthFormat_;           // gbuffer.depth_format, declared by the geometry pass
+    EnumKnob aaMethod_;              // aa.method (AaMethod.h)
+    int aaMsaa_ = -1;                // its choice msaa
+    MsaaSampleCopy msaaCopy_;
+    MsaaResolve msaaResolve_;
+    std::string msaaLine_;           // what MSAA shaded this frame, for the statistics line
 };
 
 }  // namespace dw

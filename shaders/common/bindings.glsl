@@ -121,6 +121,15 @@
     BIND(TEXTURE, TAA_CURRENT_TEXTURE, 0)           /* post/taa.frag */                         \
     BIND(TEXTURE, TAA_HISTORY_TEXTURE, 1)                                                        \
     BIND(TEXTURE, TAA_DEPTH_TEXTURE, 2)                                                          \
+    BIND(TEXTURE, MSAA_ALBEDO_TEXTURE, 0)           /* MSAA: the multisampled G-buffer */        \
+    BIND(TEXTURE, MSAA_NORMAL_TEXTURE, 1)                                                        \
+    BIND(TEXTURE, MSAA_SPECULAR_TEXTURE, 2)                                                      \
+    BIND(TEXTURE, MSAA_EMISSIVE_TEXTURE, 3)                                                      \
+    BIND(TEXTURE, MSAA_OCCLUSION_TEXTURE, 4)                                                     \
+    BIND(TEXTURE, MSAA_DEPTH_TEXTURE, 5)                                                         \
+    BIND(TEXTURE, MSAA_DIRECTIONAL_TEXTURE, 6)                                                   \
+    BIND(TEXTURE, MSAA_EDGES_TEXTURE, 7)            /* aa.edges */                               \
+    BIND(TEXTURE, MSAA_LBUFFER_TEXTURE, 0)          /* lighting/msaa_accumulate.frag */          \
     BIND(TEXTURE, GBUFFER_DECODE_NORMAL_TEXTURE, 0)                                              \
     BIND(TEXTURE, GBUFFER_DECODE_DEPTH_TEXTURE, 1)                                               \
     BIND(TEXTURE, BUFFER_VIEW_SOURCE_TEXTURE, 0)                                                 \

@@ -23,10 +23,10 @@ fs::path dir() {
 }  // namespace
 
 TEST(AntialiasingCli, AnUnbuiltMethodIsOneLineNamingThoseThatExist) {
-    const fs::path out = dir() / "msaa.png";
-    const auto r = run("render --scene default --size 32x18 --set aa.method=msaa --out " + out.string());
+    const fs::path out = dir() / "smaa.png";
+    const auto r = run("render --scene default --size 32x18 --set aa.method=smaa --out " + out.string());
     EXPECT_NE(r.code, 0);
-    EXPECT_EQ(r.err, "deferred-workbench: error: knob 'aa.method' takes one of: none, fxaa, ssaa, taa; got 'msaa'\n");
+    EXPECT_EQ(r.err, "deferred-workbench: error: knob 'aa.method' takes one of: none, msaa, fxaa, ssaa, taa; got 'smaa'\n");
     EXPECT_FALSE(fs::exists(out));
     const auto f = run("render --scene default --size 32x18 --set aa.ssaa_factor=3 --out " + out.string());
     EXPECT_NE(f.code, 0);
@@ -56,4 +56,28 @@ TEST(AntialiasingCli, EachMethodsBuffersAndPassLine) {
     ASSERT_EQ(t.code, 0) << t.err;
     EXPECT_NE(t.out.find("Halton(2,3) point"), std::string::npos) << t.out;
     EXPECT_TRUE(fs::exists(dir() / "t.png"));
+    const auto m = run("render --scene spheres --size 32x18 --set aa.method=msaa --timings --buffer aa.edges --out " +
+                       (dir() / "edges.png").string());
+    ASSERT_EQ(m.code, 0) << m.err;
+    EXPECT_NE(m.out.find("(4 samples)"), std::string::npos) << m.out;
+    EXPECT_EQ(loadImageFloat((dir() / "edges.png").string()).width, 32);
+    // The final image: the lighting pass's line counts the samples shaded.
+    const auto l = run("render --scene spheres --size 32x18 --set aa.method=msaa --timings --out " +
+                       (dir() / "msaa.png").string());
+    ASSERT_EQ(l.code, 0) << l.err;
+    EXPECT_NE(l.out.find(" edge pixels of 576 shaded again per sample; shaded samples 576 + "), std::string::npos)
+        << l.out;
+    // docs/antialiasing.md's cap line (a device that offers 16 samples has none).
+    const auto c = run("render --scene spheres --size 32x18 --set aa.method=msaa --set aa.samples=16 --out " +
+                       (dir() / "capped.png").string());
+    ASSERT_EQ(c.code, 0) << c.err;
+    if (c.err.find("capped") != std::string::npos) {
+        EXPECT_EQ(c.err.rfind("warning: msaa: aa.samples 16 is capped to ", 0), 0u) << c.err;
+        EXPECT_NE(c.err.find(" samples for the G-buffer's formats (GL_MAX_SAMPLES, "), std::string::npos) << c.err;
+        EXPECT_EQ(std::count(c.err.begin(), c.err.end(), '\n'), 1) << c.err;
+    }
+    const auto f = run("render --scene spheres --size 32x18 --set aa.method=msaa --set aa.samples=3 --out " +
+                       (dir() / "bad.png").string());
+    EXPECT_NE(f.code, 0);
+    EXPECT_NE(f.err.find("knob 'aa.samples' takes one of: 2, 4, 8, 16; got '3'"), std::string::npos) << f.err;
 }

@@ -3,14 +3,17 @@
 // values; SSAA renders the frame at aa.ssaa_factor times the size (capped);
 // TAA's history converges on a still camera to the mean of its jittered
 // frames and is thrown away (taa.rejected) where a camera move brings new
-// pixels into view. SSAA against the footprint reference:
-// tests/reference/AntialiasingReferenceTest.cpp.
+// pixels into view. MSAA's edge mask marks silhouettes and nothing on a
+// plane facing the camera, its aa.samples is capped by the device (said),
+// and the other methods' images do not change with it. SSAA and MSAA against
+// the footprint reference: tests/reference/AntialiasingReferenceTest.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "renderer/Error.h"
+#include "renderer/passes/MsaaPass.h"
 #include "renderer/passes/SsaaPass.h"
 #include "renderer/passes/TaaPass.h"
 #include "renderer/scene/BuiltinScenes.h"
@@ -49,7 +52,7 @@ double meanAbs(const FloatImage& a, const FloatImage& b, const std::vector<size_
 TEST(Antialiasing, TheMethodsAreOneKnobAndAnUnbuiltOneIsRefusedNamingThoseThatExist) {
     auto s = test::makeSession(32, 18);
     const auto methods = choices(s->knobs(), "aa.method");
-    EXPECT_EQ(methods, (std::vector<std::string>{"none", "fxaa", "ssaa", "taa"}));
+    EXPECT_EQ(methods, (std::vector<std::string>{"none", "msaa", "fxaa", "ssaa", "taa"}));
     EXPECT_EQ(s->knobs().format(*s->knobs().find("aa.method")), "fxaa");  // today's default
     // SSAA's scale and TAA's jitter change every pass's work: the change-cost
     // verdict counts every pass as read by the knobs that choose them.
@@ -58,11 +61,11 @@ TEST(Antialiasing, TheMethodsAreOneKnobAndAnUnbuiltOneIsRefusedNamingThoseThatEx
     EXPECT_FALSE(s->pipeline().knobReaders(*s->knobs().find("aa.taa_blend")).count("*"));
     EXPECT_FALSE(s->pipeline().knobReaders(*s->knobs().find("fxaa.quality")).count("*"));
     try {
-        s->knobs().applyAssignment("aa.method=msaa");
-        FAIL() << "aa.method=msaa accepted";
+        s->knobs().applyAssignment("aa.method=smaa");
+        FAIL() << "aa.method=smaa accepted";
     } catch (const Error& e) {
         const std::string m = e.what();
-        EXPECT_NE(m.find("takes one of: none, fxaa, ssaa, taa; got 'msaa'"), std::string::npos) << m;
+        EXPECT_NE(m.find("takes one of: none, msaa, fxaa, ssaa, taa; got 'smaa'"), std::string::npos) << m;
         EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     }
     try {
@@ -70,6 +73,12 @@ TEST(Antialiasing, TheMethodsAreOneKnobAndAnUnbuiltOneIsRefusedNamingThoseThatEx
         FAIL() << "aa.ssaa_factor=3 accepted";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("takes one of: 2, 4; got '3'"), std::string::npos) << e.what();
+    }
+    try {
+        s->knobs().applyAssignment("aa.samples=3");
+        FAIL() << "aa.samples=3 accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("takes one of: 2, 4, 8, 16; got '3'"), std::string::npos) << e.what();
     }
 }
 
@@ -84,6 +93,7 @@ TEST_P(AntialiasingMethod, RendersEveryBuiltinSceneThroughEveryStrategyWithFinit
     FrameRequest request{{"final"}};
     if (method == "ssaa") request.outputs.push_back("ssaa.lbuffer");
     if (method == "taa") request.outputs.push_back("taa.rejected");
+    if (method == "msaa") request.outputs.push_back("aa.edges");
     for (const BuiltinSceneInfo& info : builtinScenes()) {
         s->loadScene(info.name);
         for (const std::string& strategy : choices(s->knobs(), "lighting.strategy")) {
@@ -94,7 +104,10 @@ TEST_P(AntialiasingMethod, RendersEveryBuiltinSceneThroughEveryStrategyWithFinit
             const FrameReport r = s->render(request);
             if (method != "none") {
                 ASSERT_TRUE(r.find(method)->ran) << where << ": " << r.find(method)->reason;
-                EXPECT_EQ(s->pipeline().resolveFinal(), method + ".result") << where;
+                // MSAA resolves the L-buffer: its display image is the post chain's as without AA.
+                if (method != "msaa") {
+                    EXPECT_EQ(s->pipeline().resolveFinal(), method + ".result") << where;
+                }
             }
             for (const std::string& o : request.outputs) {
                 const FloatImage img = s->readRaw(o);
@@ -105,7 +118,7 @@ TEST_P(AntialiasingMethod, RendersEveryBuiltinSceneThroughEveryStrategyWithFinit
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, AntialiasingMethod, ::testing::Values("none", "fxaa", "ssaa", "taa"));
+INSTANTIATE_TEST_SUITE_P(Methods, AntialiasingMethod, ::testing::Values("none", "fxaa", "ssaa", "msaa", "taa"));
 
 TEST(Antialiasing, SsaaRendersTheFrameAtTheFactorAndCapsTheSupersampledSize) {
     auto s = test::makeSession(40, 24);
@@ -206,4 +219,85 @@ TEST(Antialiasing, TaaRejectsTheHistoryOfPixelsACameraMoveBringsIntoView) {
     EXPECT_GT(movedAll, stillAll);
     EXPECT_GT(movedRight, 0.5);
     EXPECT_TRUE(allFinite(s->readRaw("final")));
+}
+
+namespace {
+
+double sum(const FloatImage& img) {
+    double total = 0.0;
+    for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p) total += img.pixels[p * img.channels];
+    return total;
+}
+
+}  // namespace
+
+// aa.edges marks silhouettes (spheres against the floor and the sky) and
+// nothing on a plane facing the camera, whose samples agree everywhere.
+TEST(Antialiasing, MsaaEdgesMarkSilhouettesAndNothingOnAPlaneFacingTheCamera) {
+    auto s = test::makeSession(160, 90);
+    s->loadScene("spheres");
+    s->knobs().setFromString("aa.method", "msaa");
+    s->render({{"final", "aa.edges"}});
+    const FloatImage spheres = s->readRaw("aa.edges");
+    const double marked = sum(spheres);
+    std::printf("aa.edges on spheres at 160x90: %.0f pixels\n", marked);
+    EXPECT_GT(marked, 200.0);
+    EXPECT_LT(marked, 0.4 * 160 * 90);  // edges, not the whole image
+
+    Scene plane = test::planeScene(400.0f);
+    plane.camera.position = {0.0f, 10.0f, 0.0f};
+    plane.camera.target = {0.0f, 0.0f, 0.0f};
+    plane.camera.up = {0.0f, 0.0f, -1.0f};
+    s->setScene(plane);
+    s->knobs().setFromString("aa.method", "msaa");
+    s->render({{"final", "aa.edges"}});
+    EXPECT_EQ(sum(s->readRaw("aa.edges")), 0.0);
+    // It was a surface everywhere (no background sample to disagree with).
+    const FloatImage albedo = s->readRaw("gbuffer.albedo");
+    for (size_t p = 0; p < static_cast<size_t>(albedo.width) * albedo.height; ++p)
+        ASSERT_GT(albedo.pixels[p * 4 + 3], 0.0f) << p;
+}
+
+// aa.samples above what the device offers is capped to it, and the frame says so in one line.
+TEST(Antialiasing, MsaaSamplesAboveTheDeviceCapAreCappedAndSaid) {
+    auto s = test::makeSession(32, 18);
+    s->loadScene("spheres");
+    s->knobs().setFromString("aa.method", "msaa");
+    const int cap = MsaaPass::deviceCap();
+    std::printf("MSAA: the device offers %d samples for the G-buffer's formats\n", cap);
+    if (cap >= 16) GTEST_SKIP() << "the device offers 16 samples: nothing to cap";
+    s->knobs().setFromString("aa.samples", "16");
+    const FrameReport r = s->render({{"final", "aa.edges"}});
+    const std::string line = "aa.samples 16 is capped to " + std::to_string(cap) + ": the device offers " +
+                             std::to_string(cap) + " samples for the G-buffer's formats";
+    ASSERT_EQ(r.warnings().size(), 1u);
+    EXPECT_NE(r.warnings().front().find(line), std::string::npos) << r.warnings().front();
+    EXPECT_EQ(r.warnings().front().find('\n'), std::string::npos);
+    EXPECT_NE(r.find("msaa")->stats.find(std::to_string(cap) + " samples (aa.samples = 16 capped)"), std::string::npos)
+        << r.find("msaa")->stats;
+    EXPECT_EQ(s->pipeline().outputs().find("gbuffer.ms.depth")->desc.samples, cap);
+    // Within the cap: no line.
+    s->knobs().setFromString("aa.samples", "2");
+    EXPECT_TRUE(s->render({{"final"}}).warnings().empty());
+    EXPECT_EQ(s->pipeline().outputs().find("gbuffer.ms.depth")->desc.samples, 2);
+}
+
+// MSAA's code paths (the geometry pass's multisampled target, the lighting
+// pass's sample loop) leave the other methods alone: their images are the
+// same bits before and after an MSAA frame in the same session.
+TEST(Antialiasing, TheOtherMethodsImagesAreBitIdenticalAroundAnMsaaFrame) {
+    auto s = test::makeSession(40, 24);
+    s->loadScene("default");
+    for (const char* k : {"bloom.enabled=false", "tonemap.auto_exposure=false"}) s->knobs().applyAssignment(k);
+    for (const char* method : {"none", "fxaa", "ssaa"}) {
+        s->knobs().setFromString("aa.method", method);
+        s->render({{"final", "lbuffer"}});
+        const FloatImage before = s->readRaw("final"), lbefore = s->readRaw("lbuffer");
+        s->knobs().setFromString("aa.method", "msaa");
+        s->render({{"final", "lbuffer"}});
+        s->knobs().setFromString("aa.method", method);
+        s->render({{"final", "lbuffer"}});
+        EXPECT_EQ(before.pixels, s->readRaw("final").pixels) << method;
+        EXPECT_EQ(lbefore.pixels, s->readRaw("lbuffer").pixels) << method;
+    }
 }

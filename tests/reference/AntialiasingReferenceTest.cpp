@@ -4,7 +4,10 @@
 // geometry edges (depth discontinuities) its L-buffer (ssaa.lbuffer) is
 // within two of the reference's standard errors (reference.spp_error) on the
 // mean over those pixels, and nearer the reference than the pixel centres
-// (aa.method=none) are.
+// (aa.method=none) are. MSAA 4x (deferred: per-sample shading on its
+// aa.edges pixels only) is nearer the reference than the pixel centres on
+// those edge pixels, and equals the pixel centres elsewhere (per-pixel
+// shading of the same G-buffer: the same values).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,7 +59,71 @@ std::vector<std::pair<int, int>> edgePixels(const FloatImage& depth) {
     return edges;
 }
 
+std::unique_ptr<RenderSession> accurateSession() {
+    RunConfig run;
+    run.scene = "default";
+    run.sets = kAccurate;
+    run.width = kW;
+    run.height = kH;
+    auto session = test::makeSession(kW, kH);
+    session->loadScene("default", run);
+    return session;
+}
+
+reference::ReferenceImages footprintReference(RenderSession& session) {
+    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session.knobs(), session.scene());
+    model.pixelSamples = 16;
+    reference::ReferenceRequest r;
+    r.camera = session.camera();
+    r.width = kW;
+    r.height = kH;
+    return reference::renderReference(session.scene(), model, r);
+}
+
 }  // namespace
+
+TEST(AntialiasingAgainstReference, Msaa4IsNearerTheFootprintThanThePixelCentresOnEdgesAndEqualsThemElsewhere) {
+    auto session = accurateSession();
+    session->knobs().setFromString("aa.method", "none");
+    session->render({{"lbuffer", "gbuffer.depth"}});
+    const FloatImage centres = session->readRaw("lbuffer");
+    const auto edges = edgePixels(session->readRaw("gbuffer.depth"));
+    session->knobs().setFromString("aa.method", "msaa");
+    session->knobs().setFromString("aa.samples", "4");
+    const FrameReport report = session->render({{"lbuffer", "aa.edges"}});
+    ASSERT_TRUE(report.find("msaa")->ran) << report.find("msaa")->reason;
+    ASSERT_EQ(session->pipeline().outputs().find("gbuffer.ms.depth")->desc.samples, 4) << "the device caps MSAA below 4";
+    const FloatImage msaa = session->readRaw("lbuffer"), mask = session->readRaw("aa.edges");
+    const reference::ReferenceImages ref = footprintReference(*session);
+
+    ASSERT_GT(edges.size(), 40u);
+    double msaaError = 0.0, centreError = 0.0;
+    for (auto [x, y] : edges) {
+        const double truth = lum(ref.lbuffer, x, y);
+        msaaError += std::fabs(lum(msaa, x, y) - truth);
+        centreError += std::fabs(lum(centres, x, y) - truth);
+    }
+    // Elsewhere (aa.edges 0): the per-pixel shading of the pixel centres' G-buffer, none's.
+    double worst = 0.0, sumRelative = 0.0;
+    int flat = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            if (mask.pixels[(static_cast<size_t>(y) * kW + x) * mask.channels] >= 0.5f) continue;
+            const double a = lum(msaa, x, y), b = lum(centres, x, y);
+            const double relative = std::fabs(a - b) / (std::fabs(b) + 1e-3);
+            worst = std::max(worst, relative);
+            sumRelative += relative;
+            ++flat;
+        }
+    const double n = static_cast<double>(edges.size());
+    std::printf("default %dx%d, %zu edge pixels: mean |L - L_ref| msaa 4 %.5f, none %.5f; %d pixels off aa.edges: mean "
+                "relative difference from none %.5f, largest %.5f\n",
+                kW, kH, edges.size(), msaaError / n, centreError / n, flat, sumRelative / flat, worst);
+    EXPECT_LT(msaaError, centreError);
+    ASSERT_GT(flat, kW * kH / 4);
+    EXPECT_LT(sumRelative / flat, 1e-6);
+    EXPECT_LT(worst, 1e-5);
+}
 
 TEST(AntialiasingAgainstReference, Ssaa4x4IsWithinTwoStandardErrorsOfTheFootprintOnGeometryEdges) {
     RunConfig run;
