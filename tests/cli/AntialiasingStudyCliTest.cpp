@@ -1,10 +1,11 @@
 // The anti-aliasing study's commands (docs/antialiasing.md, "The study"), at
-// a tiny size: the methods as two studies in one tradeoff run against the
+// a tiny size: the methods as three studies in one tradeoff run against the
 // footprint reference (--ref-spp 16), and TAA measured in a run of its own.
-// What the page concludes from them is asserted here too: SSAA 4x4 is nearer
-// the pixel's area than the pixel centres, and the study's TAA row is a frame
-// without history (the error capture follows another point's frame), which a
-// TAA-only run, whose capture follows its own frames, beats.
+// What the page concludes from them is asserted here too: SSAA and MSAA 4x
+// are nearer the pixel's area than the pixel centres, and the study's TAA
+// row is a frame without history (the error capture follows another
+// point's frame), which a TAA-only run, whose capture follows its own
+// frames, beats.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,6 +45,7 @@ std::map<std::string, double> errorsByMethod(const TradeoffTable& t) {
     for (const auto& row : t.rows) {
         std::string m = t.axisValue(row, "aa.method");
         if (m == "ssaa") m += t.axisValue(row, "aa.ssaa_factor");
+        if (m == "msaa") m += t.axisValue(row, "aa.samples");
         e[m] = row.error;
     }
     return e;
@@ -52,22 +54,25 @@ std::map<std::string, double> errorsByMethod(const TradeoffTable& t) {
 
 TEST(AntialiasingStudyCli, TheMethodsStudyMeasuresEveryMethodAgainstTheFootprint) {
     const auto r = run(kStudy + "--frames 2 --warmup 1 --study x1:aa.method=none,fxaa,taa "
+                                "--study msaa:aa.method=msaa:aa.samples=2,4 "
                                 "--study ssaa:aa.method=ssaa:aa.ssaa_factor=2,4" + files("methods"));
     ASSERT_EQ(r.code, 0) << r.err << r.out;
-    EXPECT_NE(r.out.find("| point | study | aa.method | aa.ssaa_factor | flip (final) |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| point | study | aa.method | aa.samples | aa.ssaa_factor | flip (final) |"), std::string::npos)
+        << r.out;
     const TradeoffTable t = TradeoffTable::readCsv((dir() / "methods.csv").string());
-    ASSERT_EQ(t.rows.size(), 5u);
+    ASSERT_EQ(t.rows.size(), 7u);
     std::map<std::string, int> perStudy;
     for (const auto& row : t.rows) {
         ++perStudy[t.axisValue(row, "study")];
         EXPECT_TRUE(std::isfinite(row.error)) << row.point;
         EXPECT_TRUE(std::isfinite(row.frameGpuMs)) << row.point;
     }
-    EXPECT_EQ(perStudy, (std::map<std::string, int>{{"ssaa", 2}, {"x1", 3}}));
+    EXPECT_EQ(perStudy, (std::map<std::string, int>{{"msaa", 2}, {"ssaa", 2}, {"x1", 3}}));
     const auto e = errorsByMethod(t);
-    // Against the pixel's area SSAA 4x4 beats the pixel centres (and 2x2 does too).
+    // Against the pixel's area SSAA 4x4 and MSAA 4x beat the pixel centres (and SSAA 2x2 does too).
     EXPECT_LT(e.at("ssaa4"), e.at("none"));
     EXPECT_LT(e.at("ssaa2"), e.at("none"));
+    EXPECT_LT(e.at("msaa4"), e.at("none"));
 
     // TAA alone: its counted frames follow one another and the capture follows
     // them, so its history is used; in the study it is a jittered frame alone.
