@@ -681,6 +681,7 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"buffer", o.buffer},
             {"ao_rays", tradeoff.aoRays},
             {"orbit", o.orbit},
+            {"orbit_degrees", o.orbitDegrees},
             {"walkthrough", o.walkthrough},
             {"block", o.block},
             {"resamples", o.resamples},
@@ -914,6 +915,14 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         }
         if (g.has("ao_rays")) t.aoRays = g.at("ao_rays").whole(limits::kAoRays, "--ao-rays");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+        // Records before --orbit-degrees: a whole turn.
+        if (g.has("orbit_degrees")) {
+            const Json& v = g.at("orbit_degrees").json();
+            o.orbitDegrees = v.is_number() ? v.get<double>() : NAN;
+            if (!limits::kOrbitDegrees.holds(o.orbitDegrees))
+                g.at("orbit_degrees").refuse("expects --orbit-degrees' value (above 0, at most 360), got " +
+                                             g.at("orbit_degrees").shown());
+        }
         o.walkthrough = g.boolean("walkthrough", false);
         if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
         if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");

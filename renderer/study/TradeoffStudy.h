@@ -44,6 +44,7 @@ struct TradeoffStudyOptions {
     bool counters = true;                // count each pass's cost counters (--no-counters: off)
     int aoRays = 64;                     // the reference's AO rays per pixel, 1 .. 2^20
     int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
+    double orbitDegrees = 360;           // the arc the orbit's cameras span (0, 360]
     bool walkthrough = false;            // the scene's camera.path keyframes
     int frames = 5, warmup = 1, block = 1, resamples = 2000;
     std::string shard;                   // "" (the whole sweep) or i/n
