@@ -99,6 +99,8 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"render", "--size", F::Size, kSize, "pixels"},
     {"render", "--frames", F::Whole, kFrames, "counted frames"},
     {"render", "--scene-time", kSceneTime, "seconds of the scene's animation"},
+    {"render", "--orbit", F::Whole, kOrbit, "cameras"},
+    {"render", "--orbit-degrees", kOrbitDegrees, "degrees the orbit's poses span"},
     {"render", "--warmup", F::Whole, kWarmup, "frames"},
     {"render", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"render", "--seed", F::Whole, kSeed, "seed"},

@@ -330,3 +330,42 @@ TEST(CompareCli, SequencesThatDoNotMatchAreRefusedNamingTheFile) {
     EXPECT_EQ(option.code, 5);
     EXPECT_NE(option.err.find("--sequence compares two sequences of image files"), std::string::npos) << option.err;
 }
+
+// render --out-sequence: a camera path's frames in order, as compare
+// --sequence reads them. An orbit of 16 degrees over 5 cameras of the pixel
+// centres, of TAA (its history carried, after 16 frames at the first camera)
+// and of the reference at 4 samples a pixel; the frames move; compare
+// --sequence measures each method's temporal error against the reference's.
+// A path without --out-sequence, or the reverse, is one line, exit 2.
+TEST(CompareCli, RenderWritesACameraPathsFramesThatCompareSequenceReads) {
+    const fs::path d = test::tempDir() / "compare" / "render-sequence";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    const std::string path = "render --scene default --size 48x27 --set bloom.enabled=false --orbit 5 --orbit-degrees 16 ";
+    const Result none = run(path + "--set aa.method=none --out-sequence " + (d / "none%02d.png").string());
+    ASSERT_EQ(none.code, 0) << none.err;
+    EXPECT_NE(none.out.find("frames 0..4"), std::string::npos) << none.out;
+    const Result taa = run(path + "--set aa.method=taa --warmup 16 --out-sequence " + (d / "taa%02d.png").string());
+    ASSERT_EQ(taa.code, 0) << taa.err;
+    const Result ref =
+        run(path + "--buffer reference.final --spp 4 --out-sequence " + (d / "ref%02d.png").string());
+    ASSERT_EQ(ref.code, 0) << ref.err;
+    for (const char* name : {"none", "taa", "ref"}) {
+        for (int t = 0; t < 5; ++t) EXPECT_TRUE(fs::exists(d / (name + std::string(t < 10 ? "0" : "") + std::to_string(t) + ".png")));
+        EXPECT_FALSE(fs::exists(d / (name + std::string("05.png"))));
+    }
+    EXPECT_NE(loadImageFloat((d / "none00.png").string()).pixels, loadImageFloat((d / "none04.png").string()).pixels);
+    for (const char* name : {"none", "taa"}) {
+        const Result c = run("compare --sequence " + (d / "ref%02d.png").string() + " " + (d / name).string() + "%02d.png");
+        ASSERT_EQ(c.code, 0) << c.err;
+        EXPECT_NE(c.out.find("frames 0..4 (5), 48x27x4, LDR"), std::string::npos) << c.out;
+        EXPECT_NE(c.out.find("  temporal error "), std::string::npos) << c.out;
+    }
+    const Result noSequence = run(path + "--out " + (d / "x.png").string());
+    EXPECT_EQ(noSequence.code, 2);
+    EXPECT_NE(noSequence.err.find("a camera path (--orbit, --walkthrough) renders a sequence: give --out-sequence"),
+              std::string::npos) << noSequence.err;
+    const Result noPath = run("render --scene default --size 48x27 --out-sequence " + (d / "y%02d.png").string());
+    EXPECT_EQ(noPath.code, 2);
+    EXPECT_NE(noPath.err.find("--out-sequence writes a camera path's frames"), std::string::npos) << noPath.err;
+}
