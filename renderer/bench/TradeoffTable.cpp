@@ -23,7 +23,7 @@ namespace {
 
 const char* const kMiddle[] = {"metric",  "buffer",       "error",           "error_lo",       "error_hi",
                                "frames",  "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"};
-const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim"};
+const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim", "temporal"};
 // After pareto (a CSV written before them ends at pareto).
 const char* const kTail[] = {"time", "time_ms", "time_ms_lo", "time_ms_hi", "front", "dominated_by", "tied_with", "pick"};
 const char* const kFronts[] = {"", "pareto", "indistinguishable", "dominated"};
@@ -433,7 +433,7 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.camera = named(l.cameraCol);
     r.metric = named(l.middle);
     if (std::find(std::begin(kMetrics), std::end(kMetrics), r.metric) == std::end(kMetrics))
-        throw at(l.middle, "metric: expected flip, rms, psnr or ssim, got '" + r.metric + "'");
+        throw at(l.middle, "metric: expected flip, rms, psnr, ssim or temporal, got '" + r.metric + "'");
     r.buffer = named(l.middle + 1);
     r.error = real(l.middle + 2, false);
     r.errorLo = real(l.middle + 3, false);

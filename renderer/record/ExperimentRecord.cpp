@@ -692,6 +692,7 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"ref_spp", tradeoff.refSpp},
             {"ref_filter", tradeoff.refFilter},
             {"orbit", o.orbit},
+            {"orbit_degrees", o.orbitDegrees},
             {"walkthrough", o.walkthrough},
             {"block", o.block},
             {"resamples", o.resamples},
@@ -928,6 +929,14 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         if (g.has("ref_spp")) t.refSpp = g.at("ref_spp").whole(limits::kPixelSamples, "--ref-spp");
         t.refFilter = pixelFilterField(g, "ref_filter");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+        // Records before --orbit-degrees: a whole turn.
+        if (g.has("orbit_degrees")) {
+            const Json& v = g.at("orbit_degrees").json();
+            o.orbitDegrees = v.is_number() ? v.get<double>() : NAN;
+            if (!limits::kOrbitDegrees.holds(o.orbitDegrees))
+                g.at("orbit_degrees").refuse("expects --orbit-degrees' value (above 0, at most 360), got " +
+                                             g.at("orbit_degrees").shown());
+        }
         o.walkthrough = g.boolean("walkthrough", false);
         if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
         if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");

@@ -275,7 +275,7 @@ TEST(TradeoffTable, BadInputNamesFileLineAndColumn) {
     EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,yes\n"),
               "t.csv: line 2, column 14: pareto: expected 0 or 1, got 'yes'");
     EXPECT_EQ(messageOf(kHeader + "0,8,0,mse,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
-              "t.csv: line 2, column 4: metric: expected flip, rms, psnr or ssim, got 'mse'");
+              "t.csv: line 2, column 4: metric: expected flip, rms, psnr, ssim or temporal, got 'mse'");
     EXPECT_EQ(messageOf(kHeader + "-1,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
               "t.csv: line 2, column 1: point: expected a whole number, at least 0, got '-1'");
     EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n0,16,1,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
