@@ -128,7 +128,7 @@ class Recipes(unittest.TestCase):
         """Per configuration: size, lights, swept values, lights per pixel, how many rows (samples x series), and
         each series' cost counters (per pass, exact: the same in a shard as unsharded)."""
         counters = ("fragments", "samples", "primitives", "vertices", "compute", "bytes")
-        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms", *counters}
+        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms", "gpu_mem_peak_mib", *counters}
         table = {}
         for r in rows:
             key = r["config"]
