@@ -763,6 +763,7 @@ TEST(BenchCli, PeakGpuMemoryIsLargerForAConfigurationThatAllocatesMore) {
                          "--quiet --resamples 200 --sweep oit.method=weighted,linked_list --sweep shadows.map_size=512,2048 "
                          "--csv " + csv.string() + " --json " + json.string());
     ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("| GPU MiB peak |"), std::string::npos) << r.out;
     const auto rows = readCsv(csv);
     ASSERT_GT(rows.size(), 1u);
     const auto at = [&](const char* name) {
@@ -796,4 +797,9 @@ TEST(BenchCli, PeakGpuMemoryIsLargerForAConfigurationThatAllocatesMore) {
         EXPECT_EQ(c["gpu_mem_peak_mib"].get<double>(),
                   peakOf(c["knobs"]["oit.method"].get<std::string>(), c["knobs"]["shadows.map_size"].get<std::string>()));
     }
+    // replay runs the grid again: the same peaks, to the byte.
+    const Result again = run("replay " + json.string());
+    EXPECT_NE(again.out.find("gpu memory peak "), std::string::npos) << again.out << again.err;
+    EXPECT_EQ(again.out.find("(differs)"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("with another peak GPU memory"), std::string::npos) << again.out;
 }
