@@ -22,6 +22,7 @@
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/FiniteCheck.h"
+#include "renderer/inspect/MemoryTable.h"
 #include "renderer/reference/ViewReference.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -35,7 +36,7 @@ void printUsage() {
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
                      "                                 [--ao-rays N] [--seed N] [--spp N] [--threads N] [--no-cache]\n"
-                     "                                 [--cache-dir DIR]\n"
+                     "                                 [--cache-dir DIR] [--memory]\n"
                      "                                 --out FILE | [--orbit N [--orbit-degrees D] | --walkthrough]\n"
                      "                                 --out-sequence PATTERN\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
@@ -69,6 +70,9 @@ void printUsage() {
                      "               every knob, size, frames, build, GL, CPU, each counted frame's timings and\n"
                      "               the image's sha256; `replay FILE` measures it again (a CPU reference buffer:\n"
                      "               with the record's --ao-rays and --seed, traced again through the cache)\n"
+                     "  --memory     print the GPU memory table after the last frame (the inspector's): each\n"
+                     "               frame-graph resource and each owner of what passes, services and the scene\n"
+                     "               allocated (shadow maps, light lists, taa history ...), the total and the peak\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n"
               << CommandLine::rangesHelp("render");
@@ -79,7 +83,7 @@ struct RenderOptions {
     RunConfig run;
     std::string buffer, out;
     std::optional<std::string> dumpKnobs, timingsOut, renderdocCapture, record;
-    bool timings = false, timed = false, verbose = false, checkFinite = false;
+    bool timings = false, timed = false, verbose = false, checkFinite = false, memory = false;
     // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
     reference::ViewReferenceOptions reference;
     bool referenceOptionGiven = false;
@@ -134,6 +138,7 @@ RenderOptions readOptions(CommandLine& cl) {
     o.verbose = cl.flag("--verbose");
     o.renderdocCapture = cl.value("--renderdoc-capture");
     o.checkFinite = cl.flag("--check-finite");
+    o.memory = cl.flag("--memory");
     o.record = cl.value("--record");
     readReferenceOptions(cl, o);
     o.sequence = RenderSequence::read(cl);
@@ -273,6 +278,7 @@ int writeResults(RenderSession& session, const RenderOptions& o, const FrameRepo
         std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", o.record->c_str(),
                     o.record->c_str());
     }
+    if (o.memory) std::fputs(MemoryTable::build(session.pipeline().resources()).text().c_str(), stdout);
     if (o.checkFinite && !allFinite(session)) return 3;
     if (o.timed) {
         const TimingReport t = TimingReport::build(session.pipeline().timer(), report, firstCounted, o.run.warmup);

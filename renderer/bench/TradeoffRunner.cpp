@@ -544,6 +544,7 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             addConfig(data.back(), config, c);
             fillTimes(row, t.passes, ms[config], o_.resamples, pointSeed(p, c) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, c) + 1);
+            row.gpuMemPeakMib = gpuMemPeakMib(timings.samples, config);
             std::string differs;
             fillCounts(row, t.passes, counts[config], differs);
             if (!differs.empty()) {
@@ -567,6 +568,10 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             fillTimes(row, t.passes, pooled, o_.resamples, pointSeed(p, cameraCount) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, cameraCount) + 1);
             meanCounts(row, t.rows, firstRow, t.passes.size());
+            for (size_t k = firstRow; k < t.rows.size(); ++k)
+                if (!std::isnan(t.rows[k].gpuMemPeakMib))
+                    row.gpuMemPeakMib = std::isnan(row.gpuMemPeakMib) ? t.rows[k].gpuMemPeakMib
+                                                                      : std::max(row.gpuMemPeakMib, t.rows[k].gpuMemPeakMib);
             t.rows.push_back(std::move(row));
         }
     }

@@ -1,4 +1,5 @@
 #include "renderer/scene/GpuScene.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cstring>
@@ -24,6 +25,7 @@ struct MaterialGpu {
 static_assert(sizeof(MaterialGpu) == 288, "std430 layout");
 
 gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a, bool srgb) {
+    gl::MemoryOwner owner("scene textures");
     gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, 1, 1);
     const std::uint8_t px[4] = {r, g, b, a};
     t.upload(0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
@@ -42,6 +44,32 @@ bool anisotropyUsable() {
         return !(renderer && std::strstr(renderer, "llvmpipe"));
     }();
     return usable;
+}
+
+// The sky's environment as RGBA16F (empty without one); NaN and Inf stay as
+// they are (the tone mapper's guard is what handles them, and can be switched off).
+gl::Texture environmentTexture(const Scene& scene) {
+    auto rgba = [](const FloatImage& img) {
+        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
+        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
+            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
+        return out;
+    };
+    gl::MemoryOwner owner("scene environment");
+    gl::Texture t;
+    if (!scene.sky.cubeFaces.empty()) {
+        const int size = scene.sky.cubeFaces[0].width;
+        t = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
+        for (int f = 0; f < 6; ++f) t.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(scene.sky.cubeFaces[f]).data());
+        t.generateMipmaps();
+    } else if (scene.sky.equirect.width > 0) {
+        const FloatImage& e = scene.sky.equirect;
+        t = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
+        t.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
+        t.generateMipmaps();
+        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    }
+    return t;
 }
 
 }  // namespace
@@ -82,6 +110,7 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     if (it != textureIndex_.end()) return it->second;
     const Image& img = scene.images[image];
     const int levels = gl::Texture::fullMipCount(img.width, img.height);
+    gl::MemoryOwner owner("scene textures");
     gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, levels);
     t.upload(0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     t.generateMipmaps();
@@ -114,8 +143,11 @@ void GpuScene::upload(const Scene& scene) {
         idx.insert(idx.end(), m.indices.begin(), m.indices.end());
     }
     for (const Range& r : ranges) baseVertex_.push_back(r.baseVertex);
-    vertices_ = gl::Buffer::fromVector(verts, scene.animation.moves(), "scene vertices");
-    indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
+    {
+        gl::MemoryOwner owner("scene geometry");
+        vertices_ = gl::Buffer::fromVector(verts, scene.animation.moves(), "scene vertices");
+        indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
+    }
     vao_ = gl::VertexArray::create();
     vao_.setVertexBuffer(0, vertices_, 0, sizeof(Vertex));
     vao_.setIndexBuffer(indices_);
@@ -154,28 +186,10 @@ void GpuScene::upload(const Scene& scene) {
         mats.push_back(g);
     }
     if (mats.empty()) mats.push_back(MaterialGpu{});
+    gl::MemoryOwner materialsOwner("scene materials");
     materials_ = gl::Buffer::fromVector(mats, false, "materials");
 
-    // The sky's environment as RGBA16F; NaN and Inf stay as they are (the
-    // tone mapper's guard is what handles them, and can be switched off).
-    auto rgba = [](const FloatImage& img) {
-        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
-        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
-            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
-        return out;
-    };
-    if (!scene.sky.cubeFaces.empty()) {
-        const int size = scene.sky.cubeFaces[0].width;
-        environment_ = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
-        for (int f = 0; f < 6; ++f) environment_.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(scene.sky.cubeFaces[f]).data());
-        environment_.generateMipmaps();
-    } else if (scene.sky.equirect.width > 0) {
-        const FloatImage& e = scene.sky.equirect;
-        environment_ = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
-        environment_.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
-        environment_.generateMipmaps();
-        glTextureParameteri(environment_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    }
+    environment_ = environmentTexture(scene);
 
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& inst = scene.instances[i];

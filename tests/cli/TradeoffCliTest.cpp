@@ -87,9 +87,13 @@ TEST(TradeoffCli, SmallGridEndToEndAndAoErrorFallsWithSamples) {
         EXPECT_GE(row.errorHi, row.error);
         EXPECT_TRUE(std::isfinite(row.frameGpuMs) && row.frameGpuMs > 0.0);
         EXPECT_FALSE(std::isnan(t.passGpuMs(row, "ao")));  // the AO pass (ao.method)
+        EXPECT_TRUE(std::isfinite(row.gpuMemPeakMib) && row.gpuMemPeakMib > 0.0) << row.point;
         onFront += row.pareto ? 1 : 0;
     }
     EXPECT_GE(onFront, 1);
+    // Peak GPU memory (issue 36): a full-size raw AO buffer holds more than a half-size one.
+    for (const char* samples : {"4", "64"})
+        EXPECT_GT(rowOf(t, samples, "full")->gpuMemPeakMib, rowOf(t, samples, "half")->gpuMemPeakMib) << samples;
     // The error falls as theory says: more kernel samples, less noise against the ray-traced AO.
     for (const char* res : {"full", "half"}) {
         const TradeoffRow *few = rowOf(t, "4", res), *many = rowOf(t, "64", res);
