@@ -33,19 +33,6 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::ui
     return t;
 }
 
-// Anisotropic filtering where the driver has it, except on Mesa's llvmpipe:
-// there (Mesa 22.3) an anisotropic lookup whose texture coordinates reach
-// about 1e5 (a textured floor scaled by 1e4) spins for minutes per draw, and
-// on a CPU rasteriser the filter costs more than it shows anyway.
-bool anisotropyUsable() {
-    static const bool usable = [] {
-        if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") && epoxy_gl_version() < 46) return false;
-        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        return !(renderer && std::strstr(renderer, "llvmpipe"));
-    }();
-    return usable;
-}
-
 // The sky's environment as RGBA16F (empty without one); NaN and Inf stay as
 // they are (the tone mapper's guard is what handles them, and can be switched off).
 gl::Texture environmentTexture(const Scene& scene) {
@@ -74,6 +61,32 @@ gl::Texture environmentTexture(const Scene& scene) {
 
 }  // namespace
 
+bool GpuScene::onLlvmpipe() {
+    static const bool llvmpipe = [] {
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        return renderer && std::strstr(renderer, "llvmpipe");
+    }();
+    return llvmpipe;
+}
+
+float GpuScene::deviceMaxAnisotropy() {
+    static const float largest = [] {
+        if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") && epoxy_gl_version() < 46) return 1.0f;
+        GLfloat v = 1.0f;
+        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &v);
+        return std::max(v, 1.0f);
+    }();
+    return largest;
+}
+
+// Mesa 22.3's llvmpipe: an anisotropic lookup at a grazing angle over a
+// texture repeated thousands of times (a plane with uv-scale 2500, texture
+// coordinates up to 1e5; the extremes suite's floor scaled by 1e4) spins for
+// minutes per draw, whatever the level (aniso2 too) and with the footprint's
+// ratio and length bounded in the shader (textureGrad) or the coordinates
+// wrapped into one period: tried, still over 60 s for a 64x36 frame.
+float GpuScene::maxAnisotropy() { return onLlvmpipe() ? 1.0f : deviceMaxAnisotropy(); }
+
 GLuint GpuScene::samplerFor(const TextureMapping& m) {
     const SamplerKey key{m.wrapS, m.wrapT, m.minFilter, m.magFilter};
     auto it = samplerIndex_.find(key);
@@ -93,14 +106,17 @@ void GpuScene::applyFiltering(std::size_t i) const {
     const GLuint id = samplers_[i].id();
     const bool mipmapped = minFilter != GL_NEAREST && minFilter != GL_LINEAR;
     glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(baseLevel_ ? magFilter : minFilter));
-    if (anisotropyUsable())
-        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, mipmapped && !baseLevel_ ? 8.0f : 1.0f);
+    if (maxAnisotropy() > 1.0f)
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, mipmapped && !baseLevel_ ? anisotropy_ : 1.0f);
 }
 
-void GpuScene::setBaseLevelFiltering(bool baseLevel) const {
-    if (baseLevel == baseLevel_) return;
+float GpuScene::setTextureFiltering(bool baseLevel, float anisotropy) const {
+    const float capped = std::clamp(anisotropy, 1.0f, maxAnisotropy());
+    if (baseLevel == baseLevel_ && capped == anisotropy_) return capped;
     baseLevel_ = baseLevel;
+    anisotropy_ = capped;
     for (std::size_t i = 0; i < samplers_.size(); ++i) applyFiltering(i);
+    return capped;
 }
 
 int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
@@ -115,7 +131,6 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     t.upload(0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     t.generateMipmaps();
     t.setWrap(GL_REPEAT);
-    if (anisotropyUsable()) glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     textureBytes_ += static_cast<std::size_t>(img.width) * img.height * 4 * 4 / 3;
     textures_.push_back(std::move(t));
     const int idx = static_cast<int>(textures_.size() - 1);
