@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/CompareInput.h"
+#include "app/CompareSequence.h"
 #include "app/Commands.h"
 #include "headless/CommandLine.h"
 #include "renderer/Error.h"
@@ -35,6 +36,7 @@ constexpr const char* kUsage =
     "                                  [--size WxH] [--buffer final|lbuffer|NAME] [--frames N] [options]\n"
     "       deferred-workbench compare --against reference [--b k=v[,k=v...]] [--scene S] [--preset P] [--set k=v]...\n"
     "                                  [--size WxH] [--buffer final|lbuffer|ao|ao.raw|shadow] [--ao-rays N] [options]\n"
+    "       deferred-workbench compare --sequence REFERENCE_PATTERN TEST_PATTERN [--hdr|--ldr]\n"
     "  Two image files: EXR/HDR/PFM are HDR (linear radiance: HDR-FLIP, SSIM on v/(1+v));\n"
     "  anything else (PNG, JPEG, ...) LDR (display values: LDR-FLIP, SSIM as stored).\n"
     "  Two renders: the scene rendered twice with the same --scene/--preset/--set, then side A's\n"
@@ -48,6 +50,13 @@ constexpr const char* kUsage =
     "  them false, aa.method=none, on the render), lbuffer against its L-buffer, ao (= ao.filtered) or ao.raw against its ray-traced AO,\n"
     "  shadow (= lighting.shadow, the shadow factor) against its shadow rays\n"
     "  (--ao-rays, default 64).\n"
+    "  Two sequences (--sequence): each pattern names frame t by one integer conversion\n"
+    "  (frames/ref%03d.exr); the frames are 0, 1, ... (or 1, 2, ...) while the reference's exist,\n"
+    "  and the test must have the same ones. Per frame FLIP and RMS with their intervals, their\n"
+    "  means over frames, and the temporal error: the mean over frame pairs of mean |d_t - r_t|,\n"
+    "  d_t and r_t the test's and the reference's frame-to-frame change of luminance\n"
+    "  (docs/metrics.md, \"Temporal error\"), with a bootstrap interval over the pairs. A missing\n"
+    "  or extra frame, or frames of another size, exit 3 naming the file; an unreadable one 4.\n"
     "options:\n"
     "  --error-map FILE.exr  per-pixel maps: absdiff.<channel>..., ssim (mean of the colour\n"
     "                      channels' SSIM), flip\n"
@@ -225,6 +234,16 @@ nlohmann::json reportJson(const CompareInput& inA, const CompareImage& a, const 
     return j;
 }
 
+// --sequence REFERENCE_PATTERN TEST_PATTERN, with --hdr or --ldr and no other option.
+int sequenceCompare(const std::vector<std::string>& files, bool otherOptions, bool forceHdr, bool forceLdr) {
+    if (files.size() != 2)
+        throw UsageError("--sequence needs two frame patterns (REFERENCE_PATTERN TEST_PATTERN), got " +
+                         std::to_string(files.size()));
+    if (otherOptions)
+        throw UsageError("--sequence compares two sequences of image files: it takes --hdr or --ldr, no other option");
+    return compareSequences({files[0], files[1], forceHdr, forceLdr});
+}
+
 int compare(int argc, char** argv) {
     CommandLine cl(argc, argv, 2, "compare");
     if (cl.flag("--help")) {
@@ -254,20 +273,32 @@ int compare(int argc, char** argv) {
     const auto json = cl.value("--json");
     ComparisonSettings settings;
     // Each held to its range in limits::kNumericOptions (renderer/OptionLimits.h).
-    settings.failThreshold = cl.real("--fail").value_or(1e-6);
-    settings.warnThreshold = cl.real("--warn").value_or(1e-6);
+    int gateFlags = 0;  // how many gate and FLIP options were given (--sequence takes none)
+    auto real = [&](const char* flag) {
+        const auto v = cl.real(flag);
+        gateFlags += v.has_value();
+        return v;
+    };
+    settings.failThreshold = real("--fail").value_or(1e-6);
+    settings.warnThreshold = real("--warn").value_or(1e-6);
     ComparisonGates gates;
-    gates.failPercent = cl.real("--failpercent").value_or(0);
-    gates.warnPercent = cl.real("--warnpercent").value_or(0);
-    gates.hardFail = cl.real("--hardfail").value_or(gates.hardFail);
-    gates.hardWarn = cl.real("--hardwarn").value_or(gates.hardWarn);
-    gates.failFlip = cl.real("--fail-flip");
-    gates.failSsim = cl.real("--fail-ssim");
-    if (const auto ppd = cl.real("--ppd")) settings.flip.pixelsPerDegree = *ppd;
+    gates.failPercent = real("--failpercent").value_or(0);
+    gates.warnPercent = real("--warnpercent").value_or(0);
+    gates.hardFail = real("--hardfail").value_or(gates.hardFail);
+    gates.hardWarn = real("--hardwarn").value_or(gates.hardWarn);
+    gates.failFlip = real("--fail-flip");
+    gates.failSsim = real("--fail-ssim");
+    if (const auto ppd = real("--ppd")) settings.flip.pixelsPerDegree = *ppd;
     const bool forceHdr = cl.flag("--hdr"), forceLdr = cl.flag("--ldr");
+    const bool sequence = cl.flag("--sequence");
     cl.finish("compare");
     if (forceHdr && forceLdr) throw UsageError("--hdr and --ldr cannot both be given");
     const std::vector<std::string> files = cl.positional();
+    if (sequence)
+        return sequenceCompare(files, !aSets.empty() || !bSets.empty() || against || size || bufferFlag || framesFlag ||
+                                          errorMap || heatMap || json || aoRaysFlag || gateFlags > 0 ||
+                                          !base.scene.empty() || !base.presetSpec().empty() || !base.sets.empty(),
+                               forceHdr, forceLdr);
 
     CompareInput inA, inB;
     if (against && *against != "reference")

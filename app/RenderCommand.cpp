@@ -7,8 +7,11 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "app/Commands.h"
+#include "app/CompareSequence.h"
+#include "app/RenderSequence.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "app/ReferenceProgressLine.h"
 #include "app/RenderDocCapture.h"
@@ -19,6 +22,7 @@
 #include "renderer/ao/AovCostEstimate.h"
 #include "renderer/graph/TimingReport.h"
 #include "renderer/inspect/FiniteCheck.h"
+#include "renderer/inspect/MemoryTable.h"
 #include "renderer/reference/ViewReference.h"
 #include "renderer/scene/SceneLoader.h"
 
@@ -32,8 +36,9 @@ void printUsage() {
                      "                                 [--frames N] [--warmup N] [--timings] [--timings-out FILE]\n"
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
                      "                                 [--ao-rays N] [--seed N] [--spp N] [--threads N] [--no-cache]\n"
-                     "                                 [--cache-dir DIR]\n"
-                     "                                 --out FILE\n"
+                     "                                 [--cache-dir DIR] [--memory]\n"
+                     "                                 --out FILE | [--orbit N [--orbit-degrees D] | --walkthrough]\n"
+                     "                                 --out-sequence PATTERN\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
                      "               the scene's settings and before --set; its scene is used without --scene;\n"
@@ -46,6 +51,12 @@ void printUsage() {
                      "               `reference` takes them (defaults 64, 1, 1, every core, the cache); only with those\n"
                      "               buffers (reference.spp_error is 0 at --spp 1: one sample has no spread)\n"
                      "  --out        .png writes the displayed (8-bit) view; .exr the raw float values\n"
+                     "  --out-sequence  a camera path's frames, rendered in order by one session (a temporal\n"
+                     "               method's history carried), after --warmup frames at the first camera;\n"
+                     "               frame k to PATTERN's file k (one integer conversion: f%03d.png), as\n"
+                     "               compare --sequence reads them; a reference buffer is traced per camera\n"
+                     "  --orbit N    N cameras on a circle about the scene's camera, --orbit-degrees D apart\n"
+                     "               D / N degrees (default 360); --walkthrough: the scene's camera.path keyframes\n"
                      "  --frames     frames counted (timings are medians over them); default 1\n"
                      "  --warmup     frames rendered first and left out of the timings; default 1 when\n"
                      "               timings are asked for (the first frame compiles shaders), else 0\n"
@@ -59,6 +70,9 @@ void printUsage() {
                      "               every knob, size, frames, build, GL, CPU, each counted frame's timings and\n"
                      "               the image's sha256; `replay FILE` measures it again (a CPU reference buffer:\n"
                      "               with the record's --ao-rays and --seed, traced again through the cache)\n"
+                     "  --memory     print the GPU memory table after the last frame (the inspector's): each\n"
+                     "               frame-graph resource and each owner of what passes, services and the scene\n"
+                     "               allocated (shadow maps, light lists, taa history ...), the total and the peak\n"
                      "  --check-finite  read back every buffer the last frame produced, in pipeline order; exit 3\n"
                      "               naming the first that holds a NaN or an infinity (and its first pixel)\n"
               << CommandLine::rangesHelp("render");
@@ -69,10 +83,11 @@ struct RenderOptions {
     RunConfig run;
     std::string buffer, out;
     std::optional<std::string> dumpKnobs, timingsOut, renderdocCapture, record;
-    bool timings = false, timed = false, verbose = false, checkFinite = false;
+    bool timings = false, timed = false, verbose = false, checkFinite = false, memory = false;
     // The CPU reference's options (as `reference` takes them), for the reference pass's outputs.
     reference::ViewReferenceOptions reference;
     bool referenceOptionGiven = false;
+    RenderSequence sequence;  // --out-sequence along --orbit or --walkthrough
 };
 
 void readReferenceOptions(CommandLine& cl, RenderOptions& o) {
@@ -94,6 +109,18 @@ void readReferenceOptions(CommandLine& cl, RenderOptions& o) {
     o.referenceOptionGiven = aoRaysGiven || seedGiven || sppGiven || threadsGiven || noCache || cacheDir;
 }
 
+// --out-sequence: its frames are its only output; frame 0's file writable.
+RenderOptions checkSequenceOptions(RenderOptions o, const std::optional<std::string>& out) {
+    if (out) throw UsageError("--out-sequence writes the frames; give it without --out");
+    if (o.timed || o.record || o.renderdocCapture || o.checkFinite || o.dumpKnobs || o.run.frames != 1)
+        throw UsageError("--out-sequence renders one frame a camera: it takes no --frames, --timings, "
+                         "--timings-out, --record, --renderdoc-capture, --check-finite or --dump-knobs");
+    CommandLine::requireDistinctFiles({{"--out-sequence", sequenceFrameName(o.sequence.pattern, 0)}},
+                                      CommandLine::inputFiles(o.run));
+    CommandLine::requireWritable(sequenceFrameName(o.sequence.pattern, 0), "--out-sequence file");
+    return o;
+}
+
 RenderOptions readOptions(CommandLine& cl) {
     RenderOptions o;
     o.run = cl.runConfig();
@@ -111,10 +138,13 @@ RenderOptions readOptions(CommandLine& cl) {
     o.verbose = cl.flag("--verbose");
     o.renderdocCapture = cl.value("--renderdoc-capture");
     o.checkFinite = cl.flag("--check-finite");
+    o.memory = cl.flag("--memory");
     o.record = cl.value("--record");
     readReferenceOptions(cl, o);
+    o.sequence = RenderSequence::read(cl);
     cl.finish("render");
     if (!cl.positional().empty()) throw UsageError("render: unexpected argument '" + cl.positional()[0] + "'");
+    if (o.sequence.given()) return checkSequenceOptions(o, out);
     if (!out) throw UsageError("render needs --out FILE (.png or .exr)");
     o.out = *out;
     // No output may replace another, or the scene or preset it renders.
@@ -248,12 +278,37 @@ int writeResults(RenderSession& session, const RenderOptions& o, const FrameRepo
         std::printf("wrote %s (experiment record; deferred-workbench replay %s measures it again)\n", o.record->c_str(),
                     o.record->c_str());
     }
+    if (o.memory) std::fputs(MemoryTable::build(session.pipeline().resources()).text().c_str(), stdout);
     if (o.checkFinite && !allFinite(session)) return 3;
     if (o.timed) {
         const TimingReport t = TimingReport::build(session.pipeline().timer(), report, firstCounted, o.run.warmup);
         if (o.timings) std::fputs(t.table().c_str(), stdout);
         if (o.timingsOut) t.write(*o.timingsOut);
     }
+    return 0;
+}
+
+// --out-sequence: the path's cameras in order, one frame each after --warmup
+// frames at the first; a reference buffer traced per camera. 130 when cancelled.
+int renderSequenceFrames(RenderSession& session, RenderOptions o, bool needsReference) {
+    const std::vector<Camera> cameras = o.sequence.cameras(session.camera(), session.scene());
+    const FrameRequest request{{o.buffer}};
+    session.camera() = cameras.front();
+    for (int i = 0; i < o.run.warmup; ++i) session.render(request);
+    o.run.warmup = 0;  // what traceAndShowReference counts: this frame alone
+    for (size_t k = 0; k < cameras.size(); ++k) {
+        session.camera() = cameras[k];
+        if (needsReference && !traceAndShowReference(session, o)) {
+            std::fprintf(stderr, "deferred-workbench: reference cancelled; frames before %zu written\n", k);
+            return 130;
+        }
+        const FrameReport report = session.render(request);
+        session.writeOutput(o.buffer, sequenceFrameName(o.sequence.pattern, static_cast<int>(k)));
+        for (const auto& w : report.warnings()) std::fprintf(stderr, "warning: frame %zu: %s\n", k, w.c_str());
+    }
+    std::printf("wrote %s, frames 0..%zu (%s of %dx%d frames along the camera path, scene %s)\n",
+                o.sequence.pattern.c_str(), cameras.size() - 1, o.buffer.c_str(), o.run.width, o.run.height,
+                session.scene().name.c_str());
     return 0;
 }
 
@@ -287,10 +342,11 @@ int runRenderCommand(int argc, char** argv) {
                          "compare.error; --buffer " +
                          o.buffer + " has no reference");
     warnAovCost(session, o.run, o.verbose);
-    if (needsReference && !traceAndShowReference(session, o)) {
+    if (needsReference && !o.sequence.given() && !traceAndShowReference(session, o)) {
         std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");
         return 130;
     }
+    if (o.sequence.given()) return renderSequenceFrames(session, o, needsReference);
     std::uint64_t firstCounted = 0;
     const FrameReport report = renderFrames(session, o, renderdoc, firstCounted);
     return writeResults(session, o, report, firstCounted, context->platform(), needsReference);

@@ -205,7 +205,8 @@ int replayBench(const ExperimentRecord& old, const std::vector<std::string>& set
         if (sample.series == series) afterMs[sample.config].push_back(sample.gpuMs);
     std::vector<std::pair<int, replay::RecordedConfig>> after;
     for (const auto& c : results.configs)
-        after.push_back({c.config.index, {configLabel(c.config, results.knobAxes), c.lpp, afterMs[c.config.index]}});
+        after.push_back({c.config.index, {configLabel(c.config, results.knobAxes), c.lpp, afterMs[c.config.index],
+                                          gpuMemPeakMib(results.samples, c.config.index)}});
     const replay::BenchComparison compared = replay::compareBench(before, after, series, recorded.resamples);
     reportShaders(old, shaderFilesOf(results.shaders), inputs);
     inputs.print();

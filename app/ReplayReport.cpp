@@ -225,6 +225,8 @@ std::map<int, RecordedConfig> recordedConfigs(const nlohmann::ordered_json& res,
         if (c.contains("knobs") && c["knobs"].is_object())
             for (const auto& [k, v] : c["knobs"].items()) r.label += ", " + k + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
         if (c.contains("lpp") && c["lpp"].is_number()) r.lpp = c["lpp"].get<double>();
+        if (c.contains("gpu_mem_peak_mib") && c["gpu_mem_peak_mib"].is_number())
+            r.gpuMemPeakMib = c["gpu_mem_peak_mib"].get<double>();
         if (c.contains("samples") && c["samples"].is_array())
             for (const auto& s : c["samples"])
                 if (s.is_object() && s.contains("gpu_ms") && s["gpu_ms"].is_object() && s["gpu_ms"].contains(series) &&
@@ -254,6 +256,14 @@ BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::ve
         const bool sameLpp = (!std::isfinite(b.lpp) && !std::isfinite(a.lpp)) ||
                              (bothLpp && std::abs(b.lpp - a.lpp) <= 1e-5 * std::max(1.0, std::abs(b.lpp)));
         if (bothLpp) std::printf("  lpp %.4f -> %.4f", b.lpp, a.lpp);
+        // Peak GPU memory is exact (logical bytes): compared to the byte.
+        if (std::isfinite(b.gpuMemPeakMib) && std::isfinite(a.gpuMemPeakMib)) {
+            std::printf("  gpu memory peak %.2f -> %.2f MiB%s", b.gpuMemPeakMib, a.gpuMemPeakMib,
+                        b.gpuMemPeakMib == a.gpuMemPeakMib ? "" : " (differs)");
+            if (b.gpuMemPeakMib != a.gpuMemPeakMib) ++out.memoryDiffer;
+        } else {
+            ++out.memoryUnknown;
+        }
         std::printf("\n");
         if (!sameLpp) ++out.lppDiffer;
         if (timingMoved(r)) ++out.moved;
@@ -268,10 +278,14 @@ BenchComparison compareBench(std::map<int, RecordedConfig> before, const std::ve
 }
 
 int BenchComparison::verdict() const {
-    if (notInRecord.empty() && notRunAgain.empty() && lppDiffer == 0 && moved == 0) {
-        std::printf("bench: the same (%zu configurations, lights per pixel equal, no %s timing outside [%.2f, %.2f] "
+    // A record written before the memory column: said, not counted against it.
+    const std::string memory = memoryUnknown > 0 ? ", peak GPU memory not compared in " + std::to_string(memoryUnknown) +
+                                                       " (not in both records)"
+                                                 : ", peak GPU memory equal";
+    if (notInRecord.empty() && notRunAgain.empty() && lppDiffer == 0 && moved == 0 && memoryDiffer == 0) {
+        std::printf("bench: the same (%zu configurations, lights per pixel equal%s, no %s timing outside [%.2f, %.2f] "
                     "with its 95%% interval)\n",
-                    compared, series.c_str(), kTimingBandLow, kTimingBandHigh);
+                    compared, memory.c_str(), series.c_str(), kTimingBandLow, kTimingBandHigh);
         return 0;
     }
     // A record cut short (its results lack configurations of the grid it declares) names them.
@@ -280,9 +294,9 @@ int BenchComparison::verdict() const {
         missing += std::to_string(notInRecord.size()) + " configuration(s) not in the record: " + someOf(notInRecord) + "; ";
     if (!notRunAgain.empty())
         missing += std::to_string(notRunAgain.size()) + " in the record, not run again: " + someOf(notRunAgain) + "; ";
-    std::printf("bench: differs (%s%d configuration(s) with other lights per pixel, %d with %s timing moved beyond "
-                "[%.2f, %.2f])\n",
-                missing.c_str(), lppDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
+    std::printf("bench: differs (%s%d configuration(s) with other lights per pixel, %d with another peak GPU memory, "
+                "%d with %s timing moved beyond [%.2f, %.2f])\n",
+                missing.c_str(), lppDiffer, memoryDiffer, moved, series.c_str(), kTimingBandLow, kTimingBandHigh);
     return 1;
 }
 
@@ -433,6 +447,11 @@ TradeoffComparison compareTradeoff(const TradeoffTable& before, const TradeoffTa
         if (!notRecorded.empty())
             std::printf("%s: counters missing in the record: %s\n", pointLabel(after, r).c_str(), notRecorded.c_str());
         if (!notHere.empty() || !notRecorded.empty()) ++out.countersMissing;
+        if (std::isfinite(b.gpuMemPeakMib) && std::isfinite(r.gpuMemPeakMib) && b.gpuMemPeakMib != r.gpuMemPeakMib) {
+            std::printf("%s: gpu memory peak %.4f -> %.4f MiB (differs)\n", pointLabel(after, r).c_str(), b.gpuMemPeakMib,
+                        r.gpuMemPeakMib);
+            ++out.memoryDiffer;
+        }
         if (recordInconsistent(pointLabel(after, r), b)) ++out.inconsistent;
         compareFrontInputs(pointLabel(after, r), before, b, after, r,
                            enoughForInterval(nBefore) && enoughForInterval(nAfter), out);
@@ -450,7 +469,7 @@ int TradeoffComparison::verdict() const {
     // times' lines are printed (a moved one says "(moved)") but not counted.
     const int timesCounted = exactCost ? 0 : moved + timeMoved + termsMoved;
     if (errorDiffer == 0 && missing == 0 && countersMoved == 0 && intervalDiffer == 0 && timesCounted == 0 &&
-        frontMoved == 0 && countersMissing == 0 && inconsistent == 0 && !pickMoved) {
+        frontMoved == 0 && countersMissing == 0 && inconsistent == 0 && memoryDiffer == 0 && !pickMoved) {
         if (exactCost)
             std::printf("tradeoff: the same (%zu rows, every error equal%s; every error interval equal, the front and "
                         "the pick the same; times not counted: the front's cost is a counter, %d row(s) with a time "
@@ -467,10 +486,10 @@ int TradeoffComparison::verdict() const {
     std::printf("tradeoff: differs (%d row(s) with another error, %d with the frame time moved beyond [%.2f, %.2f], "
                 "%d with a counter moved, %d with a counter measured on one side only, %d not in both; %d with another "
                 "error interval, %d with the%s time moved, %d with a term of it moved, %d with another front or pick; "
-                "%d inconsistent in the record; the pick %s)\n",
+                "%d inconsistent in the record, %d with another peak GPU memory; the pick %s)\n",
                 errorDiffer, moved, kTimingBandLow, kTimingBandHigh, countersMoved, countersMissing, missing,
                 intervalDiffer, timeMoved, time == "frame" ? " --time" : (" " + time).c_str(), termsMoved, frontMoved,
-                inconsistent, pickMoved ? "moved" : "the same");
+                inconsistent, memoryDiffer, pickMoved ? "moved" : "the same");
     if (exactCost) std::printf("tradeoff: the times are not counted in that verdict: the front's cost is a counter\n");
     return 1;
 }

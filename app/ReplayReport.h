@@ -74,6 +74,7 @@ struct RecordedConfig {
     std::string label;
     double lpp = NAN;
     std::vector<double> gpuMs;
+    double gpuMemPeakMib = NAN;  // NaN: not in the record (written before the column)
 };
 // A bench record's results by configuration index, `series` the ratio's.
 std::map<int, RecordedConfig> recordedConfigs(const nlohmann::ordered_json& results, const std::string& series);
@@ -84,7 +85,9 @@ std::map<int, RecordedConfig> recordedConfigs(const nlohmann::ordered_json& resu
 // ("in the record, not run again"); verdict() prints "bench: the same (...)"
 // (returns 0) or "bench: differs (...)" (1).
 struct BenchComparison {
-    int lppDiffer = 0, moved = 0;
+    // memoryDiffer: configurations whose peak GPU memory is not the same to
+    // the byte (it is deterministic); memoryUnknown: not in both records.
+    int lppDiffer = 0, moved = 0, memoryDiffer = 0, memoryUnknown = 0;
     size_t compared = 0;
     std::vector<std::string> notInRecord, notRunAgain;
     std::string series;
@@ -116,6 +119,8 @@ struct TradeoffComparison {
     // its own recorded interval ("record inconsistent"), rows with a term of
     // --time's sum moved, and the budget's pick moved (set by the caller).
     int countersMissing = 0, inconsistent = 0, termsMoved = 0;
+    // Rows whose peak GPU memory (exact) is not the same, both recorded.
+    int memoryDiffer = 0;
     bool pickMoved = false;
     bool countersCompared = false, exactCost = false;
     std::string time = "frame";  // the span --time named, when both tables have it

@@ -57,10 +57,10 @@ std::string tradeoffUsage() {
            "                                   [--sweep axis=v1,v2,...]... [--presets A,B,...] [--knobs speed/quality]\n"
            "                                   [--study [NAME:]KNOB=V1,V2[:KNOB=V...]]... [--study-file F.json]\n"
            "                                   [--exclude axis=v[,v...][,axis=v...]]... [--against reference|knob=v[,knob=v...]]\n"
-           "                                   [--metric flip|rms|psnr|ssim] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
+           "                                   [--metric flip|rms|psnr|ssim|temporal] [--buffer final|lbuffer|ao|shadow] [--ao-rays N]\n"
            "                                   [--ref-spp N] [--ref-filter box|tent] [--mask shadow_edges] [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER]\n"
            "                                   [--budget-ms X | --budget N] [--search [--max-evals N]] [--no-counters]\n"
-           "                                   [--orbit N | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
+           "                                   [--orbit N [--orbit-degrees D] | --walkthrough] [--frames N] [--warmup N] [--block K] [--resamples N]\n"
            "                                   [--shard i/n] [--csv FILE] [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
            "                                   [--quiet]\n"
            "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
@@ -74,7 +74,10 @@ std::string tradeoffUsage() {
            "  --metric     the error (default flip); --buffer the image it is measured on (default final;\n"
            "               ao = the AO buffer the lighting pass reads (ao.filtered); shadow = lighting.shadow, the\n"
            "               shadow factor as the reference's shadow buffer defines it); --ao-rays the reference's AO\n"
-           "               rays per pixel (default 64)\n"
+           "               rays per pixel (default 64); temporal: the temporal error (docs/metrics.md) of the\n"
+           "               camera path's frames (--orbit N >= 2 or --walkthrough, required), each point rendering\n"
+           "               them in order after 16 frames at the first camera, against the reference's frames of\n"
+           "               the same cameras; on the all-cameras row (a camera's row has no error)\n"
            "  --ref-spp    the reference's samples per pixel (default 1: the pixel's centre), as reference --spp:\n"
            "               N points over the pixel, the footprint truth texture filters are measured against;\n"
            "               --ref-filter box (default) or tent, as reference --filter; both in the cache key\n"
@@ -96,7 +99,9 @@ std::string tradeoffUsage() {
            "               apart from the current value in error); every evaluation a row of the CSV\n"
            "  --max-evals  the search's bound in evaluations (points measured; default 48)\n"
            "  --no-counters  measure without the per-pass cost counters (their columns are left out)\n"
-           "  --size       the render size (default 640x360)\n" +
+           "  --size       the render size (default 640x360)\n"
+           "  --orbit-degrees  the arc --orbit N's cameras span, D / N degrees apart (default 360: evenly all\n"
+           "               around); a few degrees make a path of small steps for --metric temporal\n" +
            SweepOptions::help(kTradeoff) + SweepMergeOptions::help(kTradeoff) + CommandLine::rangesHelp("tradeoff") +
            CommandLine::rangesHelp("tradeoff merge");
 }
@@ -222,8 +227,10 @@ std::string what(const TradeoffTable& t, const std::string& against, const std::
     return "Each row: a point of the sweep" + std::string(several ? " over every camera" : "") + ". " + metric +
            " of the buffer against " + against + " (" +
            (TradeoffTable::lowerIsBetter(metric) ? "lower" : "higher") + " is better)" +
-           (several ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
-                    : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
+           (metric == "temporal" ? ", the temporal error of the path's frames rendered in order (docs/metrics.md), its 95% "
+                                   "interval a bootstrap over the frame pairs"
+            : several           ? ", the mean over the cameras, its 95% interval a bootstrap over the cameras"
+                                : ", its 95% interval a bootstrap over 16x16-pixel tiles") +
            "; GPU ms: the median frame time over the counted frames, 95% bootstrap interval of the median; "
            "Pareto: **front** on the front of " +
            (cost != "gpu_ms"
@@ -484,6 +491,7 @@ int runTradeoffCommand(int argc, char** argv) {
     s.refSpp = cl.whole("--ref-spp", 1);
     s.refFilter = cl.value("--ref-filter").value_or("box");
     s.orbit = so.orbit;
+    s.orbitDegrees = cl.real("--orbit-degrees").value_or(360.0);
     s.walkthrough = so.walkthrough;
     s.frames = so.frames;
     s.warmup = so.warmup;

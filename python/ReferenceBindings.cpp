@@ -18,6 +18,7 @@
 #include "renderer/metrics/ComparisonHeatMap.h"
 #include "renderer/metrics/ComparisonMemory.h"
 #include "renderer/metrics/ImageComparison.h"
+#include "renderer/metrics/TemporalError.h"
 
 namespace py = pybind11;
 
@@ -224,7 +225,39 @@ void bindReference(SessionClass& session) {
                 "statistics as JSON (reference --stats-out's figures under the same keys).");
 }
 
+// dw.temporal_error: the frames of each side as arrays (a list, or a T x H x W (x C) array).
+py::dict temporalErrorOf(const py::sequence& reference, const py::sequence& test) {
+    std::vector<FloatImage> ref, tst;
+    for (const auto* side : {&reference, &test}) {
+        auto& frames = side == &reference ? ref : tst;
+        const char* what = side == &reference ? "temporal_error: reference frame" : "temporal_error: test frame";
+        for (size_t t = 0; t < side->size(); ++t) {
+            const std::string name = std::string(what) + " " + std::to_string(t);
+            frames.push_back(toFloatImage(py::array(py::object((*side)[t])), name.c_str()));
+        }
+    }
+    TemporalErrorResult r;
+    {
+        py::gil_scoped_release release;
+        r = TemporalError::measure(ref, tst);
+    }
+    py::dict d;
+    d["mean"] = r.mean;
+    d["low"] = r.interval.low;
+    d["high"] = r.interval.high;
+    d["pairs"] = r.pairs;
+    d["frames"] = ref.size();
+    return d;
+}
+
 void bindCompare(py::module_& m) {
+    m.def("temporal_error", &temporalErrorOf, py::arg("reference"), py::arg("test"),
+          "The temporal error of a test sequence against a reference sequence (docs/metrics.md, \"Temporal error\"):\n"
+          "each a list of H x W (x C) arrays, or one T x H x W (x C) array (uint8 read as v / 255), T >= 2, one shape.\n"
+          "A dict: mean (over frame pairs of the mean |d_t - r_t| of luminance, d_t and r_t the test's and the\n"
+          "reference's frame-to-frame change), low and high (its 95% bootstrap interval over pairs), pairs (each\n"
+          "pair's error, frames 0->1 first) and frames (T). dw.Error for sequences of other lengths or shapes,\n"
+          "fewer than 2 frames or a non-finite pixel, naming the frame.");
     m.def("compare", &compareArrays, py::arg("reference"), py::arg("test"), py::arg("hdr") = false,
           py::arg("warn_threshold") = 1e-6, py::arg("fail_threshold") = 1e-6, py::arg("maps") = false,
           py::arg("error_map") = py::none(), py::arg("heat_map") = py::none(), py::arg("json") = py::none(),

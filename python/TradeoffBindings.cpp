@@ -389,7 +389,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   const py::object& aoRays, const py::object& refSpp, const std::string& refFilter,
                   std::optional<std::string> mask, const std::string& time,
                   const std::string& cost, const py::object& budgetMsObject, const py::object& budgetObject,
-                  const py::object& orbit, bool walkthrough, const py::object& frames, const py::object& warmup,
+                  const py::object& orbit, const py::object& orbitDegrees, bool walkthrough, const py::object& frames, const py::object& warmup,
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
                   const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile,
@@ -413,6 +413,7 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
     s.budgetMs = optionalNumber(budgetMsObject, "tradeoff: budget_ms", "--budget-ms");
     s.budget = optionalNumber(budgetObject, "tradeoff: budget", "--budget");
     s.orbit = intArg(orbit, "tradeoff: orbit", OptionRange{0, limits::kOrbit.max}, "tradeoff --orbit; 0: fixed");
+    s.orbitDegrees = optionalNumber(orbitDegrees, "tradeoff: orbit_degrees", "--orbit-degrees").value_or(360.0);
     s.walkthrough = walkthrough;
     s.frames = intArg(frames, "tradeoff: frames", limits::kFrames, "tradeoff --frames");
     s.warmup = intArg(warmup, "tradeoff: warmup", limits::kWarmup, "tradeoff --warmup");
@@ -437,7 +438,7 @@ void bindTradeoff(py::module_& m) {
           py::arg("against") = "reference", py::arg("metric") = "flip", py::arg("buffer") = "final",
           py::arg("ao_rays") = 64, py::arg("ref_spp") = 1, py::arg("ref_filter") = "box", py::arg("mask") = py::none(), py::arg("time") = "frame", py::arg("cost") = "gpu_ms",
           py::arg("budget_ms") = py::none(), py::arg("budget") = py::none(), py::arg("orbit") = 0,
-          py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
+          py::arg("orbit_degrees") = py::none(), py::arg("walkthrough") = false, py::arg("frames") = 5, py::arg("warmup") = 1, py::arg("block") = 1,
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
           py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
           py::arg("quiet") = false, py::arg("progress") = py::none(), py::arg("record") = py::none(),
@@ -451,7 +452,8 @@ void bindTradeoff(py::module_& m) {
           "--spp; default 1), ref_filter (\"box\" or \"tent\"), mask,\n"
           "time (frame, a pass, or a sum \"lighting+ao+ao_filter\"), cost (gpu_ms or a counter: fragments, samples,\n"
           "primitives, vertices, compute, bytes: the front's cost axis), budget_ms (bounds the time), budget (bounds\n"
-          "the counter cost names, in its unit; not with budget_ms), orbit, walkthrough, frames, warmup, block,\n"
+          "the counter cost names, in its unit; not with budget_ms), orbit, orbit_degrees (the arc orbit's cameras span,\n"
+          "default 360), walkthrough, frames, warmup, block,\n"
           "resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
           "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
           "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"

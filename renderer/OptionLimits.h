@@ -61,6 +61,7 @@ constexpr RealRange kLightRadius{0, kFloatMax, true};  // bench --light-radius: 
 constexpr RealRange kBudgetMs{0, 1e9, true};            // tradeoff --budget-ms: milliseconds, above 0
 constexpr RealRange kBudget{0, 1e18, true};             // tradeoff --budget: a counter's unit (fragments, bytes ...), above 0
 constexpr RealRange kSceneTime{0, 1e6};                 // --scene-time: seconds of the scene's animation
+constexpr RealRange kOrbitDegrees{0, 360, true};        // tradeoff --orbit-degrees: the arc the poses span, above 0
 }  // namespace limits
 
 // How an option's value is written.
@@ -98,6 +99,8 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"render", "--size", F::Size, kSize, "pixels"},
     {"render", "--frames", F::Whole, kFrames, "counted frames"},
     {"render", "--scene-time", kSceneTime, "seconds of the scene's animation"},
+    {"render", "--orbit", F::Whole, kOrbit, "cameras"},
+    {"render", "--orbit-degrees", kOrbitDegrees, "degrees the orbit's poses span"},
     {"render", "--warmup", F::Whole, kWarmup, "frames"},
     {"render", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"render", "--seed", F::Whole, kSeed, "seed"},
@@ -131,6 +134,7 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"tradeoff", "--block", F::Whole, kBlock, "frames in a row"},
     {"tradeoff", "--resamples", F::Whole, kResamples, "bootstrap resamples"},
     {"tradeoff", "--orbit", F::Whole, kOrbit, "cameras"},
+    {"tradeoff", "--orbit-degrees", kOrbitDegrees, "degrees the orbit's poses span"},
     {"tradeoff", "--shard", F::Shard, kShards, "shards"},
     {"tradeoff", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"tradeoff", "--ref-spp", F::Whole, kPixelSamples, "samples per pixel"},

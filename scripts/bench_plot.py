@@ -18,6 +18,8 @@ import sys
 SAMPLE_COLUMNS = ["lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"]
 # The cost counters, after them when the run counted them.
 COUNTER_COLUMNS = ["fragments", "samples", "primitives", "vertices", "compute", "bytes"]
+# Each frame's peak GPU memory, after cpu_ms (before the counters); older CSVs lack it.
+MEMORY_COLUMN = "gpu_mem_peak_mib"
 
 
 def median_interval(ms, resamples=1000):
@@ -33,6 +35,8 @@ def read_medians(path, column):
         reader = csv.reader(f)
         header = next(reader, None)
         timed = header[:-len(COUNTER_COLUMNS)] if header and header[-len(COUNTER_COLUMNS):] == COUNTER_COLUMNS else header
+        if timed and timed[-1] == MEMORY_COLUMN:
+            timed = timed[:-1]
         if not timed or timed[:3] != ["config", "size", "lights"] or timed[-len(SAMPLE_COLUMNS):] != SAMPLE_COLUMNS:
             raise ValueError(f"{path}: not a bench samples CSV (header {header})")
         axes = timed[1:len(timed) - len(SAMPLE_COLUMNS)]  # size, lights, knobs...

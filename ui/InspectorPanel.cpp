@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "renderer/inspect/MemoryTable.h"
 #include "renderer/inspect/OutputReadback.h"
 #include "ui/ImageViewer.h"
 #include "ui/Widgets.h"
@@ -12,6 +13,8 @@
 namespace dw::ui {
 
 namespace {
+
+double mib(std::size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
 // A pass's row: its tree node, GPU ms, and what it did (under the name when narrow). True when open.
 bool passRow(const PassRecord& rec, PassTimer& timer, bool narrow) {
@@ -90,6 +93,38 @@ void outputRow(const PublishedOutput& o, UiState& state, bool narrow) {
     ImGui::PopID();
 }
 
+// Every byte the renderer holds (inspect/MemoryTable.h): the frame graph's
+// resources (an output whose pass did not run, or that nothing asked for, has
+// none) and what passes, services and the scene own, with their total.
+void memorySection(RenderSession& session) {
+    const MemoryTable t = MemoryTable::build(session.pipeline().resources());
+    char head[160];
+    std::snprintf(head, sizeof(head), "GPU memory: %.1f MiB (frame graph %.1f MiB, %zu rows), peak %.1f MiB###memory",
+                  mib(t.total), mib(t.frameGraphBytes()), t.rows.size(), mib(t.ledgerPeak));
+    if (!ImGui::CollapsingHeader(head)) return;
+    if (ImGui::BeginTable("memory", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_Resizable)) {
+        ImGui::TableSetupColumn("owner", ImGuiTableColumnFlags_WidthStretch, 0.6f);
+        ImGui::TableSetupColumn("MiB", ImGuiTableColumnFlags_WidthFixed, 64.0f);
+        ImGui::TableSetupColumn("objects", ImGuiTableColumnFlags_WidthFixed, 48.0f);
+        ImGui::TableHeadersRow();
+        for (const MemoryRow& r : t.rows) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(r.owner.c_str());
+            if (ImGui::IsItemHovered())
+                tooltip("%s: %zu bytes%s%s", r.owner.c_str(), r.bytes, r.detail.empty() ? "" : ", ", r.detail.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", mib(r.bytes));
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", r.objects);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Text("total %.2f MiB (%zu bytes); the GL wrapper counts %zu bytes", mib(t.total), t.total, t.ledgerLive);
+    wrappedColored(kDimColor, "logical sizes (format x size x levels x layers x samples), not the driver's padded ones; "
+                              "ImGui's own font texture and vertex buffers are not counted");
+}
+
 }  // namespace
 
 void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderSession& session) {
@@ -124,20 +159,7 @@ void InspectorPanel::draw(const char* title, bool* open, UiState& state, RenderS
         }
         ImGui::EndTable();
     }
-    // What the frame graph allocated for this frame: an output whose pass did
-    // not run, or that nothing asked for, has no memory.
-    const auto resources = session.pipeline().resources();
-    std::size_t bytes = 0;
-    for (const auto& r : resources) bytes += r.bytes;
-    char resHead[96];
-    std::snprintf(resHead, sizeof(resHead), "allocated resources: %zu, %.1f MiB###resources", resources.size(),
-                  static_cast<double>(bytes) / (1024.0 * 1024.0));
-    if (ImGui::CollapsingHeader(resHead)) {
-        for (const auto& r : resources)
-            ImGui::TextDisabled("%-22s %8.1f KiB  %s", r.name.c_str(), static_cast<double>(r.bytes) / 1024.0,
-                                describe(r.desc, r.desc.width, r.desc.height).c_str());
-        wrappedColored(kDimColor, "pass-owned outputs (the light table, shadow arrays, bloom levels) are not counted here");
-    }
+    memorySection(session);
     ImGui::Separator();
     const PublishedOutput* shown = outputs.find(state.viewport.output);
     if (shown && state.viewport.mode == DisplayMode::Deferred) {

@@ -50,6 +50,19 @@ PassCounts countsOf(const std::vector<std::string>& f, size_t first, const Fail&
     return c;
 }
 const char* const kTrailing[] = {"lpp", "lpp_lit", "sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms"};
+// After kTrailing (and before the counters); a CSV written before it has none.
+const char* const kMemoryColumn = "gpu_mem_peak_mib";
+
+// A gpu_mem_peak_mib field: MiB (finite, at least 0), or NaN when empty.
+template <typename Fail>
+double mibOf(const std::string& text, const Fail& fail) {
+    if (text.empty()) return std::numeric_limits<double>::quiet_NaN();
+    double v = 0.0;
+    auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || p != text.data() + text.size() || !(std::isfinite(v) && v >= 0.0))
+        fail(std::string(kMemoryColumn) + ": expected MiB (a finite number, at least 0) or nothing, got '" + text + "'");
+    return v;
+}
 
 }  // namespace
 
@@ -81,11 +94,19 @@ std::vector<std::string> BenchResults::seriesOf(int config) const {
     return names;
 }
 
+double gpuMemPeakMib(const std::vector<BenchSample>& samples, int config) {
+    double peak = std::numeric_limits<double>::quiet_NaN();
+    for (const BenchSample& s : samples)
+        if (s.config == config && !std::isnan(s.gpuMemPeakMib)) peak = std::isnan(peak) ? s.gpuMemPeakMib : std::max(peak, s.gpuMemPeakMib);
+    return peak;
+}
+
 std::string BenchResults::csvHeader(const std::vector<std::string>& knobAxes, bool counted) {
     std::string h;
     for (const char* c : kLeading) h += std::string(h.empty() ? "" : ",") + c;
     for (const auto& k : knobAxes) h += "," + csvField(k);
     for (const char* c : kTrailing) h += std::string(",") + c;
+    h += std::string(",") + kMemoryColumn;
     for (int i = 0; counted && i < PassCounts::kCount; ++i) h += std::string(",") + PassCounts::name(i);
     return h;
 }
@@ -100,7 +121,7 @@ std::string BenchResults::csvRows(const std::vector<BenchSample>& rows) const {
         out << c->config.index << "," << c->config.size() << "," << c->config.lights;
         for (const auto& v : c->config.knobValues) out << "," << csvField(v);
         out << "," << number(c->lpp) << "," << number(c->lppLit) << "," << s.sample << "," << s.seq << "," << s.frame << ","
-            << csvField(s.series) << "," << number(s.gpuMs) << "," << number(s.cpuMs);
+            << csvField(s.series) << "," << number(s.gpuMs) << "," << number(s.cpuMs) << "," << number(s.gpuMemPeakMib);
         for (int i = 0; counted && i < PassCounts::kCount; ++i)
             out << "," << (s.counts[i] >= 0 ? std::to_string(s.counts[i]) : std::string());
         out << "\n";
@@ -123,6 +144,8 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
         counted = header[header.size() - PassCounts::kCount + static_cast<size_t>(i)] == PassCounts::name(i);
     const size_t columns = header.size();
     if (counted) header.resize(header.size() - PassCounts::kCount);
+    const bool memory = !header.empty() && header.back() == kMemoryColumn;
+    if (memory) header.pop_back();
     const size_t lead = std::size(kLeading), trail = std::size(kTrailing);
     bool ok = header.size() >= lead + trail;
     for (size_t i = 0; ok && i < lead; ++i) ok = header[i] == kLeading[i];
@@ -197,7 +220,8 @@ BenchResults BenchResults::parseCsv(const std::string& whole, const std::string&
         };
         s.gpuMs = time(t + 6);
         s.cpuMs = time(t + 7);
-        if (counted) s.counts = countsOf(f, t + 8, fail);
+        if (memory) s.gpuMemPeakMib = mibOf(f[t + 8], fail);
+        if (counted) s.counts = countsOf(f, t + 8 + (memory ? 1 : 0), fail);
         if (!once.emplace(s.config, s.sample, s.series).second)
             fail("configuration " + std::to_string(s.config) + ", sample " + std::to_string(s.sample) + ", " + s.series +
                  " is there twice (a file joined twice?)");

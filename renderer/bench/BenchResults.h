@@ -4,13 +4,14 @@
 // per-series GPU and CPU milliseconds, the machine and the run's settings.
 // The samples CSV carries everything the summary needs, one row per frame
 // and series:
-//   config,size,lights,<knob>...,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms
+//   config,size,lights,<knob>...,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms,gpu_mem_peak_mib
 // and, when counted, the row's cost counters (PassCounts.h; a pass's own, the
 // frame row's their sums; empty for a span or where not measured):
 //   ...,cpu_ms,fragments,samples,primitives,vertices,compute,bytes
 // so `bench merge` can join shards from CSV alone and recompute the table.
 // Needs no GL.
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -30,6 +31,11 @@ struct BenchSample {
     std::string series;         // a pass, a span ("lighting/shadow maps") or "frame" (the whole frame)
     double gpuMs = 0.0, cpuMs = 0.0;
     PassCounts counts;          // the pass's (the frame's: their sums) cost counters; none for a span
+    // The frame's peak GPU memory, MiB (bytes / 2^20, exact in a double):
+    // the largest its session's pipeline held during the frame (logical
+    // bytes, gl/MemoryLedger.h; ConfigurationRunner). The same on every row of
+    // a frame. NaN: not measured (a CSV from before the column).
+    double gpuMemPeakMib = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BenchConfigResult {
@@ -43,6 +49,10 @@ struct BenchConfigResult {
     // Only in this run's JSON: the CSV (and so bench merge) does not carry it.
     std::map<std::string, std::string> stats;
 };
+
+// A configuration's peak GPU memory in MiB: the largest of its samples'
+// (NaN when none was measured).
+double gpuMemPeakMib(const std::vector<BenchSample>& samples, int config);
 
 using BenchFields = std::vector<std::pair<std::string, std::string>>;  // ordered name -> value
 

@@ -265,7 +265,7 @@ std::string markdownTable(const BenchResults& results, const BenchSummary& summa
     const size_t text = header.size();
     bool anyAuto = false;
     for (const auto& c : results.configs) anyAuto = anyAuto || !autoPicked(c).empty();
-    for (const char* h : {"LPP", "LPP lit", "frames", "GPU ms median", "GPU ms min", "GPU ms max", "CPU ms median"})
+    for (const char* h : {"LPP", "LPP lit", "frames", "GPU ms median", "GPU ms min", "GPU ms max", "CPU ms median", "GPU MiB peak"})
         header.emplace_back(h);
     if (anyAuto) header.emplace_back("auto picked");
     const bool frameSeries = summary.baseline.series == PassTimer::kFrameSeries;
@@ -302,6 +302,7 @@ std::string markdownTable(const BenchResults& results, const BenchSummary& summa
         cells.push_back(std::to_string(f ? f->gpu.count : 0));
         for (double v : {f ? f->gpu.median : NAN, f ? f->gpu.min : NAN, f ? f->gpu.max : NAN, f ? f->cpu.median : NAN})
             cells.push_back(fixed(finiteOrNan(v)));
+        cells.push_back(fixed(gpuMemPeakMib(results.samples, c.config.index)));
         if (anyAuto) {
             const std::string picked = autoPicked(c);
             cells.push_back(picked.empty() ? "-" : picked);
@@ -383,7 +384,8 @@ nlohmann::ordered_json benchResultsJson(const BenchResults& results, const Bench
         for (size_t k = 0; k < results.knobAxes.size(); ++k) knobs[results.knobAxes[k]] = c.config.knobValues[k];
         Json j = {{"config", c.config.index}, {"size", c.config.size()}, {"width", c.config.width},
                   {"height", c.config.height}, {"lights", c.config.lights}, {"knobs", knobs},
-                  {"lpp", optionalNumber(c.lpp)}, {"lpp_lit", optionalNumber(c.lppLit)}};
+                  {"lpp", optionalNumber(c.lpp)}, {"lpp_lit", optionalNumber(c.lppLit)},
+                  {"gpu_mem_peak_mib", optionalNumber(gpuMemPeakMib(results.samples, c.config.index))}};
         const BenchSummaryRow* r = summary.find(c.config.index);
         Json series = Json::object();
         if (r) {

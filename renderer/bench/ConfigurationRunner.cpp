@@ -9,6 +9,7 @@
 #include <set>
 
 #include "renderer/Error.h"
+#include "renderer/gl/MemoryDomain.h"
 
 namespace dw {
 
@@ -28,6 +29,7 @@ struct Counted {
     int config = 0;
     int sample = 0;
     long long seq = 0;
+    std::size_t memPeak = 0;  // bytes (RunnerTimings::memoryPeak)
 };
 
 struct SessionFrames {
@@ -171,6 +173,7 @@ void ConfigurationRunner::Measurement::harvestSession(RenderSession& session, Se
             b.gpuMs = std::round(double{t.gpuMs} * 1e4) / 1e4;
             b.cpuMs = std::round(double{t.cpuMs} * 1e4) / 1e4;
             b.counts = t.counts;
+            b.gpuMemPeakMib = static_cast<double>(c->second.memPeak) / (1024.0 * 1024.0);
             seriesSeen[b.config].insert(b.series);
             fresh.push_back(std::move(b));
         }
@@ -285,9 +288,13 @@ void ConfigurationRunner::renderFrame() {
     // the session between steps (the window); else once a block.
     RenderSession& session = plan_.selectEveryFrame ? select_(c) : *m.blockSession;
     pose_(session, c, f.sample);
+    const void* domain = &session.pipeline();
+    if (f.counted) gl::resetDomainPeak(domain);
     FrameReport report = session.render(plan_.request);
     if (!f.counted) return;
-    m.sessions.at(&session).counted[report.frameIndex] = {c, f.sample, m.seq++};
+    std::size_t& peak = m.out.memoryPeak[c];
+    peak = std::max(peak, gl::domainPeakBytes(domain));
+    m.sessions.at(&session).counted[report.frameIndex] = {c, f.sample, m.seq++, gl::domainPeakBytes(domain)};
     if (std::vector<std::string> said = report.warnings(); !said.empty()) {
         FrameWarnings& w = m.out.warnings[c];
         if (w.frames++ == 0) w.first = std::move(said);

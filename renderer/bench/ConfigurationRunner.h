@@ -61,6 +61,12 @@ struct RunnerTimings {
     std::map<int, FrameWarnings> warnings;
     // Each pass's statistics line (PassRecord::stats) of each configuration's last counted frame.
     std::map<int, std::map<std::string, std::string>> stats;
+    // Each configuration's peak GPU memory over its counted frames, in bytes:
+    // the largest its session's pipeline held (gl/MemoryDomain.h; logical
+    // bytes, gl/MemoryLedger.h), the peak started afresh before each counted
+    // frame, so what an earlier configuration's frame graph held is given
+    // back by the warm-up frame after a switch. Exact: the same run gives the same.
+    std::map<int, std::size_t> memoryPeak;
     double seconds = 0.0;
 };
 

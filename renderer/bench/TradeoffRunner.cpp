@@ -89,6 +89,7 @@ TradeoffRunner::TradeoffRunner(TradeoffOptions options) : o_(std::move(options))
 void TradeoffRunner::checkOptions() const {
     if (o_.frames < 1) throw Error("tradeoff needs at least one counted frame per point and camera");
     if (o_.orbit > 0 && o_.walkthrough) throw Error("--orbit and --walkthrough are two camera paths; pick one");
+    if (o_.orbitDegrees != 360.0 && o_.orbit == 0) throw Error("--orbit-degrees is the arc of --orbit N's cameras; give --orbit");
     gpuOutput(o_.buffer);
     if (!o_.mask.empty() && o_.mask != "shadow_edges")
         throw Error("--mask: expected shadow_edges, got '" + o_.mask + "'");
@@ -101,8 +102,13 @@ void TradeoffRunner::checkOptions() const {
     if (!TradeoffTable::isCost(o_.cost))
         throw Error("--cost: expected one of " + TradeoffTable::costNames() + ", got '" + o_.cost + "'");
     const auto& metrics = ImageError::metrics();
-    if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end())
-        throw Error("--metric: expected flip, rms, psnr or ssim, got '" + o_.metric + "'");
+    if (std::find(metrics.begin(), metrics.end(), o_.metric) == metrics.end() && o_.metric != "temporal")
+        throw Error("--metric: expected flip, rms, psnr, ssim or temporal, got '" + o_.metric + "'");
+    if (o_.metric == "temporal" && o_.orbit < 2 && !o_.walkthrough)
+        throw Error("--metric temporal measures the change from frame to frame along a camera path: give --orbit N "
+                    "(N >= 2) or --walkthrough (a camera.path of 2 or more keyframes)");
+    if (o_.metric == "temporal" && !o_.mask.empty())
+        throw Error("--mask applies to an image's error, not to --metric temporal");
     o_.run.validate();
 }
 
@@ -175,7 +181,7 @@ void TradeoffRunner::placeCameras() {
         const CameraPath path = CameraPath::keyframes(base, scene_.cameraPath);
         for (const auto& k : scene_.cameraPath) cameras_.push_back(path.atTime(k.time));
     } else if (o_.orbit > 0) {
-        const CameraPath path = CameraPath::orbit(base, o_.orbit);
+        const CameraPath path = CameraPath::orbit(base, o_.orbit, o_.orbitDegrees);
         for (int k = 0; k < o_.orbit; ++k) cameras_.push_back(path.at(k, o_.orbit));
     } else {
         cameras_.push_back(base);
@@ -485,7 +491,8 @@ void meanCounts(TradeoffRow& all, const std::vector<TradeoffRow>& rows, size_t f
 // Stage 4: the table, per (point, camera), then per point over every camera,
 // and its Pareto front. Throws Error when no row has an error.
 void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, const Errors& errors,
-                              std::vector<std::string>& notes, const BenchProgress& say) const {
+                              const std::vector<ErrorEstimate>& pathErrors, std::vector<std::string>& notes,
+                              const BenchProgress& say) const {
     const int cameraCount = static_cast<int>(cameras_.size());
     for (const auto& a : o_.sweep.axes) t.axes.push_back(a.name);
     std::map<int, std::map<std::string, std::vector<double>>> ms;  // config -> series -> GPU ms
@@ -537,6 +544,7 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             addConfig(data.back(), config, c);
             fillTimes(row, t.passes, ms[config], o_.resamples, pointSeed(p, c) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, c) + 1);
+            row.gpuMemPeakMib = gpuMemPeakMib(timings.samples, config);
             std::string differs;
             fillCounts(row, t.passes, counts[config], differs);
             if (!differs.empty()) {
@@ -549,13 +557,21 @@ void TradeoffRunner::tabulate(TradeoffTable& t, const RunnerTimings& timings, co
             t.rows.push_back(std::move(row));
         }
         if (cameraCount > 1) {
-            const ErrorEstimate e = ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
-            noteMissingCameras(p, values, notes, say);
+            // The path's temporal error (its frame pairs the "tiles" the front resamples), or the mean over cameras.
+            const bool path = !pathErrors.empty();
+            const ErrorEstimate e =
+                path ? pathErrors[p] : ImageError::meanOver(values, o_.resamples, pointSeed(p, cameraCount));
+            if (!path) noteMissingCameras(p, values, notes, say);
             TradeoffRow row = newRow(p, TradeoffTable::kAllCameras, e);
             for (int c = 0; c < cameraCount; ++c) addConfig(data.back(), static_cast<int>(p) * cameraCount + c, c);
+            if (path && !std::isnan(e.value)) data.back().tiles[0] = &pathErrors[p].tiles;
             fillTimes(row, t.passes, pooled, o_.resamples, pointSeed(p, cameraCount) + 1);
             fillRankedTime(row, data.back(), o_.resamples, pointSeed(p, cameraCount) + 1);
             meanCounts(row, t.rows, firstRow, t.passes.size());
+            for (size_t k = firstRow; k < t.rows.size(); ++k)
+                if (!std::isnan(t.rows[k].gpuMemPeakMib))
+                    row.gpuMemPeakMib = std::isnan(row.gpuMemPeakMib) ? t.rows[k].gpuMemPeakMib
+                                                                      : std::max(row.gpuMemPeakMib, t.rows[k].gpuMemPeakMib);
             t.rows.push_back(std::move(row));
         }
     }
@@ -707,9 +723,14 @@ TradeoffResult TradeoffRunner::run(const TradeoffReference& reference, const Ben
 
     const auto errorStart = Clock::now();
     std::vector<std::string> notes;
-    const Errors errors = captureErrors(session, runner, reference, notes, progress);
+    const bool temporal = o_.metric == "temporal";
+    const Errors errors = temporal ? Errors(points_.size(), std::vector<ErrorEstimate>(static_cast<size_t>(cameraCount),
+                                                                                          ErrorEstimate{kNaN, kNaN, kNaN, {}}))
+                                   : captureErrors(session, runner, reference, notes, progress);
+    const std::vector<ErrorEstimate> pathErrors =
+        temporal ? capturePathErrors(session, runner, reference, notes, progress) : std::vector<ErrorEstimate>{};
     result.errorSeconds = seconds(errorStart);
-    tabulate(result.table, timings, errors, notes, progress);
+    tabulate(result.table, timings, errors, pathErrors, notes, progress);
     if (o_.budgetMs != 0.0 && !result.table.rows.empty())
         result.pick = BudgetPicker::pick(result.table, o_.budgetMs, BudgetPicker::shownCamera(result.table));
     if (o_.budget != 0.0 && !result.table.rows.empty())

@@ -50,7 +50,11 @@ struct TradeoffOptions {
     TradeoffSweep sweep;
     int frames = 5, warmup = 1, block = 1;
     int orbit = 0;             // > 0: this many cameras on an orbit about the run's camera
+    double orbitDegrees = 360;  // the arc the orbit's cameras span, orbitDegrees / orbit apart (CameraPath::orbit)
     bool walkthrough = false;  // the scene's camera.path keyframes as the cameras
+    // rms, flip, psnr, ssim (ImageError), or temporal: the temporal error
+    // (renderer/metrics/TemporalError.h) of the path's frames rendered in order,
+    // on the "all" row (a camera's row has none); needs --orbit N >= 2 or --walkthrough.
     std::string metric = "rms";
     std::string buffer = "final";
     // "" or "shadow_edges": the error over the pixels within 2 px of an edge of
@@ -140,8 +144,14 @@ private:
                             std::map<std::string, FloatImage>& rendered) const;
     Errors captureErrors(RenderSession& session, ConfigurationRunner& runner, const TradeoffReference& reference,
                          std::vector<std::string>& notes, const BenchProgress& say) const;
+    // --metric temporal: per point, the path's frames rendered in order against
+    // the reference's (TradeoffTemporal.cpp); the point's temporal error.
+    std::vector<ErrorEstimate> capturePathErrors(RenderSession& session, ConfigurationRunner& runner,
+                                                 const TradeoffReference& reference, std::vector<std::string>& notes,
+                                                 const BenchProgress& say) const;
     void tabulate(TradeoffTable& table, const RunnerTimings& timings, const Errors& errors,
-                  std::vector<std::string>& notes, const BenchProgress& say) const;
+                  const std::vector<ErrorEstimate>& pathErrors, std::vector<std::string>& notes,
+                  const BenchProgress& say) const;
     void noteMissingCameras(size_t point, const std::vector<double>& values, std::vector<std::string>& notes,
                             const BenchProgress& say) const;
     std::string frontTimeText() const;

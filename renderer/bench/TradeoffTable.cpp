@@ -23,11 +23,13 @@ namespace {
 
 const char* const kMiddle[] = {"metric",  "buffer",       "error",           "error_lo",       "error_hi",
                                "frames",  "frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi"};
-const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim"};
+const char* const kMetrics[] = {"flip", "rms", "psnr", "ssim", "temporal"};
 // After pareto (a CSV written before them ends at pareto).
 const char* const kTail[] = {"time", "time_ms", "time_ms_lo", "time_ms_hi", "front", "dominated_by", "tied_with", "pick"};
 const char* const kFronts[] = {"", "pareto", "indistinguishable", "dominated"};
 const char* const kPicks[] = {"", "pick", "tied", "fits", "over"};
+// After pick; a CSV written before it has none.
+const char* const kMemoryColumn = "gpu_mem_peak_mib";
 const std::string kPassPrefix = "gpu_ms.";
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -55,7 +57,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-TradeoffRow::TradeoffRow() { frameCounts.fill(kNaN); }
+TradeoffRow::TradeoffRow() : gpuMemPeakMib(kNaN) { frameCounts.fill(kNaN); }
 
 std::string TradeoffTable::axisValue(const TradeoffRow& row, const std::string& axis) const {
     for (size_t i = 0; i < axes.size() && i < row.axisValues.size(); ++i)
@@ -281,6 +283,7 @@ std::vector<std::string> TradeoffTable::columns(const std::vector<std::string>& 
     }
     c.push_back("pareto");
     c.insert(c.end(), std::begin(kTail), std::end(kTail));
+    c.push_back(kMemoryColumn);
     return c;
 }
 
@@ -309,7 +312,7 @@ std::string TradeoffTable::csv() const {
         for (size_t k = 0; k < r.dominatedBy.size(); ++k) out << (k ? " " : "") << r.dominatedBy[k];
         out << ",";
         for (size_t k = 0; k < r.tiedWith.size(); ++k) out << (k ? " " : "") << r.tiedWith[k].first << ":" << r.tiedWith[k].second;
-        out << "," << r.pick << "\n";
+        out << "," << r.pick << "," << number(r.gpuMemPeakMib) << "\n";
     }
     return out.str();
 }
@@ -327,6 +330,7 @@ struct CsvLayout {
     size_t cameraCol = 0, middle = 0, passStart = 0, countStart = 0, paretoCol = 0;
     std::vector<std::string> passes;  // the gpu_ms.<pass> columns' passes
     bool tail = false;  // the columns after pareto (time ... pick); a CSV written before them has none
+    bool memory = false;  // gpu_mem_peak_mib after pick; a CSV written before it has none
 };
 
 // The counters' columns between the passes' gpu_ms.<pass> and pareto: each
@@ -383,7 +387,10 @@ CsvLayout parseHeader(const std::string& line, const std::string& path, const st
             if (header[k] != name) throw at(k, "expected the column '" + std::string(name) + "', got '" + header[k] + "'");
             ++k;
         }
-        if (k != header.size()) throw at(k, "expected no column after 'pick', got '" + header[k] + "'");
+        l.memory = k < header.size() && header[k] == kMemoryColumn;
+        if (l.memory) ++k;
+        if (k != header.size())
+            throw at(k, "expected no column after 'pick' but " + std::string(kMemoryColumn) + ", got '" + header[k] + "'");
     }
     for (; col < l.paretoCol && header[col] != PassCounts::name(0); ++col) {
         if (header[col].rfind(kPassPrefix, 0) != 0 || header[col].size() == kPassPrefix.size())
@@ -433,7 +440,7 @@ TradeoffRow parseRow(const std::vector<std::string>& f, int lineNo, const CsvLay
     r.camera = named(l.cameraCol);
     r.metric = named(l.middle);
     if (std::find(std::begin(kMetrics), std::end(kMetrics), r.metric) == std::end(kMetrics))
-        throw at(l.middle, "metric: expected flip, rms, psnr or ssim, got '" + r.metric + "'");
+        throw at(l.middle, "metric: expected flip, rms, psnr, ssim or temporal, got '" + r.metric + "'");
     r.buffer = named(l.middle + 1);
     r.error = real(l.middle + 2, false);
     r.errorLo = real(l.middle + 3, false);
@@ -509,6 +516,13 @@ void parseTail(const std::vector<std::string>& f, int lineNo, const CsvLayout& l
         r.dominatedBy.push_back(point);
     r.tiedWith = pointsField(f[c + 6], {"time", "error", "both"}, [&](const std::string& w) { return at(c + 6, "tied_with: " + w); });
     r.pick = oneOf(c + 7, kPicks);
+    if (l.memory && !f[c + 8].empty()) {
+        double v = 0.0;
+        auto [p, ec] = std::from_chars(f[c + 8].data(), f[c + 8].data() + f[c + 8].size(), v);
+        if (ec != std::errc() || p != f[c + 8].data() + f[c + 8].size() || !(std::isfinite(v) && v >= 0.0))
+            throw at(c + 8, header[c + 8] + ": expected MiB (a finite number, at least 0) or nothing, got '" + f[c + 8] + "'");
+        r.gpuMemPeakMib = v;
+    }
     for (const auto& [point, axes] : r.tiedWith) {  // what a CSV keeps of the ties (not the dominated points')
         if (axes != "time") r.errorTies.push_back(point);
         if (axes != "error") r.timeTies.push_back(point);

@@ -45,6 +45,10 @@
 //                              apart from, each with the axes: "1:error 3:both"
 //   pick                       with a budget (BudgetPick): pick | tied (fits, not
 //                              told apart from the pick in error) | fits | over; else empty
+//   gpu_mem_peak_mib           the point's peak GPU memory over its counted frames,
+//                              MiB (bytes / 2^20, exact; logical bytes, gl/MemoryLedger.h;
+//                              an "all" row: the largest over the cameras); empty:
+//                              not measured. A CSV written before it (ending at pick) still reads
 // The front's cost axis is the time (time_ms) or, with --cost, a counter of
 // the time's span (costOf; exact: only the error is tested). How the front
 // and dominance are decided: ConfidentFront.h. A CSV written without the
@@ -86,6 +90,7 @@ struct TradeoffRow {
     std::vector<int> dominatedBy;                           // point numbers
     std::vector<std::pair<int, std::string>> tiedWith;      // point number, "time" | "error" | "both"
     std::string pick;                                       // pick | tied | fits | over | ""
+    double gpuMemPeakMib = 0.0;                             // NaN: not measured
     // Not in the CSV: the points of its group it cannot be told apart from in
     // error, in time (dominated ones too; BudgetPick and frontSummary read them).
     std::vector<int> errorTies, timeTies;

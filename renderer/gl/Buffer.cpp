@@ -16,6 +16,7 @@ Buffer Buffer::create(std::size_t bytes, const void* data, bool dynamic, const c
     b.dynamic_ = dynamic;
     glNamedBufferStorage(id, static_cast<GLsizeiptr>(b.size_), bytes ? data : nullptr,
                          dynamic ? GL_DYNAMIC_STORAGE_BIT : 0);
+    b.ticket_ = LedgerTicket(MemoryLedger::instance().add("buffer", id, b.size_));
     if (label) glObjectLabel(GL_BUFFER, id, -1, label);
     return b;
 }

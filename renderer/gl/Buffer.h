@@ -1,9 +1,12 @@
 #pragma once
 // Immutable-storage buffer object (vertex, index, uniform or storage data).
+// Its bytes are counted in the MemoryLedger under the MemoryOwner in scope
+// when it is created (ensureSize's re-creation: again, under today's owner).
 #include <cstddef>
 #include <vector>
 
 #include "renderer/gl/GlObject.h"
+#include "renderer/gl/MemoryLedger.h"
 
 namespace dw::gl {
 
@@ -31,6 +34,7 @@ public:
 
 private:
     GlObject<BufferTraits> name_;
+    LedgerTicket ticket_;
     std::size_t size_ = 0;
     bool dynamic_ = false;
 };

@@ -41,6 +41,7 @@ int Texture::fullMipCount(int width, int height) {
 Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
     Texture t = named(GL_TEXTURE_2D, internalFormat, width, height, levels, 1);
     glTextureStorage2D(t.id(), t.levels_, internalFormat, t.width_, t.height_);
+    t.count();
     const bool mips = t.levels_ > 1;
     t.setFilter(mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     t.setWrap(GL_CLAMP_TO_EDGE);
@@ -56,12 +57,14 @@ Texture Texture::create2DMultisample(GLenum internalFormat, int width, int heigh
     Texture t = named(GL_TEXTURE_2D_MULTISAMPLE, internalFormat, width, height, 1, 1);
     t.samples_ = samples;
     glTextureStorage2DMultisample(t.id(), samples, internalFormat, t.width_, t.height_, GL_TRUE);
+    t.count();
     return t;
 }
 
 Texture Texture::createCube(GLenum internalFormat, int size, int levels) {
     Texture t = named(GL_TEXTURE_CUBE_MAP, internalFormat, size, size, levels, 1);
     glTextureStorage2D(t.id(), t.levels_, internalFormat, t.width_, t.height_);
+    t.count();
     t.setFilter(t.levels_ > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     t.setWrap(GL_CLAMP_TO_EDGE);
     if (t.isDepth()) t.setFilter(GL_NEAREST, GL_NEAREST);
@@ -71,6 +74,7 @@ Texture Texture::createCube(GLenum internalFormat, int size, int levels) {
 Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int layers) {
     Texture t = named(target, internalFormat, size, size, 1, layers);
     glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
+    t.count();
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);
     return t;
@@ -79,6 +83,7 @@ Texture Texture::createArray(GLenum target, GLenum internalFormat, int size, int
 Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers, int levels) {
     Texture t = named(GL_TEXTURE_2D_ARRAY, internalFormat, width, height, levels, layers);
     glTextureStorage3D(t.id(), t.levels_, internalFormat, t.width_, t.height_, t.layers_);
+    t.count();
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);
     if (t.hasStencil()) glTextureParameteri(t.id(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
@@ -88,6 +93,7 @@ Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int
 Texture Texture::create3D(GLenum internalFormat, int width, int height, int depth) {
     Texture t = named(GL_TEXTURE_3D, internalFormat, width, height, 1, depth);
     glTextureStorage3D(t.id(), 1, internalFormat, t.width_, t.height_, t.layers_);
+    t.count();
     t.setFilter(GL_NEAREST, GL_NEAREST);
     t.setWrap(GL_CLAMP_TO_EDGE);
     return t;
@@ -114,6 +120,11 @@ Texture Texture::createView(const Texture& source, GLenum target, int firstLayer
     t.levels_ = source.levels_;
     t.layers_ = layers;
     return t;
+}
+
+void Texture::count() {
+    ticket_ = LedgerTicket(MemoryLedger::instance().add(
+        "texture", id(), textureStorageBytes(target_, format_, width_, height_, layers_, levels_, samples_)));
 }
 
 int Texture::width(int level) const { return std::max(width_ >> level, 1); }

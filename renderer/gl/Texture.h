@@ -1,10 +1,14 @@
 #pragma once
 // Immutable-storage OpenGL texture (2D, 2D multisample, cube map) with
 // direct-state-access helpers for upload, sampling state and read-back.
+// Each storage allocation is counted in the MemoryLedger (logical bytes,
+// textureStorageBytes) under the MemoryOwner in scope; views and buffer
+// textures own no storage and are not counted.
 #include <cstdint>
 #include <vector>
 
 #include "renderer/gl/GlObject.h"
+#include "renderer/gl/MemoryLedger.h"
 
 namespace dw::gl {
 
@@ -64,7 +68,10 @@ private:
     // A new texture name for `target` with its description filled in (sizes
     // at least 1); the caller allocates the storage.
     static Texture named(GLenum target, GLenum internalFormat, int width, int height, int levels, int layers);
+    // Counts this texture's storage in the ledger (after glTextureStorage*).
+    void count();
     GlObject<TextureTraits> name_;
+    LedgerTicket ticket_;
     GLenum target_ = GL_TEXTURE_2D;
     GLenum format_ = 0;
     int width_ = 0, height_ = 0, levels_ = 0, samples_ = 0, layers_ = 1;

@@ -8,6 +8,8 @@
 #include <set>
 
 #include "renderer/Error.h"
+#include "renderer/gl/MemoryDomain.h"
+#include "renderer/gl/MemoryLedger.h"
 #include "renderer/graph/RenamedOutputs.h"
 #include "renderer/gl/FullscreenTriangle.h"
 #include "renderer/gl/ShaderLibrary.h"
@@ -161,12 +163,22 @@ RenderPass* Pipeline::findPass(const std::string& name) const {
 
 void Pipeline::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
-    for (auto& p : passes_) p->setup(shaders);
+    // What this pipeline allocates is its own ledger domain (bench's peak per configuration).
+    gl::resetDomainPeak(this);
+    gl::MemoryDomain domain(this);
+    for (auto& p : passes_) {
+        // What a pass allocates for itself is counted under its name unless
+        // it names a finer owner (gl/MemoryLedger.h).
+        gl::MemoryOwner owner(std::string("pass ") + p->name());
+        p->setup(shaders);
+    }
+    gl::MemoryOwner owner("camera uniforms");
     cameraUbo_.create();
 }
 
 void Pipeline::setScene(const Scene& scene) {
     // Build the new GPU copy aside, so a failure keeps the previous scene.
+    gl::MemoryDomain domain(this);
     GpuScene next;
     next.upload(scene);
     gpu_ = std::move(next);
@@ -185,8 +197,12 @@ void Pipeline::resize(int width, int height) {
     if (width == width_ && height == height_) return;
     width_ = width;
     height_ = height;
+    gl::MemoryDomain domain(this);
     // Managed outputs follow the size at the next frame; imported ones now.
-    for (auto& p : passes_) p->resize(width, height, outputs_);
+    for (auto& p : passes_) {
+        gl::MemoryOwner owner(std::string("pass ") + p->name());
+        p->resize(width, height, outputs_);
+    }
 }
 
 CameraUniforms Pipeline::cameraUniforms(const Camera& camera, int width, int height, DepthMode depthMode,
@@ -423,6 +439,7 @@ void Pipeline::chooseSampling() {
 FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) {
     if (!shaders_ || !scene_) throw Error("Pipeline::render before setup() and setScene()");
     if (width_ <= 0) throw Error("Pipeline::render before resize()");
+    gl::MemoryDomain domain(this);
     FrameReport report;
     report.frameIndex = frame_;
     // How the frame is sampled (SSAA's scale, TAA's jitter), then the camera:
@@ -460,6 +477,7 @@ FrameReport Pipeline::render(const Camera& camera, const FrameRequest& request) 
             glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, p.name());
             timer_.beginPass(p.name());
             try {
+                gl::MemoryOwner owner(std::string("pass ") + p.name());
                 p.execute(ctx);
             } catch (...) {
                 glPopDebugGroup();

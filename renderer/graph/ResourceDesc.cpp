@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "renderer/gl/MemoryLedger.h"
+#include "renderer/gl/Texture.h"
+
 namespace dw {
 
 const char* toString(ResourceKind kind) {
@@ -54,17 +57,14 @@ ResourceDesc bufferFixed(std::size_t bytes, std::size_t stride) {
 ResourceDesc imported() { return ResourceDesc{}; }
 
 namespace {
-std::size_t texelBytes(GLenum format) {
-    switch (format) {
-        case GL_R8: case GL_R8UI: return 1;
-        case GL_R16F: case GL_RG8: case GL_RG8_SNORM: case GL_R16UI: case GL_DEPTH_COMPONENT16: return 2;
-        case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_RG16_SNORM:
-        case GL_R11F_G11F_B10F: case GL_DEPTH_COMPONENT32F: case GL_DEPTH_COMPONENT24: case GL_DEPTH24_STENCIL8:
-        case GL_RGB10_A2: return 4;
-        case GL_DEPTH32F_STENCIL8: return 5;
-        case GL_RGBA16F: case GL_RG32F: case GL_RGBA16: return 8;
-        case GL_RGBA32F: case GL_RGBA32UI: return 16;
-        default: return 4;
+GLenum glTarget(ResourceKind kind) {
+    switch (kind) {
+        case ResourceKind::Texture2DMultisample: return GL_TEXTURE_2D_MULTISAMPLE;
+        case ResourceKind::Texture2DArray: return GL_TEXTURE_2D_ARRAY;
+        case ResourceKind::TextureCube: return GL_TEXTURE_CUBE_MAP;
+        case ResourceKind::TextureCubeArray: return GL_TEXTURE_CUBE_MAP_ARRAY;
+        case ResourceKind::Texture3D: return GL_TEXTURE_3D;
+        default: return GL_TEXTURE_2D;
     }
 }
 }  // namespace
@@ -74,13 +74,15 @@ std::size_t resourceBytes(const ResourceDesc& d, int fw, int fh) {
     const int h = d.size == SizeMode::Frame ? std::max(fh >> d.shift, 1) : d.height;
     if (d.kind == ResourceKind::Buffer)
         return d.size == SizeMode::Frame ? d.bytes * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) : d.bytes;
-    std::size_t level0 = texelBytes(d.format) * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) *
-                         static_cast<std::size_t>(std::max(d.samples, 1));
-    if (d.kind == ResourceKind::Texture2DArray || d.kind == ResourceKind::TextureCubeArray || d.kind == ResourceKind::Texture3D)
-        level0 *= static_cast<std::size_t>(std::max(d.layers, 1));
-    if (d.kind == ResourceKind::TextureCube) level0 *= 6;
-    // A mip chain adds at most a third.
-    return d.levels == 1 ? level0 : level0 + level0 / 3;
+    int levels = d.levels;
+    if (levels == 0) {
+        levels = gl::Texture::fullMipCount(w, h);
+        if (d.maxLevels > 0) levels = std::min(levels, d.maxLevels);
+    }
+    const int layers = d.kind == ResourceKind::TextureCube ? 1 : d.layers;
+    const int samples = d.kind == ResourceKind::Texture2DMultisample ? d.samples : 1;
+    // The ledger's arithmetic (gl/MemoryLedger.h): every level exactly.
+    return gl::textureStorageBytes(glTarget(d.kind), d.format, w, h, layers, levels, samples);
 }
 
 std::string describe(const ResourceDesc& d, int fw, int fh) {

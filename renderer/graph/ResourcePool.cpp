@@ -5,6 +5,7 @@
 #include "renderer/Error.h"
 #include "renderer/graph/OutputRegistry.h"
 #include "renderer/graph/RenderPass.h"
+#include "renderer/gl/MemoryLedger.h"
 
 namespace dw {
 
@@ -31,6 +32,7 @@ const ResourcePool::Entry& ResourcePool::acquire(const std::string& name, const 
     if (it != entries_.end() && it->second.desc == r) return it->second;
     Entry e;
     e.desc = r;
+    gl::MemoryOwner owner("frame graph: " + name);
     e.serial = nextSerial_++;
     switch (r.kind) {
         case ResourceKind::Texture2D: e.texture = gl::Texture::create2D(r.format, r.width, r.height, r.levels); break;
@@ -94,7 +96,11 @@ const ResourcePool::Entry* ResourcePool::find(const std::string& name) const {
 
 std::vector<ResourceRecord> ResourcePool::list() const {
     std::vector<ResourceRecord> out;
-    for (const auto& [name, e] : entries_) out.push_back({name, e.desc, resourceBytes(e.desc, e.desc.width, e.desc.height)});
+    for (const auto& [name, e] : entries_) {
+        // A buffer as created (at least 16 bytes); a texture by its descriptor.
+        const std::size_t bytes = e.buffer ? e.buffer.size() : resourceBytes(e.desc, e.desc.width, e.desc.height);
+        out.push_back({name, e.desc, bytes});
+    }
     return out;
 }
 

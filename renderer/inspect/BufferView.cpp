@@ -1,4 +1,5 @@
 #include "renderer/inspect/BufferView.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include "renderer/Error.h"
 #include "renderer/scene/GpuScene.h"
@@ -44,6 +45,7 @@ void BufferView::setup(gl::ShaderLibrary& shaders) {
         for (auto& p : kind) p = {};
     programs(Source2D, 0);  // the common case now, so its errors show at start-up
     minmaxNext_ = shaders.get({.compute = "bufferview/minmax.comp"});
+    gl::MemoryOwner owner("buffer view");
     params_.create();
 }
 
@@ -84,6 +86,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     const ResourceKind kind = resourceKind(output);
     const int w = layout.width, h = layout.height;
     if (!target_ || target_.width() != w || target_.height() != h) {
+        gl::MemoryOwner owner("buffer view");
         target_ = gl::Texture::create2D(GL_RGBA8, w, h);
         target_.setFilter(GL_NEAREST, GL_NEAREST);
         fbo_ = gl::Framebuffer::forColor(target_, "buffer view");
@@ -157,6 +160,7 @@ const gl::Texture& BufferView::render(const PublishedOutput& output, const Buffe
     if (autoRange) {
         const size_t tiles = static_cast<size_t>((w + 15) / 16) * ((h + 15) / 16);
         if (ping_.size() < tiles * sizeof(RangeGpu)) {
+            gl::MemoryOwner owner("buffer view");
             ping_ = gl::Buffer::create(tiles * sizeof(RangeGpu), nullptr, false, "view range A");
             pong_ = gl::Buffer::create(tiles * sizeof(RangeGpu), nullptr, false, "view range B");
         }

@@ -1,4 +1,5 @@
 #include "renderer/inspect/ForwardPreview.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include "renderer/scene/GpuScene.h"
 #include "renderer/gl/FullscreenTriangle.h"
@@ -11,6 +12,7 @@ void ForwardPreview::setup(gl::ShaderLibrary& shaders) {
 
 const gl::Texture& ForwardPreview::render(const GpuScene& gpu, int width, int height, Mode mode, DepthConvention depth) {
     if (!color_ || color_.width() != width || color_.height() != height) {
+        gl::MemoryOwner owner("forward preview");
         color_ = gl::Texture::create2D(GL_RGBA8, width, height);
         depth_ = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, width, height);
         fbo_ = gl::Framebuffer::create("forward preview");

@@ -1,4 +1,5 @@
 #include "renderer/inspect/OutputReadback.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -378,6 +379,7 @@ std::vector<glm::vec4> readSamples(const gl::Texture& t, int x, int y, int width
     const int variant = isUnsignedIntegerFormat(t.internalFormat()) ? 1 : isSignedIntegerFormat(t.internalFormat()) ? 2 : 0;
     const gl::Program& p = samplesProgram(variant);
     const size_t count = static_cast<size_t>(width) * height * n;
+    gl::MemoryOwner owner("sample read-back");
     gl::Buffer out = gl::Buffer::create(count * sizeof(glm::vec4), nullptr, false, "sample read-back");
     p.use();
     p.set(0, glm::ivec2(x, y));

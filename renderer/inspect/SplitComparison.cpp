@@ -1,4 +1,5 @@
 #include "renderer/inspect/SplitComparison.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,7 @@ namespace dw {
 
 void SplitComparison::upload(gl::Texture& texture, const FloatImage& image) {
     if (!texture || texture.width() != image.width || texture.height() != image.height) {
+        gl::MemoryOwner owner("split comparison");
         texture = gl::Texture::create2D(GL_RGBA8, image.width, image.height);
         texture.setFilter(GL_LINEAR, GL_NEAREST);
     }

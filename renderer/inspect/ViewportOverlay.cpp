@@ -1,4 +1,5 @@
 #include "renderer/inspect/ViewportOverlay.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,7 @@ bool inSubset(const OverlaySettings& s, size_t light) {
 
 void ViewportOverlay::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "overlay/lines.vert", .fragment = "overlay/lines.frag"});
+    gl::MemoryOwner owner("viewport overlay");
     for (int k = 0; k <= kMaxSphereSubdivisions; ++k) sphere_[k].create(unitSphereVolume(k));
     cone_.create(unitConeVolume());
     lines_ = gl::Buffer::create(4096 * sizeof(glm::vec3), nullptr, true, "overlay lines");
@@ -36,6 +38,7 @@ glm::vec4 ViewportOverlay::lightColor(const glm::vec3& intensity, bool selected)
 
 void ViewportOverlay::drawLines(const std::vector<glm::vec3>& points, const glm::mat4& mvp, const glm::vec4& color) {
     if (points.empty()) return;
+    gl::MemoryOwner owner("viewport overlay");
     lines_.ensureSize(points.size() * sizeof(glm::vec3), "overlay lines");
     lines_.update(0, points.size() * sizeof(glm::vec3), points.data());
     linesVao_.setVertexBuffer(0, lines_, 0, sizeof(glm::vec3));
@@ -51,6 +54,7 @@ const gl::Texture& ViewportOverlay::compose(const gl::Texture& base, const gl::T
     // The depth copy in the scene depth's format (gbuffer.depth_format).
     const GLenum depthFormat = depth && depth->internalFormat() == GL_DEPTH24_STENCIL8 ? GL_DEPTH24_STENCIL8 : GL_DEPTH32F_STENCIL8;
     if (!color_ || color_.width() != w || color_.height() != h || depth_.internalFormat() != depthFormat) {
+        gl::MemoryOwner owner("viewport overlay");
         color_ = gl::Texture::create2D(GL_RGBA8, w, h);
         color_.setFilter(GL_NEAREST, GL_NEAREST);
         depth_ = gl::Texture::create2D(depthFormat, w, h);

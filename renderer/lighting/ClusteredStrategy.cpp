@@ -1,4 +1,5 @@
 #include "renderer/lighting/ClusteredStrategy.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,7 @@ std::vector<OutputDecl> ClusteredStrategy::outputs() const {
 void ClusteredStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
     loopLimit_ = gl::shaderLoopIterationLimit();
+    gl::MemoryOwner owner("light lists");
     candidates_.create();
     ranges_ = gl::Buffer::create(16, nullptr, true, "cluster ranges");
     rangesTexture_ = gl::Texture::createBuffer(GL_RGBA32UI);
@@ -127,6 +129,7 @@ ClusteredStrategy::Grid ClusteredStrategy::build(LightingFrame& f, const LightLi
                     static_cast<std::size_t>(s1 - s0 + 1);
     }
 
+    gl::MemoryOwner owner("light lists");
     lists.upload(candidates_, f.table);
     ranges_.ensureSize(ranges.size() * sizeof(glm::uvec4), "cluster ranges");
     ranges_.update(0, ranges.size() * sizeof(glm::uvec4), ranges.data());

@@ -1,4 +1,5 @@
 #include "renderer/lighting/ForwardStrategy.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <array>
@@ -87,6 +88,7 @@ void ForwardStrategy::setup(gl::ShaderLibrary& shaders) {
     loopLimit_ = gl::shaderLoopIterationLimit();
     program_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag"});
     countingProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "lighting/forward.frag", .defines = {"COUNT_OVERLAP"}});
+    gl::MemoryOwner owner("light lists");
     indices_ = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "forward light indices");
 }
 
@@ -111,6 +113,7 @@ StrategyCounts ForwardStrategy::shade(LightingFrame& f) {
     const ForwardLightLists lists = ForwardLightLists::build(f.ctx.gpu, listed, &worldToClip);
     lastPairs_ = lists.rows.size();
     if (lists.rows.empty()) return c;
+    gl::MemoryOwner owner("light lists");
     indices_.ensureSize(lists.rows.size() * sizeof(std::uint32_t), "forward light indices");
     indices_.update(0, lists.rows.size() * sizeof(std::uint32_t), lists.rows.data());
     indices_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_CANDIDATES_SSBO);

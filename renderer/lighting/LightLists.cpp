@@ -1,4 +1,5 @@
 #include "renderer/lighting/LightLists.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <string>
 
@@ -41,6 +42,7 @@ LightLists LightLists::split(const LightingFrame& frame) {
 }
 
 void CandidateBuffers::create() {
+    gl::MemoryOwner owner("light lists");
     rows = gl::Buffer::create(sizeof(std::uint32_t), nullptr, true, "lighting candidates");
     data = gl::Buffer::create(sizeof(glm::vec4) * 4, nullptr, true, "lighting candidate data");
     dataTexture = gl::Texture::createBuffer(GL_RGBA32F);
@@ -49,6 +51,7 @@ void CandidateBuffers::create() {
 
 void LightLists::upload(CandidateBuffers& buffers, const LightTable& table) const {
     const std::size_t n = std::max<std::size_t>(rows.size(), 1);
+    gl::MemoryOwner owner("light lists");
     buffers.rows.ensureSize(n * sizeof(std::uint32_t), "lighting candidates");
     if (!rows.empty()) buffers.rows.update(0, rows.size() * sizeof(std::uint32_t), rows.data());
     buffers.rows.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LIGHT_CANDIDATES_SSBO);

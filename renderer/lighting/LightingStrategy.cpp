@@ -1,4 +1,5 @@
 #include "renderer/lighting/LightingStrategy.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -16,6 +17,7 @@ void LightShading::setup(gl::ShaderLibrary& shaders) {
     volumeBatch_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"VOLUME_ROW", "UNSHADOWED"}});
     volumeBatchCounting_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/light.frag", .defines = {"COUNT_OVERLAP", "VOLUME_ROW", "UNSHADOWED"}});
     stencil_ = shaders.get({.vertex = "lighting/volume.vert", .fragment = "lighting/stencil.frag"});
+    gl::MemoryOwner owner("light volume meshes");
     for (int k = 0; k <= kMaxSphereSubdivisions; ++k) sphere_[k].create(unitSphereVolume(k));
     cone_.create(unitConeVolume());
     batchVertexBuffer_ = gl::Buffer::create(sizeof(BatchVertex), nullptr, true, "light volume batch vertices");
@@ -39,6 +41,7 @@ void LightShading::uploadVolumeBatch(const LightTable& table, const std::vector<
         batchVertexStart_.push_back(static_cast<std::uint32_t>(batchVertices_.size()));
     }
     if (batchVertices_.empty()) return;
+    gl::MemoryOwner owner("light volume meshes");
     batchVertexBuffer_.ensureSize(batchVertices_.size() * sizeof(BatchVertex), "light volume batch vertices");
     batchVertexBuffer_.update(0, batchVertices_.size() * sizeof(BatchVertex), batchVertices_.data());
     batchIndexBuffer_.ensureSize(batchIndices_.size() * sizeof(std::uint32_t), "light volume batch indices");

@@ -1,4 +1,5 @@
 #include "renderer/lighting/ShadowMaps.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,7 @@ void ShadowMaps::ensure(Kind kind, int layers, int size) {
     if (maps_[kind] && layers_[kind] == layers && maps_[kind].width() == size) return;
     const GLenum target = kind == Cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY;
     const int depth = kind == Cube ? 6 * layers : (kind == Paraboloid ? 2 * layers : layers);
+    gl::MemoryOwner owner("shadow maps");
     maps_[kind] = gl::Texture::createArray(target, GL_DEPTH_COMPONENT32F, size, depth);
     maps_[kind].setLabel(kind == Map2D ? "shadow.maps" : (kind == Cube ? "shadow.cubes" : "shadow.paraboloids"));
     layers_[kind] = layers;

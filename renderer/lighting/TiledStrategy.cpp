@@ -1,4 +1,5 @@
 #include "renderer/lighting/TiledStrategy.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -108,6 +109,7 @@ void TiledStrategy::setup(gl::ShaderLibrary& shaders) {
     shaders_ = &shaders;
     cpuLanes_ = simdLanes();
     loopLimit_ = gl::shaderLoopIterationLimit();
+    gl::MemoryOwner owner("light lists");
     candidates_.create();
     coarseMask_ = gl::Buffer::create(4, nullptr, true, "tiled coarse masks");
 }
@@ -148,6 +150,7 @@ void TiledStrategy::dispatch(LightingFrame& f, const LightLists& lists, bool sha
     const GLuint coarseX = (tilesX + kCoarseTiles - 1) / kCoarseTiles;
     const GLuint coarseY = (tilesY + kCoarseTiles - 1) / kCoarseTiles;
     if (useCoarse) {
+        gl::MemoryOwner owner("light lists");
         coarseMask_.ensureSize(
             std::size_t{coarseX} * coarseY * (kMaxCandidatesPerDispatch / 32) * sizeof(std::uint32_t),
             "tiled coarse masks");

@@ -1,4 +1,5 @@
 #include "renderer/passes/BloomPass.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <glm/glm.hpp>
@@ -43,6 +44,7 @@ std::string BloomPass::skipReason(const KnobRegistry& knobs, const Scene&) const
 }
 
 void BloomPass::makeTarget(Target& t, int w, int h, int levels, const char* label) {
+    gl::MemoryOwner owner("bloom mips");
     t.texture = gl::Texture::create2D(GL_RGBA16F, std::max(w, 1), std::max(h, 1), levels);
     t.texture.setFilter(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
     t.fbo = gl::Framebuffer::forColor(t.texture, label);

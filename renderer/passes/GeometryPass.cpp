@@ -1,5 +1,8 @@
 #include "renderer/passes/GeometryPass.h"
 
+#include <cstdio>
+#include <string>
+
 #include "renderer/Error.h"
 #include "renderer/knobs/KnobRegistry.h"
 #include "renderer/lighting/LightTable.h"
@@ -36,10 +39,14 @@ GeometryPass::GeometryPass(KnobRegistry& knobs) {
         "depth.mode=reversed, whose precision float needs)",
         true);
     textureFilter_ = knobs.addEnum(
-        "gbuffer.texture_filter", {"mipmap", "base_level"}, "mipmap", "gbuffer",
-        "how the materials' textures are filtered: mipmap (trilinear, and anisotropic on a GPU, as each glTF sampler "
-        "asks: the pixel's footprint averaged) or base_level (bilinear at the full-resolution level, as the CPU "
-        "reference samples at the pixel centre: aliases where textures are minified)");
+        "gbuffer.texture_filter", {"mipmap", "base_level", "aniso2", "aniso4", "aniso8", "aniso16"}, "mipmap", "gbuffer",
+        "how the materials' textures are filtered: mipmap (trilinear mip-mapping as each "
+        "glTF sampler asks, no anisotropic filtering: the pixel's footprint as a square, so blurred where it is "
+        "long), aniso2 .. aniso16 (trilinear plus GL_TEXTURE_MAX_ANISOTROPY 2 .. 16: up to N lookups along the "
+        "footprint's long axis, sharper on oblique surfaces; capped by the device, and to 1x on llvmpipe, whose "
+        "anisotropic lookups can spin for minutes, and said) or base_level (bilinear "
+        "at the full-resolution level, as the CPU reference samples at each point: aliases where textures are "
+        "minified); mipmap and base_level mean the same on every device");
     directional_ = knobs.addBool("lighting.directional_in_gbuffer", false, "lighting",
                                  "shade the directional lights without a shadow map in the G-buffer pass, from the "
                                  "unquantised material, into gbuffer.directional, instead of one full-screen pass each "
@@ -120,6 +127,25 @@ ResourceDesc GeometryPass::resource(const OutputDecl& output, const KnobRegistry
     return d;
 }
 
+float GeometryPass::requestedAnisotropy(const std::string& textureFilter) {
+    if (textureFilter.rfind("aniso", 0) != 0) return 1.0f;
+    return std::stof(textureFilter.substr(5));
+}
+
+std::string GeometryPass::anisotropyCapLine(const std::string& textureFilter, float deviceMax, bool llvmpipe) {
+    const float want = requestedAnisotropy(textureFilter);
+    if (llvmpipe && want > 1.0f)
+        return "gbuffer.texture_filter=" + textureFilter +
+               " is capped to 1x (mipmap) on llvmpipe: its anisotropic lookups spin for minutes at a grazing angle over "
+               "a texture repeated thousands of times (Mesa 22.3)";
+    if (want <= deviceMax) return {};
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "gbuffer.texture_filter=%s is capped to %gx: the device's GL_MAX_TEXTURE_MAX_ANISOTROPY is %g",
+                  textureFilter.c_str(), static_cast<double>(deviceMax), static_cast<double>(deviceMax));
+    return line;
+}
+
 void GeometryPass::setup(gl::ShaderLibrary& shaders) {
     program_ = shaders.get({.vertex = "geometry.vert", .fragment = "geometry.frag"});
     directionalProgram_ = shaders.get({.vertex = "geometry.vert", .fragment = "geometry.frag", .defines = {"DIRECTIONAL_IN_GBUFFER"}});
@@ -151,7 +177,9 @@ void GeometryPass::execute(FrameContext& ctx) {
         if (o.name.rfind("gbuffer.ms.", 0) == 0 && ctx.wants(o.name) && !msaa(ctx.knobs))
             throw Error(o.name + " is written only with aa.method=msaa");
     // For the whole frame: the forward strategies draw the materials with the same samplers.
-    ctx.gpu.setBaseLevelFiltering(ctx.knobs.get(textureFilter_) == 1);
+    const std::string filter = ctx.knobs.choice(textureFilter_);
+    const float anisotropy = ctx.gpu.setTextureFiltering(filter == "base_level", requestedAnisotropy(filter));
+    capLine_ = anisotropyCapLine(filter, GpuScene::deviceMaxAnisotropy(), GpuScene::onLlvmpipe());
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
     drawScene(ctx, target(ctx, directional, false), directional, false);
@@ -194,6 +222,10 @@ void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool
     ctx.gpu.draw(program, GpuScene::Filter::Opaque);
     stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
     if (directional) stats_ += ", " + std::to_string(rows.size()) + " directional lights shaded";
+    char textures[128];
+    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
+                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
+    stats_ += textures;
 }
 
 }  // namespace dw

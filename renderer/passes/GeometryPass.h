@@ -37,6 +37,15 @@ public:
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
+    // The gbuffer.texture_filter cap, when there was one this frame (one line).
+    std::string frameWarning() const override { return capLine_; }
+
+    // gbuffer.texture_filter's anisotropy: 1 for mipmap and base_level, N for anisoN.
+    static float requestedAnisotropy(const std::string& textureFilter);
+    // The line that says `textureFilter` (anisoN) was capped: to 1 on
+    // llvmpipe (`llvmpipe`, with the reason: GpuScene::maxAnisotropy), else to
+    // the device's GL_MAX_TEXTURE_MAX_ANISOTROPY `deviceMax`; empty when N fits.
+    static std::string anisotropyCapLine(const std::string& textureFilter, float deviceMax, bool llvmpipe);
 
 private:
     bool msaa(const KnobRegistry& knobs) const { return knobs.get(aaMethod_) == aaMsaa_; }
@@ -52,7 +61,7 @@ private:
     EnumKnob depthFormat_;     // gbuffer.depth_format: float32, unorm24
     gl::ShaderLibrary::Handle program_, directionalProgram_;
     TargetFramebuffer target_, directionalTarget_, msTarget_, msDirectionalTarget_;
-    std::string stats_;
+    std::string stats_, capLine_;
 };
 
 }  // namespace dw

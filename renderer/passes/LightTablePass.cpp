@@ -1,4 +1,5 @@
 #include "renderer/passes/LightTablePass.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include "renderer/graph/ViewFrustum.h"
 
@@ -29,6 +30,7 @@ std::vector<OutputDecl> LightTablePass::outputs() const {
 }
 
 void LightTablePass::setup(gl::ShaderLibrary&) {
+    gl::MemoryOwner owner("light table");
     buffer_ = gl::Buffer::create(sizeof(LightGpu), nullptr, true, "lights.table");
 }
 
@@ -75,6 +77,7 @@ void LightTablePass::execute(FrameContext& ctx) {
     }
     // An empty table still binds one (unused) row.
     const std::size_t bytes = std::max<std::size_t>(table_.rows.size(), 1) * sizeof(LightGpu);
+    gl::MemoryOwner owner("light table");
     buffer_.ensureSize(bytes, "lights.table");
     if (!table_.rows.empty()) buffer_.update(0, table_.rows.size() * sizeof(LightGpu), table_.rows.data());
     table_.buffer = &buffer_;

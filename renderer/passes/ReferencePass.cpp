@@ -1,4 +1,5 @@
 #include "renderer/passes/ReferencePass.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,6 +87,7 @@ void ReferencePass::bindAll(OutputRegistry& outputs) {
 void ReferencePass::upload() {
     const Images& r = *images_;
     const int w = r.lbuffer.width, h = r.lbuffer.height;
+    gl::MemoryOwner owner("reference images");
     auto make = [&](gl::Texture& t, GLenum format, const FloatImage& img, GLenum layout) {
         t = gl::Texture::create2D(format, w, h);
         if (img.width == w && img.height == h) t.upload(0, w, h, layout, GL_FLOAT, flipped(img).data());

@@ -1,4 +1,5 @@
 #include "renderer/passes/TaaPass.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <cstdio>
 
@@ -82,8 +83,10 @@ bool TaaPass::historyUsable(const FrameContext& ctx) {
 }
 
 void TaaPass::keepHistory(const FrameContext& ctx, const glm::dmat4& unjitteredClip) {
-    if (!history_ || history_.width() != ctx.width || history_.height() != ctx.height)
+    if (!history_ || history_.width() != ctx.width || history_.height() != ctx.height) {
+        gl::MemoryOwner owner("taa history");
         history_ = gl::Texture::create2D(GL_RGBA8, ctx.width, ctx.height);
+    }
     const gl::Texture& result = ctx.texture("taa.result");
     glCopyImageSubData(result.id(), GL_TEXTURE_2D, 0, 0, 0, 0, history_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ctx.width,
                        ctx.height, 1);

@@ -490,7 +490,8 @@ Json tradeoffResultsJson(const TradeoffTable& t, const BenchFields& machine, con
                         {"frame_gpu_ms_ci95", {number(r.frameGpuMsLo), number(r.frameGpuMsHi)}}, {"gpu_ms", passes},
                         {"pareto", r.pareto}, {"time_ms", number(r.timeMs)},
                         {"time_ms_ci95", {number(r.timeMsLo), number(r.timeMsHi)}}, {"front", r.front},
-                        {"dominated_by", r.dominatedBy}, {"tied_with", tiesJson(r)}, {"pick", r.pick}});
+                        {"dominated_by", r.dominatedBy}, {"tied_with", tiesJson(r)}, {"pick", r.pick},
+                        {"gpu_mem_peak_mib", number(r.gpuMemPeakMib)}});
         if (t.counted) rows.back()["counters"] = tradeoffCountersJson(t, r);
         if (r.pareto) front.push_back({{"point", r.point}, {"camera", r.camera}});
         metrics.push_back({{"point", r.point}, {"camera", r.camera}, {"metric", r.metric}, {"buffer", r.buffer},
@@ -581,6 +582,7 @@ void readFrontFields(const F& row, TradeoffRow& r, const Optional& optional) {
     r.timeMsHi = optional(row.at("time_ms_ci95").at(1));
     if (row.has("front")) r.front = row.at("front").str();
     if (row.has("pick")) r.pick = row.at("pick").str();
+    if (row.has("gpu_mem_peak_mib")) r.gpuMemPeakMib = optional(row.at("gpu_mem_peak_mib"));
     if (row.has("dominated_by"))
         for (const F& p : row.at("dominated_by").items())
             r.dominatedBy.push_back(p.whole(OptionRange{0, std::numeric_limits<int>::max()}, "a point's index"));
@@ -692,6 +694,7 @@ Json tradeoffGridJson(const RecordedTradeoff& tradeoff) {
             {"ref_spp", tradeoff.refSpp},
             {"ref_filter", tradeoff.refFilter},
             {"orbit", o.orbit},
+            {"orbit_degrees", o.orbitDegrees},
             {"walkthrough", o.walkthrough},
             {"block", o.block},
             {"resamples", o.resamples},
@@ -928,6 +931,14 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
         if (g.has("ref_spp")) t.refSpp = g.at("ref_spp").whole(limits::kPixelSamples, "--ref-spp");
         t.refFilter = pixelFilterField(g, "ref_filter");
         if (g.has("orbit") && g.at("orbit").json() != 0) o.orbit = g.at("orbit").whole(limits::kOrbit, "--orbit");
+        // Records before --orbit-degrees: a whole turn.
+        if (g.has("orbit_degrees")) {
+            const Json& v = g.at("orbit_degrees").json();
+            o.orbitDegrees = v.is_number() ? v.get<double>() : NAN;
+            if (!limits::kOrbitDegrees.holds(o.orbitDegrees))
+                g.at("orbit_degrees").refuse("expects --orbit-degrees' value (above 0, at most 360), got " +
+                                             g.at("orbit_degrees").shown());
+        }
         o.walkthrough = g.boolean("walkthrough", false);
         if (g.has("block")) o.block = g.at("block").whole(limits::kBlock, "--block");
         if (g.has("resamples")) o.resamples = g.at("resamples").whole(limits::kResamples, "--resamples");

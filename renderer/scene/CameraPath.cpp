@@ -15,12 +15,15 @@ CameraPath CameraPath::still(const Camera& base) {
     return p;
 }
 
-CameraPath CameraPath::orbit(const Camera& base, int poses) {
+CameraPath CameraPath::orbit(const Camera& base, int poses, double degrees) {
     if (poses < 1) throw Error("an orbit needs at least one pose, got " + std::to_string(poses));
+    if (!(degrees > 0.0 && degrees <= 360.0))
+        throw Error("an orbit spans more than 0 and at most 360 degrees, got " + std::to_string(degrees));
     CameraPath p;
     p.kind_ = Kind::Orbit;
     p.base_ = base;
     p.poses_ = poses;
+    p.arc_ = degrees;
     return p;
 }
 
@@ -47,7 +50,9 @@ Camera CameraPath::at(int k, int count) const {
         case Kind::Orbit: {
             Camera c = base_;
             const glm::vec3 offset = base_.position - base_.target;
-            const float angle = glm::two_pi<float>() * static_cast<float>(k % poses_) / static_cast<float>(poses_);
+            // A whole turn is 2 pi exactly, as it was before arcs.
+            const float arc = arc_ == 360.0 ? glm::two_pi<float>() : static_cast<float>(glm::radians(arc_));
+            const float angle = arc * static_cast<float>(k % poses_) / static_cast<float>(poses_);
             const float cs = std::cos(angle), sn = std::sin(angle);
             // About the vertical through the target: height and distance stay.
             c.position = base_.target + glm::vec3(cs * offset.x + sn * offset.z, offset.y, -sn * offset.x + cs * offset.z);

@@ -15,9 +15,11 @@ class CameraPath {
 public:
     // The camera stays at `base`.
     static CameraPath still(const Camera& base);
-    // `poses` positions evenly spaced on the circle about base.target through
-    // base.position (the same height and horizontal distance); pose 0 is base.
-    static CameraPath orbit(const Camera& base, int poses);
+    // `poses` positions on the circle about base.target through base.position
+    // (the same height and horizontal distance), `degrees` / `poses` apart
+    // (360: evenly all around; less: an arc of small steps); pose 0 is base.
+    // Throws dw::Error for poses < 1 or degrees outside (0, 360].
+    static CameraPath orbit(const Camera& base, int poses, double degrees = 360.0);
     // Linear in position and look-at between keyframes, by time; the rest of
     // the camera (fov, planes, up) from `base`. Throws dw::Error for fewer
     // than two keyframes or times that do not increase.
@@ -38,6 +40,7 @@ private:
     Kind kind_ = Kind::Still;
     Camera base_;
     int poses_ = 1;
+    double arc_ = 360.0;  // orbit: the degrees the poses span
     std::vector<CameraKeyframe> keys_;
 };
 

@@ -1,4 +1,5 @@
 #include "renderer/scene/GpuScene.h"
+#include "renderer/gl/MemoryLedger.h"
 
 #include <algorithm>
 #include <cstring>
@@ -24,6 +25,7 @@ struct MaterialGpu {
 static_assert(sizeof(MaterialGpu) == 288, "std430 layout");
 
 gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a, bool srgb) {
+    gl::MemoryOwner owner("scene textures");
     gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, 1, 1);
     const std::uint8_t px[4] = {r, g, b, a};
     t.upload(0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
@@ -31,20 +33,59 @@ gl::Texture solidTexture(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::ui
     return t;
 }
 
-// Anisotropic filtering where the driver has it, except on Mesa's llvmpipe:
-// there (Mesa 22.3) an anisotropic lookup whose texture coordinates reach
-// about 1e5 (a textured floor scaled by 1e4) spins for minutes per draw, and
-// on a CPU rasteriser the filter costs more than it shows anyway.
-bool anisotropyUsable() {
-    static const bool usable = [] {
-        if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") && epoxy_gl_version() < 46) return false;
-        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        return !(renderer && std::strstr(renderer, "llvmpipe"));
-    }();
-    return usable;
+// The sky's environment as RGBA16F (empty without one); NaN and Inf stay as
+// they are (the tone mapper's guard is what handles them, and can be switched off).
+gl::Texture environmentTexture(const Scene& scene) {
+    auto rgba = [](const FloatImage& img) {
+        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
+        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
+            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
+        return out;
+    };
+    gl::MemoryOwner owner("scene environment");
+    gl::Texture t;
+    if (!scene.sky.cubeFaces.empty()) {
+        const int size = scene.sky.cubeFaces[0].width;
+        t = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
+        for (int f = 0; f < 6; ++f) t.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(scene.sky.cubeFaces[f]).data());
+        t.generateMipmaps();
+    } else if (scene.sky.equirect.width > 0) {
+        const FloatImage& e = scene.sky.equirect;
+        t = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
+        t.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
+        t.generateMipmaps();
+        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    }
+    return t;
 }
 
 }  // namespace
+
+bool GpuScene::onLlvmpipe() {
+    static const bool llvmpipe = [] {
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        return renderer && std::strstr(renderer, "llvmpipe");
+    }();
+    return llvmpipe;
+}
+
+float GpuScene::deviceMaxAnisotropy() {
+    static const float largest = [] {
+        if (!epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") && epoxy_gl_version() < 46) return 1.0f;
+        GLfloat v = 1.0f;
+        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &v);
+        return std::max(v, 1.0f);
+    }();
+    return largest;
+}
+
+// Mesa 22.3's llvmpipe: an anisotropic lookup at a grazing angle over a
+// texture repeated thousands of times (a plane with uv-scale 2500, texture
+// coordinates up to 1e5; the extremes suite's floor scaled by 1e4) spins for
+// minutes per draw, whatever the level (aniso2 too) and with the footprint's
+// ratio and length bounded in the shader (textureGrad) or the coordinates
+// wrapped into one period: tried, still over 60 s for a 64x36 frame.
+float GpuScene::maxAnisotropy() { return onLlvmpipe() ? 1.0f : deviceMaxAnisotropy(); }
 
 GLuint GpuScene::samplerFor(const TextureMapping& m) {
     const SamplerKey key{m.wrapS, m.wrapT, m.minFilter, m.magFilter};
@@ -65,14 +106,17 @@ void GpuScene::applyFiltering(std::size_t i) const {
     const GLuint id = samplers_[i].id();
     const bool mipmapped = minFilter != GL_NEAREST && minFilter != GL_LINEAR;
     glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(baseLevel_ ? magFilter : minFilter));
-    if (anisotropyUsable())
-        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, mipmapped && !baseLevel_ ? 8.0f : 1.0f);
+    if (maxAnisotropy() > 1.0f)
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY_EXT, mipmapped && !baseLevel_ ? anisotropy_ : 1.0f);
 }
 
-void GpuScene::setBaseLevelFiltering(bool baseLevel) const {
-    if (baseLevel == baseLevel_) return;
+float GpuScene::setTextureFiltering(bool baseLevel, float anisotropy) const {
+    const float capped = std::clamp(anisotropy, 1.0f, maxAnisotropy());
+    if (baseLevel == baseLevel_ && capped == anisotropy_) return capped;
     baseLevel_ = baseLevel;
+    anisotropy_ = capped;
     for (std::size_t i = 0; i < samplers_.size(); ++i) applyFiltering(i);
+    return capped;
 }
 
 int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
@@ -82,11 +126,11 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     if (it != textureIndex_.end()) return it->second;
     const Image& img = scene.images[image];
     const int levels = gl::Texture::fullMipCount(img.width, img.height);
+    gl::MemoryOwner owner("scene textures");
     gl::Texture t = gl::Texture::create2D(srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, img.width, img.height, levels);
     t.upload(0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
     t.generateMipmaps();
     t.setWrap(GL_REPEAT);
-    if (anisotropyUsable()) glTextureParameterf(t.id(), GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
     textureBytes_ += static_cast<std::size_t>(img.width) * img.height * 4 * 4 / 3;
     textures_.push_back(std::move(t));
     const int idx = static_cast<int>(textures_.size() - 1);
@@ -114,8 +158,11 @@ void GpuScene::upload(const Scene& scene) {
         idx.insert(idx.end(), m.indices.begin(), m.indices.end());
     }
     for (const Range& r : ranges) baseVertex_.push_back(r.baseVertex);
-    vertices_ = gl::Buffer::fromVector(verts, scene.animation.moves(), "scene vertices");
-    indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
+    {
+        gl::MemoryOwner owner("scene geometry");
+        vertices_ = gl::Buffer::fromVector(verts, scene.animation.moves(), "scene vertices");
+        indices_ = gl::Buffer::fromVector(idx, false, "scene indices");
+    }
     vao_ = gl::VertexArray::create();
     vao_.setVertexBuffer(0, vertices_, 0, sizeof(Vertex));
     vao_.setIndexBuffer(indices_);
@@ -154,28 +201,10 @@ void GpuScene::upload(const Scene& scene) {
         mats.push_back(g);
     }
     if (mats.empty()) mats.push_back(MaterialGpu{});
+    gl::MemoryOwner materialsOwner("scene materials");
     materials_ = gl::Buffer::fromVector(mats, false, "materials");
 
-    // The sky's environment as RGBA16F; NaN and Inf stay as they are (the
-    // tone mapper's guard is what handles them, and can be switched off).
-    auto rgba = [](const FloatImage& img) {
-        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
-        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
-            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
-        return out;
-    };
-    if (!scene.sky.cubeFaces.empty()) {
-        const int size = scene.sky.cubeFaces[0].width;
-        environment_ = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
-        for (int f = 0; f < 6; ++f) environment_.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(scene.sky.cubeFaces[f]).data());
-        environment_.generateMipmaps();
-    } else if (scene.sky.equirect.width > 0) {
-        const FloatImage& e = scene.sky.equirect;
-        environment_ = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
-        environment_.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
-        environment_.generateMipmaps();
-        glTextureParameteri(environment_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    }
+    environment_ = environmentTexture(scene);
 
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& inst = scene.instances[i];

@@ -84,11 +84,22 @@ public:
     void setDrawOrigin(const glm::dvec3& origin) const { origin_ = origin; }
     const glm::dvec3& drawOrigin() const { return origin_; }
     // gbuffer.texture_filter: the materials' textures filtered as their glTF
-    // samplers ask (mip-mapped, anisotropic where usable), or bilinearly at the
-    // base level, one texel footprint, as the CPU reference samples
+    // samplers ask (trilinear mip-mapping for a mip-mapped min filter) with at
+    // most `anisotropy` anisotropic samples on the mip-mapped ones
+    // (GL_TEXTURE_MAX_ANISOTROPY: 1 is none, 2..16 as aniso2..aniso16; capped
+    // at maxAnisotropy()), or, with `baseLevel`, bilinearly at the base level,
+    // one texel footprint, as the CPU reference samples
     // (renderer/reference/TextureSampler.h). Sampler objects are GL state, so
     // this changes no scene data; it costs a few GL calls when it changes.
-    void setBaseLevelFiltering(bool baseLevel) const;
+    // Returns the anisotropy set (after the cap).
+    float setTextureFiltering(bool baseLevel, float anisotropy) const;
+    // The most anisotropy the filters use here: the device's
+    // GL_MAX_TEXTURE_MAX_ANISOTROPY (deviceMaxAnisotropy), but 1 on llvmpipe,
+    // whose anisotropic lookups spin for minutes at a grazing angle over a
+    // texture repeated thousands of times (GpuScene.cpp). Need a current context.
+    static float maxAnisotropy();
+    static float deviceMaxAnisotropy();  // 1 without GL 4.6 or GL_EXT_texture_filter_anisotropic
+    static bool onLlvmpipe();            // GL_RENDERER names llvmpipe
     std::size_t textureBytes() const { return textureBytes_; }
     // The sky's environment map (equirectangular 2D or cube), or null.
     const gl::Texture* environment() const { return environment_ ? &environment_ : nullptr; }
@@ -120,6 +131,7 @@ private:
     std::vector<SamplerKey> samplerKeys_;  // per samplers_ entry
     std::map<SamplerKey, std::size_t> samplerIndex_;
     mutable bool baseLevel_ = false;
+    mutable float anisotropy_ = 1.0f;
     std::vector<MaterialTextures> materialTextures_;
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;

@@ -13,7 +13,7 @@ const std::vector<ApproximationFamily>& approximationFamilies() {
          {"lighting.threshold=1e-05", "lighting.strategy=fullscreen"}},
         {"gbuffer", "G-buffer encodings: material bytes, normal encoding, depth format",
          {"gbuffer.material_format=unorm16", "gbuffer.normal_encoding=oct16", "gbuffer.depth_format=float32"}},
-        {"texture_filter", "texture filtering: mip-mapping against the reference's base-level lookups at the pixel centre",
+        {"texture_filter", "texture filtering (mipmap, aniso2..aniso16) against the reference's base-level lookups at the pixel centre",
          {"gbuffer.texture_filter=base_level"}},
         {"transparency", "order-independent transparency: the method and its budget",
          {"oit.method=linked_list"}},

@@ -108,6 +108,13 @@ TradeoffOptions TradeoffStudy::check(const TradeoffStudyOptions& given) {
     inRange("--ao-rays", s.aoRays, limits::kAoRays);
     (void)referencePixels(s);
     if (s.orbit != 0) o.orbit = inRange("--orbit", s.orbit, limits::kOrbit);
+    if (!limits::kOrbitDegrees.holds(s.orbitDegrees))
+        throw Error("--orbit-degrees: expected more than 0 and at most 360 degrees, got " + std::to_string(s.orbitDegrees));
+    o.orbitDegrees = s.orbitDegrees;
+    if (s.orbitDegrees != 360.0 && s.orbit == 0) throw Error("--orbit-degrees is the arc of --orbit N's cameras; give --orbit");
+    if (s.metric == "temporal" && s.orbit < 2 && !s.walkthrough)
+        throw Error("--metric temporal measures the change from frame to frame along a camera path: give --orbit N "
+                    "(N >= 2) or --walkthrough (a camera.path of 2 or more keyframes)");
     o.walkthrough = s.walkthrough;
     o.frames = inRange("--frames", s.frames, limits::kFrames);
     o.warmup = inRange("--warmup", s.warmup, limits::kWarmup);

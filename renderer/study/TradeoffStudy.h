@@ -47,6 +47,7 @@ struct TradeoffStudyOptions {
     int refSpp = 1;                      // --ref-spp: the reference's samples per pixel, 1 .. 65536 (reference --spp)
     std::string refFilter = "box";       // --ref-filter: box | tent (reference --filter)
     int orbit = 0;                       // 0: the run's camera; 1 .. 100000 cameras on an orbit
+    double orbitDegrees = 360;           // the arc the orbit's cameras span (0, 360]
     bool walkthrough = false;            // the scene's camera.path keyframes
     int frames = 5, warmup = 1, block = 1, resamples = 2000;
     std::string shard;                   // "" (the whole sweep) or i/n

@@ -78,7 +78,7 @@ TEST(BenchCli, SmallGridEndToEndAndShardsMergeIntoIt) {
     const auto rows = readCsv(csv);
     ASSERT_GT(rows.size(), 1u);
     EXPECT_EQ(rows[0], (std::vector<std::string>{"config", "size", "lights", "lighting.strategy", "lpp", "lpp_lit", "sample",
-                                                 "seq", "frame", "pass", "gpu_ms", "cpu_ms", "fragments", "samples",
+                                                 "seq", "frame", "pass", "gpu_ms", "cpu_ms", "gpu_mem_peak_mib", "fragments", "samples",
                                                  "primitives", "vertices", "compute", "bytes"}));
     const auto byConfig = rowsByConfig(rows);
     EXPECT_EQ(byConfig.size(), 8u);
@@ -467,9 +467,9 @@ TEST(BenchCli, MergeRefusesShardsOfDifferentRunsAndCutFiles) {
     for (const char* bad : {"inf", "-5", "nan", ""}) {
         std::string text = whole;
         const std::size_t lineEnd = text.find('\n', text.find('\n') + 1);  // the first sample's line
-        // gpu_ms is the 8th field from the end when the run counted (six counter columns after cpu_ms).
+        // gpu_ms is the 9th field from the end when the run counted (gpu_mem_peak_mib and six counter columns after cpu_ms).
         std::size_t lastComma = text.rfind(',', lineEnd);
-        for (int k = 0; k < 6; ++k) lastComma = text.rfind(',', lastComma - 1);
+        for (int k = 0; k < 7; ++k) lastComma = text.rfind(',', lastComma - 1);
         const std::size_t gpuComma = text.rfind(',', lastComma - 1);
         text.replace(gpuComma + 1, lastComma - gpuComma - 1, bad);
         const Result r = variant(std::string("time") + (bad[0] ? bad : "empty"), text);
@@ -733,7 +733,7 @@ TEST(BenchCli, PresetOverallAsTheDocsRunIt) {
     EXPECT_NE(r.out.find("## bench: atrium, 2 configuration(s)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("generated, added to the scene's 1"), std::string::npos) << r.out;
     for (const char* row : {"| 0 | 64x36 | 20 |", "| 1 | 64x36 | 25 |"}) EXPECT_NE(r.out.find(row), std::string::npos) << row;
-    for (const char* column : {"| ao |", "| ao_filter |", "| oit |", "| lighting/shadow maps |"})
+    for (const char* column : {"| ao |", "| ao_filter |", "| oit |", "| lighting/shadow maps |", "| GPU MiB peak |"})
         EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
 }
 
@@ -749,4 +749,57 @@ TEST(BenchCli, Seed002Table1Grid) {
     for (const char* row : {"| 0 | 64x36 | 6 | true | true |", "| 1 | 64x36 | 6 | true | false |",
                             "| 2 | 64x36 | 6 | false | true |", "| 3 | 64x36 | 6 | false | false |"})
         EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+}
+
+// Peak GPU memory per configuration (issue 36): a column of the CSV and a
+// field of the JSON, above 0 on every row, the same on every row of a frame,
+// and larger where a configuration allocates more: the linked list's 4 Mi
+// nodes (96 MiB) over the weighted blend, 2048^2 shadow maps over 512^2.
+TEST(BenchCli, PeakGpuMemoryIsLargerForAConfigurationThatAllocatesMore) {
+    const fs::path dir = test::tempDir() / "bench-memory";
+    fs::create_directories(dir);
+    const fs::path csv = dir / "m.csv", json = dir / "m.json";
+    const Result r = run("bench --scene glass --size 48x27 --lights 0 --keep-scene-lights --frames 2 --warmup 1 --no-lpp "
+                         "--quiet --resamples 200 --sweep oit.method=weighted,linked_list --sweep shadows.map_size=512,2048 "
+                         "--csv " + csv.string() + " --json " + json.string());
+    ASSERT_EQ(r.code, 0) << r.err << r.out;
+    EXPECT_NE(r.out.find("| GPU MiB peak |"), std::string::npos) << r.out;
+    const auto rows = readCsv(csv);
+    ASSERT_GT(rows.size(), 1u);
+    const auto at = [&](const char* name) {
+        return static_cast<size_t>(std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin());
+    };
+    const size_t mem = at("gpu_mem_peak_mib"), oit = at("oit.method"), map = at("shadows.map_size"), frame = at("frame");
+    ASSERT_LT(mem, rows[0].size());
+    std::map<std::pair<std::string, std::string>, double> peak;
+    const auto peakOf = [&](const std::string& method, const std::string& size) { return peak[std::make_pair(method, size)]; };
+    std::map<std::string, std::string> perFrame;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const double mib = std::stod(rows[i][mem]);
+        EXPECT_GT(mib, 0.0) << "line " << i + 1;
+        double& p = peak[{rows[i][oit], rows[i][map]}];
+        p = std::max(p, mib);
+        auto [it, fresh] = perFrame.emplace(rows[i][frame] + "/" + rows[i][0], rows[i][mem]);
+        if (!fresh) {
+            EXPECT_EQ(it->second, rows[i][mem]) << "every row of a frame: line " << i + 1;
+        }
+    }
+    ASSERT_EQ(peak.size(), 4u);
+    for (const char* size : {"512", "2048"})
+        EXPECT_GT(peakOf("linked_list", size), peakOf("weighted", size) + 90.0) << size;
+    for (const char* method : {"weighted", "linked_list"})
+        EXPECT_GT(peakOf(method, "2048"), peakOf(method, "512")) << method;
+    // The JSON's per-configuration figure is the CSV's largest.
+    std::ifstream jf(json);
+    const nlohmann::json j = nlohmann::json::parse(jf)["results"];
+    for (const auto& c : j["configs"]) {
+        ASSERT_TRUE(c["gpu_mem_peak_mib"].is_number()) << c.dump();
+        EXPECT_EQ(c["gpu_mem_peak_mib"].get<double>(),
+                  peakOf(c["knobs"]["oit.method"].get<std::string>(), c["knobs"]["shadows.map_size"].get<std::string>()));
+    }
+    // replay runs the grid again: the same peaks, to the byte.
+    const Result again = run("replay " + json.string());
+    EXPECT_NE(again.out.find("gpu memory peak "), std::string::npos) << again.out << again.err;
+    EXPECT_EQ(again.out.find("(differs)"), std::string::npos) << again.out;
+    EXPECT_EQ(again.out.find("with another peak GPU memory"), std::string::npos) << again.out;
 }

@@ -90,6 +90,20 @@ TEST(Cli, RendersPngOfTheRequestedSize) {
     EXPECT_EQ(img.height, 54);
 }
 
+// render --memory (README, issue 36): the inspector's GPU memory table after
+// the frame, the owners of what passes allocate themselves among the frame
+// graph's resources, and the total.
+TEST(Cli, RenderMemoryPrintsEveryOwnerAndTheTotal) {
+    const fs::path out = test::tempDir() / "memory.png";
+    const Result r = run("render --scene glass --size 64x36 --set oit.method=linked_list --set aa.method=taa --memory --out " +
+                         out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* row : {"GPU memory (logical bytes", "frame graph: oit.list_nodes", "frame graph: gbuffer.", "shadow maps",
+                            "light table", "taa history", "scene geometry", "  total "})
+        EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+    EXPECT_EQ(r.out.find("unowned"), std::string::npos) << r.out;
+}
+
 // Every output render writes is checked before the frames: a --record in a
 // missing folder failed after --out was written.
 TEST(Cli, RenderRefusesAnUnwritableOutputBeforeItRenders) {

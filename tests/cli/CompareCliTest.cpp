@@ -254,3 +254,118 @@ TEST(CompareCli, TwoRendersOfOneScene) {
     // Files and knob sets together: a usage error.
     EXPECT_EQ(run("compare a.png b.png --a x=1 --b x=2").code, 5);
 }
+
+namespace {
+
+// The sub-pixel-moving edge of TemporalError's closed-form test
+// (tests/metrics/TemporalErrorTest.cpp): 17 frames 16 x 4, an edge moving a
+// quarter pixel a frame; box-filtered truth and pixel centres, as EXR files
+// ref%02d.exr and test%02d.exr in `dir`.
+std::string edgeSequences(const std::string& dir) {
+    const fs::path d = test::tempDir() / "compare" / dir;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    for (int t = 0; t < 17; ++t) {
+        FloatImage truth = flat(16, 4, 0.0f), centres = flat(16, 4, 0.0f);
+        const double edge = 2.125 + 0.25 * t;
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 16; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    truth.at(x, y, c) = static_cast<float>(std::clamp(edge - x, 0.0, 1.0));
+                    centres.at(x, y, c) = x + 0.5 < edge ? 1.0f : 0.0f;
+                }
+        char name[32];
+        std::snprintf(name, sizeof name, "ref%02d.exr", t);
+        writeImage((d / name).string(), truth);
+        std::snprintf(name, sizeof name, "test%02d.exr", t);
+        writeImage((d / name).string(), centres);
+    }
+    return d.string();
+}
+
+}  // namespace
+
+// compare --sequence: each frame's FLIP and RMS and the temporal error with
+// its interval; the pixel centres of the moving edge flicker by the closed
+// form 0.375 / 16, the truth against itself by 0.
+TEST(CompareCli, SequencesGiveEachFramesErrorAndTheTemporalError) {
+    const std::string d = edgeSequences("sequence");
+    const Result r = run("compare --sequence " + d + "/ref%02d.exr " + d + "/test%02d.exr");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("frames 0..16 (17), 16x4x3, HDR"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("mean FLIP"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("  temporal error 0.0234375 ["), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("   1->2     0.046875"), std::string::npos) << r.out;  // the jump: 0.75 / 16
+    const Result same = run("compare --sequence " + d + "/ref%02d.exr " + d + "/ref%02d.exr");
+    ASSERT_EQ(same.code, 0) << same.err;
+    EXPECT_NE(same.out.find("  temporal error 0 [0, 0]"), std::string::npos) << same.out;
+}
+
+// Bad sequences: one line naming the file; a missing or extra frame or another
+// size exits 3 (as two images of other sizes do), a bad pattern 5.
+TEST(CompareCli, SequencesThatDoNotMatchAreRefusedNamingTheFile) {
+    const std::string d = edgeSequences("sequence-bad");
+    const std::string ref = d + "/ref%02d.exr", tst = d + "/test%02d.exr";
+    fs::remove(d + "/test05.exr");
+    const Result missing = run("compare --sequence " + ref + " " + tst);
+    EXPECT_EQ(missing.code, 3);
+    EXPECT_EQ(lines(missing.err), 1) << missing.err;
+    EXPECT_NE(missing.err.find("test frame 5 is missing: " + d + "/test05.exr does not exist"), std::string::npos)
+        << missing.err;
+    writeImage(d + "/test05.exr", flat(8, 4, 0.5f));
+    const Result size = run("compare --sequence " + ref + " " + tst);
+    EXPECT_EQ(size.code, 3);
+    EXPECT_EQ(lines(size.err), 1) << size.err;
+    EXPECT_NE(size.err.find(d + "/test05.exr is 8x4x3, " + d + "/ref00.exr is 16x4x3"), std::string::npos) << size.err;
+    writeImage(d + "/test05.exr", flat(16, 4, 0.5f));
+    writeImage(d + "/test17.exr", flat(16, 4, 0.5f));
+    const Result extra = run("compare --sequence " + ref + " " + tst);
+    EXPECT_EQ(extra.code, 3);
+    EXPECT_NE(extra.err.find("the test has more frames than the reference: " + d + "/test17.exr exists"),
+              std::string::npos) << extra.err;
+    const Result pattern = run("compare --sequence " + d + "/ref.exr " + tst);
+    EXPECT_EQ(pattern.code, 5);
+    EXPECT_NE(pattern.err.find("one integer conversion"), std::string::npos) << pattern.err;
+    const Result option = run("compare --sequence " + ref + " " + tst + " --fail 0.1");
+    EXPECT_EQ(option.code, 5);
+    EXPECT_NE(option.err.find("--sequence compares two sequences of image files"), std::string::npos) << option.err;
+}
+
+// render --out-sequence: a camera path's frames in order, as compare
+// --sequence reads them. An orbit of 16 degrees over 5 cameras of the pixel
+// centres, of TAA (its history carried, after 16 frames at the first camera)
+// and of the reference at 4 samples a pixel; the frames move; compare
+// --sequence measures each method's temporal error against the reference's.
+// A path without --out-sequence, or the reverse, is one line, exit 2.
+TEST(CompareCli, RenderWritesACameraPathsFramesThatCompareSequenceReads) {
+    const fs::path d = test::tempDir() / "compare" / "render-sequence";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    const std::string path = "render --scene default --size 48x27 --set bloom.enabled=false --orbit 5 --orbit-degrees 16 ";
+    const Result none = run(path + "--set aa.method=none --out-sequence " + (d / "none%02d.png").string());
+    ASSERT_EQ(none.code, 0) << none.err;
+    EXPECT_NE(none.out.find("frames 0..4"), std::string::npos) << none.out;
+    const Result taa = run(path + "--set aa.method=taa --warmup 16 --out-sequence " + (d / "taa%02d.png").string());
+    ASSERT_EQ(taa.code, 0) << taa.err;
+    const Result ref =
+        run(path + "--buffer reference.final --spp 4 --out-sequence " + (d / "ref%02d.png").string());
+    ASSERT_EQ(ref.code, 0) << ref.err;
+    for (const char* name : {"none", "taa", "ref"}) {
+        for (int t = 0; t < 5; ++t) EXPECT_TRUE(fs::exists(d / (name + std::string(t < 10 ? "0" : "") + std::to_string(t) + ".png")));
+        EXPECT_FALSE(fs::exists(d / (name + std::string("05.png"))));
+    }
+    EXPECT_NE(loadImageFloat((d / "none00.png").string()).pixels, loadImageFloat((d / "none04.png").string()).pixels);
+    for (const char* name : {"none", "taa"}) {
+        const Result c = run("compare --sequence " + (d / "ref%02d.png").string() + " " + (d / name).string() + "%02d.png");
+        ASSERT_EQ(c.code, 0) << c.err;
+        EXPECT_NE(c.out.find("frames 0..4 (5), 48x27x4, LDR"), std::string::npos) << c.out;
+        EXPECT_NE(c.out.find("  temporal error "), std::string::npos) << c.out;
+    }
+    const Result noSequence = run(path + "--out " + (d / "x.png").string());
+    EXPECT_EQ(noSequence.code, 2);
+    EXPECT_NE(noSequence.err.find("a camera path (--orbit, --walkthrough) renders a sequence: give --out-sequence"),
+              std::string::npos) << noSequence.err;
+    const Result noPath = run("render --scene default --size 48x27 --out-sequence " + (d / "y%02d.png").string());
+    EXPECT_EQ(noPath.code, 2);
+    EXPECT_NE(noPath.err.find("--out-sequence writes a camera path's frames"), std::string::npos) << noPath.err;
+}

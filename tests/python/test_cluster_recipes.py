@@ -128,7 +128,8 @@ class Recipes(unittest.TestCase):
         """Per configuration: size, lights, swept values, lights per pixel, how many rows (samples x series), and
         each series' cost counters (per pass, exact: the same in a shard as unsharded)."""
         counters = ("fragments", "samples", "primitives", "vertices", "compute", "bytes")
-        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms", *counters}
+        # gpu_mem_peak_mib: a shard's can differ by what growth-only buffers kept from earlier configurations.
+        fixed = {"sample", "seq", "frame", "pass", "gpu_ms", "cpu_ms", "gpu_mem_peak_mib", *counters}
         table = {}
         for r in rows:
             key = r["config"]
@@ -142,8 +143,10 @@ class Recipes(unittest.TestCase):
     def tradeoff_table(self, rows):
         # The times, and what is decided from them (the front, its classes and ties: a merge decides them from the
         # intervals, a single run from its resamples) differ between runs; the points, values and errors do not.
+        # The peak GPU memory depends on the points rendered before in the same process (growth-only buffers keep
+        # their largest size): a shard's can differ from the unsharded run's by those bytes (docs/bench.md).
         timed = ("frame_gpu_ms", "frame_gpu_ms_lo", "frame_gpu_ms_hi", "pareto", "time_ms", "time_ms_lo", "time_ms_hi",
-                 "front", "dominated_by", "tied_with", "pick")
+                 "front", "dominated_by", "tied_with", "pick", "gpu_mem_peak_mib")
         cols = [c for c in rows[0] if c not in timed and not c.endswith("_gpu_ms") and not c.startswith("gpu_ms")]
         return sorted(tuple(r[c] for c in cols) for r in rows), cols
 

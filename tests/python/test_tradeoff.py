@@ -191,7 +191,7 @@ class TradeoffTest(unittest.TestCase):
     def test_bad_arguments_raise_with_the_cli_messages(self):
         base = dict(scene="default", size=(32, 18), frames=1, quiet=True)
         cases = [
-            (dict(sweep={"ssao.samples": [4, 8]}, metric="mse"), ValueError, "--metric: expected flip, rms, psnr or ssim"),
+            (dict(sweep={"ssao.samples": [4, 8]}, metric="mse"), ValueError, "--metric: expected flip, rms, psnr, ssim or temporal"),
             (dict(sweep={"ssao.samples": [4, 8]}, buffer="shade"), ValueError, "--buffer: expected final, lbuffer"),
             (dict(sweep={"ssao.samples": [4, 8]}, mask="edges"), ValueError, "--mask: expected shadow_edges"),
             (dict(sweep={"ssao.samples": []}), ValueError, "sweep['ssao.samples'] has no values"),

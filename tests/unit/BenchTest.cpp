@@ -2,7 +2,9 @@
 // CSV and merging, the bootstrap interval, the baseline and the tables.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <sstream>
 #include <set>
 
 #include "renderer/Error.h"
@@ -127,7 +129,7 @@ TEST(BenchResults, CsvRoundTripsAndShardsMergeIntoTheGrid) {
     const BenchResults all = synthetic(g, 3, [](const BenchConfig& c) { return 1.0 + c.lights; });
     const std::string csv = all.csv();
     EXPECT_EQ(csv.substr(0, csv.find('\n')),
-              "config,size,lights,lighting.strategy,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms");
+              "config,size,lights,lighting.strategy,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,cpu_ms,gpu_mem_peak_mib");
     const BenchResults back = BenchResults::parseCsv(csv, "all.csv");
     ASSERT_EQ(back.configs.size(), 8u);
     ASSERT_EQ(back.samples.size(), all.samples.size());
@@ -153,7 +155,7 @@ TEST(BenchResults, CsvRoundTripsAndShardsMergeIntoTheGrid) {
     EXPECT_THROW(BenchResults::merge({parts[0], other}, {}), Error);
 
     EXPECT_THROW(BenchResults::parseCsv("a,b\n", "x.csv"), FileError);
-    const std::string broken = csv.substr(0, csv.find('\n') + 1) + "0,64x36,1,volumes,,,zero,0,0,frame,1,1\n";
+    const std::string broken = csv.substr(0, csv.find('\n') + 1) + "0,64x36,1,volumes,,,zero,0,0,frame,1,1,\n";
     try {
         BenchResults::parseCsv(broken, "x.csv");
         FAIL() << "no error";
@@ -359,7 +361,7 @@ TEST(BenchResults, CounterColumnsFollowTheTimesAndReadBack) {
     }
     const std::string csv = r.csv();
     EXPECT_EQ(csv.substr(0, csv.find('\n')), "config,size,lights,lighting.strategy,lpp,lpp_lit,sample,seq,frame,pass,gpu_ms,"
-                                             "cpu_ms,fragments,samples,primitives,vertices,compute,bytes");
+                                             "cpu_ms,gpu_mem_peak_mib,fragments,samples,primitives,vertices,compute,bytes");
     const BenchResults back = BenchResults::parseCsv(csv, "c.csv");
     EXPECT_TRUE(back.counted);
     ASSERT_EQ(back.samples.size(), r.samples.size());
@@ -373,4 +375,37 @@ TEST(BenchResults, CounterColumnsFollowTheTimesAndReadBack) {
     ASSERT_NE(bad.find(",0,10,20,30,40,50\n"), std::string::npos);
     bad.replace(bad.find(",0,10,20,30,40,50\n"), 2, ",x");
     EXPECT_THROW(BenchResults::parseCsv(bad, "c.csv"), FileError);
+}
+
+// The peak GPU memory column (issue 36): each frame's MiB read back to the
+// last bit (bytes / 2^20 is exact in a double), the configuration's peak the
+// largest of its rows, and a CSV written before the column still read.
+TEST(BenchResults, PeakGpuMemoryColumnRoundTripsAndOlderCsvsStillRead) {
+    const BenchGrid g = smallGrid();
+    BenchResults r = synthetic(g, 2, [](const BenchConfig& c) { return 1.0 + c.lights; });
+    for (auto& s : r.samples) s.gpuMemPeakMib = static_cast<double>(1234567 + 1000 * s.config + s.sample) / (1024.0 * 1024.0);
+    const BenchResults back = BenchResults::parseCsv(r.csv(), "m.csv");
+    ASSERT_EQ(back.samples.size(), r.samples.size());
+    for (size_t i = 0; i < r.samples.size(); ++i) EXPECT_EQ(back.samples[i].gpuMemPeakMib, r.samples[i].gpuMemPeakMib);
+    EXPECT_EQ(gpuMemPeakMib(back.samples, 1), static_cast<double>(1234567 + 1000 + 1) / (1024.0 * 1024.0));
+    EXPECT_TRUE(std::isnan(gpuMemPeakMib(back.samples, 99)));
+
+    // Without the column (a CSV from before it): every row reads, the peak unknown.
+    std::string old;
+    std::istringstream lines(r.csv());
+    for (std::string line; std::getline(lines, line);) old += line.substr(0, line.rfind(',')) + "\n";
+    const BenchResults older = BenchResults::parseCsv(old, "old.csv");
+    ASSERT_EQ(older.samples.size(), r.samples.size());
+    EXPECT_TRUE(std::isnan(older.samples[0].gpuMemPeakMib));
+    EXPECT_DOUBLE_EQ(older.configs[2].lpp, back.configs[2].lpp);
+    // A bad value names the column.
+    std::string bad = r.csv();
+    const size_t firstRowEnd = bad.find('\n', bad.find('\n') + 1);
+    bad.replace(bad.rfind(',', firstRowEnd) + 1, firstRowEnd - bad.rfind(',', firstRowEnd) - 1, "-3");
+    try {
+        BenchResults::parseCsv(bad, "bad.csv");
+        ADD_FAILURE() << "a negative MiB was read";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("gpu_mem_peak_mib: expected MiB"), std::string::npos) << e.what();
+    }
 }

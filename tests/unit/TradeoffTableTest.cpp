@@ -136,7 +136,7 @@ TEST(TradeoffTable, HeaderAndFrontPerCamera) {
     EXPECT_EQ(t.csv().substr(0, t.csv().find('\n')),
               "point,ssao.samples,ssao.resolution,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,"
               "frame_gpu_ms_lo,frame_gpu_ms_hi,gpu_ms.geometry,gpu_ms.ssao,pareto,time,time_ms,time_ms_lo,time_ms_hi,"
-              "front,dominated_by,tied_with,pick");
+              "front,dominated_by,tied_with,pick,gpu_mem_peak_mib");
     t.markParetoFront();
     // Camera 0, (ms, error) by cost: 8 half (2.4, .566), 16 half (4.8, .4), 8 full (8, .354),
     // 32 half (9.6, .283), 16 full (16, .25), 32 full (32, .177): each lowers the error, all on the front.
@@ -234,6 +234,7 @@ TEST(TradeoffTable, ReadsBackExactly) {
     t.rows[2].passGpuMs[1] = kNaN;                                 // the pass did not run
     t.rows[3].frameGpuMs = 0.1 + 0.2;                              // needs 17 digits
     t.rows[4].error = 1e-9;
+    t.rows[0].gpuMemPeakMib = 178833205.0 / (1024.0 * 1024.0);  // every byte, in MiB
     t.markParetoFront();
     const std::string text = t.csv();
     const TradeoffTable back = TradeoffTable::parseCsv(text, "t.csv");
@@ -245,7 +246,17 @@ TEST(TradeoffTable, ReadsBackExactly) {
     EXPECT_TRUE(std::isnan(back.rows[2].passGpuMs[1]));
     EXPECT_EQ(back.rows[3].frameGpuMs, 0.1 + 0.2);
     EXPECT_EQ(back.rows[4].error, 1e-9);
+    EXPECT_EQ(back.rows[0].gpuMemPeakMib * 1024.0 * 1024.0, 178833205.0);
+    EXPECT_TRUE(std::isnan(back.rows[1].gpuMemPeakMib));  // not measured: empty
     EXPECT_EQ(back.csv(), text);
+    // Ending at pick (a CSV written before the column): the same rows, the memory unknown.
+    std::string atPick, line;
+    std::istringstream lines(text);
+    while (std::getline(lines, line)) atPick += line.substr(0, line.rfind(',')) + "\n";
+    const TradeoffTable older = TradeoffTable::parseCsv(atPick, "older.csv");
+    ASSERT_EQ(older.rows.size(), t.rows.size());
+    EXPECT_TRUE(std::isnan(older.rows[0].gpuMemPeakMib));
+    EXPECT_EQ(older.rows[3].frameGpuMs, 0.1 + 0.2);
     TradeoffTable again = back;
     again.markParetoFront();
     for (size_t i = 0; i < t.rows.size(); ++i) EXPECT_EQ(again.rows[i].pareto, t.rows[i].pareto) << i;
@@ -258,7 +269,8 @@ TEST(TradeoffTable, BadInputNamesFileLineAndColumn) {
     EXPECT_EQ(messageOf(kHeader + ok), "(no error)");
     EXPECT_EQ(messageOf(""), "t.csv: line 1: empty (expected the tradeoff CSV header point,<axis>...,camera,metric,"
                              "buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,frame_gpu_ms_hi,"
-                             "gpu_ms.<pass>...,pareto,time,time_ms,time_ms_lo,time_ms_hi,front,dominated_by,tied_with,pick)");
+                             "gpu_ms.<pass>...,pareto,time,time_ms,time_ms_lo,time_ms_hi,front,dominated_by,tied_with,pick,"
+                             "gpu_mem_peak_mib)");
     EXPECT_EQ(messageOf("config,size\n").substr(0, 44), "t.csv: line 1, column 1: expected 'point', g");
     EXPECT_EQ(messageOf("point,a,a,camera\n"), "t.csv: line 1, column 3: the column 'a' is there twice (also column 2)");
     EXPECT_EQ(messageOf("point,a,camera,metric,buffer,error,error_lo,error_hi,frames,frame_gpu_ms,frame_gpu_ms_lo,"
@@ -275,7 +287,7 @@ TEST(TradeoffTable, BadInputNamesFileLineAndColumn) {
     EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,yes\n"),
               "t.csv: line 2, column 14: pareto: expected 0 or 1, got 'yes'");
     EXPECT_EQ(messageOf(kHeader + "0,8,0,mse,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
-              "t.csv: line 2, column 4: metric: expected flip, rms, psnr or ssim, got 'mse'");
+              "t.csv: line 2, column 4: metric: expected flip, rms, psnr, ssim or temporal, got 'mse'");
     EXPECT_EQ(messageOf(kHeader + "-1,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
               "t.csv: line 2, column 1: point: expected a whole number, at least 0, got '-1'");
     EXPECT_EQ(messageOf(kHeader + "0,8,0,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n0,16,1,rms,ao,0.5,0.4,0.6,8,2.5,2.4,2.6,1.25,1\n"),
@@ -508,7 +520,7 @@ TEST(TradeoffTable, CounterColumnsReadBackAndMerge) {
     std::string noTail, line;
     std::istringstream lines(text);
     while (std::getline(lines, line)) {
-        for (int k = 0; k < 8; ++k) line.erase(line.rfind(','));
+        for (int k = 0; k < 9; ++k) line.erase(line.rfind(','));  // time .. pick and gpu_mem_peak_mib
         noTail += line + "\n";
     }
     const TradeoffTable old = TradeoffTable::parseCsv(noTail, "old.csv");
