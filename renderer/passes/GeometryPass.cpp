@@ -190,6 +190,10 @@ void GeometryPass::execute(FrameContext& ctx) {
         stats_ += "; again into the multisampled G-buffer, " + std::to_string(ctx.output(kMsaaDepth).desc.samples) +
                   " samples";
     }
+    char textures[128];
+    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
+                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
+    stats_ += textures;
 }
 
 void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool directional, bool multisampled) {
@@ -222,10 +226,6 @@ void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool
     ctx.gpu.draw(program, GpuScene::Filter::Opaque);
     stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
     if (directional) stats_ += ", " + std::to_string(rows.size()) + " directional lights shaded";
-    char textures[128];
-    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
-                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
-    stats_ += textures;
 }
 
 }  // namespace dw
