@@ -168,7 +168,8 @@ void Pipeline::setup(gl::ShaderLibrary& shaders) {
 void Pipeline::setScene(const Scene& scene) {
     // Build the new GPU copy aside, so a failure keeps the previous scene.
     GpuScene next;
-    next.upload(scene);
+    next.setGpuPosing(gpuPosing_);
+    next.upload(scene, shaders_);
     gpu_ = std::move(next);
     scene_ = &scene;
 }
