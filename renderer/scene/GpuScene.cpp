@@ -44,6 +44,32 @@ bool anisotropyUsable() {
     return usable;
 }
 
+// The sky's environment as RGBA16F (cube or equirectangular, mip-mapped), or
+// an empty texture without one; NaN and Inf stay as they are (the tone
+// mapper's guard is what handles them, and can be switched off).
+gl::Texture environmentTexture(const Sky& sky) {
+    auto rgba = [](const FloatImage& img) {
+        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
+        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
+            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
+        return out;
+    };
+    gl::Texture environment;
+    if (!sky.cubeFaces.empty()) {
+        const int size = sky.cubeFaces[0].width;
+        environment = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
+        for (int f = 0; f < 6; ++f) environment.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(sky.cubeFaces[f]).data());
+        environment.generateMipmaps();
+    } else if (sky.equirect.width > 0) {
+        const FloatImage& e = sky.equirect;
+        environment = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
+        environment.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
+        environment.generateMipmaps();
+        glTextureParameteri(environment.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    }
+    return environment;
+}
+
 }  // namespace
 
 GLuint GpuScene::samplerFor(const TextureMapping& m) {
@@ -156,26 +182,7 @@ void GpuScene::upload(const Scene& scene, gl::ShaderLibrary* shaders) {
     if (mats.empty()) mats.push_back(MaterialGpu{});
     materials_ = gl::Buffer::fromVector(mats, false, "materials");
 
-    // The sky's environment as RGBA16F; NaN and Inf stay as they are (the
-    // tone mapper's guard is what handles them, and can be switched off).
-    auto rgba = [](const FloatImage& img) {
-        std::vector<float> out(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
-        for (size_t p = 0; p < static_cast<size_t>(img.width) * img.height; ++p)
-            for (int c = 0; c < std::min(img.channels, 4); ++c) out[p * 4 + c] = img.pixels[p * img.channels + c];
-        return out;
-    };
-    if (!scene.sky.cubeFaces.empty()) {
-        const int size = scene.sky.cubeFaces[0].width;
-        environment_ = gl::Texture::createCube(GL_RGBA16F, size, gl::Texture::fullMipCount(size, size));
-        for (int f = 0; f < 6; ++f) environment_.uploadCubeFace(f, 0, size, GL_RGBA, GL_FLOAT, rgba(scene.sky.cubeFaces[f]).data());
-        environment_.generateMipmaps();
-    } else if (scene.sky.equirect.width > 0) {
-        const FloatImage& e = scene.sky.equirect;
-        environment_ = gl::Texture::create2D(GL_RGBA16F, e.width, e.height, gl::Texture::fullMipCount(e.width, e.height));
-        environment_.upload(0, e.width, e.height, GL_RGBA, GL_FLOAT, rgba(e).data());
-        environment_.generateMipmaps();
-        glTextureParameteri(environment_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    }
+    environment_ = environmentTexture(scene.sky);
 
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& inst = scene.instances[i];
