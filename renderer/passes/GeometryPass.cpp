@@ -183,6 +183,10 @@ void GeometryPass::execute(FrameContext& ctx) {
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
     drawScene(ctx, target(ctx, directional, false), directional, false);
+    char textures[128];
+    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
+                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
+    stats_ += textures;
     // MSAA: the multisampled G-buffer too; every later pass but the
     // lighting pass's edge samples reads the pixel centres' one above.
     if (msaa(ctx.knobs)) {
@@ -222,10 +226,6 @@ void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool
     ctx.gpu.draw(program, GpuScene::Filter::Opaque);
     stats_ = std::to_string(ctx.gpu.draws().size()) + " draws, " + std::to_string(ctx.gpu.triangleCount()) + " triangles";
     if (directional) stats_ += ", " + std::to_string(rows.size()) + " directional lights shaded";
-    char textures[128];
-    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
-                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
-    stats_ += textures;
 }
 
 }  // namespace dw
