@@ -80,6 +80,8 @@ std::string benchUsage() {
            "                                [--plot-size WxH] [--resume PARTIAL.csv] [--quiet]\n"
            "       deferred-workbench bench merge SHARD.csv... --out ALL.csv [--record FILE] [--plot FILE.png]\n"
            "                                [--plot-size WxH] [--baseline axis=value] [--ratio-of SERIES] [--resamples N]\n"
+           "  --animation  which glTF animation clip plays: a clip's name or index (0-based over the scene's\n"
+           "               clips), or none; default each file's first (docs/scene-format.md, \"Animation\")\n"
            "  --size       render sizes (default 640x360); one session per size, all in one process\n"
            "  --lights     point-light counts, generated from --seed (default 1) into the scene's bounds,\n"
            "               replacing the scene's lights (--keep-scene-lights adds them); without it the\n"

@@ -16,6 +16,7 @@
 #include "renderer/Error.h"
 #include "renderer/reference/ReferenceCache.h"
 #include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/ClipChoice.h"
 #include "renderer/scene/SceneLoader.h"
 #include "renderer/scene/ScenePose.h"
 
@@ -59,6 +60,8 @@ void printUsage() {
                "               accessibility), shadow (share of the shadow-casting lights' light that arrives),\n"
                "               spp_error (the standard error of each pixel's luminance over its samples)\n"
                "  --out        .exr writes the raw values; .png the values in [0, 1] (not for lbuffer)\n"
+               "  --animation  which glTF animation clip plays: a clip's name or index (0-based over the scene's\n"
+               "               clips), or none; default each file's first (docs/scene-format.md, \"Animation\")\n"
                "  --preset, --set  as for render: the knobs that define the model are honoured (shadows.enabled,\n"
                "               shadows.blended_casters, ao.enabled, the radius of the method ao.method names:\n"
                "               ssao.radius/radius_unit/intensity, gtao.radius/radius_unit or aov.radius/radius_unit),\n"
@@ -235,7 +238,8 @@ int runReferenceCommand(int argc, char** argv) {
     RunConfig run = o.run;
     run.validate();
     Scene scene = loadScene(run.sceneSpec());
-    poseScene(scene, run.sceneTime);  // the pose the GPU renders at --scene-time
+    chooseClip(scene.animation, run.animation);  // --animation, as RenderSession::setScene
+    poseScene(scene, run.sceneTime);             // the pose the GPU renders at --scene-time
     for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     KnobRegistry knobs = RunConfig::declaredKnobs();
     run.applyKnobs(knobs, scene);

@@ -40,6 +40,8 @@ void printUsage() {
                      "                                 --out FILE | [--orbit N [--orbit-degrees D] | --walkthrough]\n"
                      "                                 --out-sequence PATTERN\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
+                     "  --animation  which glTF animation clip plays: a clip's name or index (0-based over the scene's\n"
+                     "               clips), or none; default each file's first (docs/scene-format.md, \"Animation\")\n"
                      "  --preset     a built-in preset (list presets) or a preset .json; its knobs apply after\n"
                      "               the scene's settings and before --set; its scene is used without --scene;\n"
                      "               repeated, each applies in the order given, a later one's knobs winning\n"

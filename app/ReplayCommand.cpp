@@ -114,6 +114,7 @@ int replayRender(const ExperimentRecord& old, Scene loaded, const std::vector<st
     run.frames = old.frames;
     run.warmup = old.warmup;
     run.sceneTime = old.sceneTime;
+    run.animation = old.animation;
     auto context = HeadlessGlContext::create();
     RenderSession session;
     for (const auto& [k, v] : old.gl)

@@ -65,6 +65,8 @@ std::string tradeoffUsage() {
            "                                   [--quiet]\n"
            "       deferred-workbench tradeoff merge SHARD.csv|SHARD.json... --out ALL.csv [--record FILE] [--plot FILE.png] [--plot-size WxH]\n"
            "                                   [--time frame|PASS[+PASS...]] [--cost gpu_ms|COUNTER] [--budget-ms X | --budget N]\n"
+           "  --animation  which glTF animation clip plays: a clip's name or index (0-based over the scene's\n"
+           "               clips), or none; default each file's first (docs/scene-format.md, \"Animation\")\n"
            "  --presets    presets as an axis (the column 'preset'): each point's knobs are the preset's, under --set\n"
            "  --knobs speed/quality  every knob the registry marks as trading speed for quality, one at a time\n"
            "               about the current settings (docs/tradeoffs.md says which values)\n" +

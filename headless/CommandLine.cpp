@@ -103,6 +103,10 @@ RunConfig CommandLine::runConfig() {
     // Repeated --preset: each in the order given, a later one's knobs over an earlier one's.
     for (const auto& p : presets) run.addPreset(p);
     run.sets = values("--set");
+    const std::optional<std::string> animation = value("--animation");
+    if (animation && animation->empty())
+        throw UsageError("--animation needs a clip's name or index, or none, got an empty one");
+    run.animation = animation.value_or("");
     return run;
 }
 

@@ -8,6 +8,7 @@
 #include "renderer/inspect/OutputReadback.h"
 #include "renderer/passes/ReferencePass.h"
 #include "renderer/reference/ReferenceRenderer.h"
+#include "renderer/scene/ClipChoice.h"
 #include "renderer/scene/SceneLoader.h"
 #include "renderer/scene/ScenePose.h"
 
@@ -28,6 +29,7 @@ void RenderSession::setScene(Scene scene, const RunConfig& run) {
     KnobRegistry next = knobs_;
     run.applyKnobs(next, scene);
     auto uploaded = std::make_unique<Scene>(std::move(scene));
+    chooseClip(uploaded->animation, run.animation);
     poseScene(*uploaded, run.sceneTime);
     pipeline_.setScene(*uploaded);
     sceneTime_ = run.sceneTime;

@@ -35,6 +35,9 @@ public:
     // --scene-time: the scene time (seconds) its glTF animation is posed at
     // (skins, morph targets, clips; Animation.h). RenderSession::setScene takes it.
     double sceneTime = 0.0;
+    // --animation NAME|INDEX|none: which clip plays (ClipChoice.h); empty:
+    // each file's first. RenderSession::setScene applies it before posing.
+    std::string animation;
 
     // --preset: a built-in preset's name, else a preset file. Throws Error when
     // it is neither, FileError when the file is not a preset. setPreset

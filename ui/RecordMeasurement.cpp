@@ -6,6 +6,7 @@
 #include "renderer/Error.h"
 #include "renderer/OptionLimits.h"
 #include "renderer/record/ExperimentRecord.h"
+#include "renderer/scene/ClipChoice.h"
 #include "renderer/scene/SceneLoader.h"
 #include "ui/UiState.h"
 
@@ -184,6 +185,7 @@ void RecordMeasurement::finish(UiState& state, RenderSession& session) {
         run.frames = frames_;
         run.warmup = warmup_;
         run.sceneTime = session.sceneTime();  // the Scene panel's timeline
+        run.animation = clipChoiceOf(session.scene().animation);  // and its clip
         const RunnerTimings timings = runner_->finish();
         runner_.reset();
         std::uint64_t first = 0;

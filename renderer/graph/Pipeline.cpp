@@ -180,7 +180,8 @@ void Pipeline::setScene(const Scene& scene) {
     // Build the new GPU copy aside, so a failure keeps the previous scene.
     gl::MemoryDomain domain(this);
     GpuScene next;
-    next.upload(scene);
+    next.setGpuPosing(gpuPosing_);
+    next.upload(scene, shaders_);
     gpu_ = std::move(next);
     scene_ = &scene;
 }

@@ -69,6 +69,12 @@ public:
     void setScene(const Scene& scene);  // uploads; `scene` must outlive its use here
     // The scene set before, posed again (poseScene): its moved vertices and draws re-uploaded.
     void updatePose(const Scene& scene) { gpu_.updatePose(scene); }
+    // Skinning and morphing by the GPU's compute dispatch (default) or the
+    // CPU pose uploaded (GpuScene::setGpuPosing); kept across setScene.
+    void setGpuPosing(bool on) {
+        gpuPosing_ = on;
+        gpu_.setGpuPosing(on, scene_);
+    }
     void resize(int width, int height);
     // Renders one frame. Throws dw::Error if a requested output is unknown or
     // could not be produced (the message says why).
@@ -147,6 +153,7 @@ private:
     CameraUniforms camera_;
     bool viewKnown_ = false;  // camera_ holds a frame's camera (passes may skip by view)
     EnumKnob depthMode_;  // depth.mode: 0 reversed, 1 conventional
+    bool gpuPosing_ = true;
     EnumKnob normalEncoding_;  // gbuffer.normal_encoding: kl16, oct16, oct8
     int octahedral_[2] = {-1, -1};  // its octahedral choices
     // CameraBlock::gbuffer.x: 0 Kircher-Lawrance, 1 octahedral.

@@ -183,6 +183,10 @@ void GeometryPass::execute(FrameContext& ctx) {
     // Outputs are nearest-filtered: a G-buffer value between pixels means
     // nothing (SSAO reads depth between pixel centres through its own sampler).
     drawScene(ctx, target(ctx, directional, false), directional, false);
+    char textures[128];
+    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
+                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
+    stats_ += textures;
     // MSAA: the multisampled G-buffer too; every later pass but the
     // lighting pass's edge samples reads the pixel centres' one above.
     if (msaa(ctx.knobs)) {
@@ -190,10 +194,6 @@ void GeometryPass::execute(FrameContext& ctx) {
         stats_ += "; again into the multisampled G-buffer, " + std::to_string(ctx.output(kMsaaDepth).desc.samples) +
                   " samples";
     }
-    char textures[128];
-    std::snprintf(textures, sizeof(textures), ", textures %s (anisotropy %gx; up to %gx here)", filter.c_str(),
-                  static_cast<double>(anisotropy), static_cast<double>(GpuScene::maxAnisotropy()));
-    stats_ += textures;
 }
 
 void GeometryPass::drawScene(FrameContext& ctx, const gl::Framebuffer& fbo, bool directional, bool multisampled) {

@@ -342,6 +342,7 @@ ExperimentRecord ExperimentRecord::capture(RenderSession& session, const RunConf
     r.frames = run.frames;
     r.warmup = run.warmup;
     r.sceneTime = run.sceneTime;
+    r.animation = run.animation;
     r.buffer = buffer;
     r.build = buildFields();
     const gl::GlInfo& info = session.glInfo();
@@ -422,6 +423,7 @@ ExperimentRecord ExperimentRecord::forBench(const RecordedBench& bench, const Sc
     r.frames = o.frames;
     r.warmup = o.warmup;
     r.sceneTime = o.run.sceneTime;
+    r.animation = o.run.animation;
     if (!o.grid.sizes.empty()) std::tie(r.width, r.height) = o.grid.sizes.front();
     r.bench = bench;
     r.bench->merged = false;
@@ -554,6 +556,7 @@ ExperimentRecord ExperimentRecord::forTradeoff(const RecordedTradeoff& tradeoff,
     r.frames = o.frames;
     r.warmup = o.warmup;
     r.sceneTime = o.run.sceneTime;
+    r.animation = o.run.animation;
     r.width = o.run.width;
     r.height = o.run.height;
     r.buffer = o.buffer;
@@ -784,6 +787,7 @@ std::string ExperimentRecord::json(const std::string& recordPath) const {
     j["frames"] = frames;
     j["warmup"] = warmup;
     j["scene_time"] = sceneTime;
+    if (!animation.empty()) j["animation"] = animation;
     if (command != "bench" && command != "tradeoff") j["buffer"] = buffer;
     if (referenceAoRays) j["reference"] = {{"ao_rays", *referenceAoRays}, {"spp", referenceSpp}, {"filter", referenceFilter}};
     if (bench) j["grid"] = benchGridJson(*bench);
@@ -858,6 +862,7 @@ void readBenchGrid(ExperimentRecord& r, const RecordField& root, const RecordFie
     o.frames = r.frames;
     o.warmup = r.warmup;
     o.run.sceneTime = r.sceneTime;
+    o.run.animation = r.animation;
     o.seed = seedField(r.seeds, "lights", path);
     if (!b.merged) {
         for (const F& s : g.at("sizes").items()) o.grid.sizes.push_back(sizeField(s.str(), path, s.where()));
@@ -894,6 +899,7 @@ void readTradeoffGrid(ExperimentRecord& r, const RecordField& root, const Record
     o.frames = r.frames;
     o.warmup = r.warmup;
     o.run.sceneTime = r.sceneTime;
+    o.run.animation = r.animation;
     if (!t.merged) {
         for (const F& a : g.at("axes").items()) o.sweep.axes.push_back({a.at("name").str(), a.at("values").strings()});
         o.sweep.oneAtATime = g.boolean("one_at_a_time", false);
@@ -1110,6 +1116,12 @@ ExperimentRecord ExperimentRecord::fromJson(const nlohmann::json& j, const std::
             r.sceneTime = t.number32();
             if (!limits::kSceneTime.holds(r.sceneTime))
                 t.refuse(t.shown() + " is outside --scene-time's range 0..1000000 (seconds)");
+        }
+        if (root.has("animation")) {
+            const F a = root.at("animation");
+            if (!a.json().is_string() || a.json().get<std::string>().empty())
+                a.refuse("expected a clip's name or index, or \"none\" (--animation), got " + a.shown());
+            r.animation = a.json().get<std::string>();
         }
         // The one definition of a usable camera (a zero up vector renders nothing useful).
         if (const auto problem = findCameraProblem(r.camera, 0.0f))

@@ -108,6 +108,7 @@ struct ExperimentRecord {
     RecordFields seeds;
     int width = 0, height = 0, frames = 1, warmup = 0;
     double sceneTime = 0.0;  // --scene-time (seconds): the animation's pose; "scene_time", 0 when absent
+    std::string animation;   // --animation (the clip that plays); "animation", absent: each file's first
     std::string buffer = "final";
     // render of a CPU reference buffer (reference.*, compare.error): the
     // trace's AO rays per pixel, samples per pixel and filter ("reference":

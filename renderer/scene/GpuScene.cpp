@@ -138,7 +138,7 @@ int GpuScene::textureFor(const Scene& scene, int image, bool srgb) {
     return idx;
 }
 
-void GpuScene::upload(const Scene& scene) {
+void GpuScene::upload(const Scene& scene, gl::ShaderLibrary* shaders) {
     bounds_ = scene.bounds();
     triangles_ = scene.triangleCount();
     white_ = solidTexture(255, 255, 255, 255, false);
@@ -223,6 +223,12 @@ void GpuScene::upload(const Scene& scene) {
     }
     // Group by material to save texture binds.
     std::stable_sort(draws_.begin(), draws_.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
+    // The deformed meshes' rest data to the GPU once; the pose uploaded
+    // above (poseScene's) is then written again by the compute dispatch.
+    if (shaders && !scene.animation.deformers.empty()) {
+        skinning_.upload(scene, baseVertex_, shaders->get({.compute = "scene/skin.comp"}));
+        if (gpuPosing_) skinning_.pose(scene, vertices_);
+    }
 }
 
 // The box from the mesh's vertices (not Mesh::bounds, which a caller may
@@ -241,15 +247,32 @@ void GpuScene::place(Draw& d, const Scene& scene) {
         }
 }
 
-void GpuScene::updatePose(const Scene& scene) {
-    if (scene.animation.empty() || draws_.empty()) return;
+void GpuScene::writePose(const Scene& scene) {
+    if (posesOnGpu()) {
+        skinning_.pose(scene, vertices_);
+        lastPoseBytes_ = skinning_.lastUploadBytes();
+        return;
+    }
+    lastPoseBytes_ = 0;
     for (const Deformer& d : scene.animation.deformers) {
         const std::vector<Vertex>& v = scene.meshes[static_cast<std::size_t>(d.mesh)].vertices;
         vertices_.update(static_cast<std::size_t>(baseVertex_[static_cast<std::size_t>(d.mesh)]) * sizeof(Vertex),
                          v.size() * sizeof(Vertex), v.data());
+        lastPoseBytes_ += v.size() * sizeof(Vertex);
     }
+}
+
+void GpuScene::updatePose(const Scene& scene) {
+    if (scene.animation.empty() || draws_.empty()) return;
+    writePose(scene);
     for (Draw& d : draws_) place(d, scene);
     bounds_ = scene.bounds();
+}
+
+void GpuScene::setGpuPosing(bool on, const Scene* scene) {
+    if (on == gpuPosing_) return;
+    gpuPosing_ = on;
+    if (scene && !draws_.empty() && !scene->animation.deformers.empty()) writePose(*scene);
 }
 
 // Bound as a run of four from MATERIAL_BASE_COLOR_TEXTURE (shaders/common/material_eval.glsl).

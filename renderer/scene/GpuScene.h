@@ -13,6 +13,7 @@
 #include "renderer/gl/Sampler.h"
 #include "renderer/gl/Texture.h"
 #include "renderer/gl/VertexArray.h"
+#include "renderer/scene/GpuSkinning.h"
 #include "renderer/scene/Scene.h"
 #include "shaders/common/bindings.glsl"  // dw::binding, the binding points
 
@@ -38,13 +39,25 @@ public:
     };
     enum class Filter { Opaque, Blend, All };
 
-    // Call on a fresh GpuScene.
-    void upload(const Scene& scene);
+    // Call on a fresh GpuScene. `shaders`: where the skinning program
+    // (shaders/scene/skin.comp) comes from; null, or setGpuPosing(false)
+    // before, poses on the CPU only (poseScene's vertices uploaded).
+    void upload(const Scene& scene, gl::ShaderLibrary* shaders = nullptr);
     // After poseScene (ScenePose.h) posed the uploaded scene at another time:
-    // the deformed meshes' vertices written again (their range of the vertex
-    // buffer, which is dynamic for a scene with animation), every draw's
-    // model matrix and box, and the scene's bounds. No-op without animation.
+    // the deformed meshes' vertices written again, every draw's model matrix
+    // and box, and the scene's bounds. The vertices by GpuSkinning's compute
+    // dispatch (joint matrices and morph weights uploaded, the rest on the
+    // GPU since upload), or, with GPU posing off, poseScene's CPU vertices
+    // uploaded (their range of the vertex buffer, which is dynamic for a
+    // scene with animation). No-op without animation.
     void updatePose(const Scene& scene);
+    // Whether the deformed vertices are posed on the GPU (default) or
+    // uploaded from the CPU's pose; switching writes the current pose the
+    // new way. Both give the same vertices to float rounding (GpuSkinningTest).
+    void setGpuPosing(bool on, const Scene* scene = nullptr);
+    bool posesOnGpu() const { return gpuPosing_ && !skinning_.empty(); }
+    // Bytes the last updatePose sent to the GPU (vertices or joint matrices and weights).
+    std::size_t lastPoseUploadBytes() const { return lastPoseBytes_; }
     bool empty() const { return draws_.empty(); }
     const std::vector<Draw>& draws() const { return draws_; }
     // Of the uploaded geometry, which does not change until the next upload
@@ -136,6 +149,10 @@ private:
     gl::Texture white_, flatNormal_, environment_;
     std::vector<Draw> draws_;
     std::vector<GLint> baseVertex_;  // per mesh, its first vertex in vertices_
+    void writePose(const Scene& scene);
+    GpuSkinning skinning_;
+    bool gpuPosing_ = true;
+    std::size_t lastPoseBytes_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;
     std::size_t textureBytes_ = 0;

@@ -50,6 +50,13 @@
     BIND(SSBO, BUFFER_VIEW_RANGE_OUT_SSBO, 5)                                                    \
     BIND(SSBO, BUFFER_VIEW_AUTO_RANGE_SSBO, 4) /* the reduction's result, read by view.frag */ \
     BIND(SSBO, BUFFER_VIEW_SOURCE_SSBO, 6)     /* a storage buffer shown as an image */         \
+    /* The scene layer's skinning dispatch (shaders/scene/skin.comp, alone in it). */          \
+    BIND(SSBO, SKIN_VERTICES_SSBO, 0)          /* the scene's vertex buffer, written */         \
+    BIND(SSBO, SKIN_REST_SSBO, 1)                                                                \
+    BIND(SSBO, SKIN_INFLUENCES_SSBO, 2)                                                          \
+    BIND(SSBO, SKIN_MORPH_SSBO, 3)                                                               \
+    BIND(SSBO, SKIN_JOINTS_SSBO, 4)                                                              \
+    BIND(SSBO, SKIN_WEIGHTS_SSBO, 5)                                                             \
     /* Texture units the geometry, forward and transparency programs meet at: the */           \
     /* material maps (dw::GpuScene::bindMaterialTextures, units 0-3 as a run). */               \
     BIND(TEXTURE, MATERIAL_BASE_COLOR_TEXTURE, 0)                                                \

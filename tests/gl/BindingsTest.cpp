@@ -19,6 +19,8 @@
 #include "renderer/gl/Program.h"
 #include "renderer/gl/ShaderLibrary.h"
 #include "shaders/common/bindings.glsl"
+#include "tests/support/AnimatedGltf.h"
+#include "tests/support/GltfBuilder.h"
 #include "tests/support/TestSupport.h"
 
 using namespace dw;
@@ -152,8 +154,8 @@ void renderOutputs(RenderSession& s, const std::vector<std::string>& outputs) {
 // Every program the pipeline builds: two scenes (opaque with sky, shadows
 // and lights; transparent), every value of every enum and boolean knob in
 // turn, every output looked at under each method and strategy (counting and
-// decoding variants compile when their output is wanted), and the buffer
-// view's variants.
+// decoding variants compile when their output is wanted), an animated glTF
+// (the scene layer's skinning dispatch), and the buffer view's variants.
 void buildEveryProgram(RenderSession& s) {
     std::vector<std::string> outputs;
     for (const std::string& o : s.pipeline().outputs().names())
@@ -179,6 +181,8 @@ void buildEveryProgram(RenderSession& s) {
             knobs.reset(static_cast<int>(id));
         }
     }
+    s.loadScene(test::writeJson("bindings-animated.gltf", test::animatedGltf()).string());
+    s.render();
     test::buildBufferViewVariants(s.shaders());
 }
 

@@ -73,6 +73,7 @@ TEST(ExperimentRecord, ABenchRecordKeepsItsGridSeedsAndCameraPathThroughJson) {
     r.frames = 5;
     r.warmup = 2;
     r.sceneTime = 0.5;  // --scene-time (issue 36)
+    r.animation = "run";  // --animation
     RecordedBench b;
     b.options.grid.sizes = {{64, 36}, {128, 72}};
     b.options.grid.lights = {1, 100};
@@ -105,6 +106,8 @@ TEST(ExperimentRecord, ABenchRecordKeepsItsGridSeedsAndCameraPathThroughJson) {
     EXPECT_EQ(o.warmup, 2);
     EXPECT_EQ(back.sceneTime, 0.5);
     EXPECT_EQ(o.run.sceneTime, 0.5);  // what replay runs the grid at
+    EXPECT_EQ(back.animation, "run");
+    EXPECT_EQ(o.run.animation, "run");  // the clip replay plays
     EXPECT_EQ(o.run.scene, "street");
     std::vector<std::string> sets = o.run.sets;  // every knob, in the JSON's key order
     std::sort(sets.begin(), sets.end());
@@ -181,6 +184,9 @@ TEST(ExperimentRecord, FieldsAreHeldToTheRangesOfTheOptionsTheyStandFor) {
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["warmup"] = -1; })),
               "r.json: warmup: -1 is outside --warmup's range 0..100000");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["scene_time"] = 2.5; })), "accepted");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["animation"] = "walk"; })), "accepted");
+    EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["animation"] = 2; })),
+              "r.json: animation: expected a clip's name or index, or \"none\" (--animation), got 2");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["scene_time"] = -1; })),
               "r.json: scene_time: -1 is outside --scene-time's range 0..1000000 (seconds)");
     EXPECT_EQ(refusal(renderRecord([](nlohmann::json& j) { j["size"] = {16385, 18}; })),
