@@ -21,6 +21,8 @@
 #include "renderer/bench/ImageError.h"
 #include "renderer/bench/TradeoffEvidence.h"
 #include "renderer/metrics/ShadowEdgeMask.h"
+#include "renderer/passes/AaMethod.h"
+#include "renderer/passes/TaaPass.h"
 #include "renderer/graph/Pipeline.h"
 #include "renderer/knobs/KnobAssignment.h"
 #include "renderer/scene/CameraPath.h"
@@ -335,8 +337,31 @@ FloatImage TradeoffRunner::againstImage(RenderSession& session, const TradeoffRe
     return it->second;
 }
 
+namespace {
+
+// The frames a configuration whose image depends on the frames before it
+// renders at the camera before its error is captured: TAA (aa.method=taa)
+// blends its history with weight 1 - aa.taa_blend a frame, so after n frames
+// the first one's weight is (1 - blend)^n; n is where that falls under 1%
+// (44 at the default 0.1), at least TAA's jitter period (every offset once)
+// and at most 512. 0 for a configuration without history. Without it the
+// error would be one jittered frame after another point's (no history: the
+// pass rejects a history it did not write), not the method's converged image.
+int historyFrames(const KnobRegistry& knobs) {
+    const std::optional<int> method = knobs.find(kAaMethodKnob);
+    if (!method || knobs.format(*method) != "taa") return 0;
+    const std::optional<int> blendKnob = knobs.find("aa.taa_blend");
+    const double blend = blendKnob ? knobs.value(*blendKnob) : 0.1;
+    if (!(blend > 0.0 && blend < 1.0)) return TaaPass::kJitterPeriod;
+    const double n = std::ceil(std::log(0.01) / std::log(1.0 - blend));
+    return static_cast<int>(std::clamp(n, static_cast<double>(TaaPass::kJitterPeriod), 512.0));
+}
+
+}  // namespace
+
 // Stage 3: the errors, an untimed frame per (point, camera) against its
-// counterpart; a configuration that fails gets NaN and a note.
+// counterpart (after historyFrames of its own for a method with history); a
+// configuration that fails gets NaN and a note.
 TradeoffRunner::Errors TradeoffRunner::captureErrors(RenderSession& session, ConfigurationRunner& runner,
                                                      const TradeoffReference& reference, std::vector<std::string>& notes,
                                                      const BenchProgress& say) const {
@@ -352,7 +377,9 @@ TradeoffRunner::Errors TradeoffRunner::captureErrors(RenderSession& session, Con
             ErrorEstimate& e = errors[p][static_cast<size_t>(c)];
             e.value = e.low = e.high = kNaN;
             try {
-                FloatImage test = measuredImage(runner.capture(config, 0, request), o_.buffer);
+                RenderSession& captured = runner.capture(config, 0, request);
+                for (int f = historyFrames(captured.knobs()); f > 0; --f) runner.capture(config, 0, request);
+                FloatImage test = measuredImage(captured, o_.buffer);
                 FloatImage against = againstImage(session, reference, c, againstImages);
                 // The edges of the reference's shadows (whatever --against says).
                 std::optional<FloatImage> mask;

@@ -1,11 +1,10 @@
 // The anti-aliasing study's commands (docs/antialiasing.md, "The study"), at
 // a tiny size: the methods as three studies in one tradeoff run against the
-// footprint reference (--ref-spp 16), and TAA measured in a run of its own.
-// What the page concludes from them is asserted here too: SSAA and MSAA 4x
-// are nearer the pixel's area than the pixel centres, and the study's TAA
-// row is a frame without history (the error capture follows another
-// point's frame), which a TAA-only run, whose capture follows its own
-// frames, beats.
+// footprint reference (--ref-spp 16). What the page concludes from them is
+// asserted here too: SSAA and MSAA 4x are nearer the pixel's area than the
+// pixel centres, and so is TAA, whose error is captured after its history
+// converged at the camera (TradeoffRunner's historyFrames; before, the study's
+// TAA row was one jittered frame after another point's, without history).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -88,16 +87,8 @@ TEST(AntialiasingStudyCli, TheMethodsStudyMeasuresEveryMethodAgainstTheFootprint
     EXPECT_LT(e.at("ssaa2"), e.at("none"));
     EXPECT_LT(e.at("msaa4"), e.at("none"));
 
-    // TAA alone: its counted frames follow one another and the capture follows
-    // them, so its history is used; in the study it is a jittered frame alone.
-    const auto alone =
-        run(kStudy + "--metric flip --buffer final --frames 8 --warmup 8 --sweep aa.method=taa" +
-            files("taa"));
-    ASSERT_EQ(alone.code, 0) << alone.err << alone.out;
-    const TradeoffTable a = TradeoffTable::readCsv((dir() / "taa.csv").string());
-    ASSERT_EQ(a.rows.size(), 1u);
-    EXPECT_LT(a.rows[0].error, e.at("taa"))
-        << "TAA with 16 frames of history against a frame without any";
+    // TAA converged (its error captured after its own history frames) too.
+    EXPECT_LT(e.at("taa"), e.at("none"));
 }
 
 // The page's temporal study at 48x27: every method's change along an orbit of
