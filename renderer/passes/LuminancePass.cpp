@@ -1,6 +1,11 @@
 #include "renderer/passes/LuminancePass.h"
 
+#include <algorithm>
+#include <optional>
+
 #include <glm/glm.hpp>
+
+#include "renderer/passes/AaMethod.h"
 
 #include "renderer/scene/GpuScene.h"
 
@@ -52,8 +57,9 @@ void LuminancePass::resize(int width, int height, OutputRegistry& outputs) {
     outputs.bind("luminance.stats", &stats_, 4);
 }
 
-void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Texture* depthMask) {
-    const int w = hdr.width(), h = hdr.height();
+void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Texture* depthMask, int footprint) {
+    footprint = std::max(footprint, 1);
+    const int w = hdr.width() / footprint, h = hdr.height() / footprint;
     const size_t tiles = tileCount(w, h);
     if (ping_.size() < tiles * sizeof(glm::vec4)) {
         ping_ = gl::Buffer::create(tiles * sizeof(glm::vec4), nullptr, false, "luminance partials A");
@@ -64,6 +70,7 @@ void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Textur
     gpu::LuminanceParams p{};
     p.delta = delta;
     p.skipBackground = depthMask ? 1 : 0;
+    p.footprint = footprint;
     params_.upload(p, binding::PASS_UBO);
     first_->use();
     ping_.bindBase(GL_SHADER_STORAGE_BUFFER, binding::LUMINANCE_REDUCE_OUT_SSBO);
@@ -94,7 +101,19 @@ void LuminancePass::reduce(const gl::Texture& hdr, float delta, const gl::Textur
 
 void LuminancePass::execute(FrameContext& ctx) {
     const gl::Texture* mask = ctx.knobs.get(background_) == exclude_ ? ctx.outputs.find("gbuffer.depth")->texture : nullptr;
-    reduce(*ctx.outputs.find("lbuffer")->texture, ctx.knobs.get(delta_), mask);
+    const gl::Texture& lbuffer = *ctx.outputs.find("lbuffer")->texture;
+    reduce(lbuffer, ctx.knobs.get(delta_), mask, ssaaFootprint(ctx, lbuffer));
+}
+
+// SSAA's rendered pixels per output pixel along each axis this frame: the
+// L-buffer's width over ssaa.result's (the output size) when aa.method is
+// ssaa (its factor, after SsaaPass's cap); 1 otherwise.
+int LuminancePass::ssaaFootprint(const FrameContext& ctx, const gl::Texture& lbuffer) {
+    const std::optional<int> method = ctx.knobs.find(kAaMethodKnob);
+    if (!method || ctx.knobs.format(*method) != "ssaa") return 1;
+    const auto* result = ctx.outputs.find("ssaa.result");
+    if (!result || !result->texture || result->texture->width() <= 0) return 1;
+    return std::max(lbuffer.width() / result->texture->width(), 1);
 }
 
 }  // namespace dw

@@ -13,7 +13,7 @@ DW_PARAM_CONST(int, LUMINANCE_GROUP, 256)
     FIELD(int, count)           /* partial sums to add up (later passes) */                   \
     FIELD(float, delta)         /* luminance.log_delta: log(delta + L) (first pass) */        \
     FIELD(int, skipBackground)  /* luminance.background = exclude (first pass) */             \
-    FIELD(int, pad0)
+    FIELD(int, footprint)       /* rendered pixels per output pixel per axis (SSAA; first pass) */
 DW_PARAM_BLOCK(LuminanceParams, reduction, DW_LUMINANCE_PARAMS)
 DW_PARAM_SIZE(LuminanceParams, 16)
 

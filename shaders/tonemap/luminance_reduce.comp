@@ -1,6 +1,7 @@
 #version 450 core
 // GPU reduction of the L-buffer's luminance (seed 000 section 5.3.1): the
-// first pass turns each pixel into (log(delta + L), L, L, 1) and sums per
+// first pass turns each output pixel (under SSAA the mean of its footprint)
+// into (log(delta + L), L, L, 1) and sums per
 // tile of LUMINANCE_TILE^2 pixels; later passes sum LUMINANCE_GROUP partials
 // at a time; the last writes luminance.stats = (exp(mean log), max, mean, finite pixel count);
 // with no pixel counted, or all of them black, the log-average is 1.
@@ -44,13 +45,29 @@ void main() {
     uint lid = gl_LocalInvocationIndex;
     vec4 v = vec4(0.0);
 #if defined(FIRST_PASS)
+    // One output pixel: under SSAA (footprint k > 1) the mean of its k x k
+    // rendered pixels (those finite and, when excluded, not background),
+    // the pixel's area mean as the reference's --spp N estimates it, so the
+    // statistics (L_white above all) are the output image's, not those of
+    // sub-pixel highlights; k = 1 is the pixel itself.
+    int k = max(reduction.footprint, 1);
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = textureSize(uHdr, 0);
+    ivec2 size = textureSize(uHdr, 0) / k;
     if (px.x < size.x && px.y < size.y) {
-        vec3 c = texelFetch(uHdr, px, 0).rgb;
-        bool background = reduction.skipBackground != 0 && isFarDepth(texelFetch(uDepth, px, 0).r);
-        if (isFiniteVec(c) && !background) {
-            float L = max(luminance(c), 0.0);
+        vec3 sum = vec3(0.0);
+        int n = 0;
+        for (int j = 0; j < k; ++j)
+            for (int i = 0; i < k; ++i) {
+                ivec2 q = px * k + ivec2(i, j);
+                vec3 c = texelFetch(uHdr, q, 0).rgb;
+                bool background = reduction.skipBackground != 0 && isFarDepth(texelFetch(uDepth, q, 0).r);
+                if (isFiniteVec(c) && !background) {
+                    sum += c;
+                    ++n;
+                }
+            }
+        if (n > 0) {
+            float L = max(luminance(sum / float(n)), 0.0);
             v = vec4(log(reduction.delta + L), L, L, 1.0);
         }
     }

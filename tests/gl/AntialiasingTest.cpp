@@ -145,6 +145,38 @@ TEST(Antialiasing, SsaaRendersTheFrameAtTheFactorAndCapsTheSupersampledSize) {
     EXPECT_EQ(s->readRaw("lbuffer").width, 40);
 }
 
+// Under SSAA the tone mapper's statistics are the output image's: each
+// output pixel the mean of its factor x factor rendered pixels (the area
+// mean the reference's --spp N estimates), so L_white is the largest of
+// those means, not a sub-pixel highlight's, and the count is the output
+// pixels'. (With the rendered pixels' statistics SSAA's auto white point
+// sat above the reference's, and its images were further from the
+// footprint truth than no anti-aliasing: docs/antialiasing.md, "The study".)
+TEST(Antialiasing, SsaaToneMapsWithTheStatisticsOfTheOutputPixels) {
+    auto s = test::makeSession(40, 24);
+    s->loadScene("spheres");
+    s->knobs().setFromString("aa.method", "ssaa");
+    s->knobs().setFromString("aa.ssaa_factor", "4");
+    s->render({{"final", "luminance.stats", "ssaa.lbuffer", "lbuffer"}});
+    const FloatImage stats = s->readRaw("luminance.stats"), box = s->readRaw("ssaa.lbuffer"),
+                     rendered = s->readRaw("lbuffer");
+    ASSERT_EQ(box.width, 40);
+    ASSERT_EQ(rendered.width, 160);
+    auto lum = [](const FloatImage& img, size_t p) {
+        const float* c = &img.pixels[p * img.channels];
+        return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    };
+    double boxMax = 0.0, renderedMax = 0.0;
+    for (size_t p = 0; p < static_cast<size_t>(box.width) * box.height; ++p) boxMax = std::max(boxMax, lum(box, p));
+    for (size_t p = 0; p < static_cast<size_t>(rendered.width) * rendered.height; ++p)
+        renderedMax = std::max(renderedMax, lum(rendered, p));
+    std::printf("spheres 40x24, ssaa 4x4: L_max of the output pixels %.5f, of the rendered pixels %.5f; stats max %.5f, "
+                "count %.0f\n", boxMax, renderedMax, stats.pixels[1], stats.pixels[3]);
+    EXPECT_EQ(stats.pixels[3], 40.0f * 24.0f);
+    EXPECT_NEAR(stats.pixels[1], boxMax, 1e-4 * boxMax);
+    EXPECT_GT(renderedMax, boxMax * 1.01) << "the case needs a highlight smaller than a pixel";
+}
+
 namespace {
 
 std::unique_ptr<RenderSession> taaSession() {
