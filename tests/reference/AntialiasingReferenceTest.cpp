@@ -61,10 +61,11 @@ std::vector<std::pair<int, int>> edgePixels(const FloatImage& depth) {
     return edges;
 }
 
-std::unique_ptr<RenderSession> accurateSession() {
+std::unique_ptr<RenderSession> accurateSession(const std::vector<std::string>& moreSets = {}) {
     RunConfig run;
     run.scene = "default";
     run.sets = kAccurate;
+    run.sets.insert(run.sets.end(), moreSets.begin(), moreSets.end());
     run.width = kW;
     run.height = kH;
     auto session = test::makeSession(kW, kH);
@@ -128,13 +129,7 @@ TEST(AntialiasingAgainstReference, Msaa4IsNearerTheFootprintThanThePixelCentresO
 }
 
 TEST(AntialiasingAgainstReference, Ssaa4x4IsWithinTwoStandardErrorsOfTheFootprintOnGeometryEdges) {
-    RunConfig run;
-    run.scene = "default";
-    run.sets = kAccurate;
-    run.width = kW;
-    run.height = kH;
-    auto session = test::makeSession(kW, kH);
-    session->loadScene("default", run);
+    auto session = accurateSession();
     ASSERT_EQ(session->knobs().format(*session->knobs().find("depth.mode")), "reversed");
     session->knobs().setFromString("aa.method", "none");
     session->render({{"lbuffer", "gbuffer.depth"}});
@@ -149,13 +144,7 @@ TEST(AntialiasingAgainstReference, Ssaa4x4IsWithinTwoStandardErrorsOfTheFootprin
     ASSERT_EQ(ssaa.width, kW);
     ASSERT_EQ(ssaa.height, kH);
 
-    reference::ReferenceModel model = reference::ReferenceModel::fromKnobs(session->knobs(), session->scene());
-    model.pixelSamples = 16;
-    reference::ReferenceRequest r;
-    r.camera = session->camera();
-    r.width = kW;
-    r.height = kH;
-    const reference::ReferenceImages ref = reference::renderReference(session->scene(), model, r);
+    const reference::ReferenceImages ref = footprintReference(*session);
 
     const auto edges = edgePixels(depth);
     ASSERT_GT(edges.size(), 40u);
@@ -183,20 +172,14 @@ TEST(AntialiasingAgainstReference, Ssaa4x4IsWithinTwoStandardErrorsOfTheFootprin
 // FXAA moves the edges only a little toward the area mean (over the whole
 // image its FLIP is no nearer: docs/antialiasing.md, "The study").
 TEST(AntialiasingAgainstReference, FxaaAndConvergedTaaAreNearerTheFootprintThanThePixelCentresOnEdges) {
-    RunConfig run;
-    run.scene = "default";
-    run.sets = kAccurate;
-    run.sets.push_back("bloom.enabled=false");
-    run.sets.push_back("tonemap.auto_exposure=false");
-    run.width = kW;
-    run.height = kH;
-    auto session = test::makeSession(kW, kH);
-    session->loadScene("default", run);
+    auto session = accurateSession({"bloom.enabled=false", "tonemap.auto_exposure=false"});
     const auto finalOf = [&](const std::string& method, int frames) {
         session->knobs().setFromString("aa.method", method);
         for (int i = 1; i < frames; ++i) session->render({{"final"}});
         const FrameReport report = session->render({{"final", "gbuffer.depth"}});
-        if (method != "none") EXPECT_TRUE(report.find(method)->ran) << method << ": " << report.find(method)->reason;
+        if (method != "none") {
+            EXPECT_TRUE(report.find(method)->ran) << method << ": " << report.find(method)->reason;
+        }
         return session->readRaw("final");
     };
     const FloatImage centres = finalOf("none", 1);
