@@ -42,6 +42,9 @@ std::vector<std::string> referenceFiles(const std::string& pattern) {
 
 // The line naming what does not match, or "" when the test has exactly the reference's frames.
 std::string unmatchedFrame(const std::string& refPattern, const std::string& testPattern, int first, int count) {
+    if (first == 1 && frameExists(testPattern, 0))
+        return "the test has frame 0 (" + sequenceFrameName(testPattern, 0) + ") and the reference does not (" +
+               sequenceFrameName(refPattern, 0) + "): the reference begins at 1";
     for (int t = first; t < first + count; ++t)
         if (!frameExists(testPattern, t))
             return "test frame " + std::to_string(t) + " is missing: " + sequenceFrameName(testPattern, t) +
@@ -117,10 +120,10 @@ std::string sequenceFrameName(const std::string& pattern, int t) {
     size_t end = pct == std::string::npos ? pct : pattern.find_first_not_of("0123456789", pct + 1);
     if (pct == std::string::npos || end == std::string::npos || pattern[end] != 'd' ||
         pattern.find('%', end + 1) != std::string::npos)
-        throw UsageError("--sequence: a pattern names frame t by one integer conversion (%d, %4d, %03d), got '" +
-                         pattern + "'");
+        throw UsageError("a sequence's file pattern (compare --sequence, render --out-sequence) names frame t by "
+                         "one integer conversion (%d, %4d, %03d), got '" + pattern + "'");
     const std::string width = pattern.substr(pct + 1, end - pct - 1);  // "", "4" or "03"
-    if (width.size() > 2) throw UsageError("--sequence: '%" + width + "d' in '" + pattern + "' is too wide");
+    if (width.size() > 2) throw UsageError("sequence pattern: '%" + width + "d' in '" + pattern + "' is too wide");
     std::string number = std::to_string(t);
     const size_t w = width.empty() ? 0 : static_cast<size_t>(std::stoi(width));
     if (number.size() < w) number.insert(0, w - number.size(), !width.empty() && width[0] == '0' ? '0' : ' ');
@@ -133,6 +136,11 @@ int compareSequences(const SequenceCompareOptions& o) {
     ref.files = referenceFiles(o.referencePattern);
     const int first = frameExists(o.referencePattern, 0) ? 0 : 1;
     const int count = static_cast<int>(ref.files.size());
+    if (count < 2) {
+        std::fprintf(stderr, "deferred-workbench: %s: a sequence of 1 frame has no frame-to-frame change and no "
+                     "interval over frames; give at least 2 frames\n", o.referencePattern.c_str());
+        return kExitShape;
+    }
     if (const std::string why = unmatchedFrame(o.referencePattern, o.testPattern, first, count); !why.empty()) {
         std::fprintf(stderr, "deferred-workbench: %s\n", why.c_str());
         return kExitShape;
@@ -159,10 +167,6 @@ int compareSequences(const SequenceCompareOptions& o) {
     std::printf("  frames %d..%d (%d), %s, %s\n", first, first + count - 1, count, shapeOf(ref.frames[0]).c_str(),
                 hdr ? "HDR" : "LDR");
     printFrames(ref, test, hdr, first);
-    if (count < 2) {
-        std::printf("  temporal error: needs at least 2 frames (one frame-to-frame change)\n");
-        return 0;
-    }
     printTemporal(TemporalError::measure(ref.frames, test.frames), first);
     return 0;
 }

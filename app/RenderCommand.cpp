@@ -12,6 +12,7 @@
 #include "app/Commands.h"
 #include "app/CompareSequence.h"
 #include "app/RenderSequence.h"
+#include "renderer/passes/AaMethod.h"
 #include "renderer/record/ExperimentRecord.h"
 #include "app/ReferenceProgressLine.h"
 #include "app/RenderDocCapture.h"
@@ -37,7 +38,8 @@ void printUsage() {
                      "                                 [--renderdoc-capture FILE.rdc] [--check-finite] [--record FILE]\n"
                      "                                 [--ao-rays N] [--seed N] [--spp N] [--threads N] [--no-cache]\n"
                      "                                 [--cache-dir DIR] [--memory]\n"
-                     "                                 --out FILE | [--orbit N [--orbit-degrees D] | --walkthrough]\n"
+                     "                                 --out FILE | [--orbit N [--orbit-degrees D] | --walkthrough |\n"
+                     "                                 --time-steps N [--frame-rate F]]\n"
                      "                                 --out-sequence PATTERN\n"
                      "  --scene      built-in scene (default), a scene .json, or a .gltf/.glb file\n"
                      "  --animation  which glTF animation clip plays: a clip's name or index (0-based over the scene's\n"
@@ -57,6 +59,8 @@ void printUsage() {
                      "               method's history carried), after --warmup frames at the first camera;\n"
                      "               frame k to PATTERN's file k (one integer conversion: f%03d.png), as\n"
                      "               compare --sequence reads them; a reference buffer is traced per camera\n"
+                     "  --time-steps N  N frames at the scene's camera, frame k at --scene-time + k / F seconds\n"
+                     "               (--frame-rate F, default 30): an animated scene's sequence\n"
                      "  --orbit N    N cameras on a circle about the scene's camera, --orbit-degrees D apart\n"
                      "               D / N degrees (default 360); --walkthrough: the scene's camera.path keyframes\n"
                      "  --frames     frames counted (timings are medians over them); default 1\n"
@@ -290,16 +294,33 @@ int writeResults(RenderSession& session, const RenderOptions& o, const FrameRepo
     return 0;
 }
 
+// The reference pass's buffers are the output size and SSAA renders the
+// frame at aa.ssaa_factor times it: refused before anything is traced (the
+// trace would be thrown away when the frame fails), naming both sizes.
+void refuseReferenceUnderSsaa(const RenderSession& session, const RenderOptions& o) {
+    const std::optional<int> method = session.knobs().find(kAaMethodKnob);
+    if (!method || session.knobs().format(*method) != "ssaa") return;
+    const std::optional<int> factor = session.knobs().find("aa.ssaa_factor");
+    const std::string f = factor ? session.knobs().format(*factor) : "2";
+    throw UsageError("render: --buffer " + o.buffer + " is the CPU reference at the output size (" +
+                     std::to_string(o.run.width) + "x" + std::to_string(o.run.height) +
+                     ") and aa.method=ssaa renders the frame at " + f + "x" + f +
+                     " that size: set aa.method to another method for the reference's buffers (the reference "
+                     "is its own anti-aliasing: --spp N)");
+}
+
 // --out-sequence: the path's cameras in order, one frame each after --warmup
 // frames at the first; a reference buffer traced per camera. 130 when cancelled.
 int renderSequenceFrames(RenderSession& session, RenderOptions o, bool needsReference) {
     const std::vector<Camera> cameras = o.sequence.cameras(session.camera(), session.scene());
     const FrameRequest request{{o.buffer}};
+    const double start = session.sceneTime();
     session.camera() = cameras.front();
     for (int i = 0; i < o.run.warmup; ++i) session.render(request);
     o.run.warmup = 0;  // what traceAndShowReference counts: this frame alone
     for (size_t k = 0; k < cameras.size(); ++k) {
         session.camera() = cameras[k];
+        session.setSceneTime(o.sequence.sceneTime(start, k));
         if (needsReference && !traceAndShowReference(session, o)) {
             std::fprintf(stderr, "deferred-workbench: reference cancelled; frames before %zu written\n", k);
             return 130;
@@ -308,7 +329,8 @@ int renderSequenceFrames(RenderSession& session, RenderOptions o, bool needsRefe
         session.writeOutput(o.buffer, sequenceFrameName(o.sequence.pattern, static_cast<int>(k)));
         for (const auto& w : report.warnings()) std::fprintf(stderr, "warning: frame %zu: %s\n", k, w.c_str());
     }
-    std::printf("wrote %s, frames 0..%zu (%s of %dx%d frames along the camera path, scene %s)\n",
+    std::printf(o.sequence.timeSteps > 0 ? "wrote %s, frames 0..%zu (%s of %dx%d frames over scene time, scene %s)\n"
+                                         : "wrote %s, frames 0..%zu (%s of %dx%d frames along the camera path, scene %s)\n",
                 o.sequence.pattern.c_str(), cameras.size() - 1, o.buffer.c_str(), o.run.width, o.run.height,
                 session.scene().name.c_str());
     return 0;
@@ -343,6 +365,7 @@ int runRenderCommand(int argc, char** argv) {
                          "options, for reference.lbuffer, reference.final, reference.ao, reference.spp_error and "
                          "compare.error; --buffer " +
                          o.buffer + " has no reference");
+    if (needsReference) refuseReferenceUnderSsaa(session, o);
     warnAovCost(session, o.run, o.verbose);
     if (needsReference && !o.sequence.given() && !traceAndShowReference(session, o)) {
         std::fprintf(stderr, "deferred-workbench: reference cancelled; nothing written or cached\n");

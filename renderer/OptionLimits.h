@@ -62,6 +62,7 @@ constexpr RealRange kBudgetMs{0, 1e9, true};            // tradeoff --budget-ms:
 constexpr RealRange kBudget{0, 1e18, true};             // tradeoff --budget: a counter's unit (fragments, bytes ...), above 0
 constexpr RealRange kSceneTime{0, 1e6};                 // --scene-time: seconds of the scene's animation
 constexpr RealRange kOrbitDegrees{0, 360, true};        // tradeoff --orbit-degrees: the arc the poses span, above 0
+constexpr RealRange kFrameRate{0, 1e4, true};           // render --frame-rate: frames per second of scene time, above 0
 }  // namespace limits
 
 // How an option's value is written.
@@ -101,6 +102,8 @@ inline constexpr NumericOption kNumericOptions[] = {
     {"render", "--scene-time", kSceneTime, "seconds of the scene's animation"},
     {"render", "--orbit", F::Whole, kOrbit, "cameras"},
     {"render", "--orbit-degrees", kOrbitDegrees, "degrees the orbit's poses span"},
+    {"render", "--time-steps", F::Whole, kOrbit, "frames over scene time"},
+    {"render", "--frame-rate", kFrameRate, "frames per second of scene time"},
     {"render", "--warmup", F::Whole, kWarmup, "frames"},
     {"render", "--ao-rays", F::Whole, kAoRays, "AO rays per pixel"},
     {"render", "--seed", F::Whole, kSeed, "seed"},

@@ -192,6 +192,7 @@ LightingStrategy& LightingPass::pickStrategy(const FrameContext& ctx, const std:
 void LightingPass::execute(FrameContext& ctx) {
     const LightingStrategy& strategy = shadeGBuffer(ctx);
     msaaLine_.clear();
+    msaaWarning_.clear();
     if (ctx.produced("aa.edges")) shadeEdgeSamples(ctx, strategy);
     describe(ctx, strategy);
 }
@@ -205,6 +206,10 @@ void LightingPass::shadeEdgeSamples(FrameContext& ctx, const LightingStrategy& s
         msaaLine_ = "MSAA: " + edgeCount + " shaded per pixel only (" + strategy.name() +
                     " draws the scene itself at the pixel centres, not from the G-buffer); shaded samples " +
                     std::to_string(pixels) + ", 1 a pixel";
+        msaaWarning_ = std::string("msaa: lighting.strategy=") + strategy.name() +
+                       " shades per pixel only (it draws the scene itself at the pixel centres, not from the "
+                       "G-buffer): the image is aa.method=none's and the multisampled G-buffer is drawn for nothing; "
+                       "a deferred strategy shades the edge samples";
         return;
     }
     const bool directional = ctx.produced(kMsaaDirectional) && ctx.produced("gbuffer.directional");

@@ -57,6 +57,7 @@ public:
     void setup(gl::ShaderLibrary& shaders) override;
     void execute(FrameContext& ctx) override;
     std::string stats() const override { return stats_; }
+    std::string frameWarning() const override { return msaaWarning_; }
 
     struct Counts {
         int directional = 0, directionalInGBuffer = 0, volumes = 0, batches = 0, fullscreen = 0, frustumCulled = 0, belowThreshold = 0, shadowed = 0;
@@ -123,7 +124,8 @@ private:
     int aaMsaa_ = -1;                // its choice msaa
     MsaaSampleCopy msaaCopy_;
     MsaaResolve msaaResolve_;
-    std::string msaaLine_;           // what MSAA shaded this frame, for the statistics line
+    std::string msaaLine_;
+    std::string msaaWarning_;        // MSAA under a strategy that cannot shade samples (frameWarning)           // what MSAA shaded this frame, for the statistics line
 };
 
 }  // namespace dw

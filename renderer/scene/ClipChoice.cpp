@@ -52,6 +52,8 @@ void chooseClip(SceneAnimation& anim, const std::string& spec) {
         return;
     }
     const int clip = findClip(anim, spec);
+    if (clip < 0 && anim.clips.empty())
+        throw Error("--animation '" + spec + "': the scene has no animation clips (only none)");
     if (clip < 0)
         throw Error("--animation '" + spec + "': the scene has no such clip; its clips: " + clipList(anim) +
                     " (or none)");

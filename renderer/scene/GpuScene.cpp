@@ -226,6 +226,7 @@ void GpuScene::upload(const Scene& scene, gl::ShaderLibrary* shaders) {
     // The deformed meshes' rest data to the GPU once; the pose uploaded
     // above (poseScene's) is then written again by the compute dispatch.
     if (shaders && !scene.animation.deformers.empty()) {
+        gl::MemoryOwner skinningOwner("scene skinning");  // rest data, joints, morph deltas
         skinning_.upload(scene, baseVertex_, shaders->get({.compute = "scene/skin.comp"}));
         if (gpuPosing_) skinning_.pose(scene, vertices_);
     }

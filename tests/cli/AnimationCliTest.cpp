@@ -66,5 +66,33 @@ TEST(AnimationCli, ARecordKeepsTheClipChoice) {
     EXPECT_EQ(j.value("animation", ""), "none");
 }
 
+// render --time-steps N --frame-rate F --out-sequence: an animated scene's
+// frames over scene time at one camera (issue 35 part 4: the temporal
+// error of an animated scene), frame k at --scene-time + k / F: frame 1 at
+// 2 frames a second from 0 is the 0.5 s render, and the clip moves it; the
+// frames are what compare --sequence reads (against themselves: temporal
+// error 0). --frame-rate without --time-steps is one line, exit 2.
+TEST(AnimationCli, TimeStepsRenderTheSceneTimesAsASequence) {
+    const std::string scene = test::writeJson("animation-steps.gltf", test::animatedGltf()).string();
+    const fs::path dir = test::tempDir() / "animation-steps";
+    fs::create_directories(dir);
+    const std::string pattern = (dir / "f%d.png").string();
+    const auto r = test::runWorkbench("render --scene " + scene + " --size 160x90 --time-steps 3 --frame-rate 2 "
+                                      "--out-sequence " + pattern);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string at05 = render(scene, "--scene-time 0.5", "steps-05.png");
+    const std::string at0 = render(scene, "--scene-time 0", "steps-0.png");
+    EXPECT_EQ(bytes(dir / "f1.png"), at05);
+    EXPECT_EQ(bytes(dir / "f0.png"), at0);
+    EXPECT_NE(bytes(dir / "f1.png"), bytes(dir / "f0.png"));
+    const auto same = test::runWorkbench("compare --sequence " + pattern + " " + pattern);
+    EXPECT_EQ(same.code, 0) << same.err << same.out;
+    EXPECT_NE(same.out.find("temporal"), std::string::npos) << same.out;
+    const auto bad = test::runWorkbench("render --scene " + scene + " --size 160x90 --frame-rate 2 --out " +
+                                        (dir / "x.png").string());
+    EXPECT_EQ(bad.code, 2) << bad.err;
+    EXPECT_NE(bad.err.find("--frame-rate is --time-steps N's frames per second"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace dw

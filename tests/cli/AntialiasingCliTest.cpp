@@ -81,3 +81,37 @@ TEST(AntialiasingCli, EachMethodsBuffersAndPassLine) {
     EXPECT_NE(f.code, 0);
     EXPECT_NE(f.err.find("knob 'aa.samples' takes one of: 2, 4, 8, 16; got '3'"), std::string::npos) << f.err;
 }
+
+// What a method cannot do is said, not left to a silent image (found by a new
+// user): MSAA under a forward strategy (which draws the scene itself at the
+// pixel centres) warns that the image is none's; a CPU reference buffer
+// under SSAA (the frame at factor x the output size) is refused before
+// anything is traced, naming both sizes; compare --sequence refuses a
+// sequence of one frame (no frame-to-frame change).
+TEST(AntialiasingCli, WhatAMethodCannotDoIsSaid) {
+    const auto f = run("render --scene default --size 32x18 --set lighting.strategy=forward --set aa.method=msaa --out " +
+                       (dir() / "fwd.png").string());
+    ASSERT_EQ(f.code, 0) << f.err;
+    EXPECT_NE(f.err.find("msaa: lighting.strategy=forward shades per pixel only"), std::string::npos) << f.err;
+    EXPECT_NE(f.err.find("the image is aa.method=none's"), std::string::npos) << f.err;
+    const auto d = run("render --scene default --size 32x18 --set aa.method=msaa --out " + (dir() / "def.png").string());
+    EXPECT_EQ(d.err.find("shades per pixel only"), std::string::npos) << d.err;
+
+    const fs::path ref = dir() / "ref-ssaa.png";
+    const auto r = run("render --scene default --size 32x18 --set aa.method=ssaa --buffer reference.final --spp 4 --out " +
+                       ref.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("--buffer reference.final is the CPU reference at the output size (32x18) and "
+                         "aa.method=ssaa renders the frame at 2x2 that size"),
+              std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("CPU reference"), std::string::npos) << "refused before the trace: " << r.out;
+    EXPECT_FALSE(fs::exists(ref));
+
+    const fs::path one = dir() / "one";
+    fs::create_directories(one);
+    fs::copy_file(dir() / "def.png", one / "a0.png", fs::copy_options::overwrite_existing);
+    fs::copy_file(dir() / "def.png", one / "b0.png", fs::copy_options::overwrite_existing);
+    const auto c = run("compare --sequence " + (one / "a%d.png").string() + " " + (one / "b%d.png").string());
+    EXPECT_EQ(c.code, 3);
+    EXPECT_NE(c.err.find("a sequence of 1 frame has no frame-to-frame change"), std::string::npos) << c.err;
+}

@@ -363,9 +363,9 @@ TEST(CompareCli, RenderWritesACameraPathsFramesThatCompareSequenceReads) {
     }
     const Result noSequence = run(path + "--out " + (d / "x.png").string());
     EXPECT_EQ(noSequence.code, 2);
-    EXPECT_NE(noSequence.err.find("a camera path (--orbit, --walkthrough) renders a sequence: give --out-sequence"),
+    EXPECT_NE(noSequence.err.find("a camera path (--orbit, --walkthrough) or --time-steps renders a sequence: give --out-sequence"),
               std::string::npos) << noSequence.err;
     const Result noPath = run("render --scene default --size 48x27 --out-sequence " + (d / "y%02d.png").string());
     EXPECT_EQ(noPath.code, 2);
-    EXPECT_NE(noPath.err.find("--out-sequence writes a camera path's frames"), std::string::npos) << noPath.err;
+    EXPECT_NE(noPath.err.find("--out-sequence writes a sequence's frames"), std::string::npos) << noPath.err;
 }
