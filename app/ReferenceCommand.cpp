@@ -176,7 +176,10 @@ void printReport(const ReferenceOptions& o, const Scene& scene, const reference:
                 "%lld shadow, %lld AO)\n",
                 cached ? "rendered earlier in" : "rendered in", s.seconds, s.threads, s.buildSeconds, s.triangles,
                 s.rays() / 1e6, s.seconds > 0 ? s.rays() / s.seconds / 1e6 : 0.0, s.primaryRays, s.shadowRays, s.aoRays);
-    if (model.rayTracedAo)
+    if (model.rayTracedAo && model.aoRays < 2)
+        std::printf("ambient occlusion: 1 ray per pixel sample, radius %g, standard error of A: not estimated (one "
+                    "ray a sample has no spread; --ao-rays 2 or more)\n", model.aoRadius);
+    else if (model.rayTracedAo)
         std::printf("ambient occlusion: %d rays per pixel, radius %g, standard error of A: mean %.4f, max %.4f\n",
                     model.aoRays, model.aoRadius, s.aoStandardErrorMean, s.aoStandardErrorMax);
     if (model.pixelSamples > 1) std::printf("%s\n", reference::pixelSamplesVerdict(images, model).c_str());

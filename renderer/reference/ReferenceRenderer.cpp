@@ -159,12 +159,22 @@ std::string pixelSamplesVerdict(const ReferenceImages& images, const ReferenceMo
     // The standard error falls as 1/sqrt(N): the N that would bring it under, rounded up to a power of 4.
     int next = model.pixelSamples;
     while (!enough && next < 65536 && mean * std::sqrt(static_cast<double>(model.pixelSamples) / next) >= kHalfStep) next *= 4;
-    char text[256];
+    const bool beyond = mean * std::sqrt(static_cast<double>(model.pixelSamples) / next) >= kHalfStep;
+    // Below 16 samples the spread underestimates the error (the extrapolation is optimistic): "at least".
+    std::string advice;
+    if (!enough && beyond && model.pixelSamples >= 65536)
+        advice = "; not enough even at the maximum, --spp 65536";
+    else if (!enough && beyond)
+        advice = "; more than the maximum --spp 65536 would be needed";
+    else if (!enough)
+        advice = std::string(model.pixelSamples < 16 ? "; at least about --spp " : "; about --spp ") +
+                 std::to_string(next) + " would be enough";
+    char text[320];
     std::snprintf(text, sizeof(text),
                   "pixel samples: %d (%s), relative standard error of the pixels' luminance: mean %.4g: %s (half an "
                   "8-bit step is %.4g)%s",
                   model.pixelSamples, pixelFilterName(model.pixelFilter), mean, enough ? "enough" : "not enough",
-                  kHalfStep, enough ? "" : ("; about --spp " + std::to_string(next) + " would be enough").c_str());
+                  kHalfStep, advice.c_str());
     return text;
 }
 

@@ -485,3 +485,28 @@ TEST(ReferenceCache, SamplesPerPixelAndFilterAreInTheKey) {
 
 }  // namespace
 }  // namespace dw
+
+// The "when N is enough" line (issue 35 part 1) on images whose mean relative
+// standard error is set: under half an 8-bit step "enough"; over it the N a
+// power of 4 up that 1/sqrt(N) brings under ("at least" below 16 samples,
+// whose spread underestimates the error); where even 65536 would not do,
+// that is said instead of an N the run cannot take (found by a new user:
+// at --spp 65536 it advised --spp 65536).
+TEST(ReferenceRenderer, ThePixelSamplesVerdictNamesAnNItCanTakeOrSaysThereIsNone) {
+    const auto verdict = [](double relativeError, int n) {
+        dw::reference::ReferenceImages images;
+        images.lbuffer = dw::FloatImage{1, 1, 4, {1.0f, 1.0f, 1.0f, 1.0f}};
+        images.sppError = dw::FloatImage{1, 1, 1, {static_cast<float>(relativeError * (1.0 + 1e-3))}};
+        dw::reference::ReferenceModel model;
+        model.pixelSamples = n;
+        return dw::reference::pixelSamplesVerdict(images, model);
+    };
+    EXPECT_NE(verdict(0.001, 16).find(": enough"), std::string::npos) << verdict(0.001, 16);
+    EXPECT_NE(verdict(0.004, 16).find("not enough (half an 8-bit step is 0.001961); about --spp 256 would be enough"),
+              std::string::npos) << verdict(0.004, 16);
+    EXPECT_NE(verdict(0.004, 4).find("at least about --spp 64 would be enough"), std::string::npos) << verdict(0.004, 4);
+    EXPECT_NE(verdict(0.5, 16).find("more than the maximum --spp 65536 would be needed"), std::string::npos)
+        << verdict(0.5, 16);
+    EXPECT_NE(verdict(0.0025, 65536).find("not enough even at the maximum, --spp 65536"), std::string::npos)
+        << verdict(0.0025, 65536);
+}
