@@ -54,11 +54,18 @@ FloatImage CachedReferences::image(const Scene& scene, const KnobRegistry& knobs
 void CachedReferences::noteUnmodelled(const KnobRegistry& knobs, const reference::ReferenceModel& model) {
     if (noted_) return;
     noted_ = true;
+    if (!hooks_.warning) return;
+    if (model.pixelSamples <= 1)
+        hooks_.warning("note: the reference is traced through the pixel centres (--ref-spp 1): anti-aliasing and "
+                       "texture filtering are measured against the centres, not the pixel's area (--ref-spp 16 is "
+                       "the footprint truth; docs/antialiasing.md)");
     const reference::KnobReport report = reference::reportKnobs(knobs, model);
-    if (report.unmodelledOn.empty() || !hooks_.warning) return;
+    if (report.unmodelledOn.empty()) return;
     std::string on;
     for (const auto& n : report.unmodelledOn) on += (on.empty() ? " " : ", ") + n;
-    hooks_.warning("note: the reference's final image has no" + on + " (set them false, aa.method none, to measure the shading alone)");
+    hooks_.warning("note: the reference's final image has no " + on.substr(1) +
+                   (report.unmodelledOn.size() > 1 ? " (set them false" : " (set it false") +
+                   " to measure the shading alone)");
 }
 
 }  // namespace dw
