@@ -303,6 +303,13 @@ void TradeoffRunner::checkTimedPass(const RunnerTimings& timings) const {
 
 // The buffer a tradeoff measures, as the session holds it: raw floats (HDR) or display values; AO's first channel.
 FloatImage TradeoffRunner::measuredImage(RenderSession& s, const std::string& buffer) {
+    if (buffer == "lbuffer" && s.pipeline().renderScale() > 1) {
+        // SSAA rendered the frame at its factor times the output size: the
+        // L-buffer at the output size is ssaa.lbuffer, each pixel the box mean
+        // of its rendered pixels (the area mean the reference's lbuffer is).
+        s.render(FrameRequest{{"ssaa.lbuffer"}});
+        return s.readRaw("ssaa.lbuffer");
+    }
     const std::string output = gpuOutput(buffer);
     FloatImage image = buffer != "final" ? s.readRaw(output) : s.readDisplay(output);
     if (buffer == "ao" && image.channels > 1) {  // the AO is in the first channel

@@ -33,7 +33,7 @@ std::vector<OutputDecl> SsaaPass::outputs() const {
          texture2D(GL_RGBA8)},
         {"ssaa.lbuffer", OutputKind::HdrColor,
          "the supersampled L-buffer box-filtered to the output size: each pixel's area mean of radiance (RGBA32F)",
-         texture2D(GL_RGBA32F), 3, true},
+         texture2D(GL_RGBA32F), 4, true},
     };
 }
 
