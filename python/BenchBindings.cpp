@@ -50,11 +50,13 @@ py::object bench(const std::string& scene, const py::object& sizesObject, const 
                  const py::object& framesObject, const py::object& warmupObject, const py::object& blockObject,
                  const py::object& seedObject, std::optional<std::string> csv, std::optional<std::string> json,
                  const std::string& ratioOf, const py::object& resamplesObject, const py::object& orbitObject,
-                 bool walkthrough, std::optional<std::string> recordFile) {
+                 bool walkthrough, std::optional<std::string> recordFile, const py::object& sceneTime,
+                 const py::object& animation) {
     requirePath(recordFile, "bench: record");
     json = recordPath("bench", json, recordFile);
     BenchOptions o;
     applyRunArguments(o.run, scene, preset, settings);
+    applyAnimationArguments(o.run, sceneTime, animation, "bench");
     o.grid.sizes = benchSizes(sizesObject);
     o.grid.lights = benchLights(lightsObject);
     o.grid.knobAxes = sweepAxes("bench", sweep);
@@ -102,10 +104,12 @@ void bindBench(py::module_& m) {
           py::arg("frames") = 10, py::arg("warmup") = 1, py::arg("block") = 1, py::arg("seed") = 1,
           py::arg("csv") = py::none(), py::arg("json") = py::none(), py::arg("ratio_of") = "frame",
           py::arg("resamples") = 2000, py::arg("orbit") = 0, py::arg("walkthrough") = false, py::arg("record") = py::none(),
+          py::arg("scene_time") = py::none(), py::arg("animation") = py::none(),
           "bench's grid (sizes x lights x sweep {knob: [values]}) in this process. Returns the experiment record\n"
           "bench --json writes, as a dict: scene, knobs, seeds, camera path, grid, build, gl, host, and results (configs with\n"
           "their series' statistics, ratios with 95% intervals and every sample); csv=PATH and record=PATH (or json=PATH,\n"
-          "its older name) also write bench --csv's and --record's files; orbit=N and walkthrough=True move the camera as bench's options do.");
+          "its older name) also write bench --csv's and --record's files; orbit=N and walkthrough=True move the camera as bench's options do;\n"
+          "scene_time (seconds) and animation (a clip's name or index, or \"none\") as --scene-time and --animation.");
 }
 
 }  // namespace dw::python

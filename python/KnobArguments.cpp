@@ -57,6 +57,13 @@ void applyRunArguments(RunConfig& run, const std::string& scene, const py::objec
     run.sets = assignments(settings);
 }
 
+void applyAnimationArguments(RunConfig& run, const py::object& sceneTime, const py::object& animation,
+                             const std::string& command) {
+    if (!sceneTime.is_none())
+        run.sceneTime = numberArg(sceneTime, command + ": scene_time", limits::kSceneTime, command + " --scene-time");
+    if (!animation.is_none()) run.animation = py::str(animation).cast<std::string>();
+}
+
 std::vector<BenchKnobAxis> sweepAxes(const std::string& command, const std::optional<py::dict>& sweep) {
     std::vector<BenchKnobAxis> axes;
     if (!sweep) return axes;

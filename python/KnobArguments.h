@@ -30,6 +30,10 @@ std::vector<std::string> assignments(const std::optional<pybind11::dict>& settin
 
 // bench's and tradeoff's scene=, preset= and settings= into `run`, as
 // --scene, --preset and --set give them (its other fields are left as they are).
+// scene_time= and animation= (render/bench/tradeoff's --scene-time and
+// --animation): held to --scene-time's range; None leaves the default.
+void applyAnimationArguments(RunConfig& run, const pybind11::object& sceneTime, const pybind11::object& animation,
+                             const std::string& command);
 void applyRunArguments(RunConfig& run, const std::string& scene, const pybind11::object& preset,
                        const std::optional<pybind11::dict>& settings);
 

@@ -64,7 +64,8 @@ std::vector<std::string> textList(const std::string& what, const py::handle& val
 // frame_gpu_ms_hi, gpu_ms.<pass>..., the counters when counted: fragments,
 // fragments.<pass>, ..., bytes.<pass>..., pareto, time, time_ms, time_ms_lo,
 // time_ms_hi, front, dominated_by (a list of points), tied_with (a list of
-// (point, "time"|"error"|"both")), pick); NaN where the CSV is empty.
+// (point, "time"|"error"|"both")), pick, gpu_mem_peak_mib); NaN where the
+// CSV is empty.
 py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
     py::list rows;
     for (const TradeoffRow& r : t.rows) {
@@ -102,6 +103,7 @@ py::list tradeoffRows(const TradeoffTable& t, bool frontOnly) {
         for (const auto& [point, axes] : r.tiedWith) ties.append(py::make_tuple(point, axes));
         d["tied_with"] = ties;
         d["pick"] = r.pick;
+        d["gpu_mem_peak_mib"] = r.gpuMemPeakMib;  // the CSV's last column (NaN: not measured)
         rows.append(d);
     }
     return rows;
@@ -393,11 +395,12 @@ py::dict tradeoff(const std::string& scene, const py::object& size, py::object p
                   const py::object& block, const py::object& resamples, std::optional<std::string> shard,
                   std::optional<std::string> csv, std::optional<std::string> json, std::optional<std::string> plot,
                   const py::object& plotSizeObject, bool quiet, py::object progress, std::optional<std::string> recordFile,
-                  bool search, const py::object& maxEvals) {
+                  bool search, const py::object& maxEvals, const py::object& sceneTime, const py::object& animation) {
     requirePath(recordFile, "tradeoff: record");
     json = recordPath("tradeoff", json, recordFile);
     TradeoffStudyOptions s;
     applyRunArguments(s.run, scene, preset, settings);
+    applyAnimationArguments(s.run, sceneTime, animation, "tradeoff");
     std::tie(s.run.width, s.run.height) = sizeArg(size, "tradeoff: size", limits::kSize, "tradeoff --size");
     s.knobs = knobs.value_or("");
     s.studies = studyList(studies);
@@ -442,7 +445,8 @@ void bindTradeoff(py::module_& m) {
           py::arg("resamples") = 2000, py::arg("shard") = py::none(), py::arg("csv") = py::none(),
           py::arg("json") = py::none(), py::arg("plot") = py::none(), py::arg("plot_size") = std::make_pair(800, 600),
           py::arg("quiet") = false, py::arg("progress") = py::none(), py::arg("record") = py::none(),
-          py::arg("search") = false, py::arg("max_evals") = py::none(),
+          py::arg("search") = false, py::arg("max_evals") = py::none(), py::arg("scene_time") = py::none(),
+          py::arg("animation") = py::none(),
           "tradeoff's sweep in this process: what each point costs in GPU ms and in error against the CPU reference\n"
           "(or against=\"knob=value,...\"), and the Pareto front. The keywords are tradeoff's options with their\n"
           "defaults (docs/tradeoffs.md): sweep={axis: [values]} (a knob, camera.near or camera.far; the full grid),\n"
@@ -454,12 +458,13 @@ void bindTradeoff(py::module_& m) {
           "primitives, vertices, compute, bytes: the front's cost axis), budget_ms (bounds the time), budget (bounds\n"
           "the counter cost names, in its unit; not with budget_ms), orbit, orbit_degrees (the arc orbit's cameras span,\n"
           "default 360), walkthrough, frames, warmup, block,\n"
-          "resamples, shard=\"i/n\"; settings={knob: value} as --set.\n"
+          "resamples, shard=\"i/n\"; settings={knob: value} as --set; scene_time (seconds) and animation (a clip's\n"
+          "name or index, or \"none\") as --scene-time and --animation.\n"
           "Returns the experiment record tradeoff --json writes, as a dict, with two more keys: rows (the CSV's rows,\n"
           "a dict each: point, each axis, camera, metric, buffer, error, error_lo, error_hi, frames, frame_gpu_ms and\n"
           "its interval, gpu_ms.<pass>, the counters fragments, fragments.<pass>, ... bytes.<pass> when counted,\n"
           "pareto, time, time_ms and its interval, front (pareto|indistinguishable|dominated), dominated_by,\n"
-          "tied_with [(point, axes)], pick; NaN where the CSV is empty), front (the rows on the Pareto front of the\n"
+          "tied_with [(point, axes)], pick, gpu_mem_peak_mib; NaN where the CSV is empty), front (the rows on the Pareto front of the\n"
           "point estimates) and front_rule (how dominance was decided); with budget_ms or budget, pick (point, row,\n"
           "tied, fitting, cheapest, lines: the least-error point whose time's 95% interval, or whose counter, ends\n"
           "under it). search=True (with budget_ms or budget; max_evals=N, default 48): instead of a grid, coordinate\n"

@@ -31,10 +31,10 @@ def edge_frames():
 
 
 KEYWORDS = dict(scene="default", size=(64, 36), sweep={"aa.method": ["none", "taa"]}, metric="temporal",
-                orbit=9, orbit_degrees=16.0, against="aa.method=ssaa,aa.ssaa_factor=4", frames=1, warmup=0,
+                orbit=9, orbit_degrees=16.0, ref_spp=16, ao_rays=4, frames=1, warmup=0,
                 resamples=200, quiet=True)
 FLAGS = ["tradeoff", "--scene", "default", "--size", "64x36", "--sweep", "aa.method=none,taa", "--metric",
-         "temporal", "--orbit", "9", "--orbit-degrees", "16", "--against", "aa.method=ssaa,aa.ssaa_factor=4",
+         "temporal", "--orbit", "9", "--orbit-degrees", "16", "--ref-spp", "16", "--ao-rays", "4",
          "--frames", "1", "--warmup", "0", "--resamples", "200", "--quiet", "--plot", "none"]
 
 

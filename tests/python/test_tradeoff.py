@@ -166,6 +166,22 @@ class TradeoffTest(unittest.TestCase):
         for x in r["rows"]:
             self.assertGreater(x["error"], 0.0)
 
+    def test_scene_time_and_animation_as_the_cli_takes_them(self):
+        # scene_time= and animation= (issue 36) on tradeoff and bench, as --scene-time and --animation: the
+        # records keep them, and a time out of --scene-time's range raises with the CLI's words.
+        skin = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf"
+        kw = dict(scene=skin, size=(32, 18), sweep={"aa.method": ["none"]}, metric="rms", ao_rays=2, frames=1,
+                  warmup=0, resamples=100, quiet=True)
+        posed = dw.tradeoff(scene_time=0.5, **kw)
+        self.assertEqual(posed["scene_time"], 0.5)
+        still = dw.tradeoff(scene_time=0.5, animation="none", **kw)
+        self.assertEqual(still["animation"], "none")
+        bench = dw.bench(scene=skin, sizes=[(32, 18)], frames=1, warmup=0, scene_time=0.25)
+        self.assertEqual(bench["scene_time"], 0.25)
+        with self.assertRaises(ValueError) as caught:
+            dw.tradeoff(scene_time=-1, **kw)
+        self.assertIn("--scene-time", str(caught.exception))
+
     def test_reference_samples_per_pixel(self):
         # ref_spp (issue 35) traces the reference over each pixel's area, as tradeoff --ref-spp: the record keeps
         # it and the filter, the errors are the CLI's for the same flags, and they are not the pixel centre's.
