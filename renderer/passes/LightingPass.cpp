@@ -265,6 +265,35 @@ std::vector<int> LightingPass::uploadParams(const FrameContext& ctx, const Light
     return shadedInGBuffer;
 }
 
+// The table's lights by how they are shaded: bounded ones into `bounded`
+// (the strategy's), directional ones the G-buffer pass shaded counted, and
+// the rest (directional, unbounded) returned, drawn as full-screen passes.
+std::vector<const LightTableEntry*> LightingPass::sortLights(const LightTable& table,
+                                                              const std::vector<int>& shadedInGBuffer,
+                                                              std::vector<const LightTableEntry*>& bounded) {
+    std::vector<const LightTableEntry*> screenLights;
+    for (const LightTableEntry& e : table.entries) {
+        if (e.light->type != LightType::Directional && e.volume.shape != VolumeShape::FullScreen)
+            bounded.push_back(&e);
+        else if (std::find(shadedInGBuffer.begin(), shadedInGBuffer.end(), e.row) != shadedInGBuffer.end())
+            ++counts_.directionalInGBuffer;
+        else
+            screenLights.push_back(&e);
+    }
+    return screenLights;
+}
+
+// What the strategy drew, into the frame's counts (full-screen lights add to
+// the screen lights already counted).
+void LightingPass::addStrategyCounts(const StrategyCounts& sc) {
+    counts_.volumes = sc.volumes;
+    counts_.batches = sc.batches;
+    counts_.grid = sc.grid;
+    counts_.gridWhere = sc.gridWhere;
+    counts_.fullscreen += sc.fullscreen;
+    counts_.frustumCulled = sc.culled;
+}
+
 LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
     if (!ctx.lightTable) throw Error("the lighting pass ran without a light table (the lights pass did not run)");
     const LightTable& table = *ctx.lightTable;
@@ -320,14 +349,7 @@ LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
         glBlendFunc(GL_ONE, GL_ONE);
     };
     LightingFrame frame{ctx, table, {}, counting, shading_, beginLight};
-    std::vector<const LightTableEntry*> screenLights;
-    for (const LightTableEntry& e : table.entries) {
-        const bool bounded = e.light->type != LightType::Directional && e.volume.shape != VolumeShape::FullScreen;
-        if (bounded) frame.lights.push_back(&e);
-        else if (std::find(shadedInGBuffer.begin(), shadedInGBuffer.end(), e.row) != shadedInGBuffer.end())
-            ++counts_.directionalInGBuffer;
-        else screenLights.push_back(&e);
-    }
+    const std::vector<const LightTableEntry*> screenLights = sortLights(table, shadedInGBuffer, frame.lights);
     LightingStrategy& strategy = pickStrategy(ctx, frame.lights);
     const bool strategyWritesFirst = strategy.writesFirstRadiance(ctx);
 
@@ -360,16 +382,10 @@ LightingStrategy& LightingPass::shadeGBuffer(FrameContext& ctx) {
     std::stable_sort(frame.lights.begin(), frame.lights.end(), [](const LightTableEntry* a, const LightTableEntry* b) {
         return (a->volume.shape == VolumeShape::Cone) < (b->volume.shape == VolumeShape::Cone);
     });
-    const StrategyCounts sc = strategy.shade(frame);
+    addStrategyCounts(strategy.shade(frame));
     if (strategyWritesFirst) drawScreenLights();
     for (auto& other : strategies_->all())
         if (other.get() != &strategy) other->writeOutputs(frame);  // their lists, when asked for
-    counts_.volumes = sc.volumes;
-    counts_.batches = sc.batches;
-    counts_.grid = sc.grid;
-    counts_.gridWhere = sc.gridWhere;
-    counts_.fullscreen += sc.fullscreen;
-    counts_.frustumCulled = sc.culled;
     if (ctx.wants("lighting.shadow")) writeShadowFactor(ctx, table, bindInputs);
     gl::resetPipelineState(ctx.width, ctx.height);
     fbo.bind();

@@ -84,6 +84,9 @@ private:
     // Shades the G-buffer as it stands into lbuffer (ambient, screen lights,
     // the strategy's lights); counts_ and the optional outputs as ctx wants them.
     LightingStrategy& shadeGBuffer(FrameContext& ctx);
+    std::vector<const LightTableEntry*> sortLights(const LightTable& table, const std::vector<int>& shadedInGBuffer,
+                                                   std::vector<const LightTableEntry*>& bounded);
+    void addStrategyCounts(const StrategyCounts& sc);
     // The pass's parameter block for this frame, uploaded; returns the
     // directional lights the G-buffer pass shaded (light-table rows).
     std::vector<int> uploadParams(const FrameContext& ctx, const LightTable& table);
